@@ -1,0 +1,85 @@
+package org.fresa.app.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.CancellationException;
+import org.fresa.job.Json;
+import org.fresa.job.Module;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
+
+/**
+ * The rules every command shares (spec/cli.md): exit statuses, one message on stderr for bad
+ * input, {@code --json} summaries on stdout, progress on a terminal only. Commands implement
+ * {@link Task} and hand it to {@link #run}.
+ */
+public final class CliSupport {
+
+    public static final int EXIT_OK = 0;
+    public static final int EXIT_NOT_DOABLE = 1;
+    public static final int EXIT_BAD_INPUT = 2;
+
+    private CliSupport() {
+    }
+
+    /** A command's work: reads its input, does the job, writes its files. */
+    @FunctionalInterface
+    public interface Task {
+        TaskOutcome run(ProgressMonitor progress) throws CamInputException, java.io.IOException;
+    }
+
+    /**
+     * Runs a task with the shared rules and returns the exit status.
+     *
+     * @param json print the outcome's summary as one JSON object on stdout instead of prose
+     */
+    public static int run(PrintWriter out, PrintWriter err, boolean json, Task task) {
+        ProgressMonitor progress = TerminalProgress.forStderr(err);
+        try {
+            TaskOutcome outcome = task.run(progress);
+            TerminalProgress.clear(progress);
+            for (String p : outcome.problems()) {
+                err.println("fresa: " + p);
+            }
+            if (json) {
+                out.println(Json.write(outcome.summary()));
+            } else {
+                for (Path f : outcome.files()) {
+                    out.println("wrote " + f);
+                }
+            }
+            out.flush();
+            return outcome.exitStatus();
+        } catch (CamInputException e) {
+            TerminalProgress.clear(progress);
+            err.println("fresa: " + e.getMessage());
+            return EXIT_BAD_INPUT;
+        } catch (java.nio.file.NoSuchFileException e) {
+            TerminalProgress.clear(progress);
+            err.println("fresa: " + e.getFile() + ": no such file");
+            return EXIT_BAD_INPUT;
+        } catch (java.io.IOException e) {
+            TerminalProgress.clear(progress);
+            err.println("fresa: " + e.getMessage());
+            return EXIT_NOT_DOABLE;
+        } catch (CancellationException e) {
+            TerminalProgress.clear(progress);
+            err.println("fresa: cancelled");
+            return EXIT_NOT_DOABLE;
+        }
+    }
+
+    /** For a command whose module is not built yet: the plain message and exit 1. */
+    public static int unavailable(PrintWriter err, Module module) {
+        err.println("fresa: " + module.unavailableMessage());
+        return EXIT_NOT_DOABLE;
+    }
+
+    /** A bug, not bad input: a short message for the user, the trace in the log file. */
+    static int internalError(PrintWriter err, Exception ex) {
+        Path log = org.fresa.job.ErrorLog.record(ex);
+        err.println("fresa: internal error: " + ex + (log != null ? " (details in " + log + ")" : ""));
+        return EXIT_NOT_DOABLE;
+    }
+}

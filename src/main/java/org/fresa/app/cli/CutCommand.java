@@ -1,0 +1,60 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa cut DRAWING.dxf --out FILE [cutting options] [--post NAME] [--json]}. */
+@Command(name = "cut", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Sheet cutting path (plasma, laser, waterjet) from a DXF drawing.")
+final class CutCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "DRAWING", description = "DXF drawing (ASCII or binary)")
+    Path drawing;
+
+    @Option(names = "--out", required = true, paramLabel = "FILE", description = "cutting program to write")
+    Path out;
+
+    @Option(names = "--kerf", paramLabel = "W", defaultValue = "2", description = "full kerf width (mm); the path is offset by W/2")
+    double kerfMm;
+
+    @Option(names = "--process", paramLabel = "P", defaultValue = "plasma", description = "plasma, laser or waterjet")
+    String process;
+
+    @Option(names = "--lead-in", paramLabel = "LEN", defaultValue = "3", description = "lead-in length (mm)")
+    double leadInMm;
+
+    @Option(names = "--lead-out", paramLabel = "LEN", defaultValue = "1", description = "lead-out length (mm)")
+    double leadOutMm;
+
+    @Option(names = "--lead", paramLabel = "arc|line", defaultValue = "arc", description = "lead shape")
+    String lead;
+
+    @Option(names = "--tolerance", paramLabel = "T", defaultValue = "0.001", description = "chaining gap tolerance (drawing units)")
+    double tolerance;
+
+    @Option(names = "--units", paramLabel = "mm|inch|auto", defaultValue = "auto", description = "drawing units; auto reads $INSUNITS")
+    String units;
+
+    @Option(names = "--paper-mode", description = "the 2010 paper's rules (largest contour outside, no lead-ins)")
+    boolean paperMode;
+
+    @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc", description = "post-processor; default ${DEFAULT-VALUE}")
+    String post;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.CUTTING);
+    }
+}

@@ -1,0 +1,64 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--json]}. */
+@Command(name = "pocket", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
+final class PocketCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "CONTOUR", description = ".dad (73-column records), .dxf or Fresa contour file")
+    Path contour;
+
+    @Option(names = "--out", required = true, paramLabel = "FILE", description = "NC program to write")
+    Path out;
+
+    @Option(names = "--tool-diameter", required = true, paramLabel = "D", description = "cutter diameter (mm)")
+    double toolDiameterMm;
+
+    @Option(names = "--cut", paramLabel = "P", defaultValue = "0.6", description = "stepover as a fraction of the diameter")
+    double cutFraction;
+
+    @Option(names = "--finish", paramLabel = "F", defaultValue = "0.15", description = "finish allowance as a fraction of the diameter")
+    double finishFraction;
+
+    @Option(names = "--z-top", paramLabel = "Z", defaultValue = "0", description = "top of the pocket (mm)")
+    double zTopMm;
+
+    @Option(names = "--z-bottom", paramLabel = "Z", defaultValue = "-5", description = "floor of the pocket (mm)")
+    double zBottomMm;
+
+    @Option(names = "--max-depth", paramLabel = "DZ", defaultValue = "2", description = "largest depth per pass (mm)")
+    double maxDepthMm;
+
+    @Option(names = "--rpm", paramLabel = "S", defaultValue = "3000", description = "spindle speed (rpm)")
+    double spindleRpm;
+
+    @Option(names = "--feed", paramLabel = "F", defaultValue = "300", description = "roughing feed (mm/min)")
+    double feedMmPerMin;
+
+    @Option(names = "--finish-feed", paramLabel = "F", defaultValue = "100", description = "finishing feed (mm/min)")
+    double finishFeedMmPerMin;
+
+    @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc",
+            description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d; default ${DEFAULT-VALUE}")
+    String post;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.POCKET);
+    }
+}

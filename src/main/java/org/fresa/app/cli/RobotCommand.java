@@ -1,0 +1,48 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa robot FILE --robot NAME|FILE --out DIR [placement] [--formats LIST]}. */
+@Command(name = "robot", mixinStandardHelpOptions = true,
+        description = "Toolpaths of a STEP-NC file turned into a robot joint trajectory.")
+final class RobotCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file")
+    Path file;
+
+    @Option(names = "--robot", required = true, paramLabel = "NAME|FILE",
+            description = "built-in robot (irb140, adept-one, tricept806) or a robot file")
+    String robot;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
+    Path out;
+
+    @Option(names = "--robot-table", paramLabel = "X,Y,Z[,RZ]", description = "table origin in the robot base frame (mm, deg)")
+    String robotTable;
+
+    @Option(names = "--table-piece", paramLabel = "X,Y,Z[,RX,RY,RZ]",
+            description = "workpiece origin in the table frame (mm, deg; R = Rz*Ry*Rx)")
+    String tablePiece;
+
+    @Option(names = "--formats", paramLabel = "LIST", defaultValue = "csv,xml,png",
+            description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
+    String formats;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.ROBOT);
+    }
+}

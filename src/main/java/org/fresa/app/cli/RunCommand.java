@@ -1,0 +1,39 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Job;
+import org.fresa.job.JobRunner;
+import org.fresa.job.JobXml;
+import org.fresa.job.OutputFolder;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa run JOB --out DIR}: a saved job, headless. */
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = "Run a saved job file (the same file the desktop application saves) headless.")
+final class RunCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "JOB", description = "job file (.xml, schemas/job.xsd)")
+    Path job;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder (created if needed)")
+    Path out;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            Job j = JobXml.read(job);
+            return JobRunner.run(j, new OutputFolder(out), progress);
+        });
+    }
+}

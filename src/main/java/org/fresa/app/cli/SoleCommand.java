@@ -1,0 +1,33 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa sole JOB --out DIR}. */
+@Command(name = "sole", mixinStandardHelpOptions = true,
+        description = "Sole mould programs: cavity, tread figures, graded sizes, both feet.")
+final class SoleCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "JOB", description = "sole job file")
+    Path job;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
+    Path out;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.SOLE);
+    }
+}

@@ -1,0 +1,30 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa stepnc FILE [--json]}: describe an ISO 14649 Part 21 file. */
+@Command(name = "stepnc", mixinStandardHelpOptions = true,
+        description = "Read an ISO 14649 (STEP-NC) Part 21 file and describe it.")
+final class StepncCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file (.stp, .p21)")
+    Path file;
+
+    @Option(names = "--json", description = "print the description as one JSON object")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.STEPNC);
+    }
+}

@@ -1,0 +1,37 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fresa.job.Module;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fresa toolpath FILE --out DIR [--post NAME]}. */
+@Command(name = "toolpath", mixinStandardHelpOptions = true,
+        description = "Toolpaths of every workingstep of a STEP-NC file, in workplan order, with G-code.")
+final class ToolpathCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file")
+    Path file;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
+    Path out;
+
+    @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc",
+            description = "post-processor (fresa posts lists them); default ${DEFAULT-VALUE}")
+    String post;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.unavailable(spec.commandLine().getErr(), Module.TOOLPATH);
+    }
+}

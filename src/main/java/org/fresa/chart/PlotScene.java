@@ -1,0 +1,123 @@
+package org.fresa.chart;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * What a 2D plot shows, independent of the drawing library: layers of plane curves (lines and
+ * exact arcs) with a style each, and labels. Modules fill a scene; {@link ToolpathChart} draws it.
+ *
+ * @param title the plot's title (may be empty)
+ * @param layers drawn in order, later over earlier
+ * @param labels text at points
+ */
+public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
+
+    /** How a layer is drawn. */
+    public enum Style {
+        /** Stock or part outline: dark, solid. */
+        OUTLINE,
+        /** A filled part (sheet cutting). */
+        PART,
+        /** A hole or island. */
+        HOLE,
+        /** Cutting moves at feed. */
+        FEED,
+        /** Finishing moves. */
+        FINISH,
+        /** Rapid moves: thin and dashed. */
+        RAPID,
+        /** Something the planner must look at (open chains, uncut material). */
+        WARNING,
+        /** Construction lines, offsets, leads. */
+        AUX
+    }
+
+    /** A set of curves drawn in one style. */
+    public record Layer(String name, Style style, List<Curve2> curves) {
+        public Layer {
+            Objects.requireNonNull(name, "name");
+            Objects.requireNonNull(style, "style");
+            curves = List.copyOf(curves);
+        }
+    }
+
+    /** A text at a point (mm). */
+    public record Label(Vec2 at, String text) {
+    }
+
+    public PlotScene {
+        Objects.requireNonNull(title, "title");
+        layers = List.copyOf(layers);
+        labels = List.copyOf(labels);
+    }
+
+    public static PlotScene empty(String title) {
+        return new PlotScene(title, List.of(), List.of());
+    }
+
+    public PlotScene with(Layer layer) {
+        List<Layer> l = new ArrayList<>(layers);
+        l.add(layer);
+        return new PlotScene(title, l, labels);
+    }
+
+    public PlotScene withLabel(Vec2 at, String text) {
+        List<Label> l = new ArrayList<>(labels);
+        l.add(new Label(at, text));
+        return new PlotScene(title, layers, l);
+    }
+
+    public PlotScene withContour(String name, Style style, Contour c) {
+        return with(new Layer(name, style, c.curves()));
+    }
+
+    /**
+     * The XY projection of a toolpath: feeds, arcs (as arcs when they lie in XY planes) and rapids
+     * in separate layers.
+     */
+    public PlotScene withToolpath(Toolpath path) {
+        List<Curve2> feed = new ArrayList<>();
+        List<Curve2> rapid = new ArrayList<>();
+        for (ToolpathSection s : path.sections()) {
+            Vec3 at = s.start();
+            for (Move m : s.moves()) {
+                Vec2 a = at.xy();
+                Vec2 b = m.end().xy();
+                if (m instanceof Move.Circular c && Math.abs(Math.abs(c.normal().z()) - 1) < 1e-12) {
+                    boolean ccw = c.ccw() == (c.normal().z() > 0);
+                    feed.add(new Arc2(c.center().xy(), a, b, ccw));
+                } else if (!a.equals(b)) {
+                    (m instanceof Move.Rapid ? rapid : feed).add(new Segment2(a, b));
+                }
+                at = m.end();
+            }
+        }
+        return with(new Layer("rapid", Style.RAPID, rapid)).with(new Layer("feed", Style.FEED, feed));
+    }
+
+    /** The box holding every curve and label, or empty when there is nothing. */
+    public java.util.Optional<Box2> bounds() {
+        Box2 b = null;
+        for (Layer l : layers) {
+            for (Curve2 c : l.curves()) {
+                b = b == null ? c.bounds() : b.union(c.bounds());
+            }
+        }
+        for (Label l : labels) {
+            b = b == null ? Box2.of(l.at(), l.at()) : b.including(l.at());
+        }
+        return java.util.Optional.ofNullable(b);
+    }
+}

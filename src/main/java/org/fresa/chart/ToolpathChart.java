@@ -1,0 +1,135 @@
+package org.fresa.chart;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Paint;
+import java.awt.Stroke;
+import java.awt.geom.Arc2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Point2D;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.annotations.XYTextAnnotation;
+import org.jfree.chart.axis.NumberAxis;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.data.xy.XYSeries;
+import org.jfree.data.xy.XYSeriesCollection;
+
+/**
+ * Draws a {@link PlotScene} as a JFreeChart XY plot in millimetres. Arcs are drawn as true arcs
+ * (Java2D {@link Arc2D} shapes), not polylines; the axes keep equal scale when the chart is
+ * shown in the GUI plot panel, which keeps them so.
+ */
+public final class ToolpathChart {
+
+    private ToolpathChart() {
+    }
+
+    public static JFreeChart create(PlotScene scene) {
+        XYSeriesCollection data = new XYSeriesCollection();
+        XYSeries extent = new XYSeries("extent");
+        scene.bounds().ifPresent(b -> {
+            double pad = 0.04 * Math.max(1, Math.max(b.width(), b.height()));
+            extent.add(b.minX() - pad, b.minY() - pad);
+            extent.add(b.maxX() + pad, b.maxY() + pad);
+        });
+        data.addSeries(extent);
+        NumberAxis x = new NumberAxis("x (mm)");
+        NumberAxis y = new NumberAxis("y (mm)");
+        x.setAutoRangeIncludesZero(false);
+        y.setAutoRangeIncludesZero(false);
+        XYLineAndShapeRenderer r = new XYLineAndShapeRenderer(false, false);
+        XYPlot plot = new XYPlot(data, x, y, r);
+        plot.setBackgroundPaint(Color.WHITE);
+        plot.setDomainGridlinePaint(new Color(0xE0E0E0));
+        plot.setRangeGridlinePaint(new Color(0xE0E0E0));
+        plot.setDomainPannable(true);
+        plot.setRangePannable(true);
+        for (PlotScene.Layer layer : scene.layers()) {
+            if (layer.curves().isEmpty()) {
+                continue;
+            }
+            Path2D path = toPath(layer);
+            Style s = style(layer.style());
+            plot.addAnnotation(new ShapeAnnotation(path, s.stroke, s.outline, s.fill), false);
+        }
+        for (PlotScene.Label l : scene.labels()) {
+            XYTextAnnotation t = new XYTextAnnotation(l.text(), l.at().x(), l.at().y());
+            t.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+            t.setPaint(new Color(0x1A237E));
+            plot.addAnnotation(t, false);
+        }
+        JFreeChart chart = new JFreeChart(scene.title().isEmpty() ? null : scene.title(),
+                new Font(Font.SANS_SERIF, Font.BOLD, 13), plot, false);
+        chart.setBackgroundPaint(Color.WHITE);
+        return chart;
+    }
+
+    /** The layer's curves as one Java2D path; consecutive curves that meet are joined. */
+    static Path2D toPath(PlotScene.Layer layer) {
+        Path2D.Double p = new Path2D.Double();
+        Point2D last = null;
+        for (Curve2 c : layer.curves()) {
+            boolean joined = last != null && last.getX() == c.start().x() && last.getY() == c.start().y();
+            if (c instanceof Segment2 s) {
+                if (!joined) {
+                    p.moveTo(s.start().x(), s.start().y());
+                }
+                p.lineTo(s.end().x(), s.end().y());
+            } else {
+                Arc2 a = (Arc2) c;
+                double r = a.radius();
+                if (r == 0) {
+                    if (!joined) {
+                        p.moveTo(a.start().x(), a.start().y());
+                    }
+                    p.lineTo(a.end().x(), a.end().y());
+                } else {
+                    // Java2D angles are clockwise-positive in a y-down space; the data space is y-up,
+                    // so the plot's transform flips y and the arc's math angles map through unchanged
+                    Arc2D.Double arc = new Arc2D.Double(a.center().x() - r, a.center().y() - r, 2 * r, 2 * r,
+                            -Math.toDegrees(a.startAngleRad()), -Math.toDegrees(a.sweepRad()), Arc2D.OPEN);
+                    p.append(arc, joined);
+                }
+            }
+            last = new Point2D.Double(c.end().x(), c.end().y());
+        }
+        return p;
+    }
+
+    private record Style(Stroke stroke, Paint outline, Paint fill) {
+    }
+
+    private static Style style(PlotScene.Style s) {
+        switch (s) {
+            case OUTLINE:
+                return new Style(new BasicStroke(1.6f), new Color(0x212121), null);
+            case PART:
+                return new Style(new BasicStroke(1.2f), new Color(0x37474F), new Color(0x90A4AE, false));
+            case HOLE:
+                return new Style(new BasicStroke(1.2f), new Color(0x37474F), Color.WHITE);
+            case FEED:
+                return new Style(new BasicStroke(1.0f), new Color(0x1565C0), null);
+            case FINISH:
+                return new Style(new BasicStroke(1.4f), new Color(0x2E7D32), null);
+            case RAPID:
+                return new Style(new BasicStroke(0.7f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+                        new float[] {4f, 3f}, 0f), new Color(0xE53935), null);
+            case WARNING:
+                return new Style(new BasicStroke(2.0f), new Color(0xFF8F00), null);
+            case AUX:
+            default:
+                return new Style(new BasicStroke(0.6f), new Color(0x9E9E9E), null);
+        }
+    }
+
+    /** The bounds of the chart's data, to set equal-scale ranges. */
+    public static java.util.Optional<Box2> bounds(PlotScene scene) {
+        return scene.bounds();
+    }
+}

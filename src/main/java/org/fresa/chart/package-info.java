@@ -1,0 +1,6 @@
+/**
+ * Plots as JFreeChart charts, shared by the tabs and by the files written headless (PNG, SVG):
+ * toolpaths with arcs drawn as arcs, joint trajectories, errors, nested outlines.
+ * {@code java.awt} is allowed here (charts are AWT drawings); Swing is not.
+ */
+package org.fresa.chart;

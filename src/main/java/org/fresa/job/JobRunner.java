@@ -1,0 +1,48 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import org.fresa.model.CamInputException;
+
+/**
+ * Executes a job's task headless: the service behind {@code fresa run} and the GUI's Run action.
+ * Each module's command on the command line calls the same module service with a job built from
+ * its options, so a job saved in the GUI and the equivalent command give the same files.
+ */
+public final class JobRunner {
+    private JobRunner() {
+    }
+
+    /**
+     * Runs the job's task, writing its files into the folder.
+     *
+     * @throws CamInputException when an input file is bad (nothing is written then)
+     * @throws IOException when an output cannot be written
+     */
+    public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        switch (job.task()) {
+            case STEPNC:
+                return TaskOutcome.unavailable(Module.STEPNC);
+            case TOOLPATH:
+                return TaskOutcome.unavailable(Module.TOOLPATH);
+            case ROBOT:
+                return TaskOutcome.unavailable(Module.ROBOT);
+            case POCKET:
+                return TaskOutcome.unavailable(Module.POCKET);
+            case CUT:
+                return TaskOutcome.unavailable(Module.CUTTING);
+            case GRADE:
+                return TaskOutcome.unavailable(Module.GRADING);
+            case SOLE:
+                return TaskOutcome.unavailable(Module.SOLE);
+            default:
+                throw new IllegalStateException("unknown task " + job.task());
+        }
+    }
+
+    /** The settings section the task needs, or a CamInputException naming what is missing. */
+    static <T> T require(java.util.Optional<T> section, String element, Job job) throws CamInputException {
+        return section.orElseThrow(() -> new CamInputException(job.name(),
+                "the job's task is " + job.task().id() + " but it has no <" + element + "> settings"));
+    }
+}

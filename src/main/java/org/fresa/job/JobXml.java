@@ -1,0 +1,326 @@
+package org.fresa.job;
+
+import jakarta.xml.bind.JAXBContext;
+import jakarta.xml.bind.JAXBElement;
+import jakarta.xml.bind.JAXBException;
+import jakarta.xml.bind.Marshaller;
+import jakarta.xml.bind.Unmarshaller;
+import jakarta.xml.bind.UnmarshalException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.ParserConfigurationException;
+import javax.xml.parsers.SAXParserFactory;
+import javax.xml.transform.sax.SAXSource;
+import javax.xml.validation.Schema;
+import javax.xml.validation.SchemaFactory;
+import org.fresa.geom.Vec2;
+import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.JobSettings.GradingSettings;
+import org.fresa.job.JobSettings.OutputSettings;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.JobSettings.RobotSettings;
+import org.fresa.job.JobSettings.SoleSettings;
+import org.fresa.job.JobSettings.StepNcSettings;
+import org.fresa.job.xml.CuttingType;
+import org.fresa.job.xml.GradingType;
+import org.fresa.job.xml.JobType;
+import org.fresa.job.xml.ObjectFactory;
+import org.fresa.job.xml.OutputsType;
+import org.fresa.job.xml.PlacementType;
+import org.fresa.job.xml.PocketType;
+import org.fresa.job.xml.RobotType;
+import org.fresa.job.xml.SoleType;
+import org.fresa.job.xml.StepNcType;
+import org.fresa.model.CamInputException;
+import org.fresa.model.Placement;
+import org.xml.sax.InputSource;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.XMLReader;
+
+/**
+ * Reads and writes job files ({@code schemas/job.xsd}) with Jakarta XML Binding.
+ *
+ * <p>Reading validates against the schema and refuses any DOCTYPE, so external entities (XXE)
+ * and entity expansion cannot happen. Paths in the file are relative to the file's folder.
+ */
+public final class JobXml {
+
+    /** The current job file version. */
+    public static final int VERSION = 1;
+
+    private static final Schema SCHEMA = loadSchema();
+    private static final JAXBContext CONTEXT = createContext();
+
+    private JobXml() {
+    }
+
+    private static Schema loadSchema() {
+        URL url = JobXml.class.getResource("/schemas/job.xsd");
+        if (url == null) {
+            throw new IllegalStateException("schemas/job.xsd missing from the class path");
+        }
+        try {
+            SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
+            f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+            f.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "file,jar:file");
+            return f.newSchema(url);
+        } catch (SAXException e) {
+            throw new IllegalStateException("schemas/job.xsd is invalid", e);
+        }
+    }
+
+    private static JAXBContext createContext() {
+        try {
+            return JAXBContext.newInstance(ObjectFactory.class);
+        } catch (JAXBException e) {
+            throw new IllegalStateException("cannot set up job XML binding", e);
+        }
+    }
+
+    /**
+     * Reads and validates a job file.
+     *
+     * @throws CamInputException when the file cannot be read, is not well-formed, has a DOCTYPE or
+     *     does not match the schema (with line and column)
+     */
+    public static Job read(Path file) throws CamInputException {
+        String name = file.toString();
+        JobType xml;
+        try (InputStream in = Files.newInputStream(file)) {
+            SAXParserFactory spf = SAXParserFactory.newInstance();
+            spf.setNamespaceAware(true);
+            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+            spf.setFeature("http://xml.org/sax/features/external-general-entities", false);
+            spf.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
+            spf.setXIncludeAware(false);
+            XMLReader reader = spf.newSAXParser().getXMLReader();
+            InputSource source = new InputSource(in);
+            source.setSystemId(file.toUri().toString());
+            Unmarshaller u = CONTEXT.createUnmarshaller();
+            u.setSchema(SCHEMA);
+            JAXBElement<JobType> root = u.unmarshal(new SAXSource(reader, source), JobType.class);
+            xml = root.getValue();
+        } catch (IOException e) {
+            throw new CamInputException(name, "cannot read the job file (" + e.getMessage() + ")");
+        } catch (UnmarshalException e) {
+            throw fromUnmarshal(name, e);
+        } catch (JAXBException | SAXException | ParserConfigurationException e) {
+            throw new CamInputException(name, "not a valid job file: " + e.getMessage());
+        }
+        if (xml.getVersion() > VERSION) {
+            throw new CamInputException(name, "job file version " + xml.getVersion()
+                    + " is newer than this Fresa understands (" + VERSION + ")");
+        }
+        Path base = file.toAbsolutePath().getParent();
+        return fromXml(xml, base);
+    }
+
+    private static CamInputException fromUnmarshal(String name, UnmarshalException e) {
+        Throwable c = e.getLinkedException() != null ? e.getLinkedException() : e.getCause();
+        if (c instanceof SAXParseException spe) {
+            String msg = spe.getMessage();
+            if (msg != null && msg.contains("DOCTYPE")) {
+                msg = "a DOCTYPE is not allowed in a job file (external entities are refused)";
+            } else {
+                msg = "expected a job as schemas/job.xsd describes: " + msg;
+            }
+            return new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()), msg, e);
+        }
+        return new CamInputException(name, 0, 0, "not a valid job file: " + (c != null ? c.getMessage() : e.getMessage()), e);
+    }
+
+    /** Writes a job; file paths are stored relative to the job file's folder where possible. */
+    public static void write(Job job, Path file) throws IOException {
+        Path base = file.toAbsolutePath().getParent();
+        JobType xml = toXml(job, base);
+        AtomicFiles.write(file, out -> marshal(xml, out));
+    }
+
+    private static void marshal(JobType xml, OutputStream out) throws IOException {
+        try {
+            Marshaller m = CONTEXT.createMarshaller();
+            m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, Boolean.TRUE);
+            m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
+            m.setSchema(SCHEMA);
+            m.marshal(new ObjectFactory().createJob(xml), out);
+        } catch (JAXBException e) {
+            throw new IOException("cannot write the job: " + e.getMessage(), e);
+        }
+    }
+
+    private static Path resolve(Path base, String ref) {
+        return base.resolve(ref).normalize();
+    }
+
+    private static String relativize(Path base, Path p) {
+        Path abs = p.toAbsolutePath().normalize();
+        try {
+            return base.relativize(abs).toString().replace('\\', '/');
+        } catch (IllegalArgumentException e) {
+            return abs.toString();
+        }
+    }
+
+    private static List<String> splitList(String s) {
+        return Arrays.stream(s.split(",")).map(String::trim).filter(t -> !t.isEmpty()).toList();
+    }
+
+    static Job fromXml(JobType x, Path base) {
+        Job job = Job.empty(JobTask.ofId(x.getTask().value()));
+        if (x.getName() != null) {
+            job = job.withName(x.getName());
+        }
+        StepNcType s = x.getStepnc();
+        if (s != null) {
+            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost()));
+        }
+        RobotType r = x.getRobot();
+        if (r != null) {
+            job = job.withRobot(new RobotSettings(r.getRobot(), placement(r.getRobotTable()),
+                    placement(r.getTablePiece()), splitList(r.getFormats())));
+        }
+        PocketType p = x.getPocket();
+        if (p != null) {
+            job = job.withPocket(new PocketSettings(resolve(base, p.getContour()), p.getToolDiameterMm(),
+                    p.getCutFraction(), p.getFinishFraction(), p.getZTopMm(), p.getZBottomMm(),
+                    p.getMaxDepthPerPassMm(), p.getSpindleRpm(), p.getFeedMmPerMin(), p.getFinishFeedMmPerMin(),
+                    p.getPost()));
+        }
+        CuttingType c = x.getCutting();
+        if (c != null) {
+            job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), c.getKerfMm(), c.getProcess(),
+                    c.getLeadInMm(), c.getLeadOutMm(), c.getLead(), c.getToleranceMm(), c.getUnits(),
+                    c.isPaperMode(), c.getPost()));
+        }
+        GradingType g = x.getGrading();
+        if (g != null) {
+            Optional<Vec2> origin = g.getOriginXMm() != null && g.getOriginYMm() != null
+                    ? Optional.of(Vec2.of(g.getOriginXMm(), g.getOriginYMm())) : Optional.empty();
+            job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()), g.getBaseSize(), g.getSizes(),
+                    g.isHalfSizes(), g.getSystem(), optional(g.getLengthStepMm()), optional(g.getWidthStepMm()),
+                    origin, g.getShrinkage(), g.getShrinkageMode()));
+        }
+        SoleType so = x.getSole();
+        if (so != null) {
+            job = job.withSole(new SoleSettings(resolve(base, so.getOutline()), so.getBaseSize(), so.getSizes(),
+                    so.getCavityDepthMm(), so.getPost()));
+        }
+        OutputsType o = x.getOutputs();
+        if (o != null) {
+            job = job.withOutputs(new OutputSettings(splitList(o.getFormats())));
+        }
+        return job;
+    }
+
+    private static OptionalDouble optional(Double d) {
+        return d == null ? OptionalDouble.empty() : OptionalDouble.of(d);
+    }
+
+    private static Placement placement(PlacementType p) {
+        if (p == null) {
+            return Placement.ORIGIN;
+        }
+        return new Placement(p.getXMm(), p.getYMm(), p.getZMm(), p.getRxDeg(), p.getRyDeg(), p.getRzDeg());
+    }
+
+    private static PlacementType placement(Placement p) {
+        PlacementType t = new PlacementType();
+        t.setXMm(p.xMm());
+        t.setYMm(p.yMm());
+        t.setZMm(p.zMm());
+        t.setRxDeg(p.rxDeg());
+        t.setRyDeg(p.ryDeg());
+        t.setRzDeg(p.rzDeg());
+        return t;
+    }
+
+    static JobType toXml(Job job, Path base) {
+        JobType x = new JobType();
+        x.setVersion(VERSION);
+        x.setTask(org.fresa.job.xml.TaskType.fromValue(job.task().id()));
+        x.setName(job.name());
+        job.stepnc().ifPresent(s -> {
+            StepNcType t = new StepNcType();
+            t.setFile(relativize(base, s.file()));
+            t.setPost(s.post());
+            x.setStepnc(t);
+        });
+        job.robot().ifPresent(r -> {
+            RobotType t = new RobotType();
+            t.setRobot(r.robot());
+            t.setRobotTable(placement(r.robotTable()));
+            t.setTablePiece(placement(r.tablePiece()));
+            t.setFormats(String.join(",", r.formats()));
+            x.setRobot(t);
+        });
+        job.pocket().ifPresent(p -> {
+            PocketType t = new PocketType();
+            t.setContour(relativize(base, p.contour()));
+            t.setToolDiameterMm(p.toolDiameterMm());
+            t.setCutFraction(p.cutFraction());
+            t.setFinishFraction(p.finishFraction());
+            t.setZTopMm(p.zTopMm());
+            t.setZBottomMm(p.zBottomMm());
+            t.setMaxDepthPerPassMm(p.maxDepthPerPassMm());
+            t.setSpindleRpm(p.spindleRpm());
+            t.setFeedMmPerMin(p.feedMmPerMin());
+            t.setFinishFeedMmPerMin(p.finishFeedMmPerMin());
+            t.setPost(p.post());
+            x.setPocket(t);
+        });
+        job.cutting().ifPresent(c -> {
+            CuttingType t = new CuttingType();
+            t.setDrawing(relativize(base, c.drawing()));
+            t.setKerfMm(c.kerfMm());
+            t.setProcess(c.process());
+            t.setLeadInMm(c.leadInMm());
+            t.setLeadOutMm(c.leadOutMm());
+            t.setLead(c.lead());
+            t.setToleranceMm(c.toleranceMm());
+            t.setUnits(c.units());
+            t.setPaperMode(c.paperMode());
+            t.setPost(c.post());
+            x.setCutting(t);
+        });
+        job.grading().ifPresent(g -> {
+            GradingType t = new GradingType();
+            t.setOutline(relativize(base, g.outline()));
+            t.setBaseSize(g.baseSize());
+            t.setSizes(g.sizes());
+            t.setHalfSizes(g.halfSizes());
+            t.setSystem(g.system());
+            g.lengthStepMm().ifPresent(t::setLengthStepMm);
+            g.widthStepMm().ifPresent(t::setWidthStepMm);
+            g.originMm().ifPresent(o -> {
+                t.setOriginXMm(o.x());
+                t.setOriginYMm(o.y());
+            });
+            t.setShrinkage(g.shrinkage());
+            t.setShrinkageMode(g.shrinkageMode());
+            x.setGrading(t);
+        });
+        job.sole().ifPresent(s -> {
+            SoleType t = new SoleType();
+            t.setOutline(relativize(base, s.outline()));
+            t.setBaseSize(s.baseSize());
+            t.setSizes(s.sizes());
+            t.setCavityDepthMm(s.cavityDepthMm());
+            t.setPost(s.post());
+            x.setSole(t);
+        });
+        OutputsType o = new OutputsType();
+        o.setFormats(String.join(",", job.outputs().formats()));
+        x.setOutputs(o);
+        return x;
+    }
+}

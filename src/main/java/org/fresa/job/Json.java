@@ -1,0 +1,114 @@
+package org.fresa.job;
+
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import org.fresa.model.ExactDecimal;
+
+/**
+ * Writes JSON from maps, lists, strings, numbers and booleans: the {@code --json} summaries and
+ * {@code summary.json}. Doubles are written exactly (shortest round-trip decimal, Locale-free);
+ * NaN and infinities, which JSON cannot hold, are written as null.
+ */
+public final class Json {
+    private Json() {
+    }
+
+    public static String write(Object value) {
+        StringBuilder sb = new StringBuilder();
+        append(sb, value, 0, false);
+        return sb.toString();
+    }
+
+    /** Indented, for files people read. */
+    public static String writePretty(Object value) {
+        StringBuilder sb = new StringBuilder();
+        append(sb, value, 0, true);
+        return sb.append('\n').toString();
+    }
+
+    private static void append(StringBuilder sb, Object v, int indent, boolean pretty) {
+        if (v == null) {
+            sb.append("null");
+        } else if (v instanceof String s) {
+            quote(sb, s);
+        } else if (v instanceof Double || v instanceof Float) {
+            double d = ((Number) v).doubleValue();
+            sb.append(Double.isFinite(d) ? ExactDecimal.of(d) : "null");
+        } else if (v instanceof Number || v instanceof Boolean) {
+            sb.append(v);
+        } else if (v instanceof Map<?, ?> m) {
+            sb.append('{');
+            Iterator<? extends Map.Entry<?, ?>> it = m.entrySet().iterator();
+            boolean first = true;
+            while (it.hasNext()) {
+                Map.Entry<?, ?> e = it.next();
+                if (!first) {
+                    sb.append(',');
+                }
+                first = false;
+                newline(sb, indent + 1, pretty);
+                quote(sb, String.valueOf(e.getKey()));
+                sb.append(pretty ? ": " : ":");
+                append(sb, e.getValue(), indent + 1, pretty);
+            }
+            if (!m.isEmpty()) {
+                newline(sb, indent, pretty);
+            }
+            sb.append('}');
+        } else if (v instanceof List<?> l) {
+            sb.append('[');
+            for (int i = 0; i < l.size(); i++) {
+                if (i > 0) {
+                    sb.append(pretty ? ", " : ",");
+                }
+                append(sb, l.get(i), indent + 1, pretty);
+            }
+            sb.append(']');
+        } else if (v instanceof double[] a) {
+            sb.append('[');
+            for (int i = 0; i < a.length; i++) {
+                if (i > 0) {
+                    sb.append(pretty ? ", " : ",");
+                }
+                append(sb, a[i], indent, pretty);
+            }
+            sb.append(']');
+        } else if (v instanceof Enum<?> e) {
+            quote(sb, e.name());
+        } else {
+            quote(sb, v.toString());
+        }
+    }
+
+    private static void newline(StringBuilder sb, int indent, boolean pretty) {
+        if (pretty) {
+            sb.append('\n');
+            for (int i = 0; i < indent; i++) {
+                sb.append("  ");
+            }
+        }
+    }
+
+    private static void quote(StringBuilder sb, String s) {
+        sb.append('"');
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            switch (c) {
+                case '"' -> sb.append("\\\"");
+                case '\\' -> sb.append("\\\\");
+                case '\n' -> sb.append("\\n");
+                case '\r' -> sb.append("\\r");
+                case '\t' -> sb.append("\\t");
+                default -> {
+                    if (c < 0x20) {
+                        sb.append(String.format(java.util.Locale.ROOT, "\\u%04x", (int) c));
+                    } else {
+                        sb.append(c);
+                    }
+                }
+            }
+        }
+        sb.append('"');
+    }
+}

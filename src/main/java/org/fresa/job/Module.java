@@ -1,0 +1,44 @@
+package org.fresa.job;
+
+/**
+ * The modules of Fresa and whether each is built yet. A module that is not built says so
+ * plainly (command line: exit 1, "not available yet: see issue N"; GUI: a notice in its tab).
+ */
+public enum Module {
+    STEPNC("STEP-NC import", 3, false),
+    TOOLPATH("STEP-NC toolpaths and G-code", 4, false),
+    ROBOT("robot cell and joint trajectory", 5, false),
+    ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
+    POCKET("pocket milling", 7, false),
+    CUTTING("sheet cutting", 8, false),
+    GRADING("grading", 9, false),
+    SOLE("sole mould", 10, false),
+    BENCH("benchmarks", 11, false);
+
+    private final String title;
+    private final int issue;
+    private final boolean available;
+
+    Module(String title, int issue, boolean available) {
+        this.title = title;
+        this.issue = issue;
+        this.available = available;
+    }
+
+    public String title() {
+        return title;
+    }
+
+    /** The issue that builds this module. */
+    public int issue() {
+        return issue;
+    }
+
+    public boolean isAvailable() {
+        return available;
+    }
+
+    public String unavailableMessage() {
+        return title + ": not available yet: see issue " + issue;
+    }
+}

@@ -1,0 +1,33 @@
+package org.fresa.job;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * What a task did: its exit status (0 done, 1 read but not fully doable), the problems a planner
+ * should read, a summary (printed with {@code --json}) and the files written.
+ *
+ * @param exitStatus 0 or 1 (bad input is a {@link org.fresa.model.CamInputException} instead)
+ * @param problems one sentence each, why the job could not be fully done, or warnings
+ * @param summary an ordered map of JSON-able values (String, Number, Boolean, List, Map)
+ * @param files the files written, in order
+ */
+public record TaskOutcome(int exitStatus, List<String> problems, Map<String, Object> summary, List<Path> files) {
+
+    public TaskOutcome {
+        if (exitStatus != 0 && exitStatus != 1) {
+            throw new IllegalArgumentException("exit status must be 0 or 1: " + exitStatus);
+        }
+        problems = List.copyOf(problems);
+        summary = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(Objects.requireNonNull(summary, "summary")));
+        files = List.copyOf(files);
+    }
+
+    /** A task that cannot run because its module is not built yet. */
+    public static TaskOutcome unavailable(Module module) {
+        return new TaskOutcome(1, List.of(module.unavailableMessage()), Map.of(), List.of());
+    }
+}

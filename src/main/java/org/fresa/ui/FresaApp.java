@@ -1,0 +1,33 @@
+package org.fresa.ui;
+
+import java.nio.file.Path;
+import java.util.Optional;
+import javax.swing.SwingUtilities;
+import com.formdev.flatlaf.FlatLightLaf;
+import org.fresa.job.RecentJobs;
+
+/** Starts the desktop application. */
+public final class FresaApp {
+    private FresaApp() {
+    }
+
+    /** Whether a screen is there to show the window on. */
+    public static boolean hasDisplay() {
+        return !java.awt.GraphicsEnvironment.isHeadless();
+    }
+
+    /** Opens the main window on the event thread, with the job when one is given. */
+    public static void launch(Optional<Path> job) {
+        SwingUtilities.invokeLater(() -> {
+            MainWindow w = create(RecentJobs.inUserHome());
+            w.setVisible(true);
+            job.ifPresent(w::openJob);
+        });
+    }
+
+    /** The main window, not yet shown (tests call this on the event thread). */
+    public static MainWindow create(RecentJobs recent) {
+        FlatLightLaf.setup();
+        return new MainWindow(new MainViewModel(recent));
+    }
+}

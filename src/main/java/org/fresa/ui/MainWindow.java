@@ -1,0 +1,285 @@
+package org.fresa.ui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JTabbedPane;
+import javax.swing.KeyStroke;
+import javax.swing.WindowConstants;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.fresa.job.JobRunner;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
+
+/** The main window: menu, the eight module tabs sharing one job, and the status bar. */
+public final class MainWindow extends JFrame {
+
+    private static final long serialVersionUID = 1L;
+
+    private final transient MainViewModel model;
+    private final JTabbedPane tabs = new JTabbedPane();
+    private final StatusBar status = new StatusBar();
+    private final transient BackgroundTasks tasks;
+    private final transient List<ModuleTab> moduleTabs;
+    private final JMenu recentMenu = new JMenu("Recent jobs");
+
+    MainWindow(MainViewModel model) {
+        super("Fresa");
+        this.model = model;
+        this.tasks = new BackgroundTasks(status, this);
+        setName("main");
+        setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
+        addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                quit();
+            }
+        });
+        moduleTabs = Tabs.create(new AppContext(model, tasks, this));
+        tabs.setName("tabs");
+        for (int i = 0; i < moduleTabs.size(); i++) {
+            ModuleTab t = moduleTabs.get(i);
+            tabs.addTab(t.title(), t.component());
+            tabs.setMnemonicAt(i, KeyEvent.VK_1 + i);
+            tabs.setToolTipTextAt(i, t.title() + " (Alt+" + (i + 1) + ")");
+        }
+        setJMenuBar(menuBar());
+        getContentPane().add(tabs, BorderLayout.CENTER);
+        getContentPane().add(status, BorderLayout.SOUTH);
+        setPreferredSize(new Dimension(1280, 820));
+        setMinimumSize(new Dimension(800, 560));
+        pack();
+        setLocationRelativeTo(null);
+        model.addListener(e -> updateTitle());
+        updateTitle();
+    }
+
+    private void updateTitle() {
+        setTitle(model.file().isEmpty() && !model.isDirty() && "untitled".equals(model.job().name())
+                ? "Fresa" : model.title());
+    }
+
+    private JMenuBar menuBar() {
+        JMenuBar bar = new JMenuBar();
+        JMenu file = new JMenu("File");
+        file.setMnemonic('F');
+        file.add(item("New", 'N', KeyStroke.getKeyStroke("ctrl N"), this::newJob));
+        file.add(item("Open job...", 'O', KeyStroke.getKeyStroke("ctrl O"), this::chooseAndOpen));
+        file.add(item("Save", 'S', KeyStroke.getKeyStroke("ctrl S"), this::save));
+        file.add(item("Save as...", 'A', KeyStroke.getKeyStroke("ctrl shift S"), this::saveAs));
+        recentMenu.setMnemonic('R');
+        file.add(recentMenu);
+        file.addMenuListener(new javax.swing.event.MenuListener() {
+            @Override
+            public void menuSelected(javax.swing.event.MenuEvent e) {
+                fillRecent();
+            }
+
+            @Override
+            public void menuDeselected(javax.swing.event.MenuEvent e) {
+            }
+
+            @Override
+            public void menuCanceled(javax.swing.event.MenuEvent e) {
+            }
+        });
+        file.addSeparator();
+        file.add(item("Export plot (PNG/SVG)...", 'E', KeyStroke.getKeyStroke("ctrl E"), this::exportPlot));
+        file.addSeparator();
+        file.add(item("Quit", 'Q', KeyStroke.getKeyStroke("ctrl Q"), this::quit));
+        bar.add(file);
+        JMenu job = new JMenu("Job");
+        job.setMnemonic('J');
+        job.add(item("Run job into folder...", 'R', KeyStroke.getKeyStroke("F5"), this::runJob));
+        job.add(item("Cancel running task", 'C', KeyStroke.getKeyStroke("ESCAPE"), tasks::cancel));
+        bar.add(job);
+        return bar;
+    }
+
+    private static JMenuItem item(String text, char mnemonic, KeyStroke key, Runnable action) {
+        JMenuItem i = new JMenuItem(text);
+        i.setMnemonic(mnemonic);
+        i.setAccelerator(key);
+        i.addActionListener(e -> action.run());
+        return i;
+    }
+
+    private void fillRecent() {
+        recentMenu.removeAll();
+        List<Path> recent = model.recentJobs();
+        if (recent.isEmpty()) {
+            JMenuItem none = new JMenuItem("(none)");
+            none.setEnabled(false);
+            recentMenu.add(none);
+        }
+        int n = 1;
+        for (Path p : recent) {
+            JMenuItem i = new JMenuItem(n + " " + p.getFileName() + "  (" + p.getParent() + ")");
+            if (n <= 9) {
+                i.setMnemonic(KeyEvent.VK_0 + n);
+            }
+            i.addActionListener(e -> openJob(p));
+            recentMenu.add(i);
+            n++;
+        }
+    }
+
+    public MainViewModel model() {
+        return model;
+    }
+
+    JTabbedPane tabs() {
+        return tabs;
+    }
+
+    private boolean confirmDiscard() {
+        if (!model.isDirty()) {
+            return true;
+        }
+        int a = JOptionPane.showConfirmDialog(this, "The job has unsaved changes. Save them first?", "Fresa",
+                JOptionPane.YES_NO_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE);
+        if (a == JOptionPane.YES_OPTION) {
+            return save();
+        }
+        return a == JOptionPane.NO_OPTION;
+    }
+
+    private void newJob() {
+        if (confirmDiscard()) {
+            model.newJob();
+            status.message.setText("New job");
+        }
+    }
+
+    private void chooseAndOpen() {
+        if (!confirmDiscard()) {
+            return;
+        }
+        JFileChooser fc = jobChooser();
+        if (fc.showOpenDialog(this) == JFileChooser.APPROVE_OPTION) {
+            openJob(fc.getSelectedFile().toPath());
+        }
+    }
+
+    /** Opens a job file, showing a dialog with the reason when it is refused. */
+    public void openJob(Path p) {
+        try {
+            model.open(p);
+            status.message.setText("Opened " + p);
+        } catch (CamInputException e) {
+            Dialogs.error(this, "Open job", e.getMessage());
+        }
+    }
+
+    private JFileChooser jobChooser() {
+        JFileChooser fc = new JFileChooser(model.file().map(Path::getParent).map(Path::toFile).orElse(null));
+        fc.setFileFilter(new FileNameExtensionFilter("Fresa jobs (*.xml)", "xml"));
+        return fc;
+    }
+
+    private boolean save() {
+        try {
+            if (model.save()) {
+                status.message.setText("Saved " + model.file().orElseThrow());
+                return true;
+            }
+            return saveAs();
+        } catch (IOException e) {
+            Dialogs.error(this, "Save job", e.getMessage());
+            return false;
+        }
+    }
+
+    private boolean saveAs() {
+        JFileChooser fc = jobChooser();
+        if (fc.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) {
+            return false;
+        }
+        try {
+            model.saveAs(fc.getSelectedFile().toPath());
+            status.message.setText("Saved " + model.file().orElseThrow());
+            return true;
+        } catch (IOException e) {
+            Dialogs.error(this, "Save job", e.getMessage());
+            return false;
+        }
+    }
+
+    private Optional<PlotPanel> currentPlot() {
+        int i = tabs.getSelectedIndex();
+        return i < 0 ? Optional.empty() : moduleTabs.get(i).plot();
+    }
+
+    private void exportPlot() {
+        Optional<PlotPanel> plot = currentPlot();
+        if (plot.isEmpty()) {
+            Dialogs.info(this, "Export plot", "This tab has no plot to export.");
+            return;
+        }
+        JFileChooser fc = new JFileChooser();
+        fc.addChoosableFileFilter(new FileNameExtensionFilter("SVG drawing (*.svg)", "svg"));
+        fc.setFileFilter(new FileNameExtensionFilter("PNG image (*.png)", "png"));
+        if (fc.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path p = fc.getSelectedFile().toPath();
+        if (!p.getFileName().toString().contains(".")) {
+            boolean svg = fc.getFileFilter().getDescription().startsWith("SVG");
+            p = p.resolveSibling(p.getFileName() + (svg ? ".svg" : ".png"));
+        }
+        try {
+            plot.get().export(p);
+            status.message.setText("Exported " + p);
+        } catch (IOException e) {
+            Dialogs.error(this, "Export plot", e.getMessage());
+        }
+    }
+
+    private void runJob() {
+        JFileChooser fc = new JFileChooser();
+        fc.setDialogTitle("Output folder");
+        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        if (fc.showDialog(this, "Run here") != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path dir = fc.getSelectedFile().toPath();
+        var job = model.job();
+        tasks.start("Run " + job.task().id(), pm -> JobRunner.run(job, new OutputFolder(dir), pm), this::showOutcome);
+    }
+
+    private void showOutcome(TaskOutcome o) {
+        StringBuilder sb = new StringBuilder();
+        for (String p : o.problems()) {
+            sb.append(p).append('\n');
+        }
+        for (Path f : o.files()) {
+            sb.append("wrote ").append(f).append('\n');
+        }
+        if (o.exitStatus() == 0) {
+            Dialogs.info(this, "Run job", sb.length() == 0 ? "Done." : sb.toString());
+        } else {
+            Dialogs.error(this, "Run job", sb.toString());
+        }
+    }
+
+    private void quit() {
+        if (confirmDiscard()) {
+            tasks.cancel();
+            dispose();
+            System.exit(0);
+        }
+    }
+}

@@ -1,0 +1,104 @@
+package org.fresa.ui;
+
+import java.awt.BorderLayout;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.swing.JPanel;
+import org.fresa.chart.ChartFiles;
+import org.fresa.chart.PlotScene;
+import org.fresa.chart.ToolpathChart;
+import org.fresa.geom.Box2;
+import org.jfree.chart.ChartPanel;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.plot.XYPlot;
+
+/**
+ * The plot view shared by all tabs: a {@link PlotScene} drawn with equal scale on both axes,
+ * zoom with the mouse wheel or a drag, pan with Ctrl+drag, Home/F to fit, and export as PNG or SVG.
+ */
+public final class PlotPanel extends JPanel {
+
+    private static final long serialVersionUID = 1L;
+
+    private final ChartPanel chartPanel;
+    private transient PlotScene scene = PlotScene.empty("");
+    private transient JFreeChart chart;
+
+    public PlotPanel() {
+        super(new BorderLayout());
+        chart = ToolpathChart.create(scene);
+        chartPanel = new ChartPanel(chart, false, false, false, true, false);
+        chartPanel.setMouseWheelEnabled(true);
+        chartPanel.setMouseZoomable(true);
+        chartPanel.setFocusable(true);
+        chartPanel.setName("plot");
+        chartPanel.setMinimumDrawWidth(10);
+        chartPanel.setMinimumDrawHeight(10);
+        chartPanel.setMaximumDrawWidth(4000);
+        chartPanel.setMaximumDrawHeight(3000);
+        add(chartPanel, BorderLayout.CENTER);
+        chartPanel.addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                fit();
+            }
+        });
+        javax.swing.InputMap im = chartPanel.getInputMap(WHEN_FOCUSED);
+        im.put(javax.swing.KeyStroke.getKeyStroke("HOME"), "fit");
+        im.put(javax.swing.KeyStroke.getKeyStroke("F"), "fit");
+        chartPanel.getActionMap().put("fit", new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                fit();
+            }
+        });
+    }
+
+    public PlotScene scene() {
+        return scene;
+    }
+
+    /** Shows a new scene, fitted to the panel. Call on the event thread. */
+    public void show(PlotScene s) {
+        this.scene = s;
+        this.chart = ToolpathChart.create(s);
+        chartPanel.setChart(chart);
+        fit();
+    }
+
+    /** Fits the scene into the view with equal millimetres per pixel on both axes. */
+    public void fit() {
+        XYPlot plot = chart.getXYPlot();
+        Box2 b = scene.bounds().orElse(new Box2(0, 0, 100, 100));
+        java.awt.geom.Rectangle2D area = chartPanel.getScreenDataArea();
+        double w = area.getWidth() > 10 ? area.getWidth() : Math.max(100, getWidth() - 80);
+        double h = area.getHeight() > 10 ? area.getHeight() : Math.max(100, getHeight() - 60);
+        double pad = 0.05 * Math.max(1e-3, Math.max(b.width(), b.height()));
+        double bw = b.width() + 2 * pad;
+        double bh = b.height() + 2 * pad;
+        double scale = Math.max(bw / w, bh / h);
+        double cx = b.center().x();
+        double cy = b.center().y();
+        plot.getDomainAxis().setRange(cx - scale * w / 2, cx + scale * w / 2);
+        plot.getRangeAxis().setRange(cy - scale * h / 2, cy + scale * h / 2);
+    }
+
+    /** Writes the current plot as PNG or SVG, chosen by the file's extension. */
+    public void export(Path file) throws IOException {
+        int w = Math.max(800, chartPanel.getWidth());
+        int h = Math.max(600, chartPanel.getHeight());
+        try (OutputStream out = Files.newOutputStream(file)) {
+            if (file.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".svg")) {
+                ChartFiles.writeSvg(chart, w, h, out);
+            } else {
+                ChartFiles.writePng(chart, w, h, out);
+            }
+        }
+    }
+}

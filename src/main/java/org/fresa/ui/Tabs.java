@@ -1,0 +1,25 @@
+package org.fresa.ui;
+
+import java.util.List;
+import org.fresa.job.Module;
+
+/**
+ * The eight tabs of the main window, in order. A module that is built puts its own tab here in
+ * place of the {@link UnavailableTab}.
+ */
+final class Tabs {
+    private Tabs() {
+    }
+
+    static List<ModuleTab> create(AppContext ctx) {
+        return List.of(
+                new UnavailableTab("STEP-NC", Module.STEPNC),
+                new UnavailableTab("Position", Module.ROBOT),
+                new UnavailableTab("Robot", Module.ROBOT),
+                new UnavailableTab("Pocket", Module.POCKET),
+                new UnavailableTab("Cutting", Module.CUTTING),
+                new UnavailableTab("Grading", Module.GRADING),
+                new UnavailableTab("Sole", Module.SOLE),
+                new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
+    }
+}

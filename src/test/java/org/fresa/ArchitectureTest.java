@@ -1,0 +1,95 @@
+package org.fresa;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+
+import com.tngtech.archunit.core.importer.ImportOption;
+import com.tngtech.archunit.junit.AnalyzeClasses;
+import com.tngtech.archunit.junit.ArchTest;
+import com.tngtech.archunit.lang.ArchRule;
+import com.tngtech.archunit.library.GeneralCodingRules;
+
+/**
+ * The layering of docs/architecture.md, checked on every build: geometry at the bottom, domain
+ * modules above it, the job services above those, the GUI and the command line on top.
+ */
+@AnalyzeClasses(packages = "org.fresa", importOptions = ImportOption.DoNotIncludeTests.class)
+class ArchitectureTest {
+
+    private static final String GEOM = "org.fresa.geom..";
+    private static final String UI = "org.fresa.ui..";
+
+    @ArchTest
+    static final ArchRule layersPointOneWay = layeredArchitecture().consideringOnlyDependenciesInLayers()
+            .layer("Geometry").definedBy(GEOM)
+            .layer("Core").definedBy("org.fresa.kin..", "org.fresa.model..")
+            .layer("Domain").definedBy("org.fresa.stepnc..", "org.fresa.dxf..", "org.fresa.pocket..",
+                    "org.fresa.toolpath..", "org.fresa.cutting..", "org.fresa.grading..", "org.fresa.sole..",
+                    "org.fresa.post..")
+            .layer("Chart").definedBy("org.fresa.chart..")
+            .layer("Service").definedBy("org.fresa.job..")
+            .layer("Ui").definedBy(UI)
+            .layer("App").definedBy("org.fresa.app..")
+            .whereLayer("App").mayNotBeAccessedByAnyLayer()
+            .whereLayer("Ui").mayOnlyBeAccessedByLayers("App")
+            .whereLayer("Service").mayOnlyBeAccessedByLayers("Ui", "App")
+            .whereLayer("Chart").mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Domain").mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .whereLayer("Core").mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
+
+    @ArchTest
+    static final ArchRule packagesAreFreeOfCycles = slices().matching("org.fresa.(*)..").should().beFreeOfCycles()
+            .because("a cycle between packages makes the layers meaningless");
+
+    @ArchTest
+    static final ArchRule geometryDependsOnTheJdkOnly = classes().that().resideInAPackage(GEOM)
+            .should().onlyDependOnClassesThat().resideInAnyPackage(GEOM, "java.lang..", "java.util..")
+            .because("geometry is pure value types with no I/O and no libraries");
+
+    @ArchTest
+    static final ArchRule kinematicsDoesNotUseTheModel = noClasses().that().resideInAPackage("org.fresa.kin..")
+            .should().dependOnClassesThat().resideInAnyPackage("org.fresa.model..", "org.fresa.stepnc..")
+            .because("kinematics is a service on geometry alone");
+
+    @ArchTest
+    static final ArchRule readersNeverPlanPaths = noClasses()
+            .that().resideInAnyPackage("org.fresa.stepnc..", "org.fresa.dxf..")
+            .should().dependOnClassesThat().resideInAnyPackage("org.fresa.pocket..", "org.fresa.toolpath..",
+                    "org.fresa.cutting..", "org.fresa.post..", "org.fresa.kin..")
+            .because("readers turn files into models; planning is elsewhere");
+
+    @ArchTest
+    static final ArchRule swingOnlyInUi = noClasses().that().resideOutsideOfPackage(UI)
+            .should().dependOnClassesThat().resideInAPackage("javax.swing..")
+            .because("Swing lives in the ui package only; everything else runs headless");
+
+    @ArchTest
+    static final ArchRule awtOnlyInChartAndUi = noClasses()
+            .that().resideOutsideOfPackages("org.fresa.chart..", UI)
+            .and().areNotAnnotatedWith(org.fresa.app.AllowedToUseAwt.class)
+            .should().dependOnClassesThat().resideInAnyPackage("java.awt..", "org.jfree..")
+            .because("drawing belongs to chart and ui; exceptions carry @AllowedToUseAwt with a reason");
+
+    @ArchTest
+    static final ArchRule viewModelsAreSwingFree = noClasses().that().haveSimpleNameEndingWith("ViewModel")
+            .should().dependOnClassesThat().resideInAPackage("javax.swing..")
+            .because("view models hold state and validation and are tested without a screen");
+
+    @ArchTest
+    static final ArchRule geometryIsImmutable = classes().that().resideInAPackage(GEOM)
+            .should().haveOnlyFinalFields()
+            .because("geometry values are immutable");
+
+    @ArchTest
+    static final ArchRule standardStreamsOnlyInTheCommandLine = noClasses()
+            .that().resideOutsideOfPackage("org.fresa.app.cli..")
+            .should(GeneralCodingRules.ACCESS_STANDARD_STREAMS)
+            .because("only the command line talks to stdout and stderr");
+
+    @ArchTest
+    static final ArchRule noGenericExceptions = GeneralCodingRules.NO_CLASSES_SHOULD_THROW_GENERIC_EXCEPTIONS
+            .because("throw a CamInputException for bad input, an IllegalArgumentException for misuse");
+}
