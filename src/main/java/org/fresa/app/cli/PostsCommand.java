@@ -1,7 +1,14 @@
 package org.fresa.app.cli;
 
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.Json;
+import org.fresa.post.NcPost;
+import org.fresa.post.NcPosts;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -19,6 +26,25 @@ final class PostsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.TOOLPATH);
+        PrintWriter out = spec.commandLine().getOut();
+        List<Map<String, Object>> posts = new ArrayList<>();
+        for (NcPost p : NcPosts.all()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("name", p.name());
+            m.put("description", p.description());
+            m.put("default", p.name().equals(NcPosts.DEFAULT));
+            posts.add(m);
+        }
+        if (json) {
+            Map<String, Object> all = new LinkedHashMap<>();
+            all.put("posts", posts);
+            out.println(Json.write(all));
+        } else {
+            for (NcPost p : NcPosts.all()) {
+                out.printf("%-10s %s%n", p.name(), p.description());
+            }
+        }
+        out.flush();
+        return CliSupport.EXIT_OK;
     }
 }

@@ -1,0 +1,109 @@
+package org.fresa.post;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import org.fresa.model.Toolpath;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class NcPostsTest {
+
+    private static final Path GOLDEN = Path.of("src/test/resources/org/fresa/post");
+
+    static String program(String post, Toolpath path) throws IOException {
+        StringWriter w = new StringWriter();
+        NcPosts.byName(post).orElseThrow().write(path, "mixed sample", w);
+        return w.toString();
+    }
+
+    /** The 840D program in RS274/NGC words, so LinuxCNC can check its motions. */
+    static String siemensAsNgc(String program) {
+        StringBuilder sb = new StringBuilder();
+        for (String line : program.split("\n")) {
+            if (line.startsWith("%_N_") || line.startsWith(";$PATH")) {
+                continue;
+            }
+            String l = line.replace("G71 ", "G21 ").replace(" G60", " G61").replaceAll(" D1$", "");
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("TURN=(\\d+)").matcher(l);
+            if (m.find()) {
+                l = m.replaceFirst("P" + (Integer.parseInt(m.group(1)) + 1));
+            }
+            sb.append(l).append('\n');
+        }
+        return sb.toString();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"linuxcnc", "iso", "fanuc", "840d"})
+    void eachPostWritesTheMixedSampleAsItsGoldenFile(String post) throws IOException {
+        String text = program(post, SampleToolpaths.mixed());
+        Path golden = GOLDEN.resolve("mixed." + post + ".nc");
+        if (Boolean.getBoolean("fresa.updateGolden")) {
+            Files.writeString(golden, text, StandardCharsets.UTF_8);
+        }
+        assertEquals(Files.readString(golden, StandardCharsets.UTF_8), text);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"linuxcnc", "iso", "fanuc", "840d"})
+    void linuxCncsInterpreterMakesExactlyTheToolpathsMotions(String post, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), "rs274 not present");
+        Toolpath path = SampleToolpaths.mixed();
+        String text = program(post, path);
+        // 840D words LinuxCNC lacks (G71, D1, TURN=) are mapped to their RS274 twins; the rest is read as is
+        if (post.equals("840d")) {
+            text = siemensAsNgc(text);
+        }
+        Path file = dir.resolve("p.ngc");
+        Files.writeString(file, text);
+        Rs274.Result r = Rs274.run(file, 10);
+        assertEquals(0, r.exitStatus(), r.stderr());
+        boolean split = post.equals("iso") || post.equals("fanuc");
+        List<Rs274.Canon> expected = ExpectedMotions.of(path, split, NcPosts.CHORD_TOLERANCE_MM);
+        assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
+    }
+
+    @Test
+    void numbersUseAPointWhateverTheDefaultLocale() throws IOException {
+        Locale saved = Locale.getDefault();
+        try {
+            Locale.setDefault(Locale.GERMANY);
+            String text = program("linuxcnc", SampleToolpaths.mixed());
+            assertTrue(text.contains("X10.000 Y10.000 Z-1.000 F300.0"), text);
+            assertFalse(text.matches("(?s).*\\d,\\d.*"));
+        } finally {
+            Locale.setDefault(saved);
+        }
+    }
+
+    @Test
+    void postsAreFoundByNameIgnoringCaseAndUnknownNamesAreEmpty() {
+        assertEquals("840d", NcPosts.byName("840D").orElseThrow().name());
+        assertEquals("linuxcnc", NcPosts.byName(" LinuxCNC ").orElseThrow().name());
+        assertTrue(NcPosts.byName("heidenhain").isEmpty());
+        assertEquals(List.of("linuxcnc", "iso", "fanuc", "840d"), NcPosts.names());
+        assertEquals("linuxcnc", NcPosts.defaultPost().name());
+    }
+
+    @Test
+    void aTiltedArcIsReplacedByChordsWithinTheTolerance() throws IOException {
+        String text = program("linuxcnc", SampleToolpaths.mixed());
+        // the tilted half circle of radius 5 at 0.001 mm needs ceil(pi / (2 acos(1 - 0.001 / 5))) = ceil(78.5) = 79 chords
+        long g1InWs2 = text.lines().dropWhile(l -> !l.startsWith("(WS2")).takeWhile(l -> !l.startsWith("(WS3"))
+                .filter(l -> l.startsWith("G1 ")).count();
+        assertEquals(1 + 79, g1InWs2);
+    }
+}

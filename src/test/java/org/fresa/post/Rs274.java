@@ -1,0 +1,114 @@
+package org.fresa.post;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.fresa.geom.Vec3;
+
+/**
+ * Test helper: runs {@code ../shared/tools/rs274} (LinuxCNC's interpreter) on a program and
+ * reads its canonical motions back into workpiece-frame values. Tests skip when it is absent.
+ */
+public final class Rs274 {
+
+    public static final Path TOOL = Path.of("../shared/tools/rs274");
+
+    private static final Pattern CALL = Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE)\\((.*)\\)");
+
+    private Rs274() {
+    }
+
+    public static boolean available() {
+        return Files.isExecutable(TOOL);
+    }
+
+    /** What the interpreter did with a program. */
+    public record Result(int exitStatus, String stdout, String stderr, List<Canon> motions) {
+    }
+
+    /**
+     * One canonical motion. For arcs, centre is the axis point at the start's height along the
+     * normal, normal is +Z/+Y/+X for the XY/XZ/YZ plane, rotation as printed (sign = sense about
+     * the normal, magnitude = turns + 1).
+     */
+    public record Canon(String kind, Vec3 end, Vec3 center, Vec3 normal, int rotation) {
+    }
+
+    public static Result run(Path program, double toolDiameterMm) throws IOException, InterruptedException {
+        Path outFile = Files.createTempFile("rs274", ".out");
+        Path errFile = Files.createTempFile("rs274", ".err");
+        try {
+            Process p = new ProcessBuilder(TOOL.toString(), "--tool-diameter", Double.toString(toolDiameterMm),
+                    program.toString())
+                    .redirectOutput(outFile.toFile()).redirectError(errFile.toFile()).start();
+            if (!p.waitFor(120, TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                throw new IOException("rs274 did not finish");
+            }
+            String out = Files.readString(outFile, StandardCharsets.UTF_8);
+            String err = Files.readString(errFile, StandardCharsets.UTF_8);
+            return new Result(p.exitValue(), out, err, parse(out));
+        } finally {
+            Files.deleteIfExists(outFile);
+            Files.deleteIfExists(errFile);
+        }
+    }
+
+    static List<Canon> parse(String out) {
+        List<Canon> list = new ArrayList<>();
+        String plane = "CANON_PLANE_XY";
+        for (String line : out.split("\n")) {
+            Matcher m = CALL.matcher(line);
+            if (!m.find()) {
+                continue;
+            }
+            String[] a = m.group(2).split(",\\s*");
+            switch (m.group(1)) {
+                case "SELECT_PLANE" -> plane = a[0].trim();
+                case "STRAIGHT_TRAVERSE", "STRAIGHT_FEED" -> list.add(new Canon(
+                        m.group(1).equals("STRAIGHT_FEED") ? "feed" : "rapid",
+                        new Vec3(d(a[0]), d(a[1]), d(a[2])), null, null, 0));
+                default -> {
+                    double e1 = d(a[0]);
+                    double e2 = d(a[1]);
+                    double c1 = d(a[2]);
+                    double c2 = d(a[3]);
+                    int rot = Integer.parseInt(a[4].trim());
+                    double ax = d(a[5]);
+                    Vec3 end;
+                    Vec3 cen;
+                    Vec3 n;
+                    switch (plane) {
+                        case "CANON_PLANE_XZ" -> {
+                            end = new Vec3(e2, ax, e1);
+                            cen = new Vec3(c2, 0, c1);
+                            n = Vec3.UNIT_Y;
+                        }
+                        case "CANON_PLANE_YZ" -> {
+                            end = new Vec3(ax, e1, e2);
+                            cen = new Vec3(0, c1, c2);
+                            n = Vec3.UNIT_X;
+                        }
+                        default -> {
+                            end = new Vec3(e1, e2, ax);
+                            cen = new Vec3(c1, c2, 0);
+                            n = Vec3.UNIT_Z;
+                        }
+                    }
+                    list.add(new Canon("arc", end, cen, n, rot));
+                }
+            }
+        }
+        return list;
+    }
+
+    private static double d(String s) {
+        return Double.parseDouble(s.trim());
+    }
+}
