@@ -60,7 +60,10 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
     public enum Dialect {
         /** ISO 14649-10/11 as published (feed, cutting speed m/s; spindle rev/s) */
         ISO_14649,
-        /** UFSC GRIMA's STEP Modeler (COMBINED_SCHEMA): spindle rpm, cutting speed m/min, overlap in mm */
+        /**
+         * UFSC GRIMA's writers (STEP Modeler, COMBINED_SCHEMA, and their JSDAI files whose spindle
+         * speeds are rpm): spindle rpm, cutting speed m/min, overlap in mm, angles in radians
+         */
         STEP_MODELER
     }
 }

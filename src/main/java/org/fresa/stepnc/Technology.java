@@ -21,7 +21,7 @@ import java.util.OptionalDouble;
  * @param feedPerTooth as written, mm
  * @param feedMmPerMin the feed converted to mm/min when the unit is known
  * @param spindleRpm |spindle| in rpm when the unit is known
- * @param spindleClockwise true when the file marks clockwise rotation (a negative ISO spindle)
+ * @param spindleClockwise true when the file marks clockwise rotation (a negative spindle, as NIST and GRIMA write it)
  */
 public record Technology(long instanceId, OptionalDouble feedrate, String feedrateUnit,
         Optional<String> feedrateReference, OptionalDouble cutSpeed, String cutSpeedUnit, OptionalDouble spindle,
