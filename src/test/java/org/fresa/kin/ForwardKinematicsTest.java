@@ -87,12 +87,16 @@ class ForwardKinematicsTest {
     }
 
     static void assertSame(double[][] m, Transform3 t, double tolMm) {
+        assertSame(m, t, tolMm, 1e-11);
+    }
+
+    static void assertSame(double[][] m, Transform3 t, double tolMm, double tolR) {
         assertAll(
                 () -> assertEquals(m[0][3], t.tx(), tolMm), () -> assertEquals(m[1][3], t.ty(), tolMm),
                 () -> assertEquals(m[2][3], t.tz(), tolMm),
-                () -> assertEquals(m[0][0], t.r00(), 1e-11), () -> assertEquals(m[1][1], t.r11(), 1e-11),
-                () -> assertEquals(m[0][2], t.r02(), 1e-11), () -> assertEquals(m[1][2], t.r12(), 1e-11),
-                () -> assertEquals(m[2][2], t.r22(), 1e-11), () -> assertEquals(m[2][0], t.r20(), 1e-11));
+                () -> assertEquals(m[0][0], t.r00(), tolR), () -> assertEquals(m[1][1], t.r11(), tolR),
+                () -> assertEquals(m[0][2], t.r02(), tolR), () -> assertEquals(m[1][2], t.r12(), tolR),
+                () -> assertEquals(m[2][2], t.r22(), tolR), () -> assertEquals(m[2][0], t.r20(), tolR));
     }
 
     @Test
