@@ -62,7 +62,7 @@ public final class Part21Reader {
 
     private StepFile file() throws IOException, StepParseException {
         lx.next();
-        expectKeyword("ISO-10303-21", "a Part 21 file starts with ISO-10303-21;");
+        expectKeyword("ISO-10303-21", "ISO-10303-21; (the first keyword of a Part 21 file)");
         expect(Tok.SEMICOLON, "';' after ISO-10303-21");
         expectKeyword("HEADER", "the header section (HEADER;)");
         expect(Tok.SEMICOLON, "';' after HEADER");
