@@ -62,7 +62,7 @@ public final class Part21Reader {
 
     private StepFile file() throws IOException, StepParseException {
         lx.next();
-        expectKeyword("ISO-10303-21", "a Part 21 file starts with ISO-10303-21;");
+        expectKeyword("ISO-10303-21", "ISO-10303-21; (the first keyword of a Part 21 file)");
         expect(Tok.SEMICOLON, "';' after ISO-10303-21");
         expectKeyword("HEADER", "the header section (HEADER;)");
         expect(Tok.SEMICOLON, "';' after HEADER");
@@ -143,14 +143,14 @@ public final class Part21Reader {
         if (id == 0) {
             throw lx.errorHere("instance name #0 is not allowed (names start at #1)");
         }
+        lx.currentInstance = id;
+        lx.next();
+        expect(Tok.EQUALS, "'=' after the instance name");
         StepInstance earlier = instances.get(id);
         if (earlier != null) {
             throw new StepParseException(source, line, col, id,
                     "instance name #" + id + " is defined twice (first at line " + earlier.line() + ")");
         }
-        lx.currentInstance = id;
-        lx.next();
-        expect(Tok.EQUALS, "'=' after the instance name");
         List<StepRecord> records;
         if (lx.tok == Tok.KEYWORD) {
             records = List.of(simpleRecord(0));
@@ -266,7 +266,7 @@ public final class Part21Reader {
             case EOF -> "the end of the file";
             case STRING -> "a string";
             case KEYWORD -> shorten(lx.text);
-            case INSTANCE -> "#" + lx.text;
+            case INSTANCE -> "#" + lx.longValue;
             default -> "'" + shorten(lx.text) + "'";
         };
         return lx.errorHere("expected " + expected + ", found " + found);

@@ -13,7 +13,7 @@ final class Tabs {
 
     static List<ModuleTab> create(AppContext ctx) {
         return List.of(
-                new UnavailableTab("STEP-NC", Module.STEPNC),
+                new StepNcTab(ctx),
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
                 new UnavailableTab("Pocket", Module.POCKET),
