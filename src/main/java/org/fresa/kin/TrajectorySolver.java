@@ -253,6 +253,8 @@ public final class TrajectorySolver {
                 if (ok) {
                     out.add(new Piece(m, s));
                     cur = s;
+                } else if (s == null && i == pieces && k >= 2) {
+                    return null; // the target itself fails from a quarter of the move away: not a matter of steps
                 }
             }
             if (ok) {
@@ -301,31 +303,64 @@ public final class TrajectorySolver {
         return c;
     }
 
-    /** Cold solve at the free rotation phi, then (if allowed) at turns further and further from it. */
+    /**
+     * Cold solve at the free rotation phi, then (if allowed) at half and quarter turns from it;
+     * when some turn has solutions but none clear of limits and singularity, every 20 degrees.
+     */
     private Sol cold(ToolTarget t, double phi) {
-        Sol fallback = null;
-        double fallbackScore = Double.NEGATIVE_INFINITY;
-        int steps = options.freeRotation() ? (int) Math.floor(options.maxFreeRotationDeg() / 20) : 0;
-        for (int i = 0; i <= 2 * steps; i++) {
-            double p = phi + (i % 2 == 1 ? 1 : -1) * ((i + 1) / 2) * 20.0;
-            if (Math.abs(p) > options.maxFreeRotationDeg() + 1e-9) {
-                continue;
+        Sol[] fallback = new Sol[1];
+        double[] fallbackScore = {Double.NEGATIVE_INFINITY};
+        List<Double> first = new ArrayList<>(List.of(phi));
+        if (options.freeRotation() && robot.controlsFullOrientation()) {
+            // a robot with fewer joints turns the tool with one joint: the turn does not decide reach
+            first.addAll(List.of(phi + 180, phi + 90, phi - 90));
+        }
+        for (double p : first) {
+            Sol s = coldAt(t, wrap(p), fallback, fallbackScore);
+            if (s != null) {
+                return s;
             }
-            long t0 = System.nanoTime();
-            List<IkResult.Converged> all = solver.solveAll(t.pose(p));
-            ikNanos += System.nanoTime() - t0;
-            for (IkResult.Converged c : all) {
-                double sc = score(c.q());
-                if (comfortable(c.q())) {
-                    return new Sol(c.q(), p);
-                }
-                if (sc > fallbackScore) {
-                    fallback = new Sol(c.q(), p);
-                    fallbackScore = sc;
+        }
+        if (fallback[0] != null && options.freeRotation()) {
+            int steps = (int) Math.floor(options.maxFreeRotationDeg() / 20);
+            for (int i = 1; i <= 2 * steps; i++) {
+                double p = phi + (i % 2 == 1 ? 1 : -1) * ((i + 1) / 2) * 20.0;
+                Sol s = coldAt(t, wrap(p), fallback, fallbackScore);
+                if (s != null) {
+                    return s;
                 }
             }
         }
-        return fallback;
+        return fallback[0];
+    }
+
+    private double wrap(double phiDeg) {
+        double p = phiDeg;
+        while (p > 180) {
+            p -= 360;
+        }
+        while (p < -180) {
+            p += 360;
+        }
+        return Math.max(-options.maxFreeRotationDeg(), Math.min(options.maxFreeRotationDeg(), p));
+    }
+
+    /** A comfortable cold solution at turn p, or null (remembering the best other one). */
+    private Sol coldAt(ToolTarget t, double p, Sol[] fallback, double[] fallbackScore) {
+        long t0 = System.nanoTime();
+        List<IkResult.Converged> all = solver.solveAll(t.pose(p));
+        ikNanos += System.nanoTime() - t0;
+        for (IkResult.Converged c : all) {
+            if (comfortable(c.q())) {
+                return new Sol(c.q(), p);
+            }
+            double sc = score(c.q());
+            if (sc > fallbackScore[0]) {
+                fallback[0] = new Sol(c.q(), p);
+                fallbackScore[0] = sc;
+            }
+        }
+        return null;
     }
 
     private Sol warm(ToolTarget t, double phi, double[] seed) {
