@@ -30,7 +30,7 @@ public final class JobRunner {
             case POCKET:
                 return TaskOutcome.unavailable(Module.POCKET);
             case CUT:
-                return TaskOutcome.unavailable(Module.CUTTING);
+                return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);
             case GRADE:
                 return TaskOutcome.unavailable(Module.GRADING);
             case SOLE:

@@ -10,7 +10,7 @@ public enum Module {
     ROBOT("robot cell and joint trajectory", 5, false),
     ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
     POCKET("pocket milling", 7, false),
-    CUTTING("sheet cutting", 8, false),
+    CUTTING("sheet cutting", 8, true),
     GRADING("grading", 9, false),
     SOLE("sole mould", 10, false),
     BENCH("benchmarks", 11, false);

@@ -73,10 +73,10 @@ public final class LineArcOffsetter {
                 kept.add(p);
             }
         }
-        List<Contour> loops = OffsetChains.loops(kept, 1e-7 * scale);
+        List<Contour> loops = OffsetChains.loops(kept, 1e-9 * scale);
         List<Contour> out = new ArrayList<>();
         for (Contour c : loops) {
-            if (c.area() > tol.linear() * tol.linear()) {
+            if (c.area() > Math.max(tol.linear() * tol.linear(), 1e-12 * scale * scale)) {
                 out.add(c);
             }
         }

@@ -2,7 +2,8 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.CuttingService;
+import org.fresa.job.JobSettings.CuttingSettings;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -55,6 +56,9 @@ final class CutCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.CUTTING);
+        CuttingSettings s = new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead, tolerance, units,
+                paperMode, post);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
+                progress -> CuttingService.run(s, out, progress));
     }
 }
