@@ -128,6 +128,22 @@ class GraderTest {
                 () -> assertEquals(0, g.origin().norm(), 1e-9));
     }
 
+    /**
+     * The thesis's real sole (App. F): the origin found is the centre of its heel circle C1,
+     * (0, 0.2) as the seed computes, not the (0, 0) the thesis drew it about; and the measured
+     * extents are 269.227 x 92.950 mm where the thesis's program states CP 270 and LP 90, so the
+     * thesis's CP and LP are nominal values, not the drawn outline's extents.
+     */
+    @Test
+    void theThesisSoleIsGradedAboutItsHeelCircleCentre() throws Exception {
+        Contour sole = ThesisPatterns.sole40().toContour();
+        Grader g = Grader.of(List.of(sole), GradingPlan.of(SizeSystem.BR, 40, List.of(42.0)), "thesis sole");
+        assertAll(() -> assertEquals(0, g.origin().distance(new Vec2(0, 0.2)), 1e-3),
+                () -> assertEquals(Vec2.UNIT_Y, g.frame().lengthAxis()),
+                () -> assertEquals(269.227, g.rule().baseLengthMm(), 1e-3),
+                () -> assertEquals(92.950, g.rule().baseWidthMm(), 1e-3));
+    }
+
     @Test
     void anOutlineWithoutAHeelArcNeedsAnOrigin() {
         Contour box = Contour.polygon(List.of(new Vec2(0, 0), new Vec2(90, 0), new Vec2(90, 270), new Vec2(0, 270)));
