@@ -101,6 +101,18 @@ class GraderTest {
     }
 
     @Test
+    void aClockwiseOutlineGradesAsWell() throws Exception {
+        Contour base = sole40().reversed();
+        Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, List.of(36.0, 44.0)), "sole");
+        for (GradedSize s : g.gradeAll().sizes()) {
+            Contour out = s.output().get(0);
+            assertTrue(!out.isCcw());
+            double worst = worstDistanceToExactImage(base, out, PantographMap.of(g.frame(), s.factors()));
+            assertTrue(worst <= GradingPlan.DEFAULT_ARC_TOLERANCE_MM, "deviation " + worst);
+        }
+    }
+
+    @Test
     void theBaseSizeComesBackUnchanged() throws Exception {
         Contour base = sole40();
         Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, List.of(40.0)), "sole");
