@@ -32,7 +32,7 @@ public final class JobRunner {
             case CUT:
                 return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);
             case GRADE:
-                return TaskOutcome.unavailable(Module.GRADING);
+                return GradingService.run(require(job.grading(), "grading", job), out, progress);
             case SOLE:
                 return TaskOutcome.unavailable(Module.SOLE);
             default:

@@ -11,7 +11,7 @@ public enum Module {
     ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
     POCKET("pocket milling", 7, false),
     CUTTING("sheet cutting", 8, true),
-    GRADING("grading", 9, false),
+    GRADING("grading", 9, true),
     SOLE("sole mould", 10, false),
     BENCH("benchmarks", 11, false);
 

@@ -18,7 +18,7 @@ final class Tabs {
                 new UnavailableTab("Robot", Module.ROBOT),
                 new UnavailableTab("Pocket", Module.POCKET),
                 new UnavailableTab("Cutting", Module.CUTTING),
-                new UnavailableTab("Grading", Module.GRADING),
+                new GradingTab(ctx),
                 new UnavailableTab("Sole", Module.SOLE),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
     }
