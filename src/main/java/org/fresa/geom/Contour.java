@@ -127,34 +127,89 @@ public record Contour(List<Curve2> curves) {
         return windingNumber(p) != 0;
     }
 
-    /** The winding number of the contour about p (p must not lie on the contour). */
+    /**
+     * The winding number of the contour about p (p must not lie on the contour): the signed
+     * count of crossings of the ray from p towards +x, upward crossings positive. Arcs are split
+     * where they turn in y, so each piece crosses the ray at most once.
+     */
     public int windingNumber(Vec2 p) {
-        double total = 0;
+        int w = 0;
         for (Curve2 c : curves) {
-            total += sweepSeenFrom(c, p);
+            if (c instanceof Segment2 s) {
+                w += crossing(s.start(), s.end(), p, null, false);
+            } else {
+                w += arcCrossings((Arc2) c, p);
+            }
         }
-        return (int) Math.round(total / (2 * Math.PI));
+        return w;
     }
 
-    private static double sweepSeenFrom(Curve2 c, Vec2 p) {
-        if (c instanceof Segment2 s) {
-            return angleBetween(s.start().minus(p), s.end().minus(p));
+    /**
+     * +1 for an upward crossing of the ray y = p.y, x > p.x, -1 for downward, 0 for none, for a
+     * piece from a to b that is monotone in y: a segment (center null) or an arc piece about
+     * center on the half of the circle given by rightHalf. Half-open in y (a.y <= p.y < b.y
+     * upward, b.y <= p.y < a.y downward) so that a vertex is counted once.
+     */
+    private static int crossing(Vec2 a, Vec2 b, Vec2 p, Vec2 center, boolean rightHalf) {
+        boolean up = a.y() <= p.y() && p.y() < b.y();
+        boolean down = b.y() <= p.y() && p.y() < a.y();
+        if (!up && !down) {
+            return 0;
         }
-        Arc2 a = (Arc2) c;
-        // split the arc in pieces of less than a half turn so each chord angle is unambiguous
-        int n = Math.max(2, (int) Math.ceil(Math.abs(a.sweepRad()) / (Math.PI / 4)));
-        double sum = 0;
-        Vec2 prev = a.start();
-        for (int k = 1; k <= n; k++) {
-            Vec2 next = k == n ? a.end() : a.pointAt((double) k / n);
-            sum += angleBetween(prev.minus(p), next.minus(p));
-            prev = next;
+        double x;
+        if (center == null) {
+            x = a.x() + (p.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+        } else {
+            double r = center.distance(a);
+            double dy = p.y() - center.y();
+            double dx = Math.sqrt(Math.max(0, r * r - dy * dy));
+            x = rightHalf ? center.x() + dx : center.x() - dx;
         }
-        return sum;
+        if (x <= p.x()) {
+            return 0;
+        }
+        return up ? 1 : -1;
     }
 
-    private static double angleBetween(Vec2 u, Vec2 v) {
-        return Math.atan2(u.cross(v), u.dot(v));
+    private static int arcCrossings(Arc2 a, Vec2 p) {
+        double r = a.radius();
+        if (r == 0) {
+            return 0;
+        }
+        double start = a.startAngleRad();
+        double sweep = a.sweepRad();
+        // split points: the angles pi/2 and -pi/2 (top and bottom) inside the sweep
+        double[] cuts = new double[8];
+        int n = 0;
+        for (int m = -4; m <= 4; m++) {
+            double t = (Math.PI / 2 + m * Math.PI - start) / sweep;
+            if (t > 0 && t < 1 && n < cuts.length && !containsValue(cuts, n, t)) {
+                cuts[n++] = t;
+            }
+        }
+        java.util.Arrays.sort(cuts, 0, n);
+        int w = 0;
+        double t0 = 0;
+        Vec2 from = a.start();
+        for (int i = 0; i <= n; i++) {
+            double t1 = i < n ? cuts[i] : 1;
+            Vec2 to = i < n ? a.center().plus(Vec2.ofAngle(start + sweep * t1).times(r)) : a.end();
+            double mid = start + sweep * (t0 + t1) / 2;
+            boolean right = Math.cos(mid) > 0;
+            w += crossing(from, to, p, a.center(), right);
+            from = to;
+            t0 = t1;
+        }
+        return w;
+    }
+
+    private static boolean containsValue(double[] a, int n, double v) {
+        for (int i = 0; i < n; i++) {
+            if (Math.abs(a[i] - v) < 1e-15) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The contour moved by the vector. */

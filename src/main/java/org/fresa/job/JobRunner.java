@@ -22,7 +22,7 @@ public final class JobRunner {
             throws CamInputException, IOException {
         switch (job.task()) {
             case STEPNC:
-                return TaskOutcome.unavailable(Module.STEPNC);
+                return StepNcService.run(job, out, progress);
             case TOOLPATH:
                 return TaskOutcome.unavailable(Module.TOOLPATH);
             case ROBOT:

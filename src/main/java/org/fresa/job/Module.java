@@ -5,7 +5,7 @@ package org.fresa.job;
  * plainly (command line: exit 1, "not available yet: see issue N"; GUI: a notice in its tab).
  */
 public enum Module {
-    STEPNC("STEP-NC import", 3, false),
+    STEPNC("STEP-NC import", 3, true),
     TOOLPATH("STEP-NC toolpaths and G-code", 4, false),
     ROBOT("robot cell and joint trajectory", 5, false),
     ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),

@@ -30,24 +30,28 @@ public final class ExactDecimal {
             return Long.toString((long) d);
         }
         String s = Double.toString(d);
-        BigDecimal exact = new BigDecimal(s);
-        int digits = exact.precision();
-        // binary search the fewest significant digits that still read back as d
+        BigDecimal exact = new BigDecimal(d);
+        int digits = new BigDecimal(s).precision();
+        // binary search the fewest significant digits for which a decimal reads back as d; at a
+        // given precision the candidate may be the rounded-down or the rounded-up neighbour
+        BigDecimal best = new BigDecimal(s);
         int lo = 1;
         int hi = digits;
-        BigDecimal best = exact;
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
-            BigDecimal r = new BigDecimal(d).round(new MathContext(mid, RoundingMode.HALF_EVEN));
-            if (r.doubleValue() == d) {
+            BigDecimal r = roundTrip(exact, d, mid);
+            if (r != null) {
                 best = r;
                 hi = mid;
             } else {
                 lo = mid + 1;
             }
         }
-        if (lo < digits && best.precision() != lo) {
-            best = new BigDecimal(d).round(new MathContext(lo, RoundingMode.HALF_EVEN));
+        if (best.precision() > lo) {
+            BigDecimal r = roundTrip(exact, d, lo);
+            if (r != null) {
+                best = r;
+            }
         }
         best = best.stripTrailingZeros();
         double mag = Math.abs(d);
@@ -55,5 +59,19 @@ public final class ExactDecimal {
             return best.toPlainString();
         }
         return best.toString().replace("E+", "E");
+    }
+
+    /** The decimal of that many significant digits nearest to d that reads back as d, or null. */
+    private static BigDecimal roundTrip(BigDecimal exact, double d, int precision) {
+        BigDecimal near = exact.round(new MathContext(precision, RoundingMode.HALF_EVEN));
+        if (near.doubleValue() == d) {
+            return near;
+        }
+        BigDecimal down = exact.round(new MathContext(precision, RoundingMode.DOWN));
+        if (down.doubleValue() == d) {
+            return down;
+        }
+        BigDecimal up = exact.round(new MathContext(precision, RoundingMode.UP));
+        return up.doubleValue() == d ? up : null;
     }
 }

@@ -145,6 +145,10 @@ public final class MainWindow extends JFrame {
         return tabs;
     }
 
+    public int tabCount() {
+        return tabs.getTabCount();
+    }
+
     private boolean confirmDiscard() {
         if (!model.isDirty()) {
             return true;

@@ -17,7 +17,8 @@ final class UnavailableTab implements ModuleTab {
 
     UnavailableTab(String title, Module module) {
         this.title = title;
-        JLabel text = new JLabel("<html><div style='text-align:center'><b>" + module.title()
+        String name = Character.toUpperCase(module.title().charAt(0)) + module.title().substring(1);
+        JLabel text = new JLabel("<html><div style='text-align:center'><b>" + name
                 + "</b> is not available yet.<br><br>It is being built under issue " + module.issue()
                 + ".</div></html>", SwingConstants.CENTER);
         text.setFont(text.getFont().deriveFont(Font.PLAIN, 15f));

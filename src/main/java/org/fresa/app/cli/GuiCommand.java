@@ -5,6 +5,7 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.fresa.ui.FresaApp;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa gui [JOB]}: the desktop application. */
@@ -15,8 +16,24 @@ final class GuiCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "JOB", description = "a job file to open")
     Path job;
 
+    @Option(names = "--exit-when-shown", hidden = true,
+            description = "print the time from JVM start to a visible window, then exit (start-up check)")
+    boolean exitWhenShown;
+
     @Override
     public Integer call() {
+        if (exitWhenShown) {
+            if (!FresaApp.hasDisplay()) {
+                System.err.println("fresa: no display");
+                return CliSupport.EXIT_BAD_INPUT;
+            }
+            FresaApp.launch(Optional.ofNullable(job), w -> {
+                long ms = java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime();
+                System.out.println("window '" + w.getTitle() + "' with " + w.tabCount() + " tabs shown after " + ms + " ms");
+                System.exit(0);
+            });
+            return FresaCommand.KEEP_RUNNING;
+        }
         return open(job);
     }
 

@@ -2,7 +2,8 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.StepNcService;
+import org.fresa.stepnc.StepNcProgram;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -25,6 +26,13 @@ final class StepncCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.STEPNC);
+        java.io.PrintWriter out = spec.commandLine().getOut();
+        return CliSupport.run(out, spec.commandLine().getErr(), json, progress -> {
+            StepNcProgram program = StepNcService.read(file, progress);
+            if (!json) {
+                out.print(StepNcService.prose(program));
+            }
+            return StepNcService.describe(program);
+        });
     }
 }

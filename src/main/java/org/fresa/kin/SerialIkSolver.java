@@ -1,0 +1,365 @@
+package org.fresa.kin;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.fresa.geom.Transform3;
+
+/**
+ * Numerical inverse kinematics of a DH chain: Levenberg-Marquardt (default) or the thesis's
+ * damped least squares, see {@link IkOptions.Method}. All work buffers are allocated once; the
+ * iteration loop allocates nothing.
+ */
+final class SerialIkSolver implements IkSolver {
+
+    /** Random extra starts for a cold solve, after the thesis's five and mid-range. */
+    private static final int RANDOM_STARTS = 40;
+    /** Two solutions closer than this (rad or mm, per joint) are the same. */
+    private static final double SAME_SOLUTION = 1e-6;
+
+    private final DenavitHartenbergChain chain;
+    private final IkOptions options;
+    private final int n;
+    /** Orientation rows are scaled by this length so that mm and rad weigh alike. */
+    private final double rotWeight;
+    private final double[][] starts;
+
+    private final double[] target = new double[Pose.SIZE];
+    private final double[] f;
+    private final double[] e = new double[6];
+    private final double[] et = new double[6];
+    private final double[] j;
+    private final double[] aMat;
+    private final double[] lMat;
+    private final double[] g;
+    private final double[] dq;
+    private final double[] q;
+    private final double[] qt;
+    private final Diagonal limitDamping = this::jointLimitDamping;
+    private int lastIterations;
+    private double lastPos;
+    private double lastRot;
+
+    SerialIkSolver(DenavitHartenbergChain chain, IkOptions options) {
+        this.chain = chain;
+        this.options = options;
+        this.n = chain.n;
+        double reach = 0;
+        for (int i = 0; i < n; i++) {
+            reach += Math.abs(chain.a[i]) + (chain.revolute[i] ? Math.abs(chain.d[i]) : 0);
+        }
+        rotWeight = options.method() == IkOptions.Method.THESIS_DLS ? 1 : Math.max(100, reach / 2);
+        f = new double[chain.frameBufferSize()];
+        j = new double[6 * n];
+        aMat = new double[n * n];
+        lMat = new double[n * n];
+        g = new double[n];
+        dq = new double[n];
+        q = new double[n];
+        qt = new double[n];
+        starts = startConfigurations();
+    }
+
+    private double[][] startConfigurations() {
+        List<double[]> s = new ArrayList<>();
+        double[] max = new double[n];
+        double[] min = new double[n];
+        double[] mid = new double[n];
+        double[] pos = new double[n];
+        double[] neg = new double[n];
+        for (int i = 0; i < n; i++) {
+            max[i] = chain.qMax[i];
+            min[i] = chain.qMin[i];
+            mid[i] = (chain.qMax[i] + chain.qMin[i]) / 2;
+            // "mid value of the positive part" and "of the negative part" of the range
+            pos[i] = (Math.max(0, chain.qMin[i]) + chain.qMax[i]) / 2;
+            neg[i] = (chain.qMin[i] + Math.min(0, chain.qMax[i])) / 2;
+        }
+        // the thesis's five, in its order
+        s.add(max);
+        s.add(min);
+        s.add(mid);
+        s.add(pos);
+        s.add(neg);
+        if (options.method() == IkOptions.Method.LEVENBERG_MARQUARDT) {
+            SplittableRandom rnd = new SplittableRandom(20160229L);
+            for (int k = 0; k < RANDOM_STARTS; k++) {
+                double[] r = new double[n];
+                for (int i = 0; i < n; i++) {
+                    // inside the inner 90 % so that a start is not pinned at a limit
+                    double lo = chain.qMin[i] + 0.05 * (chain.qMax[i] - chain.qMin[i]);
+                    double hi = chain.qMax[i] - 0.05 * (chain.qMax[i] - chain.qMin[i]);
+                    r[i] = lo + rnd.nextDouble() * (hi - lo);
+                }
+                s.add(r);
+            }
+        }
+        return s.toArray(new double[0][]);
+    }
+
+    @Override
+    public IkResult solve(Transform3 targetPose, double[] seed) {
+        Pose.fromTransform(targetPose, target, 0);
+        if (seed.length != n) {
+            throw new IllegalArgumentException("expected " + n + " seed values, got " + seed.length);
+        }
+        for (int i = 0; i < n; i++) {
+            q[i] = clamp(i, chain.revolute[i] ? Math.toRadians(seed[i]) : seed[i]);
+        }
+        boolean ok = run();
+        if (!ok && options.method() == IkOptions.Method.THESIS_DLS) {
+            // the thesis falls back to its five guesses when the previous solution fails
+            int spent = lastIterations;
+            IkResult r = solveCold(targetPose);
+            return addIterations(r, spent);
+        }
+        return result(ok, lastIterations);
+    }
+
+    private static IkResult addIterations(IkResult r, int extra) {
+        if (r instanceof IkResult.Converged c) {
+            return new IkResult.Converged(c.q(), c.posErrMm(), c.rotErrRad(), c.iterations() + extra);
+        }
+        IkResult.Unreachable u = (IkResult.Unreachable) r;
+        return new IkResult.Unreachable(u.reason(), u.posErrMm(), u.rotErrRad(), u.iterations() + extra);
+    }
+
+    private IkResult result(boolean ok, int iterations) {
+        if (ok) {
+            return new IkResult.Converged(chain.toUser(q), lastPos, lastRot, iterations);
+        }
+        return new IkResult.Unreachable("did not converge within the joint limits from the start configuration",
+                lastPos, lastRot, iterations);
+    }
+
+    @Override
+    public List<IkResult.Converged> solveAll(Transform3 targetPose) {
+        Pose.fromTransform(targetPose, target, 0);
+        List<IkResult.Converged> found = new ArrayList<>();
+        List<double[]> internal = new ArrayList<>();
+        int spent = 0;
+        for (double[] s : starts) {
+            System.arraycopy(s, 0, q, 0, n);
+            boolean ok = run();
+            spent += lastIterations;
+            if (!ok) {
+                continue;
+            }
+            boolean dup = false;
+            for (double[] other : internal) {
+                double dmax = 0;
+                for (int i = 0; i < n; i++) {
+                    dmax = Math.max(dmax, Math.abs(other[i] - q[i]));
+                }
+                dup |= dmax < SAME_SOLUTION;
+            }
+            if (!dup) {
+                internal.add(q.clone());
+                found.add(new IkResult.Converged(chain.toUser(q), lastPos, lastRot, spent));
+            }
+            if (options.method() == IkOptions.Method.THESIS_DLS) {
+                break; // the thesis keeps the first guess that converges
+            }
+        }
+        found.sort(Comparator.comparingDouble((IkResult.Converged c) -> -margin(c.q())));
+        return found;
+    }
+
+    private double margin(double[] qUser) {
+        double m = Double.POSITIVE_INFINITY;
+        List<DhJoint> js = chain.joints();
+        for (int i = 0; i < n; i++) {
+            DhJoint jt = js.get(i);
+            m = Math.min(m, Math.min(qUser[i] - jt.qMin(), jt.qMax() - qUser[i]) / (jt.qMax() - jt.qMin()));
+        }
+        return m;
+    }
+
+    private double clamp(int i, double v) {
+        return Math.min(chain.qMax[i], Math.max(chain.qMin[i], v));
+    }
+
+    /** Iterates from q (internal units) in place; true when converged. */
+    private boolean run() {
+        return options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? levenbergMarquardt() : thesisDls();
+    }
+
+    private double evaluate(double[] qq, double[] err) {
+        chain.frames(qq, f);
+        Pose.error(target, 0, f, (n + 1) * Pose.SIZE, err);
+        double p2 = err[0] * err[0] + err[1] * err[1] + err[2] * err[2];
+        double r2 = err[3] * err[3] + err[4] * err[4] + err[5] * err[5];
+        return 0.5 * (p2 + rotWeight * rotWeight * r2);
+    }
+
+    private boolean converged(double[] err) {
+        lastPos = Math.sqrt(err[0] * err[0] + err[1] * err[1] + err[2] * err[2]);
+        lastRot = Math.sqrt(err[3] * err[3] + err[4] * err[4] + err[5] * err[5]);
+        return lastPos <= options.posTolMm() && lastRot <= options.rotTolRad();
+    }
+
+    private boolean levenbergMarquardt() {
+        double energy = evaluate(q, e);
+        double mu = 1e-12;
+        int maxIt = options.maxIterations();
+        for (int it = 0; it < maxIt; it++) {
+            if (converged(e)) {
+                lastIterations = it;
+                return true;
+            }
+            chain.jacobian(f, j, rotWeight);
+            normalEquations(e);
+            double diagMax = 0;
+            for (int i = 0; i < n; i++) {
+                diagMax = Math.max(diagMax, aMat[i * n + i]);
+            }
+            boolean accepted = false;
+            for (int retry = 0; retry < 12 && !accepted; retry++) {
+                double lambda = energy + mu * diagMax;
+                if (!solveDamped(lambda, null)) {
+                    mu = Math.max(mu * 10, 1e-9);
+                    continue;
+                }
+                for (int i = 0; i < n; i++) {
+                    qt[i] = clamp(i, q[i] + dq[i]);
+                }
+                double et2 = evaluate(qt, et);
+                if (et2 < energy) {
+                    System.arraycopy(qt, 0, q, 0, n);
+                    System.arraycopy(et, 0, e, 0, 6);
+                    energy = et2;
+                    mu = Math.max(mu * 0.1, 1e-15);
+                    accepted = true;
+                } else {
+                    mu = Math.max(mu * 10, 1e-9);
+                }
+            }
+            if (!accepted) {
+                // no descent in any damping: a local minimum (or the floor of double precision)
+                chain.frames(q, f);
+                lastIterations = it + 1;
+                return converged(e);
+            }
+        }
+        lastIterations = maxIt;
+        return converged(e);
+    }
+
+    private boolean thesisDls() {
+        double sp = options.posTolMm();
+        double sr = options.rotTolRad();
+        int maxIt = options.maxIterations();
+        for (int it = 0; it < maxIt; it++) {
+            evaluate(q, e);
+            if (converged(e)) {
+                lastIterations = it;
+                return true;
+            }
+            // eq. 26: halve a component that is above its threshold
+            if (lastPos > sp) {
+                e[0] *= 0.5;
+                e[1] *= 0.5;
+                e[2] *= 0.5;
+            }
+            if (lastRot > sr) {
+                e[3] *= 0.5;
+                e[4] *= 0.5;
+                e[5] *= 0.5;
+            }
+            chain.jacobian(f, j, 1);
+            normalEquations(e);
+            if (!solveDamped(1e-12, limitDamping)) {
+                lastIterations = it + 1;
+                return false;
+            }
+            for (int i = 0; i < n; i++) {
+                double v = q[i] + dq[i];
+                // the 75 % rule, as the thesis states it (limits +-180, 181 -> -135)
+                if (v > chain.qMax[i]) {
+                    v = 0.75 * chain.qMin[i];
+                } else if (v < chain.qMin[i]) {
+                    v = 0.75 * chain.qMax[i];
+                }
+                q[i] = clamp(i, v);
+            }
+        }
+        evaluate(q, e);
+        lastIterations = maxIt;
+        return converged(e);
+    }
+
+    /** Eq. 19 squared: lambda_i = c ((2 q - max - min) / (max - min))^p, c = 0.5, p = 8. */
+    private double jointLimitDamping(int i) {
+        double x = (2 * q[i] - chain.qMax[i] - chain.qMin[i]) / (chain.qMax[i] - chain.qMin[i]);
+        double x2 = x * x;
+        double x8 = x2 * x2 * x2 * x2;
+        double l = 0.5 * x8;
+        return l * l;
+    }
+
+    /** aMat = J^T J (lower triangle and diagonal), g = J^T e with the weighted orientation rows. */
+    private void normalEquations(double[] err) {
+        double w = rotWeight;
+        for (int c = 0; c < n; c++) {
+            double s = 0;
+            for (int r = 0; r < 3; r++) {
+                s += j[r * n + c] * err[r];
+            }
+            for (int r = 3; r < 6; r++) {
+                s += j[r * n + c] * err[r] * w;
+            }
+            g[c] = s;
+            for (int k = 0; k <= c; k++) {
+                double t = 0;
+                for (int r = 0; r < 6; r++) {
+                    t += j[r * n + c] * j[r * n + k];
+                }
+                aMat[c * n + k] = t;
+            }
+        }
+    }
+
+    /** A per-joint diagonal term. */
+    private interface Diagonal {
+        double of(int i);
+    }
+
+    /** dq = (A + lambda I + D)^-1 g by Cholesky; false when not positive definite. */
+    private boolean solveDamped(double lambda, Diagonal extra) {
+        for (int c = 0; c < n; c++) {
+            for (int k = 0; k <= c; k++) {
+                double v = aMat[c * n + k];
+                if (k == c) {
+                    v += lambda + (extra == null ? 0 : extra.of(c));
+                }
+                for (int m = 0; m < k; m++) {
+                    v -= lMat[c * n + m] * lMat[k * n + m];
+                }
+                if (k == c) {
+                    if (!(v > 0)) {
+                        return false;
+                    }
+                    lMat[c * n + c] = Math.sqrt(v);
+                } else {
+                    lMat[c * n + k] = v / lMat[k * n + k];
+                }
+            }
+        }
+        for (int c = 0; c < n; c++) {
+            double v = g[c];
+            for (int m = 0; m < c; m++) {
+                v -= lMat[c * n + m] * dq[m];
+            }
+            dq[c] = v / lMat[c * n + c];
+        }
+        for (int c = n - 1; c >= 0; c--) {
+            double v = dq[c];
+            for (int m = c + 1; m < n; m++) {
+                v -= lMat[m * n + c] * dq[m];
+            }
+            dq[c] = v / lMat[c * n + c];
+        }
+        return true;
+    }
+}

@@ -1,0 +1,958 @@
+package org.fresa.stepnc;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import java.util.OptionalInt;
+import java.util.Set;
+import java.util.TreeMap;
+import org.fresa.geom.Transform3;
+import org.fresa.geom.Vec3;
+import org.fresa.stepnc.Iso14649Schema.EntityDef;
+import org.fresa.stepnc.StepNcProgram.Dialect;
+
+/**
+ * Turns a {@link StepFile} into the ISO 14649 model. Attribute positions come from
+ * {@link Iso14649Schema}; this class only says which attribute feeds which model field.
+ * Unknown entities are counted, never fatal; an attribute of the wrong kind where the model needs
+ * it is a {@link StepParseException} at the instance's line.
+ */
+final class Iso14649Binder {
+
+    private static final int MAX_WORKPLAN_NESTING = 1000;
+
+    private final StepFile file;
+    private final Iso14649Schema schema = Iso14649Schema.get();
+    private final Dialect dialect;
+    private final Set<String> spellings = new LinkedHashSet<>();
+    private final List<String> warnings = new ArrayList<>();
+    private final Map<Long, Feature> features = new HashMap<>();
+    private final Map<Long, Tool> tools = new HashMap<>();
+    private final Map<Long, Setup> setups = new HashMap<>();
+    private final Map<Long, MachiningWorkingstep> workingsteps = new HashMap<>();
+
+    Iso14649Binder(StepFile file) {
+        this.file = file;
+        this.dialect = detectDialect(file);
+    }
+
+    static Dialect detectDialect(StepFile file) {
+        String pre = file.headerText("FILE_NAME", 4).orElse("").toUpperCase(Locale.ROOT);
+        if (file.schemas().contains("COMBINED_SCHEMA") || pre.contains("ST-GENERATOR")) {
+            return Dialect.STEP_MODELER;
+        }
+        // ISO writes the spindle in rev/s; a value above 300 (18000 rpm) can only be rpm, which
+        // is what GRIMA's JSDAI-based writers put there even under MACHINING_SCHEMA
+        for (StepInstance inst : file.instances().values()) {
+            if (inst.record().type().equals("MILLING_TECHNOLOGY")) {
+                StepValue s = inst.record().param(3);
+                double v = s instanceof StepValue.Real r ? r.value() : s instanceof StepValue.Int i ? i.value() : 0;
+                if (Math.abs(v) > 300) {
+                    return Dialect.STEP_MODELER;
+                }
+            }
+        }
+        return Dialect.ISO_14649;
+    }
+
+    /** A view of one instance through its schema entity. */
+    private final class E {
+        final StepInstance inst;
+        final StepRecord rec;
+        final EntityDef def;
+
+        E(StepInstance inst, StepRecord rec, EntityDef def) {
+            this.inst = inst;
+            this.rec = rec;
+            this.def = def;
+        }
+
+        boolean has(String attr) {
+            return def.indexOf(attr) >= 0;
+        }
+
+        StepValue v(String attr) {
+            int i = def.indexOf(attr);
+            return i < 0 ? StepValue.UNSET : rec.param(i);
+        }
+
+        String name() {
+            return def.name();
+        }
+
+        long id() {
+            return inst.id();
+        }
+    }
+
+    private StepParseException error(E e, String problem) {
+        return new StepParseException(file.source(), e.inst.line(), e.inst.column(), e.inst.id(), problem);
+    }
+
+    /** The instance as a known, simple entity; empty when it is unknown or complex. */
+    private Optional<E> known(long id) {
+        StepInstance inst = file.instances().get(id);
+        if (inst == null || inst.isComplex()) {
+            return Optional.empty();
+        }
+        return schema.find(inst.record().type()).map(l -> {
+            if (l.isAlias()) {
+                spellings.add(l.spelling() + " read as " + l.def().name());
+            }
+            int n = inst.record().params().size();
+            int want = l.def().attributes().size();
+            if (n != want) {
+                spellings.add(l.spelling() + " written with " + n + " attributes (the schema subset lists " + want
+                        + (n < want ? "; the missing ones read as unset)" : "; the extra ones are ignored)"));
+            }
+            return new E(inst, inst.record(), l.def());
+        });
+    }
+
+    private String typeOf(long id) {
+        StepInstance inst = file.instances().get(id);
+        return inst == null ? "?" : inst.type();
+    }
+
+    // ---- attribute accessors ----
+
+    private Optional<Long> refId(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        if (v instanceof StepValue.Ref r) {
+            return Optional.of(r.id());
+        }
+        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+            return Optional.empty();
+        }
+        throw error(e, e.name() + "." + attr + " should be a reference (#n), found " + v);
+    }
+
+    /** A reference to a known entity that is one of the given supertypes. */
+    private Optional<E> ref(E e, String attr, String... kinds) throws StepParseException {
+        Optional<Long> id = refId(e, attr);
+        if (id.isEmpty()) {
+            return Optional.empty();
+        }
+        Optional<E> t = known(id.get());
+        if (t.isEmpty()) {
+            return Optional.empty();
+        }
+        for (String k : kinds) {
+            if (t.get().def.isA(k)) {
+                return t;
+            }
+        }
+        throw error(e, e.name() + "." + attr + " should be " + String.join(" or ", kinds).toLowerCase(Locale.ROOT)
+                + ", found #" + id.get() + " " + typeOf(id.get()));
+    }
+
+    private List<Long> refList(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        List<Long> out = new ArrayList<>();
+        if (v instanceof StepValue.Aggregate a) {
+            for (StepValue item : a.items()) {
+                if (item instanceof StepValue.Ref r) {
+                    out.add(r.id());
+                } else if (!(item instanceof StepValue.Unset)) {
+                    throw error(e, e.name() + "." + attr + " should list references, found " + item);
+                }
+            }
+        } else if (v instanceof StepValue.Ref r) {
+            out.add(r.id());
+        } else if (!(v instanceof StepValue.Unset)) {
+            throw error(e, e.name() + "." + attr + " should be a list, found " + v);
+        }
+        return out;
+    }
+
+    private String text(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        if (v instanceof StepValue.Text t) {
+            return t.value();
+        }
+        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+            return "";
+        }
+        throw error(e, e.name() + "." + attr + " should be a string, found " + v);
+    }
+
+    private OptionalDouble num(E e, String attr) throws StepParseException {
+        return number(e, attr, e.v(attr), 0);
+    }
+
+    private OptionalDouble number(E e, String attr, StepValue v, int depth) throws StepParseException {
+        if (v instanceof StepValue.Real r) {
+            return OptionalDouble.of(r.value());
+        }
+        if (v instanceof StepValue.Int i) {
+            return OptionalDouble.of(i.value());
+        }
+        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+            return OptionalDouble.empty();
+        }
+        if (v instanceof StepValue.Typed t && depth < 8) {
+            return number(e, attr, t.value(), depth + 1);
+        }
+        if (v instanceof StepValue.Ref r && depth < 8) {
+            Optional<E> t = known(r.id());
+            if (t.isPresent()) {
+                E m = t.get();
+                if (m.def.isA("TOLERANCED_LENGTH_MEASURE")) {
+                    return number(m, "theoretical_size", m.v("theoretical_size"), depth + 1);
+                }
+                if (m.def.isA("NUMERIC_PARAMETER")) {
+                    return number(m, "its_parameter_value", m.v("its_parameter_value"), depth + 1);
+                }
+            }
+            throw error(e, e.name() + "." + attr + " should be a number, found #" + r.id() + " " + typeOf(r.id()));
+        }
+        throw error(e, e.name() + "." + attr + " should be a number, found " + v);
+    }
+
+    private double required(E e, String attr) throws StepParseException {
+        OptionalDouble d = num(e, attr);
+        if (d.isEmpty()) {
+            throw error(e, e.name() + "." + attr + " has no value");
+        }
+        return d.getAsDouble();
+    }
+
+    private OptionalInt integer(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        if (v instanceof StepValue.Int i && i.value() >= Integer.MIN_VALUE && i.value() <= Integer.MAX_VALUE) {
+            return OptionalInt.of((int) i.value());
+        }
+        if (v instanceof StepValue.Real r && r.value() == Math.rint(r.value()) && Math.abs(r.value()) < 1e9) {
+            return OptionalInt.of((int) r.value());
+        }
+        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+            return OptionalInt.empty();
+        }
+        throw error(e, e.name() + "." + attr + " should be an integer, found " + v);
+    }
+
+    private Optional<String> enumeration(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        if (v instanceof StepValue.Enumeration en) {
+            return Optional.of(en.name());
+        }
+        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+            return Optional.empty();
+        }
+        throw error(e, e.name() + "." + attr + " should be an enumeration (.X.), found " + v);
+    }
+
+    private Optional<Boolean> bool(E e, String attr) throws StepParseException {
+        Optional<String> s = enumeration(e, attr);
+        if (s.isEmpty()) {
+            return Optional.empty();
+        }
+        return switch (s.get()) {
+            case "T", "TRUE" -> Optional.of(true);
+            case "F", "FALSE" -> Optional.of(false);
+            default -> Optional.empty();
+        };
+    }
+
+    // ---- geometry ----
+
+    private Vec3 point(E p) throws StepParseException {
+        if (!p.def.isA("CARTESIAN_POINT")) {
+            throw error(p, "expected a CARTESIAN_POINT, found " + p.name());
+        }
+        double[] c = coordinates(p, "coordinates");
+        if (c.length < 1 || c.length > 3) {
+            throw error(p, "a point has 1 to 3 coordinates, found " + c.length);
+        }
+        return new Vec3(c[0], c.length > 1 ? c[1] : 0, c.length > 2 ? c[2] : 0);
+    }
+
+    private Vec3 direction(E d) throws StepParseException {
+        if (!d.def.isA("DIRECTION")) {
+            throw error(d, "expected a DIRECTION, found " + d.name());
+        }
+        double[] c = coordinates(d, "direction_ratios");
+        if (c.length < 2 || c.length > 3) {
+            throw error(d, "a direction has 2 or 3 ratios, found " + c.length);
+        }
+        Vec3 v = new Vec3(c[0], c[1], c.length > 2 ? c[2] : 0);
+        if (v.norm() == 0 || !Double.isFinite(v.norm())) {
+            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no length");
+        }
+        return v.normalized();
+    }
+
+    private double[] coordinates(E e, String attr) throws StepParseException {
+        StepValue v = e.v(attr);
+        if (!(v instanceof StepValue.Aggregate a)) {
+            throw error(e, e.name() + "." + attr + " should be a list of numbers, found " + v);
+        }
+        double[] out = new double[a.items().size()];
+        for (int i = 0; i < out.length; i++) {
+            OptionalDouble d = number(e, attr, a.items().get(i), 0);
+            if (d.isEmpty()) {
+                throw error(e, e.name() + "." + attr + " has an unset coordinate");
+            }
+            out[i] = d.getAsDouble();
+        }
+        return out;
+    }
+
+    private Optional<Vec3> pointAttr(E e, String attr) throws StepParseException {
+        Optional<E> p = ref(e, attr, "CARTESIAN_POINT");
+        return p.isPresent() ? Optional.of(point(p.get())) : Optional.empty();
+    }
+
+    private Optional<Vec3> directionAttr(E e, String attr) throws StepParseException {
+        Optional<E> p = ref(e, attr, "DIRECTION");
+        return p.isPresent() ? Optional.of(direction(p.get())) : Optional.empty();
+    }
+
+    /** AXIS2_PLACEMENT_3D as a frame; unset axis is +z, unset reference direction is +x. */
+    private Transform3 placement(E a) throws StepParseException {
+        Vec3 origin = pointAttr(a, "location").orElse(Vec3.ZERO);
+        Vec3 z = directionAttr(a, "axis").orElse(Vec3.UNIT_Z);
+        Optional<Vec3> ref = directionAttr(a, "ref_direction");
+        Vec3 x = ref.orElse(Math.abs(z.x()) > 0.9 ? Vec3.UNIT_Y : Vec3.UNIT_X);
+        try {
+            return Transform3.ofFrame(origin, z, x);
+        } catch (IllegalArgumentException ex) {
+            // ISO 10303-42 build_axes would reject it; GRIMA's files have such placements, so
+            // the default reference direction is used and the file is told about
+            warnings.add("#" + a.id() + " AXIS2_PLACEMENT_3D: ref_direction parallel to the axis; the default x direction is used");
+            return Transform3.ofFrame(origin, z, Math.abs(z.x()) > 0.9 ? Vec3.UNIT_Y : Vec3.UNIT_X);
+        }
+    }
+
+    private Optional<Transform3> placementAttr(E e, String attr) throws StepParseException {
+        Optional<E> p = ref(e, attr, "AXIS2_PLACEMENT_3D");
+        return p.isPresent() ? Optional.of(placement(p.get())) : Optional.empty();
+    }
+
+    /** PLANE or ELEMENTARY_SURFACE: its position. */
+    private Optional<Transform3> planeAttr(E e, String attr) throws StepParseException {
+        Optional<E> p = ref(e, attr, "PLANE");
+        return p.isPresent() ? placementAttr(p.get(), "position") : Optional.empty();
+    }
+
+    // ---- project level ----
+
+    StepNcProgram bind() throws StepParseException {
+        Map<String, Integer> unknown = new TreeMap<>();
+        Set<Long> referencedByWorkplan = new HashSet<>();
+        List<Long> allWorkplans = new ArrayList<>();
+        List<Long> allWorkingsteps = new ArrayList<>();
+        List<Long> projects = new ArrayList<>();
+        for (StepInstance inst : file.instances().values()) {
+            Optional<Iso14649Schema.Lookup> l = inst.isComplex() ? Optional.empty() : schema.find(inst.record().type());
+            if (l.isEmpty()) {
+                unknown.merge(inst.type(), 1, Integer::sum);
+                continue;
+            }
+            switch (l.get().def().name()) {
+                case "PROJECT" -> projects.add(inst.id());
+                case "WORKPLAN" -> {
+                    allWorkplans.add(inst.id());
+                    E w = known(inst.id()).orElseThrow();
+                    referencedByWorkplan.addAll(refList(w, "its_elements"));
+                }
+                case "MACHINING_WORKINGSTEP" -> allWorkingsteps.add(inst.id());
+                default -> {
+                }
+            }
+        }
+        String projectId = "";
+        Optional<Workplan> main = Optional.empty();
+        List<Workpiece> workpieces = new ArrayList<>();
+        Long mainId = null;
+        if (!projects.isEmpty()) {
+            E p = known(projects.get(0)).orElseThrow();
+            if (projects.size() > 1) {
+                warnings.add("the file has " + projects.size() + " PROJECT instances; #" + p.id() + " is used");
+            }
+            projectId = text(p, "its_id");
+            Optional<E> mw = ref(p, "main_workplan", "WORKPLAN");
+            if (mw.isPresent()) {
+                mainId = mw.get().id();
+            }
+            for (long wp : refList(p, "its_workpieces")) {
+                Optional<E> w = known(wp);
+                if (w.isPresent() && w.get().def.isA("WORKPIECE")) {
+                    workpieces.add(workpiece(w.get()));
+                }
+            }
+        } else {
+            warnings.add("the file has no PROJECT; the first workplan not inside another one is executed");
+        }
+        if (mainId == null) {
+            for (long w : allWorkplans) {
+                if (!referencedByWorkplan.contains(w)) {
+                    mainId = w;
+                    break;
+                }
+            }
+        }
+        if (mainId != null) {
+            main = Optional.of(workplan(known(mainId).orElseThrow(), new ArrayDeque<>(), Optional.empty()));
+        } else {
+            warnings.add("no workplan to execute");
+        }
+        List<MachiningWorkingstep> executed = main.map(Workplan::flatten).orElse(List.of());
+        Set<Long> executedIds = new HashSet<>();
+        executed.forEach(w -> executedIds.add(w.instanceId()));
+        List<StepNcProgram.Skipped> skipped = new ArrayList<>();
+        for (long wsId : allWorkingsteps) {
+            if (executedIds.contains(wsId)) {
+                continue;
+            }
+            String reason = referencedByWorkplan.contains(wsId)
+                    ? "in a workplan that the main workplan does not run"
+                    : "not referenced by any workplan";
+            E ws = known(wsId).orElseThrow();
+            String id = ws.v("its_id") instanceof StepValue.Text t ? t.value() : "";
+            Optional<MachiningWorkingstep> bound;
+            try {
+                bound = Optional.of(workingstep(ws, Optional.empty()));
+            } catch (StepParseException ex) {
+                bound = Optional.empty();
+                reason = reason + "; it cannot be bound either: " + ex.problem();
+            }
+            skipped.add(new StepNcProgram.Skipped(wsId, id, reason, bound));
+        }
+        return new StepNcProgram(file.source(), file.schemas(), dialect, file.instances().size(), projectId, main,
+                workpieces, executed, skipped, unknown, new ArrayList<>(spellings), warnings, file);
+    }
+
+    private Workpiece workpiece(E w) throws StepParseException {
+        Optional<String> material = Optional.empty();
+        Optional<E> m = ref(w, "its_material", "MATERIAL");
+        if (m.isPresent()) {
+            material = Optional.of(text(m.get(), "material_identifier"));
+        }
+        Optional<Workpiece.Block> block = Optional.empty();
+        Optional<Long> bg = refId(w, "its_bounding_geometry");
+        if (bg.isPresent()) {
+            Optional<E> b = known(bg.get());
+            if (b.isPresent() && b.get().def.isA("BLOCK")) {
+                E blk = b.get();
+                block = Optional.of(new Workpiece.Block(placementAttr(blk, "position").orElse(Transform3.IDENTITY),
+                        required(blk, "x"), required(blk, "y"), required(blk, "z")));
+            }
+        }
+        return new Workpiece(w.id(), text(w, "its_id"), material, num(w, "global_tolerance"), block);
+    }
+
+    private Setup setup(E s) throws StepParseException {
+        Setup done = setups.get(s.id());
+        if (done != null) {
+            return done;
+        }
+        List<Setup.WorkpieceSetup> wps = new ArrayList<>();
+        for (long id : refList(s, "its_workpiece_setup")) {
+            Optional<E> ws = known(id);
+            if (ws.isPresent() && ws.get().def.isA("WORKPIECE_SETUP")) {
+                wps.add(new Setup.WorkpieceSetup(refId(ws.get(), "its_workpiece").orElse(0L),
+                        placementAttr(ws.get(), "its_origin").orElse(Transform3.IDENTITY)));
+            }
+        }
+        Setup out = new Setup(s.id(), text(s, "its_id"),
+                placementAttr(s, "its_origin").orElse(Transform3.IDENTITY), planeAttr(s, "its_secplane"), wps);
+        setups.put(s.id(), out);
+        return out;
+    }
+
+    private Workplan workplan(E w, Deque<Long> stack, Optional<Setup> inherited) throws StepParseException {
+        if (stack.contains(w.id())) {
+            throw error(w, "workplan contains itself (through " + stack + ")");
+        }
+        if (stack.size() >= MAX_WORKPLAN_NESTING) {
+            throw error(w, "workplans are nested more than " + MAX_WORKPLAN_NESTING + " deep");
+        }
+        stack.push(w.id());
+        Optional<Setup> own = Optional.empty();
+        Optional<E> s = ref(w, "its_setup", "SETUP");
+        if (s.isPresent()) {
+            own = Optional.of(setup(s.get()));
+        }
+        Optional<Setup> effective = own.isPresent() ? own : inherited;
+        List<Executable> elements = new ArrayList<>();
+        for (long id : refList(w, "its_elements")) {
+            Optional<E> x = known(id);
+            if (x.isEmpty()) {
+                elements.add(new Executable.Other(id, "", typeOf(id)));
+            } else if (x.get().def.isA("WORKPLAN")) {
+                elements.add(workplan(x.get(), stack, effective));
+            } else if (x.get().def.isA("MACHINING_WORKINGSTEP")) {
+                elements.add(workingstep(x.get(), effective));
+            } else if (x.get().def.isA("EXECUTABLE")) {
+                elements.add(new Executable.Other(id, text(x.get(), "its_id"), x.get().name()));
+            } else {
+                throw error(w, "WORKPLAN.its_elements should list executables, found #" + id + " " + typeOf(id));
+            }
+        }
+        stack.pop();
+        return new Workplan(w.id(), text(w, "its_id"), elements, own);
+    }
+
+    private MachiningWorkingstep workingstep(E ws, Optional<Setup> setup) throws StepParseException {
+        MachiningWorkingstep done = workingsteps.get(ws.id());
+        if (done != null) {
+            return done;
+        }
+        Optional<Long> fid = refId(ws, "its_feature");
+        Optional<Long> oid = refId(ws, "its_operation");
+        if (fid.isEmpty() || oid.isEmpty()) {
+            throw error(ws, "a machining workingstep needs its_feature and its_operation");
+        }
+        Feature f = feature(ws, fid.get());
+        Operation op = operation(ws, oid.get());
+        Transform3 wpToSetup = Transform3.IDENTITY;
+        if (setup.isPresent()) {
+            Setup s = setup.get();
+            Optional<Long> wpId = known(fid.get()).flatMap(fe -> {
+                try {
+                    return refId(fe, "its_workpiece");
+                } catch (StepParseException ex) {
+                    return Optional.empty();
+                }
+            });
+            for (Setup.WorkpieceSetup w : s.workpieceSetups()) {
+                if (wpId.isEmpty() || wpId.get() == w.workpieceInstanceId()) {
+                    wpToSetup = w.origin();
+                    break;
+                }
+            }
+        }
+        MachiningWorkingstep out = new MachiningWorkingstep(ws.id(), text(ws, "its_id"), planeAttr(ws, "its_secplane"),
+                f, op, setup, wpToSetup);
+        workingsteps.put(ws.id(), out);
+        return out;
+    }
+
+    // ---- features and profiles ----
+
+    private Feature feature(E owner, long id) throws StepParseException {
+        Feature done = features.get(id);
+        if (done != null) {
+            return done;
+        }
+        Optional<E> k = known(id);
+        Feature out;
+        if (k.isEmpty()) {
+            out = new Feature(id, Feature.FeatureType.OTHER, typeOf(id), "", Transform3.IDENTITY, OptionalDouble.empty(),
+                    Optional.empty(), Optional.empty(), Optional.empty(), OptionalDouble.empty(), Optional.empty(),
+                    OptionalDouble.empty(), OptionalDouble.empty(), List.of());
+        } else {
+            E f = k.get();
+            if (!f.def.isA("MANUFACTURING_FEATURE")) {
+                throw error(owner, "its_feature should be a manufacturing feature, found #" + id + " " + f.name());
+            }
+            Feature.FeatureType type;
+            try {
+                type = Feature.FeatureType.valueOf(f.name());
+            } catch (IllegalArgumentException ex) {
+                type = Feature.FeatureType.OTHER;
+            }
+            Transform3 placement = placementAttr(f, "feature_placement").orElse(Transform3.IDENTITY);
+            Optional<Transform3> depthPlane = planeAttr(f, "depth");
+            OptionalDouble depth = depthPlane.isPresent()
+                    ? OptionalDouble.of(-depthPlane.get().translationPart().z() + 0.0)
+                    : OptionalDouble.empty();
+            String profileAttr = switch (f.name()) {
+                case "CLOSED_POCKET", "GENERAL_OUTSIDE_PROFILE" -> "feature_boundary";
+                case "OPEN_POCKET", "STEP" -> f.name().equals("STEP") ? "wall_boundary" : "open_boundary";
+                case "BOSS" -> "its_boundary";
+                case "SLOT" -> "swept_shape";
+                case "PLANAR_FACE" -> "removal_boundary";
+                default -> null;
+            };
+            Optional<Profile> profile = profileAttr == null ? Optional.empty() : profile(f, profileAttr);
+            String travelAttr = f.name().equals("STEP") ? "open_boundary" : "course_of_travel";
+            Optional<TravelPath> travel = f.has(travelAttr) ? travel(f, travelAttr) : Optional.empty();
+            Optional<String> bottom = Optional.empty();
+            if (f.has("bottom_condition")) {
+                bottom = refId(f, "bottom_condition").map(this::typeOf);
+            }
+            out = new Feature(id, type, f.name(), text(f, "its_id"), placement, depth, depthPlane, profile, travel,
+                    f.has("diameter") ? num(f, "diameter") : OptionalDouble.empty(), bottom,
+                    f.has("planar_radius") ? num(f, "planar_radius") : OptionalDouble.empty(),
+                    f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
+                    refList(f, "its_operations"));
+        }
+        features.put(id, out);
+        return out;
+    }
+
+    private Optional<TravelPath> travel(E f, String attr) throws StepParseException {
+        Optional<Long> id = refId(f, attr);
+        if (id.isEmpty()) {
+            return Optional.empty();
+        }
+        Optional<E> k = known(id.get());
+        if (k.isEmpty() || !(k.get().def.isA("LINEAR_PATH") || k.get().def.isA("CIRCULAR_PATH"))) {
+            return Optional.of(new TravelPath(typeOf(id.get()), Transform3.IDENTITY, OptionalDouble.empty(),
+                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty()));
+        }
+        E p = k.get();
+        Transform3 pl = placementAttr(p, "placement").orElse(Transform3.IDENTITY);
+        if (p.def.isA("LINEAR_PATH")) {
+            return Optional.of(new TravelPath(p.name(), pl, num(p, "distance"), directionAttr(p, "its_direction"),
+                    OptionalDouble.empty(), OptionalDouble.empty()));
+        }
+        return Optional.of(new TravelPath(p.name(), pl, OptionalDouble.empty(), Optional.empty(), num(p, "radius"),
+                num(p, "sweep_angle")));
+    }
+
+    private Optional<Profile> profile(E f, String attr) throws StepParseException {
+        Optional<Long> id = refId(f, attr);
+        if (id.isEmpty()) {
+            return Optional.empty();
+        }
+        Optional<E> k = known(id.get());
+        if (k.isEmpty()) {
+            return Optional.of(new Profile.Other(typeOf(id.get()), Transform3.IDENTITY, id.get()));
+        }
+        E p = k.get();
+        if (!p.def.isA("PROFILE")) {
+            throw error(f, f.name() + "." + attr + " should be a profile, found #" + id.get() + " " + p.name());
+        }
+        Transform3 pl = placementAttr(p, "placement").orElse(Transform3.IDENTITY);
+        Profile out = switch (p.name()) {
+            case "RECTANGULAR_CLOSED_PROFILE" ->
+                new Profile.Rectangular(p.name(), pl, required(p, "profile_width"), required(p, "profile_length"));
+            case "CIRCULAR_CLOSED_PROFILE" -> new Profile.Circular(p.name(), pl, required(p, "diameter"));
+            case "NGON_PROFILE" -> {
+                OptionalInt n = integer(p, "number_of_sides");
+                if (n.isEmpty() || n.getAsInt() < 3) {
+                    throw error(p, "NGON_PROFILE.number_of_sides must be at least 3");
+                }
+                yield new Profile.Ngon(p.name(), pl, required(p, "diameter"), n.getAsInt(),
+                        bool(p, "circumscribed_or_across_flats").orElse(false));
+            }
+            case "LINEAR_PROFILE" -> new Profile.Linear(p.name(), pl, required(p, "profile_length"));
+            case "SQUARE_U_PROFILE" -> new Profile.U(p.name(), pl, required(p, "width"), num(p, "first_radius"),
+                    num(p, "first_angle"), num(p, "second_radius"), num(p, "second_angle"));
+            case "ROUNDED_U_PROFILE" -> new Profile.U(p.name(), pl, required(p, "width"), OptionalDouble.empty(),
+                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
+            case "GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE" -> general(p, pl,
+                    p.name().equals("GENERAL_PROFILE") ? "its_profile" : "closed_profile_shape");
+            default -> new Profile.Other(p.name(), pl, p.id());
+        };
+        return Optional.of(out);
+    }
+
+    private Profile general(E p, Transform3 pl, String attr) throws StepParseException {
+        Optional<Long> cid = refId(p, attr);
+        Optional<E> c = cid.flatMap(this::known);
+        if (c.isEmpty()) {
+            return new Profile.Other(p.name(), pl, p.id());
+        }
+        List<Profile.Segment> segs = new ArrayList<>();
+        if (c.get().def.isA("POLYLINE")) {
+            List<Vec3> pts = new ArrayList<>();
+            for (long id : refList(c.get(), "points")) {
+                Optional<E> pt = known(id);
+                if (pt.isEmpty()) {
+                    throw error(c.get(), "POLYLINE.points should list CARTESIAN_POINTs, found #" + id + " " + typeOf(id));
+                }
+                pts.add(point(pt.get()));
+            }
+            for (int i = 0; i + 1 < pts.size(); i++) {
+                segs.add(new Profile.Line(pts.get(i), pts.get(i + 1)));
+            }
+        } else if (c.get().def.isA("COMPOSITE_CURVE")) {
+            for (long id : refList(c.get(), "segments")) {
+                Optional<Profile.Segment> s = compositeSegment(id);
+                if (s.isEmpty()) {
+                    warnings.add("#" + p.id() + " " + p.name() + ": composite curve segment #" + id
+                            + " is not a trimmed line or circle with point trims; the profile is kept raw");
+                    return new Profile.Other(p.name(), pl, p.id());
+                }
+                segs.add(s.get());
+            }
+        } else {
+            return new Profile.Other(p.name(), pl, p.id());
+        }
+        boolean closed = !segs.isEmpty()
+                && segs.get(0).start().distance(segs.get(segs.size() - 1).end()) <= 1e-9;
+        return new Profile.General(p.name(), pl, c.get().name(), segs, closed);
+    }
+
+    private Optional<Profile.Segment> compositeSegment(long id) throws StepParseException {
+        Optional<E> seg = known(id);
+        if (seg.isEmpty() || !seg.get().def.isA("COMPOSITE_CURVE_SEGMENT")) {
+            return Optional.empty();
+        }
+        boolean sameSense = bool(seg.get(), "same_sense").orElse(true);
+        Optional<E> tc = refId(seg.get(), "parent_curve").flatMap(this::known);
+        if (tc.isEmpty() || !tc.get().def.isA("TRIMMED_CURVE")) {
+            return Optional.empty();
+        }
+        E t = tc.get();
+        Optional<Vec3> p1 = trimPoint(t, "trim_1");
+        Optional<Vec3> p2 = trimPoint(t, "trim_2");
+        Optional<E> basis = refId(t, "basis_curve").flatMap(this::known);
+        if (p1.isEmpty() || p2.isEmpty() || basis.isEmpty()) {
+            return Optional.empty();
+        }
+        boolean sense = bool(t, "sense_agreement").orElse(true);
+        Vec3 a = sense ? p1.get() : p2.get();
+        Vec3 b = sense ? p2.get() : p1.get();
+        if (!sameSense) {
+            Vec3 x = a;
+            a = b;
+            b = x;
+        }
+        if (basis.get().def.isA("LINE") || basis.get().def.isA("POLYLINE")) {
+            return Optional.of(new Profile.Line(a, b));
+        }
+        if (basis.get().def.isA("CIRCLE")) {
+            E circle = basis.get();
+            Transform3 frame = placementAttr(circle, "position").orElse(Transform3.IDENTITY);
+            boolean ccw = frame.zAxis().z() >= 0;
+            // the circle runs counterclockwise about its own axis; the trimmed part follows the sense
+            if (!sense) {
+                ccw = !ccw;
+            }
+            if (!sameSense) {
+                ccw = !ccw;
+            }
+            return Optional.of(new Profile.Arc(a, b, frame.translationPart(), required(circle, "radius"), ccw));
+        }
+        return Optional.empty();
+    }
+
+    private Optional<Vec3> trimPoint(E t, String attr) throws StepParseException {
+        StepValue v = t.v(attr);
+        if (v instanceof StepValue.Aggregate a) {
+            for (StepValue item : a.items()) {
+                if (item instanceof StepValue.Ref r) {
+                    Optional<E> p = known(r.id());
+                    if (p.isPresent() && p.get().def.isA("CARTESIAN_POINT")) {
+                        return Optional.of(point(p.get()));
+                    }
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    // ---- operations ----
+
+    private Operation operation(E owner, long id) throws StepParseException {
+        Optional<E> k = known(id);
+        if (k.isEmpty()) {
+            return new Operation(id, Operation.OperationType.OTHER, typeOf(id), "", OptionalDouble.empty(),
+                    Optional.empty(), Optional.empty(), Technology.NONE, Optional.empty(), Optional.empty(),
+                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
+                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
+        }
+        E o = k.get();
+        if (!o.def.isA("MACHINING_OPERATION")) {
+            throw error(owner, "its_operation should be a machining operation, found #" + id + " " + o.name());
+        }
+        Operation.OperationType type;
+        try {
+            type = Operation.OperationType.valueOf(o.name());
+        } catch (IllegalArgumentException ex) {
+            type = Operation.OperationType.OTHER;
+        }
+        Optional<Tool> tool = Optional.empty();
+        Optional<Long> toolId = refId(o, "its_tool");
+        if (toolId.isPresent()) {
+            tool = tool(o, toolId.get());
+        }
+        Technology tech = Technology.NONE;
+        Optional<E> t = ref(o, "its_technology", "MILLING_TECHNOLOGY");
+        if (t.isPresent()) {
+            tech = technology(t.get());
+        }
+        OptionalDouble diameter = tool.map(Tool::diameterMm).orElse(OptionalDouble.empty());
+        Optional<Strategy> strategy = Optional.empty();
+        if (o.has("its_machining_strategy")) {
+            Optional<Long> sid = refId(o, "its_machining_strategy");
+            if (sid.isPresent()) {
+                strategy = Optional.of(strategy(o, sid.get(), diameter));
+            }
+        }
+        return new Operation(id, type, o.name(), text(o, "its_id"), num(o, "retract_plane"),
+                pointAttr(o, "start_point"), tool, tech, strategy, approach(o, "approach"), approach(o, "retract"),
+                num(o, "axial_cutting_depth"), num(o, "radial_cutting_depth"), num(o, "allowance_side"),
+                num(o, "allowance_bottom"), num(o, "cutting_depth"), num(o, "overcut_length"));
+    }
+
+    private Optional<ApproachRetract> approach(E o, String attr) throws StepParseException {
+        if (!o.has(attr)) {
+            return Optional.empty();
+        }
+        Optional<Long> id = refId(o, attr);
+        if (id.isEmpty()) {
+            return Optional.empty();
+        }
+        Optional<E> k = known(id.get());
+        if (k.isEmpty() || !k.get().def.isA("APPROACH_RETRACT_STRATEGY")) {
+            return Optional.of(new ApproachRetract(id.get(), ApproachRetract.Kind.OTHER, typeOf(id.get()),
+                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty()));
+        }
+        E a = k.get();
+        ApproachRetract.Kind kind;
+        try {
+            kind = ApproachRetract.Kind.valueOf(a.name());
+        } catch (IllegalArgumentException ex) {
+            kind = ApproachRetract.Kind.OTHER;
+        }
+        return Optional.of(new ApproachRetract(a.id(), kind, a.name(), directionAttr(a, "tool_orientation"),
+                num(a, "angle"), num(a, "radius"), num(a, "width")));
+    }
+
+    private Strategy strategy(E owner, long id, OptionalDouble toolDiameter) throws StepParseException {
+        Optional<E> k = known(id);
+        if (k.isEmpty()) {
+            return new Strategy(id, Strategy.StrategyType.OTHER, typeOf(id), OptionalDouble.empty(),
+                    OptionalDouble.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
+                    Optional.empty(), Optional.empty());
+        }
+        E s = k.get();
+        Strategy.StrategyType type = switch (s.name()) {
+            case "UNIDIRECTIONAL_MILLING" -> Strategy.StrategyType.UNIDIRECTIONAL;
+            case "BIDIRECTIONAL_MILLING" -> Strategy.StrategyType.BIDIRECTIONAL;
+            case "EXPLICIT_STRATEGY" -> Strategy.StrategyType.EXPLICIT;
+            case "CONTOUR_PARALLEL", "CONTOUR_SPIRAL", "BIDIRECTIONAL_CONTOUR", "CONTOUR_BIDIRECTIONAL",
+                    "CENTER_MILLING", "DRILLING_TYPE_STRATEGY" -> Strategy.StrategyType.valueOf(s.name());
+            default -> throw error(owner, "its_machining_strategy should be a strategy, found #" + id + " " + s.name());
+        };
+        String spelling = s.inst.record().type();
+        if (type == Strategy.StrategyType.DRILLING_TYPE_STRATEGY) {
+            for (String a : List.of("reduced_cut_at_start", "reduced_feed_at_start", "reduced_cut_at_end",
+                    "reduced_feed_at_end")) {
+                OptionalDouble v = num(s, a);
+                if (v.isPresent() && v.getAsDouble() > 1) {
+                    spellings.add("DRILLING_TYPE_STRATEGY ratios written as percentages (0-100)");
+                } else if (v.isPresent()) {
+                    spellings.add("DRILLING_TYPE_STRATEGY ratios written as fractions (0-1)");
+                }
+            }
+            return new Strategy(id, type, spelling, OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(),
+                    Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty());
+        }
+        OptionalDouble overlap = num(s, "overlap");
+        OptionalDouble fraction = OptionalDouble.empty();
+        Optional<String> how = Optional.empty();
+        if (overlap.isPresent()) {
+            double v = overlap.getAsDouble();
+            if (v >= 0 && v <= 1) {
+                fraction = OptionalDouble.of(v);
+                how = Optional.of("fraction");
+            } else if (dialect == Dialect.STEP_MODELER && toolDiameter.isPresent() && v > 0
+                    && v < toolDiameter.getAsDouble()) {
+                fraction = OptionalDouble.of(v / toolDiameter.getAsDouble());
+                how = Optional.of("length");
+            } else if (v > 1 && v <= 100) {
+                fraction = OptionalDouble.of(v / 100);
+                how = Optional.of("percent");
+            } else {
+                warnings.add("#" + id + " " + spelling + ": overlap " + v + " is neither a fraction nor a percentage");
+                how = Optional.of("unreadable");
+            }
+            spellings.add(switch (how.get()) {
+                case "fraction" -> "strategy overlap written as a fraction of the tool diameter (0-1)";
+                case "percent" -> "strategy overlap written as a percentage of the tool diameter (0-100)";
+                case "length" -> "strategy overlap written as a length in mm (STEP Modeler)";
+                default -> "strategy overlap out of range";
+            });
+        }
+        return new Strategy(id, type, spelling, overlap, fraction, how, bool(s, "allow_multiple_passes"),
+                directionAttr(s, "feed_direction"), enumeration(s, "stepover_direction"),
+                enumeration(s, "rotation_direction"),
+                s.has("spiral_cutmode") ? enumeration(s, "spiral_cutmode") : enumeration(s, "cutmode"));
+    }
+
+    private Optional<Tool> tool(E owner, long id) throws StepParseException {
+        Tool done = tools.get(id);
+        if (done != null) {
+            return Optional.of(done);
+        }
+        Optional<E> k = known(id);
+        if (k.isEmpty()) {
+            return Optional.empty();
+        }
+        E t = k.get();
+        if (!t.def.isA("MACHINING_TOOL")) {
+            throw error(owner, "its_tool should be a cutting tool, found #" + id + " " + t.name());
+        }
+        String body = "";
+        String dimEntity = "";
+        OptionalDouble[] dims = new OptionalDouble[7];
+        java.util.Arrays.fill(dims, OptionalDouble.empty());
+        OptionalInt teeth = OptionalInt.empty();
+        Optional<String> hand = Optional.empty();
+        OptionalDouble pilot = OptionalDouble.empty();
+        Optional<Long> bodyId = t.has("its_tool_body") ? refId(t, "its_tool_body") : Optional.empty();
+        if (bodyId.isPresent()) {
+            body = typeOf(bodyId.get());
+            Optional<E> b = known(bodyId.get());
+            if (b.isPresent() && b.get().def.isA("MILLING_TOOL_BODY")) {
+                E tb = b.get();
+                teeth = integer(tb, "number_of_teeth");
+                hand = enumeration(tb, "hand_of_cut");
+                pilot = num(tb, "pilot_length");
+                Optional<E> d = ref(tb, "dimension", "MILLING_TOOL_DIMENSION");
+                if (d.isPresent()) {
+                    dimEntity = d.get().inst.record().type();
+                    String[] names = {"diameter", "tool_top_angle", "tool_circumference_angle", "cutting_edge_length",
+                        "edge_radius", "edge_center_vertical", "edge_center_horizontal"};
+                    for (int i = 0; i < names.length; i++) {
+                        dims[i] = num(d.get(), names[i]);
+                    }
+                }
+            } else if (b.isPresent()) {
+                throw error(t, "its_tool_body should be a tool body, found #" + bodyId.get() + " " + b.get().name());
+            }
+        }
+        OptionalDouble offset = OptionalDouble.empty();
+        if (t.has("its_cutting_edge")) {
+            for (long cc : refList(t, "its_cutting_edge")) {
+                Optional<E> c = known(cc);
+                if (c.isPresent() && c.get().def.isA("CUTTING_COMPONENT")) {
+                    offset = num(c.get(), "tool_offset_length");
+                    break;
+                }
+            }
+        }
+        Tool out = new Tool(id, text(t, "its_id"), body, dimEntity, dims[0], dims[1], dims[2], dims[3], dims[4],
+                dims[5], dims[6], num(t, "overall_assembly_length"), offset, teeth, hand, pilot,
+                dialect == Dialect.STEP_MODELER ? "rad" : "deg");
+        tools.put(id, out);
+        return Optional.of(out);
+    }
+
+    private Technology technology(E t) throws StepParseException {
+        OptionalDouble feed = num(t, "feedrate");
+        OptionalDouble cut = num(t, "cutspeed");
+        OptionalDouble spindle = num(t, "spindle");
+        boolean iso = dialect == Dialect.ISO_14649;
+        OptionalDouble feedMmMin = iso && feed.isPresent()
+                ? OptionalDouble.of(feed.getAsDouble() * 60000) : OptionalDouble.empty();
+        OptionalDouble rpm = spindle.isPresent()
+                ? OptionalDouble.of(Math.abs(spindle.getAsDouble()) * (iso ? 60 : 1)) : OptionalDouble.empty();
+        boolean cw = spindle.isPresent() && spindle.getAsDouble() < 0;
+        return new Technology(t.id(), feed, iso ? "m/s" : "unstated", enumeration(t, "feedrate_reference"), cut,
+                iso ? "m/s" : "m/min", spindle, iso ? "1/s" : "rpm", num(t, "feed_per_tooth"), feedMmMin, rpm, cw);
+    }
+
+    /** Unknown entity types by count, for reports (kept for the GUI). */
+    static Map<String, Integer> sortedByCount(Map<String, Integer> m) {
+        Map<String, Integer> out = new LinkedHashMap<>();
+        m.entrySet().stream().sorted((a, b) -> b.getValue() - a.getValue()).forEach(e -> out.put(e.getKey(), e.getValue()));
+        return out;
+    }
+}

@@ -1,0 +1,429 @@
+package org.fresa.stepnc;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.util.Locale;
+
+/**
+ * The tokens of ISO 10303-21 (clause 6), read from a Reader through a fixed buffer so that a
+ * large file is never held as one string. Comments are skipped wherever whitespace may stand.
+ * Every token carries the line and column where it starts.
+ *
+ * <p>Lenient where real files are: keywords in lower case are upper-cased, tabs and form feeds
+ * count as space, a backslash that starts no known escape is kept as a character.
+ */
+final class Part21Lexer {
+
+    enum Tok {
+        KEYWORD, INSTANCE, INTEGER, REAL, STRING, ENUMERATION, BINARY, DOLLAR, STAR,
+        LPAREN, RPAREN, COMMA, EQUALS, SEMICOLON, EOF
+    }
+
+    private static final int EOF_CHAR = -1;
+
+    private final Reader in;
+    private final String source;
+    private final char[] buf = new char[1 << 16];
+    private int pos;
+    private int lim;
+    private int line = 1;
+    private int col = 1;
+    private long charsRead;
+
+    // the current token
+    Tok tok;
+    String text;
+    long longValue;
+    double doubleValue;
+    int tokLine;
+    int tokCol;
+    /** Set by the parser so that messages name the instance being read. */
+    long currentInstance;
+
+    private final StringBuilder sb = new StringBuilder();
+
+    Part21Lexer(Reader in, String source) {
+        this.in = in;
+        this.source = source;
+    }
+
+    long charsRead() {
+        return charsRead;
+    }
+
+    StepParseException error(int l, int c, String problem) {
+        return new StepParseException(source, l, c, currentInstance, problem);
+    }
+
+    StepParseException errorHere(String problem) {
+        return error(tokLine, tokCol, problem);
+    }
+
+    private int peekChar() throws IOException {
+        if (pos == lim) {
+            int n = in.read(buf, 0, buf.length);
+            if (n <= 0) {
+                return EOF_CHAR;
+            }
+            pos = 0;
+            lim = n;
+            charsRead += n;
+        }
+        return buf[pos];
+    }
+
+    private int readChar() throws IOException {
+        int c = peekChar();
+        if (c == EOF_CHAR) {
+            return c;
+        }
+        pos++;
+        if (c == '\n') {
+            line++;
+            col = 1;
+        } else {
+            col++;
+        }
+        return c;
+    }
+
+    /** Advances to the next token. */
+    void next() throws IOException, StepParseException {
+        skipSpaceAndComments();
+        tokLine = line;
+        tokCol = col;
+        int c = peekChar();
+        if (c == EOF_CHAR) {
+            tok = Tok.EOF;
+            text = "end of file";
+            return;
+        }
+        switch (c) {
+            case '(' -> single(Tok.LPAREN);
+            case ')' -> single(Tok.RPAREN);
+            case ',' -> single(Tok.COMMA);
+            case '=' -> single(Tok.EQUALS);
+            case ';' -> single(Tok.SEMICOLON);
+            case '$' -> single(Tok.DOLLAR);
+            case '*' -> single(Tok.STAR);
+            case '#' -> instanceName();
+            case '\'' -> string();
+            case '"' -> binary();
+            case '.' -> enumeration();
+            default -> {
+                if (c == '+' || c == '-' || isDigit(c)) {
+                    number();
+                } else if (isLetter(c) || c == '_' || c == '!') {
+                    keyword();
+                } else {
+                    throw error(line, col, "unexpected character " + describe(c));
+                }
+            }
+        }
+    }
+
+    private void single(Tok t) throws IOException {
+        text = String.valueOf((char) readChar());
+        tok = t;
+    }
+
+    private void skipSpaceAndComments() throws IOException, StepParseException {
+        while (true) {
+            int c = peekChar();
+            if (c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f') {
+                readChar();
+            } else if (c == '/') {
+                int l = line;
+                int cc = col;
+                readChar();
+                if (peekChar() != '*') {
+                    throw error(l, cc, "unexpected character '/' (a comment starts with /*)");
+                }
+                readChar();
+                int prev = 0;
+                while (true) {
+                    int d = readChar();
+                    if (d == EOF_CHAR) {
+                        throw error(l, cc, "comment opened here is not closed with */ before the end of the file");
+                    }
+                    if (prev == '*' && d == '/') {
+                        break;
+                    }
+                    prev = d;
+                }
+            } else {
+                return;
+            }
+        }
+    }
+
+    private void instanceName() throws IOException, StepParseException {
+        readChar();
+        sb.setLength(0);
+        while (isDigit(peekChar())) {
+            sb.append((char) readChar());
+        }
+        if (sb.length() == 0) {
+            throw errorHere("'#' must be followed by the digits of an instance name");
+        }
+        text = sb.toString();
+        try {
+            longValue = Long.parseLong(text);
+        } catch (NumberFormatException e) {
+            throw errorHere("instance name #" + abbreviate(text) + " is larger than 64 bits (at most #"
+                    + Long.MAX_VALUE + ")");
+        }
+        tok = Tok.INSTANCE;
+    }
+
+    private void number() throws IOException, StepParseException {
+        sb.setLength(0);
+        int c = peekChar();
+        if (c == '+' || c == '-') {
+            sb.append((char) readChar());
+        }
+        if (!isDigit(peekChar())) {
+            throw errorHere("a sign must be followed by digits");
+        }
+        while (isDigit(peekChar())) {
+            sb.append((char) readChar());
+        }
+        boolean real = false;
+        if (peekChar() == '.') {
+            real = true;
+            sb.append((char) readChar());
+            while (isDigit(peekChar())) {
+                sb.append((char) readChar());
+            }
+            int e = peekChar();
+            if (e == 'E' || e == 'e') {
+                sb.append((char) readChar());
+                int s = peekChar();
+                if (s == '+' || s == '-') {
+                    sb.append((char) readChar());
+                }
+                if (!isDigit(peekChar())) {
+                    throw errorHere("the exponent of " + abbreviate(sb.toString()) + " has no digits");
+                }
+                while (isDigit(peekChar())) {
+                    sb.append((char) readChar());
+                }
+            }
+        }
+        text = sb.toString();
+        if (real) {
+            doubleValue = Double.parseDouble(text);
+            if (!Double.isFinite(doubleValue)) {
+                throw errorHere("the number " + abbreviate(text) + " is out of range");
+            }
+            tok = Tok.REAL;
+        } else {
+            try {
+                longValue = Long.parseLong(text);
+            } catch (NumberFormatException ex) {
+                throw errorHere("the integer " + abbreviate(text) + " is larger than 64 bits");
+            }
+            tok = Tok.INTEGER;
+        }
+    }
+
+    private void keyword() throws IOException {
+        sb.setLength(0);
+        sb.append((char) readChar());
+        while (true) {
+            int c = peekChar();
+            // '-' only occurs in ISO-10303-21 and END-ISO-10303-21; the parser checks the spelling
+            if (isLetter(c) || isDigit(c) || c == '_' || c == '-') {
+                sb.append((char) readChar());
+            } else {
+                break;
+            }
+        }
+        text = sb.toString().toUpperCase(Locale.ROOT);
+        tok = Tok.KEYWORD;
+    }
+
+    private void enumeration() throws IOException, StepParseException {
+        readChar();
+        sb.setLength(0);
+        while (true) {
+            int c = peekChar();
+            if (isLetter(c) || isDigit(c) || c == '_') {
+                sb.append((char) readChar());
+            } else {
+                break;
+            }
+        }
+        if (sb.length() == 0 || peekChar() != '.') {
+            throw errorHere("an enumeration is written .NAME. (letters, digits, _ between two dots)");
+        }
+        readChar();
+        text = sb.toString().toUpperCase(Locale.ROOT);
+        tok = Tok.ENUMERATION;
+    }
+
+    private void binary() throws IOException, StepParseException {
+        readChar();
+        sb.setLength(0);
+        while (true) {
+            int c = readChar();
+            if (c == '"') {
+                break;
+            }
+            if (c == EOF_CHAR) {
+                throw errorHere("binary opened here is not closed with \" before the end of the file");
+            }
+            if (!(isDigit(c) || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f'))) {
+                throw error(line, col - 1, "a binary holds hexadecimal digits only, found " + describe(c));
+            }
+            sb.append((char) c);
+        }
+        text = sb.toString();
+        tok = Tok.BINARY;
+    }
+
+    private void string() throws IOException, StepParseException {
+        readChar();
+        sb.setLength(0);
+        Charset page = StandardCharsets.ISO_8859_1;
+        while (true) {
+            int c = readChar();
+            if (c == EOF_CHAR) {
+                throw errorHere("string opened here is not closed with ' before the end of the file");
+            }
+            if (c == '\'') {
+                if (peekChar() == '\'') {
+                    readChar();
+                    sb.append('\'');
+                    continue;
+                }
+                break;
+            }
+            if (c == '\n' || c == '\r') {
+                // clause 6.4.3: line breaks inside a string are not part of its value
+                continue;
+            }
+            if (c == '\\') {
+                page = escape(page);
+                continue;
+            }
+            sb.append((char) c);
+        }
+        text = sb.toString();
+        tok = Tok.STRING;
+    }
+
+    /** After a backslash inside a string: decodes one escape, returns the code page in force. */
+    private Charset escape(Charset page) throws IOException, StepParseException {
+        int c = peekChar();
+        int l = line;
+        int cc = col - 1;
+        if (c == '\\') {
+            readChar();
+            sb.append('\\');
+            return page;
+        }
+        if (c == 'S') {
+            readChar();
+            expectChar('\\', l, cc, "\\S\\ escape");
+            int ch = readChar();
+            if (ch == EOF_CHAR || ch == '\'' && peekChar() != '\'') {
+                throw error(l, cc, "\\S\\ must be followed by one character");
+            }
+            if (ch == '\'') {
+                readChar();
+            }
+            byte b = (byte) ((ch & 0x7f) + 128);
+            sb.append(new String(new byte[] {b}, page));
+            return page;
+        }
+        if (c == 'P') {
+            readChar();
+            int p = readChar();
+            if (p < 'A' || p > 'I') {
+                throw error(l, cc, "\\P escape names a code page A to I (ISO 8859-1 to -9)");
+            }
+            expectChar('\\', l, cc, "\\P escape");
+            try {
+                return Charset.forName("ISO-8859-" + (p - 'A' + 1));
+            } catch (RuntimeException e) {
+                return StandardCharsets.ISO_8859_1;
+            }
+        }
+        if (c == 'X') {
+            readChar();
+            int k = readChar();
+            if (k == '\\') {
+                sb.append((char) hex(2, l, cc));
+                return page;
+            }
+            if (k == '2' || k == '4') {
+                expectChar('\\', l, cc, "\\X" + (char) k + "\\ escape");
+                int width = k == '2' ? 4 : 8;
+                while (true) {
+                    if (peekChar() == '\\') {
+                        readChar();
+                        if (readChar() != 'X' || readChar() != '0' || readChar() != '\\') {
+                            throw error(l, cc, "\\X" + (char) k + "\\ escape must end with \\X0\\");
+                        }
+                        return page;
+                    }
+                    int code = hex(width, l, cc);
+                    if (width == 4) {
+                        sb.append((char) code);
+                    } else if (Character.isValidCodePoint(code)) {
+                        sb.appendCodePoint(code);
+                    } else {
+                        throw error(l, cc, "\\X4\\ escape holds an invalid code point");
+                    }
+                }
+            }
+            throw error(l, cc, "unknown escape \\X" + describe(k) + " (expected \\X\\, \\X2\\ or \\X4\\)");
+        }
+        // not an escape: a lone backslash, as some writers leave in paths
+        sb.append('\\');
+        return page;
+    }
+
+    private void expectChar(char want, int l, int c, String what) throws IOException, StepParseException {
+        if (readChar() != want) {
+            throw error(l, c, what + " is malformed");
+        }
+    }
+
+    private int hex(int digits, int l, int c) throws IOException, StepParseException {
+        int v = 0;
+        for (int i = 0; i < digits; i++) {
+            int d = Character.digit(readChar(), 16);
+            if (d < 0) {
+                throw error(l, c, "escape expects " + digits + " hexadecimal digits");
+            }
+            v = v * 16 + d;
+        }
+        return v;
+    }
+
+    private static boolean isDigit(int c) {
+        return c >= '0' && c <= '9';
+    }
+
+    private static boolean isLetter(int c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+    }
+
+    private static String describe(int c) {
+        if (c == EOF_CHAR) {
+            return "end of file";
+        }
+        if (c >= 0x20 && c < 0x7f) {
+            return "'" + (char) c + "'";
+        }
+        return String.format(Locale.ROOT, "U+%04X", c);
+    }
+
+    private static String abbreviate(String s) {
+        return s.length() > 30 ? s.substring(0, 27) + "..." : s;
+    }
+}

@@ -1,0 +1,312 @@
+package org.fresa.stepnc;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.Reader;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fresa.stepnc.Part21Lexer.Tok;
+
+/**
+ * Reads an ISO 10303-21 exchange structure (editions 1 to 3): header section, optional anchor
+ * and reference sections (skipped), one or more data sections with simple and complex instances.
+ * Streams the input; what stays in memory is the instance graph.
+ *
+ * <p>Faults are {@link StepParseException}s with line and column: syntax errors, a truncated
+ * file, an instance name defined twice, a reference to an instance that is not defined, nesting
+ * deeper than {@link #MAX_DEPTH}.
+ */
+public final class Part21Reader {
+
+    /** Deepest nesting of lists and typed parameters accepted; deeper input is refused. */
+    public static final int MAX_DEPTH = 1000;
+
+    private final Part21Lexer lx;
+    private final String source;
+    private final Map<Long, StepInstance> instances = new LinkedHashMap<>();
+    private final PendingRefs pending = new PendingRefs();
+
+    private Part21Reader(Reader in, String source) {
+        this.lx = new Part21Lexer(in, source);
+        this.source = source;
+    }
+
+    /** Reads a file (UTF-8; bytes that are not UTF-8 become U+FFFD inside strings). */
+    public static StepFile read(Path file) throws IOException, StepParseException {
+        try (InputStream in = Files.newInputStream(file)) {
+            return read(in, file.getFileName() == null ? file.toString() : file.getFileName().toString());
+        }
+    }
+
+    public static StepFile read(InputStream in, String source) throws IOException, StepParseException {
+        var decoder = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPLACE)
+                .onUnmappableCharacter(CodingErrorAction.REPLACE);
+        return read(new InputStreamReader(in, decoder), source);
+    }
+
+    /**
+     * @param source the name used in messages (usually the file name)
+     */
+    public static StepFile read(Reader in, String source) throws IOException, StepParseException {
+        return new Part21Reader(in, source).file();
+    }
+
+    private StepFile file() throws IOException, StepParseException {
+        lx.next();
+        expectKeyword("ISO-10303-21", "a Part 21 file starts with ISO-10303-21;");
+        expect(Tok.SEMICOLON, "';' after ISO-10303-21");
+        expectKeyword("HEADER", "the header section (HEADER;)");
+        expect(Tok.SEMICOLON, "';' after HEADER");
+        List<StepRecord> header = new ArrayList<>();
+        while (!(lx.tok == Tok.KEYWORD && lx.text.equals("ENDSEC"))) {
+            if (lx.tok != Tok.KEYWORD) {
+                throw unexpected("a header entity such as FILE_NAME(...) or ENDSEC");
+            }
+            header.add(simpleRecord(0));
+            expect(Tok.SEMICOLON, "';' after a header entity");
+        }
+        lx.next();
+        expect(Tok.SEMICOLON, "';' after ENDSEC");
+        boolean sawData = false;
+        while (true) {
+            if (lx.tok != Tok.KEYWORD) {
+                throw unexpected("DATA, ENDSEC or END-ISO-10303-21");
+            }
+            switch (lx.text) {
+                case "DATA" -> {
+                    dataSection();
+                    sawData = true;
+                }
+                case "ANCHOR", "REFERENCE", "SIGNATURE" -> skipSection();
+                case "END-ISO-10303-21" -> {
+                    lx.next();
+                    if (lx.tok != Tok.SEMICOLON) {
+                        throw unexpected("';' after END-ISO-10303-21");
+                    }
+                    if (!sawData) {
+                        throw lx.errorHere("the file has no DATA section");
+                    }
+                    pending.check();
+                    return new StepFile(source, header, instances);
+                }
+                default -> throw unexpected("DATA, ENDSEC or END-ISO-10303-21");
+            }
+        }
+    }
+
+    private void dataSection() throws IOException, StepParseException {
+        lx.next();
+        if (lx.tok == Tok.LPAREN) {
+            // edition 3: DATA('name', ('SCHEMA')); the parameters do not matter here
+            aggregate(0);
+        }
+        expect(Tok.SEMICOLON, "';' after DATA");
+        while (true) {
+            if (lx.tok == Tok.INSTANCE) {
+                instance();
+            } else if (lx.tok == Tok.KEYWORD && lx.text.equals("ENDSEC")) {
+                lx.next();
+                expect(Tok.SEMICOLON, "';' after ENDSEC");
+                return;
+            } else if (lx.tok == Tok.EOF) {
+                throw lx.errorHere("the file ends inside the DATA section (truncated? ENDSEC; and END-ISO-10303-21; are missing)");
+            } else {
+                throw unexpected("an instance (#n = ...;) or ENDSEC");
+            }
+        }
+    }
+
+    private void skipSection() throws IOException, StepParseException {
+        while (!(lx.tok == Tok.KEYWORD && lx.text.equals("ENDSEC"))) {
+            if (lx.tok == Tok.EOF) {
+                throw lx.errorHere("the file ends before ENDSEC");
+            }
+            lx.next();
+        }
+        lx.next();
+        expect(Tok.SEMICOLON, "';' after ENDSEC");
+    }
+
+    private void instance() throws IOException, StepParseException {
+        long id = lx.longValue;
+        int line = lx.tokLine;
+        int col = lx.tokCol;
+        if (id == 0) {
+            throw lx.errorHere("instance name #0 is not allowed (names start at #1)");
+        }
+        StepInstance earlier = instances.get(id);
+        if (earlier != null) {
+            throw new StepParseException(source, line, col, id,
+                    "instance name #" + id + " is defined twice (first at line " + earlier.line() + ")");
+        }
+        lx.currentInstance = id;
+        lx.next();
+        expect(Tok.EQUALS, "'=' after the instance name");
+        List<StepRecord> records;
+        if (lx.tok == Tok.KEYWORD) {
+            records = List.of(simpleRecord(0));
+        } else if (lx.tok == Tok.LPAREN) {
+            lx.next();
+            records = new ArrayList<>();
+            while (lx.tok == Tok.KEYWORD) {
+                records.add(simpleRecord(1));
+            }
+            if (records.isEmpty()) {
+                throw unexpected("an entity name in the complex instance");
+            }
+            expect(Tok.RPAREN, "')' closing the complex instance");
+        } else {
+            throw unexpected("an entity name or '(' of a complex instance");
+        }
+        expect(Tok.SEMICOLON, "';' ending the instance");
+        instances.put(id, new StepInstance(id, records, line, col));
+        lx.currentInstance = 0;
+    }
+
+    /** KEYWORD '(' [params] ')', the current token being the keyword. */
+    private StepRecord simpleRecord(int depth) throws IOException, StepParseException {
+        String type = lx.text;
+        lx.next();
+        if (lx.tok != Tok.LPAREN) {
+            throw unexpected("'(' after " + type);
+        }
+        return new StepRecord(type, ((StepValue.Aggregate) aggregate(depth)).items());
+    }
+
+    /** '(' [param {',' param}] ')', the current token being '('; leaves the token after ')'. */
+    private StepValue aggregate(int depth) throws IOException, StepParseException {
+        if (depth >= MAX_DEPTH) {
+            throw lx.errorHere("lists are nested more than " + MAX_DEPTH + " deep");
+        }
+        lx.next();
+        List<StepValue> items = new ArrayList<>();
+        if (lx.tok == Tok.RPAREN) {
+            lx.next();
+            return new StepValue.Aggregate(items);
+        }
+        while (true) {
+            items.add(parameter(depth + 1));
+            if (lx.tok == Tok.COMMA) {
+                lx.next();
+            } else if (lx.tok == Tok.RPAREN) {
+                lx.next();
+                return new StepValue.Aggregate(items);
+            } else {
+                throw unexpected("',' or ')' in a parameter list");
+            }
+        }
+    }
+
+    private StepValue parameter(int depth) throws IOException, StepParseException {
+        StepValue v;
+        switch (lx.tok) {
+            case DOLLAR -> v = StepValue.UNSET;
+            case STAR -> v = StepValue.DERIVED;
+            case INTEGER -> v = new StepValue.Int(lx.longValue);
+            case REAL -> v = new StepValue.Real(lx.doubleValue);
+            case STRING -> v = new StepValue.Text(lx.text);
+            case ENUMERATION -> v = new StepValue.Enumeration(lx.text);
+            case BINARY -> v = new StepValue.Binary(lx.text);
+            case INSTANCE -> {
+                long id = lx.longValue;
+                if (id == 0) {
+                    throw lx.errorHere("#0 is not an instance name");
+                }
+                if (!instances.containsKey(id)) {
+                    pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
+                }
+                v = new StepValue.Ref(id);
+            }
+            case LPAREN -> {
+                return aggregate(depth);
+            }
+            case KEYWORD -> {
+                String type = lx.text;
+                if (depth >= MAX_DEPTH) {
+                    throw lx.errorHere("typed parameters are nested more than " + MAX_DEPTH + " deep");
+                }
+                lx.next();
+                expect(Tok.LPAREN, "'(' after the type name " + type);
+                StepValue inner = parameter(depth + 1);
+                expect(Tok.RPAREN, "')' closing " + type + "(...)");
+                return new StepValue.Typed(type, inner);
+            }
+            case EOF -> throw lx.errorHere("the file ends inside an instance (truncated?)");
+            default -> throw unexpected("a parameter ($, *, number, 'string', .ENUM., #ref, list or TYPE(value))");
+        }
+        lx.next();
+        return v;
+    }
+
+    private void expect(Tok t, String what) throws IOException, StepParseException {
+        if (lx.tok != t) {
+            throw unexpected(what);
+        }
+        lx.next();
+    }
+
+    private void expectKeyword(String kw, String what) throws IOException, StepParseException {
+        if (lx.tok != Tok.KEYWORD || !lx.text.equals(kw)) {
+            throw unexpected(what);
+        }
+        lx.next();
+    }
+
+    private StepParseException unexpected(String expected) {
+        String found = switch (lx.tok) {
+            case EOF -> "the end of the file";
+            case STRING -> "a string";
+            case KEYWORD -> shorten(lx.text);
+            case INSTANCE -> "#" + lx.text;
+            default -> "'" + shorten(lx.text) + "'";
+        };
+        return lx.errorHere("expected " + expected + ", found " + found);
+    }
+
+    private static String shorten(String s) {
+        return s.length() > 40 ? s.substring(0, 37) + "..." : s;
+    }
+
+    /** Forward references, checked at the end; primitive arrays keep large files lean. */
+    private final class PendingRefs {
+        private long[] target = new long[256];
+        private long[] from = new long[256];
+        private int[] lines = new int[256];
+        private int[] cols = new int[256];
+        private int n;
+
+        void add(long t, long f, int l, int c) {
+            if (n == target.length) {
+                int m = n * 2;
+                target = Arrays.copyOf(target, m);
+                from = Arrays.copyOf(from, m);
+                lines = Arrays.copyOf(lines, m);
+                cols = Arrays.copyOf(cols, m);
+            }
+            target[n] = t;
+            from[n] = f;
+            lines[n] = l;
+            cols[n] = c;
+            n++;
+        }
+
+        void check() throws StepParseException {
+            for (int i = 0; i < n; i++) {
+                if (!instances.containsKey(target[i])) {
+                    throw new StepParseException(source, lines[i], cols[i], from[i],
+                            "refers to #" + target[i] + ", which is not defined in the file");
+                }
+            }
+            n = 0;
+        }
+    }
+}

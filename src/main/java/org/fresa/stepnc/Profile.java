@@ -1,0 +1,111 @@
+package org.fresa.stepnc;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.OptionalDouble;
+import org.fresa.geom.Transform3;
+import org.fresa.geom.Vec3;
+
+/**
+ * An ISO 14649-10 profile: the outline of a pocket or boss, the cross-section of a slot or step,
+ * the removal boundary of a planar face. Lengths in mm, angles in radians as the file writes
+ * them. The placement is the profile's frame in the feature frame (identity when the file leaves
+ * it unset); closed profiles are centred on their frame's origin, as ISO 14649-10 defines them.
+ */
+public sealed interface Profile {
+
+    /** The entity name as written in the file. */
+    String entity();
+
+    /** The profile frame in the feature frame. */
+    Transform3 placement();
+
+    /** RECTANGULAR_CLOSED_PROFILE: x along the length, y along the width, centred. */
+    record Rectangular(String entity, Transform3 placement, double widthMm, double lengthMm) implements Profile {
+        public Rectangular {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /** CIRCULAR_CLOSED_PROFILE, centred. */
+    record Circular(String entity, Transform3 placement, double diameterMm) implements Profile {
+        public Circular {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /**
+     * NGON_PROFILE.
+     *
+     * @param circumscribed true: the n-gon surrounds a circle of the diameter (across flats);
+     *                      false: its corners lie on that circle
+     */
+    record Ngon(String entity, Transform3 placement, double diameterMm, int sides, boolean circumscribed)
+            implements Profile {
+        public Ngon {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /**
+     * GENERAL_CLOSED_PROFILE or GENERAL_PROFILE: a chain of lines and arcs in the profile frame
+     * (a POLYLINE gives lines only, a COMPOSITE_CURVE of trimmed lines and circles keeps its arcs).
+     *
+     * @param closed whether the chain ends where it starts
+     */
+    record General(String entity, Transform3 placement, String curveEntity, List<Segment> segments, boolean closed)
+            implements Profile {
+        public General {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+            Objects.requireNonNull(curveEntity);
+            segments = List.copyOf(segments);
+        }
+    }
+
+    /** LINEAR_PROFILE: a straight open profile of the given length along x. */
+    record Linear(String entity, Transform3 placement, double lengthMm) implements Profile {
+        public Linear {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /**
+     * SQUARE_U_PROFILE and ROUNDED_U_PROFILE (radii and angles empty for the rounded form, whose
+     * bottom is a half circle of the width).
+     */
+    record U(String entity, Transform3 placement, double widthMm, OptionalDouble firstRadiusMm,
+            OptionalDouble firstAngleRad, OptionalDouble secondRadiusMm, OptionalDouble secondAngleRad)
+            implements Profile {
+        public U {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /** A profile the binding does not turn into geometry (VEE_PROFILE, PARTIAL_CIRCULAR_PROFILE, ...). */
+    record Other(String entity, Transform3 placement, long instanceId) implements Profile {
+        public Other {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /** One element of a general profile, in the profile frame (z is normally 0). */
+    sealed interface Segment {
+        Vec3 start();
+
+        Vec3 end();
+    }
+
+    record Line(Vec3 start, Vec3 end) implements Segment {
+    }
+
+    /** A circular arc about the profile's z axis. */
+    record Arc(Vec3 start, Vec3 end, Vec3 center, double radiusMm, boolean ccw) implements Segment {
+    }
+}

@@ -1,0 +1,69 @@
+package org.fresa.stepnc;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * An ISO 14649 program as bound from a Part 21 file: the project, its workplan tree, the
+ * machining workingsteps in execution order, and what was not executed or not understood.
+ *
+ * @param source the file name
+ * @param schemas FILE_SCHEMA names
+ * @param dialect which writer's conventions (units, overlap) were assumed
+ * @param instanceCount number of entity instances in the file
+ * @param projectId the PROJECT's its_id (empty when the file has none)
+ * @param mainWorkplan the project's main workplan (or the first top-level workplan)
+ * @param workpieces every WORKPIECE of the project
+ * @param workingsteps machining workingsteps in execution order, nested workplans flattened
+ * @param skipped workingsteps defined in the file but not reached from the main workplan
+ * @param unknownEntities entity types the binding does not know: kept raw, counted
+ * @param spellings draft/published variants and arities seen, one sentence each
+ * @param warnings things read but doubtful
+ * @param file the raw instance graph, for anything the binding does not cover
+ */
+public record StepNcProgram(String source, List<String> schemas, Dialect dialect, long instanceCount,
+        String projectId, Optional<Workplan> mainWorkplan, List<Workpiece> workpieces,
+        List<MachiningWorkingstep> workingsteps, List<Skipped> skipped, Map<String, Integer> unknownEntities,
+        List<String> spellings, List<String> warnings, StepFile file) {
+
+    public StepNcProgram {
+        Objects.requireNonNull(source);
+        schemas = List.copyOf(schemas);
+        Objects.requireNonNull(dialect);
+        Objects.requireNonNull(projectId);
+        Objects.requireNonNull(mainWorkplan);
+        workpieces = List.copyOf(workpieces);
+        workingsteps = List.copyOf(workingsteps);
+        skipped = List.copyOf(skipped);
+        unknownEntities = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(unknownEntities));
+        spellings = List.copyOf(spellings);
+        warnings = List.copyOf(warnings);
+        Objects.requireNonNull(file);
+    }
+
+    /** The schema names joined as the header lists them. */
+    public String schema() {
+        return String.join(",", schemas);
+    }
+
+    /**
+     * A workingstep present in the file but not executed.
+     *
+     * @param workingstep bound when it could be; empty when its feature or operation is unusable
+     */
+    public record Skipped(long instanceId, String id, String reason, Optional<MachiningWorkingstep> workingstep) {
+    }
+
+    /** Whose conventions the file follows, for units and the meaning of overlap. */
+    public enum Dialect {
+        /** ISO 14649-10/11 as published (feed, cutting speed m/s; spindle rev/s) */
+        ISO_14649,
+        /**
+         * UFSC GRIMA's writers (STEP Modeler, COMBINED_SCHEMA, and their JSDAI files whose spindle
+         * speeds are rpm): spindle rpm, cutting speed m/min, overlap in mm, angles in radians
+         */
+        STEP_MODELER
+    }
+}

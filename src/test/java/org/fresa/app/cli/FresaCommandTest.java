@@ -1,0 +1,76 @@
+package org.fresa.app.cli;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class FresaCommandTest {
+
+    @TempDir
+    Path dir;
+
+    record Run(int status, String out, String err) {
+    }
+
+    static Run fresa(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int status = FresaCommand.execute(new PrintWriter(out, true), new PrintWriter(err, true), args);
+        return new Run(status, out.toString(), err.toString());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"gui", "run", "stepnc", "toolpath", "robot", "pocket", "cut", "grade", "sole", "robots",
+            "posts", "bench"})
+    void helpListsEveryCommandOfTheSpec(String command) {
+        Run r = fresa("--help");
+        assertEquals(0, r.status());
+        assertTrue(r.out().contains("\n  " + command + " "), command + " missing from:\n" + r.out());
+    }
+
+    @Test
+    void anUnknownCommandIsAUsageError() {
+        Run r = fresa("weld");
+        assertAll(
+                () -> assertEquals(2, r.status()),
+                () -> assertTrue(r.err().contains("weld")),
+                () -> assertFalse(r.err().contains("\tat ")));
+    }
+
+    @Test
+    void aMissingRequiredOptionIsAUsageError() {
+        Run r = fresa("run", "job.xml");
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("--out"), r.err());
+    }
+
+    @Test
+    void aJobWithAnExternalEntityIsRefusedWithStatus2() throws Exception {
+        Path job = dir.resolve("xxe.xml");
+        Files.writeString(job, "<?xml version=\"1.0\"?><!DOCTYPE job [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>"
+                + "<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\"><name>&x;</name></job>");
+        Run r = fresa("run", job.toString(), "--out", dir.resolve("out").toString());
+        assertAll(
+                () -> assertEquals(2, r.status()),
+                () -> assertTrue(r.err().startsWith("fresa: " + job), r.err()),
+                () -> assertFalse(r.err().contains("root:"), "the entity must not be read"),
+                () -> assertFalse(Files.exists(dir.resolve("out")), "nothing is written for bad input"));
+    }
+
+    @Test
+    void aMissingJobFileIsBadInput() {
+        Run r = fresa("run", dir.resolve("nope.xml").toString(), "--out", dir.toString());
+        assertEquals(2, r.status());
+        assertTrue(r.err().contains("nope.xml"), r.err());
+    }
+}

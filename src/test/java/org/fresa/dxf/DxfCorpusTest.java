@@ -1,0 +1,57 @@
+package org.fresa.dxf;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+
+class DxfCorpusTest {
+
+    static final Path CORPUS = Path.of("../shared/corpus/dxf");
+
+    static List<Path> corpusFiles() throws IOException {
+        Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
+        try (Stream<Path> s = Files.walk(CORPUS)) {
+            return s.filter(p -> p.toString().toLowerCase().endsWith(".dxf")).sorted().toList();
+        }
+    }
+
+    @Test
+    void everyCorpusDrawingIsReadWithoutACrash() throws Exception {
+        StringBuilder report = new StringBuilder();
+        for (Path p : corpusFiles()) {
+            DxfDrawing d = DxfReader.read(p);
+            {
+                report.append(p.getFileName() + " units=" + d.units() + " curves=" + d.curveCount() + " layers="
+                        + d.layers().size() + " ignored=" + d.ignored() + " warnings=" + d.warnings().size()
+                        + (d.warnings().isEmpty() ? "" : " first: " + d.warnings().get(0))).append('\n');
+            }
+        }
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target/dxf-corpus.txt"), report);
+    }
+
+    @Test
+    void malformedSplineFileIsNamedAndStillRead() throws Exception {
+        Path p = CORPUS.resolve("dxf2gcode/Spline_Problem.dxf");
+        Assumptions.assumeTrue(Files.exists(p));
+        DxfDrawing d = DxfReader.read(p);
+        assertFalse(d.curves().isEmpty());
+        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("SPLINE") && w.contains("line 6")), d.warnings().toString());
+    }
+
+    @Test
+    void circlesWithRadiusZeroOrLessAreNamedByHandleAndTheRestIsKept() throws Exception {
+        Path p = CORPUS.resolve("ezdxf/examples_dxf_circle_radius_le_0.dxf");
+        Assumptions.assumeTrue(Files.exists(p));
+        DxfDrawing d = DxfReader.read(p);
+        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2D") && w.contains("line 2002")), d.warnings().toString());
+        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2E")), d.warnings().toString());
+    }
+}

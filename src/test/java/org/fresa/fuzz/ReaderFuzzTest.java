@@ -1,0 +1,44 @@
+package org.fresa.fuzz;
+
+import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.io.IOException;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.fresa.job.JobXml;
+import org.fresa.model.CamInputException;
+import org.fresa.model.ContourFile;
+
+/**
+ * Coverage-guided fuzz tests of the readers (Jazzer). A reader may accept an input or refuse it
+ * with a {@link CamInputException}; any other exception, a hang or an out-of-memory is a finding.
+ *
+ * <p>{@code mvn test} replays the seed corpus in src/test/resources/org/fresa/fuzz/ReaderFuzzTestInputs;
+ * {@code JAZZER_FUZZ=1 mvn test -Dtest=ReaderFuzzTest#NAME} fuzzes one target for its maxDuration
+ * (CI does this for a bounded time; docs/robustness.md says how to run longer).
+ */
+class ReaderFuzzTest {
+
+    @FuzzTest(maxDuration = "20s")
+    void jobXmlReaderAcceptsOrRefuses(byte[] data) throws IOException {
+        Path f = Files.createTempFile("fuzz-job", ".xml");
+        try {
+            Files.write(f, data);
+            JobXml.read(f);
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        } finally {
+            Files.deleteIfExists(f);
+        }
+    }
+
+    @FuzzTest(maxDuration = "20s")
+    void contourReaderAcceptsOrRefuses(byte[] data) {
+        try {
+            ContourFile.read(new StringReader(new String(data, StandardCharsets.UTF_8)), "fuzz.contour");
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        }
+    }
+}

@@ -1,0 +1,101 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import org.fresa.geom.Vec2;
+import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.JobSettings.GradingSettings;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.JobSettings.RobotSettings;
+import org.fresa.job.JobSettings.StepNcSettings;
+import org.fresa.model.CamInputException;
+import org.fresa.model.Placement;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class JobXmlTest {
+
+    @TempDir
+    Path dir;
+
+    static Job fullJob(Path dir) {
+        return Job.empty(JobTask.ROBOT).withName("cell 1")
+                .withStepnc(new StepNcSettings(dir.resolve("parts/example2.stp"), "840d"))
+                .withRobot(new RobotSettings("irb140", new Placement(450, 0, 350, 0, 0, 15),
+                        new Placement(0, 10, 0, -90, 0, 0), List.of("csv", "rapid")))
+                .withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, "7m"))
+                .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, "laser", 3, 1, "line", 0.001, "mm", true, "iso"))
+                .withGrading(new GradingSettings(dir.resolve("sole.contour"), 40, "36-44", true, "paris",
+                        OptionalDouble.of(6.67), OptionalDouble.empty(), Optional.of(Vec2.of(12.5, -3)), 0.015, "additive"));
+    }
+
+    @Test
+    void writeThenReadGivesTheSameJob() throws Exception {
+        Job job = fullJob(dir);
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertEquals(job, JobXml.read(file));
+    }
+
+    @Test
+    void pathsAreStoredRelativeToTheJobFile() throws Exception {
+        Path file = dir.resolve("job.xml");
+        JobXml.write(fullJob(dir), file);
+        String xml = Files.readString(file);
+        assertAll(
+                () -> assertTrue(xml.contains("file=\"parts/example2.stp\""), xml),
+                () -> assertFalse(xml.contains(dir.toString()), xml));
+    }
+
+    @Test
+    void externalEntitiesAreRefused() throws Exception {
+        Path secret = dir.resolve("secret.txt");
+        Files.writeString(secret, "top secret");
+        Path file = dir.resolve("xxe.xml");
+        Files.writeString(file, """
+                <?xml version="1.0"?>
+                <!DOCTYPE job [ <!ENTITY x SYSTEM "%s"> ]>
+                <job xmlns="urn:fresa:job:1" version="1" task="pocket"><name>&x;</name></job>
+                """.formatted(secret.toUri()));
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(file));
+        assertAll(
+                () -> assertTrue(e.getMessage().contains("DOCTYPE is not allowed"), e.getMessage()),
+                () -> assertFalse(e.getMessage().contains("top secret")));
+    }
+
+    @Test
+    void schemaViolationsNameLineAndColumn() throws Exception {
+        Path file = dir.resolve("bad.xml");
+        Files.writeString(file, """
+                <?xml version="1.0"?>
+                <job xmlns="urn:fresa:job:1" version="1" task="pocket">
+                  <pocket contour="a.dad" toolDiameterMm="-6"/>
+                </job>
+                """);
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(file));
+        assertEquals(3, e.line().orElse(0), e.getMessage());
+        assertTrue(e.getMessage().contains("-6"), e.getMessage());
+    }
+
+    @Test
+    void anUnknownTaskIsRefused() throws Exception {
+        Path file = dir.resolve("task.xml");
+        Files.writeString(file, "<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"weld\"/>");
+        assertThrows(CamInputException.class, () -> JobXml.read(file));
+    }
+
+    @Test
+    void aMissingFileIsBadInput() {
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(dir.resolve("none.xml")));
+        assertTrue(e.getMessage().contains("none.xml"));
+    }
+}

@@ -1,0 +1,104 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.fixture.JFileChooserFixture;
+import org.assertj.swing.timing.Timeout;
+import org.fresa.job.Job;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.JobTask;
+import org.fresa.job.JobXml;
+import org.fresa.job.RecentJobs;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The main window under a real (virtual) display: CI runs it under Xvfb, a headless run skips it. */
+class MainWindowGuiTest {
+
+    static final String[] TABS = {"STEP-NC", "Position", "Robot", "Pocket", "Cutting", "Grading", "Sole", "Output"};
+
+    @TempDir
+    Path dir;
+
+    FrameFixture window;
+
+    @BeforeAll
+    static void needsADisplay() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
+        FailOnThreadViolationRepaintManager.install();
+    }
+
+    @BeforeEach
+    void openWindow() {
+        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
+        window = new FrameFixture(w);
+        window.show();
+    }
+
+    @AfterEach
+    void closeWindow() {
+        if (window != null) {
+            window.cleanUp();
+        }
+    }
+
+    @Test
+    void windowIsTitledFresaWithTheEightTabs() {
+        window.requireTitle("Fresa");
+        window.tabbedPane("tabs").requireTabTitles(TABS);
+    }
+
+    @Test
+    void everyTabCanBeSelectedWithTheKeyboard() {
+        for (int i = 0; i < TABS.length; i++) {
+            window.tabbedPane("tabs").selectTab(i);
+            window.tabbedPane("tabs").requireSelectedTab(org.assertj.swing.data.Index.atIndex(i));
+            assertTrue(window.tabbedPane("tabs").target().getComponentAt(i).isShowing(), TABS[i]);
+        }
+        int mnemonic = GuiActionRunner.execute(() -> window.tabbedPane("tabs").target().getMnemonicAt(3));
+        assertEquals(java.awt.event.KeyEvent.VK_4, mnemonic);
+    }
+
+    @Test
+    void aJobCanBeSavedAndOpenedAgain() throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13,
+                30, 27, 3, 3200, 290, 100, "linuxcnc"));
+        GuiActionRunner.execute(() -> model.setJob(job));
+
+        window.menuItemWithPath("File", "Save as...").click();
+        JFileChooserFixture save = window.fileChooser(Timeout.timeout(5000));
+        save.setCurrentDirectory(dir.toFile());
+        save.fileNameTextBox().setText("cavity.xml");
+        save.approve();
+
+        Path file = dir.resolve("cavity.xml");
+        assertTrue(Files.exists(file));
+        assertEquals(job.withName("cavity"), JobXml.read(file));
+        window.requireTitle("Fresa - cavity.xml");
+
+        GuiActionRunner.execute(model::newJob);
+        window.menuItemWithPath("File", "Open job...").click();
+        JFileChooserFixture open = window.fileChooser(Timeout.timeout(5000));
+        open.setCurrentDirectory(dir.toFile());
+        open.selectFile(file.toFile());
+        open.approve();
+
+        Job reopened = GuiActionRunner.execute(model::job);
+        assertEquals(job.withName("cavity"), reopened);
+        assertEquals(Optional.of(file.toAbsolutePath()), GuiActionRunner.execute(model::file));
+        assertEquals(java.util.List.of(file.toAbsolutePath()), model.recentJobs());
+    }
+}
