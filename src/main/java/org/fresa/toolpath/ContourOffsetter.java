@@ -6,8 +6,7 @@ import org.fresa.geom.Tolerance;
 
 /**
  * Exact inward offsets of a closed line/arc contour, as the pocket module's offset engine
- * provides ({@code org.fresa.pocket.LineArcOffsetter}, issue 7). Until that engine is merged,
- * {@link #UNAVAILABLE} makes general-contour features fail with a clear message.
+ * provides ({@link #EXACT}, {@code org.fresa.pocket.LineArcOffsetter}, issue 7).
  */
 @FunctionalInterface
 public interface ContourOffsetter {
@@ -18,7 +17,16 @@ public interface ContourOffsetter {
      */
     List<Contour> inward(Contour c, double dMm, Tolerance tol);
 
-    /** The engine that is not there yet. */
+    /** The pocket module's exact line/arc offsetter (issue 7), largest loop first. */
+    ContourOffsetter EXACT = (c, d, tol) -> {
+        java.util.List<Contour> loops = new java.util.ArrayList<>(
+                org.fresa.pocket.LineArcOffsetter.offset(c, -d, tol));
+        loops.removeIf(l -> l.isCcw() != c.isCcw());
+        loops.sort(java.util.Comparator.comparingDouble(Contour::area).reversed());
+        return loops;
+    };
+
+    /** An engine that refuses: for callers that must not offset general contours. */
     ContourOffsetter UNAVAILABLE = (c, d, tol) -> {
         throw new UnsupportedOperationException(
                 "general line/arc profiles need the pocket module's offset engine (issue 7), not merged yet");
