@@ -12,8 +12,9 @@ import org.fresa.model.ToolpathSection;
  * <p>The passes are spread evenly across the removal boundary, at most the stepover apart, with
  * the tool's edge flush with the boundary at both sides (one centred pass when the face is no
  * wider than the tool). Each pass runs beyond the boundary so that the tool's edge clears it by
- * {@code overcutMm} at both ends (NIST's example 1 output clears it by 0.25 D). Passes are cut
- * from the high side of the stepover direction down; bidirectional passes are joined at depth
+ * {@code overcutMm} at both ends (NIST's example 1 output clears it by 0.25 D). With
+ * {@code stepLeft} each pass lies to the left of the previous one seen along the course of
+ * travel (ISO stepover_direction LEFT), else to its right; bidirectional passes are joined at depth
  * outside the boundary, unidirectional ones by a lift to the retract height.
  */
 public final class FaceMilling {
@@ -25,7 +26,7 @@ public final class FaceMilling {
      * @param courseOfTravel the pass direction (unit or not)
      */
     public static ToolpathSection section(String label, Box2 boundary, Vec2 courseOfTravel, Heights h, Tooling tool,
-            double stepoverMm, double axialDepthMm, double overcutMm, boolean bidirectional) {
+            double stepoverMm, double axialDepthMm, double overcutMm, boolean bidirectional, boolean stepLeft) {
         Vec2 u = courseOfTravel.normalized();
         Vec2 n = u.leftNormal();
         double umin = Double.POSITIVE_INFINITY;
@@ -45,7 +46,8 @@ public final class FaceMilling {
         int m = width <= tool.diameterMm() ? 0 : (int) Math.ceil((width - tool.diameterMm()) / d - 1e-9);
         double[] across = new double[m + 1];
         for (int k = 0; k <= m; k++) {
-            across[k] = m == 0 ? (nmin + nmax) / 2 : (nmax - r) - (width - 2 * r) * k / m;
+            double t = (width - 2 * r) * k / m;
+            across[k] = m == 0 ? (nmin + nmax) / 2 : stepLeft ? (nmin + r) + t : (nmax - r) - t;
         }
         double a = umin - r - overcutMm;
         double b = umax + r + overcutMm;

@@ -19,16 +19,16 @@ import org.locationtech.jts.operation.union.UnaryUnionOp;
  * Test geometry with JTS: the area a flat cutter sweeps in the feature plane, and the pocket
  * polygon, both with arcs densified finely (0.002 mm chords), so areas compare to ~0.01 mm^2.
  */
-final class Swept {
+public final class Swept {
     static final GeometryFactory GF = new GeometryFactory();
     static final double CHORD = 0.002;
-    static final int QUADRANT_SEGMENTS = 64;
+    public static final int QUADRANT_SEGMENTS = 64;
 
     private Swept() {
     }
 
     /** Polygon of a contour. */
-    static Geometry polygon(Contour c) {
+    public static Geometry polygon(Contour c) {
         List<Coordinate> pts = new ArrayList<>();
         for (Curve2 cu : c.curves()) {
             for (Vec2 p : densify(cu)) {
@@ -55,7 +55,7 @@ final class Swept {
      * The region swept by the cutter's disc over the cutting moves whose both ends lie at or
      * below zMax (the XY shadow of the tool).
      */
-    static Geometry sweep(ToolpathSection s, double radius, double zMax) {
+    public static Geometry sweep(ToolpathSection s, double radius, double zMax) {
         List<Geometry> parts = new ArrayList<>();
         Vec3 at = s.start();
         for (Move m : s.moves()) {
@@ -80,18 +80,18 @@ final class Swept {
     }
 
     /** What the cutter cannot reach in any case: the pocket minus its opening by the radius. */
-    static Geometry cornerResidue(Geometry pocket, double radius) {
+    public static Geometry cornerResidue(Geometry pocket, double radius) {
         return pocket.difference(pocket.buffer(-radius, QUADRANT_SEGMENTS).buffer(radius, QUADRANT_SEGMENTS));
     }
 
     /** The pocket area left uncut beyond the unavoidable corner residue (mm^2). */
-    static double uncutBeyondResidue(Geometry pocket, Geometry swept, double radius) {
+    public static double uncutBeyondResidue(Geometry pocket, Geometry swept, double radius) {
         Geometry left = pocket.difference(swept);
         return left.difference(cornerResidue(pocket, radius).buffer(0.01)).getArea();
     }
 
     /** The swept area outside the pocket (mm^2): a gouge. */
-    static double gouge(Geometry pocket, Geometry swept) {
+    public static double gouge(Geometry pocket, Geometry swept) {
         return swept.difference(pocket.buffer(0.01)).getArea();
     }
 }
