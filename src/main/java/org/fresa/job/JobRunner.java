@@ -24,7 +24,7 @@ public final class JobRunner {
             case STEPNC:
                 return StepNcService.run(job, out, progress);
             case TOOLPATH:
-                return TaskOutcome.unavailable(Module.TOOLPATH);
+                return ToolpathService.run(job, out, progress);
             case ROBOT:
                 return TaskOutcome.unavailable(Module.ROBOT);
             case POCKET:

@@ -6,7 +6,7 @@ package org.fresa.job;
  */
 public enum Module {
     STEPNC("STEP-NC import", 3, true),
-    TOOLPATH("STEP-NC toolpaths and G-code", 4, false),
+    TOOLPATH("STEP-NC toolpaths and G-code", 4, true),
     ROBOT("robot cell and joint trajectory", 5, false),
     ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
     POCKET("pocket milling", 7, false),
