@@ -284,7 +284,7 @@ public final class Recognition {
         PocketElement e1 = s.get(i - 1), e2 = s.get(i), e3 = s.get(i + 1);
         for (Incentres.Solution sol : Incentres.of(e1, e2, e3)) {
             double ts = sol.t();
-            if (!(ts > t + 10 * compar) || !Double.isFinite(ts)) {
+            if (!(ts > t + compar) || !Double.isFinite(ts)) {
                 continue;
             }
             // a convex arc shrinks to a point at t = R: the thesis's ILMAX; near-tangent input
@@ -360,7 +360,7 @@ public final class Recognition {
                     continue;
                 }
                 double tt = t + rel;
-                if (inSector(s, ia, p, tt) && inSector(s, ib, p, tt)) {
+                if (inSector(s, ia, p, t) && inSector(s, ib, p, t)) {
                     out.add(new Division(tt, ia, ib, p, a.number(), b.number()));
                 }
             }
