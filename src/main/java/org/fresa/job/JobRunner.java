@@ -27,8 +27,12 @@ public final class JobRunner {
                 return TaskOutcome.unavailable(Module.TOOLPATH);
             case ROBOT:
                 return TaskOutcome.unavailable(Module.ROBOT);
-            case POCKET:
-                return TaskOutcome.unavailable(Module.POCKET);
+            case POCKET: {
+                JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
+                out.create();
+                String ext = s.post().startsWith("7m") ? ".nc" : ".ngc";
+                return PocketService.run(s, out.resolve("pocket" + ext), progress);
+            }
             case CUT:
                 return TaskOutcome.unavailable(Module.CUTTING);
             case GRADE:

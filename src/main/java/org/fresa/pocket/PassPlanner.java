@@ -5,7 +5,6 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import org.fresa.geom.Vec2;
-import org.fresa.model.CamInputException;
 
 /**
  * The thesis's pass rules (§7.6.1, §3.9 of the seed): finishing pass at R, pre-finish at R + a,
@@ -26,10 +25,10 @@ public final class PassPlanner {
     }
 
     /** Plans the passes; fails when the tool does not fit (the thesis's tool checks). */
-    public static PocketPlan plan(Recognition.Result rec, PocketTechnology tech) throws CamInputException {
+    public static PocketPlan plan(Recognition.Result rec, PocketTechnology tech) throws ToolTooLargeException {
         double a = tech.finishFraction() * tech.toolDiameterMm();
         if (tech.toolDiameterMm() + 2 * a > rec.maxHoleDiameterMm() + 1e-9) {
-            throw new CamInputException("technology", "tool diameter plus twice the allowance ("
+            throw new ToolTooLargeException("tool diameter plus twice the allowance ("
                     + (tech.toolDiameterMm() + 2 * a) + " mm) exceeds the largest hole (FURO MAXIMO "
                     + rec.maxHoleDiameterMm() + " mm): use a smaller tool");
         }
