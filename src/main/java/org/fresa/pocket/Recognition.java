@@ -128,16 +128,6 @@ public final class Recognition {
             List<Division> divisions = divisions(s, t);
             double tdm = divisions.stream().mapToDouble(Division::t).min().orElse(Double.POSITIVE_INFINITY);
             double te = Math.min(ttm, tdm);
-            if (System.getProperty("pocket.debug") != null) {
-                StringBuilder sb = new StringBuilder("t=" + t + " " + s.elements() + " ptr " + s.pointer() + " ttm=" + ttm + " tdm=" + tdm + " cancels:");
-                for (int i = 0; i < n; i++) {
-                    sb.append(' ').append(s.get(i)).append('=').append(cancels[i] == null ? "-" : String.format("%.4f", cancels[i].t()));
-                }
-                for (Division d : divisions) {
-                    sb.append(" div ").append(s.get(d.a())).append('/').append(s.get(d.b())).append('@').append(String.format("%.4f", d.t()));
-                }
-                System.err.println(sb);
-            }
             if (Double.isInfinite(te)) {
                 throw new CamInputException("contour", "recognition found no event at t = " + t + " in " + s.elements()
                         + " (is the contour clockwise and closed?)");
