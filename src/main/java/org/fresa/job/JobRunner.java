@@ -27,8 +27,12 @@ public final class JobRunner {
                 return ToolpathService.run(job, out, progress);
             case ROBOT:
                 return TaskOutcome.unavailable(Module.ROBOT);
-            case POCKET:
-                return TaskOutcome.unavailable(Module.POCKET);
+            case POCKET: {
+                JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
+                out.create();
+                String ext = s.post().startsWith("7m") ? ".nc" : ".ngc";
+                return PocketService.run(s, out.resolve("pocket" + ext), progress);
+            }
             case CUT:
                 return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);
             case GRADE:

@@ -9,7 +9,7 @@ public enum Module {
     TOOLPATH("STEP-NC toolpaths and G-code", 4, true),
     ROBOT("robot cell and joint trajectory", 5, false),
     ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
-    POCKET("pocket milling", 7, false),
+    POCKET("pocket milling", 7, true),
     CUTTING("sheet cutting", 8, true),
     GRADING("grading", 9, true),
     SOLE("sole mould", 10, false),
