@@ -212,9 +212,9 @@ public final class Part21Reader {
             case DOLLAR -> v = StepValue.UNSET;
             case STAR -> v = StepValue.DERIVED;
             case INTEGER -> v = new StepValue.Int(lx.longValue);
-            case REAL -> v = new StepValue.Real(lx.doubleValue);
-            case STRING -> v = new StepValue.Text(lx.text);
-            case ENUMERATION -> v = new StepValue.Enumeration(lx.text);
+            case REAL -> v = real(lx.doubleValue);
+            case STRING -> v = text(lx.text);
+            case ENUMERATION -> v = enums.computeIfAbsent(lx.text, StepValue.Enumeration::new);
             case BINARY -> v = new StepValue.Binary(lx.text);
             case INSTANCE -> {
                 long id = lx.longValue;
@@ -245,6 +245,35 @@ public final class Part21Reader {
         }
         lx.next();
         return v;
+    }
+
+    // shared values: a large file repeats .T., '', 0.0 and a few names millions of times
+    private final Map<String, StepValue> enums = new java.util.HashMap<>();
+    private final Map<String, StepValue.Text> texts = new java.util.HashMap<>();
+    private static final StepValue.Real ZERO = new StepValue.Real(0.0);
+    private static final StepValue.Real ONE = new StepValue.Real(1.0);
+    private static final StepValue.Real MINUS_ONE = new StepValue.Real(-1.0);
+    private static final long ZERO_BITS = Double.doubleToRawLongBits(0.0);
+
+    private static StepValue real(double d) {
+        if (Double.doubleToRawLongBits(d) == ZERO_BITS) {
+            return ZERO;
+        }
+        return d == 1.0 ? ONE : d == -1.0 ? MINUS_ONE : new StepValue.Real(d);
+    }
+
+    private StepValue text(String s) {
+        if (s.length() > 40) {
+            return new StepValue.Text(s);
+        }
+        StepValue.Text t = texts.get(s);
+        if (t == null) {
+            t = new StepValue.Text(s);
+            if (texts.size() < 8192) {
+                texts.put(s, t);
+            }
+        }
+        return t;
     }
 
     private void expect(Tok t, String what) throws IOException, StepParseException {

@@ -40,6 +40,9 @@ final class StepNcTab implements ModuleTab {
     private final JTree tree = new JTree(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
     private final JTextArea details = new JTextArea(14, 40);
     private final PlotPanel plot = new PlotPanel();
+    // the file shown, and the last one asked for (a failed read is not retried on every job change)
+    private Path loadedFile;
+    private Path requestedFile;
 
     StepNcTab(AppContext ctx) {
         this.ctx = ctx;
@@ -79,6 +82,11 @@ final class StepNcTab implements ModuleTab {
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(top, BorderLayout.NORTH);
         panel.add(split, BorderLayout.CENTER);
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName())) {
+                jobChanged();
+            }
+        });
         panel.setTransferHandler(new FileDrop());
         tree.setTransferHandler(new FileDrop());
         details.setTransferHandler(new FileDrop());
@@ -108,9 +116,18 @@ final class StepNcTab implements ModuleTab {
         }
     }
 
+    /** A job opened with a STEP-NC file shows that file here. */
+    private void jobChanged() {
+        ctx.model().job().stepnc().map(JobSettings.StepNcSettings::file)
+                .filter(f -> !f.equals(loadedFile) && !f.equals(requestedFile))
+                .ifPresent(this::open);
+    }
+
     void open(Path file) {
+        requestedFile = file;
         ctx.tasks().start("Reading " + file.getFileName(), progress -> StepNcService.read(file, progress), program -> {
             vm.load(program);
+            loadedFile = file;
             String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
             ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "

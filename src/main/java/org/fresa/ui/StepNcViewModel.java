@@ -167,7 +167,7 @@ final class StepNcViewModel {
         o.tool().ifPresent(t -> toolText(out, t));
         Technology t = o.technology();
         out.add("Technology:");
-        t.feedrate().ifPresent(fd -> out.add("  feed " + n(fd) + " " + t.feedrateUnit()
+        t.feedrate().ifPresent(fd -> out.add("  feed " + n(fd) + " " + unit(t.feedrateUnit())
                 + t.feedMmPerMin().stream().mapToObj(x -> " = " + n(x) + " mm/min").findFirst().orElse("")));
         t.cutSpeed().ifPresent(c -> out.add("  cutting speed " + n(c) + " " + t.cutSpeedUnit()));
         t.spindle().ifPresent(s -> out.add("  spindle " + n(s) + " " + t.spindleUnit()
@@ -201,6 +201,10 @@ final class StepNcViewModel {
             return p.entity() + " length " + n(l.lengthMm()) + " mm";
         }
         return p.entity() + " (not drawn)";
+    }
+
+    private static String unit(String u) {
+        return u.equals("unstated") ? "(unit not stated by the file's writer)" : u;
     }
 
     private static void mm(List<String> out, String label, OptionalDouble v) {

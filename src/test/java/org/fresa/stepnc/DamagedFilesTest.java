@@ -95,7 +95,7 @@ class DamagedFilesTest {
         for (String name : new String[] {"example2.stp", "iso14649-11-example1.stp",
             "iso14649-11-example1-explicit-toolpaths.stp"}) {
             byte[] original = Files.readAllBytes(Path.of("samples/stepnc", name));
-            for (long seed = 1; seed <= 60; seed++) {
+            for (long seed = 1; seed <= 100; seed++) {
                 Random r = new Random(seed);
                 byte[] b = mutate(original, r);
                 outcome(b);
@@ -111,6 +111,7 @@ class DamagedFilesTest {
                 return false;
             } catch (CamInputException e) {
                 assertFalse(e.getMessage().isBlank());
+                assertHasLine(e);
                 return true;
             }
         });

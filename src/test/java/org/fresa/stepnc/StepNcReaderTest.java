@@ -246,4 +246,44 @@ class StepNcReaderTest {
         assertEquals(3, e.instanceId().orElseThrow());
         assertTrue(e.getMessage().contains("manufacturing feature"), e.getMessage());
     }
+
+    @Test
+    void aCompositeCurveOfTrimmedLinesAndCirclesKeepsItsArcs() throws Exception {
+        StepNcProgram p = bind("""
+                #1=PROJECT('p',#2,(#3),$,$,$);
+                #2=WORKPLAN('w',(#10),$,$,$);
+                #3=WORKPIECE('wp',$,$,$,$,$,());
+                #10=MACHINING_WORKINGSTEP('ws',$,#11,#20,$);
+                #11=CLOSED_POCKET('pk',#3,(#20),#12,$,(),$,#13,$,$,#14);
+                #12=AXIS2_PLACEMENT_3D('',#15,$,$);
+                #15=CARTESIAN_POINT('',(10.,20.,0.));
+                #13=PLANAR_POCKET_BOTTOM_CONDITION();
+                #14=GENERAL_CLOSED_PROFILE($,#30);
+                #30=COMPOSITE_CURVE('',(#31,#32),.F.);
+                #31=COMPOSITE_CURVE_SEGMENT(.CONTINUOUS.,.T.,#41);
+                #41=TRIMMED_CURVE('',#51,(#61),(#62),.T.,.CARTESIAN.);
+                #51=LINE('',#61,#71);
+                #71=VECTOR('',#72,1.);
+                #72=DIRECTION('',(1.,0.,0.));
+                #61=CARTESIAN_POINT('',(0.,0.,0.));
+                #62=CARTESIAN_POINT('',(10.,0.,0.));
+                #32=COMPOSITE_CURVE_SEGMENT(.CONTINUOUS.,.T.,#42);
+                #42=TRIMMED_CURVE('',#52,(#62),(#61),.T.,.CARTESIAN.);
+                #52=CIRCLE('',#53,5.);
+                #53=AXIS2_PLACEMENT_3D('',#54,$,$);
+                #54=CARTESIAN_POINT('',(5.,0.,0.));
+                #20=BOTTOM_AND_SIDE_ROUGH_MILLING($,$,'op',$,$,$,$,$,$,$,$,$,$,$,$,$);""");
+        Feature f = p.workingsteps().get(0).feature();
+        assertTrue(f.location().eq(new Vec3(10, 20, 0), TOL));
+        assertTrue(f.depthMm().isEmpty());
+        Profile.General g = (Profile.General) f.profile().orElseThrow();
+        assertEquals("COMPOSITE_CURVE", g.curveEntity());
+        assertEquals(new Profile.Line(new Vec3(0, 0, 0), new Vec3(10, 0, 0)), g.segments().get(0));
+        Profile.Arc arc = (Profile.Arc) g.segments().get(1);
+        assertTrue(arc.center().eq(new Vec3(5, 0, 0), TOL));
+        assertEquals(5.0, arc.radiusMm());
+        assertTrue(arc.ccw());
+        assertTrue(g.closed());
+        assertTrue(p.workingsteps().get(0).operation().tool().isEmpty());
+    }
 }
