@@ -60,15 +60,16 @@ public final class PocketToolpath {
                         continue;
                     }
                     Vec2 c = pc.center();
-                    double rs = pc.start().distance(c);
-                    double re = pc.end().distance(c);
-                    if (rs < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
+                    double rn = pc.radiusMm();
+                    if (rn < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
                         moves.add(new Move.Linear(at(pc.end(), z), feed));
                         continue;
                     }
-                    Vec2 end = pc.end();
-                    if (Math.abs(rs - re) > 1e-6) {
-                        end = c.plus(pc.end().minus(c).times(rs / re));
+                    // the arc runs on its true offset circle; snapped junctions join it by short feed moves
+                    Vec2 start = onCircle(pc.start(), c, rn);
+                    Vec2 end = onCircle(pc.end(), c, rn);
+                    if (start.distance(pc.start()) > 1e-9) {
+                        moves.add(new Move.Linear(at(start, z), feed));
                     }
                     moves.add(new Move.Circular(at(end, z), at(c, z), Z, pc.ccw(), 0, feed));
                     if (!end.equals(pc.end())) {
@@ -87,6 +88,11 @@ public final class PocketToolpath {
         return new Toolpath(List.of(section));
     }
 
+    private static Vec2 onCircle(Vec2 p, Vec2 c, double r) {
+        double d = p.distance(c);
+        return d < 1e-12 ? p : c.plus(p.minus(c).times(r / d));
+    }
+
     private static Vec2 lastXY(List<Move> moves, Vec2 fallback) {
         if (moves.isEmpty()) {
             return fallback;
@@ -100,9 +106,7 @@ public final class PocketToolpath {
         List<PassPiece> out = new ArrayList<>();
         for (int i = pieces.size() - 1; i >= 0; i--) {
             PassPiece p = pieces.get(i);
-            PocketElement e = p.element();
-            PocketElement flipped = e.arc() ? e.withK(-e.k()) : e;
-            out.add(new PassPiece(flipped, p.offsetMm(), p.end(), p.start()));
+            out.add(new PassPiece(p.element(), p.offsetMm(), p.end(), p.start(), !p.reversed()));
         }
         return out;
     }
