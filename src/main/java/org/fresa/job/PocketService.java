@@ -59,6 +59,12 @@ public final class PocketService {
 
     /** The plan for the settings (no file written). */
     public static PocketPlan plan(PocketSettings s) throws CamInputException, IOException, ToolTooLargeException {
+        return plan(s, s.post().equals("7m-compat"));
+    }
+
+    /** The plan for the settings; faithful: the thesis's pass rules exactly. */
+    public static PocketPlan plan(PocketSettings s, boolean faithful)
+            throws CamInputException, IOException, ToolTooLargeException {
         PocketTechnology tech;
         try {
             tech = new PocketTechnology(s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
@@ -68,7 +74,7 @@ public final class PocketService {
         }
         PocketProfile profile = readContour(s.contour());
         Recognition.Result rec = Recognition.of(profile);
-        return PassPlanner.plan(rec, tech);
+        return PassPlanner.plan(rec, tech, faithful);
     }
 
     /** The NC program text for a plan. */

@@ -10,8 +10,9 @@ import org.fresa.geom.Vec2;
  * @param offsetMm the pass offset t (mm)
  * @param start start point (mm)
  * @param end end point (mm)
+ * @param reversed traversed against the clockwise contour (climb milling)
  */
-public record PassPiece(PocketElement element, double offsetMm, Vec2 start, Vec2 end) {
+public record PassPiece(PocketElement element, double offsetMm, Vec2 start, Vec2 end, boolean reversed) {
 
     public boolean isArc() {
         return element.arc();
@@ -19,7 +20,12 @@ public record PassPiece(PocketElement element, double offsetMm, Vec2 start, Vec2
 
     /** Counter-clockwise (G03) for concave arcs. */
     public boolean ccw() {
-        return element.k() == 1;
+        return (element.k() == 1) != reversed;
+    }
+
+    /** The arc's radius at this offset (mm); the snapped junctions of near-tangent input may lie off it. */
+    public double radiusMm() {
+        return Math.abs(element.at(offsetMm));
     }
 
     public Vec2 center() {
@@ -32,7 +38,7 @@ public record PassPiece(PocketElement element, double offsetMm, Vec2 start, Vec2
             return start.distance(end);
         }
         double r = start.distance(center());
-        double sweep = LoopState.sweep(element, start, end);
+        double sweep = reversed ? LoopState.sweep(element, end, start) : LoopState.sweep(element, start, end);
         if (sweep > 2 * Math.PI - 1e-9 && start.distance(end) < 1e-9) {
             sweep = 0;
         }

@@ -16,23 +16,38 @@ import org.fresa.geom.Vec2;
 public final class PassPlanner {
 
     private final PocketTechnology tech;
+    private final boolean faithful;
     private final double r;
     private final List<PocketPass> generated = new ArrayList<>();
 
-    private PassPlanner(PocketTechnology tech) {
+    private PassPlanner(PocketTechnology tech, boolean faithful) {
         this.tech = tech;
+        this.faithful = faithful;
         this.r = tech.radiusMm();
     }
 
-    /** Plans the passes; fails when the tool does not fit (the thesis's tool checks). */
+    /** Plans the passes exactly by the thesis's rules (for the 7M compat output and tests). */
     public static PocketPlan plan(Recognition.Result rec, PocketTechnology tech) throws ToolTooLargeException {
+        return plan(rec, tech, true);
+    }
+
+    /**
+     * Plans the passes; fails when the tool does not fit (the thesis's tool checks).
+     *
+     * @param faithful the thesis's rules exactly; otherwise (Fresa's default) the stepover also
+     *     respects the sharpest corner at d + R, and a pass at (event - R) is added before a
+     *     division or a channel collapse that the regular step would jump over, so that the
+     *     neck between sub-areas is cut
+     */
+    public static PocketPlan plan(Recognition.Result rec, PocketTechnology tech, boolean faithful)
+            throws ToolTooLargeException {
         double a = tech.finishFraction() * tech.toolDiameterMm();
         if (tech.toolDiameterMm() + 2 * a > rec.maxHoleDiameterMm() + 1e-9) {
             throw new ToolTooLargeException("tool diameter plus twice the allowance ("
                     + (tech.toolDiameterMm() + 2 * a) + " mm) exceeds the largest hole (FURO MAXIMO "
                     + rec.maxHoleDiameterMm() + " mm): use a smaller tool");
         }
-        PassPlanner p = new PassPlanner(tech);
+        PassPlanner p = new PassPlanner(tech, faithful);
         List<RecognitionNode> chain = new ArrayList<>();
         chain.add(rec.root());
         p.run(rec.root(), chain, p.r, Double.NaN);
@@ -86,7 +101,36 @@ public final class PassPlanner {
                 next = r + tech.finishFraction() * tech.toolDiameterMm();
             } else {
                 double alpha = stateAt(chain, d - r).minAngleDeg(d - r);
+                if (!faithful) {
+                    double ahead = node.isLeaf() ? d + r : Math.min(d + r, node.splitT() - 1e-6);
+                    alpha = Math.min(alpha, node.stateAt(ahead).minAngleDeg(ahead));
+                }
                 next = d + stepoverFraction(tech.cutFraction(), alpha) * tech.toolDiameterMm();
+                if (!faithful) {
+                    double barrier = Double.POSITIVE_INFINITY;
+                    if (!node.isLeaf()) {
+                        barrier = node.splitT();
+                    }
+                    for (RecognitionNode.Event e : node.events()) {
+                        if (e.kind().equals("collapse") && e.t() > d) {
+                            barrier = Math.min(barrier, e.t());
+                        }
+                    }
+                    if (next >= barrier - eps && d + r < barrier - 1e-6) {
+                        next = Math.max(barrier - r, d + 1e-3);
+                    } else {
+                        // where the subcontour changes (an element vanishes, a neck divides) the
+                        // offsets stop being parallel: the only step that is sure to leave nothing
+                        // between two passes is R, as dist(x, pass d) = w(x) - d for w(x) > d
+                        boolean changes = next >= barrier - eps;
+                        for (RecognitionNode.Event e : node.events()) {
+                            changes |= e.t() > d + eps && e.t() <= next + r && !e.kind().equals("leaf");
+                        }
+                        if (changes) {
+                            next = Math.min(next, d + r);
+                        }
+                    }
+                }
             }
             prevD = d;
             d = next;
@@ -114,7 +158,7 @@ public final class PassPlanner {
             if (vs.isEmpty() || ve.isEmpty()) {
                 continue;
             }
-            pieces.add(new PassPiece(s.get(i), d, vs.get(), ve.get()));
+            pieces.add(new PassPiece(s.get(i), d, vs.get(), ve.get(), false));
         }
         List<Integer> path = new ArrayList<>();
         for (RecognitionNode c : chain) {

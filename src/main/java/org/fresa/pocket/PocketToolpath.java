@@ -10,7 +10,8 @@ import org.fresa.model.ToolpathSection;
 
 /**
  * A pocket plan as a generic {@link Toolpath} for the G-code posts: every depth pass at its own
- * depth, passes inside out, links inside cleared material as straight feed moves (the next outer
+ * depth, each sub-area entered by a ramp along its innermost pass (no vertical plunge into solid
+ * material), passes inside out, links inside cleared material as straight feed moves (the next outer
  * pass encloses the inner one), a retract and rapid between sibling sub-areas, arcs as
  * {@link Move.Circular} about +Z. Climb milling reverses each pass (counter-clockwise with a
  * clockwise spindle) unless conventional milling is asked for. Where the thesis's near-tangent
@@ -45,35 +46,35 @@ public final class PocketToolpath {
                 }
                 Vec2 s = pieces.get(0).start();
                 boolean link = k > 0 && milled.get(k - 1).linksOutwardTo(pass);
+                double feed = pass.finishing() ? t.finishFeedMmPerMin() : t.feedMmPerMin();
                 if (link) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
+                    double layerTop = z + t.depthStepMm();
                     moves.add(new Move.Rapid(new Vec3(lastXY(moves, s).x(), lastXY(moves, s).y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
                     moves.add(new Move.Rapid(at(s, t.zTopMm() + 1)));
-                    moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                    moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
+                    // ramp down along the innermost pass itself instead of plunging into solid material
+                    double total = 0;
+                    for (PassPiece pc : pieces) {
+                        total += Math.max(pc.lengthMm(), pc.start().distance(pc.end()));
+                    }
+                    if (total < 1e-6) {
+                        moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                    } else {
+                        double done = 0;
+                        for (PassPiece pc : pieces) {
+                            double len = Math.max(pc.lengthMm(), pc.start().distance(pc.end()));
+                            double z0 = layerTop - (layerTop - z) * done / total;
+                            done += len;
+                            double z1 = layerTop - (layerTop - z) * done / total;
+                            piece(moves, pc, z0, z1, t.feedMmPerMin());
+                        }
+                    }
                 }
-                double feed = pass.finishing() ? t.finishFeedMmPerMin() : t.feedMmPerMin();
                 for (PassPiece pc : pieces) {
-                    if (!pc.isArc()) {
-                        moves.add(new Move.Linear(at(pc.end(), z), feed));
-                        continue;
-                    }
-                    Vec2 c = pc.center();
-                    double rs = pc.start().distance(c);
-                    double re = pc.end().distance(c);
-                    if (rs < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
-                        moves.add(new Move.Linear(at(pc.end(), z), feed));
-                        continue;
-                    }
-                    Vec2 end = pc.end();
-                    if (Math.abs(rs - re) > 1e-6) {
-                        end = c.plus(pc.end().minus(c).times(rs / re));
-                    }
-                    moves.add(new Move.Circular(at(end, z), at(c, z), Z, pc.ccw(), 0, feed));
-                    if (!end.equals(pc.end())) {
-                        moves.add(new Move.Linear(at(pc.end(), z), feed));
-                    }
+                    piece(moves, pc, z, z, feed);
                 }
             }
         }
@@ -85,6 +86,35 @@ public final class PocketToolpath {
         ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
                 new Vec3(s0.x(), s0.y(), safe), moves);
         return new Toolpath(List.of(section));
+    }
+
+    /** One piece from height z0 to z1 (a helix for arcs when they differ). */
+    private static void piece(List<Move> moves, PassPiece pc, double z0, double z1, double feed) {
+        if (!pc.isArc()) {
+            moves.add(new Move.Linear(at(pc.end(), z1), feed));
+            return;
+        }
+        Vec2 c = pc.center();
+        double rn = pc.radiusMm();
+        if (rn < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
+            moves.add(new Move.Linear(at(pc.end(), z1), feed));
+            return;
+        }
+        // the arc runs on its true offset circle; snapped junctions join it by short feed moves
+        Vec2 start = onCircle(pc.start(), c, rn);
+        Vec2 end = onCircle(pc.end(), c, rn);
+        if (start.distance(pc.start()) > 1e-9) {
+            moves.add(new Move.Linear(at(start, z0), feed));
+        }
+        moves.add(new Move.Circular(at(end, z1), at(c, z0), Z, pc.ccw(), 0, feed));
+        if (end.distance(pc.end()) > 1e-9) {
+            moves.add(new Move.Linear(at(pc.end(), z1), feed));
+        }
+    }
+
+    private static Vec2 onCircle(Vec2 p, Vec2 c, double r) {
+        double d = p.distance(c);
+        return d < 1e-12 ? p : c.plus(p.minus(c).times(r / d));
     }
 
     private static Vec2 lastXY(List<Move> moves, Vec2 fallback) {
@@ -100,9 +130,7 @@ public final class PocketToolpath {
         List<PassPiece> out = new ArrayList<>();
         for (int i = pieces.size() - 1; i >= 0; i--) {
             PassPiece p = pieces.get(i);
-            PocketElement e = p.element();
-            PocketElement flipped = e.arc() ? e.withK(-e.k()) : e;
-            out.add(new PassPiece(flipped, p.offsetMm(), p.end(), p.start()));
+            out.add(new PassPiece(p.element(), p.offsetMm(), p.end(), p.start(), !p.reversed()));
         }
         return out;
     }
