@@ -16,7 +16,7 @@ import org.fresa.geom.Vec3;
  * <ol>
  * <li>the free rotation about the tool axis is changed in small steps (it is also changed when a
  * joint comes within {@link Options#limitMargin} of a limit or the wrist near its singularity);
- * <li>a long move is subdivided into 2, 4, ... 32 straight pieces, each solved warm (the
+ * <li>a long move is subdivided into 2, 4, ... 128 straight pieces, each solved warm (the
  * inserted points lie on the straight move, status ok);
  * <li>the point is solved cold and, when that needs another configuration, the thesis's three
  * relink points (section 3.2.3.4) are inserted: the previous point B lifted off the part along
@@ -125,13 +125,23 @@ public final class TrajectorySolver {
             ToolTarget t = targets.get(k);
             Sol s;
             if (prev == null) {
-                s = cold(t, phi);
+                s = cold(t, phi, null);
             } else {
                 s = next(prevTarget, prev, t);
                 if (s == null) {
-                    Sol c = cold(t, prev.phi);
+                    Sol c = cold(t, prev.phi, prev.q);
                     if (c != null && lastOk && !smooth(prev.q, c.q)) {
-                        c = relink(prevTarget, prev, t, c);
+                        List<Piece> turned = c.phi != prev.phi ? pieces(prevTarget, prev, t, c.phi) : null;
+                        if (turned != null) {
+                            // the new turn about the tool axis, taken gradually along the move
+                            for (int i = 0; i < turned.size() - 1; i++) {
+                                add(turned.get(i).target(), turned.get(i).sol(), TrajectoryPoint.Status.OK, true);
+                            }
+                            subdivided++;
+                            c = turned.get(turned.size() - 1).sol();
+                        } else {
+                            c = relink(prevTarget, prev, t, c);
+                        }
                     }
                     s = c;
                 }
@@ -233,14 +243,19 @@ public final class TrajectorySolver {
     }
 
     /**
-     * The straight move from a to b split into 1, 2, 4, ... 32 pieces solved warm in turn, the
+     * The straight move from a to b split into 1, 2, 4, ... 128 pieces solved warm in turn, the
      * first split that is continuous; null when none is.
      */
     private List<Piece> pieces(ToolTarget a, Sol sa, ToolTarget b) {
+        return pieces(a, sa, b, sa.phi);
+    }
+
+    /** As {@link #pieces(ToolTarget, Sol, ToolTarget)}, turning the tool from sa.phi to phiB on the way. */
+    private List<Piece> pieces(ToolTarget a, Sol sa, ToolTarget b, double phiB) {
         if (a.toolAxis().dot(b.toolAxis()) < -0.5) {
             return null;
         }
-        for (int k = 0; k <= 5; k++) {
+        for (int k = 0; k <= 7; k++) {
             int pieces = 1 << k;
             List<Piece> out = new ArrayList<>();
             Sol cur = sa;
@@ -248,7 +263,7 @@ public final class TrajectorySolver {
             for (int i = 1; i <= pieces && ok; i++) {
                 double f = (double) i / pieces;
                 ToolTarget m = i == pieces ? b : interpolate(a, b, f);
-                Sol s = warm(m, sa.phi, cur.q);
+                Sol s = warm(m, sa.phi + (phiB - sa.phi) * f, cur.q);
                 ok = s != null && smooth(cur.q, s.q);
                 if (ok) {
                     out.add(new Piece(m, s));
@@ -298,8 +313,8 @@ public final class TrajectorySolver {
             }
             return onward.get(onward.size() - 1).sol();
         }
-        notes.add("configuration change at row " + (rows.size() + 1) + " without relink points: the lifted point"
-                + " is not reachable in both configurations");
+        notes.add("configuration change at row " + (rows.size() + 1) + " (" + b.label() + ") without relink points:"
+                + " no continuous move into the new configuration was found, the joints jump there");
         return c;
     }
 
@@ -307,7 +322,7 @@ public final class TrajectorySolver {
      * Cold solve at the free rotation phi, then (if allowed) at half and quarter turns from it;
      * when some turn has solutions but none clear of limits and singularity, every 20 degrees.
      */
-    private Sol cold(ToolTarget t, double phi) {
+    private Sol cold(ToolTarget t, double phi, double[] reference) {
         Sol[] fallback = new Sol[1];
         double[] fallbackScore = {Double.NEGATIVE_INFINITY};
         List<Double> first = new ArrayList<>(List.of(phi));
@@ -315,23 +330,45 @@ public final class TrajectorySolver {
             // a robot with fewer joints turns the tool with one joint: the turn does not decide reach
             first.addAll(List.of(phi + 180, phi + 90, phi - 90));
         }
+        Sol nearest = null;
+        double nearestDistance = Double.POSITIVE_INFINITY;
         for (double p : first) {
-            Sol s = coldAt(t, wrap(p), fallback, fallbackScore);
-            if (s != null) {
-                return s;
+            for (Sol s : coldAt(t, wrap(p), fallback, fallbackScore)) {
+                if (reference == null) {
+                    return s;
+                }
+                double d = distance(reference, s.q);
+                if (d < nearestDistance) {
+                    nearest = s;
+                    nearestDistance = d;
+                }
             }
+        }
+        if (nearest != null) {
+            return nearest;
         }
         if (fallback[0] != null && options.freeRotation()) {
             int steps = (int) Math.floor(options.maxFreeRotationDeg() / 20);
             for (int i = 1; i <= 2 * steps; i++) {
                 double p = phi + (i % 2 == 1 ? 1 : -1) * ((i + 1) / 2) * 20.0;
-                Sol s = coldAt(t, wrap(p), fallback, fallbackScore);
-                if (s != null) {
-                    return s;
+                List<Sol> s = coldAt(t, wrap(p), fallback, fallbackScore);
+                if (!s.isEmpty()) {
+                    return s.get(0);
                 }
             }
         }
         return fallback[0];
+    }
+
+    /** The largest joint change, revolute in degrees and prismatic scaled to the step limits. */
+    private double distance(double[] a, double[] b) {
+        double m = 0;
+        for (int i = 0; i < a.length; i++) {
+            double scale = limits.get(i).type() == JointType.REVOLUTE ? 1
+                    : options.maxJointStepDeg() / options.maxPrismaticStepMm();
+            m = Math.max(m, Math.abs(a[i] - b[i]) * scale);
+        }
+        return m;
     }
 
     private double wrap(double phiDeg) {
@@ -345,14 +382,16 @@ public final class TrajectorySolver {
         return Math.max(-options.maxFreeRotationDeg(), Math.min(options.maxFreeRotationDeg(), p));
     }
 
-    /** A comfortable cold solution at turn p, or null (remembering the best other one). */
-    private Sol coldAt(ToolTarget t, double p, Sol[] fallback, double[] fallbackScore) {
+    /** The comfortable cold solutions at turn p (remembering the best other one). */
+    private List<Sol> coldAt(ToolTarget t, double p, Sol[] fallback, double[] fallbackScore) {
         long t0 = System.nanoTime();
         List<IkResult.Converged> all = solver.solveAll(t.pose(p));
         ikNanos += System.nanoTime() - t0;
+        List<Sol> out = new ArrayList<>();
         for (IkResult.Converged c : all) {
             if (comfortable(c.q())) {
-                return new Sol(c.q(), p);
+                out.add(new Sol(c.q(), p));
+                continue;
             }
             double sc = score(c.q());
             if (sc > fallbackScore[0]) {
@@ -360,7 +399,7 @@ public final class TrajectorySolver {
                 fallbackScore[0] = sc;
             }
         }
-        return null;
+        return out;
     }
 
     private Sol warm(ToolTarget t, double phi, double[] seed) {
