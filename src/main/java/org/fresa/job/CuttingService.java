@@ -64,6 +64,17 @@ public final class CuttingService {
 
     /** Reads and plans without writing anything. */
     public static Result compute(CuttingSettings s, ProgressMonitor progress) throws CamInputException, IOException {
+        return compute(s, false, progress);
+    }
+
+    /**
+     * Reads and plans without writing anything.
+     *
+     * @param toleranceInDrawingUnits the settings' gap tolerance is in drawing units (the command
+     *     line's {@code --tolerance}), not millimetres (job files, the default 0.001 mm)
+     */
+    public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
+            throws CamInputException, IOException {
         CuttingOptions o = options(s);
         SheetCuttingPost.Dialect dialect = SheetCuttingPost.Dialect.byName(s.post()).orElseThrow(() ->
                 new CamInputException("--post", "unknown post '" + s.post() + "': expected linuxcnc, iso, fanuc or 840d"));
@@ -71,7 +82,8 @@ public final class CuttingService {
         DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(units(s.units())));
         progress.checkCancelled();
         progress.progress(0.3, "planning");
-        CutPlan plan = CutPlanner.plan(d.layers(), o.withGapTolerance(s.toleranceMm() * d.mmPerUnit()));
+        CutPlan plan = CutPlanner.plan(d.layers(),
+                o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)));
         progress.checkCancelled();
         StringBuilderWriter w = new StringBuilderWriter();
         List<Integer> comp = new ArrayList<>();
@@ -86,9 +98,9 @@ public final class CuttingService {
     }
 
     /** Runs the task and writes the program to the given file (atomically). */
-    public static TaskOutcome run(CuttingSettings s, Path outFile, ProgressMonitor progress)
-            throws CamInputException, IOException {
-        Result r = compute(s, progress);
+    public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
+            ProgressMonitor progress) throws CamInputException, IOException {
+        Result r = compute(s, toleranceInDrawingUnits, progress);
         AtomicFiles.writeString(outFile, r.program());
         return outcome(r, List.of(outFile.toAbsolutePath()));
     }
