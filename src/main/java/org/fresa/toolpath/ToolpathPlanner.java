@@ -38,7 +38,10 @@ import org.fresa.stepnc.Tool;
  * the workingstep's security plane, straight above (along the plane's normal) the retract point
  * over its first and last cut, so the link between workingsteps runs in the security plane even
  * for features on side faces.
- * <li>Tools are numbered 1, 2, ... in order of first use.
+ * <li>Tools are numbered 1, 2, ... in order of first use; tool instances with the same id, body
+ * and diameter are one tool.
+ * <li>A pocket profile whose placement equals the feature's own placement (STEP Modeler writes
+ * the feature placement again) is read as lying in the feature frame, with a note.
  * <li>Stepover: the radial cutting depth, else D (1 - overlap), else D / 2 (NIST's default,
  * the tool radius). Layers: the axial cutting depth, else full depth in one layer.
  * <li>Plunges, ramps and drilling feed at half the cutting feed for milling cutters and at the
@@ -77,7 +80,7 @@ public final class ToolpathPlanner {
     }
 
     public static Plan plan(StepNcProgram program, Tolerance tol) {
-        Map<Long, Integer> toolNumbers = new LinkedHashMap<>();
+        Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<ToolpathSection> sections = new ArrayList<>();
         List<String> problems = new ArrayList<>();
         int planned = 0;
@@ -95,14 +98,16 @@ public final class ToolpathPlanner {
         return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned);
     }
 
-    static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<Long, Integer> toolNumbers,
+    static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<String, Integer> toolNumbers,
             List<String> problems, Tolerance tol) {
         Feature f = ws.feature();
         Operation op = ws.operation();
         String label = ws.id().isEmpty() ? "#" + ws.instanceId() : ws.id();
         Tool tool = op.tool().orElseThrow(() -> new IllegalArgumentException("the operation has no tool"));
         double dia = tool.diameterMm().orElseThrow(() -> new IllegalArgumentException("the tool has no diameter"));
-        int number = toolNumbers.computeIfAbsent(tool.instanceId(), k -> toolNumbers.size() + 1);
+        // writers repeat one physical tool as an instance per operation: same name, body and size, same tool
+        String key = tool.id() + "|" + tool.body() + "|" + dia;
+        int number = toolNumbers.computeIfAbsent(key, k -> toolNumbers.size() + 1);
         Technology tech = op.technology();
         double feed = tech.feedMmPerMin().orElse(DEFAULT_FEED);
         if (tech.feedMmPerMin().isEmpty()) {
@@ -120,9 +125,16 @@ public final class ToolpathPlanner {
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
-                place = place.times(sp.placement());
+                Transform3 pp = sp.placement();
+                // STEP Modeler writes the feature's own placement (workpiece frame) as the profile's
+                if (!pp.eq(Transform3.IDENTITY, tol) && pp.eq(f.placement(), tol)) {
+                    pp = Transform3.IDENTITY;
+                    problems.add("workingstep '" + label + "': the profile placement repeats the feature placement;"
+                            + " read as the feature frame itself");
+                }
+                place = place.times(pp);
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
-                local = pocket(label, p, op, h, tooling, sp.placement(), tol);
+                local = pocket(label, p, op, h, tooling, pp, tol);
             }
             case ROUND_HOLE -> local = hole(label, f, op, h, tooling, tol);
             default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
