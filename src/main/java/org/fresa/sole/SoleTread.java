@@ -64,16 +64,29 @@ public record SoleTread(List<TreadItem> items, double marginMm) {
     }
 
     /**
-     * Every groove of the tread for the size and foot, clipped to the outline shrunk by the
-     * margin, grouped by tool in the items' order.
+     * Every groove centre line of the tread for the size and foot, clipped to the outline shrunk
+     * by the margin, grouped by tool in the items' order.
      *
      * @param rightOutline the graded outline of the right foot at this size (mm)
      */
     public List<ToolGrooves> grooves(SizeScale size, Foot foot, Contour rightOutline, Tolerance tol) {
+        return grooves(size, foot, rightOutline, id -> 0.0, tol);
+    }
+
+    /**
+     * As {@link #grooves(SizeScale, Foot, Contour, Tolerance)}, but each groove's edge keeps the
+     * margin: the centre line of a groove cut by a tool of radius r is clipped at margin + r.
+     *
+     * @param toolRadiusMm the radius of each tool id
+     */
+    public List<ToolGrooves> grooves(SizeScale size, Foot foot, Contour rightOutline,
+            java.util.function.ToDoubleFunction<String> toolRadiusMm, Tolerance tol) {
         Contour outline = foot == Foot.RIGHT ? rightOutline : mirrored(rightOutline, size.origin().x());
-        TreadClipper clipper = TreadClipper.of(outline, marginMm, tol);
+        java.util.Map<String, TreadClipper> clippers = new java.util.HashMap<>();
         List<ToolGrooves> out = new ArrayList<>();
         for (TreadItem item : items) {
+            TreadClipper clipper = clippers.computeIfAbsent(item.toolId(),
+                    id -> TreadClipper.of(outline, marginMm + toolRadiusMm.applyAsDouble(id), tol));
             List<Stroke> kept = clipper.clip(placed(item, size, foot, tol));
             if (!out.isEmpty() && out.get(out.size() - 1).toolId().equals(item.toolId())) {
                 List<Stroke> all = new ArrayList<>(out.get(out.size() - 1).strokes());

@@ -38,17 +38,44 @@ public record TreadItem(String name, List<TreadFigure> lead, List<TreadFigure> f
     }
 
     /**
-     * The grooves of the design at the base size (no shrinkage), in cutting order. Continuous
-     * figures chain onto the groove in progress, also across copies, as EXAPT's copies of a
-     * "B" macro do; a continuous figure with no groove in progress plunges where the tool is.
+     * The grooves of the design at the base size (no shrinkage), in cutting order.
+     *
+     * <p>As EXAPT's {@code COPY} does, the block is computed once (after the lead calls) and each
+     * copy is its image. A continuous figure carries on the groove in progress when its copy
+     * starts where the tool is, so contiguous copies of SUB7B make one zig-zag; when it starts
+     * elsewhere (a new row), the tool is lifted and plunged there, which is what the thesis had
+     * to write NOVO for (the processor would otherwise have cut straight across).
      *
      * @throws IllegalArgumentException when a figure has no path
      */
     public List<Stroke> strokes(Tolerance tol) {
-        List<Stroke> block = evaluate(List.of(), List.of(Similarity2.IDENTITY), tol);
-        Vec2 anchor = anchor(block);
+        List<Stroke> lead = new ArrayList<>();
+        Vec2 at = Vec2.ZERO;
+        boolean down = false;
+        for (TreadFigure f : this.lead) {
+            FigurePath p = f.path(at, tol);
+            down = add(lead, p, down, tol);
+            at = p.end();
+        }
+        List<FigurePath> block = new ArrayList<>();
+        Vec2 b = at;
+        for (TreadFigure f : figures) {
+            FigurePath p = f.path(b, tol);
+            block.add(p);
+            b = p.end();
+        }
+        List<Stroke> blockStrokes = new ArrayList<>();
+        for (FigurePath p : block) {
+            blockStrokes.addAll(p.strokes());
+        }
+        List<Stroke> strokes = new ArrayList<>(lead);
+        for (Similarity2 t : pattern.copies(anchor(blockStrokes), tol)) {
+            for (FigurePath p : block) {
+                down = add(strokes, p.mapped(t), down, tol);
+            }
+        }
         List<Stroke> out = new ArrayList<>();
-        for (Stroke s : evaluate(lead, pattern.copies(anchor, tol), tol)) {
+        for (Stroke s : strokes) {
             if (!s.curves().isEmpty()) {
                 out.add(s);
             }
@@ -56,34 +83,15 @@ public record TreadItem(String name, List<TreadFigure> lead, List<TreadFigure> f
         return out;
     }
 
-    private List<Stroke> evaluate(List<TreadFigure> before, List<Similarity2> copies, Tolerance tol) {
-        List<Stroke> strokes = new ArrayList<>();
-        Vec2 at = Vec2.ZERO;
-        boolean down = false;
-        for (TreadFigure f : before) {
-            FigurePath p = f.path(at, tol);
-            down = add(strokes, p, at, down);
-            at = p.end();
-        }
-        for (Similarity2 t : copies) {
-            Similarity2 inv = t.inverse();
-            for (TreadFigure f : figures) {
-                FigurePath p = f.path(inv.apply(at), tol).mapped(t);
-                down = add(strokes, p, at, down);
-                at = p.end();
-            }
-        }
-        return strokes;
-    }
-
-    private static boolean add(List<Stroke> strokes, FigurePath p, Vec2 at, boolean down) {
+    private static boolean add(List<Stroke> strokes, FigurePath p, boolean down, Tolerance tol) {
         List<Stroke> s = new ArrayList<>(p.strokes());
         if (p.joinsPrevious()) {
             Stroke first = s.remove(0);
-            if (down && !strokes.isEmpty()) {
-                strokes.set(strokes.size() - 1, strokes.get(strokes.size() - 1).extended(first.curves()));
+            Stroke last = strokes.isEmpty() ? null : strokes.get(strokes.size() - 1);
+            if (down && last != null && last.end().eq(first.start(), tol)) {
+                strokes.set(strokes.size() - 1, last.extended(first.curves()));
             } else {
-                strokes.add(new Stroke(List.of(), at, first.curves()));
+                strokes.add(new Stroke(List.of(), first.start(), first.curves()));
             }
         }
         strokes.addAll(s);
