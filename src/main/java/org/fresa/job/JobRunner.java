@@ -26,7 +26,7 @@ public final class JobRunner {
             case TOOLPATH:
                 return ToolpathService.run(job, out, progress);
             case ROBOT:
-                return TaskOutcome.unavailable(Module.ROBOT);
+                return RobotService.run(job, out, progress);
             case POCKET: {
                 JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
                 out.create();

@@ -111,8 +111,17 @@ public final class RobotTrajectoryService {
         return v;
     }
 
+    /** A solved trajectory with what it was solved for. */
+    public record Solved(Request request, List<ToolTarget> targets, TrajectorySolver.Result result) {
+    }
+
     /** Solves and writes the files; exit status 1 (with the reason) when points are unreachable. */
     public static TaskOutcome run(Request req, OutputFolder out, ProgressMonitor progress) throws IOException {
+        return write(solve(req, progress), "program", out);
+    }
+
+    /** Places the toolpath in the cell and solves the inverse kinematics of every point. */
+    public static Solved solve(Request req, ProgressMonitor progress) {
         Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
         List<ToolTarget> targets = targets(req.toolpath(), robotToPiece, req.chordToleranceMm());
         progress.progress(0, "inverse kinematics");
@@ -122,6 +131,18 @@ public final class RobotTrajectoryService {
                 progress.progress((double) done / total, "inverse kinematics");
             }
         });
+        return new Solved(req, targets, r);
+    }
+
+    /**
+     * Writes the formats the request names: trajectory.csv (csv), joints.png and error.png (png),
+     * program.xml (xml), program.mod (rapid), program.src (krl), and always summary.json.
+     *
+     * @param programName the name robot programs carry
+     */
+    public static TaskOutcome write(Solved solved, String programName, OutputFolder out) throws IOException {
+        Request req = solved.request();
+        TrajectorySolver.Result r = solved.result();
         out.create();
         List<String> fmts = req.formats();
         if (fmts.contains("csv")) {
@@ -130,7 +151,9 @@ public final class RobotTrajectoryService {
         if (fmts.contains("png")) {
             writeCharts(req.robot(), r, out);
         }
-        Map<String, Object> summary = summary(req.robot(), targets.size(), r);
+        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points()), req.robot(),
+                fmts, out);
+        Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
         out.writeString("summary.json", Json.writePretty(summary));
         List<String> problems = new ArrayList<>(r.notes());
         int exit = 0;
