@@ -24,6 +24,8 @@ final class SerialIkSolver implements IkSolver {
     /** Orientation rows are scaled by this length so that mm and rad weigh alike. */
     private final double rotWeight;
     private final double[][] starts;
+    /** Closed-form start configurations for arms built like the IRB-140. */
+    private final java.util.Optional<SphericalWristSeeds> closedForm;
 
     private final double[] target = new double[Pose.SIZE];
     private final double[] f;
@@ -59,6 +61,8 @@ final class SerialIkSolver implements IkSolver {
         q = new double[n];
         qt = new double[n];
         starts = startConfigurations();
+        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? SphericalWristSeeds.of(chain)
+                : java.util.Optional.empty();
     }
 
     private double[][] startConfigurations() {
@@ -139,8 +143,21 @@ final class SerialIkSolver implements IkSolver {
         List<IkResult.Converged> found = new ArrayList<>();
         List<double[]> internal = new ArrayList<>();
         int spent = 0;
-        for (double[] s : starts) {
+        List<double[]> seeds = new ArrayList<>();
+        if (closedForm.isPresent()) {
+            seeds.addAll(closedForm.get().solutions(target));
+        }
+        int closedFormSeeds = seeds.size();
+        seeds.addAll(java.util.Arrays.asList(starts));
+        for (int k = 0; k < seeds.size(); k++) {
+            if (k == closedFormSeeds + 6 && !found.isEmpty() && closedFormSeeds > 0) {
+                break; // the closed form found the branches: the random starts add nothing
+            }
+            double[] s = seeds.get(k);
             System.arraycopy(s, 0, q, 0, n);
+            for (int i = 0; i < n; i++) {
+                q[i] = clamp(i, q[i]);
+            }
             boolean ok = run();
             spent += lastIterations;
             if (!ok) {
