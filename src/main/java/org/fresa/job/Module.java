@@ -13,7 +13,7 @@ public enum Module {
     CUTTING("sheet cutting", 8, true),
     GRADING("grading", 9, true),
     SOLE("sole mould", 10, false),
-    BENCH("benchmarks", 11, false);
+    BENCH("benchmarks", 11, true);
 
     private final String title;
     private final int issue;
