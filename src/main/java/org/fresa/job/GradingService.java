@@ -79,15 +79,26 @@ public final class GradingService {
     public static TaskOutcome run(GradingSettings s, Options o, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         String name = s.outline().getFileName().toString();
-        if (name.toLowerCase(Locale.ROOT).endsWith(".dxf")) {
-            return new TaskOutcome(1, List.of(name + ": DXF outlines are read once the DXF reader (issue 8) is "
-                    + "merged; give the outline as a .contour file meanwhile"), Map.of(), List.of());
-        }
         return write(readOutline(s.outline()), name, s, o, out, progress);
     }
 
-    /** The contours of a {@code .contour} file. */
+    /**
+     * The contours of a {@code .contour} file, or the closed contours of a DXF drawing (chained
+     * at 0.001 mm, largest first, so the outline comes before any inner contour).
+     */
     public static List<Contour> readOutline(Path file) throws CamInputException, IOException {
+        String name = file.getFileName().toString();
+        if (name.toLowerCase(Locale.ROOT).endsWith(".dxf")) {
+            org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(file);
+            List<Contour> closed = new java.util.ArrayList<>(
+                    org.fresa.cutting.Chainer.chain(d.curves(), 0.001).closed());
+            if (closed.isEmpty()) {
+                throw new CamInputException(name, "no closed outline in the drawing (expected lines, arcs or "
+                        + "polylines that form a closed contour)");
+            }
+            closed.sort(java.util.Comparator.comparingDouble(Contour::area).reversed());
+            return closed;
+        }
         try (Reader r = Files.newBufferedReader(file)) {
             return ContourFile.read(r, file.getFileName().toString());
         }
