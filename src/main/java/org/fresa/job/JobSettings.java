@@ -80,12 +80,83 @@ public final class JobSettings {
         }
     }
 
-    /** The sole mould job (issue 10 adds the tread figures). */
-    public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post) {
+    /**
+     * The sole mould job: the right sole's outline at the base size, the sizes, the grading
+     * system, origin and shrinkage, the tread designs and their tools, depths and the post.
+     *
+     * @param outline the base outline ({@code .contour} or DXF)
+     * @param baseSize NP
+     * @param sizes the sizes wanted, e.g. {@code 38-42} or {@code 40}
+     * @param cavityDepthMm depth of the sole cavity
+     * @param post the machine-tool post name
+     * @param system the size system id ({@code br}, {@code paris}, ...)
+     * @param originMm the grading origin and foot of the mirror axis, or empty for the heel centre
+     * @param shrinkage the material's shrinkage, fraction
+     * @param shrinkageMode {@code additive} (thesis) or {@code multiplicative}
+     * @param treadDepthMm depth of the tread grooves
+     * @param clearanceMm height of rapid travel above the top face
+     * @param marginMm least distance of a groove's centre line from the outline
+     * @param tools the tread tools
+     * @param designs the tread designs in cutting order
+     */
+    public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post,
+            String system, Optional<Vec2> originMm, double shrinkage, String shrinkageMode, double treadDepthMm,
+            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs) {
         public SoleSettings {
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(system, "system");
+            Objects.requireNonNull(originMm, "originMm");
+            Objects.requireNonNull(shrinkageMode, "shrinkageMode");
+            tools = List.copyOf(tools);
+            designs = List.copyOf(designs);
+        }
+
+        /** A sole job without tread designs, thesis defaults elsewhere. */
+        public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post) {
+            this(outline, baseSize, sizes, cavityDepthMm, post, "br", Optional.empty(), 0, "multiplicative", 2, 5, 2,
+                    List.of(), List.of());
+        }
+    }
+
+    /** A tread tool (the thesis's form bits). */
+    public record SoleTool(String id, int number, double diameterMm, double spindleRpm, double feedMmPerMin,
+            double plungeFeedMmPerMin) {
+        public SoleTool {
+            Objects.requireNonNull(id, "id");
+        }
+    }
+
+    /** A tread macro call: {@code macro} with its keyword parameters as the thesis writes them. */
+    public record SoleFigure(String macro, String params) {
+        public SoleFigure {
+            Objects.requireNonNull(macro, "macro");
+            Objects.requireNonNull(params, "params");
+        }
+    }
+
+    /** An explicit copy: mirror (about x = mirrorXMm, y = mirrorYMm), rotate about the origin, translate. */
+    public record SoleCopy(double dxMm, double dyMm, OptionalDouble mirrorXMm, OptionalDouble mirrorYMm,
+            double rotateDeg) {
+        public SoleCopy {
+            Objects.requireNonNull(mirrorXMm, "mirrorXMm");
+            Objects.requireNonNull(mirrorYMm, "mirrorYMm");
+        }
+    }
+
+    /** One tread design: figures repeated by a pattern (see schemas/job.xsd, element sole/design). */
+    public record SoleDesign(String name, String tool, String rule, boolean text, String pattern, int count, int rows,
+            double dxMm, double dyMm, double rowShiftMm, double stepDeg, double centerXMm, double centerYMm,
+            List<SoleFigure> lead, List<SoleFigure> figures, List<SoleCopy> copies) {
+        public SoleDesign {
+            Objects.requireNonNull(name, "name");
+            Objects.requireNonNull(tool, "tool");
+            Objects.requireNonNull(rule, "rule");
+            Objects.requireNonNull(pattern, "pattern");
+            lead = List.copyOf(lead);
+            figures = List.copyOf(figures);
+            copies = List.copyOf(copies);
         }
     }
 

@@ -212,14 +212,97 @@ public final class JobXml {
         }
         SoleType so = x.getSole();
         if (so != null) {
-            job = job.withSole(new SoleSettings(resolve(base, so.getOutline()), so.getBaseSize(), so.getSizes(),
-                    so.getCavityDepthMm(), so.getPost()));
+            job = job.withSole(soleSettings(so, base));
         }
         OutputsType o = x.getOutputs();
         if (o != null) {
             job = job.withOutputs(new OutputSettings(splitList(o.getFormats())));
         }
         return job;
+    }
+
+    private static SoleSettings soleSettings(SoleType so, Path base) {
+        Optional<Vec2> origin = so.getOriginXMm() != null && so.getOriginYMm() != null
+                ? Optional.of(Vec2.of(so.getOriginXMm(), so.getOriginYMm())) : Optional.empty();
+        List<JobSettings.SoleTool> tools = so.getTool().stream().map(t -> new JobSettings.SoleTool(t.getId(),
+                t.getNumber(), t.getDiameterMm(), t.getSpindleRpm(), t.getFeedMmPerMin(), t.getPlungeFeedMmPerMin()))
+                .toList();
+        List<JobSettings.SoleDesign> designs = so.getDesign().stream().map(d -> new JobSettings.SoleDesign(d.getName(),
+                d.getTool(), d.getRule(), d.isText(), d.getPattern(), d.getCount(), d.getRows(), d.getDxMm(),
+                d.getDyMm(), d.getRowShiftMm(), d.getStepDeg(), d.getCenterXMm(), d.getCenterYMm(),
+                d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
+                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
+                d.getCopy().stream().map(c -> new JobSettings.SoleCopy(c.getDxMm(), c.getDyMm(),
+                        optional(c.getMirrorXMm()), optional(c.getMirrorYMm()), c.getRotateDeg())).toList()))
+                .toList();
+        return new SoleSettings(resolve(base, so.getOutline()), so.getBaseSize(), so.getSizes(), so.getCavityDepthMm(),
+                so.getPost(), so.getSystem(), origin, so.getShrinkage(), so.getShrinkageMode(), so.getTreadDepthMm(),
+                so.getClearanceMm(), so.getMarginMm(), tools, designs);
+    }
+
+    private static SoleType soleType(SoleSettings s, Path base) {
+        SoleType t = new SoleType();
+        t.setOutline(relativize(base, s.outline()));
+        t.setBaseSize(s.baseSize());
+        t.setSizes(s.sizes());
+        t.setCavityDepthMm(s.cavityDepthMm());
+        t.setPost(s.post());
+        t.setSystem(s.system());
+        s.originMm().ifPresent(o -> {
+            t.setOriginXMm(o.x());
+            t.setOriginYMm(o.y());
+        });
+        t.setShrinkage(s.shrinkage());
+        t.setShrinkageMode(s.shrinkageMode());
+        t.setTreadDepthMm(s.treadDepthMm());
+        t.setClearanceMm(s.clearanceMm());
+        t.setMarginMm(s.marginMm());
+        for (JobSettings.SoleTool k : s.tools()) {
+            SoleType.Tool x = new SoleType.Tool();
+            x.setId(k.id());
+            x.setNumber(k.number());
+            x.setDiameterMm(k.diameterMm());
+            x.setSpindleRpm(k.spindleRpm());
+            x.setFeedMmPerMin(k.feedMmPerMin());
+            x.setPlungeFeedMmPerMin(k.plungeFeedMmPerMin());
+            t.getTool().add(x);
+        }
+        for (JobSettings.SoleDesign d : s.designs()) {
+            SoleType.Design x = new SoleType.Design();
+            x.setName(d.name());
+            x.setTool(d.tool());
+            x.setRule(d.rule());
+            x.setText(d.text());
+            x.setPattern(d.pattern());
+            x.setCount(d.count());
+            x.setRows(d.rows());
+            x.setDxMm(d.dxMm());
+            x.setDyMm(d.dyMm());
+            x.setRowShiftMm(d.rowShiftMm());
+            x.setStepDeg(d.stepDeg());
+            x.setCenterXMm(d.centerXMm());
+            x.setCenterYMm(d.centerYMm());
+            d.lead().forEach(f -> x.getLead().add(figure(f)));
+            d.figures().forEach(f -> x.getFigure().add(figure(f)));
+            for (JobSettings.SoleCopy c : d.copies()) {
+                SoleType.Design.Copy y = new SoleType.Design.Copy();
+                y.setDxMm(c.dxMm());
+                y.setDyMm(c.dyMm());
+                c.mirrorXMm().ifPresent(y::setMirrorXMm);
+                c.mirrorYMm().ifPresent(y::setMirrorYMm);
+                y.setRotateDeg(c.rotateDeg());
+                x.getCopy().add(y);
+            }
+            t.getDesign().add(x);
+        }
+        return t;
+    }
+
+    private static org.fresa.job.xml.SoleFigureType figure(JobSettings.SoleFigure f) {
+        org.fresa.job.xml.SoleFigureType t = new org.fresa.job.xml.SoleFigureType();
+        t.setMacro(f.macro());
+        t.setParams(f.params());
+        return t;
     }
 
     private static OptionalDouble optional(Double d) {
@@ -309,15 +392,7 @@ public final class JobXml {
             t.setShrinkageMode(g.shrinkageMode());
             x.setGrading(t);
         });
-        job.sole().ifPresent(s -> {
-            SoleType t = new SoleType();
-            t.setOutline(relativize(base, s.outline()));
-            t.setBaseSize(s.baseSize());
-            t.setSizes(s.sizes());
-            t.setCavityDepthMm(s.cavityDepthMm());
-            t.setPost(s.post());
-            x.setSole(t);
-        });
+        job.sole().ifPresent(s -> x.setSole(soleType(s, base)));
         OutputsType o = new OutputsType();
         o.setFormats(String.join(",", job.outputs().formats()));
         x.setOutputs(o);

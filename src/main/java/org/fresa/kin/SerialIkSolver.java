@@ -14,7 +14,7 @@ import org.fresa.geom.Transform3;
 final class SerialIkSolver implements IkSolver {
 
     /** Random extra starts for a cold solve, after the thesis's five and mid-range. */
-    private static final int RANDOM_STARTS = 40;
+    private static final int RANDOM_STARTS = 24;
     /** Two solutions closer than this (rad or mm, per joint) are the same. */
     private static final double SAME_SOLUTION = 1e-6;
 
@@ -203,10 +203,19 @@ final class SerialIkSolver implements IkSolver {
         double energy = evaluate(q, e);
         double mu = 1e-12;
         int maxIt = options.maxIterations();
+        double checkpoint = energy;
         for (int it = 0; it < maxIt; it++) {
             if (converged(e)) {
                 lastIterations = it;
                 return true;
+            }
+            if (it % 10 == 9) {
+                // a local minimum away from the target (an unreachable pose): stop early
+                if (energy > 0.9 * checkpoint) {
+                    lastIterations = it;
+                    return false;
+                }
+                checkpoint = energy;
             }
             chain.jacobian(f, j, rotWeight);
             normalEquations(e);

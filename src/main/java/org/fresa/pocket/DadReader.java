@@ -122,8 +122,9 @@ public final class DadReader {
             throw new CamInputException(source, line, from + 1, what + " expected in columns " + (from + 1) + "-" + to + ", found '" + s + "'");
         }
         double v = Double.parseDouble(s.replace('D', 'E').replace('d', 'e'));
-        if (!Double.isFinite(v)) {
-            throw new CamInputException(source, line, from + 1, what + " out of range: " + s);
+        // a pocket is smaller than a kilometre; larger values overflow the squares of the geometry
+        if (!Double.isFinite(v) || Math.abs(v) > 1e6) {
+            throw new CamInputException(source, line, from + 1, what + " out of range (|value| <= 1e6 mm): " + s);
         }
         return v;
     }

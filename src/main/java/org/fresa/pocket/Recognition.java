@@ -128,16 +128,6 @@ public final class Recognition {
             List<Division> divisions = divisions(s, t);
             double tdm = divisions.stream().mapToDouble(Division::t).min().orElse(Double.POSITIVE_INFINITY);
             double te = Math.min(ttm, tdm);
-            if (System.getProperty("pocket.debug") != null) {
-                StringBuilder sb = new StringBuilder("t=" + t + " " + s.elements() + " ptr " + s.pointer() + " ttm=" + ttm + " tdm=" + tdm + " cancels:");
-                for (int i = 0; i < n; i++) {
-                    sb.append(' ').append(s.get(i)).append('=').append(cancels[i] == null ? "-" : String.format("%.4f", cancels[i].t()));
-                }
-                for (Division d : divisions) {
-                    sb.append(" div ").append(s.get(d.a())).append('/').append(s.get(d.b())).append('@').append(String.format("%.4f", d.t()));
-                }
-                System.err.println(sb);
-            }
             if (Double.isInfinite(te)) {
                 throw new CamInputException("contour", "recognition found no event at t = " + t + " in " + s.elements()
                         + " (is the contour clockwise and closed?)");
@@ -284,7 +274,7 @@ public final class Recognition {
         PocketElement e1 = s.get(i - 1), e2 = s.get(i), e3 = s.get(i + 1);
         for (Incentres.Solution sol : Incentres.of(e1, e2, e3)) {
             double ts = sol.t();
-            if (!(ts > t + 10 * compar) || !Double.isFinite(ts)) {
+            if (!(ts > t + compar) || !Double.isFinite(ts)) {
                 continue;
             }
             // a convex arc shrinks to a point at t = R: the thesis's ILMAX; near-tangent input
@@ -360,7 +350,7 @@ public final class Recognition {
                     continue;
                 }
                 double tt = t + rel;
-                if (inSector(s, ia, p, tt) && inSector(s, ib, p, tt)) {
+                if (inSector(s, ia, p, t) && inSector(s, ib, p, t)) {
                     out.add(new Division(tt, ia, ib, p, a.number(), b.number()));
                 }
             }

@@ -1,0 +1,208 @@
+package org.fresa.sole;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.model.CamInputException;
+
+/**
+ * Builds {@link TreadFigure}s from a macro name and keyword parameters, as the thesis's
+ * {@code CALL/SUB1A,XA1=-40,YA1=-41,...} gives them.
+ *
+ * <p>Keywords are the thesis's (case-insensitive). {@code I}, {@code PROF} and {@code AVAN} are
+ * accepted and ignored (depth and feed are the tread's); {@code CTM} is accepted only as 0, since
+ * shrinkage is the job's. The arc macros take {@code CCW=1} for a counter-clockwise sense
+ * (default clockwise, as in every thesis test program).
+ */
+public final class TreadFigures {
+
+    /** Every macro name, in the thesis's order. */
+    public static final List<String> MACROS = List.of("PRIM", "NOVO", "SUB1A", "SUB1B", "SUB2", "SUB3A", "SUB3B",
+            "SUB3E", "SUB4", "SUB5A", "SUB5B", "SUB5E", "SUB7A", "SUB7B", "SUB8A", "SUB8B", "SUB9A", "SUB9B");
+
+    private static final Map<String, List<String>> PARAMS = new LinkedHashMap<>();
+
+    static {
+        PARAMS.put("PRIM", List.of("XI", "YI", "XA1", "YA1"));
+        PARAMS.put("NOVO", List.of("XF1", "YF1", "XF2", "YF2"));
+        PARAMS.put("SUB1A", List.of("XA1", "YA1", "XB1", "YC1", "XC1", "XD1"));
+        PARAMS.put("SUB1B", List.of("XA1", "YA1", "YB1", "YC1", "XC1", "YD1"));
+        PARAMS.put("SUB2", List.of("XA2", "YA2", "XB2", "YB2"));
+        PARAMS.put("SUB3A", List.of("XC", "YC", "RA", "XA3", "XB3"));
+        PARAMS.put("SUB3B", List.of("XC", "YC", "RA", "XA3", "XB3"));
+        PARAMS.put("SUB3E", List.of("XC", "YC", "RA", "XA3", "XB3", "AFAS", "N"));
+        PARAMS.put("SUB4", List.of("XC", "YC", "RA", "XA4", "YA4", "XB4", "YB4"));
+        PARAMS.put("SUB5A", List.of("XC1", "YC1", "XC2", "YC2", "XT", "YT", "XA5", "XB5"));
+        PARAMS.put("SUB5B", List.of("XC1", "YC1", "XC2", "YC2", "XT", "YT", "XA5", "XB5"));
+        PARAMS.put("SUB5E", List.of("XC1", "YC1", "XC2", "YC2", "XT", "YT", "XA5", "XB5", "AFAS", "N"));
+        PARAMS.put("SUB7A", List.of("XA7", "YA7", "XB7", "YB7", "XC7", "YC7"));
+        PARAMS.put("SUB7B", List.of("XB7", "YB7", "XC7", "YC7"));
+        PARAMS.put("SUB8A", List.of("XA8", "YA8", "XB8", "YB8", "XC8", "YC8", "XD8", "YD8"));
+        PARAMS.put("SUB8B", List.of("XB8", "YB8", "XC8", "YC8", "XD8", "YD8"));
+        PARAMS.put("SUB9A", List.of("XA9", "YA9", "XB9", "YB9", "XC9", "YC9", "XD9", "YD9", "XE9", "YE9"));
+        PARAMS.put("SUB9B", List.of("XB9", "YB9", "XC9", "YC9", "XD9", "YD9", "XE9", "YE9"));
+    }
+
+    private static final Set<String> IGNORED = Set.of("I", "PROF", "AVAN");
+
+    private TreadFigures() {
+    }
+
+    /** The thesis's parameter names of a macro, in its order (without CTM, PROF, AVAN, I). */
+    public static List<String> parameters(String macro) {
+        List<String> p = PARAMS.get(macro.toUpperCase(Locale.ROOT));
+        if (p == null) {
+            throw new IllegalArgumentException("unknown macro " + macro);
+        }
+        return p;
+    }
+
+    /** Whether the macro carries on the groove in progress (B, E-less continuous types, PRIM/NOVO excluded). */
+    public static boolean isContinuous(String macro) {
+        return Set.of("SUB3B", "SUB5B", "SUB7B", "SUB8B", "SUB9B").contains(macro.toUpperCase(Locale.ROOT));
+    }
+
+    /**
+     * Parses {@code "XA1=-40, YA1=-41, ..."} (commas or blanks between, as in a CALL).
+     *
+     * @throws CamInputException for a malformed pair or number
+     */
+    public static Map<String, Double> parseParams(String text, String source) throws CamInputException {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (String tok : text.trim().split("[,\\s]+")) {
+            if (tok.isEmpty()) {
+                continue;
+            }
+            int eq = tok.indexOf('=');
+            if (eq <= 0) {
+                throw new CamInputException(source, "expected NAME=value in figure parameters, found '" + tok + "'");
+            }
+            String k = tok.substring(0, eq).trim().toUpperCase(Locale.ROOT);
+            try {
+                double v = Double.parseDouble(tok.substring(eq + 1).trim());
+                if (!Double.isFinite(v) || Math.abs(v) > 1e6) {
+                    throw new NumberFormatException();
+                }
+                if (out.put(k, v) != null) {
+                    throw new CamInputException(source, "figure parameter " + k + " given twice");
+                }
+            } catch (NumberFormatException e) {
+                throw new CamInputException(source, "figure parameter " + k + ": expected a number, found '"
+                        + tok.substring(eq + 1) + "'");
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The figure of a macro with its parameters; the path is computed once to check that the
+     * parameters give one.
+     *
+     * @throws CamInputException naming a missing, unknown or inconsistent parameter
+     */
+    public static TreadFigure of(String macro, Map<String, Double> params, String source) throws CamInputException {
+        String m = macro.trim().toUpperCase(Locale.ROOT);
+        List<String> names = PARAMS.get(m);
+        if (names == null) {
+            throw new CamInputException(source, "unknown tread macro '" + macro + "', expected one of " + MACROS);
+        }
+        Map<String, Double> p = new LinkedHashMap<>();
+        params.forEach((k, v) -> p.put(k.toUpperCase(Locale.ROOT), v));
+        Set<String> allowed = new TreeSet<>(names);
+        allowed.addAll(IGNORED);
+        allowed.add("CTM");
+        allowed.add("CCW");
+        for (String k : p.keySet()) {
+            if (!allowed.contains(k)) {
+                throw new CamInputException(source, m + ": unknown parameter " + k + ", expected " + names);
+            }
+        }
+        for (String k : names) {
+            if (!p.containsKey(k)) {
+                throw new CamInputException(source, m + ": missing parameter " + k + " (needs " + names + ")");
+            }
+        }
+        if (p.getOrDefault("CTM", 0.0) != 0.0) {
+            throw new CamInputException(source, m + ": CTM (shrinkage) is set for the whole sole job, not per figure");
+        }
+        boolean ccw = p.getOrDefault("CCW", 0.0) != 0.0;
+        TreadFigure f;
+        try {
+            f = build(m, p, ccw);
+            f.path(Vec2.ZERO, Tolerance.DEFAULT);
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(source, m + ": " + e.getMessage());
+        }
+        return f;
+    }
+
+    private static TreadFigure build(String m, Map<String, Double> p, boolean ccw) {
+        java.util.function.ToDoubleFunction<String> g = p::get;
+        return switch (m) {
+            case "PRIM" -> new TreadFigure.Prim(g.applyAsDouble("XI"), g.applyAsDouble("YI"), g.applyAsDouble("XA1"),
+                    g.applyAsDouble("YA1"));
+            case "NOVO" -> new TreadFigure.Novo(g.applyAsDouble("XF1"), g.applyAsDouble("YF1"), g.applyAsDouble("XF2"),
+                    g.applyAsDouble("YF2"));
+            case "SUB1A" -> new TreadFigure.Sub1a(g.applyAsDouble("XA1"), g.applyAsDouble("YA1"),
+                    g.applyAsDouble("XB1"), g.applyAsDouble("YC1"), g.applyAsDouble("XC1"), g.applyAsDouble("XD1"));
+            case "SUB1B" -> new TreadFigure.Sub1b(g.applyAsDouble("XA1"), g.applyAsDouble("YA1"),
+                    g.applyAsDouble("YB1"), g.applyAsDouble("YC1"), g.applyAsDouble("XC1"), g.applyAsDouble("YD1"));
+            case "SUB2" -> new TreadFigure.Sub2(g.applyAsDouble("XA2"), g.applyAsDouble("YA2"), g.applyAsDouble("XB2"),
+                    g.applyAsDouble("YB2"));
+            case "SUB3A" -> new TreadFigure.Sub3a(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
+                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), ccw);
+            case "SUB3B" -> new TreadFigure.Sub3b(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
+                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), ccw);
+            case "SUB3E" -> new TreadFigure.Sub3e(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
+                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), g.applyAsDouble("AFAS"), count(g, "N"), ccw);
+            case "SUB4" -> new TreadFigure.Sub4(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
+                    g.applyAsDouble("XA4"), g.applyAsDouble("YA4"), g.applyAsDouble("XB4"), g.applyAsDouble("YB4"), ccw);
+            case "SUB5A" -> new TreadFigure.Sub5a(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
+                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
+                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), ccw);
+            case "SUB5B" -> new TreadFigure.Sub5b(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
+                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
+                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), ccw);
+            case "SUB5E" -> new TreadFigure.Sub5e(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
+                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
+                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), g.applyAsDouble("AFAS"), count(g, "N"), ccw);
+            case "SUB7A" -> new TreadFigure.Sub7a(g.applyAsDouble("XA7"), g.applyAsDouble("YA7"),
+                    g.applyAsDouble("XB7"), g.applyAsDouble("YB7"), g.applyAsDouble("XC7"), g.applyAsDouble("YC7"));
+            case "SUB7B" -> new TreadFigure.Sub7b(g.applyAsDouble("XB7"), g.applyAsDouble("YB7"),
+                    g.applyAsDouble("XC7"), g.applyAsDouble("YC7"));
+            case "SUB8A" -> new TreadFigure.Sub8a(g.applyAsDouble("XA8"), g.applyAsDouble("YA8"),
+                    g.applyAsDouble("XB8"), g.applyAsDouble("YB8"), g.applyAsDouble("XC8"), g.applyAsDouble("YC8"),
+                    g.applyAsDouble("XD8"), g.applyAsDouble("YD8"));
+            case "SUB8B" -> new TreadFigure.Sub8b(g.applyAsDouble("XB8"), g.applyAsDouble("YB8"),
+                    g.applyAsDouble("XC8"), g.applyAsDouble("YC8"), g.applyAsDouble("XD8"), g.applyAsDouble("YD8"));
+            case "SUB9A" -> new TreadFigure.Sub9a(g.applyAsDouble("XA9"), g.applyAsDouble("YA9"),
+                    g.applyAsDouble("XB9"), g.applyAsDouble("YB9"), g.applyAsDouble("XC9"), g.applyAsDouble("YC9"),
+                    g.applyAsDouble("XD9"), g.applyAsDouble("YD9"), g.applyAsDouble("XE9"), g.applyAsDouble("YE9"));
+            case "SUB9B" -> new TreadFigure.Sub9b(g.applyAsDouble("XB9"), g.applyAsDouble("YB9"),
+                    g.applyAsDouble("XC9"), g.applyAsDouble("YC9"), g.applyAsDouble("XD9"), g.applyAsDouble("YD9"),
+                    g.applyAsDouble("XE9"), g.applyAsDouble("YE9"));
+            default -> throw new IllegalArgumentException("unknown macro " + m);
+        };
+    }
+
+    private static double positive(java.util.function.ToDoubleFunction<String> g, String k) {
+        double v = g.applyAsDouble(k);
+        if (!(v > 0)) {
+            throw new IllegalArgumentException(k + " must be > 0: " + v);
+        }
+        return v;
+    }
+
+    private static int count(java.util.function.ToDoubleFunction<String> g, String k) {
+        double v = g.applyAsDouble(k);
+        if (v != Math.rint(v) || v < 1 || v > 1000) {
+            throw new IllegalArgumentException(k + " must be a whole number from 1 to 1000: " + v);
+        }
+        return (int) v;
+    }
+}
