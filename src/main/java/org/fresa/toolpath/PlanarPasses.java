@@ -34,6 +34,9 @@ public final class PlanarPasses {
             Vec2 feedDirection, boolean clockwise, Tolerance tol) {
         Ring wall = profile.inset(wallOffsetMm, tol)
                 .orElseThrow(() -> new IllegalArgumentException("the tool does not fit in the profile"));
+        if (!profile.convex()) {
+            return nonConvex(strategy, profile, wall, wallOffsetMm, stepoverMm, feedDirection, clockwise, tol);
+        }
         List<Pass> out = new ArrayList<>();
         switch (strategy) {
             case UNIDIRECTIONAL -> out.addAll(parallel(wall, stepoverMm, feedDirection, false, tol));
@@ -66,6 +69,83 @@ public final class PlanarPasses {
         return out;
     }
 
+    /**
+     * A non-convex profile: a straight link may leave the region, so every pass is entered from
+     * above; parallel passes are split where they leave the region; a spiral becomes nested loops.
+     */
+    private static List<Pass> nonConvex(Strategy strategy, Profile profile, Ring wall, double wallOffsetMm,
+            double stepoverMm, Vec2 feedDirection, boolean clockwise, Tolerance tol) {
+        List<Pass> out = new ArrayList<>();
+        switch (strategy) {
+            case UNIDIRECTIONAL, BIDIRECTIONAL -> out.addAll(parallelSplit(wall, stepoverMm, feedDirection,
+                    strategy == Strategy.BIDIRECTIONAL, tol));
+            case BIDIRECTIONAL_CONTOUR -> {
+                out.addAll(parallelSplit(wall, stepoverMm, feedDirection, true, tol));
+                out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
+            }
+            case CONTOUR_BIDIRECTIONAL -> {
+                out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
+                profile.inset(wallOffsetMm + stepoverMm / 2, tol)
+                        .ifPresent(r -> out.addAll(parallelSplit(r, stepoverMm, feedDirection, true, tol)));
+            }
+            case CENTER_MILLING -> out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
+            default -> out.addAll(loops(profile, wallOffsetMm, stepoverMm, clockwise, tol));
+        }
+        List<Pass> entered = new ArrayList<>();
+        for (Pass p : out) {
+            entered.add(new Pass(p.start(), p.curves(), false));
+        }
+        return entered;
+    }
+
+    /** Parallel passes cut into the pieces that lie inside the region (even-odd crossings). */
+    static List<Pass> parallelSplit(Ring region, double stepoverMm, Vec2 feedDirection, boolean zigzag, Tolerance tol) {
+        Vec2 u = feedDirection.normalized();
+        Vec2 n = u.leftNormal();
+        org.fresa.geom.Contour c = new org.fresa.geom.Contour(region.curves());
+        org.fresa.geom.Box2 box = c.bounds();
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (Curve2 cu : region.curves()) {
+            for (Vec2 p : extremes(cu, n)) {
+                lo = Math.min(lo, p.dot(n));
+                hi = Math.max(hi, p.dot(n));
+            }
+        }
+        double reach = 4 * (Math.abs(box.minX()) + Math.abs(box.maxX()) + Math.abs(box.minY()) + Math.abs(box.maxY()) + 1);
+        int m = (int) Math.ceil((hi - lo) / stepoverMm - 1e-9);
+        List<Pass> out = new ArrayList<>();
+        for (int k = m; k >= 0; k--) {
+            // a hair inside the extremes: crossings there, not grazing contacts
+            double s = m == 0 ? (lo + hi) / 2 : lo + (hi - lo) * k / m;
+            s = Math.max(lo + 1e-4, Math.min(hi - 1e-4, s));
+            Vec2 base = n.times(s);
+            Segment2 line = new Segment2(base.minus(u.times(reach)), base.plus(u.times(reach)));
+            List<Double> ts = new ArrayList<>();
+            for (Curve2 cu : region.curves()) {
+                for (Vec2 p : Intersections.of(line, cu, tol)) {
+                    ts.add(p.dot(u));
+                }
+            }
+            ts.sort(Double::compare);
+            List<double[]> pieces = new ArrayList<>();
+            for (int i = 0; i + 1 < ts.size(); i++) {
+                double a = ts.get(i);
+                double b = ts.get(i + 1);
+                if (b - a > tol.linear() && c.contains(base.plus(u.times((a + b) / 2)), tol)) {
+                    pieces.add(new double[] {a, b});
+                }
+            }
+            boolean reverse = zigzag && (out.size() % 2 == 1);
+            for (double[] ab : pieces) {
+                Vec2 from = base.plus(u.times(reverse ? ab[1] : ab[0]));
+                Vec2 to = base.plus(u.times(reverse ? ab[0] : ab[1]));
+                out.add(new Pass(from, List.of(new Segment2(from, to)), false));
+            }
+        }
+        return out;
+    }
+
     static Ring oriented(Ring r, boolean clockwise) {
         return clockwise ? r.reversed() : r;
     }
@@ -83,12 +163,35 @@ public final class PlanarPasses {
         double max = profile.maxInsetMm();
         List<Ring> rings = new ArrayList<>();
         if (Double.isNaN(max)) {
-            for (int k = 0;; k++) {
-                Optional<Ring> r = profile.inset(wallOffsetMm + k * stepoverMm, tol);
-                if (r.isEmpty()) {
-                    break;
+            // find where the offsets vanish (to 1e-4 mm), then space the loops evenly up to there
+            double ok = wallOffsetMm;
+            double gone = wallOffsetMm + stepoverMm;
+            while (profile.inset(gone, tol).isPresent()) {
+                ok = gone;
+                gone += stepoverMm;
+            }
+            while (gone - ok > 1e-4) {
+                double mid = (ok + gone) / 2;
+                if (profile.inset(mid, tol).isPresent()) {
+                    ok = mid;
+                } else {
+                    gone = mid;
                 }
-                rings.add(r.get());
+            }
+            double span = ok - wallOffsetMm;
+            // loops of a general outline change shape as they shrink (reflex joins, collapsing arms): the
+            // corner rule's spacing can leave islands where the last loops are far apart, so at most
+            // the tool radius, which keeps every point within the radius of a loop
+            double step = Math.min(stepoverMm, wallOffsetMm);
+            int n = (int) Math.ceil(span / step - 1e-9);
+            for (int k = 0; k <= n; k++) {
+                double d = n == 0 ? wallOffsetMm : wallOffsetMm + span * k / n;
+                List<Ring> at = profile.insetAll(d, tol);
+                // the offsetter drops loops that are nearly points: step back until the innermost loop exists
+                for (double back = 1e-3; at.isEmpty() && k > 0 && back < span / n; back *= 2) {
+                    at = profile.insetAll(d - back, tol);
+                }
+                rings.addAll(at);
             }
         } else {
             double span = Math.max(0, max - wallOffsetMm);

@@ -42,6 +42,16 @@ public sealed interface Profile permits Profile.RoundedRectangle, Profile.Circle
     /** The centre used as the plunge point of center milling and the origin of the rings. */
     Vec2 center();
 
+    /** Every loop of the inset (a non-convex outline may split into several), largest first. */
+    default List<Ring> insetAll(double dMm, Tolerance tol) {
+        return inset(dMm, tol).map(List::of).orElse(List.of());
+    }
+
+    /** Whether straight links between points inside a ring stay inside it (true for the parametric profiles). */
+    default boolean convex() {
+        return true;
+    }
+
     /**
      * The largest inset that still leaves a ring (the half-width where the rings collapse to a
      * segment or a point), mm; NaN when unknown (general contours).
@@ -243,6 +253,15 @@ public sealed interface Profile permits Profile.RoundedRectangle, Profile.Circle
         }
 
         @Override
+        public List<Ring> insetAll(double d, Tolerance tol) {
+            List<Ring> out = new ArrayList<>();
+            for (Contour c : offsetter.inward(outline.ccw(), d, tol)) {
+                out.add(new Ring(c.get(0).start(), c.curves()));
+            }
+            return out;
+        }
+
+        @Override
         public double sharpCornerAngleRad(double dMm) {
             double min = Math.PI;
             List<Curve2> cs = outline.ccw().curves();
@@ -265,6 +284,23 @@ public sealed interface Profile permits Profile.RoundedRectangle, Profile.Circle
         @Override
         public double maxInsetMm() {
             return Double.NaN;
+        }
+
+        /** Convex when it turns left at every joint and has no clockwise arc (run counter-clockwise). */
+        @Override
+        public boolean convex() {
+            List<Curve2> cs = outline.ccw().curves();
+            for (int i = 0; i < cs.size(); i++) {
+                if (cs.get(i) instanceof Arc2 a && !a.ccw()) {
+                    return false;
+                }
+                Vec2 t1 = cs.get(i).endTangent();
+                Vec2 t2 = cs.get((i + 1) % cs.size()).startTangent();
+                if (t1.cross(t2) < -1e-12) {
+                    return false;
+                }
+            }
+            return true;
         }
     }
 
