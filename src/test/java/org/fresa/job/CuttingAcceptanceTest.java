@@ -70,6 +70,32 @@ class CuttingAcceptanceTest {
         }
     }
 
+    @org.junit.jupiter.api.Test
+    void controllerCompensationProgramsPassLinuxCncsGougeChecks() throws Exception {
+        Path dxf = Path.of("samples/cutting/plate.dxf");
+        org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(dxf);
+        org.fresa.cutting.CuttingOptions o = org.fresa.cutting.CuttingOptions.of(org.fresa.cutting.CutProcess.PLASMA, 2, 3, 1,
+                true).withControllerCompensation(true);
+        CutPlan plan = org.fresa.cutting.CutPlanner.plan(d.layers(), o);
+        List<Integer> comp = plan.cuts().stream().map(CutPath::compensation).toList();
+        assertTrue(comp.stream().allMatch(c -> c == 41), comp.toString());
+        java.io.StringWriter w = new java.io.StringWriter();
+        org.fresa.post.SheetCuttingPost.write(plan.toolpath(), "plate", new org.fresa.post.SheetCuttingPost.Job("plasma",
+                0.5, comp, 2), org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC, w);
+        assertTrue(w.toString().contains("G41 G1"), w.toString());
+        rs274Accepts(w.toString(), "plate G41", 2);
+    }
+
+    @ParameterizedTest(name = "post {0}")
+    @ValueSource(strings = {"linuxcnc", "iso"})
+    void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {
+        CuttingSettings s = new CuttingSettings(Path.of("samples/cutting/plate.dxf"), 2, "laser", 3, 1, "line", 0.001,
+                "auto", false, post);
+        CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
+        assertEquals(10, r.plan().cuts().size());
+        rs274Accepts(r.program(), post, 0);
+    }
+
     static void rs274Accepts(String program, String name, double toolDiameter) throws IOException, InterruptedException {
         Assumptions.assumeTrue(Files.isExecutable(RS274), "rs274 absent");
         Path f = Files.createTempFile("cut", ".ngc");
