@@ -20,7 +20,7 @@ import org.fresa.model.ToolpathSection;
  *
  * <p>Dialects: {@code linuxcnc} (jet codes M3 S1/M5 for plasma, M64/M65 digital outputs P0 for
  * laser and P1 for waterjet, G4 P seconds), {@code iso} and {@code fanuc} (N numbers, O number,
- * M07/M08 jet, G04 X seconds), {@code 840d} (N numbers, {@code ;} comments, G4 F seconds).
+ * M07/M08 jet, G04 P seconds for iso, G04 X for fanuc), {@code 840d} (N numbers, {@code ;} comments, G4 F seconds).
  * Controller compensation: a section marked 41 or 42 switches G41/G42 on at its first feed move
  * (the lead-in, a straight line) and G40 off after its last.
  */
@@ -173,7 +173,8 @@ public final class SheetCuttingPost {
     private String dwell(double s) {
         return switch (d) {
             case LINUXCNC -> "G4 P" + num(s);
-            case ISO, FANUC -> "G04 X" + num(s);
+            case ISO -> "G04 P" + num(s);
+            case FANUC -> "G04 X" + num(s);
             case SIEMENS_840D -> "G4 F" + num(s);
         };
     }
