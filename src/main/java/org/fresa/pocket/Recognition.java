@@ -33,6 +33,7 @@ public final class Recognition {
     }
 
     private final double compar;
+    private final java.util.Map<Integer, Vec2> origin = new java.util.HashMap<>();
     private int nextId = 1;
 
     private Recognition(double compar) {
@@ -43,6 +44,10 @@ public final class Recognition {
     public static Result of(PocketProfile profile) throws CamInputException {
         Recognition r = new Recognition(profile.compar());
         LoopState ref = referenceContour(profile);
+        for (int i = 0; i < ref.size(); i++) {
+            PocketElement e = ref.get(i);
+            r.origin.put(e.number(), e.zeroRadius() ? e.center() : ref.start(i, 0).orElse(e.center()));
+        }
         RecognitionNode root = r.build(ref);
         List<Double> leaves = new ArrayList<>();
         double[] firstDivision = {Double.POSITIVE_INFINITY};
@@ -413,15 +418,31 @@ public final class Recognition {
         List<LoopState> rest = new ArrayList<>();
         for (LoopState l : alive) {
             int ip = indexOf(l, pe.number());
-            if (ip >= 0 && l.get(ip + 1).number() == succ.number()) {
+            if (ip >= 0 && (l.get(ip + 1).number() == succ.number() || alive.size() == 1)) {
+                // the pointer's junction survives, or only a collapsed channel was dropped
                 first.add(l.with(te, l.elements(), ip));
-            } else {
+            } else if (alive.size() == 1) {
                 List<Vec2> vs = l.vertices(te + delta).orElse(List.of());
                 int best = 0;
                 double bd = Double.POSITIVE_INFINITY;
                 for (int i = 0; i < vs.size(); i++) {
                     if (vs.get(i).distance(pv) < bd) {
                         bd = vs.get(i).distance(pv);
+                        best = i;
+                    }
+                }
+                first.add(l.with(te, l.elements(), ((best - 1) % l.size() + l.size()) % l.size()));
+            } else {
+                // the thesis's subroutines 9200/9300: the element whose start vertex, as first
+                // computed on the reference contour, lies nearest the parent's start vertex (the
+                // last of equals wins)
+                Vec2 ref = origin.getOrDefault(succ.number(), pv);
+                int best = 0;
+                double bd = Double.POSITIVE_INFINITY;
+                for (int i = 0; i < l.size(); i++) {
+                    double dd = origin.getOrDefault(l.get(i).number(), pv).distance(ref);
+                    if (dd <= bd) {
+                        bd = dd;
                         best = i;
                     }
                 }
