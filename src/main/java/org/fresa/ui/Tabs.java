@@ -16,7 +16,7 @@ final class Tabs {
                 new UnavailableTab("STEP-NC", Module.STEPNC),
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
-                new UnavailableTab("Pocket", Module.POCKET),
+                new PocketTab(),
                 new UnavailableTab("Cutting", Module.CUTTING),
                 new UnavailableTab("Grading", Module.GRADING),
                 new UnavailableTab("Sole", Module.SOLE),
