@@ -406,7 +406,7 @@ public final class Recognition {
         List<LoopState> alive = new ArrayList<>();
         for (LoopState l : loops) {
             Optional<Double> area = l.size() < 2 ? Optional.empty() : l.signedArea(te + delta);
-            if (area.isPresent() && area.get() < -compar * compar) {
+            if (area.isPresent() && area.get() < -compar * compar && insideParent(s, l, te + delta)) {
                 alive.add(l);
             }
         }
@@ -452,6 +452,32 @@ public final class Recognition {
         }
         first.addAll(rest);
         return first;
+    }
+
+    /**
+     * A loop left by coincident divisions is real only if its vertices lie inside the offset of
+     * every element of the parent that it lost (a collapsing channel between several divisions
+     * can otherwise leave a loop of pieces from both of its walls).
+     */
+    private boolean insideParent(LoopState parent, LoopState loop, double t) {
+        Optional<List<Vec2>> vs = loop.vertices(t);
+        if (vs.isEmpty()) {
+            return false;
+        }
+        for (int i = 0; i < parent.size(); i++) {
+            PocketElement e = parent.get(i);
+            if (e.zeroRadius() || indexOf(loop, e.number()) >= 0) {
+                continue;
+            }
+            for (Vec2 v : vs.get()) {
+                // in front of the element (not behind a wall of another sub-area) yet nearer than t
+                double f = e.offsetThrough(v);
+                if (f >= 0 && f < t - 10 * compar && inSector(parent, i, v, t)) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     private List<LoopState> splitLoop(LoopState l, int ia, int ib, Vec2 p, double tt) {

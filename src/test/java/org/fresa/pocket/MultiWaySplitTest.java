@@ -34,4 +34,23 @@ class MultiWaySplitTest {
         assertTrue(wall.buffer(-0.01, 64).difference(swept).getArea() < 1e-3, "uncut material");
         assertTrue(swept.difference(wall.buffer(0.01, 64)).getArea() < 1e-3, "beyond the wall");
     }
+
+    @Test
+    void twoCollapsingNecksLeaveThreeRoomsAndAllAreMilled() throws Exception {
+        String text = Files.readString(Path.of("samples/pocket/rooms.contour"));
+        Recognition.Result r = Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "rooms")));
+        assertEquals(5, r.root().splitT(), 1e-9);
+        assertEquals(3, r.root().children().size());
+        for (RecognitionNode c : r.root().children()) {
+            assertEquals(20, c.leafT(), 1e-9);
+        }
+        assertEquals(10, r.maxToolDiameterMm(), 1e-9);
+        PocketTechnology t = new PocketTechnology(6, 0.7, 0.1, 0, -3, 3, 3000, 300, 100);
+        PocketPlan plan = PassPlanner.plan(r, t, false);
+        Toolpath path = PocketToolpath.of(plan, true);
+        Geometry swept = PocketCoverageTest.swept(path, -3, 3);
+        Geometry wall = PocketCoverageTest.region(plan.generated().get(0), 3);
+        assertTrue(wall.buffer(-0.01, 64).difference(swept).getArea() < 1e-3, "uncut material");
+        assertTrue(swept.difference(wall.buffer(0.01, 64)).getArea() < 1e-3, "beyond the wall");
+    }
 }
