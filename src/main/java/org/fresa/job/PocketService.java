@@ -54,6 +54,11 @@ public final class PocketService {
         if (contours.isEmpty()) {
             throw new CamInputException(file.toString(), "no contour in the file");
         }
+        if (contours.size() > 1) {
+            // milling through an island silently would be worse than refusing
+            throw new CamInputException(file.toString(), "islands (inner contours) are not supported yet: "
+                    + (contours.size() - 1) + " found");
+        }
         return PocketProfile.fromContours(contours);
     }
 

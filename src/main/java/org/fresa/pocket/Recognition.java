@@ -33,6 +33,7 @@ public final class Recognition {
     }
 
     private final double compar;
+    private final java.util.Map<Integer, Vec2> origin = new java.util.HashMap<>();
     private int nextId = 1;
 
     private Recognition(double compar) {
@@ -43,6 +44,10 @@ public final class Recognition {
     public static Result of(PocketProfile profile) throws CamInputException {
         Recognition r = new Recognition(profile.compar());
         LoopState ref = referenceContour(profile);
+        for (int i = 0; i < ref.size(); i++) {
+            PocketElement e = ref.get(i);
+            r.origin.put(e.number(), e.zeroRadius() ? e.center() : ref.start(i, 0).orElse(e.center()));
+        }
         RecognitionNode root = r.build(ref);
         List<Double> leaves = new ArrayList<>();
         double[] firstDivision = {Double.POSITIVE_INFINITY};
@@ -401,7 +406,7 @@ public final class Recognition {
         List<LoopState> alive = new ArrayList<>();
         for (LoopState l : loops) {
             Optional<Double> area = l.size() < 2 ? Optional.empty() : l.signedArea(te + delta);
-            if (area.isPresent() && area.get() < -compar * compar) {
+            if (area.isPresent() && area.get() < -compar * compar && insideParent(s, l, te + delta)) {
                 alive.add(l);
             }
         }
@@ -413,9 +418,10 @@ public final class Recognition {
         List<LoopState> rest = new ArrayList<>();
         for (LoopState l : alive) {
             int ip = indexOf(l, pe.number());
-            if (ip >= 0 && l.get(ip + 1).number() == succ.number()) {
+            if (ip >= 0 && (l.get(ip + 1).number() == succ.number() || alive.size() == 1)) {
+                // the pointer's junction survives, or only a collapsed channel was dropped
                 first.add(l.with(te, l.elements(), ip));
-            } else {
+            } else if (alive.size() == 1) {
                 List<Vec2> vs = l.vertices(te + delta).orElse(List.of());
                 int best = 0;
                 double bd = Double.POSITIVE_INFINITY;
@@ -425,12 +431,53 @@ public final class Recognition {
                         best = i;
                     }
                 }
+                first.add(l.with(te, l.elements(), ((best - 1) % l.size() + l.size()) % l.size()));
+            } else {
+                // the thesis's subroutines 9200/9300: the element whose start vertex, as first
+                // computed on the reference contour, lies nearest the parent's start vertex (the
+                // last of equals wins)
+                Vec2 ref = origin.getOrDefault(succ.number(), pv);
+                int best = 0;
+                double bd = Double.POSITIVE_INFINITY;
+                for (int i = 0; i < l.size(); i++) {
+                    double dd = origin.getOrDefault(l.get(i).number(), pv).distance(ref);
+                    if (dd <= bd) {
+                        bd = dd;
+                        best = i;
+                    }
+                }
                 int ptr = ((best - 1) % l.size() + l.size()) % l.size();
                 rest.add(l.with(te, l.elements(), ptr));
             }
         }
         first.addAll(rest);
         return first;
+    }
+
+    /**
+     * A loop left by coincident divisions is real only if its vertices lie inside the offset of
+     * every element of the parent that it lost (a collapsing channel between several divisions
+     * can otherwise leave a loop of pieces from both of its walls).
+     */
+    private boolean insideParent(LoopState parent, LoopState loop, double t) {
+        Optional<List<Vec2>> vs = loop.vertices(t);
+        if (vs.isEmpty()) {
+            return false;
+        }
+        for (int i = 0; i < parent.size(); i++) {
+            PocketElement e = parent.get(i);
+            if (e.zeroRadius() || indexOf(loop, e.number()) >= 0) {
+                continue;
+            }
+            for (Vec2 v : vs.get()) {
+                // in front of the element (not behind a wall of another sub-area) yet nearer than t
+                double f = e.offsetThrough(v);
+                if (f >= 0 && f < t - 10 * compar && inSector(parent, i, v, t)) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     private List<LoopState> splitLoop(LoopState l, int ia, int ib, Vec2 p, double tt) {

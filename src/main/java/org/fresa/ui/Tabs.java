@@ -16,7 +16,7 @@ final class Tabs {
                 new StepNcTab(ctx),
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
-                new UnavailableTab("Pocket", Module.POCKET),
+                new PocketTab(),
                 new UnavailableTab("Cutting", Module.CUTTING),
                 new GradingTab(ctx),
                 new UnavailableTab("Sole", Module.SOLE),

@@ -48,7 +48,7 @@ class Sinumerik7MPostTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"cavity01", "cavity03", "cavity04", "cavity07"})
+    @ValueSource(strings = {"cavity01", "cavity03", "cavity04", "cavity06", "cavity07"})
     void compatPostReproducesThePrintedProgram(String name) throws Exception {
         String nc = new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan(name));
         assertEquals(String.join("\n", golden(name)), String.join("\n", lines(nc)));

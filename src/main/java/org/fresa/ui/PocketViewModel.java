@@ -1,0 +1,157 @@
+package org.fresa.ui;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.fresa.chart.PlotScene;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Vec2;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.PocketService;
+import org.fresa.model.CamInputException;
+import org.fresa.pocket.LoopState;
+import org.fresa.pocket.PocketElement;
+import org.fresa.pocket.PocketPlan;
+import org.fresa.pocket.PocketToolpath;
+import org.fresa.pocket.RecognitionNode;
+import org.fresa.pocket.ToolTooLargeException;
+
+/**
+ * The Pocket tab's state without Swing: the settings being edited and the last computed result
+ * (the contour with element numbers, the recognition tree as text, the toolpath plot, the NC text).
+ */
+public final class PocketViewModel {
+
+    /**
+     * A computed pocket.
+     *
+     * @param scene contour (element numbers as labels), recognition subcontours and toolpath
+     * @param report the thesis's sizes and the recognition tree, like its Appendix C
+     * @param nc the NC program for the chosen post
+     */
+    public record Result(PlotScene scene, String report, String nc) {
+    }
+
+    private PocketSettings settings = new PocketSettings(Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3,
+            3200, 290, 100, "7m-compat");
+    private Optional<Result> result = Optional.empty();
+    private Optional<String> error = Optional.empty();
+
+    public PocketSettings settings() {
+        return settings;
+    }
+
+    public void setSettings(PocketSettings s) {
+        settings = s;
+    }
+
+    public Optional<Result> result() {
+        return result;
+    }
+
+    public Optional<String> error() {
+        return error;
+    }
+
+    /** Recomputes from the settings; on bad input keeps the message and clears the result. */
+    public void compute() {
+        try {
+            PocketPlan plan = PocketService.plan(settings);
+            String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString());
+            result = Optional.of(new Result(scene(plan), report(plan), nc));
+            error = Optional.empty();
+        } catch (CamInputException | IOException | ToolTooLargeException | IllegalArgumentException e) {
+            result = Optional.empty();
+            error = Optional.of(e.getMessage());
+        }
+    }
+
+    static List<Curve2> curves(LoopState s, double t) {
+        List<Curve2> out = new ArrayList<>();
+        Optional<List<Vec2>> vs = s.vertices(t);
+        if (vs.isEmpty()) {
+            return out;
+        }
+        List<Vec2> v = vs.get();
+        for (int i = 0; i < s.size(); i++) {
+            PocketElement e = s.get(i);
+            Vec2 a = v.get(i);
+            Vec2 b = v.get((i + 1) % s.size());
+            if (a.distance(b) < 1e-9) {
+                continue;
+            }
+            if (e.arc() && Math.abs(a.distance(e.center()) - b.distance(e.center())) < 1e-6) {
+                out.add(new Arc2(e.center(), a, b, e.k() == 1));
+            } else {
+                out.add(new Segment2(a, b));
+            }
+        }
+        return out;
+    }
+
+    private static PlotScene scene(PocketPlan plan) {
+        LoopState ref = plan.recognition().reference();
+        PlotScene scene = PlotScene.empty("pocket")
+                .with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, curves(ref, 0)));
+        List<Curve2> sub = new ArrayList<>();
+        collectSubcontours(plan.recognition().root(), sub);
+        scene = scene.with(new PlotScene.Layer("subcontours", PlotScene.Style.AUX, sub));
+        scene = scene.withToolpath(PocketToolpath.of(plan, true));
+        Optional<List<Vec2>> v = ref.vertices(0);
+        if (v.isPresent()) {
+            for (int i = 0; i < ref.size(); i++) {
+                PocketElement e = ref.get(i);
+                if (!e.zeroRadius()) {
+                    Vec2 a = v.get().get(i), b = v.get().get((i + 1) % ref.size());
+                    scene = scene.withLabel(a.interpolate(b, 0.5), Integer.toString(e.number()));
+                }
+            }
+        }
+        return scene;
+    }
+
+    private static void collectSubcontours(RecognitionNode n, List<Curve2> out) {
+        for (LoopState s : n.states()) {
+            if (s.tFrom() > 0) {
+                out.addAll(curves(s, s.tFrom() + 1e-6));
+            }
+        }
+        for (RecognitionNode c : n.children()) {
+            collectSubcontours(c, out);
+        }
+    }
+
+    /** The reported sizes and the tree, one subcontour per line. */
+    static String report(PocketPlan plan) {
+        StringBuilder sb = new StringBuilder();
+        var r = plan.recognition();
+        sb.append(String.format(Locale.ROOT, "FURO MAXIMO (largest hole)        %.3f mm%n", r.maxHoleDiameterMm()));
+        sb.append(String.format(Locale.ROOT, "DIAMETRO MAXIMO (largest tool)    %.3f mm%n", r.maxToolDiameterMm()));
+        sb.append(String.format(Locale.ROOT, "DIAMETRO p/ SUPERF (wall tool)    %.3f mm%n%n", r.wallToolDiameterMm()));
+        tree(r.root(), "", sb);
+        sb.append(System.lineSeparator()).append("passes (generation order):");
+        plan.generated().forEach(p -> sb.append(String.format(Locale.ROOT, " %.4f", p.offsetMm())));
+        return sb.toString();
+    }
+
+    private static void tree(RecognitionNode n, String indent, StringBuilder sb) {
+        for (LoopState s : n.states()) {
+            sb.append(indent).append("SC").append(n.id()).append(' ')
+                    .append(s.elements().stream().map(PocketElement::toString).toList())
+                    .append(String.format(Locale.ROOT, "  t = %.6f%n", s.tFrom()));
+        }
+        if (n.isLeaf()) {
+            sb.append(indent).append(String.format(Locale.ROOT, "F  t = %.6f%n", n.leafT()));
+        } else {
+            sb.append(indent).append(String.format(Locale.ROOT, "divides at t = %.6f%n", n.splitT()));
+            for (RecognitionNode c : n.children()) {
+                tree(c, indent + "    ", sb);
+            }
+        }
+    }
+}

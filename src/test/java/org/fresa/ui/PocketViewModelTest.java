@@ -1,0 +1,34 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.fresa.chart.PlotScene;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.junit.jupiter.api.Test;
+
+class PocketViewModelTest {
+
+    @Test
+    void computesTreeSceneAndProgramForCavity03() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90, "7m-compat"));
+        m.compute();
+        PocketViewModel.Result r = m.result().orElseThrow();
+        assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
+        assertTrue(r.report().contains("DIAMETRO MAXIMO (largest tool)    12.271 mm"), r.report());
+        assertTrue(r.nc().startsWith("N05 %\n"));
+        assertEquals(5, r.scene().labels().size());
+        assertTrue(r.scene().layers().stream().anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
+    }
+
+    @Test
+    void aMissingFileIsAMessageNotAnException() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(new PocketSettings(Path.of("samples/pocket/none.dad"), 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, "7m"));
+        m.compute();
+        assertTrue(m.result().isEmpty());
+        assertTrue(m.error().isPresent());
+    }
+}
