@@ -23,7 +23,8 @@ import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.Recognition;
 import org.fresa.pocket.ToolTooLargeException;
-import org.fresa.post.PocketRs274Fallback;
+import org.fresa.post.NcPost;
+import org.fresa.post.NcPosts;
 import org.fresa.post.Sinumerik7MPost;
 
 /**
@@ -33,8 +34,8 @@ import org.fresa.post.Sinumerik7MPost;
  */
 public final class PocketService {
 
-    /** Posts this module writes itself. */
-    public static final List<String> POSTS = List.of("7m-compat", "7m", "linuxcnc");
+    /** The thesis's own dialect, written by this module; every other post comes from {@link NcPosts}. */
+    public static final List<String> SINUMERIK_7M_POSTS = List.of("7m-compat", "7m");
 
     private PocketService() {
     }
@@ -89,13 +90,12 @@ public final class PocketService {
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
             case "7m":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED).write(plan);
-            case "linuxcnc": {
+            default: {
+                NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
-                new PocketRs274Fallback().write(PocketToolpath.of(plan, true), programName, w);
+                p.write(PocketToolpath.of(plan, true), programName, w);
                 return w.toString();
             }
-            default:
-                throw new IllegalArgumentException(post);
         }
     }
 
@@ -103,11 +103,9 @@ public final class PocketService {
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
-        if (!POSTS.contains(s.post())) {
-            if (List.of("iso", "fanuc", "840d").contains(s.post())) {
-                return new TaskOutcome(1, List.of("post " + s.post() + " not available yet"), Map.of(), List.of());
-            }
-            throw new CamInputException(s.post(), "unknown post; pocket posts: 7m-compat, 7m, linuxcnc, iso, fanuc, 840d");
+        if (!SINUMERIK_7M_POSTS.contains(s.post()) && NcPosts.byName(s.post()).isEmpty()) {
+            throw new CamInputException("--post", "unknown post '" + s.post() + "': expected 7m-compat, 7m or "
+                    + String.join(", ", NcPosts.names()));
         }
         PocketPlan plan;
         try {

@@ -1,6 +1,7 @@
 package org.fresa.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -69,9 +70,17 @@ class PocketServiceTest {
     }
 
     @Test
-    void genericPostsNotYetMergedExitWithOne(@TempDir Path dir) throws Exception {
-        TaskOutcome o = PocketService.run(settings("cavity01", "fanuc"), dir.resolve("c.nc"), ProgressMonitor.NONE);
-        assertEquals(1, o.exitStatus());
-        assertEquals(List.of("post fanuc not available yet"), o.problems());
+    void everyGenericPostWritesTheProgram(@TempDir Path dir) throws Exception {
+        for (String post : List.of("iso", "fanuc", "840d", "linuxcnc")) {
+            TaskOutcome o = PocketService.run(settings("cavity01", post), dir.resolve(post + ".nc"), ProgressMonitor.NONE);
+            assertEquals(0, o.exitStatus(), post + ": " + o.problems());
+            assertTrue(Files.readString(dir.resolve(post + ".nc")).contains(" X"), post);
+        }
+    }
+
+    @Test
+    void anUnknownPostIsBadUsage(@TempDir Path dir) {
+        assertThrows(CamInputException.class, () -> PocketService.run(settings("cavity01", "heidenhain"),
+                dir.resolve("h.nc"), ProgressMonitor.NONE));
     }
 }
