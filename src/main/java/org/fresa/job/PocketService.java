@@ -48,10 +48,19 @@ public final class PocketService {
         if (lower.endsWith(".dad")) {
             return DadReader.read(text, file.toString());
         }
+        List<org.fresa.geom.Contour> contours;
         if (lower.endsWith(".dxf")) {
-            throw new CamInputException(file.toString(), "DXF pocket input is not available yet (issue 8): use a .dad or .contour file");
+            org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(file);
+            org.fresa.cutting.Chainer.Chains chains = org.fresa.cutting.Chainer.chain(d.curves(), 0.001);
+            if (!chains.open().isEmpty()) {
+                throw new CamInputException(file.toString(), chains.open().size()
+                        + " open chain(s) in the drawing: a pocket needs one closed contour");
+            }
+            contours = new ArrayList<>(chains.closed());
+            contours.sort(java.util.Comparator.comparingDouble(org.fresa.geom.Contour::area).reversed());
+        } else {
+            contours = ContourFile.read(new StringReader(text), file.toString());
         }
-        var contours = ContourFile.read(new StringReader(text), file.toString());
         if (contours.isEmpty()) {
             throw new CamInputException(file.toString(), "no contour in the file");
         }

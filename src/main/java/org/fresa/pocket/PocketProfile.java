@@ -82,8 +82,50 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
      * Converts a contour of segments and arcs (any orientation) to thesis elements: lines in the
      * canonical unit form with A >= 0, arcs convex when they turn with the clockwise contour.
      */
+    /**
+     * The contour with consecutive elements on one carrier joined: arcs on the same circle with
+     * the same sense, segments on the same line. The recognition tree needs each element to be a
+     * different carrier (two pieces of one circle have no incentre); drawings often split a circle
+     * where the contour starts. At least two elements are kept.
+     */
+    static Contour mergeCarriers(Contour c) {
+        List<Curve2> list = new ArrayList<>(c.curves());
+        boolean changed = true;
+        while (changed && list.size() > 2) {
+            changed = false;
+            for (int i = 0; i < list.size() && list.size() > 2; i++) {
+                int j = (i + 1) % list.size();
+                Curve2 a = list.get(i);
+                Curve2 b = list.get(j);
+                Curve2 joined = null;
+                if (a instanceof Arc2 x && b instanceof Arc2 y && x.ccw() == y.ccw()
+                        && x.center().distance(y.center()) <= 1e-9 * Math.max(1, x.radius())
+                        && Math.abs(x.radius() - y.radius()) <= 1e-9 * Math.max(1, x.radius())
+                        && Math.abs(x.sweepRad() + y.sweepRad()) < 2 * Math.PI - 1e-9) {
+                    joined = new Arc2(x.center(), x.start(), y.end(), x.ccw());
+                } else if (a instanceof Segment2 x && b instanceof Segment2 y) {
+                    Vec2 u = x.direction();
+                    Vec2 v = y.direction();
+                    if (u.dot(v) > 0 && Math.abs(u.cross(v)) <= 1e-12 * u.norm() * v.norm()) {
+                        joined = new Segment2(x.start(), y.end());
+                    }
+                }
+                if (joined != null) {
+                    list.set(i, joined);
+                    list.remove(j);
+                    if (j < i) {
+                        // the joined element wraps past the end: keep the contour's start where it was
+                        list.add(0, list.remove(list.size() - 1));
+                    }
+                    changed = true;
+                }
+            }
+        }
+        return list.size() == c.size() ? c : new Contour(list);
+    }
+
     public static PocketProfile fromContours(List<Contour> contours) {
-        Contour outer = contours.get(0);
+        Contour outer = mergeCarriers(contours.get(0));
         if (outer.isCcw()) {
             outer = outer.reversed();
         }
