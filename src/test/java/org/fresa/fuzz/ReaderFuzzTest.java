@@ -41,4 +41,44 @@ class ReaderFuzzTest {
             // refusing bad input with a message is the wanted outcome
         }
     }
+
+    @FuzzTest(maxDuration = "20s")
+    void part21AndIso14649BindingAcceptOrRefuse(byte[] data) throws IOException {
+        try {
+            org.fresa.stepnc.StepNcReader.read(new java.io.ByteArrayInputStream(data), "fuzz.stp");
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        }
+    }
+
+    @FuzzTest(maxDuration = "20s")
+    void dxfReaderAcceptsOrRefuses(byte[] data) {
+        try {
+            org.fresa.dxf.DxfReader.read(data, "fuzz.dxf", org.fresa.dxf.DxfReadOptions.DEFAULT);
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        }
+    }
+
+    @FuzzTest(maxDuration = "20s")
+    void dadReaderAcceptsOrRefuses(byte[] data) {
+        try {
+            org.fresa.pocket.DadReader.read(new String(data, StandardCharsets.ISO_8859_1), "fuzz.dad");
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        }
+    }
+
+    @FuzzTest(maxDuration = "20s")
+    void robotProgramXmlReaderAcceptsOrRefuses(byte[] data) throws IOException {
+        Path f = Files.createTempFile("fuzz-program", ".xml");
+        try {
+            Files.write(f, data);
+            org.fresa.job.RobotProgramXml.read(f);
+        } catch (CamInputException expected) {
+            // refusing bad input with a message is the wanted outcome
+        } finally {
+            Files.deleteIfExists(f);
+        }
+    }
 }
