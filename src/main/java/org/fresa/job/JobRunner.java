@@ -34,7 +34,7 @@ public final class JobRunner {
             case GRADE:
                 return TaskOutcome.unavailable(Module.GRADING);
             case SOLE:
-                return TaskOutcome.unavailable(Module.SOLE);
+                return SoleService.run(job, out, progress);
             default:
                 throw new IllegalStateException("unknown task " + job.task());
         }
