@@ -12,7 +12,7 @@ public enum Module {
     POCKET("pocket milling", 7, false),
     CUTTING("sheet cutting", 8, false),
     GRADING("grading", 9, false),
-    SOLE("sole mould", 10, false),
+    SOLE("sole mould", 10, true),
     BENCH("benchmarks", 11, false);
 
     private final String title;
