@@ -19,7 +19,7 @@ final class Tabs {
                 new UnavailableTab("Pocket", Module.POCKET),
                 new UnavailableTab("Cutting", Module.CUTTING),
                 new UnavailableTab("Grading", Module.GRADING),
-                new UnavailableTab("Sole", Module.SOLE),
+                new SoleTab(ctx),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
     }
 }
