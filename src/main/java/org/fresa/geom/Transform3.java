@@ -160,6 +160,25 @@ public record Transform3(
         return Math.atan2(twoSin, twoCos);
     }
 
+    /**
+     * The rotation as Z-Y-X Euler angles in degrees, R = Rz(a) Ry(b) Rx(c), returned as
+     * (a, b, c): roll, pitch, yaw of trajectory.csv and KUKA's A, B, C. b is in [-90, 90]; at
+     * b = +-90 (gimbal lock) c is set to 0 and a carries the whole turn about z.
+     */
+    public Vec3 zyxAnglesDeg() {
+        double b = Math.atan2(-r20, Math.hypot(r00, r10));
+        double a;
+        double c;
+        if (Math.hypot(r00, r10) < 1e-12) {
+            c = 0;
+            a = Math.atan2(-r01, r11);
+        } else {
+            a = Math.atan2(r10, r00);
+            c = Math.atan2(r21, r22);
+        }
+        return new Vec3(Math.toDegrees(a), Math.toDegrees(b), Math.toDegrees(c));
+    }
+
     public boolean eq(Transform3 o, Tolerance tol) {
         return translationPart().eq(o.translationPart(), tol) && rotationAngleTo(o) <= tol.angularRad();
     }

@@ -24,15 +24,19 @@ public final class JobRunner {
             case STEPNC:
                 return StepNcService.run(job, out, progress);
             case TOOLPATH:
-                return TaskOutcome.unavailable(Module.TOOLPATH);
+                return ToolpathService.run(job, out, progress);
             case ROBOT:
-                return TaskOutcome.unavailable(Module.ROBOT);
-            case POCKET:
-                return TaskOutcome.unavailable(Module.POCKET);
+                return RobotService.run(job, out, progress);
+            case POCKET: {
+                JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
+                out.create();
+                String ext = s.post().startsWith("7m") ? ".nc" : ".ngc";
+                return PocketService.run(s, out.resolve("pocket" + ext), progress);
+            }
             case CUT:
-                return TaskOutcome.unavailable(Module.CUTTING);
+                return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);
             case GRADE:
-                return TaskOutcome.unavailable(Module.GRADING);
+                return GradingService.run(require(job.grading(), "grading", job), out, progress);
             case SOLE:
                 return SoleService.run(job, out, progress);
             default:

@@ -6,14 +6,14 @@ package org.fresa.job;
  */
 public enum Module {
     STEPNC("STEP-NC import", 3, true),
-    TOOLPATH("STEP-NC toolpaths and G-code", 4, false),
-    ROBOT("robot cell and joint trajectory", 5, false),
-    ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, false),
-    POCKET("pocket milling", 7, false),
-    CUTTING("sheet cutting", 8, false),
-    GRADING("grading", 9, false),
+    TOOLPATH("STEP-NC toolpaths and G-code", 4, true),
+    ROBOT("robot cell and joint trajectory", 5, true),
+    ROBOT_PROGRAMS("robot programs (XML, RAPID, KRL)", 6, true),
+    POCKET("pocket milling", 7, true),
+    CUTTING("sheet cutting", 8, true),
+    GRADING("grading", 9, true),
     SOLE("sole mould", 10, true),
-    BENCH("benchmarks", 11, false);
+    BENCH("benchmarks", 11, true);
 
     private final String title;
     private final int issue;

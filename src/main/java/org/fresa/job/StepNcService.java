@@ -301,7 +301,8 @@ public final class StepNcService {
             t.diameterMm().ifPresent(d -> sb.append(" D").append(n(d)).append(" mm"));
         });
         var tech = o.technology();
-        tech.feedrate().ifPresent(fd -> sb.append("; feed ").append(n(fd)).append(' ').append(tech.feedrateUnit()));
+        tech.feedrate().ifPresent(fd -> sb.append("; feed ").append(n(fd)).append(' ')
+                .append(tech.feedrateUnit().equals("unstated") ? "(unit not stated)" : tech.feedrateUnit()));
         tech.spindleRpm().ifPresent(s -> sb.append(", spindle ").append(n(s)).append(" rpm"));
         return sb.toString();
     }

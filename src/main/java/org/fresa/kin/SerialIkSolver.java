@@ -14,7 +14,7 @@ import org.fresa.geom.Transform3;
 final class SerialIkSolver implements IkSolver {
 
     /** Random extra starts for a cold solve, after the thesis's five and mid-range. */
-    private static final int RANDOM_STARTS = 40;
+    private static final int RANDOM_STARTS = 24;
     /** Two solutions closer than this (rad or mm, per joint) are the same. */
     private static final double SAME_SOLUTION = 1e-6;
 
@@ -24,6 +24,8 @@ final class SerialIkSolver implements IkSolver {
     /** Orientation rows are scaled by this length so that mm and rad weigh alike. */
     private final double rotWeight;
     private final double[][] starts;
+    /** Closed-form start configurations for arms built like the IRB-140. */
+    private final java.util.Optional<SphericalWristSeeds> closedForm;
 
     private final double[] target = new double[Pose.SIZE];
     private final double[] f;
@@ -59,6 +61,8 @@ final class SerialIkSolver implements IkSolver {
         q = new double[n];
         qt = new double[n];
         starts = startConfigurations();
+        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? SphericalWristSeeds.of(chain)
+                : java.util.Optional.empty();
     }
 
     private double[][] startConfigurations() {
@@ -139,8 +143,21 @@ final class SerialIkSolver implements IkSolver {
         List<IkResult.Converged> found = new ArrayList<>();
         List<double[]> internal = new ArrayList<>();
         int spent = 0;
-        for (double[] s : starts) {
+        List<double[]> seeds = new ArrayList<>();
+        if (closedForm.isPresent()) {
+            seeds.addAll(closedForm.get().solutions(target));
+        }
+        int closedFormSeeds = seeds.size();
+        seeds.addAll(java.util.Arrays.asList(starts));
+        for (int k = 0; k < seeds.size(); k++) {
+            if (k == closedFormSeeds + 6 && !found.isEmpty() && closedFormSeeds > 0) {
+                break; // the closed form found the branches: the random starts add nothing
+            }
+            double[] s = seeds.get(k);
             System.arraycopy(s, 0, q, 0, n);
+            for (int i = 0; i < n; i++) {
+                q[i] = clamp(i, q[i]);
+            }
             boolean ok = run();
             spent += lastIterations;
             if (!ok) {
@@ -203,10 +220,19 @@ final class SerialIkSolver implements IkSolver {
         double energy = evaluate(q, e);
         double mu = 1e-12;
         int maxIt = options.maxIterations();
+        double checkpoint = energy;
         for (int it = 0; it < maxIt; it++) {
             if (converged(e)) {
                 lastIterations = it;
                 return true;
+            }
+            if (it % 10 == 9) {
+                // a local minimum away from the target (an unreachable pose): stop early
+                if (energy > 0.9 * checkpoint) {
+                    lastIterations = it;
+                    return false;
+                }
+                checkpoint = energy;
             }
             chain.jacobian(f, j, rotWeight);
             normalEquations(e);

@@ -73,10 +73,10 @@ public final class LineArcOffsetter {
                 kept.add(p);
             }
         }
-        List<Contour> loops = OffsetChains.loops(kept, 1e-7 * scale);
+        List<Contour> loops = OffsetChains.loops(kept, Math.max(1e-5, 1e-8 * scale));
         List<Contour> out = new ArrayList<>();
         for (Contour c : loops) {
-            if (c.area() > tol.linear() * tol.linear()) {
+            if (c.area() > Math.max(tol.linear() * tol.linear(), 1e-12 * scale * scale)) {
                 out.add(c);
             }
         }
@@ -132,15 +132,18 @@ public final class LineArcOffsetter {
             return new Segment2(s.start().plus(n), s.end().plus(n));
         }
         Arc2 a = (Arc2) c;
-        double r = a.radius();
-        double r2 = a.ccw() ? r - left : r + left;
-        if (Math.abs(r2) <= eps) {
+        double rs = a.radius();
+        // chained drawings may leave the end a hair off the start's radius: offset each end from its own
+        double re = a.center().distance(a.end());
+        double r2s = a.ccw() ? rs - left : rs + left;
+        double r2e = a.ccw() ? re - left : re + left;
+        if (Math.abs(r2s) <= eps || Math.abs(r2e) <= eps || Math.signum(r2s) != Math.signum(r2e)) {
             return null;
         }
-        Vec2 us = a.start().minus(a.center()).times(1 / r);
-        Vec2 ue = a.end().minus(a.center()).times(1 / a.center().distance(a.end()));
+        Vec2 us = a.start().minus(a.center()).times(1 / rs);
+        Vec2 ue = a.end().minus(a.center()).times(1 / re);
         // a negative radius is the arc turned inside out: same centre and sense, opposite side
-        return new Arc2(a.center(), a.center().plus(us.times(r2)), a.center().plus(ue.times(r2)), a.ccw());
+        return new Arc2(a.center(), a.center().plus(us.times(r2s)), a.center().plus(ue.times(r2e)), a.ccw());
     }
 
     /** Every raw curve split at its intersections with every other. */

@@ -37,7 +37,8 @@ final class OffsetChains {
             used[first] = true;
             Vec2 start = pieces.get(first).start();
             Vec2 at = pieces.get(first).end();
-            boolean closed = at.distance(start) <= tol;
+            // one piece closes a loop only when it is a whole circle: a tiny join arc also starts near its end
+            boolean closed = pieces.get(first) instanceof Arc2 a0 && a0.isFullCircle();
             while (!closed) {
                 int next = nearestStart(at, byStart, pieces, used, cell, tol);
                 if (next < 0) {
@@ -47,6 +48,9 @@ final class OffsetChains {
                 chain.add(next);
                 at = pieces.get(next).end();
                 closed = at.distance(start) <= tol;
+                if (!closed && at.distance(start) <= tol * 100 && nearestStart(at, byStart, pieces, used, cell, tol) < 0) {
+                    closed = true;
+                }
             }
             if (closed) {
                 out.add(snapped(chain, pieces));

@@ -29,6 +29,7 @@ import org.fresa.stepnc.StepNcProgram.Dialect;
 final class Iso14649Binder {
 
     private static final int MAX_WORKPLAN_NESTING = 1000;
+    private static final org.fresa.geom.Tolerance SAME_FRAME = org.fresa.geom.Tolerance.DEFAULT;
 
     private final StepFile file;
     private final Iso14649Schema schema = Iso14649Schema.get();
@@ -575,7 +576,7 @@ final class Iso14649Binder {
                 case "PLANAR_FACE" -> "removal_boundary";
                 default -> null;
             };
-            Optional<Profile> profile = profileAttr == null ? Optional.empty() : profile(f, profileAttr);
+            Optional<Profile> profile = profileAttr == null ? Optional.empty() : profile(f, profileAttr, placement);
             String travelAttr = f.name().equals("STEP") ? "open_boundary" : "course_of_travel";
             Optional<TravelPath> travel = f.has(travelAttr) ? travel(f, travelAttr) : Optional.empty();
             Optional<String> bottom = Optional.empty();
@@ -612,7 +613,7 @@ final class Iso14649Binder {
                 num(p, "sweep_angle")));
     }
 
-    private Optional<Profile> profile(E f, String attr) throws StepParseException {
+    private Optional<Profile> profile(E f, String attr, Transform3 featurePlacement) throws StepParseException {
         Optional<Long> id = refId(f, attr);
         if (id.isEmpty()) {
             return Optional.empty();
@@ -626,6 +627,12 @@ final class Iso14649Binder {
             throw error(f, f.name() + "." + attr + " should be a profile, found #" + id.get() + " " + p.name());
         }
         Transform3 pl = placementAttr(p, "placement").orElse(Transform3.IDENTITY);
+        if (!pl.equals(Transform3.IDENTITY) && pl.eq(featurePlacement, SAME_FRAME)) {
+            // GRIMA's writers repeat the feature placement here, in the workpiece frame; ISO
+            // means a frame relative to the feature, so the repetition stands for the feature frame
+            spellings.add("profile placements repeat their feature's placement (read as the feature frame)");
+            pl = Transform3.IDENTITY;
+        }
         Profile out = switch (p.name()) {
             case "RECTANGULAR_CLOSED_PROFILE" ->
                 new Profile.Rectangular(p.name(), pl, required(p, "profile_width"), required(p, "profile_length"));

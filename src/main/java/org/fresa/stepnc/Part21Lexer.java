@@ -43,6 +43,7 @@ final class Part21Lexer {
     long currentInstance;
 
     private final StringBuilder sb = new StringBuilder();
+    private final java.util.Map<CharSequence, String> keywords = new java.util.TreeMap<>(CharSequence::compare);
 
     Part21Lexer(Reader in, String source) {
         this.in = in;
@@ -124,8 +125,16 @@ final class Part21Lexer {
         }
     }
 
+    private static final String[] SINGLE = new String[128];
+
+    static {
+        for (char c : "(),=;$*".toCharArray()) {
+            SINGLE[c] = String.valueOf(c);
+        }
+    }
+
     private void single(Tok t) throws IOException {
-        text = String.valueOf((char) readChar());
+        text = SINGLE[readChar()];
         tok = t;
     }
 
@@ -161,20 +170,32 @@ final class Part21Lexer {
 
     private void instanceName() throws IOException, StepParseException {
         readChar();
+        long v = 0;
+        int digits = 0;
+        boolean overflow = false;
         sb.setLength(0);
         while (isDigit(peekChar())) {
-            sb.append((char) readChar());
+            int d = readChar() - '0';
+            digits++;
+            if (overflow || v > (Long.MAX_VALUE - d) / 10) {
+                overflow = true;
+                if (sb.length() == 0) {
+                    sb.append(v);
+                }
+                sb.append((char) ('0' + d));
+            } else {
+                v = v * 10 + d;
+            }
         }
-        if (sb.length() == 0) {
+        if (digits == 0) {
             throw errorHere("'#' must be followed by the digits of an instance name");
         }
-        text = sb.toString();
-        try {
-            longValue = Long.parseLong(text);
-        } catch (NumberFormatException e) {
-            throw errorHere("instance name #" + abbreviate(text) + " is larger than 64 bits (at most #"
+        if (overflow) {
+            throw errorHere("instance name #" + abbreviate(sb.toString()) + " is larger than 64 bits (at most #"
                     + Long.MAX_VALUE + ")");
         }
+        longValue = v;
+        text = null;
         tok = Tok.INSTANCE;
     }
 
@@ -241,7 +262,13 @@ final class Part21Lexer {
                 break;
             }
         }
-        text = sb.toString().toUpperCase(Locale.ROOT);
+        // one String per distinct keyword: a large file repeats a few hundred entity names
+        String k = keywords.get(sb);
+        if (k == null) {
+            k = sb.toString().toUpperCase(Locale.ROOT);
+            keywords.put(sb.toString(), k);
+        }
+        text = k;
         tok = Tok.KEYWORD;
     }
 

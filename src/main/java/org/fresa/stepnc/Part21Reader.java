@@ -62,7 +62,7 @@ public final class Part21Reader {
 
     private StepFile file() throws IOException, StepParseException {
         lx.next();
-        expectKeyword("ISO-10303-21", "a Part 21 file starts with ISO-10303-21;");
+        expectKeyword("ISO-10303-21", "ISO-10303-21; (the first keyword of a Part 21 file)");
         expect(Tok.SEMICOLON, "';' after ISO-10303-21");
         expectKeyword("HEADER", "the header section (HEADER;)");
         expect(Tok.SEMICOLON, "';' after HEADER");
@@ -143,14 +143,14 @@ public final class Part21Reader {
         if (id == 0) {
             throw lx.errorHere("instance name #0 is not allowed (names start at #1)");
         }
+        lx.currentInstance = id;
+        lx.next();
+        expect(Tok.EQUALS, "'=' after the instance name");
         StepInstance earlier = instances.get(id);
         if (earlier != null) {
             throw new StepParseException(source, line, col, id,
                     "instance name #" + id + " is defined twice (first at line " + earlier.line() + ")");
         }
-        lx.currentInstance = id;
-        lx.next();
-        expect(Tok.EQUALS, "'=' after the instance name");
         List<StepRecord> records;
         if (lx.tok == Tok.KEYWORD) {
             records = List.of(simpleRecord(0));
@@ -212,9 +212,9 @@ public final class Part21Reader {
             case DOLLAR -> v = StepValue.UNSET;
             case STAR -> v = StepValue.DERIVED;
             case INTEGER -> v = new StepValue.Int(lx.longValue);
-            case REAL -> v = new StepValue.Real(lx.doubleValue);
-            case STRING -> v = new StepValue.Text(lx.text);
-            case ENUMERATION -> v = new StepValue.Enumeration(lx.text);
+            case REAL -> v = real(lx.doubleValue);
+            case STRING -> v = text(lx.text);
+            case ENUMERATION -> v = enums.computeIfAbsent(lx.text, StepValue.Enumeration::new);
             case BINARY -> v = new StepValue.Binary(lx.text);
             case INSTANCE -> {
                 long id = lx.longValue;
@@ -247,6 +247,35 @@ public final class Part21Reader {
         return v;
     }
 
+    // shared values: a large file repeats .T., '', 0.0 and a few names millions of times
+    private final Map<String, StepValue> enums = new java.util.HashMap<>();
+    private final Map<String, StepValue.Text> texts = new java.util.HashMap<>();
+    private static final StepValue.Real ZERO = new StepValue.Real(0.0);
+    private static final StepValue.Real ONE = new StepValue.Real(1.0);
+    private static final StepValue.Real MINUS_ONE = new StepValue.Real(-1.0);
+    private static final long ZERO_BITS = Double.doubleToRawLongBits(0.0);
+
+    private static StepValue real(double d) {
+        if (Double.doubleToRawLongBits(d) == ZERO_BITS) {
+            return ZERO;
+        }
+        return d == 1.0 ? ONE : d == -1.0 ? MINUS_ONE : new StepValue.Real(d);
+    }
+
+    private StepValue text(String s) {
+        if (s.length() > 40) {
+            return new StepValue.Text(s);
+        }
+        StepValue.Text t = texts.get(s);
+        if (t == null) {
+            t = new StepValue.Text(s);
+            if (texts.size() < 8192) {
+                texts.put(s, t);
+            }
+        }
+        return t;
+    }
+
     private void expect(Tok t, String what) throws IOException, StepParseException {
         if (lx.tok != t) {
             throw unexpected(what);
@@ -266,7 +295,7 @@ public final class Part21Reader {
             case EOF -> "the end of the file";
             case STRING -> "a string";
             case KEYWORD -> shorten(lx.text);
-            case INSTANCE -> "#" + lx.text;
+            case INSTANCE -> "#" + lx.longValue;
             default -> "'" + shorten(lx.text) + "'";
         };
         return lx.errorHere("expected " + expected + ", found " + found);

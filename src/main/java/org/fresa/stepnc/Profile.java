@@ -10,7 +10,8 @@ import org.fresa.geom.Vec3;
  * An ISO 14649-10 profile: the outline of a pocket or boss, the cross-section of a slot or step,
  * the removal boundary of a planar face. Lengths in mm, angles in radians as the file writes
  * them. The placement is the profile's frame in the feature frame (identity when the file leaves
- * it unset); closed profiles are centred on their frame's origin, as ISO 14649-10 defines them.
+ * it unset, and when it repeats the feature's own placement, as GRIMA's writers do); closed
+ * profiles are centred on their frame's origin, as ISO 14649-10 defines them.
  */
 public sealed interface Profile {
 

@@ -13,12 +13,12 @@ final class Tabs {
 
     static List<ModuleTab> create(AppContext ctx) {
         return List.of(
-                new UnavailableTab("STEP-NC", Module.STEPNC),
+                new StepNcTab(ctx),
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
                 new UnavailableTab("Pocket", Module.POCKET),
                 new UnavailableTab("Cutting", Module.CUTTING),
-                new UnavailableTab("Grading", Module.GRADING),
+                new GradingTab(ctx),
                 new SoleTab(ctx),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
     }

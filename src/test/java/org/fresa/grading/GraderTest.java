@@ -101,6 +101,18 @@ class GraderTest {
     }
 
     @Test
+    void aClockwiseOutlineGradesAsWell() throws Exception {
+        Contour base = sole40().reversed();
+        Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, List.of(36.0, 44.0)), "sole");
+        for (GradedSize s : g.gradeAll().sizes()) {
+            Contour out = s.output().get(0);
+            assertTrue(!out.isCcw());
+            double worst = worstDistanceToExactImage(base, out, PantographMap.of(g.frame(), s.factors()));
+            assertTrue(worst <= GradingPlan.DEFAULT_ARC_TOLERANCE_MM, "deviation " + worst);
+        }
+    }
+
+    @Test
     void theBaseSizeComesBackUnchanged() throws Exception {
         Contour base = sole40();
         Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, List.of(40.0)), "sole");
@@ -126,6 +138,22 @@ class GraderTest {
         Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, sizes36To44()), "sole");
         assertAll(() -> assertEquals(Vec2.UNIT_Y.negated(), g.frame().lengthAxis()),
                 () -> assertEquals(0, g.origin().norm(), 1e-9));
+    }
+
+    /**
+     * The thesis's real sole (App. F): the origin found is the centre of its heel circle C1,
+     * (0, 0.2) as the seed computes, not the (0, 0) the thesis drew it about; and the measured
+     * extents are 269.227 x 92.950 mm where the thesis's program states CP 270 and LP 90, so the
+     * thesis's CP and LP are nominal values, not the drawn outline's extents.
+     */
+    @Test
+    void theThesisSoleIsGradedAboutItsHeelCircleCentre() throws Exception {
+        Contour sole = ThesisPatterns.sole40().toContour();
+        Grader g = Grader.of(List.of(sole), GradingPlan.of(SizeSystem.BR, 40, List.of(42.0)), "thesis sole");
+        assertAll(() -> assertEquals(0, g.origin().distance(new Vec2(0, 0.2)), 1e-3),
+                () -> assertEquals(Vec2.UNIT_Y, g.frame().lengthAxis()),
+                () -> assertEquals(269.227, g.rule().baseLengthMm(), 1e-3),
+                () -> assertEquals(92.950, g.rule().baseWidthMm(), 1e-3));
     }
 
     @Test

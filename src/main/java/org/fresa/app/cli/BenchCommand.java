@@ -1,7 +1,9 @@
 package org.fresa.app.cli;
 
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.Benchmarks;
+import org.fresa.job.Json;
+import org.fresa.job.TaskOutcome;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -19,6 +21,23 @@ final class BenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.BENCH);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), false, progress -> {
+            java.nio.file.Path jar = null;
+            try {
+                java.nio.file.Path self = java.nio.file.Path.of(BenchCommand.class.getProtectionDomain().getCodeSource()
+                        .getLocation().toURI());
+                jar = self.toString().endsWith(".jar") ? self : null;
+            } catch (java.net.URISyntaxException | SecurityException e) {
+                jar = null;
+            }
+            java.nio.file.Path root = jar != null ? jar.toAbsolutePath().getParent().getParent() : java.nio.file.Path.of("");
+            java.util.Map<String, Object> figures = Benchmarks.run(root, jar, progress);
+            if (json) {
+                spec.commandLine().getOut().println(Json.write(figures));
+            } else {
+                spec.commandLine().getOut().print(Benchmarks.table(figures));
+            }
+            return new TaskOutcome(0, java.util.List.of(), java.util.Map.of(), java.util.List.of());
+        });
     }
 }

@@ -39,9 +39,12 @@ public final class CliSupport {
         try {
             TaskOutcome outcome = task.run(progress);
             TerminalProgress.clear(progress);
+            // a problem met at many places is said once, with its count
+            java.util.Map<String, Integer> said = new java.util.LinkedHashMap<>();
             for (String p : outcome.problems()) {
-                err.println("fresa: " + p);
+                said.merge(p, 1, Integer::sum);
             }
+            said.forEach((p, n) -> err.println("fresa: " + p + (n > 1 ? " (" + n + " times)" : "")));
             if (json) {
                 out.println(Json.write(outcome.summary()));
             } else {

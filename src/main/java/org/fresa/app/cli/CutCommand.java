@@ -2,7 +2,8 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.CuttingService;
+import org.fresa.job.JobSettings.CuttingSettings;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -38,8 +39,8 @@ final class CutCommand implements Callable<Integer> {
     @Option(names = "--lead", paramLabel = "arc|line", defaultValue = "arc", description = "lead shape")
     String lead;
 
-    @Option(names = "--tolerance", paramLabel = "T", defaultValue = "0.001", description = "chaining gap tolerance (drawing units)")
-    double tolerance;
+    @Option(names = "--tolerance", paramLabel = "T", description = "chaining gap tolerance in drawing units (default 0.001 mm)")
+    Double tolerance;
 
     @Option(names = "--units", paramLabel = "mm|inch|auto", defaultValue = "auto", description = "drawing units; auto reads $INSUNITS")
     String units;
@@ -55,6 +56,9 @@ final class CutCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.CUTTING);
+        CuttingSettings s = new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead,
+                tolerance == null ? 0.001 : tolerance, units, paperMode, post);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
+                progress -> CuttingService.run(s, out, tolerance != null, progress));
     }
 }

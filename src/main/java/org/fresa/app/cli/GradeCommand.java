@@ -1,8 +1,16 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
+import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.geom.Vec2;
+import org.fresa.grading.ArcMode;
+import org.fresa.grading.Coordination;
+import org.fresa.job.GradingService;
+import org.fresa.job.JobSettings.GradingSettings;
+import org.fresa.job.OutputFolder;
+import org.fresa.model.CamInputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -51,11 +59,59 @@ final class GradeCommand implements Callable<Integer> {
             description = "additive (the thesis) or multiplicative (default)")
     String shrinkageMode;
 
+    @Option(names = "--arcs", paramLabel = "MODE", defaultValue = "biarc",
+            description = "graded arcs as biarc (within 0.005 mm of the exact ellipse, default) or three-point "
+                    + "(the thesis's circle through the graded start, middle and end)")
+    String arcs;
+
+    @Option(names = "--length-axis", paramLabel = "DEG",
+            description = "direction of the length axis, heel to toe, in degrees from +x (default: the outline's "
+                    + "longer extent)")
+    Double lengthAxisDeg;
+
+    @Option(names = "--coordination", paramLabel = "MM",
+            description = "one heel per group of sizes: points up to MM from the origin along the length axis "
+                    + "grade as the group's middle size (the thesis's coordination; implies three-point arcs)")
+    Double coordinationMm;
+
+    @Option(names = "--heel-group", paramLabel = "N", defaultValue = "3",
+            description = "sizes per heel with --coordination (default 3)")
+    int heelGroup;
+
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.GRADING);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            GradingSettings s = new GradingSettings(outline.toAbsolutePath(), baseSize, sizes, halfSizes, system,
+                    lengthStepMm == null ? OptionalDouble.empty() : OptionalDouble.of(lengthStepMm),
+                    widthStepMm == null ? OptionalDouble.empty() : OptionalDouble.of(widthStepMm), origin(),
+                    shrinkage, shrinkageMode);
+            GradingService.Options o;
+            try {
+                o = new GradingService.Options(ArcMode.ofId(arcs),
+                        lengthAxisDeg == null ? OptionalDouble.empty() : OptionalDouble.of(lengthAxisDeg),
+                        coordinationMm == null ? Optional.empty() : Optional.of(new Coordination(coordinationMm, heelGroup)));
+            } catch (IllegalArgumentException e) {
+                throw new CamInputException("options", e.getMessage());
+            }
+            return GradingService.run(s, o, new OutputFolder(out), progress);
+        });
+    }
+
+    private Optional<Vec2> origin() throws CamInputException {
+        if (origin == null) {
+            return Optional.empty();
+        }
+        String[] p = origin.split(",");
+        try {
+            if (p.length == 2) {
+                return Optional.of(Vec2.of(Double.parseDouble(p[0].trim()), Double.parseDouble(p[1].trim())));
+            }
+        } catch (IllegalArgumentException e) {
+            // reported below
+        }
+        throw new CamInputException("--origin", "expected X,Y in mm, found '" + origin + "'");
     }
 }

@@ -2,7 +2,8 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.PocketService;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -59,6 +60,9 @@ final class PocketCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.POCKET);
+        PocketSettings settings = new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm,
+                zBottomMm, maxDepthMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
+                progress -> PocketService.run(settings, out, progress));
     }
 }

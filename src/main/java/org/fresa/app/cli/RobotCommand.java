@@ -2,7 +2,11 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import java.util.List;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.RobotService;
+import org.fresa.job.RobotTrajectoryService;
+import org.fresa.model.Placement;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -43,6 +47,12 @@ final class RobotCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.ROBOT);
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            List<String> fmts = RobotService.parseFormats(formats);
+            Placement table = robotTable == null ? Placement.ORIGIN : RobotTrajectoryService.parseRobotTable(robotTable);
+            Placement piece = tablePiece == null ? Placement.ORIGIN : RobotTrajectoryService.parseTablePiece(tablePiece);
+            return RobotService.run(new RobotService.Settings(file, robot, table, piece, fmts), new OutputFolder(out),
+                    progress);
+        });
     }
 }

@@ -2,7 +2,8 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.ToolpathService;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -32,6 +33,8 @@ final class ToolpathCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.TOOLPATH);
+        java.io.PrintWriter o = spec.commandLine().getOut();
+        return CliSupport.run(o, spec.commandLine().getErr(), json,
+                progress -> ToolpathService.run(file, post, new OutputFolder(out), progress));
     }
 }

@@ -1,0 +1,56 @@
+package org.fresa.cutting;
+
+import java.util.List;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Vec2;
+import org.fresa.model.Toolpath;
+
+/**
+ * A sheet's cutting plan: the cuts in order, what was found in the drawing, what could not be
+ * cut and why, and the tool-centre path.
+ *
+ * @param cuts pierces in cutting order
+ * @param outers the drawn outer contours of parts
+ * @param holes the drawn holes
+ * @param open open chains (drawn, never cut)
+ * @param invalidVertices corners the paper's rules reject (paper mode) or a kerf cannot reach
+ * @param warnings one sentence each
+ * @param uncut closed contours that are not cut (a hole smaller than the kerf)
+ * @param duplicates elements removed as repeats
+ * @param zeroLength elements removed for zero length
+ * @param toolpath the moves from the machine origin, one section per pierce
+ */
+public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> holes, List<List<Curve2>> open,
+        List<Vec2> invalidVertices, List<String> warnings, List<Contour> uncut, int duplicates, int zeroLength,
+        Toolpath toolpath) {
+
+    public CutPlan {
+        cuts = List.copyOf(cuts);
+        outers = List.copyOf(outers);
+        holes = List.copyOf(holes);
+        open = open.stream().map(List::copyOf).toList();
+        invalidVertices = List.copyOf(invalidVertices);
+        warnings = List.copyOf(warnings);
+        uncut = List.copyOf(uncut);
+    }
+
+    public double cutLengthMm() {
+        double l = 0;
+        for (CutPath c : cuts) {
+            l += c.cutLengthMm();
+        }
+        return l;
+    }
+
+    /** Total rapid travel from the origin through every pierce (straight lines). */
+    public double rapidLengthMm() {
+        double l = 0;
+        Vec2 at = Vec2.ZERO;
+        for (CutPath c : cuts) {
+            l += at.distance(c.pierce());
+            at = c.exit();
+        }
+        return l;
+    }
+}

@@ -1,0 +1,534 @@
+package org.fresa.cutting;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+import org.fresa.pocket.LineArcOffsetter;
+
+/**
+ * Plans the cutting of a sheet drawing: chains the drawing's curves (per layer) into contours,
+ * sorts them into parts and holes by containment (even nesting depth: outside of a part; odd:
+ * hole; a part inside a hole is cut before that hole), orients them (outer contours clockwise
+ * and holes counter-clockwise by default, so the scrap is on the left), offsets each by half the
+ * kerf into the scrap with {@link LineArcOffsetter}, chooses pierce points and leads that stay in
+ * the scrap, orders the pierces (holes before their part, parts by nearest neighbour then 2-opt)
+ * and produces the tool-centre path.
+ *
+ * <p>Pierce point rule: the middle of the longest straight element of the cut path, then the
+ * next longest, then corners, then the middle of arcs; the first where a lead fits (tried at its
+ * full length, a half and a quarter) wins. A lead fits when every point of it stays at least half
+ * the kerf from every drawn contour, so the jet never touches a part.
+ */
+public final class CutPlanner {
+
+    private static final Tolerance TOL = Tolerance.DEFAULT;
+
+    private CutPlanner() {
+    }
+
+    /** A closed contour with its place in the containment tree. */
+    private static final class Node {
+        final Contour contour;
+        final double area;
+        final Box2 box;
+        Node parent;
+        int depth;
+        final List<Node> children = new ArrayList<>();
+        final List<CutPath> cuts = new ArrayList<>();
+        int index;
+
+        Node(Contour c, double area) {
+            this.contour = c;
+            this.area = area;
+            this.box = c.bounds();
+        }
+
+        boolean outer() {
+            return depth % 2 == 0;
+        }
+    }
+
+    public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o) {
+        List<String> warnings = new ArrayList<>();
+        List<Contour> closed = new ArrayList<>();
+        List<List<Curve2>> open = new ArrayList<>();
+        int dups = 0;
+        int zero = 0;
+        int junctions = 0;
+        for (Map.Entry<String, List<Curve2>> e : layers.entrySet()) {
+            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4) : Chainer.chain(e.getValue(), o.gapToleranceMm());
+            closed.addAll(ch.closed());
+            open.addAll(ch.open());
+            dups += ch.duplicates();
+            zero += ch.zeroLength();
+            junctions += ch.junctions();
+        }
+        if (dups > 0) {
+            warnings.add(dups + " duplicate elements removed");
+        }
+        if (zero > 0) {
+            warnings.add(zero + " zero-length elements removed");
+        }
+        if (junctions > 0) {
+            warnings.add(junctions + " nodes where more than two element ends meet (the nearest end was followed)");
+        }
+        for (List<Curve2> chain : open) {
+            Vec2 a = chain.get(0).start();
+            Vec2 b = chain.get(chain.size() - 1).end();
+            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f), gap %.4g mm: not cut",
+                    chain.size(), a.x(), a.y(), b.x(), b.y(), a.distance(b)));
+        }
+        List<Node> nodes = classify(closed, o.paperMode());
+        List<Curve2> all = new ArrayList<>();
+        for (Contour c : closed) {
+            all.addAll(c.curves());
+        }
+        double half = o.kerfMm() / 2;
+        Box2 ext = null;
+        for (Curve2 c : all) {
+            ext = ext == null ? c.bounds() : ext.union(c.bounds());
+        }
+        double cell = ext == null ? 10 : Math.max(1, Math.sqrt(ext.width() * ext.height() / Math.max(1, all.size())) * 2);
+        CurveGrid grid = new CurveGrid(all, cell);
+        List<Vec2> invalid = new ArrayList<>();
+        List<Contour> uncut = new ArrayList<>();
+        List<Contour> outers = new ArrayList<>();
+        List<Contour> holes = new ArrayList<>();
+        int partNo = 0;
+        for (Node n : nodes) {
+            if (n.outer()) {
+                n.index = ++partNo;
+            }
+        }
+        for (Node n : nodes) {
+            boolean outer = n.outer();
+            (outer ? outers : holes).add(n.contour);
+            String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
+            Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer, o.outerClockwise());
+            if (o.paperMode()) {
+                boolean toolLeft = outer ^ oriented.isCcw();
+                if (!outer) {
+                    oriented = startNearCorner(oriented);
+                }
+                PaperCrc.Result r = half > 0 ? PaperCrc.offset(oriented, half, toolLeft)
+                        : new PaperCrc.Result(java.util.Optional.of(oriented), List.of());
+                invalid.addAll(r.invalidVertices());
+                if (r.path().isEmpty()) {
+                    uncut.add(n.contour);
+                    warnings.add(label + " collapses under the kerf: not cut");
+                } else {
+                    n.cuts.add(new CutPath(label, outer, n.contour, r.path().get(), List.of(), List.of(), 0));
+                }
+                continue;
+            }
+            boolean scrapLeft = outer ? !oriented.isCcw() : oriented.isCcw();
+            if (o.controllerCompensation()) {
+                n.cuts.add(withLeads(label, outer, n.contour, oriented, scrapLeft, o, half, grid, warnings, scrapLeft ? 41 : 42));
+                continue;
+            }
+            List<Contour> loops = half > 0 ? LineArcOffsetter.offset(oriented, outer ? half : -half, TOL) : List.of(oriented);
+            List<Contour> same = new ArrayList<>();
+            for (Contour l : loops) {
+                if (l.isCcw() == oriented.isCcw()) {
+                    same.add(l);
+                }
+            }
+            if (same.isEmpty()) {
+                uncut.add(n.contour);
+                Box2 b = n.contour.bounds();
+                warnings.add(String.format(Locale.ROOT, "%s (%.3f x %.3f mm at %.3f, %.3f) is too small for a %.3f mm kerf: not cut",
+                        label, b.width(), b.height(), b.minX(), b.minY(), o.kerfMm()));
+                continue;
+            }
+            if (outer && loops.size() > same.size()) {
+                warnings.add(label + " has a slot or gap narrower than the kerf: it closes up and is not cut");
+            }
+            if (!outer && same.size() > 1) {
+                warnings.add(label + " has a waist narrower than the kerf: cut as " + same.size() + " separate loops");
+            }
+            for (int k = 0; k < same.size(); k++) {
+                String l = same.size() > 1 ? label + "." + (k + 1) : label;
+                n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
+            }
+        }
+        List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
+        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, o));
+    }
+
+    // ------------------------------------------------------------------ classification
+
+    private static List<Node> classify(List<Contour> closed, boolean paper) {
+        List<Node> nodes = new ArrayList<>();
+        for (Contour c : closed) {
+            nodes.add(new Node(c, paper ? Math.abs(PaperCrc.triangleArea(c)) : c.area()));
+        }
+        nodes.sort(Comparator.comparingDouble((Node n) -> n.area).reversed());
+        if (paper) {
+            // the paper: the largest contour is the outside, every other one a hole in it
+            for (int i = 1; i < nodes.size(); i++) {
+                nodes.get(i).parent = nodes.get(0);
+                nodes.get(i).depth = 1;
+                nodes.get(0).children.add(nodes.get(i));
+            }
+            return nodes;
+        }
+        for (int i = 0; i < nodes.size(); i++) {
+            Node n = nodes.get(i);
+            Node best = null;
+            for (int j = i - 1; j >= 0; j--) {
+                Node m = nodes.get(j);
+                if (m.area <= n.area || !contains(m.box, n.box)) {
+                    continue;
+                }
+                if (insideOf(m.contour, n.contour)) {
+                    best = m; // nodes are sorted by decreasing area: the first found going back is the smallest
+                    break;
+                }
+            }
+            if (best != null) {
+                n.parent = best;
+                n.depth = best.depth + 1;
+                best.children.add(n);
+            }
+        }
+        return nodes;
+    }
+
+    private static boolean contains(Box2 a, Box2 b) {
+        return b.minX() >= a.minX() - 1e-9 && b.maxX() <= a.maxX() + 1e-9 && b.minY() >= a.minY() - 1e-9
+                && b.maxY() <= a.maxY() + 1e-9;
+    }
+
+    private static boolean insideOf(Contour outer, Contour inner) {
+        Tolerance t = new Tolerance(1e-7, 1e-9);
+        for (Curve2 c : inner.curves()) {
+            for (double f : new double[] {0.5, 0.25, 0.75}) {
+                Vec2 p = c.pointAt(f);
+                if (outer.distanceTo(p) > 1e-6) {
+                    return outer.contains(p, t);
+                }
+            }
+        }
+        return false;
+    }
+
+    private static Contour orient(Contour c, boolean outer, boolean outerCw) {
+        boolean wantCcw = outer != outerCw;
+        return c.isCcw() == wantCcw ? c : c.reversed();
+    }
+
+    /** Paper mode: an internal contour starts at the vertex nearest its bounding box's lower-left corner. */
+    private static Contour startNearCorner(Contour c) {
+        Vec2 corner = new Vec2(c.bounds().minX(), c.bounds().minY());
+        int best = 0;
+        for (int i = 1; i < c.size(); i++) {
+            if (c.get(i).start().distance(corner) < c.get(best).start().distance(corner)) {
+                best = i;
+            }
+        }
+        return rotate(c, best);
+    }
+
+    private static Contour rotate(Contour c, int k) {
+        List<Curve2> l = new ArrayList<>(c.curves().subList(k, c.size()));
+        l.addAll(c.curves().subList(0, k));
+        return new Contour(l);
+    }
+
+    // ------------------------------------------------------------------ pierce and leads
+
+    private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
+            CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp) {
+        double leadIn = comp != 0 ? Math.max(o.leadInMm(), half * 1.5 + 0.1) : o.leadInMm();
+        boolean arcs = o.arcLeads() && comp == 0;
+        double clearance = Math.max(0, half - 1e-6);
+        List<double[]> candidates = candidates(path);
+        for (double[] cand : candidates) {
+            for (double scale : new double[] {1, 0.5, 0.25}) {
+                double len = leadIn * scale;
+                Contour started = startAt(path, (int) cand[0], cand[1]);
+                Vec2 s = started.get(0).start();
+                Vec2 t = started.get(0).startTangent();
+                List<Curve2> in = leadIn <= 0 ? List.of() : List.of(lead(s, t, len, scrapLeft, arcs, true));
+                if (!clear(in, grid, clearance, part, outer)) {
+                    continue;
+                }
+                List<Curve2> tail = tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer);
+                return new CutPath(label, outer, part, started, in, tail, comp);
+            }
+        }
+        Contour started = startAt(path, (int) candidates.get(0)[0], candidates.get(0)[1]);
+        if (leadIn > 0) {
+            warnings.add(label + ": no room for a lead-in; pierced on the contour");
+        }
+        return new CutPath(label, outer, part, started, List.of(), tail(started, o, half, scrapLeft, arcs, grid, clearance,
+                part, outer), comp);
+    }
+
+    /** (curve index, fraction) pairs: longest lines' middles, then corners, then arcs' middles. */
+    private static List<double[]> candidates(Contour path) {
+        List<Integer> lines = new ArrayList<>();
+        List<Integer> arcs = new ArrayList<>();
+        for (int i = 0; i < path.size(); i++) {
+            (path.get(i) instanceof Segment2 ? lines : arcs).add(i);
+        }
+        Comparator<Integer> byLength = Comparator.comparingDouble(i -> -path.get(i).length());
+        lines.sort(byLength);
+        arcs.sort(byLength);
+        List<double[]> out = new ArrayList<>();
+        for (int k = 0; k < Math.min(4, lines.size()); k++) {
+            out.add(new double[] {lines.get(k), 0.5});
+        }
+        for (int k = 0; k < Math.min(4, lines.size()); k++) {
+            out.add(new double[] {lines.get(k), 0});
+        }
+        for (int k = 0; k < Math.min(4, arcs.size()); k++) {
+            out.add(new double[] {arcs.get(k), 0.5});
+        }
+        if (out.isEmpty()) {
+            out.add(new double[] {0, 0});
+        }
+        return out;
+    }
+
+    /** The closed path re-started at fraction f of curve i. */
+    static Contour startAt(Contour path, int i, double f) {
+        Curve2 c = path.get(i);
+        List<Curve2> l = new ArrayList<>();
+        if (f <= 0) {
+            return rotate(path, i);
+        }
+        Vec2 s = c.pointAt(f);
+        Curve2[] parts = split(c, s);
+        l.add(parts[1]);
+        for (int k = 1; k < path.size(); k++) {
+            l.add(path.get((i + k) % path.size()));
+        }
+        l.add(parts[0]);
+        return new Contour(l);
+    }
+
+    private static Curve2[] split(Curve2 c, Vec2 p) {
+        if (c instanceof Segment2 s) {
+            return new Curve2[] {new Segment2(s.start(), p), new Segment2(p, s.end())};
+        }
+        Arc2 a = (Arc2) c;
+        return new Curve2[] {new Arc2(a.center(), a.start(), p, a.ccw()), new Arc2(a.center(), p, a.end(), a.ccw())};
+    }
+
+    /** A lead touching the path at p with tangent t: entering (ends at p) or leaving (starts at p). */
+    private static Curve2 lead(Vec2 p, Vec2 t, double len, boolean scrapLeft, boolean arc, boolean entering) {
+        Vec2 n = scrapLeft ? t.leftNormal() : t.leftNormal().negated();
+        if (!arc) {
+            Vec2 q = p.plus(n.times(len));
+            return entering ? new Segment2(q, p) : new Segment2(p, q);
+        }
+        Vec2 c = p.plus(n.times(len));
+        if (entering) {
+            return new Arc2(c, c.minus(t.times(len)), p, scrapLeft);
+        }
+        return new Arc2(c, p, c.plus(t.times(len)), scrapLeft);
+    }
+
+    private static boolean clear(List<Curve2> leads, CurveGrid grid, double clearance, Contour part, boolean outer) {
+        for (Curve2 c : leads) {
+            for (int k = 0; k < 32; k++) {
+                Vec2 p = c.pointAt(c.start().equals(c.end()) ? 0 : (c instanceof Arc2 ? k / 32.0 : k / 32.0));
+                double limit = clearance + 1;
+                double d = grid.distance(p, limit);
+                if (d < clearance) {
+                    return false;
+                }
+                if (k == 0 && clearance <= 0 && part.contains(p, TOL) == outer) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static List<Curve2> tail(Contour path, CuttingOptions o, double half, boolean scrapLeft, boolean arcs,
+            CurveGrid grid, double clearance, Contour part, boolean outer) {
+        List<Curve2> tail = new ArrayList<>();
+        double left = o.overcutMm();
+        for (int k = 0; k < path.size() && left > 1e-9; k++) {
+            Curve2 c = path.get(k);
+            if (c.length() <= left) {
+                tail.add(c);
+                left -= c.length();
+            } else {
+                tail.add(split(c, c.pointAt(left / c.length()))[0]);
+                left = 0;
+            }
+        }
+        Vec2 e = tail.isEmpty() ? path.get(path.size() - 1).end() : tail.get(tail.size() - 1).end();
+        Vec2 t = tail.isEmpty() ? path.get(path.size() - 1).endTangent() : tail.get(tail.size() - 1).endTangent();
+        if (o.leadOutMm() > 0 && !o.paperMode()) {
+            for (double scale : new double[] {1, 0.5, 0.25}) {
+                Curve2 out = lead(e, t, o.leadOutMm() * scale, scrapLeft, arcs, false);
+                if (clear(List.of(out.reversed()), grid, clearance, part, outer)) {
+                    tail.add(out);
+                    break;
+                }
+            }
+        }
+        return tail;
+    }
+
+    // ------------------------------------------------------------------ order
+
+    private static List<CutPath> paperOrder(List<Node> nodes) {
+        List<CutPath> out = new ArrayList<>();
+        if (nodes.isEmpty()) {
+            return out;
+        }
+        List<Node> internal = new ArrayList<>(nodes.subList(1, nodes.size()));
+        Vec2 at = Vec2.ZERO;
+        while (!internal.isEmpty()) {
+            Node best = null;
+            for (Node n : internal) {
+                if (best == null || n.box.center().distance(at) < best.box.center().distance(at)) {
+                    best = n;
+                }
+            }
+            internal.remove(best);
+            out.addAll(best.cuts);
+            at = best.box.center();
+        }
+        out.addAll(nodes.get(0).cuts);
+        return out;
+    }
+
+    private static List<CutPath> order(List<Node> nodes) {
+        List<Node> top = new ArrayList<>();
+        for (Node n : nodes) {
+            if (n.parent == null) {
+                top.add(n);
+            }
+        }
+        List<Node> seq = tour(top, Vec2.ZERO);
+        List<CutPath> out = new ArrayList<>();
+        Vec2[] at = {Vec2.ZERO};
+        for (Node n : seq) {
+            emitPart(n, at, out);
+        }
+        return out;
+    }
+
+    /** A part: the parts inside each hole, then the hole, for each hole nearest first; then its outside. */
+    private static void emitPart(Node part, Vec2[] at, List<CutPath> out) {
+        List<Node> holes = new ArrayList<>(part.children);
+        while (!holes.isEmpty()) {
+            Node best = null;
+            for (Node h : holes) {
+                if (best == null || entry(h).distance(at[0]) < entry(best).distance(at[0])) {
+                    best = h;
+                }
+            }
+            holes.remove(best);
+            for (Node inner : tour(best.children, at[0])) {
+                emitPart(inner, at, out);
+            }
+            for (CutPath c : best.cuts) {
+                out.add(c);
+                at[0] = c.exit();
+            }
+        }
+        for (CutPath c : part.cuts) {
+            out.add(c);
+            at[0] = c.exit();
+        }
+    }
+
+    private static Vec2 entry(Node n) {
+        return n.cuts.isEmpty() ? n.box.center() : n.cuts.get(0).pierce();
+    }
+
+    /** Nearest neighbour from the start, then 2-opt on the open tour's rapid length. */
+    private static List<Node> tour(List<Node> nodes, Vec2 start) {
+        List<Node> left = new ArrayList<>(nodes);
+        List<Node> seq = new ArrayList<>();
+        Vec2 at = start;
+        while (!left.isEmpty()) {
+            int best = 0;
+            for (int i = 1; i < left.size(); i++) {
+                if (entry(left.get(i)).distance(at) < entry(left.get(best)).distance(at)) {
+                    best = i;
+                }
+            }
+            Node n = left.remove(best);
+            seq.add(n);
+            at = entry(n);
+        }
+        int n = seq.size();
+        if (n < 4 || n > 3000) {
+            return seq;
+        }
+        Vec2[] p = new Vec2[n + 1];
+        p[0] = start;
+        for (int i = 0; i < n; i++) {
+            p[i + 1] = entry(seq.get(i));
+        }
+        boolean improved = true;
+        for (int pass = 0; pass < 50 && improved; pass++) {
+            improved = false;
+            for (int i = 0; i < n - 1; i++) {
+                for (int j = i + 2; j <= n; j++) {
+                    double before = p[i].distance(p[i + 1]) + (j < n ? p[j].distance(p[j + 1]) : 0);
+                    double after = p[i].distance(p[j]) + (j < n ? p[i + 1].distance(p[j + 1]) : 0);
+                    if (after < before - 1e-9) {
+                        for (int a = i + 1, b = j; a < b; a++, b--) {
+                            Vec2 tp = p[a];
+                            p[a] = p[b];
+                            p[b] = tp;
+                            Node tn = seq.get(a - 1);
+                            seq.set(a - 1, seq.get(b - 1));
+                            seq.set(b - 1, tn);
+                        }
+                        improved = true;
+                    }
+                }
+            }
+        }
+        return seq;
+    }
+
+    // ------------------------------------------------------------------ toolpath
+
+    private static Toolpath toolpath(List<CutPath> cuts, CuttingOptions o) {
+        List<ToolpathSection> sections = new ArrayList<>();
+        Vec3 at = Vec3.ZERO;
+        double feed = o.feedMmPerMin();
+        for (CutPath c : cuts) {
+            List<Move> moves = new ArrayList<>();
+            moves.add(new Move.Rapid(Vec3.of(c.pierce(), 0)));
+            for (Curve2 cv : c.curves()) {
+                if (cv instanceof Segment2 s) {
+                    if (s.length() > 0) {
+                        moves.add(new Move.Linear(Vec3.of(s.end(), 0), feed));
+                    }
+                } else {
+                    Arc2 a = (Arc2) cv;
+                    moves.add(new Move.Circular(Vec3.of(a.end(), 0), Vec3.of(a.center(), 0), Vec3.UNIT_Z, a.ccw(), 0, feed));
+                }
+            }
+            sections.add(new ToolpathSection(c.label(),
+                    Vec3.UNIT_Z, Math.max(o.kerfMm(), 1e-3), 1, 0, at, moves));
+            at = moves.get(moves.size() - 1).end();
+        }
+        return new Toolpath(sections);
+    }
+}

@@ -1,0 +1,53 @@
+package org.fresa.cutting;
+
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * A thermal or abrasive jet process with its defaults: cutting feed (mm/min), pierce dwell (s)
+ * and the sense contours are cut in. Plasma swirl leaves the square side of the kerf on the
+ * right of travel, so outer contours run clockwise and holes counter-clockwise (the part is
+ * always on the right, the scrap on the left, the G41 side); laser and waterjet follow the same
+ * convention by default.
+ */
+public enum CutProcess {
+    PLASMA(2000, 0.5, true),
+    LASER(3000, 0.2, true),
+    WATERJET(400, 1.5, true);
+
+    private final double feedMmPerMin;
+    private final double pierceDwellS;
+    private final boolean outerClockwise;
+
+    CutProcess(double feedMmPerMin, double pierceDwellS, boolean outerClockwise) {
+        this.feedMmPerMin = feedMmPerMin;
+        this.pierceDwellS = pierceDwellS;
+        this.outerClockwise = outerClockwise;
+    }
+
+    public double feedMmPerMin() {
+        return feedMmPerMin;
+    }
+
+    public double pierceDwellS() {
+        return pierceDwellS;
+    }
+
+    /** True when outer contours are cut clockwise (and holes counter-clockwise). */
+    public boolean outerClockwise() {
+        return outerClockwise;
+    }
+
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    public static Optional<CutProcess> ofId(String id) {
+        for (CutProcess p : values()) {
+            if (p.id().equalsIgnoreCase(id)) {
+                return Optional.of(p);
+            }
+        }
+        return Optional.empty();
+    }
+}

@@ -1,0 +1,219 @@
+package org.fresa.job;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fresa.cutting.Chainer;
+import org.fresa.dxf.DxfDrawing;
+import org.fresa.dxf.DxfReadOptions;
+import org.fresa.dxf.DxfReader;
+import org.fresa.kin.IkBenchmark;
+import org.fresa.model.CamInputException;
+import org.fresa.stepnc.StepNcReader;
+
+/**
+ * The short benchmarks of {@code fresa bench} (issue 11): each figure is the median of repeated
+ * runs after a JIT warm-up, measured in this JVM (except the whole-process figure, which starts a
+ * fresh one). Figures whose input is missing are reported as null with the reason.
+ */
+public final class Benchmarks {
+
+    /** The goals of issue 11: figure name to goal (a maximum, or a minimum for *_per_s). */
+    public static final Map<String, Double> GOALS = Map.of(
+            "ik_us_per_point_irb140", 5.0,
+            "ik_us_per_point_tricept806", 10.0,
+            "part21_mb_per_s", 20.0,
+            "dxf_mb_per_s", 30.0,
+            "pocket_ms_cavity02", 50.0,
+            "example2_irb140_process_s", 3.0);
+
+    private Benchmarks() {
+    }
+
+    /**
+     * Runs every figure.
+     *
+     * @param projectRoot where samples/ and ../shared/corpus are looked for
+     * @param jar the Fresa jar for the whole-process figure, or null to skip it
+     */
+    public static Map<String, Object> run(Path projectRoot, Path jar, ProgressMonitor progress) {
+        Map<String, Object> figures = new LinkedHashMap<>();
+        Map<String, Object> notes = new LinkedHashMap<>();
+        progress.progress(0.0, "inverse kinematics, IRB-140");
+        IkBenchmark.Figure irb = IkBenchmark.irb140(9);
+        figures.put("ik_us_per_point_irb140", irb.usPerPoint());
+        figures.put("ik_cpu_us_per_point_irb140", irb.cpuUsPerPoint());
+        progress.progress(0.15, "inverse kinematics, Tricept 806");
+        IkBenchmark.Figure tri = IkBenchmark.tricept806(9);
+        figures.put("ik_us_per_point_tricept806", tri.usPerPoint());
+        figures.put("ik_cpu_us_per_point_tricept806", tri.cpuUsPerPoint());
+        progress.progress(0.3, "Part 21");
+        try {
+            figures.put("part21_mb_per_s", part21MbPerS(projectRoot.resolve("samples/stepnc/example2.stp")));
+        } catch (IOException | CamInputException e) {
+            figures.put("part21_mb_per_s", null);
+            notes.put("part21_mb_per_s", e.getMessage());
+        }
+        progress.progress(0.45, "DXF");
+        Path dxf = projectRoot.resolve("../shared/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf").normalize();
+        try {
+            figures.put("dxf_mb_per_s", Files.isRegularFile(dxf) ? dxfMbPerS(dxf) : null);
+            if (!Files.isRegularFile(dxf)) {
+                notes.put("dxf_mb_per_s", "corpus file not found: " + dxf);
+            }
+        } catch (IOException | CamInputException e) {
+            figures.put("dxf_mb_per_s", null);
+            notes.put("dxf_mb_per_s", e.getMessage());
+        }
+        progress.progress(0.6, "pocket cavity02");
+        try {
+            figures.put("pocket_ms_cavity02", pocketMs(projectRoot.resolve("samples/pocket/cavity02.dad")));
+        } catch (IOException | CamInputException | RuntimeException e) {
+            figures.put("pocket_ms_cavity02", null);
+            notes.put("pocket_ms_cavity02", e.getMessage());
+        }
+        progress.progress(0.75, "example 2 on the IRB-140, a fresh JVM");
+        if (jar != null) {
+            try {
+                figures.put("example2_irb140_process_s", processSeconds(projectRoot, jar));
+            } catch (IOException e) {
+                figures.put("example2_irb140_process_s", null);
+                notes.put("example2_irb140_process_s", e.getMessage());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                figures.put("example2_irb140_process_s", null);
+            }
+        } else {
+            figures.put("example2_irb140_process_s", null);
+            notes.put("example2_irb140_process_s", "not run from the jar");
+        }
+        progress.progress(1, "done");
+        Map<String, Object> out = new LinkedHashMap<>(figures);
+        out.put("cores", Runtime.getRuntime().availableProcessors());
+        Map<String, Object> met = new LinkedHashMap<>();
+        GOALS.forEach((k, goal) -> {
+            Object v = figures.get(k);
+            met.put(k, v instanceof Double d ? (k.endsWith("_per_s") ? d >= goal : d <= goal) : null);
+        });
+        out.put("goals", new LinkedHashMap<>(GOALS));
+        out.put("met", met);
+        if (!notes.isEmpty()) {
+            out.put("notes", notes);
+        }
+        return out;
+    }
+
+    static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+
+    /** Reads and binds example 2 (renumbered copies concatenated to about 8 MB) from memory. */
+    static double part21MbPerS(Path example2) throws IOException, CamInputException {
+        byte[] data = Files.readAllBytes(example2);
+        for (int i = 0; i < 5; i++) {
+            StepNcReader.read(new ByteArrayInputStream(data), "bench");
+        }
+        double[] rates = new double[9];
+        for (int r = 0; r < rates.length; r++) {
+            long t0 = System.nanoTime();
+            int reps = 0;
+            long bytes = 0;
+            while (System.nanoTime() - t0 < 200_000_000L) {
+                StepNcReader.read(new ByteArrayInputStream(data), "bench");
+                reps++;
+                bytes += data.length;
+            }
+            rates[r] = bytes / 1e6 / ((System.nanoTime() - t0) / 1e9);
+        }
+        return median(rates);
+    }
+
+    /** Reads the 10 052-line corpus drawing and chains it, from memory. */
+    static double dxfMbPerS(Path file) throws IOException, CamInputException {
+        byte[] data = Files.readAllBytes(file);
+        for (int i = 0; i < 3; i++) {
+            DxfDrawing d = DxfReader.read(data, "bench", DxfReadOptions.DEFAULT);
+            Chainer.chain(d.curves(), 0.001 * d.mmPerUnit());
+        }
+        double[] rates = new double[7];
+        for (int r = 0; r < rates.length; r++) {
+            long t0 = System.nanoTime();
+            DxfDrawing d = DxfReader.read(data, "bench", DxfReadOptions.DEFAULT);
+            Chainer.chain(d.curves(), 0.001);
+            rates[r] = data.length / 1e6 / ((System.nanoTime() - t0) / 1e9);
+        }
+        return median(rates);
+    }
+
+    /** Recognition, passes and the 7M post of cavity 02 with the thesis's technology, in ms. */
+    static double pocketMs(Path dad) throws IOException, CamInputException {
+        JobSettings.PocketSettings s = new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100,
+                "linuxcnc");
+        double[] ms = new double[15];
+        for (int r = -10; r < ms.length; r++) {
+            long t0 = System.nanoTime();
+            try {
+                PocketService.program(PocketService.plan(s), "linuxcnc", "cavity02");
+            } catch (org.fresa.pocket.ToolTooLargeException e) {
+                throw new IllegalStateException(e.getMessage(), e);
+            }
+            if (r >= 0) {
+                ms[r] = (System.nanoTime() - t0) / 1e6;
+            }
+        }
+        return median(ms);
+    }
+
+    /** {@code fresa robot} on example 2 with the IRB-140 in a fresh JVM, wall seconds, median of 3. */
+    static double processSeconds(Path root, Path jar) throws IOException, InterruptedException {
+        double[] s = new double[3];
+        for (int r = 0; r < s.length; r++) {
+            Path out = Files.createTempDirectory("fresa-bench");
+            List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-jar", jar.toString(), "robot", root.resolve("samples/stepnc/example2.stp").toString(),
+                    "--robot", "irb140", "--robot-table", "450,0,350", "--table-piece", "0,10,0", "--out", out.toString()));
+            long t0 = System.nanoTime();
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            int rc = p.waitFor();
+            s[r] = (System.nanoTime() - t0) / 1e9;
+            try (var files = Files.list(out)) {
+                for (Path f : files.toList()) {
+                    Files.deleteIfExists(f);
+                }
+            }
+            Files.deleteIfExists(out);
+            if (rc > 1) {
+                throw new IOException("fresa robot exited with " + rc);
+            }
+        }
+        return median(s);
+    }
+
+    /** The figures as an aligned table for people. */
+    public static String table(Map<String, Object> figures) {
+        StringBuilder sb = new StringBuilder(String.format(java.util.Locale.ROOT, "%-34s %14s %10s  %s%n",
+                "figure", "measured", "goal", "met"));
+        @SuppressWarnings("unchecked")
+        Map<String, Object> met = (Map<String, Object>) figures.get("met");
+        for (Map.Entry<String, Object> e : figures.entrySet()) {
+            if (!(e.getValue() instanceof Double) && e.getValue() != null) {
+                continue;
+            }
+            Double goal = GOALS.get(e.getKey());
+            Object m = met.get(e.getKey());
+            sb.append(String.format(java.util.Locale.ROOT, "%-34s %14s %10s  %s%n", e.getKey(),
+                    e.getValue() == null ? "n/a" : String.format(java.util.Locale.ROOT, "%.3f", (Double) e.getValue()),
+                    goal == null ? "" : (e.getKey().endsWith("_per_s") ? ">= " : "<= ") + goal,
+                    m == null ? "" : ((Boolean) m ? "yes" : "NO")));
+        }
+        return sb.toString();
+    }
+}

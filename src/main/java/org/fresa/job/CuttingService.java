@@ -1,0 +1,194 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import org.fresa.cutting.CutPath;
+import org.fresa.cutting.CutPlan;
+import org.fresa.cutting.CutPlanner;
+import org.fresa.cutting.CutProcess;
+import org.fresa.cutting.CuttingOptions;
+import org.fresa.dxf.DxfDrawing;
+import org.fresa.dxf.DxfReadOptions;
+import org.fresa.dxf.DxfReader;
+import org.fresa.dxf.DxfUnits;
+import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.model.CamInputException;
+import org.fresa.post.SheetCuttingPost;
+
+/**
+ * The sheet cutting task behind {@code fresa cut}, {@code fresa run} (task cut) and the Cutting
+ * tab: reads the DXF, plans the cut and writes the program.
+ */
+public final class CuttingService {
+
+    /** Rapid traverse assumed for the time estimate (mm/min). */
+    static final double RAPID_MM_PER_MIN = 10_000;
+
+    private CuttingService() {
+    }
+
+    /** The drawing, the plan and the program text of one run. */
+    public record Result(DxfDrawing drawing, CutPlan plan, String program, CuttingOptions options,
+            SheetCuttingPost.Dialect dialect) {
+    }
+
+    /** Checks the settings and converts them to planner options (the gap tolerance still in drawing units). */
+    public static CuttingOptions options(CuttingSettings s) throws CamInputException {
+        CutProcess p = CutProcess.ofId(s.process()).orElseThrow(() -> new CamInputException("--process",
+                "unknown process '" + s.process() + "': expected plasma, laser or waterjet"));
+        if (!s.lead().equals("arc") && !s.lead().equals("line")) {
+            throw new CamInputException("--lead", "unknown lead '" + s.lead() + "': expected arc or line");
+        }
+        if (!(s.kerfMm() >= 0) || !(s.leadInMm() >= 0) || !(s.leadOutMm() >= 0) || !(s.toleranceMm() >= 0)
+                || !Double.isFinite(s.kerfMm() + s.leadInMm() + s.leadOutMm() + s.toleranceMm())) {
+            throw new CamInputException("options", "kerf, lead lengths and tolerance must be finite and >= 0");
+        }
+        return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead().equals("arc"))
+                .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode());
+    }
+
+    static Optional<DxfUnits> units(String u) throws CamInputException {
+        if (u.equalsIgnoreCase("auto")) {
+            return Optional.empty();
+        }
+        return Optional.of(DxfUnits.ofName(u).orElseThrow(() -> new CamInputException("--units",
+                "unknown units '" + u + "': expected mm, inch or auto")));
+    }
+
+    /** Reads and plans without writing anything. */
+    public static Result compute(CuttingSettings s, ProgressMonitor progress) throws CamInputException, IOException {
+        return compute(s, false, progress);
+    }
+
+    /**
+     * Reads and plans without writing anything.
+     *
+     * @param toleranceInDrawingUnits the settings' gap tolerance is in drawing units (the command
+     *     line's {@code --tolerance}), not millimetres (job files, the default 0.001 mm)
+     */
+    public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        CuttingOptions o = options(s);
+        SheetCuttingPost.Dialect dialect = SheetCuttingPost.Dialect.byName(s.post()).orElseThrow(() ->
+                new CamInputException("--post", "unknown post '" + s.post() + "': expected linuxcnc, iso, fanuc or 840d"));
+        progress.progress(0.05, "reading " + s.drawing().getFileName());
+        DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(units(s.units())));
+        progress.checkCancelled();
+        progress.progress(0.3, "planning");
+        CutPlan plan = CutPlanner.plan(d.layers(),
+                o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)));
+        progress.checkCancelled();
+        StringBuilderWriter w = new StringBuilderWriter();
+        List<Integer> comp = new ArrayList<>();
+        for (CutPath c : plan.cuts()) {
+            comp.add(c.compensation());
+        }
+        String name = s.drawing().getFileName().toString();
+        SheetCuttingPost.write(plan.toolpath(), name, new SheetCuttingPost.Job(o.process().id(), o.pierceDwellS(), comp,
+                o.kerfMm()), dialect, w);
+        progress.progress(0.9, "writing");
+        return new Result(d, plan, w.toString(), o, dialect);
+    }
+
+    /** Runs the task and writes the program to the given file (atomically). */
+    public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
+            ProgressMonitor progress) throws CamInputException, IOException {
+        Result r = compute(s, toleranceInDrawingUnits, progress);
+        AtomicFiles.writeString(outFile, r.program());
+        return outcome(r, List.of(outFile.toAbsolutePath()));
+    }
+
+    /** Runs the task for a job, writing {@code program.ngc} into the output folder. */
+    public static TaskOutcome run(CuttingSettings s, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        Result r = compute(s, progress);
+        out.create();
+        Path p = out.writeString(r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc",
+                r.program());
+        Path j = out.writeString("summary.json", Json.write(summary(r)));
+        return outcome(r, List.of(p, j));
+    }
+
+    /** The JSON summary (spec/cli.md: contours, outer, inner, open, pierces, lengths, warnings). */
+    public static Map<String, Object> summary(Result r) {
+        CutPlan p = r.plan();
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("contours", p.outers().size() + p.holes().size());
+        m.put("outer", p.outers().size());
+        m.put("inner", p.holes().size());
+        m.put("open", p.open().size());
+        m.put("pierces", p.cuts().size());
+        m.put("cut_length_mm", round(p.cutLengthMm()));
+        m.put("rapid_length_mm", round(p.rapidLengthMm()));
+        double time = p.cutLengthMm() / r.options().feedMmPerMin() * 60 + p.rapidLengthMm() / RAPID_MM_PER_MIN * 60
+                + p.cuts().size() * r.options().pierceDwellS();
+        m.put("estimated_time_s", round(time));
+        m.put("not_cut", p.uncut().size());
+        m.put("duplicates_removed", p.duplicates());
+        m.put("zero_length_removed", p.zeroLength());
+        m.put("invalid_vertices", p.invalidVertices().size());
+        m.put("units", r.drawing().units().name().toLowerCase(Locale.ROOT));
+        m.put("process", r.options().process().id());
+        m.put("kerf_mm", r.options().kerfMm());
+        m.put("post", r.dialect().id());
+        m.put("ignored", new LinkedHashMap<>(r.drawing().ignored()));
+        List<String> w = new ArrayList<>(r.drawing().warnings());
+        w.addAll(p.warnings());
+        m.put("warnings", w);
+        return m;
+    }
+
+    private static double round(double v) {
+        return Math.round(v * 1000) / 1000.0;
+    }
+
+    private static TaskOutcome outcome(Result r, List<Path> files) {
+        CutPlan p = r.plan();
+        List<String> all = new ArrayList<>(r.drawing().warnings());
+        all.addAll(p.warnings());
+        List<String> problems = new ArrayList<>(all.subList(0, Math.min(20, all.size())));
+        if (all.size() > 20) {
+            problems.add((all.size() - 20) + " more warnings (see --json)");
+        }
+        int status = p.cuts().isEmpty() || !p.uncut().isEmpty() ? 1 : 0;
+        if (p.cuts().isEmpty()) {
+            problems.add("nothing to cut: the drawing has no closed contour");
+        }
+        return new TaskOutcome(status, problems, summary(r), files);
+    }
+
+    /** A Writer into a StringBuilder without synchronisation. */
+    private static final class StringBuilderWriter extends Writer {
+        private final StringBuilder sb = new StringBuilder(1 << 16);
+
+        @Override
+        public void write(char[] cbuf, int off, int len) {
+            sb.append(cbuf, off, len);
+        }
+
+        @Override
+        public void write(String str) {
+            sb.append(str);
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+        }
+
+        @Override
+        public String toString() {
+            return sb.toString();
+        }
+    }
+}

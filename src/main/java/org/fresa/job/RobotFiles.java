@@ -1,0 +1,255 @@
+package org.fresa.job;
+
+import jakarta.xml.bind.JAXBContext;
+import jakarta.xml.bind.JAXBElement;
+import jakarta.xml.bind.JAXBException;
+import jakarta.xml.bind.UnmarshalException;
+import jakarta.xml.bind.Unmarshaller;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.ParserConfigurationException;
+import javax.xml.parsers.SAXParserFactory;
+import javax.xml.transform.sax.SAXSource;
+import javax.xml.validation.Schema;
+import javax.xml.validation.SchemaFactory;
+import org.fresa.geom.Transform3;
+import org.fresa.job.robotxml.FrameType;
+import org.fresa.job.robotxml.JointType;
+import org.fresa.job.robotxml.LimitType;
+import org.fresa.job.robotxml.ObjectFactory;
+import org.fresa.job.robotxml.RobotType;
+import org.fresa.job.robotxml.SerialType;
+import org.fresa.job.robotxml.TriceptType;
+import org.fresa.kin.DenavitHartenbergChain;
+import org.fresa.kin.DhJoint;
+import org.fresa.kin.JointLimit;
+import org.fresa.kin.Robot;
+import org.fresa.kin.Robots;
+import org.fresa.kin.SerialRobot;
+import org.fresa.kin.TriceptRobot;
+import org.fresa.model.CamInputException;
+import org.xml.sax.InputSource;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.XMLReader;
+
+/**
+ * Robots by name or from files (schemas/robot.xsd), and their parameters as JSON-able maps for
+ * {@code fresa robots}.
+ */
+public final class RobotFiles {
+
+    private static final Pattern VARIABLE = Pattern.compile(
+            "\\s*q(\\d+)\\s*(?:([+-])\\s*([0-9]+(?:\\.[0-9]*)?(?:[eE][+-]?[0-9]+)?))?\\s*");
+
+    private RobotFiles() {
+    }
+
+    /** A built-in robot name ({@code irb140}, {@code adept-one}, {@code tricept806}) or a robot file. */
+    public static Robot load(String nameOrFile) throws CamInputException {
+        var builtIn = Robots.byName(nameOrFile);
+        if (builtIn.isPresent()) {
+            return builtIn.get();
+        }
+        Path p = Path.of(nameOrFile);
+        if (!Files.isRegularFile(p)) {
+            throw new CamInputException(nameOrFile, "neither a built-in robot (irb140, adept-one, tricept806) nor a"
+                    + " robot file");
+        }
+        return read(p);
+    }
+
+    /** Reads and validates a robot file. */
+    public static Robot read(Path file) throws CamInputException {
+        String name = file.toString();
+        RobotType xml;
+        try (InputStream in = Files.newInputStream(file)) {
+            SAXParserFactory spf = SAXParserFactory.newInstance();
+            spf.setNamespaceAware(true);
+            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+            spf.setFeature("http://xml.org/sax/features/external-general-entities", false);
+            spf.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
+            XMLReader reader = spf.newSAXParser().getXMLReader();
+            InputSource source = new InputSource(in);
+            source.setSystemId(file.toUri().toString());
+            Unmarshaller u = Holder.CONTEXT.createUnmarshaller();
+            u.setSchema(Holder.SCHEMA);
+            JAXBElement<RobotType> root = u.unmarshal(new SAXSource(reader, source), RobotType.class);
+            xml = root.getValue();
+        } catch (IOException e) {
+            throw new CamInputException(name, "cannot read the robot file (" + e.getMessage() + ")");
+        } catch (UnmarshalException e) {
+            Throwable c = e.getLinkedException() != null ? e.getLinkedException() : e.getCause();
+            if (c instanceof SAXParseException spe) {
+                throw new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()),
+                        "expected a robot as schemas/robot.xsd describes: " + spe.getMessage(), e);
+            }
+            throw new CamInputException(name, "not a valid robot file: " + e.getMessage());
+        } catch (JAXBException | SAXException | ParserConfigurationException e) {
+            throw new CamInputException(name, "not a valid robot file: " + e.getMessage());
+        }
+        String description = xml.getDescription() == null ? "robot from " + file.getFileName() : xml.getDescription();
+        try {
+            if (xml.getSerial() != null) {
+                return serial(name, xml.getName(), description, xml.getSerial());
+            }
+            return tricept(xml.getName(), description, xml.getTricept());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(name, e.getMessage());
+        }
+    }
+
+    private static SerialRobot serial(String file, String name, String description, SerialType s)
+            throws CamInputException {
+        List<DhJoint> joints = new ArrayList<>();
+        int i = 1;
+        for (JointType j : s.getJoint()) {
+            boolean rev = j.getType().equals("revolute");
+            String variable = rev ? j.getTheta() : j.getD();
+            double offset = variableOffset(file, i, rev ? "theta" : "d", variable);
+            double a = number(file, i, "a", j.getA());
+            double alpha = number(file, i, "alpha", j.getAlpha());
+            if (rev) {
+                joints.add(DhJoint.revolute(a, alpha, number(file, i, "d", j.getD()), offset, j.getMin(), j.getMax()));
+            } else {
+                joints.add(DhJoint.prismatic(a, alpha, offset, number(file, i, "theta", j.getTheta()), j.getMin(),
+                        j.getMax()));
+            }
+            i++;
+        }
+        FrameType t = s.getTool();
+        Transform3 tool = t == null ? Transform3.IDENTITY
+                : Transform3.ofXyzRpyDeg(t.getX(), t.getY(), t.getZ(), t.getRx(), t.getRy(), t.getRz());
+        int wrist = s.getWristJoint() == 0 ? -1 : s.getWristJoint() - 1;
+        return new SerialRobot(name, description, new DenavitHartenbergChain(joints, Transform3.IDENTITY, tool), wrist);
+    }
+
+    private static TriceptRobot tricept(String name, String description, TriceptType t) {
+        List<JointLimit> legs = new ArrayList<>();
+        List<JointLimit> wrist = new ArrayList<>();
+        int i = 1;
+        for (LimitType l : t.getLeg()) {
+            legs.add(new JointLimit("q" + i++, org.fresa.kin.JointType.PRISMATIC, l.getMin(), l.getMax()));
+        }
+        for (LimitType l : t.getWrist()) {
+            wrist.add(new JointLimit("q" + i++, org.fresa.kin.JointType.REVOLUTE, l.getMin(), l.getMax()));
+        }
+        return new TriceptRobot(name, description, t.getBaseRadius(), t.getPlatformRadius(), t.getCentreOffset(),
+                t.getEffectorLength(), legs, wrist);
+    }
+
+    /** "qN", "qN + c" or "qN - c" for joint N: the offset c (0 for "qN"). */
+    static double variableOffset(String file, int joint, String cell, String text) throws CamInputException {
+        Matcher m = VARIABLE.matcher(text);
+        if (!m.matches() || Integer.parseInt(m.group(1)) != joint) {
+            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be q" + joint + ", q" + joint
+                    + " + number or q" + joint + " - number, not '" + text + "'");
+        }
+        if (m.group(2) == null) {
+            return 0;
+        }
+        double c = Double.parseDouble(m.group(3));
+        return m.group(2).equals("-") ? -c : c;
+    }
+
+    private static double number(String file, int joint, String cell, String text) throws CamInputException {
+        try {
+            double v = Double.parseDouble(text.trim());
+            if (Double.isFinite(v)) {
+                return v;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text + "'");
+    }
+
+    /** A robot's parameters for {@code fresa robots --json}. */
+    public static Map<String, Object> describe(Robot r) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("name", r.name());
+        m.put("description", r.description());
+        m.put("dof", r.dof());
+        List<Object> joints = new ArrayList<>();
+        int i = 0;
+        for (JointLimit l : r.joints()) {
+            Map<String, Object> j = new LinkedHashMap<>();
+            j.put("name", l.name());
+            j.put("type", l.type() == org.fresa.kin.JointType.REVOLUTE ? "revolute" : "prismatic");
+            j.put("unit", l.type().unit());
+            j.put("min", l.min());
+            j.put("max", l.max());
+            if (r instanceof SerialRobot s) {
+                DhJoint d = s.chain().joints().get(i);
+                j.put("a_mm", d.aMm());
+                j.put("alpha_deg", d.alphaDeg());
+                j.put(d.type() == org.fresa.kin.JointType.REVOLUTE ? "d_mm" : "d_offset_mm", d.dMm());
+                j.put(d.type() == org.fresa.kin.JointType.REVOLUTE ? "theta_offset_deg" : "theta_deg", d.thetaDeg());
+            }
+            joints.add(j);
+            i++;
+        }
+        m.put("joints", joints);
+        if (r instanceof TriceptRobot t) {
+            m.put("base_radius_mm", t.baseRadiusMm());
+            m.put("platform_radius_mm", t.platformRadiusMm());
+            m.put("centre_offset_mm", t.centreOffsetMm());
+            m.put("effector_length_mm", t.effectorLengthMm());
+        }
+        if (r instanceof SerialRobot s && !s.chain().tool().equals(Transform3.IDENTITY)) {
+            Transform3 tool = s.chain().tool();
+            m.put("tool_mm", List.of(tool.tx(), tool.ty(), tool.tz()));
+        }
+        return m;
+    }
+
+    /** All built-in robots described. */
+    public static Map<String, Object> describeBuiltIns() {
+        List<Object> list = new ArrayList<>();
+        for (Robot r : Robots.all()) {
+            list.add(describe(r));
+        }
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("robots", list);
+        return m;
+    }
+
+    /** Lazily built, so that commands that never read robot files do not pay for JAXB. */
+    private static final class Holder {
+        static final Schema SCHEMA = loadSchema();
+        static final JAXBContext CONTEXT = createContext();
+
+        private static Schema loadSchema() {
+            URL url = RobotFiles.class.getResource("/schemas/robot.xsd");
+            if (url == null) {
+                throw new IllegalStateException("schemas/robot.xsd missing from the class path");
+            }
+            try {
+                SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
+                f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+                f.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "file,jar:file");
+                return f.newSchema(url);
+            } catch (SAXException e) {
+                throw new IllegalStateException("schemas/robot.xsd is invalid", e);
+            }
+        }
+
+        private static JAXBContext createContext() {
+            try {
+                return JAXBContext.newInstance(ObjectFactory.class);
+            } catch (JAXBException e) {
+                throw new IllegalStateException("cannot set up robot XML binding", e);
+            }
+        }
+    }
+}

@@ -1,0 +1,255 @@
+package org.fresa.job;
+
+import jakarta.xml.bind.JAXBContext;
+import jakarta.xml.bind.JAXBElement;
+import jakarta.xml.bind.JAXBException;
+import jakarta.xml.bind.Marshaller;
+import jakarta.xml.bind.UnmarshalException;
+import jakarta.xml.bind.Unmarshaller;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.math.BigInteger;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.ParserConfigurationException;
+import javax.xml.parsers.SAXParserFactory;
+import javax.xml.transform.sax.SAXSource;
+import javax.xml.validation.Schema;
+import javax.xml.validation.SchemaFactory;
+import org.fresa.geom.Quaternion;
+import org.fresa.geom.Transform3;
+import org.fresa.geom.Vec3;
+import org.fresa.job.robotprogram.ActivityListType;
+import org.fresa.job.robotprogram.ActivityType;
+import org.fresa.job.robotprogram.CartesianTargetType;
+import org.fresa.job.robotprogram.JointDefinitionType;
+import org.fresa.job.robotprogram.JointTargetType;
+import org.fresa.job.robotprogram.JointTypeType;
+import org.fresa.job.robotprogram.JointUnitsType;
+import org.fresa.job.robotprogram.JointValueType;
+import org.fresa.job.robotprogram.MoveAttributesType;
+import org.fresa.job.robotprogram.ObjectFactory;
+import org.fresa.job.robotprogram.ResourceType;
+import org.fresa.job.robotprogram.RobotProgramType;
+import org.fresa.model.CamInputException;
+import org.fresa.post.RapidWriter;
+import org.fresa.post.RobotProgram;
+import org.xml.sax.InputSource;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+
+/**
+ * The offline-programming XML of a robot program ({@code program.xml},
+ * {@code schemas/robot-program.xsd}), written and read with Jakarta XML Binding and validated on
+ * both ways. Joint values and positions are written as exact doubles, so reading a file back
+ * gives the same joints bit for bit.
+ */
+public final class RobotProgramXml {
+
+    public static final int VERSION = 1;
+    private static final Schema SCHEMA = loadSchema();
+    private static final JAXBContext CONTEXT = createContext();
+
+    private RobotProgramXml() {
+    }
+
+    private static Schema loadSchema() {
+        URL url = RobotProgramXml.class.getResource("/schemas/robot-program.xsd");
+        if (url == null) {
+            throw new IllegalStateException("schemas/robot-program.xsd missing from the class path");
+        }
+        try {
+            SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
+            f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+            return f.newSchema(url);
+        } catch (SAXException e) {
+            throw new IllegalStateException("schemas/robot-program.xsd is invalid", e);
+        }
+    }
+
+    private static JAXBContext createContext() {
+        try {
+            return JAXBContext.newInstance(ObjectFactory.class);
+        } catch (JAXBException e) {
+            throw new IllegalStateException("cannot set up robot program XML binding", e);
+        }
+    }
+
+    /** Writes the program, validated against the schema. */
+    public static void write(RobotProgram p, RapidWriter.ArmGeometry arm, OutputStream out) throws IOException {
+        try {
+            Marshaller m = CONTEXT.createMarshaller();
+            m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, Boolean.TRUE);
+            m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
+            m.setSchema(SCHEMA);
+            m.marshal(new ObjectFactory().createRobotProgram(toXml(p, arm)), out);
+        } catch (JAXBException e) {
+            throw new IOException("cannot write the robot program XML: " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Reads a program written by {@link #write} (or by hand to the same schema).
+     *
+     * @throws CamInputException when the file is not well-formed or not valid, with line and column
+     */
+    public static RobotProgram read(Path file) throws CamInputException {
+        String name = file.toString();
+        try (InputStream in = Files.newInputStream(file)) {
+            SAXParserFactory spf = SAXParserFactory.newInstance();
+            spf.setNamespaceAware(true);
+            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+            InputSource src = new InputSource(in);
+            src.setSystemId(file.toUri().toString());
+            Unmarshaller u = CONTEXT.createUnmarshaller();
+            u.setSchema(SCHEMA);
+            JAXBElement<RobotProgramType> root = u.unmarshal(
+                    new SAXSource(spf.newSAXParser().getXMLReader(), src), RobotProgramType.class);
+            return fromXml(root.getValue());
+        } catch (IOException e) {
+            throw new CamInputException(name, "cannot read (" + e.getMessage() + ")");
+        } catch (UnmarshalException e) {
+            Throwable c = e.getLinkedException() != null ? e.getLinkedException() : e.getCause();
+            if (c instanceof SAXParseException spe) {
+                throw new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()),
+                        "expected a robot program as schemas/robot-program.xsd describes: " + spe.getMessage());
+            }
+            throw new CamInputException(name, "not a robot program: " + e.getMessage());
+        } catch (JAXBException | SAXException | ParserConfigurationException e) {
+            throw new CamInputException(name, "not a robot program: " + e.getMessage());
+        }
+    }
+
+    static RobotProgramType toXml(RobotProgram p, RapidWriter.ArmGeometry arm) {
+        RobotProgramType x = new RobotProgramType();
+        x.setVersion(VERSION);
+        x.setName(p.programName());
+        ResourceType r = new ResourceType();
+        r.setRobotName(p.robotName());
+        for (int i = 0; i < p.joints().size(); i++) {
+            RobotProgram.Joint j = p.joints().get(i);
+            JointDefinitionType d = new JointDefinitionType();
+            d.setJointName(j.name());
+            d.setJointType(type(j.type()));
+            d.setUnits(units(j.type()));
+            d.setDOFNumber(BigInteger.valueOf(i + 1));
+            d.setMin(j.minValue());
+            d.setMax(j.maxValue());
+            r.getJointDefinition().add(d);
+        }
+        x.setResource(r);
+        ActivityListType list = new ActivityListType();
+        list.setTask(p.programName());
+        for (RobotProgram.Motion m : p.motions()) {
+            ActivityType a = new ActivityType();
+            a.setActivityType("DNBRobotMotionActivity");
+            a.setIndex(BigInteger.valueOf(m.index()));
+            a.setWorkingstep(m.workingstep());
+            a.setRole(m.role() == RobotProgram.PointRole.PART ? "part" : "relink");
+            a.setActivityName("Move " + m.index());
+            a.setMotionType(m.type() == RobotProgram.MotionType.JOINT ? "Joint" : "Linear");
+            JointTargetType jt = new JointTargetType();
+            for (int i = 0; i < p.joints().size(); i++) {
+                RobotProgram.Joint j = p.joints().get(i);
+                JointValueType v = new JointValueType();
+                v.setJointName(j.name());
+                v.setJointType(type(j.type()));
+                v.setUnits(units(j.type()));
+                v.setDOFNumber(BigInteger.valueOf(i + 1));
+                v.setJointValue(m.joint(i));
+                jt.getJoint().add(v);
+            }
+            a.setJointTarget(jt);
+            CartesianTargetType c = new CartesianTargetType();
+            CartesianTargetType.Position pos = new CartesianTargetType.Position();
+            Vec3 t = m.target().translationPart();
+            pos.setX(t.x());
+            pos.setY(t.y());
+            pos.setZ(t.z());
+            pos.setUnits("mm");
+            c.setPosition(pos);
+            CartesianTargetType.Orientation o = new CartesianTargetType.Orientation();
+            Quaternion q = Quaternion.of(m.target());
+            o.setQ1(q.w());
+            o.setQ2(q.x());
+            o.setQ3(q.y());
+            o.setQ4(q.z());
+            Vec3 rpy = m.target().zyxAnglesDeg();
+            o.setRoll(rpy.x());
+            o.setPitch(rpy.y());
+            o.setYaw(rpy.z());
+            o.setUnits("deg");
+            c.setOrientation(o);
+            c.setConfig(config(m, arm));
+            a.setCartesianTarget(c);
+            MoveAttributesType mv = new MoveAttributesType();
+            MoveAttributesType.MotionBasis b = new MoveAttributesType.MotionBasis();
+            b.setCriterion("Speed");
+            b.setUnits("mm/s");
+            b.setValue(m.speedMmPerS());
+            mv.setMotionBasis(b);
+            MoveAttributesType.Rounding rd = new MoveAttributesType.Rounding();
+            rd.setUnits("mm");
+            rd.setValue(m.zoneMm());
+            mv.setRounding(rd);
+            a.setMoveAttributes(mv);
+            list.getActivity().add(a);
+        }
+        x.setActivityList(list);
+        return x;
+    }
+
+    /** ABB-style confdata "cf1 cf4 cf6 cfx" for six-joint arms, else the signs of the joints. */
+    static String config(RobotProgram.Motion m, RapidWriter.ArmGeometry arm) {
+        if (m.jointValues().size() == 6) {
+            int flip = m.joint(4) < 0 ? 1 : 0;
+            int cfx = 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
+            return (int) Math.floor(m.joint(0) / 90) + " " + (int) Math.floor(m.joint(3) / 90) + " "
+                    + (int) Math.floor(m.joint(5) / 90) + " " + cfx;
+        }
+        StringBuilder sb = new StringBuilder();
+        for (double v : m.jointValues()) {
+            sb.append(v < 0 ? '-' : '+');
+        }
+        return sb.toString();
+    }
+
+    private static JointTypeType type(RobotProgram.JointType t) {
+        return t == RobotProgram.JointType.REVOLUTE ? JointTypeType.ROTATIONAL : JointTypeType.TRANSLATIONAL;
+    }
+
+    private static JointUnitsType units(RobotProgram.JointType t) {
+        return t == RobotProgram.JointType.REVOLUTE ? JointUnitsType.DEG : JointUnitsType.MM;
+    }
+
+    static RobotProgram fromXml(RobotProgramType x) {
+        List<RobotProgram.Joint> joints = new ArrayList<>();
+        for (JointDefinitionType d : x.getResource().getJointDefinition()) {
+            joints.add(new RobotProgram.Joint(d.getJointName(), d.getJointType() == JointTypeType.ROTATIONAL
+                    ? RobotProgram.JointType.REVOLUTE : RobotProgram.JointType.PRISMATIC, d.getMin(), d.getMax()));
+        }
+        List<RobotProgram.Motion> motions = new ArrayList<>();
+        for (ActivityType a : x.getActivityList().getActivity()) {
+            List<Double> values = new ArrayList<>();
+            for (JointValueType v : a.getJointTarget().getJoint()) {
+                values.add(v.getJointValue());
+            }
+            CartesianTargetType c = a.getCartesianTarget();
+            CartesianTargetType.Orientation o = c.getOrientation();
+            Transform3 r = new Quaternion(o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4()).toTransform();
+            Transform3 target = new Transform3(r.r00(), r.r01(), r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(),
+                    r.r22(), c.getPosition().getX(), c.getPosition().getY(), c.getPosition().getZ());
+            motions.add(new RobotProgram.Motion(a.getIndex().intValueExact(), a.getWorkingstep(),
+                    "Joint".equals(a.getMotionType()) ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
+                    "part".equals(a.getRole()) ? RobotProgram.PointRole.PART : RobotProgram.PointRole.RELINK,
+                    values, target, a.getMoveAttributes().getMotionBasis().getValue(),
+                    a.getMoveAttributes().getRounding().getValue()));
+        }
+        return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
+    }
+}

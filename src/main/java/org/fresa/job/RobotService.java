@@ -1,0 +1,102 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.fresa.geom.Tolerance;
+import org.fresa.kin.Robot;
+import org.fresa.model.CamInputException;
+import org.fresa.model.Placement;
+import org.fresa.model.Toolpath;
+import org.fresa.post.NcPosts;
+import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.ToolpathPlanner;
+
+/**
+ * {@code fresa robot} and the job task {@code robot}: a STEP-NC file's toolpaths (issue 4)
+ * placed in the robot cell and turned into a joint trajectory (issue 5) and robot programs
+ * (issue 6). Everything is read and checked before the first file is written.
+ */
+public final class RobotService {
+
+    /** The formats {@code --formats} accepts. */
+    public static final Set<String> FORMATS = Set.of("csv", "xml", "rapid", "krl", "png");
+
+    private RobotService() {
+    }
+
+    /** What the planner asked for. */
+    public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
+            List<String> formats) {
+        public Settings {
+            formats = List.copyOf(formats);
+        }
+    }
+
+    /** Reads --formats, refusing unknown names. */
+    public static List<String> parseFormats(String text) throws CamInputException {
+        List<String> out = new ArrayList<>();
+        for (String f : text.split(",")) {
+            String t = f.trim().toLowerCase(java.util.Locale.ROOT);
+            if (t.isEmpty()) {
+                continue;
+            }
+            if (!FORMATS.contains(t)) {
+                throw new CamInputException("--formats", "unknown format '" + f.trim()
+                        + "': expected a comma list of csv, xml, rapid, krl, png");
+            }
+            out.add(t);
+        }
+        return out;
+    }
+
+    /** Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}. */
+    public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        for (String f : s.formats()) {
+            if (!FORMATS.contains(f)) {
+                throw new CamInputException("formats", "unknown format '" + f + "'");
+            }
+        }
+        Robot robot = RobotFiles.load(s.robot());
+        StepNcProgram program = StepNcService.read(s.stepnc(), progress);
+        progress.progress(-1, "planning toolpaths");
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        Toolpath path = plan.toolpath();
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
+                s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT);
+        RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(req, progress);
+        out.create();
+        out.write("toolpath.csv", os -> {
+            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+            ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
+            w.flush();
+        });
+        String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        TaskOutcome o = RobotTrajectoryService.write(solved, name, out);
+        List<String> problems = new ArrayList<>(plan.problems());
+        problems.addAll(o.problems());
+        Map<String, Object> summary = new LinkedHashMap<>(o.summary());
+        summary.put("workingsteps", plan.workingsteps());
+        summary.put("planned_workingsteps", plan.planned());
+        int status = o.exitStatus() == 0 && plan.planned() == plan.workingsteps() ? 0 : 1;
+        return new TaskOutcome(status, problems, summary, out.written());
+    }
+
+    /** The job task. */
+    public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        JobSettings.StepNcSettings st = JobRunner.require(job.stepnc(), "stepnc", job);
+        JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
+        List<String> formats = parseFormats(String.join(",", r.formats()));
+        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats), out, progress);
+    }
+}

@@ -1,0 +1,359 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import org.fresa.chart.ChartFiles;
+import org.fresa.chart.RobotCharts;
+import org.fresa.geom.Transform3;
+import org.fresa.geom.Vec3;
+import org.fresa.kin.JointLimit;
+import org.fresa.kin.JointType;
+import org.fresa.kin.Orientation;
+import org.fresa.kin.Robot;
+import org.fresa.kin.ToolTarget;
+import org.fresa.kin.TrajectoryPoint;
+import org.fresa.kin.TrajectorySolver;
+import org.fresa.model.ExactDecimal;
+import org.fresa.model.Move;
+import org.fresa.model.Placement;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * A toolpath in the workpiece frame turned into a robot joint trajectory (issue 5):
+ * {@code trajectory.csv}, {@code summary.json}, {@code joints.png} and {@code error.png}.
+ *
+ * <p>A point p of the workpiece frame is p_R = T_robot_table * T_table_piece * p in the robot
+ * base frame (spec/cli.md). The robot's tool axis z_e points from the flange into the material,
+ * so it is minus the toolpath's axis (tip towards spindle). Arcs are sampled at the chord
+ * tolerance; each sample is a trajectory point.
+ */
+public final class RobotTrajectoryService {
+
+    private RobotTrajectoryService() {
+    }
+
+    /**
+     * What to run.
+     *
+     * @param toolpath in the workpiece frame
+     * @param robot the robot
+     * @param robotTable table origin in the robot base frame
+     * @param tablePiece workpiece origin in the table frame
+     * @param chordToleranceMm largest distance of an arc from its sampled chords, > 0
+     * @param formats output formats; csv and png are handled here
+     * @param options trajectory options (IK method, continuity, free rotation)
+     */
+    public record Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
+            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+        public Request {
+            Objects.requireNonNull(toolpath, "toolpath");
+            Objects.requireNonNull(robot, "robot");
+            Objects.requireNonNull(robotTable, "robotTable");
+            Objects.requireNonNull(tablePiece, "tablePiece");
+            Objects.requireNonNull(options, "options");
+            formats = List.copyOf(formats);
+            if (!(chordToleranceMm > 0)) {
+                throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
+            }
+        }
+
+        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece) {
+            this(toolpath, robot, robotTable, tablePiece, 0.01, List.of("csv", "png"), TrajectorySolver.Options.DEFAULT);
+        }
+    }
+
+    /**
+     * Reads {@code --robot-table X,Y,Z[,RZ]} (mm, deg).
+     *
+     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 or 4 numbers
+     */
+    public static Placement parseRobotTable(String text) throws org.fresa.model.CamInputException {
+        double[] v = numbers("--robot-table", text, 3, 4);
+        return new Placement(v[0], v[1], v[2], 0, 0, v.length > 3 ? v[3] : 0);
+    }
+
+    /**
+     * Reads {@code --table-piece X,Y,Z[,RX,RY,RZ]} (mm, deg; R = Rz*Ry*Rx).
+     *
+     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers
+     */
+    public static Placement parseTablePiece(String text) throws org.fresa.model.CamInputException {
+        double[] v = numbers("--table-piece", text, 3, 6);
+        return new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0,
+                v.length > 5 ? v[5] : 0);
+    }
+
+    private static double[] numbers(String option, String text, int min, int max)
+            throws org.fresa.model.CamInputException {
+        String[] parts = text.split(",", -1);
+        if (parts.length < min || parts.length > max) {
+            throw new org.fresa.model.CamInputException(option, "expected " + min + " to " + max
+                    + " comma-separated numbers, got '" + text + "'");
+        }
+        double[] v = new double[parts.length];
+        for (int i = 0; i < parts.length; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                v[i] = Double.NaN;
+            }
+            if (!Double.isFinite(v[i])) {
+                throw new org.fresa.model.CamInputException(option, "value " + (i + 1) + " is not a number: '"
+                        + parts[i].trim() + "'");
+            }
+        }
+        return v;
+    }
+
+    /** A solved trajectory with what it was solved for. */
+    public record Solved(Request request, List<ToolTarget> targets, TrajectorySolver.Result result) {
+    }
+
+    /** Solves and writes the files; exit status 1 (with the reason) when points are unreachable. */
+    public static TaskOutcome run(Request req, OutputFolder out, ProgressMonitor progress) throws IOException {
+        return write(solve(req, progress), "program", out);
+    }
+
+    /** Places the toolpath in the cell and solves the inverse kinematics of every point. */
+    public static Solved solve(Request req, ProgressMonitor progress) {
+        Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
+        List<ToolTarget> targets = targets(req.toolpath(), robotToPiece, req.chordToleranceMm());
+        progress.progress(0, "inverse kinematics");
+        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, (done, total) -> {
+            progress.checkCancelled();
+            if ((done & 255) == 0 || done == total) {
+                progress.progress((double) done / total, "inverse kinematics");
+            }
+        });
+        return new Solved(req, targets, r);
+    }
+
+    /**
+     * Writes the formats the request names: trajectory.csv (csv), joints.png and error.png (png),
+     * program.xml (xml), program.mod (rapid), program.src (krl), and always summary.json.
+     *
+     * @param programName the name robot programs carry
+     */
+    public static TaskOutcome write(Solved solved, String programName, OutputFolder out) throws IOException {
+        Request req = solved.request();
+        TrajectorySolver.Result r = solved.result();
+        out.create();
+        List<String> fmts = req.formats();
+        if (fmts.contains("csv")) {
+            out.writeString("trajectory.csv", trajectoryCsv(req.robot(), r));
+        }
+        if (fmts.contains("png")) {
+            writeCharts(req.robot(), r, out);
+        }
+        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points()), req.robot(),
+                fmts, out);
+        Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
+        out.writeString("summary.json", Json.writePretty(summary));
+        List<String> problems = new ArrayList<>(r.notes());
+        int exit = 0;
+        if (r.unreachable() > 0) {
+            exit = 1;
+            problems.add(0, r.unreachable() + " of " + r.points().size() + " points are unreachable for "
+                    + req.robot().name() + " in this placement (status unreachable in trajectory.csv)");
+        }
+        return new TaskOutcome(exit, problems, summary, out.written());
+    }
+
+    /** The toolpath as robot targets: positions in the robot base frame, z_e into the material. */
+    public static List<ToolTarget> targets(Toolpath path, Transform3 robotToPiece, double chordToleranceMm) {
+        List<ToolTarget> out = new ArrayList<>();
+        for (ToolpathSection s : path.sections()) {
+            Vec3 axis = robotToPiece.applyToDirection(s.toolAxis()).negated().normalized();
+            Vec3 x = ToolTarget.naturalX(axis);
+            Vec3 at = s.start();
+            // the start is a point of its own unless the previous section ended there with this axis
+            ToolTarget last = out.isEmpty() ? null : out.get(out.size() - 1);
+            if (last == null || !last.positionMm().eq(robotToPiece.applyToPoint(at), org.fresa.geom.Tolerance.DEFAULT)
+                    || last.toolAxis().distance(axis) > 1e-12) {
+                out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(at), axis, x));
+            }
+            for (Move m : s.moves()) {
+                if (m instanceof Move.Circular c) {
+                    for (Vec3 p : sampleArc(at, c, chordToleranceMm)) {
+                        out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(p), axis, x));
+                    }
+                } else {
+                    out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(m.end()), axis, x));
+                }
+                at = m.end();
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Points along a circular (or helical) move after its start, ending exactly at its end, no
+     * chord further than the tolerance from the arc.
+     */
+    static List<Vec3> sampleArc(Vec3 start, Move.Circular c, double chordToleranceMm) {
+        Vec3 n = c.normal();
+        Vec3 u = start.minus(c.center());
+        double hu = u.dot(n);
+        u = u.minus(n.times(hu));
+        Vec3 v = c.end().minus(c.center());
+        double hv = v.dot(n);
+        v = v.minus(n.times(hv));
+        double ru = u.norm();
+        double rv = v.norm();
+        double sweep = Math.atan2(n.dot(u.cross(v)), u.dot(v));
+        if (c.ccw()) {
+            if (sweep <= 1e-12) {
+                sweep += 2 * Math.PI;
+            }
+            sweep += 2 * Math.PI * c.turns();
+        } else {
+            if (sweep >= -1e-12) {
+                sweep -= 2 * Math.PI;
+            }
+            sweep -= 2 * Math.PI * c.turns();
+        }
+        double r = Math.max(ru, rv);
+        double maxStep = r <= chordToleranceMm ? Math.PI / 2 : 2 * Math.acos(1 - chordToleranceMm / r);
+        int pieces = Math.max(1, (int) Math.ceil(Math.abs(sweep) / Math.min(maxStep, Math.PI / 2)));
+        List<Vec3> out = new ArrayList<>(pieces);
+        Vec3 uh = ru > 0 ? u.times(1 / ru) : Vec3.UNIT_X;
+        Vec3 wh = n.cross(uh);
+        for (int i = 1; i < pieces; i++) {
+            double f = (double) i / pieces;
+            double a = sweep * f;
+            double rad = ru + (rv - ru) * f;
+            Vec3 p = c.center().plus(uh.times(rad * Math.cos(a))).plus(wh.times(rad * Math.sin(a)))
+                    .plus(n.times(hu + (hv - hu) * f));
+            out.add(p);
+        }
+        out.add(c.end());
+        return out;
+    }
+
+    static String trajectoryCsv(Robot robot, TrajectorySolver.Result r) {
+        int n = robot.dof();
+        StringBuilder sb = new StringBuilder(r.points().size() * 200);
+        sb.append("index,workingstep,x,y,z,roll,pitch,yaw");
+        for (int i = 1; i <= n; i++) {
+            sb.append(",q").append(i);
+        }
+        sb.append(",reached_x,reached_y,reached_z,pos_err_mm,rot_err_rad,status\n");
+        int index = 1;
+        for (TrajectoryPoint p : r.points()) {
+            Transform3 t = p.target();
+            double[] rpy = Orientation.rollPitchYawDeg(t);
+            sb.append(index++).append(',').append(csvText(p.label()));
+            appendNumbers(sb, t.tx(), t.ty(), t.tz(), rpy[0], rpy[1], rpy[2]);
+            if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
+                sb.append(",".repeat(n + 5));
+            } else {
+                appendNumbers(sb, p.q());
+                Transform3 reached = p.reached().orElseThrow();
+                appendNumbers(sb, reached.tx(), reached.ty(), reached.tz(), p.posErrMm(), p.rotErrRad());
+            }
+            sb.append(',').append(p.status().csv()).append('\n');
+        }
+        return sb.toString();
+    }
+
+    private static void appendNumbers(StringBuilder sb, double... v) {
+        for (double d : v) {
+            sb.append(',').append(ExactDecimal.of(d));
+        }
+    }
+
+    private static String csvText(String s) {
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0) {
+            return s;
+        }
+        return '"' + s.replace("\"", "\"\"") + '"';
+    }
+
+    static Map<String, Object> summary(Robot robot, int targets, TrajectorySolver.Result r) {
+        double maxPos = 0;
+        double maxRot = 0;
+        double maxStep = 0;
+        double[] prevOk = null;
+        for (TrajectoryPoint p : r.points()) {
+            if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
+                prevOk = null;
+                continue;
+            }
+            maxPos = Math.max(maxPos, p.posErrMm());
+            maxRot = Math.max(maxRot, p.rotErrRad());
+            if (p.status() == TrajectoryPoint.Status.OK) {
+                double[] q = p.q();
+                if (prevOk != null) {
+                    for (int i = 0; i < q.length; i++) {
+                        if (robot.joints().get(i).type() == JointType.REVOLUTE) {
+                            maxStep = Math.max(maxStep, Math.abs(q[i] - prevOk[i]));
+                        }
+                    }
+                }
+                prevOk = q;
+            } else {
+                prevOk = null; // relink points separate the configurations
+            }
+        }
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("robot", robot.name());
+        m.put("targets", targets);
+        m.put("points", r.points().size());
+        m.put("unreachable", r.unreachable());
+        m.put("relinks", r.relinks());
+        m.put("subdivided_moves", r.subdividedMoves());
+        m.put("max_pos_err_mm", maxPos);
+        m.put("max_rot_err_rad", maxRot);
+        m.put("max_joint_step_deg", maxStep);
+        m.put("ik_ms", r.ikNanos() / 1e6);
+        Map<String, Object> free = new LinkedHashMap<>();
+        free.put("rotated_points", r.rotatedPoints());
+        free.put("changes", r.rotationChanges());
+        free.put("max_abs_deg", r.maxFreeRotationDeg());
+        free.put("what", r.rotatedPoints() == 0
+                ? "the tool kept its preferred x direction at every point"
+                : String.format(Locale.ROOT, "the tool was turned about its axis (up to %.0f deg) at %d points, in %d"
+                        + " steps, to stay clear of joint limits and the wrist singularity or to avoid a"
+                        + " reconfiguration", r.maxFreeRotationDeg(), r.rotatedPoints(), r.rotationChanges()));
+        m.put("free_rotation", free);
+        m.put("notes", r.notes());
+        return m;
+    }
+
+    private static void writeCharts(Robot robot, TrajectorySolver.Result r, OutputFolder out) throws IOException {
+        List<JointLimit> limits = robot.joints();
+        int n = limits.size();
+        int count = r.points().size();
+        double[][] values = new double[n][count];
+        double[][] err = new double[count][3];
+        for (int k = 0; k < count; k++) {
+            TrajectoryPoint p = r.points().get(k);
+            double[] q = p.q();
+            for (int i = 0; i < n; i++) {
+                values[i][k] = q.length == n ? q[i] : Double.NaN;
+            }
+            if (p.reached().isPresent()) {
+                Transform3 t = p.target();
+                Transform3 re = p.reached().get();
+                err[k] = new double[] {t.tx() - re.tx(), t.ty() - re.ty(), t.tz() - re.tz()};
+            } else {
+                err[k] = new double[] {Double.NaN, Double.NaN, Double.NaN};
+            }
+        }
+        List<RobotCharts.JointSeries> series = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            JointLimit l = limits.get(i);
+            series.add(new RobotCharts.JointSeries(l.name(), l.type().unit(), l.min(), l.max(), values[i]));
+        }
+        out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
+                1000, 160 * n + 80, o));
+        out.write("error.png", o -> ChartFiles.writePng(
+                RobotCharts.positionErrors("Position error per axis, " + robot.name(), err), 1000, 500, o));
+    }
+}

@@ -1,0 +1,142 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec3;
+import org.fresa.model.CamInputException;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+import org.fresa.post.ArcGeometry;
+import org.fresa.post.NcPost;
+import org.fresa.post.NcPosts;
+import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.ToolpathPlanner;
+
+/**
+ * STEP-NC toolpaths as a task ({@code fresa toolpath}, {@code fresa run} task toolpath): reads
+ * the file, plans every workingstep in workplan order and writes {@code toolpath.csv},
+ * {@code program.ngc} (the chosen post) and {@code summary.json} (spec/cli.md). Workingsteps that
+ * cannot be planned are reported and the rest written, with exit status 1.
+ *
+ * <p>Cycle time: feed moves at their feed, rapids at {@link #RAPID_MM_PER_MIN}; no acceleration.
+ */
+public final class ToolpathService {
+
+    /** Rapid traverse rate assumed for the cycle-time estimate (mm/min). */
+    public static final double RAPID_MM_PER_MIN = 10000;
+
+    private ToolpathService() {
+    }
+
+    /** The post by name, or bad usage naming the known ones. */
+    public static NcPost post(String name, String source) throws CamInputException {
+        return NcPosts.byName(name).orElseThrow(() -> new CamInputException(source,
+                "unknown post '" + name + "': expected one of " + String.join(", ", NcPosts.names())));
+    }
+
+    /** Plans and writes the three files into the folder. */
+    public static TaskOutcome run(Path file, String postName, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        NcPost post = post(postName, "--post");
+        StepNcProgram program = StepNcService.read(file, progress);
+        progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        Toolpath path = plan.toolpath();
+        out.create();
+        out.write("toolpath.csv", os -> {
+            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+            ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
+            w.flush();
+        });
+        String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        out.write("program.ngc", os -> {
+            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+            post.write(path, name, w);
+            w.flush();
+        });
+        Map<String, Object> summary = summary(program, plan, post);
+        out.writeString("summary.json", Json.writePretty(summary));
+        progress.progress(1, "done");
+        int status = plan.problems().isEmpty() || plan.planned() == plan.workingsteps() ? 0 : 1;
+        return new TaskOutcome(status, plan.problems(), summary, out.written());
+    }
+
+    /** The job task. */
+    public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        JobSettings.StepNcSettings s = JobRunner.require(job.stepnc(), "stepnc", job);
+        String post = s.post() == null || s.post().isBlank() ? NcPosts.DEFAULT : s.post();
+        return run(s.file(), post, out, progress);
+    }
+
+    static Map<String, Object> summary(StepNcProgram program, ToolpathPlanner.Plan plan, NcPost post) {
+        Toolpath path = plan.toolpath();
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("source", program.source());
+        m.put("post", post.name());
+        m.put("workingsteps", plan.workingsteps());
+        m.put("planned", plan.planned());
+        m.put("sections", path.sections().size());
+        m.put("moves", path.moveCount());
+        m.put("points", ToolpathCsv.rows(path, NcPosts.CHORD_TOLERANCE_MM).size());
+        double rapid = 0;
+        double feed = 0;
+        double minutes = 0;
+        List<Object> perSection = new ArrayList<>();
+        for (ToolpathSection s : path.sections()) {
+            double sr = 0;
+            double sf = 0;
+            double st = 0;
+            Vec3 at = s.start();
+            for (Move mv : s.moves()) {
+                if (mv instanceof Move.Rapid r) {
+                    double l = at.distance(r.end());
+                    sr += l;
+                    st += l / RAPID_MM_PER_MIN;
+                } else if (mv instanceof Move.Linear l) {
+                    double len = at.distance(l.end());
+                    sf += len;
+                    st += len / l.feedMmPerMin();
+                } else if (mv instanceof Move.Circular c) {
+                    double len = ArcGeometry.of(at, c).lengthMm();
+                    sf += len;
+                    st += len / c.feedMmPerMin();
+                }
+                at = mv.end();
+            }
+            rapid += sr;
+            feed += sf;
+            minutes += st;
+            Map<String, Object> x = new LinkedHashMap<>();
+            x.put("workingstep", s.label());
+            x.put("tool", s.toolNumber());
+            x.put("tool_diameter_mm", s.toolDiameterMm());
+            x.put("moves", s.moves().size());
+            x.put("feed_length_mm", sf);
+            x.put("rapid_length_mm", sr);
+            x.put("time_s", st * 60);
+            perSection.add(x);
+        }
+        m.put("feed_length_mm", feed);
+        m.put("rapid_length_mm", rapid);
+        m.put("cycle_time_s", minutes * 60);
+        m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
+        m.put("workingstep_paths", perSection);
+        m.put("problems", plan.problems());
+        List<Object> skipped = new ArrayList<>();
+        for (StepNcProgram.Skipped s : program.skipped()) {
+            skipped.add(Map.of("id", s.id(), "reason", s.reason()));
+        }
+        m.put("skipped", skipped);
+        return m;
+    }
+}

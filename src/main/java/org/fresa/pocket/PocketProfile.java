@@ -1,0 +1,127 @@
+package org.fresa.pocket;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Vec2;
+
+/**
+ * The initial contour of a pocket: elements in clockwise traversal order, element 1 first and the
+ * closing element N last (the first pass starts at the junction N -> 1), with the thesis's
+ * tolerance {@code compar = 1e-4 × mean(|D| or R)} over the input elements.
+ *
+ * @param elements the elements, in order; line k values set from the geometry
+ * @param compar tolerance in mm (scaled to the contour's size)
+ * @param islands closed inner contours (Fresa extension; the thesis has none)
+ */
+public record PocketProfile(List<PocketElement> elements, double compar, List<Contour> islands) {
+
+    public PocketProfile {
+        elements = List.copyOf(elements);
+        islands = List.copyOf(islands);
+        if (elements.size() < 2) {
+            throw new IllegalArgumentException("a pocket contour needs at least 2 elements");
+        }
+    }
+
+    /** The thesis's tolerance for the given elements. */
+    public static double comparOf(List<PocketElement> elements) {
+        double sum = 0;
+        for (PocketElement e : elements) {
+            sum += Math.abs(e.d());
+        }
+        double mean = sum / elements.size();
+        return mean > 0 ? 1e-4 * mean : 1e-6;
+    }
+
+    /** Junction points at t = 0: index i is the start of element i. */
+    public List<Vec2> vertices() {
+        List<Vec2> out = new ArrayList<>();
+        int n = elements.size();
+        for (int i = 0; i < n; i++) {
+            PocketElement p = elements.get((i + n - 1) % n);
+            out.add(ElementGeometry.junction(p, elements.get(i), 0, compar).orElse(Vec2.ZERO));
+        }
+        return out;
+    }
+
+    /**
+     * Sets each line's k from its direction of travel between its junctions (pocket on the right),
+     * as the thesis's subroutine 8470 does for lines with A >= 0, but for any sign of (A, B).
+     *
+     * @return empty when a junction does not exist
+     */
+    static Optional<List<PocketElement>> withLineDirections(List<PocketElement> elements, double compar) {
+        int n = elements.size();
+        List<Vec2> v = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Optional<Vec2> j = ElementGeometry.junction(elements.get((i + n - 1) % n), elements.get(i), 0, compar);
+            if (j.isEmpty()) {
+                return Optional.empty();
+            }
+            v.add(j.get());
+        }
+        List<PocketElement> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            PocketElement e = elements.get(i);
+            if (!e.arc()) {
+                Vec2 dir = v.get((i + 1) % n).minus(v.get(i));
+                double s = e.a() * dir.y() - e.b() * dir.x();
+                e = e.withK(s >= 0 ? 1 : -1);
+            }
+            out.add(e);
+        }
+        return Optional.of(out);
+    }
+
+    /**
+     * Converts a contour of segments and arcs (any orientation) to thesis elements: lines in the
+     * canonical unit form with A >= 0, arcs convex when they turn with the clockwise contour.
+     */
+    public static PocketProfile fromContours(List<Contour> contours) {
+        Contour outer = contours.get(0);
+        if (outer.isCcw()) {
+            outer = outer.reversed();
+        }
+        List<PocketElement> raw = new ArrayList<>();
+        int n = outer.size();
+        for (int i = 0; i < n; i++) {
+            Curve2 c = outer.get(i);
+            int number = i + 1;
+            if (c instanceof Segment2 s) {
+                double a = s.start().y() - s.end().y();
+                double b = s.end().x() - s.start().x();
+                double d = s.end().x() * s.start().y() - s.end().y() * s.start().x();
+                double len = Math.hypot(a, b);
+                a /= len;
+                b /= len;
+                d /= len;
+                if (a < 0 || (a == 0 && b < 0)) {
+                    a = -a;
+                    b = -b;
+                    d = -d;
+                }
+                raw.add(new PocketElement(number, false, a, b, d, 1, 'S'));
+            } else {
+                Arc2 arc = (Arc2) c;
+                raw.add(new PocketElement(number, true, arc.center().x(), arc.center().y(), arc.radius(),
+                        arc.ccw() ? 1 : -1, 'S'));
+            }
+        }
+        List<PocketElement> sel = new ArrayList<>();
+        double compar = comparOf(raw);
+        for (int i = 0; i < n; i++) {
+            PocketElement prev = raw.get((i + n - 1) % n);
+            PocketElement e = raw.get(i);
+            Vec2 start = outer.get(i).start();
+            sel.add(e.withSelector(ElementGeometry.selectorNear(prev, e, 0, start, compar)));
+        }
+        List<PocketElement> out = withLineDirections(sel, compar).orElse(sel);
+        List<Contour> islands = contours.size() > 1 ? contours.subList(1, contours.size()) : List.of();
+        return new PocketProfile(out, compar, islands);
+    }
+}

@@ -1,0 +1,124 @@
+package org.fresa.post;
+
+import java.io.IOException;
+import java.io.Writer;
+import org.fresa.geom.Vec3;
+
+/**
+ * KUKA KRL ({@code program.src}, KSS 8): {@code PTP} with the axis values for joint motions,
+ * {@code LIN} with X Y Z A B C and the Status and Turn bits for linear motions on the part,
+ * {@code $VEL.CP} (m/s) from the feed. Everything is inline, so no {@code .dat} file is needed.
+ *
+ * <p>A, B, C are Z-Y-X Euler angles (A about z, B about y, C about x). Status: bit 0 the wrist
+ * centre behind axis 1 (overhead area), bit 1 axis 3 beyond the straight arm, bit 2 axis 5 <= 0.
+ * Turn: bit i set when axis i + 1 is negative. The axes are the robot's joints in Fresa's
+ * convention (spec/robots.md), named A1..A6.
+ */
+public final class KrlWriter implements RobotProgramWriter {
+
+    private final RapidWriter.ArmGeometry arm;
+
+    public KrlWriter(RapidWriter.ArmGeometry arm) {
+        this.arm = arm;
+    }
+
+    @Override
+    public String format() {
+        return "krl";
+    }
+
+    @Override
+    public String fileName() {
+        return "program.src";
+    }
+
+    @Override
+    public void write(RobotProgram p, Writer out) throws IOException {
+        String name = RobotProgramWriter.identifier(p.programName(), 24);
+        StringBuilder sb = new StringBuilder(96 * (p.motions().size() + 20));
+        sb.append("&ACCESS RVP\n&REL 1\n&PARAM TEMPLATE = C:\\KRC\\Roboter\\Template\\vorgabe\n&PARAM EDITMASK = *\n");
+        sb.append("DEF ").append(name).append("( )\n");
+        sb.append(";FOLD INI\n  BAS (#INITMOV,0 )\n;ENDFOLD (INI)\n");
+        sb.append("; Fresa robot program for ").append(p.robotName()).append(": ").append(p.motions().size())
+                .append(" motions, base and tool frames 0 (the robot base frame and the flange+TCP of the job)\n");
+        sb.append("$BASE = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
+        sb.append("$TOOL = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
+        sb.append("$APO.CDIS = 0.5\n");
+        double vel = Double.NaN;
+        String ws = null;
+        for (RobotProgram.Motion m : p.motions()) {
+            if (!m.workingstep().equals(ws)) {
+                ws = m.workingstep();
+                sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
+            }
+            if (m.type() == RobotProgram.MotionType.JOINT) {
+                sb.append("PTP {AXIS: ");
+                for (int i = 0; i < m.jointValues().size(); i++) {
+                    sb.append(i > 0 ? "," : "").append('A').append(i + 1).append(' ').append(f(m.joint(i), 6));
+                }
+                sb.append("}");
+            } else {
+                double v = m.speedMmPerS() / 1000.0;
+                if (v != vel) {
+                    vel = v;
+                    sb.append("$VEL.CP = ").append(f(v, 6)).append('\n');
+                }
+                Vec3 pos = m.target().translationPart();
+                Vec3 abc = m.target().zyxAnglesDeg();
+                sb.append("LIN {E6POS: X ").append(f(pos.x(), 3)).append(",Y ").append(f(pos.y(), 3))
+                        .append(",Z ").append(f(pos.z(), 3)).append(",A ").append(f(abc.x(), 6))
+                        .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6))
+                        .append(",S 'B").append(bits(status(m), 3)).append("',T 'B").append(bits(turn(m), 6))
+                        .append("'}");
+                if (m.zoneMm() > 0) {
+                    sb.append(" C_DIS");
+                }
+                sb.append(" ; j=[");
+                for (int i = 0; i < m.jointValues().size(); i++) {
+                    sb.append(i > 0 ? "," : "").append(f(m.joint(i), 6));
+                }
+                sb.append(']');
+            }
+            sb.append(" ; ").append(m.index()).append('\n');
+        }
+        sb.append("END\n");
+        out.write(sb.toString());
+    }
+
+    int status(RobotProgram.Motion m) {
+        int s = 0;
+        if (arm.rear(m)) {
+            s |= 1;
+        }
+        if (!arm.lowerArm(m)) {
+            s |= 2;
+        }
+        if (m.jointValues().size() > 4 && m.joint(4) <= 0) {
+            s |= 4;
+        }
+        return s;
+    }
+
+    static int turn(RobotProgram.Motion m) {
+        int t = 0;
+        for (int i = 0; i < Math.min(6, m.jointValues().size()); i++) {
+            if (m.joint(i) < 0) {
+                t |= 1 << i;
+            }
+        }
+        return t;
+    }
+
+    static String bits(int value, int width) {
+        StringBuilder b = new StringBuilder(Integer.toBinaryString(value));
+        while (b.length() < width) {
+            b.insert(0, '0');
+        }
+        return b.toString();
+    }
+
+    static String f(double v, int decimals) {
+        return RapidWriter.f(v, decimals);
+    }
+
+}

@@ -1,0 +1,136 @@
+package org.fresa.post;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.util.Locale;
+import org.fresa.geom.Quaternion;
+import org.fresa.geom.Vec3;
+
+/**
+ * ABB RAPID ({@code program.mod}): a MODULE with tooldata and wobjdata declarations and one
+ * procedure; {@code MoveAbsJ} for joint motions (approach, relinks), {@code MoveL} with a
+ * robtarget for each linear motion on the part. Robtargets carry the quaternion (q1 scalar) and
+ * the confdata [cf1, cf4, cf6, cfx] computed from the joints, so the controller keeps the
+ * trajectory's configuration (ConfL\On).
+ *
+ * <p>cf1, cf4, cf6 are the quarter revolutions of axes 1, 4 and 6 (floor(q/90): 0..89.999 deg is
+ * 0, -90..-0.001 is -1). cfx follows RobotWare 6 for a 6R arm with a spherical wrist:
+ * 4 * rear + 2 * lowerArm + flip, where flip is q5 < 0, lowerArm is q3 below the
+ * straight-arm angle (the elbow below the line from shoulder to wrist) and rear is the wrist centre
+ * behind axis 1. The joints are in Fresa's convention for the robot (spec/robots.md), which for the
+ * IRB-140 is ABB's.
+ */
+public final class RapidWriter implements RobotProgramWriter {
+
+    private final ArmGeometry arm;
+
+    /**
+     * @param arm how to tell rear and lower-arm configurations from the joints of this robot
+     */
+    public RapidWriter(ArmGeometry arm) {
+        this.arm = arm;
+    }
+
+    /** What cfx needs to know of the arm, from its kinematics. */
+    public interface ArmGeometry {
+        /** True when the wrist centre lies behind axis 1 (negative x in axis 1's rotated frame). */
+        boolean rear(RobotProgram.Motion m);
+
+        /** True when the elbow is below the shoulder-wrist line (ABB's "lower arm" case). */
+        boolean lowerArm(RobotProgram.Motion m);
+    }
+
+    @Override
+    public String format() {
+        return "rapid";
+    }
+
+    @Override
+    public String fileName() {
+        return "program.mod";
+    }
+
+    @Override
+    public void write(RobotProgram p, Writer out) throws IOException {
+        String module = RobotProgramWriter.identifier(p.programName(), 32);
+        StringBuilder sb = new StringBuilder(64 * (p.motions().size() + 20));
+        sb.append("MODULE ").append(module).append('\n');
+        sb.append("  ! Fresa robot program for ").append(p.robotName()).append(": ")
+                .append(p.motions().size()).append(" motions\n");
+        sb.append("  PERS tooldata tFresa := [TRUE,[[0,0,0],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+        sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
+        sb.append("  ! the joints and poses are in the robot base frame; tFresa and wFresa are the identity\n");
+        sb.append("  ! so that the controller's TCP matches Fresa's (set the real tool's TCP in tFresa)\n");
+        sb.append('\n');
+        sb.append("  PROC main()\n");
+        sb.append("    ConfJ \\On;\n");
+        sb.append("    ConfL \\On;\n");
+        String ws = null;
+        for (RobotProgram.Motion m : p.motions()) {
+            if (!m.workingstep().equals(ws)) {
+                ws = m.workingstep();
+                sb.append("    ! workingstep ").append(ws.replace('\n', ' ')).append('\n');
+            }
+            String speed = speed(m.speedMmPerS());
+            String zone = zone(m.zoneMm());
+            if (m.type() == RobotProgram.MotionType.JOINT || m.jointValues().size() != 6) {
+                sb.append("    MoveAbsJ [[");
+                for (int i = 0; i < 6; i++) {
+                    if (i > 0) {
+                        sb.append(',');
+                    }
+                    sb.append(i < m.jointValues().size() ? f(m.joint(i), 6) : "0");
+                }
+                sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
+                        .append(",tFresa\\WObj:=wFresa;");
+            } else {
+                Vec3 pos = m.target().translationPart();
+                Quaternion q = Quaternion.of(m.target());
+                sb.append("    MoveL [[").append(f(pos.x(), 3)).append(',').append(f(pos.y(), 3)).append(',')
+                        .append(f(pos.z(), 3)).append("],[").append(f(q.w(), 8)).append(',').append(f(q.x(), 8))
+                        .append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8)).append("],[")
+                        .append(quarter(m.joint(0))).append(',').append(quarter(m.joint(3))).append(',')
+                        .append(quarter(m.joint(5))).append(',').append(cfx(m))
+                        .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
+                        .append(",tFresa\\WObj:=wFresa;");
+                // the joints the trajectory found for this robtarget, so a reader can check them
+                sb.append(" ! j=[");
+                for (int i = 0; i < 6; i++) {
+                    sb.append(i > 0 ? "," : "").append(f(m.joint(i), 6));
+                }
+                sb.append(']');
+            }
+            sb.append(" ! ").append(m.index()).append('\n');
+        }
+        sb.append("  ENDPROC\n");
+        sb.append("ENDMODULE\n");
+        out.write(sb.toString());
+    }
+
+    /** The quarter revolution of a joint angle in degrees, as confdata counts it. */
+    static int quarter(double angleDeg) {
+        return (int) Math.floor(angleDeg / 90.0);
+    }
+
+    int cfx(RobotProgram.Motion m) {
+        int flip = m.joint(4) < 0 ? 1 : 0;
+        return 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
+    }
+
+    /** speeddata [v_tcp mm/s, v_ori deg/s, v_leax, v_reax]. */
+    static String speed(double mmPerS) {
+        return "[" + f(mmPerS, 3) + ",500,5000,1000]";
+    }
+
+    static String zone(double mm) {
+        if (mm <= 0) {
+            return "fine";
+        }
+        return "[FALSE," + f(mm, 3) + "," + f(1.5 * mm, 3) + "," + f(1.5 * mm, 3) + ",0.15," + f(1.5 * mm, 3) + ",0.15]";
+    }
+
+    static String f(double v, int decimals) {
+        String s = String.format(Locale.ROOT, "%." + decimals + "f", v);
+        return s.startsWith("-") && Double.parseDouble(s) == 0 ? s.substring(1) : s;
+    }
+}

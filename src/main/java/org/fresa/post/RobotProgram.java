@@ -1,0 +1,97 @@
+package org.fresa.post;
+
+import java.util.List;
+import java.util.Objects;
+import org.fresa.geom.Transform3;
+
+/**
+ * A robot program ready to be written in a robot language or as offline-programming XML: the
+ * robot's joints and one motion per reachable trajectory point, in order. Built from a joint
+ * trajectory; unreachable points are not in it.
+ *
+ * @param programName a name for the program (each writer sanitises it for its language)
+ * @param robotName the robot's name (e.g. irb140)
+ * @param joints the robot's joints in order
+ * @param motions the motions in order
+ */
+public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions) {
+
+    public RobotProgram {
+        Objects.requireNonNull(programName, "programName");
+        Objects.requireNonNull(robotName, "robotName");
+        joints = List.copyOf(joints);
+        motions = List.copyOf(motions);
+        for (Motion m : motions) {
+            if (m.jointValues().size() != joints.size()) {
+                throw new IllegalArgumentException("motion " + m.index() + " has " + m.jointValues().size()
+                        + " joint values for " + joints.size() + " joints");
+            }
+        }
+    }
+
+    /** Revolute joints move in degrees, prismatic ones in millimetres. */
+    public enum JointType {
+        REVOLUTE("deg"), PRISMATIC("mm");
+
+        private final String unit;
+
+        JointType(String unit) {
+            this.unit = unit;
+        }
+
+        public String unit() {
+            return unit;
+        }
+    }
+
+    /** A joint: its name (A1, Joint 1, ...), type and limits in its unit. */
+    public record Joint(String name, JointType type, double minValue, double maxValue) {
+        public Joint {
+            Objects.requireNonNull(name, "name");
+            Objects.requireNonNull(type, "type");
+        }
+    }
+
+    /** How the robot moves to a point: interpolated in joints, or on a straight line of the tool tip. */
+    public enum MotionType {
+        JOINT, LINEAR
+    }
+
+    /** What the point is for: on the part, or a relink point lifted off the part. */
+    public enum PointRole {
+        PART, RELINK
+    }
+
+    /**
+     * One motion.
+     *
+     * @param index the trajectory row (trajectory.csv index)
+     * @param workingstep the workingstep it belongs to
+     * @param type joint or linear motion
+     * @param role on the part or a relink point
+     * @param jointValues joint values in each joint's unit (deg or mm), as trajectory.csv has them
+     * @param target the tool-tip pose in the robot base frame (mm), from forward kinematics
+     * @param speedMmPerS tool-tip speed along the path (mm/s)
+     * @param zoneMm rounding (blend) radius; 0 for a fine point
+     */
+    public record Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
+            Transform3 target, double speedMmPerS, double zoneMm) {
+        public Motion {
+            Objects.requireNonNull(workingstep, "workingstep");
+            Objects.requireNonNull(type, "type");
+            Objects.requireNonNull(role, "role");
+            jointValues = List.copyOf(jointValues);
+            Objects.requireNonNull(target, "target");
+            if (!(speedMmPerS > 0) || !Double.isFinite(speedMmPerS)) {
+                throw new IllegalArgumentException("speed must be > 0: " + speedMmPerS);
+            }
+            if (!(zoneMm >= 0)) {
+                throw new IllegalArgumentException("zone must be >= 0: " + zoneMm);
+            }
+        }
+
+        public double joint(int i) {
+            return jointValues.get(i);
+        }
+    }
+}

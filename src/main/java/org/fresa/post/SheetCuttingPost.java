@@ -1,0 +1,213 @@
+package org.fresa.post;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * Programs for sheet cutting machines (plasma, laser, waterjet): each section of the toolpath is
+ * one pierce. The rapid moves of a section come first; the jet is switched on before its first
+ * feed move, followed by the pierce dwell, and off after its last. Arcs are G02/G03 with I, J
+ * relative to the arc start; coordinates absolute, millimetres, {@code Locale.ROOT}.
+ *
+ * <p>Dialects: {@code linuxcnc} (jet codes M3 S1/M5 for plasma, M64/M65 digital outputs P0 for
+ * laser and P1 for waterjet, G4 P seconds), {@code iso} and {@code fanuc} (N numbers, O number,
+ * M07/M08 jet, G04 X seconds), {@code 840d} (N numbers, {@code ;} comments, G4 F seconds).
+ * Controller compensation: a section marked 41 or 42 switches G41/G42 on at its first feed move
+ * (the lead-in, a straight line) and G40 off after its last.
+ */
+public final class SheetCuttingPost {
+
+    /** A dialect with its jet codes and dwell word. */
+    public enum Dialect {
+        LINUXCNC("linuxcnc"), ISO("iso"), FANUC("fanuc"), SIEMENS_840D("840d");
+
+        private final String id;
+
+        Dialect(String id) {
+            this.id = id;
+        }
+
+        public String id() {
+            return id;
+        }
+
+        public static Optional<Dialect> byName(String name) {
+            for (Dialect d : values()) {
+                if (d.id.equalsIgnoreCase(name)) {
+                    return Optional.of(d);
+                }
+            }
+            return Optional.empty();
+        }
+    }
+
+    /**
+     * What the program needs besides the moves.
+     *
+     * @param process plasma, laser or waterjet (chooses the jet codes)
+     * @param pierceDwellS dwell after the jet is switched on
+     * @param compensation per section: 0 none, 41 left, 42 right
+     * @param toolDiameterMm the kerf, for the D word of G41/G42 and the header comment
+     */
+    public record Job(String process, double pierceDwellS, List<Integer> compensation, double toolDiameterMm) {
+        public Job {
+            compensation = List.copyOf(compensation);
+        }
+    }
+
+    private final Dialect d;
+    private int n;
+
+    private SheetCuttingPost(Dialect d) {
+        this.d = d;
+    }
+
+    /** Writes the whole program. */
+    public static void write(Toolpath path, String programName, Job job, Dialect dialect, Writer out) throws IOException {
+        new SheetCuttingPost(dialect).run(path, programName, job, out);
+    }
+
+    private void run(Toolpath path, String programName, Job job, Writer out) throws IOException {
+        String[] jet = jetCodes(job.process());
+        String name = programName.replaceAll("[^A-Za-z0-9 ._-]", "_");
+        boolean anyComp = job.compensation().stream().anyMatch(c -> c != 0);
+        switch (d) {
+            case LINUXCNC -> {
+                line(out, "(" + name + ": " + job.process() + ", kerf " + num(job.toolDiameterMm()) + " mm)");
+                line(out, "G21 G90 G17 G40 G94");
+                if (anyComp) {
+                    line(out, "T1 M6");
+                }
+            }
+            case ISO, FANUC -> {
+                out.write("%\n");
+                out.write("O0001 (" + name.toUpperCase(Locale.ROOT) + ")\n");
+                line(out, "G21 G90 G17 G40 G94");
+            }
+            case SIEMENS_840D -> {
+                out.write("; " + name + ": " + job.process() + "\n");
+                line(out, "G71 G90 G17 G40 G94");
+            }
+        }
+        Vec3 at = Vec3.ZERO;
+        double feed = -1;
+        for (int s = 0; s < path.sections().size(); s++) {
+            ToolpathSection sec = path.sections().get(s);
+            int comp = s < job.compensation().size() ? job.compensation().get(s) : 0;
+            comment(out, sec.label());
+            boolean on = false;
+            int lastFeed = -1;
+            for (int k = 0; k < sec.moves().size(); k++) {
+                if (!(sec.moves().get(k) instanceof Move.Rapid)) {
+                    lastFeed = k;
+                }
+            }
+            for (int k = 0; k < sec.moves().size(); k++) {
+                Move m = sec.moves().get(k);
+                if (m instanceof Move.Rapid r) {
+                    line(out, "G0 X" + num(r.end().x()) + " Y" + num(r.end().y()));
+                } else {
+                    String pre = "";
+                    if (!on) {
+                        line(out, jet[0]);
+                        if (job.pierceDwellS() > 0) {
+                            line(out, dwell(job.pierceDwellS()));
+                        }
+                        on = true;
+                        if (comp != 0) {
+                            pre = d == Dialect.LINUXCNC ? "G" + comp + " " : "G" + comp + " D1 ";
+                        }
+                    }
+                    if (m instanceof Move.Linear l) {
+                        line(out, pre + "G1 X" + num(l.end().x()) + " Y" + num(l.end().y()) + feed(l.feedMmPerMin(), feed));
+                        feed = l.feedMmPerMin();
+                    } else {
+                        Move.Circular c = (Move.Circular) m;
+                        boolean ccw = c.ccw() == (c.normal().z() > 0);
+                        line(out, pre + (ccw ? "G3" : "G2") + " X" + num(c.end().x()) + " Y" + num(c.end().y())
+                                + " I" + num(c.center().x() - at.x()) + " J" + num(c.center().y() - at.y())
+                                + feed(c.feedMmPerMin(), feed));
+                        feed = c.feedMmPerMin();
+                    }
+                    if (k == lastFeed) {
+                        if (comp != 0) {
+                            line(out, "G40");
+                        }
+                        line(out, jet[1]);
+                        on = false;
+                    }
+                }
+                at = m.end();
+            }
+        }
+        switch (d) {
+            case LINUXCNC -> line(out, "M2");
+            case ISO, FANUC -> {
+                line(out, "M30");
+                out.write("%\n");
+            }
+            case SIEMENS_840D -> line(out, "M30");
+        }
+    }
+
+    private String[] jetCodes(String process) {
+        if (d != Dialect.LINUXCNC) {
+            return new String[] {"M07", "M08"};
+        }
+        return switch (process.toLowerCase(Locale.ROOT)) {
+            case "laser" -> new String[] {"M64 P0", "M65 P0"};
+            case "waterjet" -> new String[] {"M64 P1", "M65 P1"};
+            default -> new String[] {"M3 S1", "M5"};
+        };
+    }
+
+    private String dwell(double s) {
+        return switch (d) {
+            case LINUXCNC -> "G4 P" + num(s);
+            case ISO, FANUC -> "G04 X" + num(s);
+            case SIEMENS_840D -> "G4 F" + num(s);
+        };
+    }
+
+    private static String feed(double f, double current) {
+        return f == current ? "" : " F" + num(f);
+    }
+
+    private void comment(Writer out, String text) throws IOException {
+        String t = text.replaceAll("[()\\r\\n;]", " ");
+        if (d == Dialect.SIEMENS_840D) {
+            line(out, "; " + t);
+        } else {
+            line(out, "(" + t + ")");
+        }
+    }
+
+    private void line(Writer out, String text) throws IOException {
+        if (d == Dialect.LINUXCNC) {
+            out.write(text);
+        } else {
+            n += 10;
+            out.write("N" + n + " " + text);
+        }
+        out.write('\n');
+    }
+
+    /** Four decimals, trailing zeros dropped, never "-0". */
+    static String num(double v) {
+        BigDecimal b = BigDecimal.valueOf(v).setScale(4, RoundingMode.HALF_EVEN).stripTrailingZeros();
+        if (b.signum() == 0) {
+            return "0";
+        }
+        String s = b.toPlainString();
+        return s;
+    }
+}

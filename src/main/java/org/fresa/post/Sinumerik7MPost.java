@@ -1,0 +1,177 @@
+package org.fresa.post;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fresa.geom.Vec2;
+import org.fresa.pocket.PassPiece;
+import org.fresa.pocket.PocketPass;
+import org.fresa.pocket.PocketPlan;
+import org.fresa.pocket.PocketTechnology;
+
+/**
+ * The 1988 thesis's post-processor for the Thyssen Hüller NBH-65 with a Siemens Sinumerik 7M
+ * (DIN 66025): coordinates as integer micrometres, BASIC {@code STR$} spacing ({@code X 23680},
+ * {@code J-2214}), blocks N05, N10, ... in steps of 5, modal G01/G02/G03 suppressed, I/J the
+ * arc centre minus the start point from the rounded integers, tool-centre path with G40.
+ *
+ * <p>{@link Mode#COMPAT} reproduces the printed programs with their defects: extra depth passes
+ * copied at the first depth with the finishing feed still modal, negative numbers rounded with
+ * the floor bias of {@code INT(v - .499)}, no blank after 3-digit block numbers in copied blocks.
+ * {@link Mode#CORRECTED} cuts every depth pass at its own depth, restates the roughing feed on
+ * every plunge, rounds symmetrically and always writes the blank.
+ */
+public final class Sinumerik7MPost {
+
+    /** Faithful or corrected output. */
+    public enum Mode {
+        COMPAT, CORRECTED
+    }
+
+    private final Mode mode;
+
+    public Sinumerik7MPost(Mode mode) {
+        this.mode = mode;
+    }
+
+    private record Block(String text, int copiedFrom) {
+    }
+
+    /** The whole program text, lines ending in LF. */
+    public String write(PocketPlan plan) {
+        PocketTechnology t = plan.technology();
+        List<Block> blocks = new ArrayList<>();
+        add(blocks, "%");
+        add(blocks, "G00 G40 G53 G90 Y150000 Z600000 B0");
+        add(blocks, "G53 X450000");
+        add(blocks, "G54 X 0 Y 0 Z" + str(um(t.zTopMm())));
+        add(blocks, "T01 M06");
+        add(blocks, "M21");
+        add(blocks, "G43 Z 5000 S" + str((long) Math.rint(t.spindleRpm())) + " M03");
+        int passes = t.depthPasses();
+        long zp = um(t.depthStepMm());
+        long feed = (long) Math.rint(t.feedMmPerMin());
+        List<PocketPass> milled = plan.milled();
+        if (milled.isEmpty()) {
+            return finish(blocks);
+        }
+        Vec2 s0 = milled.get(0).start();
+        int firstRapid = blocks.size();
+        add(blocks, "G00 G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
+        add(blocks, "G01 G91 Z" + str(-(zp + 5000)) + "F" + str(feed));
+        int firstCut = blocks.size();
+        emitContours(blocks, plan, 1, zp, feed);
+        int lastCut = blocks.size();
+        for (int j = 2; j <= passes; j++) {
+            if (mode == Mode.COMPAT) {
+                add(blocks, "G00 G91 Z" + str(2 * zp + 20000));
+                blocks.add(new Block(blocks.get(firstRapid).text(), firstRapid));
+                add(blocks, "G91 Z -15000");
+                add(blocks, "G01 Z -" + (2 * zp + 5000));
+                for (int b = firstCut; b < lastCut; b++) {
+                    blocks.add(new Block(blocks.get(b).text(), b));
+                }
+            } else {
+                add(blocks, "G00 G91 Z" + str((j - 1) * zp + 20000));
+                add(blocks, "G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
+                add(blocks, "G91 Z -15000");
+                add(blocks, "G01 Z" + str(-(j * zp + 5000)) + " F" + str(feed));
+                emitContours(blocks, plan, j, zp, feed);
+            }
+        }
+        return finish(blocks);
+    }
+
+    private void emitContours(List<Block> blocks, PocketPlan plan, int depth, long zp, long feed) {
+        PocketTechnology t = plan.technology();
+        List<PocketPass> milled = plan.milled();
+        String[] modal = {"G01"};
+        boolean[] afterPlunge = {true};
+        for (int k = 0; k < milled.size(); k++) {
+            PocketPass pass = milled.get(k);
+            if (k > 0) {
+                PocketPass prev = milled.get(k - 1);
+                if (prev.linksOutwardTo(pass)) {
+                    motion(blocks, modal, afterPlunge, "G01", xy(pass.start()), "");
+                } else {
+                    long up = mode == Mode.COMPAT ? zp + 20000 : depth * zp + 20000;
+                    add(blocks, "G00 G91 Z" + str(up));
+                    add(blocks, "G90 X" + str(um(pass.start().x())) + " Y" + str(um(pass.start().y())));
+                    add(blocks, "G91 Z -15000");
+                    if (mode == Mode.COMPAT) {
+                        add(blocks, "G01 Z -" + (zp + 5000));
+                    } else {
+                        add(blocks, "G01 Z" + str(-(depth * zp + 5000)) + " F" + str(feed));
+                    }
+                    modal[0] = "G01";
+                    afterPlunge[0] = true;
+                }
+            }
+            boolean first = true;
+            for (PassPiece p : pass.pieces()) {
+                String tail = pass.finishing() && first ? " F" + str((long) Math.rint(t.finishFeedMmPerMin())) : "";
+                if (p.isArc()) {
+                    long sx = um(p.start().x()), sy = um(p.start().y());
+                    long cx = um(p.center().x()), cy = um(p.center().y());
+                    motion(blocks, modal, afterPlunge, p.ccw() ? "G03" : "G02",
+                            xy(p.end()) + " I" + str(cx - sx) + " J" + str(cy - sy), tail);
+                } else {
+                    motion(blocks, modal, afterPlunge, "G01", xy(p.end()), tail);
+                }
+                first = false;
+            }
+        }
+    }
+
+    private void motion(List<Block> blocks, String[] modal, boolean[] afterPlunge, String g, String coords, String tail) {
+        StringBuilder sb = new StringBuilder();
+        if (afterPlunge[0]) {
+            sb.append("G90 ");
+            afterPlunge[0] = false;
+        }
+        if (!g.equals(modal[0])) {
+            sb.append(g).append(' ');
+            modal[0] = g;
+        }
+        sb.append(coords).append(tail);
+        add(blocks, sb.toString());
+    }
+
+    private String xy(Vec2 p) {
+        return "X" + str(um(p.x())) + " Y" + str(um(p.y()));
+    }
+
+    private String finish(List<Block> blocks) {
+        add(blocks, "G00 G91 Z 200000");
+        add(blocks, "G40 G53 G90 X450000 Y150000 Z600000 B0 M05");
+        add(blocks, "T99 M06");
+        add(blocks, "M22");
+        add(blocks, "M30");
+        StringBuilder out = new StringBuilder();
+        for (int i = 0; i < blocks.size(); i++) {
+            int n = 5 * (i + 1);
+            String num = n < 100 ? String.format(java.util.Locale.ROOT, "%02d", n) : Integer.toString(n);
+            Block b = blocks.get(i);
+            boolean glued = mode == Mode.COMPAT && b.copiedFrom() >= 0 && n >= 100 && 5 * (b.copiedFrom() + 1) < 100;
+            out.append('N').append(num).append(glued ? "" : " ").append(b.text()).append('\n');
+        }
+        return out.toString();
+    }
+
+    private static void add(List<Block> blocks, String text) {
+        blocks.add(new Block(text, -1));
+    }
+
+    /** mm to integer micrometres: the thesis's INT(v·1000 ± .499) in compat mode, else symmetric. */
+    long um(double mm) {
+        double v = mm * 1000;
+        if (mode == Mode.COMPAT) {
+            return (long) Math.floor(v >= 0 ? v + .499 : v - .499);
+        }
+        return (long) Math.signum(v) * (long) Math.floor(Math.abs(v) + 0.5);
+    }
+
+    /** BASIC STR$: a blank before non-negative numbers. */
+    static String str(long v) {
+        return v >= 0 ? " " + v : Long.toString(v);
+    }
+}

@@ -1,0 +1,53 @@
+package org.fresa.toolpath;
+
+import java.util.Objects;
+import org.fresa.geom.Vec2;
+
+/**
+ * How a pocket (or any closed profile) is cleared.
+ *
+ * @param strategy the pass pattern
+ * @param stepoverMm nominal distance between passes ({@link Stepover#nominal} or the radial
+ *     depth); loops are further limited by the corner rule
+ * @param axialDepthMm depth of each layer; 0 or less for one layer at full depth
+ * @param sideAllowanceMm material left on the walls, >= 0
+ * @param bottomAllowanceMm material left on the floor, >= 0
+ * @param feedDirection direction of parallel passes in the feature plane
+ * @param clockwise loop sense seen from the tool (+Z of the feature): with an M3 spindle,
+ *     clockwise loops climb-mill a pocket's walls
+ * @param approach how each layer is entered
+ * @param finishPass after roughing with allowances, run the pattern once more at full depth
+ *     without allowances
+ */
+public record MillingPlan(Strategy strategy, double stepoverMm, double axialDepthMm, double sideAllowanceMm,
+        double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass) {
+
+    public MillingPlan {
+        Objects.requireNonNull(strategy, "strategy");
+        Objects.requireNonNull(feedDirection, "feedDirection");
+        Objects.requireNonNull(approach, "approach");
+        if (!(stepoverMm > 0) || sideAllowanceMm < 0 || bottomAllowanceMm < 0) {
+            throw new IllegalArgumentException("bad plan: stepover " + stepoverMm + ", allowances "
+                    + sideAllowanceMm + "/" + bottomAllowanceMm);
+        }
+    }
+
+    /** A plan with plunges, no allowances, passes along +x, counter-clockwise loops. */
+    public static MillingPlan simple(Strategy strategy, double stepoverMm, double axialDepthMm) {
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, 0, 0, Vec2.UNIT_X, false, new Approach.Plunge(), false);
+    }
+
+    public MillingPlan withApproach(Approach a) {
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection,
+                clockwise, a, finishPass);
+    }
+
+    public MillingPlan withAllowances(double side, double bottom, boolean finish) {
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, side, bottom, feedDirection, clockwise, approach, finish);
+    }
+
+    public MillingPlan withDirection(Vec2 feed, boolean cw) {
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feed, cw,
+                approach, finishPass);
+    }
+}

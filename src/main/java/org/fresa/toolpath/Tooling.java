@@ -1,0 +1,25 @@
+package org.fresa.toolpath;
+
+/**
+ * The cutter and its technology for one operation.
+ *
+ * @param toolNumber magazine number (T word), >= 1
+ * @param diameterMm cutter diameter, > 0
+ * @param spindleRpm spindle speed, >= 0
+ * @param feedMmPerMin cutting feed, > 0
+ * @param plungeFeedMmPerMin feed along the tool axis (plunges, ramps, drilling), > 0
+ */
+public record Tooling(int toolNumber, double diameterMm, double spindleRpm, double feedMmPerMin,
+        double plungeFeedMmPerMin) {
+
+    public Tooling {
+        if (toolNumber < 1 || !(diameterMm > 0) || spindleRpm < 0 || !(feedMmPerMin > 0) || !(plungeFeedMmPerMin > 0)) {
+            throw new IllegalArgumentException("bad tooling: T" + toolNumber + " D" + diameterMm + " S" + spindleRpm
+                    + " F" + feedMmPerMin + "/" + plungeFeedMmPerMin);
+        }
+    }
+
+    public double radiusMm() {
+        return diameterMm / 2;
+    }
+}

@@ -1,0 +1,326 @@
+package org.fresa.toolpath;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Transform3;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+import org.fresa.stepnc.ApproachRetract;
+import org.fresa.stepnc.Feature;
+import org.fresa.stepnc.MachiningWorkingstep;
+import org.fresa.stepnc.Operation;
+import org.fresa.stepnc.StepNcProgram;
+import org.fresa.stepnc.Technology;
+import org.fresa.stepnc.Tool;
+
+/**
+ * From STEP-NC workingsteps to toolpaths: each workingstep's feature, operation, strategy, tool
+ * and technology choose a generator of this package; the path is built in the feature's own
+ * frame (the profile's frame for pockets) and placed into the workpiece frame through the
+ * AXIS2_PLACEMENT_3D chain, so features on side faces come out right.
+ *
+ * <p>Conventions and defaults, where the file is silent:
+ * <ul>
+ * <li>Heights in the feature frame: the feature's top at z = 0, its floor at -depth, the retract
+ * plane at +retract_plane (5 mm when unset, the thesis's value). Each section starts and ends on
+ * the workingstep's security plane, straight above (along the plane's normal) the retract point
+ * over its first and last cut, so the link between workingsteps runs in the security plane even
+ * for features on side faces.
+ * <li>Tools are numbered 1, 2, ... in order of first use; tool instances with the same id, body
+ * and diameter are one tool.
+ * <li>A pocket profile whose placement equals the feature's own placement (STEP Modeler writes
+ * the feature placement again) is read as lying in the feature frame, with a note.
+ * <li>Stepover: the radial cutting depth, else D (1 - overlap), else D / 2 (NIST's default,
+ * the tool radius). Layers: the axial cutting depth, else full depth in one layer.
+ * <li>Plunges, ramps and drilling feed at half the cutting feed for milling cutters and at the
+ * cutting feed for drills. Feed defaults to 1000 mm/min when the file has none.
+ * <li>Loops run clockwise when rotation_direction is CW, or, without it, when the cut mode is
+ * climb (a pocket with an M3 spindle); counter-clockwise otherwise.
+ * <li>Rough operations keep the file's allowances; finish operations cut to size.
+ * <li>Round holes: drilling-type operations drill along the axis (multistep drilling pecks by
+ * one tool diameter), reaming and boring leave at feed; milling operations use helical
+ * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
+ * on a circular pocket (entered on a helix) when it is wider.
+ * <li>Features other than planar faces, closed pockets and round holes are reported and
+ * skipped.
+ * </ul>
+ */
+public final class ToolpathPlanner {
+
+    /** Retract distance when the operation has none (mm), the thesis's value. */
+    public static final double DEFAULT_RETRACT_MM = 5;
+    /** Feed when the technology has none (mm/min). */
+    public static final double DEFAULT_FEED = 1000;
+
+    private ToolpathPlanner() {
+    }
+
+    /**
+     * The toolpath of a program and what could not be done.
+     *
+     * @param sections by workingstep, in execution order, only those planned
+     * @param problems one sentence per workingstep skipped or planned with a doubt
+     */
+    public record Plan(Toolpath toolpath, List<String> problems, int workingsteps, int planned) {
+        public Plan {
+            problems = List.copyOf(problems);
+        }
+    }
+
+    public static Plan plan(StepNcProgram program, Tolerance tol) {
+        Map<String, Integer> toolNumbers = new LinkedHashMap<>();
+        List<ToolpathSection> sections = new ArrayList<>();
+        List<String> problems = new ArrayList<>();
+        int planned = 0;
+        for (MachiningWorkingstep ws : program.workingsteps()) {
+            try {
+                Optional<ToolpathSection> s = section(ws, toolNumbers, problems, tol);
+                if (s.isPresent()) {
+                    sections.add(s.get());
+                    planned++;
+                }
+            } catch (IllegalArgumentException | UnsupportedOperationException e) {
+                problems.add("workingstep '" + ws.id() + "' (#" + ws.instanceId() + "): " + e.getMessage());
+            }
+        }
+        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned);
+    }
+
+    static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<String, Integer> toolNumbers,
+            List<String> problems, Tolerance tol) {
+        Feature f = ws.feature();
+        Operation op = ws.operation();
+        String label = ws.id().isEmpty() ? "#" + ws.instanceId() : ws.id();
+        Tool tool = op.tool().orElseThrow(() -> new IllegalArgumentException("the operation has no tool"));
+        double dia = tool.diameterMm().orElseThrow(() -> new IllegalArgumentException("the tool has no diameter"));
+        // writers repeat one physical tool as an instance per operation: same name, body and size, same tool
+        String key = tool.id() + "|" + tool.body() + "|" + dia;
+        int number = toolNumbers.computeIfAbsent(key, k -> toolNumbers.size() + 1);
+        Technology tech = op.technology();
+        double feed = tech.feedMmPerMin().orElse(DEFAULT_FEED);
+        if (tech.feedMmPerMin().isEmpty()) {
+            problems.add("workingstep '" + label + "': no feed in the file, " + DEFAULT_FEED + " mm/min used");
+        }
+        boolean drillingTool = op.type().isDrillingType();
+        Tooling tooling = new Tooling(number, dia, tech.spindleRpm().orElse(0), feed, drillingTool ? feed : feed / 2);
+        double retract = op.retractPlaneMm().orElse(DEFAULT_RETRACT_MM);
+        double depth = f.depthMm().orElse(0);
+        Heights h = new Heights(retract, retract, 0, -depth);
+        Transform3 place = f.placement();
+        ToolpathSection local;
+        switch (f.type()) {
+            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
+            case CLOSED_POCKET -> {
+                org.fresa.stepnc.Profile sp = f.profile()
+                        .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
+                Transform3 pp = sp.placement();
+                // STEP Modeler writes the feature's own placement (workpiece frame) as the profile's
+                if (!pp.eq(Transform3.IDENTITY, tol) && pp.eq(f.placement(), tol)) {
+                    pp = Transform3.IDENTITY;
+                    problems.add("workingstep '" + label + "': the profile placement repeats the feature placement;"
+                            + " read as the feature frame itself");
+                }
+                place = place.times(pp);
+                Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
+                local = pocket(label, p, op, h, tooling, pp, tol);
+            }
+            case ROUND_HOLE -> local = hole(label, f, op, h, tooling, tol);
+            default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
+        }
+        ToolpathSection placed = Placing.place(local, place);
+        return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    private static ToolpathSection face(String label, Feature f, Operation op, Heights h, Tooling t,
+            List<String> problems) {
+        double d = stepover(op, t);
+        Vec2 course = f.courseOfTravel().flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
+                .map(v -> new Vec2(v.x(), v.y())).orElse(Vec2.UNIT_X);
+        double along = f.courseOfTravel().flatMap(c -> c.distanceMm().isPresent()
+                ? Optional.of(c.distanceMm().getAsDouble()) : Optional.empty()).orElse(0.0);
+        Box2 box;
+        org.fresa.stepnc.Profile sp = f.profile().orElseThrow(
+                () -> new IllegalArgumentException("the planar face has no removal boundary"));
+        Vec3 o = sp.placement().applyToPoint(Vec3.ZERO);
+        if (sp instanceof org.fresa.stepnc.Profile.Linear lin) {
+            Vec3 x = sp.placement().applyToDirection(Vec3.UNIT_X).times(lin.lengthMm());
+            Vec2 p0 = new Vec2(o.x(), o.y());
+            Vec2 a = new Vec2(x.x(), x.y());
+            Vec2 b = course.normalized().times(along);
+            box = Box2.of(p0, p0.plus(a)).including(p0.plus(b)).including(p0.plus(a).plus(b));
+        } else if (sp instanceof org.fresa.stepnc.Profile.Rectangular r) {
+            Vec2 c = new Vec2(o.x(), o.y());
+            box = Box2.of(c.minus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)), c.plus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)));
+        } else {
+            throw new UnsupportedOperationException("planar faces bounded by " + sp.entity() + " are not supported yet");
+        }
+        boolean bidirectional = true;
+        var st = op.strategy().map(org.fresa.stepnc.Strategy::type);
+        if (st.isPresent() && st.get() == org.fresa.stepnc.Strategy.StrategyType.UNIDIRECTIONAL) {
+            bidirectional = false;
+        } else if (st.isPresent() && st.get() != org.fresa.stepnc.Strategy.StrategyType.BIDIRECTIONAL) {
+            problems.add("workingstep '" + label + "': " + st.get() + " on a planar face is milled bidirectionally");
+        }
+        double overcut = op.overcutLengthMm().orElse(0.25 * t.diameterMm());
+        double bottom = h.bottomZ() + (isRough(op) ? op.allowanceBottomMm().orElse(0) : 0);
+        Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), bottom);
+        boolean left = !op.strategy().flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
+                .map(x -> x.equalsIgnoreCase("RIGHT")).orElse(false);
+        return FaceMilling.section(label, box, course, hh, t, d, op.axialCuttingDepthMm().orElse(0), overcut,
+                bidirectional, left);
+    }
+
+    private static boolean isRough(Operation op) {
+        return switch (op.type()) {
+            case PLANE_ROUGH_MILLING, SIDE_ROUGH_MILLING, BOTTOM_AND_SIDE_ROUGH_MILLING -> true;
+            default -> false;
+        };
+    }
+
+    private static double stepover(Operation op, Tooling t) {
+        if (op.radialCuttingDepthMm().isPresent() && op.radialCuttingDepthMm().getAsDouble() > 0) {
+            return op.radialCuttingDepthMm().getAsDouble();
+        }
+        var overlap = op.strategy().flatMap(s -> s.overlapFraction().isPresent()
+                ? Optional.of(s.overlapFraction().getAsDouble()) : Optional.empty());
+        if (overlap.isPresent() && overlap.get() >= 0 && overlap.get() < 1) {
+            return Stepover.nominal(t.diameterMm(), overlap.get());
+        }
+        return t.diameterMm() / 2;
+    }
+
+    static Profile profile(org.fresa.stepnc.Profile sp, double cornerRadiusMm, Tolerance tol) {
+        if (sp instanceof org.fresa.stepnc.Profile.Rectangular r) {
+            double rc = Math.min(Math.max(cornerRadiusMm, 0), Math.min(r.lengthMm(), r.widthMm()) / 2);
+            return new Profile.RoundedRectangle(Vec2.ZERO, r.lengthMm(), r.widthMm(), rc);
+        }
+        if (sp instanceof org.fresa.stepnc.Profile.Circular c) {
+            return new Profile.Circle(Vec2.ZERO, c.diameterMm() / 2);
+        }
+        if (sp instanceof org.fresa.stepnc.Profile.Ngon n) {
+            return new Profile.RegularPolygon(Vec2.ZERO, n.sides(), n.diameterMm(), n.circumscribed());
+        }
+        if (sp instanceof org.fresa.stepnc.Profile.General g && g.closed()) {
+            List<Curve2> cs = new ArrayList<>();
+            for (org.fresa.stepnc.Profile.Segment s : g.segments()) {
+                Vec2 a = new Vec2(s.start().x(), s.start().y());
+                Vec2 b = new Vec2(s.end().x(), s.end().y());
+                if (s instanceof org.fresa.stepnc.Profile.Arc arc) {
+                    cs.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+                } else if (a.distance(b) > tol.linear()) {
+                    cs.add(new Segment2(a, b));
+                }
+            }
+            return new Profile.General(Contour.of(cs, Tolerance.DRAWING), ContourOffsetter.EXACT);
+        }
+        throw new UnsupportedOperationException("pocket profile " + sp.entity() + " is not supported");
+    }
+
+    private static ToolpathSection pocket(String label, Profile p, Operation op, Heights h, Tooling t,
+            Transform3 profilePlacement, Tolerance tol) {
+        Strategy s = strategy(op).orElse(Strategy.CONTOUR_PARALLEL);
+        Vec2 feedDir = op.strategy().flatMap(org.fresa.stepnc.Strategy::feedDirection)
+                .map(v -> profilePlacement.inverse().applyToDirection(v)).map(v -> new Vec2(v.x(), v.y()))
+                .filter(v -> v.norm() > 1e-9).orElse(Vec2.UNIT_X);
+        boolean rough = isRough(op);
+        MillingPlan plan = new MillingPlan(s, stepover(op, t), op.axialCuttingDepthMm().orElse(0),
+                rough ? op.allowanceSideMm().orElse(0) : 0, rough ? op.allowanceBottomMm().orElse(0) : 0,
+                feedDir, clockwise(op), approach(op.approach()), false);
+        return PocketMilling.section(label, p, h, t, plan, tol);
+    }
+
+    private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol) {
+        double holeD = f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"));
+        if (op.type().isDrillingType()) {
+            double depth = op.cuttingDepthMm().orElse(h.topZ() - h.bottomZ());
+            Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth);
+            boolean feedOut = op.type() == Operation.OperationType.REAMING || op.type() == Operation.OperationType.BORING;
+            double peck = op.type() == Operation.OperationType.MULTISTEP_DRILLING ? t.diameterMm() : 0;
+            return HoleMaking.drill(label, Vec2.ZERO, hh, t, peck, feedOut);
+        }
+        if (!op.type().isMilling()) {
+            throw new UnsupportedOperationException(op.type() + " is not supported yet");
+        }
+        double ap = op.axialCuttingDepthMm().orElse(0);
+        if (HoleMaking.helicalClears(holeD, t.diameterMm())) {
+            return HoleMaking.mill(label, Vec2.ZERO, holeD, h, t, ap, clockwise(op), tol);
+        }
+        Profile circle = new Profile.Circle(Vec2.ZERO, holeD / 2);
+        double room = holeD / 2 - t.radiusMm();
+        Approach a = new Approach.Helix(Math.max(room / 2, 0.1), 5);
+        MillingPlan plan = new MillingPlan(strategy(op).orElse(Strategy.CONTOUR_PARALLEL), stepover(op, t), ap,
+                0, 0, Vec2.UNIT_X, clockwise(op), a, false);
+        return PocketMilling.section(label, circle, h, t, plan, tol);
+    }
+
+    static Optional<Strategy> strategy(Operation op) {
+        return op.strategy().flatMap(s -> switch (s.type()) {
+            case UNIDIRECTIONAL -> Optional.of(Strategy.UNIDIRECTIONAL);
+            case BIDIRECTIONAL -> Optional.of(Strategy.BIDIRECTIONAL);
+            case CONTOUR_PARALLEL -> Optional.of(Strategy.CONTOUR_PARALLEL);
+            case CONTOUR_SPIRAL -> Optional.of(Strategy.CONTOUR_SPIRAL);
+            case BIDIRECTIONAL_CONTOUR -> Optional.of(Strategy.BIDIRECTIONAL_CONTOUR);
+            case CONTOUR_BIDIRECTIONAL -> Optional.of(Strategy.CONTOUR_BIDIRECTIONAL);
+            case CENTER_MILLING -> Optional.of(Strategy.CENTER_MILLING);
+            default -> Optional.empty();
+        });
+    }
+
+    static boolean clockwise(Operation op) {
+        var s = op.strategy();
+        if (s.isEmpty()) {
+            return false;
+        }
+        if (s.get().rotationDirection().isPresent()) {
+            return s.get().rotationDirection().get().equalsIgnoreCase("CW");
+        }
+        return s.get().cutmode().map(m -> m.equalsIgnoreCase("CLIMB")).orElse(false);
+    }
+
+    static Approach approach(Optional<ApproachRetract> a) {
+        if (a.isEmpty()) {
+            return new Approach.Plunge();
+        }
+        ApproachRetract ar = a.get();
+        double angle = ar.angle().orElse(0);
+        return switch (ar.kind()) {
+            case PLUNGE_RAMP, PLUNGE_ZIGZAG -> angle > 0 && angle <= 90 ? new Approach.Ramp(angle) : new Approach.Plunge();
+            case PLUNGE_HELIX -> ar.radiusMm().isPresent() && ar.radiusMm().getAsDouble() > 0 && angle > 0 && angle < 90
+                    ? new Approach.Helix(ar.radiusMm().getAsDouble(), angle) : new Approach.Plunge();
+            default -> new Approach.Plunge();
+        };
+    }
+
+    /**
+     * The section starting and ending on the security plane: its first and last points moved
+     * along the plane's normal onto it, joined to the section by rapids.
+     */
+    static ToolpathSection viaSecurityPlane(ToolpathSection s, Optional<Transform3> plane) {
+        if (plane.isEmpty()) {
+            return s;
+        }
+        Vec3 o = plane.get().translationPart();
+        Vec3 n = plane.get().zAxis();
+        Vec3 first = s.start();
+        Vec3 last = s.moves().isEmpty() ? first : s.moves().get(s.moves().size() - 1).end();
+        Vec3 in = first.plus(n.times(o.minus(first).dot(n)));
+        Vec3 out = last.plus(n.times(o.minus(last).dot(n)));
+        List<Move> moves = new ArrayList<>();
+        moves.add(new Move.Rapid(first));
+        moves.addAll(s.moves());
+        moves.add(new Move.Rapid(out));
+        return new ToolpathSection(s.label(), s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), in, moves);
+    }
+}

@@ -1,0 +1,277 @@
+package org.fresa.ui;
+
+import java.awt.BorderLayout;
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+import javax.swing.JFileChooser;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSplitPane;
+import javax.swing.JTable;
+import javax.swing.JTextField;
+import javax.swing.JToggleButton;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import javax.swing.table.DefaultTableModel;
+import org.fresa.geom.Vec2;
+import org.fresa.grading.GradingResult;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
+import org.jfree.chart.ChartPanel;
+import org.jfree.chart.plot.XYPlot;
+
+/**
+ * The Grading tab: a base outline, the grading options (origin typed or picked on the plot,
+ * system, base size, range, steps, shrinkage), the nested graded outlines and the grading table,
+ * and Export of every size's files. The state lives in {@link GradingViewModel}.
+ */
+final class GradingTab implements ModuleTab {
+
+    private final AppContext ctx;
+    private final GradingViewModel vm = new GradingViewModel();
+    private final JPanel panel = new JPanel(new BorderLayout());
+    private final PlotPanel plot = new PlotPanel();
+    private final DefaultTableModel tableModel = new DefaultTableModel(GradingViewModel.COLUMNS.toArray(), 0) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public boolean isCellEditable(int row, int column) {
+            return false;
+        }
+    };
+    private final JLabel outlineName = new JLabel("(none)");
+    private final JTextField origin = new JTextField(12);
+    private final JToggleButton pick = new JToggleButton("Pick on plot");
+    private final JComboBox<String> system = new JComboBox<>(GradingViewModel.SYSTEMS.toArray(new String[0]));
+    private final JTextField baseSize = new JTextField(6);
+    private final JTextField sizes = new JTextField(8);
+    private final JCheckBox halfSizes = new JCheckBox("Half sizes");
+    private final JTextField lengthStep = new JTextField(6);
+    private final JTextField widthStep = new JTextField(6);
+    private final JTextField shrinkage = new JTextField(6);
+    private final JComboBox<String> shrinkageMode = new JComboBox<>(GradingViewModel.SHRINKAGE_MODES.toArray(new String[0]));
+
+    GradingTab(AppContext ctx) {
+        this.ctx = ctx;
+        JPanel form = new JPanel(new GridBagLayout());
+        form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
+        JButton open = new JButton("Open outline...");
+        open.setMnemonic('O');
+        open.setName("grading-open");
+        open.addActionListener(e -> openOutline());
+        JButton heel = new JButton("Heel centre");
+        heel.setMnemonic('H');
+        heel.setToolTipText("Grade about the heel circle's centre (clears the origin)");
+        heel.addActionListener(e -> {
+            origin.setText("");
+            refreshPlot();
+        });
+        pick.setMnemonic('P');
+        pick.setToolTipText("Click the plot to set the fixed point of the grading");
+        JButton grade = new JButton("Grade");
+        grade.setMnemonic('G');
+        grade.setName("grading-grade");
+        grade.addActionListener(e -> grade());
+        JButton export = new JButton("Export files...");
+        export.setMnemonic('X');
+        export.setName("grading-export");
+        export.addActionListener(e -> export());
+        lengthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 6.66)");
+        widthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 1.66)");
+        origin.setToolTipText("X,Y in mm; empty for the heel circle's centre");
+        halfSizes.setMnemonic('A');
+
+        int row = 0;
+        addRow(form, row++, "Outline:", 'U', open, outlineName);
+        addRow(form, row++, "Origin X,Y:", 'I', origin, null);
+        addRow(form, row++, "", (char) 0, pick, heel);
+        addRow(form, row++, "System:", 'Y', system, null);
+        addRow(form, row++, "Base size:", 'B', baseSize, null);
+        addRow(form, row++, "Sizes A-B:", 'Z', sizes, null);
+        addRow(form, row++, "", (char) 0, halfSizes, null);
+        addRow(form, row++, "Length step (mm):", 'L', lengthStep, null);
+        addRow(form, row++, "Width step (mm):", 'W', widthStep, null);
+        addRow(form, row++, "Shrinkage:", 'S', shrinkage, null);
+        addRow(form, row++, "Shrinkage mode:", 'M', shrinkageMode, null);
+        addRow(form, row++, "", (char) 0, grade, export);
+        GridBagConstraints filler = new GridBagConstraints();
+        filler.gridy = row;
+        filler.weighty = 1;
+        form.add(new JPanel(), filler);
+
+        JTable table = new JTable(tableModel);
+        table.setName("grading-table");
+        table.setFillsViewportHeight(true);
+        JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, new JScrollPane(table));
+        right.setResizeWeight(0.75);
+        panel.add(new JScrollPane(form), BorderLayout.WEST);
+        panel.add(right, BorderLayout.CENTER);
+
+        installPicking();
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName())) {
+                ctx.model().job().grading().ifPresent(g -> {
+                    vm.load(ctx.model().job());
+                    showFields();
+                });
+            }
+        });
+        vm.load(ctx.model().job());
+        showFields();
+        refreshPlot();
+    }
+
+    private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent field, JComponent extra) {
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridy = row;
+        c.insets = new Insets(3, 3, 3, 3);
+        c.anchor = GridBagConstraints.WEST;
+        JLabel l = new JLabel(label);
+        if (mnemonic != 0) {
+            l.setDisplayedMnemonic(mnemonic);
+            l.setLabelFor(field);
+        }
+        c.gridx = 0;
+        form.add(l, c);
+        c.gridx = 1;
+        c.fill = GridBagConstraints.HORIZONTAL;
+        form.add(field, c);
+        if (extra != null) {
+            c.gridx = 2;
+            form.add(extra, c);
+        }
+    }
+
+    /** Clicks on the plot set the origin while "Pick on plot" is on. */
+    private void installPicking() {
+        if (!(plot.getComponent(0) instanceof ChartPanel cp)) {
+            return;
+        }
+        cp.addMouseListener(new MouseAdapter() {
+            @Override
+            public void mouseClicked(MouseEvent e) {
+                if (!pick.isSelected()) {
+                    return;
+                }
+                Point2D p = cp.translateScreenToJava2D(e.getPoint());
+                Rectangle2D area = cp.getChartRenderingInfo().getPlotInfo().getDataArea();
+                XYPlot xy = cp.getChart().getXYPlot();
+                double x = xy.getDomainAxis().java2DToValue(p.getX(), area, xy.getDomainAxisEdge());
+                double y = xy.getRangeAxis().java2DToValue(p.getY(), area, xy.getRangeAxisEdge());
+                vm.pickOrigin(new Vec2(x, y));
+                origin.setText(vm.origin());
+                pick.setSelected(false);
+                tableModel.setRowCount(0);
+                refreshPlot();
+            }
+        });
+    }
+
+    private void showFields() {
+        outlineName.setText(vm.outlineFile().map(p -> p.getFileName().toString()).orElse("(none)"));
+        origin.setText(vm.origin());
+        system.setSelectedItem(vm.system());
+        baseSize.setText(vm.baseSize());
+        sizes.setText(vm.sizes());
+        halfSizes.setSelected(vm.halfSizes());
+        lengthStep.setText(vm.lengthStep());
+        widthStep.setText(vm.widthStep());
+        shrinkage.setText(vm.shrinkage());
+        shrinkageMode.setSelectedItem(vm.shrinkageMode());
+    }
+
+    private void pushFields() {
+        vm.setOrigin(origin.getText());
+        vm.setSystem((String) system.getSelectedItem());
+        vm.setBaseSize(baseSize.getText());
+        vm.setSizes(sizes.getText());
+        vm.setHalfSizes(halfSizes.isSelected());
+        vm.setLengthStep(lengthStep.getText());
+        vm.setWidthStep(widthStep.getText());
+        vm.setShrinkage(shrinkage.getText());
+        vm.setShrinkageMode((String) shrinkageMode.getSelectedItem());
+    }
+
+    private void openOutline() {
+        JFileChooser fc = new JFileChooser();
+        fc.setFileFilter(new FileNameExtensionFilter("Fresa contour (*.contour)", "contour"));
+        vm.outlineFile().ifPresent(p -> fc.setCurrentDirectory(p.getParent().toFile()));
+        if (fc.showOpenDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        try {
+            vm.openOutline(fc.getSelectedFile().toPath());
+        } catch (CamInputException | java.io.IOException e) {
+            Dialogs.error(ctx.owner(), "Open outline", e.getMessage());
+            return;
+        }
+        showFields();
+        tableModel.setRowCount(0);
+        refreshPlot();
+    }
+
+    private void grade() {
+        pushFields();
+        try {
+            ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        } catch (CamInputException e) {
+            Dialogs.error(ctx.owner(), "Grade", e.getMessage());
+            return;
+        }
+        ctx.tasks().start("Grading", progress -> vm.grade(), this::showResult);
+    }
+
+    private void showResult(GradingResult r) {
+        vm.setResult(r);
+        tableModel.setRowCount(0);
+        for (List<String> row : vm.tableRows()) {
+            tableModel.addRow(row.toArray());
+        }
+        refreshPlot();
+    }
+
+    private void export() {
+        pushFields();
+        JFileChooser fc = new JFileChooser();
+        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        fc.setDialogTitle("Folder for the graded sizes");
+        if (fc.showSaveDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path dir = fc.getSelectedFile().toPath();
+        ctx.tasks().start("Export grading", progress -> vm.export(dir, progress), (TaskOutcome o) ->
+                Dialogs.info(ctx.owner(), "Export grading", "Wrote " + o.files().size() + " files in " + dir));
+    }
+
+    private void refreshPlot() {
+        plot.show(vm.scene());
+    }
+
+    @Override
+    public String title() {
+        return "Grading";
+    }
+
+    @Override
+    public JComponent component() {
+        return panel;
+    }
+
+    @Override
+    public Optional<PlotPanel> plot() {
+        return Optional.of(plot);
+    }
+}

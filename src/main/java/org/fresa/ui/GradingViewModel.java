@@ -1,0 +1,317 @@
+package org.fresa.ui;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import org.fresa.chart.GradingChart;
+import org.fresa.chart.PlotScene;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Vec2;
+import org.fresa.grading.GradedSize;
+import org.fresa.grading.GradingResult;
+import org.fresa.job.GradingService;
+import org.fresa.job.Job;
+import org.fresa.job.JobSettings.GradingSettings;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
+import org.fresa.model.ExactDecimal;
+
+/**
+ * The Grading tab's state without Swing: the base outline, the grading options as the planner
+ * typed them, the origin (typed, picked on the plot, or the heel centre), and the last graded
+ * result with its table and plot. Text fields are kept as text and parsed by {@link #settings()},
+ * which reports the first bad field as a {@link CamInputException} naming it.
+ */
+public final class GradingViewModel {
+
+    /** The size systems offered, as their ids. */
+    public static final List<String> SYSTEMS = List.of("br", "paris", "uk", "us", "mondopoint");
+    /** The shrinkage modes offered. */
+    public static final List<String> SHRINKAGE_MODES = List.of("multiplicative", "additive");
+    /** The grading table's column titles. */
+    public static final List<String> COLUMNS = List.of("Size", "Length (mm)", "Width (mm)", "ALFA", "BETA",
+            "Length factor", "Width factor", "Max deviation (mm)");
+
+    private Optional<Path> outlineFile = Optional.empty();
+    private List<Contour> outline = List.of();
+    private String system = "br";
+    private String baseSize = "40";
+    private String sizes = "36-44";
+    private boolean halfSizes;
+    private String lengthStep = "";
+    private String widthStep = "";
+    private String origin = "";
+    private String shrinkage = "0";
+    private String shrinkageMode = "multiplicative";
+    private Optional<GradingResult> result = Optional.empty();
+
+    /** Reads the base outline (a .contour file) and forgets the last result. */
+    public void openOutline(Path file) throws CamInputException, IOException {
+        List<Contour> read = GradingService.readOutline(file);
+        outline = read;
+        outlineFile = Optional.of(file.toAbsolutePath());
+        result = Optional.empty();
+    }
+
+    public Optional<Path> outlineFile() {
+        return outlineFile;
+    }
+
+    public List<Contour> outline() {
+        return outline;
+    }
+
+    /** Takes the grading settings of a job (when it has some) into the fields. */
+    public void load(Job job) {
+        job.grading().ifPresent(g -> {
+            system = g.system();
+            baseSize = ExactDecimal.of(g.baseSize());
+            sizes = g.sizes();
+            halfSizes = g.halfSizes();
+            lengthStep = g.lengthStepMm().isPresent() ? ExactDecimal.of(g.lengthStepMm().getAsDouble()) : "";
+            widthStep = g.widthStepMm().isPresent() ? ExactDecimal.of(g.widthStepMm().getAsDouble()) : "";
+            origin = g.originMm().map(o -> ExactDecimal.of(o.x()) + "," + ExactDecimal.of(o.y())).orElse("");
+            shrinkage = ExactDecimal.of(g.shrinkage());
+            shrinkageMode = g.shrinkageMode();
+            if (outlineFile.isEmpty() || !outlineFile.get().equals(g.outline())) {
+                try {
+                    openOutline(g.outline());
+                } catch (CamInputException | IOException e) {
+                    outlineFile = Optional.of(g.outline());
+                    outline = List.of();
+                }
+            }
+        });
+    }
+
+    /**
+     * The settings of the fields.
+     *
+     * @throws CamInputException naming the field that does not parse, or a missing outline
+     */
+    public GradingSettings settings() throws CamInputException {
+        if (outlineFile.isEmpty()) {
+            throw new CamInputException("Outline", "open a base outline first");
+        }
+        return new GradingSettings(outlineFile.get(), number("Base size", baseSize), sizes.trim(), halfSizes, system,
+                optional("Length step", lengthStep), optional("Width step", widthStep), parsedOrigin(),
+                number("Shrinkage", shrinkage), shrinkageMode);
+    }
+
+    /** The job with these grading settings, task grade. */
+    public Job applyTo(Job job) throws CamInputException {
+        return job.withGrading(settings()).withTask(org.fresa.job.JobTask.GRADE);
+    }
+
+    /** Grades the outline with the fields' settings (call off the event thread for long runs). */
+    public GradingResult grade() throws CamInputException {
+        if (outline.isEmpty()) {
+            throw new CamInputException("Outline", "open a base outline first");
+        }
+        String name = outlineFile.map(p -> p.getFileName().toString()).orElse("outline");
+        return GradingService.grade(outline, name, settings(), GradingService.Options.DEFAULT);
+    }
+
+    /** Keeps a result computed by {@link #grade()} for the table and the plot. */
+    public void setResult(GradingResult r) {
+        result = Optional.of(r);
+    }
+
+    public Optional<GradingResult> result() {
+        return result;
+    }
+
+    /** Writes every size's files, the table and the plot into the folder. */
+    public TaskOutcome export(Path dir, ProgressMonitor progress) throws CamInputException, IOException {
+        if (outline.isEmpty()) {
+            throw new CamInputException("Outline", "open a base outline first");
+        }
+        String name = outlineFile.map(p -> p.getFileName().toString()).orElse("outline");
+        return GradingService.write(outline, name, settings(), GradingService.Options.DEFAULT, new OutputFolder(dir),
+                progress);
+    }
+
+    /** The origin picked on the plot (mm, kept to 0.001); the last result no longer applies. */
+    public void pickOrigin(Vec2 p) {
+        origin = ExactDecimal.of(round3(p.x())) + "," + ExactDecimal.of(round3(p.y()));
+        result = Optional.empty();
+    }
+
+    private static double round3(double v) {
+        return Math.round(v * 1000) / 1000.0 + 0.0;
+    }
+
+    /** The table rows, one per graded size, as text. */
+    public List<List<String>> tableRows() {
+        List<List<String>> rows = new ArrayList<>();
+        result.ifPresent(r -> {
+            for (GradedSize g : r.sizes()) {
+                rows.add(List.of(g.name(), fmt(g.lengthMm(), 3), fmt(g.widthMm(), 3), fmt(g.factors().alfa(), 6),
+                        fmt(g.factors().beta(), 6), fmt(g.factors().length(), 6), fmt(g.factors().width(), 6),
+                        g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : ""));
+            }
+        });
+        return rows;
+    }
+
+    private static String fmt(double v, int decimals) {
+        return String.format(Locale.ROOT, "%." + decimals + "f", v);
+    }
+
+    /**
+     * What the plot shows: the nested graded outlines when graded, else the base outline; and
+     * the origin (typed or the heel centre) as a small cross.
+     */
+    public PlotScene scene() {
+        PlotScene s;
+        Optional<Vec2> o;
+        if (result.isPresent()) {
+            GradingResult r = result.get();
+            s = GradingChart.scene("Graded sizes", GradingService.sizeOutlines(r), r.frame().lengthAxis());
+            o = Optional.of(r.frame().origin());
+        } else {
+            s = PlotScene.empty(outline.isEmpty() ? "Open a base outline" : "Base outline");
+            for (Contour c : outline) {
+                s = s.withContour("base", PlotScene.Style.OUTLINE, c);
+            }
+            o = originOrEmpty();
+        }
+        if (o.isPresent()) {
+            Vec2 c = o.get();
+            s = s.with(new PlotScene.Layer("origin", PlotScene.Style.WARNING, List.of(
+                    new org.fresa.geom.Segment2(c.plus(new Vec2(-4, 0)), c.plus(new Vec2(4, 0))),
+                    new org.fresa.geom.Segment2(c.plus(new Vec2(0, -4)), c.plus(new Vec2(0, 4))),
+                    Arc2.circle(c, 2, true)))).withLabel(c.plus(new Vec2(5, 5)), "origin");
+        }
+        return s;
+    }
+
+    private Optional<Vec2> originOrEmpty() {
+        try {
+            return parsedOrigin();
+        } catch (CamInputException e) {
+            return Optional.empty();
+        }
+    }
+
+    private Optional<Vec2> parsedOrigin() throws CamInputException {
+        String t = origin.trim();
+        if (t.isEmpty()) {
+            return Optional.empty();
+        }
+        String[] p = t.split(",");
+        if (p.length == 2) {
+            try {
+                double x = Double.parseDouble(p[0].trim());
+                double y = Double.parseDouble(p[1].trim());
+                if (Double.isFinite(x) && Double.isFinite(y)) {
+                    return Optional.of(new Vec2(x, y));
+                }
+            } catch (NumberFormatException e) {
+                // reported below
+            }
+        }
+        throw new CamInputException("Origin", "expected X,Y in mm (or empty for the heel centre), found '" + origin + "'");
+    }
+
+    private static double number(String field, String text) throws CamInputException {
+        try {
+            double d = Double.parseDouble(text.trim());
+            if (Double.isFinite(d)) {
+                return d;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new CamInputException(field, "expected a number, found '" + text + "'");
+    }
+
+    private static OptionalDouble optional(String field, String text) throws CamInputException {
+        return text.trim().isEmpty() ? OptionalDouble.empty() : OptionalDouble.of(number(field, text));
+    }
+
+    public String system() {
+        return system;
+    }
+
+    public void setSystem(String s) {
+        if (!SYSTEMS.contains(s)) {
+            throw new IllegalArgumentException("unknown system " + s);
+        }
+        system = s;
+    }
+
+    public String baseSize() {
+        return baseSize;
+    }
+
+    public void setBaseSize(String s) {
+        baseSize = s;
+    }
+
+    public String sizes() {
+        return sizes;
+    }
+
+    public void setSizes(String s) {
+        sizes = s;
+    }
+
+    public boolean halfSizes() {
+        return halfSizes;
+    }
+
+    public void setHalfSizes(boolean b) {
+        halfSizes = b;
+    }
+
+    public String lengthStep() {
+        return lengthStep;
+    }
+
+    public void setLengthStep(String s) {
+        lengthStep = s;
+    }
+
+    public String widthStep() {
+        return widthStep;
+    }
+
+    public void setWidthStep(String s) {
+        widthStep = s;
+    }
+
+    public String origin() {
+        return origin;
+    }
+
+    public void setOrigin(String s) {
+        origin = s;
+    }
+
+    public String shrinkage() {
+        return shrinkage;
+    }
+
+    public void setShrinkage(String s) {
+        shrinkage = s;
+    }
+
+    public String shrinkageMode() {
+        return shrinkageMode;
+    }
+
+    public void setShrinkageMode(String s) {
+        if (!SHRINKAGE_MODES.contains(s)) {
+            throw new IllegalArgumentException("unknown shrinkage mode " + s);
+        }
+        shrinkageMode = s;
+    }
+}

@@ -1,0 +1,77 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.model.CamInputException;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class PocketServiceTest {
+
+    static final Path RS274 = Path.of("../shared/tools/rs274");
+
+    static PocketSettings settings(String name, String post) throws Exception {
+        for (String line : Files.readAllLines(Path.of("samples/pocket/jobs.csv"))) {
+            String[] f = line.split(",");
+            if (f[0].equals(name + ".dad")) {
+                double[] v = new double[9];
+                for (int i = 0; i < 9; i++) {
+                    v[i] = Double.parseDouble(f[i + 1]);
+                }
+                return new PocketSettings(Path.of("samples/pocket", f[0]), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post);
+            }
+        }
+        throw new IllegalArgumentException(name);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"})
+    void linuxCncAcceptsTheDefaultProgram(String name, @TempDir Path dir) throws Exception {
+        assumeTrue(Files.isExecutable(RS274), "LinuxCNC's rs274 is not installed here");
+        PocketSettings s = settings(name, "linuxcnc");
+        Path out = dir.resolve(name + ".ngc");
+        TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        Process p = new ProcessBuilder(RS274.toString(), "--tool-diameter", Double.toString(s.toolDiameterMm()), out.toString())
+                .redirectErrorStream(true).redirectOutput(dir.resolve("rs274.log").toFile()).start();
+        assumeTrue(p.waitFor(120, TimeUnit.SECONDS), "rs274 timed out");
+        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("rs274.log")));
+    }
+
+    @Test
+    void theSummaryCarriesTheThesisSizes(@TempDir Path dir) throws Exception {
+        TaskOutcome o = PocketService.run(settings("cavity06", "7m-compat"), dir.resolve("c6.nc"), ProgressMonitor.NONE);
+        assertEquals(List.of(17.750278396781758, 30.0).size(), ((List<?>) o.summary().get("leaf_offsets")).size());
+        assertEquals(60.0, (double) o.summary().get("max_hole_diameter"), 1e-6);
+        assertEquals(30.0, (double) o.summary().get("max_tool_diameter"), 1e-6);
+        assertEquals(14.17, (double) o.summary().get("wall_tool_diameter"), 0.01);
+        assertEquals(5, o.summary().get("passes"));
+    }
+
+    @Test
+    void aBadRecordWritesNothing(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.dad");
+        Files.writeString(bad, " 1R                   1.2.3\r\n");
+        PocketSettings s = new PocketSettings(bad, 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, "7m");
+        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(s, dir.resolve("x.nc"), ProgressMonitor.NONE));
+        assertEquals(1, e.line().orElseThrow());
+        assertFalse(Files.exists(dir.resolve("x.nc")));
+    }
+
+    @Test
+    void genericPostsNotYetMergedExitWithOne(@TempDir Path dir) throws Exception {
+        TaskOutcome o = PocketService.run(settings("cavity01", "fanuc"), dir.resolve("c.nc"), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus());
+        assertEquals(List.of("post fanuc not available yet"), o.problems());
+    }
+}

@@ -1,0 +1,69 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.fresa.model.CamInputException;
+import org.fresa.post.RobotProgram;
+import org.fresa.post.RobotProgramsForTest;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class RobotProgramXmlTest {
+
+    @TempDir
+    Path dir;
+
+    Path writeSample() throws Exception {
+        Path f = dir.resolve("program.xml");
+        try (OutputStream out = Files.newOutputStream(f)) {
+            RobotProgramXml.write(RobotProgramsForTest.sample(), RobotProgramsForTest.FRONT_UPPER, out);
+        }
+        return f;
+    }
+
+    @Test
+    void readingTheFileBackGivesTheSameTrajectory() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        RobotProgram back = RobotProgramXml.read(writeSample());
+        assertEquals(p.joints(), back.joints());
+        assertEquals(p.motions().size(), back.motions().size());
+        for (int i = 0; i < p.motions().size(); i++) {
+            RobotProgram.Motion a = p.motions().get(i);
+            RobotProgram.Motion b = back.motions().get(i);
+            assertEquals(a.jointValues(), b.jointValues(), "joints are exact");
+            assertEquals(a.target().translationPart(), b.target().translationPart(), "positions are exact");
+            assertTrue(a.target().rotationAngleTo(b.target()) < 1e-15);
+            assertEquals(a.workingstep(), b.workingstep());
+            assertEquals(a.type(), b.type());
+            assertEquals(a.role(), b.role());
+            assertEquals(a.speedMmPerS(), b.speedMmPerS());
+            assertEquals(a.zoneMm(), b.zoneMm());
+        }
+    }
+
+    @Test
+    void theFileValidatesWithXmllint() throws Exception {
+        Path xmllint = Path.of("/usr/bin/xmllint");
+        Assumptions.assumeTrue(Files.isExecutable(xmllint), "xmllint not installed");
+        Process p = new ProcessBuilder(xmllint.toString(), "--noout", "--schema", "schemas/robot-program.xsd",
+                writeSample().toString()).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes());
+        assertEquals(0, p.waitFor(), out);
+        assertTrue(out.contains("validates"), out);
+    }
+
+    @Test
+    void anInvalidFileIsRefusedWithItsLine() throws Exception {
+        Path f = writeSample();
+        String xml = Files.readString(f).replaceFirst("<MotionType>Linear</MotionType>", "<MotionType>Circular</MotionType>");
+        Files.writeString(f, xml);
+        CamInputException e = assertThrows(CamInputException.class, () -> RobotProgramXml.read(f));
+        assertTrue(e.line().isPresent(), e.getMessage());
+    }
+}

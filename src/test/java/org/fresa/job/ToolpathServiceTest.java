@@ -1,0 +1,147 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.StringReader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+import org.fresa.post.ExpectedMotions;
+import org.fresa.post.NcPosts;
+import org.fresa.post.Rs274;
+import org.fresa.stepnc.StepNcReader;
+import org.fresa.toolpath.Profile;
+import org.fresa.toolpath.Swept;
+import org.fresa.toolpath.ToolpathPlanner;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.locationtech.jts.geom.Geometry;
+
+class ToolpathServiceTest {
+
+    static final Path EXAMPLE1 = Path.of("samples/stepnc/iso14649-11-example1.stp");
+    static final Path EXAMPLE2 = Path.of("samples/stepnc/example2.stp");
+
+    static Toolpath plan(Path file) throws Exception {
+        ToolpathPlanner.Plan p = ToolpathPlanner.plan(StepNcReader.read(file), Tolerance.DEFAULT);
+        assertEquals(p.workingsteps(), p.planned(), p.problems().toString());
+        return p.toolpath();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"samples/stepnc/iso14649-11-example1.stp", "samples/stepnc/example2.stp"})
+    void theProgramIsAcceptedByLinuxCncAndItsMotionsAreTheCsvsMoves(String input, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), "rs274 not present");
+        TaskOutcome o = ToolpathService.run(Path.of(input), "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
+        assertEquals(0, r.exitStatus(), r.stderr());
+        // the interpreter's motions are the planned moves (each section's start, then its moves)
+        List<Rs274.Canon> expected = ExpectedMotions.of(plan(Path.of(input)), false, NcPosts.CHORD_TOLERANCE_MM);
+        assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
+        // and toolpath.csv holds the same motions: straight rows one to one, each arc as points on it
+        List<ToolpathCsv.Row> rows = ToolpathCsv.read(new StringReader(Files.readString(dir.resolve("toolpath.csv"))), "csv");
+        int i = 0;
+        for (Rs274.Canon c : r.motions()) {
+            if (!c.kind().equals("arc")) {
+                ToolpathCsv.Row row = rows.get(i++);
+                assertEquals(c.kind(), row.move(), "row " + row.index());
+                assertTrue(row.point().distance(c.end()) <= 0.0011, "row " + row.index() + " vs " + c);
+                continue;
+            }
+            Vec3 n = c.normal();
+            ToolpathCsv.Row row;
+            do {
+                row = rows.get(i++);
+                assertTrue(row.move().startsWith("arc"), "row " + row.index());
+                Vec3 radial = row.point().minus(c.center());
+                Vec3 inPlane = radial.minus(n.times(radial.dot(n)));
+                Vec3 endRadial = c.end().minus(c.center());
+                double rEnd = endRadial.minus(n.times(endRadial.dot(n))).norm();
+                assertEquals(rEnd, inPlane.norm(), 0.002, "row " + row.index() + " off the arc " + c);
+            } while (row.point().distance(c.end()) > 0.0011);
+        }
+        assertEquals(rows.size(), i);
+    }
+
+    static ToolpathSection section(Toolpath p, String label) {
+        return p.sections().stream().filter(s -> s.label().equals(label)).findFirst().orElseThrow();
+    }
+
+    /**
+     * Example 1's planar face, x 0..100, y 0..120, finished at z 0.
+     *
+     * <p>Against NIST's interpreter (../shared/samples/stepnc/iso14649-11-example1.nist-canonical.txt,
+     * lines 13-41): the same 6 bidirectional passes along +Y from y -13.5 to 133.5 (the tool edge
+     * clears the boundary by 0.25 D), the same two layers at z 2.5 and 0, and the same stepping to
+     * the left (-X) as BIDIRECTIONAL(.., .LEFT.) asks. NIST steps by exactly 17.1 = 18 (1 - 0.05)
+     * from x 91.9, so its first pass overhangs x = 100 by 0.9 mm and its last (6.4) overhangs x = 0
+     * by 2.6 mm; we spread the same 6 passes evenly between the tool-edge-flush positions 91 and 9,
+     * 16.4 apart (below the 17.1 limit), so both sides are cut with the edge on the boundary. NIST
+     * links layers by a traverse at z 15 back to the first pass; so do we (retract plane 10 above
+     * the face's top at z 5).
+     */
+    @Test
+    void exampleOnesFaceIsClearedAtZeroWithPassesLikeNists() throws Exception {
+        Toolpath p = plan(EXAMPLE1);
+        ToolpathSection face = section(p, "WS FINISH PLANAR FACE1");
+        Geometry box = Swept.polygon(new Profile.RoundedRectangle(new Vec2(50, 60), 100, 120, 0).contour(Tolerance.DEFAULT));
+        Geometry cut = Swept.sweep(face, 9, 1e-9);
+        assertTrue(box.difference(cut).getArea() < 1e-6, "uncut " + box.difference(cut).getArea());
+        List<Double> xs = new ArrayList<>();
+        Vec3 at = face.start();
+        for (Move m : face.moves()) {
+            if (m instanceof Move.Linear && at.z() == 0 && m.end().z() == 0 && at.x() == m.end().x()) {
+                xs.add(m.end().x());
+                assertEquals(-13.5, Math.min(at.y(), m.end().y()), 1e-9);
+                assertEquals(133.5, Math.max(at.y(), m.end().y()), 1e-9);
+            }
+            at = m.end();
+        }
+        assertEquals(List.of(91.0, 74.6, 58.2, 41.8, 25.4, 9.0), xs.stream().map(x -> Math.round(x * 1e6) / 1e6).toList());
+    }
+
+    @Test
+    void exampleOnesPocketFloorIsClearedAndItsWallsAreNeverCutBeyond() throws Exception {
+        Toolpath p = plan(EXAMPLE1);
+        Geometry pocket = Swept.polygon(new Profile.RoundedRectangle(new Vec2(70, 70), 50, 80, 10).contour(Tolerance.DEFAULT));
+        for (String ws : List.of("WS ROUGH POCKET1", "WS FINISH POCKET1")) {
+            ToolpathSection s = section(p, ws);
+            Geometry below = Swept.sweep(s, 9, -1e-9);
+            assertTrue(Swept.gouge(pocket, below) < 1e-3, ws + " cuts beyond the wall: " + Swept.gouge(pocket, below));
+            assertTrue(s.moves().stream().allMatch(m -> m.end().z() >= -30 - 1e-9), ws + " below the floor");
+        }
+        Geometry floor = Swept.sweep(section(p, "WS FINISH POCKET1"), 9, -30 + 1e-9);
+        // corner radius 10 > tool radius 9: nothing is unavoidable, all the floor must go; the 0.005 mm
+        // margin absorbs JTS's polygonal discs (64 segments a quadrant fall 0.0007 mm short of R 9)
+        Geometry inner = pocket.buffer(-0.005, Swept.QUADRANT_SEGMENTS);
+        assertTrue(inner.difference(floor).getArea() < 1e-6, "uncut floor " + inner.difference(floor).getArea());
+    }
+
+    @Test
+    void exampleOnesHoleIsDrilledToMinusThirtyAt20_60() throws Exception {
+        Toolpath p = plan(EXAMPLE1);
+        ToolpathSection drill = section(p, "WS DRILL HOLE1");
+        double lowest = drill.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow();
+        assertEquals(-30, lowest, 1e-9);
+        for (Move m : drill.moves()) {
+            if (m.end().z() < 0) {
+                assertEquals(20, m.end().x(), 1e-9);
+                assertEquals(60, m.end().y(), 1e-9);
+            }
+        }
+        assertEquals(20, drill.toolDiameterMm());
+    }
+}

@@ -1,0 +1,103 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.fresa.chart.PlotScene;
+import org.fresa.geom.Vec2;
+import org.fresa.grading.GradingResult;
+import org.fresa.job.Job;
+import org.fresa.job.JobTask;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The Grading tab's state, without a screen. */
+class GradingViewModelTest {
+
+    private static final Path SOLE = Path.of("samples/grading/sole-40.contour");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void gradingTheSampleFillsTheTableWithOneRowPerSize() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        GradingResult r = vm.grade();
+        vm.setResult(r);
+        List<List<String>> rows = vm.tableRows();
+        assertAll(() -> assertEquals(9, rows.size()), () -> assertEquals("36", rows.get(0).get(0)),
+                () -> assertEquals("243.360", rows.get(0).get(1)), () -> assertEquals("96.640", rows.get(8).get(2)),
+                () -> assertEquals(GradingViewModel.COLUMNS.size(), rows.get(0).size()));
+        PlotScene s = vm.scene();
+        assertTrue(s.layers().stream().filter(l -> l.name().startsWith("size ")).count() >= 9);
+        assertTrue(s.layers().stream().anyMatch(l -> l.name().equals("origin")));
+    }
+
+    @Test
+    void aPickedOriginIsUsedAndClearsTheLastResult() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setResult(vm.grade());
+        vm.pickOrigin(new Vec2(1.23456, 100.0004));
+        assertAll(() -> assertEquals("1.235,100", vm.origin()), () -> assertTrue(vm.result().isEmpty()));
+        GradingResult r = vm.grade();
+        assertEquals(new Vec2(1.235, 100), r.frame().origin());
+    }
+
+    @Test
+    void badFieldsAreNamedInTheMessage() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        assertThrows(CamInputException.class, vm::settings);
+        vm.openOutline(SOLE);
+        vm.setShrinkage("2 %");
+        CamInputException e = assertThrows(CamInputException.class, vm::settings);
+        assertTrue(e.getMessage().startsWith("Shrinkage"), e.getMessage());
+        vm.setShrinkage("0.02");
+        vm.setOrigin("1;2");
+        assertTrue(assertThrows(CamInputException.class, vm::settings).getMessage().startsWith("Origin"));
+    }
+
+    @Test
+    void settingsGoIntoTheJobAndComeBack() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setSystem("paris");
+        vm.setBaseSize("42");
+        vm.setSizes("40-44");
+        vm.setHalfSizes(true);
+        vm.setLengthStep("6.67");
+        vm.setOrigin("0,0");
+        vm.setShrinkage("0.02");
+        vm.setShrinkageMode("additive");
+        Job job = vm.applyTo(Job.empty(JobTask.POCKET));
+        assertEquals(JobTask.GRADE, job.task());
+        GradingViewModel other = new GradingViewModel();
+        other.load(job);
+        assertAll(() -> assertEquals("paris", other.system()), () -> assertEquals("42", other.baseSize()),
+                () -> assertEquals("40-44", other.sizes()), () -> assertTrue(other.halfSizes()),
+                () -> assertEquals("6.67", other.lengthStep()), () -> assertEquals("", other.widthStep()),
+                () -> assertEquals("0,0", other.origin()), () -> assertEquals("0.02", other.shrinkage()),
+                () -> assertEquals("additive", other.shrinkageMode()),
+                () -> assertEquals(1, other.outline().size()));
+    }
+
+    @Test
+    void exportWritesTheFilesOfEverySize() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setSizes("39-41");
+        TaskOutcome o = vm.export(dir, ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus());
+        assertTrue(Files.exists(dir.resolve("size-41.dxf")));
+        assertTrue(Files.exists(dir.resolve("grading.png")));
+    }
+}
