@@ -46,9 +46,10 @@ import org.fresa.sole.TreadTool;
  * The sole mould task ({@code fresa sole}, {@code fresa run} with task sole): grades the outline
  * over the job's sizes with the grading module, places and clips the tread for each size and
  * foot, and writes per size {@code tread-NN-right.ngc}, {@code tread-NN-left.ngc},
- * {@code size-NN.csv} (the graded outline, x,y) and {@code sole-NN.png} (both feet: outline and
- * tread). The cavity programs need the pocket module's area clearing, which is not built yet: the
- * outcome then reports them as missing and the status is 1, with every tread file written.
+ * {@code size-NN.csv} (the graded outline, x,y), {@code sole-NN.png} (both feet: outline and
+ * tread) and, when the job names a cavity tool, {@code cavity-NN-right.ngc} and
+ * {@code cavity-NN-left.ngc} pocketed by the pocket module; without one the outcome says so and
+ * the status is 1, with every tread file written.
  */
 public final class SoleService {
 
@@ -194,6 +195,43 @@ public final class SoleService {
         return TreadProgram.toolpath(grooves, p.tools(), p.settings().treadDepthMm(), p.settings().clearanceMm());
     }
 
+    /**
+     * The cavity program of a size and foot: the graded outline (mirrored for the left foot)
+     * pocketed by the pocket module with the cavity tool's real diameter, from the top face
+     * z = 0 to z = -cavityDepth, climb milling chosen after the mirror so both feet are cut in
+     * the same sense (the thesis's MAC3/MAC4 against MAC5/MAC6). Empty when the job names no
+     * cavity tool.
+     *
+     * @throws CamInputException when the cavity tool is unknown or too large for the outline
+     */
+    public static java.util.Optional<Toolpath> cavityProgram(SolePlan p, GradedSize g, Foot foot)
+            throws CamInputException {
+        JobSettings.SoleSettings s = p.settings();
+        if (s.cavityTool().isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        TreadTool t = p.tools().get(s.cavityTool());
+        if (t == null) {
+            throw new CamInputException("sole", "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
+                    + p.tools().keySet());
+        }
+        Contour outline = foot == Foot.RIGHT ? g.output().get(0)
+                : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
+        try {
+            org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(t.diameterMm(), 0.6,
+                    Math.min(0.5, 0.5 / t.diameterMm()), 0, -s.cavityDepthMm(), s.cavityDepthMm(), t.spindleRpm(),
+                    t.feedMmPerMin(), t.feedMmPerMin());
+            org.fresa.pocket.Recognition.Result rec = org.fresa.pocket.Recognition.of(
+                    org.fresa.pocket.PocketProfile.fromContours(List.of(outline.ccw())));
+            org.fresa.pocket.PocketPlan plan = org.fresa.pocket.PassPlanner.plan(rec, tech, false);
+            return java.util.Optional.of(org.fresa.pocket.PocketToolpath.of(plan, true));
+        } catch (org.fresa.pocket.ToolTooLargeException e) {
+            throw new CamInputException("sole", "size " + g.name() + ": the cavity tool is too large: " + e.getMessage());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("sole", "cavity: " + e.getMessage());
+        }
+    }
+
     /** The job task. */
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
@@ -202,6 +240,7 @@ public final class SoleService {
         out.create();
         List<Double> sizes = p.grader().plan().sizes();
         List<Object> perSize = new ArrayList<>();
+        List<String> cavityProblems = new ArrayList<>();
         int k = 0;
         for (double size : sizes) {
             if (progress.isCancelled()) {
@@ -227,6 +266,24 @@ public final class SoleService {
                     w.flush();
                 });
                 m.put(foot.id() + "_moves", tp.moveCount());
+                java.util.Optional<Toolpath> cavity;
+                try {
+                    cavity = cavityProgram(p, g, foot);
+                } catch (CamInputException e) {
+                    // the tread is still worth writing: report the cavity and carry on
+                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ".ngc not written: " + e.problem());
+                    cavity = java.util.Optional.empty();
+                }
+                if (cavity.isPresent()) {
+                    String cname = "cavity-" + g.name() + "-" + foot.id();
+                    Toolpath ct = cavity.get();
+                    out.write(cname + ".ngc", os -> {
+                        Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+                        p.post().write(ct, cname, w);
+                        w.flush();
+                    });
+                    m.put(foot.id() + "_cavity_moves", ct.moveCount());
+                }
                 Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
                 Vec2 dx = Vec2.of(foot == Foot.RIGHT ? 0 : shift, 0);
                 scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
@@ -243,11 +300,14 @@ public final class SoleService {
         summary.put("post", p.post().name());
         summary.put("designs", s.designs().size());
         summary.put("sizes", perSize);
-        summary.put("cavity", "not available: the cavity programs need the pocket module (issue 7)");
-        List<String> problems = List.of("cavity programs (cavity-NN-right.ngc, cavity-NN-left.ngc) are not written:"
-                + " they need the pocket module's area clearing (issue 7), which is not available yet;"
-                + " the tread programs, outlines and sheets are written");
-        return new TaskOutcome(1, problems, summary, out.written());
+        boolean cavity = !s.cavityTool().isEmpty();
+        summary.put("cavity", cavity ? "pocketed with tool " + s.cavityTool() : "no cavity tool named");
+        List<String> problems = new ArrayList<>(cavityProblems);
+        if (!cavity) {
+            problems.add("cavity programs are not written: the job names no cavityTool;"
+                    + " the tread programs, outlines and sheets are written");
+        }
+        return new TaskOutcome(problems.isEmpty() ? 0 : 1, problems, summary, out.written());
     }
 
     private static List<Curve2> feeds(Toolpath tp, Vec2 dx) {

@@ -86,7 +86,7 @@ class SoleServiceTest {
             throws Exception {
         TaskOutcome t = JobRunner.run(JobXml.read(SAMPLE), new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(1, t.exitStatus());
-        assertTrue(t.problems().get(0).contains("pocket module"));
+        assertTrue(t.problems().get(0).contains("cavity"));
         for (String size : List.of("38", "39", "40", "41", "42")) {
             for (String f : List.of("tread-" + size + "-right.ngc", "tread-" + size + "-left.ngc", "size-" + size + ".csv",
                     "sole-" + size + ".png")) {
