@@ -38,7 +38,7 @@ public final class JobRunner {
             case GRADE:
                 return GradingService.run(require(job.grading(), "grading", job), out, progress);
             case SOLE:
-                return TaskOutcome.unavailable(Module.SOLE);
+                return SoleService.run(job, out, progress);
             default:
                 throw new IllegalStateException("unknown task " + job.task());
         }

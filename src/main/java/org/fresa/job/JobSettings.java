@@ -98,11 +98,13 @@ public final class JobSettings {
      * @param marginMm least distance of a groove's centre line from the outline
      * @param tools the tread tools
      * @param designs the tread designs in cutting order
+     * @param cavityTool the id of the tool that pockets the cavity, empty for no cavity program
      */
     public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post,
             String system, Optional<Vec2> originMm, double shrinkage, String shrinkageMode, double treadDepthMm,
-            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs) {
+            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs, String cavityTool) {
         public SoleSettings {
+            Objects.requireNonNull(cavityTool, "cavityTool");
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
             Objects.requireNonNull(post, "post");
@@ -116,7 +118,7 @@ public final class JobSettings {
         /** A sole job without tread designs, thesis defaults elsewhere. */
         public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post) {
             this(outline, baseSize, sizes, cavityDepthMm, post, "br", Optional.empty(), 0, "multiplicative", 2, 5, 2,
-                    List.of(), List.of());
+                    List.of(), List.of(), "");
         }
     }
 

@@ -237,7 +237,7 @@ public final class JobXml {
                 .toList();
         return new SoleSettings(resolve(base, so.getOutline()), so.getBaseSize(), so.getSizes(), so.getCavityDepthMm(),
                 so.getPost(), so.getSystem(), origin, so.getShrinkage(), so.getShrinkageMode(), so.getTreadDepthMm(),
-                so.getClearanceMm(), so.getMarginMm(), tools, designs);
+                so.getClearanceMm(), so.getMarginMm(), tools, designs, so.getCavityTool());
     }
 
     private static SoleType soleType(SoleSettings s, Path base) {
@@ -257,6 +257,7 @@ public final class JobXml {
         t.setTreadDepthMm(s.treadDepthMm());
         t.setClearanceMm(s.clearanceMm());
         t.setMarginMm(s.marginMm());
+        t.setCavityTool(s.cavityTool());
         for (JobSettings.SoleTool k : s.tools()) {
             SoleType.Tool x = new SoleType.Tool();
             x.setId(k.id());

@@ -12,7 +12,7 @@ public enum Module {
     POCKET("pocket milling", 7, true),
     CUTTING("sheet cutting", 8, true),
     GRADING("grading", 9, true),
-    SOLE("sole mould", 10, false),
+    SOLE("sole mould", 10, true),
     BENCH("benchmarks", 11, true);
 
     private final String title;

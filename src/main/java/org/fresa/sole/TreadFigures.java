@@ -48,6 +48,26 @@ public final class TreadFigures {
         PARAMS.put("SUB9B", List.of("XB9", "YB9", "XC9", "YC9", "XD9", "YD9", "XE9", "YE9"));
     }
 
+    private static final Map<String, String> EXAMPLES = Map.ofEntries(
+            Map.entry("PRIM", "XI=-40,YI=-10,XA1=0,YA1=0"),
+            Map.entry("NOVO", "XF1=40,YF1=-10,XF2=40,YF2=-5"),
+            Map.entry("SUB1A", "XA1=-40,YA1=-41,XB1=40,XC1=40,YC1=-31,XD1=-40"),
+            Map.entry("SUB1B", "XA1=-45,YA1=210.6,YB1=181,XC1=-30,YC1=184,YD1=220"),
+            Map.entry("SUB2", "XA2=-40,YA2=10,XB2=10,YB2=0"),
+            Map.entry("SUB3A", "XC=-30,YC=-35,RA=5,XA3=-35,XB3=-25"),
+            Map.entry("SUB3B", "XC=-30,YC=-40,RA=5,XA3=-35,XB3=-25"),
+            Map.entry("SUB3E", "XC=-30,YC=20,RA=10,XA3=-40,XB3=-20,AFAS=20,N=3"),
+            Map.entry("SUB4", "XC=26,YC=24,RA=16,XA4=10,YA4=24,XB4=42,YB4=24"),
+            Map.entry("SUB5A", "XC1=-35,YC1=-35,XC2=-25,YC2=-35,XT=-30,YT=-35,XA5=-40,XB5=-20"),
+            Map.entry("SUB5B", "XC1=-30,YC1=-10,XC2=-20,YC2=-10,XT=-25,YT=-10,XA5=-35,XB5=-15"),
+            Map.entry("SUB5E", "XC1=-35,YC1=-45,XC2=-25,YC2=-35,XT=-30,YT=-40,XA5=-40,XB5=-20,AFAS=20,N=3"),
+            Map.entry("SUB7A", "XA7=-40,YA7=20,XB7=10,YB7=5,XC7=10,YC7=-5"),
+            Map.entry("SUB7B", "XB7=10,YB7=8,XC7=10,YC7=-8"),
+            Map.entry("SUB8A", "XA8=-39,YA8=20,XB8=4,YB8=0,XC8=5,YC8=-10,XD8=4,YD8=0"),
+            Map.entry("SUB8B", "XB8=5,YB8=5,XC8=10,YC8=0,XD8=5,YD8=-5"),
+            Map.entry("SUB9A", "XA9=15,YA9=15,XB9=5,YB9=0,XC9=-5,YC9=10,XD9=-5,YD9=0,XE9=5,YE9=-10"),
+            Map.entry("SUB9B", "XB9=5,YB9=0,XC9=5,YC9=8,XD9=5,YD9=0,XE9=5,YE9=-8"));
+
     private static final Set<String> IGNORED = Set.of("I", "PROF", "AVAN");
 
     private TreadFigures() {
@@ -60,6 +80,18 @@ public final class TreadFigures {
             throw new IllegalArgumentException("unknown macro " + macro);
         }
         return p;
+    }
+
+    /**
+     * The parameters of the macro's call in one of the thesis's programs (App. E test programs;
+     * SUB1B from the insert program of App. F), as {@code NAME=value,...}: previews and defaults.
+     */
+    public static String thesisExample(String macro) {
+        String e = EXAMPLES.get(macro.toUpperCase(Locale.ROOT));
+        if (e == null) {
+            throw new IllegalArgumentException("unknown macro " + macro);
+        }
+        return e;
     }
 
     /** Whether the macro carries on the groove in progress (B, E-less continuous types, PRIM/NOVO excluded). */

@@ -19,7 +19,7 @@ final class Tabs {
                 new PocketTab(),
                 new UnavailableTab("Cutting", Module.CUTTING),
                 new GradingTab(ctx),
-                new UnavailableTab("Sole", Module.SOLE),
+                new SoleTab(ctx),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
     }
 }

@@ -2,7 +2,6 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.Module;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -28,6 +27,13 @@ final class SoleCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.unavailable(spec.commandLine().getErr(), Module.SOLE);
+        java.io.PrintWriter o = spec.commandLine().getOut();
+        return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
+            org.fresa.job.Job j = org.fresa.job.JobXml.read(job);
+            if (j.sole().isEmpty()) {
+                throw new org.fresa.model.CamInputException(job.toString(), "the job has no <sole> settings");
+            }
+            return org.fresa.job.SoleService.run(j, new org.fresa.job.OutputFolder(out), progress);
+        });
     }
 }

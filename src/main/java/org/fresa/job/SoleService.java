@@ -1,0 +1,333 @@
+package org.fresa.job;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.fresa.chart.ChartFiles;
+import org.fresa.chart.PlotScene;
+import org.fresa.chart.ToolpathChart;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.grading.GradedSize;
+import org.fresa.grading.Grader;
+import org.fresa.grading.GradingPlan;
+import org.fresa.grading.ShrinkageMode;
+import org.fresa.grading.SizeRange;
+import org.fresa.grading.SizeSystem;
+import org.fresa.model.CamInputException;
+import org.fresa.model.ContourFile;
+import org.fresa.model.ExactDecimal;
+import org.fresa.model.Toolpath;
+import org.fresa.post.NcPost;
+import org.fresa.post.NcPosts;
+import org.fresa.sole.Foot;
+import org.fresa.sole.Similarity2;
+import org.fresa.sole.SizeRule;
+import org.fresa.sole.SizeScale;
+import org.fresa.sole.SoleTread;
+import org.fresa.sole.TreadFigure;
+import org.fresa.sole.TreadFigures;
+import org.fresa.sole.TreadItem;
+import org.fresa.sole.TreadPattern;
+import org.fresa.sole.TreadProgram;
+import org.fresa.sole.TreadTool;
+
+/**
+ * The sole mould task ({@code fresa sole}, {@code fresa run} with task sole): grades the outline
+ * over the job's sizes with the grading module, places and clips the tread for each size and
+ * foot, and writes per size {@code tread-NN-right.ngc}, {@code tread-NN-left.ngc},
+ * {@code size-NN.csv} (the graded outline, x,y), {@code sole-NN.png} (both feet: outline and
+ * tread) and, when the job names a cavity tool, {@code cavity-NN-right.ngc} and
+ * {@code cavity-NN-left.ngc} pocketed by the pocket module; without one the outcome says so and
+ * the status is 1, with every tread file written.
+ */
+public final class SoleService {
+
+    private static final Tolerance TOL = Tolerance.DEFAULT;
+
+    private SoleService() {
+    }
+
+    /** The whole plan of a sole job, read and checked. */
+    public record SolePlan(Grader grader, SoleTread tread, Map<String, TreadTool> tools, NcPost post,
+            JobSettings.SoleSettings settings) {
+    }
+
+    /**
+     * Reads the outline, grades it and builds the tread.
+     *
+     * @throws CamInputException for a bad outline, size range, macro, tool or post
+     */
+    public static SolePlan plan(JobSettings.SoleSettings s, String source) throws CamInputException {
+        List<Contour> outline = readOutline(s.outline());
+        SizeSystem system;
+        List<Double> sizes;
+        ShrinkageMode mode;
+        try {
+            system = SizeSystem.ofId(s.system());
+            sizes = SizeRange.parse(s.sizes(), system, false);
+            mode = ShrinkageMode.ofId(s.shrinkageMode());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(source, e.getMessage());
+        }
+        GradingPlan gp = GradingPlan.of(system, s.baseSize(), sizes).withShrinkage(s.shrinkage(), mode);
+        if (s.originMm().isPresent()) {
+            gp = gp.withOrigin(s.originMm().get());
+        }
+        Grader grader = Grader.of(outline, gp, s.outline().toString());
+        Vec2 axis = grader.frame().lengthAxis();
+        if (Math.abs(axis.x()) > 1e-9 || axis.y() <= 0) {
+            throw new CamInputException(s.outline().toString(), "the sole's length must run along +y (heel at the bottom),"
+                    + " as tread figures are placed in that frame; found a length axis at "
+                    + ExactDecimal.of(grader.frame().lengthAxisDeg()) + " degrees");
+        }
+        Map<String, TreadTool> tools = new LinkedHashMap<>();
+        for (JobSettings.SoleTool t : s.tools()) {
+            try {
+                tools.put(t.id(), new TreadTool(t.id(), t.number(), t.diameterMm(), t.spindleRpm(), t.feedMmPerMin(),
+                        t.plungeFeedMmPerMin()));
+            } catch (IllegalArgumentException e) {
+                throw new CamInputException(source, e.getMessage());
+            }
+        }
+        List<TreadItem> items = new ArrayList<>();
+        for (JobSettings.SoleDesign d : s.designs()) {
+            items.add(item(d, tools, source));
+        }
+        NcPost post = NcPosts.byName(s.post()).orElseThrow(() -> new CamInputException(source,
+                "unknown post '" + s.post() + "', expected one of " + String.join(", ", NcPosts.names())));
+        return new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s);
+    }
+
+    private static List<Contour> readOutline(Path file) throws CamInputException {
+        String name = file.toString();
+        if (!name.toLowerCase(Locale.ROOT).endsWith(".contour")) {
+            throw new CamInputException(name, "a sole outline must be a .contour file (lines and arcs)");
+        }
+        try (var r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            return ContourFile.read(r, name);
+        } catch (IOException e) {
+            throw new CamInputException(name, "cannot read the outline (" + e.getMessage() + ")");
+        }
+    }
+
+    static TreadItem item(JobSettings.SoleDesign d, Map<String, TreadTool> tools, String source)
+            throws CamInputException {
+        String where = source + ", design '" + d.name() + "'";
+        if (!tools.containsKey(d.tool())) {
+            throw new CamInputException(where, "unknown tool '" + d.tool() + "', the job's tools are " + tools.keySet());
+        }
+        List<TreadFigure> lead = new ArrayList<>();
+        for (JobSettings.SoleFigure f : d.lead()) {
+            lead.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), where));
+        }
+        List<TreadFigure> figs = new ArrayList<>();
+        for (JobSettings.SoleFigure f : d.figures()) {
+            figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), where));
+        }
+        try {
+            TreadPattern pattern = switch (d.pattern()) {
+                case "single" -> TreadPattern.single();
+                case "linear" -> TreadPattern.linear(d.dxMm(), d.dyMm(), positive(d.count(), "count"));
+                case "grid" -> TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"),
+                        positive(d.rows(), "rows"), d.rowShiftMm());
+                case "polar" -> TreadPattern.polar(Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(),
+                        positive(d.count(), "count"));
+                case "copies" -> copies(d.copies());
+                default -> throw new IllegalArgumentException("pattern '" + d.pattern() + "' is not supported here"
+                        + (d.pattern().equals("fill") ? " yet (use grid: the outline clips it)" : ""));
+            };
+            TreadItem item = new TreadItem(d.name(), lead, figs, pattern, SizeRule.ofId(d.rule()), d.text(), d.tool());
+            item.strokes(TOL);
+            return item;
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(where, e.getMessage());
+        }
+    }
+
+    private static int positive(int n, String what) {
+        if (n < 1 || n > 10000) {
+            throw new IllegalArgumentException(what + " must be from 1 to 10000: " + n);
+        }
+        return n;
+    }
+
+    private static TreadPattern copies(List<JobSettings.SoleCopy> cs) {
+        if (cs.isEmpty()) {
+            throw new IllegalArgumentException("pattern 'copies' needs copy elements");
+        }
+        List<Similarity2> l = new ArrayList<>();
+        for (JobSettings.SoleCopy c : cs) {
+            Similarity2 t = Similarity2.IDENTITY;
+            if (c.mirrorXMm().isPresent()) {
+                t = t.then(Similarity2.mirrorX(c.mirrorXMm().getAsDouble()));
+            }
+            if (c.mirrorYMm().isPresent()) {
+                t = t.then(Similarity2.mirrorY(c.mirrorYMm().getAsDouble()));
+            }
+            t = t.then(Similarity2.rotation(Vec2.ZERO, c.rotateDeg())).then(Similarity2.translation(c.dxMm(), c.dyMm()));
+            l.add(t);
+        }
+        return new TreadPattern.Copies(l);
+    }
+
+    /** The scale of one graded size as the tread needs it. */
+    public static SizeScale scale(SolePlan p, GradedSize g) {
+        return new SizeScale(g.name(), p.grader().origin(), g.factors().width(), g.factors().length(),
+                1 + p.settings().shrinkage());
+    }
+
+    /** The tread program of a size and foot. */
+    public static Toolpath treadProgram(SolePlan p, GradedSize g, Foot foot) {
+        SizeScale sc = scale(p, g);
+        List<SoleTread.ToolGrooves> grooves = p.tread().grooves(sc, foot, g.output().get(0),
+                id -> p.tools().get(id).diameterMm() / 2, TOL);
+        return TreadProgram.toolpath(grooves, p.tools(), p.settings().treadDepthMm(), p.settings().clearanceMm());
+    }
+
+    /**
+     * The cavity program of a size and foot: the graded outline (mirrored for the left foot)
+     * pocketed by the pocket module with the cavity tool's real diameter, from the top face
+     * z = 0 to z = -cavityDepth, climb milling chosen after the mirror so both feet are cut in
+     * the same sense (the thesis's MAC3/MAC4 against MAC5/MAC6). Empty when the job names no
+     * cavity tool.
+     *
+     * @throws CamInputException when the cavity tool is unknown or too large for the outline
+     */
+    public static java.util.Optional<Toolpath> cavityProgram(SolePlan p, GradedSize g, Foot foot)
+            throws CamInputException {
+        JobSettings.SoleSettings s = p.settings();
+        if (s.cavityTool().isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        TreadTool t = p.tools().get(s.cavityTool());
+        if (t == null) {
+            throw new CamInputException("sole", "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
+                    + p.tools().keySet());
+        }
+        Contour outline = foot == Foot.RIGHT ? g.output().get(0)
+                : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
+        try {
+            org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(t.diameterMm(), 0.6,
+                    Math.min(0.5, 0.5 / t.diameterMm()), 0, -s.cavityDepthMm(), s.cavityDepthMm(), t.spindleRpm(),
+                    t.feedMmPerMin(), t.feedMmPerMin());
+            org.fresa.pocket.Recognition.Result rec = org.fresa.pocket.Recognition.of(
+                    org.fresa.pocket.PocketProfile.fromContours(List.of(outline.ccw())));
+            org.fresa.pocket.PocketPlan plan = org.fresa.pocket.PassPlanner.plan(rec, tech, false);
+            return java.util.Optional.of(org.fresa.pocket.PocketToolpath.of(plan, true));
+        } catch (org.fresa.pocket.ToolTooLargeException e) {
+            throw new CamInputException("sole", "size " + g.name() + ": the cavity tool is too large: " + e.getMessage());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("sole", "cavity: " + e.getMessage());
+        }
+    }
+
+    /** The job task. */
+    public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        JobSettings.SoleSettings s = JobRunner.require(job.sole(), "sole", job);
+        SolePlan p = plan(s, job.name());
+        out.create();
+        List<Double> sizes = p.grader().plan().sizes();
+        List<Object> perSize = new ArrayList<>();
+        List<String> cavityProblems = new ArrayList<>();
+        int k = 0;
+        for (double size : sizes) {
+            if (progress.isCancelled()) {
+                break;
+            }
+            GradedSize g = p.grader().grade(size);
+            progress.progress((double) k++ / sizes.size(), "size " + g.name());
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("size", g.name());
+            m.put("width_factor", g.factors().width());
+            m.put("length_factor", g.factors().length());
+            m.put("length_mm", g.lengthMm());
+            m.put("width_mm", g.widthMm());
+            PlotScene scene = PlotScene.empty("Sole " + g.name() + " (right, left)");
+            Contour right = g.output().get(0);
+            double shift = right.bounds().width() + 30;
+            for (Foot foot : Foot.values()) {
+                Toolpath tp = treadProgram(p, g, foot);
+                String name = "tread-" + g.name() + "-" + foot.id();
+                out.write(name + ".ngc", os -> {
+                    Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+                    p.post().write(tp, name, w);
+                    w.flush();
+                });
+                m.put(foot.id() + "_moves", tp.moveCount());
+                java.util.Optional<Toolpath> cavity;
+                try {
+                    cavity = cavityProgram(p, g, foot);
+                } catch (CamInputException e) {
+                    // the tread is still worth writing: report the cavity and carry on
+                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ".ngc not written: " + e.problem());
+                    cavity = java.util.Optional.empty();
+                }
+                if (cavity.isPresent()) {
+                    String cname = "cavity-" + g.name() + "-" + foot.id();
+                    Toolpath ct = cavity.get();
+                    out.write(cname + ".ngc", os -> {
+                        Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+                        p.post().write(ct, cname, w);
+                        w.flush();
+                    });
+                    m.put(foot.id() + "_cavity_moves", ct.moveCount());
+                }
+                Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
+                Vec2 dx = Vec2.of(foot == Foot.RIGHT ? 0 : shift, 0);
+                scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
+                        .with(new PlotScene.Layer(foot.id() + " tread", PlotScene.Style.FEED, feeds(tp, dx)));
+            }
+            out.writeString("size-" + g.name() + ".csv", csv(g));
+            PlotScene sc = scene;
+            out.write("sole-" + g.name() + ".png", os -> ChartFiles.writePng(ToolpathChart.create(sc), 1000, 1100, os));
+            perSize.add(m);
+        }
+        progress.progress(1, "done");
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("origin", List.of(p.grader().origin().x(), p.grader().origin().y()));
+        summary.put("post", p.post().name());
+        summary.put("designs", s.designs().size());
+        summary.put("sizes", perSize);
+        boolean cavity = !s.cavityTool().isEmpty();
+        summary.put("cavity", cavity ? "pocketed with tool " + s.cavityTool() : "no cavity tool named");
+        List<String> problems = new ArrayList<>(cavityProblems);
+        if (!cavity) {
+            problems.add("cavity programs are not written: the job names no cavityTool;"
+                    + " the tread programs, outlines and sheets are written");
+        }
+        return new TaskOutcome(problems.isEmpty() ? 0 : 1, problems, summary, out.written());
+    }
+
+    private static List<Curve2> feeds(Toolpath tp, Vec2 dx) {
+        PlotScene one = PlotScene.empty("").withToolpath(tp);
+        List<Curve2> out = new ArrayList<>();
+        for (PlotScene.Layer l : one.layers()) {
+            if (l.style() == PlotScene.Style.FEED) {
+                for (Curve2 c : l.curves()) {
+                    out.add(c.translated(dx));
+                }
+            }
+        }
+        return out;
+    }
+
+    private static String csv(GradedSize g) {
+        StringBuilder sb = new StringBuilder("x,y\n");
+        for (Vec2 v : g.exact().get(0).points(0.5)) {
+            sb.append(ExactDecimal.of(v.x())).append(',').append(ExactDecimal.of(v.y())).append('\n');
+        }
+        return sb.toString();
+    }
+}
