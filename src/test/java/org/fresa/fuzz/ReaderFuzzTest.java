@@ -20,7 +20,7 @@ import org.fresa.model.ContourFile;
  */
 class ReaderFuzzTest {
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void jobXmlReaderAcceptsOrRefuses(byte[] data) throws IOException {
         Path f = Files.createTempFile("fuzz-job", ".xml");
         try {
@@ -33,7 +33,7 @@ class ReaderFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void contourReaderAcceptsOrRefuses(byte[] data) {
         try {
             ContourFile.read(new StringReader(new String(data, StandardCharsets.UTF_8)), "fuzz.contour");
@@ -42,7 +42,7 @@ class ReaderFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void part21AndIso14649BindingAcceptOrRefuse(byte[] data) throws IOException {
         try {
             org.fresa.stepnc.StepNcReader.read(new java.io.ByteArrayInputStream(data), "fuzz.stp");
@@ -51,7 +51,7 @@ class ReaderFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void dxfReaderAcceptsOrRefuses(byte[] data) {
         try {
             org.fresa.dxf.DxfReader.read(data, "fuzz.dxf", org.fresa.dxf.DxfReadOptions.DEFAULT);
@@ -60,7 +60,7 @@ class ReaderFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void dadReaderAcceptsOrRefuses(byte[] data) {
         try {
             org.fresa.pocket.DadReader.read(new String(data, StandardCharsets.ISO_8859_1), "fuzz.dad");
@@ -69,7 +69,7 @@ class ReaderFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "20s")
+    @FuzzTest(maxDuration = "10s")
     void robotProgramXmlReaderAcceptsOrRefuses(byte[] data) throws IOException {
         Path f = Files.createTempFile("fuzz-program", ".xml");
         try {
