@@ -74,8 +74,9 @@ class MainWindowGuiTest {
     @Test
     void aJobCanBeSavedAndOpenedAgain() throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13,
-                30, 27, 3, 3200, 290, 100, "linuxcnc"));
+        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(
+                Path.of("samples/pocket/cavity01.dad").toAbsolutePath(), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
+                "linuxcnc"));
         GuiActionRunner.execute(() -> model.setJob(job));
 
         window.menuItemWithPath("File", "Save as...").click();
@@ -100,5 +101,12 @@ class MainWindowGuiTest {
         assertEquals(job.withName("cavity"), reopened);
         assertEquals(Optional.of(file.toAbsolutePath()), GuiActionRunner.execute(model::file));
         assertEquals(java.util.List.of(file.toAbsolutePath()), model.recentJobs());
+
+        // the job saved by the GUI runs unchanged on the command line
+        java.io.StringWriter err = new java.io.StringWriter();
+        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        assertEquals(0, status, err.toString());
+        assertTrue(Files.size(dir.resolve("out").resolve("pocket.ngc")) > 1000);
     }
 }
