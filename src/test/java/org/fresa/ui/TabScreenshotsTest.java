@@ -32,7 +32,10 @@ class TabScreenshotsTest {
         SwingUtilities.invokeAndWait(() -> {
             holder[0] = FresaApp.create(new RecentJobs(home.resolve("recent.txt")));
             holder[0].setVisible(true);
+            // a real job, so that the tabs show what a planner sees, not empty forms
+            holder[0].openJob(Path.of("samples/jobs/example2-irb140.xml").toAbsolutePath());
         });
+        Thread.sleep(3000);
         MainWindow w = holder[0];
         try {
             for (int i = 0; i < w.tabCount(); i++) {
