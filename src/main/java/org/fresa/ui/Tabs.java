@@ -17,7 +17,7 @@ final class Tabs {
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
                 new UnavailableTab("Pocket", Module.POCKET),
-                new UnavailableTab("Cutting", Module.CUTTING),
+                new CuttingTab(ctx),
                 new UnavailableTab("Grading", Module.GRADING),
                 new UnavailableTab("Sole", Module.SOLE),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
