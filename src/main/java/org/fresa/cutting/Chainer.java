@@ -125,7 +125,16 @@ public final class Chainer {
 
     /** The paper's one-way chaining: first match in file order wins, tolerance as given (1e-4 mm). */
     public static Chains chainPaper(List<Curve2> curves, double tolMm) {
-        List<Curve2> atemp = new ArrayList<>(curves);
+        // zero-length elements have no direction (the paper's method takes NaN there): left out and counted
+        List<Curve2> atemp = new ArrayList<>();
+        int zero = 0;
+        for (Curve2 c : curves) {
+            if (c.length() <= 1e-9 || (c instanceof Arc2 a && a.radius() <= 1e-9)) {
+                zero++;
+            } else {
+                atemp.add(c);
+            }
+        }
         List<Contour> closed = new ArrayList<>();
         List<List<Curve2>> open = new ArrayList<>();
         while (!atemp.isEmpty()) {
@@ -168,7 +177,7 @@ public final class Chainer {
                 open.add(cj);
             }
         }
-        return new Chains(closed, open, 0, 0, 0);
+        return new Chains(closed, open, 0, zero, 0);
     }
 
     private static boolean isClosedAlone(Curve2 c, double tol) {

@@ -164,11 +164,58 @@ public final class CutPlanner {
                 n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
             }
         }
+        crossings(nodes, warnings);
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, o));
     }
 
     // ------------------------------------------------------------------ classification
+
+    /** Warns about drawn contours that cross each other: their cuts cannot avoid touching. */
+    private static void crossings(List<Node> nodes, List<String> warnings) {
+        List<Curve2> curves = new ArrayList<>();
+        List<Integer> owner = new ArrayList<>();
+        for (int i = 0; i < nodes.size(); i++) {
+            for (Curve2 c : nodes.get(i).contour.curves()) {
+                curves.add(c);
+                owner.add(i);
+            }
+        }
+        int n = curves.size();
+        Box2[] boxes = new Box2[n];
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            boxes[i] = curves.get(i).bounds();
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, Comparator.comparingDouble(i -> boxes[i].minX()));
+        Tolerance t = new Tolerance(1e-7, 1e-12);
+        java.util.Set<Long> reported = new java.util.HashSet<>();
+        for (int a = 0; a < n; a++) {
+            int i = order[a];
+            for (int b = a + 1; b < n && boxes[order[b]].minX() <= boxes[i].maxX(); b++) {
+                int j = order[b];
+                int oi = owner.get(i);
+                int oj = owner.get(j);
+                if (oi == oj || !boxes[i].intersects(boxes[j])) {
+                    continue;
+                }
+                long key = Math.min(oi, oj) * 1_000_000L + Math.max(oi, oj);
+                if (reported.contains(key) || org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t).isEmpty()) {
+                    continue;
+                }
+                reported.add(key);
+                if (reported.size() <= 20) {
+                    Vec2 p = org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t).get(0);
+                    warnings.add(String.format(Locale.ROOT, "two drawn contours cross or touch at (%.3f, %.3f): "
+                            + "their cuts cannot keep the kerf off both", p.x(), p.y()));
+                }
+            }
+        }
+        if (reported.size() > 20) {
+            warnings.add((reported.size() - 20) + " more pairs of crossing contours");
+        }
+    }
 
     private static List<Node> classify(List<Contour> closed, boolean paper) {
         List<Node> nodes = new ArrayList<>();

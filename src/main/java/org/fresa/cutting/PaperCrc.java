@@ -134,11 +134,25 @@ public final class PaperCrc {
             } else {
                 Arc2 arc = (Arc2) cv;
                 double r2 = arc.ccw() ? arc.radius() - side : arc.radius() + side;
-                if (r2 <= 0) {
+                if (r2 <= 1e-6) {
                     invalid.add(arc.center());
-                    out.add(new Segment2(a, b));
+                    if (!a.equals(b)) {
+                        out.add(new Segment2(a, b));
+                    }
                 } else if (!a.equals(b)) {
-                    out.add(new Arc2(arc.center(), a, b, arc.ccw()));
+                    // a corner that is not on the offset circle (an invalid vertex without a root):
+                    // reach the circle along the radius so the arc itself stays a true arc
+                    Vec2 a2 = onCircle(arc.center(), a, r2);
+                    Vec2 b2 = onCircle(arc.center(), b, r2);
+                    if (a2.distance(a) > 1e-9) {
+                        out.add(new Segment2(a, a2));
+                    }
+                    if (!a2.equals(b2)) {
+                        out.add(new Arc2(arc.center(), a2, b2, arc.ccw()));
+                    }
+                    if (b2.distance(b) > 1e-9) {
+                        out.add(new Segment2(b2, b));
+                    }
                 }
             }
         }
@@ -146,6 +160,14 @@ public final class PaperCrc {
             return new Result(Optional.empty(), invalid);
         }
         return new Result(Optional.of(new Contour(out)), invalid);
+    }
+
+    private static Vec2 onCircle(Vec2 c, Vec2 p, double r) {
+        double d = p.distance(c);
+        if (Math.abs(d - r) <= 1e-9 || d == 0) {
+            return p;
+        }
+        return c.plus(p.minus(c).times(r / d));
     }
 
     private static List<Vec2> carrierIntersections(Curve2 a, Curve2 b, double side) {

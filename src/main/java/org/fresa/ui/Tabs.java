@@ -17,7 +17,7 @@ final class Tabs {
                 new UnavailableTab("Position", Module.ROBOT),
                 new UnavailableTab("Robot", Module.ROBOT),
                 new PocketTab(),
-                new UnavailableTab("Cutting", Module.CUTTING),
+                new CuttingTab(ctx),
                 new GradingTab(ctx),
                 new SoleTab(ctx),
                 new UnavailableTab("Output", Module.ROBOT_PROGRAMS));

@@ -1,0 +1,160 @@
+package org.fresa.ui;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.fresa.chart.PlotScene;
+import org.fresa.cutting.CutPath;
+import org.fresa.cutting.CutPlan;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Vec2;
+import org.fresa.job.CuttingService;
+import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.model.CamInputException;
+
+/**
+ * The Cutting tab's state without Swing: the drawing and the settings the planner types in, the
+ * last result, and what the tab shows of it (the plot scene, the totals, the program text).
+ */
+public final class CuttingViewModel {
+
+    private Path drawing;
+    private String kerfMm = "2";
+    private String process = "plasma";
+    private String leadInMm = "3";
+    private String leadOutMm = "1";
+    private String lead = "arc";
+    private boolean paperMode;
+    private String post = "linuxcnc";
+    private CuttingService.Result result;
+
+    public Optional<Path> drawing() {
+        return Optional.ofNullable(drawing);
+    }
+
+    public void setDrawing(Path p) {
+        drawing = p;
+        result = null;
+    }
+
+    public void setKerfMm(String v) {
+        kerfMm = v.trim();
+    }
+
+    public void setProcess(String v) {
+        process = v;
+    }
+
+    public void setLeadInMm(String v) {
+        leadInMm = v.trim();
+    }
+
+    public void setLeadOutMm(String v) {
+        leadOutMm = v.trim();
+    }
+
+    public void setLead(String v) {
+        lead = v;
+    }
+
+    public void setPaperMode(boolean v) {
+        paperMode = v;
+    }
+
+    public void setPost(String v) {
+        post = v;
+    }
+
+    /** The settings as typed, checked. */
+    public CuttingSettings settings() throws CamInputException {
+        if (drawing == null) {
+            throw new CamInputException("Cutting", "choose a DXF drawing first");
+        }
+        return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
+                number("lead-out", leadOutMm), lead, 0.001, "auto", paperMode, post);
+    }
+
+    private static double number(String what, String text) throws CamInputException {
+        try {
+            double d = Double.parseDouble(text);
+            if (!(d >= 0) || !Double.isFinite(d)) {
+                throw new NumberFormatException();
+            }
+            return d;
+        } catch (NumberFormatException e) {
+            throw new CamInputException(what, "'" + text + "' is not a length in mm (a number >= 0)");
+        }
+    }
+
+    public void setResult(CuttingService.Result r) {
+        result = r;
+    }
+
+    public Optional<CuttingService.Result> result() {
+        return Optional.ofNullable(result);
+    }
+
+    /** Parts filled, holes, open chains in the warning style, cuts, leads, rapids and order numbers. */
+    public PlotScene scene() {
+        if (result == null) {
+            return PlotScene.empty("Cutting");
+        }
+        CutPlan p = result.plan();
+        List<Curve2> parts = new ArrayList<>();
+        p.outers().forEach(c -> parts.addAll(c.curves()));
+        List<Curve2> holes = new ArrayList<>();
+        p.holes().forEach(c -> holes.addAll(c.curves()));
+        List<Curve2> open = new ArrayList<>();
+        p.open().forEach(open::addAll);
+        List<Curve2> cuts = new ArrayList<>();
+        List<Curve2> leads = new ArrayList<>();
+        List<Curve2> rapids = new ArrayList<>();
+        Vec2 at = Vec2.ZERO;
+        for (CutPath c : p.cuts()) {
+            if (!at.equals(c.pierce())) {
+                rapids.add(new Segment2(at, c.pierce()));
+            }
+            cuts.addAll(c.path().curves());
+            leads.addAll(c.leadIn());
+            leads.addAll(c.tail());
+            at = c.exit();
+        }
+        List<Curve2> uncut = new ArrayList<>();
+        for (Contour c : p.uncut()) {
+            uncut.addAll(c.curves());
+        }
+        PlotScene s = new PlotScene(result.drawing().source(), List.of(), List.of())
+                .with(new PlotScene.Layer("parts", PlotScene.Style.PART, parts))
+                .with(new PlotScene.Layer("holes", PlotScene.Style.HOLE, holes))
+                .with(new PlotScene.Layer("open chains", PlotScene.Style.WARNING, open))
+                .with(new PlotScene.Layer("not cut", PlotScene.Style.WARNING, uncut))
+                .with(new PlotScene.Layer("rapids", PlotScene.Style.RAPID, rapids))
+                .with(new PlotScene.Layer("cuts", PlotScene.Style.FEED, cuts))
+                .with(new PlotScene.Layer("leads", PlotScene.Style.AUX, leads));
+        int k = 1;
+        for (CutPath c : p.cuts()) {
+            s = s.withLabel(c.pierce(), Integer.toString(k++));
+        }
+        return s;
+    }
+
+    /** Cut length, pierces, rapids and the estimated time, one line. */
+    public String totals() {
+        if (result == null) {
+            return "No drawing cut yet.";
+        }
+        var m = CuttingService.summary(result);
+        return String.format(Locale.ROOT, "%d contours (%d outer, %d holes, %d open), %d pierces, cut %.1f mm, rapid %.1f mm,"
+                + " about %.0f s; %d not cut, %d warnings", m.get("contours"), m.get("outer"), m.get("inner"),
+                m.get("open"), m.get("pierces"), (Double) m.get("cut_length_mm"), (Double) m.get("rapid_length_mm"),
+                (Double) m.get("estimated_time_s"), m.get("not_cut"), ((List<?>) m.get("warnings")).size());
+    }
+
+    public String program() {
+        return result == null ? "" : result.program();
+    }
+}

@@ -1,0 +1,51 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.fresa.chart.PlotScene;
+import org.fresa.job.CuttingService;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.model.CamInputException;
+import org.junit.jupiter.api.Test;
+
+class CuttingViewModelTest {
+
+    @Test
+    void withoutADrawingTheSettingsAskForOne() {
+        CuttingViewModel vm = new CuttingViewModel();
+        assertThrows(CamInputException.class, vm::settings);
+        assertEquals(0, vm.scene().layers().size());
+    }
+
+    @Test
+    void aKerfThatIsNotANumberIsNamed() {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
+        vm.setKerfMm("two");
+        CamInputException e = assertThrows(CamInputException.class, vm::settings);
+        assertTrue(e.getMessage().contains("kerf"), e.getMessage());
+    }
+
+    @Test
+    void theSamplePlateShowsPartsHolesOpenChainsRapidsAndOrderNumbers() throws Exception {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        PlotScene s = vm.scene();
+        assertTrue(layer(s, "parts").style() == PlotScene.Style.PART && !layer(s, "parts").curves().isEmpty());
+        assertTrue(!layer(s, "holes").curves().isEmpty());
+        assertEquals(PlotScene.Style.WARNING, layer(s, "open chains").style());
+        assertEquals(1, layer(s, "open chains").curves().size());
+        assertEquals(10, layer(s, "rapids").curves().size());
+        assertEquals(10, s.labels().size());
+        assertTrue(vm.totals().startsWith("10 contours (2 outer, 8 holes, 1 open), 10 pierces"), vm.totals());
+        assertTrue(vm.program().contains("M3 S1"));
+    }
+
+    private static PlotScene.Layer layer(PlotScene s, String name) {
+        return s.layers().stream().filter(l -> l.name().equals(name)).findFirst().orElseThrow();
+    }
+}
