@@ -12,14 +12,15 @@ final class Tabs {
     }
 
     static List<ModuleTab> create(AppContext ctx) {
+        RobotRunModel runs = new RobotRunModel();
         return List.of(
                 new StepNcTab(ctx),
-                new UnavailableTab("Position", Module.ROBOT),
-                new UnavailableTab("Robot", Module.ROBOT),
+                new PositionTab(ctx, runs),
+                new RobotTab(ctx),
                 new UnavailableTab("Pocket", Module.POCKET),
                 new UnavailableTab("Cutting", Module.CUTTING),
                 new GradingTab(ctx),
                 new UnavailableTab("Sole", Module.SOLE),
-                new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
+                new OutputTab(ctx, runs));
     }
 }
