@@ -53,6 +53,8 @@ final class OutputTab implements ModuleTab {
     private final JLabel image = new JLabel();
     private final JPanel previewCards = new JPanel(new CardLayout());
     private final JLabel status = new JLabel("Nothing computed yet: press Compute in the Position tab.");
+    // a new result is previewed when the tab is shown, so that computing does not also write a preview
+    private boolean stale;
 
     OutputTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -114,7 +116,16 @@ final class OutputTab implements ModuleTab {
         runs.addListener(r -> {
             status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
                     + r.solved().result().points().size() + " points");
-            preview();
+            stale = true;
+            if (panel.isShowing()) {
+                preview();
+            }
+        });
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+                    && stale) {
+                preview();
+            }
         });
         ctx.model().addListener(e -> {
             if (MainViewModel.JOB.equals(e.getPropertyName())) {
@@ -163,6 +174,7 @@ final class OutputTab implements ModuleTab {
                 deleteTree(scratch);
             }
         }, shown -> {
+            stale = false;
             CardLayout cards = (CardLayout) previewCards.getLayout();
             if (shown instanceof java.awt.image.BufferedImage img) {
                 image.setIcon(new ImageIcon(img));

@@ -113,7 +113,7 @@ final class PositionTab implements ModuleTab {
     private JPanel row(String title, String prefix, String[] names, JTextField[] out, int[] keys, boolean robot) {
         JPanel p = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
         JLabel t = new JLabel(title);
-        t.setPreferredSize(new java.awt.Dimension(170, t.getPreferredSize().height));
+        t.setPreferredSize(new java.awt.Dimension(Math.max(190, t.getPreferredSize().width), t.getPreferredSize().height));
         p.add(t);
         for (int i = 0; i < names.length; i++) {
             int index = i;
