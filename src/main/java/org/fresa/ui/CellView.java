@@ -101,6 +101,14 @@ final class CellView extends JComponent {
                     g.drawLine(a[0], a[1], c[0], c[1]);
                 }
             }
+            g.setStroke(new BasicStroke(2f));
+            if (!pts.isEmpty()) {
+                // the replayed point, also when the robot cannot reach it
+                PositionViewModel.CellPoint sel = pts.get(vm.selected());
+                int[] xy = v.at(sel.at());
+                g.setColor(colour(sel.status()));
+                g.drawOval(xy[0] - 7, xy[1] - 7, 14, 14);
+            }
             g.setStroke(new BasicStroke(1f));
             g.setColor(Color.BLACK);
             for (List<Vec3> line : links) {
