@@ -1,7 +1,6 @@
 package org.fresa.ui;
 
 import java.util.List;
-import org.fresa.job.Module;
 
 /**
  * The eight tabs of the main window, in order. A module that is built puts its own tab here in
@@ -12,14 +11,15 @@ final class Tabs {
     }
 
     static List<ModuleTab> create(AppContext ctx) {
+        RobotRunModel runs = new RobotRunModel();
         return List.of(
                 new StepNcTab(ctx),
-                new UnavailableTab("Position", Module.ROBOT),
-                new UnavailableTab("Robot", Module.ROBOT),
+                new PositionTab(ctx, runs),
+                new RobotTab(ctx),
                 new PocketTab(),
                 new CuttingTab(ctx),
                 new GradingTab(ctx),
                 new SoleTab(ctx),
-                new UnavailableTab("Output", Module.ROBOT_PROGRAMS));
+                new OutputTab(ctx, runs));
     }
 }

@@ -1,0 +1,237 @@
+package org.fresa.ui;
+
+import java.awt.BorderLayout;
+import java.awt.CardLayout;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.event.KeyEvent;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import javax.swing.BorderFactory;
+import javax.swing.BoxLayout;
+import javax.swing.ButtonGroup;
+import javax.swing.ImageIcon;
+import javax.swing.JButton;
+import javax.swing.JCheckBox;
+import javax.swing.JComponent;
+import javax.swing.JFileChooser;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JRadioButton;
+import javax.swing.JScrollPane;
+import javax.swing.JTextPane;
+import javax.swing.text.BadLocationException;
+import javax.swing.text.SimpleAttributeSet;
+import javax.swing.text.StyleConstants;
+import javax.swing.text.StyledDocument;
+import org.fresa.job.JobSettings;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.TaskOutcome;
+
+/**
+ * The Output tab: the robot formats with check boxes (what Save writes), a preview of one format
+ * (program text with its motion keywords coloured, or the joints chart) of the last trajectory
+ * the Position tab computed, and Save into folder. Writing runs in the background.
+ */
+final class OutputTab implements ModuleTab {
+
+    private static final int[] KEYS = {KeyEvent.VK_V, KeyEvent.VK_X, KeyEvent.VK_A, KeyEvent.VK_K, KeyEvent.VK_N};
+
+    private final AppContext ctx;
+    private final RobotRunModel runs;
+    private final OutputViewModel vm = new OutputViewModel();
+    private final JPanel panel = new JPanel(new BorderLayout());
+    private final List<JCheckBox> boxes = new ArrayList<>();
+    private final JTextPane text = new JTextPane();
+    private final JLabel image = new JLabel();
+    private final JPanel previewCards = new JPanel(new CardLayout());
+    private final JLabel status = new JLabel("Nothing computed yet: press Compute in the Position tab.");
+    // a new result is previewed when the tab is shown, so that computing does not also write a preview
+    private boolean stale;
+
+    OutputTab(AppContext ctx, RobotRunModel runs) {
+        this.ctx = ctx;
+        this.runs = runs;
+        JPanel left = new JPanel();
+        left.setLayout(new BoxLayout(left, BoxLayout.Y_AXIS));
+        left.add(new JLabel("Formats to save"));
+        ButtonGroup group = new ButtonGroup();
+        JPanel radios = new JPanel();
+        radios.setLayout(new BoxLayout(radios, BoxLayout.Y_AXIS));
+        int k = 0;
+        for (String f : OutputViewModel.FORMATS) {
+            JCheckBox b = new JCheckBox(OutputViewModel.describe(f), vm.isChecked(f));
+            b.setName("output-format-" + f);
+            b.setMnemonic(KEYS[k++]);
+            b.addActionListener(e -> {
+                vm.setChecked(f, b.isSelected());
+                writeFormatsToJob();
+            });
+            boxes.add(b);
+            left.add(b);
+            JRadioButton r = new JRadioButton("Preview " + f, f.equals(vm.previewed()));
+            r.setName("output-preview-" + f);
+            r.addActionListener(e -> {
+                vm.preview(f);
+                preview();
+            });
+            group.add(r);
+            radios.add(r);
+        }
+        left.add(javax.swing.Box.createVerticalStrut(10));
+        left.add(radios);
+        JButton save = new JButton("Save into folder...");
+        save.setName("output-save");
+        save.setMnemonic(KeyEvent.VK_S);
+        save.addActionListener(e -> save());
+        left.add(javax.swing.Box.createVerticalStrut(10));
+        left.add(save);
+
+        text.setEditable(false);
+        text.setName("output-text");
+        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        image.setName("output-image");
+        image.setHorizontalAlignment(JLabel.CENTER);
+        previewCards.add(new JScrollPane(text), "text");
+        previewCards.add(new JScrollPane(image), "image");
+        JLabel previewLabel = new JLabel("Preview");
+        previewLabel.setDisplayedMnemonic(KeyEvent.VK_P);
+        previewLabel.setLabelFor(text);
+        JPanel right = new JPanel(new BorderLayout());
+        right.add(previewLabel, BorderLayout.NORTH);
+        right.add(previewCards, BorderLayout.CENTER);
+        status.setName("output-status");
+
+        panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        panel.add(left, BorderLayout.WEST);
+        panel.add(right, BorderLayout.CENTER);
+        panel.add(status, BorderLayout.SOUTH);
+        runs.addListener(r -> {
+            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
+                    + r.solved().result().points().size() + " points");
+            stale = true;
+            if (panel.isShowing()) {
+                preview();
+            }
+        });
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+                    && stale) {
+                preview();
+            }
+        });
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName())) {
+                ctx.model().job().robot().ifPresent(rs -> {
+                    vm.setCheckedFormats(rs.formats());
+                    for (int i = 0; i < boxes.size(); i++) {
+                        boxes.get(i).setSelected(vm.isChecked(OutputViewModel.FORMATS.get(i)));
+                    }
+                });
+            }
+        });
+    }
+
+    @Override
+    public String title() {
+        return "Output";
+    }
+
+    @Override
+    public JComponent component() {
+        return panel;
+    }
+
+    private void writeFormatsToJob() {
+        ctx.model().job().robot().ifPresent(rs -> ctx.model().setJob(ctx.model().job().withRobot(
+                new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats()))));
+    }
+
+    private void preview() {
+        if (runs.last().isEmpty()) {
+            return;
+        }
+        RobotRunModel.Run run = runs.last().get();
+        String format = vm.previewed();
+        ctx.tasks().start("Preview " + format, progress -> {
+            Path scratch = Files.createTempDirectory("fresa-preview");
+            try {
+                Path f = OutputViewModel.previewFile(run, format, scratch);
+                if (format.equals("png")) {
+                    return (Object) ImageIO.read(f.toFile());
+                }
+                String s = Files.readString(f, StandardCharsets.UTF_8);
+                // a preview of a long program shows its beginning; Save writes all of it
+                return (Object) (s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s);
+            } finally {
+                deleteTree(scratch);
+            }
+        }, shown -> {
+            stale = false;
+            CardLayout cards = (CardLayout) previewCards.getLayout();
+            if (shown instanceof java.awt.image.BufferedImage img) {
+                image.setIcon(new ImageIcon(img));
+                cards.show(previewCards, "image");
+            } else {
+                showText((String) shown);
+                cards.show(previewCards, "text");
+            }
+        });
+    }
+
+    private void showText(String s) {
+        StyledDocument doc = text.getStyledDocument();
+        SimpleAttributeSet plain = new SimpleAttributeSet();
+        SimpleAttributeSet keyword = new SimpleAttributeSet();
+        StyleConstants.setForeground(keyword, new Color(0, 70, 170));
+        StyleConstants.setBold(keyword, true);
+        try {
+            doc.remove(0, doc.getLength());
+            doc.insertString(0, s, plain);
+            for (int[] span : OutputViewModel.keywordSpans(s)) {
+                doc.setCharacterAttributes(span[0], span[1] - span[0], keyword, false);
+            }
+        } catch (BadLocationException e) {
+            throw new IllegalStateException(e);
+        }
+        text.setCaretPosition(0);
+    }
+
+    private void save() {
+        String problem = vm.saveProblem(runs.last().isPresent());
+        if (!problem.isEmpty()) {
+            Dialogs.error(ctx.owner(), "Save", problem);
+            return;
+        }
+        JFileChooser fc = new JFileChooser();
+        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        fc.setDialogTitle("Save robot programs into folder");
+        if (fc.showSaveDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        saveInto(fc.getSelectedFile().toPath());
+    }
+
+    void saveInto(Path dir) {
+        RobotRunModel.Run run = runs.last().orElseThrow();
+        List<String> formats = vm.checkedFormats();
+        ctx.tasks().start("Saving robot programs", progress -> OutputViewModel.write(run, formats,
+                new OutputFolder(dir)), (TaskOutcome o) -> status.setText("Saved " + o.files().size()
+                        + " files into " + dir + (o.problems().isEmpty() ? "" : ": " + o.problems().get(0))));
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(p);
+            }
+        }
+    }
+}

@@ -1,0 +1,143 @@
+package org.fresa.ui;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Pattern;
+import org.fresa.job.OutputFolder;
+import org.fresa.job.RobotTrajectoryService;
+import org.fresa.job.TaskOutcome;
+
+/**
+ * The Output tab's state without Swing: which formats are checked, which one is previewed, and
+ * the writing of the last trajectory through {@link RobotTrajectoryService#write}.
+ */
+final class OutputViewModel {
+
+    /** The formats in the order shown, with what each writes. */
+    static final List<String> FORMATS = List.of("csv", "xml", "rapid", "krl", "png");
+
+    /** Words coloured in a program preview: motion instructions and declarations. */
+    static final Pattern KEYWORDS = Pattern.compile("\\b(MoveAbsJ|MoveL|MoveJ|PTP|LIN|MODULE|ENDMODULE|PROC|ENDPROC|"
+            + "DEF|END|PERS|CONST|VAR|tooldata|wobjdata|robtarget|jointtarget|DECL|BAS|Activity|JointValue)\\b");
+
+    private final Set<String> checked = new LinkedHashSet<>(List.of("csv", "xml", "png"));
+    private String previewed = "rapid";
+
+    static String describe(String format) {
+        return switch (format) {
+            case "csv" -> "csv: trajectory.csv (joint values per point)";
+            case "xml" -> "xml: program.xml (offline-programming XML)";
+            case "rapid" -> "rapid: program.mod (ABB RAPID)";
+            case "krl" -> "krl: program.src (KUKA KRL)";
+            case "png" -> "png: joints.png and error.png (charts)";
+            default -> format;
+        };
+    }
+
+    /** The file a format's preview shows. */
+    static String fileOf(String format) {
+        return switch (format) {
+            case "csv" -> "trajectory.csv";
+            case "xml" -> "program.xml";
+            case "rapid" -> "program.mod";
+            case "krl" -> "program.src";
+            case "png" -> "joints.png";
+            default -> throw new IllegalArgumentException(format);
+        };
+    }
+
+    boolean isChecked(String f) {
+        return checked.contains(f);
+    }
+
+    void setChecked(String f, boolean on) {
+        if (!FORMATS.contains(f)) {
+            throw new IllegalArgumentException("unknown format " + f);
+        }
+        if (on) {
+            checked.add(f);
+        } else {
+            checked.remove(f);
+        }
+    }
+
+    /** The checked formats in the shown order. */
+    List<String> checkedFormats() {
+        List<String> out = new ArrayList<>();
+        for (String f : FORMATS) {
+            if (checked.contains(f)) {
+                out.add(f);
+            }
+        }
+        return out;
+    }
+
+    void setCheckedFormats(List<String> fs) {
+        checked.clear();
+        for (String f : fs) {
+            if (FORMATS.contains(f)) {
+                checked.add(f);
+            }
+        }
+    }
+
+    String previewed() {
+        return previewed;
+    }
+
+    void preview(String f) {
+        if (!FORMATS.contains(f)) {
+            throw new IllegalArgumentException("unknown format " + f);
+        }
+        previewed = f;
+    }
+
+    /** Why saving is not possible now, or empty when it is. */
+    String saveProblem(boolean haveResult) {
+        if (!haveResult) {
+            return "Nothing to save yet: compute a trajectory in the Position tab first.";
+        }
+        if (checked.isEmpty()) {
+            return "Check at least one format.";
+        }
+        return "";
+    }
+
+    /** Writes the given formats of a run into a folder (plus summary.json). */
+    static TaskOutcome write(RobotRunModel.Run run, List<String> formats, OutputFolder out) throws IOException {
+        RobotTrajectoryService.Request r = run.solved().request();
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(r.toolpath(), r.robot(), r.robotTable(),
+                r.tablePiece(), r.chordToleranceMm(), formats, r.options());
+        return RobotTrajectoryService.write(new RobotTrajectoryService.Solved(req, run.solved().targets(),
+                run.solved().result()), run.programName(), out);
+    }
+
+    /**
+     * Writes one format into a scratch folder and returns the file to preview (text, or the
+     * joints chart for png). The scratch folder is the caller's to delete.
+     */
+    static Path previewFile(RobotRunModel.Run run, String format, Path scratch) throws IOException {
+        OutputFolder out = new OutputFolder(scratch);
+        write(run, List.of(format), out);
+        Path f = scratch.resolve(fileOf(format));
+        if (!Files.exists(f)) {
+            throw new IOException("the " + format + " writer wrote no " + fileOf(format));
+        }
+        return f;
+    }
+
+    /** Start and end offsets of the keywords in a program text, for colouring. */
+    static List<int[]> keywordSpans(String text) {
+        List<int[]> out = new ArrayList<>();
+        var m = KEYWORDS.matcher(text);
+        while (m.find()) {
+            out.add(new int[] {m.start(), m.end()});
+        }
+        return out;
+    }
+}

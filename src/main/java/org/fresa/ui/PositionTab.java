@@ -1,0 +1,254 @@
+package org.fresa.ui;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.FlowLayout;
+import java.awt.GridLayout;
+import java.awt.event.KeyEvent;
+import java.nio.file.Path;
+import java.util.Map;
+import javax.swing.BorderFactory;
+import javax.swing.Box;
+import javax.swing.BoxLayout;
+import javax.swing.JButton;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSlider;
+import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import javax.swing.event.DocumentEvent;
+import javax.swing.event.DocumentListener;
+import org.fresa.job.JobSettings;
+
+/**
+ * The Position tab: where the table stands in front of the robot and the workpiece on the table,
+ * Compute (the STEP-NC file of the STEP-NC tab with the robot of the Robot tab, in the
+ * background), the cell seen from above and from the side, a replay slider and the summary.
+ */
+final class PositionTab implements ModuleTab {
+
+    private static final int[] RT_KEYS = {KeyEvent.VK_X, KeyEvent.VK_Y, KeyEvent.VK_Z, KeyEvent.VK_T};
+    private static final int[] TP_KEYS = {KeyEvent.VK_A, KeyEvent.VK_B, KeyEvent.VK_E, KeyEvent.VK_I, KeyEvent.VK_G,
+        KeyEvent.VK_N};
+
+    private final AppContext ctx;
+    private final RobotRunModel runs;
+    private final PositionViewModel vm = new PositionViewModel();
+    private final JPanel panel = new JPanel(new BorderLayout());
+    private final JTextField[] robotTable = new JTextField[PositionViewModel.ROBOT_TABLE.length];
+    private final JTextField[] tablePiece = new JTextField[PositionViewModel.TABLE_PIECE.length];
+    private final JLabel messages = new JLabel(" ");
+    private final JButton compute = new JButton("Compute");
+    private final JSlider replay = new JSlider(0, 0, 0);
+    private final JLabel pointLabel = new JLabel(" ");
+    private final JTextArea summary = new JTextArea(8, 26);
+    private final CellView cell = new CellView(vm);
+    private boolean loading;
+
+    PositionTab(AppContext ctx, RobotRunModel runs) {
+        this.ctx = ctx;
+        this.runs = runs;
+        JPanel fields = new JPanel(new GridLayout(2, 1));
+        fields.add(row("Robot -> table (mm, deg):", "position-rt-", PositionViewModel.ROBOT_TABLE, robotTable, RT_KEYS,
+                true));
+        fields.add(row("Table -> piece (mm, deg):", "position-tp-", PositionViewModel.TABLE_PIECE, tablePiece, TP_KEYS,
+                false));
+        compute.setName("position-compute");
+        compute.setMnemonic(KeyEvent.VK_C);
+        compute.addActionListener(e -> compute());
+        messages.setName("position-messages");
+        messages.setForeground(new Color(180, 0, 0));
+        JPanel actions = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        actions.add(compute);
+        actions.add(messages);
+        JPanel top = new JPanel();
+        top.setLayout(new BoxLayout(top, BoxLayout.Y_AXIS));
+        top.add(fields);
+        top.add(actions);
+
+        replay.setName("position-replay");
+        replay.setEnabled(false);
+        replay.addChangeListener(e -> {
+            vm.select(replay.getValue());
+            pointLabel.setText(vm.selectedText());
+            cell.repaint();
+        });
+        JLabel replayLabel = new JLabel("Replay point:");
+        replayLabel.setDisplayedMnemonic(KeyEvent.VK_P);
+        replayLabel.setLabelFor(replay);
+        pointLabel.setName("position-point");
+        JPanel replayPanel = new JPanel(new BorderLayout(6, 0));
+        replayPanel.add(replayLabel, BorderLayout.WEST);
+        replayPanel.add(replay, BorderLayout.CENTER);
+        replayPanel.add(pointLabel, BorderLayout.SOUTH);
+
+        summary.setEditable(false);
+        summary.setName("position-summary");
+        JLabel summaryLabel = new JLabel("Summary");
+        summaryLabel.setDisplayedMnemonic(KeyEvent.VK_U);
+        summaryLabel.setLabelFor(summary);
+        JPanel right = new JPanel(new BorderLayout());
+        right.add(summaryLabel, BorderLayout.NORTH);
+        right.add(new JScrollPane(summary), BorderLayout.CENTER);
+
+        JPanel centre = new JPanel(new BorderLayout(4, 4));
+        centre.add(cell, BorderLayout.CENTER);
+        centre.add(replayPanel, BorderLayout.SOUTH);
+        centre.add(right, BorderLayout.EAST);
+
+        panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        panel.add(top, BorderLayout.NORTH);
+        panel.add(centre, BorderLayout.CENTER);
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName())) {
+                ctx.model().job().robot().ifPresent(this::load);
+            }
+        });
+        ctx.model().job().robot().ifPresent(this::load);
+        showResult();
+    }
+
+    private JPanel row(String title, String prefix, String[] names, JTextField[] out, int[] keys, boolean robot) {
+        JPanel p = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
+        JLabel t = new JLabel(title);
+        t.setPreferredSize(new java.awt.Dimension(Math.max(190, t.getPreferredSize().width), t.getPreferredSize().height));
+        p.add(t);
+        for (int i = 0; i < names.length; i++) {
+            int index = i;
+            JTextField f = new JTextField(robot ? vm.robotTable(i) : vm.tablePiece(i), 6);
+            f.setName(prefix + names[i]);
+            JLabel l = new JLabel(names[i]);
+            l.setDisplayedMnemonic(keys[i]);
+            l.setLabelFor(f);
+            l.setToolTipText(title + " " + names[i] + " (Alt+" + KeyEvent.getKeyText(keys[i]) + ")");
+            f.getDocument().addDocumentListener(new DocumentListener() {
+                @Override
+                public void insertUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                @Override
+                public void removeUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                @Override
+                public void changedUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                private void changed() {
+                    if (robot) {
+                        vm.setRobotTable(index, f.getText());
+                    } else {
+                        vm.setTablePiece(index, f.getText());
+                    }
+                    validateFields();
+                }
+            });
+            out[i] = f;
+            p.add(l);
+            p.add(f);
+            p.add(Box.createHorizontalStrut(6));
+        }
+        return p;
+    }
+
+    @Override
+    public String title() {
+        return "Position";
+    }
+
+    @Override
+    public JComponent component() {
+        return panel;
+    }
+
+    private void load(JobSettings.RobotSettings r) {
+        if (loading) {
+            return;
+        }
+        loading = true;
+        try {
+            vm.load(r);
+            for (int i = 0; i < robotTable.length; i++) {
+                setIfDifferent(robotTable[i], vm.robotTable(i));
+            }
+            for (int i = 0; i < tablePiece.length; i++) {
+                setIfDifferent(tablePiece[i], vm.tablePiece(i));
+            }
+        } finally {
+            loading = false;
+        }
+        validateFields();
+    }
+
+    private static void setIfDifferent(JTextField f, String text) {
+        if (!f.getText().trim().equals(text)) {
+            f.setText(text);
+        }
+    }
+
+    /** Shows the first problem, marks the bad fields, and writes good placements into the job. */
+    private boolean validateFields() {
+        Map<String, String> problems = vm.problems();
+        mark(robotTable, "position-rt-", problems);
+        mark(tablePiece, "position-tp-", problems);
+        messages.setText(problems.isEmpty() ? " " : problems.size() == 1 ? problems.values().iterator().next()
+                : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
+        if (problems.isEmpty() && !loading) {
+            loading = true;
+            try {
+                ctx.model().setJob(vm.applyTo(ctx.model().job()));
+            } finally {
+                loading = false;
+            }
+        }
+        compute.setEnabled(problems.isEmpty());
+        cell.repaint();
+        return problems.isEmpty();
+    }
+
+    private static void mark(JTextField[] fs, String prefix, Map<String, String> problems) {
+        for (JTextField f : fs) {
+            String key = (prefix.contains("rt") ? "robot-table." : "table-piece.")
+                    + f.getName().substring(prefix.length());
+            String p = problems.get(key);
+            f.setBackground(p == null ? Color.WHITE : new Color(255, 220, 220));
+            f.setToolTipText(p);
+        }
+    }
+
+    /** Starts the computation in the background (also used by the GUI test). */
+    void compute() {
+        if (!validateFields()) {
+            return;
+        }
+        var stepnc = ctx.model().job().stepnc();
+        if (stepnc.isEmpty()) {
+            Dialogs.error(ctx.owner(), "Compute", "No STEP-NC file: open one in the STEP-NC tab first.");
+            return;
+        }
+        Path file = stepnc.get().file();
+        JobSettings.RobotSettings r = vm.applyTo(ctx.model().job()).robot().orElseThrow();
+        java.util.List<String> formats = r.formats();
+        ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> PositionViewModel.compute(file,
+                r.robot(), r.robotTable(), r.tablePiece(), formats, progress), solved -> {
+                    vm.setResult(solved);
+                    String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+                    runs.set(new RobotRunModel.Run(solved, name));
+                    showResult();
+                });
+    }
+
+    private void showResult() {
+        summary.setText(String.join("\n", vm.summary()));
+        replay.setMaximum(Math.max(0, vm.pointCount() - 1));
+        replay.setValue(0);
+        replay.setEnabled(vm.pointCount() > 0);
+        pointLabel.setText(vm.pointCount() > 0 ? vm.selectedText() : "No trajectory yet.");
+        cell.repaint();
+    }
+}
