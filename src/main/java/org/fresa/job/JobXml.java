@@ -9,19 +9,14 @@ import jakarta.xml.bind.UnmarshalException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
-import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
-import javax.xml.parsers.SAXParserFactory;
-import javax.xml.transform.sax.SAXSource;
 import javax.xml.validation.Schema;
-import javax.xml.validation.SchemaFactory;
 import org.fresa.geom.Vec2;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobSettings.GradingSettings;
@@ -42,10 +37,8 @@ import org.fresa.job.xml.SoleType;
 import org.fresa.job.xml.StepNcType;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
-import org.xml.sax.InputSource;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
-import org.xml.sax.XMLReader;
 
 /**
  * Reads and writes job files ({@code schemas/job.xsd}) with Jakarta XML Binding.
@@ -58,25 +51,10 @@ public final class JobXml {
     /** The current job file version. */
     public static final int VERSION = 1;
 
-    private static final Schema SCHEMA = loadSchema();
+    private static final Schema SCHEMA = SafeXml.schema("/schemas/job.xsd");
     private static final JAXBContext CONTEXT = createContext();
 
     private JobXml() {
-    }
-
-    private static Schema loadSchema() {
-        URL url = JobXml.class.getResource("/schemas/job.xsd");
-        if (url == null) {
-            throw new IllegalStateException("schemas/job.xsd missing from the class path");
-        }
-        try {
-            SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
-            f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
-            f.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "file,jar:file");
-            return f.newSchema(url);
-        } catch (SAXException e) {
-            throw new IllegalStateException("schemas/job.xsd is invalid", e);
-        }
     }
 
     private static JAXBContext createContext() {
@@ -97,18 +75,9 @@ public final class JobXml {
         String name = file.toString();
         JobType xml;
         try (InputStream in = Files.newInputStream(file)) {
-            SAXParserFactory spf = SAXParserFactory.newInstance();
-            spf.setNamespaceAware(true);
-            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            spf.setFeature("http://xml.org/sax/features/external-general-entities", false);
-            spf.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
-            spf.setXIncludeAware(false);
-            XMLReader reader = spf.newSAXParser().getXMLReader();
-            InputSource source = new InputSource(in);
-            source.setSystemId(file.toUri().toString());
             Unmarshaller u = CONTEXT.createUnmarshaller();
             u.setSchema(SCHEMA);
-            JAXBElement<JobType> root = u.unmarshal(new SAXSource(reader, source), JobType.class);
+            JAXBElement<JobType> root = u.unmarshal(SafeXml.source(in, file), JobType.class);
             xml = root.getValue();
         } catch (IOException e) {
             throw new CamInputException(name, "cannot read the job file (" + e.getMessage() + ")");

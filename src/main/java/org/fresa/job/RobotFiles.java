@@ -7,7 +7,6 @@ import jakarta.xml.bind.UnmarshalException;
 import jakarta.xml.bind.Unmarshaller;
 import java.io.IOException;
 import java.io.InputStream;
-import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -16,12 +15,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
-import javax.xml.parsers.SAXParserFactory;
-import javax.xml.transform.sax.SAXSource;
 import javax.xml.validation.Schema;
-import javax.xml.validation.SchemaFactory;
 import org.fresa.geom.Transform3;
 import org.fresa.job.robotxml.FrameType;
 import org.fresa.job.robotxml.JointType;
@@ -38,10 +33,8 @@ import org.fresa.kin.Robots;
 import org.fresa.kin.SerialRobot;
 import org.fresa.kin.TriceptRobot;
 import org.fresa.model.CamInputException;
-import org.xml.sax.InputSource;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
-import org.xml.sax.XMLReader;
 
 /**
  * Robots by name or from files (schemas/robot.xsd), and their parameters as JSON-able maps for
@@ -74,17 +67,9 @@ public final class RobotFiles {
         String name = file.toString();
         RobotType xml;
         try (InputStream in = Files.newInputStream(file)) {
-            SAXParserFactory spf = SAXParserFactory.newInstance();
-            spf.setNamespaceAware(true);
-            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            spf.setFeature("http://xml.org/sax/features/external-general-entities", false);
-            spf.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
-            XMLReader reader = spf.newSAXParser().getXMLReader();
-            InputSource source = new InputSource(in);
-            source.setSystemId(file.toUri().toString());
             Unmarshaller u = Holder.CONTEXT.createUnmarshaller();
             u.setSchema(Holder.SCHEMA);
-            JAXBElement<RobotType> root = u.unmarshal(new SAXSource(reader, source), RobotType.class);
+            JAXBElement<RobotType> root = u.unmarshal(SafeXml.source(in, file), RobotType.class);
             xml = root.getValue();
         } catch (IOException e) {
             throw new CamInputException(name, "cannot read the robot file (" + e.getMessage() + ")");
@@ -226,23 +211,8 @@ public final class RobotFiles {
 
     /** Lazily built, so that commands that never read robot files do not pay for JAXB. */
     private static final class Holder {
-        static final Schema SCHEMA = loadSchema();
+        static final Schema SCHEMA = SafeXml.schema("/schemas/robot.xsd");
         static final JAXBContext CONTEXT = createContext();
-
-        private static Schema loadSchema() {
-            URL url = RobotFiles.class.getResource("/schemas/robot.xsd");
-            if (url == null) {
-                throw new IllegalStateException("schemas/robot.xsd missing from the class path");
-            }
-            try {
-                SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
-                f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
-                f.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "file,jar:file");
-                return f.newSchema(url);
-            } catch (SAXException e) {
-                throw new IllegalStateException("schemas/robot.xsd is invalid", e);
-            }
-        }
 
         private static JAXBContext createContext() {
             try {

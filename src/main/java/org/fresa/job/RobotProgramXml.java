@@ -10,17 +10,12 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.math.BigInteger;
-import java.net.URL;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import javax.xml.XMLConstants;
 import javax.xml.parsers.ParserConfigurationException;
-import javax.xml.parsers.SAXParserFactory;
-import javax.xml.transform.sax.SAXSource;
 import javax.xml.validation.Schema;
-import javax.xml.validation.SchemaFactory;
 import org.fresa.geom.Quaternion;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
@@ -39,7 +34,6 @@ import org.fresa.job.robotprogram.RobotProgramType;
 import org.fresa.model.CamInputException;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
-import org.xml.sax.InputSource;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -52,24 +46,10 @@ import org.xml.sax.SAXParseException;
 public final class RobotProgramXml {
 
     public static final int VERSION = 1;
-    private static final Schema SCHEMA = loadSchema();
+    private static final Schema SCHEMA = SafeXml.schema("/schemas/robot-program.xsd");
     private static final JAXBContext CONTEXT = createContext();
 
     private RobotProgramXml() {
-    }
-
-    private static Schema loadSchema() {
-        URL url = RobotProgramXml.class.getResource("/schemas/robot-program.xsd");
-        if (url == null) {
-            throw new IllegalStateException("schemas/robot-program.xsd missing from the class path");
-        }
-        try {
-            SchemaFactory f = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
-            f.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
-            return f.newSchema(url);
-        } catch (SAXException e) {
-            throw new IllegalStateException("schemas/robot-program.xsd is invalid", e);
-        }
     }
 
     private static JAXBContext createContext() {
@@ -101,15 +81,9 @@ public final class RobotProgramXml {
     public static RobotProgram read(Path file) throws CamInputException {
         String name = file.toString();
         try (InputStream in = Files.newInputStream(file)) {
-            SAXParserFactory spf = SAXParserFactory.newInstance();
-            spf.setNamespaceAware(true);
-            spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            InputSource src = new InputSource(in);
-            src.setSystemId(file.toUri().toString());
             Unmarshaller u = CONTEXT.createUnmarshaller();
             u.setSchema(SCHEMA);
-            JAXBElement<RobotProgramType> root = u.unmarshal(
-                    new SAXSource(spf.newSAXParser().getXMLReader(), src), RobotProgramType.class);
+            JAXBElement<RobotProgramType> root = u.unmarshal(SafeXml.source(in, file), RobotProgramType.class);
             return fromXml(root.getValue());
         } catch (IOException e) {
             throw new CamInputException(name, "cannot read (" + e.getMessage() + ")");
