@@ -313,6 +313,23 @@ public final class TrajectorySolver {
             }
             return onward.get(onward.size() - 1).sol();
         }
+        // no continuous way down onto B in the new configuration: change it in the air above B and
+        // come down onto the next target instead (B lifted in the old configuration, the next target
+        // lifted in the new one), so the reconfiguration still happens away from the part
+        for (double lift = options.liftMm(); lift >= options.liftMm() / 8; lift /= 2) {
+            ToolTarget upB = b.lifted(lift);
+            ToolTarget upT = t.lifted(lift);
+            Sol r1 = warm(upB, sb.phi, sb.q);
+            Sol r2 = warm(upT, c.phi, c.q);
+            if (r1 == null || r2 == null || !smooth(r2.q, c.q)) {
+                continue;
+            }
+            add(upB, r1, TrajectoryPoint.Status.RELINK, true);
+            add(upT, r2, TrajectoryPoint.Status.RELINK, true);
+            notes.add("configuration change at row " + (rows.size() + 1) + " (" + b.label() + "): relinked in the air"
+                    + " above the previous point and came down onto the next one");
+            return c;
+        }
         notes.add("configuration change at row " + (rows.size() + 1) + " (" + b.label() + ") without relink points:"
                 + " no continuous move into the new configuration was found, the joints jump there");
         return c;

@@ -55,6 +55,43 @@ class RobotServiceTest {
     }
 
     @Test
+    void example2OnTheIrb140IsReachedExactlyWithoutJointJumps() throws Exception {
+        // issue 5's acceptance: every point reached within the limits, 1e-6 mm, 1e-8 rad, and no
+        // jump over 20 deg between neighbouring ok points (relinks happen off the part)
+        List<String> rows = Files.readAllLines(dir.resolve("trajectory.csv"));
+        List<String> h = List.of(rows.get(0).split(","));
+        int q1 = h.indexOf("q1");
+        double[] min = {-180, -90, -230, -200, -120, -400};
+        double[] max = {180, 110, 50, 200, 120, 400};
+        double[] prev = null;
+        double worstStep = 0;
+        for (String r : rows.subList(1, rows.size())) {
+            String[] c = r.split(",", -1);
+            String status = c[h.indexOf("status")];
+            assertTrue(!status.equals("unreachable"), r);
+            double[] q = new double[6];
+            for (int i = 0; i < 6; i++) {
+                q[i] = Double.parseDouble(c[q1 + i]);
+                assertTrue(q[i] >= min[i] - 1e-9 && q[i] <= max[i] + 1e-9, "joint " + (i + 1) + " in " + r);
+            }
+            assertTrue(Double.parseDouble(c[h.indexOf("pos_err_mm")]) <= 1e-6, r);
+            assertTrue(Double.parseDouble(c[h.indexOf("rot_err_rad")]) <= 1e-8, r);
+            if (status.equals("ok")) {
+                if (prev != null) {
+                    for (int i = 0; i < 6; i++) {
+                        worstStep = Math.max(worstStep, Math.abs(q[i] - prev[i]));
+                    }
+                }
+                prev = q;
+            } else {
+                prev = null;
+            }
+        }
+        assertTrue(worstStep <= 20, "largest joint step between ok points: " + worstStep);
+        assertEquals(0, outcome.exitStatus(), String.valueOf(outcome.problems()));
+    }
+
+    @Test
     void theXmlHoldsEveryReachablePointsJointsExactly() throws Exception {
         RobotProgram p = RobotProgramXml.read(dir.resolve("program.xml"));
         assertEquals(okRows, p.motions().size());
