@@ -141,7 +141,7 @@ public final class Benchmarks {
         byte[] data = Files.readAllBytes(file);
         for (int i = 0; i < 3; i++) {
             DxfDrawing d = DxfReader.read(data, "bench", DxfReadOptions.DEFAULT);
-            Chainer.chain(d.curves(), 0.001 * d.mmPerUnit());
+            Chainer.chain(d.curves(), 0.001);
         }
         double[] rates = new double[7];
         for (int r = 0; r < rates.length; r++) {

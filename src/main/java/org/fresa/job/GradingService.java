@@ -89,14 +89,11 @@ public final class GradingService {
     public static List<Contour> readOutline(Path file) throws CamInputException, IOException {
         String name = file.getFileName().toString();
         if (name.toLowerCase(Locale.ROOT).endsWith(".dxf")) {
-            org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(file);
-            List<Contour> closed = new java.util.ArrayList<>(
-                    org.fresa.cutting.Chainer.chain(d.curves(), 0.001).closed());
+            List<Contour> closed = DrawingContours.read(file).closed();
             if (closed.isEmpty()) {
                 throw new CamInputException(name, "no closed outline in the drawing (expected lines, arcs or "
                         + "polylines that form a closed contour)");
             }
-            closed.sort(java.util.Comparator.comparingDouble(Contour::area).reversed());
             return closed;
         }
         try (Reader r = Files.newBufferedReader(file)) {

@@ -50,14 +50,12 @@ public final class PocketService {
         }
         List<org.fresa.geom.Contour> contours;
         if (lower.endsWith(".dxf")) {
-            org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(file);
-            org.fresa.cutting.Chainer.Chains chains = org.fresa.cutting.Chainer.chain(d.curves(), 0.001);
-            if (!chains.open().isEmpty()) {
-                throw new CamInputException(file.toString(), chains.open().size()
+            DrawingContours drawing = DrawingContours.read(file);
+            if (drawing.openChains() > 0) {
+                throw new CamInputException(file.toString(), drawing.openChains()
                         + " open chain(s) in the drawing: a pocket needs one closed contour");
             }
-            contours = new ArrayList<>(chains.closed());
-            contours.sort(java.util.Comparator.comparingDouble(org.fresa.geom.Contour::area).reversed());
+            contours = drawing.closed();
         } else {
             contours = ContourFile.read(new StringReader(text), file.toString());
         }

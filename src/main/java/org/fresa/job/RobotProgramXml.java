@@ -181,10 +181,7 @@ public final class RobotProgramXml {
     /** ABB-style confdata "cf1 cf4 cf6 cfx" for six-joint arms, else the signs of the joints. */
     static String config(RobotProgram.Motion m, RapidWriter.ArmGeometry arm) {
         if (m.jointValues().size() == 6) {
-            int flip = m.joint(4) < 0 ? 1 : 0;
-            int cfx = 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
-            return (int) Math.floor(m.joint(0) / 90) + " " + (int) Math.floor(m.joint(3) / 90) + " "
-                    + (int) Math.floor(m.joint(5) / 90) + " " + cfx;
+            return RapidWriter.confdata(m, arm).toString().replace(',', ' ');
         }
         StringBuilder sb = new StringBuilder();
         for (double v : m.jointValues()) {

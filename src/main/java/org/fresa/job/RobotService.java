@@ -35,8 +35,14 @@ public final class RobotService {
     /** What the planner asked for. */
     public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
             List<String> formats) {
+        /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
             formats = List.copyOf(formats);
+            for (String f : formats) {
+                if (!FORMATS.contains(f)) {
+                    throw new IllegalArgumentException("unknown format '" + f + "'");
+                }
+            }
         }
     }
 
@@ -60,11 +66,6 @@ public final class RobotService {
     /** Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}. */
     public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
-        for (String f : s.formats()) {
-            if (!FORMATS.contains(f)) {
-                throw new CamInputException("formats", "unknown format '" + f + "'");
-            }
-        }
         Robot robot = RobotFiles.load(s.robot());
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
         progress.progress(-1, "planning toolpaths");

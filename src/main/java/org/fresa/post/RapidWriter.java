@@ -89,8 +89,7 @@ public final class RapidWriter implements RobotProgramWriter {
                 sb.append("    MoveL [[").append(f(pos.x(), 3)).append(',').append(f(pos.y(), 3)).append(',')
                         .append(f(pos.z(), 3)).append("],[").append(f(q.w(), 8)).append(',').append(f(q.x(), 8))
                         .append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8)).append("],[")
-                        .append(quarter(m.joint(0))).append(',').append(quarter(m.joint(3))).append(',')
-                        .append(quarter(m.joint(5))).append(',').append(cfx(m))
+                        .append(confdata(m, arm))
                         .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
                         .append(",tFresa\\WObj:=wFresa;");
                 // the joints the trajectory found for this robtarget, so a reader can check them
@@ -112,9 +111,19 @@ public final class RapidWriter implements RobotProgramWriter {
         return (int) Math.floor(angleDeg / 90.0);
     }
 
-    int cfx(RobotProgram.Motion m) {
+    /** ABB confdata of a six-joint motion: quarter turns of axes 1, 4 and 6, and cfx. */
+    public record Confdata(int cf1, int cf4, int cf6, int cfx) {
+        @Override
+        public String toString() {
+            return cf1 + "," + cf4 + "," + cf6 + "," + cfx;
+        }
+    }
+
+    /** The confdata of a motion of a six-joint arm (see the class comment). */
+    public static Confdata confdata(RobotProgram.Motion m, ArmGeometry arm) {
         int flip = m.joint(4) < 0 ? 1 : 0;
-        return 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
+        int cfx = 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
+        return new Confdata(quarter(m.joint(0)), quarter(m.joint(3)), quarter(m.joint(5)), cfx);
     }
 
     /** speeddata [v_tcp mm/s, v_ori deg/s, v_leax, v_reax]. */
