@@ -19,7 +19,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class AppendixCTest {
 
-    static final Path CSV = Path.of("../shared/samples/robot/thesis-appendix-c.csv");
+    static final Path CSV = Path.of("samples/robot/thesis-appendix-c.csv");
 
     /**
      * The targets of one table, with the tool axis by the thesis's conventions: down on the top

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 
 class ForwardKinematicsTest {
 
-    static final Path REFERENCE = Path.of("../shared/samples/robot/irb140-reference-fk.csv");
+    static final Path REFERENCE = Path.of("samples/robot/irb140-reference-fk.csv");
 
     /** Rows of the reference: q1..q6 (deg), flange x, y, z (mm), tool axis zx, zy, zz. */
     static List<double[]> referenceRows() throws IOException {

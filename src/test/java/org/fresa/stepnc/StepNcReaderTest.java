@@ -192,7 +192,8 @@ class StepNcReaderTest {
 
     static Stream<Path> corpusFiles() throws IOException {
         if (!Files.isDirectory(CORPUS)) {
-            return Stream.empty();
+            // one placeholder, so the test is reported skipped (JUnit refuses an empty source)
+            return Stream.of(CORPUS);
         }
         try (Stream<Path> s = Files.walk(CORPUS)) {
             return s.filter(Files::isRegularFile).sorted().toList().stream();
@@ -202,6 +203,7 @@ class StepNcReaderTest {
     @ParameterizedTest
     @MethodSource("corpusFiles")
     void everyCorpusFileReadsWithoutError(Path file) throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(file), "corpus not found: " + CORPUS);
         StepNcProgram p = StepNcReader.read(file);
         assertTrue(p.instanceCount() > 0);
         assertFalse(p.workingsteps().isEmpty(), "no workingstep executed in " + file);
