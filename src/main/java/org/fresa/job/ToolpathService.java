@@ -10,12 +10,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.fresa.geom.Tolerance;
-import org.fresa.geom.Vec3;
 import org.fresa.model.CamInputException;
-import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.ArcGeometry;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
@@ -88,47 +85,34 @@ public final class ToolpathService {
         m.put("sections", path.sections().size());
         m.put("moves", path.moveCount());
         m.put("points", ToolpathCsv.rows(path, NcPosts.CHORD_TOLERANCE_MM).size());
-        double rapid = 0;
-        double feed = 0;
-        double minutes = 0;
+        CycleTime total = CycleTime.ZERO;
         List<Object> perSection = new ArrayList<>();
-        for (ToolpathSection s : path.sections()) {
-            double sr = 0;
-            double sf = 0;
-            double st = 0;
-            Vec3 at = s.start();
-            for (Move mv : s.moves()) {
-                if (mv instanceof Move.Rapid r) {
-                    double l = at.distance(r.end());
-                    sr += l;
-                    st += l / RAPID_MM_PER_MIN;
-                } else if (mv instanceof Move.Linear l) {
-                    double len = at.distance(l.end());
-                    sf += len;
-                    st += len / l.feedMmPerMin();
-                } else if (mv instanceof Move.Circular c) {
-                    double len = ArcGeometry.of(at, c).lengthMm();
-                    sf += len;
-                    st += len / c.feedMmPerMin();
-                }
-                at = mv.end();
-            }
-            rapid += sr;
-            feed += sf;
-            minutes += st;
+        for (int i = 0; i < path.sections().size(); i++) {
+            ToolpathSection s = path.sections().get(i);
+            ToolpathPlanner.PlannedStep step = plan.steps().get(i);
+            CycleTime t = CycleTime.of(s, RAPID_MM_PER_MIN);
+            total = total.plus(t);
             Map<String, Object> x = new LinkedHashMap<>();
             x.put("workingstep", s.label());
+            x.put("workingstep_instance", step.workingstepInstanceId());
             x.put("tool", s.toolNumber());
             x.put("tool_diameter_mm", s.toolDiameterMm());
             x.put("moves", s.moves().size());
-            x.put("feed_length_mm", sf);
-            x.put("rapid_length_mm", sr);
-            x.put("time_s", st * 60);
+            x.put("feed_mm_per_min", step.feed().feedMmPerMin());
+            x.put("feed_read_as", step.feed().readAs());
+            step.feed().written().ifPresent(w -> x.put("feed_as_written", w));
+            if (step.feed().inferred()) {
+                x.put("feed_note", step.feed().note());
+            }
+            x.put("feed_length_mm", t.feedLengthMm());
+            x.put("rapid_length_mm", t.rapidLengthMm());
+            x.put("time_s", t.seconds());
             perSection.add(x);
         }
-        m.put("feed_length_mm", feed);
-        m.put("rapid_length_mm", rapid);
-        m.put("cycle_time_s", minutes * 60);
+        m.put("rapid_mm_per_min", RAPID_MM_PER_MIN);
+        m.put("feed_length_mm", total.feedLengthMm());
+        m.put("rapid_length_mm", total.rapidLengthMm());
+        m.put("cycle_time_s", total.seconds());
         m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
         m.put("workingstep_paths", perSection);
         m.put("problems", plan.problems());

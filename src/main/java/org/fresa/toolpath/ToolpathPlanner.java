@@ -45,7 +45,9 @@ import org.fresa.stepnc.Tool;
  * <li>Stepover: the radial cutting depth, else D (1 - overlap), else D / 2 (NIST's default,
  * the tool radius). Layers: the axial cutting depth, else full depth in one layer.
  * <li>Plunges, ramps and drilling feed at half the cutting feed for milling cutters and at the
- * cutting feed for drills. Feed defaults to 1000 mm/min when the file has none.
+ * cutting feed for drills. A feed without a unit (STEP Modeler) is a chip load: mm/tooth for
+ * milling, mm/rev for drilling, times the spindle speed ({@link FeedRate}); 1000 mm/min when
+ * the file gives nothing to convert. Each such reading is reported once per distinct value.
  * <li>Loops run clockwise when rotation_direction is CW, or, without it, when the cut mode is
  * climb (a pocket with an M3 spindle); counter-clockwise otherwise.
  * <li>Rough operations keep the file's allowances; finish operations cut to size.
@@ -61,8 +63,8 @@ public final class ToolpathPlanner {
 
     /** Retract distance when the operation has none (mm), the thesis's value. */
     public static final double DEFAULT_RETRACT_MM = 5;
-    /** Feed when the technology has none (mm/min). */
-    public static final double DEFAULT_FEED = 1000;
+    /** Feed when the technology has none that can be converted (mm/min). */
+    public static final double DEFAULT_FEED = FeedRate.DEFAULT_MM_PER_MIN;
 
     private ToolpathPlanner() {
     }
@@ -70,32 +72,73 @@ public final class ToolpathPlanner {
     /**
      * The toolpath of a program and what could not be done.
      *
-     * @param sections by workingstep, in execution order, only those planned
-     * @param problems one sentence per workingstep skipped or planned with a doubt
+     * @param toolpath by workingstep, in execution order, only those planned
+     * @param problems one sentence per workingstep skipped or planned with a doubt, and one per
+     *     distinct feed whose unit had to be inferred
+     * @param steps the planned workingsteps, one per section of the toolpath, in the same order
      */
-    public record Plan(Toolpath toolpath, List<String> problems, int workingsteps, int planned) {
+    public record Plan(Toolpath toolpath, List<String> problems, int workingsteps, int planned,
+            List<PlannedStep> steps) {
         public Plan {
             problems = List.copyOf(problems);
+            steps = List.copyOf(steps);
+            if (steps.size() != toolpath.sections().size()) {
+                throw new IllegalArgumentException("one planned step per section: " + steps.size() + " vs "
+                        + toolpath.sections().size());
+            }
+        }
+
+        /** The section made for the workingstep with this instance id, if it was planned. */
+        public Optional<ToolpathSection> sectionOf(long workingstepInstanceId) {
+            for (int i = 0; i < steps.size(); i++) {
+                if (steps.get(i).workingstepInstanceId() == workingstepInstanceId) {
+                    return Optional.of(toolpath.sections().get(i));
+                }
+            }
+            return Optional.empty();
+        }
+    }
+
+    /**
+     * A workingstep that got a section, and the feed it was planned with.
+     *
+     * @param workingstepInstanceId the MACHINING_WORKINGSTEP's instance id (#n)
+     * @param label the section's label
+     * @param feed the cutting feed and how it was read
+     */
+    public record PlannedStep(long workingstepInstanceId, String label, FeedRate feed) {
+        public PlannedStep {
+            java.util.Objects.requireNonNull(label, "label");
+            java.util.Objects.requireNonNull(feed, "feed");
         }
     }
 
     public static Plan plan(StepNcProgram program, Tolerance tol) {
         Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<ToolpathSection> sections = new ArrayList<>();
+        List<PlannedStep> steps = new ArrayList<>();
         List<String> problems = new ArrayList<>();
+        Map<String, Integer> feedNotes = new LinkedHashMap<>();
         int planned = 0;
         for (MachiningWorkingstep ws : program.workingsteps()) {
             try {
                 Optional<ToolpathSection> s = section(ws, toolNumbers, problems, tol);
                 if (s.isPresent()) {
                     sections.add(s.get());
+                    FeedRate feed = FeedRate.of(ws.operation());
+                    steps.add(new PlannedStep(ws.instanceId(), s.get().label(), feed));
+                    if (feed.inferred()) {
+                        feedNotes.merge(feed.note(), 1, Integer::sum);
+                    }
                     planned++;
                 }
             } catch (IllegalArgumentException | UnsupportedOperationException e) {
                 problems.add("workingstep '" + ws.id() + "' (#" + ws.instanceId() + "): " + e.getMessage());
             }
         }
-        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned);
+        feedNotes.forEach((note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ")
+                + note));
+        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps);
     }
 
     static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<String, Integer> toolNumbers,
@@ -109,10 +152,7 @@ public final class ToolpathPlanner {
         String key = tool.id() + "|" + tool.body() + "|" + dia;
         int number = toolNumbers.computeIfAbsent(key, k -> toolNumbers.size() + 1);
         Technology tech = op.technology();
-        double feed = tech.feedMmPerMin().orElse(DEFAULT_FEED);
-        if (tech.feedMmPerMin().isEmpty()) {
-            problems.add("workingstep '" + label + "': no feed in the file, " + DEFAULT_FEED + " mm/min used");
-        }
+        double feed = FeedRate.of(op).feedMmPerMin();
         boolean drillingTool = op.type().isDrillingType();
         Tooling tooling = new Tooling(number, dia, tech.spindleRpm().orElse(0), feed, drillingTool ? feed : feed / 2);
         double retract = op.retractPlaneMm().orElse(DEFAULT_RETRACT_MM);

@@ -1,6 +1,7 @@
 package org.fresa.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -143,5 +144,20 @@ class ToolpathServiceTest {
             }
         }
         assertEquals(20, drill.toolDiameterMm());
+    }
+
+    /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */
+    @Test
+    void summaryJsonSaysHowEachUnitlessFeedWasRead(@TempDir Path dir) throws Exception {
+        TaskOutcome o = ToolpathService.run(EXAMPLE2, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        String json = Files.readString(dir.resolve("summary.json"));
+        assertTrue(json.contains("\"rapid_mm_per_min\": 10000"), json);
+        assertTrue(json.contains("\"feed_read_as\": \"mm/tooth\""), json);
+        assertTrue(json.contains("\"feed_read_as\": \"mm/rev\""), json);
+        assertTrue(json.contains("read as mm/tooth: 0.0505 x 4 teeth x 2884.6833 rpm = 582.706 mm/min"), json);
+        assertTrue(o.problems().stream().anyMatch(p -> p.contains("0.0505 (no unit in the file) read as mm/tooth")),
+                o.problems().toString());
+        assertFalse(json.contains("1000 mm/min used"), json);
     }
 }

@@ -1,0 +1,85 @@
+package org.fresa.job;
+
+import java.util.List;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.ToolpathSection;
+import org.fresa.post.ArcGeometry;
+
+/**
+ * A cycle-time estimate without acceleration: each feed move takes its length over its feed,
+ * each rapid its length over the stated rapid rate. Arc lengths are exact (helices count their
+ * rise).
+ *
+ * @param feedLengthMm total length of the feed moves
+ * @param rapidLengthMm total length of the rapids
+ * @param feedSeconds time spent at feed
+ * @param rapidSeconds time spent in rapids
+ */
+public record CycleTime(double feedLengthMm, double rapidLengthMm, double feedSeconds, double rapidSeconds) {
+
+    public static final CycleTime ZERO = new CycleTime(0, 0, 0, 0);
+
+    /** Total time in seconds. */
+    public double seconds() {
+        return feedSeconds + rapidSeconds;
+    }
+
+    public CycleTime plus(CycleTime o) {
+        return new CycleTime(feedLengthMm + o.feedLengthMm, rapidLengthMm + o.rapidLengthMm,
+                feedSeconds + o.feedSeconds, rapidSeconds + o.rapidSeconds);
+    }
+
+    /** The path length of one move starting at {@code from} (mm). */
+    public static double lengthMm(Vec3 from, Move m) {
+        if (m instanceof Move.Circular c) {
+            return ArcGeometry.of(from, c).lengthMm();
+        }
+        return from.distance(m.end());
+    }
+
+    /** The time of one move starting at {@code from} (s). */
+    public static double seconds(Vec3 from, Move m, double rapidMmPerMin) {
+        return lengthMm(from, m) / rate(m, rapidMmPerMin) * 60;
+    }
+
+    /** The rate the move runs at (mm/min): its feed, or the rapid rate. */
+    public static double rate(Move m, double rapidMmPerMin) {
+        if (m instanceof Move.Linear l) {
+            return l.feedMmPerMin();
+        }
+        if (m instanceof Move.Circular c) {
+            return c.feedMmPerMin();
+        }
+        return rapidMmPerMin;
+    }
+
+    /** The moves of a section from its start point. */
+    public static CycleTime of(ToolpathSection s, double rapidMmPerMin) {
+        return of(s.start(), s.moves(), rapidMmPerMin);
+    }
+
+    /** Moves run one after the other from {@code start}. */
+    public static CycleTime of(Vec3 start, List<Move> moves, double rapidMmPerMin) {
+        if (!(rapidMmPerMin > 0)) {
+            throw new IllegalArgumentException("rapid rate must be > 0: " + rapidMmPerMin);
+        }
+        double fl = 0;
+        double rl = 0;
+        double fs = 0;
+        double rs = 0;
+        Vec3 at = start;
+        for (Move m : moves) {
+            double len = lengthMm(at, m);
+            if (m instanceof Move.Rapid) {
+                rl += len;
+                rs += len / rapidMmPerMin * 60;
+            } else {
+                fl += len;
+                fs += len / rate(m, rapidMmPerMin) * 60;
+            }
+            at = m.end();
+        }
+        return new CycleTime(fl, rl, fs, rs);
+    }
+}
