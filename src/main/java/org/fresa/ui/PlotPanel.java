@@ -72,6 +72,21 @@ public final class PlotPanel extends JPanel {
         fit();
     }
 
+    /**
+     * Shows a new scene keeping the current zoom and pan (a replay step, not a new picture).
+     * Call on the event thread.
+     */
+    public void update(PlotScene s) {
+        XYPlot old = chart.getXYPlot();
+        org.jfree.data.Range x = old.getDomainAxis().getRange();
+        org.jfree.data.Range y = old.getRangeAxis().getRange();
+        this.scene = s;
+        this.chart = ToolpathChart.create(s);
+        chartPanel.setChart(chart);
+        chart.getXYPlot().getDomainAxis().setRange(x);
+        chart.getXYPlot().getRangeAxis().setRange(y);
+    }
+
     /** Fits the scene into the view with equal millimetres per pixel on both axes. */
     public void fit() {
         XYPlot plot = chart.getXYPlot();

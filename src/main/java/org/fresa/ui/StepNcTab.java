@@ -9,27 +9,36 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import javax.swing.BorderFactory;
+import javax.swing.DefaultComboBoxModel;
 import javax.swing.JButton;
+import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.JSlider;
 import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
 import javax.swing.JTree;
+import javax.swing.Timer;
 import javax.swing.TransferHandler;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
+import org.fresa.geom.Tolerance;
 import org.fresa.job.JobSettings;
 import org.fresa.job.StepNcService;
+import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.ToolpathPlanner;
 
 /**
  * The STEP-NC tab: open a Part 21 file (button or drag and drop), browse project > workplans >
- * workingsteps, read the selected workingstep's data with units, see the block and the feature.
- * Reading runs in the background; all state lives in {@link StepNcViewModel}.
+ * workingsteps, read the selected workingstep's data with units, see the block and the feature
+ * with the workingstep's toolpath over it, one layer or all, replayed with a slider (arrow keys,
+ * Page Up/Down, Home/End) or the Play button, and the cycle time. Reading and planning run in the
+ * background; all state lives in {@link StepNcViewModel}.
  */
 final class StepNcTab implements ModuleTab {
 
@@ -40,6 +49,14 @@ final class StepNcTab implements ModuleTab {
     private final JTree tree = new JTree(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
     private final JTextArea details = new JTextArea(14, 40);
     private final PlotPanel plot = new PlotPanel();
+    private final JComboBox<String> layers = new JComboBox<>();
+    private final JSlider replay = new JSlider(0, StepNcViewModel.REPLAY_STEPS, StepNcViewModel.REPLAY_STEPS);
+    private final JButton play = new JButton("Play");
+    private final JLabel replayText = new JLabel(" ");
+    private final JLabel cycleText = new JLabel(" ");
+    private final Timer player = new Timer(40, e -> step());
+    // set while the controls are filled from the view model, so their listeners do not echo back
+    private boolean updating;
     // the file shown, and the last one asked for (a failed read is not retried on every job change)
     private Path loadedFile;
     private Path requestedFile;
@@ -73,8 +90,8 @@ final class StepNcTab implements ModuleTab {
         detailsLabel.setLabelFor(details);
         JPanel right = new JPanel(new BorderLayout());
         right.add(detailsLabel, BorderLayout.NORTH);
-        JSplitPane rightSplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(details), plot);
-        rightSplit.setResizeWeight(0.4);
+        JSplitPane rightSplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(details), toolpathView());
+        rightSplit.setResizeWeight(0.3);
         right.add(rightSplit, BorderLayout.CENTER);
 
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right);
@@ -90,6 +107,77 @@ final class StepNcTab implements ModuleTab {
         panel.setTransferHandler(new FileDrop());
         tree.setTransferHandler(new FileDrop());
         details.setTransferHandler(new FileDrop());
+    }
+
+    /** The plot with the layer selector, the replay slider and the cycle time above it. */
+    private JPanel toolpathView() {
+        layers.setName("stepnc-layer");
+        layers.addActionListener(e -> {
+            if (!updating && layers.getSelectedIndex() >= 0) {
+                vm.selectLayer(layers.getSelectedIndex());
+                showToolpath(true);
+            }
+        });
+        JLabel layerLabel = new JLabel("Layer:");
+        layerLabel.setDisplayedMnemonic(KeyEvent.VK_L);
+        layerLabel.setLabelFor(layers);
+        replay.setName("stepnc-replay");
+        replay.setMajorTickSpacing(StepNcViewModel.REPLAY_STEPS / 10);
+        replay.setPaintTicks(true);
+        replay.getAccessibleContext().setAccessibleName("Replay position");
+        replay.addChangeListener(e -> {
+            if (!updating) {
+                vm.setReplay(replay.getValue());
+                showToolpath(false);
+            }
+        });
+        JLabel replayLabel = new JLabel("Replay:");
+        replayLabel.setDisplayedMnemonic(KeyEvent.VK_R);
+        replayLabel.setLabelFor(replay);
+        play.setName("stepnc-play");
+        play.setMnemonic(KeyEvent.VK_P);
+        play.addActionListener(e -> togglePlay());
+        replayText.setName("stepnc-replay-text");
+        cycleText.setName("stepnc-cycle-time");
+
+        JPanel row = new JPanel(new BorderLayout(6, 0));
+        JPanel west = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        west.add(layerLabel);
+        west.add(layers);
+        west.add(play);
+        west.add(replayLabel);
+        row.add(west, BorderLayout.WEST);
+        row.add(replay, BorderLayout.CENTER);
+        JPanel controls = new JPanel(new BorderLayout(0, 2));
+        controls.setBorder(BorderFactory.createEmptyBorder(4, 2, 2, 2));
+        controls.add(row, BorderLayout.NORTH);
+        controls.add(replayText, BorderLayout.CENTER);
+        controls.add(cycleText, BorderLayout.SOUTH);
+        JPanel view = new JPanel(new BorderLayout());
+        view.add(controls, BorderLayout.NORTH);
+        view.add(plot, BorderLayout.CENTER);
+        return view;
+    }
+
+    private void togglePlay() {
+        if (player.isRunning()) {
+            player.stop();
+            play.setText("Play");
+            return;
+        }
+        if (replay.getValue() >= replay.getMaximum()) {
+            replay.setValue(0);
+        }
+        player.start();
+        play.setText("Pause");
+    }
+
+    private void step() {
+        if (replay.getValue() >= replay.getMaximum() || !replay.isEnabled()) {
+            togglePlay();
+            return;
+        }
+        replay.setValue(replay.getValue() + 1);
     }
 
     @Override
@@ -123,10 +211,20 @@ final class StepNcTab implements ModuleTab {
                 .ifPresent(this::open);
     }
 
+    /** A program and its toolpaths, read and planned in one background task. */
+    private record Loaded(StepNcProgram program, ToolpathPlanner.Plan plan) {
+    }
+
     void open(Path file) {
         requestedFile = file;
-        ctx.tasks().start("Reading " + file.getFileName(), progress -> StepNcService.read(file, progress), program -> {
+        ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
+            StepNcProgram p = StepNcService.read(file, progress);
+            progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
+            return new Loaded(p, ToolpathPlanner.plan(p, Tolerance.DEFAULT));
+        }, loaded -> {
+            StepNcProgram program = loaded.program();
             vm.load(program);
+            vm.planned(loaded.plan());
             loadedFile = file;
             String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
             ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
@@ -167,7 +265,38 @@ final class StepNcTab implements ModuleTab {
     private void showSelection() {
         details.setText(String.join("\n", vm.details()));
         details.setCaretPosition(0);
-        plot.show(vm.plot());
+        updating = true;
+        try {
+            layers.setModel(new DefaultComboBoxModel<>(vm.layerChoices().toArray(new String[0])));
+            layers.setSelectedIndex(vm.layer());
+            layers.setEnabled(vm.layers().size() > 1);
+        } finally {
+            updating = false;
+        }
+        showToolpath(true);
+    }
+
+    /** The replay controls and the plot from the view model; {@code fit} refits the view. */
+    private void showToolpath(boolean fit) {
+        boolean has = vm.shown().isPresent();
+        updating = true;
+        try {
+            replay.setValue(vm.replay());
+            replay.setEnabled(has);
+            play.setEnabled(has);
+        } finally {
+            updating = false;
+        }
+        replayText.setText(vm.replayText());
+        List<String> ct = vm.cycleTime();
+        cycleText.setText(ct.isEmpty() ? " " : ct.get(0) + (ct.size() > 1 ? "; " + ct.get(1).replaceFirst(
+                "Cycle time of the program", "program") : ""));
+        cycleText.setToolTipText(String.join(". ", ct));
+        if (fit) {
+            plot.show(vm.plot());
+        } else {
+            plot.update(vm.plot());
+        }
     }
 
     /** Accepts one dropped file and reads it. */

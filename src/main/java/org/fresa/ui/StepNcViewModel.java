@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.TreeSet;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Curve2;
@@ -13,7 +14,12 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
+import org.fresa.job.CycleTime;
+import org.fresa.job.ToolpathService;
 import org.fresa.model.ExactDecimal;
+import org.fresa.model.Move;
+import org.fresa.model.ToolpathSection;
+import org.fresa.post.ArcGeometry;
 import org.fresa.stepnc.Executable;
 import org.fresa.stepnc.Feature;
 import org.fresa.stepnc.MachiningWorkingstep;
@@ -24,12 +30,21 @@ import org.fresa.stepnc.Technology;
 import org.fresa.stepnc.Tool;
 import org.fresa.stepnc.Workpiece;
 import org.fresa.stepnc.Workplan;
+import org.fresa.toolpath.ToolpathPlanner;
 
 /**
  * The STEP-NC tab's state without Swing: the program read, its tree (project, workplans,
  * workingsteps, then skipped workingsteps and unknown entities, never hidden), the details of
  * the selected workingstep with units, and a plot of the workpiece block and the feature
  * outline seen along the feature axis.
+ *
+ * <p>Once the program is planned ({@link #planned}), the plot also shows the selected
+ * workingstep's toolpath over its feature: rapids and feeds in their own styles, arcs as arcs
+ * when they lie in the view plane, one depth layer or all of them, and a replay position: the
+ * slider value 0..{@link #REPLAY_STEPS} is the fraction of the shown moves' machining time, the
+ * tool is drawn there at its diameter and the path travelled so far is highlighted. Cycle times
+ * count feeds at their feed and rapids at {@link ToolpathService#RAPID_MM_PER_MIN}, without
+ * acceleration, per workingstep and for the whole program.
  */
 final class StepNcViewModel {
 
@@ -51,8 +66,48 @@ final class StepNcViewModel {
         }
     }
 
+    /** The replay slider's range: 0 (before the first move) to this (the end of the last). */
+    static final int REPLAY_STEPS = 200;
+    /** Rapid rate of the cycle-time estimate (mm/min). */
+    static final double RAPID_MM_PER_MIN = ToolpathService.RAPID_MM_PER_MIN;
+    /** Depths closer than this are one layer (mm). */
+    private static final double LAYER_TOLERANCE_MM = 1e-6;
+    /** Chord tolerance for arcs outside the view plane (mm). */
+    private static final double CHORD_MM = 0.01;
+
+    /**
+     * A depth layer of a section: in-plane feed moves at {@code depthMm} below the feature's top,
+     * measured along the feature axis.
+     */
+    record Layer(int number, double depthMm) {
+    }
+
+    /** Moves run from {@code start}. */
+    record Shown(Vec3 start, List<Move> moves) {
+        Shown {
+            Objects.requireNonNull(start);
+            moves = List.copyOf(moves);
+        }
+    }
+
+    /**
+     * Where the tool is at a replay value.
+     *
+     * @param position tool tip (mm, workpiece frame)
+     * @param moveIndex the move being run, 0-based within the shown moves (-1 before the first)
+     * @param timeS time since the start of the shown moves
+     * @param totalS time of all shown moves
+     * @param fraction how far into the move (0..1)
+     */
+    record ReplayPoint(Vec3 position, int moveIndex, double timeS, double totalS, double fraction) {
+    }
+
     private Optional<StepNcProgram> program = Optional.empty();
     private Optional<MachiningWorkingstep> selected = Optional.empty();
+    private Optional<ToolpathPlanner.Plan> plan = Optional.empty();
+    /** 0 all layers, else the layer number (1-based) */
+    private int layer;
+    private int replay = REPLAY_STEPS;
 
     Optional<StepNcProgram> program() {
         return program;
@@ -60,7 +115,21 @@ final class StepNcViewModel {
 
     void load(StepNcProgram p) {
         program = Optional.of(p);
+        plan = Optional.empty();
         selected = p.workingsteps().isEmpty() ? Optional.empty() : Optional.of(p.workingsteps().get(0));
+        layer = 0;
+        replay = REPLAY_STEPS;
+    }
+
+    /** The program's toolpaths, planned in the background after {@link #load}. */
+    void planned(ToolpathPlanner.Plan p) {
+        plan = Optional.of(Objects.requireNonNull(p));
+        layer = 0;
+        replay = REPLAY_STEPS;
+    }
+
+    Optional<ToolpathPlanner.Plan> plan() {
+        return plan;
     }
 
     Optional<MachiningWorkingstep> selected() {
@@ -68,7 +137,335 @@ final class StepNcViewModel {
     }
 
     void select(Optional<MachiningWorkingstep> ws) {
+        if (!ws.equals(selected)) {
+            layer = 0;
+            replay = REPLAY_STEPS;
+        }
         selected = ws;
+    }
+
+    /** The selected workingstep's section, when it is selected and planned. */
+    Optional<ToolpathSection> section() {
+        if (selected.isEmpty() || plan.isEmpty()) {
+            return Optional.empty();
+        }
+        return plan.get().sectionOf(selected.get().instanceId());
+    }
+
+    /** The selected section's depth layers, top first; empty when it has none (drilling). */
+    List<Layer> layers() {
+        return section().map(s -> layersOf(s, selected.get().feature())).orElse(List.of());
+    }
+
+    /** The layer selector's entries: "All layers", then one per layer. */
+    List<String> layerChoices() {
+        List<String> out = new ArrayList<>();
+        List<Layer> ls = layers();
+        out.add(ls.isEmpty() ? "All moves" : "All " + ls.size() + " layers");
+        for (Layer l : ls) {
+            out.add("Layer " + l.number() + " of " + ls.size() + ": " + n(l.depthMm()) + " mm deep");
+        }
+        return out;
+    }
+
+    /** 0 for all layers, else the layer number. */
+    int layer() {
+        return layer;
+    }
+
+    /** Shows one layer (1..n) or all (0); the replay goes to the end of what is shown. */
+    void selectLayer(int number) {
+        if (number < 0 || number > layers().size()) {
+            throw new IllegalArgumentException("no layer " + number + " (0.." + layers().size() + ")");
+        }
+        layer = number;
+        replay = REPLAY_STEPS;
+    }
+
+    int replay() {
+        return replay;
+    }
+
+    /** The replay slider's value, clamped to 0..{@link #REPLAY_STEPS}. */
+    void setReplay(int value) {
+        replay = Math.max(0, Math.min(REPLAY_STEPS, value));
+    }
+
+    /** The moves of the chosen layer (or all), each layer with the moves that lead into it. */
+    Optional<Shown> shown() {
+        Optional<ToolpathSection> s = section();
+        if (s.isEmpty()) {
+            return Optional.empty();
+        }
+        ToolpathSection sec = s.get();
+        if (layer == 0) {
+            return Optional.of(new Shown(sec.start(), sec.moves()));
+        }
+        int[] of = layerOfMoves(sec, selected.get().feature());
+        List<Move> moves = new ArrayList<>();
+        Vec3 start = null;
+        Vec3 at = sec.start();
+        for (int i = 0; i < sec.moves().size(); i++) {
+            if (of[i] == layer) {
+                if (start == null) {
+                    start = at;
+                }
+                moves.add(sec.moves().get(i));
+            }
+            at = sec.moves().get(i).end();
+        }
+        return Optional.of(new Shown(start == null ? sec.start() : start, moves));
+    }
+
+    /** Where the tool is at the current replay value. */
+    Optional<ReplayPoint> replayPoint() {
+        return shown().map(sh -> replayAt(sh, (double) replay / REPLAY_STEPS));
+    }
+
+    /** The point reached after {@code fraction} (0..1) of the moves' machining time. */
+    static ReplayPoint replayAt(Shown sh, double fraction) {
+        double total = CycleTime.of(sh.start(), sh.moves(), RAPID_MM_PER_MIN).seconds();
+        double t = total * fraction;
+        if (sh.moves().isEmpty() || fraction <= 0) {
+            return new ReplayPoint(sh.start(), -1, 0, total, 0);
+        }
+        Vec3 at = sh.start();
+        double elapsed = 0;
+        for (int i = 0; i < sh.moves().size(); i++) {
+            Move m = sh.moves().get(i);
+            double dt = CycleTime.seconds(at, m, RAPID_MM_PER_MIN);
+            boolean last = i == sh.moves().size() - 1;
+            if (elapsed + dt >= t || last) {
+                double f = dt > 0 ? Math.max(0, Math.min(1, (t - elapsed) / dt)) : 1;
+                if (fraction >= 1 && last) {
+                    f = 1;
+                }
+                return new ReplayPoint(pointOn(at, m, f), i, Math.min(t, total), total, f);
+            }
+            elapsed += dt;
+            at = m.end();
+        }
+        throw new IllegalStateException("unreachable");
+    }
+
+    /** The point at {@code fraction} of the move's length (its time, as the rate is constant). */
+    static Vec3 pointOn(Vec3 from, Move m, double fraction) {
+        if (fraction >= 1) {
+            return m.end();
+        }
+        if (m instanceof Move.Circular c) {
+            return ArcGeometry.of(from, c).pointAt(fraction);
+        }
+        return from.interpolate(m.end(), fraction);
+    }
+
+    /** A line saying where the replay is, e.g. "12.3 s of 50.4 s: move 5 of 29, feed 2400 mm/min at (x, y, z) mm". */
+    String replayText() {
+        Optional<Shown> sh = shown();
+        if (sh.isEmpty()) {
+            return plan.isEmpty() && program.isPresent() ? "Planning toolpaths..." : "No toolpath for this selection";
+        }
+        ReplayPoint r = replayAt(sh.get(), (double) replay / REPLAY_STEPS);
+        String move;
+        if (r.moveIndex() < 0) {
+            move = "before the first move";
+        } else {
+            Move m = sh.get().moves().get(r.moveIndex());
+            String kind = m instanceof Move.Rapid ? "rapid" : m instanceof Move.Circular ? "arc, feed "
+                    + n(((Move.Circular) m).feedMmPerMin()) + " mm/min" : "feed " + n(((Move.Linear) m).feedMmPerMin())
+                    + " mm/min";
+            move = "move " + (r.moveIndex() + 1) + " of " + sh.get().moves().size() + " (" + kind + ")";
+        }
+        return seconds(r.timeS()) + " of " + seconds(r.totalS()) + ": " + move + ", tool at " + v(r.position()) + " mm";
+    }
+
+    /** The selected workingstep's cycle time, when planned. */
+    Optional<CycleTime> workingstepTime() {
+        return section().map(s -> CycleTime.of(s, RAPID_MM_PER_MIN));
+    }
+
+    /** The whole program's cycle time, when planned. */
+    Optional<CycleTime> programTime() {
+        return plan.map(p -> {
+            CycleTime t = CycleTime.ZERO;
+            for (ToolpathSection s : p.toolpath().sections()) {
+                t = t.plus(CycleTime.of(s, RAPID_MM_PER_MIN));
+            }
+            return t;
+        });
+    }
+
+    /** The cycle-time lines: this workingstep, the program, and the assumptions. */
+    List<String> cycleTime() {
+        List<String> out = new ArrayList<>();
+        if (plan.isEmpty()) {
+            return out;
+        }
+        ToolpathPlanner.Plan p = plan.get();
+        workingstepTime().ifPresentOrElse(t -> out.add("Cycle time of this workingstep: " + timeText(t)),
+                () -> out.add(selected.isPresent() ? "This workingstep was not planned" : "No workingstep selected"));
+        out.add("Cycle time of the program (" + p.planned() + " of " + p.workingsteps() + " workingsteps): "
+                + timeText(programTime().orElseThrow()));
+        out.add("Feeds at their feed rate, rapids at " + n(RAPID_MM_PER_MIN) + " mm/min, no acceleration");
+        return out;
+    }
+
+    private static String timeText(CycleTime t) {
+        return seconds(t.seconds()) + " (feed " + n(t.feedLengthMm()) + " mm in " + seconds(t.feedSeconds())
+                + ", rapid " + n(t.rapidLengthMm()) + " mm in " + seconds(t.rapidSeconds()) + ")";
+    }
+
+    /** "50.4 s", or "3 min 05.2 s" from a minute on. */
+    static String seconds(double s) {
+        if (s < 60) {
+            return String.format(Locale.ROOT, "%.1f s", s);
+        }
+        long min = (long) Math.floor(s / 60);
+        return String.format(Locale.ROOT, "%d min %04.1f s", min, s - 60 * min);
+    }
+
+    /** Depth below the feature's top along its axis (mm, positive down). */
+    static double depthOf(Vec3 p, Feature f) {
+        return -p.minus(f.location()).dot(f.axis().normalized());
+    }
+
+    private static boolean inPlane(Vec3 from, Move m, Feature f) {
+        return !(m instanceof Move.Rapid) && Math.abs(depthOf(from, f) - depthOf(m.end(), f)) < LAYER_TOLERANCE_MM
+                && CycleTime.lengthMm(from, m) > LAYER_TOLERANCE_MM;
+    }
+
+    /** The depths at which the section feeds in the feature's plane, top first. */
+    static List<Layer> layersOf(ToolpathSection s, Feature f) {
+        TreeSet<Double> depths = new TreeSet<>();
+        Vec3 at = s.start();
+        for (Move m : s.moves()) {
+            if (inPlane(at, m, f)) {
+                double d = depthOf(m.end(), f);
+                if (depths.stream().noneMatch(x -> Math.abs(x - d) < LAYER_TOLERANCE_MM)) {
+                    depths.add(d);
+                }
+            }
+            at = m.end();
+        }
+        List<Layer> out = new ArrayList<>();
+        int k = 1;
+        for (double d : depths) {
+            out.add(new Layer(k++, d + 0.0));
+        }
+        return out;
+    }
+
+    /**
+     * The layer number of each move: the layer of the next in-plane feed at or after it (so the
+     * moves down into a layer belong to it), the last layer for the moves after the last one, 0
+     * when the section has no layers.
+     */
+    static int[] layerOfMoves(ToolpathSection s, Feature f) {
+        List<Layer> layers = layersOf(s, f);
+        int n = s.moves().size();
+        int[] of = new int[n];
+        int[] own = new int[n];
+        Vec3 at = s.start();
+        for (int i = 0; i < n; i++) {
+            Move m = s.moves().get(i);
+            if (inPlane(at, m, f)) {
+                double d = depthOf(m.end(), f);
+                for (Layer l : layers) {
+                    if (Math.abs(l.depthMm() - d) < LAYER_TOLERANCE_MM) {
+                        own[i] = l.number();
+                    }
+                }
+            }
+            at = m.end();
+        }
+        int next = 0;
+        int lastSeen = 0;
+        for (int i = 0; i < n; i++) {
+            if (own[i] != 0) {
+                lastSeen = own[i];
+            }
+        }
+        for (int i = n - 1; i >= 0; i--) {
+            if (own[i] != 0) {
+                next = own[i];
+            }
+            of[i] = next != 0 ? next : lastSeen;
+        }
+        return of;
+    }
+
+    /**
+     * The moves seen along the dropped axis, rapids and feeds apart; arcs about the view axis as
+     * arcs (full turns as circles), other arcs as chords.
+     */
+    static void drawMoves(Vec3 start, List<Move> moves, int drop, List<Curve2> feeds, List<Curve2> rapids) {
+        Vec3 at = start;
+        for (Move m : moves) {
+            (m instanceof Move.Rapid ? rapids : feeds).addAll(curvesOf(at, m, drop, 1));
+            at = m.end();
+        }
+    }
+
+    /** The part [0, fraction] of one move, in the view plane. */
+    static List<Curve2> curvesOf(Vec3 from, Move m, int drop, double fraction) {
+        List<Curve2> out = new ArrayList<>();
+        if (fraction <= 0) {
+            return out;
+        }
+        if (m instanceof Move.Circular c) {
+            ArcGeometry g = ArcGeometry.of(from, c);
+            Vec3 axis = drop == 0 ? Vec3.UNIT_X : drop == 1 ? Vec3.UNIT_Y : Vec3.UNIT_Z;
+            double along = c.normal().dot(axis);
+            if (Math.abs(Math.abs(along) - 1) < 1e-9 && g.radiusMm() > 0) {
+                // (y, z) and (x, y) keep the sense about +x and +z; (x, z) reverses the sense about +y
+                double sense = Math.signum(along) * (drop == 1 ? -1 : 1);
+                double sweep = g.sweepRad() * fraction * sense;
+                Vec2 center = project(c.center(), drop);
+                double a0 = project(from, drop).minus(center).angleRad();
+                double r = g.radiusMm();
+                double left = sweep;
+                while (Math.abs(left) > 1e-12) {
+                    double step = Math.abs(left) > 2 * Math.PI ? Math.copySign(2 * Math.PI, left) : left;
+                    if (Math.abs(step) >= 2 * Math.PI - 1e-9) {
+                        Vec2 p = center.plus(Vec2.ofAngle(a0).times(r));
+                        out.add(new Arc2(center, p, p, step > 0));
+                    } else {
+                        out.add(Arc2.ofAngles(center, r, a0, step));
+                    }
+                    a0 += step;
+                    left -= step;
+                }
+                return out;
+            }
+            Vec2 a = project(from, drop);
+            for (Vec3 q : g.points(CHORD_MM)) {
+                Vec2 b = project(q, drop);
+                if (!a.equals(b)) {
+                    out.add(Segment2.of(a, b));
+                }
+                a = b;
+            }
+            if (fraction < 1) {
+                // chords up to the replay point only
+                Vec2 end = project(g.pointAt(fraction), drop);
+                List<Curve2> cut = new ArrayList<>();
+                Vec2 p0 = project(from, drop);
+                int keep = (int) Math.floor(out.size() * fraction);
+                cut.addAll(out.subList(0, Math.min(keep, out.size())));
+                Vec2 last = cut.isEmpty() ? p0 : cut.get(cut.size() - 1).end();
+                if (!last.equals(end)) {
+                    cut.add(Segment2.of(last, end));
+                }
+                return cut;
+            }
+            return out;
+        }
+        Vec2 a = project(from, drop);
+        Vec2 b = project(pointOn(from, m, fraction), drop);
+        if (!a.equals(b)) {
+            out.add(Segment2.of(a, b));
+        }
+        return out;
     }
 
     /** The tree: project > workplans > workingsteps; skipped workingsteps; unknown entities. */
@@ -173,7 +570,28 @@ final class StepNcViewModel {
         t.spindle().ifPresent(s -> out.add("  spindle " + n(s) + " " + t.spindleUnit()
                 + t.spindleRpm().stream().mapToObj(x -> " = " + n(x) + " rpm").findFirst().orElse("")
                 + (t.spindleClockwise() ? ", clockwise" : "")));
+        toolpathText(out, ws);
         return out;
+    }
+
+    private void toolpathText(List<String> out, MachiningWorkingstep ws) {
+        if (plan.isEmpty()) {
+            out.add("Toolpath: planning...");
+            return;
+        }
+        Optional<ToolpathPlanner.PlannedStep> step = plan.get().steps().stream()
+                .filter(s -> s.workingstepInstanceId() == ws.instanceId()).findFirst();
+        Optional<ToolpathSection> sec = section();
+        if (step.isEmpty() || sec.isEmpty()) {
+            out.add("Toolpath: not planned");
+            String key = "(#" + ws.instanceId() + ")";
+            plan.get().problems().stream().filter(p -> p.contains(key)).forEach(p -> out.add("  " + p));
+            return;
+        }
+        out.add("Toolpath: T" + sec.get().toolNumber() + " D" + n(sec.get().toolDiameterMm()) + " mm, "
+                + sec.get().moves().size() + " moves, " + layers().size() + " layers");
+        out.add("  " + step.get().feed().note());
+        cycleTime().forEach(l -> out.add("  " + l));
     }
 
     private static void toolText(List<String> out, Tool t) {
@@ -231,7 +649,7 @@ final class StepNcViewModel {
                             ((i >> 2) & 1) * b.zMm()));
                     pts.add(project(c, drop));
                 }
-                scene = scene.with(new PlotScene.Layer("block '" + w.id() + "'", PlotScene.Style.OUTLINE,
+                scene = scene.with(new PlotScene.Layer("block '" + w.id() + "'", PlotScene.Style.AUX,
                         box(pts)));
             }
         }
@@ -239,11 +657,50 @@ final class StepNcViewModel {
             Feature f = selected.get().feature();
             List<Curve2> outline = outline(f, drop);
             if (!outline.isEmpty()) {
-                scene = scene.with(new PlotScene.Layer(f.entity() + " '" + f.id() + "'", PlotScene.Style.FEED, outline));
+                scene = scene.with(new PlotScene.Layer(f.entity() + " '" + f.id() + "'", PlotScene.Style.OUTLINE,
+                        outline));
             }
+            scene = withToolpath(scene, drop);
             scene = scene.withLabel(project(f.location(), drop), f.id());
         }
         return scene;
+    }
+
+    /** The shown moves (rapid, feed), the path travelled up to the replay point, and the tool there. */
+    private PlotScene withToolpath(PlotScene scene, int drop) {
+        Optional<Shown> sh = shown();
+        if (sh.isEmpty()) {
+            return scene;
+        }
+        List<Curve2> feeds = new ArrayList<>();
+        List<Curve2> rapids = new ArrayList<>();
+        drawMoves(sh.get().start(), sh.get().moves(), drop, feeds, rapids);
+        ReplayPoint r = replayAt(sh.get(), (double) replay / REPLAY_STEPS);
+        List<Curve2> done = new ArrayList<>();
+        Vec3 at = sh.get().start();
+        for (int i = 0; i <= r.moveIndex(); i++) {
+            Move m = sh.get().moves().get(i);
+            if (!(m instanceof Move.Rapid)) {
+                done.addAll(curvesOf(at, m, drop, i == r.moveIndex() ? r.fraction() : 1));
+            }
+            at = m.end();
+        }
+        String title = scene.title() + ": " + selected.get().id() + (layer == 0 ? "" : ", layer " + layer + " of "
+                + layers().size());
+        PlotScene out = new PlotScene(title, scene.layers(), scene.labels())
+                .with(new PlotScene.Layer("rapid", PlotScene.Style.RAPID, rapids))
+                .with(new PlotScene.Layer("feed", PlotScene.Style.FEED, feeds))
+                .with(new PlotScene.Layer("travelled", PlotScene.Style.FINISH, done));
+        double radius = section().map(ToolpathSection::toolDiameterMm).orElse(0.0) / 2;
+        Vec2 tool = project(r.position(), drop);
+        List<Curve2> marker = new ArrayList<>();
+        if (radius > 0) {
+            marker.add(Arc2.circle(tool, radius, true));
+        }
+        double c = Math.max(1, radius / 3);
+        marker.add(Segment2.of(tool.minus(new Vec2(c, 0)), tool.plus(new Vec2(c, 0))));
+        marker.add(Segment2.of(tool.minus(new Vec2(0, c)), tool.plus(new Vec2(0, c))));
+        return out.with(new PlotScene.Layer("tool", PlotScene.Style.WARNING, marker));
     }
 
     /** The feature outline in the view plane; empty when the profile is not drawable. */

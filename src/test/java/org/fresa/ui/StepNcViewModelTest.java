@@ -1,6 +1,8 @@
 package org.fresa.ui;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -9,9 +11,16 @@ import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec3;
+import org.fresa.job.CycleTime;
+import org.fresa.model.Move;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.StepNcReader;
+import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 
 class StepNcViewModelTest {
@@ -79,5 +88,219 @@ class StepNcViewModelTest {
         assertEquals(4, s.layers().get(1).curves().size());
         var b = s.layers().get(1).curves().get(0).bounds();
         assertEquals(30.0, b.minX(), 1e-9);
+    }
+
+    static final double EPS = 1e-9;
+
+    /** Example 1 read and planned, with the named workingstep selected. */
+    static StepNcViewModel planned(String name, String workingstep) throws Exception {
+        StepNcViewModel vm = loaded(name);
+        StepNcProgram p = vm.program().orElseThrow();
+        vm.planned(ToolpathPlanner.plan(p, Tolerance.DEFAULT));
+        vm.select(p.workingsteps().stream().filter(w -> w.id().equals(workingstep)).findFirst());
+        return vm;
+    }
+
+    static final String EX1 = "iso14649-11-example1.stp";
+    static final String FACE = "WS FINISH PLANAR FACE1";
+    static final String DRILL = "WS DRILL HOLE1";
+
+    /**
+     * Example 1's face by hand (security plane z 30, retract plane 10 above the face top z 5, D18,
+     * feed 0.04 m/s = 2400 mm/min, plunge at half): per layer 6 passes of 147 mm (y -13.5..133.5)
+     * and 5 steps of 16.4 mm at 2400; plunges 15 -> 2.5 and 15 -> 0 (27.5 mm) at 1200; rapids
+     * 30 -> 15, 2.5 -> 15, 9 -> 91 across, 0 -> 15 and 15 -> 30 (139.5 mm) at 10000 mm/min.
+     */
+    @Test
+    void theFacesCycleTimeIsTheHandComputation() throws Exception {
+        CycleTime t = planned(EX1, FACE).workingstepTime().orElseThrow();
+        double feedS = 2 * (6 * 147 + 5 * 16.4) / 2400.0 * 60 + 27.5 / 1200.0 * 60;
+        double rapidS = 139.5 / 10000.0 * 60;
+        assertAll(() -> assertEquals(2 * (6 * 147 + 5 * 16.4) + 27.5, t.feedLengthMm(), 1e-9),
+                () -> assertEquals(139.5, t.rapidLengthMm(), 1e-9),
+                () -> assertEquals(feedS, t.feedSeconds(), 1e-9),
+                () -> assertEquals(rapidS, t.rapidSeconds(), 1e-9),
+                () -> assertEquals(50.412, t.seconds(), 1e-9));
+    }
+
+    /**
+     * The drill (feed 0.03 m/s = 1800 mm/min) rapids 30 -> 10, drills 10 -> -30 (40 mm), rapids
+     * back -30 -> 10 -> 30 (80 mm of rapids in all); the reamer leaves at feed (80 mm fed, 40 mm
+     * of rapids). The program is the sum of its workingsteps.
+     */
+    @Test
+    void theHolesAndTheProgramCycleTimesAreTheHandComputation() throws Exception {
+        StepNcViewModel vm = planned(EX1, DRILL);
+        double drill = 40 / 1800.0 * 60 + 80 / 10000.0 * 60;
+        assertEquals(drill, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
+        vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS REAM HOLE1"))
+                .findFirst());
+        double ream = 80 / 1800.0 * 60 + 40 / 10000.0 * 60;
+        assertEquals(ream, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
+        double sum = 0;
+        for (MachiningWorkingstep ws : vm.program().orElseThrow().workingsteps()) {
+            vm.select(Optional.of(ws));
+            sum += vm.workingstepTime().orElseThrow().seconds();
+        }
+        double total = vm.programTime().orElseThrow().seconds();
+        assertEquals(sum, total, 1e-9);
+        assertTrue(total > 50.412 + drill + ream, "pockets take time too: " + total);
+        List<String> lines = vm.cycleTime();
+        assertEquals("Cycle time of this workingstep: " + StepNcViewModel.seconds(vm.workingstepTime().orElseThrow()
+                .seconds()) + " (feed", lines.get(0).substring(0, lines.get(0).indexOf("(feed") + 5));
+        assertTrue(lines.get(1).startsWith("Cycle time of the program (5 of 5 workingsteps): "
+                + StepNcViewModel.seconds(total)), lines.get(1));
+        assertTrue(lines.get(2).contains("rapids at 10000 mm/min"), lines.get(2));
+    }
+
+    @Test
+    void timesReadAsSecondsThenMinutes() {
+        assertEquals("50.4 s", StepNcViewModel.seconds(50.412));
+        assertEquals("3 min 05.2 s", StepNcViewModel.seconds(185.2));
+    }
+
+    @Test
+    void theFaceHasTwoLayersAndEachShowsItsOwnPassesAndTheWayIn() throws Exception {
+        StepNcViewModel vm = planned(EX1, FACE);
+        // the face's top is z 5: layers at z 2.5 and 0
+        assertEquals(List.of(new StepNcViewModel.Layer(1, 2.5), new StepNcViewModel.Layer(2, 5.0)), vm.layers());
+        assertEquals(List.of("All 2 layers", "Layer 1 of 2: 2.5 mm deep", "Layer 2 of 2: 5 mm deep"), vm.layerChoices());
+        assertEquals(29, vm.shown().orElseThrow().moves().size());
+        vm.selectLayer(1);
+        StepNcViewModel.Shown one = vm.shown().orElseThrow();
+        vm.selectLayer(2);
+        StepNcViewModel.Shown two = vm.shown().orElseThrow();
+        assertEquals(29, one.moves().size() + two.moves().size());
+        assertEquals(new Vec3(91, -13.5, 30), one.start());
+        // layer 2 starts where layer 1's last pass ended, and rises, crosses and plunges into z 0
+        assertEquals(new Vec3(9, -13.5, 2.5), two.start());
+        assertEquals(new Vec3(9, -13.5, 15), two.moves().get(0).end());
+        for (StepNcViewModel.Shown sh : List.of(one, two)) {
+            double z = sh == one ? 2.5 : 0;
+            Vec3 at = sh.start();
+            int passes = 0;
+            for (Move m : sh.moves()) {
+                if (m instanceof Move.Linear && at.z() == m.end().z()) {
+                    assertEquals(z, m.end().z(), EPS);
+                    passes++;
+                }
+                at = m.end();
+            }
+            assertEquals(11, passes);
+        }
+        assertThrows(IllegalArgumentException.class, () -> vm.selectLayer(3));
+    }
+
+    @Test
+    void aDrillingWorkingstepHasNoLayersButAllItsMoves() throws Exception {
+        StepNcViewModel vm = planned(EX1, DRILL);
+        assertEquals(List.of(), vm.layers());
+        assertEquals(List.of("All moves"), vm.layerChoices());
+        assertEquals(4, vm.shown().orElseThrow().moves().size());
+    }
+
+    /**
+     * The drill's moves take 0.12 s (rapid 20 mm), 1.3333 s (feed 40 mm), 0.24 s and 0.12 s
+     * (rapids 40 and 20 mm): at half of 1.81333 s the tool has fed (0.90667 - 0.12) s x 30 mm/s
+     * = 23.6 mm down from z 10.
+     */
+    @Test
+    void theReplaySliderPutsTheToolWhereTheMachiningTimeSays() throws Exception {
+        StepNcViewModel vm = planned(EX1, DRILL);
+        assertEquals(StepNcViewModel.REPLAY_STEPS, vm.replay());
+        assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
+        vm.setReplay(StepNcViewModel.REPLAY_STEPS / 2);
+        StepNcViewModel.ReplayPoint half = vm.replayPoint().orElseThrow();
+        double total = 40 / 1800.0 * 60 + 80 / 10000.0 * 60;
+        assertAll(() -> assertEquals(1, half.moveIndex()),
+                () -> assertEquals(total / 2, half.timeS(), 1e-9),
+                () -> assertEquals(total, half.totalS(), 1e-9),
+                () -> assertEquals(20, half.position().x(), EPS),
+                () -> assertEquals(60, half.position().y(), EPS),
+                () -> assertEquals(10 - (total / 2 - 0.12) * 30, half.position().z(), 1e-9),
+                () -> assertEquals(-13.6, half.position().z(), 1e-9));
+        assertTrue(vm.replayText().startsWith("0.9 s of 1.8 s: move 2 of 4 (feed 1800 mm/min), tool at (20, 60, -13.6) mm"),
+                vm.replayText());
+        vm.setReplay(0);
+        assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
+        assertEquals(-1, vm.replayPoint().orElseThrow().moveIndex());
+        vm.setReplay(-5);
+        assertEquals(0, vm.replay());
+        vm.setReplay(10_000);
+        assertEquals(StepNcViewModel.REPLAY_STEPS, vm.replay());
+    }
+
+    @Test
+    void replayingAnArcFollowsTheArc() throws Exception {
+        StepNcViewModel vm = planned(EX1, "WS FINISH POCKET1");
+        StepNcViewModel.Shown sh = vm.shown().orElseThrow();
+        Vec3 at = sh.start();
+        for (Move m : sh.moves()) {
+            if (m instanceof Move.Circular c) {
+                Vec3 mid = StepNcViewModel.pointOn(at, m, 0.5);
+                assertEquals(at.distance(c.center()), mid.distance(c.center()), 1e-9);
+                assertEquals(c.end().z(), mid.z(), 1e-9);
+                return;
+            }
+            at = m.end();
+        }
+        throw new AssertionError("no arc in the finish pass");
+    }
+
+    @Test
+    void theToolpathIsPlottedOverTheFeatureWithArcsRapidsAndTheTool() throws Exception {
+        StepNcViewModel vm = planned(EX1, "WS FINISH POCKET1");
+        vm.setReplay(StepNcViewModel.REPLAY_STEPS / 3);
+        PlotScene s = vm.plot();
+        List<String> names = s.layers().stream().map(PlotScene.Layer::name).toList();
+        // example 1's workpiece has no BLOCK shape: the pocket outline, then the path
+        assertEquals(List.of("CLOSED_POCKET 'POCKET1'", "rapid", "feed", "travelled", "tool"), names);
+        assertEquals(PlotScene.Style.OUTLINE, s.layers().get(0).style());
+        assertEquals(PlotScene.Style.RAPID, s.layers().get(1).style());
+        assertEquals(PlotScene.Style.FEED, s.layers().get(2).style());
+        List<Curve2> feeds = s.layers().get(2).curves();
+        // the corner arcs (pocket corner radius 10 - tool radius 9 = 1) are drawn as arcs
+        assertTrue(feeds.stream().anyMatch(c -> c instanceof Arc2 a && Math.abs(a.radius() - 1) < 1e-9), "no corner arc");
+        assertTrue(s.layers().get(1).curves().stream().allMatch(c -> c instanceof Segment2));
+        // the travelled part is shorter than all feeds, and the tool is a D18 circle at the replay point
+        double all = feeds.stream().mapToDouble(Curve2::length).sum();
+        double done = s.layers().get(3).curves().stream().mapToDouble(Curve2::length).sum();
+        assertTrue(done > 0 && done < all, done + " of " + all);
+        Arc2 tool = (Arc2) s.layers().get(4).curves().get(0);
+        Vec3 at = vm.replayPoint().orElseThrow().position();
+        assertAll(() -> assertEquals(9, tool.radius(), 1e-9), () -> assertEquals(at.x(), tool.center().x(), 1e-9),
+                () -> assertEquals(at.y(), tool.center().y(), 1e-9));
+        assertTrue(s.title().endsWith(": WS FINISH POCKET1"), s.title());
+    }
+
+    @Test
+    void aHoleOnTheFrontFaceIsMilledAlongArcsDrawnAsArcsInTheFrontView() throws Exception {
+        StepNcViewModel vm = loaded("example2.stp");
+        StepNcProgram p = vm.program().orElseThrow();
+        vm.planned(ToolpathPlanner.plan(p, Tolerance.DEFAULT));
+        // workingstep 12: milling the Ø30 hole at (60, 0, 150), axis -Y, with the Ø20 mill
+        vm.select(Optional.of(p.workingsteps().get(11)));
+        PlotScene s = vm.plot();
+        assertEquals("Front view (XZ)", s.title().substring(0, "Front view (XZ)".length()));
+        List<Arc2> arcs = s.layers().get(3).curves().stream().filter(c -> c instanceof Arc2).map(c -> (Arc2) c).toList();
+        assertTrue(!arcs.isEmpty(), "no arcs in the front view");
+        for (Arc2 a : arcs) {
+            assertEquals(60, a.center().x(), 1e-6);
+            assertEquals(150, a.center().y(), 1e-6);
+            assertTrue(a.radius() <= 15 - 10 + 1e-9, "beyond the hole wall: " + a.radius());
+        }
+    }
+
+    @Test
+    void selectingAnotherWorkingstepShowsAllItsLayersFromTheEnd() throws Exception {
+        StepNcViewModel vm = planned(EX1, FACE);
+        vm.selectLayer(2);
+        vm.setReplay(3);
+        vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS ROUGH POCKET1"))
+                .findFirst());
+        assertEquals(0, vm.layer());
+        assertEquals(StepNcViewModel.REPLAY_STEPS, vm.replay());
+        assertTrue(vm.layers().size() > 1);
+        assertTrue(String.join("\n", vm.details()).contains("Cycle time of this workingstep"));
     }
 }
