@@ -54,6 +54,7 @@ final class StepNcTab implements ModuleTab {
     private final JButton play = new JButton("Play");
     private final JLabel replayText = new JLabel(" ");
     private final JLabel cycleText = new JLabel(" ");
+    private final JLabel legend = new JLabel(" ");
     private final Timer player = new Timer(40, e -> step());
     // set while the controls are filled from the view model, so their listeners do not echo back
     private boolean updating;
@@ -96,6 +97,7 @@ final class StepNcTab implements ModuleTab {
 
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right);
         split.setResizeWeight(0.35);
+        split.setDividerLocation(360);
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(top, BorderLayout.NORTH);
         panel.add(split, BorderLayout.CENTER);
@@ -152,7 +154,11 @@ final class StepNcTab implements ModuleTab {
         controls.setBorder(BorderFactory.createEmptyBorder(4, 2, 2, 2));
         controls.add(row, BorderLayout.NORTH);
         controls.add(replayText, BorderLayout.CENTER);
-        controls.add(cycleText, BorderLayout.SOUTH);
+        JPanel texts = new JPanel(new java.awt.GridLayout(0, 1));
+        texts.add(cycleText);
+        legend.setName("stepnc-legend");
+        texts.add(legend);
+        controls.add(texts, BorderLayout.SOUTH);
         JPanel view = new JPanel(new BorderLayout());
         view.add(controls, BorderLayout.NORTH);
         view.add(plot, BorderLayout.CENTER);
@@ -242,6 +248,7 @@ final class StepNcTab implements ModuleTab {
         for (int i = 0; i < Math.min(tree.getRowCount(), 200); i++) {
             tree.expandRow(i);
         }
+        tree.scrollRectToVisible(new java.awt.Rectangle(0, 0, 1, 1));
         showSelection();
     }
 
@@ -259,6 +266,12 @@ final class StepNcTab implements ModuleTab {
                 && d.getUserObject() instanceof StepNcViewModel.Node n) {
             vm.select(n.workingstep());
             showSelection();
+            // keep the start of the labels in view: selecting a long row scrolls the tree sideways
+            javax.swing.SwingUtilities.invokeLater(() -> {
+                if (tree.getParent() instanceof javax.swing.JViewport vp) {
+                    vp.setViewPosition(new java.awt.Point(0, vp.getViewPosition().y));
+                }
+            });
         }
     }
 
@@ -288,10 +301,12 @@ final class StepNcTab implements ModuleTab {
             updating = false;
         }
         replayText.setText(vm.replayText());
+        cycleText.setText(vm.cycleTimeShort());
+        legend.setText(has ? "<html><font color='#1565C0'>blue: feed</font>, <font color='#E53935'>red dashed: rapid"
+                + "</font>, <font color='#2E7D32'>green: cut so far</font>, <font color='#FF8F00'>orange: the tool"
+                + "</font>, black: the feature</html>" : " ");
         List<String> ct = vm.cycleTime();
-        cycleText.setText(ct.isEmpty() ? " " : ct.get(0) + (ct.size() > 1 ? "; " + ct.get(1).replaceFirst(
-                "Cycle time of the program", "program") : ""));
-        cycleText.setToolTipText(String.join(". ", ct));
+        cycleText.setToolTipText(ct.isEmpty() ? null : String.join(". ", ct));
         if (fit) {
             plot.show(vm.plot());
         } else {

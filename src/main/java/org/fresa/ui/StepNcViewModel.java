@@ -28,6 +28,7 @@ import org.fresa.stepnc.Profile;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.Technology;
 import org.fresa.stepnc.Tool;
+import org.fresa.stepnc.TravelPath;
 import org.fresa.stepnc.Workpiece;
 import org.fresa.stepnc.Workplan;
 import org.fresa.toolpath.ToolpathPlanner;
@@ -308,6 +309,16 @@ final class StepNcViewModel {
                 + timeText(programTime().orElseThrow()));
         out.add("Feeds at their feed rate, rapids at " + n(RAPID_MM_PER_MIN) + " mm/min, no acceleration");
         return out;
+    }
+
+    /** One line: this workingstep's and the program's cycle time. */
+    String cycleTimeShort() {
+        if (plan.isEmpty()) {
+            return program.isPresent() ? "Planning toolpaths..." : " ";
+        }
+        String ws = workingstepTime().map(t -> seconds(t.seconds())).orElse("not planned");
+        return "Cycle time: this workingstep " + ws + ", program " + seconds(programTime().orElseThrow().seconds())
+                + " (rapids at " + n(RAPID_MM_PER_MIN) + " mm/min)";
     }
 
     private static String timeText(CycleTime t) {
@@ -718,11 +729,31 @@ final class StepNcViewModel {
         Profile p = f.profile().get();
         Transform3 t = frame.times(p.placement());
         List<Vec3> local = new ArrayList<>();
+        if (p instanceof Profile.Linear lin && f.courseOfTravel().isPresent()) {
+            // a planar face's removal boundary: the profile swept along the course of travel
+            TravelPath c = f.courseOfTravel().get();
+            Vec3 p0 = p.placement().applyToPoint(Vec3.ZERO);
+            Vec3 a = p.placement().applyToDirection(Vec3.UNIT_X).times(lin.lengthMm());
+            Vec3 b = c.direction().map(d -> c.placement().applyToDirection(d).normalized()).orElse(Vec3.UNIT_Y)
+                    .times(c.distanceMm().orElse(0));
+            List<Vec3> corners = List.of(p0, p0.plus(a), p0.plus(a).plus(b), p0.plus(b), p0);
+            for (int i = 0; i + 1 < corners.size(); i++) {
+                Vec2 u = project(frame.applyToPoint(corners.get(i)), drop);
+                Vec2 w = project(frame.applyToPoint(corners.get(i + 1)), drop);
+                if (u.distance(w) > 0) {
+                    out.add(Segment2.of(u, w));
+                }
+            }
+            return out;
+        }
         if (p instanceof Profile.Rectangular r) {
-            double hx = r.lengthMm() / 2;
-            double hy = r.widthMm() / 2;
-            local.addAll(List.of(new Vec3(-hx, -hy, 0), new Vec3(hx, -hy, 0), new Vec3(hx, hy, 0), new Vec3(-hx, hy, 0),
-                    new Vec3(-hx, -hy, 0)));
+            double rc = Math.min(Math.max(f.orthogonalRadiusMm().orElse(0), 0), Math.min(r.lengthMm(), r.widthMm()) / 2);
+            // ISO 14649: the pocket's orthogonal_radius rounds the rectangle's corners
+            for (Curve2 c : new org.fresa.toolpath.Profile.RoundedRectangle(Vec2.ZERO, r.lengthMm(), r.widthMm(), rc)
+                    .contour(org.fresa.geom.Tolerance.DEFAULT).curves()) {
+                out.addAll(placed(c, t, drop));
+            }
+            return out;
         } else if (p instanceof Profile.Circular c) {
             out.add(Arc2.circle(project(t.translationPart(), drop), c.diameterMm() / 2, true));
             return out;
@@ -749,6 +780,37 @@ final class StepNcViewModel {
             if (a.distance(b) > 0) {
                 out.add(Segment2.of(a, b));
             }
+        }
+        return out;
+    }
+
+    /**
+     * A curve of a profile's own plane placed by {@code t} and seen along the dropped axis: an
+     * arc stays an arc when the plane faces the view, else it becomes chords.
+     */
+    private static List<Curve2> placed(Curve2 c, Transform3 t, int drop) {
+        List<Curve2> out = new ArrayList<>();
+        if (c instanceof Arc2 a) {
+            Vec3 axis = drop == 0 ? Vec3.UNIT_X : drop == 1 ? Vec3.UNIT_Y : Vec3.UNIT_Z;
+            double along = t.zAxis().dot(axis);
+            if (Math.abs(Math.abs(along) - 1) < 1e-9) {
+                boolean keep = (along > 0) == (drop != 1);
+                out.add(new Arc2(project(t.applyToPoint(Vec3.of(a.center(), 0)), drop),
+                        project(t.applyToPoint(Vec3.of(a.start(), 0)), drop),
+                        project(t.applyToPoint(Vec3.of(a.end(), 0)), drop), keep == a.ccw()));
+                return out;
+            }
+            int n = 16;
+            for (int i = 0; i < n; i++) {
+                out.add(Segment2.of(project(t.applyToPoint(Vec3.of(a.pointAt((double) i / n), 0)), drop),
+                        project(t.applyToPoint(Vec3.of(a.pointAt((double) (i + 1) / n), 0)), drop)));
+            }
+            return out;
+        }
+        Vec2 u = project(t.applyToPoint(Vec3.of(c.start(), 0)), drop);
+        Vec2 w = project(t.applyToPoint(Vec3.of(c.end(), 0)), drop);
+        if (u.distance(w) > 0) {
+            out.add(Segment2.of(u, w));
         }
         return out;
     }

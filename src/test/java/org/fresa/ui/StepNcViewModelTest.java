@@ -80,14 +80,19 @@ class StepNcViewModelTest {
     }
 
     @Test
-    void theTopPocketIsDrawnAsItsRectangle() throws Exception {
+    void theTopPocketIsDrawnAsItsRoundedRectangle() throws Exception {
         StepNcViewModel vm = loaded("example2.stp");
         vm.select(Optional.of(vm.program().orElseThrow().workingsteps().get(8)));
         PlotScene s = vm.plot();
         assertEquals("Top view (XY)", s.title());
-        assertEquals(4, s.layers().get(1).curves().size());
-        var b = s.layers().get(1).curves().get(0).bounds();
-        assertEquals(30.0, b.minX(), 1e-9);
+        // 140 x 140 at (100, 100) with its orthogonal radius 10 at the corners, drawn as arcs
+        List<Curve2> outline = s.layers().get(1).curves();
+        assertEquals(4, outline.stream().filter(c -> c instanceof Arc2 a && Math.abs(a.radius() - 10) < 1e-9).count());
+        Box2 b = outline.stream().map(Curve2::bounds).reduce(Box2::union).orElseThrow();
+        assertAll(() -> assertEquals(30.0, b.minX(), 1e-9), () -> assertEquals(170.0, b.maxX(), 1e-9),
+                () -> assertEquals(30.0, b.minY(), 1e-9), () -> assertEquals(170.0, b.maxY(), 1e-9));
+        double length = outline.stream().mapToDouble(Curve2::length).sum();
+        assertEquals(4 * 120 + 2 * Math.PI * 10, length, 1e-9);
     }
 
     static final double EPS = 1e-9;

@@ -1,0 +1,154 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+
+import java.awt.GraphicsEnvironment;
+import java.awt.event.KeyEvent;
+import java.nio.file.Path;
+import javax.swing.JTree;
+import org.assertj.swing.core.GenericTypeMatcher;
+import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.fixture.JSliderFixture;
+import org.assertj.swing.timing.Condition;
+import org.assertj.swing.timing.Pause;
+import org.assertj.swing.timing.Timeout;
+import org.fresa.chart.PlotScene;
+import org.fresa.job.JobSettings;
+import org.fresa.job.RecentJobs;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The STEP-NC tab's toolpath view under a (virtual) display (issue 4); a headless run skips it. */
+class StepNcTabGuiTest {
+
+    @TempDir
+    Path dir;
+
+    FrameFixture window;
+
+    @BeforeAll
+    static void needsADisplay() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
+        FailOnThreadViolationRepaintManager.install();
+    }
+
+    @BeforeEach
+    void openWindow() {
+        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
+        window = new FrameFixture(w);
+        window.show(new java.awt.Dimension(1280, 860));
+    }
+
+    @AfterEach
+    void closeWindow() {
+        if (window != null) {
+            window.cleanUp();
+        }
+    }
+
+    @Test
+    void example1sPocketIsReplayedFromTheKeyboard() {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
+        window.tabbedPane("tabs").selectTab("STEP-NC");
+        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
+                "linuxcnc"))));
+        Pause.pause(new Condition("the program is read and planned") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time").target().getText())
+                        .startsWith("Cycle time: this workingstep");
+            }
+        }, Timeout.timeout(60_000));
+
+        window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
+        shoot("stepnc-selected.png");
+        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile(".* of .*: move 347 of 347.*"));
+        assertTrue(window.textBox("stepnc-details").text().contains("Cycle time of this workingstep"));
+
+        // Alt+R focuses the replay slider; Home goes to the start, each Right arrow one step on
+        window.robot().pressKey(KeyEvent.VK_ALT);
+        window.robot().pressAndReleaseKey(KeyEvent.VK_R);
+        window.robot().releaseKey(KeyEvent.VK_ALT);
+        window.robot().waitForIdle();
+        JSliderFixture slider = window.slider("stepnc-replay");
+        slider.requireFocused();
+        slider.pressAndReleaseKeys(KeyEvent.VK_HOME);
+        assertEquals(0, value(slider));
+        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile("0\\.0 s of .*before the first move.*"));
+        String toolAtStart = toolCircle();
+        for (int i = 0; i < 70; i++) {
+            slider.pressAndReleaseKeys(KeyEvent.VK_RIGHT);
+        }
+        assertEquals(70, value(slider));
+        String text = window.label("stepnc-replay-text").target().getText();
+        assertTrue(text.matches(".* of .*: move \\d+ of 347 .*"), text);
+        assertNotEquals(toolAtStart, toolCircle(), "the tool marker moved");
+
+        // one layer: the replay goes to its end
+        window.comboBox("stepnc-layer").selectItem(1);
+        assertEquals(StepNcViewModel.REPLAY_STEPS, value(slider));
+        String title = GuiActionRunner.execute(() -> plotScene().title());
+        assertTrue(title.endsWith("layer 1 of 15"), title);
+        window.comboBox("stepnc-layer").selectItem(0);
+        slider.focus();
+        slider.pressAndReleaseKeys(KeyEvent.VK_HOME);
+        for (int i = 0; i < 70; i++) {
+            slider.pressAndReleaseKeys(KeyEvent.VK_RIGHT);
+        }
+        shoot("stepnc-toolpath.png");
+        assertEquals(70, GuiActionRunner.execute(() -> slider.target().getValue()));
+    }
+
+    private static int value(JSliderFixture slider) {
+        return GuiActionRunner.execute(() -> slider.target().getValue());
+    }
+
+    private int row(String label) {
+        return GuiActionRunner.execute(() -> {
+            JTree t = window.tree("stepnc-tree").target();
+            for (int i = 0; i < t.getRowCount(); i++) {
+                if (t.getPathForRow(i).getLastPathComponent().toString().contains(label)) {
+                    return i;
+                }
+            }
+            throw new AssertionError("no row " + label);
+        });
+    }
+
+    private PlotScene plotScene() {
+        PlotPanel p = (PlotPanel) window.robot().finder().find(window.target(),
+                new GenericTypeMatcher<>(PlotPanel.class, true) {
+                    @Override
+                    protected boolean isMatching(PlotPanel c) {
+                        return true;
+                    }
+                });
+        return p.scene();
+    }
+
+    private String toolCircle() {
+        return GuiActionRunner.execute(() -> plotScene().layers().stream().filter(l -> l.name().equals("tool"))
+                .findFirst().orElseThrow().curves().get(0).toString());
+    }
+
+    /** For looking at after the build: target/screenshots/stepnc-*.png. */
+    private void shoot(String name) {
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        try {
+            java.nio.file.Files.createDirectories(Path.of("target", "screenshots"));
+            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+}
