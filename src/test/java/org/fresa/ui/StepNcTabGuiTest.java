@@ -98,6 +98,8 @@ class StepNcTabGuiTest {
         assertEquals(StepNcViewModel.REPLAY_STEPS, value(slider));
         String title = GuiActionRunner.execute(() -> plotScene().title());
         assertTrue(title.endsWith("layer 1 of 15"), title);
+        slider.pressAndReleaseKeys(KeyEvent.VK_PAGE_DOWN);
+        shoot("stepnc-layer.png");
         window.comboBox("stepnc-layer").selectItem(0);
         slider.focus();
         slider.pressAndReleaseKeys(KeyEvent.VK_HOME);
