@@ -79,6 +79,46 @@ class PocketMillingTest {
         assertEquals(-12, lowestZ(s), 1e-9);
     }
 
+    /** Issue 4, cutting direction: every loop (corner arcs, helix entries) turns the way the plan says. */
+    @ParameterizedTest(name = "clockwise {0}")
+    @CsvSource({"true", "false"})
+    void loopsTurnInThePlansRotationDirection(boolean clockwise) {
+        Profile p = profile("rect");
+        MillingPlan simple = MillingPlan.simple(Strategy.CONTOUR_PARALLEL, Stepover.nominal(18, 0.1), 5);
+        MillingPlan plan = new MillingPlan(simple.strategy(), simple.stepoverMm(), simple.axialDepthMm(), 0, 0,
+                simple.feedDirection(), clockwise, new Approach.Helix(3, 5), false);
+        ToolpathSection s = PocketMilling.section("ws", p, new Heights(50, 5, 0, -12), D18, plan, TOL);
+        List<Move.Circular> arcs = s.moves().stream().filter(m -> m instanceof Move.Circular)
+                .map(m -> (Move.Circular) m).toList();
+        assertTrue(arcs.size() >= 4, "corner arcs expected: " + arcs.size());
+        for (Move.Circular c : arcs) {
+            assertEquals(1, c.normal().z(), 1e-12);
+            assertEquals(!clockwise, c.ccw(), c.toString());
+        }
+    }
+
+    /**
+     * Issue 4, center milling: a slot-shaped pocket as wide as the tool (60 x 18, ends of radius 9,
+     * D18) is cut by one pass along its centre line, which clears it without touching the walls.
+     */
+    @org.junit.jupiter.api.Test
+    void centerMillingASlotAsWideAsTheToolRunsAlongItsCentreLine() {
+        Profile p = new Profile.RoundedRectangle(new Vec2(0, 0), 60, 18, 9);
+        ToolpathSection s = PocketMilling.section("ws", p, new Heights(50, 5, 0, -6), D18,
+                MillingPlan.simple(Strategy.CENTER_MILLING, 9, 3), TOL);
+        for (Move m : s.moves()) {
+            if (m.end().z() < 0) {
+                assertEquals(0, m.end().y(), 1e-9, m.toString());
+                assertTrue(Math.abs(m.end().x()) <= 21 + 1e-9, m.toString());
+            }
+        }
+        Geometry pocket = Swept.polygon(p.contour(TOL));
+        Geometry floor = Swept.sweep(s, 9, -6);
+        assertTrue(pocket.difference(floor).getArea() < 0.05, "uncut " + pocket.difference(floor).getArea());
+        assertTrue(Swept.gouge(pocket, Swept.sweep(s, 9, 0)) < 1e-3);
+        assertEquals(-6, lowestZ(s), 1e-9);
+    }
+
     static double lowestZ(ToolpathSection s) {
         double z = s.start().z();
         for (Move m : s.moves()) {
