@@ -23,8 +23,9 @@ import org.fresa.stepnc.Technology;
  * when the spindle speed is missing too. Every such reading is reported ({@link #note()}).
  *
  * @param feedMmPerMin the feed used, > 0
- * @param readAs "mm/min" (the file's unit, converted by the reader), "mm/tooth", "mm/rev" or
- *     "default" (the file gives no usable feed)
+ * @param readAs the unit the written feed was read in: the file's own unit (ISO 14649: "m/s",
+ *     converted by the reader), "mm/tooth" or "mm/rev" (inferred), or "default" (the file gives
+ *     no usable feed)
  * @param written the feed as written, when there is one
  * @param teeth the tooth count used for mm/tooth
  * @param spindleRpm the spindle speed used for mm/tooth and mm/rev
@@ -49,7 +50,7 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
     public static FeedRate of(Operation op) {
         Technology t = op.technology();
         if (t.feedMmPerMin().isPresent() && t.feedMmPerMin().getAsDouble() > 0) {
-            return new FeedRate(t.feedMmPerMin().getAsDouble(), "mm/min", t.feedrate(), OptionalInt.empty(),
+            return new FeedRate(t.feedMmPerMin().getAsDouble(), t.feedrateUnit(), t.feedrate(), OptionalInt.empty(),
                     OptionalDouble.empty());
         }
         OptionalDouble rpm = t.spindleRpm().isPresent() && t.spindleRpm().getAsDouble() > 0 ? t.spindleRpm()
@@ -77,7 +78,7 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
 
     /** True when the unit was not in the file (a reading to report). */
     public boolean inferred() {
-        return !readAs.equals("mm/min");
+        return readAs.equals("mm/tooth") || readAs.equals("mm/rev") || readAs.equals("default");
     }
 
     /**
@@ -87,14 +88,14 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
     public String note() {
         String w = written.isPresent() ? n(written.getAsDouble()) : "none";
         return switch (readAs) {
-            case "mm/min" -> "feed " + n(feedMmPerMin) + " mm/min";
             case "mm/tooth" -> "feed " + w + " (no unit in the file) read as mm/tooth: " + w + " x "
                     + teeth.getAsInt() + " teeth x " + n(spindleRpm.getAsDouble()) + " rpm = " + n(feedMmPerMin)
                     + " mm/min";
             case "mm/rev" -> "feed " + w + " (no unit in the file) read as mm/rev: " + w + " x "
                     + n(spindleRpm.getAsDouble()) + " rpm = " + n(feedMmPerMin) + " mm/min";
-            default -> "no usable feed in the file (feed " + w + ", no spindle speed to convert it): "
+            case "default" -> "no usable feed in the file (feed " + w + ", no spindle speed to convert it): "
                     + n(feedMmPerMin) + " mm/min used";
+            default -> "feed " + w + " " + readAs + " = " + n(feedMmPerMin) + " mm/min";
         };
     }
 

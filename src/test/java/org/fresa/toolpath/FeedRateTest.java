@@ -29,7 +29,8 @@ class FeedRateTest {
     void anIsoFeedInMetresPerSecondIsUsedAsConverted() throws Exception {
         // example 1: MILLING_TECHNOLOGY(0.040, ...) is 0.04 m/s = 2400 mm/min
         FeedRate f = FeedRate.of(read("iso14649-11-example1.stp").workingsteps().get(0).operation());
-        assertAll(() -> assertEquals(2400, f.feedMmPerMin(), 1e-9), () -> assertEquals("mm/min", f.readAs()));
+        assertAll(() -> assertEquals(2400, f.feedMmPerMin(), 1e-9), () -> assertEquals("m/s", f.readAs()),
+                () -> assertEquals(false, f.inferred()), () -> assertEquals("feed 0.04 m/s = 2400 mm/min", f.note()));
     }
 
     @Test
