@@ -87,4 +87,32 @@ class RobotFilesTest {
         assertTrue(json.contains("\"base_radius_mm\":500"));
         assertTrue(json.contains("\"min\":-230"));
     }
+
+    @ParameterizedTest
+    @CsvSource({"irb140", "adept-one", "tricept806"})
+    void aWrittenRobotReadsBackWithTheSameKinematicsAndLimits(String name) throws Exception {
+        Robot r = Robots.byName(name).orElseThrow();
+        Path f = dir.resolve(name + ".xml");
+        RobotFiles.write(r, f);
+        Robot back = RobotFiles.read(f);
+        double[] q = new double[r.dof()];
+        for (int i = 0; i < q.length; i++) {
+            q[i] = (r.joints().get(i).min() + r.joints().get(i).max()) / 2 + 7 * (i + 1) % 11;
+        }
+        assertEquals(r.joints(), back.joints());
+        assertEquals(r.name(), back.name());
+        assertTrue(r.forward(q).eq(back.forward(q), new org.fresa.geom.Tolerance(1e-12, 1e-15)), f.toString());
+    }
+
+    @Test
+    void aToolFrameWithRotationIsWrittenAndReadBack() throws Exception {
+        Transform3 tool = Transform3.ofXyzRpyDeg(10, -20, 150.25, 30, -45, 60);
+        SerialRobot r = Robots.irb140().withTool(tool);
+        Path f = dir.resolve("tool.xml");
+        RobotFiles.write(r, f);
+        SerialRobot back = (SerialRobot) RobotFiles.read(f);
+        assertTrue(back.chain().tool().eq(tool, new org.fresa.geom.Tolerance(1e-12, 1e-14)), back.chain().tool()
+                .toString());
+        assertEquals(r.wristJoint(), back.wristJoint());
+    }
 }
