@@ -90,6 +90,11 @@ final class CellView extends JComponent {
         bind("SUBTRACT", "zoom-out", () -> camera.zoomBy(0.8));
     }
 
+    /** What is drawn now (the GUI test checks the replayed robot). */
+    CellScene scene() {
+        return vm.scene();
+    }
+
     /** The camera (the GUI test turns it). */
     OrbitCamera camera() {
         return camera;

@@ -270,7 +270,9 @@ final class PositionTab implements ModuleTab {
             return;
         }
         Path file = stepnc.get().file();
-        JobSettings.RobotSettings r = vm.applyTo(ctx.model().job()).robot().orElseThrow();
+        // computing the cell makes this a robot job: Job > Run and fresa run then do the same
+        ctx.model().setJob(vm.applyTo(ctx.model().job()).withTask(org.fresa.job.JobTask.ROBOT));
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         java.util.List<String> formats = r.formats();
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> PositionViewModel.compute(file,
                 r.robot(), r.robotTable(), r.tablePiece(), formats, progress), solved -> {

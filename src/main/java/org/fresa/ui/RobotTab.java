@@ -53,7 +53,19 @@ final class RobotTab implements ModuleTab {
     private final JPanel panel = new JPanel(new BorderLayout());
     private final JComboBox<String> robots = new JComboBox<>(RobotViewModel.builtIns().toArray(String[]::new));
     private final DhModel table = new DhModel();
-    private final JTable dh = new JTable(table);
+    private final JTable dh = new JTable(table) {
+        private static final long serialVersionUID = 1L;
+
+        /** Typing into a cell replaces its text, as in a spreadsheet; F2 or a double click edits it. */
+        @Override
+        public boolean editCellAt(int row, int column, java.util.EventObject e) {
+            boolean editing = super.editCellAt(row, column, e);
+            if (editing && e instanceof KeyEvent && getEditorComponent() instanceof JTextField f) {
+                f.setText("");
+            }
+            return editing;
+        }
+    };
     private final JLabel messages = new JLabel(" ");
     private final JLabel uses = new JLabel(" ");
     private final JPanel paramPanel = new JPanel(new GridBagLayout());
@@ -108,7 +120,7 @@ final class RobotTab implements ModuleTab {
         dh.getColumnModel().getColumn(0).setPreferredWidth(50);
         dh.getColumnModel().getColumn(RobotViewModel.TYPE).setPreferredWidth(70);
         JLabel dhLabel = new JLabel("Denavit-Hartenberg table, A = Rz(theta) Tz(d) Tx(a) Rx(alpha); cells are"
-                + " expressions such as q2 - 90 (type to edit, Enter to commit, F2 to edit in place)");
+                + " expressions such as q2 - 90 (type to replace, F2 to edit, Enter to commit)");
         dhLabel.setDisplayedMnemonic(KeyEvent.VK_D);
         dhLabel.setLabelFor(dh);
         messages.setName("robot-messages");
