@@ -142,16 +142,24 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
             if (robot instanceof SerialRobot s) {
                 List<Vec3> arm = new ArrayList<>();
                 arm.add(Vec3.ZERO);
-                for (int i = 0; i <= s.chain().dof(); i++) {
-                    Vec3 o = s.chain().frame(i, q).translationPart();
-                    if (!o.equals(arm.get(arm.size() - 1))) {
-                        arm.add(o);
+                Transform3 previous = s.chain().frame(0, q);
+                addPoint(arm, previous.translationPart());
+                joints.add(previous.translationPart());
+                for (int i = 1; i <= s.chain().dof(); i++) {
+                    // A_i = Rz(theta) Tz(d) Tx(a) Rx(alpha): first along z_(i-1) by d, then along x_i by a
+                    org.fresa.kin.DhJoint j = s.chain().joints().get(i - 1);
+                    double d = j.type() == JointType.PRISMATIC ? q[i - 1] + j.dMm() : j.dMm();
+                    addPoint(arm, previous.translationPart().plus(previous.zAxis().times(d)));
+                    Transform3 f = s.chain().frame(i, q);
+                    addPoint(arm, f.translationPart());
+                    if (i < s.chain().dof()) {
+                        joints.add(f.translationPart());
                     }
+                    previous = f;
                 }
                 Transform3 tip = s.forward(q);
-                arm.add(tip.translationPart());
+                addPoint(arm, tip.translationPart());
                 links.add(arm);
-                joints.addAll(arm.subList(0, arm.size() - 1));
                 return Optional.of(tip);
             } else if (robot instanceof TriceptRobot t) {
                 Vec3 w = t.wristCentre(q[0], q[1], q[2]);
@@ -179,6 +187,12 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
             joints.clear();
         }
         return Optional.empty();
+    }
+
+    private static void addPoint(List<Vec3> line, Vec3 p) {
+        if (line.isEmpty() || line.get(line.size() - 1).distance(p) > 1e-9) {
+            line.add(p);
+        }
     }
 
     /** The box around the cutting moves in the workpiece frame, as 12 edges in the base frame. */

@@ -126,6 +126,7 @@ final class CellView extends JComponent {
     private void paintScene(Graphics2D g, CellScene sc) {
         int w = getWidth();
         int h = getHeight();
+        g.setFont(getFont() != null ? getFont() : new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         g.setColor(new Color(250, 251, 253));
@@ -163,8 +164,9 @@ final class CellView extends JComponent {
             draw(g, s.from(), s.to(), w, h);
         }
         paintRobot(g, sc, w, h);
+        List<java.awt.Rectangle> labels = new ArrayList<>();
         for (CellScene.Frame f : sc.frames()) {
-            paintFrame(g, f, w, h);
+            paintFrame(g, f, w, h, labels);
         }
         sc.selected().ifPresent(p -> {
             double[] s = camera.project(p.at(), w, h);
@@ -172,7 +174,7 @@ final class CellView extends JComponent {
             g.setColor(colour(p.status()));
             g.drawOval((int) Math.round(s[0]) - 7, (int) Math.round(s[1]) - 7, 14, 14);
         });
-        g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
+        g.setFont(g.getFont().deriveFont(Font.PLAIN, 11f));
         g.setColor(new Color(90, 90, 90));
         String hint = String.format(java.util.Locale.ROOT,
                 "%s; view az %.0f deg, el %.0f deg, zoom %.2f. Drag or arrows: turn; wheel or +/-: zoom; Home: reset",
@@ -222,7 +224,7 @@ final class CellView extends JComponent {
         }
     }
 
-    private void paintFrame(Graphics2D g, CellScene.Frame f, int w, int h) {
+    private void paintFrame(Graphics2D g, CellScene.Frame f, int w, int h, List<java.awt.Rectangle> labels) {
         Transform3 t = f.pose();
         Vec3 o = t.translationPart();
         Vec3[] axes = {t.xAxis(), t.yAxis(), t.zAxis()};
@@ -235,8 +237,18 @@ final class CellView extends JComponent {
             g.drawString(i == 0 ? "x" : i == 1 ? "y" : "z", (int) s[0] + 3, (int) s[1] - 3);
         }
         double[] s = camera.project(o, w, h);
+        // frames often share a place (table and workpiece): their names are stacked, not overprinted
+        java.awt.FontMetrics fm = g.getFontMetrics();
+        java.awt.Rectangle r = new java.awt.Rectangle((int) s[0] + 6, (int) s[1] + 4, fm.stringWidth(f.name()),
+                fm.getHeight());
+        while (labels.stream().anyMatch(r::intersects)) {
+            r.translate(0, fm.getHeight());
+        }
+        labels.add(r);
+        g.setColor(new Color(255, 255, 255, 200));
+        g.fillRect(r.x - 1, r.y, r.width + 2, r.height);
         g.setColor(new Color(30, 30, 30));
-        g.drawString(f.name(), (int) s[0] + 6, (int) s[1] + 14);
+        g.drawString(f.name(), r.x, r.y + fm.getAscent());
     }
 
     private void draw(Graphics2D g, Vec3 a, Vec3 b, int w, int h) {

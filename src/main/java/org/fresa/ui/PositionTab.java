@@ -284,7 +284,18 @@ final class PositionTab implements ModuleTab {
     }
 
     private static ChartPanel chartPanel() {
-        ChartPanel p = new ChartPanel(null, false, false, false, true, false);
+        ChartPanel p = new ChartPanel(null, false, false, false, true, false) {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void paintComponent(java.awt.Graphics g) {
+                super.paintComponent(g);
+                if (getChart() == null) {
+                    g.setColor(Color.GRAY);
+                    g.drawString("Press Compute: the plots of the trajectory appear here.", 16, 30);
+                }
+            }
+        };
         p.setMinimumDrawWidth(10);
         p.setMinimumDrawHeight(10);
         p.setMaximumDrawWidth(4000);

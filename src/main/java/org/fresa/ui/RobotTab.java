@@ -117,8 +117,9 @@ final class RobotTab implements ModuleTab {
         JComboBox<String> types = new JComboBox<>(new String[] {"R", "P"});
         types.setName("robot-dh-type");
         dh.getColumnModel().getColumn(RobotViewModel.TYPE).setCellEditor(new DefaultCellEditor(types));
-        dh.getColumnModel().getColumn(0).setPreferredWidth(50);
-        dh.getColumnModel().getColumn(RobotViewModel.TYPE).setPreferredWidth(70);
+        for (int c = 0; c < RobotViewModel.COLUMNS.length; c++) {
+            dh.getColumnModel().getColumn(c).setPreferredWidth(c == 0 ? 45 : c == RobotViewModel.TYPE ? 70 : 150);
+        }
         JLabel dhLabel = new JLabel("Denavit-Hartenberg table, A = Rz(theta) Tz(d) Tx(a) Rx(alpha); cells are"
                 + " expressions such as q2 - 90 (type to replace, F2 to edit, Enter to commit)");
         dhLabel.setDisplayedMnemonic(KeyEvent.VK_D);
@@ -129,7 +130,7 @@ final class RobotTab implements ModuleTab {
         JPanel upper = new JPanel(new BorderLayout(4, 4));
         upper.add(dhLabel, BorderLayout.NORTH);
         JScrollPane dhScroll = new JScrollPane(dh);
-        dhScroll.setPreferredSize(new java.awt.Dimension(700, 190));
+        dhScroll.setPreferredSize(new java.awt.Dimension(700, 7 * dh.getRowHeight() + 8));
         upper.add(dhScroll, BorderLayout.CENTER);
         JPanel south = new JPanel(new BorderLayout(4, 2));
         JPanel msgs = new JPanel(new java.awt.GridLayout(2, 1));
@@ -155,7 +156,7 @@ final class RobotTab implements ModuleTab {
         lower.add(new JScrollPane(symbolic), BorderLayout.CENTER);
 
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, upper, lower);
-        split.setResizeWeight(0.65);
+        split.setResizeWeight(0);
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(top, BorderLayout.NORTH);
         panel.add(split, BorderLayout.CENTER);
@@ -386,7 +387,9 @@ final class RobotTab implements ModuleTab {
             c.gridx = i == 0 ? 0 : 2 * (slot % perRow);
             paramPanel.add(l, c);
             c.gridx++;
+            c.gridwidth = i == 0 ? 3 : 1;
             paramPanel.add(f, c);
+            c.gridwidth = 1;
         }
         paramPanel.revalidate();
         paramPanel.repaint();
