@@ -14,8 +14,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
 import org.fresa.geom.Transform3;
@@ -27,6 +25,7 @@ import org.fresa.job.robotxml.RobotType;
 import org.fresa.job.robotxml.SerialType;
 import org.fresa.job.robotxml.TriceptType;
 import org.fresa.kin.DenavitHartenbergChain;
+import org.fresa.kin.DhExpression;
 import org.fresa.kin.DhJoint;
 import org.fresa.kin.JointLimit;
 import org.fresa.kin.Robot;
@@ -44,8 +43,8 @@ import org.xml.sax.SAXParseException;
  */
 public final class RobotFiles {
 
-    private static final Pattern VARIABLE = Pattern.compile(
-            "\\s*q(\\d+)\\s*(?:([+-])\\s*([0-9]+(?:\\.[0-9]*)?(?:[eE][+-]?[0-9]+)?))?\\s*");
+    /** The highest joint number a cell may name (the reader then checks it is the cell's own joint). */
+    private static final int MAX_JOINT = 99;
 
     private RobotFiles() {
     }
@@ -135,28 +134,34 @@ public final class RobotFiles {
                 t.getEffectorLength(), legs, wrist);
     }
 
-    /** "qN", "qN + c" or "qN - c" for joint N: the offset c (0 for "qN"). */
+    /**
+     * The offset c of joint N's variable cell, an expression equal to qN + c ("qN", "q2 - 90",
+     * "q2 - 180/2"; see {@link DhExpression}).
+     */
     static double variableOffset(String file, int joint, String cell, String text) throws CamInputException {
-        Matcher m = VARIABLE.matcher(text);
-        if (!m.matches() || Integer.parseInt(m.group(1)) != joint) {
-            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be q" + joint + ", q" + joint
-                    + " + number or q" + joint + " - number, not '" + text + "'");
+        String expected = cell + " must be q" + joint + " plus a constant (q" + joint + ", q" + joint + " - 90, ...)";
+        DhExpression e;
+        try {
+            e = DhExpression.parse(text, MAX_JOINT);
+        } catch (IllegalArgumentException ex) {
+            throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "': "
+                    + ex.getMessage());
         }
-        if (m.group(2) == null) {
-            return 0;
+        if (e.coefficients().size() != 1 || e.coefficient(joint) != 1) {
+            throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "'");
         }
-        double c = Double.parseDouble(m.group(3));
-        return m.group(2).equals("-") ? -c : c;
+        return e.constant();
     }
 
     private static double number(String file, int joint, String cell, String text) throws CamInputException {
         try {
-            double v = Double.parseDouble(text.trim());
-            if (Double.isFinite(v)) {
-                return v;
+            DhExpression e = DhExpression.parse(text, MAX_JOINT);
+            if (e.isConstant()) {
+                return e.constant();
             }
-        } catch (NumberFormatException e) {
-            // reported below
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text
+                    + "': " + e.getMessage());
         }
         throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text + "'");
     }

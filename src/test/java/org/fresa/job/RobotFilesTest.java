@@ -54,9 +54,23 @@ class RobotFilesTest {
             q1        | 0
             q1 - 12.5 | -12.5
             q1+1e1    | 10
+            180/2 + q1 - 180 | -90
             """)
     void aVariableCellReadsAsItsOffset(String text, double offset) throws CamInputException {
         assertEquals(offset, RobotFiles.variableOffset("f", 1, "theta", text));
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', textBlock = """
+            q2 - 90
+            2*q1
+            90
+            q1*q1
+            """)
+    void aVariableCellThatIsNotQPlusAConstantIsRefused(String text) {
+        CamInputException e = assertThrows(CamInputException.class, () -> RobotFiles.variableOffset("f", 1, "theta",
+                text));
+        assertTrue(e.getMessage().contains("joint 1: theta must be q1 plus a constant"), e.getMessage());
     }
 
     @Test
