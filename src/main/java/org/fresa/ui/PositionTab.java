@@ -65,6 +65,7 @@ final class PositionTab implements ModuleTab {
     private final transient ValueMarker jointsMarker = marker();
     private final transient ValueMarker errorMarker = marker();
     private boolean loading;
+    private String drawnRobot = "";
 
     PositionTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -205,10 +206,14 @@ final class PositionTab implements ModuleTab {
         }
         loading = true;
         try {
-            try {
-                vm.setRobot(RobotFiles.load(r.robot()));
-            } catch (CamInputException ex) {
-                // the Robot tab reports a robot it cannot read; the view keeps the last one
+            String key = robotKey(r.robot());
+            if (!key.equals(drawnRobot)) {
+                try {
+                    vm.setRobot(RobotFiles.load(r.robot()));
+                    drawnRobot = key;
+                } catch (CamInputException ex) {
+                    // the Robot tab reports a robot it cannot read; the view keeps the last one
+                }
             }
             vm.load(r);
             for (int i = 0; i < robotTable.length; i++) {
@@ -221,6 +226,17 @@ final class PositionTab implements ModuleTab {
             loading = false;
         }
         validateFields();
+    }
+
+    /** A built-in name, or a file with the time it was written (a file saved again is read again). */
+    private static String robotKey(String nameOrFile) {
+        try {
+            Path p = Path.of(nameOrFile);
+            return java.nio.file.Files.isRegularFile(p) ? nameOrFile + "@" + java.nio.file.Files.getLastModifiedTime(p)
+                    : nameOrFile;
+        } catch (java.io.IOException | java.nio.file.InvalidPathException e) {
+            return nameOrFile;
+        }
     }
 
     private static void setIfDifferent(JTextField f, String text) {
