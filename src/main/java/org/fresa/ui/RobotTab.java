@@ -101,12 +101,17 @@ final class RobotTab implements ModuleTab {
         fk.setName("robot-symbolic");
         fk.setMnemonic(KeyEvent.VK_K);
         fk.addActionListener(e -> computeSymbolic());
+        JButton export = new JButton("Export symbolic FK...");
+        export.setName("robot-export");
+        export.setMnemonic(KeyEvent.VK_E);
+        export.addActionListener(e -> exportSymbolic());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(robotLabel);
         top.add(robots);
         top.add(open);
         top.add(save);
         top.add(fk);
+        top.add(export);
 
         dh.setName("robot-dh");
         dh.setFillsViewportHeight(true);
@@ -293,6 +298,28 @@ final class RobotTab implements ModuleTab {
             Dialogs.error(ctx.owner(), "Save robot", "Cannot write " + file + ": " + ex.getMessage());
         }
         refreshLabels();
+    }
+
+    private void exportSymbolic() {
+        if (vm.edited().isEmpty()) {
+            Dialogs.error(ctx.owner(), "Export symbolic FK", "Correct the table first: " + vm.messages().get(0));
+            return;
+        }
+        JFileChooser fc = new JFileChooser();
+        fc.setFileFilter(new FileNameExtensionFilter("Text files (*.txt)", "txt"));
+        fc.setSelectedFile(new java.io.File(vm.parameter(0) + "-fk.txt"));
+        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            exportSymbolicTo(fc.getSelectedFile().toPath());
+        }
+    }
+
+    /** Writes the symbolic FK and Jacobian of the table's robot into a text file, in the background. */
+    void exportSymbolicTo(Path file) {
+        Robot r = vm.edited().orElseThrow();
+        ctx.tasks().start("Symbolic kinematics of " + r.name(), progress -> {
+            org.fresa.job.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
+            return file;
+        }, f -> uses.setText("Wrote the symbolic kinematics of " + r.name() + " to " + f));
     }
 
     /** After an edit: show the problems now, write the robot into the job once typing pauses. */

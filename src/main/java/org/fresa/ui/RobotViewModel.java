@@ -547,6 +547,36 @@ final class RobotViewModel {
         return sb.toString();
     }
 
+    /**
+     * The symbolic forward kinematics and the geometric Jacobian as text, for a file (takes a few
+     * seconds). The Jacobian's columns are per radian of a revolute joint's angle and per mm of a
+     * prismatic joint's length, although the expressions take q in degrees.
+     */
+    static String symbolicExport(Robot r) {
+        DenavitHartenbergChain chain;
+        if (r instanceof SerialRobot s) {
+            chain = s.chain();
+        } else if (r instanceof TriceptRobot t) {
+            chain = t.wristChain(Transform3.IDENTITY);
+        } else {
+            return "";
+        }
+        SymbolicKinematics.Result res = SymbolicKinematics.of(SymbolicKinematics.rowsOf(chain), true);
+        StringBuilder sb = new StringBuilder(symbolic(r));
+        sb.append("Geometric Jacobian at the ").append(r instanceof TriceptRobot ? "wrist's tool tip" : "flange")
+                .append(" (rows vx, vy, vz in mm, then wx, wy, wz; column i per rad or mm of q_i):\n");
+        String[] rows = {"vx", "vy", "vz", "wx", "wy", "wz"};
+        List<List<String>> j = res.jacobian();
+        for (int row = 0; row < j.size(); row++) {
+            for (int col = 0; col < j.get(row).size(); col++) {
+                sb.append("J_").append(rows[row]).append("_q").append(col + 1).append(" = ").append(j.get(row).get(col))
+                        .append('\n');
+            }
+            sb.append('\n');
+        }
+        return sb.toString();
+    }
+
     private static boolean hasPrismatic(SerialRobot s) {
         return s.chain().joints().stream().anyMatch(j -> j.type() == JointType.PRISMATIC);
     }

@@ -216,4 +216,15 @@ class RobotViewModelTest {
         assertTrue(text.contains("71*"), text);
         assertFalse(RobotViewModel.symbolic(Robots.irb140()).contains("71*"));
     }
+
+    @Test
+    void theExportHoldsTheForwardKinematicsAndTheJacobian() {
+        String text = RobotViewModel.symbolicExport(Robots.adeptOne());
+        assertAll(() -> assertTrue(text.contains("px = "), text),
+                () -> assertTrue(text.contains("J_vx_q1 = "), text),
+                () -> assertTrue(text.contains("J_wz_q4 = "), text),
+                // the prismatic q3 moves the flange along the fixed vertical: no turn, no x speed
+                () -> assertTrue(text.contains("J_wz_q3 = 0\n"), text),
+                () -> assertTrue(text.contains("J_vx_q3 = 0\n"), text));
+    }
 }
