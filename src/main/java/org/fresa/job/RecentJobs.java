@@ -20,6 +20,12 @@ public final class RecentJobs {
         this.store = store;
     }
 
+    /** The folder the store lives in (where the application keeps its other files too). */
+    public Path folder() {
+        Path parent = store.toAbsolutePath().getParent();
+        return parent != null ? parent : store.toAbsolutePath();
+    }
+
     /** The default store, {@code ~/.fresa/recent-jobs.txt}. */
     public static RecentJobs inUserHome() {
         return new RecentJobs(Path.of(System.getProperty("user.home"), ".fresa", "recent-jobs.txt"));

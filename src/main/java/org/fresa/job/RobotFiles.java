@@ -3,6 +3,7 @@ package org.fresa.job;
 import jakarta.xml.bind.JAXBContext;
 import jakarta.xml.bind.JAXBElement;
 import jakarta.xml.bind.JAXBException;
+import jakarta.xml.bind.Marshaller;
 import jakarta.xml.bind.UnmarshalException;
 import jakarta.xml.bind.Unmarshaller;
 import java.io.IOException;
@@ -13,8 +14,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
 import org.fresa.geom.Transform3;
@@ -26,6 +25,7 @@ import org.fresa.job.robotxml.RobotType;
 import org.fresa.job.robotxml.SerialType;
 import org.fresa.job.robotxml.TriceptType;
 import org.fresa.kin.DenavitHartenbergChain;
+import org.fresa.kin.DhExpression;
 import org.fresa.kin.DhJoint;
 import org.fresa.kin.JointLimit;
 import org.fresa.kin.Robot;
@@ -33,6 +33,7 @@ import org.fresa.kin.Robots;
 import org.fresa.kin.SerialRobot;
 import org.fresa.kin.TriceptRobot;
 import org.fresa.model.CamInputException;
+import org.fresa.model.ExactDecimal;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -42,8 +43,8 @@ import org.xml.sax.SAXParseException;
  */
 public final class RobotFiles {
 
-    private static final Pattern VARIABLE = Pattern.compile(
-            "\\s*q(\\d+)\\s*(?:([+-])\\s*([0-9]+(?:\\.[0-9]*)?(?:[eE][+-]?[0-9]+)?))?\\s*");
+    /** The highest joint number a cell may name (the reader then checks it is the cell's own joint). */
+    private static final int MAX_JOINT = 99;
 
     private RobotFiles() {
     }
@@ -133,30 +134,118 @@ public final class RobotFiles {
                 t.getEffectorLength(), legs, wrist);
     }
 
-    /** "qN", "qN + c" or "qN - c" for joint N: the offset c (0 for "qN"). */
+    /**
+     * The offset c of joint N's variable cell, an expression equal to qN + c ("qN", "q2 - 90",
+     * "q2 - 180/2"; see {@link DhExpression}).
+     */
     static double variableOffset(String file, int joint, String cell, String text) throws CamInputException {
-        Matcher m = VARIABLE.matcher(text);
-        if (!m.matches() || Integer.parseInt(m.group(1)) != joint) {
-            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be q" + joint + ", q" + joint
-                    + " + number or q" + joint + " - number, not '" + text + "'");
+        String expected = cell + " must be q" + joint + " plus a constant (q" + joint + ", q" + joint + " - 90, ...)";
+        DhExpression e;
+        try {
+            e = DhExpression.parse(text, MAX_JOINT);
+        } catch (IllegalArgumentException ex) {
+            throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "': "
+                    + ex.getMessage());
         }
-        if (m.group(2) == null) {
-            return 0;
+        if (e.coefficients().size() != 1 || e.coefficient(joint) != 1) {
+            throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "'");
         }
-        double c = Double.parseDouble(m.group(3));
-        return m.group(2).equals("-") ? -c : c;
+        return e.constant();
     }
 
     private static double number(String file, int joint, String cell, String text) throws CamInputException {
         try {
-            double v = Double.parseDouble(text.trim());
-            if (Double.isFinite(v)) {
-                return v;
+            DhExpression e = DhExpression.parse(text, MAX_JOINT);
+            if (e.isConstant()) {
+                return e.constant();
             }
-        } catch (NumberFormatException e) {
-            // reported below
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text
+                    + "': " + e.getMessage());
         }
         throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text + "'");
+    }
+
+    /**
+     * Writes a robot as a robot file (schemas/robot.xsd) that {@link #read} and {@code --robot FILE}
+     * read back as the same robot: numbers written exactly, the variable cell as "qN", "qN + c"
+     * or "qN - c", the tool as x, y, z (mm) and rx, ry, rz (deg, R = Rz Ry Rx). Atomic.
+     */
+    public static void write(Robot robot, Path file) throws IOException {
+        RobotType x = new RobotType();
+        x.setName(robot.name());
+        x.setVersion(1);
+        x.setDescription(robot.description());
+        if (robot instanceof SerialRobot s) {
+            SerialType st = new SerialType();
+            int i = 1;
+            for (DhJoint d : s.chain().joints()) {
+                JointType j = new JointType();
+                boolean rev = d.type() == org.fresa.kin.JointType.REVOLUTE;
+                j.setType(rev ? "revolute" : "prismatic");
+                j.setA(ExactDecimal.of(d.aMm()));
+                j.setAlpha(ExactDecimal.of(d.alphaDeg()));
+                j.setTheta(rev ? variable(i, d.thetaDeg()) : ExactDecimal.of(d.thetaDeg()));
+                j.setD(rev ? ExactDecimal.of(d.dMm()) : variable(i, d.dMm()));
+                j.setMin(d.qMin());
+                j.setMax(d.qMax());
+                st.getJoint().add(j);
+                i++;
+            }
+            Transform3 t = s.chain().tool();
+            if (!t.equals(Transform3.IDENTITY)) {
+                FrameType f = new FrameType();
+                org.fresa.geom.Vec3 zyx = t.zyxAnglesDeg();
+                f.setX(t.tx());
+                f.setY(t.ty());
+                f.setZ(t.tz());
+                f.setRz(zyx.x());
+                f.setRy(zyx.y());
+                f.setRx(zyx.z());
+                st.setTool(f);
+            }
+            st.setWristJoint(s.wristJoint() < 0 ? 0 : s.wristJoint() + 1);
+            x.setSerial(st);
+        } else if (robot instanceof TriceptRobot t) {
+            TriceptType tt = new TriceptType();
+            tt.setBaseRadius(t.baseRadiusMm());
+            tt.setPlatformRadius(t.platformRadiusMm());
+            tt.setCentreOffset(t.centreOffsetMm());
+            tt.setEffectorLength(t.effectorLengthMm());
+            for (JointLimit l : t.legs()) {
+                tt.getLeg().add(limit(l));
+            }
+            for (JointLimit l : t.wrist()) {
+                tt.getWrist().add(limit(l));
+            }
+            x.setTricept(tt);
+        }
+        AtomicFiles.write(file, out -> {
+            try {
+                Marshaller m = Holder.CONTEXT.createMarshaller();
+                m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, Boolean.TRUE);
+                m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
+                m.setSchema(Holder.SCHEMA);
+                m.marshal(new ObjectFactory().createRobot(x), out);
+            } catch (JAXBException e) {
+                throw new IOException("cannot write the robot: " + e.getMessage(), e);
+            }
+        });
+    }
+
+    private static String variable(int joint, double offset) {
+        String q = "q" + joint;
+        if (offset == 0) {
+            return q;
+        }
+        return q + (offset > 0 ? " + " : " - ") + ExactDecimal.of(Math.abs(offset));
+    }
+
+    private static LimitType limit(JointLimit l) {
+        LimitType t = new LimitType();
+        t.setMin(l.min());
+        t.setMax(l.max());
+        return t;
     }
 
     /** A robot's parameters for {@code fresa robots --json}. */

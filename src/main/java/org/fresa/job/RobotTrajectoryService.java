@@ -327,17 +327,41 @@ public final class RobotTrajectoryService {
     }
 
     private static void writeCharts(Robot robot, TrajectorySolver.Result r, OutputFolder out) throws IOException {
+        int n = robot.dof();
+        List<RobotCharts.JointSeries> series = jointSeries(robot, r);
+        double[][] err = positionErrorsMm(r);
+        out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
+                1000, 160 * n + 80, o));
+        out.write("error.png", o -> ChartFiles.writePng(
+                RobotCharts.positionErrors("Position error per axis, " + robot.name(), err), 1000, 500, o));
+    }
+
+    /** Each joint's values along the trajectory with its limits (NaN at unreachable points), for joints.png. */
+    public static List<RobotCharts.JointSeries> jointSeries(Robot robot, TrajectorySolver.Result r) {
         List<JointLimit> limits = robot.joints();
         int n = limits.size();
         int count = r.points().size();
         double[][] values = new double[n][count];
-        double[][] err = new double[count][3];
         for (int k = 0; k < count; k++) {
-            TrajectoryPoint p = r.points().get(k);
-            double[] q = p.q();
+            double[] q = r.points().get(k).q();
             for (int i = 0; i < n; i++) {
                 values[i][k] = q.length == n ? q[i] : Double.NaN;
             }
+        }
+        List<RobotCharts.JointSeries> series = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            JointLimit l = limits.get(i);
+            series.add(new RobotCharts.JointSeries(l.name(), l.type().unit(), l.min(), l.max(), values[i]));
+        }
+        return series;
+    }
+
+    /** Per point target - reached {x, y, z} (mm; NaN at unreachable points), for error.png. */
+    public static double[][] positionErrorsMm(TrajectorySolver.Result r) {
+        int count = r.points().size();
+        double[][] err = new double[count][3];
+        for (int k = 0; k < count; k++) {
+            TrajectoryPoint p = r.points().get(k);
             if (p.reached().isPresent()) {
                 Transform3 t = p.target();
                 Transform3 re = p.reached().get();
@@ -346,14 +370,6 @@ public final class RobotTrajectoryService {
                 err[k] = new double[] {Double.NaN, Double.NaN, Double.NaN};
             }
         }
-        List<RobotCharts.JointSeries> series = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            JointLimit l = limits.get(i);
-            series.add(new RobotCharts.JointSeries(l.name(), l.type().unit(), l.min(), l.max(), values[i]));
-        }
-        out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
-                1000, 160 * n + 80, o));
-        out.write("error.png", o -> ChartFiles.writePng(
-                RobotCharts.positionErrors("Position error per axis, " + robot.name(), err), 1000, 500, o));
+        return err;
     }
 }

@@ -3,18 +3,33 @@ package org.fresa.ui;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
+import java.awt.Font;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Polygon;
 import java.awt.RenderingHints;
+import java.awt.event.ActionEvent;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.awt.geom.Line2D;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import java.util.Objects;
+import javax.swing.AbstractAction;
 import javax.swing.JComponent;
+import javax.swing.KeyStroke;
+import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.kin.TrajectoryPoint;
 
 /**
- * The robot cell in two projections side by side: from above (X right, Y up) and from the side
- * (X right, Z up), same scale, robot base frame in mm. Points green ok, red unreachable, orange
- * relink; the robot drawn as links at the selected point.
+ * The robot cell in 3D (robot base frame, mm, z up), drawn with Java2D through an
+ * {@link OrbitCamera}: floor grid, table top, workpiece box, the toolpath coloured by status
+ * (green ok, red unreachable, orange relink), the robot as links at the replayed point and the
+ * base, table, workpiece and tool frames. Drag or the arrow keys turn the view, the wheel or
+ * +/- zoom, Home resets.
  */
 final class CellView extends JComponent {
 
@@ -22,116 +37,224 @@ final class CellView extends JComponent {
     static final Color OK = new Color(0, 140, 60);
     static final Color UNREACHABLE = new Color(210, 0, 0);
     static final Color RELINK = new Color(230, 130, 0);
+    private static final Color[] AXES = {new Color(210, 40, 40), new Color(30, 150, 50), new Color(40, 80, 220)};
+    private static final double KEY_STEP_DEG = 5;
+    private static final double DRAG_DEG_PER_PIXEL = 0.5;
 
     private final PositionViewModel vm;
+    private final transient OrbitCamera camera = new OrbitCamera();
+    private transient Object fittedTo;
+    private int lastX;
+    private int lastY;
 
     CellView(PositionViewModel vm) {
         this.vm = vm;
-        setPreferredSize(new Dimension(700, 320));
+        setPreferredSize(new Dimension(640, 420));
         setName("position-cell");
-        setToolTipText("The cell from above (left) and from the side (right); base frame in mm");
+        setFocusable(true);
+        setToolTipText("The cell in 3D: drag or arrow keys to turn, wheel or +/- to zoom, Home to reset");
+        MouseAdapter mouse = new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                requestFocusInWindow();
+                lastX = e.getX();
+                lastY = e.getY();
+            }
+
+            @Override
+            public void mouseDragged(MouseEvent e) {
+                camera.rotate(-(e.getX() - lastX) * DRAG_DEG_PER_PIXEL, (e.getY() - lastY) * DRAG_DEG_PER_PIXEL);
+                lastX = e.getX();
+                lastY = e.getY();
+                repaint();
+            }
+
+            @Override
+            public void mouseWheelMoved(MouseWheelEvent e) {
+                camera.zoomBy(Math.pow(1.1, -e.getPreciseWheelRotation()));
+                repaint();
+            }
+        };
+        addMouseListener(mouse);
+        addMouseMotionListener(mouse);
+        addMouseWheelListener(mouse);
+        bind("LEFT", "turn-left", () -> camera.rotate(KEY_STEP_DEG, 0));
+        bind("RIGHT", "turn-right", () -> camera.rotate(-KEY_STEP_DEG, 0));
+        bind("UP", "turn-up", () -> camera.rotate(0, KEY_STEP_DEG));
+        bind("DOWN", "turn-down", () -> camera.rotate(0, -KEY_STEP_DEG));
+        bind("HOME", "reset-view", camera::reset);
+        bind("PLUS", "zoom-in", () -> camera.zoomBy(1.25));
+        bind("EQUALS", "zoom-in", () -> camera.zoomBy(1.25));
+        bind("ADD", "zoom-in", () -> camera.zoomBy(1.25));
+        bind("MINUS", "zoom-out", () -> camera.zoomBy(0.8));
+        bind("SUBTRACT", "zoom-out", () -> camera.zoomBy(0.8));
+    }
+
+    /** What is drawn now (the GUI test checks the replayed robot). */
+    CellScene scene() {
+        return vm.scene();
+    }
+
+    /** The camera (the GUI test turns it). */
+    OrbitCamera camera() {
+        return camera;
+    }
+
+    private void bind(String key, String name, Runnable r) {
+        getInputMap(WHEN_FOCUSED).put(KeyStroke.getKeyStroke(key), name);
+        getActionMap().put(name, new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                r.run();
+                repaint();
+            }
+        });
     }
 
     @Override
     protected void paintComponent(Graphics g0) {
         Graphics2D g = (Graphics2D) g0.create();
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setColor(Color.WHITE);
-        g.fillRect(0, 0, getWidth(), getHeight());
-        List<PositionViewModel.CellPoint> pts = vm.cellPoints();
-        List<List<Vec3>> links = vm.robotLinks();
-        // one scale for both views, fitted to everything drawn
-        double minX = 0, maxX = 0, minY = 0, maxY = 0, minZ = 0, maxZ = 0;
-        java.util.List<Vec3> all = new java.util.ArrayList<>();
-        all.add(Vec3.ZERO);
-        all.add(vm.tableOrigin());
-        all.add(vm.pieceOrigin());
-        pts.forEach(p -> all.add(p.at()));
-        links.forEach(all::addAll);
-        for (Vec3 v : all) {
-            minX = Math.min(minX, v.x());
-            maxX = Math.max(maxX, v.x());
-            minY = Math.min(minY, v.y());
-            maxY = Math.max(maxY, v.y());
-            minZ = Math.min(minZ, v.z());
-            maxZ = Math.max(maxZ, v.z());
+        try {
+            paintScene(g, vm.scene());
+        } finally {
+            g.dispose();
         }
-        double pad = 80;
-        minX -= pad;
-        maxX += pad;
-        minY -= pad;
-        maxY += pad;
-        minZ -= pad;
-        maxZ += pad;
-        int half = getWidth() / 2;
-        int h = getHeight() - 24;
-        double s = Math.min(Math.min((half - 20) / (maxX - minX), (h - 20) / (maxY - minY)),
-                Math.min((half - 20) / (maxX - minX), (h - 20) / (maxZ - minZ)));
-        View top = new View(10, 20, s, minX, maxY, false);
-        View side = new View(half + 10, 20, s, minX, maxZ, true);
-        g.setColor(Color.DARK_GRAY);
-        g.drawString("From above (X right, Y up)", 10, 14);
-        g.drawString("From the side (X right, Z up)", half + 10, 14);
-        g.setColor(Color.LIGHT_GRAY);
-        g.drawLine(half, 0, half, getHeight());
-        for (View v : List.of(top, side)) {
-            // base, table and workpiece origins
-            g.setColor(Color.BLACK);
-            int[] b = v.at(Vec3.ZERO);
-            g.fillRect(b[0] - 6, b[1] - 6, 12, 12);
-            g.drawString("base", b[0] + 8, b[1] + 14);
-            int[] t = v.at(vm.tableOrigin());
-            g.setColor(new Color(120, 90, 40));
-            g.drawRect(t[0] - 5, t[1] - 5, 10, 10);
-            g.drawString("table", t[0] + 8, t[1] - 6);
-            int[] pc = v.at(vm.pieceOrigin());
-            g.setColor(new Color(40, 70, 160));
-            g.drawOval(pc[0] - 4, pc[1] - 4, 8, 8);
-            for (PositionViewModel.CellPoint p : pts) {
-                g.setColor(colour(p.status()));
-                int[] xy = v.at(p.at());
-                g.fillRect(xy[0] - 1, xy[1] - 1, 3, 3);
-            }
-            g.setStroke(new BasicStroke(4f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-            g.setColor(new Color(90, 90, 90, 200));
-            for (List<Vec3> line : links) {
-                for (int i = 1; i < line.size(); i++) {
-                    int[] a = v.at(line.get(i - 1));
-                    int[] c = v.at(line.get(i));
-                    g.drawLine(a[0], a[1], c[0], c[1]);
-                }
-            }
-            g.setStroke(new BasicStroke(2f));
-            if (!pts.isEmpty()) {
-                // the replayed point, also when the robot cannot reach it
-                PositionViewModel.CellPoint sel = pts.get(vm.selected());
-                int[] xy = v.at(sel.at());
-                g.setColor(colour(sel.status()));
-                g.drawOval(xy[0] - 7, xy[1] - 7, 14, 14);
-            }
-            g.setStroke(new BasicStroke(1f));
-            g.setColor(Color.BLACK);
-            for (List<Vec3> line : links) {
-                for (Vec3 joint : line) {
-                    int[] a = v.at(joint);
-                    g.fillOval(a[0] - 3, a[1] - 3, 6, 6);
-                }
-            }
-        }
-        int y = getHeight() - 6;
-        legend(g, 10, y, OK, "ok");
-        legend(g, 60, y, UNREACHABLE, "unreachable");
-        legend(g, 160, y, RELINK, "relink");
-        g.setColor(Color.DARK_GRAY);
-        g.drawString(String.format(java.util.Locale.ROOT, "scale 1 px = %.1f mm", 1 / s), 240, y);
-        g.dispose();
     }
 
-    private static void legend(Graphics2D g, int x, int y, Color c, String text) {
-        g.setColor(c);
-        g.fillRect(x, y - 8, 8, 8);
-        g.setColor(Color.DARK_GRAY);
-        g.drawString(text, x + 11, y);
+    private void paintScene(Graphics2D g, CellScene sc) {
+        int w = getWidth();
+        int h = getHeight();
+        g.setFont(getFont() != null ? getFont() : new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+        g.setColor(new Color(250, 251, 253));
+        g.fillRect(0, 0, w, h);
+        Object key = vm.fitKey();
+        if (!Objects.equals(key, fittedTo)) {
+            camera.fit(sc.points());
+            fittedTo = key;
+        }
+
+        g.setStroke(new BasicStroke(1f));
+        g.setColor(new Color(222, 226, 232));
+        for (List<Vec3> line : sc.floor()) {
+            draw(g, line.get(0), line.get(1), w, h);
+        }
+        if (!sc.table().isEmpty()) {
+            Polygon p = new Polygon();
+            for (Vec3 v : sc.table()) {
+                double[] s = camera.project(v, w, h);
+                p.addPoint((int) Math.round(s[0]), (int) Math.round(s[1]));
+            }
+            g.setColor(new Color(205, 170, 120, 140));
+            g.fillPolygon(p);
+            g.setColor(new Color(140, 100, 50));
+            g.drawPolygon(p);
+        }
+        g.setStroke(new BasicStroke(1.6f));
+        g.setColor(new Color(60, 90, 160));
+        for (List<Vec3> e : sc.workpiece()) {
+            draw(g, e.get(0), e.get(1), w, h);
+        }
+        g.setStroke(new BasicStroke(1.3f));
+        for (CellScene.PathSegment s : sc.path()) {
+            g.setColor(colour(s.status()));
+            draw(g, s.from(), s.to(), w, h);
+        }
+        paintRobot(g, sc, w, h);
+        List<java.awt.Rectangle> labels = new ArrayList<>();
+        for (CellScene.Frame f : sc.frames()) {
+            paintFrame(g, f, w, h, labels);
+        }
+        sc.selected().ifPresent(p -> {
+            double[] s = camera.project(p.at(), w, h);
+            g.setStroke(new BasicStroke(2f));
+            g.setColor(colour(p.status()));
+            g.drawOval((int) Math.round(s[0]) - 7, (int) Math.round(s[1]) - 7, 14, 14);
+        });
+        g.setFont(g.getFont().deriveFont(Font.PLAIN, 11f));
+        g.setColor(new Color(90, 90, 90));
+        String hint = String.format(java.util.Locale.ROOT,
+                "%s; view az %.0f deg, el %.0f deg, zoom %.2f. Drag or arrows: turn; wheel or +/-: zoom; Home: reset",
+                vm.robot().name(), camera.azimuthDeg(), camera.elevationDeg(), camera.zoom());
+        g.drawString(hint, 8, h - 8);
+        int y = 16;
+        g.setColor(OK);
+        g.drawString("ok", 8, y);
+        g.setColor(RELINK);
+        g.drawString("relink", 30, y);
+        g.setColor(UNREACHABLE);
+        g.drawString("unreachable", 72, y);
+    }
+
+    /** Links far from the camera first, so that nearer ones are drawn over them. */
+    private void paintRobot(Graphics2D g, CellScene sc, int w, int h) {
+        record Piece(Vec3 a, Vec3 b, double depth) {
+        }
+        List<Piece> pieces = new ArrayList<>();
+        for (List<Vec3> line : sc.links()) {
+            for (int i = 1; i < line.size(); i++) {
+                Vec3 a = line.get(i - 1);
+                Vec3 b = line.get(i);
+                pieces.add(new Piece(a, b, camera.project(a.interpolate(b, 0.5), w, h)[2]));
+            }
+        }
+        pieces.sort(Comparator.comparingDouble(Piece::depth));
+        g.setStroke(new BasicStroke(9f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        for (Piece p : pieces) {
+            g.setColor(new Color(110, 115, 125));
+            draw(g, p.a(), p.b(), w, h);
+        }
+        g.setStroke(new BasicStroke(5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        for (Piece p : pieces) {
+            g.setColor(new Color(245, 160, 40));
+            draw(g, p.a(), p.b(), w, h);
+        }
+        g.setStroke(new BasicStroke(1.2f));
+        for (Vec3 j : sc.joints()) {
+            double[] s = camera.project(j, w, h);
+            int x = (int) Math.round(s[0]);
+            int y = (int) Math.round(s[1]);
+            g.setColor(new Color(50, 50, 60));
+            g.fillOval(x - 5, y - 5, 10, 10);
+            g.setColor(Color.WHITE);
+            g.drawOval(x - 5, y - 5, 10, 10);
+        }
+    }
+
+    private void paintFrame(Graphics2D g, CellScene.Frame f, int w, int h, List<java.awt.Rectangle> labels) {
+        Transform3 t = f.pose();
+        Vec3 o = t.translationPart();
+        Vec3[] axes = {t.xAxis(), t.yAxis(), t.zAxis()};
+        g.setStroke(new BasicStroke(2.2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        for (int i = 0; i < 3; i++) {
+            g.setColor(AXES[i]);
+            Vec3 tip = o.plus(axes[i].times(f.axisMm()));
+            draw(g, o, tip, w, h);
+            double[] s = camera.project(tip, w, h);
+            g.drawString(i == 0 ? "x" : i == 1 ? "y" : "z", (int) s[0] + 3, (int) s[1] - 3);
+        }
+        double[] s = camera.project(o, w, h);
+        // frames often share a place (table and workpiece): their names are stacked, not overprinted
+        java.awt.FontMetrics fm = g.getFontMetrics();
+        java.awt.Rectangle r = new java.awt.Rectangle((int) s[0] + 6, (int) s[1] + 4, fm.stringWidth(f.name()),
+                fm.getHeight());
+        while (labels.stream().anyMatch(r::intersects)) {
+            r.translate(0, fm.getHeight());
+        }
+        labels.add(r);
+        g.setColor(new Color(255, 255, 255, 200));
+        g.fillRect(r.x - 1, r.y, r.width + 2, r.height);
+        g.setColor(new Color(30, 30, 30));
+        g.drawString(f.name(), r.x, r.y + fm.getAscent());
+    }
+
+    private void draw(Graphics2D g, Vec3 a, Vec3 b, int w, int h) {
+        double[] p = camera.project(a, w, h);
+        double[] q = camera.project(b, w, h);
+        g.draw(new Line2D.Double(p[0], p[1], q[0], q[1]));
     }
 
     static Color colour(TrajectoryPoint.Status s) {
@@ -140,14 +263,5 @@ final class CellView extends JComponent {
             case UNREACHABLE -> UNREACHABLE;
             case RELINK -> RELINK;
         };
-    }
-
-    /** A projection: x to the right, y (top view) or z (side view) up. */
-    private record View(int left, int top, double scale, double minX, double maxUp, boolean side) {
-        int[] at(Vec3 p) {
-            double up = side ? p.z() : p.y();
-            return new int[] {left + (int) Math.round((p.x() - minX) * scale),
-                top + (int) Math.round((maxUp - up) * scale)};
-        }
     }
 }

@@ -109,6 +109,11 @@ public final class MainViewModel {
         recent.add(target);
     }
 
+    /** Where robots edited in the Robot tab are kept until saved elsewhere (next to the recent jobs). */
+    public Path editedRobotsFolder() {
+        return recent.folder().resolve("robots");
+    }
+
     public List<Path> recentJobs() {
         return recent.list();
     }

@@ -16,16 +16,30 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSlider;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
+import java.awt.BasicStroke;
+import org.fresa.chart.RobotCharts;
 import org.fresa.job.JobSettings;
+import org.fresa.job.RobotFiles;
+import org.fresa.job.RobotTrajectoryService;
+import org.fresa.model.CamInputException;
+import org.jfree.chart.ChartPanel;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.plot.CombinedDomainXYPlot;
+import org.jfree.chart.plot.ValueMarker;
+import org.jfree.chart.plot.XYPlot;
 
 /**
  * The Position tab: where the table stands in front of the robot and the workpiece on the table,
  * Compute (the STEP-NC file of the STEP-NC tab with the robot of the Robot tab, in the
- * background), the cell seen from above and from the side, a replay slider and the summary.
+ * background), the cell in 3D, the results (joint values with their limits and the position
+ * error per axis along the path, the summary) and a replay slider that moves the robot along
+ * the path in the 3D view and the marker in the plots.
  */
 final class PositionTab implements ModuleTab {
 
@@ -45,7 +59,13 @@ final class PositionTab implements ModuleTab {
     private final JLabel pointLabel = new JLabel(" ");
     private final JTextArea summary = new JTextArea(8, 26);
     private final CellView cell = new CellView(vm);
+    private final JTabbedPane results = new JTabbedPane();
+    private final ChartPanel jointsChart = chartPanel();
+    private final ChartPanel errorChart = chartPanel();
+    private final transient ValueMarker jointsMarker = marker();
+    private final transient ValueMarker errorMarker = marker();
     private boolean loading;
+    private String drawnRobot = "";
 
     PositionTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -73,6 +93,8 @@ final class PositionTab implements ModuleTab {
         replay.addChangeListener(e -> {
             vm.select(replay.getValue());
             pointLabel.setText(vm.selectedText());
+            jointsMarker.setValue(vm.selected() + 1);
+            errorMarker.setValue(vm.selected() + 1);
             cell.repaint();
         });
         JLabel replayLabel = new JLabel("Replay point:");
@@ -89,14 +111,26 @@ final class PositionTab implements ModuleTab {
         JLabel summaryLabel = new JLabel("Summary");
         summaryLabel.setDisplayedMnemonic(KeyEvent.VK_U);
         summaryLabel.setLabelFor(summary);
-        JPanel right = new JPanel(new BorderLayout());
-        right.add(summaryLabel, BorderLayout.NORTH);
-        right.add(new JScrollPane(summary), BorderLayout.CENTER);
+        JPanel summaryPanel = new JPanel(new BorderLayout());
+        summaryPanel.add(summaryLabel, BorderLayout.NORTH);
+        summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
+        results.setName("position-results");
+        jointsChart.setName("position-joints-chart");
+        errorChart.setName("position-error-chart");
+        results.addTab("Joints", jointsChart);
+        results.setMnemonicAt(0, KeyEvent.VK_J);
+        results.addTab("Position error", errorChart);
+        results.setMnemonicAt(1, KeyEvent.VK_O);
+        results.addTab("Summary", summaryPanel);
+        results.setMnemonicAt(2, KeyEvent.VK_M);
+        results.setPreferredSize(new java.awt.Dimension(430, 420));
 
+        JSplitPane views = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, cell, results);
+        views.setResizeWeight(0.6);
+        views.setContinuousLayout(true);
         JPanel centre = new JPanel(new BorderLayout(4, 4));
-        centre.add(cell, BorderLayout.CENTER);
+        centre.add(views, BorderLayout.CENTER);
         centre.add(replayPanel, BorderLayout.SOUTH);
-        centre.add(right, BorderLayout.EAST);
 
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(top, BorderLayout.NORTH);
@@ -172,6 +206,15 @@ final class PositionTab implements ModuleTab {
         }
         loading = true;
         try {
+            String key = robotKey(r.robot());
+            if (!key.equals(drawnRobot)) {
+                try {
+                    vm.setRobot(RobotFiles.load(r.robot()));
+                    drawnRobot = key;
+                } catch (CamInputException ex) {
+                    // the Robot tab reports a robot it cannot read; the view keeps the last one
+                }
+            }
             vm.load(r);
             for (int i = 0; i < robotTable.length; i++) {
                 setIfDifferent(robotTable[i], vm.robotTable(i));
@@ -183,6 +226,17 @@ final class PositionTab implements ModuleTab {
             loading = false;
         }
         validateFields();
+    }
+
+    /** A built-in name, or a file with the time it was written (a file saved again is read again). */
+    private static String robotKey(String nameOrFile) {
+        try {
+            Path p = Path.of(nameOrFile);
+            return java.nio.file.Files.isRegularFile(p) ? nameOrFile + "@" + java.nio.file.Files.getLastModifiedTime(p)
+                    : nameOrFile;
+        } catch (java.io.IOException | java.nio.file.InvalidPathException e) {
+            return nameOrFile;
+        }
     }
 
     private static void setIfDifferent(JTextField f, String text) {
@@ -232,7 +286,9 @@ final class PositionTab implements ModuleTab {
             return;
         }
         Path file = stepnc.get().file();
-        JobSettings.RobotSettings r = vm.applyTo(ctx.model().job()).robot().orElseThrow();
+        // computing the cell makes this a robot job: Job > Run and fresa run then do the same
+        ctx.model().setJob(vm.applyTo(ctx.model().job()).withTask(org.fresa.job.JobTask.ROBOT));
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         java.util.List<String> formats = r.formats();
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> PositionViewModel.compute(file,
                 r.robot(), r.robotTable(), r.tablePiece(), formats, progress), solved -> {
@@ -243,7 +299,58 @@ final class PositionTab implements ModuleTab {
                 });
     }
 
+    private static ChartPanel chartPanel() {
+        ChartPanel p = new ChartPanel(null, false, false, false, true, false) {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void paintComponent(java.awt.Graphics g) {
+                super.paintComponent(g);
+                if (getChart() == null) {
+                    g.setColor(Color.GRAY);
+                    g.drawString("Press Compute: the plots of the trajectory appear here.", 16, 30);
+                }
+            }
+        };
+        p.setMinimumDrawWidth(10);
+        p.setMinimumDrawHeight(10);
+        p.setMaximumDrawWidth(4000);
+        p.setMaximumDrawHeight(3000);
+        return p;
+    }
+
+    private static ValueMarker marker() {
+        ValueMarker m = new ValueMarker(1, new Color(90, 90, 90), new BasicStroke(1.5f));
+        return m;
+    }
+
+    /** The two plots of the result (joints with limits, error per axis), with the replayed point marked. */
+    private void showCharts() {
+        if (vm.result().isEmpty()) {
+            jointsChart.setChart(null);
+            errorChart.setChart(null);
+            return;
+        }
+        RobotTrajectoryService.Solved s = vm.result().get();
+        String robot = s.request().robot().name();
+        JFreeChart joints = RobotCharts.joints("Joint values, " + robot,
+                RobotTrajectoryService.jointSeries(s.request().robot(), s.result()));
+        if (joints.getPlot() instanceof CombinedDomainXYPlot c) {
+            for (Object sub : c.getSubplots()) {
+                ((XYPlot) sub).addDomainMarker(jointsMarker);
+            }
+        }
+        JFreeChart error = RobotCharts.positionErrors("Position error per axis, " + robot,
+                RobotTrajectoryService.positionErrorsMm(s.result()));
+        error.getXYPlot().addDomainMarker(errorMarker);
+        jointsMarker.setValue(vm.selected() + 1);
+        errorMarker.setValue(vm.selected() + 1);
+        jointsChart.setChart(joints);
+        errorChart.setChart(error);
+    }
+
     private void showResult() {
+        showCharts();
         summary.setText(String.join("\n", vm.summary()));
         replay.setMaximum(Math.max(0, vm.pointCount() - 1));
         replay.setValue(0);

@@ -41,6 +41,17 @@ final class PositionViewModel {
     private final String[] tablePiece = {"0", "0", "0", "0", "0", "0"};
     private Optional<RobotTrajectoryService.Solved> solved = Optional.empty();
     private int selected;
+    private Robot robot = org.fresa.kin.Robots.irb140();
+
+    /** The robot drawn before a trajectory is computed (the job's robot). */
+    void setRobot(Robot r) {
+        robot = java.util.Objects.requireNonNull(r, "robot");
+    }
+
+    /** The robot drawn: the computed trajectory's, else the job's. */
+    Robot robot() {
+        return solved.map(s -> s.request().robot()).orElse(robot);
+    }
 
     String robotTable(int i) {
         return robotTable[i];
@@ -209,6 +220,40 @@ final class PositionViewModel {
             }
         }
         return sb.toString();
+    }
+
+    /**
+     * What the 3D view draws: the robot at the replayed point (at the last reachable point before
+     * it when that one is unreachable; in its home pose before anything is computed), the table,
+     * workpiece and toolpath, and the frames.
+     */
+    CellScene scene() {
+        if (solved.isEmpty()) {
+            Transform3 table = problems().isEmpty() ? robotTablePlacement().toTransform() : Transform3.IDENTITY;
+            Transform3 piece = problems().isEmpty() ? table.times(tablePiecePlacement().toTransform()) : table;
+            return CellScene.of(robot, CellScene.homePose(robot), table, piece, Optional.empty(), List.of(), -1);
+        }
+        RobotTrajectoryService.Solved s = solved.get();
+        List<TrajectoryPoint> pts = s.result().points();
+        double[] q = CellScene.homePose(s.request().robot());
+        for (int i = Math.min(selected, pts.size() - 1); i >= 0; i--) {
+            if (pts.get(i).status() != TrajectoryPoint.Status.UNREACHABLE) {
+                q = pts.get(i).q();
+                break;
+            }
+        }
+        Transform3 table = s.request().robotTable().toTransform();
+        Transform3 piece = table.times(s.request().tablePiece().toTransform());
+        return CellScene.of(s.request().robot(), q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+    }
+
+    /**
+     * What the 3D view fits its camera to: it refits when this changes (a new result, other
+     * placements or robot), not while the replay moves the robot.
+     */
+    Object fitKey() {
+        return List.of(solved.map(System::identityHashCode).orElse(0), String.join(",", robotTable),
+                String.join(",", tablePiece), System.identityHashCode(robot()));
     }
 
     /** Points of the toolpath in the robot base frame, with their status. */

@@ -1,12 +1,20 @@
 package org.fresa.ui;
 
 import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Component;
 import java.awt.FlowLayout;
 import java.awt.Font;
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
 import java.awt.event.KeyEvent;
-import java.util.IdentityHashMap;
-import java.util.Map;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
 import javax.swing.BorderFactory;
+import javax.swing.DefaultCellEditor;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
@@ -17,33 +25,57 @@ import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTable;
 import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import javax.swing.SwingWorker;
+import javax.swing.Timer;
+import javax.swing.event.DocumentEvent;
+import javax.swing.event.DocumentListener;
 import javax.swing.filechooser.FileNameExtensionFilter;
-import javax.swing.table.DefaultTableModel;
+import javax.swing.table.AbstractTableModel;
+import javax.swing.table.DefaultTableCellRenderer;
 import org.fresa.kin.Robot;
 import org.fresa.model.CamInputException;
 
 /**
- * The Robot tab: choose a built-in robot or open a robot file, read its DH table and parameters,
- * and its symbolic forward kinematics (computed in the background, once per robot).
+ * The Robot tab: choose a built-in robot or open a robot file, edit its DH table (type, theta,
+ * d, a, alpha as expressions such as {@code q2 - 90}, the limits), its tool frame or Tricept
+ * dimensions, save it as a robot file, and read its symbolic forward kinematics, derived again
+ * in the background whenever the table changes. A valid edited robot is kept as a file and named
+ * in the job, so that Compute, Job &gt; Run and {@code fresa run} all use it.
  */
 final class RobotTab implements ModuleTab {
+
+    private static final Color BAD = new Color(255, 215, 215);
+    private static final Color READ_ONLY = new Color(238, 238, 238);
 
     private final AppContext ctx;
     private final RobotViewModel vm = new RobotViewModel();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final JComboBox<String> robots = new JComboBox<>(RobotViewModel.builtIns().toArray(String[]::new));
-    private final DefaultTableModel table = new DefaultTableModel(RobotViewModel.COLUMNS, 0) {
+    private final DhModel table = new DhModel();
+    private final JTable dh = new JTable(table) {
         private static final long serialVersionUID = 1L;
 
+        /** Typing into a cell replaces its text, as in a spreadsheet; F2 or a double click edits it. */
         @Override
-        public boolean isCellEditable(int row, int column) {
-            return false;
+        public boolean editCellAt(int row, int column, java.util.EventObject e) {
+            boolean editing = super.editCellAt(row, column, e);
+            if (editing && e instanceof KeyEvent && getEditorComponent() instanceof JTextField f) {
+                f.setText("");
+            }
+            return editing;
         }
     };
-    private final JTextArea params = new JTextArea(5, 40);
+    private final JLabel messages = new JLabel(" ");
+    private final JLabel uses = new JLabel(" ");
+    private final JPanel paramPanel = new JPanel(new GridBagLayout());
+    private final JTextArea params = new JTextArea(3, 40);
     private final JTextArea symbolic = new JTextArea(12, 60);
-    private final Map<Robot, String> symbolicCache = new IdentityHashMap<>();
+    private final Timer commitTimer;
+    private JTextField[] paramFields = new JTextField[0];
     private boolean updating;
+    private int symbolicGeneration;
+    private Robot symbolicOf;
 
     RobotTab(AppContext ctx) {
         this.ctx = ctx;
@@ -61,41 +93,67 @@ final class RobotTab implements ModuleTab {
         open.setName("robot-open");
         open.setMnemonic(KeyEvent.VK_O);
         open.addActionListener(e -> openFile());
+        JButton save = new JButton("Save robot as file...");
+        save.setName("robot-save");
+        save.setMnemonic(KeyEvent.VK_A);
+        save.addActionListener(e -> saveFile());
         JButton fk = new JButton("Symbolic FK");
         fk.setName("robot-symbolic");
         fk.setMnemonic(KeyEvent.VK_K);
         fk.addActionListener(e -> computeSymbolic());
+        JButton export = new JButton("Export symbolic FK...");
+        export.setName("robot-export");
+        export.setMnemonic(KeyEvent.VK_E);
+        export.addActionListener(e -> exportSymbolic());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(robotLabel);
         top.add(robots);
         top.add(open);
+        top.add(save);
         top.add(fk);
+        top.add(export);
 
-        JTable dh = new JTable(table);
         dh.setName("robot-dh");
         dh.setFillsViewportHeight(true);
-        JLabel dhLabel = new JLabel("Denavit-Hartenberg table (A = Rz(theta) Tz(d) Tx(a) Rx(alpha))");
+        dh.setRowHeight(Math.max(dh.getRowHeight(), 22));
+        dh.setSurrendersFocusOnKeystroke(true);
+        dh.putClientProperty("terminateEditOnFocusLost", Boolean.TRUE);
+        dh.setDefaultRenderer(Object.class, new CellRenderer());
+        JComboBox<String> types = new JComboBox<>(new String[] {"R", "P"});
+        types.setName("robot-dh-type");
+        dh.getColumnModel().getColumn(RobotViewModel.TYPE).setCellEditor(new DefaultCellEditor(types));
+        for (int c = 0; c < RobotViewModel.COLUMNS.length; c++) {
+            dh.getColumnModel().getColumn(c).setPreferredWidth(c == 0 ? 45 : c == RobotViewModel.TYPE ? 70 : 150);
+        }
+        JLabel dhLabel = new JLabel("Denavit-Hartenberg table, A = Rz(theta) Tz(d) Tx(a) Rx(alpha); cells are"
+                + " expressions such as q2 - 90 (type to replace, F2 to edit, Enter to commit)");
         dhLabel.setDisplayedMnemonic(KeyEvent.VK_D);
         dhLabel.setLabelFor(dh);
-        params.setEditable(false);
-        params.setName("robot-parameters");
-        JLabel paramLabel = new JLabel("Parameters");
-        paramLabel.setDisplayedMnemonic(KeyEvent.VK_P);
-        paramLabel.setLabelFor(params);
-        JPanel upper = new JPanel(new BorderLayout());
+        messages.setName("robot-messages");
+        messages.setForeground(new Color(170, 0, 0));
+        uses.setName("robot-uses");
+        JPanel upper = new JPanel(new BorderLayout(4, 4));
         upper.add(dhLabel, BorderLayout.NORTH);
         JScrollPane dhScroll = new JScrollPane(dh);
-        dhScroll.setPreferredSize(new java.awt.Dimension(700, 170));
+        dhScroll.setPreferredSize(new java.awt.Dimension(700, 7 * dh.getRowHeight() + 8));
         upper.add(dhScroll, BorderLayout.CENTER);
-        JPanel paramPanel = new JPanel(new BorderLayout());
-        paramPanel.add(paramLabel, BorderLayout.NORTH);
-        paramPanel.add(params, BorderLayout.CENTER);
-        upper.add(paramPanel, BorderLayout.SOUTH);
+        JPanel south = new JPanel(new BorderLayout(4, 2));
+        JPanel msgs = new JPanel(new java.awt.GridLayout(2, 1));
+        msgs.add(messages);
+        msgs.add(uses);
+        south.add(msgs, BorderLayout.NORTH);
+        paramPanel.setBorder(BorderFactory.createTitledBorder("Parameters"));
+        south.add(paramPanel, BorderLayout.CENTER);
+        params.setEditable(false);
+        params.setName("robot-parameters");
+        params.setBackground(panel.getBackground());
+        south.add(params, BorderLayout.SOUTH);
+        upper.add(south, BorderLayout.SOUTH);
 
         symbolic.setEditable(false);
         symbolic.setName("robot-fk");
         symbolic.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        JLabel symLabel = new JLabel("Symbolic forward kinematics (Symja)");
+        JLabel symLabel = new JLabel("Symbolic forward kinematics (Symja), derived from the table above");
         symLabel.setDisplayedMnemonic(KeyEvent.VK_S);
         symLabel.setLabelFor(symbolic);
         JPanel lower = new JPanel(new BorderLayout());
@@ -103,10 +161,12 @@ final class RobotTab implements ModuleTab {
         lower.add(new JScrollPane(symbolic), BorderLayout.CENTER);
 
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, upper, lower);
-        split.setResizeWeight(0.5);
+        split.setResizeWeight(0);
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(top, BorderLayout.NORTH);
         panel.add(split, BorderLayout.CENTER);
+        commitTimer = new Timer(350, e -> commit());
+        commitTimer.setRepeats(false);
         ctx.model().addListener(e -> {
             if (MainViewModel.JOB.equals(e.getPropertyName())) {
                 vm.fromJob(ctx.model().job()).ifPresent(this::chooseQuietly);
@@ -123,6 +183,67 @@ final class RobotTab implements ModuleTab {
     @Override
     public JComponent component() {
         return panel;
+    }
+
+    /** The table model over the view model's cells. */
+    private final class DhModel extends AbstractTableModel {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public int getRowCount() {
+            return vm.rowCount();
+        }
+
+        @Override
+        public int getColumnCount() {
+            return RobotViewModel.COLUMNS.length;
+        }
+
+        @Override
+        public String getColumnName(int c) {
+            return RobotViewModel.COLUMNS[c];
+        }
+
+        @Override
+        public Object getValueAt(int r, int c) {
+            return vm.cell(r, c);
+        }
+
+        @Override
+        public boolean isCellEditable(int r, int c) {
+            return vm.isEditable(r, c);
+        }
+
+        @Override
+        public void setValueAt(Object v, int r, int c) {
+            if (v == null || v.toString().equals(vm.cell(r, c))) {
+                return;
+            }
+            vm.setCell(r, c, v.toString());
+            fireTableRowsUpdated(r, r);
+            edited();
+        }
+    }
+
+    /** Marks bad cells red with their message as tooltip, read-only cells grey. */
+    private final class CellRenderer extends DefaultTableCellRenderer {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public Component getTableCellRendererComponent(JTable t, Object value, boolean selected, boolean focus,
+                int row, int col) {
+            Component c = super.getTableCellRendererComponent(t, value, selected, focus, row, col);
+            var problem = vm.problem(row, col);
+            setToolTipText(problem.orElse(vm.isEditable(row, col) ? "Edit: type, then Enter" : null));
+            if (problem.isPresent()) {
+                c.setBackground(BAD);
+                c.setForeground(Color.BLACK);
+            } else if (!selected) {
+                c.setBackground(vm.isEditable(row, col) ? Color.WHITE : READ_ONLY);
+                c.setForeground(Color.BLACK);
+            }
+            return c;
+        }
     }
 
     private void choose(String nameOrFile) {
@@ -153,39 +274,203 @@ final class RobotTab implements ModuleTab {
         }
     }
 
+    private void saveFile() {
+        if (vm.edited().isEmpty()) {
+            Dialogs.error(ctx.owner(), "Save robot", "Correct the table first: " + vm.messages().get(0));
+            return;
+        }
+        JFileChooser fc = new JFileChooser();
+        fc.setFileFilter(new FileNameExtensionFilter("Robot files (*.xml)", "xml"));
+        fc.setSelectedFile(new java.io.File(vm.parameter(0) + ".xml"));
+        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            Path f = fc.getSelectedFile().toPath();
+            saveAs(f.getFileName().toString().contains(".") ? f : f.resolveSibling(f.getFileName() + ".xml"));
+        }
+    }
+
+    /** Writes the edited robot into a file and makes the job name it (also used by the GUI test). */
+    void saveAs(Path file) {
+        commitTimer.stop();
+        try {
+            vm.save(file);
+            ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        } catch (IOException ex) {
+            Dialogs.error(ctx.owner(), "Save robot", "Cannot write " + file + ": " + ex.getMessage());
+        }
+        refreshLabels();
+    }
+
+    private void exportSymbolic() {
+        if (vm.edited().isEmpty()) {
+            Dialogs.error(ctx.owner(), "Export symbolic FK", "Correct the table first: " + vm.messages().get(0));
+            return;
+        }
+        JFileChooser fc = new JFileChooser();
+        fc.setFileFilter(new FileNameExtensionFilter("Text files (*.txt)", "txt"));
+        fc.setSelectedFile(new java.io.File(vm.parameter(0) + "-fk.txt"));
+        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            exportSymbolicTo(fc.getSelectedFile().toPath());
+        }
+    }
+
+    /** Writes the symbolic FK and Jacobian of the table's robot into a text file, in the background. */
+    void exportSymbolicTo(Path file) {
+        Robot r = vm.edited().orElseThrow();
+        ctx.tasks().start("Symbolic kinematics of " + r.name(), progress -> {
+            org.fresa.job.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
+            return file;
+        }, f -> uses.setText("Wrote the symbolic kinematics of " + r.name() + " to " + f));
+    }
+
+    /** After an edit: show the problems now, write the robot into the job once typing pauses. */
+    private void edited() {
+        refreshLabels();
+        if (vm.edited().isPresent()) {
+            commitTimer.restart();
+        } else {
+            commitTimer.stop();
+        }
+    }
+
+    private void commit() {
+        if (vm.edited().isEmpty()) {
+            return;
+        }
+        try {
+            vm.keepIn(ctx.model().editedRobotsFolder());
+            ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        } catch (IOException ex) {
+            Dialogs.error(ctx.owner(), "Robot", "Cannot keep the edited robot: " + ex.getMessage());
+        }
+        if (paramFields.length > 0 && !paramFields[0].getText().trim().equals(vm.parameter(0))) {
+            updating = true;
+            try {
+                paramFields[0].setText(vm.parameter(0));
+            } finally {
+                updating = false;
+            }
+        }
+        refreshLabels();
+        computeSymbolic();
+    }
+
     private void refresh() {
+        commitTimer.stop();
         updating = true;
         try {
-            String name = vm.robot().name();
             if (RobotViewModel.builtIns().contains(vm.choice())) {
-                robots.setSelectedItem(name);
+                robots.setSelectedItem(vm.choice());
             }
         } finally {
             updating = false;
         }
-        table.setRowCount(0);
-        for (String[] row : vm.dhRows()) {
-            table.addRow(row);
-        }
-        params.setText(String.join("\n", vm.parameters()));
-        String cached = symbolicCache.get(vm.robot());
-        symbolic.setText(cached != null ? cached : "Press Symbolic FK (Alt+K) to derive the expressions (takes a second).");
-        symbolic.setCaretPosition(0);
+        table.fireTableDataChanged();
+        buildParameterFields();
+        refreshLabels();
+        computeSymbolic();
     }
 
+    private void buildParameterFields() {
+        paramPanel.removeAll();
+        List<String> names = vm.parameterNames();
+        paramFields = new JTextField[names.size()];
+        GridBagConstraints c = new GridBagConstraints();
+        c.insets = new Insets(1, 4, 1, 4);
+        c.anchor = GridBagConstraints.WEST;
+        int perRow = names.size() > 5 ? 4 : 3;
+        for (int i = 0; i < names.size(); i++) {
+            int index = i;
+            JTextField f = new JTextField(vm.parameter(i), i == 0 ? 12 : 7);
+            f.setName("robot-param-" + i);
+            JLabel l = new JLabel(names.get(i) + ":");
+            l.setLabelFor(f);
+            f.getDocument().addDocumentListener(new DocumentListener() {
+                @Override
+                public void insertUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                @Override
+                public void removeUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                @Override
+                public void changedUpdate(DocumentEvent e) {
+                    changed();
+                }
+
+                private void changed() {
+                    if (!updating) {
+                        vm.setParameter(index, f.getText());
+                        table.fireTableDataChanged();
+                        edited();
+                    }
+                }
+            });
+            paramFields[i] = f;
+            int slot = i == 0 ? 0 : i - 1;
+            c.gridy = i == 0 ? 0 : 1 + slot / perRow;
+            c.gridx = i == 0 ? 0 : 2 * (slot % perRow);
+            paramPanel.add(l, c);
+            c.gridx++;
+            c.gridwidth = i == 0 ? 3 : 1;
+            paramPanel.add(f, c);
+            c.gridwidth = 1;
+        }
+        paramPanel.revalidate();
+        paramPanel.repaint();
+    }
+
+    private void refreshLabels() {
+        List<String> m = vm.messages();
+        messages.setText(m.isEmpty() ? " " : m.get(0) + (m.size() > 1 ? " (and " + (m.size() - 1) + " more)" : ""));
+        for (int i = 0; i < paramFields.length; i++) {
+            var p = vm.parameterProblem(i);
+            paramFields[i].setBackground(p.isPresent() ? BAD : Color.WHITE);
+            paramFields[i].setToolTipText(p.orElse(null));
+        }
+        String c = vm.choice();
+        boolean builtIn = RobotViewModel.builtIns().contains(c);
+        String state = vm.edited().isEmpty() ? " (the table has problems: the job keeps the last valid robot)"
+                : vm.isModified() ? " (edited, being kept...)" : "";
+        uses.setText("The job uses " + (builtIn ? "the built-in " + c : c) + state);
+        params.setText(String.join("\n", vm.parameters()));
+        dh.repaint();
+    }
+
+    /** Derives the symbolic FK of the table's robot off the event thread (Symja starts in about a second). */
     private void computeSymbolic() {
-        Robot r = vm.robot();
-        if (symbolicCache.containsKey(r)) {
-            refresh();
+        if (vm.edited().isEmpty()) {
             return;
         }
+        Robot r = vm.edited().get();
+        if (r.equals(symbolicOf)) {
+            return;
+        }
+        int generation = ++symbolicGeneration;
         symbolic.setText("Deriving the forward kinematics of " + r.name() + "...");
-        ctx.tasks().start("Symbolic kinematics of " + r.name(), progress -> RobotViewModel.symbolic(r), text -> {
-            symbolicCache.put(r, text);
-            if (vm.robot() == r) {
-                symbolic.setText(text);
+        new SwingWorker<String, Void>() {
+            @Override
+            protected String doInBackground() {
+                return RobotViewModel.symbolic(r);
+            }
+
+            @Override
+            protected void done() {
+                if (generation != symbolicGeneration) {
+                    return;
+                }
+                try {
+                    symbolic.setText(get());
+                    symbolicOf = r;
+                } catch (ExecutionException ex) {
+                    symbolic.setText("The symbolic forward kinematics failed: " + ex.getCause().getMessage());
+                } catch (InterruptedException ex) {
+                    Thread.currentThread().interrupt();
+                }
                 symbolic.setCaretPosition(0);
             }
-        });
+        }.execute();
     }
 }

@@ -54,9 +54,23 @@ class RobotFilesTest {
             q1        | 0
             q1 - 12.5 | -12.5
             q1+1e1    | 10
+            180/2 + q1 - 180 | -90
             """)
     void aVariableCellReadsAsItsOffset(String text, double offset) throws CamInputException {
         assertEquals(offset, RobotFiles.variableOffset("f", 1, "theta", text));
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', textBlock = """
+            q2 - 90
+            2*q1
+            90
+            q1*q1
+            """)
+    void aVariableCellThatIsNotQPlusAConstantIsRefused(String text) {
+        CamInputException e = assertThrows(CamInputException.class, () -> RobotFiles.variableOffset("f", 1, "theta",
+                text));
+        assertTrue(e.getMessage().contains("joint 1: theta must be q1 plus a constant"), e.getMessage());
     }
 
     @Test
@@ -86,5 +100,33 @@ class RobotFilesTest {
         assertTrue(json.contains("\"name\":\"irb140\""));
         assertTrue(json.contains("\"base_radius_mm\":500"));
         assertTrue(json.contains("\"min\":-230"));
+    }
+
+    @ParameterizedTest
+    @CsvSource({"irb140", "adept-one", "tricept806"})
+    void aWrittenRobotReadsBackWithTheSameKinematicsAndLimits(String name) throws Exception {
+        Robot r = Robots.byName(name).orElseThrow();
+        Path f = dir.resolve(name + ".xml");
+        RobotFiles.write(r, f);
+        Robot back = RobotFiles.read(f);
+        double[] q = new double[r.dof()];
+        for (int i = 0; i < q.length; i++) {
+            q[i] = (r.joints().get(i).min() + r.joints().get(i).max()) / 2 + 7 * (i + 1) % 11;
+        }
+        assertEquals(r.joints(), back.joints());
+        assertEquals(r.name(), back.name());
+        assertTrue(r.forward(q).eq(back.forward(q), new org.fresa.geom.Tolerance(1e-12, 1e-15)), f.toString());
+    }
+
+    @Test
+    void aToolFrameWithRotationIsWrittenAndReadBack() throws Exception {
+        Transform3 tool = Transform3.ofXyzRpyDeg(10, -20, 150.25, 30, -45, 60);
+        SerialRobot r = Robots.irb140().withTool(tool);
+        Path f = dir.resolve("tool.xml");
+        RobotFiles.write(r, f);
+        SerialRobot back = (SerialRobot) RobotFiles.read(f);
+        assertTrue(back.chain().tool().eq(tool, new org.fresa.geom.Tolerance(1e-12, 1e-14)), back.chain().tool()
+                .toString());
+        assertEquals(r.wristJoint(), back.wristJoint());
     }
 }
