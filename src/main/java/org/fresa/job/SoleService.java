@@ -289,7 +289,7 @@ public final class SoleService {
                 Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
                 Vec2 dx = Vec2.of(foot == Foot.RIGHT ? 0 : shift, 0);
                 if (cavity.isPresent()) {
-                    scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.AUX,
+                    scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
                             feeds(cavity.get(), dx)));
                 }
                 scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
