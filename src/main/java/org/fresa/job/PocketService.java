@@ -219,25 +219,41 @@ public final class PocketService {
         return new TaskOutcome(0, problems, summary, List.of(outFile));
     }
 
-    /** A pocket with islands: Fresa's region engine ({@link RegionPocket}), G-code posts only. */
-    static TaskOutcome runRegion(PocketSettings s, List<Contour> contours, Path outFile)
-            throws CamInputException, IOException {
+    /**
+     * The region engine's plan for a pocket with islands ({@link RegionPocket}, climb milling).
+     *
+     * @param contours the outer contour first, then the islands ({@link #readContours})
+     * @throws CamInputException for a 7M post (the thesis knows no islands) or bad technology
+     */
+    public static RegionPocket.Plan regionPlan(PocketSettings s, List<Contour> contours)
+            throws CamInputException, ToolTooLargeException {
         if (SINUMERIK_7M_POSTS.contains(s.post())) {
             throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
                     + " found): choose one of " + String.join(", ", NcPosts.names()));
         }
+        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), true);
+    }
+
+    /** The program text of a region plan for a G-code post. */
+    public static String regionProgram(RegionPocket.Plan plan, String post, String programName) throws IOException {
+        NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
+        StringWriter w = new StringWriter();
+        p.write(plan.toolpath(), programName, w);
+        return w.toString();
+    }
+
+    /** A pocket with islands: Fresa's region engine ({@link RegionPocket}), G-code posts only. */
+    static TaskOutcome runRegion(PocketSettings s, List<Contour> contours, Path outFile)
+            throws CamInputException, IOException {
         PocketTechnology tech = technology(s);
         RegionPocket.Plan plan;
         try {
-            plan = RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), tech, true);
+            plan = regionPlan(s, contours);
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         String name = s.contour().getFileName().toString();
-        NcPost p = NcPosts.byName(s.post()).orElseThrow();
-        StringWriter w = new StringWriter();
-        p.write(plan.toolpath(), name, w);
-        AtomicFiles.writeString(outFile, w.toString());
+        AtomicFiles.writeString(outFile, regionProgram(plan, s.post(), name));
         double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
                 contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();
