@@ -11,6 +11,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Intersections;
+import org.fresa.geom.Tolerance;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
@@ -22,6 +26,8 @@ import org.fresa.pocket.PocketProfile;
 import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.Recognition;
+import org.fresa.pocket.RegionOffsetter;
+import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
@@ -40,34 +46,97 @@ public final class PocketService {
     private PocketService() {
     }
 
-    /** Reads a contour file by its extension. */
+    /** Reads a contour file by its extension (the outer contour's elements; islands kept as contours). */
     public static PocketProfile readContour(Path file) throws CamInputException, IOException {
-        String name = file.getFileName().toString();
-        String lower = name.toLowerCase(Locale.ROOT);
-        String text = Files.readString(file, StandardCharsets.ISO_8859_1);
+        String lower = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (lower.endsWith(".dad")) {
-            return DadReader.read(text, file.toString());
+            return DadReader.read(Files.readString(file, StandardCharsets.ISO_8859_1), file.toString());
         }
-        List<org.fresa.geom.Contour> contours;
+        return PocketProfile.fromContours(readContours(file));
+    }
+
+    /**
+     * The closed contours of a {@code .contour} or {@code .dxf} file, the outer one first and
+     * counter-clockwise, then the islands (closed contours inside it), clockwise.
+     *
+     * @throws CamInputException when there is no contour, a chain is open, or an inner contour
+     *     is not inside the outer one or crosses another
+     */
+    public static List<Contour> readContours(Path file) throws CamInputException, IOException {
+        String lower = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        List<Contour> contours;
         if (lower.endsWith(".dxf")) {
             DrawingContours drawing = DrawingContours.read(file);
             if (drawing.openChains() > 0) {
                 throw new CamInputException(file.toString(), drawing.openChains()
-                        + " open chain(s) in the drawing: a pocket needs one closed contour");
+                        + " open chain(s) in the drawing: a pocket needs closed contours");
             }
             contours = drawing.closed();
         } else {
+            String text = Files.readString(file, StandardCharsets.ISO_8859_1);
             contours = ContourFile.read(new StringReader(text), file.toString());
         }
         if (contours.isEmpty()) {
             throw new CamInputException(file.toString(), "no contour in the file");
         }
-        if (contours.size() > 1) {
-            // milling through an island silently would be worse than refusing
-            throw new CamInputException(file.toString(), "islands (inner contours) are not supported yet: "
-                    + (contours.size() - 1) + " found");
+        return outerFirst(contours, file.toString());
+    }
+
+    /** The contour that encloses all others first (counter-clockwise), then the islands (clockwise). */
+    static List<Contour> outerFirst(List<Contour> contours, String source) throws CamInputException {
+        int outer = 0;
+        for (int i = 1; i < contours.size(); i++) {
+            if (contours.get(i).area() > contours.get(outer).area()) {
+                outer = i;
+            }
         }
-        return PocketProfile.fromContours(contours);
+        Contour o = contours.get(outer).ccw();
+        List<Contour> out = new ArrayList<>();
+        out.add(o);
+        Tolerance tol = Tolerance.DEFAULT;
+        for (int i = 0; i < contours.size(); i++) {
+            if (i == outer) {
+                continue;
+            }
+            Contour c = contours.get(i);
+            for (Curve2 k : c.curves()) {
+                if (!o.contains(k.start(), tol) || !o.contains(k.pointAt(0.5), tol)) {
+                    throw new CamInputException(source, "contour " + (i + 1)
+                            + " is not inside the outer contour: an island must lie wholly inside it");
+                }
+            }
+            out.add(c.isCcw() ? c.reversed() : c);
+        }
+        for (int i = 1; i < out.size(); i++) {
+            for (int j = i + 1; j < out.size(); j++) {
+                if (touch(out.get(i), out.get(j), tol)) {
+                    throw new CamInputException(source, "islands " + i + " and " + j
+                            + " touch or overlap: draw them as one contour");
+                }
+            }
+        }
+        return out;
+    }
+
+    private static boolean touch(Contour a, Contour b, Tolerance tol) {
+        for (Curve2 x : a.curves()) {
+            for (Curve2 y : b.curves()) {
+                if (!Intersections.of(x, y, tol).isEmpty()) {
+                    return true;
+                }
+            }
+        }
+        return b.windingNumber(a.get(0).start()) != 0 || a.windingNumber(b.get(0).start()) != 0;
+    }
+
+    /** The technology of the settings. */
+    static PocketTechnology technology(PocketSettings s) throws CamInputException {
+        try {
+            return new PocketTechnology(s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
+                    s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("technology", e.getMessage());
+        }
     }
 
     /** The plan for the settings (no file written). */
@@ -78,14 +147,13 @@ public final class PocketService {
     /** The plan for the settings; faithful: the thesis's pass rules exactly. */
     public static PocketPlan plan(PocketSettings s, boolean faithful)
             throws CamInputException, IOException, ToolTooLargeException {
-        PocketTechnology tech;
-        try {
-            tech = new PocketTechnology(s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
-                    s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin());
-        } catch (IllegalArgumentException e) {
-            throw new CamInputException("technology", e.getMessage());
-        }
+        PocketTechnology tech = technology(s);
         PocketProfile profile = readContour(s.contour());
+        if (!profile.islands().isEmpty()) {
+            throw new CamInputException(s.contour().toString(), "the thesis's recognition tree has no islands ("
+                    + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
+                    + "written by fresa pocket or Job > Run with a post other than 7m");
+        }
         Recognition.Result rec = Recognition.of(profile);
         return PassPlanner.plan(rec, tech, faithful);
     }
@@ -113,6 +181,12 @@ public final class PocketService {
         if (!SINUMERIK_7M_POSTS.contains(s.post()) && NcPosts.byName(s.post()).isEmpty()) {
             throw new CamInputException("--post", "unknown post '" + s.post() + "': expected 7m-compat, 7m or "
                     + String.join(", ", NcPosts.names()));
+        }
+        if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
+            List<Contour> contours = readContours(s.contour());
+            if (contours.size() > 1) {
+                return runRegion(s, contours, outFile);
+            }
         }
         PocketPlan plan;
         try {
@@ -143,5 +217,55 @@ public final class PocketService {
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, problems, summary, List.of(outFile));
+    }
+
+    /**
+     * The region engine's plan for a pocket with islands ({@link RegionPocket}, climb milling).
+     *
+     * @param contours the outer contour first, then the islands ({@link #readContours})
+     * @throws CamInputException for a 7M post (the thesis knows no islands) or bad technology
+     */
+    public static RegionPocket.Plan regionPlan(PocketSettings s, List<Contour> contours)
+            throws CamInputException, ToolTooLargeException {
+        if (SINUMERIK_7M_POSTS.contains(s.post())) {
+            throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
+                    + " found): choose one of " + String.join(", ", NcPosts.names()));
+        }
+        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), true);
+    }
+
+    /** The program text of a region plan for a G-code post. */
+    public static String regionProgram(RegionPocket.Plan plan, String post, String programName) throws IOException {
+        NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
+        StringWriter w = new StringWriter();
+        p.write(plan.toolpath(), programName, w);
+        return w.toString();
+    }
+
+    /** A pocket with islands: Fresa's region engine ({@link RegionPocket}), G-code posts only. */
+    static TaskOutcome runRegion(PocketSettings s, List<Contour> contours, Path outFile)
+            throws CamInputException, IOException {
+        PocketTechnology tech = technology(s);
+        RegionPocket.Plan plan;
+        try {
+            plan = regionPlan(s, contours);
+        } catch (ToolTooLargeException e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
+        }
+        String name = s.contour().getFileName().toString();
+        AtomicFiles.writeString(outFile, regionProgram(plan, s.post(), name));
+        double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
+                contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("contour", s.contour().toString());
+        summary.put("post", s.post());
+        summary.put("islands", contours.size() - 1);
+        summary.put("max_hole_diameter", 2 * inradius);
+        summary.put("passes", plan.order().size());
+        summary.put("pass_offsets", plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());
+        summary.put("depth_passes", tech.depthPasses());
+        summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
+        summary.put("out", outFile.toString());
+        return new TaskOutcome(0, List.of(), summary, List.of(outFile));
     }
 }

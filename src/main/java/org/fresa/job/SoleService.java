@@ -197,10 +197,12 @@ public final class SoleService {
 
     /**
      * The cavity program of a size and foot: the graded outline (mirrored for the left foot)
-     * pocketed by the pocket module with the cavity tool's real diameter, from the top face
-     * z = 0 to z = -cavityDepth, climb milling chosen after the mirror so both feet are cut in
-     * the same sense (the thesis's MAC3/MAC4 against MAC5/MAC6). Empty when the job names no
-     * cavity tool.
+     * pocketed by the pocket module ({@link org.fresa.pocket.RegionPocket}) with the cavity
+     * tool's real diameter: finishing pass at R, roughing offsets from R + 0.5 mm (the thesis's
+     * 0.5 mm finishing allowance at the mouth, §6.6.2.3) inwards at 60 % stepover, from the top
+     * face z = 0 to z = -cavityDepth in steps of at most the cavity depth. Climb milling is chosen
+     * after the mirror so both feet are cut in the same sense (the thesis's MAC3/MAC4 against
+     * MAC5/MAC6). Empty when the job names no cavity tool.
      *
      * @throws CamInputException when the cavity tool is unknown or too large for the outline
      */
@@ -221,10 +223,10 @@ public final class SoleService {
             org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(t.diameterMm(), 0.6,
                     Math.min(0.5, 0.5 / t.diameterMm()), 0, -s.cavityDepthMm(), s.cavityDepthMm(), t.spindleRpm(),
                     t.feedMmPerMin(), t.feedMmPerMin());
-            org.fresa.pocket.Recognition.Result rec = org.fresa.pocket.Recognition.of(
-                    org.fresa.pocket.PocketProfile.fromContours(List.of(outline.ccw())));
-            org.fresa.pocket.PocketPlan plan = org.fresa.pocket.PassPlanner.plan(rec, tech, false);
-            return java.util.Optional.of(org.fresa.pocket.PocketToolpath.of(plan, true));
+            // the region engine: the same offsets whatever the outline's element count, climb by
+            // orientation (outline counter-clockwise), so the mirrored left foot is climb-milled too
+            org.fresa.pocket.RegionPocket.Plan plan = org.fresa.pocket.RegionPocket.plan(outline, List.of(), tech, true);
+            return java.util.Optional.of(plan.toolpath());
         } catch (org.fresa.pocket.ToolTooLargeException e) {
             throw new CamInputException("sole", "size " + g.name() + ": the cavity tool is too large: " + e.getMessage());
         } catch (IllegalArgumentException e) {
@@ -286,6 +288,10 @@ public final class SoleService {
                 }
                 Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
                 Vec2 dx = Vec2.of(foot == Foot.RIGHT ? 0 : shift, 0);
+                if (cavity.isPresent()) {
+                    scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
+                            feeds(cavity.get(), dx)));
+                }
                 scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
                         .with(new PlotScene.Layer(foot.id() + " tread", PlotScene.Style.FEED, feeds(tp, dx)));
             }

@@ -48,7 +48,8 @@ final class OffsetChains {
                 chain.add(next);
                 at = pieces.get(next).end();
                 closed = at.distance(start) <= tol;
-                if (!closed && at.distance(start) <= tol * 100 && nearestStart(at, byStart, pieces, used, cell, tol) < 0) {
+                if (!closed && chain.size() > 1 && at.distance(start) <= tol * 100
+                        && nearestStart(at, byStart, pieces, used, cell, tol) < 0) {
                     closed = true;
                 }
             }
@@ -104,7 +105,13 @@ final class OffsetChains {
                 out.add(new Segment2(s.start(), end));
             } else {
                 Arc2 a = (Arc2) c;
-                out.add(new Arc2(a.center(), a.start(), end, a.ccw()));
+                Arc2 moved = new Arc2(a.center(), a.start(), end, a.ccw());
+                // a snap that moves a short arc's end behind its start would turn it into a whole circle
+                if (n > 1 && Math.abs(moved.sweepRad() - a.sweepRad()) > 1) {
+                    out.add(new Segment2(a.start(), end));
+                } else {
+                    out.add(moved);
+                }
             }
         }
         return new Contour(out);

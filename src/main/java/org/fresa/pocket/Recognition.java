@@ -365,8 +365,11 @@ public final class Recognition {
 
     private boolean inSector(LoopState s, int i, Vec2 p, double t) {
         PocketElement e = s.get(i);
-        Optional<Vec2> vs = s.start(i, t);
-        Optional<Vec2> ve = s.start(i + 1, t);
+        // a zero-radius arc still of (almost) no radius has its vertices on its centre, so its
+        // sector (the normals of its neighbours) is read a little further in
+        double tv = e.zeroRadius() && e.at(t) < 100 * compar ? t + 100 * compar : t;
+        Optional<Vec2> vs = s.start(i, tv);
+        Optional<Vec2> ve = s.start(i + 1, tv);
         if (vs.isEmpty() || ve.isEmpty()) {
             return false;
         }
@@ -378,7 +381,7 @@ public final class Recognition {
             double excess = vs.get().distance(foot) + foot.distance(ve.get()) - vs.get().distance(ve.get());
             return excess <= 10 * compar;
         }
-        double r = Math.max(e.at(t), compar);
+        double r = Math.max(e.at(tv), compar);
         double tolAng = Math.toRadians(0.5) + 10 * compar / r;
         double sweep = LoopState.sweep(e, vs.get(), ve.get());
         double at = LoopState.sweep(e, vs.get(), p);

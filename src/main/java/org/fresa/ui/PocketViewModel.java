@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
@@ -19,6 +20,7 @@ import org.fresa.pocket.PocketElement;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.RecognitionNode;
+import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
 
 /**
@@ -61,6 +63,17 @@ public final class PocketViewModel {
     /** Recomputes from the settings; on bad input keeps the message and clears the result. */
     public void compute() {
         try {
+            String name = settings.contour().getFileName().toString();
+            if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
+                List<Contour> contours = PocketService.readContours(settings.contour());
+                if (contours.size() > 1) {
+                    RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
+                    result = Optional.of(new Result(regionScene(contours, rp), regionReport(contours, rp),
+                            PocketService.regionProgram(rp, settings.post(), name)));
+                    error = Optional.empty();
+                    return;
+                }
+            }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString());
             result = Optional.of(new Result(scene(plan), report(plan), nc));
@@ -69,6 +82,36 @@ public final class PocketViewModel {
             result = Optional.empty();
             error = Optional.of(e.getMessage());
         }
+    }
+
+    /** A pocket with islands: the contours, every offset level and the toolpath. */
+    private static PlotScene regionScene(List<Contour> contours, RegionPocket.Plan plan) {
+        List<Curve2> walls = new ArrayList<>();
+        for (Contour c : contours) {
+            walls.addAll(c.curves());
+        }
+        List<Curve2> offsets = new ArrayList<>();
+        for (RegionPocket.Level l : plan.levels()) {
+            for (Contour c : l.loops()) {
+                offsets.addAll(c.curves());
+            }
+        }
+        return PlotScene.empty("pocket")
+                .with(new PlotScene.Layer("contour and islands", PlotScene.Style.OUTLINE, walls))
+                .with(new PlotScene.Layer("offsets", PlotScene.Style.AUX, offsets))
+                .withToolpath(plan.toolpath());
+    }
+
+    private static String regionReport(List<Contour> contours, RegionPocket.Plan plan) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(String.format(Locale.ROOT, "%d island(s): Fresa's region engine (the thesis's tree has none)%n",
+                contours.size() - 1));
+        for (RegionPocket.Level l : plan.levels()) {
+            long faces = l.loops().stream().filter(Contour::isCcw).count();
+            sb.append(String.format(Locale.ROOT, "offset %8.3f  %d sub-area(s), %d loop(s)%n", l.offsetMm(), faces,
+                    l.loops().size()));
+        }
+        return sb.toString();
     }
 
     static List<Curve2> curves(LoopState s, double t) {

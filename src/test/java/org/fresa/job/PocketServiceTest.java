@@ -83,4 +83,52 @@ class PocketServiceTest {
         assertThrows(CamInputException.class, () -> PocketService.run(settings("cavity01", "heidenhain"),
                 dir.resolve("h.nc"), ProgressMonitor.NONE));
     }
+
+    static PocketSettings islandSettings(Path contour, String post) {
+        return new PocketSettings(contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, post);
+    }
+
+    @Test
+    void aContourFileWithTwoIslandsIsMilledAroundThemAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
+        Path out = dir.resolve("rooms.ngc");
+        TaskOutcome o = PocketService.run(islandSettings(Path.of("samples/pocket/rooms-islands.contour"), "linuxcnc"),
+                out, ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(2, o.summary().get("islands"));
+        // the largest circle: in the middle room, 40 x 40 without an island
+        assertEquals(40, (double) o.summary().get("max_hole_diameter"), 1e-3);
+        assumeTrue(Files.isExecutable(RS274), "LinuxCNC's rs274 is not installed here");
+        Process p = new ProcessBuilder(RS274.toString(), "--tool-diameter", "6", out.toString())
+                .redirectErrorStream(true).redirectOutput(dir.resolve("rs274.log").toFile()).start();
+        assumeTrue(p.waitFor(120, TimeUnit.SECONDS), "rs274 timed out");
+        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("rs274.log")));
+    }
+
+    @Test
+    void aDxfWithIslandsGivesTheSameProgramAsTheContourFile(@TempDir Path dir) throws Exception {
+        List<org.fresa.geom.Contour> c = PocketService.readContours(Path.of("samples/pocket/rooms-islands.contour"));
+        Path dxf = dir.resolve("rooms.dxf");
+        // islands first in the drawing: the outer one is found by containment, not by order
+        Files.writeString(dxf, org.fresa.dxf.DxfWriter.write(List.of(c.get(2), c.get(0), c.get(1)), "0"));
+        List<org.fresa.geom.Contour> read = PocketService.readContours(dxf);
+        assertEquals(3, read.size());
+        assertEquals(c.get(0).area(), read.get(0).area(), 1e-6);
+        TaskOutcome o = PocketService.run(islandSettings(dxf, "linuxcnc"), dir.resolve("d.ngc"), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(2, o.summary().get("islands"));
+    }
+
+    @Test
+    void theSevenMPostsRefuseIslandsAndAnIslandOutsideIsBadInput(@TempDir Path dir) throws Exception {
+        Path rooms = Path.of("samples/pocket/rooms-islands.contour");
+        assertThrows(CamInputException.class, () -> PocketService.run(islandSettings(rooms, "7m-compat"),
+                dir.resolve("a.nc"), ProgressMonitor.NONE));
+        Path bad = dir.resolve("bad.contour");
+        Files.writeString(bad, "contour\nmove 0 0\nline 10 0\nline 10 10\nline 0 10\nline 0 0\n"
+                + "contour\nmove 8 8\nline 20 8\nline 20 9\nline 8 9\nline 8 8\n");
+        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(islandSettings(bad, "linuxcnc"),
+                dir.resolve("b.nc"), ProgressMonitor.NONE));
+        assertTrue(e.getMessage().contains("not inside"), e.getMessage());
+        assertFalse(Files.exists(dir.resolve("b.nc")));
+    }
 }

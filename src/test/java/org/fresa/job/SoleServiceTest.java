@@ -82,14 +82,13 @@ class SoleServiceTest {
     }
 
     @Test
-    void theSampleJobWritesTreadProgramsThatLinuxCncAcceptsAndReportsTheCavityMissing(@TempDir Path dir)
+    void theSampleJobWritesEveryProgramAndLinuxCncAcceptsThem(@TempDir Path dir)
             throws Exception {
         TaskOutcome t = JobRunner.run(JobXml.read(SAMPLE), new OutputFolder(dir), ProgressMonitor.NONE);
-        assertEquals(1, t.exitStatus());
-        assertTrue(t.problems().get(0).contains("cavity"));
+        assertEquals(0, t.exitStatus(), t.problems().toString());
         for (String size : List.of("38", "39", "40", "41", "42")) {
             for (String f : List.of("tread-" + size + "-right.ngc", "tread-" + size + "-left.ngc", "size-" + size + ".csv",
-                    "sole-" + size + ".png")) {
+                    "sole-" + size + ".png", "cavity-" + size + "-right.ngc", "cavity-" + size + "-left.ngc")) {
                 assertTrue(Files.size(dir.resolve(f)) > 0, f);
             }
         }
@@ -102,6 +101,50 @@ class SoleServiceTest {
                 String log = new String(p.getInputStream().readAllBytes());
                 assertEquals(0, p.waitFor(), f + ": " + log);
             }
+        }
+    }
+
+    /** Shoelace sum over the floor feed moves (arcs as chords): positive when the loops run counter-clockwise. */
+    private static double floorTurning(Toolpath tp, double z) {
+        double sum = 0;
+        for (ToolpathSection sec : tp.sections()) {
+            Vec3 at = sec.start();
+            for (Move m : sec.moves()) {
+                if (!(m instanceof Move.Rapid) && Math.abs(at.z() - z) < 1e-9 && Math.abs(m.end().z() - z) < 1e-9) {
+                    sum += at.x() * m.end().y() - m.end().x() * at.y();
+                }
+                at = m.end();
+            }
+        }
+        return sum / 2;
+    }
+
+    @Test
+    void theCavityIsMilledCompletelyWithinTheOutlineOnBothFeetClimbKept() throws Exception {
+        JobSettings.SoleSettings s = JobXml.read(SAMPLE).sole().orElseThrow();
+        SoleService.SolePlan p = SoleService.plan(s, "men40");
+        for (double size : List.of(38.0, 42.0)) {
+            GradedSize g = p.grader().grade(size);
+            Toolpath right = SoleService.cavityProgram(p, g, Foot.RIGHT).orElseThrow();
+            Toolpath left = SoleService.cavityProgram(p, g, Foot.LEFT).orElseThrow();
+            Contour outline = g.output().get(0);
+            org.locationtech.jts.geom.Geometry wall = org.fresa.pocket.RegionPocketTestAccess.polygon(outline);
+            double r = right.sections().get(0).toolDiameterMm() / 2;
+            org.locationtech.jts.geom.Geometry swept = org.fresa.pocket.RegionPocketTestAccess.swept(right, -4, r);
+            double uncut = wall.buffer(-r, 64).buffer(r - 0.01, 64).difference(swept).getArea();
+            double outside = swept.difference(wall.buffer(0.01, 64)).getArea();
+            System.out.printf(java.util.Locale.ROOT, "sole cavity %s: uncut %.5f mm2, outside %.5f mm2%n", g.name(), uncut, outside);
+            assertTrue(uncut < 1e-3, g.name() + " uncut " + uncut);
+            assertTrue(outside < 1e-3, g.name() + " beyond the outline " + outside);
+            // the left foot cuts the mirror image of the right one
+            org.locationtech.jts.geom.Geometry sweptLeft = org.fresa.pocket.RegionPocketTestAccess.swept(left, -4, r);
+            double ox = p.grader().origin().x();
+            org.locationtech.jts.geom.util.AffineTransformation mirror =
+                    org.locationtech.jts.geom.util.AffineTransformation.reflectionInstance(ox, 0, ox, 1);
+            double diff = mirror.transform(sweptLeft).symDifference(swept).getArea();
+            assertTrue(diff < 0.05, g.name() + ": left is not the mirror of right, " + diff + " mm2 differ");
+            // climb on both feet: every loop counter-clockwise with the clockwise spindle
+            assertTrue(floorTurning(right, -4) > 0 && floorTurning(left, -4) > 0, "climb kept");
         }
     }
 }

@@ -31,4 +31,17 @@ class PocketViewModelTest {
         assertTrue(m.result().isEmpty());
         assertTrue(m.error().isPresent());
     }
+
+    @Test
+    void aContourWithIslandsShowsItsOffsetsAndTheLinuxCncProgram() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(new PocketSettings(Path.of("samples/pocket/rooms-islands.contour"), 6, 0.7, 0.1, 0, -6, 3, 3000,
+                300, 100, "linuxcnc"));
+        m.compute();
+        PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
+        assertTrue(r.report().startsWith("2 island(s)"), r.report());
+        assertTrue(r.report().contains("3 sub-area(s)"), r.report());
+        assertTrue(r.nc().contains("\nG2 ") || r.nc().contains("\nG3 "), "arcs as arcs");
+        assertTrue(r.scene().layers().stream().anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
+    }
 }

@@ -1,0 +1,439 @@
+package org.fresa.pocket;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Intersections;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * Fresa's default contour-parallel pocketing of a region with islands and any number of sub-areas
+ * (issue 7, beyond the thesis): offsets of the whole region (outer contour and islands together,
+ * {@link RegionOffsetter}) at R (finishing), R + a (pre-finish), then by the stepover, cut from
+ * the inside out, climb by default.
+ *
+ * <p>No uncut material, by construction. Let delta(p) be the distance of p from the region's
+ * boundary; the pass at offset d runs on {delta = d} and clears every point with
+ * d &lt;= delta &lt;= d + R. So a step s &lt;= R between consecutive offsets leaves nothing; a
+ * larger step (up to the nominal stepover) is taken only when the next offset has the same
+ * topology (each face has one successor with the same number of holes: no neck is pinched and no
+ * sub-area vanishes within the step) and no corner of the next offset is sharper than the
+ * thesis's rule allows: s &lt;= R (1 + sin(alpha / 2)) for its smallest interior corner angle
+ * alpha (with a 3 % margin for curved fronts). Otherwise the step is cut to 0.98 R.
+ *
+ * <p>Order: the offsets form a tree of faces (a face of one offset lies in exactly one face of
+ * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
+ * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
+ * and stays inside the finishing offset (so the tool never touches a wall or island), otherwise a
+ * retract, a rapid and a ramp down along the next loop (no vertical plunge into material).
+ */
+public final class RegionPocket {
+
+    private static final Tolerance TOL = Tolerance.DEFAULT;
+    private static final Vec3 Z = new Vec3(0, 0, 1);
+    private static final double CLEARANCE_MM = 5;
+    private static final double RAMP_DEG = 5;
+
+    /** One offset level: its distance from the region boundary and its loops (faces CCW, holes CW). */
+    public record Level(double offsetMm, List<Contour> loops) {
+        public Level {
+            loops = List.copyOf(loops);
+        }
+    }
+
+    /** A loop in cutting order, with its level index (0 = finishing). */
+    public record Cut(int level, Contour loop) {
+    }
+
+    /** The plan: the levels outside in, the loops in cutting order, and the toolpath. */
+    public record Plan(List<Level> levels, List<Cut> order, Toolpath toolpath) {
+        public Plan {
+            levels = List.copyOf(levels);
+            order = List.copyOf(order);
+        }
+    }
+
+    private record Face(int level, Contour outer, List<Contour> holes, List<Face> children) {
+    }
+
+    private RegionPocket() {
+    }
+
+    /**
+     * Plans the pocket.
+     *
+     * @param outer the outer contour (either orientation)
+     * @param islands closed contours inside it (either orientation), not touching it or each other
+     * @param tech the technology (tool, stepover, allowance, depths, feeds)
+     * @param climb climb milling (true) or conventional
+     * @throws ToolTooLargeException when the tool does not fit anywhere in the region
+     */
+    public static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb)
+            throws ToolTooLargeException {
+        List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
+        List<Level> levels = levels(boundary, tech);
+        List<Face> roots = faces(levels);
+        List<Cut> order = new ArrayList<>();
+        Vec2[] cursor = {null};
+        List<Face> pending = new ArrayList<>(roots);
+        while (!pending.isEmpty()) {
+            Face f = nearestFace(pending, cursor[0]);
+            pending.remove(f);
+            cutSubtree(f, order, cursor);
+        }
+        List<Cut> directed = new ArrayList<>();
+        for (Cut c : order) {
+            directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
+        }
+        Toolpath path = toolpath(directed, levels.get(0), tech);
+        return new Plan(levels, directed, path);
+    }
+
+    static List<Level> levels(List<Contour> boundary, PocketTechnology tech) throws ToolTooLargeException {
+        double r = tech.radiusMm();
+        double a = tech.finishFraction() * tech.toolDiameterMm();
+        List<Level> out = new ArrayList<>();
+        List<Contour> first = RegionOffsetter.inward(boundary, r, TOL);
+        if (first.isEmpty()) {
+            throw new ToolTooLargeException("the tool (" + tech.toolDiameterMm()
+                    + " mm) does not fit anywhere in the pocket: use a smaller tool");
+        }
+        out.add(new Level(r, first));
+        double d = r;
+        if (a > 1e-9) {
+            List<Contour> pre = RegionOffsetter.inward(boundary, r + a, TOL);
+            if (pre.isEmpty()) {
+                return out;
+            }
+            d = r + a;
+            out.add(new Level(d, pre));
+        }
+        double nominal = tech.effectiveCut() * tech.toolDiameterMm();
+        double safeStep = 0.98 * r;
+        while (true) {
+            List<Contour> prev = out.get(out.size() - 1).loops();
+            double s = nominal;
+            List<Contour> next = RegionOffsetter.inward(boundary, d + s, TOL);
+            for (int k = 0; k < 6 && s > safeStep; k++) {
+                double limit;
+                if (next.isEmpty() || !sameTopology(prev, next)) {
+                    limit = safeStep;
+                } else {
+                    double alpha = minCornerAngleRad(next);
+                    limit = 0.97 * r * (1 + Math.sin(alpha / 2));
+                    if (s <= limit) {
+                        break;
+                    }
+                }
+                s = Math.max(safeStep, Math.min(limit, s));
+                next = RegionOffsetter.inward(boundary, d + s, TOL);
+            }
+            if (next.isEmpty()) {
+                return out;
+            }
+            d += s;
+            out.add(new Level(d, next));
+            if (out.size() > 100000) {
+                throw new IllegalStateException("pocket offsets do not end");
+            }
+        }
+    }
+
+    /** The smallest interior angle at a tangent break of any loop (pi when there is none). */
+    static double minCornerAngleRad(List<Contour> loops) {
+        double min = Math.PI;
+        for (Contour c : loops) {
+            int n = c.size();
+            for (int i = 0; i < n; i++) {
+                Curve2 a = c.get(i);
+                Curve2 b = c.get((i + 1) % n);
+                if (a.length() < 1e-9 || b.length() < 1e-9) {
+                    continue;
+                }
+                Vec2 t1 = a.endTangent();
+                Vec2 t2 = b.startTangent();
+                double turn = Math.atan2(t1.cross(t2), t1.dot(t2));
+                if (turn > 1e-6) {
+                    min = Math.min(min, Math.PI - turn);
+                }
+            }
+        }
+        return min;
+    }
+
+    /** Whether each face of next has its own face in prev and the hole count is kept. */
+    static boolean sameTopology(List<Contour> prev, List<Contour> next) {
+        List<Contour> prevFaces = prev.stream().filter(Contour::isCcw).toList();
+        List<Contour> nextFaces = next.stream().filter(Contour::isCcw).toList();
+        long prevHoles = prev.size() - prevFaces.size();
+        long nextHoles = next.size() - nextFaces.size();
+        if (prevFaces.size() != nextFaces.size() || prevHoles != nextHoles) {
+            return false;
+        }
+        boolean[] taken = new boolean[prevFaces.size()];
+        for (Contour f : nextFaces) {
+            int p = containing(prevFaces, RegionOffsetter.probe(f));
+            if (p < 0 || taken[p]) {
+                return false;
+            }
+            taken[p] = true;
+        }
+        return true;
+    }
+
+    private static int containing(List<Contour> faces, Vec2 p) {
+        int best = -1;
+        double bestArea = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < faces.size(); i++) {
+            Contour f = faces.get(i);
+            if (f.windingNumber(p) != 0 && f.area() < bestArea) {
+                best = i;
+                bestArea = f.area();
+            }
+        }
+        return best;
+    }
+
+    /** The faces of each level, linked to their parents; the roots are the finishing level's faces. */
+    private static List<Face> faces(List<Level> levels) {
+        List<List<Face>> byLevel = new ArrayList<>();
+        for (int k = 0; k < levels.size(); k++) {
+            List<Contour> loops = levels.get(k).loops();
+            List<Contour> outers = loops.stream().filter(Contour::isCcw).toList();
+            List<Face> faces = new ArrayList<>();
+            for (Contour o : outers) {
+                faces.add(new Face(k, o, new ArrayList<>(), new ArrayList<>()));
+            }
+            for (Contour h : loops) {
+                if (h.isCcw()) {
+                    continue;
+                }
+                int i = containing(outers, RegionOffsetter.probe(h));
+                if (i >= 0) {
+                    faces.get(i).holes().add(h);
+                }
+            }
+            if (k > 0) {
+                List<Face> parents = byLevel.get(k - 1);
+                List<Contour> parentOuters = parents.stream().map(Face::outer).toList();
+                for (Face f : faces) {
+                    int p = containing(parentOuters, RegionOffsetter.probe(f.outer()));
+                    if (p >= 0) {
+                        parents.get(p).children().add(f);
+                    }
+                }
+            }
+            byLevel.add(faces);
+        }
+        return byLevel.get(0);
+    }
+
+    private static void cutSubtree(Face f, List<Cut> order, Vec2[] cursor) {
+        List<Face> pending = new ArrayList<>(f.children());
+        while (!pending.isEmpty()) {
+            Face c = nearestFace(pending, cursor[0]);
+            pending.remove(c);
+            cutSubtree(c, order, cursor);
+        }
+        List<Contour> loops = new ArrayList<>();
+        loops.add(f.outer());
+        loops.addAll(f.holes());
+        while (!loops.isEmpty()) {
+            int best = 0;
+            double bestD = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < loops.size() && cursor[0] != null; i++) {
+                double dd = loops.get(i).distanceTo(cursor[0]);
+                if (dd < bestD) {
+                    bestD = dd;
+                    best = i;
+                }
+            }
+            Contour l = loops.remove(best);
+            Contour started = cursor[0] == null ? l : startedNear(l, cursor[0]);
+            order.add(new Cut(f.level(), started));
+            cursor[0] = started.get(0).start();
+        }
+    }
+
+    private static Face nearestFace(List<Face> faces, Vec2 p) {
+        if (p == null) {
+            return faces.get(0);
+        }
+        Face best = faces.get(0);
+        double bestD = Double.POSITIVE_INFINITY;
+        for (Face f : faces) {
+            double d = innermost(f).distanceTo(p);
+            if (d < bestD) {
+                bestD = d;
+                best = f;
+            }
+        }
+        return best;
+    }
+
+    private static Contour innermost(Face f) {
+        Face at = f;
+        while (!at.children().isEmpty()) {
+            at = at.children().get(0);
+        }
+        return at.outer();
+    }
+
+    /** The loop starting at its point nearest p. */
+    static Contour startedNear(Contour loop, Vec2 p) {
+        int bestI = 0;
+        double bestT = 0;
+        double bestD = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < loop.size(); i++) {
+            Curve2 c = loop.get(i);
+            double t = Math.max(0, Math.min(1, OffsetSplit.param(c, p)));
+            if (c instanceof Arc2 a && a.isFullCircle()) {
+                t = 0;
+            }
+            double d = c.pointAt(t).distance(p);
+            if (d < bestD) {
+                bestD = d;
+                bestI = i;
+                bestT = t;
+            }
+        }
+        List<Curve2> out = new ArrayList<>();
+        Curve2 c = loop.get(bestI);
+        Vec2 q = c.pointAt(bestT);
+        // an arc cut at one of its own ends would become a whole circle: leave such pieces out
+        boolean hasTail = q.distance(c.end()) > 1e-9;
+        boolean hasHead = q.distance(c.start()) > 1e-9;
+        if (hasTail) {
+            out.add(piece(c, q, c.end()));
+        }
+        for (int k = 1; k < loop.size(); k++) {
+            out.add(loop.get((bestI + k) % loop.size()));
+        }
+        if (hasHead) {
+            out.add(piece(c, c.start(), q));
+        }
+        return new Contour(out);
+    }
+
+    private static Curve2 piece(Curve2 c, Vec2 a, Vec2 b) {
+        if (c instanceof Arc2 arc) {
+            return new Arc2(arc.center(), a, b, arc.ccw());
+        }
+        return new Segment2(a, b);
+    }
+
+    /** Full circles as two half circles, so every arc move has distinct ends. */
+    private static Contour halved(Contour c) {
+        List<Curve2> out = new ArrayList<>();
+        for (Curve2 k : c.curves()) {
+            if (k instanceof Arc2 a && a.isFullCircle()) {
+                Vec2 opposite = a.center().times(2).minus(a.start());
+                out.add(new Arc2(a.center(), a.start(), opposite, a.ccw()));
+                out.add(new Arc2(a.center(), opposite, a.start(), a.ccw()));
+            } else {
+                out.add(k);
+            }
+        }
+        return new Contour(out);
+    }
+
+    private static Toolpath toolpath(List<Cut> order, Level finishing, PocketTechnology t) {
+        List<Move> moves = new ArrayList<>();
+        double safe = t.zTopMm() + CLEARANCE_MM;
+        Vec2 s0 = order.get(0).loop().get(0).start();
+        for (int j = 1; j <= t.depthPasses(); j++) {
+            double z = t.zTopMm() - j * t.depthStepMm();
+            double layerTop = z + t.depthStepMm();
+            Vec2 cursor = null;
+            for (Cut cut : order) {
+                Contour loop = cut.loop();
+                Vec2 s = loop.get(0).start();
+                double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
+                if (cursor != null && feedLink(cursor, s, finishing, t.toolDiameterMm())) {
+                    moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                } else {
+                    Vec2 from = cursor == null ? s : cursor;
+                    moves.add(new Move.Rapid(at(from, safe)));
+                    moves.add(new Move.Rapid(at(s, safe)));
+                    moves.add(new Move.Rapid(at(s, layerTop + 1)));
+                    moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
+                    ramp(moves, loop, layerTop, z, t.feedMmPerMin());
+                }
+                for (Curve2 c : loop.curves()) {
+                    emit(moves, c, z, z, feed);
+                }
+                cursor = s;
+            }
+        }
+        Vec3 last = moves.get(moves.size() - 1).end();
+        moves.add(new Move.Rapid(new Vec3(last.x(), last.y(), safe)));
+        ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
+                new Vec3(s0.x(), s0.y(), safe), moves);
+        return new Toolpath(List.of(section));
+    }
+
+    /** Down from top to z along the loop, as many times round as a ramp of RAMP_DEG needs. */
+    private static void ramp(List<Move> moves, Contour loop, double top, double z, double feed) {
+        double len = loop.length();
+        if (len < 1e-6) {
+            moves.add(new Move.Linear(at(loop.get(0).start(), z), feed));
+            return;
+        }
+        int rounds = Math.max(1, (int) Math.ceil((top - z) / (len * Math.tan(Math.toRadians(RAMP_DEG))) - 1e-9));
+        double total = rounds * len;
+        double done = 0;
+        for (int k = 0; k < rounds; k++) {
+            for (Curve2 c : loop.curves()) {
+                double z0 = top - (top - z) * done / total;
+                done += c.length();
+                double z1 = top - (top - z) * done / total;
+                emit(moves, c, z0, z1, feed);
+            }
+        }
+    }
+
+    private static void emit(List<Move> moves, Curve2 c, double z0, double z1, double feed) {
+        if (c instanceof Arc2 a && a.radius() > 1e-6 && a.start().distance(a.end()) > 1e-6) {
+            moves.add(new Move.Circular(at(a.end(), z1), at(a.center(), z0), Z, a.ccw(), 0, feed));
+        } else {
+            moves.add(new Move.Linear(at(c.end(), z1), feed));
+        }
+    }
+
+    /** A straight feed link is safe when short and inside the finishing offset's region. */
+    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double diameter) {
+        if (p.distance(q) > 2 * diameter) {
+            return false;
+        }
+        if (p.distance(q) < 1e-9) {
+            return true;
+        }
+        Segment2 link = new Segment2(p, q);
+        Tolerance tol = new Tolerance(1e-9, 1e-12);
+        int w = 0;
+        Vec2 mid = p.interpolate(q, 0.5);
+        for (Contour c : finishing.loops()) {
+            for (Curve2 k : c.curves()) {
+                for (Vec2 x : Intersections.of(link, k, tol)) {
+                    if (x.distance(p) > 1e-6 && x.distance(q) > 1e-6) {
+                        return false;
+                    }
+                }
+            }
+            w += c.windingNumber(mid);
+        }
+        return w == 1;
+    }
+
+    private static Vec3 at(Vec2 p, double z) {
+        return new Vec3(p.x(), p.y(), z);
+    }
+}
