@@ -164,6 +164,41 @@ class CutPlannerTest {
         assertFalse(outer.leadIn().isEmpty());
     }
 
+    @ParameterizedTest(name = "outer cw {0}, holes cw {1}")
+    @CsvSource(textBlock = """
+        true,  false
+        false, true
+        false, false
+        true,  true
+        """)
+    void theSensesOfOuterContoursAndHolesAreConfigurable(boolean outerCw, boolean holesCw) {
+        List<Curve2> all = new ArrayList<>(rect(0, 0, 100, 60));
+        all.add(Arc2.circle(Vec2.of(30, 30), 10, true));
+        all.add(Arc2.circle(Vec2.of(70, 30), 10, false));
+        CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withDirections(outerCw, holesCw));
+        assertEquals(3, p.cuts().size());
+        for (CutPath c : p.cuts()) {
+            assertEquals(c.outer() ? !outerCw : !holesCw, c.path().isCcw(), c.label());
+            // the path stays in the scrap whatever the sense: outside the part, inside the holes
+            assertEquals(c.outer() ? 102 * 62 - (4 - Math.PI) : Math.PI * 81, c.path().area(), 1e-6, c.label());
+        }
+    }
+
+    @Test
+    void controllerCompensationCutsTheDrawnContourWithTheToolOnTheScrapSide() {
+        List<Curve2> all = new ArrayList<>(rect(0, 0, 100, 60));
+        all.add(Arc2.circle(Vec2.of(30, 30), 10, true));
+        for (boolean outerCw : new boolean[] {true, false}) {
+            CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withControllerCompensation(true)
+                    .withDirections(outerCw, !outerCw));
+            for (CutPath c : p.cuts()) {
+                assertEquals(Math.abs(c.part().area()), Math.abs(c.path().area()), 1e-9, "the drawn contour");
+                // clockwise outer: the scrap is on the left (G41); counter-clockwise: on the right (G42)
+                assertEquals(outerCw ? 41 : 42, c.compensation(), c.label());
+            }
+        }
+    }
+
     private static int indexOfRadius(CutPath c) {
         double r = ((Arc2) c.part().get(0)).radius();
         return (int) Math.round((r - 5) / 2);

@@ -86,6 +86,21 @@ class CuttingAcceptanceTest {
         rs274Accepts(w.toString(), "plate G41", 2);
     }
 
+    /** G41/G42 left to the controller (D = the 2 mm kerf): LinuxCNC's cutter-compensation checks pass. */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Teile.dxf",
+        "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf", "dxf2gcode/lwpoly-bulge.dxf",
+        "dxf2gcode/american-flag.dxf", "dxf2gcode/Schlüssel_Andi.dxf"})
+    void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
+        Path dxf = CORPUS.resolve(name);
+        Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
+        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", 0.001, "auto", false, "linuxcnc",
+                "controller", "process", "process", 0, true);
+        CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
+        assertTrue(r.program().contains("G41"), name);
+        rs274Accepts(r.program(), name + " G41/G42", 2);
+    }
+
     @ParameterizedTest(name = "post {0}")
     @ValueSource(strings = {"linuxcnc", "iso"})
     void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {
