@@ -250,9 +250,11 @@ public final class CuttingViewModel {
             pierces.add(Arc2.circle(c.pierce(), r, true));
         }
         s = s.with(new PlotScene.Layer("pierces", PlotScene.Style.PIERCE, pierces));
+        // order numbers beside their pierce discs, not on them
+        Vec2 beside = new Vec2(3 * r, 3 * r);
         int k = 1;
         for (CutPath c : p.cuts()) {
-            s = s.withLabel(c.pierce(), Integer.toString(k++));
+            s = s.withLabel(c.pierce().plus(beside), Integer.toString(k++));
         }
         return s;
     }

@@ -242,4 +242,27 @@ class CutPlannerTest {
         double tail = c.tail().stream().mapToDouble(Curve2::length).sum();
         assertTrue(tail >= 2 + 1 - 1e-9, "overcut 2 mm plus the lead-out");
     }
+
+    @Test
+    void partsAreOrderedSoThatNo2OptExchangeShortensTheRapids() {
+        java.util.Random rnd = new java.util.Random(42);
+        List<Curve2> all = new ArrayList<>();
+        for (int i = 0; i < 30; i++) {
+            all.addAll(rect(Math.floor(rnd.nextDouble() * 20) * 25, Math.floor(rnd.nextDouble() * 20) * 25 + (i % 2) * 500,
+                    10, 10));
+        }
+        CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withAvoidCutParts(false));
+        List<Vec2> at = new ArrayList<>();
+        at.add(Vec2.ZERO);
+        p.cuts().forEach(c -> at.add(c.pierce()));
+        int n = at.size();
+        assertTrue(n > 20, n + " pierces");
+        for (int i = 0; i < n - 2; i++) {
+            for (int j = i + 2; j < n; j++) {
+                double before = at.get(i).distance(at.get(i + 1)) + (j + 1 < n ? at.get(j).distance(at.get(j + 1)) : 0);
+                double after = at.get(i).distance(at.get(j)) + (j + 1 < n ? at.get(i + 1).distance(at.get(j + 1)) : 0);
+                assertTrue(after >= before - 1e-6, "reversing " + (i + 1) + ".." + j + " saves " + (before - after) + " mm");
+            }
+        }
+    }
 }
