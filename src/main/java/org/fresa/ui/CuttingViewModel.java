@@ -251,7 +251,7 @@ public final class CuttingViewModel {
         }
         s = s.with(new PlotScene.Layer("pierces", PlotScene.Style.PIERCE, pierces));
         // order numbers beside their pierce discs, not on them
-        Vec2 beside = new Vec2(3 * r, 3 * r);
+        Vec2 beside = new Vec2(size / 90, size / 90);
         int k = 1;
         for (CutPath c : p.cuts()) {
             s = s.withLabel(c.pierce().plus(beside), Integer.toString(k++));
