@@ -28,9 +28,9 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
     public enum Style {
         /** Stock or part outline: dark, solid. */
         OUTLINE,
-        /** A filled part (sheet cutting). */
+        /** Filled material (sheet cutting): give the outer contours and their holes in one layer, even-odd. */
         PART,
-        /** A hole or island. */
+        /** A hole or island: outline only. */
         HOLE,
         /** Cutting moves at feed. */
         FEED,
@@ -38,6 +38,8 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
         FINISH,
         /** Rapid moves: thin and dashed. */
         RAPID,
+        /** Pierce points: small filled discs. */
+        PIERCE,
         /** Something the planner must look at (open chains, uncut material). */
         WARNING,
         /** Construction lines, offsets, leads. */

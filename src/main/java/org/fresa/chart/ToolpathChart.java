@@ -55,6 +55,8 @@ public final class ToolpathChart {
                 continue;
             }
             Path2D path = toPath(layer);
+            // even-odd: a layer of outer contours and their holes fills exactly the material
+            path.setWindingRule(Path2D.WIND_EVEN_ODD);
             Style s = style(layer.style());
             plot.addAnnotation(new ShapeAnnotation(path, s.stroke, s.outline, s.fill), false);
         }
@@ -112,7 +114,9 @@ public final class ToolpathChart {
             case PART:
                 return new Style(new BasicStroke(1.2f), new Color(0x37474F), new Color(0x90A4AE, false));
             case HOLE:
-                return new Style(new BasicStroke(1.2f), new Color(0x37474F), Color.WHITE);
+                return new Style(new BasicStroke(1.2f), new Color(0x37474F), null);
+            case PIERCE:
+                return new Style(new BasicStroke(1.0f), new Color(0xB71C1C), new Color(0xE53935));
             case FEED:
                 return new Style(new BasicStroke(1.0f), new Color(0x1565C0), null);
             case FINISH:

@@ -20,10 +20,12 @@ import org.fresa.model.Toolpath;
  * @param duplicates elements removed as repeats
  * @param zeroLength elements removed for zero length
  * @param toolpath the moves from the machine origin, one section per pierce
+ * @param rapids for each cut, the rapid travel from the previous exit (the origin for the first)
+ *     to its pierce: both ends and any detour points around parts already cut free
  */
 public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> holes, List<List<Curve2>> open,
         List<Vec2> invalidVertices, List<String> warnings, List<Contour> uncut, int duplicates, int zeroLength,
-        Toolpath toolpath) {
+        Toolpath toolpath, List<List<Vec2>> rapids) {
 
     public CutPlan {
         cuts = List.copyOf(cuts);
@@ -33,6 +35,10 @@ public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> ho
         invalidVertices = List.copyOf(invalidVertices);
         warnings = List.copyOf(warnings);
         uncut = List.copyOf(uncut);
+        rapids = rapids.stream().map(List::copyOf).toList();
+        if (rapids.size() != cuts.size()) {
+            throw new IllegalArgumentException(rapids.size() + " rapids for " + cuts.size() + " cuts");
+        }
     }
 
     public double cutLengthMm() {
@@ -43,13 +49,13 @@ public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> ho
         return l;
     }
 
-    /** Total rapid travel from the origin through every pierce (straight lines). */
+    /** Total rapid travel from the origin through every pierce, detours included. */
     public double rapidLengthMm() {
         double l = 0;
-        Vec2 at = Vec2.ZERO;
-        for (CutPath c : cuts) {
-            l += at.distance(c.pierce());
-            at = c.exit();
+        for (List<Vec2> r : rapids) {
+            for (int k = 0; k + 1 < r.size(); k++) {
+                l += r.get(k).distance(r.get(k + 1));
+            }
         }
         return l;
     }

@@ -117,7 +117,7 @@ public final class CutPlanner {
             boolean outer = n.outer();
             (outer ? outers : holes).add(n.contour);
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
-            Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer, o.outerClockwise());
+            Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
             if (o.paperMode()) {
                 boolean toolLeft = outer ^ oriented.isCcw();
                 if (!outer) {
@@ -135,11 +135,19 @@ public final class CutPlanner {
                 continue;
             }
             boolean scrapLeft = outer ? !oriented.isCcw() : oriented.isCcw();
-            if (o.controllerCompensation()) {
-                n.cuts.add(withLeads(label, outer, n.contour, oriented, scrapLeft, o, half, grid, warnings, scrapLeft ? 41 : 42));
-                continue;
-            }
             List<Contour> loops = half > 0 ? LineArcOffsetter.offset(oriented, outer ? half : -half, TOL) : List.of(oriented);
+            if (o.controllerCompensation() && !loops.isEmpty()) {
+                // G41/G42 on the drawn contour, when the controller can do it: no arc on the tool's
+                // side tighter than the kerf radius, and an entry move longer than that radius
+                CutPath cp = tighterArc(oriented, scrapLeft, half) ? null
+                        : withLeads(label, outer, n.contour, oriented, scrapLeft, o, half, grid, warnings, scrapLeft ? 41 : 42);
+                if (cp != null && (!cp.leadIn().isEmpty() || half == 0)) {
+                    n.cuts.add(cp);
+                    continue;
+                }
+                warnings.add(label + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
+                        + " for an entry move longer than it); cut on the offset path instead");
+            }
             List<Contour> same = new ArrayList<>();
             for (Contour l : loops) {
                 if (l.isCcw() == oriented.isCcw()) {
@@ -166,7 +174,9 @@ public final class CutPlanner {
         }
         crossings(nodes, warnings);
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
-        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, o));
+        List<List<Vec2>> rapids = rapids(order, o, warnings);
+        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
+                rapids);
     }
 
     // ------------------------------------------------------------------ classification
@@ -272,9 +282,8 @@ public final class CutPlanner {
         return false;
     }
 
-    private static Contour orient(Contour c, boolean outer, boolean outerCw) {
-        boolean wantCcw = outer != outerCw;
-        return c.isCcw() == wantCcw ? c : c.reversed();
+    private static Contour orient(Contour c, boolean clockwise) {
+        return c.isCcw() != clockwise ? c : c.reversed();
     }
 
     /** Paper mode: an internal contour starts at the vertex nearest its bounding box's lower-left corner. */
@@ -297,6 +306,31 @@ public final class CutPlanner {
 
     // ------------------------------------------------------------------ pierce and leads
 
+    /**
+     * True when the controller's compensation would reject the contour: an arc curving round the
+     * tool's side with a radius not above the tool radius, or an element shorter than the tool
+     * diameter next to a corner that is concave for the tool (LinuxCNC: "cannot be reached by
+     * the tool without gouging"; a conservative test).
+     */
+    private static boolean tighterArc(Contour c, boolean toolLeft, double toolRadius) {
+        int n = c.size();
+        for (int i = 0; i < n; i++) {
+            Curve2 cv = c.get(i);
+            if (cv instanceof Arc2 a && a.ccw() == toolLeft && a.radius() <= toolRadius + 1e-6) {
+                return true;
+            }
+            Curve2 prev = c.get((i + n - 1) % n);
+            if (n > 1 && prev.length() > 0 && cv.length() > 0) {
+                double cross = prev.endTangent().cross(cv.startTangent());
+                boolean concave = toolLeft ? cross > 1e-9 : cross < -1e-9;
+                if (concave && (prev.length() < 2 * toolRadius || cv.length() < 2 * toolRadius)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
             CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp) {
         double leadIn = comp != 0 ? Math.max(o.leadInMm(), half * 1.5 + 0.1) : o.leadInMm();
@@ -306,11 +340,18 @@ public final class CutPlanner {
         for (double[] cand : candidates) {
             for (double scale : new double[] {1, 0.5, 0.25}) {
                 double len = leadIn * scale;
+                if (comp != 0 && len <= half * 1.05 + 0.05) {
+                    continue; // LinuxCNC: the entry move must be longer than the tool radius
+                }
                 Contour started = startAt(path, (int) cand[0], cand[1]);
                 Vec2 s = started.get(0).start();
                 Vec2 t = started.get(0).startTangent();
                 List<Curve2> in = leadIn <= 0 ? List.of() : List.of(lead(s, t, len, scrapLeft, arcs, true));
-                if (!clear(in, grid, clearance, part, outer)) {
+                // under G41/G42 the programmed entry ends on the part; the tool centre ends half a kerf off it
+                Vec2 side = scrapLeft ? t.leftNormal() : t.leftNormal().negated();
+                List<Curve2> centre = comp == 0 || in.isEmpty() ? in
+                        : List.of(lead(s.plus(side.times(half)), t, len - half, scrapLeft, false, true));
+                if (!clear(centre, grid, clearance, part, outer)) {
                     continue;
                 }
                 List<Curve2> tail = tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer);
@@ -318,7 +359,7 @@ public final class CutPlanner {
             }
         }
         Contour started = startAt(path, (int) candidates.get(0)[0], candidates.get(0)[1]);
-        if (leadIn > 0) {
+        if (leadIn > 0 && comp == 0) {
             warnings.add(label + ": no room for a lead-in; pierced on the contour");
         }
         return new CutPath(label, outer, part, started, List.of(), tail(started, o, half, scrapLeft, arcs, grid, clearance,
@@ -553,15 +594,42 @@ public final class CutPlanner {
         return seq;
     }
 
+    // ------------------------------------------------------------------ rapids
+
+    /**
+     * The rapid travel before each cut: straight in paper mode; otherwise around the parts
+     * already cut free ({@link RapidRouter}), keeping half a kerf (at least 0.25 mm) off their paths.
+     */
+    private static List<List<Vec2>> rapids(List<CutPath> order, CuttingOptions o, List<String> warnings) {
+        List<List<Vec2>> out = new ArrayList<>();
+        RapidRouter router = new RapidRouter(Math.max(0.25, o.kerfMm() / 2));
+        Vec2 at = Vec2.ZERO;
+        for (CutPath c : order) {
+            out.add(o.paperMode() || !o.avoidCutParts() ? List.of(at, c.pierce()) : router.route(at, c.pierce()));
+            if (c.outer()) {
+                router.cutFree(c.path());
+            }
+            at = c.exit();
+        }
+        if (router.unavoidable() > 0) {
+            warnings.add(router.unavoidable() + " rapid moves pass over a part already cut (no way around it)");
+        }
+        return out;
+    }
+
     // ------------------------------------------------------------------ toolpath
 
-    private static Toolpath toolpath(List<CutPath> cuts, CuttingOptions o) {
+    private static Toolpath toolpath(List<CutPath> cuts, List<List<Vec2>> rapids, CuttingOptions o) {
         List<ToolpathSection> sections = new ArrayList<>();
         Vec3 at = Vec3.ZERO;
         double feed = o.feedMmPerMin();
-        for (CutPath c : cuts) {
+        for (int i = 0; i < cuts.size(); i++) {
+            CutPath c = cuts.get(i);
             List<Move> moves = new ArrayList<>();
-            moves.add(new Move.Rapid(Vec3.of(c.pierce(), 0)));
+            List<Vec2> rapid = rapids.get(i);
+            for (int k = 1; k < rapid.size(); k++) {
+                moves.add(new Move.Rapid(Vec3.of(rapid.get(k), 0)));
+            }
             for (Curve2 cv : c.curves()) {
                 if (cv instanceof Segment2 s) {
                     if (s.length() > 0) {

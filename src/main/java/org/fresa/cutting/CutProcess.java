@@ -33,9 +33,14 @@ public enum CutProcess {
         return pierceDwellS;
     }
 
-    /** True when outer contours are cut clockwise (and holes counter-clockwise). */
+    /** True when outer contours are cut clockwise by default. */
     public boolean outerClockwise() {
         return outerClockwise;
+    }
+
+    /** True when holes are cut clockwise by default: the opposite sense of the outer contours. */
+    public boolean holesClockwise() {
+        return !outerClockwise;
     }
 
     public String id() {

@@ -17,13 +17,17 @@ import java.util.Objects;
  *     equations (eq. 3 corrected), no leads, no re-orientation
  * @param controllerCompensation leave the kerf to the controller (G41/G42) and cut the drawn
  *     contour; leads are then straight
- * @param outerClockwise direction of outer contours (holes run the other way)
+ * @param outerClockwise direction of outer contours
+ * @param holesClockwise direction of holes (by default the opposite of the outer contours, so
+ *     the scrap is on the same side of the jet on both)
  * @param feedMmPerMin cutting feed
  * @param pierceDwellS dwell after switching the jet on
+ * @param avoidCutParts route rapid moves around parts already cut free ({@link RapidRouter})
  */
 public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm, double leadOutMm, boolean arcLeads,
         double overcutMm, double gapToleranceMm, boolean paperMode, boolean controllerCompensation,
-        boolean outerClockwise, double feedMmPerMin, double pierceDwellS) {
+        boolean outerClockwise, boolean holesClockwise, double feedMmPerMin, double pierceDwellS,
+        boolean avoidCutParts) {
 
     public CuttingOptions {
         Objects.requireNonNull(process, "process");
@@ -38,26 +42,39 @@ public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm,
     /** The defaults of a process with the given kerf and leads. */
     public static CuttingOptions of(CutProcess p, double kerfMm, double leadInMm, double leadOutMm, boolean arcLeads) {
         return new CuttingOptions(kerfMm, p, leadInMm, leadOutMm, arcLeads, 0, 0.001, false, false, p.outerClockwise(),
-                p.feedMmPerMin(), p.pierceDwellS());
+                p.holesClockwise(), p.feedMmPerMin(), p.pierceDwellS(), true);
     }
 
     public CuttingOptions withGapTolerance(double mm) {
         return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, mm, paperMode,
-                controllerCompensation, outerClockwise, feedMmPerMin, pierceDwellS);
+                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
     }
 
     public CuttingOptions withPaperMode(boolean on) {
         return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, on,
-                controllerCompensation, outerClockwise, feedMmPerMin, pierceDwellS);
+                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
     }
 
+    /** Leaves the kerf to the controller: G41/G42 on the drawn contour instead of an offset path. */
     public CuttingOptions withControllerCompensation(boolean on) {
         return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
-                on, outerClockwise, feedMmPerMin, pierceDwellS);
+                on, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
     }
 
     public CuttingOptions withOvercut(double mm) {
         return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, mm, gapToleranceMm, paperMode,
-                controllerCompensation, outerClockwise, feedMmPerMin, pierceDwellS);
+                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
+    }
+
+    /** The senses of outer contours and of holes (true: clockwise). */
+    public CuttingOptions withDirections(boolean outerCw, boolean holesCw) {
+        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
+                controllerCompensation, outerCw, holesCw, feedMmPerMin, pierceDwellS, avoidCutParts);
+    }
+
+    /** Whether rapids detour around parts already cut free. */
+    public CuttingOptions withAvoidCutParts(boolean on) {
+        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
+                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, on);
     }
 }

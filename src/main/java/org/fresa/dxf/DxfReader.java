@@ -492,16 +492,15 @@ public final class DxfReader {
         double a0 = a.startAngleRad();
         double sw = a.sweepRad();
         Vec2 ctr = a.center();
-        List<Curve2> out = new ArrayList<>();
-        DxfArcFitter.fit(u -> t.apply(ctr.plus(Vec2.ofAngle(a0 + sw * u).times(r))), 0, 1, opt.curveToleranceMm(), out);
+        List<Curve2> out = DxfArcFitter.fit(List.of(new DxfArcFitter.Piece(
+                u -> t.apply(ctr.plus(Vec2.ofAngle(a0 + sw * u).times(r))), 0, 1)), a.isFullCircle(), opt.curveToleranceMm());
         list.addAll(out);
         curveCount += out.size();
     }
 
-    private void emitParametric(String layer, DoubleFunction<Vec2> f, double u0, double u1) {
-        List<Curve2> out = new ArrayList<>();
-        DxfArcFitter.fit(f, u0, u1, opt.curveToleranceMm(), out);
-        for (Curve2 c : out) {
+    /** Consecutive pieces of one smooth curve as tangent-continuous biarcs within the curve tolerance. */
+    private void emitPieces(String layer, List<DxfArcFitter.Piece> pieces, boolean closed) {
+        for (Curve2 c : DxfArcFitter.fit(pieces, closed, opt.curveToleranceMm())) {
             emit(layer, DxfAffine.IDENTITY, c);
         }
     }
@@ -640,11 +639,13 @@ public final class DxfReader {
             double v = full && u == last ? start : u; // a closed ellipse ends exactly where it starts
             return t.apply(c.plus(major.times(Math.cos(v)).plus(minor.times(Math.sin(v)))));
         };
+        List<DxfArcFitter.Piece> ps = new ArrayList<>();
         for (int k = 0; k < pieces; k++) {
             double a = start + span * k / pieces;
             double b = k == pieces - 1 ? last : start + span * (k + 1) / pieces;
-            emitParametric(layer, f, a, b);
+            ps.add(new DxfArcFitter.Piece(f, a, b));
         }
+        emitPieces(layer, ps, full);
     }
 
     private void spline(Entity e, String layer, DxfAffine t) throws BadEntity {
@@ -703,12 +704,14 @@ public final class DxfReader {
             }
         }
         final int p = degree;
+        List<DxfArcFitter.Piece> ps = new ArrayList<>();
         for (int k = p; k < n; k++) {
             if (u[k + 1] > u[k]) {
                 final int span = k;
-                emitParametric(layer, s -> t.apply(deBoor(span, s, p, u, px, py, w)), u[k], u[k + 1]);
+                ps.add(new DxfArcFitter.Piece(s -> t.apply(deBoor(span, s, p, u, px, py, w)), u[k], u[k + 1]));
             }
         }
+        emitPieces(layer, ps, ps.size() > 0 && closedCurve(ps));
     }
 
     /** The NURBS point at parameter s in knot span k (u[k] <= s <= u[k + 1]). */
@@ -736,9 +739,19 @@ public final class DxfReader {
         return new Vec2(dx[p] / dw[p], dy[p] / dw[p]);
     }
 
+    /** True when the last piece ends where the first starts (within 1e-9 of the curve's size). */
+    private static boolean closedCurve(List<DxfArcFitter.Piece> ps) {
+        DxfArcFitter.Piece first = ps.get(0);
+        DxfArcFitter.Piece last = ps.get(ps.size() - 1);
+        Vec2 a = first.f().apply(first.u0());
+        Vec2 b = last.f().apply(last.u1());
+        return a.distance(b) <= 1e-9 * Math.max(1, Math.max(a.norm(), b.norm()));
+    }
+
     /** A curve through fit points only: a Catmull-Rom spline through them, then arcs. */
     private void fitPointSpline(List<Vec2> pts, String layer, DxfAffine t) {
         int n = pts.size();
+        List<DxfArcFitter.Piece> ps = new ArrayList<>();
         for (int i = 0; i + 1 < n; i++) {
             Vec2 p0 = pts.get(Math.max(0, i - 1));
             Vec2 p1 = pts.get(i);
@@ -747,7 +760,7 @@ public final class DxfReader {
             if (p1.equals(p2)) {
                 continue;
             }
-            emitParametric(layer, s -> {
+            ps.add(new DxfArcFitter.Piece(s -> {
                 double s2 = s * s;
                 double s3 = s2 * s;
                 double x = 0.5 * (2 * p1.x() + (-p0.x() + p2.x()) * s + (2 * p0.x() - 5 * p1.x() + 4 * p2.x() - p3.x()) * s2
@@ -755,7 +768,10 @@ public final class DxfReader {
                 double y = 0.5 * (2 * p1.y() + (-p0.y() + p2.y()) * s + (2 * p0.y() - 5 * p1.y() + 4 * p2.y() - p3.y()) * s2
                         + (-p0.y() + 3 * p1.y() - 3 * p2.y() + p3.y()) * s3);
                 return t.apply(new Vec2(x, y));
-            }, 0, 1);
+            }, 0, 1));
+        }
+        if (!ps.isEmpty()) {
+            emitPieces(layer, ps, false);
         }
     }
 

@@ -50,8 +50,29 @@ public final class CuttingService {
                 || !Double.isFinite(s.kerfMm() + s.leadInMm() + s.leadOutMm() + s.toleranceMm())) {
             throw new CamInputException("options", "kerf, lead lengths and tolerance must be finite and >= 0");
         }
+        if (!s.compensation().equals("software") && !s.compensation().equals("controller")) {
+            throw new CamInputException("--compensation", "unknown compensation '" + s.compensation()
+                    + "': expected software or controller");
+        }
+        if (!(s.overcutMm() >= 0) || !Double.isFinite(s.overcutMm())) {
+            throw new CamInputException("--overcut", "the overcut must be finite and >= 0");
+        }
+        boolean outerCw = direction("--outer-direction", s.outerDirection(), p.outerClockwise());
+        boolean holesCw = direction("--hole-direction", s.holeDirection(), !outerCw);
         return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead().equals("arc"))
-                .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode());
+                .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode())
+                .withControllerCompensation(s.compensation().equals("controller")).withOvercut(s.overcutMm())
+                .withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
+    }
+
+    /** cw, ccw, or process (the given default); true for clockwise. */
+    private static boolean direction(String option, String v, boolean processDefault) throws CamInputException {
+        return switch (v) {
+            case "cw" -> true;
+            case "ccw" -> false;
+            case "process" -> processDefault;
+            default -> throw new CamInputException(option, "unknown direction '" + v + "': expected cw, ccw or process");
+        };
     }
 
     static Optional<DxfUnits> units(String u) throws CamInputException {
@@ -138,6 +159,12 @@ public final class CuttingService {
         m.put("process", r.options().process().id());
         m.put("kerf_mm", r.options().kerfMm());
         m.put("post", r.dialect().id());
+        m.put("compensation", r.options().controllerCompensation() ? "controller" : "software");
+        m.put("outer_direction", r.options().outerClockwise() ? "cw" : "ccw");
+        m.put("hole_direction", r.options().holesClockwise() ? "cw" : "ccw");
+        m.put("overcut_mm", r.options().overcutMm());
+        long detours = p.rapids().stream().filter(x -> x.size() > 2).count();
+        m.put("rapid_detours", detours);
         m.put("ignored", new LinkedHashMap<>(r.drawing().ignored()));
         List<String> w = new ArrayList<>(r.drawing().warnings());
         w.addAll(p.warnings());

@@ -53,15 +53,35 @@ public final class JobSettings {
         }
     }
 
-    /** Sheet cutting options (spec/cli.md, {@code fresa cut}). */
+    /**
+     * Sheet cutting options (spec/cli.md, {@code fresa cut}).
+     *
+     * @param compensation {@code software} (the path is the contour offset by half the kerf) or
+     *     {@code controller} (the drawn contour with G41/G42, the kerf left to the controller)
+     * @param outerDirection {@code process} (the process's default), {@code cw} or {@code ccw}
+     * @param holeDirection as outerDirection; {@code process} means the opposite of the outer sense
+     * @param overcutMm how far each cut runs past its start before the lead-out
+     * @param avoidCutParts route rapids around the parts already cut free
+     */
     public record CuttingSettings(Path drawing, double kerfMm, String process, double leadInMm, double leadOutMm,
-            String lead, double toleranceMm, String units, boolean paperMode, String post) {
+            String lead, double toleranceMm, String units, boolean paperMode, String post, String compensation,
+            String outerDirection, String holeDirection, double overcutMm, boolean avoidCutParts) {
         public CuttingSettings {
             Objects.requireNonNull(drawing, "drawing");
             Objects.requireNonNull(process, "process");
             Objects.requireNonNull(lead, "lead");
             Objects.requireNonNull(units, "units");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(compensation, "compensation");
+            Objects.requireNonNull(outerDirection, "outerDirection");
+            Objects.requireNonNull(holeDirection, "holeDirection");
+        }
+
+        /** Software compensation, the process's directions, no overcut, rapids around cut parts. */
+        public CuttingSettings(Path drawing, double kerfMm, String process, double leadInMm, double leadOutMm,
+                String lead, double toleranceMm, String units, boolean paperMode, String post) {
+            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post, "software",
+                    "process", "process", 0, true);
         }
     }
 

@@ -169,7 +169,8 @@ public final class JobXml {
         if (c != null) {
             job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), c.getKerfMm(), c.getProcess(),
                     c.getLeadInMm(), c.getLeadOutMm(), c.getLead(), c.getToleranceMm(), c.getUnits(),
-                    c.isPaperMode(), c.getPost()));
+                    c.isPaperMode(), c.getPost(), c.getCompensation(), c.getOuterDirection(), c.getHoleDirection(),
+                    c.getOvercutMm(), c.isAvoidCutParts()));
         }
         GradingType g = x.getGrading();
         if (g != null) {
@@ -343,6 +344,11 @@ public final class JobXml {
             t.setUnits(c.units());
             t.setPaperMode(c.paperMode());
             t.setPost(c.post());
+            t.setCompensation(c.compensation());
+            t.setOuterDirection(c.outerDirection());
+            t.setHoleDirection(c.holeDirection());
+            t.setOvercutMm(c.overcutMm());
+            t.setAvoidCutParts(c.avoidCutParts());
             x.setCutting(t);
         });
         job.grading().ifPresent(g -> {

@@ -1,10 +1,13 @@
 package org.fresa.ui;
 
 import java.awt.BorderLayout;
-import java.awt.FlowLayout;
 import java.awt.Font;
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
 import java.nio.file.Path;
 import java.util.Optional;
+import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
@@ -21,7 +24,10 @@ import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.model.CamInputException;
 
-/** Sheet cutting: open a DXF, set kerf, process and leads, cut, see the plan and the program. */
+/**
+ * Sheet cutting: open a DXF, set kerf, process, leads, compensation and directions, cut, see the
+ * plan (parts, holes, open chains, pierces, leads, order, rapids), the totals and the program.
+ */
 final class CuttingTab implements ModuleTab {
 
     private final AppContext ctx;
@@ -29,71 +35,146 @@ final class CuttingTab implements ModuleTab {
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final JTextArea program = new JTextArea();
-    private final JLabel totals = new JLabel("No drawing cut yet.");
-    private final JTextField file = new JTextField(24);
+    private final JTextArea totals = new JTextArea("No drawing cut yet.");
+    private final JLabel file = new JLabel("(none)");
+    private final JTextField kerf = new JTextField(6);
+    private final JComboBox<String> process = new JComboBox<>(new String[] {"plasma", "laser", "waterjet"});
+    private final JTextField leadIn = new JTextField(6);
+    private final JTextField leadOut = new JTextField(6);
+    private final JComboBox<String> lead = new JComboBox<>(new String[] {"arc", "line"});
+    private final JTextField overcut = new JTextField(6);
+    private final JComboBox<String> compensation = new JComboBox<>(new String[] {"software", "controller"});
+    private final JComboBox<String> outerDir = new JComboBox<>(new String[] {"process", "cw", "ccw"});
+    private final JComboBox<String> holeDir = new JComboBox<>(new String[] {"process", "cw", "ccw"});
+    private final JCheckBox avoid = new JCheckBox("Rapids around cut parts");
+    private final JComboBox<String> post = new JComboBox<>(new String[] {"linuxcnc", "iso", "fanuc", "840d"});
+    private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
 
     CuttingTab(AppContext ctx) {
         this.ctx = ctx;
-        JPanel form = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        JPanel form = new JPanel(new GridBagLayout());
+        form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
         JButton open = new JButton("Open DXF...");
         open.setMnemonic('O');
+        open.setName("cutting-open");
         open.addActionListener(e -> choose());
-        file.setEditable(false);
-        JTextField kerf = field(form, "Kerf mm:", 'K', "2");
-        JComboBox<String> process = new JComboBox<>(new String[] {"plasma", "laser", "waterjet"});
-        JLabel pl = new JLabel("Process:");
-        pl.setDisplayedMnemonic('P');
-        pl.setLabelFor(process);
-        JTextField leadIn = field(form, "Lead-in mm:", 'I', "3");
-        JTextField leadOut = field(form, "Lead-out mm:", 'U', "1");
-        JComboBox<String> lead = new JComboBox<>(new String[] {"arc", "line"});
-        JComboBox<String> post = new JComboBox<>(new String[] {"linuxcnc", "iso", "fanuc", "840d"});
-        JCheckBox paper = new JCheckBox("Paper mode");
-        paper.setMnemonic('M');
         JButton cut = new JButton("Cut");
         cut.setMnemonic('C');
-        cut.addActionListener(e -> {
-            vm.setKerfMm(kerf.getText());
-            vm.setProcess((String) process.getSelectedItem());
-            vm.setLeadInMm(leadIn.getText());
-            vm.setLeadOutMm(leadOut.getText());
-            vm.setLead((String) lead.getSelectedItem());
-            vm.setPost((String) post.getSelectedItem());
-            vm.setPaperMode(paper.isSelected());
-            run();
-        });
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        top.add(open);
-        top.add(file);
-        top.add(pl);
-        top.add(process);
-        top.add(new JLabel("Lead:"));
-        top.add(lead);
-        top.add(new JLabel("Post:"));
-        top.add(post);
-        top.add(paper);
-        top.add(cut);
-        JPanel north = new JPanel(new BorderLayout());
-        north.add(top, BorderLayout.NORTH);
-        north.add(form, BorderLayout.CENTER);
+        cut.setName("cutting-cut");
+        cut.addActionListener(e -> run());
+        kerf.setName("cutting-kerf");
+        kerf.setToolTipText("full kerf width; the path runs half of it off the part");
+        compensation.setName("cutting-compensation");
+        compensation.setToolTipText("software: offset path; controller: the drawn contour with G41/G42");
+        outerDir.setToolTipText("process: the process's default (outer clockwise)");
+        holeDir.setToolTipText("process: the opposite sense of the outer contours");
+        avoid.setMnemonic('R');
+        paper.setMnemonic('M');
         program.setEditable(false);
         program.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         program.setName("cutting-program");
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plot, new JScrollPane(program));
-        split.setResizeWeight(0.7);
-        panel.add(north, BorderLayout.NORTH);
+        totals.setEditable(false);
+        totals.setLineWrap(true);
+        totals.setWrapStyleWord(true);
+        totals.setOpaque(false);
+        totals.setName("cutting-totals");
+        totals.setColumns(18);
+
+        int row = 0;
+        addRow(form, row++, "Drawing:", (char) 0, open, null);
+        addRow(form, row++, "", (char) 0, file, null);
+        addRow(form, row++, "Kerf (mm):", 'K', kerf, null);
+        addRow(form, row++, "Process:", 'P', process, null);
+        addRow(form, row++, "Lead-in (mm):", 'I', leadIn, null);
+        addRow(form, row++, "Lead-out (mm):", 'U', leadOut, null);
+        addRow(form, row++, "Lead shape:", 'L', lead, null);
+        addRow(form, row++, "Overcut (mm):", 'V', overcut, null);
+        addRow(form, row++, "Compensation:", 'N', compensation, null);
+        addRow(form, row++, "Outer sense:", 'E', outerDir, null);
+        addRow(form, row++, "Hole sense:", 'H', holeDir, null);
+        addRow(form, row++, "", (char) 0, avoid, null);
+        addRow(form, row++, "Post:", 'S', post, null);
+        addRow(form, row++, "", (char) 0, paper, null);
+        addRow(form, row++, "", (char) 0, cut, null);
+        GridBagConstraints t = new GridBagConstraints();
+        t.gridx = 0;
+        t.gridy = row++;
+        t.gridwidth = 3;
+        t.fill = GridBagConstraints.HORIZONTAL;
+        t.insets = new Insets(10, 2, 2, 2);
+        form.add(totals, t);
+        GridBagConstraints filler = new GridBagConstraints();
+        filler.gridy = row;
+        filler.weighty = 1;
+        form.add(new JPanel(), filler);
+
+        JScrollPane text = new JScrollPane(program);
+        text.setPreferredSize(new java.awt.Dimension(260, 200));
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plot, text);
+        split.setResizeWeight(0.75);
+        panel.add(new JScrollPane(form), BorderLayout.WEST);
         panel.add(split, BorderLayout.CENTER);
-        panel.add(totals, BorderLayout.SOUTH);
+
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName()) && ctx.model().job().cutting().isPresent()) {
+                vm.load(ctx.model().job());
+                showFields();
+            }
+        });
+        vm.load(ctx.model().job());
+        showFields();
     }
 
-    private static JTextField field(JPanel form, String label, char mnemonic, String value) {
+    private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent a, JComponent b) {
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridy = row;
+        c.anchor = GridBagConstraints.WEST;
+        c.insets = new Insets(2, 2, 2, 2);
         JLabel l = new JLabel(label);
-        JTextField f = new JTextField(value, 5);
-        l.setDisplayedMnemonic(mnemonic);
-        l.setLabelFor(f);
-        form.add(l);
-        form.add(f);
-        return f;
+        if (mnemonic != 0) {
+            l.setDisplayedMnemonic(mnemonic);
+            l.setLabelFor(a);
+        }
+        c.gridx = 0;
+        form.add(l, c);
+        c.gridx = 1;
+        c.fill = GridBagConstraints.HORIZONTAL;
+        form.add(a, c);
+        if (b != null) {
+            c.gridx = 2;
+            form.add(b, c);
+        }
+    }
+
+    private void showFields() {
+        file.setText(vm.drawing().map(p -> p.getFileName().toString()).orElse("(none)"));
+        kerf.setText(vm.kerfMm());
+        process.setSelectedItem(vm.process());
+        leadIn.setText(vm.leadInMm());
+        leadOut.setText(vm.leadOutMm());
+        lead.setSelectedItem(vm.lead());
+        overcut.setText(vm.overcutMm());
+        compensation.setSelectedItem(vm.compensation());
+        outerDir.setSelectedItem(vm.outerDirection());
+        holeDir.setSelectedItem(vm.holeDirection());
+        avoid.setSelected(vm.avoidCutParts());
+        post.setSelectedItem(vm.post());
+        paper.setSelected(vm.paperMode());
+    }
+
+    private void takeFields() {
+        vm.setKerfMm(kerf.getText());
+        vm.setProcess((String) process.getSelectedItem());
+        vm.setLeadInMm(leadIn.getText());
+        vm.setLeadOutMm(leadOut.getText());
+        vm.setLead((String) lead.getSelectedItem());
+        vm.setOvercutMm(overcut.getText());
+        vm.setCompensation((String) compensation.getSelectedItem());
+        vm.setOuterDirection((String) outerDir.getSelectedItem());
+        vm.setHoleDirection((String) holeDir.getSelectedItem());
+        vm.setAvoidCutParts(avoid.isSelected());
+        vm.setPost((String) post.getSelectedItem());
+        vm.setPaperMode(paper.isSelected());
     }
 
     private void choose() {
@@ -106,10 +187,13 @@ final class CuttingTab implements ModuleTab {
         }
     }
 
-    private void run() {
+    /** Cuts the drawing with the typed settings; they also become the job's cutting settings. */
+    void run() {
+        takeFields();
         CuttingSettings s;
         try {
             s = vm.settings();
+            ctx.model().setJob(vm.applyTo(ctx.model().job()));
         } catch (CamInputException e) {
             totals.setText(e.getMessage());
             return;

@@ -8,13 +8,16 @@ import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.cutting.CutPath;
 import org.fresa.cutting.CutPlan;
+import org.fresa.geom.Arc2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.CuttingService;
+import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.model.ExactDecimal;
 
 /**
  * The Cutting tab's state without Swing: the drawing and the settings the planner types in, the
@@ -30,7 +33,107 @@ public final class CuttingViewModel {
     private String lead = "arc";
     private boolean paperMode;
     private String post = "linuxcnc";
+    private String compensation = "software";
+    private String outerDirection = "process";
+    private String holeDirection = "process";
+    private String overcutMm = "0";
+    private boolean avoidCutParts = true;
     private CuttingService.Result result;
+
+    /** Takes the job's cutting settings, if it has any (the drawing, kerf, process, leads, ...). */
+    public void load(Job job) {
+        job.cutting().ifPresent(c -> {
+            if (!c.drawing().equals(drawing)) {
+                result = null;
+            }
+            drawing = c.drawing();
+            kerfMm = ExactDecimal.of(c.kerfMm());
+            process = c.process();
+            leadInMm = ExactDecimal.of(c.leadInMm());
+            leadOutMm = ExactDecimal.of(c.leadOutMm());
+            lead = c.lead();
+            paperMode = c.paperMode();
+            post = c.post();
+            compensation = c.compensation();
+            outerDirection = c.outerDirection();
+            holeDirection = c.holeDirection();
+            overcutMm = ExactDecimal.of(c.overcutMm());
+            avoidCutParts = c.avoidCutParts();
+        });
+    }
+
+    /** The job with these cutting settings (checked), the task unchanged. */
+    public Job applyTo(Job job) throws CamInputException {
+        return job.withCutting(settings());
+    }
+
+    public String kerfMm() {
+        return kerfMm;
+    }
+
+    public String process() {
+        return process;
+    }
+
+    public String leadInMm() {
+        return leadInMm;
+    }
+
+    public String leadOutMm() {
+        return leadOutMm;
+    }
+
+    public String lead() {
+        return lead;
+    }
+
+    public boolean paperMode() {
+        return paperMode;
+    }
+
+    public String post() {
+        return post;
+    }
+
+    public String compensation() {
+        return compensation;
+    }
+
+    public void setCompensation(String v) {
+        compensation = v;
+    }
+
+    public String outerDirection() {
+        return outerDirection;
+    }
+
+    public void setOuterDirection(String v) {
+        outerDirection = v;
+    }
+
+    public String holeDirection() {
+        return holeDirection;
+    }
+
+    public void setHoleDirection(String v) {
+        holeDirection = v;
+    }
+
+    public String overcutMm() {
+        return overcutMm;
+    }
+
+    public void setOvercutMm(String v) {
+        overcutMm = v.trim();
+    }
+
+    public boolean avoidCutParts() {
+        return avoidCutParts;
+    }
+
+    public void setAvoidCutParts(boolean v) {
+        avoidCutParts = v;
+    }
 
     public Optional<Path> drawing() {
         return Optional.ofNullable(drawing);
@@ -75,7 +178,8 @@ public final class CuttingViewModel {
             throw new CamInputException("Cutting", "choose a DXF drawing first");
         }
         return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
-                number("lead-out", leadOutMm), lead, 0.001, "auto", paperMode, post);
+                number("lead-out", leadOutMm), lead, 0.001, "auto", paperMode, post, compensation, outerDirection,
+                holeDirection, number("overcut", overcutMm), avoidCutParts);
     }
 
     private static double number(String what, String text) throws CamInputException {
@@ -106,6 +210,7 @@ public final class CuttingViewModel {
         CutPlan p = result.plan();
         List<Curve2> parts = new ArrayList<>();
         p.outers().forEach(c -> parts.addAll(c.curves()));
+        p.holes().forEach(c -> parts.addAll(c.curves()));
         List<Curve2> holes = new ArrayList<>();
         p.holes().forEach(c -> holes.addAll(c.curves()));
         List<Curve2> open = new ArrayList<>();
@@ -113,15 +218,17 @@ public final class CuttingViewModel {
         List<Curve2> cuts = new ArrayList<>();
         List<Curve2> leads = new ArrayList<>();
         List<Curve2> rapids = new ArrayList<>();
-        Vec2 at = Vec2.ZERO;
-        for (CutPath c : p.cuts()) {
-            if (!at.equals(c.pierce())) {
-                rapids.add(new Segment2(at, c.pierce()));
+        for (List<Vec2> r : p.rapids()) {
+            for (int i = 0; i + 1 < r.size(); i++) {
+                if (!r.get(i).equals(r.get(i + 1))) {
+                    rapids.add(new Segment2(r.get(i), r.get(i + 1)));
+                }
             }
+        }
+        for (CutPath c : p.cuts()) {
             cuts.addAll(c.path().curves());
             leads.addAll(c.leadIn());
             leads.addAll(c.tail());
-            at = c.exit();
         }
         List<Curve2> uncut = new ArrayList<>();
         for (Contour c : p.uncut()) {
@@ -134,24 +241,40 @@ public final class CuttingViewModel {
                 .with(new PlotScene.Layer("not cut", PlotScene.Style.WARNING, uncut))
                 .with(new PlotScene.Layer("rapids", PlotScene.Style.RAPID, rapids))
                 .with(new PlotScene.Layer("cuts", PlotScene.Style.FEED, cuts))
-                .with(new PlotScene.Layer("leads", PlotScene.Style.AUX, leads));
+                .with(new PlotScene.Layer("leads", PlotScene.Style.FINISH, leads));
+        // pierce discs sized to the drawing, so they show at the whole-sheet zoom
+        double size = s.bounds().map(b -> Math.max(b.width(), b.height())).orElse(100.0);
+        double r = Math.max(1e-3, size / 300);
+        List<Curve2> pierces = new ArrayList<>();
+        for (CutPath c : p.cuts()) {
+            pierces.add(Arc2.circle(c.pierce(), r, true));
+        }
+        s = s.with(new PlotScene.Layer("pierces", PlotScene.Style.PIERCE, pierces));
+        // order numbers beside their pierce discs, not on them
+        Vec2 beside = new Vec2(size / 90, size / 90);
         int k = 1;
         for (CutPath c : p.cuts()) {
-            s = s.withLabel(c.pierce(), Integer.toString(k++));
+            s = s.withLabel(c.pierce().plus(beside), Integer.toString(k++));
         }
         return s;
     }
 
-    /** Cut length, pierces, rapids and the estimated time, one line. */
+    /** Contours, pierces, cut and rapid lengths, the estimated time and the warnings, a few lines. */
     public String totals() {
         if (result == null) {
             return "No drawing cut yet.";
         }
         var m = CuttingService.summary(result);
-        return String.format(Locale.ROOT, "%d contours (%d outer, %d holes, %d open), %d pierces, cut %.1f mm, rapid %.1f mm,"
+        List<?> warnings = (List<?>) m.get("warnings");
+        StringBuilder b = new StringBuilder(String.format(Locale.ROOT,
+                "%d contours (%d outer, %d holes, %d open), %d pierces, cut %.1f mm, rapid %.1f mm (%d detours),"
                 + " about %.0f s; %d not cut, %d warnings", m.get("contours"), m.get("outer"), m.get("inner"),
                 m.get("open"), m.get("pierces"), (Double) m.get("cut_length_mm"), (Double) m.get("rapid_length_mm"),
-                (Double) m.get("estimated_time_s"), m.get("not_cut"), ((List<?>) m.get("warnings")).size());
+                (Long) m.get("rapid_detours"), (Double) m.get("estimated_time_s"), m.get("not_cut"), warnings.size()));
+        for (int i = 0; i < Math.min(3, warnings.size()); i++) {
+            b.append("\n- ").append(warnings.get(i));
+        }
+        return b.toString();
     }
 
     public String program() {

@@ -164,6 +164,41 @@ class CutPlannerTest {
         assertFalse(outer.leadIn().isEmpty());
     }
 
+    @ParameterizedTest(name = "outer cw {0}, holes cw {1}")
+    @CsvSource(textBlock = """
+        true,  false
+        false, true
+        false, false
+        true,  true
+        """)
+    void theSensesOfOuterContoursAndHolesAreConfigurable(boolean outerCw, boolean holesCw) {
+        List<Curve2> all = new ArrayList<>(rect(0, 0, 100, 60));
+        all.add(Arc2.circle(Vec2.of(30, 30), 10, true));
+        all.add(Arc2.circle(Vec2.of(70, 30), 10, false));
+        CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withDirections(outerCw, holesCw));
+        assertEquals(3, p.cuts().size());
+        for (CutPath c : p.cuts()) {
+            assertEquals(c.outer() ? !outerCw : !holesCw, c.path().isCcw(), c.label());
+            // the path stays in the scrap whatever the sense: outside the part, inside the holes
+            assertEquals(c.outer() ? 102 * 62 - (4 - Math.PI) : Math.PI * 81, c.path().area(), 1e-6, c.label());
+        }
+    }
+
+    @Test
+    void controllerCompensationCutsTheDrawnContourWithTheToolOnTheScrapSide() {
+        List<Curve2> all = new ArrayList<>(rect(0, 0, 100, 60));
+        all.add(Arc2.circle(Vec2.of(30, 30), 10, true));
+        for (boolean outerCw : new boolean[] {true, false}) {
+            CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withControllerCompensation(true)
+                    .withDirections(outerCw, !outerCw));
+            for (CutPath c : p.cuts()) {
+                assertEquals(Math.abs(c.part().area()), Math.abs(c.path().area()), 1e-9, "the drawn contour");
+                // clockwise outer: the scrap is on the left (G41); counter-clockwise: on the right (G42)
+                assertEquals(outerCw ? 41 : 42, c.compensation(), c.label());
+            }
+        }
+    }
+
     private static int indexOfRadius(CutPath c) {
         double r = ((Arc2) c.part().get(0)).radius();
         return (int) Math.round((r - 5) / 2);
@@ -206,5 +241,28 @@ class CutPlannerTest {
         }
         double tail = c.tail().stream().mapToDouble(Curve2::length).sum();
         assertTrue(tail >= 2 + 1 - 1e-9, "overcut 2 mm plus the lead-out");
+    }
+
+    @Test
+    void partsAreOrderedSoThatNo2OptExchangeShortensTheRapids() {
+        java.util.Random rnd = new java.util.Random(42);
+        List<Curve2> all = new ArrayList<>();
+        for (int i = 0; i < 30; i++) {
+            all.addAll(rect(Math.floor(rnd.nextDouble() * 20) * 25, Math.floor(rnd.nextDouble() * 20) * 25 + (i % 2) * 500,
+                    10, 10));
+        }
+        CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withAvoidCutParts(false));
+        List<Vec2> at = new ArrayList<>();
+        at.add(Vec2.ZERO);
+        p.cuts().forEach(c -> at.add(c.pierce()));
+        int n = at.size();
+        assertTrue(n > 20, n + " pierces");
+        for (int i = 0; i < n - 2; i++) {
+            for (int j = i + 2; j < n; j++) {
+                double before = at.get(i).distance(at.get(i + 1)) + (j + 1 < n ? at.get(j).distance(at.get(j + 1)) : 0);
+                double after = at.get(i).distance(at.get(j)) + (j + 1 < n ? at.get(i + 1).distance(at.get(j + 1)) : 0);
+                assertTrue(after >= before - 1e-6, "reversing " + (i + 1) + ".." + j + " saves " + (before - after) + " mm");
+            }
+        }
     }
 }

@@ -54,4 +54,24 @@ class DxfCorpusTest {
         assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2D") && w.contains("line 2002")), d.warnings().toString());
         assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2E")), d.warnings().toString());
     }
+
+    /** Every DXF version in the corpus (R12 AC1009 to R2018 AC1032, and older) gives curves from some file. */
+    @Test
+    void everyDxfVersionOfTheCorpusIsRead() throws Exception {
+        java.util.Map<String, Integer> curvesByVersion = new java.util.TreeMap<>();
+        for (Path p : corpusFiles()) {
+            String text = new String(Files.readAllBytes(p), java.nio.charset.StandardCharsets.ISO_8859_1);
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\$ACADVER\\s+1\\s+(AC\\d{4})").matcher(text);
+            String v = m.find() ? m.group(1) : text.startsWith("AutoCAD Binary DXF") ? "binary" : "none";
+            curvesByVersion.merge(v, DxfReader.read(p).curveCount(), Integer::sum);
+        }
+        for (String v : List.of("AC1009", "AC1015", "AC1018", "AC1021", "AC1024", "AC1027", "AC1032")) {
+            if (curvesByVersion.containsKey(v)) {
+                assertTrue(curvesByVersion.get(v) > 0, v + ": " + curvesByVersion);
+            }
+        }
+        assertTrue(curvesByVersion.keySet().stream().filter(k -> k.startsWith("AC")).count() >= 3, curvesByVersion.toString());
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target/dxf-versions.txt"), curvesByVersion.toString());
+    }
 }

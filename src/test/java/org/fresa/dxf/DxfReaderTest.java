@@ -1,5 +1,6 @@
 package org.fresa.dxf;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -178,5 +179,40 @@ class DxfReaderTest {
     void absurdVertexCountsDoNotPreallocate() throws Exception {
         String e = "0\nLWPOLYLINE\n90\n2000000000\n70\n0\n10\n0\n20\n0\n10\n1\n20\n0\n";
         assertEquals(1, read(dxf("", "", e)).curveCount());
+    }
+
+    @Test
+    void entitiesOnFrozenOrSwitchedOffLayersAndInPaperSpaceAreLeftOutAndCounted() throws Exception {
+        String tables = "0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLAYER\n"
+                + "0\nLAYER\n2\nCUT\n70\n0\n62\n7\n"
+                + "0\nLAYER\n2\nFROZEN\n70\n1\n62\n7\n"
+                + "0\nLAYER\n2\nOFF\n70\n0\n62\n-3\n0\nENDTAB\n0\nENDSEC\n";
+        String line = "0\nLINE\n8\n%s\n10\n0\n20\n0\n11\n10\n21\n0\n";
+        String entities = String.format(line, "CUT") + String.format(line, "FROZEN") + String.format(line, "OFF")
+                + "0\nLINE\n8\nCUT\n67\n1\n10\n0\n20\n0\n11\n5\n21\n5\n"
+                + "0\nHATCH\n8\nCUT\n0\nDIMENSION\n8\nCUT\n0\nMTEXT\n8\nCUT\n";
+        String text = tables + dxf("", "", entities);
+        DxfDrawing d = read(text);
+        assertAll(() -> assertEquals(List.of("CUT"), List.copyOf(d.layers().keySet())),
+                () -> assertEquals(1, d.curveCount()),
+                () -> assertEquals(2, d.ignored().get("on frozen or off layers")),
+                () -> assertEquals(1, d.ignored().get("paper space")),
+                () -> assertEquals(1, d.ignored().get("HATCH")),
+                () -> assertEquals(1, d.ignored().get("DIMENSION")),
+                () -> assertEquals(1, d.ignored().get("MTEXT")));
+    }
+
+    @Test
+    void binaryDrawingsOfTheCorpusReadLikeTheirContents() throws Exception {
+        java.nio.file.Path dir = java.nio.file.Path.of("../shared/corpus/dxf/ezdxf");
+        org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.Files.isDirectory(dir), "corpus absent");
+        // R12 binary: three LINEs; R2000 binary: one TEXT and nothing to cut
+        DxfDrawing r12 = DxfReader.read(dir.resolve("integration_tests_data_bin_dxf_r12.dxf"));
+        DxfDrawing r2000 = DxfReader.read(dir.resolve("integration_tests_data_bin_dxf_r2000.dxf"));
+        assertAll(() -> assertEquals(3, r12.curveCount()),
+                () -> assertTrue(r12.curves().stream().allMatch(c -> c instanceof org.fresa.geom.Segment2)),
+                () -> assertEquals(0, r2000.curveCount()),
+                () -> assertEquals(1, r2000.ignored().get("TEXT")),
+                () -> assertEquals(DxfUnits.M, r2000.units()));
     }
 }

@@ -86,6 +86,47 @@ class CuttingAcceptanceTest {
         rs274Accepts(w.toString(), "plate G41", 2);
     }
 
+    static java.util.stream.Stream<String> corpus() throws IOException {
+        Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
+        try (java.util.stream.Stream<Path> s = Files.walk(CORPUS)) {
+            return s.filter(p -> p.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".dxf"))
+                    .map(p -> CORPUS.relativize(p).toString()).sorted().toList().stream();
+        }
+    }
+
+    /** Every corpus drawing, default and paper mode: a program LinuxCNC accepts, or a clear refusal of the file. */
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.MethodSource("corpus")
+    void everyCorpusDrawingIsCutInBothModesIntoAProgramLinuxCncAccepts(String name) throws Exception {
+        for (boolean paper : new boolean[] {false, true}) {
+            CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, "plasma", 3, 1, "arc", 0.001, "auto", paper,
+                    "linuxcnc");
+            CuttingService.Result r;
+            try {
+                r = CuttingService.compute(s, ProgressMonitor.NONE);
+            } catch (org.fresa.model.CamInputException e) {
+                assertTrue(e.getMessage().contains(name.substring(name.indexOf('/') + 1)), e.getMessage());
+                return;
+            }
+            rs274Accepts(r.program(), name + (paper ? " (paper mode)" : ""), 0);
+        }
+    }
+
+    /** G41/G42 left to the controller (D = the 2 mm kerf): LinuxCNC's cutter-compensation checks pass. */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Teile.dxf",
+        "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf", "dxf2gcode/lwpoly-bulge.dxf",
+        "dxf2gcode/american-flag.dxf", "dxf2gcode/Schlüssel_Andi.dxf"})
+    void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
+        Path dxf = CORPUS.resolve(name);
+        Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
+        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", 0.001, "auto", false, "linuxcnc",
+                "controller", "process", "process", 0, true);
+        CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
+        assertTrue(r.program().contains("G41"), name);
+        rs274Accepts(r.program(), name + " G41/G42", 2);
+    }
+
     @ParameterizedTest(name = "post {0}")
     @ValueSource(strings = {"linuxcnc", "iso"})
     void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {

@@ -33,7 +33,8 @@ class JobXmlTest {
                 .withRobot(new RobotSettings("irb140", new Placement(450, 0, 350, 0, 0, 15),
                         new Placement(0, 10, 0, -90, 0, 0), List.of("csv", "rapid")))
                 .withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, "7m"))
-                .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, "laser", 3, 1, "line", 0.001, "mm", true, "iso"))
+                .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, "laser", 3, 1, "line", 0.001, "mm", true, "iso",
+                        "controller", "ccw", "ccw", 0.5, false))
                 .withGrading(new GradingSettings(dir.resolve("sole.contour"), 40, "36-44", true, "paris",
                         OptionalDouble.of(6.67), OptionalDouble.empty(), Optional.of(Vec2.of(12.5, -3)), 0.015, "additive"));
     }

@@ -45,6 +45,34 @@ class CuttingViewModelTest {
         assertTrue(vm.program().contains("M3 S1"));
     }
 
+    @Test
+    void aJobSavedFromTheTabRunsWithFresaRun(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(Path.of("samples/cutting/plate.dxf").toAbsolutePath());
+        vm.setProcess("laser");
+        vm.setCompensation("controller");
+        vm.setOuterDirection("ccw");
+        vm.setHoleDirection("cw");
+        vm.setOvercutMm("0.5");
+        vm.setAvoidCutParts(false);
+        org.fresa.job.Job job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT));
+        Path file = dir.resolve("cut.xml");
+        org.fresa.job.JobXml.write(job, file);
+        org.fresa.job.Job read = org.fresa.job.JobXml.read(file);
+        assertEquals(job.cutting(), read.cutting());
+
+        CuttingViewModel again = new CuttingViewModel();
+        again.load(read);
+        assertEquals(vm.settings(), again.settings());
+
+        java.io.StringWriter err = new java.io.StringWriter();
+        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        assertTrue(status <= 1, err.toString());
+        String program = java.nio.file.Files.readString(dir.resolve("out").resolve("program.ngc"));
+        assertTrue(program.contains("G42") && program.contains("M64 P0"), program);
+    }
+
     private static PlotScene.Layer layer(PlotScene s, String name) {
         return s.layers().stream().filter(l -> l.name().equals(name)).findFirst().orElseThrow();
     }

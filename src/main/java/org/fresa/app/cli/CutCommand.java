@@ -48,6 +48,25 @@ final class CutCommand implements Callable<Integer> {
     @Option(names = "--paper-mode", description = "the 2010 paper's rules (largest contour outside, no lead-ins)")
     boolean paperMode;
 
+    @Option(names = "--compensation", paramLabel = "software|controller", defaultValue = "software",
+            description = "software: the path is offset by W/2; controller: the drawn contour with G41/G42 (D = W)")
+    String compensation;
+
+    @Option(names = "--outer-direction", paramLabel = "cw|ccw|process", defaultValue = "process",
+            description = "sense of outer contours; process: the process's default (clockwise)")
+    String outerDirection;
+
+    @Option(names = "--hole-direction", paramLabel = "cw|ccw|process", defaultValue = "process",
+            description = "sense of holes; process: the opposite of the outer contours")
+    String holeDirection;
+
+    @Option(names = "--overcut", paramLabel = "LEN", defaultValue = "0", description = "run past the start of each cut (mm)")
+    double overcutMm;
+
+    @Option(names = "--no-avoid-cut-parts", negatable = false,
+            description = "rapid moves go straight, even over parts already cut free")
+    boolean straightRapids;
+
     @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc", description = "post-processor; default ${DEFAULT-VALUE}")
     String post;
 
@@ -57,7 +76,8 @@ final class CutCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         CuttingSettings s = new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead,
-                tolerance == null ? 0.001 : tolerance, units, paperMode, post);
+                tolerance == null ? 0.001 : tolerance, units, paperMode, post, compensation, outerDirection, holeDirection,
+                overcutMm, !straightRapids);
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
                 progress -> CuttingService.run(s, out, tolerance != null, progress));
     }

@@ -1,0 +1,288 @@
+package org.fresa.cutting;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.PriorityQueue;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Vec2;
+
+/**
+ * Routes rapid moves around parts that are already cut free, as nesting CAM does ("avoid cut
+ * parts" in the traverse): a freed part can tip up, and a head travelling over it can strike
+ * it. Each cut part is an obstacle: the convex hull of its cut path (the tool centre, half a
+ * kerf off the part), grown by a clearance. A rapid that would cross an obstacle goes instead
+ * along the shortest path of the visibility graph over the vertices of the obstacles in its way
+ * (found incrementally: the obstacles crossing the straight move first, then any the detour
+ * meets).
+ *
+ * <p>Where no detour exists (the rapid starts or ends inside an obstacle's hull, e.g. in the
+ * mouth of a C-shaped part; the obstacle is then tried without its clearance, then left out) the
+ * rapid stays straight: the head passes over the part, which is what a machine without a torch
+ * lift does anyway; such moves are counted by {@link #unavoidable()}.
+ */
+final class RapidRouter {
+    private static final double EPS = 1e-7;
+    private static final int MAX_ROUNDS = 12;
+
+    /** A convex obstacle: counter-clockwise hull vertices, grown and raw. */
+    private record Obstacle(Vec2[] grown, Vec2[] raw, Box2 box) {
+    }
+
+    private final double clearanceMm;
+    private final List<Obstacle> obstacles = new ArrayList<>();
+    private int unavoidable;
+
+    /** @param clearanceMm how far a detour keeps from a cut part's path (mm) */
+    RapidRouter(double clearanceMm) {
+        this.clearanceMm = clearanceMm;
+    }
+
+    /** Rapids that had to stay straight over a cut part. */
+    int unavoidable() {
+        return unavoidable;
+    }
+
+    /** Marks a part as cut free: its path becomes an obstacle for the following rapids. */
+    void cutFree(Contour path) {
+        List<Vec2> pts = new ArrayList<>();
+        for (Curve2 c : path.curves()) {
+            pts.add(c.start());
+            if (c instanceof Arc2 a && a.radius() > 0) {
+                double sweep = a.sweepRad();
+                int n = Math.max(1, (int) Math.ceil(Math.abs(sweep) / Math.toRadians(10)));
+                double grow = 1 / Math.cos(Math.abs(sweep) / n / 2); // circumscribed: the hull holds the arc
+                for (int k = 0; k < n; k++) {
+                    double ang = a.startAngleRad() + sweep * (k + 0.5) / n;
+                    pts.add(a.center().plus(Vec2.ofAngle(ang).times(a.radius() * grow)));
+                }
+            }
+            pts.add(c.end());
+        }
+        Vec2[] raw = hull(pts);
+        if (raw.length < 3) {
+            return;
+        }
+        List<Vec2> big = new ArrayList<>();
+        double r = clearanceMm / Math.cos(Math.PI / 8);
+        for (Vec2 p : raw) {
+            for (int k = 0; k < 8; k++) {
+                big.add(p.plus(Vec2.ofAngle(Math.PI / 8 + k * Math.PI / 4).times(r)));
+            }
+        }
+        Vec2[] grown = clearanceMm > 0 ? hull(big) : raw;
+        obstacles.add(new Obstacle(grown, raw, box(grown)));
+    }
+
+    /** The rapid from a to b: a, any detour points, b. */
+    List<Vec2> route(Vec2 a, Vec2 b) {
+        List<Vec2[]> usable = new ArrayList<>();
+        List<Box2> boxes = new ArrayList<>();
+        for (Obstacle o : obstacles) {
+            Vec2[] poly = o.grown;
+            if (inside(poly, a) || inside(poly, b)) {
+                poly = o.raw;
+                if (inside(poly, a) || inside(poly, b)) {
+                    if (crosses(poly, a, b)) {
+                        unavoidable++;
+                    }
+                    continue;
+                }
+            }
+            usable.add(poly);
+            boxes.add(box(poly));
+        }
+        List<Integer> active = new ArrayList<>();
+        for (int i = 0; i < usable.size(); i++) {
+            if (boxHit(boxes.get(i), a, b) && crosses(usable.get(i), a, b)) {
+                active.add(i);
+            }
+        }
+        if (active.isEmpty()) {
+            return List.of(a, b);
+        }
+        for (int round = 0; round < MAX_ROUNDS; round++) {
+            List<Vec2> path = shortest(a, b, usable, boxes, active);
+            if (path == null) {
+                break;
+            }
+            boolean clean = true;
+            for (int k = 0; k + 1 < path.size(); k++) {
+                for (int i = 0; i < usable.size(); i++) {
+                    if (!active.contains(i) && boxHit(boxes.get(i), path.get(k), path.get(k + 1))
+                            && crosses(usable.get(i), path.get(k), path.get(k + 1))) {
+                        active.add(i);
+                        clean = false;
+                    }
+                }
+            }
+            if (clean) {
+                // the detour must not pass over more cut parts (those it could not plan around
+                // included) than the straight move does
+                return badness(path) < badness(List.of(a, b)) ? path : List.of(a, b);
+            }
+        }
+        unavoidable++;
+        return List.of(a, b);
+    }
+
+    /** Segments of the route crossing the raw hull of a cut part, counted per part. */
+    private int badness(List<Vec2> route) {
+        int n = 0;
+        for (int k = 0; k + 1 < route.size(); k++) {
+            for (Obstacle o : obstacles) {
+                if (boxHit(o.box, route.get(k), route.get(k + 1)) && crosses(o.raw, route.get(k), route.get(k + 1))) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+
+    /** Dijkstra over a, b and the active obstacles' vertices; edges that cross no active obstacle. */
+    private static List<Vec2> shortest(Vec2 a, Vec2 b, List<Vec2[]> polys, List<Box2> boxes, List<Integer> active) {
+        List<Vec2> nodes = new ArrayList<>();
+        nodes.add(a);
+        nodes.add(b);
+        for (int i : active) {
+            nodes.addAll(Arrays.asList(polys.get(i)));
+        }
+        int n = nodes.size();
+        double[] dist = new double[n];
+        int[] prev = new int[n];
+        boolean[] done = new boolean[n];
+        Arrays.fill(dist, Double.POSITIVE_INFINITY);
+        Arrays.fill(prev, -1);
+        dist[0] = 0;
+        PriorityQueue<double[]> queue = new PriorityQueue<>(Comparator.comparingDouble(e -> e[0]));
+        queue.add(new double[] {0, 0});
+        while (!queue.isEmpty()) {
+            int u = (int) queue.poll()[1];
+            if (done[u]) {
+                continue;
+            }
+            done[u] = true;
+            if (u == 1) {
+                break;
+            }
+            for (int v = 1; v < n; v++) {
+                if (done[v]) {
+                    continue;
+                }
+                double d = dist[u] + nodes.get(u).distance(nodes.get(v));
+                if (d >= dist[v]) {
+                    continue;
+                }
+                boolean free = true;
+                for (int i : active) {
+                    if (boxHit(boxes.get(i), nodes.get(u), nodes.get(v)) && crosses(polys.get(i), nodes.get(u), nodes.get(v))) {
+                        free = false;
+                        break;
+                    }
+                }
+                if (free) {
+                    dist[v] = d;
+                    prev[v] = u;
+                    queue.add(new double[] {d, v});
+                }
+            }
+        }
+        if (prev[1] < 0) {
+            return null;
+        }
+        List<Vec2> path = new ArrayList<>();
+        for (int v = 1; v >= 0; v = prev[v]) {
+            path.add(0, nodes.get(v));
+        }
+        return path;
+    }
+
+    /** True when the segment a-b passes through the open interior of the convex CCW polygon. */
+    static boolean crosses(Vec2[] poly, Vec2 a, Vec2 b) {
+        double t0 = 0;
+        double t1 = 1;
+        Vec2 ab = b.minus(a);
+        for (int i = 0; i < poly.length; i++) {
+            Vec2 p = poly[i];
+            Vec2 e = poly[(i + 1) % poly.length].minus(p);
+            double len = e.norm();
+            double f0 = e.cross(a.minus(p)) / len - EPS; // > 0 inside
+            double df = e.cross(ab) / len;
+            if (df == 0) {
+                if (f0 <= 0) {
+                    return false;
+                }
+            } else {
+                double t = -f0 / df;
+                if (df > 0) {
+                    t0 = Math.max(t0, t);
+                } else {
+                    t1 = Math.min(t1, t);
+                }
+                if (t1 - t0 <= 1e-12) {
+                    return false;
+                }
+            }
+        }
+        return (t1 - t0) * ab.norm() > EPS;
+    }
+
+    static boolean inside(Vec2[] poly, Vec2 p) {
+        for (int i = 0; i < poly.length; i++) {
+            Vec2 q = poly[i];
+            Vec2 e = poly[(i + 1) % poly.length].minus(q);
+            if (e.cross(p.minus(q)) / e.norm() <= EPS) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean boxHit(Box2 box, Vec2 a, Vec2 b) {
+        return Math.max(a.x(), b.x()) >= box.minX() && Math.min(a.x(), b.x()) <= box.maxX()
+                && Math.max(a.y(), b.y()) >= box.minY() && Math.min(a.y(), b.y()) <= box.maxY();
+    }
+
+    private static Box2 box(Vec2[] poly) {
+        double x0 = Double.POSITIVE_INFINITY;
+        double y0 = Double.POSITIVE_INFINITY;
+        double x1 = Double.NEGATIVE_INFINITY;
+        double y1 = Double.NEGATIVE_INFINITY;
+        for (Vec2 p : poly) {
+            x0 = Math.min(x0, p.x());
+            y0 = Math.min(y0, p.y());
+            x1 = Math.max(x1, p.x());
+            y1 = Math.max(y1, p.y());
+        }
+        return new Box2(x0, y0, x1, y1);
+    }
+
+    /** Andrew's monotone chain: the convex hull, counter-clockwise, without collinear points. */
+    static Vec2[] hull(List<Vec2> points) {
+        List<Vec2> p = new ArrayList<>(points);
+        p.sort(Comparator.comparingDouble(Vec2::x).thenComparingDouble(Vec2::y));
+        int n = p.size();
+        if (n < 3) {
+            return p.toArray(new Vec2[0]);
+        }
+        Vec2[] h = new Vec2[2 * n];
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            while (k >= 2 && h[k - 1].minus(h[k - 2]).cross(p.get(i).minus(h[k - 2])) <= 0) {
+                k--;
+            }
+            h[k++] = p.get(i);
+        }
+        for (int i = n - 2, lower = k + 1; i >= 0; i--) {
+            while (k >= lower && h[k - 1].minus(h[k - 2]).cross(p.get(i).minus(h[k - 2])) <= 0) {
+                k--;
+            }
+            h[k++] = p.get(i);
+        }
+        return Arrays.copyOf(h, k - 1);
+    }
+}

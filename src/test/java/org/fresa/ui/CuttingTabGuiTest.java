@@ -1,0 +1,94 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.timing.Condition;
+import org.assertj.swing.timing.Pause;
+import org.assertj.swing.timing.Timeout;
+import org.fresa.job.Job;
+import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.JobTask;
+import org.fresa.job.RecentJobs;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The Cutting tab under a (virtual) display: a job's drawing cut, shown and written to target/screenshots. */
+class CuttingTabGuiTest {
+
+    @TempDir
+    Path dir;
+
+    FrameFixture window;
+
+    @BeforeAll
+    static void needsADisplay() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
+        FailOnThreadViolationRepaintManager.install();
+    }
+
+    @BeforeEach
+    void openWindow() {
+        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
+        window = new FrameFixture(w);
+        window.show(new java.awt.Dimension(1400, 860));
+    }
+
+    @AfterEach
+    void closeWindow() {
+        if (window != null) {
+            window.cleanUp();
+        }
+    }
+
+    private void cut(Path drawing, String shot) {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.CUT).withCutting(new CuttingSettings(
+                drawing.toAbsolutePath(), 2, "plasma", 3, 1, "arc", 0.001, "auto", false, "linuxcnc"))));
+        window.tabbedPane("tabs").selectTab("Cutting");
+        window.textBox("cutting-kerf").requireText("2");
+        window.button("cutting-cut").click();
+        Pause.pause(new Condition("the drawing is cut") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> window.textBox("cutting-totals").target().getText()).contains("pierces");
+            }
+        }, Timeout.timeout(60_000));
+        String totals = GuiActionRunner.execute(() -> window.textBox("cutting-totals").target().getText());
+        assertTrue(totals.contains("cut ") && totals.contains(" s;"), totals);
+        assertTrue(GuiActionRunner.execute(() -> window.textBox("cutting-program").target().getText()).contains("M3 S1"));
+        // what was cut is the job: saving it now saves these settings
+        assertEquals(drawing.toAbsolutePath(), GuiActionRunner.execute(() -> model.job().cutting().orElseThrow().drawing()));
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        try {
+            Files.createDirectories(Path.of("target", "screenshots"));
+            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", shot).toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    @Test
+    void theSamplePlateIsCutAndShown() {
+        cut(Path.of("samples/cutting/plate.dxf"), "cutting-plate.png");
+        window.textBox("cutting-totals").requireText(java.util.regex.Pattern.compile("(?s)10 contours.*"));
+    }
+
+    @Test
+    void aCorpusDrawingIsCutAndShown() {
+        Path p = Path.of("../shared/corpus/dxf/dxf2gcode/pumpenteile.dxf");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
+        cut(p, "cutting-pumpenteile.png");
+    }
+}
