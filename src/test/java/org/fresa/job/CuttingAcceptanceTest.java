@@ -141,16 +141,9 @@ class CuttingAcceptanceTest {
         Assumptions.assumeTrue(Files.isExecutable(RS274), "rs274 absent");
         Path f = Files.createTempFile("cut", ".ngc");
         Files.writeString(f, program);
-        List<String> cmd = new ArrayList<>(List.of(RS274.toString()));
-        if (toolDiameter > 0) {
-            cmd.addAll(List.of("--tool-diameter", Double.toString(toolDiameter)));
-        }
-        cmd.add(f.toString());
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes());
-        int rc = p.waitFor();
+        org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, toolDiameter);
         Files.deleteIfExists(f);
-        assertEquals(0, rc, () -> name + ": rs274 rejected the program: " + tail(out));
+        assertEquals(0, r.exitStatus(), () -> name + ": rs274 rejected the program: " + org.fresa.post.Rs274.log(r));
     }
 
     static String tail(String s) {

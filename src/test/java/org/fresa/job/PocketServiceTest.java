@@ -43,10 +43,8 @@ class PocketServiceTest {
         Path out = dir.resolve(name + ".ngc");
         TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
-        Process p = new ProcessBuilder(RS274.toString(), "--tool-diameter", Double.toString(s.toolDiameterMm()), out.toString())
-                .redirectErrorStream(true).redirectOutput(dir.resolve("rs274.log").toFile()).start();
-        assumeTrue(p.waitFor(120, TimeUnit.SECONDS), "rs274 timed out");
-        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("rs274.log")));
+        org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(out, s.toolDiameterMm());
+        assertEquals(0, r.exitStatus(), org.fresa.post.Rs274.log(r));
     }
 
     @Test
@@ -98,10 +96,8 @@ class PocketServiceTest {
         // the largest circle: in the middle room, 40 x 40 without an island
         assertEquals(40, (double) o.summary().get("max_hole_diameter"), 1e-3);
         assumeTrue(Files.isExecutable(RS274), "LinuxCNC's rs274 is not installed here");
-        Process p = new ProcessBuilder(RS274.toString(), "--tool-diameter", "6", out.toString())
-                .redirectErrorStream(true).redirectOutput(dir.resolve("rs274.log").toFile()).start();
-        assumeTrue(p.waitFor(120, TimeUnit.SECONDS), "rs274 timed out");
-        assertEquals(0, p.exitValue(), Files.readString(dir.resolve("rs274.log")));
+        org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(out, 6);
+        assertEquals(0, r.exitStatus(), org.fresa.post.Rs274.log(r));
     }
 
     @Test

@@ -96,10 +96,8 @@ class SoleServiceTest {
         Assumptions.assumeTrue(Files.isExecutable(rs274), "rs274 not available");
         try (var files = Files.list(dir)) {
             for (Path f : files.filter(x -> x.toString().endsWith(".ngc")).toList()) {
-                Process p = new ProcessBuilder(rs274.toString(), "--tool-diameter", "3.5", f.toString())
-                        .redirectErrorStream(true).start();
-                String log = new String(p.getInputStream().readAllBytes());
-                assertEquals(0, p.waitFor(), f + ": " + log);
+                org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, 3.5);
+                assertEquals(0, r.exitStatus(), f + ": " + org.fresa.post.Rs274.log(r));
             }
         }
     }

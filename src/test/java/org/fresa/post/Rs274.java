@@ -40,12 +40,40 @@ public final class Rs274 {
     public record Canon(String kind, Vec3 end, Vec3 center, Vec3 normal, int rotation) {
     }
 
+    /**
+     * Runs the interpreter on a program; a tool diameter of 0 or less leaves the tool table's
+     * default. The interpreter binary itself has been seen to die with a bus error on a loaded
+     * machine (a crash of the interpreter, not a verdict on the program): such a run is repeated,
+     * up to three times, so that only the controller's own answers decide a test.
+     */
     public static Result run(Path program, double toolDiameterMm) throws IOException, InterruptedException {
+        Result r = null;
+        for (int attempt = 0; attempt < 3; attempt++) {
+            r = runOnce(program, toolDiameterMm);
+            if (!crashed(r)) {
+                return r;
+            }
+        }
+        return r;
+    }
+
+    /** Whether the interpreter process died of a signal (bash reports it on the script's stderr). */
+    static boolean crashed(Result r) {
+        return r.exitStatus() != 0 && CRASH.matcher(r.stderr()).find();
+    }
+
+    private static final Pattern CRASH = Pattern.compile("Bus error|Segmentation fault|core dumped|Aborted|Illegal instruction");
+
+    private static Result runOnce(Path program, double toolDiameterMm) throws IOException, InterruptedException {
         Path outFile = Files.createTempFile("rs274", ".out");
         Path errFile = Files.createTempFile("rs274", ".err");
         try {
-            Process p = new ProcessBuilder(TOOL.toString(), "--tool-diameter", Double.toString(toolDiameterMm),
-                    program.toString())
+            List<String> cmd = new ArrayList<>(List.of(TOOL.toString()));
+            if (toolDiameterMm > 0) {
+                cmd.addAll(List.of("--tool-diameter", Double.toString(toolDiameterMm)));
+            }
+            cmd.add(program.toString());
+            Process p = new ProcessBuilder(cmd)
                     .redirectOutput(outFile.toFile()).redirectError(errFile.toFile()).start();
             if (!p.waitFor(120, TimeUnit.SECONDS)) {
                 p.destroyForcibly();
@@ -58,6 +86,12 @@ public final class Rs274 {
             Files.deleteIfExists(outFile);
             Files.deleteIfExists(errFile);
         }
+    }
+
+    /** The interpreter's last words, for a failure message: stderr, then the tail of stdout. */
+    public static String log(Result r) {
+        String out = r.stdout().length() > 800 ? r.stdout().substring(r.stdout().length() - 800) : r.stdout();
+        return r.stderr() + "\n" + out;
     }
 
     static List<Canon> parse(String out) {

@@ -193,10 +193,8 @@ class SoleTreadTest {
             Files.writeString(f, w.toString());
             assertFalse(w.toString().isEmpty());
             Assumptions.assumeTrue(Files.isExecutable(rs274), "rs274 not available");
-            Process p = new ProcessBuilder(rs274.toString(), "--tool-diameter", "3.5", f.toString())
-                    .redirectErrorStream(true).start();
-            String log = new String(p.getInputStream().readAllBytes());
-            assertEquals(0, p.waitFor(), log);
+            org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, 3.5);
+            assertEquals(0, r.exitStatus(), org.fresa.post.Rs274.log(r));
         }
     }
 }
