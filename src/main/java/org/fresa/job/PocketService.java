@@ -37,6 +37,9 @@ public final class PocketService {
     /** The thesis's own dialect, written by this module; every other post comes from {@link NcPosts}. */
     public static final List<String> SINUMERIK_7M_POSTS = List.of("7m-compat", "7m");
 
+    /** Most elements a pocket contour may have: the recognition compares elements pairwise at each event. */
+    public static final int MAX_ELEMENTS = 2000;
+
     private PocketService() {
     }
 
@@ -66,6 +69,10 @@ public final class PocketService {
             // milling through an island silently would be worse than refusing
             throw new CamInputException(file.toString(), "islands (inner contours) are not supported yet: "
                     + (contours.size() - 1) + " found");
+        }
+        if (contours.get(0).size() > MAX_ELEMENTS) {
+            throw new CamInputException(file.toString(), "the contour has " + contours.get(0).size()
+                    + " elements; pocket milling takes at most " + MAX_ELEMENTS + " (simplify the drawing)");
         }
         return PocketProfile.fromContours(contours);
     }

@@ -28,7 +28,8 @@ import org.fresa.stepnc.StepNcProgram.Dialect;
  */
 final class Iso14649Binder {
 
-    private static final int MAX_WORKPLAN_NESTING = 1000;
+    /** Real files nest workplans a few levels; deeper chains are refused before they exhaust the stack. */
+    static final int MAX_WORKPLAN_NESTING = 100;
     private static final org.fresa.geom.Tolerance SAME_FRAME = org.fresa.geom.Tolerance.DEFAULT;
 
     private final StepFile file;
@@ -473,7 +474,14 @@ final class Iso14649Binder {
 
     private Workplan workplan(E w, Deque<Long> stack, Optional<Setup> inherited) throws StepParseException {
         if (stack.contains(w.id())) {
-            throw error(w, "workplan contains itself (through " + stack + ")");
+            List<Long> loop = new ArrayList<>();
+            for (long id : stack) {
+                loop.add(id);
+                if (id == w.id()) {
+                    break;
+                }
+            }
+            throw error(w, "workplan contains itself (through " + (loop.size() > 10 ? loop.subList(0, 10) + "..." : loop) + ")");
         }
         if (stack.size() >= MAX_WORKPLAN_NESTING) {
             throw error(w, "workplans are nested more than " + MAX_WORKPLAN_NESTING + " deep");
