@@ -30,6 +30,8 @@ final class Iso14649Binder {
 
     /** Real files nest workplans a few levels; deeper chains are refused before they exhaust the stack. */
     static final int MAX_WORKPLAN_NESTING = 100;
+    /** Points further than this (mm) are refused: their squares and products would overflow. */
+    static final double MAX_COORDINATE_MM = 1e9;
     private static final org.fresa.geom.Tolerance SAME_FRAME = org.fresa.geom.Tolerance.DEFAULT;
 
     private final StepFile file;
@@ -275,6 +277,11 @@ final class Iso14649Binder {
         if (c.length < 1 || c.length > 3) {
             throw error(p, "a point has 1 to 3 coordinates, found " + c.length);
         }
+        for (double x : c) {
+            if (!(Math.abs(x) <= MAX_COORDINATE_MM)) {
+                throw error(p, "coordinate " + x + " is out of range (at most " + MAX_COORDINATE_MM + " mm from the origin)");
+            }
+        }
         return new Vec3(c[0], c.length > 1 ? c[1] : 0, c.length > 2 ? c[2] : 0);
     }
 
@@ -288,7 +295,8 @@ final class Iso14649Binder {
         }
         Vec3 v = new Vec3(c[0], c[1], c.length > 2 ? c[2] : 0);
         if (v.norm() == 0 || !Double.isFinite(v.norm())) {
-            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no length");
+            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no usable length"
+                    + " (zero, too small or too large to normalise)");
         }
         return v.normalized();
     }
