@@ -74,7 +74,12 @@ public final class PocketService {
             throw new CamInputException(file.toString(), "the contour has " + contours.get(0).size()
                     + " elements; pocket milling takes at most " + MAX_ELEMENTS + " (simplify the drawing)");
         }
-        return PocketProfile.fromContours(contours);
+        try {
+            return PocketProfile.fromContours(contours);
+        } catch (IllegalArgumentException e) {
+            // a contour the pocket model cannot take (one full circle, elements that vanish when merged)
+            throw new CamInputException(file.toString(), e.getMessage());
+        }
     }
 
     /** The plan for the settings (no file written). */
