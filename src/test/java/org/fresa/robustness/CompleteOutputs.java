@@ -30,7 +30,7 @@ public final class CompleteOutputs {
             String text = new String(b, StandardCharsets.ISO_8859_1);
             boolean ok;
             if (name.endsWith(".dxf")) {
-                ok = text.endsWith("EOF\n") && readable(b, name);
+                ok = (text.endsWith("EOF\n") || text.endsWith("EOF\r\n")) && readable(b, name);
             } else if (name.endsWith(".csv")) {
                 // a header and rows of the same width, ending with a line break
                 String[] lines = text.split("\n", -1);

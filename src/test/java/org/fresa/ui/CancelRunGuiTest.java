@@ -71,9 +71,14 @@ class CancelRunGuiTest {
                 OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, "multiplicative"));
     }
 
+    /** Presses a key in the window, clicking it first: without a window manager a closed chooser leaves no focus. */
+    void pressInWindow(int key) {
+        window.label("status").click();
+        window.label("status").pressAndReleaseKeys(key);
+    }
+
     void runInto(Path out) {
-        window.focus();
-        window.pressAndReleaseKeys(KeyEvent.VK_F5);
+        pressInWindow(KeyEvent.VK_F5);
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(10_000));
         fc.setCurrentDirectory(out.getParent().toFile());
         fc.selectFile(out.toFile());
@@ -102,7 +107,14 @@ class CancelRunGuiTest {
             Thread.sleep(20);
         }
         assertTrue(names(out).size() >= 2, "the run writes: " + names(out) + ", status " + status());
-        window.pressAndReleaseKeys(KeyEvent.VK_ESCAPE);
+        try {
+            var pane = window.optionPane(Timeout.timeout(100));
+            throw new AssertionError("no dialog while running, found: " + GuiActionRunner.execute(
+                    () -> String.valueOf(pane.target().getMessage())) + "; files " + names(out));
+        } catch (org.assertj.swing.exception.WaitTimedOutError expected) {
+            // running: no dialog yet
+        }
+        pressInWindow(KeyEvent.VK_ESCAPE);
         Pause.pause(new org.assertj.swing.timing.Condition("the run reports it is cancelled") {
             @Override
             public boolean test() {
@@ -124,6 +136,13 @@ class CancelRunGuiTest {
                         "no temporary file: " + files),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(out), "every final-named file is complete"));
 
+        try {
+            var pane = window.optionPane(Timeout.timeout(1000));
+            throw new AssertionError("no dialog after Cancel, found: " + GuiActionRunner.execute(
+                    () -> String.valueOf(pane.target().getMessage())));
+        } catch (org.assertj.swing.exception.WaitTimedOutError expected) {
+            // no dialog: the cancelled run said so in the status bar only
+        }
         // the window still works: another run goes through to its end
         GuiActionRunner.execute(() -> model.setJob(grading("40-41", false)));
         Path next = Files.createDirectories(dir.resolve("next"));
