@@ -35,6 +35,8 @@ import org.fresa.pocket.LineArcOffsetter;
 public final class CutPlanner {
 
     private static final Tolerance TOL = Tolerance.DEFAULT;
+    /** Most elements one contour may have to be offset. */
+    static final int MAX_CONTOUR_ELEMENTS = 20_000;
 
     private CutPlanner() {
     }
@@ -117,6 +119,13 @@ public final class CutPlanner {
             boolean outer = n.outer();
             (outer ? outers : holes).add(n.contour);
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
+            if (n.contour.size() > MAX_CONTOUR_ELEMENTS) {
+                // the offset compares every piece with every element: such a contour would not finish
+                uncut.add(n.contour);
+                warnings.add(label + " has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
+                        + " a contour may have (simplify the drawing): not cut");
+                continue;
+            }
             Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
             if (o.paperMode()) {
                 boolean toolLeft = outer ^ oriented.isCcw();

@@ -17,6 +17,7 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.DoubleFunction;
 import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
@@ -39,6 +40,12 @@ import org.fresa.geom.Vec2;
 public final class DxfReader {
 
     private static final Set<String> QUIET = Set.of("SEQEND", "ENDBLK", "VIEWPORT");
+    /** Entity visits (inserts expanded) after which the rest of the drawing is left out. */
+    static final long MAX_VISITS = 4_000_000;
+    /** Per-entity warnings kept; the rest are counted in one last warning. */
+    static final int MAX_WARNINGS = 1000;
+    /** Coordinates (mm) beyond this are refused: their squares would overflow the geometry. */
+    static final double MAX_COORDINATE_MM = 1e9;
 
     private final DxfTags tags;
     private final DxfReadOptions opt;
@@ -49,6 +56,9 @@ public final class DxfReader {
     private final Set<String> hiddenLayers = new HashSet<>();
     private final Set<String> reportedCycles = new HashSet<>();
     private int curveCount;
+    /** Entities visited while expanding inserts: bounds the work of nested arrays of empty blocks. */
+    private long visits;
+    private int warningsLeftOut;
     private boolean truncated;
     private Integer insUnits;
     private Integer measurement;
@@ -120,6 +130,9 @@ public final class DxfReader {
         DxfAffine root = DxfAffine.scale(mm, mm);
         for (Entity e : entities) {
             convert(e, root, null, 0, new ArrayDeque<>());
+        }
+        if (warningsLeftOut > 0) {
+            warnings.add(warningsLeftOut + " more warnings like the ones above are left out");
         }
         return new DxfDrawing(tags.source, units, mm, layers, warnings, ignored);
     }
@@ -340,8 +353,22 @@ public final class DxfReader {
 
     // ---------------------------------------------------------------- conversion
 
+    private void warn(String w) {
+        if (warnings.size() < MAX_WARNINGS) {
+            warnings.add(w);
+        } else {
+            warningsLeftOut++;
+        }
+    }
+
     private void convert(Entity e, DxfAffine t, String insertLayer, int depth, Deque<String> stack) {
         if (truncated) {
+            return;
+        }
+        if (++visits > MAX_VISITS) {
+            truncated = true;
+            warnings.add("the drawing's inserts expand to more than " + MAX_VISITS + " entities (" + describe(e)
+                    + "); the rest is left out");
             return;
         }
         if (str(e, 67, "0").trim().equals("1")) {
@@ -401,9 +428,9 @@ public final class DxfReader {
                 }
             }
         } catch (BadEntity ex) {
-            warnings.add(describe(e) + ": " + ex.getMessage());
+            warn(describe(e) + ": " + ex.getMessage());
         } catch (IllegalArgumentException ex) {
-            warnings.add(describe(e) + ": " + ex.getMessage() + "; left out");
+            warn(describe(e) + ": " + ex.getMessage() + "; left out");
         }
     }
 
@@ -457,7 +484,7 @@ public final class DxfReader {
         double bx = ny * az - nz * ay;
         double by = nz * ax - nx * az;
         if (Math.abs(nz) < 1 - 1e-9) {
-            warnings.add(describe(e) + ": not parallel to the XY plane (extrusion " + nx + ", " + ny + ", " + nz
+            warn(describe(e) + ": not parallel to the XY plane (extrusion " + nx + ", " + ny + ", " + nz
                     + "); projected onto XY");
         }
         return new DxfAffine(ax, bx, ay, by, elevation * nx, elevation * ny);
@@ -476,15 +503,12 @@ public final class DxfReader {
             }
             return;
         }
-        List<Curve2> list = layers.computeIfAbsent(layer, k -> new ArrayList<>());
         if (t.isSimilarity()) {
-            list.add(t.applySimilar(c));
-            curveCount++;
+            add(layer, t.applySimilar(c));
             return;
         }
         if (c instanceof Segment2 s) {
-            list.add(t.apply(s));
-            curveCount++;
+            add(layer, t.apply(s));
             return;
         }
         Arc2 a = (Arc2) c;
@@ -494,12 +518,26 @@ public final class DxfReader {
         Vec2 ctr = a.center();
         List<Curve2> out = DxfArcFitter.fit(List.of(new DxfArcFitter.Piece(
                 u -> t.apply(ctr.plus(Vec2.ofAngle(a0 + sw * u).times(r))), 0, 1)), a.isFullCircle(), opt.curveToleranceMm());
-        list.addAll(out);
-        curveCount += out.size();
+        for (Curve2 piece : out) {
+            add(layer, piece);
+        }
+    }
+
+    private void add(String layer, Curve2 c) {
+        Box2 b = c.bounds();
+        if (!(Math.max(Math.max(Math.abs(b.minX()), Math.abs(b.maxX())), Math.max(Math.abs(b.minY()), Math.abs(b.maxY())))
+                <= MAX_COORDINATE_MM)) {
+            throw new IllegalArgumentException("coordinates beyond " + MAX_COORDINATE_MM + " mm");
+        }
+        layers.computeIfAbsent(layer, k -> new ArrayList<>()).add(c);
+        curveCount++;
     }
 
     /** Consecutive pieces of one smooth curve as tangent-continuous biarcs within the curve tolerance. */
     private void emitPieces(String layer, List<DxfArcFitter.Piece> pieces, boolean closed) {
+        if (truncated) {
+            return;
+        }
         for (Curve2 c : DxfArcFitter.fit(pieces, closed, opt.curveToleranceMm())) {
             emit(layer, DxfAffine.IDENTITY, c);
         }
@@ -613,8 +651,9 @@ public final class DxfReader {
         // the minor axis is N x major: turned -90 degrees for an extrusion of (0, 0, -1)
         Vec2 minor = (nz >= 0 ? major.leftNormal() : major.leftNormal().negated()).times(ratio);
         double sweep = u1 - u0;
-        while (sweep <= 0) {
-            sweep += 2 * Math.PI;
+        if (sweep <= 0) {
+            // one step instead of adding 2 pi until positive, which never ends for |u0| >> 2 pi
+            sweep = sweep % (2 * Math.PI) + 2 * Math.PI;
         }
         if (sweep > 2 * Math.PI) {
             sweep = 2 * Math.PI;
@@ -655,7 +694,7 @@ public final class DxfReader {
         List<Double> ys = nums(e, 20);
         List<Double> ws = nums(e, 41);
         if (!hasSubclass(e) && tags.binary == false && str(e, 5, null) == null) {
-            warnings.add(describe(e) + ": no handle and no AcDbSpline subclass marker; read by its group codes");
+            warn(describe(e) + ": no handle and no AcDbSpline subclass marker; read by its group codes");
         }
         if (xs.size() != ys.size()) {
             throw new BadEntity(xs.size() + " x but " + ys.size() + " y control point coordinates");
@@ -783,12 +822,12 @@ public final class DxfReader {
         }
         if (stack.contains(name)) {
             if (reportedCycles.add(name)) {
-                warnings.add(describe(e) + ": block '" + name + "' inserts itself; the inner insert is left out");
+                warn(describe(e) + ": block '" + name + "' inserts itself; the inner insert is left out");
             }
             return;
         }
         if (depth >= opt.maxInsertDepth()) {
-            warnings.add(describe(e) + ": blocks nested deeper than " + opt.maxInsertDepth() + "; left out");
+            warn(describe(e) + ": blocks nested deeper than " + opt.maxInsertDepth() + "; left out");
             return;
         }
         double sx = num(e, 41, 1);
@@ -802,7 +841,7 @@ public final class DxfReader {
             throw new BadEntity("scale " + sx + " x " + sy + " flattens the block");
         }
         if ((long) cols * rows > 10_000) {
-            warnings.add(describe(e) + ": an array of " + cols + " x " + rows + " inserts is cut to the first 10000");
+            warn(describe(e) + ": an array of " + cols + " x " + rows + " inserts is cut to the first 10000");
         }
         DxfAffine o = ocs(e, 0);
         Vec2 at = new Vec2(req(e, 10), req(e, 20));

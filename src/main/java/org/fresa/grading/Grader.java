@@ -3,9 +3,11 @@ package org.fresa.grading;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalDouble;
+import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
 import org.fresa.model.CamInputException;
+import org.fresa.model.ExactDecimal;
 
 /**
  * Grades a base outline over sizes with the thesis's pantograph: finds the frame, measures the
@@ -16,6 +18,11 @@ import org.fresa.model.CamInputException;
  * same map but do not enter CP, LP or the frame.
  */
 public final class Grader {
+
+    /** Largest outline accepted (mm across): a sole is far smaller; larger is usually a unit mistake. */
+    static final double MAX_OUTLINE_MM = 5000;
+    /** Most elements an outline may have; the frame detection compares sample points pairwise. */
+    static final int MAX_ELEMENTS = 20_000;
 
     private final List<Contour> outlines;
     private final GradingPlan plan;
@@ -41,6 +48,15 @@ public final class Grader {
             throw new CamInputException(source, "no outline to grade");
         }
         Contour outer = outlines.get(0);
+        if (outer.size() > MAX_ELEMENTS) {
+            throw new CamInputException(source, "the outline has " + outer.size() + " elements; grading takes at most "
+                    + MAX_ELEMENTS + " (simplify the drawing)");
+        }
+        Box2 box = outer.bounds();
+        if (Math.max(box.width(), box.height()) > MAX_OUTLINE_MM) {
+            throw new CamInputException(source, "the outline is " + ExactDecimal.of(Math.max(box.width(), box.height()))
+                    + " mm across; a sole outline is at most " + ExactDecimal.of(MAX_OUTLINE_MM) + " mm (wrong units?)");
+        }
         GradingFrame frame = OutlineFrames.detect(outer, plan.origin(), plan.lengthAxisDeg(), source);
         double cp = Extents.sizeAlong(outer, frame.lengthAxis());
         double lp = Extents.sizeAlong(outer, frame.widthAxis());

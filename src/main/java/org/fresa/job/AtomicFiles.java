@@ -13,11 +13,35 @@ import java.nio.file.StandardCopyOption;
  * temporary file in the same folder, which is renamed over the target when it is closed. An
  * interrupted run (kill, cancel, an exception while writing) leaves no truncated file under the
  * final name, and the temporary file is removed when the writer fails.
+ *
+ * <p>Temporary files: a normal end, an exception or a SIGTERM (a shutdown hook) removes them. A
+ * SIGKILL or a power cut cannot, so they are hidden names ({@link #TEMP_PREFIX}) that the next
+ * write into the same folder removes once they are older than {@link #STALE}; younger ones may
+ * belong to another run writing into the folder at the same time and are left alone.
  */
 public final class AtomicFiles {
 
     /** The prefix of temporary files, so leftovers of a killed JVM are recognisable. */
     public static final String TEMP_PREFIX = ".fresa-tmp-";
+    /** The suffix of temporary files. */
+    public static final String TEMP_SUFFIX = ".part";
+    /** Age after which a temporary file is a leftover of a killed run. */
+    public static final java.time.Duration STALE = java.time.Duration.ofHours(1);
+
+    private static final java.util.Set<Path> IN_PROGRESS = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private static final java.util.Set<Path> CLEANED = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            for (Path p : IN_PROGRESS) {
+                try {
+                    Files.deleteIfExists(p);
+                } catch (IOException e) {
+                    // the JVM is ending: nothing better to do than leave the hidden file
+                }
+            }
+        }, "fresa-temp-files"));
+    }
 
     private AtomicFiles() {
     }
@@ -33,7 +57,11 @@ public final class AtomicFiles {
         Path abs = target.toAbsolutePath();
         Path dir = abs.getParent();
         Files.createDirectories(dir);
-        Path tmp = Files.createTempFile(dir, TEMP_PREFIX, ".part");
+        if (CLEANED.add(dir)) {
+            removeStale(dir);
+        }
+        Path tmp = Files.createTempFile(dir, TEMP_PREFIX, TEMP_SUFFIX);
+        IN_PROGRESS.add(tmp);
         boolean done = false;
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16)) {
@@ -50,10 +78,34 @@ public final class AtomicFiles {
             }
             done = true;
         } finally {
+            IN_PROGRESS.remove(tmp);
             if (!done) {
                 Files.deleteIfExists(tmp);
             }
         }
+    }
+
+    /**
+     * Removes the temporary files older than {@link #STALE} that killed runs left in the folder.
+     *
+     * @return how many were removed
+     */
+    public static int removeStale(Path dir) throws IOException {
+        java.nio.file.attribute.FileTime limit = java.nio.file.attribute.FileTime.from(
+                java.time.Instant.now().minus(STALE));
+        int n = 0;
+        try (java.nio.file.DirectoryStream<Path> ds = Files.newDirectoryStream(dir, TEMP_PREFIX + "*" + TEMP_SUFFIX)) {
+            for (Path p : ds) {
+                try {
+                    if (Files.isRegularFile(p) && Files.getLastModifiedTime(p).compareTo(limit) < 0 && Files.deleteIfExists(p)) {
+                        n++;
+                    }
+                } catch (IOException e) {
+                    // another run removed it, or it is not ours to remove: leave it
+                }
+            }
+        }
+        return n;
     }
 
     /** Writes text as UTF-8 atomically. */

@@ -15,6 +15,8 @@ import java.util.regex.Pattern;
 public final class OutputFolder {
 
     private static final Pattern SAFE_NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._+-]{0,127}");
+    /** Names Windows takes for devices whatever the extension (NUL.ngc writes nowhere). */
+    private static final Pattern WINDOWS_DEVICE = Pattern.compile("(?i)(CON|PRN|AUX|NUL|COM[0-9]|LPT[0-9])(\\..*)?");
 
     private final Path dir;
     private final List<Path> written = new ArrayList<>();
@@ -51,7 +53,8 @@ public final class OutputFolder {
 
     /** The path a file of that name will have; checks the name as {@link #write} does. */
     public Path resolve(String fileName) {
-        if (!SAFE_NAME.matcher(fileName).matches() || fileName.contains("..")) {
+        if (!SAFE_NAME.matcher(fileName).matches() || fileName.contains("..") || fileName.endsWith(".")
+                || WINDOWS_DEVICE.matcher(fileName).matches()) {
             throw new IllegalArgumentException("not a plain output file name: " + fileName);
         }
         Path p = dir.resolve(fileName).normalize();
@@ -64,10 +67,11 @@ public final class OutputFolder {
     /** Turns any text (an id from an input file) into a safe file-name part. */
     public static String sanitize(String text) {
         String s = text.replaceAll("[^A-Za-z0-9._+-]", "_").replace("..", "_");
-        if (s.isEmpty() || !Character.isLetterOrDigit(s.charAt(0))) {
+        if (s.isEmpty() || !Character.isLetterOrDigit(s.charAt(0)) || WINDOWS_DEVICE.matcher(s).matches()) {
             s = "x" + s;
         }
-        return s.length() > 100 ? s.substring(0, 100) : s;
+        s = s.length() > 100 ? s.substring(0, 100) : s;
+        return s.endsWith(".") ? s.substring(0, s.length() - 1) + "_" : s;
     }
 
     public synchronized List<Path> written() {

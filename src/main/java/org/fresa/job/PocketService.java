@@ -43,6 +43,9 @@ public final class PocketService {
     /** The thesis's own dialect, written by this module; every other post comes from {@link NcPosts}. */
     public static final List<String> SINUMERIK_7M_POSTS = List.of("7m-compat", "7m");
 
+    /** Most elements a pocket contour may have: the recognition compares elements pairwise at each event. */
+    public static final int MAX_ELEMENTS = 2000;
+
     private PocketService() {
     }
 
@@ -52,7 +55,12 @@ public final class PocketService {
         if (lower.endsWith(".dad")) {
             return DadReader.read(Files.readString(file, StandardCharsets.ISO_8859_1), file.toString());
         }
-        return PocketProfile.fromContours(readContours(file));
+        try {
+            return PocketProfile.fromContours(readContours(file));
+        } catch (IllegalArgumentException e) {
+            // a contour the pocket model cannot take (one full circle, elements that vanish when merged)
+            throw new CamInputException(file.toString(), e.getMessage());
+        }
     }
 
     /**
@@ -78,6 +86,11 @@ public final class PocketService {
         }
         if (contours.isEmpty()) {
             throw new CamInputException(file.toString(), "no contour in the file");
+        }
+        int elements = contours.stream().mapToInt(Contour::size).sum();
+        if (elements > MAX_ELEMENTS) {
+            throw new CamInputException(file.toString(), "the contours have " + elements
+                    + " elements; pocket milling takes at most " + MAX_ELEMENTS + " (simplify the drawing)");
         }
         return outerFirst(contours, file.toString());
     }

@@ -15,6 +15,9 @@ import org.fresa.geom.Vec2;
  */
 public final class PassPlanner {
 
+    /** Pass pieces (offset elements) a plan may hold; a plan needing more is refused, not built. */
+    static final int MAX_PIECES = 1_000_000;
+
     private final PocketTechnology tech;
     private final boolean faithful;
     private final double r;
@@ -50,7 +53,13 @@ public final class PassPlanner {
         PassPlanner p = new PassPlanner(tech, faithful);
         List<RecognitionNode> chain = new ArrayList<>();
         chain.add(rec.root());
-        p.run(rec.root(), chain, p.r, Double.NaN);
+        try {
+            p.run(rec.root(), chain, p.r, Double.NaN);
+        } catch (TooManyPasses e) {
+            throw new ToolTooLargeException("the pocket needs more than " + MAX_PIECES + " pass elements with a "
+                    + tech.toolDiameterMm() + " mm tool (largest hole " + rec.maxHoleDiameterMm()
+                    + " mm): use a larger tool or split the pocket");
+        }
         List<PocketPass> milled = new ArrayList<>(p.generated);
         Collections.reverse(milled);
         return new PocketPlan(rec, tech, p.generated, milled);
@@ -147,8 +156,23 @@ public final class PassPlanner {
         return chain.get(0).stateAt(t);
     }
 
+    /** The plan outgrows {@link #MAX_PIECES}: a huge pocket for the tool, or a stepover that does not advance. */
+    private static final class TooManyPasses extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        TooManyPasses() {
+            super(null, null, false, false);
+        }
+    }
+
+    private int pieceCount;
+
     private void emit(RecognitionNode node, List<RecognitionNode> chain, double d) {
         LoopState s = node.stateAt(d);
+        pieceCount += s.size();
+        if (pieceCount > MAX_PIECES || !Double.isFinite(d)) {
+            throw new TooManyPasses();
+        }
         List<PassPiece> pieces = new ArrayList<>();
         int n = s.size();
         for (int k = 1; k <= n; k++) {

@@ -134,7 +134,9 @@ public final class Recognition {
             double tdm = divisions.stream().mapToDouble(Division::t).min().orElse(Double.POSITIVE_INFINITY);
             double te = Math.min(ttm, tdm);
             if (Double.isInfinite(te)) {
-                throw new CamInputException("contour", "recognition found no event at t = " + t + " in " + s.elements()
+                String els = s.elements().toString();
+                throw new CamInputException("contour", "recognition found no event at t = " + t + " in "
+                        + (els.length() > 200 ? els.substring(0, 200) + "... (" + s.elements().size() + " elements)" : els)
                         + " (is the contour clockwise and closed?)");
             }
             Set<Integer> gone = new HashSet<>();

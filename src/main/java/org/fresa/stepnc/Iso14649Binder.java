@@ -28,7 +28,10 @@ import org.fresa.stepnc.StepNcProgram.Dialect;
  */
 final class Iso14649Binder {
 
-    private static final int MAX_WORKPLAN_NESTING = 1000;
+    /** Real files nest workplans a few levels; deeper chains are refused before they exhaust the stack. */
+    static final int MAX_WORKPLAN_NESTING = 100;
+    /** Points further than this (mm) are refused: their squares and products would overflow. */
+    static final double MAX_COORDINATE_MM = 1e9;
     private static final org.fresa.geom.Tolerance SAME_FRAME = org.fresa.geom.Tolerance.DEFAULT;
 
     private final StepFile file;
@@ -274,6 +277,11 @@ final class Iso14649Binder {
         if (c.length < 1 || c.length > 3) {
             throw error(p, "a point has 1 to 3 coordinates, found " + c.length);
         }
+        for (double x : c) {
+            if (!(Math.abs(x) <= MAX_COORDINATE_MM)) {
+                throw error(p, "coordinate " + x + " is out of range (at most " + MAX_COORDINATE_MM + " mm from the origin)");
+            }
+        }
         return new Vec3(c[0], c.length > 1 ? c[1] : 0, c.length > 2 ? c[2] : 0);
     }
 
@@ -287,7 +295,8 @@ final class Iso14649Binder {
         }
         Vec3 v = new Vec3(c[0], c[1], c.length > 2 ? c[2] : 0);
         if (v.norm() == 0 || !Double.isFinite(v.norm())) {
-            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no length");
+            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no usable length"
+                    + " (zero, too small or too large to normalise)");
         }
         return v.normalized();
     }
@@ -473,7 +482,14 @@ final class Iso14649Binder {
 
     private Workplan workplan(E w, Deque<Long> stack, Optional<Setup> inherited) throws StepParseException {
         if (stack.contains(w.id())) {
-            throw error(w, "workplan contains itself (through " + stack + ")");
+            List<Long> loop = new ArrayList<>();
+            for (long id : stack) {
+                loop.add(id);
+                if (id == w.id()) {
+                    break;
+                }
+            }
+            throw error(w, "workplan contains itself (through " + (loop.size() > 10 ? loop.subList(0, 10) + "..." : loop) + ")");
         }
         if (stack.size() >= MAX_WORKPLAN_NESTING) {
             throw error(w, "workplans are nested more than " + MAX_WORKPLAN_NESTING + " deep");

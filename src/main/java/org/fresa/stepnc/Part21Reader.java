@@ -26,8 +26,11 @@ import org.fresa.stepnc.Part21Lexer.Tok;
  */
 public final class Part21Reader {
 
-    /** Deepest nesting of lists and typed parameters accepted; deeper input is refused. */
-    public static final int MAX_DEPTH = 1000;
+    /**
+     * Deepest nesting of lists and typed parameters accepted; deeper input is refused. Real files
+     * nest a few levels; 256 keeps the recursive descent well inside a 512 KiB thread stack.
+     */
+    public static final int MAX_DEPTH = 256;
 
     private final Part21Lexer lx;
     private final String source;

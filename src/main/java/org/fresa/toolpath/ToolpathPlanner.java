@@ -66,7 +66,22 @@ public final class ToolpathPlanner {
     /** Feed when the technology has none that can be converted (mm/min). */
     public static final double DEFAULT_FEED = FeedRate.DEFAULT_MM_PER_MIN;
 
+    /** Smallest tool diameter planned (mm). */
+    static final double MIN_TOOL_MM = 0.01;
+    /** Largest length planned (mm): tool diameters, depths, feature sizes. */
+    static final double MAX_LENGTH_MM = 100_000;
+    /** Most passes (radial or axial) one workingstep may need; more is a unit or typing mistake. */
+    static final int MAX_STEPS = 100_000;
+
     private ToolpathPlanner() {
+    }
+
+    /** Refuses a span that a step would divide into more than {@link #MAX_STEPS} passes. */
+    static void bounded(String spanName, double spanMm, String stepName, double stepMm) {
+        if (!(spanMm / stepMm <= MAX_STEPS)) {
+            throw new IllegalArgumentException(spanName + " " + spanMm + " mm in steps of " + stepName + " " + stepMm
+                    + " mm would need more than " + MAX_STEPS + " passes");
+        }
     }
 
     /**
@@ -157,6 +172,19 @@ public final class ToolpathPlanner {
         Tooling tooling = new Tooling(number, dia, tech.spindleRpm().orElse(0), feed, drillingTool ? feed : feed / 2);
         double retract = op.retractPlaneMm().orElse(DEFAULT_RETRACT_MM);
         double depth = f.depthMm().orElse(0);
+        if (!(dia >= MIN_TOOL_MM && dia <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("tool diameter " + dia + " mm is outside " + MIN_TOOL_MM + " to "
+                    + MAX_LENGTH_MM + " mm");
+        }
+        if (!(Math.abs(depth) <= MAX_LENGTH_MM && Math.abs(retract) <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("depth " + depth + " mm or retract plane " + retract + " mm is beyond "
+                    + MAX_LENGTH_MM + " mm");
+        }
+        double axial = op.axialCuttingDepthMm().orElse(0);
+        if (axial > 0) {
+            bounded("depth", Math.max(Math.abs(depth), Math.abs(op.cuttingDepthMm().orElse(0))), "axial cutting depth",
+                    axial);
+        }
         Heights h = new Heights(retract, retract, 0, -depth);
         Transform3 place = f.placement();
         ToolpathSection local;
@@ -206,6 +234,7 @@ public final class ToolpathPlanner {
         } else {
             throw new UnsupportedOperationException("planar faces bounded by " + sp.entity() + " are not supported yet");
         }
+        bounded("the face", Math.max(box.width(), box.height()), "the stepover", d);
         boolean bidirectional = true;
         var st = op.strategy().map(org.fresa.stepnc.Strategy::type);
         if (st.isPresent() && st.get() == org.fresa.stepnc.Strategy.StrategyType.UNIDIRECTIONAL) {
@@ -275,6 +304,8 @@ public final class ToolpathPlanner {
                 .map(v -> profilePlacement.inverse().applyToDirection(v)).map(v -> new Vec2(v.x(), v.y()))
                 .filter(v -> v.norm() > 1e-9).orElse(Vec2.UNIT_X);
         boolean rough = isRough(op);
+        Box2 extent = p.contour(tol).bounds();
+        bounded("the pocket", Math.max(extent.width(), extent.height()), "the stepover", stepover(op, t));
         MillingPlan plan = new MillingPlan(s, stepover(op, t), op.axialCuttingDepthMm().orElse(0),
                 rough ? op.allowanceSideMm().orElse(0) : 0, rough ? op.allowanceBottomMm().orElse(0) : 0,
                 feedDir, clockwise(op), approach(op.approach()), false);
@@ -297,6 +328,7 @@ public final class ToolpathPlanner {
         if (HoleMaking.helicalClears(holeD, t.diameterMm())) {
             return HoleMaking.mill(label, Vec2.ZERO, holeD, h, t, ap, clockwise(op), tol);
         }
+        bounded("the hole", holeD, "the stepover", stepover(op, t));
         Profile circle = new Profile.Circle(Vec2.ZERO, holeD / 2);
         double room = holeD / 2 - t.radiusMm();
         Approach a = new Approach.Helix(Math.max(room / 2, 0.1), 5);

@@ -76,6 +76,10 @@ final class BackgroundTasks {
 
             @Override
             protected void process(List<Object[]> chunks) {
+                if (isCancelled()) {
+                    // the worker runs on to its next check: its progress must not cover "cancelled"
+                    return;
+                }
                 Object[] last = chunks.get(chunks.size() - 1);
                 double f = (Double) last[0];
                 bar.progress.setIndeterminate(f < 0);

@@ -73,6 +73,8 @@ class DamagedInputTest {
         assumeTrue(Files.isRegularFile(c.sample()), "sample missing: " + c.sample());
         byte[] original = Files.readAllBytes(c.sample());
         Random rnd = new Random(("" + c + damage).hashCode());
+        long maxMs = 0;
+        int[] counts = new int[4];
         for (int i = 0; i < VARIANTS; i++) {
             byte[] bad = damage(original, damage, rnd);
             Path in = dir.resolve("in-" + i + c.extension());
@@ -85,13 +87,18 @@ class DamagedInputTest {
             }
             StringWriter so = new StringWriter();
             StringWriter se = new StringWriter();
+            long t0 = System.nanoTime();
             int status = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> FresaCommand.execute(
                     new PrintWriter(so, true), new PrintWriter(se, true), args.toArray(String[]::new)),
                     c + " " + damage + " #" + i + " hangs");
+            long ms = (System.nanoTime() - t0) / 1_000_000;
+            maxMs = Math.max(maxMs, ms);
+            counts[status >= 0 && status <= 2 ? status : 3]++;
             List<Path> files;
             try (Stream<Path> s = Files.list(out)) {
                 files = s.toList();
             }
+            List<String> nonFinite = HostileCliTest.nonFinite(files, so.toString());
             String what = c + " " + damage + " #" + i + ": status " + status + ", stderr: " + se;
             assertAll(what,
                     () -> assertTrue(status == 0 || status == 1 || status == 2),
@@ -99,8 +106,12 @@ class DamagedInputTest {
                     () -> assertFalse(se.toString().contains("internal error"), "no internal error"),
                     () -> assertTrue(status != 2 || files.isEmpty(), "nothing written for refused input: " + files),
                     () -> assertTrue(files.stream().noneMatch(f -> f.getFileName().toString()
-                            .startsWith(AtomicFiles.TEMP_PREFIX)), "no temporary file left"));
+                            .startsWith(AtomicFiles.TEMP_PREFIX)), "no temporary file left"),
+                    () -> assertTrue(nonFinite.isEmpty(), "no NaN or Infinity in " + nonFinite));
         }
+        // the measured figures, for the issue's acceptance (surefire keeps them in the test's output file)
+        System.out.println("DamagedInputTest " + c + " " + damage + ": " + VARIANTS + " variants, exit 0/1/2 = "
+                + counts[0] + "/" + counts[1] + "/" + counts[2] + ", slowest " + maxMs + " ms");
     }
 
     static byte[] damage(byte[] original, String how, Random rnd) {

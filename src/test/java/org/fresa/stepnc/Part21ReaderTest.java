@@ -227,7 +227,7 @@ class Part21ReaderTest {
 
     @Test
     void nestingUpToTheLimitIsAccepted() throws Exception {
-        int n = 500;
+        int n = Part21Reader.MAX_DEPTH - 5;
         StepValue v = param("(".repeat(n) + "1" + ")".repeat(n));
         assertInstanceOf(StepValue.Aggregate.class, v);
     }
