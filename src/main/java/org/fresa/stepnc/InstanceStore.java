@@ -225,7 +225,21 @@ final class InstanceStore {
         return strings.get((int) c.var());
     }
 
+    // the instances decoded last, by index modulo its size: the binding asks for many twice
+    private final StepInstance[] recent = new StepInstance[1024];
+
     StepInstance instanceAt(int i) {
+        int slot = i & (recent.length - 1);
+        StepInstance r = recent[slot];
+        if (r != null && r.id() == ids[i]) {
+            return r;
+        }
+        r = decode(i);
+        recent[slot] = r;
+        return r;
+    }
+
+    private StepInstance decode(int i) {
         int end = i + 1 < count ? starts[i + 1] : size;
         Cursor c = new Cursor(starts[i]);
         long id = ids[i];

@@ -347,7 +347,7 @@ public final class Part21Reader {
             case STRING -> "a string";
             case KEYWORD -> shorten(lx.text);
             case INSTANCE -> "#" + lx.longValue;
-            default -> "'" + shorten(lx.text) + "'";
+            default -> "'" + shorten(lx.tokenText()) + "'";
         };
         return lx.errorHere("expected " + expected + ", found " + found);
     }
