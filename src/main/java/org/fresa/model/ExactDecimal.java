@@ -29,6 +29,78 @@ public final class ExactDecimal {
         if (d == Math.rint(d) && Math.abs(d) < 1e15) {
             return Long.toString((long) d);
         }
+        String fast = fewDecimals(d);
+        return fast != null ? fast : bySearch(d);
+    }
+
+    private static final double[] POW10 = new double[23];
+
+    static {
+        double p = 1;
+        for (int i = 0; i < POW10.length; i++) {
+            POW10[i] = p;
+            p *= 10;
+        }
+    }
+
+    private static final double TWO_53 = 9007199254740992.0;
+
+    /**
+     * The common case without BigDecimal: the fewest decimals k for which an integer m near
+     * d * 10^k reads back as d. m / 10^k of two exact doubles is rounded once, exactly as the
+     * decimal m E-k is read, so the test is exact; when two neighbours would both do (a tie the
+     * search decides by rounding the exact value), or m needs more than 53 bits, this gives up.
+     */
+    private static String fewDecimals(double d) {
+        double mag = Math.abs(d);
+        if (mag < 1e-7 || mag >= 1e15) {
+            return null;
+        }
+        for (int k = 1; k < POW10.length; k++) {
+            double scaled = mag * POW10[k];
+            if (scaled >= TWO_53 / 2) {
+                return null;
+            }
+            long m0 = Math.round(scaled);
+            long found = -1;
+            int hits = 0;
+            for (long m = Math.max(0, m0 - 1); m <= m0 + 1; m++) {
+                if (m / POW10[k] == mag) {
+                    found = m;
+                    hits++;
+                }
+            }
+            if (hits > 1) {
+                return null;
+            }
+            if (hits == 1) {
+                return plain(d < 0, found, k);
+            }
+        }
+        return null;
+    }
+
+    /** m * 10^-k in plain notation, k > 0, m not a multiple of 10 (k is the fewest). */
+    private static String plain(boolean negative, long m, int k) {
+        String digits = Long.toString(m);
+        StringBuilder sb = new StringBuilder(digits.length() + k + 3);
+        if (negative) {
+            sb.append('-');
+        }
+        if (digits.length() <= k) {
+            sb.append("0.");
+            for (int i = digits.length(); i < k; i++) {
+                sb.append('0');
+            }
+            sb.append(digits);
+        } else {
+            sb.append(digits, 0, digits.length() - k).append('.').append(digits, digits.length() - k, digits.length());
+        }
+        return sb.toString();
+    }
+
+    /** The reference: a binary search over the number of significant digits, with BigDecimal. */
+    static String bySearch(double d) {
         String s = Double.toString(d);
         BigDecimal exact = new BigDecimal(d);
         int digits = new BigDecimal(s).precision();

@@ -52,4 +52,21 @@ class ExactDecimalTest {
     void nanHasNoDecimal() {
         assertThrows(IllegalArgumentException.class, () -> ExactDecimal.of(Double.NaN));
     }
+
+    @Test
+    void theFastPathWritesWhatTheSearchWrites() {
+        // issue 11: decimals of CAM magnitudes are found without BigDecimal; same text as the search
+        Random rnd = new Random(11);
+        for (int i = 0; i < 60_000; i++) {
+            double d = switch (i % 4) {
+                case 0 -> Math.round(rnd.nextGaussian() * 1e6) / 1000.0;
+                case 1 -> rnd.nextGaussian() * 500;
+                case 2 -> Math.round(rnd.nextDouble() * 1e9) / Math.pow(10, rnd.nextInt(16));
+                default -> (rnd.nextDouble() - 0.5) * Math.pow(10, rnd.nextInt(24) - 8);
+            };
+            if (d != Math.rint(d)) {
+                assertEquals(ExactDecimal.bySearch(d), ExactDecimal.of(d), () -> "for " + d);
+            }
+        }
+    }
 }
