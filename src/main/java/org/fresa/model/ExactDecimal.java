@@ -30,7 +30,70 @@ public final class ExactDecimal {
             return Long.toString((long) d);
         }
         String fast = fewDecimals(d);
-        return fast != null ? fast : bySearch(d);
+        return fast != null ? fast : byDigits(d);
+    }
+
+    /**
+     * The search's answer from the exact decimal digits of d, without BigDecimal rounding: the
+     * candidates of p digits (nearest half-even, truncated, truncated plus one, in that order)
+     * are cut from the digit string and read back with {@link Double#parseDouble}, which rounds
+     * correctly as {@link BigDecimal#doubleValue} does. Round-tripping is monotone in p, so when
+     * one digit fewer than {@code Double.toString} gives fails, no shorter one exists and the
+     * search would keep {@code Double.toString}'s digits.
+     */
+    private static String byDigits(double d) {
+        String s = Double.toString(d);
+        BigDecimal shortest = new BigDecimal(s);
+        int n = shortest.precision();
+        double mag = Math.abs(d);
+        BigDecimal exact = new BigDecimal(mag);
+        String digits = exact.unscaledValue().toString();
+        int scale = exact.scale();
+        BigDecimal best = null;
+        for (int p = n - 1; p >= 1; p--) {
+            // as many digits as the exact value has: the exact value itself
+            BigDecimal r = p >= digits.length() ? exact : cut(digits, scale, p, mag);
+            if (r == null) {
+                break;
+            }
+            best = r;
+        }
+        if (best == null) {
+            best = shortest.abs();
+        }
+        best = best.stripTrailingZeros();
+        if (d < 0) {
+            best = best.negate();
+        }
+        if (mag >= 1e-7 && mag < 1e16) {
+            return best.toPlainString();
+        }
+        return best.toString().replace("E+", "E");
+    }
+
+    /** The p-digit candidate of digits * 10^-scale that reads back as mag, or null. */
+    private static BigDecimal cut(String digits, int scale, int p, double mag) {
+        long down = Long.parseLong(digits, 0, p, 10);
+        int restScale = scale - (digits.length() - p);
+        boolean anyRest = false;
+        for (int i = p; i < digits.length() && !anyRest; i++) {
+            anyRest = digits.charAt(i) != '0';
+        }
+        char first = digits.charAt(p);
+        boolean beyondFirst = false;
+        for (int i = p + 1; i < digits.length() && !beyondFirst; i++) {
+            beyondFirst = digits.charAt(i) != '0';
+        }
+        boolean nearIsUp = first > '5' || (first == '5' && (beyondFirst || (down & 1) == 1));
+        long near = nearIsUp ? down + 1 : down;
+        long up = anyRest ? down + 1 : down;
+        long[] order = {near, down, up};
+        for (long m : order) {
+            if (Double.parseDouble(m + "E" + (-restScale)) == mag) {
+                return BigDecimal.valueOf(m, restScale);
+            }
+        }
+        return null;
     }
 
     private static final double[] POW10 = new double[23];
