@@ -244,12 +244,23 @@ public final class Chainer {
     }
 
     private static boolean same(Curve2 a, Curve2 b, double tol) {
-        if (a.getClass() != b.getClass() || a.pointAt(0.5).distance(b.pointAt(0.5)) > tol) {
+        if (a.getClass() != b.getClass() || !within(a.pointAt(0.5), b.pointAt(0.5), tol)) {
             return false;
         }
-        boolean forward = a.start().distance(b.start()) <= tol && a.end().distance(b.end()) <= tol;
-        boolean backward = a.start().distance(b.end()) <= tol && a.end().distance(b.start()) <= tol;
+        boolean forward = within(a.start(), b.start(), tol) && within(a.end(), b.end(), tol);
+        boolean backward = within(a.start(), b.end(), tol) && within(a.end(), b.start(), tol);
         return forward || backward;
+    }
+
+    /** |a - b| <= tol, without the square root (Math.hypot is slow and this is the hot test). */
+    private static boolean within(Vec2 a, Vec2 b, double tol) {
+        return distanceSquared(a, b) <= tol * tol;
+    }
+
+    private static double distanceSquared(Vec2 a, Vec2 b) {
+        double dx = a.x() - b.x();
+        double dy = a.y() - b.y();
+        return dx * dx + dy * dy;
     }
 
     static long pack(long x, long y) {
@@ -278,7 +289,8 @@ public final class Chainer {
             long cy = (long) Math.floor(p.y() / cell);
             int best = -1;
             boolean bestEnd = false;
-            double bestD = tol;
+            double tol2 = tol * tol;
+            double bestD = tol2;
             int candidates = 0;
             for (long dx = -1; dx <= 1; dx++) {
                 for (long dy = -1; dy <= 1; dy++) {
@@ -292,8 +304,8 @@ public final class Chainer {
                             continue;
                         }
                         Curve2 c = work.get(i);
-                        double d = (e[1] == 1 ? c.end() : c.start()).distance(p);
-                        if (d <= tol) {
+                        double d = distanceSquared(e[1] == 1 ? c.end() : c.start(), p);
+                        if (d <= tol2) {
                             candidates++;
                             if (d <= bestD) {
                                 bestD = d;

@@ -83,21 +83,21 @@ final class DxfTags {
             if (e1 < 0) {
                 e1 = n;
             }
-            String codeText = text.substring(pos, e1).trim();
+            int a = pos;
+            int b = e1;
+            while (a < b && text.charAt(a) <= ' ') {
+                a++;
+            }
+            while (b > a && text.charAt(b - 1) <= ' ') {
+                b--;
+            }
             pos = e1 + 1;
-            if (codeText.isEmpty() && pos >= n) {
+            if (a == b && pos >= n) {
                 break;
             }
-            int code;
-            try {
-                code = Integer.parseInt(codeText);
-            } catch (NumberFormatException ex) {
-                if (t.size == 0) {
-                    throw new DxfException(source, codeLine, "not a DXF file: expected a group code (an integer), found '"
-                            + abbreviate(codeText) + "'");
-                }
-                throw new DxfException(source, codeLine, "expected a group code (an integer), found '"
-                        + abbreviate(codeText) + "'");
+            int code = smallInt(text, a, b);
+            if (code < 0) {
+                code = code(text.substring(a, b), t.size == 0, source, codeLine);
             }
             if (pos > n) {
                 throw new DxfException(source, codeLine, "group code " + code + " has no value line (file truncated)");
@@ -111,7 +111,14 @@ final class DxfTags {
             if (end > pos && text.charAt(end - 1) == '\r') {
                 end--;
             }
-            String value = text.substring(pos, end).trim();
+            int va = pos;
+            while (va < end && text.charAt(va) <= ' ') {
+                va++;
+            }
+            while (end > va && text.charAt(end - 1) <= ' ') {
+                end--;
+            }
+            String value = text.substring(va, end);
             pos = e2 + 1;
             t.add(code, value, codeLine);
             if (code == 0 && value.equals("EOF")) {
@@ -122,6 +129,35 @@ final class DxfTags {
             throw new DxfException(source, 1, "not a DXF file: empty");
         }
         return t;
+    }
+
+    private static int code(String codeText, boolean first, String source, int codeLine) throws DxfException {
+        try {
+            return Integer.parseInt(codeText);
+        } catch (NumberFormatException ex) {
+            if (first) {
+                throw new DxfException(source, codeLine, "not a DXF file: expected a group code (an integer), found '"
+                        + abbreviate(codeText) + "'");
+            }
+            throw new DxfException(source, codeLine, "expected a group code (an integer), found '"
+                    + abbreviate(codeText) + "'");
+        }
+    }
+
+    /** The digits text[a, b) as an int when they are 1 to 9 plain digits, else -1. */
+    private static int smallInt(String text, int a, int b) {
+        if (b <= a || b - a > 9) {
+            return -1;
+        }
+        int v = 0;
+        for (int i = a; i < b; i++) {
+            char c = text.charAt(i);
+            if (c < '0' || c > '9') {
+                return -1;
+            }
+            v = v * 10 + (c - '0');
+        }
+        return v;
     }
 
     private static String abbreviate(String s) {

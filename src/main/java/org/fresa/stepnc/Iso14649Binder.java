@@ -56,9 +56,9 @@ final class Iso14649Binder {
         }
         // ISO writes the spindle in rev/s; a value above 300 (18000 rpm) can only be rpm, which
         // is what GRIMA's JSDAI-based writers put there even under MACHINING_SCHEMA
-        for (StepInstance inst : file.instances().values()) {
-            if (inst.record().type().equals("MILLING_TECHNOLOGY")) {
-                StepValue s = inst.record().param(3);
+        for (int k = 0; k < file.size(); k++) {
+            if (file.firstTypeAt(k).equals("MILLING_TECHNOLOGY")) {
+                StepValue s = file.instanceAt(k).record().param(3);
                 double v = s instanceof StepValue.Real r ? r.value() : s instanceof StepValue.Int i ? i.value() : 0;
                 if (Math.abs(v) > 300) {
                     return Dialect.STEP_MODELER;
@@ -362,20 +362,22 @@ final class Iso14649Binder {
         List<Long> allWorkplans = new ArrayList<>();
         List<Long> allWorkingsteps = new ArrayList<>();
         List<Long> projects = new ArrayList<>();
-        for (StepInstance inst : file.instances().values()) {
-            Optional<Iso14649Schema.Lookup> l = inst.isComplex() ? Optional.empty() : schema.find(inst.record().type());
+        for (int i = 0; i < file.size(); i++) {
+            boolean complex = file.isComplexAt(i);
+            Optional<Iso14649Schema.Lookup> l = complex ? Optional.empty() : schema.find(file.firstTypeAt(i));
             if (l.isEmpty()) {
-                unknown.merge(inst.type(), 1, Integer::sum);
+                unknown.merge(complex ? file.instanceAt(i).type() : file.firstTypeAt(i), 1, Integer::sum);
                 continue;
             }
+            long instId = file.idAt(i);
             switch (l.get().def().name()) {
-                case "PROJECT" -> projects.add(inst.id());
+                case "PROJECT" -> projects.add(instId);
                 case "WORKPLAN" -> {
-                    allWorkplans.add(inst.id());
-                    E w = known(inst.id()).orElseThrow();
+                    allWorkplans.add(instId);
+                    E w = known(instId).orElseThrow();
                     referencedByWorkplan.addAll(refList(w, "its_elements"));
                 }
-                case "MACHINING_WORKINGSTEP" -> allWorkingsteps.add(inst.id());
+                case "MACHINING_WORKINGSTEP" -> allWorkingsteps.add(instId);
                 default -> {
                 }
             }
@@ -438,7 +440,7 @@ final class Iso14649Binder {
             }
             skipped.add(new StepNcProgram.Skipped(wsId, id, reason, bound));
         }
-        return new StepNcProgram(file.source(), file.schemas(), dialect, file.instances().size(), projectId, main,
+        return new StepNcProgram(file.source(), file.schemas(), dialect, file.size(), projectId, main,
                 workpieces, executed, skipped, unknown, new ArrayList<>(spellings), warnings, file);
     }
 

@@ -80,7 +80,21 @@ public final class Iso14649Schema {
         }
     }
 
+    // the answers by name as written: a file repeats a few hundred names many times
+    private final Map<String, Optional<Lookup>> found = new java.util.concurrent.ConcurrentHashMap<>();
+
     public Optional<Lookup> find(String entityName) {
+        Optional<Lookup> l = found.get(entityName);
+        if (l == null) {
+            l = lookUp(entityName);
+            if (found.size() < 10_000) {
+                found.put(entityName, l);
+            }
+        }
+        return l;
+    }
+
+    private Optional<Lookup> lookUp(String entityName) {
         String upper = entityName.toUpperCase(Locale.ROOT);
         EntityDef d = byName.get(upper);
         if (d == null) {
@@ -130,7 +144,8 @@ public final class Iso14649Schema {
             List<String> attrs = new ArrayList<>();
             Matcher a = ATTRIBUTE.matcher(m.group(3).replaceAll("--[^\n]*", ""));
             while (a.find()) {
-                attrs.add(a.group(1).toLowerCase(Locale.ROOT));
+                // interned: the binder asks with literals, so equals succeeds on identity
+                attrs.add(a.group(1).toLowerCase(Locale.ROOT).intern());
             }
             own.put(name, attrs);
             if (m.group(5) != null) {

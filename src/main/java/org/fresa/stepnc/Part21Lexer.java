@@ -43,7 +43,7 @@ final class Part21Lexer {
     long currentInstance;
 
     private final StringBuilder sb = new StringBuilder();
-    private final java.util.Map<CharSequence, String> keywords = new java.util.TreeMap<>(CharSequence::compare);
+    private final Keywords keywords = new Keywords();
 
     Part21Lexer(Reader in, String source) {
         this.in = in;
@@ -199,52 +199,114 @@ final class Part21Lexer {
         tok = Tok.INSTANCE;
     }
 
+    private static final double[] POW10 = new double[23];
+
+    static {
+        double p = 1;
+        for (int i = 0; i < POW10.length; i++) {
+            POW10[i] = p;
+            p *= 10;
+        }
+    }
+
+    /** The text of the current token, also for numbers, whose text is built only when asked for. */
+    String tokenText() {
+        return text != null ? text : sb.toString();
+    }
+
     private void number() throws IOException, StepParseException {
         sb.setLength(0);
         int c = peekChar();
+        boolean negative = false;
         if (c == '+' || c == '-') {
+            negative = c == '-';
             sb.append((char) readChar());
         }
         if (!isDigit(peekChar())) {
             throw errorHere("a sign must be followed by digits");
         }
+        // the digits as a long while they are few enough to be exact (Clinger's fast path)
+        long mantissa = 0;
+        int significant = 0;
+        int scale = 0;
         while (isDigit(peekChar())) {
-            sb.append((char) readChar());
+            int d = readChar();
+            sb.append((char) d);
+            if (significant < 18) {
+                mantissa = mantissa * 10 + (d - '0');
+                if (mantissa != 0) {
+                    significant++;
+                }
+            } else {
+                significant++;
+                scale++;
+            }
         }
         boolean real = false;
         if (peekChar() == '.') {
             real = true;
             sb.append((char) readChar());
             while (isDigit(peekChar())) {
-                sb.append((char) readChar());
+                int d = readChar();
+                sb.append((char) d);
+                if (significant < 18) {
+                    mantissa = mantissa * 10 + (d - '0');
+                    if (mantissa != 0) {
+                        significant++;
+                    }
+                    scale--;
+                } else {
+                    significant++;
+                }
             }
             int e = peekChar();
             if (e == 'E' || e == 'e') {
                 sb.append((char) readChar());
                 int s = peekChar();
+                boolean expNegative = false;
                 if (s == '+' || s == '-') {
+                    expNegative = s == '-';
                     sb.append((char) readChar());
                 }
                 if (!isDigit(peekChar())) {
                     throw errorHere("the exponent of " + abbreviate(sb.toString()) + " has no digits");
                 }
+                int exp = 0;
                 while (isDigit(peekChar())) {
-                    sb.append((char) readChar());
+                    int d = readChar();
+                    sb.append((char) d);
+                    if (exp < 100_000) {
+                        exp = exp * 10 + (d - '0');
+                    }
                 }
+                scale += expNegative ? -exp : exp;
             }
         }
-        text = sb.toString();
+        text = null;
         if (real) {
-            doubleValue = Double.parseDouble(text);
+            if (significant <= 15 && scale >= -22 && scale <= 22) {
+                // the mantissa and the power of ten are exact doubles: one rounding, as parseDouble
+                double m = mantissa;
+                doubleValue = scale >= 0 ? m * POW10[scale] : m / POW10[-scale];
+                if (negative) {
+                    doubleValue = -doubleValue;
+                }
+            } else {
+                doubleValue = Double.parseDouble(sb.toString());
+            }
             if (!Double.isFinite(doubleValue)) {
-                throw errorHere("the number " + abbreviate(text) + " is out of range");
+                throw errorHere("the number " + abbreviate(sb.toString()) + " is out of range");
             }
             tok = Tok.REAL;
         } else {
-            try {
-                longValue = Long.parseLong(text);
-            } catch (NumberFormatException ex) {
-                throw errorHere("the integer " + abbreviate(text) + " is larger than 64 bits");
+            if (significant < 18) {
+                longValue = negative ? -mantissa : mantissa;
+            } else {
+                try {
+                    longValue = Long.parseLong(sb.toString());
+                } catch (NumberFormatException ex) {
+                    throw errorHere("the integer " + abbreviate(sb.toString()) + " is larger than 64 bits");
+                }
             }
             tok = Tok.INTEGER;
         }
@@ -262,13 +324,7 @@ final class Part21Lexer {
                 break;
             }
         }
-        // one String per distinct keyword: a large file repeats a few hundred entity names
-        String k = keywords.get(sb);
-        if (k == null) {
-            k = sb.toString().toUpperCase(Locale.ROOT);
-            keywords.put(sb.toString(), k);
-        }
-        text = k;
+        text = keywords.upperCase(sb);
         tok = Tok.KEYWORD;
     }
 
@@ -313,7 +369,25 @@ final class Part21Lexer {
 
     private void string() throws IOException, StepParseException {
         readChar();
+        if (peekChar() == '\'') {
+            readChar();
+            if (peekChar() != '\'') {
+                text = "";
+                tok = Tok.STRING;
+                return;
+            }
+            // '' inside a string: an escaped quote at the start
+            readChar();
+            sb.setLength(0);
+            sb.append('\'');
+            stringRest();
+            return;
+        }
         sb.setLength(0);
+        stringRest();
+    }
+
+    private void stringRest() throws IOException, StepParseException {
         Charset page = StandardCharsets.ISO_8859_1;
         while (true) {
             int c = readChar();
@@ -452,5 +526,62 @@ final class Part21Lexer {
 
     private static String abbreviate(String s) {
         return s.length() > 30 ? s.substring(0, 27) + "..." : s;
+    }
+
+    /**
+     * One String per distinct keyword spelling, found without building a String: a large file
+     * repeats a few hundred entity names millions of times.
+     */
+    private static final class Keywords {
+        private String[] spelled = new String[256];
+        private String[] upper = new String[256];
+        private int n;
+
+        String upperCase(StringBuilder sb) {
+            int h = 0;
+            int len = sb.length();
+            for (int i = 0; i < len; i++) {
+                h = 31 * h + sb.charAt(i);
+            }
+            int mask = spelled.length - 1;
+            int slot = (h ^ (h >>> 16)) & mask;
+            while (true) {
+                String s = spelled[slot];
+                if (s == null) {
+                    break;
+                }
+                if (s.contentEquals(sb)) {
+                    return upper[slot];
+                }
+                slot = (slot + 1) & mask;
+            }
+            String s = sb.toString();
+            String u = s.toUpperCase(Locale.ROOT);
+            spelled[slot] = s;
+            upper[slot] = u;
+            if (++n * 2 > spelled.length) {
+                grow();
+            }
+            return u;
+        }
+
+        private void grow() {
+            String[] os = spelled;
+            String[] ou = upper;
+            spelled = new String[os.length * 2];
+            upper = new String[os.length * 2];
+            int mask = spelled.length - 1;
+            for (int i = 0; i < os.length; i++) {
+                if (os[i] != null) {
+                    int h = os[i].hashCode();
+                    int slot = (h ^ (h >>> 16)) & mask;
+                    while (spelled[slot] != null) {
+                        slot = (slot + 1) & mask;
+                    }
+                    spelled[slot] = os[i];
+                    upper[slot] = ou[i];
+                }
+            }
+        }
     }
 }

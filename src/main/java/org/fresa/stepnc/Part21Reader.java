@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.fresa.stepnc.Part21Lexer.Tok;
@@ -34,7 +33,7 @@ public final class Part21Reader {
 
     private final Part21Lexer lx;
     private final String source;
-    private final Map<Long, StepInstance> instances = new LinkedHashMap<>();
+    private final InstanceStore store = new InstanceStore();
     private final PendingRefs pending = new PendingRefs();
 
     private Part21Reader(Reader in, String source) {
@@ -99,7 +98,7 @@ public final class Part21Reader {
                         throw lx.errorHere("the file has no DATA section");
                     }
                     pending.check();
-                    return new StepFile(source, header, instances);
+                    return new StepFile(source, header, store);
                 }
                 default -> throw unexpected("DATA, ENDSEC or END-ISO-10303-21");
             }
@@ -149,21 +148,23 @@ public final class Part21Reader {
         lx.currentInstance = id;
         lx.next();
         expect(Tok.EQUALS, "'=' after the instance name");
-        StepInstance earlier = instances.get(id);
-        if (earlier != null) {
+        int earlier = store.indexOf(id);
+        if (earlier >= 0) {
             throw new StepParseException(source, line, col, id,
-                    "instance name #" + id + " is defined twice (first at line " + earlier.line() + ")");
+                    "instance name #" + id + " is defined twice (first at line " + store.lineAt(earlier) + ")");
         }
-        List<StepRecord> records;
         if (lx.tok == Tok.KEYWORD) {
-            records = List.of(simpleRecord(0));
+            store.beginInstance(id, line, col, false);
+            encodeRecord(0, id);
         } else if (lx.tok == Tok.LPAREN) {
+            store.beginInstance(id, line, col, true);
             lx.next();
-            records = new ArrayList<>();
+            int records = 0;
             while (lx.tok == Tok.KEYWORD) {
-                records.add(simpleRecord(1));
+                encodeRecord(1, id);
+                records++;
             }
-            if (records.isEmpty()) {
+            if (records == 0) {
                 throw unexpected("an entity name in the complex instance");
             }
             expect(Tok.RPAREN, "')' closing the complex instance");
@@ -171,9 +172,88 @@ public final class Part21Reader {
             throw unexpected("an entity name or '(' of a complex instance");
         }
         expect(Tok.SEMICOLON, "';' ending the instance");
-        instances.put(id, new StepInstance(id, records, line, col));
         lx.currentInstance = 0;
     }
+
+    // ---- the data section, written straight into the compact store ----
+
+    private void encodeRecord(int depth, long self) throws IOException, StepParseException {
+        String type = lx.text;
+        lx.next();
+        if (lx.tok != Tok.LPAREN) {
+            throw unexpected("'(' after " + type);
+        }
+        store.putString(InstanceStore.RECORD, type);
+        encodeAggregate(depth, self);
+    }
+
+    private void encodeAggregate(int depth, long self) throws IOException, StepParseException {
+        if (depth >= MAX_DEPTH) {
+            throw lx.errorHere("lists are nested more than " + MAX_DEPTH + " deep");
+        }
+        store.put(InstanceStore.BEGIN);
+        lx.next();
+        if (lx.tok == Tok.RPAREN) {
+            lx.next();
+            store.put(InstanceStore.END);
+            return;
+        }
+        while (true) {
+            encodeParameter(depth + 1, self);
+            if (lx.tok == Tok.COMMA) {
+                lx.next();
+            } else if (lx.tok == Tok.RPAREN) {
+                lx.next();
+                store.put(InstanceStore.END);
+                return;
+            } else {
+                throw unexpected("',' or ')' in a parameter list");
+            }
+        }
+    }
+
+    private void encodeParameter(int depth, long self) throws IOException, StepParseException {
+        switch (lx.tok) {
+            case DOLLAR -> store.put(InstanceStore.UNSET);
+            case STAR -> store.put(InstanceStore.DERIVED);
+            case INTEGER -> store.putSigned(InstanceStore.INT, lx.longValue);
+            case REAL -> store.putReal(lx.doubleValue);
+            case STRING -> store.putString(InstanceStore.TEXT, lx.text);
+            case ENUMERATION -> store.putString(InstanceStore.ENUM, lx.text);
+            case BINARY -> store.putString(InstanceStore.BINARY, lx.text);
+            case INSTANCE -> {
+                long id = lx.longValue;
+                if (id == 0) {
+                    throw lx.errorHere("#0 is not an instance name");
+                }
+                if (store.indexOf(id) < 0) {
+                    pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
+                }
+                store.putSigned(InstanceStore.REF, id - self);
+            }
+            case LPAREN -> {
+                encodeAggregate(depth, self);
+                return;
+            }
+            case KEYWORD -> {
+                String type = lx.text;
+                if (depth >= MAX_DEPTH) {
+                    throw lx.errorHere("typed parameters are nested more than " + MAX_DEPTH + " deep");
+                }
+                lx.next();
+                expect(Tok.LPAREN, "'(' after the type name " + type);
+                store.putString(InstanceStore.TYPED, type);
+                encodeParameter(depth + 1, self);
+                expect(Tok.RPAREN, "')' closing " + type + "(...)");
+                return;
+            }
+            case EOF -> throw lx.errorHere("the file ends inside an instance (truncated?)");
+            default -> throw unexpected("a parameter ($, *, number, 'string', .ENUM., #ref, list or TYPE(value))");
+        }
+        lx.next();
+    }
+
+    // ---- the header, read as values ----
 
     /** KEYWORD '(' [params] ')', the current token being the keyword. */
     private StepRecord simpleRecord(int depth) throws IOException, StepParseException {
@@ -215,16 +295,16 @@ public final class Part21Reader {
             case DOLLAR -> v = StepValue.UNSET;
             case STAR -> v = StepValue.DERIVED;
             case INTEGER -> v = new StepValue.Int(lx.longValue);
-            case REAL -> v = real(lx.doubleValue);
-            case STRING -> v = text(lx.text);
-            case ENUMERATION -> v = enums.computeIfAbsent(lx.text, StepValue.Enumeration::new);
+            case REAL -> v = new StepValue.Real(lx.doubleValue);
+            case STRING -> v = new StepValue.Text(lx.text);
+            case ENUMERATION -> v = new StepValue.Enumeration(lx.text);
             case BINARY -> v = new StepValue.Binary(lx.text);
             case INSTANCE -> {
                 long id = lx.longValue;
                 if (id == 0) {
                     throw lx.errorHere("#0 is not an instance name");
                 }
-                if (!instances.containsKey(id)) {
+                if (store.indexOf(id) < 0) {
                     pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
                 }
                 v = new StepValue.Ref(id);
@@ -250,35 +330,6 @@ public final class Part21Reader {
         return v;
     }
 
-    // shared values: a large file repeats .T., '', 0.0 and a few names millions of times
-    private final Map<String, StepValue> enums = new java.util.HashMap<>();
-    private final Map<String, StepValue.Text> texts = new java.util.HashMap<>();
-    private static final StepValue.Real ZERO = new StepValue.Real(0.0);
-    private static final StepValue.Real ONE = new StepValue.Real(1.0);
-    private static final StepValue.Real MINUS_ONE = new StepValue.Real(-1.0);
-    private static final long ZERO_BITS = Double.doubleToRawLongBits(0.0);
-
-    private static StepValue real(double d) {
-        if (Double.doubleToRawLongBits(d) == ZERO_BITS) {
-            return ZERO;
-        }
-        return d == 1.0 ? ONE : d == -1.0 ? MINUS_ONE : new StepValue.Real(d);
-    }
-
-    private StepValue text(String s) {
-        if (s.length() > 40) {
-            return new StepValue.Text(s);
-        }
-        StepValue.Text t = texts.get(s);
-        if (t == null) {
-            t = new StepValue.Text(s);
-            if (texts.size() < 8192) {
-                texts.put(s, t);
-            }
-        }
-        return t;
-    }
-
     private void expect(Tok t, String what) throws IOException, StepParseException {
         if (lx.tok != t) {
             throw unexpected(what);
@@ -299,7 +350,7 @@ public final class Part21Reader {
             case STRING -> "a string";
             case KEYWORD -> shorten(lx.text);
             case INSTANCE -> "#" + lx.longValue;
-            default -> "'" + shorten(lx.text) + "'";
+            default -> "'" + shorten(lx.tokenText()) + "'";
         };
         return lx.errorHere("expected " + expected + ", found " + found);
     }
@@ -318,11 +369,14 @@ public final class Part21Reader {
 
         void add(long t, long f, int l, int c) {
             if (n == target.length) {
-                int m = n * 2;
-                target = Arrays.copyOf(target, m);
-                from = Arrays.copyOf(from, m);
-                lines = Arrays.copyOf(lines, m);
-                cols = Arrays.copyOf(cols, m);
+                purgeResolved();
+                if (n * 2 > target.length) {
+                    int m = target.length * 2;
+                    target = Arrays.copyOf(target, m);
+                    from = Arrays.copyOf(from, m);
+                    lines = Arrays.copyOf(lines, m);
+                    cols = Arrays.copyOf(cols, m);
+                }
             }
             target[n] = t;
             from[n] = f;
@@ -331,9 +385,24 @@ public final class Part21Reader {
             n++;
         }
 
+        /** Forgets the references whose target has been defined since, keeping the order. */
+        private void purgeResolved() {
+            int k = 0;
+            for (int i = 0; i < n; i++) {
+                if (store.indexOf(target[i]) < 0) {
+                    target[k] = target[i];
+                    from[k] = from[i];
+                    lines[k] = lines[i];
+                    cols[k] = cols[i];
+                    k++;
+                }
+            }
+            n = k;
+        }
+
         void check() throws StepParseException {
             for (int i = 0; i < n; i++) {
-                if (!instances.containsKey(target[i])) {
+                if (store.indexOf(target[i]) < 0) {
                     throw new StepParseException(source, lines[i], cols[i], from[i],
                             "refers to #" + target[i] + ", which is not defined in the file");
                 }

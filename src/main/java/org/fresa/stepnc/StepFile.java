@@ -1,30 +1,84 @@
 package org.fresa.stepnc;
 
+import java.util.AbstractMap;
+import java.util.AbstractSet;
 import java.util.ArrayList;
-import java.util.Collections;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.NoSuchElementException;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * A whole Part 21 exchange structure: the header records and the instances of every data section,
  * in file order, by name. References are checked: every {@link StepValue.Ref} names an instance
  * of this file.
  *
- * @param source the file name used in messages
- * @param header the header records (FILE_DESCRIPTION, FILE_NAME, FILE_SCHEMA, ...)
- * @param instances by instance name, in file order (unmodifiable)
+ * <p>The instances are held in a compact coded form and decoded each time they are asked for, so
+ * a 100 MB file fits in a small heap; {@link StepInstance}s obtained from here are values, equal
+ * from one call to the next but not the same objects.
  */
-public record StepFile(String source, List<StepRecord> header, Map<Long, StepInstance> instances) {
-    public StepFile {
-        Objects.requireNonNull(source, "source");
-        header = List.copyOf(header);
-        instances = Collections.unmodifiableMap(instances);
+public final class StepFile {
+
+    private final String source;
+    private final List<StepRecord> header;
+    private final InstanceStore store;
+    private final Map<Long, StepInstance> view = new InstancesView();
+
+    StepFile(String source, List<StepRecord> header, InstanceStore store) {
+        this.source = Objects.requireNonNull(source, "source");
+        this.header = List.copyOf(header);
+        this.store = Objects.requireNonNull(store, "store");
+    }
+
+    /** The file name used in messages. */
+    public String source() {
+        return source;
+    }
+
+    /** The header records (FILE_DESCRIPTION, FILE_NAME, FILE_SCHEMA, ...). */
+    public List<StepRecord> header() {
+        return header;
+    }
+
+    /** The instances by name, in file order: an unmodifiable view that decodes on access. */
+    public Map<Long, StepInstance> instances() {
+        return view;
     }
 
     public Optional<StepInstance> instance(long id) {
-        return Optional.ofNullable(instances.get(id));
+        int i = store.indexOf(id);
+        return i < 0 ? Optional.empty() : Optional.of(store.instanceAt(i));
+    }
+
+    /** Number of instances. */
+    public int size() {
+        return store.count();
+    }
+
+    /** The name of the i-th instance in file order. */
+    long idAt(int i) {
+        return store.idAt(i);
+    }
+
+    /** The index in file order of instance #id, or -1. */
+    int indexOf(long id) {
+        return store.indexOf(id);
+    }
+
+    boolean isComplexAt(int i) {
+        return store.isComplexAt(i);
+    }
+
+    /** The keyword of the (first) record of the i-th instance, without decoding it. */
+    String firstTypeAt(int i) {
+        return store.firstTypeAt(i);
+    }
+
+    StepInstance instanceAt(int i) {
+        return store.instanceAt(i);
     }
 
     /** The schema names of FILE_SCHEMA, upper case; empty when the header has none. */
@@ -50,5 +104,62 @@ public record StepFile(String source, List<StepRecord> header, Map<Long, StepIns
             }
         }
         return Optional.empty();
+    }
+
+    @Override
+    public String toString() {
+        return "StepFile[" + source + ", " + store.count() + " instances]";
+    }
+
+    private final class InstancesView extends AbstractMap<Long, StepInstance> {
+        @Override
+        public int size() {
+            return store.count();
+        }
+
+        @Override
+        public boolean containsKey(Object key) {
+            return key instanceof Long id && store.indexOf(id) >= 0;
+        }
+
+        @Override
+        public StepInstance get(Object key) {
+            if (!(key instanceof Long id)) {
+                return null;
+            }
+            int i = store.indexOf(id);
+            return i < 0 ? null : store.instanceAt(i);
+        }
+
+        @Override
+        public Set<Entry<Long, StepInstance>> entrySet() {
+            return new AbstractSet<>() {
+                @Override
+                public int size() {
+                    return store.count();
+                }
+
+                @Override
+                public Iterator<Entry<Long, StepInstance>> iterator() {
+                    return new Iterator<>() {
+                        private int i;
+
+                        @Override
+                        public boolean hasNext() {
+                            return i < store.count();
+                        }
+
+                        @Override
+                        public Entry<Long, StepInstance> next() {
+                            if (i >= store.count()) {
+                                throw new NoSuchElementException();
+                            }
+                            int k = i++;
+                            return new SimpleImmutableEntry<>(store.idAt(k), store.instanceAt(k));
+                        }
+                    };
+                }
+            };
+        }
     }
 }

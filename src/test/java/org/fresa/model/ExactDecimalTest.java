@@ -52,4 +52,22 @@ class ExactDecimalTest {
     void nanHasNoDecimal() {
         assertThrows(IllegalArgumentException.class, () -> ExactDecimal.of(Double.NaN));
     }
+
+    @Test
+    void theFastPathWritesWhatTheSearchWrites() {
+        // issue 11: decimals of CAM magnitudes are found without BigDecimal; same text as the search
+        Random rnd = new Random(11);
+        for (int i = 0; i < 60_000; i++) {
+            double d = switch (i % 5) {
+                case 0 -> Math.round(rnd.nextGaussian() * 1e6) / 1000.0;
+                case 1 -> rnd.nextGaussian() * 500;
+                case 2 -> Math.round(rnd.nextDouble() * 1e9) / Math.pow(10, rnd.nextInt(16));
+                case 3 -> (rnd.nextDouble() - 0.5) * Math.pow(10, rnd.nextInt(24) - 8);
+            default -> Math.scalb(1.0 + rnd.nextInt(1 << 20), rnd.nextInt(200) - 100);
+            };
+            if (d != Math.rint(d) || Math.abs(d) >= 1e15) {
+                assertEquals(ExactDecimal.bySearch(d), ExactDecimal.of(d), () -> "for " + d);
+            }
+        }
+    }
 }

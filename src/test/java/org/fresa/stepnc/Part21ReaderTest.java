@@ -237,4 +237,26 @@ class Part21ReaderTest {
         StepFile f = parse(HEAD + "ANCHOR;ENDSEC;REFERENCE;ENDSEC;DATA;#1=A();ENDSEC;END-ISO-10303-21;");
         assertEquals(1, f.instances().size());
     }
+
+    @Test
+    void realsReadExactlyAsParseDoubleReadsThem() throws Exception {
+        // issue 11: the lexer's fast path for short decimals must round exactly like the JDK
+        java.util.Random rnd = new java.util.Random(11);
+        StringBuilder sb = new StringBuilder();
+        List<String> written = new java.util.ArrayList<>();
+        for (int i = 0; i < 2000; i++) {
+            String mantissa = Long.toString(Math.abs(rnd.nextLong()) % (i % 2 == 0 ? 100_000_000L : Long.MAX_VALUE));
+            int point = rnd.nextInt(mantissa.length() + 1);
+            String w = (rnd.nextBoolean() ? "-" : "") + mantissa.substring(0, Math.max(1, point)) + "."
+                    + mantissa.substring(Math.max(1, point))
+                    + (i % 3 == 0 ? "E" + (rnd.nextInt(60) - 30) : "");
+            written.add(w);
+            sb.append("#").append(i + 1).append("=X(").append(w).append(");");
+        }
+        StepFile f = data(sb.toString());
+        for (int i = 0; i < written.size(); i++) {
+            assertEquals(new StepValue.Real(Double.parseDouble(written.get(i))),
+                    f.instance(i + 1).orElseThrow().record().param(0), written.get(i));
+        }
+    }
 }
