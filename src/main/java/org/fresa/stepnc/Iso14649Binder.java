@@ -779,7 +779,7 @@ final class Iso14649Binder {
             return new Operation(id, Operation.OperationType.OTHER, typeOf(id), "", OptionalDouble.empty(),
                     Optional.empty(), Optional.empty(), Technology.NONE, Optional.empty(), Optional.empty(),
                     Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
-                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
+                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty());
         }
         E o = k.get();
         if (!o.def.isA("MACHINING_OPERATION")) {
@@ -812,7 +812,19 @@ final class Iso14649Binder {
         return new Operation(id, type, o.name(), text(o, "its_id"), num(o, "retract_plane"),
                 pointAttr(o, "start_point"), tool, tech, strategy, approach(o, "approach"), approach(o, "retract"),
                 num(o, "axial_cutting_depth"), num(o, "radial_cutting_depth"), num(o, "allowance_side"),
-                num(o, "allowance_bottom"), num(o, "cutting_depth"), num(o, "overcut_length"));
+                num(o, "allowance_bottom"), num(o, "cutting_depth"), num(o, "overcut_length"),
+                o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty());
+    }
+
+    // ISO 14649-11 drilling_type_operation, multistep_drilling, boring_operation
+    private DrillingParameters drillingParameters(E o) throws StepParseException {
+        OptionalDouble feedOnRetract = num(o, "feed_on_retract");
+        if (feedOnRetract.isPresent() && feedOnRetract.getAsDouble() > 1) {
+            feedOnRetract = OptionalDouble.of(feedOnRetract.getAsDouble() / 100);
+        }
+        return new DrillingParameters(num(o, "dwell_time_bottom"), feedOnRetract, num(o, "retract_distance"),
+                num(o, "first_depth"), num(o, "depth_of_step"), num(o, "dwell_time_step"),
+                bool(o, "spindle_stop_at_bottom"));
     }
 
     private Optional<ApproachRetract> approach(E o, String attr) throws StepParseException {
@@ -844,7 +856,7 @@ final class Iso14649Binder {
         if (k.isEmpty()) {
             return new Strategy(id, Strategy.StrategyType.OTHER, typeOf(id), OptionalDouble.empty(),
                     OptionalDouble.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
-                    Optional.empty(), Optional.empty());
+                    Optional.empty(), Optional.empty(), Optional.empty());
         }
         E s = k.get();
         Strategy.StrategyType type = switch (s.name()) {
@@ -857,17 +869,24 @@ final class Iso14649Binder {
         };
         String spelling = s.inst.record().type();
         if (type == Strategy.StrategyType.DRILLING_TYPE_STRATEGY) {
-            for (String a : List.of("reduced_cut_at_start", "reduced_feed_at_start", "reduced_cut_at_end",
-                    "reduced_feed_at_end")) {
-                OptionalDouble v = num(s, a);
+            OptionalDouble[] ratios = new OptionalDouble[4];
+            List<String> names = List.of("reduced_cut_at_start", "reduced_feed_at_start", "reduced_cut_at_end",
+                    "reduced_feed_at_end");
+            for (int i = 0; i < ratios.length; i++) {
+                OptionalDouble v = num(s, names.get(i));
                 if (v.isPresent() && v.getAsDouble() > 1) {
                     spellings.add("DRILLING_TYPE_STRATEGY ratios written as percentages (0-100)");
+                    v = OptionalDouble.of(v.getAsDouble() / 100);
                 } else if (v.isPresent()) {
                     spellings.add("DRILLING_TYPE_STRATEGY ratios written as fractions (0-1)");
                 }
+                ratios[i] = v;
             }
+            DrillingStrategy d = new DrillingStrategy(ratios[0], ratios[1], num(s, "depth_of_start"), ratios[2],
+                    ratios[3], num(s, "depth_of_end"));
             return new Strategy(id, type, spelling, OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(),
-                    Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty());
+                    Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
+                    Optional.of(d));
         }
         OptionalDouble overlap = num(s, "overlap");
         OptionalDouble fraction = OptionalDouble.empty();
@@ -898,7 +917,8 @@ final class Iso14649Binder {
         return new Strategy(id, type, spelling, overlap, fraction, how, bool(s, "allow_multiple_passes"),
                 directionAttr(s, "feed_direction"), enumeration(s, "stepover_direction"),
                 enumeration(s, "rotation_direction"),
-                s.has("spiral_cutmode") ? enumeration(s, "spiral_cutmode") : enumeration(s, "cutmode"));
+                s.has("spiral_cutmode") ? enumeration(s, "spiral_cutmode") : enumeration(s, "cutmode"),
+                Optional.empty());
     }
 
     private Optional<Tool> tool(E owner, long id) throws StepParseException {

@@ -25,12 +25,14 @@ import org.fresa.geom.Vec3;
  * @param allowanceBottomMm milling: material left on the floor
  * @param cuttingDepthMm drilling: depth of the drilling operation
  * @param overcutLengthMm overcut_length
+ * @param drilling drilling-type operations: dwell, retract feed, steps, spindle stop
  */
 public record Operation(long instanceId, OperationType type, String entity, String id,
         OptionalDouble retractPlaneMm, Optional<Vec3> startPoint, Optional<Tool> tool, Technology technology,
         Optional<Strategy> strategy, Optional<ApproachRetract> approach, Optional<ApproachRetract> retract,
         OptionalDouble axialCuttingDepthMm, OptionalDouble radialCuttingDepthMm, OptionalDouble allowanceSideMm,
-        OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm) {
+        OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm,
+        Optional<DrillingParameters> drilling) {
     public Operation {
         Objects.requireNonNull(type);
         Objects.requireNonNull(entity);
@@ -48,6 +50,7 @@ public record Operation(long instanceId, OperationType type, String entity, Stri
         Objects.requireNonNull(allowanceBottomMm);
         Objects.requireNonNull(cuttingDepthMm);
         Objects.requireNonNull(overcutLengthMm);
+        Objects.requireNonNull(drilling);
     }
 
     public enum OperationType {

@@ -23,11 +23,12 @@ import org.fresa.geom.Vec3;
  * @param stepoverDirection LEFT or RIGHT
  * @param rotationDirection CW or CCW
  * @param cutmode CLIMB or CONVENTIONAL
+ * @param drilling the reductions of a DRILLING_TYPE_STRATEGY (empty for milling strategies)
  */
 public record Strategy(long instanceId, StrategyType type, String entity, OptionalDouble overlap,
         OptionalDouble overlapFraction, Optional<String> overlapInterpretation, Optional<Boolean> allowMultiplePasses,
         Optional<Vec3> feedDirection, Optional<String> stepoverDirection, Optional<String> rotationDirection,
-        Optional<String> cutmode) {
+        Optional<String> cutmode, Optional<DrillingStrategy> drilling) {
     public Strategy {
         Objects.requireNonNull(type);
         Objects.requireNonNull(entity);
@@ -39,6 +40,7 @@ public record Strategy(long instanceId, StrategyType type, String entity, Option
         Objects.requireNonNull(stepoverDirection);
         Objects.requireNonNull(rotationDirection);
         Objects.requireNonNull(cutmode);
+        Objects.requireNonNull(drilling);
     }
 
     public enum StrategyType {

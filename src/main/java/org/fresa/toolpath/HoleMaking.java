@@ -11,10 +11,11 @@ import org.fresa.model.ToolpathSection;
  * (the posts have no canned cycles, so every control reads the same motions).
  *
  * <ul>
- * <li>{@link #drill}: drilling, center drilling, reaming, boring: feed to the bottom, out at
- * rapid (drills) or at feed (reamers, boring bars, which must not mark the wall); with a peck
- * depth, multistep drilling: after each peck the drill goes back to the retract height to clear
- * chips and returns at rapid to 1 mm above the last depth.
+ * <li>{@link #drill}: drilling, center drilling, reaming, boring: feed to the bottom with the
+ * reduced feeds of the drilling strategy over the start and end depths ({@link DrillCycle}), out
+ * at rapid (drills) or at feed (reamers, boring bars, which must not mark the wall); multistep
+ * drilling: after each step the drill lifts by the retract distance (or to the retract height to
+ * clear chips) and returns at rapid to 1 mm above the last depth.
  * <li>{@link #mill}: a hole wider than the milling cutter: helical interpolation at radius
  * (hole - tool) / 2 down to the bottom with at most the axial depth per turn, a full circle at
  * the bottom, then to the centre and out. That clears the hole when it is at most twice the tool
@@ -27,35 +28,86 @@ public final class HoleMaking {
     }
 
     /**
+     * Drills with one descent or pecks of {@code peckMm}, out at rapid or, if {@code feedOut}, at
+     * the plunge feed; see {@link #drill(String, Vec2, Heights, Tooling, DrillCycle)}.
+     *
      * @param peckMm depth of each peck, 0 or less for one feed to the bottom
      * @param feedOut leave at the cutting feed (reaming, boring)
      */
     public static ToolpathSection drill(String label, Vec2 center, Heights h, Tooling tool, double peckMm,
             boolean feedOut) {
+        DrillCycle c = peckMm > 0 ? DrillCycle.pecking(peckMm) : DrillCycle.PLAIN;
+        return drill(label, center, h, tool, feedOut ? c.withRetractFeed(1) : c);
+    }
+
+    /**
+     * Drills down the axis (+Z up) from the retract height to {@code h.bottomZ()} (which already
+     * holds any tip allowance) with the feed zones of the cycle. With steps, each step is cut, the
+     * tool lifts by the retract distance (or to the retract height) and comes back at rapid to
+     * 1 mm above the last depth (or the lifted height if nearer). The tool leaves at the retract
+     * feed, or at rapid when the cycle has none.
+     */
+    public static ToolpathSection drill(String label, Vec2 center, Heights h, Tooling tool, DrillCycle c) {
         MoveBuilder b = new MoveBuilder(Vec3.of(center, h.clearanceZ()));
         b.rapid(Vec3.of(center, h.retractZ()));
         double f = tool.plungeFeedMmPerMin();
-        if (peckMm > 0 && h.topZ() - h.bottomZ() > peckMm) {
-            double depth = h.topZ();
-            while (depth - peckMm > h.bottomZ() + 1e-9) {
-                if (depth < h.topZ()) {
-                    b.rapid(Vec3.of(center, Math.min(h.retractZ(), depth + 1)));
-                }
-                depth -= peckMm;
-                b.feed(Vec3.of(center, depth), f);
-                b.rapid(Vec3.of(center, h.retractZ()));
+        // ISO 14649-11 drilling_type_strategy: the start zone ends when the full diameter is depth_of_start deep
+        // a zone without a reduction is no zone (NaN: no split, no reduction)
+        double startEnd = c.startFeedFactor() == 1 ? Double.NaN
+                : Math.max(h.bottomZ(), h.topZ() - c.startDepth() - c.tipLength());
+        double endStart = c.endFeedFactor() == 1 ? Double.NaN : Math.min(h.retractZ(), h.bottomZ() + c.endDepth());
+        if (c.pecks() && h.topZ() - h.bottomZ() > c.firstPeck()) {
+            double depth = h.topZ() - c.firstPeck();
+            while (depth > h.bottomZ() + 1e-9) {
+                descend(b, center, depth, f, c, startEnd, endStart);
+                double up = c.retractDistance() > 0 ? Math.min(h.retractZ(), depth + c.retractDistance()) : h.retractZ();
+                leave(b, center, up, f, c);
+                b.rapid(Vec3.of(center, Math.min(up, depth + 1)));
+                depth -= c.peck();
             }
-            b.rapid(Vec3.of(center, Math.min(h.retractZ(), depth + 1)));
         }
-        b.feed(Vec3.of(center, h.bottomZ()), f);
-        if (feedOut) {
-            b.feed(Vec3.of(center, h.retractZ()), f);
-        } else {
-            b.rapid(Vec3.of(center, h.retractZ()));
-        }
+        descend(b, center, h.bottomZ(), f, c, startEnd, endStart);
+        leave(b, center, h.retractZ(), f, c);
         b.rapid(Vec3.of(center, h.clearanceZ()));
         return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
                 Vec3.of(center, h.clearanceZ()), b.moves());
+    }
+
+    /** Feeds down to z, split where the feed of the cycle changes. */
+    private static void descend(MoveBuilder b, Vec2 center, double z, double f, DrillCycle c, double startEnd,
+            double endStart) {
+        double from = b.at().z();
+        double[] ends = {Double.isNaN(endStart) || startEnd > endStart ? startEnd : endStart,
+            Double.isNaN(endStart) || startEnd > endStart ? endStart : startEnd, z};
+        double lastFactor = Double.NaN;
+        double lastEnd = from;
+        for (double end : ends) {
+            if (!(end < lastEnd && end >= z)) {
+                continue;
+            }
+            double k = factor(c, (lastEnd + end) / 2, startEnd, endStart);
+            if (!Double.isNaN(lastFactor) && k != lastFactor) {
+                b.feed(Vec3.of(center, lastEnd), f * lastFactor);
+            }
+            lastFactor = k;
+            lastEnd = end;
+        }
+        b.feed(Vec3.of(center, z), f * (Double.isNaN(lastFactor) ? 1 : lastFactor));
+    }
+
+    private static double factor(DrillCycle c, double z, double startEnd, double endStart) {
+        if (z < endStart) {
+            return c.endFeedFactor();
+        }
+        return z > startEnd ? c.startFeedFactor() : 1;
+    }
+
+    private static void leave(MoveBuilder b, Vec2 center, double z, double f, DrillCycle c) {
+        if (c.retractFeedFactor() > 0) {
+            b.feed(Vec3.of(center, z), f * c.retractFeedFactor());
+        } else {
+            b.rapid(Vec3.of(center, z));
+        }
     }
 
     /** Whether {@link #mill} clears a hole of this diameter with this tool (hole <= 2 D). */

@@ -18,6 +18,8 @@ import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.stepnc.ApproachRetract;
+import org.fresa.stepnc.DrillingParameters;
+import org.fresa.stepnc.DrillingStrategy;
 import org.fresa.stepnc.Feature;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.Operation;
@@ -51,8 +53,10 @@ import org.fresa.stepnc.Tool;
  * <li>Loops run clockwise when rotation_direction is CW, or, without it, when the cut mode is
  * climb (a pocket with an M3 spindle); counter-clockwise otherwise.
  * <li>Rough operations keep the file's allowances; finish operations cut to size.
- * <li>Round holes: drilling-type operations drill along the axis (multistep drilling pecks by
- * one tool diameter), reaming and boring leave at feed; milling operations use helical
+ * <li>Round holes: drilling-type operations drill along the axis with the drilling strategy's
+ * reduced feeds over the start and end depths; drills go through a through hole until the full
+ * diameter has passed the bottom ({@link #tipLength}); multistep drilling steps by first_depth
+ * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
  * <li>Features other than planar faces, closed pockets and round holes are reported and
@@ -312,14 +316,77 @@ public final class ToolpathPlanner {
         return PocketMilling.section(label, p, h, t, plan, tol);
     }
 
+    /** Included point angle of a drill when the tool data has none (deg), the common twist drill's. */
+    static final double DEFAULT_POINT_ANGLE_DEG = 118;
+    /** Largest tool_top_angle read as a drill point (deg from the plane normal to the axis). */
+    static final double MAX_TOP_ANGLE_DEG = 80;
+
+    /**
+     * Length of the drill point along the axis (mm): r tan(tool_top_angle), the top angle measured
+     * between the cutting edge and the plane normal to the axis (31 deg for a 118 deg point, as
+     * ISO 14649-11 example 1 and STEP Modeler's files write it); an angle above 90 deg is read as
+     * the included point angle; without a usable angle, a 118 deg point. 0 for reamers, boring bars and other drilling-type operations
+     * whose tool has no point.
+     */
+    static double tipLength(Operation op, Tooling t) {
+        Operation.OperationType k = op.type();
+        if (k != Operation.OperationType.DRILLING && k != Operation.OperationType.MULTISTEP_DRILLING
+                && k != Operation.OperationType.CENTER_DRILLING) {
+            return 0;
+        }
+        Optional<Tool> tool = op.tool();
+        double fromPlane = 90 - DEFAULT_POINT_ANGLE_DEG / 2;
+        if (tool.isPresent() && tool.get().topAngle().isPresent()) {
+            double a = tool.get().topAngle().getAsDouble();
+            double deg = "rad".equals(tool.get().angleUnit()) ? Math.toDegrees(a) : a;
+            double a2 = deg > 90 ? 90 - deg / 2 : deg;
+            // a point steeper than 80 deg from the plane is no drill point: keep the default
+            if (a2 > 0 && a2 <= MAX_TOP_ANGLE_DEG) {
+                fromPlane = a2;
+            }
+        }
+        return t.radiusMm() * Math.tan(Math.toRadians(fromPlane));
+    }
+
+    /**
+     * The moves along the axis of a drilling-type operation: the drilling strategy's reduced feeds,
+     * multistep drilling's steps (first_depth, depth_of_step, else one tool diameter; retract
+     * distance) and the retract feed (feed_on_retract, else the feed for reaming and boring, which
+     * must not mark the wall, else rapid).
+     */
+    static DrillCycle drillCycle(Operation op, Tooling t, double tipLength) {
+        DrillingStrategy s = op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
+        DrillingParameters p = op.drilling().orElse(DrillingParameters.NONE);
+        boolean multistep = op.type() == Operation.OperationType.MULTISTEP_DRILLING;
+        double step = multistep ? positive(p.depthOfStepMm(), t.diameterMm()) : 0;
+        double first = multistep ? positive(p.firstDepthMm(), step) : 0;
+        boolean feedOut = op.type() == Operation.OperationType.REAMING || op.type() == Operation.OperationType.BORING;
+        double retractFeed = positive(p.feedOnRetract(), feedOut ? 1 : 0);
+        return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
+                positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
+                positive(p.retractDistanceMm(), 0), retractFeed);
+    }
+
+    private static double positive(java.util.OptionalDouble v, double otherwise) {
+        return v.isPresent() && v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble()) ? v.getAsDouble() : otherwise;
+    }
+
     private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol) {
         double holeD = f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"));
         if (op.type().isDrillingType()) {
-            double depth = op.cuttingDepthMm().orElse(h.topZ() - h.bottomZ());
-            Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth);
-            boolean feedOut = op.type() == Operation.OperationType.REAMING || op.type() == Operation.OperationType.BORING;
-            double peck = op.type() == Operation.OperationType.MULTISTEP_DRILLING ? t.diameterMm() : 0;
-            return HoleMaking.drill(label, Vec2.ZERO, hh, t, peck, feedOut);
+            double holeDepth = h.topZ() - h.bottomZ();
+            double depth = op.cuttingDepthMm().orElse(holeDepth);
+            double tip = tipLength(op, t);
+            // a through hole is drilled until the full diameter has passed the bottom
+            boolean through = f.bottomCondition().map(b -> b.contains("THROUGH")).orElse(false)
+                    && depth >= holeDepth - tol.linear();
+            double allowance = through ? tip : 0;
+            Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth - allowance);
+            DrillCycle cycle = drillCycle(op, t, tip);
+            if (cycle.peck() > 0) {
+                bounded("depth", depth + allowance, "depth_of_step", cycle.peck());
+            }
+            return HoleMaking.drill(label, Vec2.ZERO, hh, t, cycle);
         }
         if (!op.type().isMilling()) {
             throw new UnsupportedOperationException(op.type() + " is not supported yet");

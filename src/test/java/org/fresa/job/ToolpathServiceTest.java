@@ -1,5 +1,6 @@
 package org.fresa.job;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -131,19 +132,59 @@ class ToolpathServiceTest {
         assertTrue(inner.difference(floor).getArea() < 1e-6, "uncut floor " + inner.difference(floor).getArea());
     }
 
+    /**
+     * Issue 4: example 1's through hole at (20, 60), drilled with DRILLING_TYPE_STRATEGY(0.75, 0.50,
+     * 2.0, 0.50, 0.75, 8.0) by the D20 TWIST_DRILL (tool_top_angle 31 deg from the plane, a 118 deg
+     * point: tip 10 tan 31 = 6.0086 mm) at 1800 mm/min, retract plane 10.
+     *
+     * <p>Against NIST's interpreter (../shared/samples/stepnc/iso14649-11-example1.nist-canonical.txt,
+     * lines 50-62): feed 900 from z 10 to -9.1378, 1800 to -15.1378, 1350 to -37.1378, out at 1800.
+     * Same feeds (0.5 F, F, 0.75 F), same start zone rule (until the full diameter is 2 mm deep,
+     * the tip one point length deeper), same first zone starting at the retract plane. Differences:
+     * <ul>
+     * <li>Point length: NIST's is 7.1378 mm, ours 6.0086 = r tan 31 deg; NIST's figure is close to
+     * (r - edge_radius) tan 31 + edge_radius / cos 31 = 7.1402 (edge_radius 2) but not equal, and its
+     * source is not in ../shared, so the 1.13 mm is left unexplained; both go until the full
+     * diameter has passed z -30.
+     * <li>End zone: NIST starts the reduced end feed 8 mm + tip below the top (z -15.1378), i.e. it
+     * measures depth_of_end from the top like depth_of_start and reduces 22 mm of travel; ISO's
+     * depth_of_end is the last part of the drilling, so we reduce the last 8 mm (from -28.0086).
+     * <li>Out: NIST retracts at 1800 mm/min; feed_on_retract is unset, so our drill leaves at rapid.
+     * <li>Spindle: NIST also sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5); a
+     * section here has one spindle speed, so the cut reductions are read but not output.
+     * </ul>
+     */
     @Test
-    void exampleOnesHoleIsDrilledToMinusThirtyAt20_60() throws Exception {
+    void exampleOnesThroughHoleIsDrilledWithTheStrategysFeedsLikeNists() throws Exception {
         Toolpath p = plan(EXAMPLE1);
         ToolpathSection drill = section(p, "WS DRILL HOLE1");
-        double lowest = drill.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow();
-        assertEquals(-30, lowest, 1e-9);
+        double tip = 10 * Math.tan(Math.toRadians(31));
+        List<double[]> feeds = new ArrayList<>();
         for (Move m : drill.moves()) {
             if (m.end().z() < 0) {
                 assertEquals(20, m.end().x(), 1e-9);
                 assertEquals(60, m.end().y(), 1e-9);
             }
+            if (m instanceof Move.Linear l) {
+                feeds.add(new double[] {l.end().z(), l.feedMmPerMin()});
+            }
         }
+        assertEquals(3, feeds.size());
+        assertAll(() -> assertEquals(-(2 + tip), feeds.get(0)[0], 1e-9),
+                () -> assertEquals(900, feeds.get(0)[1], 1e-9),
+                () -> assertEquals(-(30 + tip) + 8, feeds.get(1)[0], 1e-9),
+                () -> assertEquals(1800, feeds.get(1)[1], 1e-9),
+                () -> assertEquals(-(30 + tip), feeds.get(2)[0], 1e-9),
+                () -> assertEquals(1350, feeds.get(2)[1], 1e-9),
+                () -> assertEquals(-36.0086, feeds.get(2)[0], 1e-4),
+                // NIST's bottom, 1.13 mm deeper for its longer point (see above)
+                () -> assertEquals(-37.1378 + 1.1292, feeds.get(2)[0], 1e-4));
         assertEquals(20, drill.toolDiameterMm());
+        // the reamer (no point, no strategy) stops at -30 and leaves at its feed, as NIST's does
+        ToolpathSection ream = section(p, "WS REAM HOLE1");
+        assertEquals(-30, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
+        assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
+                .map(m -> m.end().z()).toList());
     }
 
     /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */

@@ -152,6 +152,25 @@ class StepNcReaderTest {
         assertEquals(120.0, p.workingsteps().get(0).feature().courseOfTravel().orElseThrow().distanceMm().orElseThrow());
     }
 
+    /** Issue 4: the drilling strategy and the drilling attributes are bound, not discarded. */
+    @Test
+    void example1sDrillingStrategyAndReamingAttributesAreBound() throws Exception {
+        StepNcProgram p = read("iso14649-11-example1.stp");
+        DrillingStrategy d = p.workingsteps().get(1).operation().strategy().orElseThrow().drilling().orElseThrow();
+        assertEquals(List.of(0.75, 0.5, 2.0, 0.5, 0.75, 8.0), List.of(d.reducedCutAtStart().orElseThrow(),
+                d.reducedFeedAtStart().orElseThrow(), d.depthOfStartMm().orElseThrow(), d.reducedCutAtEnd().orElseThrow(),
+                d.reducedFeedAtEnd().orElseThrow(), d.depthOfEndMm().orElseThrow()));
+        assertEquals(DrillingStrategy.NONE,
+                p.workingsteps().get(2).operation().strategy().orElseThrow().drilling().orElseThrow());
+        DrillingParameters ream = p.workingsteps().get(2).operation().drilling().orElseThrow();
+        assertEquals(java.util.Optional.of(true), ream.spindleStopAtBottom());
+        assertTrue(ream.dwellTimeBottomS().isEmpty() && ream.feedOnRetract().isEmpty());
+        DrillingParameters drill = p.workingsteps().get(1).operation().drilling().orElseThrow();
+        assertEquals(DrillingParameters.NONE, drill);
+        assertTrue(p.workingsteps().get(0).operation().drilling().isEmpty());
+        assertTrue(p.workingsteps().get(0).operation().strategy().orElseThrow().drilling().isEmpty());
+    }
+
     @Test
     void theFdisExample1IsReadWithItsDraftSpellingsReported() throws Exception {
         Path f = CORPUS.resolve("fdis/iso14649-11-fdis-example1.p21");
@@ -164,6 +183,11 @@ class StepNcReaderTest {
         assertTrue(seen.contains("ELEMENTARY_SURFACE read as PLANE"), seen);
         assertTrue(seen.contains("CUTTING_COMPONENT written with 4 attributes"), seen);
         assertTrue(seen.contains("percentage"), seen);
+        // the draft writes DRILLING_TYPE_STRATEGY(75.000, 50.000, 2.000, 50.000, 75.000, 8.000)
+        DrillingStrategy d = p.workingsteps().get(1).operation().strategy().orElseThrow().drilling().orElseThrow();
+        assertEquals(0.5, d.reducedFeedAtStart().orElseThrow(), 1e-12);
+        assertEquals(0.75, d.reducedFeedAtEnd().orElseThrow(), 1e-12);
+        assertEquals(8.0, d.depthOfEndMm().orElseThrow(), 1e-12);
         Strategy bidir = p.workingsteps().get(0).operation().strategy().orElseThrow();
         assertEquals(Strategy.StrategyType.BIDIRECTIONAL, bidir.type());
         assertEquals("BIDIRECTIONAL", bidir.entity());

@@ -128,15 +128,20 @@ class StepNcViewModelTest {
                 () -> assertEquals(50.412, t.seconds(), 1e-9));
     }
 
+    /** Example 1's drill point: 10 tan 31 deg (TWIST_DRILL D20, tool_top_angle 31, a 118 deg point). */
+    static final double TIP = 10 * Math.tan(Math.toRadians(31));
+
     /**
-     * The drill (feed 0.03 m/s = 1800 mm/min) rapids 30 -> 10, drills 10 -> -30 (40 mm), rapids
-     * back -30 -> 10 -> 30 (80 mm of rapids in all); the reamer leaves at feed (80 mm fed, 40 mm
-     * of rapids). The program is the sum of its workingsteps.
+     * The drill (feed 0.03 m/s = 1800 mm/min, DRILLING_TYPE_STRATEGY(0.75, 0.50, 2, 0.50, 0.75, 8))
+     * rapids 30 -> 10, drills the through hole until its full diameter is past z -30: at 900 from
+     * 10 to -(2 + tip), at 1800 for 20 mm, at 1350 over the last 8 mm down to -(30 + tip), then
+     * rapids back to 10 and 30 (80 mm + tip of rapids in all); the reamer (no strategy, no point)
+     * leaves at feed (80 mm fed, 40 mm of rapids). The program is the sum of its workingsteps.
      */
     @Test
     void theHolesAndTheProgramCycleTimesAreTheHandComputation() throws Exception {
         StepNcViewModel vm = planned(EX1, DRILL);
-        double drill = 40 / 1800.0 * 60 + 80 / 10000.0 * 60;
+        double drill = (12 + TIP) / 900.0 * 60 + 20 / 1800.0 * 60 + 8 / 1350.0 * 60 + (80 + TIP) / 10000.0 * 60;
         assertEquals(drill, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
         vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS REAM HOLE1"))
                 .findFirst());
@@ -201,13 +206,14 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, DRILL);
         assertEquals(List.of(), vm.layers());
         assertEquals(List.of("All moves"), vm.layerChoices());
-        assertEquals(4, vm.shown().orElseThrow().moves().size());
+        // rapid in, three feed zones of the drilling strategy, rapid out to the retract and security planes
+        assertEquals(6, vm.shown().orElseThrow().moves().size());
     }
 
     /**
-     * The drill's moves take 0.12 s (rapid 20 mm), 1.3333 s (feed 40 mm), 0.24 s and 0.12 s
-     * (rapids 40 and 20 mm): at half of 1.81333 s the tool has fed (0.90667 - 0.12) s x 30 mm/s
-     * = 23.6 mm down from z 10.
+     * The drill's moves take 0.12 s (rapid 20 mm), (12 + tip) / 15 s (feed 900), 0.6667 s (feed
+     * 20 mm at 1800), 0.3556 s (8 mm at 1350) and the rapids out: at half of the total the tool is in
+     * the full-feed zone, fed at 30 mm/s down from z -(2 + tip).
      */
     @Test
     void theReplaySliderPutsTheToolWhereTheMachiningTimeSays() throws Exception {
@@ -216,15 +222,16 @@ class StepNcViewModelTest {
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
         vm.setReplay(StepNcViewModel.REPLAY_STEPS / 2);
         StepNcViewModel.ReplayPoint half = vm.replayPoint().orElseThrow();
-        double total = 40 / 1800.0 * 60 + 80 / 10000.0 * 60;
-        assertAll(() -> assertEquals(1, half.moveIndex()),
+        double total = (12 + TIP) / 900.0 * 60 + 20 / 1800.0 * 60 + 8 / 1350.0 * 60 + (80 + TIP) / 10000.0 * 60;
+        double intoFullFeed = total / 2 - 0.12 - (12 + TIP) / 15;
+        assertAll(() -> assertEquals(2, half.moveIndex()),
                 () -> assertEquals(total / 2, half.timeS(), 1e-9),
                 () -> assertEquals(total, half.totalS(), 1e-9),
                 () -> assertEquals(20, half.position().x(), EPS),
                 () -> assertEquals(60, half.position().y(), EPS),
-                () -> assertEquals(10 - (total / 2 - 0.12) * 30, half.position().z(), 1e-9),
-                () -> assertEquals(-13.6, half.position().z(), 1e-9));
-        assertTrue(vm.replayText().startsWith("0.9 s of 1.8 s: move 2 of 4 (feed 1800 mm/min), tool at (20, 60, -13.6) mm"),
+                () -> assertEquals(-(2 + TIP) - intoFullFeed * 30, half.position().z(), 1e-9),
+                () -> assertEquals(-9.4741, half.position().z(), 1e-4));
+        assertTrue(vm.replayText().startsWith("1.4 s of 2.7 s: move 3 of 6 (feed 1800 mm/min), tool at (20, 60, -9.4741) mm"),
                 vm.replayText());
         vm.setReplay(0);
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());

@@ -1,0 +1,53 @@
+package org.fresa.toolpath;
+
+/**
+ * How a drilling-type operation moves along the hole's axis (ISO 14649-11 drilling_type_strategy,
+ * multistep_drilling and feed_on_retract). Lengths in mm, feeds as fractions of the tool's plunge
+ * feed; a factor of 1 means no reduction.
+ *
+ * <p>Feed zones along the descent: from the retract height until the full diameter is
+ * {@code startDepth} below the top (the tip then lies {@code tipLength} deeper) at
+ * {@code startFeedFactor}; over the last {@code endDepth} of travel above the bottom at
+ * {@code endFeedFactor}; at the full feed in between. Where both zones overlap the end zone wins,
+ * as the breakthrough is what the end reduction protects.
+ *
+ * @param tipLength length of the drill point along the axis (0 for reamers, boring bars), >= 0
+ * @param startDepth depth_of_start, >= 0
+ * @param startFeedFactor reduced_feed_at_start, > 0
+ * @param endDepth depth_of_end, >= 0
+ * @param endFeedFactor reduced_feed_at_end, > 0
+ * @param firstPeck multistep_drilling first_depth below the top; 0 or less for one descent
+ * @param peck depth_of_step of each further step; 0 or less for one descent
+ * @param retractDistance lift after each step; 0 or less to go back to the retract height
+ * @param retractFeedFactor feed_on_retract; 0 or less to leave at rapid
+ */
+public record DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
+        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
+
+    /** One descent at the full feed, out at rapid. */
+    public static final DrillCycle PLAIN = new DrillCycle(0, 0, 1, 0, 1, 0, 0, 0, 0);
+
+    public DrillCycle {
+        if (!(tipLength >= 0 && startDepth >= 0 && endDepth >= 0 && startFeedFactor > 0 && endFeedFactor > 0)
+                || !Double.isFinite(tipLength + startDepth + endDepth + startFeedFactor + endFeedFactor + firstPeck
+                        + peck + retractDistance + retractFeedFactor)) {
+            throw new IllegalArgumentException("bad drill cycle: tip " + tipLength + ", start " + startDepth + " x"
+                    + startFeedFactor + ", end " + endDepth + " x" + endFeedFactor);
+        }
+    }
+
+    /** Pecks of {@code peck} from the top, back to the retract height after each. */
+    public static DrillCycle pecking(double peck) {
+        return new DrillCycle(0, 0, 1, 0, 1, peck, peck, 0, 0);
+    }
+
+    /** The same cycle leaving at the given fraction of the feed. */
+    public DrillCycle withRetractFeed(double factor) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, factor);
+    }
+
+    boolean pecks() {
+        return firstPeck > 0 && peck > 0;
+    }
+}
