@@ -208,7 +208,14 @@ public final class ToolpathPlanner {
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
                 local = pocket(label, p, op, h, tooling, pp, tol);
             }
-            case ROUND_HOLE -> local = hole(label, f, op, h, tooling, tol);
+            case ROUND_HOLE -> {
+                local = hole(label, f, op, h, tooling, tol);
+                List<String> unmoved = notInTheMoves(op);
+                if (!unmoved.isEmpty()) {
+                    problems.add("workingstep '" + label + "': read but not in the moves (a section has one spindle"
+                            + " speed, no dwell and no spindle stop): " + String.join(", ", unmoved));
+                }
+            }
             default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
         }
         ToolpathSection placed = Placing.place(local, place);
@@ -365,6 +372,35 @@ public final class ToolpathPlanner {
         return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
                 positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
                 positive(p.retractDistanceMm(), 0), retractFeed);
+    }
+
+    /**
+     * The drilling attributes of an operation that the moves cannot carry: spindle speed reductions
+     * (reduced_cut_at_start/end below 1), dwells (dwell_time_bottom, dwell_time_step) and
+     * spindle_stop_at_bottom; empty for other operations.
+     */
+    static List<String> notInTheMoves(Operation op) {
+        List<String> out = new ArrayList<>();
+        op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).ifPresent(d -> {
+            if (d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
+                out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble());
+            }
+            if (d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
+                out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble());
+            }
+        });
+        op.drilling().ifPresent(p -> {
+            if (p.dwellTimeBottomS().isPresent() && p.dwellTimeBottomS().getAsDouble() > 0) {
+                out.add("dwell_time_bottom " + p.dwellTimeBottomS().getAsDouble() + " s");
+            }
+            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0) {
+                out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s");
+            }
+            if (p.spindleStopAtBottom().orElse(false)) {
+                out.add("spindle_stop_at_bottom");
+            }
+        });
+        return out;
     }
 
     private static double positive(java.util.OptionalDouble v, double otherwise) {

@@ -185,6 +185,12 @@ class ToolpathServiceTest {
         assertEquals(-30, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
         assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
                 .map(m -> m.end().z()).toList());
+        List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
+        assertTrue(problems.contains("workingstep 'WS DRILL HOLE1': read but not in the moves (a section has one"
+                + " spindle speed, no dwell and no spindle stop): reduced_cut_at_start 0.75, reduced_cut_at_end 0.5"),
+                problems.toString());
+        assertTrue(problems.stream().anyMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")
+                && q.endsWith(": spindle_stop_at_bottom")), problems.toString());
     }
 
     /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */

@@ -138,6 +138,20 @@ class DrillCycleTest {
     }
 
     @Test
+    void spindleReductionsDwellsAndTheSpindleStopAreNamedAsNotInTheMoves() {
+        DrillingParameters p = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.empty(),
+                OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.of(0.5),
+                Optional.of(true));
+        DrillingStrategy s = new DrillingStrategy(OptionalDouble.of(0.75), OptionalDouble.of(0.5),
+                OptionalDouble.of(2), OptionalDouble.of(0.5), OptionalDouble.of(0.75), OptionalDouble.of(8));
+        assertEquals(List.of("reduced_cut_at_start 0.75", "reduced_cut_at_end 0.5", "dwell_time_bottom 1.5 s",
+                "dwell_time_step 0.5 s", "spindle_stop_at_bottom"),
+                ToolpathPlanner.notInTheMoves(op(OperationType.BORING, drill(31, "deg"), s, p)));
+        assertEquals(List.of(), ToolpathPlanner.notInTheMoves(op(OperationType.DRILLING, drill(31, "deg"),
+                reductions(0.5, 2, 0.75, 8), DrillingParameters.NONE)));
+    }
+
+    @Test
     void anIncludedPointAngleAndAMissingAngleReadAsTheirPointLengths() {
         Operation inc = op(OperationType.DRILLING, drill(118, "deg"), DrillingStrategy.NONE, DrillingParameters.NONE);
         assertEquals(5 / Math.tan(Math.toRadians(59)), ToolpathPlanner.tipLength(inc, D10), EPS);
