@@ -51,8 +51,8 @@ public final class HoleMaking {
         MoveBuilder b = new MoveBuilder(Vec3.of(center, h.clearanceZ()));
         b.rapid(Vec3.of(center, h.retractZ()));
         double f = tool.plungeFeedMmPerMin();
-        // ISO 14649-11 drilling_type_strategy: the start zone ends when the full diameter is depth_of_start deep
-        // a zone without a reduction is no zone (NaN: no split, no reduction)
+        // ISO 14649-11 drilling_type_strategy: the start zone ends when the full diameter is depth_of_start
+        // deep; a zone without a reduction is no zone (NaN: no split, no reduction)
         double startEnd = c.startFeedFactor() == 1 ? Double.NaN
                 : Math.max(h.bottomZ(), h.topZ() - c.startDepth() - c.tipLength());
         double endStart = c.endFeedFactor() == 1 ? Double.NaN : Math.min(h.retractZ(), h.bottomZ() + c.endDepth());
