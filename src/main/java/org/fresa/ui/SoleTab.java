@@ -403,7 +403,7 @@ final class SoleTab implements ModuleTab {
 
         @Override
         public String getColumnName(int c) {
-            return new String[] {"Parameter", "Unit", "Value"}[c];
+            return new String[] {"Name", "Unit", "Value"}[c];
         }
 
         @Override

@@ -174,6 +174,13 @@ class SoleTabGuiTest {
         }
         assertTrue(Files.readString(out.resolve("tread-40-right.ngc")).contains("G3")
                 || Files.readString(out.resolve("tread-40-right.ngc")).contains("G2"));
+
+        // Delete on the plot removes the selected figure from the job
+        window.robot().focus(chart);
+        waitFor("the plot has the focus again", chart::isFocusOwner);
+        window.robot().pressAndReleaseKey(KeyEvent.VK_DELETE);
+        waitFor("the figure is deleted", () -> model.job().sole().orElseThrow().designs().size() == 8);
+        assertEquals("(none)", GuiActionRunner.execute(() -> window.comboBox("sole-designs").target().getSelectedItem()));
     }
 
     private void screenshot(String name) throws Exception {
