@@ -179,6 +179,12 @@ final class SoleTab implements ModuleTab {
         right.add(bottom, BorderLayout.SOUTH);
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right), BorderLayout.CENTER);
         installPlotEditing();
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName()) && !vm.job().equals(Optional.of(ctx.model().job()))) {
+                // another job was opened or edited elsewhere: never edit the old one on top of it
+                jobReplaced(ctx.model().job());
+            }
+        });
         library.setSelectedIndex(vm.macros().indexOf("SUB4"));
     }
 
@@ -314,6 +320,18 @@ final class SoleTab implements ModuleTab {
         }
         if (!vm.sizes().isEmpty()) {
             plot.update(vm.scene());
+        }
+    }
+
+    private void jobReplaced(org.fresa.job.Job j) {
+        vm.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.SOLE));
+        sizes.removeAllItems();
+        refresh(true);
+        if (j.sole().isPresent()) {
+            loadJob();
+        } else {
+            status.setText("Load a sole job");
+            plot.show(PlotScene.empty("No sole job"));
         }
     }
 
