@@ -154,6 +154,14 @@ class SoleViewModelTest {
     }
 
     @Test
+    void aDragOnTheLeftFootMovesTheFigureTheMirroredWay() throws Exception {
+        SoleViewModel vm = sample();
+        vm.selectFoot(Foot.LEFT);
+        Vec2 d = vm.deltaToJobFrame(Vec2.of(5, 2));
+        assertAll(() -> assertEquals(-5 / 1.02, d.x(), EPS), () -> assertEquals(2 / 1.02, d.y(), EPS));
+    }
+
+    @Test
     void aFigureUnderThePointIsSelectedAndNothingElsewhere() throws Exception {
         SoleViewModel vm = sample();
         assertTrue(vm.selectAt(Vec2.of(-32, 161)));
