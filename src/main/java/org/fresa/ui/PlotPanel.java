@@ -60,6 +60,35 @@ public final class PlotPanel extends JPanel {
         });
     }
 
+    /** The chart component itself: mouse listeners, key bindings and drops of the tabs go here. */
+    public javax.swing.JComponent chartComponent() {
+        return chartPanel;
+    }
+
+    /** A point of the chart component (pixels) as plot coordinates (mm). */
+    public org.fresa.geom.Vec2 toPlotMm(java.awt.Point p) {
+        java.awt.geom.Point2D j = chartPanel.translateScreenToJava2D(p);
+        java.awt.geom.Rectangle2D area = chartPanel.getChartRenderingInfo().getPlotInfo().getDataArea();
+        XYPlot xy = chart.getXYPlot();
+        return org.fresa.geom.Vec2.of(xy.getDomainAxis().java2DToValue(j.getX(), area, xy.getDomainAxisEdge()),
+                xy.getRangeAxis().java2DToValue(j.getY(), area, xy.getRangeAxisEdge()));
+    }
+
+    /** A plot point (mm) as a point of the chart component (pixels), e.g. to aim a drop in a test. */
+    public java.awt.Point toPixels(org.fresa.geom.Vec2 mm) {
+        java.awt.geom.Rectangle2D area = chartPanel.getChartRenderingInfo().getPlotInfo().getDataArea();
+        XYPlot xy = chart.getXYPlot();
+        double x = xy.getDomainAxis().valueToJava2D(mm.x(), area, xy.getDomainAxisEdge());
+        double y = xy.getRangeAxis().valueToJava2D(mm.y(), area, xy.getRangeAxisEdge());
+        java.awt.Point j = chartPanel.translateJava2DToScreen(new java.awt.geom.Point2D.Double(x, y));
+        return j;
+    }
+
+    /** Turns the zoom-by-drag off while a tab drags something on the plot, and back on. */
+    public void setDragZoom(boolean on) {
+        chartPanel.setMouseZoomable(on);
+    }
+
     public PlotScene scene() {
         return scene;
     }

@@ -3,25 +3,44 @@ package org.fresa.ui;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
+import java.awt.Point;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.StringSelection;
+import java.awt.datatransfer.Transferable;
+import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.nio.file.Path;
 import java.util.Optional;
+import javax.swing.AbstractAction;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
+import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
+import javax.swing.JTable;
 import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import javax.swing.KeyStroke;
 import javax.swing.ListSelectionModel;
+import javax.swing.TransferHandler;
+import javax.swing.table.AbstractTableModel;
 import org.fresa.chart.PlotScene;
+import org.fresa.geom.Vec2;
+import org.fresa.job.JobSettings;
 import org.fresa.sole.Foot;
 
 /**
- * The Sole tab: the DESCOM figure library with a preview and the parameters of each macro, the
- * job's size and foot, and the plot of the outline and clipped tread of that size and foot.
+ * The Sole tab: the DESCOM figure library with a preview, dragged (or placed with Place) onto
+ * the outline plot; the placed figure selected on the plot or in the Figure list, dragged or
+ * nudged with the arrow keys (1 mm, Shift 10 mm), removed with Delete; its parameters edited in
+ * a table; the job's size and foot; Generate writes the programs of the edited job.
  */
 final class SoleTab implements ModuleTab {
 
@@ -30,14 +49,20 @@ final class SoleTab implements ModuleTab {
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final PlotPanel preview = new PlotPanel();
-    private final JTextArea params = new JTextArea(12, 22);
+    private final JList<String> library;
+    private final JTextArea info = new JTextArea(9, 22);
     private final JComboBox<String> sizes = new JComboBox<>();
     private final JComboBox<Foot> feet = new JComboBox<>(Foot.values());
+    private final JComboBox<String> placed = new JComboBox<>();
+    private final ParameterTable parameters = new ParameterTable();
+    private final JTextField outFolder = new JTextField(Path.of("sole-out").toAbsolutePath().toString(), 22);
     private final JLabel status = new JLabel(" ");
+    private boolean updatingPlaced;
+    private Vec2 dragFrom;
 
     SoleTab(AppContext ctx) {
         this.ctx = ctx;
-        JList<String> library = new JList<>(vm.macros().toArray(new String[0]));
+        library = new JList<>(vm.macros().toArray(new String[0]));
         library.setName("sole-library");
         library.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         library.addListSelectionListener(e -> {
@@ -46,20 +71,67 @@ final class SoleTab implements ModuleTab {
                 showFigure();
             }
         });
-        JLabel libLabel = new JLabel("Figures");
+        library.setDragEnabled(true);
+        library.setTransferHandler(new TransferHandler() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public int getSourceActions(JComponent c) {
+                return COPY;
+            }
+
+            @Override
+            protected Transferable createTransferable(JComponent c) {
+                return new StringSelection(library.getSelectedValue());
+            }
+        });
+        JLabel libLabel = new JLabel("Figures (drag onto the sole)");
         libLabel.setDisplayedMnemonic(KeyEvent.VK_F);
         libLabel.setLabelFor(library);
-        params.setEditable(false);
-        params.setName("sole-parameters");
-        preview.setPreferredSize(new Dimension(260, 220));
-        JPanel left = new JPanel(new BorderLayout(4, 4));
-        left.setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        left.add(libLabel, BorderLayout.NORTH);
+        info.setEditable(false);
+        info.setName("sole-figure-info");
+        preview.setPreferredSize(new Dimension(260, 200));
+        JButton place = new JButton("Place");
+        place.setName("sole-place");
+        place.setMnemonic(KeyEvent.VK_P);
+        place.setToolTipText("Places the library figure at the middle of the plot; then move it with the arrow keys");
+        place.addActionListener(e -> placeAt(plotCentre()));
         JPanel lib = new JPanel(new BorderLayout(4, 4));
         lib.add(new JScrollPane(library), BorderLayout.WEST);
-        lib.add(new JScrollPane(params), BorderLayout.CENTER);
+        JPanel infoPane = new JPanel(new BorderLayout(2, 2));
+        infoPane.add(new JScrollPane(info), BorderLayout.CENTER);
+        infoPane.add(place, BorderLayout.SOUTH);
+        lib.add(infoPane, BorderLayout.CENTER);
+        lib.add(preview, BorderLayout.SOUTH);
+
+        JLabel placedLabel = new JLabel("Figure");
+        placedLabel.setDisplayedMnemonic(KeyEvent.VK_G);
+        placedLabel.setLabelFor(placed);
+        placed.setName("sole-designs");
+        placed.addActionListener(e -> {
+            if (!updatingPlaced) {
+                vm.select(placed.getSelectedIndex() - 1 < -1 ? -1 : placed.getSelectedIndex() - 1);
+                refresh(false);
+            }
+        });
+        JLabel paramLabel = new JLabel("Parameters");
+        paramLabel.setDisplayedMnemonic(KeyEvent.VK_A);
+        paramLabel.setLabelFor(parameters.table);
+        JPanel selection = new JPanel(new BorderLayout(4, 4));
+        JPanel selTop = new JPanel(new BorderLayout(4, 4));
+        selTop.add(placedLabel, BorderLayout.WEST);
+        selTop.add(placed, BorderLayout.CENTER);
+        selTop.add(paramLabel, BorderLayout.SOUTH);
+        selection.add(selTop, BorderLayout.NORTH);
+        JScrollPane tableScroll = new JScrollPane(parameters.table);
+        tableScroll.setPreferredSize(new Dimension(260, 170));
+        selection.add(tableScroll, BorderLayout.CENTER);
+
+        JPanel left = new JPanel(new BorderLayout(4, 8));
+        left.setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
+        left.add(libLabel, BorderLayout.NORTH);
         left.add(lib, BorderLayout.CENTER);
-        left.add(preview, BorderLayout.SOUTH);
+        left.add(selection, BorderLayout.SOUTH);
 
         JLabel sizeLabel = new JLabel("Size");
         sizeLabel.setDisplayedMnemonic(KeyEvent.VK_Z);
@@ -70,6 +142,7 @@ final class SoleTab implements ModuleTab {
         footLabel.setLabelFor(feet);
         feet.setName("sole-foot");
         JButton load = new JButton("Load job");
+        load.setName("sole-load");
         load.setMnemonic(KeyEvent.VK_L);
         load.addActionListener(e -> loadJob());
         JButton show = new JButton("Show");
@@ -82,16 +155,188 @@ final class SoleTab implements ModuleTab {
         top.add(footLabel);
         top.add(feet);
         top.add(show);
-        top.add(status);
+        JLabel outLabel = new JLabel("Output folder");
+        outLabel.setDisplayedMnemonic(KeyEvent.VK_O);
+        outLabel.setLabelFor(outFolder);
+        outFolder.setName("sole-out");
+        JButton choose = new JButton("...");
+        choose.setToolTipText("Choose the output folder");
+        choose.addActionListener(e -> chooseFolder());
+        JButton generate = new JButton("Generate");
+        generate.setName("sole-generate");
+        generate.setMnemonic(KeyEvent.VK_E);
+        generate.addActionListener(e -> generate());
+        JPanel bottom = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        bottom.add(outLabel);
+        bottom.add(outFolder);
+        bottom.add(choose);
+        bottom.add(generate);
+        status.setName("sole-status");
+        bottom.add(status);
         JPanel right = new JPanel(new BorderLayout());
         right.add(top, BorderLayout.NORTH);
         right.add(plot, BorderLayout.CENTER);
+        right.add(bottom, BorderLayout.SOUTH);
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right), BorderLayout.CENTER);
-        library.setSelectedIndex(vm.macros().indexOf("SUB1A"));
+        installPlotEditing();
+        ctx.model().addListener(e -> {
+            if (MainViewModel.JOB.equals(e.getPropertyName()) && !vm.job().equals(Optional.of(ctx.model().job()))) {
+                // another job was opened or edited elsewhere: never edit the old one on top of it
+                jobReplaced(ctx.model().job());
+            }
+        });
+        library.setSelectedIndex(vm.macros().indexOf("SUB4"));
+    }
+
+    /** Drops from the library, press-drag-release to move, keys to nudge and delete. */
+    private void installPlotEditing() {
+        JComponent chart = plot.chartComponent();
+        chart.setTransferHandler(new TransferHandler() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public boolean canImport(TransferSupport s) {
+                return s.isDataFlavorSupported(DataFlavor.stringFlavor);
+            }
+
+            @Override
+            public boolean importData(TransferSupport s) {
+                try {
+                    String m = (String) s.getTransferable().getTransferData(DataFlavor.stringFlavor);
+                    if (!vm.macros().contains(m)) {
+                        return false;
+                    }
+                    vm.selectMacro(m);
+                    Point p = s.isDrop() ? s.getDropLocation().getDropPoint() : null;
+                    placeAt(p == null ? plotCentre() : plot.toPlotMm(p));
+                    return true;
+                } catch (java.awt.datatransfer.UnsupportedFlavorException | java.io.IOException e) {
+                    return false;
+                }
+            }
+        });
+        chart.addMouseListener(new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                if (vm.job().isEmpty() || e.isControlDown() || e.getButton() != MouseEvent.BUTTON1) {
+                    return;
+                }
+                chart.requestFocusInWindow();
+                Vec2 at = plot.toPlotMm(e.getPoint());
+                if (vm.selectAt(at)) {
+                    dragFrom = at;
+                    plot.setDragZoom(false);
+                } else {
+                    dragFrom = null;
+                }
+                refresh(false);
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                if (dragFrom == null) {
+                    return;
+                }
+                plot.setDragZoom(true);
+                Vec2 to = plot.toPlotMm(e.getPoint());
+                Vec2 d = vm.deltaToJobFrame(to.minus(dragFrom));
+                dragFrom = null;
+                if (Math.hypot(d.x(), d.y()) > 0.05) {
+                    edited(vm.moveSelectedBy(d.x(), d.y()));
+                }
+            }
+        });
+        bind(chart, "LEFT", -1, 0);
+        bind(chart, "RIGHT", 1, 0);
+        bind(chart, "UP", 0, 1);
+        bind(chart, "DOWN", 0, -1);
+        bind(chart, "shift LEFT", -10, 0);
+        bind(chart, "shift RIGHT", 10, 0);
+        bind(chart, "shift UP", 0, 10);
+        bind(chart, "shift DOWN", 0, -10);
+        chart.getInputMap(JComponent.WHEN_FOCUSED).put(KeyStroke.getKeyStroke("DELETE"), "sole-delete");
+        chart.getActionMap().put("sole-delete", new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                edited(vm.deleteSelected());
+            }
+        });
+    }
+
+    /** Arrow keys move by millimetres of the job's frame; on the left foot x runs mirrored. */
+    private void bind(JComponent c, String key, double dxMm, double dyMm) {
+        String name = "sole-nudge " + key;
+        c.getInputMap(JComponent.WHEN_FOCUSED).put(KeyStroke.getKeyStroke(key), name);
+        c.getActionMap().put(name, new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                double sx = vm.foot() == Foot.LEFT ? -1 : 1;
+                edited(vm.moveSelectedBy(sx * dxMm, dyMm));
+            }
+        });
+    }
+
+    private Vec2 plotCentre() {
+        return plot.scene().bounds().map(b -> b.center()).orElse(Vec2.ZERO);
+    }
+
+    private void placeAt(Vec2 plotMm) {
+        edited(vm.place(plotMm));
+        plot.chartComponent().requestFocusInWindow();
+    }
+
+    /** After an edit: the job goes to the window (so Save saves it) and the plot is redrawn. */
+    private void edited(Optional<String> why) {
+        if (why.isPresent()) {
+            status.setText(why.get());
+            return;
+        }
+        vm.job().ifPresent(j -> ctx.model().setJob(j));
+        refresh(true);
+    }
+
+    private void refresh(boolean jobChanged) {
+        if (jobChanged || placed.getItemCount() != vm.designs().size() + 1) {
+            updatingPlaced = true;
+            placed.removeAllItems();
+            placed.addItem("(none)");
+            for (JobSettings.SoleDesign d : vm.designs()) {
+                placed.addItem(d.name());
+            }
+            updatingPlaced = false;
+        }
+        updatingPlaced = true;
+        placed.setSelectedIndex(vm.selected() + 1);
+        updatingPlaced = false;
+        parameters.reload();
+        if (vm.selected() >= 0) {
+            Vec2 at = vm.position(vm.selected());
+            status.setText(String.format(java.util.Locale.ROOT, "%s at x %.1f mm, y %.1f mm (job frame)",
+                    vm.designs().get(vm.selected()).name(), at.x(), at.y()));
+        }
+        if (!vm.sizes().isEmpty()) {
+            plot.update(vm.scene());
+        }
+    }
+
+    private void jobReplaced(org.fresa.job.Job j) {
+        vm.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.SOLE));
+        sizes.removeAllItems();
+        refresh(true);
+        if (j.sole().isPresent()) {
+            loadJob();
+        } else {
+            status.setText("Load a sole job");
+            plot.show(PlotScene.empty("No sole job"));
+        }
     }
 
     private void showFigure() {
-        params.setText(vm.parametersText());
+        info.setText(vm.parametersText());
         preview.show(vm.preview());
     }
 
@@ -106,6 +351,7 @@ final class SoleTab implements ModuleTab {
                 sizes.setSelectedItem(vm.size());
             }
             status.setText(vm.problem().isEmpty() ? list.size() + " sizes" : vm.problem());
+            refresh(true);
             if (vm.problem().isEmpty()) {
                 showSole();
             } else {
@@ -122,6 +368,83 @@ final class SoleTab implements ModuleTab {
         vm.selectSize((String) sizes.getSelectedItem());
         vm.selectFoot((Foot) feet.getSelectedItem());
         ctx.tasks().start("Tread of size " + vm.size(), pm -> vm.scene(), plot::show);
+    }
+
+    private void chooseFolder() {
+        JFileChooser fc = new JFileChooser();
+        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        fc.setDialogTitle("Output folder of the sole programs");
+        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            outFolder.setText(fc.getSelectedFile().getAbsolutePath());
+        }
+    }
+
+    private void generate() {
+        String f = outFolder.getText().trim();
+        if (f.isEmpty()) {
+            status.setText("Choose an output folder first");
+            return;
+        }
+        Path folder = Path.of(f);
+        ctx.tasks().start("Generating the sole programs", pm -> vm.generate(folder, pm), outcome -> {
+            status.setText(outcome.files().size() + " files written to " + folder
+                    + (outcome.problems().isEmpty() ? "" : "; " + outcome.problems().get(0)));
+        });
+    }
+
+    /** The selected figure's parameters: name, unit, value (editable, checked by the view model). */
+    private final class ParameterTable extends AbstractTableModel {
+        private static final long serialVersionUID = 1L;
+        private final JTable table = new JTable(this);
+        private transient java.util.List<SoleViewModel.Parameter> rows = java.util.List.of();
+
+        ParameterTable() {
+            table.setName("sole-parameters");
+            table.setFillsViewportHeight(true);
+            table.putClientProperty("terminateEditOnFocusLost", Boolean.TRUE);
+        }
+
+        void reload() {
+            rows = vm.parameters();
+            fireTableDataChanged();
+        }
+
+        @Override
+        public int getRowCount() {
+            return rows.size();
+        }
+
+        @Override
+        public int getColumnCount() {
+            return 3;
+        }
+
+        @Override
+        public String getColumnName(int c) {
+            return new String[] {"Name", "Unit", "Value"}[c];
+        }
+
+        @Override
+        public Object getValueAt(int r, int c) {
+            SoleViewModel.Parameter p = rows.get(r);
+            return c == 0 ? p.name() : c == 1 ? p.unit() : p.value();
+        }
+
+        @Override
+        public boolean isCellEditable(int r, int c) {
+            return c == 2;
+        }
+
+        @Override
+        public void setValueAt(Object value, int r, int c) {
+            Optional<String> why = vm.setParameter(rows.get(r).name(), String.valueOf(value));
+            if (why.isPresent()) {
+                status.setText(why.get());
+                fireTableRowsUpdated(r, r);
+            } else {
+                edited(why);
+            }
+        }
     }
 
     @Override
