@@ -86,6 +86,9 @@ public final class Benchmarks {
         if (jar != null) {
             try {
                 figures.put("example2_irb140_process_s", processSeconds(projectRoot, jar));
+                notes.put("example2_irb140_process_s", javaCommand(jar).stream().anyMatch(a -> a.startsWith("-XX:Shared"))
+                        ? "with the class-data archive " + jar.resolveSibling("fresa.jsa") + ", as ./fresa starts"
+                        : "without a class-data archive (./fresa makes " + jar.resolveSibling("fresa.jsa") + ")");
             } catch (IOException e) {
                 figures.put("example2_irb140_process_s", null);
                 notes.put("example2_irb140_process_s", e.getMessage());
@@ -193,13 +196,17 @@ public final class Benchmarks {
         return median(ms);
     }
 
-    /** {@code fresa robot} on example 2 with the IRB-140 in a fresh JVM, wall seconds, median of 3. */
+    /**
+     * {@code fresa robot} on example 2 with the IRB-140 in a fresh JVM, wall seconds, median of 3.
+     * The JVM starts as the {@code ./fresa} launcher starts it: with the class-data archive next to
+     * the jar when there is one newer than the jar (see {@link #javaCommand}).
+     */
     static double processSeconds(Path root, Path jar) throws IOException, InterruptedException {
         double[] s = new double[3];
         for (int r = 0; r < s.length; r++) {
             Path out = Files.createTempDirectory("fresa-bench");
-            List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-jar", jar.toString(), "robot", root.resolve("samples/stepnc/example2.stp").toString(),
+            List<String> cmd = javaCommand(jar);
+            cmd.addAll(List.of("robot", root.resolve("samples/stepnc/example2.stp").toString(),
                     "--robot", "irb140", "--robot-table", "450,0,350", "--table-piece", "0,10,0", "--out", out.toString()));
             long t0 = System.nanoTime();
             Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
@@ -216,6 +223,27 @@ public final class Benchmarks {
             }
         }
         return median(s);
+    }
+
+    /**
+     * The command line that starts the jar as {@code ./fresa} does: this JVM's java, and
+     * {@code fresa.jsa} beside the jar as the class-data archive when it is newer than the jar
+     * (the JVM ignores an archive that does not match, silently).
+     */
+    static List<String> javaCommand(Path jar) {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        Path jsa = jar.resolveSibling("fresa.jsa");
+        try {
+            if (Files.isRegularFile(jsa)
+                    && Files.getLastModifiedTime(jsa).compareTo(Files.getLastModifiedTime(jar)) >= 0) {
+                cmd.addAll(List.of("-XX:SharedArchiveFile=" + jsa, "-Xlog:cds=off", "-Xlog:cds+dynamic=off"));
+            }
+        } catch (IOException e) {
+            // no usable archive: start without one, as the launcher does
+        }
+        cmd.addAll(List.of("-jar", jar.toString()));
+        return cmd;
     }
 
     /** The figures as an aligned table for people. */

@@ -5,12 +5,20 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
 import java.util.regex.Pattern;
 
 /**
  * The output folder of a run ({@code --out DIR}): files are written atomically, their names are
  * checked so that nothing derived from an input (a workingstep id, a layer name) can escape the
  * folder, and the files written are listed for the summary.
+ *
+ * <p>Between {@link #beginParallel} and {@link #finishParallel} each file's body is rendered into
+ * memory on an executor while the caller goes on; the files are then written in the order they
+ * were asked for, so the folder and {@link #written} are the same as without it.
  */
 public final class OutputFolder {
 
@@ -20,6 +28,11 @@ public final class OutputFolder {
 
     private final Path dir;
     private final List<Path> written = new ArrayList<>();
+    private ExecutorService renderer;
+    private final List<Pending> pending = new ArrayList<>();
+
+    private record Pending(Path target, Future<byte[]> bytes) {
+    }
 
     public OutputFolder(Path dir) {
         this.dir = dir.toAbsolutePath().normalize();
@@ -42,9 +55,91 @@ public final class OutputFolder {
      */
     public synchronized Path write(String fileName, AtomicFiles.Body body) throws IOException {
         Path target = resolve(fileName);
-        AtomicFiles.write(target, body);
+        if (renderer != null) {
+            pending.add(new Pending(target, renderer.submit(() -> {
+                java.io.ByteArrayOutputStream buf = new java.io.ByteArrayOutputStream(1 << 16);
+                body.writeTo(buf);
+                return buf.toByteArray();
+            })));
+        } else {
+            AtomicFiles.write(target, body);
+        }
         written.add(target);
         return target;
+    }
+
+    /**
+     * From now on {@link #write} renders each body on {@code executor} and returns at once; the
+     * files appear at {@link #finishParallel}.
+     *
+     * @throws IllegalStateException when already rendering in parallel
+     */
+    public synchronized void beginParallel(ExecutorService executor) {
+        if (renderer != null) {
+            throw new IllegalStateException("already rendering in parallel");
+        }
+        renderer = java.util.Objects.requireNonNull(executor, "executor");
+    }
+
+    /**
+     * Waits for the bodies rendered since {@link #beginParallel} and writes their files in the
+     * order they were asked for; afterwards writes are immediate again.
+     *
+     * @throws IOException the first body's or write's failure (the files after it are not written)
+     */
+    public void finishParallel() throws IOException {
+        List<Pending> todo;
+        synchronized (this) {
+            todo = List.copyOf(pending);
+            pending.clear();
+            renderer = null;
+        }
+        for (int i = 0; i < todo.size(); i++) {
+            Pending p = todo.get(i);
+            byte[] bytes;
+            try {
+                bytes = p.bytes().get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                cancel(todo, i);
+                throw new java.io.InterruptedIOException("interrupted while rendering " + p.target().getFileName());
+            } catch (ExecutionException | CancellationException e) {
+                cancel(todo, i);
+                Throwable c = e.getCause() != null ? e.getCause() : e;
+                if (c instanceof IOException io) {
+                    throw io;
+                }
+                if (c instanceof RuntimeException re) {
+                    throw re;
+                }
+                if (c instanceof Error err) {
+                    throw err;
+                }
+                throw new IOException("cannot render " + p.target().getFileName() + ": " + c.getMessage(), c);
+            }
+            AtomicFiles.write(p.target(), out -> out.write(bytes));
+        }
+    }
+
+    /** Drops what was asked for since {@link #beginParallel} without writing it. */
+    public void abandonParallel() {
+        List<Pending> todo;
+        synchronized (this) {
+            todo = List.copyOf(pending);
+            pending.clear();
+            renderer = null;
+        }
+        cancel(todo, 0);
+    }
+
+    /** Cancels the renderings from {@code from} on and takes their files off {@link #written}. */
+    private void cancel(List<Pending> todo, int from) {
+        for (int i = from; i < todo.size(); i++) {
+            todo.get(i).bytes().cancel(true);
+        }
+        synchronized (this) {
+            written.removeAll(todo.subList(from, todo.size()).stream().map(Pending::target).toList());
+        }
     }
 
     public Path writeString(String fileName, String text) throws IOException {

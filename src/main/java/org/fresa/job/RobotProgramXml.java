@@ -52,6 +52,11 @@ public final class RobotProgramXml {
     private RobotProgramXml() {
     }
 
+    /** Sets up the schema and the binding now (both take a while in a fresh JVM); idempotent. */
+    static void prepare() {
+        // initialising the class builds SCHEMA and CONTEXT
+    }
+
     private static JAXBContext createContext() {
         try {
             return JAXBContext.newInstance(ObjectFactory.class);

@@ -10,6 +10,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import org.fresa.geom.Tolerance;
 import org.fresa.kin.Robot;
 import org.fresa.model.CamInputException;
@@ -63,8 +65,30 @@ public final class RobotService {
         return out;
     }
 
-    /** Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}. */
+    /**
+     * Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}.
+     * The files are rendered in parallel (one thread per core, at most 4), and the XML binding is
+     * set up on one of those threads while the toolpaths are planned and solved.
+     */
     public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(4,
+                Runtime.getRuntime().availableProcessors())), r -> {
+                    Thread t = new Thread(r, "fresa-output");
+                    t.setDaemon(true);
+                    return t;
+                });
+        try {
+            if (s.formats().contains("xml")) {
+                pool.submit(RobotProgramXml::prepare);
+            }
+            return run(s, out, progress, pool);
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress, ExecutorService pool)
             throws CamInputException, IOException {
         Robot robot = RobotFiles.load(s.robot());
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
@@ -76,13 +100,20 @@ public final class RobotService {
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT);
         RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(req, progress);
         out.create();
-        out.write("toolpath.csv", os -> {
-            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-            ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
-            w.flush();
-        });
-        String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        TaskOutcome o = RobotTrajectoryService.write(solved, name, out);
+        TaskOutcome o;
+        out.beginParallel(pool);
+        try {
+            out.write("toolpath.csv", os -> {
+                Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+                ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
+                w.flush();
+            });
+            String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
+            o = RobotTrajectoryService.write(solved, name, out);
+            out.finishParallel();
+        } finally {
+            out.abandonParallel();
+        }
         List<String> problems = new ArrayList<>(plan.problems());
         problems.addAll(o.problems());
         Map<String, Object> summary = new LinkedHashMap<>(o.summary());

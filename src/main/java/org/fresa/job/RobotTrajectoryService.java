@@ -3,6 +3,7 @@ package org.fresa.job;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -146,7 +147,7 @@ public final class RobotTrajectoryService {
         out.create();
         List<String> fmts = req.formats();
         if (fmts.contains("csv")) {
-            out.writeString("trajectory.csv", trajectoryCsv(req.robot(), r));
+            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
         }
         if (fmts.contains("png")) {
             writeCharts(req.robot(), r, out);

@@ -8,6 +8,9 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -27,6 +30,56 @@ class OutputFolderTest {
         try (Stream<Path> s = Files.list(dir)) {
             assertEquals(List.of(), s.toList());
         }
+    }
+
+    @Test
+    void parallelRenderingWritesEveryFileInTheOrderAskedAtFinish() throws Exception {
+        OutputFolder out = new OutputFolder(dir);
+        ExecutorService pool = Executors.newFixedThreadPool(2);
+        CountDownLatch secondDone = new CountDownLatch(1);
+        try {
+            out.beginParallel(pool);
+            // the first body waits for the second, so the second is certainly rendered first
+            out.write("first.csv", o -> {
+                try {
+                    secondDone.await();
+                } catch (InterruptedException e) {
+                    throw new java.io.InterruptedIOException();
+                }
+                o.write("1".getBytes());
+            });
+            out.writeString("second.csv", "2");
+            secondDone.countDown();
+            assertFalse(Files.exists(dir.resolve("second.csv")));
+            out.finishParallel();
+        } finally {
+            pool.shutdownNow();
+        }
+        assertEquals(List.of(dir.resolve("first.csv"), dir.resolve("second.csv")), out.written());
+        assertEquals("1", Files.readString(dir.resolve("first.csv")));
+        assertEquals("2", Files.readString(dir.resolve("second.csv")));
+    }
+
+    @Test
+    void aFailedParallelRenderingWritesNothingFromItOn() throws Exception {
+        OutputFolder out = new OutputFolder(dir);
+        ExecutorService pool = Executors.newFixedThreadPool(2);
+        try {
+            out.beginParallel(pool);
+            out.writeString("a.csv", "a");
+            out.write("b.csv", o -> {
+                throw new IOException("disk full");
+            });
+            out.writeString("c.csv", "c");
+            IOException e = assertThrows(IOException.class, out::finishParallel);
+            assertEquals("disk full", e.getMessage());
+        } finally {
+            pool.shutdownNow();
+        }
+        try (Stream<Path> s = Files.list(dir)) {
+            assertEquals(List.of(dir.resolve("a.csv")), s.toList());
+        }
+        assertEquals(List.of(dir.resolve("a.csv")), out.written());
     }
 
     @Test
