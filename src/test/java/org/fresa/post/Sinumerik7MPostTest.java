@@ -71,8 +71,11 @@ class Sinumerik7MPostTest {
      * vertices match, junction by junction, sometimes the exact crossing, sometimes the tangent
      * point, sometimes neither, so only the program's own order of operations in Microsoft's binary
      * (MBF) single-precision format could reproduce them, and the digest summarises listing
-     * 10690–11280 instead of copying it. Cavity 02's N75 (line 3 meets arc 5 at a clean crossing,
-     * Y 2 µm low, X exact) is not a tangency; its cause is not found. What is emulated is the
+     * 10690–11280 instead of copying it. Cavity 02's N75 (line 3 meets arc 5 at a clean crossing)
+     * is not a tangency but most likely one more OCR 6↔8 slip of the kind the seed lists in §5.9:
+     * the printed {@code Y 163308} against our 163306, while the next block's J 107694, which the
+     * program computed from the rounded start, puts arc 5's centre at 163306 + 107694 = 271000 µm
+     * (circle 5 is (316, 271)); with 163308 it would be 271.002. What is emulated is the
      * micrometre rounding {@code INT(v·1000 + .499)} in single precision ({@link Sinumerik7MPost#um}),
      * which makes cavity 02's N160 and N215 exact; the example part's N90 Y (34214.5 µm in double,
      * at the near-tangent junction) then rounds up and differs by 1 µm.
