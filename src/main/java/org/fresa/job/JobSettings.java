@@ -43,13 +43,41 @@ public final class JobSettings {
         }
     }
 
-    /** Pocket milling technology (the 1988 thesis's data, samples/pocket/jobs.csv). */
+    /**
+     * Pocket milling technology (the 1988 thesis's data, samples/pocket/jobs.csv).
+     *
+     * @param direction {@code climb} (the default: counter-clockwise around the walls with a clockwise
+     *     spindle) or {@code conventional}; the 7M posts always write the thesis's own direction
+     */
     public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
             double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-            double finishFeedMmPerMin, String post) {
+            double finishFeedMmPerMin, String post, String direction) {
+        /** The milling directions, the default first. */
+        public static final List<String> DIRECTIONS = List.of("climb", "conventional");
+
         public PocketSettings {
             Objects.requireNonNull(contour, "contour");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(direction, "direction");
+        }
+
+        /** Climb-milled settings. */
+        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
+                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
+                double finishFeedMmPerMin, String post) {
+            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
+                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, "climb");
+        }
+
+        /** Whether the passes are climb-milled. */
+        public boolean climb() {
+            return !direction.equals("conventional");
+        }
+
+        /** The same settings milled in the given direction. */
+        public PocketSettings withDirection(String d) {
+            return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
+                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d);
         }
     }
 

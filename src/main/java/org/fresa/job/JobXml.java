@@ -163,7 +163,7 @@ public final class JobXml {
             job = job.withPocket(new PocketSettings(resolve(base, p.getContour()), p.getToolDiameterMm(),
                     p.getCutFraction(), p.getFinishFraction(), p.getZTopMm(), p.getZBottomMm(),
                     p.getMaxDepthPerPassMm(), p.getSpindleRpm(), p.getFeedMmPerMin(), p.getFinishFeedMmPerMin(),
-                    p.getPost()));
+                    p.getPost(), p.getDirection()));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -330,6 +330,7 @@ public final class JobXml {
             t.setFeedMmPerMin(p.feedMmPerMin());
             t.setFinishFeedMmPerMin(p.finishFeedMmPerMin());
             t.setPost(p.post());
+            t.setDirection(p.direction());
             x.setPocket(t);
         });
         job.cutting().ifPresent(c -> {

@@ -171,8 +171,19 @@ public final class PocketService {
         return PassPlanner.plan(rec, tech, faithful);
     }
 
-    /** The NC program text for a plan. */
+    /** The NC program text for a plan, climb-milled on the G-code posts. */
     public static String program(PocketPlan plan, String post, String programName) throws IOException {
+        return program(plan, post, programName, true);
+    }
+
+    /**
+     * The NC program text for a plan.
+     *
+     * @param climb climb milling (counter-clockwise passes with a clockwise spindle) or conventional
+     *     on the G-code posts; the 7M posts write the thesis's own direction (its passes as generated)
+     */
+    public static String program(PocketPlan plan, String post, String programName, boolean climb)
+            throws IOException {
         switch (post) {
             case "7m-compat":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
@@ -181,7 +192,7 @@ public final class PocketService {
             default: {
                 NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
-                p.write(PocketToolpath.of(plan, true), programName, w);
+                p.write(PocketToolpath.of(plan, climb), programName, w);
                 return w.toString();
             }
         }
@@ -194,6 +205,10 @@ public final class PocketService {
         if (!SINUMERIK_7M_POSTS.contains(s.post()) && NcPosts.byName(s.post()).isEmpty()) {
             throw new CamInputException("--post", "unknown post '" + s.post() + "': expected 7m-compat, 7m or "
                     + String.join(", ", NcPosts.names()));
+        }
+        if (!PocketSettings.DIRECTIONS.contains(s.direction())) {
+            throw new CamInputException("--direction", "unknown milling direction '" + s.direction()
+                    + "': expected " + String.join(" or ", PocketSettings.DIRECTIONS));
         }
         if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
             List<Contour> contours = readContours(s.contour());
@@ -214,9 +229,10 @@ public final class PocketService {
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
         String name = s.contour().getFileName().toString();
-        String nc = program(plan, s.post(), name);
+        String nc = program(plan, s.post(), name, s.climb());
         AtomicFiles.writeString(outFile, nc);
-        Toolpath path = PocketToolpath.of(plan, !s.post().startsWith("7m"));
+        boolean thesis = SINUMERIK_7M_POSTS.contains(s.post());
+        Toolpath path = PocketToolpath.of(plan, !thesis && s.climb());
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post());
@@ -224,6 +240,8 @@ public final class PocketService {
         summary.put("max_hole_diameter", rec.maxHoleDiameterMm());
         summary.put("max_tool_diameter", rec.maxToolDiameterMm());
         summary.put("wall_tool_diameter", rec.wallToolDiameterMm());
+        // the thesis's passes as generated: clockwise, conventional with its clockwise (M3) spindle
+        summary.put("direction", thesis ? "conventional" : s.direction());
         summary.put("passes", plan.milled().size());
         summary.put("pass_offsets", plan.generated().stream().map(p -> p.offsetMm()).toList());
         summary.put("depth_passes", plan.technology().depthPasses());
@@ -233,7 +251,8 @@ public final class PocketService {
     }
 
     /**
-     * The region engine's plan for a pocket with islands ({@link RegionPocket}, climb milling).
+     * The region engine's plan for a pocket with islands ({@link RegionPocket}, climb or conventional
+     * milling as the settings say).
      *
      * @param contours the outer contour first, then the islands ({@link #readContours})
      * @throws CamInputException for a 7M post (the thesis knows no islands) or bad technology
@@ -244,7 +263,7 @@ public final class PocketService {
             throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
                     + " found): choose one of " + String.join(", ", NcPosts.names()));
         }
-        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), true);
+        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb());
     }
 
     /** The program text of a region plan for a G-code post. */
@@ -273,6 +292,7 @@ public final class PocketService {
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post());
         summary.put("islands", contours.size() - 1);
+        summary.put("direction", s.direction());
         summary.put("max_hole_diameter", 2 * inradius);
         summary.put("passes", plan.order().size());
         summary.put("pass_offsets", plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());

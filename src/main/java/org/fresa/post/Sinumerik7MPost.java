@@ -161,11 +161,18 @@ public final class Sinumerik7MPost {
         blocks.add(new Block(text, -1));
     }
 
-    /** mm to integer micrometres: the thesis's INT(v·1000 ± .499) in compat mode, else symmetric. */
+    /**
+     * mm to integer micrometres: the thesis's INT(v·1000 ± .499) in compat mode, else symmetric.
+     * In compat mode the expression is evaluated as the BASIC program did, in single precision
+     * (a 24-bit mantissa): above 2^17 µm (131.072 mm) the spacing of single-precision numbers is
+     * 1/64 µm, so {@code v·1000 + .499} already rounds up to the next integer when the fraction is
+     * .4922 or more, and a vertex at ...x.4995 µm prints one micrometre higher than in double.
+     */
     long um(double mm) {
         double v = mm * 1000;
         if (mode == Mode.COMPAT) {
-            return (long) Math.floor(v >= 0 ? v + .499 : v - .499);
+            float single = (float) mm * 1000f;
+            return (long) Math.floor(single >= 0 ? single + .499f : single - .499f);
         }
         return (long) Math.signum(v) * (long) Math.floor(Math.abs(v) + 0.5);
     }

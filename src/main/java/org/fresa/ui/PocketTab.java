@@ -28,6 +28,7 @@ final class PocketTab implements ModuleTab {
     private final JTextField contour = new JTextField(24);
     private final JTextField[] tech = new JTextField[9];
     private final JComboBox<String> post = new JComboBox<>(new String[] {"7m-compat", "7m", "linuxcnc"});
+    private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
     private final JLabel status = new JLabel(" ");
 
     PocketTab() {
@@ -66,6 +67,12 @@ final class PocketTab implements ModuleTab {
         pl.setDisplayedMnemonic('P');
         form.add(pl);
         form.add(post);
+        JLabel dl = new JLabel("Direction (G-code posts)");
+        dl.setLabelFor(direction);
+        dl.setDisplayedMnemonic('D');
+        direction.setSelectedItem(s.direction());
+        form.add(dl);
+        form.add(direction);
         JButton run = new JButton("Compute");
         run.setMnemonic('C');
         run.addActionListener(e -> compute());
@@ -91,7 +98,7 @@ final class PocketTab implements ModuleTab {
                 v[i] = Double.parseDouble(tech[i].getText().trim());
             }
             model.setSettings(new PocketSettings(Path.of(contour.getText().trim()), v[0], v[1], v[2], v[3], v[4], v[5],
-                    v[6], v[7], v[8], (String) post.getSelectedItem()));
+                    v[6], v[7], v[8], (String) post.getSelectedItem(), (String) direction.getSelectedItem()));
         } catch (NumberFormatException ex) {
             status.setText("not a number: " + ex.getMessage());
             return;

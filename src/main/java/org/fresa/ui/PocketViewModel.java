@@ -75,8 +75,9 @@ public final class PocketViewModel {
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
-            String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString());
-            result = Optional.of(new Result(scene(plan), report(plan), nc));
+            String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
+                    settings.climb());
+            result = Optional.of(new Result(scene(plan, settings.climb()), report(plan), nc));
             error = Optional.empty();
         } catch (CamInputException | IOException | ToolTooLargeException | IllegalArgumentException e) {
             result = Optional.empty();
@@ -137,14 +138,14 @@ public final class PocketViewModel {
         return out;
     }
 
-    private static PlotScene scene(PocketPlan plan) {
+    private static PlotScene scene(PocketPlan plan, boolean climb) {
         LoopState ref = plan.recognition().reference();
         PlotScene scene = PlotScene.empty("pocket")
                 .with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, curves(ref, 0)));
         List<Curve2> sub = new ArrayList<>();
         collectSubcontours(plan.recognition().root(), sub);
         scene = scene.with(new PlotScene.Layer("subcontours", PlotScene.Style.AUX, sub));
-        scene = scene.withToolpath(PocketToolpath.of(plan, true));
+        scene = scene.withToolpath(PocketToolpath.of(plan, climb));
         Optional<List<Vec2>> v = ref.vertices(0);
         if (v.isPresent()) {
             for (int i = 0; i < ref.size(); i++) {

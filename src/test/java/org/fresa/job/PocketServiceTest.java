@@ -76,6 +76,106 @@ class PocketServiceTest {
         }
     }
 
+    private static long words(String nc, String word) {
+        return java.util.regex.Pattern.compile("\\b" + word + "\\b").matcher(nc).results().count();
+    }
+
+    /** Signed area of the feed moves' XY endpoints at the floor (positive: counter-clockwise). */
+    private static double floorArea(org.fresa.model.Toolpath path, double floorZ) {
+        List<org.fresa.geom.Vec3> pts = new java.util.ArrayList<>();
+        for (org.fresa.model.ToolpathSection sec : path.sections()) {
+            for (org.fresa.model.Move m : sec.moves()) {
+                if (!(m instanceof org.fresa.model.Move.Rapid) && Math.abs(m.end().z() - floorZ) < 1e-9) {
+                    pts.add(m.end());
+                }
+            }
+        }
+        double a = 0;
+        for (int i = 1; i < pts.size(); i++) {
+            a += pts.get(i - 1).x() * pts.get(i).y() - pts.get(i).x() * pts.get(i - 1).y();
+        }
+        return a / 2;
+    }
+
+    @Test
+    void conventionalMillingTurnsTheLoopsTheOtherWay(@TempDir Path dir) throws Exception {
+        // issue 7: climb milling by default, conventional on request
+        // the example part's arcs are all convex: clockwise (G02) in the thesis's conventional passes
+        PocketSettings climb = settings("examplepart", "linuxcnc");
+        PocketSettings conventional = climb.withDirection("conventional");
+        assertEquals("climb", climb.direction());
+        TaskOutcome a = PocketService.run(climb, dir.resolve("climb.ngc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(conventional, dir.resolve("conv.ngc"), ProgressMonitor.NONE);
+        String ca = Files.readString(dir.resolve("climb.ngc"));
+        String cb = Files.readString(dir.resolve("conv.ngc"));
+        org.fresa.pocket.PocketPlan plan = PocketService.plan(climb);
+        double floor = climb.zBottomMm();
+        double climbArea = floorArea(org.fresa.pocket.PocketToolpath.of(plan, true), floor);
+        double convArea = floorArea(org.fresa.pocket.PocketToolpath.of(plan, false), floor);
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertEquals("climb", a.summary().get("direction")),
+                () -> assertEquals("conventional", b.summary().get("direction")),
+                () -> assertTrue(words(ca, "G3") > words(ca, "G2"), "climb: convex arcs counter-clockwise"),
+                () -> assertEquals(words(ca, "G2"), words(cb, "G3")),
+                () -> assertEquals(words(ca, "G3"), words(cb, "G2")),
+                () -> assertTrue(climbArea > 0, "climb loops counter-clockwise: " + climbArea),
+                () -> assertTrue(convArea < 0, "conventional loops clockwise: " + convArea),
+                () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
+                        1e-9));
+    }
+
+    @Test
+    void aPocketWithIslandsIsMilledConventionallyOnRequest(@TempDir Path dir) throws Exception {
+        Path rooms = Path.of("samples/pocket/rooms-islands.contour");
+        PocketSettings climb = islandSettings(rooms, "linuxcnc");
+        List<org.fresa.geom.Contour> c = PocketService.readContours(rooms);
+        double floor = climb.zBottomMm();
+        double climbArea = floorArea(PocketService.regionPlan(climb, c).toolpath(), floor);
+        double convArea = floorArea(PocketService.regionPlan(climb.withDirection("conventional"), c).toolpath(), floor);
+        TaskOutcome o = PocketService.run(climb.withDirection("conventional"), dir.resolve("r.ngc"), ProgressMonitor.NONE);
+        assertEquals("conventional", o.summary().get("direction"));
+        assertTrue(climbArea > 0 && convArea < 0, climbArea + " " + convArea);
+    }
+
+    @Test
+    void theSevenMPostsKeepTheThesisDirection(@TempDir Path dir) throws Exception {
+        PocketSettings s = settings("cavity01", "7m-compat");
+        TaskOutcome a = PocketService.run(s, dir.resolve("a.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(s.withDirection("conventional"), dir.resolve("b.nc"), ProgressMonitor.NONE);
+        assertEquals("conventional", a.summary().get("direction"));
+        assertEquals(Files.readString(dir.resolve("a.nc")), Files.readString(dir.resolve("b.nc")));
+        assertEquals(0, b.exitStatus());
+    }
+
+    @Test
+    void anUnknownDirectionIsBadUsage(@TempDir Path dir) throws Exception {
+        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(
+                settings("cavity01", "linuxcnc").withDirection("down"), dir.resolve("d.ngc"), ProgressMonitor.NONE));
+        assertTrue(e.getMessage().contains("climb or conventional"), e.getMessage());
+        assertFalse(Files.exists(dir.resolve("d.ngc")));
+    }
+
+    @Test
+    void aSavedConventionalJobRunsHeadless(@TempDir Path dir) throws Exception {
+        Path contour = dir.resolve("cavity01.dad");
+        Files.copy(Path.of("samples/pocket/cavity01.dad"), contour);
+        PocketSettings s = settings("cavity01", "linuxcnc");
+        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(),
+                s.finishFraction(), s.zTopMm(), s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(),
+                s.finishFeedMmPerMin(), "linuxcnc", "conventional"));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertTrue(Files.readString(file).contains("direction=\"conventional\""));
+        Job read = JobXml.read(file);
+        assertEquals(job, read);
+        Path out = dir.resolve("out");
+        TaskOutcome o = JobRunner.run(read, new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals("conventional", o.summary().get("direction"));
+        PocketService.run(s.withDirection("conventional"), dir.resolve("direct.ngc"), ProgressMonitor.NONE);
+        assertEquals(Files.readString(dir.resolve("direct.ngc")), Files.readString(out.resolve("pocket.ngc")));
+    }
+
     @Test
     void anUnknownPostIsBadUsage(@TempDir Path dir) {
         assertThrows(CamInputException.class, () -> PocketService.run(settings("cavity01", "heidenhain"),

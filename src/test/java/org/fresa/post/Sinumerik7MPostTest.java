@@ -16,6 +16,7 @@ import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.Recognition;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 class Sinumerik7MPostTest {
@@ -57,28 +58,66 @@ class Sinumerik7MPostTest {
     private static final Pattern WORD = Pattern.compile("([XYIJ]) ?(-?\\d+)");
 
     /**
-     * The example part and cavity 02 have near-tangent junctions where the thesis's single
-     * precision decided between "tangent" and "two crossings" by rounding noise; our double
-     * precision lands up to 15 µm away at those junctions. Everything else is exact.
+     * What is left of the example part and cavity 02. The example part differs at near-tangent
+     * junctions of its slot end (arc 2 between lines 1 and 3 misses tangency by about 0.03 µm, and
+     * arc 4 after line 3): there the crossing moves along the element by about sqrt(2·r·gap), so the
+     * printed vertex was decided by the rounding noise (1e-7 relative) of the thesis's
+     * single-precision BASIC. Emulating that arithmetic was tried and is not kept: solving the
+     * thesis's line–circle quadratic ({@code y = (D - A x) / B}, §5.4) with every operation in Java
+     * {@code float} reproduces N95 and N130 but moves N90, N100 and N125 to other wrong values and
+     * breaks cavity 06 (N155/N160, a horizontal line tangent to an arc, 4 µm) and cavity 07
+     * (N75/N180, 1 µm); snapping every junction within k·COMPAR of tangency to the tangent point
+     * fixes N95 but breaks N90, N125 and N130 (and, for k = 100, cavities 03 and 07). The printed
+     * vertices match, junction by junction, sometimes the exact crossing, sometimes the tangent
+     * point, sometimes neither, so only the program's own order of operations in Microsoft's binary
+     * (MBF) single-precision format could reproduce them, and the digest summarises listing
+     * 10690–11280 instead of copying it. Cavity 02's N75 (line 3 meets arc 5 at a clean crossing)
+     * is not a tangency but most likely one more OCR 6↔8 slip of the kind the seed lists in §5.9:
+     * the printed {@code Y 163308} against our 163306, while the next block's J 107694, which the
+     * program computed from the rounded start, puts arc 5's centre at 163306 + 107694 = 271000 µm
+     * (circle 5 is (316, 271)); with 163308 it would be 271.002. What is emulated is the
+     * micrometre rounding {@code INT(v·1000 + .499)} in single precision ({@link Sinumerik7MPost#um}),
+     * which makes cavity 02's N160 and N215 exact; the example part's N90 Y (34214.5 µm in double,
+     * at the near-tangent junction) then rounds up and differs by 1 µm.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"examplepart", "cavity02"})
-    void compatPostMatchesThePrintedProgramWithinSinglePrecisionNoise(String name) throws Exception {
+    @CsvSource(textBlock = """
+            examplepart, 18 19 20 21 25 26, 11
+            cavity02,    15,                2
+            """)
+    void compatPostDiffersFromThePrintedProgramOnlyAtNearTangentJunctions(String name, String lines, long maxUm)
+            throws Exception {
         List<String> nc = lines(new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan(name)));
         List<String> g = golden(name);
         assertEquals(g.size(), nc.size());
-        int differing = 0;
+        List<Integer> differing = new java.util.ArrayList<>();
+        long worst = 0;
         for (int i = 0; i < g.size(); i++) {
             assertEquals(WORD.matcher(g.get(i)).replaceAll("$1"), WORD.matcher(nc.get(i)).replaceAll("$1"), "line " + (i + 1));
             Matcher a = WORD.matcher(g.get(i));
             Matcher b = WORD.matcher(nc.get(i));
             while (a.find() && b.find()) {
-                long da = Math.abs(Long.parseLong(a.group(2)) - Long.parseLong(b.group(2)));
-                assertTrue(da <= 16, "line " + (i + 1) + ": " + g.get(i) + " vs " + nc.get(i));
+                worst = Math.max(worst, Math.abs(Long.parseLong(a.group(2)) - Long.parseLong(b.group(2))));
             }
-            differing += g.get(i).equals(nc.get(i)) ? 0 : 1;
+            if (!g.get(i).equals(nc.get(i))) {
+                differing.add(i + 1);
+            }
         }
-        assertTrue(differing <= 8, differing + " lines differ");
+        assertEquals(java.util.Arrays.stream(lines.split(" ")).map(Integer::valueOf).toList(), differing);
+        assertEquals(maxUm, worst);
+    }
+
+    @Test
+    void compatRoundingIsTheBasicProgramsSinglePrecisionInt() {
+        Sinumerik7MPost compat = new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT);
+        org.junit.jupiter.api.Assertions.assertAll(
+                // above 2^17 µm single precision spaces numbers 1/64 µm apart: x.4995 + .499 rounds to x + 1
+                () -> assertEquals(153101, compat.um(153.1004995)),
+                () -> assertEquals(153100, compat.um(153.1004)),
+                () -> assertEquals(12345, compat.um(12.3454995)),
+                // INT is floor: a negative value comes out one micrometre too negative
+                () -> assertEquals(-2215, compat.um(-2.2143)),
+                () -> assertEquals(153100, new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED).um(153.1004995)));
     }
 
     @Test

@@ -44,4 +44,23 @@ class PocketViewModelTest {
         assertTrue(r.nc().contains("\nG2 ") || r.nc().contains("\nG3 "), "arcs as arcs");
         assertTrue(r.scene().layers().stream().anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
     }
+
+    @Test
+    void theDirectionSettingReversesTheProgramsArcs() {
+        PocketViewModel m = new PocketViewModel();
+        PocketSettings climb = new PocketSettings(Path.of("samples/pocket/examplepart.dad"), 4, 0.62, 0.18, 8, 6, 2,
+                3000, 300, 100, "linuxcnc");
+        m.setSettings(climb);
+        m.compute();
+        String a = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
+        m.setSettings(climb.withDirection("conventional"));
+        m.compute();
+        String b = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
+        assertEquals(words(a, "G3"), words(b, "G2"));
+        assertTrue(words(a, "G3") > words(a, "G2"), "convex arcs counter-clockwise in climb");
+    }
+
+    private static long words(String nc, String word) {
+        return java.util.regex.Pattern.compile("\\b" + word + "\\b").matcher(nc).results().count();
+    }
 }

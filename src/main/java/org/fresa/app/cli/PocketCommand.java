@@ -10,7 +10,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--json]}. */
+/** {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--json]}. */
 @Command(name = "pocket", mixinStandardHelpOptions = true, sortOptions = false,
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
 final class PocketCommand implements Callable<Integer> {
@@ -55,13 +55,17 @@ final class PocketCommand implements Callable<Integer> {
             description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d; default ${DEFAULT-VALUE}")
     String post;
 
+    @Option(names = "--direction", paramLabel = "climb|conventional", defaultValue = "climb",
+            description = "milling direction on the G-code posts (the 7M posts keep the thesis's); default ${DEFAULT-VALUE}")
+    String direction;
+
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
     @Override
     public Integer call() {
         PocketSettings settings = new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm,
-                zBottomMm, maxDepthMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post);
+                zBottomMm, maxDepthMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction);
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
                 progress -> PocketService.run(settings, out, progress));
     }

@@ -73,4 +73,23 @@ class FresaCommandTest {
         assertEquals(2, r.status());
         assertTrue(r.err().contains("nope.xml"), r.err());
     }
+
+    @Test
+    void pocketTakesTheMillingDirection() throws Exception {
+        String c = "samples/pocket/examplepart.dad";
+        Run climb = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("a.ngc").toString(), "--json");
+        Run conv = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("b.ngc").toString(), "--json",
+                "--direction", "conventional");
+        Run bad = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("c.ngc").toString(),
+                "--direction", "sideways");
+        assertAll(
+                () -> assertEquals(0, climb.status(), climb.err()),
+                () -> assertTrue(climb.out().contains("\"direction\":\"climb\""), climb.out()),
+                () -> assertEquals(0, conv.status(), conv.err()),
+                () -> assertTrue(conv.out().contains("\"direction\":\"conventional\""), conv.out()),
+                () -> assertFalse(Files.readString(dir.resolve("a.ngc")).equals(Files.readString(dir.resolve("b.ngc")))),
+                () -> assertEquals(2, bad.status()),
+                () -> assertTrue(bad.err().contains("sideways"), bad.err()),
+                () -> assertFalse(Files.exists(dir.resolve("c.ngc"))));
+    }
 }
