@@ -4,9 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
-import java.awt.GraphicsEnvironment;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,10 +12,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.stream.Stream;
-import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.assertj.swing.fixture.DialogFixture;
-import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
 import org.assertj.swing.timing.Pause;
 import org.assertj.swing.timing.Timeout;
@@ -25,45 +21,15 @@ import org.fresa.job.AtomicFiles;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.JobTask;
-import org.fresa.job.RecentJobs;
 import org.fresa.robustness.CompleteOutputs;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Job > Run (F5) on a long grading job, then Cancel (Esc) while it writes (issue 12): the run
  * stops, every file under a final name is complete, no temporary file is left, and the window
  * runs the next job as usual.
  */
-class CancelRunGuiTest {
-
-    @TempDir
-    Path dir;
-
-    FrameFixture window;
-
-    @BeforeAll
-    static void needsADisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
-        FailOnThreadViolationRepaintManager.install();
-    }
-
-    @BeforeEach
-    void openWindow() {
-        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
-        window = new FrameFixture(w);
-        window.show();
-    }
-
-    @AfterEach
-    void closeWindow() {
-        if (window != null) {
-            window.cleanUp();
-        }
-    }
+class CancelRunGuiTest extends WindowGuiTest {
 
     static Job grading(String sizes, boolean half) {
         return Job.empty(JobTask.GRADE).withGrading(new GradingSettings(

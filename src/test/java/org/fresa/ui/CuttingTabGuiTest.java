@@ -2,53 +2,24 @@ package org.fresa.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
-import java.awt.GraphicsEnvironment;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
-import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.timing.Condition;
 import org.assertj.swing.timing.Pause;
 import org.assertj.swing.timing.Timeout;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobTask;
-import org.fresa.job.RecentJobs;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** The Cutting tab under a (virtual) display: a job's drawing cut, shown and written to target/screenshots. */
-class CuttingTabGuiTest {
+class CuttingTabGuiTest extends WindowGuiTest {
 
-    @TempDir
-    Path dir;
-
-    FrameFixture window;
-
-    @BeforeAll
-    static void needsADisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
-        FailOnThreadViolationRepaintManager.install();
-    }
-
-    @BeforeEach
-    void openWindow() {
-        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
-        window = new FrameFixture(w);
-        window.show(new java.awt.Dimension(1400, 860));
-    }
-
-    @AfterEach
-    void closeWindow() {
-        if (window != null) {
-            window.cleanUp();
-        }
+    @Override
+    java.awt.Dimension windowSize() {
+        return new java.awt.Dimension(1400, 860);
     }
 
     private void cut(Path drawing, String shot) {

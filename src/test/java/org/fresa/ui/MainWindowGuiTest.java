@@ -2,57 +2,23 @@ package org.fresa.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
-import java.awt.GraphicsEnvironment;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
-import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
-import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
 import org.assertj.swing.timing.Timeout;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobTask;
 import org.fresa.job.JobXml;
-import org.fresa.job.RecentJobs;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** The main window under a real (virtual) display: CI runs it under Xvfb, a headless run skips it. */
-class MainWindowGuiTest {
+class MainWindowGuiTest extends WindowGuiTest {
 
     static final String[] TABS = {"STEP-NC", "Position", "Robot", "Pocket", "Cutting", "Grading", "Sole", "Output"};
-
-    @TempDir
-    Path dir;
-
-    FrameFixture window;
-
-    @BeforeAll
-    static void needsADisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
-        FailOnThreadViolationRepaintManager.install();
-    }
-
-    @BeforeEach
-    void openWindow() {
-        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
-        window = new FrameFixture(w);
-        window.show();
-    }
-
-    @AfterEach
-    void closeWindow() {
-        if (window != null) {
-            window.cleanUp();
-        }
-    }
 
     @Test
     void windowIsTitledFresaWithTheEightTabs() {

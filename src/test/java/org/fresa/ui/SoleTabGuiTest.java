@@ -2,9 +2,7 @@ package org.fresa.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
-import java.awt.GraphicsEnvironment;
 import java.awt.Point;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
@@ -14,9 +12,7 @@ import java.util.function.Supplier;
 import javax.swing.JComponent;
 import org.assertj.swing.core.GenericTypeMatcher;
 import org.assertj.swing.core.MouseButton;
-import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
-import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.timing.Condition;
 import org.assertj.swing.timing.Pause;
 import org.assertj.swing.timing.Timeout;
@@ -29,43 +25,13 @@ import org.fresa.job.JobSettings;
 import org.fresa.job.JobXml;
 import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
-import org.fresa.job.RecentJobs;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The Sole tab under a (virtual) display: a library figure placed, nudged with the keys, dragged
  * with the mouse, the programs generated, and the saved job run unchanged by {@code fresa run}.
  */
-class SoleTabGuiTest {
-
-    @TempDir
-    Path dir;
-
-    FrameFixture window;
-
-    @BeforeAll
-    static void needsADisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
-        FailOnThreadViolationRepaintManager.install();
-    }
-
-    @BeforeEach
-    void openWindow() {
-        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
-        window = new FrameFixture(w);
-        window.show(new java.awt.Dimension(1400, 900));
-    }
-
-    @AfterEach
-    void closeWindow() {
-        if (window != null) {
-            window.cleanUp();
-        }
-    }
+class SoleTabGuiTest extends WindowGuiTest {
 
     private void waitFor(String what, Supplier<Boolean> test) {
         Pause.pause(new Condition(what) {

@@ -3,56 +3,22 @@ package org.fresa.ui;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
-import java.awt.GraphicsEnvironment;
 import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import javax.swing.JTree;
 import org.assertj.swing.core.GenericTypeMatcher;
-import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
-import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.fixture.JSliderFixture;
 import org.assertj.swing.timing.Condition;
 import org.assertj.swing.timing.Pause;
 import org.assertj.swing.timing.Timeout;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings;
-import org.fresa.job.RecentJobs;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** The STEP-NC tab's toolpath view under a (virtual) display (issue 4); a headless run skips it. */
-class StepNcTabGuiTest {
-
-    @TempDir
-    Path dir;
-
-    FrameFixture window;
-
-    @BeforeAll
-    static void needsADisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
-        FailOnThreadViolationRepaintManager.install();
-    }
-
-    @BeforeEach
-    void openWindow() {
-        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
-        window = new FrameFixture(w);
-        window.show(new java.awt.Dimension(1280, 860));
-    }
-
-    @AfterEach
-    void closeWindow() {
-        if (window != null) {
-            window.cleanUp();
-        }
-    }
+class StepNcTabGuiTest extends WindowGuiTest {
 
     @Test
     void example1sPocketIsReplayedFromTheKeyboard() {

@@ -1,0 +1,56 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+
+import java.awt.Dimension;
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Path;
+import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.FrameFixture;
+import org.fresa.job.RecentJobs;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The main window under a real (virtual) display, opened fresh for each test with its recent-jobs
+ * list in the test's folder: CI runs these under Xvfb, a headless run skips them.
+ */
+abstract class WindowGuiTest {
+
+    @TempDir
+    Path dir;
+
+    FrameFixture window;
+
+    @BeforeAll
+    static void needsADisplay() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under xvfb-run");
+        FailOnThreadViolationRepaintManager.install();
+    }
+
+    /** The window's size for the test, or null for its own preferred size. */
+    Dimension windowSize() {
+        return null;
+    }
+
+    @BeforeEach
+    void openWindow() {
+        MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
+        window = new FrameFixture(w);
+        if (windowSize() == null) {
+            window.show();
+        } else {
+            window.show(windowSize());
+        }
+    }
+
+    @AfterEach
+    void closeWindow() {
+        if (window != null) {
+            window.cleanUp();
+        }
+    }
+}
