@@ -89,7 +89,12 @@ public final class RobotProgramXml {
             Unmarshaller u = CONTEXT.createUnmarshaller();
             u.setSchema(SCHEMA);
             JAXBElement<RobotProgramType> root = u.unmarshal(SafeXml.source(in, file), RobotProgramType.class);
-            return fromXml(root.getValue());
+            try {
+                return fromXml(root.getValue());
+            } catch (IllegalArgumentException | ArithmeticException e) {
+                // schema-valid but inconsistent: joint counts, indices or orientations that do not fit
+                throw new CamInputException(name, "not a consistent robot program: " + e.getMessage());
+            }
         } catch (IOException e) {
             throw new CamInputException(name, "cannot read (" + e.getMessage() + ")");
         } catch (UnmarshalException e) {

@@ -66,4 +66,13 @@ class RobotProgramXmlTest {
         CamInputException e = assertThrows(CamInputException.class, () -> RobotProgramXml.read(f));
         assertTrue(e.line().isPresent(), e.getMessage());
     }
+
+    @Test
+    void aSchemaValidFileWithMoreJointValuesThanJointsIsRefused() throws Exception {
+        // found by the CI fuzzer: the schema cannot tie the joint count to the values per motion
+        Path f = Path.of("src/test/resources/org/fresa/fuzz/ReaderFuzzTestInputs/robotProgramXmlReaderAcceptsOrRefuses/two-joints-six-values.xml");
+        CamInputException e = assertThrows(CamInputException.class, () -> RobotProgramXml.read(f));
+        assertTrue(e.getMessage().contains("6 joint values for 2 joints"), e.getMessage());
+        assertTrue(e.getMessage().contains("two-joints-six-values.xml"), e.getMessage());
+    }
 }
