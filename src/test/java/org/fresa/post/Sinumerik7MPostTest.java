@@ -59,9 +59,9 @@ class Sinumerik7MPostTest {
      * rounded start point (seed §4.5), and puts the centre of arc 5 at 163306 + 107694 = 271000 µm,
      * circle 5 being (316, 271); with 163308 it would be 271.002. (2) N70→N75 is the G01 along line
      * 3 offset to t = 89.46, and the thesis's line–circle routine takes y from the line,
-     * {@code y = (D - A·x) / B} (§3.3): for every x that prints as 177478 (177.4775 to 177.4785 mm)
-     * that gives 163305.93 to 163306.24 µm, while the printed point lies 1.97 µm off the line (our
-     * 163306.06 lies on it). Single-precision noise is far smaller: numbers near 163 mm are
+     * {@code y = (D - A·x) / B} (§3.3): for every x that prints as 177478 (177.477501 to
+     * 177.478501 mm by {@code INT(v·1000 + .499)}) that gives 163305.78 to 163306.09 µm, which print
+     * as 163306, while the printed point lies 1.97 µm off the line (our 163306.06 lies on it). Single-precision noise is far smaller: numbers near 163 mm are
      * 0.015 µm apart. (3) The same two blocks already hold one slip of the same kind, N80
      * {@code Y 112480} for 112460 (the sample README's table, seed §5.9).
      */
@@ -117,6 +117,23 @@ class Sinumerik7MPostTest {
      * with arc 8 and arc 8 with arc 9 (N155, N220, 1 µm), and the junction of arc 12 and line 2 at
      * t = 13.9 (N75 = N110), whose X and Y lie 0.007 and 0.014 µm from the rounding thresholds;
      * the other lines are I/J from those starts.
+     *
+     * <p>Single precision measured again on every junction of every pass (lines matching of 35
+     * example part / 52 cavity 05, the six exact programs; double as committed: 29 / 35 / all
+     * exact, 366 lines in all): the .dad coefficients rounded to float, the arithmetic in double:
+     * 30 / 33 / exact (365); every operation in float with the digest's formulas (§3.3, y from the
+     * line, C = D² - 2·D·Y1·B + (Y1·B)² + (X1·B)² - (R1·B)²): 31 / 38, but cavity 03 44 of 46
+     * (circle–circle, 1 µm) and cavity 06 49 of 51 (the horizontal line tangent to arc 9, 4 µm),
+     * 367; plus tangency snapped on horizontal and vertical lines and the radical line intersected
+     * with the second circle (two choices made only to undo those breaks): 31 / 34 / exact, 367;
+     * with C's products ungrouped, or the offsets accumulated pass by pass in float
+     * (D ← D + K·step, subroutine 9500), 27 to 31 / 34 to 39, all six exact only with the two
+     * choices above, and then 31 / 34 again. The differing
+     * vertices are coin flips of the discriminant's rounding noise (a tangent junction's crossing
+     * moves by sqrt(2·r·noise), 20 to 30 µm for noise of 0.01 µm), decided by the exact operation
+     * order of listing 10690–11280 in Microsoft's binary format and SQR, which the digest does not
+     * copy; a mode that gains one line in 389 by such choices would be fitted to the noise, so the
+     * compat arithmetic stays double with the single-precision rounding of {@link Sinumerik7MPost#um}.
      */
     @ParameterizedTest
     @CsvSource(textBlock = """
