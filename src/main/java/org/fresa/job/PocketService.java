@@ -171,7 +171,7 @@ public final class PocketService {
         return PassPlanner.plan(rec, tech, faithful);
     }
 
-    /** The NC program text for a plan, climb-milled on the G-code posts. */
+    /** The NC program text for a plan, climb-milled on the G-code posts and 7m. */
     public static String program(PocketPlan plan, String post, String programName) throws IOException {
         return program(plan, post, programName, true);
     }
