@@ -47,7 +47,7 @@ public final class JobSettings {
      * Pocket milling technology (the 1988 thesis's data, samples/pocket/jobs.csv).
      *
      * @param direction {@code climb} (the default: counter-clockwise around the walls with a clockwise
-     *     spindle) or {@code conventional}; the 7M posts always write the thesis's own direction
+     *     spindle) or {@code conventional}; {@code 7m-compat} always writes the thesis's own direction
      */
     public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
             double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,

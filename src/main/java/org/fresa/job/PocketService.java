@@ -171,7 +171,7 @@ public final class PocketService {
         return PassPlanner.plan(rec, tech, faithful);
     }
 
-    /** The NC program text for a plan, climb-milled on the G-code posts. */
+    /** The NC program text for a plan, climb-milled on the G-code posts and 7m. */
     public static String program(PocketPlan plan, String post, String programName) throws IOException {
         return program(plan, post, programName, true);
     }
@@ -180,7 +180,8 @@ public final class PocketService {
      * The NC program text for a plan.
      *
      * @param climb climb milling (counter-clockwise passes with a clockwise spindle) or conventional
-     *     on the G-code posts; the 7M posts write the thesis's own direction (its passes as generated)
+     *     on the G-code posts and {@code 7m}; {@code 7m-compat} writes the thesis's own direction (its
+     *     passes as generated, conventional)
      */
     public static String program(PocketPlan plan, String post, String programName, boolean climb)
             throws IOException {
@@ -188,7 +189,7 @@ public final class PocketService {
             case "7m-compat":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
             case "7m":
-                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED).write(plan);
+                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb).write(plan);
             default: {
                 NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
@@ -231,7 +232,7 @@ public final class PocketService {
         String name = s.contour().getFileName().toString();
         String nc = program(plan, s.post(), name, s.climb());
         AtomicFiles.writeString(outFile, nc);
-        boolean thesis = SINUMERIK_7M_POSTS.contains(s.post());
+        boolean thesis = s.post().equals("7m-compat");
         Toolpath path = PocketToolpath.of(plan, !thesis && s.climb());
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());

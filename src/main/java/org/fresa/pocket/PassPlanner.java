@@ -92,6 +92,14 @@ public final class PassPlanner {
                 return;
             }
             if (node.isLeaf() && d >= node.leafT() - eps && !Double.isNaN(prevD)) {
+                if (faithful && prevD < node.tStart() - eps) {
+                    // the thesis enters a sub-area with the pass that crossed the division; when
+                    // that pass lies beyond the sub-area's leaf (the sub-area begins and ends
+                    // between two passes of its parent) it writes no pass there (cavity 05's
+                    // sliver {8, 10, 12}, 11.535 to 11.766 between passes 6.7 and 13.9); Fresa's
+                    // default mills it with the last-pass rule
+                    return;
+                }
                 double leaf = node.leafT();
                 double last = (leaf + d - r) / 2;
                 double tPrev = node.stateAt(leaf - eps).tFrom();

@@ -27,6 +27,19 @@ public record PocketPass(List<Integer> nodePath, double offsetMm, boolean finish
         return pieces.get(0).start();
     }
 
+    /**
+     * The same closed pass traversed the other way (climb milling): pieces in reverse order with
+     * their ends swapped, starting where this pass starts.
+     */
+    public PocketPass reversed() {
+        List<PassPiece> out = new java.util.ArrayList<>();
+        for (int i = pieces.size() - 1; i >= 0; i--) {
+            PassPiece p = pieces.get(i);
+            out.add(new PassPiece(p.element(), p.offsetMm(), p.end(), p.start(), !p.reversed()));
+        }
+        return new PocketPass(nodePath, offsetMm, finishing, out);
+    }
+
     /** True when the other pass's node is this pass's node or one of its ancestors. */
     public boolean linksOutwardTo(PocketPass other) {
         return nodePath.containsAll(other.nodePath) && other.nodePath.size() <= nodePath.size()

@@ -32,7 +32,7 @@ public final class PocketToolpath {
         double safe = t.zTopMm() + CLEARANCE_MM;
         List<List<PassPiece>> passes = new ArrayList<>();
         for (PocketPass p : plan.milled()) {
-            passes.add(climb ? reversed(p.pieces()) : p.pieces());
+            passes.add(climb ? p.reversed().pieces() : p.pieces());
         }
         List<PocketPass> milled = plan.milled();
         int levels = t.depthPasses();
@@ -123,16 +123,6 @@ public final class PocketToolpath {
         }
         Vec3 e = moves.get(moves.size() - 1).end();
         return new Vec2(e.x(), e.y());
-    }
-
-    /** The same closed pass traversed the other way: pieces in reverse order, ends swapped. */
-    private static List<PassPiece> reversed(List<PassPiece> pieces) {
-        List<PassPiece> out = new ArrayList<>();
-        for (int i = pieces.size() - 1; i >= 0; i--) {
-            PassPiece p = pieces.get(i);
-            out.add(new PassPiece(p.element(), p.offsetMm(), p.end(), p.start(), !p.reversed()));
-        }
-        return out;
     }
 
     private static Vec3 at(Vec2 p, double z) {

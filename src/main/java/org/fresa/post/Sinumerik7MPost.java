@@ -18,7 +18,10 @@ import org.fresa.pocket.PocketTechnology;
  * copied at the first depth with the finishing feed still modal, negative numbers rounded with
  * the floor bias of {@code INT(v - .499)}, no blank after 3-digit block numbers in copied blocks.
  * {@link Mode#CORRECTED} cuts every depth pass at its own depth, restates the roughing feed on
- * every plunge, rounds symmetrically and always writes the blank.
+ * every plunge, rounds symmetrically and always writes the blank; it also mills in the direction
+ * asked for ({@code fresa pocket --direction}): climb (each pass counter-clockwise, convex arcs
+ * G03, with the clockwise M03 spindle) or conventional (the thesis's clockwise passes). Compat
+ * always writes the thesis's conventional passes.
  */
 public final class Sinumerik7MPost {
 
@@ -28,9 +31,20 @@ public final class Sinumerik7MPost {
     }
 
     private final Mode mode;
+    private final boolean climb;
 
+    /** The thesis's direction: clockwise (conventional) passes. */
     public Sinumerik7MPost(Mode mode) {
+        this(mode, false);
+    }
+
+    /**
+     * @param climb climb milling (passes reversed, counter-clockwise); ignored in {@link Mode#COMPAT},
+     *     which reproduces the printed programs
+     */
+    public Sinumerik7MPost(Mode mode, boolean climb) {
         this.mode = mode;
+        this.climb = climb && mode == Mode.CORRECTED;
     }
 
     private record Block(String text, int copiedFrom) {
@@ -50,7 +64,7 @@ public final class Sinumerik7MPost {
         int passes = t.depthPasses();
         long zp = um(t.depthStepMm());
         long feed = (long) Math.rint(t.feedMmPerMin());
-        List<PocketPass> milled = plan.milled();
+        List<PocketPass> milled = milled(plan);
         if (milled.isEmpty()) {
             return finish(blocks);
         }
@@ -81,9 +95,14 @@ public final class Sinumerik7MPost {
         return finish(blocks);
     }
 
+    /** The passes in milling order, each reversed for climb milling. */
+    private List<PocketPass> milled(PocketPlan plan) {
+        return climb ? plan.milled().stream().map(PocketPass::reversed).toList() : plan.milled();
+    }
+
     private void emitContours(List<Block> blocks, PocketPlan plan, int depth, long zp, long feed) {
         PocketTechnology t = plan.technology();
-        List<PocketPass> milled = plan.milled();
+        List<PocketPass> milled = milled(plan);
         String[] modal = {"G01"};
         boolean[] afterPlunge = {true};
         for (int k = 0; k < milled.size(); k++) {

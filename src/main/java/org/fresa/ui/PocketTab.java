@@ -67,7 +67,7 @@ final class PocketTab implements ModuleTab {
         pl.setDisplayedMnemonic('P');
         form.add(pl);
         form.add(post);
-        JLabel dl = new JLabel("Direction (G-code posts)");
+        JLabel dl = new JLabel("Direction (not 7m-compat)");
         dl.setLabelFor(direction);
         dl.setDisplayedMnemonic('D');
         direction.setSelectedItem(s.direction());

@@ -148,6 +148,32 @@ class PocketServiceTest {
     }
 
     @Test
+    void theCorrectedSevenMPostTakesTheMillingDirection(@TempDir Path dir) throws Exception {
+        // issue 7: 7m (the thesis's dialect with its defects corrected) climb-mills by default like
+        // the G-code posts; conventional gives the thesis's clockwise passes
+        PocketSettings climb = settings("examplepart", "7m");
+        TaskOutcome a = PocketService.run(climb, dir.resolve("climb.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(climb.withDirection("conventional"), dir.resolve("conv.nc"), ProgressMonitor.NONE);
+        String ca = Files.readString(dir.resolve("climb.nc"));
+        String cb = Files.readString(dir.resolve("conv.nc"));
+        org.fresa.pocket.PocketPlan plan = PocketService.plan(climb);
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertEquals("climb", a.summary().get("direction")),
+                () -> assertEquals("conventional", b.summary().get("direction")),
+                // the example part's arcs are all convex: G02 conventional, G03 climb
+                () -> assertTrue(cb.contains("G02") && !cb.contains("G03"), cb),
+                () -> assertTrue(ca.contains("G03") && !ca.contains("G02"), ca),
+                () -> assertEquals(cb, new org.fresa.post.Sinumerik7MPost(org.fresa.post.Sinumerik7MPost.Mode.CORRECTED)
+                        .write(plan)),
+                () -> assertEquals(ca.lines().count(), cb.lines().count()),
+                // same start point of every pass: the rapid to the first pass is the same block
+                () -> assertEquals(ca.lines().filter(l -> l.startsWith("N40 ")).toList(),
+                        cb.lines().filter(l -> l.startsWith("N40 ")).toList()),
+                () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
+                        1e-9));
+    }
+
+    @Test
     void anUnknownDirectionIsBadUsage(@TempDir Path dir) throws Exception {
         CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(
                 settings("cavity01", "linuxcnc").withDirection("down"), dir.resolve("d.ngc"), ProgressMonitor.NONE));

@@ -53,6 +53,27 @@ class PassPlannerTest {
         assertEquals(196.062, inner.pieces().get(1).start().distance(inner.pieces().get(1).center()), 1e-3);
     }
 
+    /**
+     * Cavity 05 divides at 11.535 (arcs 8 and 12 across line 10) into the main area and the sliver
+     * {8, 10, 12}, whose leaf is 11.766: the sub-area begins and ends between the parent's passes
+     * 6.7 and 13.9. The thesis's printed program (Tab. D.5) mills only the main area (52 blocks,
+     * one sub-area, no hop); Fresa's default mills the sliver too.
+     */
+    @Test
+    void cavity05SliverBetweenTwoPassesGetsAPassOnlyByDefault() throws Exception {
+        PocketTechnology t = new PocketTechnology(10, 0.72, 0.17, 15, 12, 4, 3250, 295, 90);
+        Recognition.Result rec = Recognition.of(RecognitionTest.sample("cavity05.dad"));
+        PocketPlan thesis = PassPlanner.plan(rec, t, true);
+        PocketPlan fresa = PassPlanner.plan(rec, t, false);
+        assertOffsets(List.of(5.0, 6.7, 13.9, 20.96666), offsets(thesis));
+        int sliver = rec.root().children().get(1).id();
+        assertEquals(0, thesis.generated().stream().filter(p -> p.nodeId() == sliver).count());
+        List<PocketPass> inSliver = fresa.generated().stream().filter(p -> p.nodeId() == sliver).toList();
+        assertEquals(1, inSliver.size());
+        // the default's stepover stops at d + R = 11.7 where the subcontour changes
+        assertEquals(11.7, inSliver.get(0).offsetMm(), 1e-6);
+    }
+
     @Test
     void cavity03CorrectsTheStepoverForTheSharpCornerOfTheParent() throws Exception {
         PocketPlan p = plan("cavity03.dad", new PocketTechnology(6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90));

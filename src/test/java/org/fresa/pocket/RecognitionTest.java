@@ -98,17 +98,22 @@ class RecognitionTest {
     }
 
     /**
-     * Cavity 05: why {@code --post 7m-compat} differs from the printed program in 51 of 52 lines.
-     * After lines 11 (t = 3.9998) and 9 (t = 5.6813) cancel, concave arcs 8 and 12 face each other
-     * across line 10 and meet at t = 11.53497 ((|C8 C12| - 11.609 - 12.55488) / 2), before the
-     * next cancellation (6 at 11.7748): a real division that pinches off the sliver {8, 10, 12},
-     * which itself ends at 11.7664. The printed program has one sub-area and no such split, and the
-     * rule that made the thesis miss it is not found. Tried and not kept: discarding divisions
-     * within 10·COMPAR of the current offset (the seed's root cut-off; the division is 5.85 mm
-     * ahead); reading the reference sectors on the original contour at t = 0 instead of the current
-     * one (the division point (51.9, 73.4) lies inside both arcs' original spans, so the split
-     * stays); skipping concave-arc pairs with a single element between them (removes this split
-     * but also cavity 03's split of arcs 1 and 4 at 6.1357, whose recognition then finds no event).
+     * Cavity 05: after lines 11 (t = 3.9998) and 9 (t = 5.6813) cancel, concave arcs 8 and 12 face
+     * each other across line 10 and meet at t = 11.53497 ((|C8 C12| - 11.609 - 12.55488) / 2),
+     * before the next cancellation (6 at 11.7748): a real division that pinches off the sliver
+     * {8, 10, 12}, which itself ends at 11.7664. The thesis divided here too: in its passes at 13.9
+     * and 20.967 (Tab. D.5 N105, N65) arc 8 meets arc 12 at the lower of their two crossings (L,
+     * larger x), the selector a division gives the main area's sub-elements; had it missed the
+     * division, line 10's cancellation at 11.766 would have set the selector to the crossing at that
+     * incentre (S, (51.07, 76.63), 6.6 mm from the other), and the later passes would run through
+     * the sliver. What the printed program lacks is only the sliver's pass (the sub-area lies between
+     * the parent's passes 6.7 and 13.9): {@code PassPlannerTest#cavity05SliverBetweenTwoPassesGetsAPassOnlyByDefault}.
+     * Rules tried for a missed division and not kept: discarding divisions within 10·COMPAR of the
+     * current offset (the division is 5.85 mm ahead); reading the reference sectors on the contour
+     * at t = 0; skipping concave-arc pairs with a single element between them (also removes cavity
+     * 03's split of arcs 1 and 4 at 6.1357); a sector test between the end angles in [0°, 360°) (arc
+     * 8 spans 298° to 65° through 0°, the centre line to arc 12 runs at 14°): it misses the
+     * division but then keeps the S crossing and the recognition ends in {5, 8, 12} with no event.
      */
     @Test
     void cavity05DividesAtArcs8And12WhereThePrintedProgramDoesNot() throws Exception {

@@ -56,7 +56,8 @@ final class PocketCommand implements Callable<Integer> {
     String post;
 
     @Option(names = "--direction", paramLabel = "climb|conventional", defaultValue = "climb",
-            description = "milling direction on the G-code posts (the 7M posts keep the thesis's); default ${DEFAULT-VALUE}")
+            description = "milling direction on every post but 7m-compat (which keeps the thesis's conventional"
+                    + " passes); default ${DEFAULT-VALUE}")
     String direction;
 
     @Option(names = "--json", description = "print a JSON summary on stdout")

@@ -92,4 +92,25 @@ class FresaCommandTest {
                 () -> assertTrue(bad.err().contains("sideways"), bad.err()),
                 () -> assertFalse(Files.exists(dir.resolve("c.ngc"))));
     }
+
+    @Test
+    void pocketTakesTheMillingDirectionOnTheCorrected7mPost() throws Exception {
+        String c = "samples/pocket/examplepart.dad";
+        Run climb = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m", "--out", dir.resolve("a.nc").toString(),
+                "--json");
+        Run conv = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m", "--out", dir.resolve("b.nc").toString(),
+                "--json", "--direction", "conventional");
+        Run compat = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m-compat", "--out",
+                dir.resolve("c.nc").toString(), "--json");
+        assertAll(
+                () -> assertEquals(0, climb.status(), climb.err()),
+                () -> assertTrue(climb.out().contains("\"direction\":\"climb\""), climb.out()),
+                () -> assertEquals(0, conv.status(), conv.err()),
+                () -> assertTrue(conv.out().contains("\"direction\":\"conventional\""), conv.out()),
+                // convex arcs: clockwise in the thesis's conventional passes, counter-clockwise climbing
+                () -> assertTrue(Files.readString(dir.resolve("a.nc")).contains("G03"), "climb"),
+                () -> assertFalse(Files.readString(dir.resolve("b.nc")).contains("G03"), "conventional"),
+                () -> assertTrue(compat.out().contains("\"direction\":\"conventional\""), compat.out()),
+                () -> assertFalse(Files.readString(dir.resolve("c.nc")).contains("G03"), "7m-compat"));
+    }
 }
