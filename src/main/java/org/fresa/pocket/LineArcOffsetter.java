@@ -73,15 +73,7 @@ public final class LineArcOffsetter {
                 kept.add(p);
             }
         }
-        List<Contour> loops = OffsetChains.loops(kept, Math.max(1e-5, 1e-8 * scale));
-        List<Contour> out = new ArrayList<>();
-        for (Contour c : loops) {
-            if (c.area() > Math.max(tol.linear() * tol.linear(), 1e-12 * scale * scale)) {
-                out.add(c);
-            }
-        }
-        out.sort(Comparator.comparingDouble(Contour::area).reversed());
-        return out;
+        return OffsetChains.closedLoops(kept, tol, scale);
     }
 
     /** The curves without zero-length pieces, full circles halved so every arc has a sweep < 2 pi. */

@@ -1,6 +1,7 @@
 package org.fresa.pocket;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -8,6 +9,7 @@ import org.fresa.geom.Arc2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 
 /**
@@ -16,6 +18,26 @@ import org.fresa.geom.Vec2;
  */
 final class OffsetChains {
     private OffsetChains() {
+    }
+
+    /**
+     * The closed loops of an offset's kept pieces, without the loops of negligible area, largest
+     * area first.
+     *
+     * @param kept the pieces of the raw offset that lie far enough from the input
+     * @param tol the caller's tolerance (loops of area below tol.linear() squared are dropped)
+     * @param scale the drawing's size, at least 1: sets the chaining and area thresholds
+     */
+    static List<Contour> closedLoops(List<Curve2> kept, Tolerance tol, double scale) {
+        List<Contour> loops = loops(kept, Math.max(1e-5, 1e-8 * scale));
+        List<Contour> out = new ArrayList<>();
+        for (Contour c : loops) {
+            if (c.area() > Math.max(tol.linear() * tol.linear(), 1e-12 * scale * scale)) {
+                out.add(c);
+            }
+        }
+        out.sort(Comparator.comparingDouble(Contour::area).reversed());
+        return out;
     }
 
     static List<Contour> loops(List<Curve2> pieces, double tol) {

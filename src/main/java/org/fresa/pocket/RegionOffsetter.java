@@ -1,7 +1,6 @@
 package org.fresa.pocket;
 
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
@@ -82,15 +81,7 @@ public final class RegionOffsetter {
                 kept.add(p);
             }
         }
-        List<Contour> loops = OffsetChains.loops(kept, Math.max(1e-5, 1e-8 * scale));
-        List<Contour> out = new ArrayList<>();
-        for (Contour c : loops) {
-            if (c.area() > Math.max(tol.linear() * tol.linear(), 1e-12 * scale * scale)) {
-                out.add(c);
-            }
-        }
-        out.sort(Comparator.comparingDouble(Contour::area).reversed());
-        return out;
+        return OffsetChains.closedLoops(kept, tol, scale);
     }
 
     /**
