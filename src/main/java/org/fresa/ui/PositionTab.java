@@ -20,8 +20,6 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
-import javax.swing.event.DocumentEvent;
-import javax.swing.event.DocumentListener;
 import java.awt.BasicStroke;
 import org.fresa.chart.RobotCharts;
 import org.fresa.job.JobSettings;
@@ -157,30 +155,13 @@ final class PositionTab implements ModuleTab {
             l.setDisplayedMnemonic(keys[i]);
             l.setLabelFor(f);
             l.setToolTipText(title + " " + names[i] + " (Alt+" + KeyEvent.getKeyText(keys[i]) + ")");
-            f.getDocument().addDocumentListener(new DocumentListener() {
-                @Override
-                public void insertUpdate(DocumentEvent e) {
-                    changed();
+            TextChanges.onChange(f, () -> {
+                if (robot) {
+                    vm.setRobotTable(index, f.getText());
+                } else {
+                    vm.setTablePiece(index, f.getText());
                 }
-
-                @Override
-                public void removeUpdate(DocumentEvent e) {
-                    changed();
-                }
-
-                @Override
-                public void changedUpdate(DocumentEvent e) {
-                    changed();
-                }
-
-                private void changed() {
-                    if (robot) {
-                        vm.setRobotTable(index, f.getText());
-                    } else {
-                        vm.setTablePiece(index, f.getText());
-                    }
-                    validateFields();
-                }
+                validateFields();
             });
             out[i] = f;
             p.add(l);

@@ -28,8 +28,6 @@ import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
-import javax.swing.event.DocumentEvent;
-import javax.swing.event.DocumentListener;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.table.AbstractTableModel;
 import javax.swing.table.DefaultTableCellRenderer;
@@ -384,28 +382,11 @@ final class RobotTab implements ModuleTab {
             f.setName("robot-param-" + i);
             JLabel l = new JLabel(names.get(i) + ":");
             l.setLabelFor(f);
-            f.getDocument().addDocumentListener(new DocumentListener() {
-                @Override
-                public void insertUpdate(DocumentEvent e) {
-                    changed();
-                }
-
-                @Override
-                public void removeUpdate(DocumentEvent e) {
-                    changed();
-                }
-
-                @Override
-                public void changedUpdate(DocumentEvent e) {
-                    changed();
-                }
-
-                private void changed() {
-                    if (!updating) {
-                        vm.setParameter(index, f.getText());
-                        table.fireTableDataChanged();
-                        edited();
-                    }
+            TextChanges.onChange(f, () -> {
+                if (!updating) {
+                    vm.setParameter(index, f.getText());
+                    table.fireTableDataChanged();
+                    edited();
                 }
             });
             paramFields[i] = f;
