@@ -104,10 +104,7 @@ final class SoleTab implements ModuleTab {
         lib.add(infoPane, BorderLayout.CENTER);
         lib.add(preview, BorderLayout.SOUTH);
 
-        JLabel placedLabel = new JLabel("Figure");
-        placedLabel.setDisplayedMnemonic(KeyEvent.VK_G);
-        placedLabel.setLabelFor(placed);
-        placed.setName("sole-designs");
+        JLabel placedLabel = labelFor(placed, "sole-designs", "Figure", KeyEvent.VK_G);
         placed.addActionListener(e -> {
             if (!updatingPlaced) {
                 vm.select(placed.getSelectedIndex() - 1 < -1 ? -1 : placed.getSelectedIndex() - 1);
@@ -133,14 +130,8 @@ final class SoleTab implements ModuleTab {
         left.add(lib, BorderLayout.CENTER);
         left.add(selection, BorderLayout.SOUTH);
 
-        JLabel sizeLabel = new JLabel("Size");
-        sizeLabel.setDisplayedMnemonic(KeyEvent.VK_Z);
-        sizeLabel.setLabelFor(sizes);
-        sizes.setName("sole-size");
-        JLabel footLabel = new JLabel("Foot");
-        footLabel.setDisplayedMnemonic(KeyEvent.VK_T);
-        footLabel.setLabelFor(feet);
-        feet.setName("sole-foot");
+        JLabel sizeLabel = labelFor(sizes, "sole-size", "Size", KeyEvent.VK_Z);
+        JLabel footLabel = labelFor(feet, "sole-foot", "Foot", KeyEvent.VK_T);
         JButton load = new JButton("Load job");
         load.setName("sole-load");
         load.setMnemonic(KeyEvent.VK_L);
@@ -155,10 +146,7 @@ final class SoleTab implements ModuleTab {
         top.add(footLabel);
         top.add(feet);
         top.add(show);
-        JLabel outLabel = new JLabel("Output folder");
-        outLabel.setDisplayedMnemonic(KeyEvent.VK_O);
-        outLabel.setLabelFor(outFolder);
-        outFolder.setName("sole-out");
+        JLabel outLabel = labelFor(outFolder, "sole-out", "Output folder", KeyEvent.VK_O);
         JButton choose = new JButton("...");
         choose.setToolTipText("Choose the output folder");
         choose.addActionListener(e -> chooseFolder());
@@ -186,6 +174,15 @@ final class SoleTab implements ModuleTab {
             }
         });
         library.setSelectedIndex(vm.macros().indexOf("SUB4"));
+    }
+
+    /** Names the field and returns its label, whose mnemonic moves the focus to the field. */
+    private static JLabel labelFor(JComponent field, String name, String text, int mnemonic) {
+        field.setName(name);
+        JLabel label = new JLabel(text);
+        label.setDisplayedMnemonic(mnemonic);
+        label.setLabelFor(field);
+        return label;
     }
 
     /** Drops from the library, press-drag-release to move, keys to nudge and delete. */
