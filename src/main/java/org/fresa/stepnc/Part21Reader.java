@@ -221,27 +221,13 @@ public final class Part21Reader {
             case STRING -> store.putString(InstanceStore.TEXT, lx.text);
             case ENUMERATION -> store.putString(InstanceStore.ENUM, lx.text);
             case BINARY -> store.putString(InstanceStore.BINARY, lx.text);
-            case INSTANCE -> {
-                long id = lx.longValue;
-                if (id == 0) {
-                    throw lx.errorHere("#0 is not an instance name");
-                }
-                if (store.indexOf(id) < 0) {
-                    pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
-                }
-                store.putSigned(InstanceStore.REF, id - self);
-            }
+            case INSTANCE -> store.putSigned(InstanceStore.REF, reference() - self);
             case LPAREN -> {
                 encodeAggregate(depth, self);
                 return;
             }
             case KEYWORD -> {
-                String type = lx.text;
-                if (depth >= MAX_DEPTH) {
-                    throw lx.errorHere("typed parameters are nested more than " + MAX_DEPTH + " deep");
-                }
-                lx.next();
-                expect(Tok.LPAREN, "'(' after the type name " + type);
+                String type = typeName(depth);
                 store.putString(InstanceStore.TYPED, type);
                 encodeParameter(depth + 1, self);
                 expect(Tok.RPAREN, "')' closing " + type + "(...)");
@@ -289,6 +275,29 @@ public final class Part21Reader {
         }
     }
 
+    /** The instance name of the current #ref token, noted as pending while it is not yet defined. */
+    private long reference() throws StepParseException {
+        long id = lx.longValue;
+        if (id == 0) {
+            throw lx.errorHere("#0 is not an instance name");
+        }
+        if (store.indexOf(id) < 0) {
+            pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
+        }
+        return id;
+    }
+
+    /** The type name of a typed parameter at this depth, read up to and including its '('. */
+    private String typeName(int depth) throws IOException, StepParseException {
+        String type = lx.text;
+        if (depth >= MAX_DEPTH) {
+            throw lx.errorHere("typed parameters are nested more than " + MAX_DEPTH + " deep");
+        }
+        lx.next();
+        expect(Tok.LPAREN, "'(' after the type name " + type);
+        return type;
+    }
+
     private StepValue parameter(int depth) throws IOException, StepParseException {
         StepValue v;
         switch (lx.tok) {
@@ -299,26 +308,12 @@ public final class Part21Reader {
             case STRING -> v = new StepValue.Text(lx.text);
             case ENUMERATION -> v = new StepValue.Enumeration(lx.text);
             case BINARY -> v = new StepValue.Binary(lx.text);
-            case INSTANCE -> {
-                long id = lx.longValue;
-                if (id == 0) {
-                    throw lx.errorHere("#0 is not an instance name");
-                }
-                if (store.indexOf(id) < 0) {
-                    pending.add(id, lx.currentInstance, lx.tokLine, lx.tokCol);
-                }
-                v = new StepValue.Ref(id);
-            }
+            case INSTANCE -> v = new StepValue.Ref(reference());
             case LPAREN -> {
                 return aggregate(depth);
             }
             case KEYWORD -> {
-                String type = lx.text;
-                if (depth >= MAX_DEPTH) {
-                    throw lx.errorHere("typed parameters are nested more than " + MAX_DEPTH + " deep");
-                }
-                lx.next();
-                expect(Tok.LPAREN, "'(' after the type name " + type);
+                String type = typeName(depth);
                 StepValue inner = parameter(depth + 1);
                 expect(Tok.RPAREN, "')' closing " + type + "(...)");
                 return new StepValue.Typed(type, inner);
