@@ -248,17 +248,7 @@ final class RapidRouter {
     }
 
     private static Box2 box(Vec2[] poly) {
-        double x0 = Double.POSITIVE_INFINITY;
-        double y0 = Double.POSITIVE_INFINITY;
-        double x1 = Double.NEGATIVE_INFINITY;
-        double y1 = Double.NEGATIVE_INFINITY;
-        for (Vec2 p : poly) {
-            x0 = Math.min(x0, p.x());
-            y0 = Math.min(y0, p.y());
-            x1 = Math.max(x1, p.x());
-            y1 = Math.max(y1, p.y());
-        }
-        return new Box2(x0, y0, x1, y1);
+        return Box2.around(Arrays.asList(poly));
     }
 
     /** Andrew's monotone chain: the convex hull, counter-clockwise, without collinear points. */

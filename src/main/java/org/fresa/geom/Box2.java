@@ -24,6 +24,21 @@ public record Box2(double minX, double minY, double maxX, double maxY) {
         return new Box2(Math.min(a.x(), b.x()), Math.min(a.y(), b.y()), Math.max(a.x(), b.x()), Math.max(a.y(), b.y()));
     }
 
+    /** The smallest box that holds every point; there must be at least one. */
+    public static Box2 around(Iterable<Vec2> points) {
+        double x0 = Double.POSITIVE_INFINITY;
+        double y0 = Double.POSITIVE_INFINITY;
+        double x1 = Double.NEGATIVE_INFINITY;
+        double y1 = Double.NEGATIVE_INFINITY;
+        for (Vec2 p : points) {
+            x0 = Math.min(x0, p.x());
+            y0 = Math.min(y0, p.y());
+            x1 = Math.max(x1, p.x());
+            y1 = Math.max(y1, p.y());
+        }
+        return new Box2(x0, y0, x1, y1);
+    }
+
     public Box2 including(Vec2 p) {
         return new Box2(Math.min(minX, p.x()), Math.min(minY, p.y()), Math.max(maxX, p.x()), Math.max(maxY, p.y()));
     }

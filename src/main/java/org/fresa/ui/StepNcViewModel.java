@@ -9,6 +9,7 @@ import java.util.OptionalDouble;
 import java.util.TreeSet;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Transform3;
@@ -816,16 +817,11 @@ final class StepNcViewModel {
     }
 
     private static List<Curve2> box(List<Vec2> pts) {
-        double x0 = Double.POSITIVE_INFINITY;
-        double y0 = Double.POSITIVE_INFINITY;
-        double x1 = Double.NEGATIVE_INFINITY;
-        double y1 = Double.NEGATIVE_INFINITY;
-        for (Vec2 p : pts) {
-            x0 = Math.min(x0, p.x());
-            y0 = Math.min(y0, p.y());
-            x1 = Math.max(x1, p.x());
-            y1 = Math.max(y1, p.y());
-        }
+        Box2 b = Box2.around(pts);
+        double x0 = b.minX();
+        double y0 = b.minY();
+        double x1 = b.maxX();
+        double y1 = b.maxY();
         return List.of(Segment2.of(x0, y0, x1, y0), Segment2.of(x1, y0, x1, y1), Segment2.of(x1, y1, x0, y1),
                 Segment2.of(x0, y1, x0, y0));
     }
