@@ -20,9 +20,16 @@ package org.fresa.toolpath;
  * @param peck depth_of_step of each further step; 0 or less for one descent
  * @param retractDistance lift after each step; 0 or less to go back to the retract height
  * @param retractFeedFactor feed_on_retract; 0 or less to leave at rapid
+ * @param dwellBottomS dwell_time_bottom: wait at the bottom before leaving, >= 0 (0: none)
+ * @param dwellStepS multistep_drilling.dwell_time_step: wait at the bottom of each step but the
+ *     last (which waits dwellBottomS), >= 0 (0: none)
+ * @param spindleStopAtBottom boring_operation.spindle_stop_at_bottom: stop the spindle at the
+ *     bottom (after the dwell), leave with it stopped and start it again, at the section's
+ *     speed, at the retract height
  */
 public record DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
-        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
+        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor,
+        double dwellBottomS, double dwellStepS, boolean spindleStopAtBottom) {
 
     /** One descent at the full feed, out at rapid. */
     public static final DrillCycle PLAIN = new DrillCycle(0, 0, 1, 0, 1, 0, 0, 0, 0);
@@ -34,6 +41,16 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
             throw new IllegalArgumentException("bad drill cycle: tip " + tipLength + ", start " + startDepth + " x"
                     + startFeedFactor + ", end " + endDepth + " x" + endFeedFactor);
         }
+        if (!(dwellBottomS >= 0 && dwellStepS >= 0) || !Double.isFinite(dwellBottomS + dwellStepS)) {
+            throw new IllegalArgumentException("dwells must be >= 0 s: bottom " + dwellBottomS + ", step " + dwellStepS);
+        }
+    }
+
+    /** A cycle without dwells and with the spindle running throughout. */
+    public DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
+            double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
+        this(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck, retractDistance,
+                retractFeedFactor, 0, 0, false);
     }
 
     /** Pecks of {@code peck} from the top, back to the retract height after each. */
@@ -44,7 +61,19 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
     /** The same cycle leaving at the given fraction of the feed. */
     public DrillCycle withRetractFeed(double factor) {
         return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, factor);
+                retractDistance, factor, dwellBottomS, dwellStepS, spindleStopAtBottom);
+    }
+
+    /** The same cycle with these dwells (s) at the bottom and at each step. */
+    public DrillCycle withDwells(double bottomS, double stepS) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, retractFeedFactor, bottomS, stepS, spindleStopAtBottom);
+    }
+
+    /** The same cycle stopping the spindle at the bottom, or not. */
+    public DrillCycle withSpindleStopAtBottom(boolean stop) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, retractFeedFactor, dwellBottomS, dwellStepS, stop);
     }
 
     boolean pecks() {

@@ -15,7 +15,10 @@ import org.fresa.model.ToolpathSection;
  * reduced feeds of the drilling strategy over the start and end depths ({@link DrillCycle}), out
  * at rapid (drills) or at feed (reamers, boring bars, which must not mark the wall); multistep
  * drilling: after each step the drill lifts by the retract distance (or to the retract height to
- * clear chips) and returns at rapid to 1 mm above the last depth.
+ * clear chips) and returns at rapid to 1 mm above the last depth. Dwells at the bottom of each
+ * step and of the hole, and a spindle stopped at the bottom for the way out, are moves of
+ * their own ({@link org.fresa.model.Move.Dwell}, {@link org.fresa.model.Move.SpindleStop},
+ * {@link org.fresa.model.Move.SpindleStart}).
  * <li>{@link #mill}: a hole wider than the milling cutter: helical interpolation at radius
  * (hole - tool) / 2 down to the bottom with at most the axial depth per turn, a full circle at
  * the bottom, then to the centre and out. That clears the hole when it is at most twice the tool
@@ -46,6 +49,12 @@ public final class HoleMaking {
      * tool lifts by the retract distance (or to the retract height) and comes back at rapid to
      * 1 mm above the last depth (or the lifted height if nearer). The tool leaves at the retract
      * feed, or at rapid when the cycle has none.
+     *
+     * <p>The tool waits {@code dwellStepS} at the bottom of each step and {@code dwellBottomS} at
+     * the bottom of the hole: the last step is the bottom, so it waits the bottom's time only.
+     * With {@code spindleStopAtBottom} (and a spindle speed to start again at) the spindle stops
+     * after the bottom dwell, the tool leaves to the retract height with it stopped, and it starts
+     * again there, clockwise at the section's speed, before the rapid to the clearance height.
      */
     public static ToolpathSection drill(String label, Vec2 center, Heights h, Tooling tool, DrillCycle c) {
         MoveBuilder b = new MoveBuilder(Vec3.of(center, h.clearanceZ()));
@@ -60,6 +69,7 @@ public final class HoleMaking {
             double depth = h.topZ() - c.firstPeck();
             while (depth > h.bottomZ() + 1e-9) {
                 descend(b, center, depth, f, c, startEnd, endStart);
+                dwell(b, c.dwellStepS());
                 double up = c.retractDistance() > 0 ? Math.min(h.retractZ(), depth + c.retractDistance()) : h.retractZ();
                 leave(b, center, up, f, c);
                 b.rapid(Vec3.of(center, Math.min(up, depth + 1)));
@@ -67,7 +77,16 @@ public final class HoleMaking {
             }
         }
         descend(b, center, h.bottomZ(), f, c, startEnd, endStart);
+        dwell(b, c.dwellBottomS());
+        // without a speed the section never started the spindle, so there is no speed to restart at
+        boolean stop = c.spindleStopAtBottom() && tool.spindleRpm() > 0;
+        if (stop) {
+            b.spindleStop();
+        }
         leave(b, center, h.retractZ(), f, c);
+        if (stop) {
+            b.spindleStart(tool.spindleRpm(), true);
+        }
         b.rapid(Vec3.of(center, h.clearanceZ()));
         return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
                 Vec3.of(center, h.clearanceZ()), b.moves());
@@ -100,6 +119,12 @@ public final class HoleMaking {
             return c.endFeedFactor();
         }
         return z > startEnd ? c.startFeedFactor() : 1;
+    }
+
+    private static void dwell(MoveBuilder b, double seconds) {
+        if (seconds > 0) {
+            b.dwell(seconds);
+        }
     }
 
     private static void leave(MoveBuilder b, Vec2 center, double z, double f, DrillCycle c) {

@@ -212,8 +212,7 @@ public final class ToolpathPlanner {
                 local = hole(label, f, op, h, tooling, tol);
                 List<String> unmoved = notInTheMoves(op);
                 if (!unmoved.isEmpty()) {
-                    problems.add("workingstep '" + label + "': read but not in the moves (a section has one spindle"
-                            + " speed, no dwell and no spindle stop): " + String.join(", ", unmoved));
+                    problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
                 }
             }
             default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
@@ -359,7 +358,8 @@ public final class ToolpathPlanner {
      * The moves along the axis of a drilling-type operation: the drilling strategy's reduced feeds,
      * multistep drilling's steps (first_depth, depth_of_step, else one tool diameter; retract
      * distance) and the retract feed (feed_on_retract, else the feed for reaming and boring, which
-     * must not mark the wall, else rapid).
+     * must not mark the wall, else rapid); dwell_time_bottom, dwell_time_step (multistep drilling)
+     * and spindle_stop_at_bottom (reaming, boring), in seconds as ISO 14649 gives them.
      */
     static DrillCycle drillCycle(Operation op, Tooling t, double tipLength) {
         DrillingStrategy s = op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
@@ -371,13 +371,15 @@ public final class ToolpathPlanner {
         double retractFeed = positive(p.feedOnRetract(), feedOut ? 1 : 0);
         return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
                 positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
-                positive(p.retractDistanceMm(), 0), retractFeed);
+                positive(p.retractDistanceMm(), 0), retractFeed, positive(p.dwellTimeBottomS(), 0),
+                multistep ? positive(p.dwellTimeStepS(), 0) : 0, p.spindleStopAtBottom().orElse(false));
     }
 
     /**
-     * The drilling attributes of an operation that the moves cannot carry: spindle speed reductions
-     * (reduced_cut_at_start/end below 1), dwells (dwell_time_bottom, dwell_time_step) and
-     * spindle_stop_at_bottom; empty for other operations.
+     * The drilling attributes of an operation that the moves do not carry: spindle speed
+     * reductions (reduced_cut_at_start/end below 1), a dwell_time_step outside multistep drilling
+     * (where there are no steps) and a spindle_stop_at_bottom without a spindle speed to start
+     * again at; empty for other operations. Dwells and the spindle stop are moves otherwise.
      */
     static List<String> notInTheMoves(Operation op) {
         List<String> out = new ArrayList<>();
@@ -390,14 +392,12 @@ public final class ToolpathPlanner {
             }
         });
         op.drilling().ifPresent(p -> {
-            if (p.dwellTimeBottomS().isPresent() && p.dwellTimeBottomS().getAsDouble() > 0) {
-                out.add("dwell_time_bottom " + p.dwellTimeBottomS().getAsDouble() + " s");
+            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0
+                    && op.type() != Operation.OperationType.MULTISTEP_DRILLING) {
+                out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s (no steps)");
             }
-            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0) {
-                out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s");
-            }
-            if (p.spindleStopAtBottom().orElse(false)) {
-                out.add("spindle_stop_at_bottom");
+            if (p.spindleStopAtBottom().orElse(false) && !(op.technology().spindleRpm().orElse(0) > 0)) {
+                out.add("spindle_stop_at_bottom (no spindle speed to start again at)");
             }
         });
         return out;

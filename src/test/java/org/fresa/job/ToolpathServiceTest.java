@@ -186,11 +186,17 @@ class ToolpathServiceTest {
         assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
                 .map(m -> m.end().z()).toList());
         List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
-        assertTrue(problems.contains("workingstep 'WS DRILL HOLE1': read but not in the moves (a section has one"
-                + " spindle speed, no dwell and no spindle stop): reduced_cut_at_start 0.75, reduced_cut_at_end 0.5"),
-                problems.toString());
-        assertTrue(problems.stream().anyMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")
-                && q.endsWith(": spindle_stop_at_bottom")), problems.toString());
+        assertTrue(problems.contains("workingstep 'WS DRILL HOLE1': read but not in the moves:"
+                + " reduced_cut_at_start 0.75, reduced_cut_at_end 0.5"), problems.toString());
+        // the reamer's spindle_stop_at_bottom: M5 at -30, out at feed, M3 again at the retract height
+        assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")), problems.toString());
+        List<Move> rm = ream.moves();
+        int stop = rm.indexOf(rm.stream().filter(m -> m instanceof Move.SpindleStop).findFirst().orElseThrow());
+        assertEquals(-30, rm.get(stop).end().z(), 1e-9);
+        assertTrue(rm.get(stop + 1) instanceof Move.Linear && rm.get(stop + 2) instanceof Move.SpindleStart,
+                rm.toString());
+        assertEquals(10, rm.get(stop + 2).end().z(), 1e-9);
+        assertEquals(ream.spindleRpm(), ((Move.SpindleStart) rm.get(stop + 2)).rpm());
     }
 
     /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */

@@ -27,13 +27,27 @@ class DrillCycleTest {
     static final Tooling D10 = new Tooling(1, 10, 1000, 600, 600);
     static final Heights H = new Heights(20, 5, 0, -25);
 
-    /** Each move along the axis as "R z" (rapid) or "F z @feed". */
+    /**
+     * Each move along the axis as "R z" (rapid), "F z @feed", "D s" (dwell), "M5" or "M3 rpm"
+     * (spindle events, where the tool is).
+     */
     static List<String> moves(ToolpathSection s) {
         List<String> out = new ArrayList<>();
         for (Move m : s.moves()) {
             double z = Math.round(m.end().z() * 1e6) / 1e6;
-            out.add(m instanceof Move.Linear l ? "F " + z + " @" + Math.round(l.feedMmPerMin() * 1e6) / 1e6
-                    : "R " + z);
+            if (m instanceof Move.Linear l) {
+                out.add("F " + z + " @" + Math.round(l.feedMmPerMin() * 1e6) / 1e6);
+            } else if (m instanceof Move.Rapid) {
+                out.add("R " + z);
+            } else if (m instanceof Move.Dwell d) {
+                out.add("D " + d.seconds());
+            } else if (m instanceof Move.SpindleStop) {
+                out.add("M5");
+            } else if (m instanceof Move.SpindleStart on) {
+                out.add((on.clockwise() ? "M3 " : "M4 ") + on.rpm());
+            } else {
+                throw new AssertionError(m);
+            }
         }
         return out;
     }
@@ -124,29 +138,36 @@ class DrillCycleTest {
                 moves(HoleMaking.drill("r", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(ream, D10, 0))));
     }
 
+    /** Also: dwell_time_bottom and spindle_stop_at_bottom (the spindle starts again out of the hole). */
     @Test
     void boringLeavesAtFeedOnRetractWhenTheFileGivesIt() {
         DrillingParameters p = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.of(0.5),
                 OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
                 Optional.of(true));
         Operation bore = op(OperationType.BORING, drill(31, "deg"), reductions(0.5, 3, 1, 0), p);
-        assertEquals(List.of("R 5.0", "F -3.0 @300.0", "F -25.0 @600.0", "F 5.0 @300.0", "R 20.0"),
-                moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(bore, D10, 0))));
+        assertEquals(List.of("R 5.0", "F -3.0 @300.0", "F -25.0 @600.0", "D 1.5", "M5", "F 5.0 @300.0", "M3 1000.0",
+                "R 20.0"), moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(bore, D10, 0))));
         Operation plain = op(OperationType.BORING, drill(31, "deg"), DrillingStrategy.NONE, DrillingParameters.NONE);
         assertEquals(List.of("R 5.0", "F -25.0 @600.0", "F 5.0 @600.0", "R 20.0"),
                 moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(plain, D10, 0))));
     }
 
     @Test
-    void spindleReductionsDwellsAndTheSpindleStopAreNamedAsNotInTheMoves() {
+    void spindleReductionsAndWhatTheMovesCannotHonourAreNamedAsNotInTheMoves() {
         DrillingParameters p = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.empty(),
                 OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.of(0.5),
                 Optional.of(true));
         DrillingStrategy s = new DrillingStrategy(OptionalDouble.of(0.75), OptionalDouble.of(0.5),
                 OptionalDouble.of(2), OptionalDouble.of(0.5), OptionalDouble.of(0.75), OptionalDouble.of(8));
-        assertEquals(List.of("reduced_cut_at_start 0.75", "reduced_cut_at_end 0.5", "dwell_time_bottom 1.5 s",
-                "dwell_time_step 0.5 s", "spindle_stop_at_bottom"),
+        // boring has no steps to dwell at, and without a spindle speed the stop could not be undone
+        assertEquals(List.of("reduced_cut_at_start 0.75", "reduced_cut_at_end 0.5", "dwell_time_step 0.5 s (no steps)",
+                "spindle_stop_at_bottom (no spindle speed to start again at)"),
                 ToolpathPlanner.notInTheMoves(op(OperationType.BORING, drill(31, "deg"), s, p)));
+        DrillingParameters dwells = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.empty(),
+                OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.of(0.5),
+                Optional.empty());
+        assertEquals(List.of(), ToolpathPlanner.notInTheMoves(op(OperationType.MULTISTEP_DRILLING, drill(31, "deg"),
+                DrillingStrategy.NONE, dwells)));
         assertEquals(List.of(), ToolpathPlanner.notInTheMoves(op(OperationType.DRILLING, drill(31, "deg"),
                 reductions(0.5, 2, 0.75, 8), DrillingParameters.NONE)));
     }
