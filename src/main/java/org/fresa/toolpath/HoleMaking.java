@@ -1,9 +1,11 @@
 package org.fresa.toolpath;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
 
 /**
@@ -60,15 +62,21 @@ public final class HoleMaking {
         MoveBuilder b = new MoveBuilder(Vec3.of(center, h.clearanceZ()));
         b.rapid(Vec3.of(center, h.retractZ()));
         double f = tool.plungeFeedMmPerMin();
+        // without a speed the section never started the spindle, so there is nothing to reduce
+        double rpm = tool.spindleRpm();
+        double startSpeed = rpm > 0 ? c.startSpeedFactor() : 1;
+        double endSpeed = rpm > 0 ? c.endSpeedFactor() : 1;
+        DrillCycle zc = c.withSpeedFactors(startSpeed, endSpeed);
         // ISO 14649-11 drilling_type_strategy: the start zone ends when the full diameter is depth_of_start
         // deep; a zone without a reduction is no zone (NaN: no split, no reduction)
-        double startEnd = c.startFeedFactor() == 1 ? Double.NaN
+        double startEnd = c.startFeedFactor() == 1 && startSpeed == 1 ? Double.NaN
                 : Math.max(h.bottomZ(), h.topZ() - c.startDepth() - c.tipLength());
-        double endStart = c.endFeedFactor() == 1 ? Double.NaN : Math.min(h.retractZ(), h.bottomZ() + c.endDepth());
+        double endStart = c.endFeedFactor() == 1 && endSpeed == 1 ? Double.NaN
+                : Math.min(h.retractZ(), h.bottomZ() + c.endDepth());
         if (c.pecks() && h.topZ() - h.bottomZ() > c.firstPeck()) {
             double depth = h.topZ() - c.firstPeck();
             while (depth > h.bottomZ() + 1e-9) {
-                descend(b, center, depth, f, c, startEnd, endStart);
+                descend(b, center, depth, f, rpm, zc, startEnd, endStart);
                 dwell(b, c.dwellStepS());
                 double up = c.retractDistance() > 0 ? Math.min(h.retractZ(), depth + c.retractDistance()) : h.retractZ();
                 leave(b, center, up, f, c);
@@ -76,7 +84,7 @@ public final class HoleMaking {
                 depth -= c.peck();
             }
         }
-        descend(b, center, h.bottomZ(), f, c, startEnd, endStart);
+        descend(b, center, h.bottomZ(), f, rpm, zc, startEnd, endStart);
         dwell(b, c.dwellBottomS());
         // without a speed the section never started the spindle, so there is no speed to restart at
         boolean stop = c.spindleStopAtBottom() && tool.spindleRpm() > 0;
@@ -92,33 +100,70 @@ public final class HoleMaking {
                 Vec3.of(center, h.clearanceZ()), b.moves());
     }
 
-    /** Feeds down to z, split where the feed of the cycle changes. */
-    private static void descend(MoveBuilder b, Vec2 center, double z, double f, DrillCycle c, double startEnd,
-            double endStart) {
+    /**
+     * Feeds down to z, split where the feed or the spindle speed of the cycle changes; a speed
+     * change is a spindle start at the new speed where the zone begins.
+     */
+    private static void descend(MoveBuilder b, Vec2 center, double z, double f, double rpm, DrillCycle c,
+            double startEnd, double endStart) {
         double from = b.at().z();
         double[] ends = {Double.isNaN(endStart) || startEnd > endStart ? startEnd : endStart,
             Double.isNaN(endStart) || startEnd > endStart ? endStart : startEnd, z};
-        double lastFactor = Double.NaN;
+        // pieces of constant (feed, speed) factors, top down, neighbours with equal factors merged
+        List<double[]> pieces = new ArrayList<>();
         double lastEnd = from;
         for (double end : ends) {
             if (!(end < lastEnd && end >= z)) {
                 continue;
             }
-            double k = factor(c, (lastEnd + end) / 2, startEnd, endStart);
-            if (!Double.isNaN(lastFactor) && k != lastFactor) {
-                b.feed(Vec3.of(center, lastEnd), f * lastFactor);
+            double mid = (lastEnd + end) / 2;
+            double kf = feedFactor(c, mid, startEnd, endStart);
+            double ks = speedFactor(c, mid, startEnd, endStart);
+            double[] last = pieces.isEmpty() ? null : pieces.get(pieces.size() - 1);
+            if (last != null && last[1] == kf && last[2] == ks) {
+                last[0] = end;
+            } else {
+                pieces.add(new double[] {end, kf, ks});
             }
-            lastFactor = k;
             lastEnd = end;
         }
-        b.feed(Vec3.of(center, z), f * (Double.isNaN(lastFactor) ? 1 : lastFactor));
+        if (pieces.isEmpty()) {
+            pieces.add(new double[] {z, 1, 1});
+        }
+        for (double[] p : pieces) {
+            if (rpm > 0 && p[0] < b.at().z()) {
+                double speed = rpm * p[2];
+                if (speed != spindleSpeed(b, rpm)) {
+                    b.spindleStart(speed, true);
+                }
+            }
+            b.feed(Vec3.of(center, p[0]), f * p[1]);
+        }
     }
 
-    private static double factor(DrillCycle c, double z, double startEnd, double endStart) {
+    /** The speed the moves so far leave the spindle at: the last spindle start's, else the section's. */
+    private static double spindleSpeed(MoveBuilder b, double sectionRpm) {
+        List<Move> ms = b.moves();
+        for (int i = ms.size() - 1; i >= 0; i--) {
+            if (ms.get(i) instanceof Move.SpindleStart on) {
+                return on.rpm();
+            }
+        }
+        return sectionRpm;
+    }
+
+    private static double feedFactor(DrillCycle c, double z, double startEnd, double endStart) {
         if (z < endStart) {
             return c.endFeedFactor();
         }
         return z > startEnd ? c.startFeedFactor() : 1;
+    }
+
+    private static double speedFactor(DrillCycle c, double z, double startEnd, double endStart) {
+        if (z < endStart) {
+            return c.endSpeedFactor();
+        }
+        return z > startEnd ? c.startSpeedFactor() : 1;
     }
 
     private static void dwell(MoveBuilder b, double seconds) {

@@ -359,7 +359,8 @@ public final class ToolpathPlanner {
      * multistep drilling's steps (first_depth, depth_of_step, else one tool diameter; retract
      * distance) and the retract feed (feed_on_retract, else the feed for reaming and boring, which
      * must not mark the wall, else rapid); dwell_time_bottom, dwell_time_step (multistep drilling)
-     * and spindle_stop_at_bottom (reaming, boring), in seconds as ISO 14649 gives them.
+     * in seconds as ISO 14649 gives them, spindle_stop_at_bottom (reaming, boring) and the
+     * strategy's spindle speed reductions.
      */
     static DrillCycle drillCycle(Operation op, Tooling t, double tipLength) {
         DrillingStrategy s = op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
@@ -372,23 +373,26 @@ public final class ToolpathPlanner {
         return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
                 positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
                 positive(p.retractDistanceMm(), 0), retractFeed, positive(p.dwellTimeBottomS(), 0),
-                multistep ? positive(p.dwellTimeStepS(), 0) : 0, p.spindleStopAtBottom().orElse(false));
+                multistep ? positive(p.dwellTimeStepS(), 0) : 0, p.spindleStopAtBottom().orElse(false),
+                positive(s.reducedCutAtStart(), 1), positive(s.reducedCutAtEnd(), 1));
     }
 
     /**
      * The drilling attributes of an operation that the moves do not carry: spindle speed
-     * reductions (reduced_cut_at_start/end below 1), a dwell_time_step outside multistep drilling
-     * (where there are no steps) and a spindle_stop_at_bottom without a spindle speed to start
-     * again at; empty for other operations. Dwells and the spindle stop are moves otherwise.
+     * reductions (reduced_cut_at_start/end below 1) and a spindle_stop_at_bottom when the
+     * operation has no spindle speed (to reduce, or to start again at), and a dwell_time_step
+     * outside multistep drilling (where there are no steps); empty for other operations. Dwells,
+     * the spindle stop and speed changes are moves otherwise.
      */
     static List<String> notInTheMoves(Operation op) {
         List<String> out = new ArrayList<>();
+        boolean noSpeed = !(op.technology().spindleRpm().orElse(0) > 0);
         op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).ifPresent(d -> {
-            if (d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
-                out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble());
+            if (noSpeed && d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
+                out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble() + " (no spindle speed)");
             }
-            if (d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
-                out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble());
+            if (noSpeed && d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
+                out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble() + " (no spindle speed)");
             }
         });
         op.drilling().ifPresent(p -> {
@@ -396,7 +400,7 @@ public final class ToolpathPlanner {
                     && op.type() != Operation.OperationType.MULTISTEP_DRILLING) {
                 out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s (no steps)");
             }
-            if (p.spindleStopAtBottom().orElse(false) && !(op.technology().spindleRpm().orElse(0) > 0)) {
+            if (p.spindleStopAtBottom().orElse(false) && noSpeed) {
                 out.add("spindle_stop_at_bottom (no spindle speed to start again at)");
             }
         });

@@ -150,8 +150,10 @@ class ToolpathServiceTest {
      * measures depth_of_end from the top like depth_of_start and reduces 22 mm of travel; ISO's
      * depth_of_end is the last part of the drilling, so we reduce the last 8 mm (from -28.0086).
      * <li>Out: NIST retracts at 1800 mm/min; feed_on_retract is unset, so our drill leaves at rapid.
-     * <li>Spindle: NIST also sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5); a
-     * section here has one spindle speed, so the cut reductions are read but not output.
+     * <li>Spindle: NIST sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5) where the
+     * zones begin, and so do we (spindle starts at the new speed, at our zone boundaries).
+     * <li>Ream: NIST stops the spindle at the bottom (spindle_stop_at_bottom) and leaves at feed;
+     * so do we, and start the spindle again at the retract height.
      * </ul>
      */
     @Test
@@ -186,8 +188,20 @@ class ToolpathServiceTest {
         assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
                 .map(m -> m.end().z()).toList());
         List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
-        assertTrue(problems.contains("workingstep 'WS DRILL HOLE1': read but not in the moves:"
-                + " reduced_cut_at_start 0.75, reduced_cut_at_end 0.5"), problems.toString());
+        assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS DRILL HOLE1'")), problems.toString());
+        // reduced_cut_at_start/end 0.75, 0.5 of 960 rpm: NIST's 720, 960 (after the start zone), 480 (end zone)
+        List<double[]> speeds = new ArrayList<>();
+        for (Move m : drill.moves()) {
+            if (m instanceof Move.SpindleStart on) {
+                speeds.add(new double[] {on.end().z(), on.rpm()});
+            }
+        }
+        assertEquals(960, drill.spindleRpm(), 1e-9);
+        assertEquals(3, speeds.size());
+        assertAll(() -> assertEquals(10, speeds.get(0)[0], 1e-9), () -> assertEquals(720, speeds.get(0)[1], 1e-9),
+                () -> assertEquals(-(2 + tip), speeds.get(1)[0], 1e-9), () -> assertEquals(960, speeds.get(1)[1], 1e-9),
+                () -> assertEquals(-(30 + tip) + 8, speeds.get(2)[0], 1e-9),
+                () -> assertEquals(480, speeds.get(2)[1], 1e-9));
         // the reamer's spindle_stop_at_bottom: M5 at -30, out at feed, M3 again at the retract height
         assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")), problems.toString());
         List<Move> rm = ream.moves();
