@@ -53,7 +53,50 @@ class ToolpathServiceTest {
         // the interpreter's motions are the planned moves (each section's start, then its moves)
         List<Rs274.Canon> expected = ExpectedMotions.of(plan(Path.of(input)), false, NcPosts.CHORD_TOLERANCE_MM);
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
-        // and toolpath.csv holds the same motions: straight rows one to one, each arc as points on it
+        assertCsvHoldsTheMotions(dir, r);
+    }
+
+    /**
+     * Example 1 with a multistep drilling (dwell_time_step 0.5 s, dwell_time_bottom 1.5 s) and a
+     * ream that dwells 0.75 s before its spindle stop: LinuxCNC dwells where the toolpath does,
+     * toolpath.csv has a dwell row for each DWELL, and the cycle time counts them.
+     */
+    @Test
+    void aProgramWithDwellsIsAcceptedByLinuxCncAndItsDwellsAreTheCsvsDwells(@TempDir Path dir) throws Exception {
+        String text = Files.readString(EXAMPLE1)
+                .replace("#20= DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,$,$,#46);",
+                        "#20= MULTISTEP_DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,1.5,$,#46,2.0,12.0,6.0,0.5);")
+                .replace("#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,$,$,#49,.T.,$,$);",
+                        "#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,0.75,$,#49,.T.,$,$);");
+        Path input = dir.resolve("dwells.stp");
+        Files.writeString(input, text);
+        Path out = dir.resolve("out");
+        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        Toolpath path = plan(input);
+        List<Double> dwells = new ArrayList<>();
+        for (ToolpathSection s : path.sections()) {
+            s.moves().stream().filter(m -> m instanceof Move.Dwell).forEach(m -> dwells.add(((Move.Dwell) m).seconds()));
+        }
+        // steps to 12, 18, 24, 30, 36 mm deep, then the through bottom at 30 + the point (36.0086); then the ream
+        assertEquals(List.of(0.5, 0.5, 0.5, 0.5, 0.5, 1.5, 0.75), dwells);
+        assertEquals(4.75, (double) o.summary().get("dwell_time_s"), 1e-12);
+        CycleTime total = CycleTime.ZERO;
+        for (ToolpathSection s : path.sections()) {
+            total = total.plus(CycleTime.of(s, ToolpathService.RAPID_MM_PER_MIN));
+        }
+        assertEquals(total.feedSeconds() + total.rapidSeconds() + 4.75, (double) o.summary().get("cycle_time_s"), 1e-9);
+        assumeTrue(Rs274.available(), "rs274 not present");
+        Rs274.Result r = Rs274.run(out.resolve("program.ngc"), 18);
+        assertEquals(0, r.exitStatus(), r.stderr());
+        List<Rs274.Canon> expected = ExpectedMotions.of(path, false, NcPosts.CHORD_TOLERANCE_MM);
+        assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
+        assertEquals(7, r.motions().stream().filter(c -> c.kind().equals("dwell")).count());
+        assertCsvHoldsTheMotions(out, r);
+    }
+
+    /** toolpath.csv holds the interpreter's motions: straight rows and dwells one to one, each arc as points on it. */
+    static void assertCsvHoldsTheMotions(Path dir, Rs274.Result r) throws Exception {
         List<ToolpathCsv.Row> rows = ToolpathCsv.read(new StringReader(Files.readString(dir.resolve("toolpath.csv"))), "csv");
         int i = 0;
         for (Rs274.Canon c : r.motions()) {
@@ -61,6 +104,10 @@ class ToolpathServiceTest {
                 ToolpathCsv.Row row = rows.get(i++);
                 assertEquals(c.kind(), row.move(), "row " + row.index());
                 assertTrue(row.point().distance(c.end()) <= 0.0011, "row " + row.index() + " vs " + c);
+                if (c.kind().equals("dwell")) {
+                    // a dwell row's feed column is its time in seconds
+                    assertEquals(c.seconds(), row.feedMmPerMin(), 5e-4, "row " + row.index());
+                }
                 continue;
             }
             Vec3 n = c.normal();
