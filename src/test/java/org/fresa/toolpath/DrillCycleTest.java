@@ -247,6 +247,28 @@ class DrillCycleTest {
         org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.withSpeedFactors(1, 0));
     }
 
+    /** A hole on a side face: the dwell and spindle events go with the tool into the workpiece frame. */
+    @Test
+    void placingMovesDwellsAndSpindleEventsWithTheTool() {
+        DrillCycle c = DrillCycle.PLAIN.withRetractFeed(1).withDwells(1.5, 0).withSpindleStopAtBottom(true);
+        ToolpathSection local = HoleMaking.drill("b", Vec2.ZERO, H, D10, c);
+        org.fresa.geom.Transform3 side = org.fresa.geom.Transform3.translation(100, 0, 50)
+                .times(org.fresa.geom.Transform3.rotX(-90));
+        ToolpathSection placed = Placing.place(local, side);
+        assertEquals(moves(local).size(), placed.moves().size());
+        for (int i = 0; i < local.moves().size(); i++) {
+            Move a = local.moves().get(i);
+            Move b = placed.moves().get(i);
+            assertEquals(a.getClass(), b.getClass());
+            assertEquals(0, side.applyToPoint(a.end()).distance(b.end()), 1e-9);
+        }
+        Move.Dwell d = (Move.Dwell) placed.moves().stream().filter(m -> m instanceof Move.Dwell).findFirst().orElseThrow();
+        assertEquals(1.5, d.seconds());
+        Move.SpindleStart on = (Move.SpindleStart) placed.moves().stream().filter(m -> m instanceof Move.SpindleStart)
+                .findFirst().orElseThrow();
+        assertAll(() -> assertEquals(1000, on.rpm()), () -> assertEquals(true, on.clockwise()));
+    }
+
     @Test
     void anIncludedPointAngleAndAMissingAngleReadAsTheirPointLengths() {
         Operation inc = op(OperationType.DRILLING, drill(118, "deg"), DrillingStrategy.NONE, DrillingParameters.NONE);
