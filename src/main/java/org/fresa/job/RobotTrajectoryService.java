@@ -184,9 +184,11 @@ public final class RobotTrajectoryService {
                     for (Vec3 p : sampleArc(at, c, chordToleranceMm)) {
                         out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(p), axis, x));
                     }
-                } else {
+                } else if (m.travels()) {
                     out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(m.end()), axis, x));
                 }
+                // a dwell or spindle event holds the pose: no point, as a repeated one would be a
+                // zero-length linear motion in the robot program
                 at = m.end();
             }
         }

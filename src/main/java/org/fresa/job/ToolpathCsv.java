@@ -29,6 +29,10 @@ import org.fresa.post.ArcGeometry;
  * (+Z, +Y or +X) nearest to the arc's normal.
  * <li>(i,j,k) is the section's tool axis, from tip towards spindle; feed in mm/min, 0 on rapid
  * rows (the machine's traverse rate).
+ * <li>A dwell (G04) is a {@code dwell} row at the point where the tool waits, its feed column
+ * holding the dwell time in seconds: the columns stay those of the spec and a reader that does
+ * not know the kind still sees a zero-length step. Spindle stops and starts have no row: the
+ * file has no spindle column and they neither move the tool nor take time in this model.
  * <li>Every number is the shortest decimal that reads back as the same double
  * ({@link ExactDecimal}).
  * </ul>
@@ -43,8 +47,8 @@ public final class ToolpathCsv {
     /**
      * One row.
      *
-     * @param move {@code rapid}, {@code feed}, {@code arc-cw} or {@code arc-ccw}
-     * @param feedMmPerMin 0 for rapids
+     * @param move {@code rapid}, {@code feed}, {@code arc-cw}, {@code arc-ccw} or {@code dwell}
+     * @param feedMmPerMin 0 for rapids; for a dwell, its time in seconds
      */
     public record Row(int index, String workingstep, String move, Vec3 point, Vec3 toolAxis, double feedMmPerMin) {
     }
@@ -67,6 +71,10 @@ public final class ToolpathCsv {
                     for (Vec3 p : ArcGeometry.of(at, c).points(chordToleranceMm)) {
                         rows.add(new Row(rows.size(), ws, kind, p, axis, c.feedMmPerMin()));
                     }
+                } else if (m instanceof Move.Dwell d) {
+                    rows.add(new Row(rows.size(), ws, "dwell", d.end(), axis, d.seconds()));
+                } else if (!(m instanceof Move.SpindleStop) && !(m instanceof Move.SpindleStart)) {
+                    throw new IllegalStateException("no toolpath.csv row for " + m);
                 }
                 at = m.end();
             }

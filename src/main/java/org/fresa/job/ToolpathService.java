@@ -106,12 +106,18 @@ public final class ToolpathService {
             }
             x.put("feed_length_mm", t.feedLengthMm());
             x.put("rapid_length_mm", t.rapidLengthMm());
+            if (t.dwellSeconds() > 0) {
+                x.put("dwell_time_s", t.dwellSeconds());
+            }
             x.put("time_s", t.seconds());
             perSection.add(x);
         }
         m.put("rapid_mm_per_min", RAPID_MM_PER_MIN);
         m.put("feed_length_mm", total.feedLengthMm());
         m.put("rapid_length_mm", total.rapidLengthMm());
+        if (total.dwellSeconds() > 0) {
+            m.put("dwell_time_s", total.dwellSeconds());
+        }
         m.put("cycle_time_s", total.seconds());
         m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
         m.put("workingstep_paths", perSection);

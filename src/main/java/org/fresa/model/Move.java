@@ -3,8 +3,14 @@ package org.fresa.model;
 /**
  * One move of the tool tip, from the end of the previous move to {@link #end()}, in the frame of
  * the section that holds it (mm).
+ *
+ * <p>{@link Dwell}, {@link SpindleStop} and {@link SpindleStart} do not move the tool: their end
+ * is where the tool already is, so that every consumer may keep its "at = m.end()" bookkeeping.
+ * They are moves rather than a side channel because their place in the sequence is what matters
+ * (a dwell at the bottom of a hole, the spindle stopped before a boring bar leaves it).
  */
-public sealed interface Move permits Move.Rapid, Move.Linear, Move.Circular {
+public sealed interface Move permits Move.Rapid, Move.Linear, Move.Circular, Move.Dwell, Move.SpindleStop,
+        Move.SpindleStart {
 
     org.fresa.geom.Vec3 end();
 
@@ -57,6 +63,53 @@ public sealed interface Move permits Move.Rapid, Move.Linear, Move.Circular {
             }
             if (!(feedMmPerMin > 0) || !Double.isFinite(feedMmPerMin)) {
                 throw new IllegalArgumentException("feed must be > 0: " + feedMmPerMin);
+            }
+        }
+    }
+
+    /** Whether the move changes the tool's position or path (false for dwells and spindle events). */
+    default boolean travels() {
+        return this instanceof Rapid || this instanceof Linear || this instanceof Circular;
+    }
+
+    /**
+     * The tool stays where it is for a time (G04), the spindle running as before.
+     *
+     * @param end the current position (mm)
+     * @param seconds dwell time, >= 0 (ISO 14649 dwell times are in seconds)
+     */
+    record Dwell(org.fresa.geom.Vec3 end, double seconds) implements Move {
+        public Dwell {
+            java.util.Objects.requireNonNull(end, "end");
+            if (!(seconds >= 0) || !Double.isFinite(seconds)) {
+                throw new IllegalArgumentException("dwell must be >= 0 s: " + seconds);
+            }
+        }
+    }
+
+    /**
+     * The spindle stops (M05) with the tool where it is; the control waits until it has stopped.
+     *
+     * @param end the current position (mm)
+     */
+    record SpindleStop(org.fresa.geom.Vec3 end) implements Move {
+        public SpindleStop {
+            java.util.Objects.requireNonNull(end, "end");
+        }
+    }
+
+    /**
+     * The spindle starts, or changes speed, with the tool where it is (S.. M03 / M04).
+     *
+     * @param end the current position (mm)
+     * @param rpm spindle speed, > 0
+     * @param clockwise M03 when true, M04 otherwise
+     */
+    record SpindleStart(org.fresa.geom.Vec3 end, double rpm, boolean clockwise) implements Move {
+        public SpindleStart {
+            java.util.Objects.requireNonNull(end, "end");
+            if (!(rpm > 0) || !Double.isFinite(rpm)) {
+                throw new IllegalArgumentException("spindle speed must be > 0: " + rpm);
             }
         }
     }

@@ -6,7 +6,8 @@ import java.util.Optional;
 /**
  * Fanuc 0i/30i-style milling: tape marks, an O program number with the name as comment
  * (upper case, as Fanuc's character set expects), block numbers, T Mn6 then G43 Hn, every
- * coordinate with a decimal point, no turn word (one block per helix turn).
+ * coordinate with a decimal point, no turn word (one block per helix turn), dwells as G04 X in
+ * seconds.
  */
 final class FanucPost extends GcodePost {
 
@@ -50,8 +51,23 @@ final class FanucPost extends GcodePost {
     }
 
     @Override
-    List<String> spindleOn(long rpm) {
-        return List.of("S" + rpm + " M03");
+    List<String> spindleOn(long rpm, boolean clockwise) {
+        return List.of("S" + rpm + (clockwise ? " M03" : " M04"));
+    }
+
+    @Override
+    String spindleOff() {
+        return "M05";
+    }
+
+    /**
+     * X in seconds, always with a decimal point: Fanuc reads a dwell X without one in the least
+     * input increment (ms) and P only as integer milliseconds, so X with a point is the one form
+     * that means the same on every parameter setting.
+     */
+    @Override
+    String dwell(double s) {
+        return "G04 X" + seconds(s);
     }
 
     @Override

@@ -28,6 +28,9 @@ import org.fresa.model.ToolpathSection;
  * incremental centre words (I, J, K from the start point); a normal along a negative axis
  * flips the sense. A helix is the same block with the third axis changed. Arcs in any other
  * plane are replaced by straight G01 chords within {@link #chordToleranceMm()} of the arc.
+ * <li>Dwells are the dialect's dwell block with the time in seconds ({@link #dwell}); spindle
+ * stops and starts inside a section are M5 and S.. M3/M4 blocks, and a section whose spindle
+ * was stopped starts it again even at an unchanged speed.
  * <li>Extra full turns use the dialect's turn word when it has one ({@link #turnsWord}),
  * otherwise each turn is written as its own full-circle block.
  * <li>The tool axis of a section is not used for motion: a 3-axis machine has its spindle along
@@ -73,9 +76,22 @@ abstract class GcodePost implements NcPost {
     /** Blocks that load tool {@code tool} and apply its length offset. */
     abstract List<String> toolChange(int tool);
 
-    /** Blocks that start the spindle clockwise at the speed. */
-    List<String> spindleOn(long rpm) {
-        return List.of("S" + rpm + " M3");
+    /** Blocks that start the spindle at the speed, clockwise (M3) or counter-clockwise (M4). */
+    List<String> spindleOn(long rpm, boolean clockwise) {
+        return List.of("S" + rpm + (clockwise ? " M3" : " M4"));
+    }
+
+    /** The block that stops the spindle. */
+    String spindleOff() {
+        return "M5";
+    }
+
+    /** The block of a dwell of the given time; seconds are written with {@link #seconds(double)}. */
+    abstract String dwell(double seconds);
+
+    /** A time in seconds with three decimals (the controls' millisecond resolution), Locale.ROOT. */
+    static String seconds(double s) {
+        return String.format(Locale.ROOT, "%.3f", s);
     }
 
     /** Blocks of the safe end: stop the spindle, cancel modes, end the program. */
@@ -98,7 +114,9 @@ abstract class GcodePost implements NcPost {
         p.raw(comment(programName));
         safeStart().forEach(p::block);
         int tool = 0;
+        // the spindle as the program has left it: -1 when stopped or unknown
         long rpm = -1;
+        boolean clockwise = true;
         Plane plane = Plane.XY;
         double feed = -1;
         for (ToolpathSection s : path.sections()) {
@@ -114,9 +132,10 @@ abstract class GcodePost implements NcPost {
                 feed = -1;
             }
             long sRpm = Math.round(s.spindleRpm());
-            if (sRpm > 0 && sRpm != rpm) {
-                spindleOn(sRpm).forEach(p::block);
+            if (sRpm > 0 && (sRpm != rpm || !clockwise)) {
+                spindleOn(sRpm, true).forEach(p::block);
                 rpm = sRpm;
+                clockwise = true;
             }
             p.block("G0 " + xyz(s.start()));
             Vec3 at = s.start();
@@ -129,6 +148,17 @@ abstract class GcodePost implements NcPost {
                 } else if (m instanceof Move.Circular c) {
                     plane = arc(p, at, c, plane, feed);
                     feed = c.feedMmPerMin();
+                } else if (m instanceof Move.Dwell d) {
+                    p.block(dwell(d.seconds()));
+                } else if (m instanceof Move.SpindleStop) {
+                    p.block(spindleOff());
+                    rpm = -1;
+                } else if (m instanceof Move.SpindleStart on) {
+                    rpm = Math.round(on.rpm());
+                    clockwise = on.clockwise();
+                    spindleOn(rpm, clockwise).forEach(p::block);
+                } else {
+                    throw new IllegalStateException("no G-code for " + m);
                 }
                 at = m.end();
             }

@@ -59,6 +59,12 @@ final class IsoPost extends GcodePost {
         return List.of("%");
     }
 
+    /** G04 with X in seconds, the address the Fanuc-like majority of ISO controls reads. */
+    @Override
+    String dwell(double s) {
+        return "G04 X" + seconds(s);
+    }
+
     @Override
     Optional<String> turnsWord(int extraTurns) {
         return Optional.empty();

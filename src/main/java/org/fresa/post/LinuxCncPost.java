@@ -58,6 +58,12 @@ final class LinuxCncPost extends GcodePost {
         return List.of("%");
     }
 
+    /** RS274/NGC: P in seconds, fractions allowed. */
+    @Override
+    String dwell(double s) {
+        return "G4 P" + seconds(s);
+    }
+
     @Override
     Optional<String> turnsWord(int extraTurns) {
         return Optional.of("P" + (extraTurns + 1));

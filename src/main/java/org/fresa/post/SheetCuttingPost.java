@@ -107,14 +107,20 @@ public final class SheetCuttingPost {
             boolean on = false;
             int lastFeed = -1;
             for (int k = 0; k < sec.moves().size(); k++) {
-                if (!(sec.moves().get(k) instanceof Move.Rapid)) {
+                Move mk = sec.moves().get(k);
+                if (mk instanceof Move.Linear || mk instanceof Move.Circular) {
                     lastFeed = k;
                 }
             }
             for (int k = 0; k < sec.moves().size(); k++) {
                 Move m = sec.moves().get(k);
+                if (m instanceof Move.SpindleStop || m instanceof Move.SpindleStart) {
+                    throw new IllegalArgumentException("a sheet-cutting head has no spindle: " + m);
+                }
                 if (m instanceof Move.Rapid r) {
                     line(out, "G0 X" + num(r.end().x()) + " Y" + num(r.end().y()));
+                } else if (m instanceof Move.Dwell w) {
+                    line(out, dwell(w.seconds()));
                 } else {
                     String pre = "";
                     if (!on) {

@@ -59,6 +59,12 @@ final class Sinumerik840dPost extends GcodePost {
         return List.of("M5", "G40", "M30");
     }
 
+    /** G4 with F in seconds in its own block (840D: F after G4 is a time, not a feed). */
+    @Override
+    String dwell(double s) {
+        return "G4 F" + seconds(s);
+    }
+
     @Override
     Optional<String> turnsWord(int extraTurns) {
         return Optional.of("TURN=" + extraTurns);

@@ -9,7 +9,8 @@ package org.fresa.toolpath;
  * {@code startDepth} below the top (the tip then lies {@code tipLength} deeper) at
  * {@code startFeedFactor}; over the last {@code endDepth} of travel above the bottom at
  * {@code endFeedFactor}; at the full feed in between. Where both zones overlap the end zone wins,
- * as the breakthrough is what the end reduction protects.
+ * as the breakthrough is what the end reduction protects. The spindle speed factors apply over
+ * the same zones.
  *
  * @param tipLength length of the drill point along the axis (0 for reamers, boring bars), >= 0
  * @param startDepth depth_of_start, >= 0
@@ -20,9 +21,20 @@ package org.fresa.toolpath;
  * @param peck depth_of_step of each further step; 0 or less for one descent
  * @param retractDistance lift after each step; 0 or less to go back to the retract height
  * @param retractFeedFactor feed_on_retract; 0 or less to leave at rapid
+ * @param dwellBottomS dwell_time_bottom: wait at the bottom before leaving, >= 0 (0: none)
+ * @param dwellStepS multistep_drilling.dwell_time_step: wait at the bottom of each step but the
+ *     last (which waits dwellBottomS), >= 0 (0: none)
+ * @param spindleStopAtBottom boring_operation.spindle_stop_at_bottom: stop the spindle at the
+ *     bottom (after the dwell), leave with it stopped and start it again, at the section's
+ *     speed, at the retract height
+ * @param startSpeedFactor reduced_cut_at_start: spindle speed over the start zone as a fraction
+ *     of the section's, > 0
+ * @param endSpeedFactor reduced_cut_at_end: spindle speed over the end zone, > 0
  */
 public record DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
-        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
+        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor,
+        double dwellBottomS, double dwellStepS, boolean spindleStopAtBottom, double startSpeedFactor,
+        double endSpeedFactor) {
 
     /** One descent at the full feed, out at rapid. */
     public static final DrillCycle PLAIN = new DrillCycle(0, 0, 1, 0, 1, 0, 0, 0, 0);
@@ -34,6 +46,20 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
             throw new IllegalArgumentException("bad drill cycle: tip " + tipLength + ", start " + startDepth + " x"
                     + startFeedFactor + ", end " + endDepth + " x" + endFeedFactor);
         }
+        if (!(dwellBottomS >= 0 && dwellStepS >= 0) || !Double.isFinite(dwellBottomS + dwellStepS)) {
+            throw new IllegalArgumentException("dwells must be >= 0 s: bottom " + dwellBottomS + ", step " + dwellStepS);
+        }
+        if (!(startSpeedFactor > 0 && endSpeedFactor > 0) || !Double.isFinite(startSpeedFactor + endSpeedFactor)) {
+            throw new IllegalArgumentException("spindle speed factors must be > 0: start " + startSpeedFactor
+                    + ", end " + endSpeedFactor);
+        }
+    }
+
+    /** A cycle without dwells and with the spindle running throughout. */
+    public DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
+            double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
+        this(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck, retractDistance,
+                retractFeedFactor, 0, 0, false, 1, 1);
     }
 
     /** Pecks of {@code peck} from the top, back to the retract height after each. */
@@ -44,7 +70,25 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
     /** The same cycle leaving at the given fraction of the feed. */
     public DrillCycle withRetractFeed(double factor) {
         return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, factor);
+                retractDistance, factor, dwellBottomS, dwellStepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
+    }
+
+    /** The same cycle with these dwells (s) at the bottom and at each step. */
+    public DrillCycle withDwells(double bottomS, double stepS) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, retractFeedFactor, bottomS, stepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
+    }
+
+    /** The same cycle stopping the spindle at the bottom, or not. */
+    public DrillCycle withSpindleStopAtBottom(boolean stop) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, retractFeedFactor, dwellBottomS, dwellStepS, stop, startSpeedFactor, endSpeedFactor);
+    }
+
+    /** The same cycle with these spindle speed fractions over the start and end zones. */
+    public DrillCycle withSpeedFactors(double start, double end) {
+        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
+                retractDistance, retractFeedFactor, dwellBottomS, dwellStepS, spindleStopAtBottom, start, end);
     }
 
     boolean pecks() {

@@ -40,6 +40,19 @@ final class MoveBuilder {
         }
     }
 
+    /** The tool waits where it is. */
+    void dwell(double seconds) {
+        moves.add(new Move.Dwell(at, seconds));
+    }
+
+    void spindleStop() {
+        moves.add(new Move.SpindleStop(at));
+    }
+
+    void spindleStart(double rpm, boolean clockwise) {
+        moves.add(new Move.SpindleStart(at, rpm, clockwise));
+    }
+
     void arc(Vec3 end, Vec3 center, boolean ccw, int turns, double f) {
         moves.add(new Move.Circular(end, center, Vec3.UNIT_Z, ccw, turns, f));
         at = end;

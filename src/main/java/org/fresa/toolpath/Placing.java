@@ -33,9 +33,18 @@ public final class Placing {
         if (m instanceof Move.Linear l) {
             return new Move.Linear(t.applyToPoint(l.end()), l.feedMmPerMin());
         }
-        Move.Circular c = (Move.Circular) m;
-        return new Move.Circular(t.applyToPoint(c.end()), t.applyToPoint(c.center()), unit(t.applyToDirection(c.normal())),
-                c.ccw(), c.turns(), c.feedMmPerMin());
+        if (m instanceof Move.Circular c) {
+            return new Move.Circular(t.applyToPoint(c.end()), t.applyToPoint(c.center()),
+                    unit(t.applyToDirection(c.normal())), c.ccw(), c.turns(), c.feedMmPerMin());
+        }
+        if (m instanceof Move.Dwell d) {
+            return new Move.Dwell(t.applyToPoint(d.end()), d.seconds());
+        }
+        if (m instanceof Move.SpindleStop s) {
+            return new Move.SpindleStop(t.applyToPoint(s.end()));
+        }
+        Move.SpindleStart on = (Move.SpindleStart) m;
+        return new Move.SpindleStart(t.applyToPoint(on.end()), on.rpm(), on.clockwise());
     }
 
     /** Snaps exact axis directions (rotation round-off of 1e-17) and renormalises. */

@@ -212,8 +212,7 @@ public final class ToolpathPlanner {
                 local = hole(label, f, op, h, tooling, tol);
                 List<String> unmoved = notInTheMoves(op);
                 if (!unmoved.isEmpty()) {
-                    problems.add("workingstep '" + label + "': read but not in the moves (a section has one spindle"
-                            + " speed, no dwell and no spindle stop): " + String.join(", ", unmoved));
+                    problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
                 }
             }
             default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
@@ -359,7 +358,9 @@ public final class ToolpathPlanner {
      * The moves along the axis of a drilling-type operation: the drilling strategy's reduced feeds,
      * multistep drilling's steps (first_depth, depth_of_step, else one tool diameter; retract
      * distance) and the retract feed (feed_on_retract, else the feed for reaming and boring, which
-     * must not mark the wall, else rapid).
+     * must not mark the wall, else rapid); dwell_time_bottom, dwell_time_step (multistep drilling)
+     * in seconds as ISO 14649 gives them, spindle_stop_at_bottom (reaming, boring) and the
+     * strategy's spindle speed reductions.
      */
     static DrillCycle drillCycle(Operation op, Tooling t, double tipLength) {
         DrillingStrategy s = op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
@@ -371,33 +372,36 @@ public final class ToolpathPlanner {
         double retractFeed = positive(p.feedOnRetract(), feedOut ? 1 : 0);
         return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
                 positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
-                positive(p.retractDistanceMm(), 0), retractFeed);
+                positive(p.retractDistanceMm(), 0), retractFeed, positive(p.dwellTimeBottomS(), 0),
+                multistep ? positive(p.dwellTimeStepS(), 0) : 0, p.spindleStopAtBottom().orElse(false),
+                positive(s.reducedCutAtStart(), 1), positive(s.reducedCutAtEnd(), 1));
     }
 
     /**
-     * The drilling attributes of an operation that the moves cannot carry: spindle speed reductions
-     * (reduced_cut_at_start/end below 1), dwells (dwell_time_bottom, dwell_time_step) and
-     * spindle_stop_at_bottom; empty for other operations.
+     * The drilling attributes of an operation that the moves do not carry: spindle speed
+     * reductions (reduced_cut_at_start/end below 1) and a spindle_stop_at_bottom when the
+     * operation has no spindle speed (to reduce, or to start again at), and a dwell_time_step
+     * outside multistep drilling (where there are no steps); empty for other operations. Dwells,
+     * the spindle stop and speed changes are moves otherwise.
      */
     static List<String> notInTheMoves(Operation op) {
         List<String> out = new ArrayList<>();
+        boolean noSpeed = !(op.technology().spindleRpm().orElse(0) > 0);
         op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).ifPresent(d -> {
-            if (d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
-                out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble());
+            if (noSpeed && d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
+                out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble() + " (no spindle speed)");
             }
-            if (d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
-                out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble());
+            if (noSpeed && d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
+                out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble() + " (no spindle speed)");
             }
         });
         op.drilling().ifPresent(p -> {
-            if (p.dwellTimeBottomS().isPresent() && p.dwellTimeBottomS().getAsDouble() > 0) {
-                out.add("dwell_time_bottom " + p.dwellTimeBottomS().getAsDouble() + " s");
+            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0
+                    && op.type() != Operation.OperationType.MULTISTEP_DRILLING) {
+                out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s (no steps)");
             }
-            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0) {
-                out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s");
-            }
-            if (p.spindleStopAtBottom().orElse(false)) {
-                out.add("spindle_stop_at_bottom");
+            if (p.spindleStopAtBottom().orElse(false) && noSpeed) {
+                out.add("spindle_stop_at_bottom (no spindle speed to start again at)");
             }
         });
         return out;

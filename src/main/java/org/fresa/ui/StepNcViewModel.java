@@ -273,12 +273,31 @@ final class StepNcViewModel {
             move = "before the first move";
         } else {
             Move m = sh.get().moves().get(r.moveIndex());
-            String kind = m instanceof Move.Rapid ? "rapid" : m instanceof Move.Circular ? "arc, feed "
-                    + n(((Move.Circular) m).feedMmPerMin()) + " mm/min" : "feed " + n(((Move.Linear) m).feedMmPerMin())
-                    + " mm/min";
+            String kind = kindText(m);
             move = "move " + (r.moveIndex() + 1) + " of " + sh.get().moves().size() + " (" + kind + ")";
         }
         return seconds(r.timeS()) + " of " + seconds(r.totalS()) + ": " + move + ", tool at " + v(r.position()) + " mm";
+    }
+
+    /** How the replay line names a move: "rapid", "feed 300 mm/min", "dwell 1.5 s"... */
+    static String kindText(Move m) {
+        if (m instanceof Move.Rapid) {
+            return "rapid";
+        }
+        if (m instanceof Move.Linear l) {
+            return "feed " + n(l.feedMmPerMin()) + " mm/min";
+        }
+        if (m instanceof Move.Circular c) {
+            return "arc, feed " + n(c.feedMmPerMin()) + " mm/min";
+        }
+        if (m instanceof Move.Dwell d) {
+            return "dwell " + n(d.seconds()) + " s";
+        }
+        if (m instanceof Move.SpindleStop) {
+            return "spindle stop";
+        }
+        Move.SpindleStart on = (Move.SpindleStart) m;
+        return "spindle " + n(on.rpm()) + " rpm " + (on.clockwise() ? "clockwise" : "counter-clockwise");
     }
 
     /** The selected workingstep's cycle time, when planned. */
@@ -324,7 +343,8 @@ final class StepNcViewModel {
 
     private static String timeText(CycleTime t) {
         return seconds(t.seconds()) + " (feed " + n(t.feedLengthMm()) + " mm in " + seconds(t.feedSeconds())
-                + ", rapid " + n(t.rapidLengthMm()) + " mm in " + seconds(t.rapidSeconds()) + ")";
+                + ", rapid " + n(t.rapidLengthMm()) + " mm in " + seconds(t.rapidSeconds())
+                + (t.dwellSeconds() > 0 ? ", dwells " + seconds(t.dwellSeconds()) : "") + ")";
     }
 
     /** "50.4 s", or "3 min 05.2 s" from a minute on. */

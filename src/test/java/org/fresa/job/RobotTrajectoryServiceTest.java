@@ -127,6 +127,24 @@ class RobotTrajectoryServiceTest {
         assertTrue(Files.readString(dir.resolve("summary.json")).contains("\"free_rotation\""));
     }
 
+    /** A dwell or a spindle event holds the pose: the robot gets no point for it. */
+    @Test
+    void dwellsAndSpindleEventsAddNoRobotPoint() {
+        Vec3 bottom = new Vec3(10, 10, -5);
+        List<Move> plain = List.of(new Move.Rapid(new Vec3(10, 10, 5)), new Move.Linear(bottom, 100),
+                new Move.Rapid(new Vec3(10, 10, 5)));
+        List<Move> dwelling = List.of(new Move.Rapid(new Vec3(10, 10, 5)), new Move.Linear(bottom, 100),
+                new Move.Dwell(bottom, 2), new Move.SpindleStop(bottom), new Move.SpindleStart(bottom, 500, true),
+                new Move.Rapid(new Vec3(10, 10, 5)));
+        Transform3 t = new Placement(450, 0, 350, 0, 0, 0).toTransform();
+        var a = RobotTrajectoryService.targets(new Toolpath(List.of(new ToolpathSection("h", Vec3.UNIT_Z, 6, 1, 500,
+                new Vec3(10, 10, 20), plain))), t, 0.01);
+        var b = RobotTrajectoryService.targets(new Toolpath(List.of(new ToolpathSection("h", Vec3.UNIT_Z, 6, 1, 500,
+                new Vec3(10, 10, 20), dwelling))), t, 0.01);
+        assertEquals(4, a.size());
+        assertEquals(a, b);
+    }
+
     @Test
     void theTopFaceCirclesLieOnTheCubeInTheRobotFrame() {
         Transform3 t = new Placement(450, 0, 350, 0, 0, 0).toTransform()

@@ -53,7 +53,50 @@ class ToolpathServiceTest {
         // the interpreter's motions are the planned moves (each section's start, then its moves)
         List<Rs274.Canon> expected = ExpectedMotions.of(plan(Path.of(input)), false, NcPosts.CHORD_TOLERANCE_MM);
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
-        // and toolpath.csv holds the same motions: straight rows one to one, each arc as points on it
+        assertCsvHoldsTheMotions(dir, r);
+    }
+
+    /**
+     * Example 1 with a multistep drilling (dwell_time_step 0.5 s, dwell_time_bottom 1.5 s) and a
+     * ream that dwells 0.75 s before its spindle stop: LinuxCNC dwells where the toolpath does,
+     * toolpath.csv has a dwell row for each DWELL, and the cycle time counts them.
+     */
+    @Test
+    void aProgramWithDwellsIsAcceptedByLinuxCncAndItsDwellsAreTheCsvsDwells(@TempDir Path dir) throws Exception {
+        String text = Files.readString(EXAMPLE1)
+                .replace("#20= DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,$,$,#46);",
+                        "#20= MULTISTEP_DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,1.5,$,#46,2.0,12.0,6.0,0.5);")
+                .replace("#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,$,$,#49,.T.,$,$);",
+                        "#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,0.75,$,#49,.T.,$,$);");
+        Path input = dir.resolve("dwells.stp");
+        Files.writeString(input, text);
+        Path out = dir.resolve("out");
+        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        Toolpath path = plan(input);
+        List<Double> dwells = new ArrayList<>();
+        for (ToolpathSection s : path.sections()) {
+            s.moves().stream().filter(m -> m instanceof Move.Dwell).forEach(m -> dwells.add(((Move.Dwell) m).seconds()));
+        }
+        // steps to 12, 18, 24, 30, 36 mm deep, then the through bottom at 30 + the point (36.0086); then the ream
+        assertEquals(List.of(0.5, 0.5, 0.5, 0.5, 0.5, 1.5, 0.75), dwells);
+        assertEquals(4.75, (double) o.summary().get("dwell_time_s"), 1e-12);
+        CycleTime total = CycleTime.ZERO;
+        for (ToolpathSection s : path.sections()) {
+            total = total.plus(CycleTime.of(s, ToolpathService.RAPID_MM_PER_MIN));
+        }
+        assertEquals(total.feedSeconds() + total.rapidSeconds() + 4.75, (double) o.summary().get("cycle_time_s"), 1e-9);
+        assumeTrue(Rs274.available(), "rs274 not present");
+        Rs274.Result r = Rs274.run(out.resolve("program.ngc"), 18);
+        assertEquals(0, r.exitStatus(), r.stderr());
+        List<Rs274.Canon> expected = ExpectedMotions.of(path, false, NcPosts.CHORD_TOLERANCE_MM);
+        assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
+        assertEquals(7, r.motions().stream().filter(c -> c.kind().equals("dwell")).count());
+        assertCsvHoldsTheMotions(out, r);
+    }
+
+    /** toolpath.csv holds the interpreter's motions: straight rows and dwells one to one, each arc as points on it. */
+    static void assertCsvHoldsTheMotions(Path dir, Rs274.Result r) throws Exception {
         List<ToolpathCsv.Row> rows = ToolpathCsv.read(new StringReader(Files.readString(dir.resolve("toolpath.csv"))), "csv");
         int i = 0;
         for (Rs274.Canon c : r.motions()) {
@@ -61,6 +104,10 @@ class ToolpathServiceTest {
                 ToolpathCsv.Row row = rows.get(i++);
                 assertEquals(c.kind(), row.move(), "row " + row.index());
                 assertTrue(row.point().distance(c.end()) <= 0.0011, "row " + row.index() + " vs " + c);
+                if (c.kind().equals("dwell")) {
+                    // a dwell row's feed column is its time in seconds
+                    assertEquals(c.seconds(), row.feedMmPerMin(), 5e-4, "row " + row.index());
+                }
                 continue;
             }
             Vec3 n = c.normal();
@@ -150,8 +197,10 @@ class ToolpathServiceTest {
      * measures depth_of_end from the top like depth_of_start and reduces 22 mm of travel; ISO's
      * depth_of_end is the last part of the drilling, so we reduce the last 8 mm (from -28.0086).
      * <li>Out: NIST retracts at 1800 mm/min; feed_on_retract is unset, so our drill leaves at rapid.
-     * <li>Spindle: NIST also sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5); a
-     * section here has one spindle speed, so the cut reductions are read but not output.
+     * <li>Spindle: NIST sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5) where the
+     * zones begin, and so do we (spindle starts at the new speed, at our zone boundaries).
+     * <li>Ream: NIST stops the spindle at the bottom (spindle_stop_at_bottom) and leaves at feed;
+     * so do we, and start the spindle again at the retract height.
      * </ul>
      */
     @Test
@@ -186,11 +235,29 @@ class ToolpathServiceTest {
         assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
                 .map(m -> m.end().z()).toList());
         List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
-        assertTrue(problems.contains("workingstep 'WS DRILL HOLE1': read but not in the moves (a section has one"
-                + " spindle speed, no dwell and no spindle stop): reduced_cut_at_start 0.75, reduced_cut_at_end 0.5"),
-                problems.toString());
-        assertTrue(problems.stream().anyMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")
-                && q.endsWith(": spindle_stop_at_bottom")), problems.toString());
+        assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS DRILL HOLE1'")), problems.toString());
+        // reduced_cut_at_start/end 0.75, 0.5 of 960 rpm: NIST's 720, 960 (after the start zone), 480 (end zone)
+        List<double[]> speeds = new ArrayList<>();
+        for (Move m : drill.moves()) {
+            if (m instanceof Move.SpindleStart on) {
+                speeds.add(new double[] {on.end().z(), on.rpm()});
+            }
+        }
+        assertEquals(960, drill.spindleRpm(), 1e-9);
+        assertEquals(3, speeds.size());
+        assertAll(() -> assertEquals(10, speeds.get(0)[0], 1e-9), () -> assertEquals(720, speeds.get(0)[1], 1e-9),
+                () -> assertEquals(-(2 + tip), speeds.get(1)[0], 1e-9), () -> assertEquals(960, speeds.get(1)[1], 1e-9),
+                () -> assertEquals(-(30 + tip) + 8, speeds.get(2)[0], 1e-9),
+                () -> assertEquals(480, speeds.get(2)[1], 1e-9));
+        // the reamer's spindle_stop_at_bottom: M5 at -30, out at feed, M3 again at the retract height
+        assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")), problems.toString());
+        List<Move> rm = ream.moves();
+        int stop = rm.indexOf(rm.stream().filter(m -> m instanceof Move.SpindleStop).findFirst().orElseThrow());
+        assertEquals(-30, rm.get(stop).end().z(), 1e-9);
+        assertTrue(rm.get(stop + 1) instanceof Move.Linear && rm.get(stop + 2) instanceof Move.SpindleStart,
+                rm.toString());
+        assertEquals(10, rm.get(stop + 2).end().z(), 1e-9);
+        assertEquals(ream.spindleRpm(), ((Move.SpindleStart) rm.get(stop + 2)).rpm());
     }
 
     /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */

@@ -10,7 +10,9 @@ import org.fresa.model.ToolpathSection;
 /**
  * The canonical motions a correct G-code post of a toolpath must make the interpreter print:
  * per section a rapid to its start, then its moves; arcs in principal planes as one ARC_FEED
- * (or one per turn when the dialect has no turn word), other arcs as chords.
+ * (or one per turn when the dialect has no turn word), other arcs as chords; dwells as DWELL
+ * where the tool is. Spindle stops and starts are no motions (the interpreter's spindle calls
+ * also come from tool changes and the program end); tests that need them read the log.
  */
 public final class ExpectedMotions {
 
@@ -29,6 +31,8 @@ public final class ExpectedMotions {
                     list.add(new Rs274.Canon("feed", l.end(), null, null, 0));
                 } else if (m instanceof Move.Circular c) {
                     arc(list, at, c, splitTurns, chordTolMm);
+                } else if (m instanceof Move.Dwell d) {
+                    list.add(new Rs274.Canon("dwell", at, null, null, 0, d.seconds()));
                 }
                 at = m.end();
             }
@@ -67,7 +71,8 @@ public final class ExpectedMotions {
         for (int i = 0; i < Math.min(expected.size(), actual.size()); i++) {
             Rs274.Canon e = expected.get(i);
             Rs274.Canon a = actual.get(i);
-            boolean same = e.kind().equals(a.kind()) && e.end().distance(a.end()) <= tolMm;
+            boolean same = e.kind().equals(a.kind()) && e.end().distance(a.end()) <= tolMm
+                    && Math.abs(e.seconds() - a.seconds()) <= 5e-4;
             if (same && e.kind().equals("arc")) {
                 Vec3 n = e.normal();
                 Vec3 ec = e.center().minus(n.times(e.center().dot(n)));

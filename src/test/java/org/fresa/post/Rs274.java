@@ -19,7 +19,7 @@ public final class Rs274 {
 
     public static final Path TOOL = Path.of("../shared/tools/rs274");
 
-    private static final Pattern CALL = Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE)\\((.*)\\)");
+    private static final Pattern CALL = Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE|DWELL)\\((.*)\\)");
 
     private Rs274() {
     }
@@ -35,9 +35,14 @@ public final class Rs274 {
     /**
      * One canonical motion. For arcs, centre is the axis point at the start's height along the
      * normal, normal is +Z/+Y/+X for the XY/XZ/YZ plane, rotation as printed (sign = sense about
-     * the normal, magnitude = turns + 1).
+     * the normal, magnitude = turns + 1). A DWELL is kind "dwell" at the position the previous
+     * motion reached (the origin before any), with its time in seconds.
      */
-    public record Canon(String kind, Vec3 end, Vec3 center, Vec3 normal, int rotation) {
+    public record Canon(String kind, Vec3 end, Vec3 center, Vec3 normal, int rotation, double seconds) {
+
+        public Canon(String kind, Vec3 end, Vec3 center, Vec3 normal, int rotation) {
+            this(kind, end, center, normal, rotation, 0);
+        }
     }
 
     /**
@@ -105,6 +110,8 @@ public final class Rs274 {
             String[] a = m.group(2).split(",\\s*");
             switch (m.group(1)) {
                 case "SELECT_PLANE" -> plane = a[0].trim();
+                case "DWELL" -> list.add(new Canon("dwell", list.isEmpty() ? Vec3.ZERO : list.get(list.size() - 1).end(),
+                        null, null, 0, d(a[0])));
                 case "STRAIGHT_TRAVERSE", "STRAIGHT_FEED" -> list.add(new Canon(
                         m.group(1).equals("STRAIGHT_FEED") ? "feed" : "rapid",
                         new Vec3(d(a[0]), d(a[1]), d(a[2])), null, null, 0));

@@ -27,13 +27,27 @@ class DrillCycleTest {
     static final Tooling D10 = new Tooling(1, 10, 1000, 600, 600);
     static final Heights H = new Heights(20, 5, 0, -25);
 
-    /** Each move along the axis as "R z" (rapid) or "F z @feed". */
+    /**
+     * Each move along the axis as "R z" (rapid), "F z @feed", "D s" (dwell), "M5" or "M3 rpm"
+     * (spindle events, where the tool is).
+     */
     static List<String> moves(ToolpathSection s) {
         List<String> out = new ArrayList<>();
         for (Move m : s.moves()) {
             double z = Math.round(m.end().z() * 1e6) / 1e6;
-            out.add(m instanceof Move.Linear l ? "F " + z + " @" + Math.round(l.feedMmPerMin() * 1e6) / 1e6
-                    : "R " + z);
+            if (m instanceof Move.Linear l) {
+                out.add("F " + z + " @" + Math.round(l.feedMmPerMin() * 1e6) / 1e6);
+            } else if (m instanceof Move.Rapid) {
+                out.add("R " + z);
+            } else if (m instanceof Move.Dwell d) {
+                out.add("D " + d.seconds());
+            } else if (m instanceof Move.SpindleStop) {
+                out.add("M5");
+            } else if (m instanceof Move.SpindleStart on) {
+                out.add((on.clockwise() ? "M3 " : "M4 ") + on.rpm());
+            } else {
+                throw new AssertionError(m);
+            }
         }
         return out;
     }
@@ -124,31 +138,135 @@ class DrillCycleTest {
                 moves(HoleMaking.drill("r", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(ream, D10, 0))));
     }
 
+    /** Also: dwell_time_bottom and spindle_stop_at_bottom (the spindle starts again out of the hole). */
     @Test
     void boringLeavesAtFeedOnRetractWhenTheFileGivesIt() {
         DrillingParameters p = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.of(0.5),
                 OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
                 Optional.of(true));
         Operation bore = op(OperationType.BORING, drill(31, "deg"), reductions(0.5, 3, 1, 0), p);
-        assertEquals(List.of("R 5.0", "F -3.0 @300.0", "F -25.0 @600.0", "F 5.0 @300.0", "R 20.0"),
-                moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(bore, D10, 0))));
+        assertEquals(List.of("R 5.0", "F -3.0 @300.0", "F -25.0 @600.0", "D 1.5", "M5", "F 5.0 @300.0", "M3 1000.0",
+                "R 20.0"), moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(bore, D10, 0))));
         Operation plain = op(OperationType.BORING, drill(31, "deg"), DrillingStrategy.NONE, DrillingParameters.NONE);
         assertEquals(List.of("R 5.0", "F -25.0 @600.0", "F 5.0 @600.0", "R 20.0"),
                 moves(HoleMaking.drill("b", Vec2.ZERO, H, D10, ToolpathPlanner.drillCycle(plain, D10, 0))));
     }
 
     @Test
-    void spindleReductionsDwellsAndTheSpindleStopAreNamedAsNotInTheMoves() {
+    void spindleReductionsAndWhatTheMovesCannotHonourAreNamedAsNotInTheMoves() {
         DrillingParameters p = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.empty(),
                 OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.of(0.5),
                 Optional.of(true));
         DrillingStrategy s = new DrillingStrategy(OptionalDouble.of(0.75), OptionalDouble.of(0.5),
                 OptionalDouble.of(2), OptionalDouble.of(0.5), OptionalDouble.of(0.75), OptionalDouble.of(8));
-        assertEquals(List.of("reduced_cut_at_start 0.75", "reduced_cut_at_end 0.5", "dwell_time_bottom 1.5 s",
-                "dwell_time_step 0.5 s", "spindle_stop_at_bottom"),
+        // boring has no steps to dwell at; without a spindle speed there is none to reduce or start again at
+        assertEquals(List.of("reduced_cut_at_start 0.75 (no spindle speed)", "reduced_cut_at_end 0.5 (no spindle speed)",
+                "dwell_time_step 0.5 s (no steps)", "spindle_stop_at_bottom (no spindle speed to start again at)"),
                 ToolpathPlanner.notInTheMoves(op(OperationType.BORING, drill(31, "deg"), s, p)));
+        DrillingParameters dwells = new DrillingParameters(OptionalDouble.of(1.5), OptionalDouble.empty(),
+                OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.of(0.5),
+                Optional.empty());
+        assertEquals(List.of(), ToolpathPlanner.notInTheMoves(op(OperationType.MULTISTEP_DRILLING, drill(31, "deg"),
+                DrillingStrategy.NONE, dwells)));
         assertEquals(List.of(), ToolpathPlanner.notInTheMoves(op(OperationType.DRILLING, drill(31, "deg"),
                 reductions(0.5, 2, 0.75, 8), DrillingParameters.NONE)));
+    }
+
+    static DrillingParameters dwells(double bottomS, double stepS, double firstMm, double stepMm, double retractMm) {
+        return new DrillingParameters(OptionalDouble.of(bottomS), OptionalDouble.empty(), OptionalDouble.of(retractMm),
+                OptionalDouble.of(firstMm), OptionalDouble.of(stepMm), OptionalDouble.of(stepS), Optional.empty());
+    }
+
+    @Test
+    void drillingDwellsAtTheBottomForDwellTimeBottom() {
+        DrillingParameters p = new DrillingParameters(OptionalDouble.of(2), OptionalDouble.empty(),
+                OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
+                Optional.empty());
+        DrillCycle c = ToolpathPlanner.drillCycle(op(OperationType.DRILLING, drill(31, "deg"), DrillingStrategy.NONE, p),
+                D10, 0);
+        assertEquals(List.of("R 5.0", "F -25.0 @600.0", "D 2.0", "R 5.0", "R 20.0"),
+                moves(HoleMaking.drill("d", Vec2.ZERO, H, D10, c)));
+        ToolpathSection s = HoleMaking.drill("d", Vec2.ZERO, H, D10, c);
+        Move.Dwell d = (Move.Dwell) s.moves().get(2);
+        assertEquals(new org.fresa.geom.Vec3(0, 0, -25), d.end(), "the dwell is where the tool is");
+    }
+
+    @Test
+    void multistepDrillingDwellsAtEachStepAndTheBottomsTimeAtTheLast() {
+        DrillCycle c = ToolpathPlanner.drillCycle(op(OperationType.MULTISTEP_DRILLING, drill(31, "deg"),
+                DrillingStrategy.NONE, dwells(1.5, 0.5, 12, 6, 2)), D10, 0);
+        assertAll(() -> assertEquals(1.5, c.dwellBottomS()), () -> assertEquals(0.5, c.dwellStepS()));
+        assertEquals(List.of("R 5.0", "F -12.0 @600.0", "D 0.5", "R -10.0", "R -11.0", "F -18.0 @600.0", "D 0.5",
+                "R -16.0", "R -17.0", "F -24.0 @600.0", "D 0.5", "R -22.0", "R -23.0", "F -25.0 @600.0", "D 1.5",
+                "R 5.0", "R 20.0"), moves(HoleMaking.drill("m", Vec2.ZERO, H, D10, c)));
+    }
+
+    @Test
+    void aDwellTimeStepOutsideMultistepDrillingAndZeroDwellsGiveNoDwell() {
+        DrillCycle c = ToolpathPlanner.drillCycle(op(OperationType.DRILLING, drill(31, "deg"), DrillingStrategy.NONE,
+                dwells(0, 0.5, 12, 6, 2)), D10, 0);
+        assertAll(() -> assertEquals(0, c.dwellStepS()), () -> assertEquals(0, c.dwellBottomS()));
+        assertEquals(List.of("R 5.0", "F -25.0 @600.0", "R 5.0", "R 20.0"),
+                moves(HoleMaking.drill("d", Vec2.ZERO, H, D10, c)));
+    }
+
+    @Test
+    void reducedCutAtStartAndEndChangeTheSpindleSpeedWhereTheirZonesBegin() {
+        DrillingStrategy s = new DrillingStrategy(OptionalDouble.of(0.75), OptionalDouble.of(0.5), OptionalDouble.of(2),
+                OptionalDouble.of(0.5), OptionalDouble.empty(), OptionalDouble.of(4));
+        DrillCycle c = ToolpathPlanner.drillCycle(op(OperationType.DRILLING, drill(31, "deg"), s,
+                DrillingParameters.NONE), D10, 0);
+        // the end zone reduces the speed only: the feed is split there all the same
+        assertEquals(List.of("R 5.0", "M3 750.0", "F -2.0 @300.0", "M3 1000.0", "F -21.0 @600.0", "M3 500.0",
+                "F -25.0 @600.0", "R 5.0", "R 20.0"), moves(HoleMaking.drill("d", Vec2.ZERO, H, D10, c)));
+        // pecks come back into the zone at the speed they left it
+        DrillCycle pecks = new DrillCycle(0, 2, 1, 4, 1, 12, 12, 0, 0).withSpeedFactors(0.75, 0.5);
+        assertEquals(List.of("R 5.0", "M3 750.0", "F -2.0 @600.0", "M3 1000.0", "F -12.0 @600.0", "R 5.0",
+                "R -11.0", "F -21.0 @600.0", "M3 500.0", "F -24.0 @600.0", "R 5.0", "R -23.0", "F -25.0 @600.0",
+                "R 5.0", "R 20.0"), moves(HoleMaking.drill("d", Vec2.ZERO, H, D10, pecks)));
+    }
+
+    @Test
+    void withoutASpindleSpeedThereIsNoSpeedChangeAndNoSpindleStop() {
+        Tooling noSpeed = new Tooling(1, 10, 0, 600, 600);
+        DrillCycle c = new DrillCycle(0, 2, 1, 4, 1, 0, 0, 0, 1).withSpeedFactors(0.75, 0.5)
+                .withSpindleStopAtBottom(true).withDwells(1, 0);
+        assertEquals(List.of("R 5.0", "F -25.0 @600.0", "D 1.0", "F 5.0 @600.0", "R 20.0"),
+                moves(HoleMaking.drill("b", Vec2.ZERO, H, noSpeed, c)));
+    }
+
+    @Test
+    void aDrillCycleRefusesNegativeOrEndlessDwellsAndSpeedFactors() {
+        DrillCycle c = DrillCycle.PLAIN;
+        for (double bad : new double[] {-1, Double.NaN, Double.POSITIVE_INFINITY}) {
+            org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.withDwells(bad, 0));
+            org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.withDwells(0, bad));
+            org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> c.withSpeedFactors(bad, 1));
+        }
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> c.withSpeedFactors(1, 0));
+    }
+
+    /** A hole on a side face: the dwell and spindle events go with the tool into the workpiece frame. */
+    @Test
+    void placingMovesDwellsAndSpindleEventsWithTheTool() {
+        DrillCycle c = DrillCycle.PLAIN.withRetractFeed(1).withDwells(1.5, 0).withSpindleStopAtBottom(true);
+        ToolpathSection local = HoleMaking.drill("b", Vec2.ZERO, H, D10, c);
+        org.fresa.geom.Transform3 side = org.fresa.geom.Transform3.translation(100, 0, 50)
+                .times(org.fresa.geom.Transform3.rotX(-90));
+        ToolpathSection placed = Placing.place(local, side);
+        assertEquals(moves(local).size(), placed.moves().size());
+        for (int i = 0; i < local.moves().size(); i++) {
+            Move a = local.moves().get(i);
+            Move b = placed.moves().get(i);
+            assertEquals(a.getClass(), b.getClass());
+            assertEquals(0, side.applyToPoint(a.end()).distance(b.end()), 1e-9);
+        }
+        Move.Dwell d = (Move.Dwell) placed.moves().stream().filter(m -> m instanceof Move.Dwell).findFirst().orElseThrow();
+        assertEquals(1.5, d.seconds());
+        Move.SpindleStart on = (Move.SpindleStart) placed.moves().stream().filter(m -> m instanceof Move.SpindleStart)
+                .findFirst().orElseThrow();
+        assertAll(() -> assertEquals(1000, on.rpm()), () -> assertEquals(true, on.clockwise()));
     }
 
     @Test

@@ -206,8 +206,9 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, DRILL);
         assertEquals(List.of(), vm.layers());
         assertEquals(List.of("All moves"), vm.layerChoices());
-        // rapid in, three feed zones of the drilling strategy, rapid out to the retract and security planes
-        assertEquals(6, vm.shown().orElseThrow().moves().size());
+        // rapid in, three feed zones of the drilling strategy each after its spindle speed (720, 960, 480 rpm),
+        // rapid out to the retract and security planes
+        assertEquals(9, vm.shown().orElseThrow().moves().size());
     }
 
     /**
@@ -224,14 +225,14 @@ class StepNcViewModelTest {
         StepNcViewModel.ReplayPoint half = vm.replayPoint().orElseThrow();
         double total = (12 + TIP) / 900.0 * 60 + 20 / 1800.0 * 60 + 8 / 1350.0 * 60 + (80 + TIP) / 10000.0 * 60;
         double intoFullFeed = total / 2 - 0.12 - (12 + TIP) / 15;
-        assertAll(() -> assertEquals(2, half.moveIndex()),
+        assertAll(() -> assertEquals(4, half.moveIndex()),
                 () -> assertEquals(total / 2, half.timeS(), 1e-9),
                 () -> assertEquals(total, half.totalS(), 1e-9),
                 () -> assertEquals(20, half.position().x(), EPS),
                 () -> assertEquals(60, half.position().y(), EPS),
                 () -> assertEquals(-(2 + TIP) - intoFullFeed * 30, half.position().z(), 1e-9),
                 () -> assertEquals(-9.4741, half.position().z(), 1e-4));
-        assertTrue(vm.replayText().startsWith("1.4 s of 2.7 s: move 3 of 6 (feed 1800 mm/min), tool at (20, 60, -9.4741) mm"),
+        assertTrue(vm.replayText().startsWith("1.4 s of 2.7 s: move 5 of 9 (feed 1800 mm/min), tool at (20, 60, -9.4741) mm"),
                 vm.replayText());
         vm.setReplay(0);
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
@@ -240,6 +241,23 @@ class StepNcViewModelTest {
         assertEquals(0, vm.replay());
         vm.setReplay(10_000);
         assertEquals(StepNcViewModel.REPLAY_STEPS, vm.replay());
+    }
+
+    /** A dwell takes its time where the tool is; spindle events take none. */
+    @Test
+    void theReplayWaitsAtADwellAndNamesIt() {
+        Vec3 bottom = new Vec3(0, 0, -10);
+        List<Move> moves = List.of(new Move.Linear(bottom, 600), new Move.Dwell(bottom, 2),
+                new Move.SpindleStop(bottom), new Move.Rapid(new Vec3(0, 0, 0)));
+        StepNcViewModel.Shown sh = new StepNcViewModel.Shown(Vec3.ZERO, moves);
+        // 1 s of feed, 2 s of dwell, 0.06 s of rapid
+        StepNcViewModel.ReplayPoint r = StepNcViewModel.replayAt(sh, 2.0 / 3.06);
+        assertAll(() -> assertEquals(1, r.moveIndex()), () -> assertEquals(bottom, r.position()),
+                () -> assertEquals(3.06, r.totalS(), 1e-12));
+        assertEquals("dwell 2 s", StepNcViewModel.kindText(moves.get(1)));
+        assertEquals("spindle stop", StepNcViewModel.kindText(moves.get(2)));
+        assertEquals("spindle 800 rpm counter-clockwise",
+                StepNcViewModel.kindText(new Move.SpindleStart(bottom, 800, false)));
     }
 
     @Test
