@@ -75,4 +75,28 @@ class RobotProgramXmlTest {
         assertTrue(e.getMessage().contains("6 joint values for 2 joints"), e.getMessage());
         assertTrue(e.getMessage().contains("two-joints-six-values.xml"), e.getMessage());
     }
+
+    @Test
+    void theWrittenFileIsValidAgainstTheSchema() throws Exception {
+        // write() no longer validates as it goes (issue 11): the file must still be valid
+        javax.xml.validation.Validator v = SafeXml.schema("/schemas/robot-program.xsd").newValidator();
+        v.validate(new javax.xml.transform.stream.StreamSource(writeSample().toFile()));
+    }
+
+    @Test
+    void aNumberOutsideTheSchemaIsRefusedBeforeAnythingIsWritten() {
+        RobotProgram p = RobotProgramsForTest.sample();
+        java.util.List<RobotProgram.Motion> motions = new java.util.ArrayList<>(p.motions());
+        RobotProgram.Motion m = motions.get(1);
+        java.util.List<Double> joints = new java.util.ArrayList<>(m.jointValues());
+        joints.set(2, Double.NaN);
+        motions.set(1, new RobotProgram.Motion(m.index(), m.workingstep(), m.type(), m.role(), joints, m.target(),
+                m.speedMmPerS(), m.zoneMm()));
+        RobotProgram bad = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.IOException e = assertThrows(java.io.IOException.class,
+                () -> RobotProgramXml.write(bad, RobotProgramsForTest.FRONT_UPPER, out));
+        assertTrue(e.getMessage().contains("NaN"), e.getMessage());
+        assertEquals(0, out.size());
+    }
 }
