@@ -69,8 +69,7 @@ public final class RobotService {
 
     /**
      * Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}.
-     * The files are rendered in parallel (one thread per core, at most 4), and the XML binding is
-     * set up on one of those threads while the toolpaths are planned and solved.
+     * The files are rendered in parallel (one thread per core, at most 4).
      */
     public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
@@ -81,12 +80,6 @@ public final class RobotService {
                     return t;
                 });
         try {
-            if (s.formats().contains("xml")) {
-                pool.submit(() -> {
-                    RobotProgramXml.prepare();
-                    Timing.mark("XML binding set up");
-                });
-            }
             return run(s, out, progress, pool);
         } finally {
             pool.shutdownNow();

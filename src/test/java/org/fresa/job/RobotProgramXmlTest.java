@@ -99,4 +99,31 @@ class RobotProgramXmlTest {
         assertTrue(e.getMessage().contains("NaN"), e.getMessage());
         assertEquals(0, out.size());
     }
+
+    @Test
+    void theDirectWriterWritesTheBindingsBytes() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        for (RobotProgram q : java.util.List.of(p, new RobotProgram("empty", p.robotName(), p.joints(), java.util.List.of()))) {
+            var x = RobotProgramXml.toXml(q, RobotProgramsForTest.FRONT_UPPER);
+            assertTrue(RobotProgramXml.plainStrings(x));
+            java.io.ByteArrayOutputStream byBinding = new java.io.ByteArrayOutputStream();
+            RobotProgramXml.marshal(x, byBinding);
+            java.io.ByteArrayOutputStream direct = new java.io.ByteArrayOutputStream();
+            RobotProgramXml.write(q, RobotProgramsForTest.FRONT_UPPER, direct);
+            assertEquals(byBinding.toString(java.nio.charset.StandardCharsets.UTF_8),
+                    direct.toString(java.nio.charset.StandardCharsets.UTF_8));
+        }
+    }
+
+    @Test
+    void namesThatNeedEscapingGoThroughTheBinding() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        RobotProgram odd = new RobotProgram("a<b & \"c\" \u00e9", p.robotName(), p.joints(), p.motions());
+        assertTrue(!RobotProgramXml.plainStrings(RobotProgramXml.toXml(odd, RobotProgramsForTest.FRONT_UPPER)));
+        Path f = dir.resolve("odd.xml");
+        try (OutputStream out = Files.newOutputStream(f)) {
+            RobotProgramXml.write(odd, RobotProgramsForTest.FRONT_UPPER, out);
+        }
+        assertEquals(odd.programName(), RobotProgramXml.read(f).programName());
+    }
 }
