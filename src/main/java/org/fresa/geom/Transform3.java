@@ -182,4 +182,43 @@ public record Transform3(
     public boolean eq(Transform3 o, Tolerance tol) {
         return translationPart().eq(o.translationPart(), tol) && rotationAngleTo(o) <= tol.angularRad();
     }
+
+    /**
+     * The record's own equality (each component by {@link Double#compare}) and hash (the same
+     * 31-polynomial), written out: the generated ones are bootstrapped through method handles,
+     * which spins classes at start-up (issue 11).
+     */
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof Transform3 o
+                && Double.compare(r00, o.r00) == 0
+                && Double.compare(r01, o.r01) == 0
+                && Double.compare(r02, o.r02) == 0
+                && Double.compare(r10, o.r10) == 0
+                && Double.compare(r11, o.r11) == 0
+                && Double.compare(r12, o.r12) == 0
+                && Double.compare(r20, o.r20) == 0
+                && Double.compare(r21, o.r21) == 0
+                && Double.compare(r22, o.r22) == 0
+                && Double.compare(tx, o.tx) == 0
+                && Double.compare(ty, o.ty) == 0
+                && Double.compare(tz, o.tz) == 0;
+    }
+
+    @Override
+    public int hashCode() {
+        int h = Double.hashCode(r00);
+        h = 31 * h + Double.hashCode(r01);
+        h = 31 * h + Double.hashCode(r02);
+        h = 31 * h + Double.hashCode(r10);
+        h = 31 * h + Double.hashCode(r11);
+        h = 31 * h + Double.hashCode(r12);
+        h = 31 * h + Double.hashCode(r20);
+        h = 31 * h + Double.hashCode(r21);
+        h = 31 * h + Double.hashCode(r22);
+        h = 31 * h + Double.hashCode(tx);
+        h = 31 * h + Double.hashCode(ty);
+        h = 31 * h + Double.hashCode(tz);
+        return h;
+    }
 }

@@ -85,4 +85,25 @@ public record Vec3(double x, double y, double z) {
     public boolean eq(Vec3 o, Tolerance tol) {
         return distance(o) <= tol.linear();
     }
+
+    /**
+     * The record's own equality (each component by {@link Double#compare}) and hash (the same
+     * 31-polynomial), written out: the generated ones are bootstrapped through method handles,
+     * which spins classes at start-up (issue 11).
+     */
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof Vec3 o
+                && Double.compare(x, o.x) == 0
+                && Double.compare(y, o.y) == 0
+                && Double.compare(z, o.z) == 0;
+    }
+
+    @Override
+    public int hashCode() {
+        int h = Double.hashCode(x);
+        h = 31 * h + Double.hashCode(y);
+        h = 31 * h + Double.hashCode(z);
+        return h;
+    }
 }

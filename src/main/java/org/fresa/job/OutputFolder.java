@@ -59,6 +59,7 @@ public final class OutputFolder {
             pending.add(new Pending(target, renderer.submit(() -> {
                 java.io.ByteArrayOutputStream buf = new java.io.ByteArrayOutputStream(1 << 16);
                 body.writeTo(buf);
+                Timing.mark("rendered " + fileName);
                 return buf.toByteArray();
             })));
         } else {

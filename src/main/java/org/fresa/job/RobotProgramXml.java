@@ -6,9 +6,13 @@ import jakarta.xml.bind.JAXBException;
 import jakarta.xml.bind.Marshaller;
 import jakarta.xml.bind.UnmarshalException;
 import jakarta.xml.bind.Unmarshaller;
+import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
 import java.math.BigInteger;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -39,22 +43,25 @@ import org.xml.sax.SAXParseException;
 
 /**
  * The offline-programming XML of a robot program ({@code program.xml},
- * {@code schemas/robot-program.xsd}), written and read with Jakarta XML Binding and validated on
- * both ways. Joint values and positions are written as exact doubles, so reading a file back
- * gives the same joints bit for bit.
+ * {@code schemas/robot-program.xsd}), written and read with Jakarta XML Binding. Reading validates
+ * against the schema; writing checks what the binding cannot guarantee (see {@link #write}).
+ * Joint values and positions are written as exact doubles, so reading a file back gives the same
+ * joints bit for bit.
  */
 public final class RobotProgramXml {
 
     public static final int VERSION = 1;
-    private static final Schema SCHEMA = SafeXml.schema("/schemas/robot-program.xsd");
-    private static final JAXBContext CONTEXT = createContext();
+    /** Only reading needs the compiled schema (a third of a second in a fresh JVM). */
+    private static final class Validation {
+        static final Schema SCHEMA = SafeXml.schema("/schemas/robot-program.xsd");
+    }
 
     private RobotProgramXml() {
     }
 
-    /** Sets up the schema and the binding now (both take a while in a fresh JVM); idempotent. */
-    static void prepare() {
-        // initialising the class builds SCHEMA and CONTEXT
+    /** The binding, set up when first needed (it takes a while in a fresh JVM). */
+    private static final class Binding {
+        static final JAXBContext CONTEXT = createContext();
     }
 
     private static JAXBContext createContext() {
@@ -65,17 +72,153 @@ public final class RobotProgramXml {
         }
     }
 
-    /** Writes the program, validated against the schema. */
+    /**
+     * Writes the program, valid against the schema. The binding classes are generated from the
+     * schema, so the structure, the enumerations and the fixed values cannot be wrong, and
+     * {@link RobotProgram} refuses null names; what is left, the {@code FiniteDouble} range, at
+     * least one joint and the integer ranges, is checked here instead of validating the whole
+     * document while it is written (which cost a third of {@code fresa robot}'s XML time).
+     * Tests validate the written file with the schema.
+     *
+     * @throws IOException when the program cannot be written valid, e.g. a NaN joint value
+     */
     public static void write(RobotProgram p, RapidWriter.ArmGeometry arm, OutputStream out) throws IOException {
+        RobotProgramType x = toXml(p, arm);
+        String invalid = invalidity(x);
+        if (invalid != null) {
+            throw new IOException("cannot write the robot program XML: " + invalid);
+        }
+        if (plainStrings(x)) {
+            Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
+            writeDirect(x, w);
+            w.flush();
+        } else {
+            marshal(x, out);
+        }
+    }
+
+    /** The document as the binding writes it (formatted, UTF-8). */
+    static void marshal(RobotProgramType x, OutputStream out) throws IOException {
         try {
-            Marshaller m = CONTEXT.createMarshaller();
+            Marshaller m = Binding.CONTEXT.createMarshaller();
             m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, Boolean.TRUE);
             m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
-            m.setSchema(SCHEMA);
-            m.marshal(new ObjectFactory().createRobotProgram(toXml(p, arm)), out);
+            m.marshal(new ObjectFactory().createRobotProgram(x), out);
         } catch (JAXBException e) {
             throw new IOException("cannot write the robot program XML: " + e.getMessage(), e);
         }
+    }
+
+    /**
+     * Whether every text of the document is printable ASCII that needs no escaping: then
+     * {@link #writeDirect} writes the bytes the binding would; anything else goes through the
+     * binding, whose escaping is the reference.
+     */
+    static boolean plainStrings(RobotProgramType x) {
+        if (!plain(x.getName()) || !plain(x.getResource().getRobotName()) || !plain(x.getActivityList().getTask())) {
+            return false;
+        }
+        for (JointDefinitionType d : x.getResource().getJointDefinition()) {
+            if (!plain(d.getJointName())) {
+                return false;
+            }
+        }
+        for (ActivityType a : x.getActivityList().getActivity()) {
+            if (!plain(a.getWorkingstep()) || !plain(a.getRole()) || !plain(a.getActivityName())
+                    || !plain(a.getMotionType()) || !plain(a.getCartesianTarget().getConfig())) {
+                return false;
+            }
+            for (JointValueType v : a.getJointTarget().getJoint()) {
+                if (!plain(v.getJointName())) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static boolean plain(String s) {
+        if (s == null) {
+            return false;
+        }
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (c < 0x20 || c > 0x7e || c == '&' || c == '<' || c == '>' || c == '"') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The binding's formatted output written straight from the document: in a fresh JVM the
+     * binding's set-up and marshalling of example 2's 8.8 MB took most of {@code fresa robot}'s
+     * XML time. Same bytes (a test compares them): 4-space indent, schema order, doubles as
+     * {@link String#valueOf(double)} (the binding's xs:double), only for plain strings.
+     */
+    static void writeDirect(RobotProgramType x, Writer w) throws IOException {
+        w.write("<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n");
+        w.write("<RobotProgram xmlns=\"urn:fresa:robot-program:1\" version=\"" + x.getVersion() + "\" name=\""
+                + x.getName() + "\">\n");
+        w.write("    <Resource RobotName=\"" + x.getResource().getRobotName() + "\">\n");
+        for (JointDefinitionType d : x.getResource().getJointDefinition()) {
+            w.write("        <JointDefinition JointName=\"" + d.getJointName() + "\" JointType=\"" + d.getJointType().value()
+                    + "\" Units=\"" + d.getUnits().value() + "\" DOFNumber=\"" + d.getDOFNumber() + "\" Min=\""
+                    + d.getMin() + "\" Max=\"" + d.getMax() + "\"/>\n");
+        }
+        w.write("    </Resource>\n");
+        List<ActivityType> activities = x.getActivityList().getActivity();
+        if (activities.isEmpty()) {
+            w.write("    <ActivityList Task=\"" + x.getActivityList().getTask() + "\"/>\n");
+        } else {
+            w.write("    <ActivityList Task=\"" + x.getActivityList().getTask() + "\">\n");
+            StringBuilder sb = new StringBuilder(2048);
+            for (ActivityType a : activities) {
+                sb.setLength(0);
+                activity(a, sb);
+                w.append(sb);
+            }
+            w.write("    </ActivityList>\n");
+        }
+        w.write("</RobotProgram>\n");
+    }
+
+    private static void activity(ActivityType a, StringBuilder sb) {
+        sb.append("        <Activity ActivityType=\"").append(a.getActivityType()).append("\" Index=\"")
+                .append(a.getIndex()).append("\" Workingstep=\"").append(a.getWorkingstep()).append("\" Role=\"")
+                .append(a.getRole()).append("\">\n");
+        sb.append("            <ActivityName>").append(a.getActivityName()).append("</ActivityName>\n");
+        sb.append("            <MotionType>").append(a.getMotionType()).append("</MotionType>\n");
+        sb.append("            <JointTarget>\n");
+        for (JointValueType v : a.getJointTarget().getJoint()) {
+            sb.append("                <Joint JointName=\"").append(v.getJointName()).append("\" JointType=\"")
+                    .append(v.getJointType().value()).append("\" Units=\"").append(v.getUnits().value())
+                    .append("\" DOFNumber=\"").append(v.getDOFNumber()).append("\">\n");
+            sb.append("                    <JointValue>").append(v.getJointValue()).append("</JointValue>\n");
+            sb.append("                </Joint>\n");
+        }
+        sb.append("            </JointTarget>\n");
+        CartesianTargetType c = a.getCartesianTarget();
+        CartesianTargetType.Position pos = c.getPosition();
+        sb.append("            <CartesianTarget>\n");
+        sb.append("                <Position X=\"").append(pos.getX()).append("\" Y=\"").append(pos.getY())
+                .append("\" Z=\"").append(pos.getZ()).append("\" Units=\"").append(pos.getUnits()).append("\"/>\n");
+        CartesianTargetType.Orientation o = c.getOrientation();
+        sb.append("                <Orientation Q1=\"").append(o.getQ1()).append("\" Q2=\"").append(o.getQ2())
+                .append("\" Q3=\"").append(o.getQ3()).append("\" Q4=\"").append(o.getQ4()).append("\" Roll=\"")
+                .append(o.getRoll()).append("\" Pitch=\"").append(o.getPitch()).append("\" Yaw=\"").append(o.getYaw())
+                .append("\" Units=\"").append(o.getUnits()).append("\"/>\n");
+        sb.append("                <Config>").append(c.getConfig()).append("</Config>\n");
+        sb.append("            </CartesianTarget>\n");
+        MoveAttributesType mv = a.getMoveAttributes();
+        sb.append("            <MoveAttributes>\n");
+        sb.append("                <MotionBasis Criterion=\"").append(mv.getMotionBasis().getCriterion())
+                .append("\" Units=\"").append(mv.getMotionBasis().getUnits()).append("\">")
+                .append(mv.getMotionBasis().getValue()).append("</MotionBasis>\n");
+        sb.append("                <Rounding Units=\"").append(mv.getRounding().getUnits()).append("\">")
+                .append(mv.getRounding().getValue()).append("</Rounding>\n");
+        sb.append("            </MoveAttributes>\n");
+        sb.append("        </Activity>\n");
     }
 
     /**
@@ -86,8 +229,8 @@ public final class RobotProgramXml {
     public static RobotProgram read(Path file) throws CamInputException {
         String name = file.toString();
         try (InputStream in = Files.newInputStream(file)) {
-            Unmarshaller u = CONTEXT.createUnmarshaller();
-            u.setSchema(SCHEMA);
+            Unmarshaller u = Binding.CONTEXT.createUnmarshaller();
+            u.setSchema(Validation.SCHEMA);
             JAXBElement<RobotProgramType> root = u.unmarshal(SafeXml.source(in, file), RobotProgramType.class);
             try {
                 return fromXml(root.getValue());
@@ -107,6 +250,45 @@ public final class RobotProgramXml {
         } catch (JAXBException | SAXException | ParserConfigurationException e) {
             throw new CamInputException(name, "not a robot program: " + e.getMessage());
         }
+    }
+
+    /** What makes the document invalid against the schema beyond the binding's types, or null. */
+    static String invalidity(RobotProgramType x) {
+        List<JointDefinitionType> defs = x.getResource().getJointDefinition();
+        if (defs.isEmpty()) {
+            return "a robot program needs at least one joint";
+        }
+        for (JointDefinitionType d : defs) {
+            if (!finite(d.getMin()) || !finite(d.getMax())) {
+                return "joint " + d.getJointName() + " has the limits " + d.getMin() + ", " + d.getMax();
+            }
+        }
+        for (ActivityType a : x.getActivityList().getActivity()) {
+            if (a.getIndex().signum() < 0) {
+                return "motion index " + a.getIndex() + " is negative";
+            }
+            for (JointValueType v : a.getJointTarget().getJoint()) {
+                if (!finite(v.getJointValue())) {
+                    return "motion " + a.getIndex() + " has the joint value " + v.getJointValue();
+                }
+            }
+            CartesianTargetType.Position pos = a.getCartesianTarget().getPosition();
+            CartesianTargetType.Orientation o = a.getCartesianTarget().getOrientation();
+            MoveAttributesType mv = a.getMoveAttributes();
+            double[] numbers = {pos.getX(), pos.getY(), pos.getZ(), o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4(),
+                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue()};
+            for (double v : numbers) {
+                if (!finite(v)) {
+                    return "motion " + a.getIndex() + " has the number " + v + " in its target or move attributes";
+                }
+            }
+        }
+        return null;
+    }
+
+    /** The schema's FiniteDouble: -1e300 to 1e300, which NaN is not in. */
+    private static boolean finite(double v) {
+        return v >= -1e300 && v <= 1e300;
     }
 
     static RobotProgramType toXml(RobotProgram p, RapidWriter.ArmGeometry arm) {

@@ -31,6 +31,8 @@ public final class RobotService {
     /** The formats {@code --formats} accepts. */
     public static final Set<String> FORMATS = Set.of("csv", "xml", "rapid", "krl", "png");
 
+    private static final java.util.concurrent.atomic.AtomicInteger THREADS = new java.util.concurrent.atomic.AtomicInteger();
+
     private RobotService() {
     }
 
@@ -67,21 +69,17 @@ public final class RobotService {
 
     /**
      * Reads the inputs, solves and writes every file; see {@link RobotTrajectoryService#write}.
-     * The files are rendered in parallel (one thread per core, at most 4), and the XML binding is
-     * set up on one of those threads while the toolpaths are planned and solved.
+     * The files are rendered in parallel (one thread per core, at most 4).
      */
     public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(4,
                 Runtime.getRuntime().availableProcessors())), r -> {
-                    Thread t = new Thread(r, "fresa-output");
+                    Thread t = new Thread(r, "fresa-output-" + THREADS.incrementAndGet());
                     t.setDaemon(true);
                     return t;
                 });
         try {
-            if (s.formats().contains("xml")) {
-                pool.submit(RobotProgramXml::prepare);
-            }
             return run(s, out, progress, pool);
         } finally {
             pool.shutdownNow();
@@ -90,15 +88,20 @@ public final class RobotService {
 
     private static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress, ExecutorService pool)
             throws CamInputException, IOException {
+        Timing.mark("start");
         Robot robot = RobotFiles.load(s.robot());
+        Timing.mark("robot loaded");
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
+        Timing.mark("part 21 read and bound");
         progress.progress(-1, "planning toolpaths");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        Timing.mark("toolpaths planned");
         Toolpath path = plan.toolpath();
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT);
         RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(req, progress);
+        Timing.mark("trajectory solved");
         out.create();
         TaskOutcome o;
         out.beginParallel(pool);
@@ -110,7 +113,9 @@ public final class RobotService {
             });
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
             o = RobotTrajectoryService.write(solved, name, out);
+            Timing.mark("files asked for");
             out.finishParallel();
+            Timing.mark("files written");
         } finally {
             out.abandonParallel();
         }

@@ -30,6 +30,9 @@ public final class ExactDecimal {
             return Long.toString((long) d);
         }
         String fast = fewDecimals(d);
+        if (fast == null) {
+            fast = shortest(d);
+        }
         return fast != null ? fast : byDigits(d);
     }
 
@@ -41,7 +44,7 @@ public final class ExactDecimal {
      * one digit fewer than {@code Double.toString} gives fails, no shorter one exists and the
      * search would keep {@code Double.toString}'s digits.
      */
-    private static String byDigits(double d) {
+    static String byDigits(double d) {
         String s = Double.toString(d);
         BigDecimal shortest = new BigDecimal(s);
         int n = shortest.precision();
@@ -160,6 +163,172 @@ public final class ExactDecimal {
             sb.append(digits, 0, digits.length() - k).append('.').append(digits, digits.length() - k, digits.length());
         }
         return sb.toString();
+    }
+
+    private static final long[] POW5 = new long[28];
+    private static final long[] POW10L = new long[19];
+
+    static {
+        POW5[0] = 1;
+        for (int i = 1; i < POW5.length; i++) {
+            POW5[i] = POW5[i - 1] * 5;
+        }
+        POW10L[0] = 1;
+        for (int i = 1; i < POW10L.length; i++) {
+            POW10L[i] = POW10L[i - 1] * 10;
+        }
+    }
+
+    /**
+     * {@link #byDigits}'s answer for 1e-7 <= |d| < 1e15 in exact integer arithmetic: in a cold
+     * JVM the BigDecimal digits, {@code Double.toString} and {@code Double.parseDouble} of the
+     * search cost more than the rest of the CSV writing together (and the JIT's time for them).
+     * The first 18 significant digits of the exact value (d = M 2^E, so d 10^j = M 5^j 2^(E+j),
+     * 128 bits) and whether anything nonzero follows give the candidates of p digits as
+     * byDigits cuts them; a candidate c 10^s reads back as d when it lies inside d's rounding
+     * interval, (M -+ 1/2) 2^E (M - 1/4 below a power of two), the ends included for an even M
+     * (the round-half-even of {@code Double.parseDouble}), compared exactly. Searching down
+     * from 17 digits (always enough) finds the fewest digits, as round-tripping is monotone in
+     * p. Null when the 18 digits cannot be formed (outside that range).
+     */
+    static String shortest(double d) {
+        double mag = Math.abs(d);
+        if (!(mag >= 1e-7 && mag < 1e15)) {
+            return null;
+        }
+        long bits = Double.doubleToRawLongBits(mag);
+        long m = (bits & 0x000F_FFFF_FFFF_FFFFL) | 0x0010_0000_0000_0000L;
+        int e = (int) (bits >>> 52) - 1075;
+        int k = (int) Math.floor(Math.log10(mag));
+        long c18 = -1;
+        boolean sticky = false;
+        for (int attempt = 0; attempt < 3; attempt++) {
+            int j = 17 - k;
+            if (j < 0 || j >= POW5.length) {
+                return null;
+            }
+            long hi = Math.multiplyHigh(m, POW5[j]);
+            long lo = m * POW5[j];
+            int shift = -(e + j);
+            if (shift < 0 || shift >= 128) {
+                return null;
+            }
+            long q;
+            if (shift == 0) {
+                sticky = false;
+                q = hi == 0 ? lo : -1;
+            } else if (shift < 64) {
+                sticky = (lo & ((1L << shift) - 1)) != 0;
+                q = (hi >>> shift) == 0 ? (lo >>> shift) | (hi << (64 - shift)) : -1;
+            } else {
+                sticky = lo != 0 || (shift > 64 && (hi & ((1L << (shift - 64)) - 1)) != 0);
+                q = hi >>> (shift - 64);
+            }
+            if (q < 0) {
+                k++;
+            } else if (q >= POW10L[18]) {
+                k++;
+            } else if (q < POW10L[17]) {
+                k--;
+            } else {
+                c18 = q;
+                break;
+            }
+        }
+        if (c18 < 0) {
+            return null;
+        }
+        boolean even = (m & 1) == 0;
+        // the interval's ends in units of 2^(E-2)
+        long lowQ = m == 0x0010_0000_0000_0000L ? 4 * m - 1 : 4 * m - 2;
+        long highQ = 4 * m + 2;
+        long bestC = -1;
+        int bestS = 0;
+        for (int p = 17; p >= 1; p--) {
+            long unit = POW10L[18 - p];
+            long down = c18 / unit;
+            long rest = c18 - down * unit;
+            boolean anyRest = rest != 0 || sticky;
+            boolean nearIsUp = 2 * rest > unit || (2 * rest == unit && (sticky || (down & 1) == 1));
+            long near = nearIsUp ? down + 1 : down;
+            long up = anyRest ? down + 1 : down;
+            int s = k - p + 1;
+            long found = -1;
+            if (readsBack(near, s, e, lowQ, highQ, even)) {
+                found = near;
+            } else if (readsBack(down, s, e, lowQ, highQ, even)) {
+                found = down;
+            } else if (readsBack(up, s, e, lowQ, highQ, even)) {
+                found = up;
+            }
+            if (found < 0) {
+                break;
+            }
+            bestC = found;
+            bestS = s;
+        }
+        if (bestC <= 0) {
+            return null;
+        }
+        while (bestC % 10 == 0) {
+            bestC /= 10;
+            bestS++;
+        }
+        if (bestS >= 0) {
+            return null;
+        }
+        return plain(d < 0, bestC, -bestS);
+    }
+
+    /** Whether c 10^s lies inside (lowQ, highQ) 2^(e-2), the ends included when even. */
+    private static boolean readsBack(long c, int s, int e, long lowQ, long highQ, boolean even) {
+        int lo = compare(c, s, lowQ, e - 2);
+        if (lo < 0 || (lo == 0 && !even)) {
+            return false;
+        }
+        int hi = compare(c, s, highQ, e - 2);
+        return hi < 0 || (hi == 0 && even);
+    }
+
+    /** The sign of c 10^s - q 2^b, exactly (c, q >= 0, |s| <= 27). */
+    private static int compare(long c, int s, long q, int b) {
+        // c 5^s 2^s against q 2^b; a negative s moves 5^-s to the right-hand side
+        long f = s >= 0 ? POW5[s] : 1;
+        long g = s >= 0 ? 1 : POW5[-s];
+        long lHi = Math.multiplyHigh(c, f);
+        long lLo = c * f;
+        long rHi = Math.multiplyHigh(q, g);
+        long rLo = q * g;
+        int diff = s - b;
+        if (diff >= 0) {
+            return shiftedCompare(lHi, lLo, diff, rHi, rLo);
+        }
+        return -shiftedCompare(rHi, rLo, -diff, lHi, lLo);
+    }
+
+    /** The sign of (aHi aLo) 2^n - (bHi bLo), unsigned 128-bit values below 2^126. */
+    private static int shiftedCompare(long aHi, long aLo, int n, long bHi, long bLo) {
+        if (aHi == 0 && aLo == 0) {
+            return (bHi | bLo) == 0 ? 0 : -1;
+        }
+        int len = aHi != 0 ? 128 - Long.numberOfLeadingZeros(aHi) : 64 - Long.numberOfLeadingZeros(aLo);
+        if (len + n > 127) {
+            return 1;
+        }
+        long hi;
+        long lo;
+        if (n == 0) {
+            hi = aHi;
+            lo = aLo;
+        } else if (n < 64) {
+            hi = (aHi << n) | (aLo >>> (64 - n));
+            lo = aLo << n;
+        } else {
+            hi = aLo << (n - 64);
+            lo = 0;
+        }
+        int c = Long.compareUnsigned(hi, bHi);
+        return c != 0 ? c : Long.compareUnsigned(lo, bLo);
     }
 
     /** The reference: a binary search over the number of significant digits, with BigDecimal. */

@@ -75,4 +75,55 @@ class RobotProgramXmlTest {
         assertTrue(e.getMessage().contains("6 joint values for 2 joints"), e.getMessage());
         assertTrue(e.getMessage().contains("two-joints-six-values.xml"), e.getMessage());
     }
+
+    @Test
+    void theWrittenFileIsValidAgainstTheSchema() throws Exception {
+        // write() no longer validates as it goes (issue 11): the file must still be valid
+        javax.xml.validation.Validator v = SafeXml.schema("/schemas/robot-program.xsd").newValidator();
+        v.validate(new javax.xml.transform.stream.StreamSource(writeSample().toFile()));
+    }
+
+    @Test
+    void aNumberOutsideTheSchemaIsRefusedBeforeAnythingIsWritten() {
+        RobotProgram p = RobotProgramsForTest.sample();
+        java.util.List<RobotProgram.Motion> motions = new java.util.ArrayList<>(p.motions());
+        RobotProgram.Motion m = motions.get(1);
+        java.util.List<Double> joints = new java.util.ArrayList<>(m.jointValues());
+        joints.set(2, Double.NaN);
+        motions.set(1, new RobotProgram.Motion(m.index(), m.workingstep(), m.type(), m.role(), joints, m.target(),
+                m.speedMmPerS(), m.zoneMm()));
+        RobotProgram bad = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.IOException e = assertThrows(java.io.IOException.class,
+                () -> RobotProgramXml.write(bad, RobotProgramsForTest.FRONT_UPPER, out));
+        assertTrue(e.getMessage().contains("NaN"), e.getMessage());
+        assertEquals(0, out.size());
+    }
+
+    @Test
+    void theDirectWriterWritesTheBindingsBytes() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        for (RobotProgram q : java.util.List.of(p, new RobotProgram("empty", p.robotName(), p.joints(), java.util.List.of()))) {
+            var x = RobotProgramXml.toXml(q, RobotProgramsForTest.FRONT_UPPER);
+            assertTrue(RobotProgramXml.plainStrings(x));
+            java.io.ByteArrayOutputStream byBinding = new java.io.ByteArrayOutputStream();
+            RobotProgramXml.marshal(x, byBinding);
+            java.io.ByteArrayOutputStream direct = new java.io.ByteArrayOutputStream();
+            RobotProgramXml.write(q, RobotProgramsForTest.FRONT_UPPER, direct);
+            assertEquals(byBinding.toString(java.nio.charset.StandardCharsets.UTF_8),
+                    direct.toString(java.nio.charset.StandardCharsets.UTF_8));
+        }
+    }
+
+    @Test
+    void namesThatNeedEscapingGoThroughTheBinding() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        RobotProgram odd = new RobotProgram("a<b & \"c\" \u00e9", p.robotName(), p.joints(), p.motions());
+        assertTrue(!RobotProgramXml.plainStrings(RobotProgramXml.toXml(odd, RobotProgramsForTest.FRONT_UPPER)));
+        Path f = dir.resolve("odd.xml");
+        try (OutputStream out = Files.newOutputStream(f)) {
+            RobotProgramXml.write(odd, RobotProgramsForTest.FRONT_UPPER, out);
+        }
+        assertEquals(odd.programName(), RobotProgramXml.read(f).programName());
+    }
 }
