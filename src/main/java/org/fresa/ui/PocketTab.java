@@ -42,6 +42,7 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setText(s.contour().toString());
+        contour.setName("pocket-contour");
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -75,8 +76,10 @@ final class PocketTab implements ModuleTab {
         form.add(direction);
         JButton run = new JButton("Compute");
         run.setMnemonic('C');
+        run.setName("pocket-compute");
         run.addActionListener(e -> compute());
         form.add(run);
+        status.setName("pocket-status");
         form.add(status);
         report.setEditable(false);
         nc.setEditable(false);
