@@ -32,9 +32,11 @@ import org.junit.jupiter.api.Test;
  * <p>Not recorded, because it is not the job's work: the window's realisation and first paint,
  * the look and feel's start-up and the first paint of the job's tab (all done in
  * {@link #openWindow} and before {@link EventThreadWatchdog#record}), and the job's setup when it
- * is only a job file opened through the model (the tab's fields filled, not a computation). A GC
- * pause that covers an event's overrun is not counted (see {@link EventThreadWatchdog}): on a
- * loaded 2-core machine a collection alone can take 50 ms and the application does not ask for it.
+ * is only a job file opened through the model (the tab's fields filled, not a computation). An
+ * event's GC pauses, the time its thread waited for a core and the time it waited for the X server
+ * are not counted (see {@link EventThreadWatchdog}): on a loaded 2-core machine each alone can pass
+ * 50 ms and the application does not ask for them. The report, target/edt-responsiveness.txt, gives every slow
+ * event with its wall time, both of these and its CPU time, and where the event thread was.
  */
 class EventThreadResponsivenessGuiTest extends WindowGuiTest {
 
@@ -95,14 +97,15 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     @Test
     void aPocketIsComputed() {
         window.tabbedPane("tabs").selectTab("Pocket");
-        window.textBox("pocket-contour").deleteText().enterText(Path.of("samples/pocket/cavity02.dad")
-                .toAbsolutePath().toString());
+        // set, not typed: the robot's key map under Xvfb turns '/' into '&'
+        window.textBox("pocket-contour").setText(Path.of("samples/pocket/cavity02.dad").toAbsolutePath().toString());
         settle();
         record("pocket of samples/pocket/cavity02.dad", () -> {
             window.button("pocket-compute").click();
-            waitFor("the pocket is computed", () -> window.label("pocket-status").target().getText()
-                    .equals("done"));
+            waitFor("the pocket is computed", () -> !List.of(" ", "computing").contains(
+                    window.label("pocket-status").target().getText()));
         });
+        window.label("pocket-status").requireText("done");
     }
 
     @Test
@@ -152,8 +155,11 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
         List<EventThreadWatchdog.Slow> over = slow.stream().filter(s -> s.overrunNotCoveredByGc(THRESHOLD_MS))
                 .toList();
-        String line = String.format(Locale.ROOT, "%s: worst event-thread task %.1f ms (%s); %d over %.0f ms, "
-                + "%d of them not covered by GC%n", job, watchdog.worstMs(), watchdog.worstEvent(), slow.size(),
+        double worstNet = slow.stream().mapToDouble(EventThreadWatchdog.Slow::chargedMs).max()
+                .orElse(watchdog.worstMs());
+        String line = String.format(Locale.ROOT, "%s: worst event-thread task %.1f ms wall (%s), %.1f ms charged "
+                + "to the application; %d over %.0f ms wall, %d of them charged over it%n", job,
+                watchdog.worstMs(), watchdog.worstEvent(), Math.min(worstNet, watchdog.worstMs()), slow.size(),
                 THRESHOLD_MS, over.size());
         StringBuilder sb = new StringBuilder(line);
         slow.forEach(s -> sb.append("  ").append(s).append('\n'));
