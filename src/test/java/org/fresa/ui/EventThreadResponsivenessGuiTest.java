@@ -52,6 +52,10 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
 
     @BeforeEach
     void watch() throws Exception {
+        // a -Dtest selection also runs this in the low-memory execution (-Xmx512m), which is for
+        // the *LowMemoryTest readers; the window's jobs need the default execution's heap
+        Assumptions.assumeTrue(Runtime.getRuntime().maxMemory() > 1024L * 1024 * 1024,
+                "runs in the default surefire execution's heap");
         watchdog = EventThreadWatchdog.install(THRESHOLD_MS);
     }
 
@@ -153,7 +157,7 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         watchdog.pause();
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
-        List<EventThreadWatchdog.Slow> over = slow.stream().filter(s -> s.overrunNotCoveredByGc(THRESHOLD_MS))
+        List<EventThreadWatchdog.Slow> over = slow.stream().filter(s -> s.isChargedOver(THRESHOLD_MS))
                 .toList();
         double worstNet = slow.stream().mapToDouble(EventThreadWatchdog.Slow::chargedMs).max()
                 .orElse(watchdog.worstMs());

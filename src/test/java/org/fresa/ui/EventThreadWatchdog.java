@@ -54,7 +54,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         }
 
         /** Whether the event is over the threshold even without what is not the application's. */
-        boolean overrunNotCoveredByGc(double thresholdMs) {
+        boolean isChargedOver(double thresholdMs) {
             return ms - gcMs > thresholdMs && chargedMs() > thresholdMs;
         }
 
@@ -259,7 +259,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     /** The slow events the GC does not explain. */
     List<Slow> overruns() {
-        return slowEvents().stream().filter(s -> s.overrunNotCoveredByGc(thresholdMs)).collect(Collectors.toList());
+        return slowEvents().stream().filter(s -> s.isChargedOver(thresholdMs)).collect(Collectors.toList());
     }
 
     /** The longest event recorded, in ms, GC included (the figure docs/performance.md reports). */
