@@ -159,10 +159,20 @@ final class CellView extends JComponent {
             draw(g, e.get(0), e.get(1), w, h);
         }
         g.setStroke(new BasicStroke(1.3f));
+        // one path per colour: thousands of separate line draws cost more than an event may take
+        java.util.Map<TrajectoryPoint.Status, java.awt.geom.Path2D> byStatus = new java.util.EnumMap<>(
+                TrajectoryPoint.Status.class);
         for (CellScene.PathSegment s : sc.path()) {
-            g.setColor(colour(s.status()));
-            draw(g, s.from(), s.to(), w, h);
+            java.awt.geom.Path2D path = byStatus.computeIfAbsent(s.status(), k -> new java.awt.geom.Path2D.Double());
+            double[] a = camera.project(s.from(), w, h);
+            double[] b = camera.project(s.to(), w, h);
+            path.moveTo(a[0], a[1]);
+            path.lineTo(b[0], b[1]);
         }
+        byStatus.forEach((status, path) -> {
+            g.setColor(colour(status));
+            g.draw(path);
+        });
         paintRobot(g, sc, w, h);
         List<java.awt.Rectangle> labels = new ArrayList<>();
         for (CellScene.Frame f : sc.frames()) {

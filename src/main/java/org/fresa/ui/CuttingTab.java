@@ -198,13 +198,23 @@ final class CuttingTab implements ModuleTab {
             totals.setText(e.getMessage());
             return;
         }
-        ctx.tasks().start("Cutting", progress -> CuttingService.compute(s, progress), r -> {
-            vm.setResult(r);
-            plot.show(vm.scene());
-            program.setText(vm.program());
+        ctx.tasks().start("Cutting", progress -> {
+            CuttingService.Result r = CuttingService.compute(s, progress);
+            progress.progress(-1, "preparing the plot and the program text");
+            return new Shown(r, CuttingViewModel.sceneOf(r), CuttingViewModel.totalsOf(r),
+                    TextDocuments.of(r.program()));
+        }, shown -> {
+            vm.setResult(shown.result());
+            plot.show(shown.scene());
+            program.setDocument(shown.program());
             program.setCaretPosition(0);
-            totals.setText(vm.totals());
+            totals.setText(shown.totals());
         });
+    }
+
+    /** A result with what the tab shows of it, prepared off the event thread. */
+    private record Shown(CuttingService.Result result, org.fresa.chart.PlotScene scene, String totals,
+            javax.swing.text.Document program) {
     }
 
     @Override

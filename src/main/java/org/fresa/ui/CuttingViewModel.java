@@ -204,9 +204,11 @@ public final class CuttingViewModel {
 
     /** Parts filled, holes, open chains in the warning style, cuts, leads, rapids and order numbers. */
     public PlotScene scene() {
-        if (result == null) {
-            return PlotScene.empty("Cutting");
-        }
+        return result == null ? PlotScene.empty("Cutting") : sceneOf(result);
+    }
+
+    /** The plot of a result; touches no view-model state, so the tab builds it off the event thread. */
+    public static PlotScene sceneOf(CuttingService.Result result) {
         CutPlan p = result.plan();
         List<Curve2> parts = new ArrayList<>();
         p.outers().forEach(c -> parts.addAll(c.curves()));
@@ -261,9 +263,11 @@ public final class CuttingViewModel {
 
     /** Contours, pierces, cut and rapid lengths, the estimated time and the warnings, a few lines. */
     public String totals() {
-        if (result == null) {
-            return "No drawing cut yet.";
-        }
+        return result == null ? "No drawing cut yet." : totalsOf(result);
+    }
+
+    /** The totals of a result (any thread). */
+    public static String totalsOf(CuttingService.Result result) {
         var m = CuttingService.summary(result);
         List<?> warnings = (List<?>) m.get("warnings");
         StringBuilder b = new StringBuilder(String.format(Locale.ROOT,

@@ -12,7 +12,6 @@ import org.fresa.chart.ChartFiles;
 import org.fresa.chart.PlotScene;
 import org.fresa.chart.ToolpathChart;
 import org.fresa.geom.Box2;
-import org.jfree.chart.ChartPanel;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.plot.XYPlot;
 
@@ -24,22 +23,27 @@ public final class PlotPanel extends JPanel {
 
     private static final long serialVersionUID = 1L;
 
-    private final ChartPanel chartPanel;
+    private final OffThreadChartPanel chartPanel;
     private transient PlotScene scene = PlotScene.empty("");
-    private transient JFreeChart chart;
+    // counts the scenes shown: the picture's key, cheaper than comparing two big scenes
+    private long sceneVersion;
+    // set when a fit had to guess the data area because nothing was drawn yet at this size
+    private boolean refitWhenDrawn;
+    // the event thread's chart holds only the axes: the scene is drawn off the event thread
+    private final transient JFreeChart chart = ToolpathChart.create(PlotScene.empty(""));
 
     public PlotPanel() {
         super(new BorderLayout());
-        chart = ToolpathChart.create(scene);
-        chartPanel = new ChartPanel(chart, false, false, false, true, false);
+        chartPanel = new OffThreadChartPanel(chart, this::picture);
         chartPanel.setMouseWheelEnabled(true);
+        chartPanel.onDrawn(() -> {
+            if (refitWhenDrawn) {
+                fit();
+            }
+        });
         chartPanel.setMouseZoomable(true);
         chartPanel.setFocusable(true);
         chartPanel.setName("plot");
-        chartPanel.setMinimumDrawWidth(10);
-        chartPanel.setMinimumDrawHeight(10);
-        chartPanel.setMaximumDrawWidth(4000);
-        chartPanel.setMaximumDrawHeight(3000);
         add(chartPanel, BorderLayout.CENTER);
         chartPanel.addComponentListener(new ComponentAdapter() {
             @Override
@@ -93,12 +97,44 @@ public final class PlotPanel extends JPanel {
         return scene;
     }
 
+    /** The scene as it is shown now, to be drawn off the event thread. */
+    private OffThreadChartPanel.Picture picture() {
+        PlotScene s = scene;
+        XYPlot xy = chart.getXYPlot();
+        org.jfree.data.Range x = xy.getDomainAxis().getRange();
+        org.jfree.data.Range y = xy.getRangeAxis().getRange();
+        java.util.List<Object> key = java.util.List.of(sceneVersion, x, y);
+        return new OffThreadChartPanel.Picture() {
+            @Override
+            public Object key() {
+                return key;
+            }
+
+            @Override
+            public JFreeChart build() {
+                return chartOf(s, x, y);
+            }
+        };
+    }
+
+    private static JFreeChart chartOf(PlotScene s, org.jfree.data.Range x, org.jfree.data.Range y) {
+        JFreeChart c = ToolpathChart.create(s);
+        c.getXYPlot().getDomainAxis().setRange(x);
+        c.getXYPlot().getRangeAxis().setRange(y);
+        return c;
+    }
+
+    /** Whether what is on screen is the scene and view shown last (tests wait for it). */
+    boolean isDrawn() {
+        return chartPanel.isUpToDate();
+    }
+
     /** Shows a new scene, fitted to the panel. Call on the event thread. */
     public void show(PlotScene s) {
         this.scene = s;
-        this.chart = ToolpathChart.create(s);
-        chartPanel.setChart(chart);
+        sceneVersion++;
         fit();
+        chartPanel.repaint();
     }
 
     /**
@@ -106,14 +142,9 @@ public final class PlotPanel extends JPanel {
      * Call on the event thread.
      */
     public void update(PlotScene s) {
-        XYPlot old = chart.getXYPlot();
-        org.jfree.data.Range x = old.getDomainAxis().getRange();
-        org.jfree.data.Range y = old.getRangeAxis().getRange();
         this.scene = s;
-        this.chart = ToolpathChart.create(s);
-        chartPanel.setChart(chart);
-        chart.getXYPlot().getDomainAxis().setRange(x);
-        chart.getXYPlot().getRangeAxis().setRange(y);
+        sceneVersion++;
+        chartPanel.repaint();
     }
 
     /** Fits the scene into the view with equal millimetres per pixel on both axes. */
@@ -121,6 +152,7 @@ public final class PlotPanel extends JPanel {
         XYPlot plot = chart.getXYPlot();
         Box2 b = scene.bounds().orElse(new Box2(0, 0, 100, 100));
         java.awt.geom.Rectangle2D area = chartPanel.getScreenDataArea();
+        refitWhenDrawn = area.getWidth() <= 10 || area.getHeight() <= 10;
         double w = area.getWidth() > 10 ? area.getWidth() : Math.max(100, getWidth() - 80);
         double h = area.getHeight() > 10 ? area.getHeight() : Math.max(100, getHeight() - 60);
         double pad = 0.05 * Math.max(1e-3, Math.max(b.width(), b.height()));
@@ -137,11 +169,13 @@ public final class PlotPanel extends JPanel {
     public void export(Path file) throws IOException {
         int w = Math.max(800, chartPanel.getWidth());
         int h = Math.max(600, chartPanel.getHeight());
+        XYPlot xy = chart.getXYPlot();
+        JFreeChart full = chartOf(scene, xy.getDomainAxis().getRange(), xy.getRangeAxis().getRange());
         try (OutputStream out = Files.newOutputStream(file)) {
             if (file.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".svg")) {
-                ChartFiles.writeSvg(chart, w, h, out);
+                ChartFiles.writeSvg(full, w, h, out);
             } else {
-                ChartFiles.writePng(chart, w, h, out);
+                ChartFiles.writePng(full, w, h, out);
             }
         }
     }

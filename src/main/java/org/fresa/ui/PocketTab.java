@@ -20,6 +20,7 @@ import org.fresa.job.JobSettings.PocketSettings;
 /** The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC text. */
 final class PocketTab implements ModuleTab {
 
+    private final AppContext ctx;
     private final PocketViewModel model = new PocketViewModel();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
@@ -31,7 +32,8 @@ final class PocketTab implements ModuleTab {
     private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
     private final JLabel status = new JLabel(" ");
 
-    PocketTab() {
+    PocketTab(AppContext ctx) {
+        this.ctx = ctx;
         String[] names = {"Tool diameter (mm)", "Cut fraction", "Finish fraction", "Z top (mm)", "Z bottom (mm)",
             "Max depth per pass (mm)", "Spindle (rpm)", "Feed (mm/min)", "Finish feed (mm/min)"};
         PocketSettings s = model.settings();
@@ -42,6 +44,7 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setText(s.contour().toString());
+        contour.setName("pocket-contour");
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -75,8 +78,10 @@ final class PocketTab implements ModuleTab {
         form.add(direction);
         JButton run = new JButton("Compute");
         run.setMnemonic('C');
+        run.setName("pocket-compute");
         run.addActionListener(e -> compute());
         form.add(run);
+        status.setName("pocket-status");
         form.add(status);
         report.setEditable(false);
         nc.setEditable(false);
@@ -103,11 +108,26 @@ final class PocketTab implements ModuleTab {
             status.setText("not a number: " + ex.getMessage());
             return;
         }
-        model.compute();
+        PocketSettings settings = model.settings();
+        status.setText("computing");
+        ctx.tasks().start("Pocket", progress -> {
+            PocketViewModel.Outcome o = PocketViewModel.outcome(settings);
+            return new Shown(o, o.result().map(r -> TextDocuments.of(r.report())).orElse(null),
+                    o.result().map(r -> TextDocuments.of(r.nc())).orElse(null));
+        }, this::show);
+    }
+
+    /** An outcome with its texts as documents, filled off the event thread. */
+    private record Shown(PocketViewModel.Outcome outcome, javax.swing.text.Document report,
+            javax.swing.text.Document nc) {
+    }
+
+    private void show(Shown shown) {
+        model.show(shown.outcome());
         Optional<PocketViewModel.Result> r = model.result();
         if (r.isPresent()) {
-            report.setText(r.get().report());
-            nc.setText(r.get().nc());
+            report.setDocument(shown.report());
+            nc.setDocument(shown.nc());
             nc.setCaretPosition(0);
             plot.show(r.get().scene());
             status.setText("done");

@@ -61,27 +61,40 @@ public final class PocketViewModel {
     }
 
     /** Recomputes from the settings; on bad input keeps the message and clears the result. */
+    /** The outcome of one computation: a result or the reason there is none. */
+    public record Outcome(Optional<Result> result, Optional<String> error) {
+    }
+
+    /** Computes with the current settings (the tab does it in the background with {@link #outcome}). */
     public void compute() {
+        show(outcome(settings));
+    }
+
+    /** Takes an outcome computed for the current settings. */
+    public void show(Outcome o) {
+        result = o.result();
+        error = o.error();
+    }
+
+    /** Plans the pocket of these settings: touches no view-model state, so any thread may call it. */
+    public static Outcome outcome(PocketSettings settings) {
         try {
             String name = settings.contour().getFileName().toString();
             if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
-                    result = Optional.of(new Result(regionScene(contours, rp), regionReport(contours, rp),
-                            PocketService.regionProgram(rp, settings.post(), name)));
-                    error = Optional.empty();
-                    return;
+                    return new Outcome(Optional.of(new Result(regionScene(contours, rp), regionReport(contours, rp),
+                            PocketService.regionProgram(rp, settings.post(), name))), Optional.empty());
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
                     settings.climb());
-            result = Optional.of(new Result(scene(plan, settings.climb()), report(plan), nc));
-            error = Optional.empty();
+            return new Outcome(Optional.of(new Result(scene(plan, settings.climb()), report(plan), nc)),
+                    Optional.empty());
         } catch (CamInputException | IOException | ToolTooLargeException | IllegalArgumentException e) {
-            result = Optional.empty();
-            error = Optional.of(e.getMessage());
+            return new Outcome(Optional.empty(), Optional.of(String.valueOf(e.getMessage())));
         }
     }
 

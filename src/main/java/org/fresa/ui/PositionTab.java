@@ -20,17 +20,12 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
-import java.awt.BasicStroke;
-import org.fresa.chart.RobotCharts;
 import org.fresa.job.JobSettings;
 import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.CamInputException;
-import org.jfree.chart.ChartPanel;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.plot.CombinedDomainXYPlot;
 import org.jfree.chart.plot.ValueMarker;
-import org.jfree.chart.plot.XYPlot;
 
 /**
  * The Position tab: where the table stands in front of the robot and the workpiece on the table,
@@ -58,10 +53,12 @@ final class PositionTab implements ModuleTab {
     private final JTextArea summary = new JTextArea(8, 26);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
-    private final ChartPanel jointsChart = chartPanel();
-    private final ChartPanel errorChart = chartPanel();
-    private final transient ValueMarker jointsMarker = marker();
-    private final transient ValueMarker errorMarker = marker();
+    // the charts of the last result; the panels draw new ones off the event thread
+    private transient TrajectoryCharts charts;
+    private transient ValueMarker jointsMarker = new ValueMarker(1);
+    private transient ValueMarker errorMarker = new ValueMarker(1);
+    private final OffThreadChartPanel jointsChart = chartPanel(() -> picture(true));
+    private final OffThreadChartPanel errorChart = chartPanel(() -> picture(false));
     private boolean loading;
     private String drawnRobot = "";
 
@@ -271,67 +268,66 @@ final class PositionTab implements ModuleTab {
         ctx.model().setJob(vm.applyTo(ctx.model().job()).withTask(org.fresa.job.JobTask.ROBOT));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         java.util.List<String> formats = r.formats();
-        ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> PositionViewModel.compute(file,
-                r.robot(), r.robotTable(), r.tablePiece(), formats, progress), solved -> {
-                    vm.setResult(solved);
+        ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
+            RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
+                    r.tablePiece(), formats, progress);
+            progress.progress(-1, "preparing the plots");
+            TrajectoryCharts c = TrajectoryCharts.of(solved);
+            return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));
+        }, charted -> {
+                    RobotTrajectoryService.Solved solved = charted.solved();
+                    vm.setResult(solved, charted.scene());
                     String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
                     runs.set(new RobotRunModel.Run(solved, name));
+                    showCharts(charted.charts(), charted.joints(), charted.error());
                     showResult();
                 });
     }
 
-    private static ChartPanel chartPanel() {
-        ChartPanel p = new ChartPanel(null, false, false, false, true, false) {
-            private static final long serialVersionUID = 1L;
+    /** A solved trajectory with its charts, made off the event thread. */
+    private record Charted(RobotTrajectoryService.Solved solved, TrajectoryCharts charts,
+            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene) {
+    }
 
-            @Override
-            public void paintComponent(java.awt.Graphics g) {
-                super.paintComponent(g);
-                if (getChart() == null) {
-                    g.setColor(Color.GRAY);
-                    g.drawString("Press Compute: the plots of the trajectory appear here.", 16, 30);
-                }
-            }
-        };
-        p.setMinimumDrawWidth(10);
-        p.setMinimumDrawHeight(10);
-        p.setMaximumDrawWidth(4000);
-        p.setMaximumDrawHeight(3000);
+    private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
+        OffThreadChartPanel p = new OffThreadChartPanel(null, picture);
+        p.setPlaceholder("Press Compute: the plots of the trajectory appear here.");
         return p;
     }
 
-    private static ValueMarker marker() {
-        ValueMarker m = new ValueMarker(1, new Color(90, 90, 90), new BasicStroke(1.5f));
-        return m;
+    /** The joints (or error) chart as it is shown now: the last result with the replayed point. */
+    private OffThreadChartPanel.Picture picture(boolean joints) {
+        TrajectoryCharts c = charts;
+        if (c == null) {
+            return null;
+        }
+        double point = (joints ? jointsMarker : errorMarker).getValue();
+        java.util.List<Object> key = java.util.List.of(c, joints, point);
+        return new OffThreadChartPanel.Picture() {
+            @Override
+            public Object key() {
+                return key;
+            }
+
+            @Override
+            public JFreeChart build() {
+                return (joints ? c.joints(point) : c.errors(point)).chart();
+            }
+        };
     }
 
     /** The two plots of the result (joints with limits, error per axis), with the replayed point marked. */
-    private void showCharts() {
-        if (vm.result().isEmpty()) {
-            jointsChart.setChart(null);
-            errorChart.setChart(null);
-            return;
-        }
-        RobotTrajectoryService.Solved s = vm.result().get();
-        String robot = s.request().robot().name();
-        JFreeChart joints = RobotCharts.joints("Joint values, " + robot,
-                RobotTrajectoryService.jointSeries(s.request().robot(), s.result()));
-        if (joints.getPlot() instanceof CombinedDomainXYPlot c) {
-            for (Object sub : c.getSubplots()) {
-                ((XYPlot) sub).addDomainMarker(jointsMarker);
-            }
-        }
-        JFreeChart error = RobotCharts.positionErrors("Position error per axis, " + robot,
-                RobotTrajectoryService.positionErrorsMm(s.result()));
-        error.getXYPlot().addDomainMarker(errorMarker);
+    private void showCharts(TrajectoryCharts c, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error) {
+        charts = c;
+        jointsMarker = joints.marker();
+        errorMarker = error.marker();
         jointsMarker.setValue(vm.selected() + 1);
         errorMarker.setValue(vm.selected() + 1);
-        jointsChart.setChart(joints);
-        errorChart.setChart(error);
+        jointsChart.setChart(joints.chart());
+        errorChart.setChart(error.chart());
     }
 
     private void showResult() {
-        showCharts();
         summary.setText(String.join("\n", vm.summary()));
         replay.setMaximum(Math.max(0, vm.pointCount() - 1));
         replay.setValue(0);

@@ -162,6 +162,13 @@ final class PositionViewModel {
         selected = 0;
     }
 
+    /** A result with its scene at the first point, made by {@link #sceneOf} in the background. */
+    void setResult(RobotTrajectoryService.Solved s, CellScene atFirstPoint) {
+        setResult(s);
+        sceneCache = atFirstPoint;
+        sceneCacheKey = List.of(s, 0);
+    }
+
     Optional<RobotTrajectoryService.Solved> result() {
         return solved;
     }
@@ -234,6 +241,25 @@ final class PositionViewModel {
             return CellScene.of(robot, CellScene.homePose(robot), table, piece, Optional.empty(), List.of(), -1);
         }
         RobotTrajectoryService.Solved s = solved.get();
+        // every repaint asks: the scene of a long trajectory is worth keeping until the point changes
+        List<Object> key = List.of(s, selected);
+        if (sceneCache != null && sceneCacheKey.get(0) == s && sceneCacheKey.get(1).equals(selected)) {
+            return sceneCache;
+        }
+        sceneCache = solvedScene(s);
+        sceneCacheKey = key;
+        return sceneCache;
+    }
+
+    private CellScene sceneCache;
+    private List<Object> sceneCacheKey;
+
+    private CellScene solvedScene(RobotTrajectoryService.Solved s) {
+        return sceneOf(s, selected);
+    }
+
+    /** The 3D scene of a result at a point (any thread: the tab prepares the first one off the event thread). */
+    static CellScene sceneOf(RobotTrajectoryService.Solved s, int selected) {
         List<TrajectoryPoint> pts = s.result().points();
         double[] q = CellScene.homePose(s.request().robot());
         for (int i = Math.min(selected, pts.size() - 1); i >= 0; i--) {

@@ -61,6 +61,9 @@ final class StepNcTab implements ModuleTab {
     // the file shown, and the last one asked for (a failed read is not retried on every job change)
     private Path loadedFile;
     private Path requestedFile;
+    // the plot of the state a read leaves the tab in, drawn with the read: shown once, then dropped
+    private org.fresa.chart.PlotScene preparedPlot;
+    private List<String> preparedDetails;
 
     StepNcTab(AppContext ctx) {
         this.ctx = ctx;
@@ -74,6 +77,9 @@ final class StepNcTab implements ModuleTab {
 
         tree.setName("stepnc-tree");
         tree.setRootVisible(true);
+        // rows of one height: the tree then lays out only the rows in view, not all of them
+        tree.setRowHeight(tree.getFontMetrics(tree.getFont()).getHeight() + 4);
+        tree.setLargeModel(true);
         tree.addTreeSelectionListener(e -> selectionChanged());
         JLabel treeLabel = new JLabel("Workplans and workingsteps");
         treeLabel.setDisplayedMnemonic(KeyEvent.VK_W);
@@ -218,7 +224,8 @@ final class StepNcTab implements ModuleTab {
     }
 
     /** A program and its toolpaths, read and planned in one background task. */
-    private record Loaded(StepNcProgram program, ToolpathPlanner.Plan plan) {
+    private record Loaded(StepNcProgram program, ToolpathPlanner.Plan plan, org.fresa.job.CycleTime time,
+            DefaultTreeModel tree, org.fresa.chart.PlotScene firstPlot, List<String> firstDetails) {
     }
 
     void open(Path file) {
@@ -226,27 +233,40 @@ final class StepNcTab implements ModuleTab {
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
             StepNcProgram p = StepNcService.read(file, progress);
             progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
-            return new Loaded(p, ToolpathPlanner.plan(p, Tolerance.DEFAULT));
+            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+            // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
+            org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
+            // the first workingstep's plot, from a view model of this thread in the tab's first state
+            StepNcViewModel first = new StepNcViewModel();
+            first.load(p);
+            first.planned(plan, time);
+            return new Loaded(p, plan, time, new DefaultTreeModel(toSwing(StepNcViewModel.treeOf(p))), first.plot(),
+                    first.details());
         }, loaded -> {
             StepNcProgram program = loaded.program();
             vm.load(program);
-            vm.planned(loaded.plan());
+            vm.planned(loaded.plan(), loaded.time());
+            preparedPlot = loaded.firstPlot();
+            preparedDetails = loaded.firstDetails();
             loadedFile = file;
             String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
             ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
                     + program.skipped().size() + " skipped, " + program.unknownEntities().size()
                     + " entity types not interpreted");
-            refresh();
+            refresh(loaded.tree());
         });
     }
 
-    private void refresh() {
-        DefaultMutableTreeNode root = vm.tree().map(StepNcTab::toSwing)
-                .orElse(new DefaultMutableTreeNode("No file"));
-        tree.setModel(new DefaultTreeModel(root));
+    private void refresh(DefaultTreeModel model) {
+        tree.setModel(model);
+        // a node of thousands of rows (a big file's skipped workingsteps) stays closed: opening it
+        // here would lay out every row on the event thread; the planner opens it when he wants it
         for (int i = 0; i < Math.min(tree.getRowCount(), 200); i++) {
-            tree.expandRow(i);
+            if (tree.getPathForRow(i).getLastPathComponent() instanceof DefaultMutableTreeNode d
+                    && d.getChildCount() <= 200) {
+                tree.expandRow(i);
+            }
         }
         tree.scrollRectToVisible(new java.awt.Rectangle(0, 0, 1, 1));
         showSelection();
@@ -276,7 +296,8 @@ final class StepNcTab implements ModuleTab {
     }
 
     private void showSelection() {
-        details.setText(String.join("\n", vm.details()));
+        details.setText(String.join("\n", preparedDetails != null ? preparedDetails : vm.details()));
+        preparedDetails = null;
         details.setCaretPosition(0);
         updating = true;
         try {
@@ -307,10 +328,12 @@ final class StepNcTab implements ModuleTab {
                 + "</font>, black: the feature</html>" : " ");
         List<String> ct = vm.cycleTime();
         cycleText.setToolTipText(ct.isEmpty() ? null : String.join(". ", ct));
+        org.fresa.chart.PlotScene scene = preparedPlot != null ? preparedPlot : vm.plot();
+        preparedPlot = null;
         if (fit) {
-            plot.show(vm.plot());
+            plot.show(scene);
         } else {
-            plot.update(vm.plot());
+            plot.update(scene);
         }
     }
 

@@ -307,13 +307,31 @@ final class StepNcViewModel {
 
     /** The whole program's cycle time, when planned. */
     Optional<CycleTime> programTime() {
-        return plan.map(p -> {
-            CycleTime t = CycleTime.ZERO;
-            for (ToolpathSection s : p.toolpath().sections()) {
-                t = t.plus(CycleTime.of(s, RAPID_MM_PER_MIN));
-            }
-            return t;
-        });
+        // several texts ask for it on every selection: a big program's sum is kept with its plan
+        if (programTime == null || programTimeOf != plan.orElse(null)) {
+            programTimeOf = plan.orElse(null);
+            programTime = plan.map(StepNcViewModel::programTimeOf);
+        }
+        return programTime;
+    }
+
+    private Optional<CycleTime> programTime;
+    private ToolpathPlanner.Plan programTimeOf;
+
+    /** The cycle time of a whole plan (any thread). */
+    static CycleTime programTimeOf(ToolpathPlanner.Plan p) {
+        CycleTime t = CycleTime.ZERO;
+        for (ToolpathSection s : p.toolpath().sections()) {
+            t = t.plus(CycleTime.of(s, RAPID_MM_PER_MIN));
+        }
+        return t;
+    }
+
+    /** The plan with its cycle time computed off the event thread. */
+    void planned(ToolpathPlanner.Plan p, CycleTime total) {
+        planned(p);
+        programTimeOf = p;
+        programTime = Optional.of(total);
     }
 
     /** The cycle-time lines: this workingstep, the program, and the assumptions. */
@@ -502,10 +520,11 @@ final class StepNcViewModel {
 
     /** The tree: project > workplans > workingsteps; skipped workingsteps; unknown entities. */
     Optional<Node> tree() {
-        if (program.isEmpty()) {
-            return Optional.empty();
-        }
-        StepNcProgram p = program.get();
+        return program.map(StepNcViewModel::treeOf);
+    }
+
+    /** The tree of a program; touches no view-model state, so the tab builds it off the event thread. */
+    static Node treeOf(StepNcProgram p) {
         List<Node> top = new ArrayList<>();
         int[] counter = {0};
         p.mainWorkplan().ifPresent(w -> top.add(workplanNode(w, counter)));
@@ -529,8 +548,8 @@ final class StepNcViewModel {
             p.warnings().forEach(s -> notes.add(Node.leaf("warning: " + s)));
             top.add(new Node("Notes (" + notes.size() + ")", notes, Optional.empty()));
         }
-        return Optional.of(new Node("Project '" + p.projectId() + "' (" + p.source() + ", " + p.instanceCount()
-                + " instances)", top, Optional.empty()));
+        return new Node("Project '" + p.projectId() + "' (" + p.source() + ", " + p.instanceCount()
+                + " instances)", top, Optional.empty());
     }
 
     private static Node workplanNode(Workplan w, int[] counter) {

@@ -16,7 +16,7 @@ final class Tabs {
                 new StepNcTab(ctx),
                 new PositionTab(ctx, runs),
                 new RobotTab(ctx),
-                new PocketTab(),
+                new PocketTab(ctx),
                 new CuttingTab(ctx),
                 new GradingTab(ctx),
                 new SoleTab(ctx),

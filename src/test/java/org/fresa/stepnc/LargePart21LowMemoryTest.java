@@ -5,12 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.BufferedWriter;
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -34,7 +30,7 @@ class LargePart21LowMemoryTest {
         assumeTrue(maxHeap <= 520 * MIB, "needs -Xmx512m (the low-memory surefire execution), has "
                 + maxHeap / MIB + " MiB");
         Path big = dir.resolve("big.stp");
-        int copies = writeRepeated(Path.of("samples/stepnc/example2.stp"), big);
+        int copies = RepeatedPart21.write(Path.of("samples/stepnc/example2.stp"), big, TARGET_BYTES);
         assertTrue(Files.size(big) >= TARGET_BYTES, "generated " + Files.size(big) + " bytes");
 
         StepNcProgram p = StepNcReader.read(big);
@@ -46,65 +42,5 @@ class LargePart21LowMemoryTest {
                 () -> assertEquals(one.workingsteps(), p.workingsteps()),
                 () -> assertEquals((long) copies * perCopy, p.workingsteps().size() + p.skipped().size()),
                 () -> assertEquals(one.projectId(), p.projectId()));
-    }
-
-    /** Writes the sample's header once and its data section as often as it takes to pass 100 MB. */
-    static int writeRepeated(Path sample, Path out) throws IOException {
-        List<String> lines = Files.readAllLines(sample, StandardCharsets.UTF_8);
-        int data = lines.indexOf("DATA;");
-        int endsec = lines.lastIndexOf("ENDSEC;");
-        List<String> head = lines.subList(0, data + 1);
-        List<String> body = lines.subList(data + 1, endsec);
-        long stride = 1;
-        for (String l : body) {
-            if (l.startsWith("#")) {
-                stride = Math.max(stride, Long.parseLong(l.substring(1, l.indexOf('='))));
-            }
-        }
-        int copies = 0;
-        long written = 0;
-        try (BufferedWriter w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
-            for (String l : head) {
-                w.write(l);
-                w.write('\n');
-            }
-            StringBuilder sb = new StringBuilder();
-            while (written < TARGET_BYTES) {
-                long offset = copies * stride;
-                for (String l : body) {
-                    sb.setLength(0);
-                    shiftNames(l, offset, sb);
-                    sb.append('\n');
-                    w.append(sb);
-                    written += sb.length();
-                }
-                copies++;
-            }
-            w.write("ENDSEC;\nEND-ISO-10303-21;\n");
-        }
-        return copies;
-    }
-
-    /** Adds offset to every #name outside strings. */
-    private static void shiftNames(String line, long offset, StringBuilder out) {
-        boolean inString = false;
-        int i = 0;
-        while (i < line.length()) {
-            char c = line.charAt(i);
-            if (c == '\'') {
-                inString = !inString;
-            }
-            if (c == '#' && !inString) {
-                int j = i + 1;
-                while (j < line.length() && Character.isDigit(line.charAt(j))) {
-                    j++;
-                }
-                out.append('#').append(Long.parseLong(line.substring(i + 1, j)) + offset);
-                i = j;
-                continue;
-            }
-            out.append(c);
-            i++;
-        }
     }
 }

@@ -1,0 +1,201 @@
+package org.fresa.ui;
+
+import java.awt.Color;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.Insets;
+import java.awt.RenderingHints;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Supplier;
+import javax.swing.SwingUtilities;
+import org.jfree.chart.ChartPanel;
+import org.jfree.chart.ChartRenderingInfo;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.plot.PlotRenderingInfo;
+
+/**
+ * A chart panel whose chart is drawn off the event thread into an image, which the event thread
+ * then only copies: drawing a big toolpath or many joint curves takes far longer than the 50 ms an
+ * event may take (issue 11). The picture is described by a {@link Picture} taken on the event
+ * thread at paint time; a picture that has changed is drawn again in the background while the
+ * previous image stays on screen. The chart the panel holds is the event thread's: zoom, pan and
+ * the pixel-to-value mapping work on it as in any chart panel, with the data area of the image.
+ */
+final class OffThreadChartPanel extends ChartPanel {
+
+    private static final long serialVersionUID = 1L;
+
+    /** What to draw: a chart built from values captured on the event thread, and their identity. */
+    interface Picture {
+        /** Equal for two pictures that look the same (the scene, the axis ranges, the markers). */
+        Object key();
+
+        /** A new chart of the picture; runs on the drawing thread, so it must touch no shared state. */
+        JFreeChart build();
+    }
+
+    // one thread for all panels: drawing is CPU work and the machine may have two cores
+    private static final ExecutorService DRAWING = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "fresa-plot-drawing");
+        t.setDaemon(true);
+        t.setPriority(Thread.NORM_PRIORITY - 1);
+        return t;
+    });
+
+    private final transient Supplier<Picture> picture;
+    private transient BufferedImage image;
+    private transient Object imageKey;
+    private transient volatile Object pendingKey;
+    private final transient java.lang.reflect.Field zoomRectangle = zoomRectangleField();
+    private transient Runnable onDrawn = () -> {
+    };
+    private String placeholder;
+
+    /** picture is asked on the event thread at every paint; null means nothing to draw. */
+    OffThreadChartPanel(JFreeChart chart, Supplier<Picture> picture) {
+        super(chart, false, false, false, true, false);
+        this.picture = picture;
+        setMinimumDrawWidth(10);
+        setMinimumDrawHeight(10);
+        setMaximumDrawWidth(8000);
+        setMaximumDrawHeight(6000);
+        // ChartPanel sets its pixel scale in the paintComponent this class replaces; the image is
+        // drawn at the panel's size, so the scale is 1 (left at 0, every mouse point maps to 0)
+        setPrivateDouble("scaleX", 1);
+        setPrivateDouble("scaleY", 1);
+    }
+
+    private void setPrivateDouble(String name, double value) {
+        try {
+            java.lang.reflect.Field f = ChartPanel.class.getDeclaredField(name);
+            f.setAccessible(true);
+            f.setDouble(this, value);
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            throw new IllegalStateException("JFreeChart's ChartPanel has no field " + name, e);
+        }
+    }
+
+    @Override
+    public void paintComponent(Graphics g) {
+        Insets in = getInsets();
+        int w = getWidth() - in.left - in.right;
+        int h = getHeight() - in.top - in.bottom;
+        g.setColor(getBackground());
+        g.fillRect(0, 0, getWidth(), getHeight());
+        Picture p = getChart() == null ? null : picture.get();
+        if (p == null || w < 1 || h < 1) {
+            if (placeholder != null) {
+                g.setColor(Color.GRAY);
+                g.drawString(placeholder, 16, 30);
+            }
+            return;
+        }
+        double scale = ((Graphics2D) g).getTransform().getScaleX();
+        Object key = List.of(p.key(), w, h, scale);
+        if (!key.equals(imageKey) && !key.equals(pendingKey)) {
+            pendingKey = key;
+            DRAWING.execute(() -> draw(p, key, w, h, scale));
+        }
+        if (image != null && image.getWidth() == w && image.getHeight() == h && scale == 1) {
+            // a plain copy: drawing it scaled, even by 1, takes the slow interpolating path
+            g.drawImage(image, in.left, in.top, null);
+        } else if (image != null) {
+            // an older image while the new size is drawn, or a scaled screen
+            Graphics2D g2 = (Graphics2D) g.create();
+            g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+            g2.drawImage(image, in.left, in.top, w, h, null);
+            g2.dispose();
+        }
+        drawZoomRectangle((Graphics2D) g);
+    }
+
+    /** Runs on the drawing thread. */
+    private void draw(Picture p, Object key, int w, int h, double scale) {
+        if (!key.equals(pendingKey)) {
+            // a newer picture was asked for while this one waited
+            return;
+        }
+        JFreeChart c = p.build();
+        int iw = (int) Math.ceil(w * scale);
+        int ih = (int) Math.ceil(h * scale);
+        BufferedImage img = new BufferedImage(iw, ih, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g2 = img.createGraphics();
+        g2.setColor(Color.WHITE);
+        g2.fillRect(0, 0, iw, ih);
+        g2.scale(scale, scale);
+        // no entity collection: the panel has no tooltips, and one entity per item costs time
+        ChartRenderingInfo info = new ChartRenderingInfo(null);
+        c.draw(g2, new Rectangle2D.Double(0, 0, w, h), null, info);
+        g2.dispose();
+        SwingUtilities.invokeLater(() -> show(img, key, info));
+    }
+
+    private void show(BufferedImage img, Object key, ChartRenderingInfo drawn) {
+        image = img;
+        imageKey = key;
+        if (key.equals(pendingKey)) {
+            pendingKey = null;
+        }
+        ChartRenderingInfo mine = getChartRenderingInfo();
+        mine.clear();
+        mine.setChartArea(drawn.getChartArea());
+        PlotRenderingInfo pi = mine.getPlotInfo();
+        pi.setPlotArea(drawn.getPlotInfo().getPlotArea());
+        pi.setDataArea(drawn.getPlotInfo().getDataArea());
+        for (int i = 0; i < drawn.getPlotInfo().getSubplotCount(); i++) {
+            PlotRenderingInfo sub = new PlotRenderingInfo(mine);
+            sub.setPlotArea(drawn.getPlotInfo().getSubplotInfo(i).getPlotArea());
+            sub.setDataArea(drawn.getPlotInfo().getSubplotInfo(i).getDataArea());
+            pi.addSubplotInfo(sub);
+        }
+        repaint();
+        onDrawn.run();
+    }
+
+    /** A grey line of text shown while there is no chart. */
+    void setPlaceholder(String text) {
+        placeholder = text;
+    }
+
+    /** Runs on the event thread after each image arrives (its data area is then known). */
+    void onDrawn(Runnable r) {
+        onDrawn = r;
+    }
+
+    /** Whether the image on screen is the picture the panel shows now (tests wait for it). */
+    boolean isUpToDate() {
+        Picture p = getChart() == null ? null : picture.get();
+        return p == null || image != null && imageKey instanceof List<?> k && k.get(0).equals(p.key())
+                && pendingKey == null;
+    }
+
+    private void drawZoomRectangle(Graphics2D g) {
+        // ChartPanel draws its zoom rectangle in the paintComponent this class replaces
+        Rectangle2D r = null;
+        try {
+            r = zoomRectangle == null ? null : (Rectangle2D) zoomRectangle.get(this);
+        } catch (IllegalAccessException e) {
+            r = null;
+        }
+        if (r != null) {
+            g.setPaint(getZoomFillPaint());
+            g.fill(r);
+            g.setPaint(getZoomOutlinePaint());
+            g.draw(r);
+        }
+    }
+
+    private static java.lang.reflect.Field zoomRectangleField() {
+        try {
+            java.lang.reflect.Field f = ChartPanel.class.getDeclaredField("zoomRectangle");
+            f.setAccessible(true);
+            return f;
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return null;
+        }
+    }
+}
