@@ -100,17 +100,19 @@ public final class RobotService {
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT);
-        RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(req, progress);
-        Timing.mark("trajectory solved");
         out.create();
         TaskOutcome o;
+        RobotTrajectoryService.Solved solved;
         out.beginParallel(pool);
         try {
+            // toolpath.csv does not depend on the robot: it is written while the IK runs
             out.write("toolpath.csv", os -> {
                 Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
                 ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
                 w.flush();
             });
+            solved = RobotTrajectoryService.solve(req, progress);
+            Timing.mark("trajectory solved");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
             o = RobotTrajectoryService.write(solved, name, out);
             Timing.mark("files asked for");

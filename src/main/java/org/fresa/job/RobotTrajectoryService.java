@@ -146,11 +146,13 @@ public final class RobotTrajectoryService {
         TrajectorySolver.Result r = solved.result();
         out.create();
         List<String> fmts = req.formats();
-        if (fmts.contains("csv")) {
-            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
-        }
+        // the charts first: joints.png is the longest of these files, and the writers may run in
+        // parallel (OutputFolder.beginParallel), so the longest starts first
         if (fmts.contains("png")) {
             writeCharts(req.robot(), r, out);
+        }
+        if (fmts.contains("csv")) {
+            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
         }
         RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points()), req.robot(),
                 fmts, out);
