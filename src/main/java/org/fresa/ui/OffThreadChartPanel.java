@@ -30,12 +30,15 @@ final class OffThreadChartPanel extends ChartPanel {
     private static final long serialVersionUID = 1L;
 
     /** What to draw: a chart built from values captured on the event thread, and their identity. */
-    interface Picture {
-        /** Equal for two pictures that look the same (the scene, the axis ranges, the markers). */
-        Object key();
-
-        /** A new chart of the picture; runs on the drawing thread, so it must touch no shared state. */
-        JFreeChart build();
+    /**
+     * @param key equal for two pictures that look the same (the scene, the axis ranges, the markers)
+     * @param builder makes a new chart of the picture; runs on the drawing thread, so it must touch
+     *     no shared state
+     */
+    record Picture(Object key, Supplier<JFreeChart> builder) {
+        JFreeChart build() {
+            return builder.get();
+        }
     }
 
     // one thread for all panels: drawing is CPU work and the machine may have two cores

@@ -104,17 +104,7 @@ public final class PlotPanel extends JPanel {
         org.jfree.data.Range x = xy.getDomainAxis().getRange();
         org.jfree.data.Range y = xy.getRangeAxis().getRange();
         java.util.List<Object> key = java.util.List.of(sceneVersion, x, y);
-        return new OffThreadChartPanel.Picture() {
-            @Override
-            public Object key() {
-                return key;
-            }
-
-            @Override
-            public JFreeChart build() {
-                return chartOf(s, x, y);
-            }
-        };
+        return new OffThreadChartPanel.Picture(key, () -> chartOf(s, x, y));
     }
 
     private static JFreeChart chartOf(PlotScene s, org.jfree.data.Range x, org.jfree.data.Range y) {

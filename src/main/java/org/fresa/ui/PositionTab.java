@@ -303,17 +303,7 @@ final class PositionTab implements ModuleTab {
         }
         double point = (joints ? jointsMarker : errorMarker).getValue();
         java.util.List<Object> key = java.util.List.of(c, joints, point);
-        return new OffThreadChartPanel.Picture() {
-            @Override
-            public Object key() {
-                return key;
-            }
-
-            @Override
-            public JFreeChart build() {
-                return (joints ? c.joints(point) : c.errors(point)).chart();
-            }
-        };
+        return new OffThreadChartPanel.Picture(key, () -> (joints ? c.joints(point) : c.errors(point)).chart());
     }
 
     /** The two plots of the result (joints with limits, error per axis), with the replayed point marked. */
