@@ -87,22 +87,10 @@ final class RobotTab implements ModuleTab {
                 choose(s);
             }
         });
-        JButton open = new JButton("Open robot file...");
-        open.setName("robot-open");
-        open.setMnemonic(KeyEvent.VK_O);
-        open.addActionListener(e -> openFile());
-        JButton save = new JButton("Save robot as file...");
-        save.setName("robot-save");
-        save.setMnemonic(KeyEvent.VK_A);
-        save.addActionListener(e -> saveFile());
-        JButton fk = new JButton("Symbolic FK");
-        fk.setName("robot-symbolic");
-        fk.setMnemonic(KeyEvent.VK_K);
-        fk.addActionListener(e -> computeSymbolic());
-        JButton export = new JButton("Export symbolic FK...");
-        export.setName("robot-export");
-        export.setMnemonic(KeyEvent.VK_E);
-        export.addActionListener(e -> exportSymbolic());
+        JButton open = Buttons.of("Open robot file...", "robot-open", KeyEvent.VK_O, () -> openFile());
+        JButton save = Buttons.of("Save robot as file...", "robot-save", KeyEvent.VK_A, () -> saveFile());
+        JButton fk = Buttons.of("Symbolic FK", "robot-symbolic", KeyEvent.VK_K, () -> computeSymbolic());
+        JButton export = Buttons.of("Export symbolic FK...", "robot-export", KeyEvent.VK_E, () -> exportSymbolic());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(robotLabel);
         top.add(robots);

@@ -91,11 +91,8 @@ final class SoleTab implements ModuleTab {
         info.setEditable(false);
         info.setName("sole-figure-info");
         preview.setPreferredSize(new Dimension(260, 200));
-        JButton place = new JButton("Place");
-        place.setName("sole-place");
-        place.setMnemonic(KeyEvent.VK_P);
+        JButton place = Buttons.of("Place", "sole-place", KeyEvent.VK_P, () -> placeAt(plotCentre()));
         place.setToolTipText("Places the library figure at the middle of the plot; then move it with the arrow keys");
-        place.addActionListener(e -> placeAt(plotCentre()));
         JPanel lib = new JPanel(new BorderLayout(4, 4));
         lib.add(new JScrollPane(library), BorderLayout.WEST);
         JPanel infoPane = new JPanel(new BorderLayout(2, 2));
@@ -132,13 +129,8 @@ final class SoleTab implements ModuleTab {
 
         JLabel sizeLabel = labelFor(sizes, "sole-size", "Size", KeyEvent.VK_Z);
         JLabel footLabel = labelFor(feet, "sole-foot", "Foot", KeyEvent.VK_T);
-        JButton load = new JButton("Load job");
-        load.setName("sole-load");
-        load.setMnemonic(KeyEvent.VK_L);
-        load.addActionListener(e -> loadJob());
-        JButton show = new JButton("Show");
-        show.setMnemonic(KeyEvent.VK_S);
-        show.addActionListener(e -> showSole());
+        JButton load = Buttons.of("Load job", "sole-load", KeyEvent.VK_L, () -> loadJob());
+        JButton show = Buttons.of("Show", null, KeyEvent.VK_S, () -> showSole());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(load);
         top.add(sizeLabel);
@@ -147,13 +139,9 @@ final class SoleTab implements ModuleTab {
         top.add(feet);
         top.add(show);
         JLabel outLabel = labelFor(outFolder, "sole-out", "Output folder", KeyEvent.VK_O);
-        JButton choose = new JButton("...");
+        JButton choose = Buttons.of("...", null, 0, () -> chooseFolder());
         choose.setToolTipText("Choose the output folder");
-        choose.addActionListener(e -> chooseFolder());
-        JButton generate = new JButton("Generate");
-        generate.setName("sole-generate");
-        generate.setMnemonic(KeyEvent.VK_E);
-        generate.addActionListener(e -> generate());
+        JButton generate = Buttons.of("Generate", "sole-generate", KeyEvent.VK_E, () -> generate());
         JPanel bottom = new JPanel(new FlowLayout(FlowLayout.LEFT));
         bottom.add(outLabel);
         bottom.add(outFolder);
