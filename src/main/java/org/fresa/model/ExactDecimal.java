@@ -189,11 +189,15 @@ public final class ExactDecimal {
      * interval, (M -+ 1/2) 2^E (M - 1/4 below a power of two), the ends included for an even M
      * (the round-half-even of {@code Double.parseDouble}), compared exactly. Searching down
      * from 17 digits (always enough) finds the fewest digits, as round-tripping is monotone in
-     * p. Null when the 18 digits cannot be formed (outside that range).
+     * p. Null when the 18 digits cannot be formed (outside that range). Below 1e-7 the answer is
+     * {@link TinyDecimal}'s, in scientific notation as the reference writes it there.
      */
     static String shortest(double d) {
         double mag = Math.abs(d);
-        if (!(mag >= 1e-7 && mag < 1e15)) {
+        if (mag < TinyDecimal.LIMIT) {
+            return TinyDecimal.shortest(d);
+        }
+        if (!(mag < 1e15)) {
             return null;
         }
         long bits = Double.doubleToRawLongBits(mag);
