@@ -6,7 +6,6 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import javax.imageio.ImageIO;
 import org.jfree.chart.JFreeChart;
 import org.jfree.svg.SVGGraphics2D;
 
@@ -24,7 +23,7 @@ public final class ChartFiles {
         } finally {
             g.dispose();
         }
-        ImageIO.write(img, "png", out);
+        PngEncoder.write(img, out);
     }
 
     public static void writeSvg(JFreeChart chart, int widthPx, int heightPx, OutputStream out) throws IOException {

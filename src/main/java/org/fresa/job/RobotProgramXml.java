@@ -173,10 +173,16 @@ public final class RobotProgramXml {
         } else {
             w.write("    <ActivityList Task=\"" + x.getActivityList().getTask() + "\">\n");
             StringBuilder sb = new StringBuilder(2048);
+            char[] chars = new char[2048];
             for (ActivityType a : activities) {
                 sb.setLength(0);
                 activity(a, sb);
-                w.append(sb);
+                // Writer.append(CharSequence) would copy each activity into a String first
+                if (chars.length < sb.length()) {
+                    chars = new char[sb.length()];
+                }
+                sb.getChars(0, sb.length(), chars, 0);
+                w.write(chars, 0, sb.length());
             }
             w.write("    </ActivityList>\n");
         }
