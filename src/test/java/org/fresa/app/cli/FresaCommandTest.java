@@ -38,6 +38,27 @@ class FresaCommandTest {
         assertTrue(r.out().contains("\n  " + command + " "), command + " missing from:\n" + r.out());
     }
 
+    @ParameterizedTest
+    @ValueSource(strings = {"gui", "run", "stepnc", "toolpath", "robot", "pocket", "cut", "grade", "sole", "robots",
+            "posts", "bench"})
+    void aNamedCommandAloneStillHasItsFullUsage(String command) {
+        // only the named command is built (start-up time); its usage names it under fresa
+        Run r = fresa(command, "--help");
+        assertEquals(0, r.status());
+        assertTrue(r.out().startsWith("Usage: fresa " + command + " "), r.out());
+    }
+
+    @Test
+    void helpListsTheCommandsInTheirOrder() {
+        String out = fresa("--help").out();
+        int last = -1;
+        for (Class<?> c : FresaCommand.COMMANDS) {
+            int at = out.indexOf("\n  " + c.getAnnotation(picocli.CommandLine.Command.class).name() + " ");
+            assertTrue(at > last, c + " out of order in:\n" + out);
+            last = at;
+        }
+    }
+
     @Test
     void anUnknownCommandIsAUsageError() {
         Run r = fresa("weld");
