@@ -60,7 +60,7 @@ public final class AtomicFiles {
         if (CLEANED.add(dir)) {
             removeStale(dir);
         }
-        Path tmp = Files.createTempFile(dir, TEMP_PREFIX, TEMP_SUFFIX);
+        Path tmp = createTemporary(dir);
         IN_PROGRESS.add(tmp);
         boolean done = false;
         try {
@@ -81,6 +81,26 @@ public final class AtomicFiles {
             IN_PROGRESS.remove(tmp);
             if (!done) {
                 Files.deleteIfExists(tmp);
+            }
+        }
+    }
+
+    static final java.util.concurrent.atomic.AtomicLong COUNTER = new java.util.concurrent.atomic.AtomicLong();
+
+    /**
+     * A new hidden file named for this process and a counter. {@code Files.createTempFile} would
+     * do, but its random names start the JDK's SecureRandom and security providers, a noticeable
+     * part of a short command's start-up; a name taken already (a killed run's leftover under a
+     * reused process id) is skipped.
+     */
+    private static Path createTemporary(Path dir) throws IOException {
+        String pid = Long.toString(ProcessHandle.current().pid());
+        while (true) {
+            Path p = dir.resolve(TEMP_PREFIX + pid + "-" + COUNTER.incrementAndGet() + TEMP_SUFFIX);
+            try {
+                return Files.createFile(p);
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                // try the next number
             }
         }
     }
