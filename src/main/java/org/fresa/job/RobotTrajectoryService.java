@@ -269,7 +269,7 @@ public final class RobotTrajectoryService {
 
     private static void appendNumbers(StringBuilder sb, double... v) {
         for (double d : v) {
-            sb.append(',').append(ExactDecimal.of(d));
+            ExactDecimal.append(sb.append(','), d);
         }
     }
 

@@ -102,7 +102,7 @@ public final class ToolpathCsv {
             sb.append(r.index()).append(',').append(quote(r.workingstep())).append(',').append(r.move());
             for (double d : new double[] {r.point().x(), r.point().y(), r.point().z(),
                 r.toolAxis().x(), r.toolAxis().y(), r.toolAxis().z(), r.feedMmPerMin()}) {
-                sb.append(',').append(ExactDecimal.of(d));
+                ExactDecimal.append(sb.append(','), d);
             }
             out.write(sb.append('\n').toString());
         }

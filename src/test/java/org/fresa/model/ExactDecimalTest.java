@@ -99,4 +99,29 @@ class ExactDecimalTest {
         }
         assertTrue(checked > 50_000, "checked " + checked);
     }
+
+    @Test
+    void appendWritesWhatOfWritesAfterTheBuildersText() {
+        java.util.SplittableRandom rnd = new java.util.SplittableRandom(5);
+        for (int i = 0; i < 20_000; i++) {
+            double d = switch (i % 4) {
+                case 0 -> Double.longBitsToDouble(rnd.nextLong());
+                case 1 -> Math.round(rnd.nextGaussian() * 1e7) / Math.pow(10, rnd.nextInt(0, 9));
+                case 2 -> Math.copySign(Math.pow(10, rnd.nextDouble() * 30 - 12), rnd.nextDouble() - 0.5);
+                default -> Math.toDegrees(Math.atan2(rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5));
+            };
+            if (Double.isFinite(d)) {
+                String expected = ExactDecimal.of(d);
+                assertEquals("a," + expected, ExactDecimal.append(new StringBuilder("a,"), d).toString());
+                if (d != Math.rint(d)) {
+                    assertEquals(ExactDecimal.byDigits(d), expected, () -> "for " + d);
+                }
+            }
+        }
+        // seven decimals and more go past the few-decimals path; 18 and more fraction digits
+        assertEquals("0.1234567", ExactDecimal.of(0.1234567));
+        double small = 1.2345678901234567E-7;
+        assertEquals(ExactDecimal.byDigits(small), ExactDecimal.of(small));
+        assertTrue(ExactDecimal.of(small).startsWith("0.000000123456789012345"), ExactDecimal.of(small));
+    }
 }
