@@ -6,12 +6,9 @@ import jakarta.xml.bind.JAXBException;
 import jakarta.xml.bind.Marshaller;
 import jakarta.xml.bind.UnmarshalException;
 import jakarta.xml.bind.Unmarshaller;
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.math.BigInteger;
 import java.nio.file.Files;
@@ -89,9 +86,7 @@ public final class RobotProgramXml {
             throw new IOException("cannot write the robot program XML: " + invalid);
         }
         if (plainStrings(x)) {
-            Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
-            writeDirect(x, w);
-            w.flush();
+            writeDirect(x, out);
         } else {
             marshal(x, out);
         }
@@ -156,37 +151,37 @@ public final class RobotProgramXml {
      * XML time. Same bytes (a test compares them): 4-space indent, schema order, doubles as
      * {@link String#valueOf(double)} (the binding's xs:double), only for plain strings.
      */
-    static void writeDirect(RobotProgramType x, Writer w) throws IOException {
-        w.write("<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n");
-        w.write("<RobotProgram xmlns=\"urn:fresa:robot-program:1\" version=\"" + x.getVersion() + "\" name=\""
-                + x.getName() + "\">\n");
-        w.write("    <Resource RobotName=\"" + x.getResource().getRobotName() + "\">\n");
+    static void writeDirect(RobotProgramType x, OutputStream out) throws IOException {
+        // every character is printable ASCII (plainStrings, numbers), so its Latin-1 bytes are
+        // its UTF-8 bytes: a builder's text goes out by array copies, without a charset encoder
+        StringBuilder sb = new StringBuilder(1 << 16);
+        sb.append("<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n");
+        sb.append("<RobotProgram xmlns=\"urn:fresa:robot-program:1\" version=\"").append(x.getVersion())
+                .append("\" name=\"").append(x.getName()).append("\">\n");
+        sb.append("    <Resource RobotName=\"").append(x.getResource().getRobotName()).append("\">\n");
         for (JointDefinitionType d : x.getResource().getJointDefinition()) {
-            w.write("        <JointDefinition JointName=\"" + d.getJointName() + "\" JointType=\"" + d.getJointType().value()
-                    + "\" Units=\"" + d.getUnits().value() + "\" DOFNumber=\"" + d.getDOFNumber() + "\" Min=\""
-                    + d.getMin() + "\" Max=\"" + d.getMax() + "\"/>\n");
+            sb.append("        <JointDefinition JointName=\"").append(d.getJointName()).append("\" JointType=\"")
+                    .append(d.getJointType().value()).append("\" Units=\"").append(d.getUnits().value())
+                    .append("\" DOFNumber=\"").append(d.getDOFNumber()).append("\" Min=\"").append(d.getMin())
+                    .append("\" Max=\"").append(d.getMax()).append("\"/>\n");
         }
-        w.write("    </Resource>\n");
+        sb.append("    </Resource>\n");
         List<ActivityType> activities = x.getActivityList().getActivity();
         if (activities.isEmpty()) {
-            w.write("    <ActivityList Task=\"" + x.getActivityList().getTask() + "\"/>\n");
+            sb.append("    <ActivityList Task=\"").append(x.getActivityList().getTask()).append("\"/>\n");
         } else {
-            w.write("    <ActivityList Task=\"" + x.getActivityList().getTask() + "\">\n");
-            StringBuilder sb = new StringBuilder(2048);
-            char[] chars = new char[2048];
+            sb.append("    <ActivityList Task=\"").append(x.getActivityList().getTask()).append("\">\n");
             for (ActivityType a : activities) {
-                sb.setLength(0);
                 activity(a, sb);
-                // Writer.append(CharSequence) would copy each activity into a String first
-                if (chars.length < sb.length()) {
-                    chars = new char[sb.length()];
+                if (sb.length() > (1 << 16) - 4096) {
+                    out.write(sb.toString().getBytes(StandardCharsets.ISO_8859_1));
+                    sb.setLength(0);
                 }
-                sb.getChars(0, sb.length(), chars, 0);
-                w.write(chars, 0, sb.length());
             }
-            w.write("    </ActivityList>\n");
+            sb.append("    </ActivityList>\n");
         }
-        w.write("</RobotProgram>\n");
+        sb.append("</RobotProgram>\n");
+        out.write(sb.toString().getBytes(StandardCharsets.ISO_8859_1));
     }
 
     private static void activity(ActivityType a, StringBuilder sb) {
