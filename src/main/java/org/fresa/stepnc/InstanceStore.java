@@ -8,7 +8,7 @@ import java.util.Map;
 
 /**
  * The data section of a Part 21 file in compact form: each instance's records as a byte-coded
- * token stream (tag byte, then a varint or the raw bits of a real) in 1 MiB pages, its name, line
+ * token stream (tag byte, then a varint or the raw bits of a real) in pages of at most 1 MiB, its name, line
  * and column in primitive arrays, names found through an open-addressing hash table. Strings,
  * keywords and enumeration names are pooled once. {@link StepInstance}s are decoded on demand and
  * not kept, so a large file costs a few bytes per token instead of an object graph.
@@ -40,9 +40,15 @@ final class InstanceStore {
     private static final int PAGE_BITS = 20;
     private static final int PAGE = 1 << PAGE_BITS;
     private static final int PAGE_MASK = PAGE - 1;
+    // the last page starts this small and doubles up to PAGE: a small file, the usual case, would
+    // otherwise clear a whole MiB per read for a few KiB of tokens
+    static final int FIRST_PAGE = 4096;
 
     private byte[][] pages = new byte[4][];
     private int size;
+    // the page being written and the position where its array ends: one compare per put
+    private byte[] page;
+    private int limit;
 
     private long[] ids = new long[256];
     private int[] starts = new int[256];
@@ -142,17 +148,42 @@ final class InstanceStore {
     }
 
     void put(byte b) {
+        if (size >= limit) {
+            nextPage();
+        }
+        page[size & PAGE_MASK] = b;
+        size++;
+    }
+
+    /** Makes room for the byte at size: a new page at a page boundary, else a larger last page. */
+    private void nextPage() {
         int p = size >>> PAGE_BITS;
         if (p == pages.length) {
             pages = Arrays.copyOf(pages, p * 2);
         }
-        byte[] page = pages[p];
-        if (page == null) {
-            page = new byte[PAGE];
-            pages[p] = page;
+        byte[] cur = pages[p];
+        if (cur == null) {
+            cur = new byte[p == 0 ? FIRST_PAGE : PAGE];
+        } else {
+            cur = Arrays.copyOf(cur, Math.min(PAGE, cur.length * 2));
         }
-        page[size & PAGE_MASK] = b;
-        size++;
+        pages[p] = cur;
+        page = cur;
+        limit = (p << PAGE_BITS) + cur.length;
+    }
+
+    /** Bytes written so far. */
+    int size() {
+        return size;
+    }
+
+    /** The bytes held by the pages (at least size()), for tests of the growth. */
+    long capacity() {
+        long c = 0;
+        for (byte[] pg : pages) {
+            c += pg == null ? 0 : pg.length;
+        }
+        return c;
     }
 
     void putVar(long v) {
