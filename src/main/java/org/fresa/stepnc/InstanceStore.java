@@ -309,12 +309,38 @@ final class InstanceStore {
         return v;
     }
 
+    /**
+     * An unmodifiable list of a[f, f + n): up to ten items through List.of's fixed-arity
+     * forms, which keep their array, so StepRecord's and Aggregate's List.copyOf return it as is.
+     */
+    static List<StepValue> listOf(StepValue[] a, int f, int n) {
+        return switch (n) {
+            case 0 -> List.of();
+            case 1 -> List.of(a[f]);
+            case 2 -> List.of(a[f], a[f + 1]);
+            case 3 -> List.of(a[f], a[f + 1], a[f + 2]);
+            case 4 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3]);
+            case 5 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4]);
+            case 6 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5]);
+            case 7 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6]);
+            case 8 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7]);
+            case 9 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8]);
+            case 10 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8],
+                    a[f + 9]);
+            default -> List.of(Arrays.copyOfRange(a, f, f + n));
+        };
+    }
+
     private static final StepValue.Real ZERO = new StepValue.Real(0.0);
     private static final StepValue.Real ONE = new StepValue.Real(1.0);
     private static final StepValue.Real MINUS_ONE = new StepValue.Real(-1.0);
 
     private final class Cursor {
         int pos;
+        // the items of the lists being decoded, nested ones above their parent's: each list is
+        // then built once, at its size, instead of through an ArrayList and List.copyOf's copies
+        private StepValue[] stack;
+        private int top;
 
         Cursor(int pos) {
             this.pos = pos;
@@ -340,11 +366,20 @@ final class InstanceStore {
 
         /** The items up to the END that closes the list whose BEGIN was just read. */
         List<StepValue> items(long self) {
-            List<StepValue> items = new ArrayList<>();
+            if (stack == null) {
+                stack = new StepValue[32];
+            }
+            int base = top;
             while (at(pos) != END) {
-                items.add(value(self));
+                StepValue v = value(self);
+                if (top == stack.length) {
+                    stack = Arrays.copyOf(stack, top * 2);
+                }
+                stack[top++] = v;
             }
             pos++;
+            List<StepValue> items = listOf(stack, base, top - base);
+            top = base;
             return items;
         }
 
