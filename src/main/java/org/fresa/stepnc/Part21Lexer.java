@@ -164,8 +164,10 @@ final class Part21Lexer {
         }
     }
 
-    private void single(Tok t) throws IOException {
-        text = SINGLE[readChar()];
+    /** A one-character token; next() has just peeked it, so it is at pos and is no line break. */
+    private void single(Tok t) {
+        text = SINGLE[buf[pos++]];
+        col++;
         tok = t;
     }
 
@@ -268,6 +270,102 @@ final class Part21Lexer {
     }
 
     private void number() throws IOException, StepParseException {
+        if (!numberInBuffer()) {
+            numberAcrossRefills();
+        }
+    }
+
+    /**
+     * The common case: the number and the character after it are in the buffer, read there with
+     * a local index as {@link #numberAcrossRefills} reads them. False, with nothing consumed, when
+     * the buffer ends first or the number is malformed (the other path then reads or refuses it).
+     */
+    private boolean numberInBuffer() throws StepParseException {
+        char[] b = buf;
+        int l = lim;
+        int p = pos;
+        char c = b[p];
+        boolean negative = false;
+        if (c == '+' || c == '-') {
+            negative = c == '-';
+            p++;
+        }
+        if (p == l || !isDigit(b[p])) {
+            return false;
+        }
+        long mantissa = 0;
+        int significant = 0;
+        int scale = 0;
+        while (p < l && isDigit(c = b[p])) {
+            p++;
+            if (significant < 18) {
+                mantissa = mantissa * 10 + (c - '0');
+                if (mantissa != 0) {
+                    significant++;
+                }
+            } else {
+                significant++;
+                scale++;
+            }
+        }
+        if (p == l) {
+            return false;
+        }
+        boolean real = false;
+        if (b[p] == '.') {
+            real = true;
+            p++;
+            while (p < l && isDigit(c = b[p])) {
+                p++;
+                if (significant < 18) {
+                    mantissa = mantissa * 10 + (c - '0');
+                    if (mantissa != 0) {
+                        significant++;
+                    }
+                    scale--;
+                } else {
+                    significant++;
+                }
+            }
+            if (p == l) {
+                return false;
+            }
+            if (b[p] == 'E' || b[p] == 'e') {
+                p++;
+                boolean expNegative = false;
+                if (p < l && (b[p] == '+' || b[p] == '-')) {
+                    expNegative = b[p] == '-';
+                    p++;
+                }
+                if (p == l || !isDigit(b[p])) {
+                    return false;
+                }
+                int exp = 0;
+                while (p < l && isDigit(c = b[p])) {
+                    p++;
+                    if (exp < 100_000) {
+                        exp = exp * 10 + (c - '0');
+                    }
+                }
+                if (p == l) {
+                    return false;
+                }
+                scale += expNegative ? -exp : exp;
+            }
+        }
+        int n = p - pos;
+        if (n > word.length) {
+            word = Arrays.copyOf(word, Math.max(n, word.length * 2));
+        }
+        System.arraycopy(b, pos, word, 0, n);
+        wordLength = n;
+        col += n;
+        pos = p;
+        numberValue(real, negative, mantissa, significant, scale);
+        return true;
+    }
+
+    private void numberAcrossRefills() throws IOException, StepParseException {
         wordLength = 0;
         int c = peekChar();
         boolean negative = false;
@@ -332,6 +430,12 @@ final class Part21Lexer {
                 scale += expNegative ? -exp : exp;
             }
         }
+        numberValue(real, negative, mantissa, significant, scale);
+    }
+
+    /** The value of the number just read, whose characters are in word. */
+    private void numberValue(boolean real, boolean negative, long mantissa, int significant, int scale)
+            throws StepParseException {
         text = null;
         if (real) {
             // all digits kept (at most 18) and the mantissa at most 2^53, as the 16 digits of
@@ -366,28 +470,32 @@ final class Part21Lexer {
 
     private void keyword() throws IOException {
         wordLength = 0;
-        addWord((char) readChar());
+        char first = (char) readChar();
+        addWord(first);
         // '-' only occurs in ISO-10303-21 and END-ISO-10303-21; the parser checks the spelling
-        wordRun(true);
-        text = keywords.upperCase(word, wordLength);
+        int h = wordRun(true, first);
+        text = keywords.upperCase(word, wordLength, h);
         tok = Tok.KEYWORD;
     }
 
     private void enumeration() throws IOException, StepParseException {
         readChar();
         wordLength = 0;
-        wordRun(false);
+        int h = wordRun(false, 0);
         if (wordLength == 0 || peekChar() != '.') {
             throw errorHere("an enumeration is written .NAME. (letters, digits, _ between two dots)");
         }
         readChar();
         // the same upper-casing as a keyword's, and a file repeats a few enumerations many times
-        text = keywords.upperCase(word, wordLength);
+        text = keywords.upperCase(word, wordLength, h);
         tok = Tok.ENUMERATION;
     }
 
-    /** Appends the letters, digits, '_' (and '-' when asked) that follow, straight from the buffer. */
-    private void wordRun(boolean dash) throws IOException {
+    /**
+     * Appends the letters, digits, '_' (and '-' when asked) that follow, straight from the buffer.
+     * Returns the String hash of the word, continued from h, its value for the characters before.
+     */
+    private int wordRun(boolean dash, int h) throws IOException {
         do {
             char[] b = buf;
             int p = pos;
@@ -398,14 +506,16 @@ final class Part21Lexer {
                     break;
                 }
                 addWord(c);
+                h = 31 * h + c;
                 p++;
             }
             col += p - pos;
             pos = p;
             if (p < l) {
-                return;
+                return h;
             }
         } while (fill());
+        return h;
     }
 
     private void binary() throws IOException, StepParseException {
@@ -615,11 +725,8 @@ final class Part21Lexer {
         private String[] upper = new String[256];
         private int n;
 
-        String upperCase(char[] w, int len) {
-            int h = 0;
-            for (int i = 0; i < len; i++) {
-                h = 31 * h + w[i];
-            }
+        /** @param h the String hash of w[0, len) */
+        String upperCase(char[] w, int len, int h) {
             int mask = spelled.length - 1;
             int slot = (h ^ (h >>> 16)) & mask;
             while (true) {
