@@ -734,7 +734,7 @@ final class Part21Lexer {
                 if (s == null) {
                     break;
                 }
-                if (hashes[slot] == h && Arrays.equals(s, 0, s.length, w, 0, len)) {
+                if (hashes[slot] == h && s.length == len && same(s, w, len)) {
                     return upper[slot];
                 }
                 slot = (slot + 1) & mask;
@@ -748,6 +748,17 @@ final class Part21Lexer {
                 grow();
             }
             return u;
+        }
+
+        // a plain loop: the words are short, and Arrays.equals's range checks and mismatch call
+        // cost more than the comparison here
+        private static boolean same(char[] a, char[] b, int n) {
+            for (int i = 0; i < n; i++) {
+                if (a[i] != b[i]) {
+                    return false;
+                }
+            }
+            return true;
         }
 
         private void grow() {
