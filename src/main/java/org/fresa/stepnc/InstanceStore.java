@@ -8,7 +8,7 @@ import java.util.Map;
 
 /**
  * The data section of a Part 21 file in compact form: each instance's records as a byte-coded
- * token stream (tag byte, then a varint or the raw bits of a real) in 1 MiB pages, its name, line
+ * token stream (tag byte, then a varint or the raw bits of a real) in pages of at most 1 MiB, its name, line
  * and column in primitive arrays, names found through an open-addressing hash table. Strings,
  * keywords and enumeration names are pooled once. {@link StepInstance}s are decoded on demand and
  * not kept, so a large file costs a few bytes per token instead of an object graph.
@@ -40,9 +40,15 @@ final class InstanceStore {
     private static final int PAGE_BITS = 20;
     private static final int PAGE = 1 << PAGE_BITS;
     private static final int PAGE_MASK = PAGE - 1;
+    // the last page starts this small and doubles up to PAGE: a small file, the usual case, would
+    // otherwise clear a whole MiB per read for a few KiB of tokens
+    static final int FIRST_PAGE = 4096;
 
     private byte[][] pages = new byte[4][];
     private int size;
+    // the page being written and the position where its array ends: one compare per put
+    private byte[] page;
+    private int limit;
 
     private long[] ids = new long[256];
     private int[] starts = new int[256];
@@ -142,17 +148,42 @@ final class InstanceStore {
     }
 
     void put(byte b) {
+        if (size >= limit) {
+            nextPage();
+        }
+        page[size & PAGE_MASK] = b;
+        size++;
+    }
+
+    /** Makes room for the byte at size: a new page at a page boundary, else a larger last page. */
+    private void nextPage() {
         int p = size >>> PAGE_BITS;
         if (p == pages.length) {
             pages = Arrays.copyOf(pages, p * 2);
         }
-        byte[] page = pages[p];
-        if (page == null) {
-            page = new byte[PAGE];
-            pages[p] = page;
+        byte[] cur = pages[p];
+        if (cur == null) {
+            cur = new byte[p == 0 ? FIRST_PAGE : PAGE];
+        } else {
+            cur = Arrays.copyOf(cur, Math.min(PAGE, cur.length * 2));
         }
-        page[size & PAGE_MASK] = b;
-        size++;
+        pages[p] = cur;
+        page = cur;
+        limit = (p << PAGE_BITS) + cur.length;
+    }
+
+    /** Bytes written so far. */
+    int size() {
+        return size;
+    }
+
+    /** The bytes held by the pages (at least size()), for tests of the growth. */
+    long capacity() {
+        long c = 0;
+        for (byte[] pg : pages) {
+            c += pg == null ? 0 : pg.length;
+        }
+        return c;
     }
 
     void putVar(long v) {
@@ -278,12 +309,38 @@ final class InstanceStore {
         return v;
     }
 
+    /**
+     * An unmodifiable list of a[f, f + n): up to ten items through List.of's fixed-arity
+     * forms, which keep their array, so StepRecord's and Aggregate's List.copyOf return it as is.
+     */
+    static List<StepValue> listOf(StepValue[] a, int f, int n) {
+        return switch (n) {
+            case 0 -> List.of();
+            case 1 -> List.of(a[f]);
+            case 2 -> List.of(a[f], a[f + 1]);
+            case 3 -> List.of(a[f], a[f + 1], a[f + 2]);
+            case 4 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3]);
+            case 5 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4]);
+            case 6 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5]);
+            case 7 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6]);
+            case 8 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7]);
+            case 9 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8]);
+            case 10 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8],
+                    a[f + 9]);
+            default -> List.of(Arrays.copyOfRange(a, f, f + n));
+        };
+    }
+
     private static final StepValue.Real ZERO = new StepValue.Real(0.0);
     private static final StepValue.Real ONE = new StepValue.Real(1.0);
     private static final StepValue.Real MINUS_ONE = new StepValue.Real(-1.0);
 
     private final class Cursor {
         int pos;
+        // the items of the lists being decoded, nested ones above their parent's: each list is
+        // then built once, at its size, instead of through an ArrayList and List.copyOf's copies
+        private StepValue[] stack;
+        private int top;
 
         Cursor(int pos) {
             this.pos = pos;
@@ -309,11 +366,20 @@ final class InstanceStore {
 
         /** The items up to the END that closes the list whose BEGIN was just read. */
         List<StepValue> items(long self) {
-            List<StepValue> items = new ArrayList<>();
+            if (stack == null) {
+                stack = new StepValue[32];
+            }
+            int base = top;
             while (at(pos) != END) {
-                items.add(value(self));
+                StepValue v = value(self);
+                if (top == stack.length) {
+                    stack = Arrays.copyOf(stack, top * 2);
+                }
+                stack[top++] = v;
             }
             pos++;
+            List<StepValue> items = listOf(stack, base, top - base);
+            top = base;
             return items;
         }
 

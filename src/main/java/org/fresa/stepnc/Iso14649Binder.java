@@ -102,29 +102,72 @@ final class Iso14649Binder {
         return new StepParseException(file.source(), e.inst.line(), e.inst.column(), e.inst.id(), problem);
     }
 
+    // the answers of known() by instance index, direct-mapped: the binding asks for most instances
+    // several times (points, placements, tools), and the bound on the size keeps a large file's
+    // heap as it was (the store's own cache of decoded instances is bounded the same way)
+    private static final int KNOWN_CACHE = 2048;
+    private final int[] knownIndex = new int[KNOWN_CACHE];
+    @SuppressWarnings("unchecked")
+    private final Optional<E>[] knownAnswer = new Optional[KNOWN_CACHE];
+
     /** The instance as a known, simple entity; empty when it is unknown or complex. */
     private Optional<E> known(long id) {
-        StepInstance inst = file.instances().get(id);
-        if (inst == null || inst.isComplex()) {
+        int i = file.indexOf(id);
+        if (i < 0) {
             return Optional.empty();
         }
-        return schema.find(inst.record().type()).map(l -> {
-            if (l.isAlias()) {
-                spellings.add(l.spelling() + " read as " + l.def().name());
+        int slot = i & (KNOWN_CACHE - 1);
+        Optional<E> answer = knownAnswer[slot];
+        if (answer != null && knownIndex[slot] == i) {
+            return answer;
+        }
+        answer = lookUp(file.instanceAt(i));
+        knownAnswer[slot] = answer;
+        knownIndex[slot] = i;
+        return answer;
+    }
+
+    private Optional<E> lookUp(StepInstance inst) {
+        if (inst.isComplex()) {
+            return Optional.empty();
+        }
+        Optional<Iso14649Schema.Lookup> found = find(inst.record().type());
+        if (found.isEmpty()) {
+            return Optional.empty();
+        }
+        Iso14649Schema.Lookup l = found.get();
+        // noted once per instance: spellings is a set, so asking again would add nothing
+        if (l.isAlias()) {
+            spellings.add(l.spelling() + " read as " + l.def().name());
+        }
+        int n = inst.record().params().size();
+        int want = l.def().attributes().size();
+        if (n != want) {
+            spellings.add(l.spelling() + " written with " + n + " attributes (the schema subset lists " + want
+                    + (n < want ? "; the missing ones read as unset)" : "; the extra ones are ignored)"));
+        }
+        return Optional.of(new E(inst, inst.record(), l.def()));
+    }
+
+    // the schema's answers by the file's own type names: the store pools each name once, so this
+    // map finds them on identity, where the schema's shared map compares their characters
+    private final Map<String, Optional<Iso14649Schema.Lookup>> lookups = new HashMap<>();
+
+    private Optional<Iso14649Schema.Lookup> find(String type) {
+        Optional<Iso14649Schema.Lookup> l = lookups.get(type);
+        if (l == null) {
+            l = schema.find(type);
+            // bounded as the schema's own map is: a file of made-up names must not grow it forever
+            if (lookups.size() < 10_000) {
+                lookups.put(type, l);
             }
-            int n = inst.record().params().size();
-            int want = l.def().attributes().size();
-            if (n != want) {
-                spellings.add(l.spelling() + " written with " + n + " attributes (the schema subset lists " + want
-                        + (n < want ? "; the missing ones read as unset)" : "; the extra ones are ignored)"));
-            }
-            return new E(inst, inst.record(), l.def());
-        });
+        }
+        return l;
     }
 
     private String typeOf(long id) {
-        StepInstance inst = file.instances().get(id);
-        return inst == null ? "?" : inst.type();
+        int i = file.indexOf(id);
+        return i < 0 ? "?" : file.instanceAt(i).type();
     }
 
     // ---- attribute accessors ----
@@ -364,7 +407,7 @@ final class Iso14649Binder {
         List<Long> projects = new ArrayList<>();
         for (int i = 0; i < file.size(); i++) {
             boolean complex = file.isComplexAt(i);
-            Optional<Iso14649Schema.Lookup> l = complex ? Optional.empty() : schema.find(file.firstTypeAt(i));
+            Optional<Iso14649Schema.Lookup> l = complex ? Optional.empty() : find(file.firstTypeAt(i));
             if (l.isEmpty()) {
                 unknown.merge(complex ? file.instanceAt(i).type() : file.firstTypeAt(i), 1, Integer::sum);
                 continue;

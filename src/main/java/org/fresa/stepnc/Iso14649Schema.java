@@ -61,6 +61,13 @@ public final class Iso14649Schema {
 
         /** The position of an attribute, or -1. */
         public int indexOf(String attribute) {
+            // the names are interned and the binder asks with literals: identity finds them without
+            // comparing the characters of every attribute before
+            for (int i = 0, n = attributes.size(); i < n; i++) {
+                if (attributes.get(i) == attribute) {
+                    return i;
+                }
+            }
             return attributes.indexOf(attribute);
         }
 
@@ -134,12 +141,14 @@ public final class Iso14649Schema {
         List<String> order = new ArrayList<>();
         Matcher m = ENTITY.matcher(clean);
         while (m.find()) {
-            String name = m.group(1).toUpperCase(Locale.ROOT);
+            // interned, as the attribute names: isA is asked with literals, and the set then
+            // finds them on identity
+            String name = m.group(1).toUpperCase(Locale.ROOT).intern();
             String head = m.group(2);
             abstracts.put(name, head.contains("ABSTRACT"));
             Matcher s = SUBTYPE.matcher(head);
             if (s.find()) {
-                supertypeOf.put(name, s.group(1).toUpperCase(Locale.ROOT));
+                supertypeOf.put(name, s.group(1).toUpperCase(Locale.ROOT).intern());
             }
             List<String> attrs = new ArrayList<>();
             Matcher a = ATTRIBUTE.matcher(m.group(3).replaceAll("--[^\n]*", ""));

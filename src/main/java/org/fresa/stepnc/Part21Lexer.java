@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Reader;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
 import java.util.Locale;
 
 /**
@@ -25,7 +26,9 @@ final class Part21Lexer {
 
     private final Reader in;
     private final String source;
-    private final char[] buf = new char[1 << 16];
+    // 8 Ki chars: the reader below decodes 8 KiB at a time anyway, and a larger buffer is cleared
+    // on every read of a small file
+    private final char[] buf = new char[1 << 13];
     private int pos;
     private int lim;
     private int line = 1;
@@ -43,6 +46,10 @@ final class Part21Lexer {
     long currentInstance;
 
     private final StringBuilder sb = new StringBuilder();
+    // the characters of the current keyword, enumeration or number, without a StringBuilder's
+    // per-character checks; a number's String is built only when a message or parseDouble needs it
+    private char[] word = new char[64];
+    private int wordLength;
     private final Keywords keywords = new Keywords();
 
     Part21Lexer(Reader in, String source) {
@@ -63,16 +70,40 @@ final class Part21Lexer {
     }
 
     private int peekChar() throws IOException {
-        if (pos == lim) {
-            int n = in.read(buf, 0, buf.length);
-            if (n <= 0) {
-                return EOF_CHAR;
-            }
-            pos = 0;
-            lim = n;
-            charsRead += n;
+        return pos < lim || fill() ? buf[pos] : EOF_CHAR;
+    }
+
+    /** Refills the exhausted buffer; false at the end of the input. */
+    private boolean fill() throws IOException {
+        int n = in.read(buf, 0, buf.length);
+        if (n <= 0) {
+            return false;
         }
-        return buf[pos];
+        pos = 0;
+        lim = n;
+        charsRead += n;
+        return true;
+    }
+
+    /** Appends c to the current word. */
+    private void addWord(char c) {
+        if (wordLength == word.length) {
+            word = Arrays.copyOf(word, wordLength * 2);
+        }
+        word[wordLength++] = c;
+    }
+
+    /** The next character if it is a decimal digit (consumed), else -1. */
+    private int digit() throws IOException {
+        if (pos < lim || fill()) {
+            char c = buf[pos];
+            if (c >= '0' && c <= '9') {
+                pos++;
+                col++;
+                return c;
+            }
+        }
+        return -1;
     }
 
     private int readChar() throws IOException {
@@ -133,16 +164,35 @@ final class Part21Lexer {
         }
     }
 
-    private void single(Tok t) throws IOException {
-        text = SINGLE[readChar()];
+    /** A one-character token; next() has just peeked it, so it is at pos and is no line break. */
+    private void single(Tok t) {
+        text = SINGLE[buf[pos++]];
+        col++;
         tok = t;
     }
 
     private void skipSpaceAndComments() throws IOException, StepParseException {
         while (true) {
+            // the run of white space in the buffer, counted as readChar counts it
+            char[] b = buf;
+            int p = pos;
+            int end = lim;
+            while (p < end) {
+                char ch = b[p];
+                if (ch == '\n') {
+                    line++;
+                    col = 1;
+                } else if (ch == ' ' || ch == '\r' || ch == '\t' || ch == '\f') {
+                    col++;
+                } else {
+                    break;
+                }
+                p++;
+            }
+            pos = p;
             int c = peekChar();
             if (c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f') {
-                readChar();
+                continue;
             } else if (c == '/') {
                 int l = line;
                 int cc = col;
@@ -174,8 +224,8 @@ final class Part21Lexer {
         int digits = 0;
         boolean overflow = false;
         sb.setLength(0);
-        while (isDigit(peekChar())) {
-            int d = readChar() - '0';
+        for (int ch = digit(); ch >= 0; ch = digit()) {
+            int d = ch - '0';
             digits++;
             if (overflow || v > (Long.MAX_VALUE - d) / 10) {
                 overflow = true;
@@ -196,6 +246,7 @@ final class Part21Lexer {
         }
         longValue = v;
         text = null;
+        wordLength = 0;
         tok = Tok.INSTANCE;
     }
 
@@ -211,16 +262,116 @@ final class Part21Lexer {
 
     /** The text of the current token, also for numbers, whose text is built only when asked for. */
     String tokenText() {
-        return text != null ? text : sb.toString();
+        return text != null ? text : wordText();
+    }
+
+    private String wordText() {
+        return new String(word, 0, wordLength);
     }
 
     private void number() throws IOException, StepParseException {
-        sb.setLength(0);
+        if (!numberInBuffer()) {
+            numberAcrossRefills();
+        }
+    }
+
+    /**
+     * The common case: the number and the character after it are in the buffer, read there with
+     * a local index as {@link #numberAcrossRefills} reads them. False, with nothing consumed, when
+     * the buffer ends first or the number is malformed (the other path then reads or refuses it).
+     */
+    private boolean numberInBuffer() throws StepParseException {
+        char[] b = buf;
+        int l = lim;
+        int p = pos;
+        char c = b[p];
+        boolean negative = false;
+        if (c == '+' || c == '-') {
+            negative = c == '-';
+            p++;
+        }
+        if (p == l || !isDigit(b[p])) {
+            return false;
+        }
+        long mantissa = 0;
+        int significant = 0;
+        int scale = 0;
+        while (p < l && isDigit(c = b[p])) {
+            p++;
+            if (significant < 18) {
+                mantissa = mantissa * 10 + (c - '0');
+                if (mantissa != 0) {
+                    significant++;
+                }
+            } else {
+                significant++;
+                scale++;
+            }
+        }
+        if (p == l) {
+            return false;
+        }
+        boolean real = false;
+        if (b[p] == '.') {
+            real = true;
+            p++;
+            while (p < l && isDigit(c = b[p])) {
+                p++;
+                if (significant < 18) {
+                    mantissa = mantissa * 10 + (c - '0');
+                    if (mantissa != 0) {
+                        significant++;
+                    }
+                    scale--;
+                } else {
+                    significant++;
+                }
+            }
+            if (p == l) {
+                return false;
+            }
+            if (b[p] == 'E' || b[p] == 'e') {
+                p++;
+                boolean expNegative = false;
+                if (p < l && (b[p] == '+' || b[p] == '-')) {
+                    expNegative = b[p] == '-';
+                    p++;
+                }
+                if (p == l || !isDigit(b[p])) {
+                    return false;
+                }
+                int exp = 0;
+                while (p < l && isDigit(c = b[p])) {
+                    p++;
+                    if (exp < 100_000) {
+                        exp = exp * 10 + (c - '0');
+                    }
+                }
+                if (p == l) {
+                    return false;
+                }
+                scale += expNegative ? -exp : exp;
+            }
+        }
+        int n = p - pos;
+        if (n > word.length) {
+            word = Arrays.copyOf(word, Math.max(n, word.length * 2));
+        }
+        System.arraycopy(b, pos, word, 0, n);
+        wordLength = n;
+        col += n;
+        pos = p;
+        numberValue(real, negative, mantissa, significant, scale);
+        return true;
+    }
+
+    private void numberAcrossRefills() throws IOException, StepParseException {
+        wordLength = 0;
         int c = peekChar();
         boolean negative = false;
         if (c == '+' || c == '-') {
             negative = c == '-';
-            sb.append((char) readChar());
+            addWord((char) readChar());
         }
         if (!isDigit(peekChar())) {
             throw errorHere("a sign must be followed by digits");
@@ -229,9 +380,8 @@ final class Part21Lexer {
         long mantissa = 0;
         int significant = 0;
         int scale = 0;
-        while (isDigit(peekChar())) {
-            int d = readChar();
-            sb.append((char) d);
+        for (int d = digit(); d >= 0; d = digit()) {
+            addWord((char) d);
             if (significant < 18) {
                 mantissa = mantissa * 10 + (d - '0');
                 if (mantissa != 0) {
@@ -245,10 +395,9 @@ final class Part21Lexer {
         boolean real = false;
         if (peekChar() == '.') {
             real = true;
-            sb.append((char) readChar());
-            while (isDigit(peekChar())) {
-                int d = readChar();
-                sb.append((char) d);
+            addWord((char) readChar());
+            for (int d = digit(); d >= 0; d = digit()) {
+                addWord((char) d);
                 if (significant < 18) {
                     mantissa = mantissa * 10 + (d - '0');
                     if (mantissa != 0) {
@@ -261,20 +410,19 @@ final class Part21Lexer {
             }
             int e = peekChar();
             if (e == 'E' || e == 'e') {
-                sb.append((char) readChar());
+                addWord((char) readChar());
                 int s = peekChar();
                 boolean expNegative = false;
                 if (s == '+' || s == '-') {
                     expNegative = s == '-';
-                    sb.append((char) readChar());
+                    addWord((char) readChar());
                 }
                 if (!isDigit(peekChar())) {
-                    throw errorHere("the exponent of " + abbreviate(sb.toString()) + " has no digits");
+                    throw errorHere("the exponent of " + abbreviate(wordText()) + " has no digits");
                 }
                 int exp = 0;
-                while (isDigit(peekChar())) {
-                    int d = readChar();
-                    sb.append((char) d);
+                for (int d = digit(); d >= 0; d = digit()) {
+                    addWord((char) d);
                     if (exp < 100_000) {
                         exp = exp * 10 + (d - '0');
                     }
@@ -282,20 +430,28 @@ final class Part21Lexer {
                 scale += expNegative ? -exp : exp;
             }
         }
+        numberValue(real, negative, mantissa, significant, scale);
+    }
+
+    /** The value of the number just read, whose characters are in word. */
+    private void numberValue(boolean real, boolean negative, long mantissa, int significant, int scale)
+            throws StepParseException {
         text = null;
         if (real) {
-            if (significant <= 15 && scale >= -22 && scale <= 22) {
-                // the mantissa and the power of ten are exact doubles: one rounding, as parseDouble
+            // all digits kept (at most 18) and the mantissa at most 2^53, as the 16 digits of
+            // 0.5235987755982988 are: then it and the power of ten are exact doubles, and one
+            // rounding gives parseDouble's correctly rounded value
+            if (significant <= 18 && mantissa <= 1L << 53 && scale >= -22 && scale <= 22) {
                 double m = mantissa;
                 doubleValue = scale >= 0 ? m * POW10[scale] : m / POW10[-scale];
                 if (negative) {
                     doubleValue = -doubleValue;
                 }
             } else {
-                doubleValue = Double.parseDouble(sb.toString());
+                doubleValue = Double.parseDouble(wordText());
             }
             if (!Double.isFinite(doubleValue)) {
-                throw errorHere("the number " + abbreviate(sb.toString()) + " is out of range");
+                throw errorHere("the number " + abbreviate(wordText()) + " is out of range");
             }
             tok = Tok.REAL;
         } else {
@@ -303,9 +459,9 @@ final class Part21Lexer {
                 longValue = negative ? -mantissa : mantissa;
             } else {
                 try {
-                    longValue = Long.parseLong(sb.toString());
+                    longValue = Long.parseLong(wordText());
                 } catch (NumberFormatException ex) {
-                    throw errorHere("the integer " + abbreviate(sb.toString()) + " is larger than 64 bits");
+                    throw errorHere("the integer " + abbreviate(wordText()) + " is larger than 64 bits");
                 }
             }
             tok = Tok.INTEGER;
@@ -313,38 +469,53 @@ final class Part21Lexer {
     }
 
     private void keyword() throws IOException {
-        sb.setLength(0);
-        sb.append((char) readChar());
-        while (true) {
-            int c = peekChar();
-            // '-' only occurs in ISO-10303-21 and END-ISO-10303-21; the parser checks the spelling
-            if (isLetter(c) || isDigit(c) || c == '_' || c == '-') {
-                sb.append((char) readChar());
-            } else {
-                break;
-            }
-        }
-        text = keywords.upperCase(sb);
+        wordLength = 0;
+        char first = (char) readChar();
+        addWord(first);
+        // '-' only occurs in ISO-10303-21 and END-ISO-10303-21; the parser checks the spelling
+        int h = wordRun(true, first);
+        text = keywords.upperCase(word, wordLength, h);
         tok = Tok.KEYWORD;
     }
 
     private void enumeration() throws IOException, StepParseException {
         readChar();
-        sb.setLength(0);
-        while (true) {
-            int c = peekChar();
-            if (isLetter(c) || isDigit(c) || c == '_') {
-                sb.append((char) readChar());
-            } else {
-                break;
-            }
-        }
-        if (sb.length() == 0 || peekChar() != '.') {
+        wordLength = 0;
+        int h = wordRun(false, 0);
+        if (wordLength == 0 || peekChar() != '.') {
             throw errorHere("an enumeration is written .NAME. (letters, digits, _ between two dots)");
         }
         readChar();
-        text = sb.toString().toUpperCase(Locale.ROOT);
+        // the same upper-casing as a keyword's, and a file repeats a few enumerations many times
+        text = keywords.upperCase(word, wordLength, h);
         tok = Tok.ENUMERATION;
+    }
+
+    /**
+     * Appends the letters, digits, '_' (and '-' when asked) that follow, straight from the buffer.
+     * Returns the String hash of the word, continued from h, its value for the characters before.
+     */
+    private int wordRun(boolean dash, int h) throws IOException {
+        do {
+            char[] b = buf;
+            int p = pos;
+            int l = lim;
+            while (p < l) {
+                char c = b[p];
+                if (!(isLetter(c) || isDigit(c) || c == '_' || (dash && c == '-'))) {
+                    break;
+                }
+                addWord(c);
+                h = 31 * h + c;
+                p++;
+            }
+            col += p - pos;
+            pos = p;
+            if (p < l) {
+                return h;
+            }
+        } while (fill());
+        return h;
     }
 
     private void binary() throws IOException, StepParseException {
@@ -390,6 +561,22 @@ final class Part21Lexer {
     private void stringRest() throws IOException, StepParseException {
         Charset page = StandardCharsets.ISO_8859_1;
         while (true) {
+            // the plain characters up to the next quote, backslash or line break, in one append
+            char[] b = buf;
+            int p = pos;
+            int l = lim;
+            while (p < l) {
+                char ch = b[p];
+                if (ch == '\'' || ch == '\\' || ch == '\n' || ch == '\r') {
+                    break;
+                }
+                p++;
+            }
+            if (p > pos) {
+                sb.append(b, pos, p - pos);
+                col += p - pos;
+                pos = p;
+            }
             int c = readChar();
             if (c == EOF_CHAR) {
                 throw errorHere("string opened here is not closed with ' before the end of the file");
@@ -533,31 +720,29 @@ final class Part21Lexer {
      * repeats a few hundred entity names millions of times.
      */
     private static final class Keywords {
-        private String[] spelled = new String[256];
+        private char[][] spelled = new char[256][];
+        private int[] hashes = new int[256];
         private String[] upper = new String[256];
         private int n;
 
-        String upperCase(StringBuilder sb) {
-            int h = 0;
-            int len = sb.length();
-            for (int i = 0; i < len; i++) {
-                h = 31 * h + sb.charAt(i);
-            }
+        /** @param h the String hash of w[0, len) */
+        String upperCase(char[] w, int len, int h) {
             int mask = spelled.length - 1;
             int slot = (h ^ (h >>> 16)) & mask;
             while (true) {
-                String s = spelled[slot];
+                char[] s = spelled[slot];
                 if (s == null) {
                     break;
                 }
-                if (s.contentEquals(sb)) {
+                if (hashes[slot] == h && s.length == len && same(s, w, len)) {
                     return upper[slot];
                 }
                 slot = (slot + 1) & mask;
             }
-            String s = sb.toString();
-            String u = s.toUpperCase(Locale.ROOT);
+            char[] s = Arrays.copyOf(w, len);
+            String u = new String(s).toUpperCase(Locale.ROOT);
             spelled[slot] = s;
+            hashes[slot] = h;
             upper[slot] = u;
             if (++n * 2 > spelled.length) {
                 grow();
@@ -565,20 +750,34 @@ final class Part21Lexer {
             return u;
         }
 
+        // a plain loop: the words are short, and Arrays.equals's range checks and mismatch call
+        // cost more than the comparison here
+        private static boolean same(char[] a, char[] b, int n) {
+            for (int i = 0; i < n; i++) {
+                if (a[i] != b[i]) {
+                    return false;
+                }
+            }
+            return true;
+        }
+
         private void grow() {
-            String[] os = spelled;
+            char[][] os = spelled;
+            int[] oh = hashes;
             String[] ou = upper;
-            spelled = new String[os.length * 2];
+            spelled = new char[os.length * 2][];
+            hashes = new int[os.length * 2];
             upper = new String[os.length * 2];
             int mask = spelled.length - 1;
             for (int i = 0; i < os.length; i++) {
                 if (os[i] != null) {
-                    int h = os[i].hashCode();
+                    int h = oh[i];
                     int slot = (h ^ (h >>> 16)) & mask;
                     while (spelled[slot] != null) {
                         slot = (slot + 1) & mask;
                     }
                     spelled[slot] = os[i];
+                    hashes[slot] = h;
                     upper[slot] = ou[i];
                 }
             }

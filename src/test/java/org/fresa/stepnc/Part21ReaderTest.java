@@ -259,4 +259,70 @@ class Part21ReaderTest {
                     f.instance(i + 1).orElseThrow().record().param(0), written.get(i));
         }
     }
+
+    @Test
+    void realsWithSixteenAndSeventeenDigitsReadAsParseDoubleReadsThem() throws Exception {
+        // the fast path takes mantissas up to 2^53 (most 16-digit ones, as writers print doubles);
+        // the ones just above 2^53 and with 17 digits must go the slow way and agree as well
+        java.util.Random rnd = new java.util.Random(53);
+        long twoTo53 = 1L << 53;
+        StringBuilder sb = new StringBuilder();
+        List<String> written = new java.util.ArrayList<>();
+        for (int i = 0; i < 3000; i++) {
+            long m = switch (i % 4) {
+                case 0 -> twoTo53 - rnd.nextInt(1000);
+                case 1 -> twoTo53 + rnd.nextInt(1000);
+                case 2 -> 1_000_000_000_000_000L + (Math.abs(rnd.nextLong()) % (twoTo53 - 1_000_000_000_000_000L));
+                default -> 10_000_000_000_000_000L + (Math.abs(rnd.nextLong()) % 90_000_000_000_000_000L);
+            };
+            String digits = Long.toString(m);
+            int point = 1 + rnd.nextInt(digits.length());
+            String w = (i % 5 == 0 ? "-" : "") + (i % 7 == 0 ? "0." + digits : digits.substring(0, point) + "."
+                    + digits.substring(point)) + (i % 3 == 0 ? "E" + (rnd.nextInt(50) - 25) : "");
+            written.add(w);
+            sb.append("#").append(i + 1).append("=X(").append(w).append(");");
+        }
+        StepFile f = data(sb.toString());
+        for (int i = 0; i < written.size(); i++) {
+            assertEquals(new StepValue.Real(Double.parseDouble(written.get(i))),
+                    f.instance(i + 1).orElseThrow().record().param(0), written.get(i));
+        }
+    }
+
+    /** Hands out at most one character per read, so every token straddles a refill of the lexer's buffer. */
+    private static final class Trickle extends java.io.Reader {
+        private final String text;
+        private int at;
+
+        Trickle(String text) {
+            this.text = text;
+        }
+
+        @Override
+        public int read(char[] cbuf, int off, int len) {
+            if (at == text.length()) {
+                return -1;
+            }
+            cbuf[off] = text.charAt(at++);
+            return 1;
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+
+    @Test
+    void aFileHandedOutOneCharacterAtATimeReadsAsAWholeOne() throws Exception {
+        String text = java.nio.file.Files.readString(java.nio.file.Path.of("samples/stepnc/example2.stp"));
+        StepFile whole = parse(text);
+        StepFile trickled = Part21Reader.read(new Trickle(text), "test.stp");
+        assertEquals(whole.header(), trickled.header());
+        assertEquals(List.copyOf(whole.instances().values()), List.copyOf(trickled.instances().values()));
+        String odd = HEAD + "DATA;\n#1=x_y-z('a''b\\X2\\00E9\\X0\\c',.t.,-1.5E+3,\"0F\",  \t#1);\n#2=A(12, /* c */ .";
+        StepParseException a = assertThrows(StepParseException.class, () -> parse(odd));
+        StepParseException b = assertThrows(StepParseException.class,
+                () -> Part21Reader.read(new Trickle(odd), "test.stp"));
+        assertEquals(a.getMessage(), b.getMessage());
+    }
 }
