@@ -20,7 +20,7 @@ import org.fresa.model.ToolpathSection;
  *
  * <p>Dialects: {@code linuxcnc} (jet codes M3 S1/M5 for plasma, M64/M65 digital outputs P0 for
  * laser and P1 for waterjet, G4 P seconds), {@code iso} and {@code fanuc} (N numbers, O number,
- * M07/M08 jet, G04 P seconds for iso, G04 X for fanuc), {@code 840d} (N numbers, {@code ;} comments, G4 F seconds).
+ * M07/M08 jet, G04 X seconds with a decimal point for both), {@code 840d} (N numbers, {@code ;} comments, G4 F seconds).
  * Controller compensation: a section marked 41 or 42 switches G41/G42 on at its first feed move
  * (the lead-in, a straight line) and G40 off after its last.
  */
@@ -179,8 +179,9 @@ public final class SheetCuttingPost {
     private String dwell(double s) {
         return switch (d) {
             case LINUXCNC -> "G4 P" + num(s);
-            case ISO -> "G04 P" + num(s);
-            case FANUC -> "G04 X" + num(s);
+            // X in seconds with the decimal point, as the milling posts write it: without the
+            // point a Fanuc reads X2 as 2 ms, and P is an integer count of milliseconds
+            case ISO, FANUC -> "G04 X" + String.format(java.util.Locale.ROOT, "%.3f", s);
             case SIEMENS_840D -> "G4 F" + num(s);
         };
     }

@@ -134,7 +134,13 @@ class CuttingAcceptanceTest {
                 "auto", false, post);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(10, r.plan().cuts().size());
-        rs274Accepts(r.program(), post, 0);
+        // iso dwells are G04 X seconds (Fanuc-like controls); LinuxCNC's word for the same is P,
+        // as NcPostsTest translates the milling iso post
+        String program = post.equals("iso") ? r.program().replaceAll("(?m)^(N\\d+ )?G04 X", "$1G04 P") : r.program();
+        if (post.equals("iso")) {
+            assertTrue(r.program().contains("G04 X"), "the plate's pierces dwell");
+        }
+        rs274Accepts(program, post, 0);
     }
 
     static void rs274Accepts(String program, String name, double toolDiameter) throws IOException, InterruptedException {

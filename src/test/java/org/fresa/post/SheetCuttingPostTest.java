@@ -35,7 +35,11 @@ class SheetCuttingPostTest {
         assertEquals("G1 X20 Y10", lines.get(at + 1).replaceFirst(" F.*", ""), text);
         assertEquals(List.of("M64 P0"), lines.stream().filter(l -> l.startsWith("M64")).toList());
         String fanuc = program(cut(new Move.Dwell(new Vec3(20, 0, 0), 1.5)), SheetCuttingPost.Dialect.FANUC);
-        assertEquals(1, fanuc.lines().filter(l -> l.endsWith("G04 X1.5")).count(), fanuc);
+        assertEquals(1, fanuc.lines().filter(l -> l.endsWith("G04 X1.500")).count(), fanuc);
+        // iso as the milling iso post: X in seconds, never P (milliseconds on Fanuc-like controls)
+        String iso = program(cut(new Move.Dwell(new Vec3(20, 0, 0), 2)), SheetCuttingPost.Dialect.ISO);
+        assertEquals(1, iso.lines().filter(l -> l.endsWith("G04 X2.000")).count(), iso);
+        assertEquals(0, iso.lines().filter(l -> l.contains("G04 P")).count(), iso);
     }
 
     @Test
