@@ -12,9 +12,11 @@ import java.util.zip.Deflater;
  * PNG bytes of an opaque RGB image (8 bits per channel, no interlace), read straight from the
  * image's pixel array. ImageIO's writer goes through the raster's sample model pixel by pixel and
  * tries all five row filters: in a fresh JVM that was a tenth of {@code fresa robot}'s chart
- * time. Here each row takes the cheaper of the None, Sub and Up filters (least sum of absolute
- * differences, the PNG specification's heuristic), which is what suits charts: long flat runs
- * across and repeated rows down.
+ * time. Here a row equal to the one above is written with the Up filter (all zeros) and every
+ * other row with the Sub filter, computed straight from the pixels: what suits charts, long flat
+ * runs across and repeated rows down, at a few operations per pixel (choosing the filter per row
+ * by the specification's least-sum heuristic cost three times as much in a fresh JVM; ImageIO's
+ * files of the robot charts are a fifth smaller: 85 and 122 KB against 101 and 155 KB).
  */
 final class PngEncoder {
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -45,48 +47,35 @@ final class PngEncoder {
         chunk(out, "IHDR", ihdr, ihdr.length);
 
         int rowBytes = 3 * w;
-        byte[] prev = new byte[rowBytes];
-        byte[] raw = new byte[rowBytes];
         byte[] sub = new byte[rowBytes + 1];
-        byte[] up = new byte[rowBytes + 1];
-        byte[] none = new byte[rowBytes + 1];
+        sub[0] = 1;
+        byte[] sameAsAbove = new byte[rowBytes + 1];
+        sameAsAbove[0] = 2;
         Deflater deflater = new Deflater(LEVEL);
         byte[] buf = new byte[1 << 16];
         ChunkSink idat = new ChunkSink(out, buf);
         try {
             for (int y = 0; y < h; y++) {
                 int base = offset + y * stride;
-                for (int x = 0, i = 0; x < w; x++, i += 3) {
-                    int p = px[base + x];
-                    raw[i] = (byte) (p >>> 16);
-                    raw[i + 1] = (byte) (p >>> 8);
-                    raw[i + 2] = (byte) p;
+                byte[] row;
+                if (y > 0 && java.util.Arrays.equals(px, base, base + w, px, base - stride, base - stride + w)) {
+                    row = sameAsAbove;
+                } else {
+                    // Sub straight from the pixels; the byte casts take each difference mod 256
+                    int left = 0;
+                    for (int x = 0, i = 1; x < w; x++, i += 3) {
+                        int p = px[base + x];
+                        sub[i] = (byte) ((p >>> 16) - (left >>> 16));
+                        sub[i + 1] = (byte) ((p >>> 8) - (left >>> 8));
+                        sub[i + 2] = (byte) (p - left);
+                        left = p;
+                    }
+                    row = sub;
                 }
-                none[0] = 0;
-                sub[0] = 1;
-                up[0] = 2;
-                long sumNone = 0;
-                long sumSub = 0;
-                long sumUp = 0;
-                for (int i = 0; i < rowBytes; i++) {
-                    byte r = raw[i];
-                    byte s = (byte) (r - (i >= 3 ? raw[i - 3] : 0));
-                    byte u = (byte) (r - prev[i]);
-                    none[i + 1] = r;
-                    sub[i + 1] = s;
-                    up[i + 1] = u;
-                    sumNone += Math.abs(r);
-                    sumSub += Math.abs(s);
-                    sumUp += Math.abs(u);
-                }
-                byte[] row = sumSub <= sumUp ? (sumSub < sumNone ? sub : none) : (sumUp < sumNone ? up : none);
                 deflater.setInput(row, 0, row.length);
                 while (!deflater.needsInput()) {
                     idat.take(deflater.deflate(buf, idat.filled, buf.length - idat.filled));
                 }
-                byte[] t = prev;
-                prev = raw;
-                raw = t;
             }
             deflater.finish();
             while (!deflater.finished()) {
