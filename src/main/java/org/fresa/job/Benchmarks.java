@@ -140,23 +140,24 @@ public final class Benchmarks {
         long once() throws IOException, CamInputException;
     }
 
-    /** Warm-up windows: at least this long, and at most {@link #WARM_UP_MAX_NS}. */
+    /** Warm-up windows of 200 ms, for at least {@link #WARM_UP_MIN_NS} and at most {@link #WARM_UP_MAX_NS}. */
     private static final long WINDOW_NS = 200_000_000L;
+    private static final long WARM_UP_MIN_NS = 5_000_000_000L;
     private static final long WARM_UP_MAX_NS = 12_000_000_000L;
 
     /**
-     * Runs until the JIT has done its work: windows of 200 ms until, after the 2 s minimum, five
-     * windows in a row are no more than 3 % faster (thread CPU) than the best before them, or 12 s
-     * have passed. A fixed 2 s was not enough for the Part 21 reader: on a machine at load 4 its
-     * rate still rose from 20 to 45 MB/s between 2 and 4.5 s, so the figure measured the JIT's
-     * progress instead of the code.
+     * Runs until the JIT has done its work: windows of 200 ms for at least 5 s and then until the
+     * median rate (thread CPU) of the last five windows is no more than 5 % above that of the
+     * five before, or 12 s have passed. A fixed 2 s was not enough for the Part 21 reader: on a
+     * machine at load 4 its rate still rose from 20 to 45 MB/s between 2 and 4.5 s, so the figure
+     * measured the JIT's progress instead of the code; a rule on single windows stopped early on
+     * one lucky window.
      *
      * @return how long the warm-up took, in ns
      */
     static long warmUp(Run run) throws IOException, CamInputException {
         long w0 = System.nanoTime();
-        double best = 0;
-        int flat = 0;
+        List<Double> rates = new ArrayList<>();
         while (System.nanoTime() - w0 < WARM_UP_MAX_NS) {
             long t0 = System.nanoTime();
             long c0 = THREADS.getCurrentThreadCpuTime();
@@ -164,11 +165,14 @@ public final class Benchmarks {
             while (System.nanoTime() - t0 < WINDOW_NS) {
                 bytes += run.once();
             }
-            double rate = bytes / Math.max(1.0, THREADS.getCurrentThreadCpuTime() - c0);
-            flat = rate > best * 1.03 ? 0 : flat + 1;
-            best = Math.max(best, rate);
-            if (System.nanoTime() - w0 >= WARM_UP_NS && flat >= 5) {
-                break;
+            rates.add(bytes / Math.max(1.0, THREADS.getCurrentThreadCpuTime() - c0));
+            int n = rates.size();
+            if (System.nanoTime() - w0 >= WARM_UP_MIN_NS && n >= 10) {
+                double last = median(rates.subList(n - 5, n).stream().mapToDouble(Double::doubleValue).toArray());
+                double before = median(rates.subList(n - 10, n - 5).stream().mapToDouble(Double::doubleValue).toArray());
+                if (last <= before * 1.05) {
+                    break;
+                }
             }
         }
         return System.nanoTime() - w0;
