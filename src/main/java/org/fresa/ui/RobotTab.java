@@ -158,6 +158,12 @@ final class RobotTab implements ModuleTab {
                 vm.fromJob(ctx.model().job()).ifPresent(this::chooseQuietly);
             }
         });
+        // the derivation waits until the tab is shown (see computeSymbolic)
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()) {
+                computeSymbolic();
+            }
+        });
         refresh();
     }
 
@@ -410,7 +416,10 @@ final class RobotTab implements ModuleTab {
 
     /** Derives the symbolic FK of the table's robot off the event thread (Symja starts in about a second). */
     private void computeSymbolic() {
-        if (vm.edited().isEmpty()) {
+        // only for the tab on screen: Symja's start and derivation take a core for a second or more,
+        // which a job started in another tab (a job file opened sets the robot) should not compete
+        // with (issue 11); the tab derives it when it is shown
+        if (vm.edited().isEmpty() || !panel.isShowing()) {
             return;
         }
         Robot r = vm.edited().get();
