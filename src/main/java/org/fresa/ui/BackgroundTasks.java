@@ -22,6 +22,9 @@ final class BackgroundTasks {
         T run(ProgressMonitor progress) throws Exception;
     }
 
+    // one worker thread for all tasks, below the event thread's priority (see BackgroundThreads)
+    private static final java.util.concurrent.ExecutorService WORKER = BackgroundThreads.single("fresa-task");
+
     private final StatusBar bar;
     private final java.awt.Component owner;
     private SwingWorker<?, ?> current;
@@ -118,6 +121,7 @@ final class BackgroundTasks {
             }
         };
         current = worker;
-        worker.execute();
+        // a worker is a Runnable: run on our low-priority thread instead of SwingWorker's pool
+        WORKER.execute(worker);
     }
 }

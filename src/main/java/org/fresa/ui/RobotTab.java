@@ -45,6 +45,7 @@ final class RobotTab implements ModuleTab {
 
     private static final Color BAD = new Color(255, 215, 215);
     private static final Color READ_ONLY = new Color(238, 238, 238);
+    private static final java.util.concurrent.ExecutorService SYMBOLIC = BackgroundThreads.single("fresa-symbolic");
 
     private final AppContext ctx;
     private final RobotViewModel vm = new RobotViewModel();
@@ -428,7 +429,8 @@ final class RobotTab implements ModuleTab {
         }
         int generation = ++symbolicGeneration;
         symbolic.setText("Deriving the forward kinematics of " + r.name() + "...");
-        new SwingWorker<String, Void>() {
+        // below the event thread's priority, as every background thread of the window
+        SYMBOLIC.execute(new SwingWorker<String, Void>() {
             @Override
             protected String doInBackground() {
                 return RobotViewModel.symbolic(r);
@@ -449,6 +451,6 @@ final class RobotTab implements ModuleTab {
                 }
                 symbolic.setCaretPosition(0);
             }
-        }.execute();
+        });
     }
 }
