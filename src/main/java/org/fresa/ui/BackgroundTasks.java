@@ -22,8 +22,9 @@ final class BackgroundTasks {
         T run(ProgressMonitor progress) throws Exception;
     }
 
-    // one worker thread for all tasks, below the event thread's priority (see BackgroundThreads)
-    private static final java.util.concurrent.ExecutorService WORKER = BackgroundThreads.single("fresa-task");
+    // below the event thread's priority (see BackgroundThreads); a pool, as SwingWorker's own, so
+    // that a cancelled task still running to its next check does not hold up the next one
+    private static final java.util.concurrent.ExecutorService WORKER = BackgroundThreads.pool("fresa-task");
 
     private final StatusBar bar;
     private final java.awt.Component owner;

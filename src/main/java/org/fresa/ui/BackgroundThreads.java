@@ -10,10 +10,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * {@link Thread#MIN_PRIORITY}, so that on a machine of few cores the event thread wins a core
  * when it wakes while they compute (issue 11). Java priorities reach the operating system only
  * when the JVM is asked to (on Linux {@code -XX:ThreadPriorityPolicy=1}, which the {@code fresa}
- * launcher passes for the window, mapping MIN_PRIORITY to nice 10); without it they are hints the
+ * launcher passes for the window: then MIN_PRIORITY is nice 4); without it they are hints the
  * JVM ignores, and nothing else changes. Threads these threads create inherit the priority (the
- * robot service's output pool). Tasks run one at a time on one thread: a cancelled task that
- * has not yet reached its next check delays the next one, rather than computing beside it.
+ * robot service's output pool).
  */
 final class BackgroundThreads {
 
@@ -29,6 +28,11 @@ final class BackgroundThreads {
             t.setPriority(Thread.MIN_PRIORITY);
             return t;
         };
+    }
+
+    /** Low-priority threads made as needed, an idle one ending after a minute. */
+    static ExecutorService pool(String prefix) {
+        return Executors.newCachedThreadPool(lowPriority(prefix));
     }
 
     /** One low-priority thread that runs what it is given in order. */
