@@ -22,6 +22,10 @@ final class BackgroundTasks {
         T run(ProgressMonitor progress) throws Exception;
     }
 
+    // below the event thread's priority (see BackgroundThreads); a pool, as SwingWorker's own, so
+    // that a cancelled task still running to its next check does not hold up the next one
+    private static final java.util.concurrent.ExecutorService WORKER = BackgroundThreads.pool("fresa-task");
+
     private final StatusBar bar;
     private final java.awt.Component owner;
     private SwingWorker<?, ?> current;
@@ -118,6 +122,7 @@ final class BackgroundTasks {
             }
         };
         current = worker;
-        worker.execute();
+        // a worker is a Runnable: run on our low-priority thread instead of SwingWorker's pool
+        WORKER.execute(worker);
     }
 }

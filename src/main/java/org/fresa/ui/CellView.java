@@ -162,12 +162,18 @@ final class CellView extends JComponent {
         // one path per colour: thousands of separate line draws cost more than an event may take
         java.util.Map<TrajectoryPoint.Status, java.awt.geom.Path2D> byStatus = new java.util.EnumMap<>(
                 TrajectoryPoint.Status.class);
+        // the camera's vectors once, and each point once (a segment starts where the last ended)
+        OrbitCamera.Projection view = camera.projection(w, h);
+        Vec3 last = null;
+        double[] lastAt = null;
         for (CellScene.PathSegment s : sc.path()) {
             java.awt.geom.Path2D path = byStatus.computeIfAbsent(s.status(), k -> new java.awt.geom.Path2D.Double());
-            double[] a = camera.project(s.from(), w, h);
-            double[] b = camera.project(s.to(), w, h);
+            double[] a = s.from().equals(last) ? lastAt : view.project(s.from());
+            double[] b = view.project(s.to());
             path.moveTo(a[0], a[1]);
             path.lineTo(b[0], b[1]);
+            last = s.to();
+            lastAt = b;
         }
         byStatus.forEach((status, path) -> {
             g.setColor(colour(status));

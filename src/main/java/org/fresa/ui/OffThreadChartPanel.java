@@ -9,7 +9,6 @@ import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 import org.jfree.chart.ChartPanel;
@@ -42,12 +41,7 @@ final class OffThreadChartPanel extends ChartPanel {
     }
 
     // one thread for all panels: drawing is CPU work and the machine may have two cores
-    private static final ExecutorService DRAWING = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "fresa-plot-drawing");
-        t.setDaemon(true);
-        t.setPriority(Thread.NORM_PRIORITY - 1);
-        return t;
-    });
+    private static final ExecutorService DRAWING = BackgroundThreads.single("fresa-plot-drawing");
 
     private final transient Supplier<Picture> picture;
     private transient BufferedImage image;

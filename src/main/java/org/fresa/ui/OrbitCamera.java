@@ -101,12 +101,26 @@ final class OrbitCamera {
 
     /** The point on screen: {x, y, depth} (pixels, pixels, mm; larger depth is nearer). */
     double[] project(Vec3 p, int width, int height) {
+        return projection(width, height).project(p);
+    }
+
+    /**
+     * The projection of the camera as it is now onto a view of the given size, its vectors
+     * computed once: the 3D view projects thousands of points per paint (issue 11).
+     */
+    Projection projection(int width, int height) {
         double az = Math.toRadians(azimuthDeg);
         Vec3 d = towardsCamera();
         Vec3 right = new Vec3(-Math.sin(az), Math.cos(az), 0);
-        Vec3 up = d.cross(right);
-        Vec3 rel = p.minus(centre);
-        double s = scale(width, height);
-        return new double[] {width / 2.0 + s * rel.dot(right), height / 2.0 - s * rel.dot(up), rel.dot(d)};
+        return new Projection(centre, right, d.cross(right), d, scale(width, height), width, height);
+    }
+
+    /** A fixed projection: {@link #project} gives what the camera's {@link OrbitCamera#project} gives. */
+    record Projection(Vec3 centre, Vec3 right, Vec3 up, Vec3 d, double s, int width, int height) {
+        /** The point's view coordinates: x right and y down in pixels, then its depth towards the camera. */
+        double[] project(Vec3 p) {
+            Vec3 rel = p.minus(centre);
+            return new double[] {width / 2.0 + s * rel.dot(right), height / 2.0 - s * rel.dot(up), rel.dot(d)};
+        }
     }
 }

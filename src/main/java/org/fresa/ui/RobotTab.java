@@ -45,6 +45,7 @@ final class RobotTab implements ModuleTab {
 
     private static final Color BAD = new Color(255, 215, 215);
     private static final Color READ_ONLY = new Color(238, 238, 238);
+    private static final java.util.concurrent.ExecutorService SYMBOLIC = BackgroundThreads.single("fresa-symbolic");
 
     private final AppContext ctx;
     private final RobotViewModel vm = new RobotViewModel();
@@ -156,6 +157,12 @@ final class RobotTab implements ModuleTab {
         ctx.model().addListener(e -> {
             if (MainViewModel.JOB.equals(e.getPropertyName())) {
                 vm.fromJob(ctx.model().job()).ifPresent(this::chooseQuietly);
+            }
+        });
+        // the derivation waits until the tab is shown (see computeSymbolic)
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()) {
+                computeSymbolic();
             }
         });
         refresh();
@@ -410,7 +417,10 @@ final class RobotTab implements ModuleTab {
 
     /** Derives the symbolic FK of the table's robot off the event thread (Symja starts in about a second). */
     private void computeSymbolic() {
-        if (vm.edited().isEmpty()) {
+        // only for the tab on screen: Symja's start and derivation take a core for a second or more,
+        // which a job started in another tab (a job file opened sets the robot) should not compete
+        // with (issue 11); the tab derives it when it is shown
+        if (vm.edited().isEmpty() || !panel.isShowing()) {
             return;
         }
         Robot r = vm.edited().get();
@@ -419,7 +429,8 @@ final class RobotTab implements ModuleTab {
         }
         int generation = ++symbolicGeneration;
         symbolic.setText("Deriving the forward kinematics of " + r.name() + "...");
-        new SwingWorker<String, Void>() {
+        // below the event thread's priority, as every background thread of the window
+        SYMBOLIC.execute(new SwingWorker<String, Void>() {
             @Override
             protected String doInBackground() {
                 return RobotViewModel.symbolic(r);
@@ -440,6 +451,6 @@ final class RobotTab implements ModuleTab {
                 }
                 symbolic.setCaretPosition(0);
             }
-        }.execute();
+        });
     }
 }

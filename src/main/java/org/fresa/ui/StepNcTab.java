@@ -163,6 +163,12 @@ final class StepNcTab implements ModuleTab {
         JPanel texts = new JPanel(new java.awt.GridLayout(0, 1));
         texts.add(cycleText);
         legend.setName("stepnc-legend");
+        // parsed here, with the window: the first HTML text of a JVM took 30 to 40 ms of the event
+        // thread when the first program was shown (issue 11); the grid keeps the hidden label's row
+        legend.setText("<html><font color='#1565C0'>blue: feed</font>, <font color='#E53935'>red dashed: rapid"
+                + "</font>, <font color='#2E7D32'>green: cut so far</font>, <font color='#FF8F00'>orange: the tool"
+                + "</font>, black: the feature</html>");
+        legend.setVisible(false);
         texts.add(legend);
         controls.add(texts, BorderLayout.SOUTH);
         JPanel view = new JPanel(new BorderLayout());
@@ -323,9 +329,7 @@ final class StepNcTab implements ModuleTab {
         }
         replayText.setText(vm.replayText());
         cycleText.setText(vm.cycleTimeShort());
-        legend.setText(has ? "<html><font color='#1565C0'>blue: feed</font>, <font color='#E53935'>red dashed: rapid"
-                + "</font>, <font color='#2E7D32'>green: cut so far</font>, <font color='#FF8F00'>orange: the tool"
-                + "</font>, black: the feature</html>" : " ");
+        legend.setVisible(has);
         List<String> ct = vm.cycleTime();
         cycleText.setToolTipText(ct.isEmpty() ? null : String.join(". ", ct));
         org.fresa.chart.PlotScene scene = preparedPlot != null ? preparedPlot : vm.plot();

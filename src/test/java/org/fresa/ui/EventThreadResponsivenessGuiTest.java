@@ -166,6 +166,7 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
                 watchdog.worstMs(), watchdog.worstEvent(), Math.min(worstNet, watchdog.worstMs()), slow.size(),
                 THRESHOLD_MS, over.size());
         StringBuilder sb = new StringBuilder(line);
+        sb.append("  ").append(watchdog.threadsSinceRecord()).append('\n');
         slow.forEach(s -> sb.append("  ").append(s).append('\n'));
         try {
             Files.createDirectories(REPORT.getParent());

@@ -43,7 +43,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     /** One event that took longer than the threshold. */
     record Slow(String event, long startMs, double ms, double gcMs, double runQueueMs, double cpuMs,
-            double blockedMs, List<String> stack) {
+            double blockedMs, String running, List<String> stack) {
         /**
          * What the application is charged: the wall time without GC pauses and waits for a core,
          * and at most what the event thread computed or blocked (waited on a lock, slept, waited
@@ -61,8 +61,9 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         @Override
         public String toString() {
             return String.format(java.util.Locale.ROOT, "%.1f ms wall, charged %.1f ms (GC %.1f ms, waiting for a "
-                    + "core %.1f ms, event thread's CPU %.1f ms, blocked or waiting %.1f ms) %s%n      at %s", ms,
-                    chargedMs(), gcMs, runQueueMs, cpuMs, blockedMs, event,
+                    + "core %.1f ms, event thread's CPU %.1f ms, blocked or waiting %.1f ms) %s%n"
+                    + "      runnable threads of the JVM at 50 ms: %s%n      at %s", ms,
+                    chargedMs(), gcMs, runQueueMs, cpuMs, blockedMs, event, running,
                     String.join("\n      at ", stack));
         }
     }
@@ -106,6 +107,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         final long startCpuNanos;
         final long startBlockedMs;
         volatile StackTraceElement[] stack;
+        volatile String running = "(no sample)";
 
         Segment(long startNanos, long startCpuNanos, long startBlockedMs) {
             this.startNanos = startNanos;
@@ -116,7 +118,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     // the CPU time says whether a slow event computed or waited for a core (reported, not excused)
     private record Finished(String event, long startNanos, long endNanos, long cpuNanos, long blockedMs,
-            StackTraceElement[] stack) {
+            String running, StackTraceElement[] stack) {
     }
 
     private static final java.lang.management.ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
@@ -147,8 +149,70 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         return w;
     }
 
+    /** A thread of this JVM as the kernel sees it: name, state, nice value, CPU time so far (ms). */
+    private record Task(String tid, String name, char state, int nice, long cpuMs) {
+    }
+
+    private static final long TICK_MS = 10;
+    private java.util.Map<String, Task> atRecord = java.util.Map.of();
+    private String loadAtRecord = "";
+    private List<Task> atPause = List.of();
+
+    /** Every thread of this JVM, read from /proc/self/task (empty where there is none). */
+    static List<Task> tasks() {
+        List<Task> out = new ArrayList<>();
+        try (var ds = Files.list(Path.of("/proc/self/task"))) {
+            for (Path d : (Iterable<Path>) ds::iterator) {
+                try {
+                    String st = Files.readString(d.resolve("stat"));
+                    int close = st.lastIndexOf(')');
+                    String[] f = st.substring(close + 2).split(" ");
+                    // fields after the name: state(0) ... utime(11) stime(12) ... nice(16)
+                    out.add(new Task(d.getFileName().toString(), st.substring(st.indexOf('(') + 1, close),
+                            f[0].charAt(0), Integer.parseInt(f[16]),
+                            (Long.parseLong(f[11]) + Long.parseLong(f[12])) * TICK_MS));
+                } catch (IOException | RuntimeException e) {
+                    // the thread ended meanwhile
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            return out;
+        }
+        return out;
+    }
+
+    /** The runnable threads (state R, the event thread left out), or all of them, with their nice values. */
+    private static String describe(List<Task> ts, boolean runnableOnly) {
+        String s = ts.stream().filter(t -> !runnableOnly || t.state() == 'R')
+                .filter(t -> !runnableOnly || !t.name().startsWith("AWT-EventQueue"))
+                .map(t -> t.name() + " (nice " + t.nice() + ")").collect(Collectors.joining(", "));
+        return s.isEmpty() ? "none" : s;
+    }
+
+    /**
+     * The CPU time each thread of the JVM used from {@link #record} to {@link #pause} (the busiest first, those
+     * over 50 ms), with its nice value, and the machine's load average then.
+     */
+    String threadsSinceRecord() {
+        List<String> out = new ArrayList<>();
+        atPause.stream().map(t -> {
+            Task before = atRecord.get(t.tid());
+            return new Task(t.tid(), t.name(), t.state(), t.nice(), t.cpuMs() - (before == null ? 0 : before.cpuMs()));
+        }).filter(t -> t.cpuMs() >= 50).sorted((a, b) -> Long.compare(b.cpuMs(), a.cpuMs()))
+                .forEach(t -> out.add(t.name() + " " + t.cpuMs() + " ms (nice " + t.nice() + ")"));
+        return "load average at the start " + loadAtRecord + "; CPU of the JVM's threads during the job: "
+                + (out.isEmpty() ? "none over 50 ms" : String.join(", ", out));
+    }
+
     /** Forgets what was recorded and records from now on. */
     void record() {
+        atRecord = tasks().stream().collect(Collectors.toMap(Task::tid, t -> t, (a, b) -> a));
+        try {
+            loadAtRecord = String.join(" ", Arrays.asList(Files.readString(Path.of("/proc/loadavg")).split(" "))
+                    .subList(0, 3));
+        } catch (IOException | RuntimeException e) {
+            loadAtRecord = "unknown";
+        }
         synchronized (waits) {
             waitCount = 0;
         }
@@ -161,6 +225,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     /** Stops recording. */
     void pause() {
         recording = false;
+        atPause = tasks();
     }
 
     /*
@@ -224,7 +289,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         }
         if (ms > thresholdMs) {
             finished.add(new Finished(event, s.startNanos, t1, THREADS.getCurrentThreadCpuTime() - s.startCpuNanos,
-                    blockedMs() - s.startBlockedMs, s.stack));
+                    blockedMs() - s.startBlockedMs, s.running, s.stack));
         }
     }
 
@@ -252,7 +317,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
             List<String> stack = f.stack() == null ? List.of("(no sample)")
                     : Arrays.stream(f.stack()).limit(40).map(String::valueOf).collect(Collectors.toList());
             out.add(new Slow(f.event(), sMs, (f.endNanos() - f.startNanos()) / 1e6, gc, runQueue, f.cpuNanos() / 1e6,
-                    f.blockedMs(), stack));
+                    f.blockedMs(), f.running(), stack));
         }
         return out;
     }
@@ -344,8 +409,10 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
             if (s != null && s.stack == null && System.nanoTime() - s.startNanos > thresholdMs * 1e6) {
                 Thread t = eventThread;
                 StackTraceElement[] st = t == null ? null : t.getStackTrace();
+                String running = describe(tasks(), true);
                 if (inFlight == s) {
                     s.stack = st;
+                    s.running = running;
                 }
             }
             try {
