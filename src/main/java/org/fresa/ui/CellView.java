@@ -159,25 +159,27 @@ final class CellView extends JComponent {
             draw(g, e.get(0), e.get(1), w, h);
         }
         g.setStroke(new BasicStroke(1.3f));
-        // one path per colour: thousands of separate line draws cost more than an event may take
-        java.util.Map<TrajectoryPoint.Status, java.awt.geom.Path2D> byStatus = new java.util.EnumMap<>(
-                TrajectoryPoint.Status.class);
+        // one path per colour: thousands of separate line draws cost more than an event may take;
+        // each run of joined segments is one polyline, and points closer than half a pixel to the
+        // last one drawn are passed over (the run's end is always drawn): at the usual zoom the
+        // path's points are a fraction of a pixel apart, and antialiased stroking of each of them
+        // was most of the first paint of a result (54 ms on a cold event thread)
+        java.util.Map<TrajectoryPoint.Status, Pen> byStatus = new java.util.EnumMap<>(TrajectoryPoint.Status.class);
         // the camera's vectors once, and each point once (a segment starts where the last ended)
         OrbitCamera.Projection view = camera.projection(w, h);
         Vec3 last = null;
         double[] lastAt = null;
         for (CellScene.PathSegment s : sc.path()) {
-            java.awt.geom.Path2D path = byStatus.computeIfAbsent(s.status(), k -> new java.awt.geom.Path2D.Double());
+            Pen pen = byStatus.computeIfAbsent(s.status(), k -> new Pen());
             double[] a = s.from().equals(last) ? lastAt : view.project(s.from());
             double[] b = view.project(s.to());
-            path.moveTo(a[0], a[1]);
-            path.lineTo(b[0], b[1]);
+            pen.segment(s.from(), a, s.to(), b);
             last = s.to();
             lastAt = b;
         }
-        byStatus.forEach((status, path) -> {
+        byStatus.forEach((status, pen) -> {
             g.setColor(colour(status));
-            g.draw(path);
+            g.draw(pen.finish());
         });
         paintRobot(g, sc, w, h);
         List<java.awt.Rectangle> labels = new ArrayList<>();
@@ -279,5 +281,47 @@ final class CellView extends JComponent {
             case UNREACHABLE -> UNREACHABLE;
             case RELINK -> RELINK;
         };
+    }
+
+    /** A polyline of one colour being built, with the points it passed over. */
+    private static final class Pen {
+        private static final double MIN_STEP_PX = 0.5;
+        private final java.awt.geom.Path2D path = new java.awt.geom.Path2D.Double();
+        private Vec3 end;
+        private double keptX;
+        private double keptY;
+        private double[] pending;
+
+        void segment(Vec3 from, double[] a, Vec3 to, double[] b) {
+            if (end == null || !from.equals(end)) {
+                flush();
+                path.moveTo(a[0], a[1]);
+                keptX = a[0];
+                keptY = a[1];
+            }
+            double dx = b[0] - keptX;
+            double dy = b[1] - keptY;
+            if (dx * dx + dy * dy < MIN_STEP_PX * MIN_STEP_PX) {
+                pending = b;
+            } else {
+                path.lineTo(b[0], b[1]);
+                keptX = b[0];
+                keptY = b[1];
+                pending = null;
+            }
+            end = to;
+        }
+
+        private void flush() {
+            if (pending != null) {
+                path.lineTo(pending[0], pending[1]);
+                pending = null;
+            }
+        }
+
+        java.awt.geom.Path2D finish() {
+            flush();
+            return path;
+        }
     }
 }
