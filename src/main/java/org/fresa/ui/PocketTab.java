@@ -82,6 +82,10 @@ final class PocketTab implements ModuleTab {
         run.addActionListener(e -> compute());
         form.add(run);
         status.setName("pocket-status");
+        // a fixed width: "computing" and "done" of another width re-flowed the whole form at every
+        // job's start and end, and its fields were painted again on the event thread
+        status.setPreferredSize(new java.awt.Dimension(status.getFontMetrics(status.getFont()).stringWidth("m") * 28,
+                status.getPreferredSize().height));
         form.add(status);
         report.setEditable(false);
         nc.setEditable(false);
@@ -106,6 +110,7 @@ final class PocketTab implements ModuleTab {
                     v[6], v[7], v[8], (String) post.getSelectedItem(), (String) direction.getSelectedItem()));
         } catch (NumberFormatException ex) {
             status.setText("not a number: " + ex.getMessage());
+            status.setToolTipText(status.getText());
             return;
         }
         PocketSettings settings = model.settings();
@@ -134,6 +139,7 @@ final class PocketTab implements ModuleTab {
         } else {
             status.setText(model.error().orElse("failed"));
         }
+        status.setToolTipText(status.getText());
     }
 
     @Override
