@@ -451,6 +451,8 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
                 }
             }
         }
-        pop();
+        // on the event thread, which is dispatching from this queue: a pop from another thread
+        // races with the dispatch thread's hand-over to the previous queue
+        EventQueue.invokeAndWait(this::pop);
     }
 }
