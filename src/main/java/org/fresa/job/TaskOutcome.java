@@ -25,9 +25,4 @@ public record TaskOutcome(int exitStatus, List<String> problems, Map<String, Obj
         summary = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(Objects.requireNonNull(summary, "summary")));
         files = List.copyOf(files);
     }
-
-    /** A task that cannot run because its module is not built yet. */
-    public static TaskOutcome unavailable(Module module) {
-        return new TaskOutcome(1, List.of(module.unavailableMessage()), Map.of(), List.of());
-    }
 }

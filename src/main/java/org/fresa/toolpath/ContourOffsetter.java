@@ -25,10 +25,4 @@ public interface ContourOffsetter {
         loops.sort(java.util.Comparator.comparingDouble(Contour::area).reversed());
         return loops;
     };
-
-    /** An engine that refuses: for callers that must not offset general contours. */
-    ContourOffsetter UNAVAILABLE = (c, d, tol) -> {
-        throw new UnsupportedOperationException(
-                "general line/arc profiles need the pocket module's offset engine (issue 7), not merged yet");
-    };
 }

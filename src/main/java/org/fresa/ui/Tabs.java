@@ -2,10 +2,7 @@ package org.fresa.ui;
 
 import java.util.List;
 
-/**
- * The eight tabs of the main window, in order. A module that is built puts its own tab here in
- * place of the {@link UnavailableTab}.
- */
+/** The eight tabs of the main window, in order. */
 final class Tabs {
     private Tabs() {
     }

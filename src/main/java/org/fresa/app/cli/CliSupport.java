@@ -4,7 +4,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.CancellationException;
 import org.fresa.job.Json;
-import org.fresa.job.Module;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -71,12 +70,6 @@ public final class CliSupport {
             err.println("fresa: cancelled");
             return EXIT_NOT_DOABLE;
         }
-    }
-
-    /** For a command whose module is not built yet: the plain message and exit 1. */
-    public static int unavailable(PrintWriter err, Module module) {
-        err.println("fresa: " + module.unavailableMessage());
-        return EXIT_NOT_DOABLE;
     }
 
     /** A bug, not bad input: a short message for the user, the trace in the log file. */
