@@ -1,5 +1,5 @@
 /**
  * Sheet cutting: chaining, parts and holes, cut order, kerf, leads. Dependencies: {@code pocket}
- * (offsets), {@code dxf}, {@code model}, {@code geom}.
+ * (offsets), {@code model}, {@code geom}. Drawings arrive as contours: the job layer reads them.
  */
 package org.fresa.cutting;
