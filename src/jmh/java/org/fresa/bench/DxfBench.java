@@ -19,7 +19,7 @@ import org.openjdk.jmh.annotations.OutputTimeUnit;
 public class DxfBench extends FileInputBench {
 
     public DxfBench() {
-        super("../shared/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf");
+        super("src/test/resources/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf");
     }
 
     @Benchmark

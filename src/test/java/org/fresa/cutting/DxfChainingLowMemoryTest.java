@@ -13,6 +13,8 @@ import java.nio.file.Path;
 import java.util.Locale;
 import org.fresa.dxf.DxfDrawing;
 import org.fresa.dxf.DxfReader;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,7 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
 class DxfChainingLowMemoryTest {
 
     private static final long MIB = 1024 * 1024;
-    private static final Path CORPUS_FILE = Path.of("../shared/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf");
+    private static final Path CORPUS_FILE = TestInputs.DXF_CORPUS.resolve("ezdxf/examples_edgeminer_3_us_main.dxf");
 
     @TempDir
     Path dir;
@@ -46,6 +48,7 @@ class DxfChainingLowMemoryTest {
     }
 
     @Test
+    @CorpusCheck
     void theLargestCorpusDrawingIsReadAndChainedIn512Megabytes() throws Exception {
         assumeLowMemory();
         assumeTrue(Files.isRegularFile(CORPUS_FILE), "corpus absent");

@@ -19,6 +19,8 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.locationtech.jts.geom.Coordinate;
@@ -34,7 +36,7 @@ import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
  */
 class RapidRouterTest {
 
-    static final Path CORPUS = Path.of("../shared/corpus/dxf");
+    static final Path CORPUS = TestInputs.DXF_CORPUS;
     static final GeometryFactory GF = new GeometryFactory();
 
     static Contour square(double x0, double y0, double side) {
@@ -176,6 +178,7 @@ class RapidRouterTest {
      * the drawings of the acceptance list; {@code -Dfresa.corpus.all=true} takes every file.
      */
     @Test
+    @CorpusCheck
     void routedRapidsCrossFewerCutPartsThanStraightOnesOnTheCorpus() throws Exception {
         Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
         List<Path> files;

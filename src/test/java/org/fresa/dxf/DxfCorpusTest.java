@@ -8,12 +8,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 
 class DxfCorpusTest {
 
-    static final Path CORPUS = Path.of("../shared/corpus/dxf");
+    static final Path CORPUS = TestInputs.DXF_CORPUS;
 
     static List<Path> corpusFiles() throws IOException {
         Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
@@ -23,6 +25,7 @@ class DxfCorpusTest {
     }
 
     @Test
+    @CorpusCheck
     void everyCorpusDrawingIsReadWithoutACrash() throws Exception {
         StringBuilder report = new StringBuilder();
         for (Path p : corpusFiles()) {
@@ -38,6 +41,7 @@ class DxfCorpusTest {
     }
 
     @Test
+    @CorpusCheck
     void malformedSplineFileIsNamedAndStillRead() throws Exception {
         Path p = CORPUS.resolve("dxf2gcode/Spline_Problem.dxf");
         Assumptions.assumeTrue(Files.exists(p));
@@ -47,6 +51,7 @@ class DxfCorpusTest {
     }
 
     @Test
+    @CorpusCheck
     void circlesWithRadiusZeroOrLessAreNamedByHandleAndTheRestIsKept() throws Exception {
         Path p = CORPUS.resolve("ezdxf/examples_dxf_circle_radius_le_0.dxf");
         Assumptions.assumeTrue(Files.exists(p));
@@ -57,6 +62,7 @@ class DxfCorpusTest {
 
     /** Every DXF version in the corpus (R12 AC1009 to R2018 AC1032, and older) gives curves from some file. */
     @Test
+    @CorpusCheck
     void everyDxfVersionOfTheCorpusIsRead() throws Exception {
         java.util.Map<String, Integer> curvesByVersion = new java.util.TreeMap<>();
         for (Path p : corpusFiles()) {

@@ -13,6 +13,8 @@ import org.fresa.geom.Arc2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Test;
 
 class DxfReaderTest {
@@ -203,8 +205,9 @@ class DxfReaderTest {
     }
 
     @Test
+    @CorpusCheck
     void binaryDrawingsOfTheCorpusReadLikeTheirContents() throws Exception {
-        java.nio.file.Path dir = java.nio.file.Path.of("../shared/corpus/dxf/ezdxf");
+        java.nio.file.Path dir = TestInputs.DXF_CORPUS.resolve("ezdxf");
         org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.Files.isDirectory(dir), "corpus absent");
         // R12 binary: three LINEs; R2000 binary: one TEXT and nothing to cut
         DxfDrawing r12 = DxfReader.read(dir.resolve("integration_tests_data_bin_dxf_r12.dxf"));

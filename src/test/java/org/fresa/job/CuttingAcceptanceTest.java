@@ -19,6 +19,9 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.InterpreterCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -38,8 +41,7 @@ import org.locationtech.jts.operation.distance.IndexedFacetDistance;
  */
 class CuttingAcceptanceTest {
 
-    static final Path CORPUS = Path.of("../shared/corpus/dxf");
-    static final Path RS274 = Path.of("../shared/tools/rs274");
+    static final Path CORPUS = TestInputs.DXF_CORPUS;
     static final GeometryFactory GF = new GeometryFactory();
 
     @ParameterizedTest(name = "{0}")
@@ -47,6 +49,8 @@ class CuttingAcceptanceTest {
         "dxf2gcode/AFluegel_Rippen_b2_0201.dxf", "dxf2gcode/Teile.dxf", "dxf2gcode/american-flag.dxf",
         "dxf2gcode/celic-knot.dxf", "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf",
         "dxf2gcode/1-poly-with-reflex.dxf", "dxf2gcode/liu-8f.dxf", "dxf2gcode/lwpoly-bulge.dxf"})
+    @InterpreterCheck
+    @CorpusCheck
     void aRealDrawingIsCutCleanlyWithATwoMillimetreKerf(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
@@ -71,6 +75,7 @@ class CuttingAcceptanceTest {
     }
 
     @org.junit.jupiter.api.Test
+    @InterpreterCheck
     void controllerCompensationProgramsPassLinuxCncsGougeChecks() throws Exception {
         Path dxf = Path.of("samples/cutting/plate.dxf");
         org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(dxf);
@@ -97,6 +102,8 @@ class CuttingAcceptanceTest {
     /** Every corpus drawing, default and paper mode: a program LinuxCNC accepts, or a clear refusal of the file. */
     @ParameterizedTest(name = "{0}")
     @org.junit.jupiter.params.provider.MethodSource("corpus")
+    @InterpreterCheck
+    @CorpusCheck
     void everyCorpusDrawingIsCutInBothModesIntoAProgramLinuxCncAccepts(String name) throws Exception {
         for (boolean paper : new boolean[] {false, true}) {
             CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, "plasma", 3, 1, "arc", 0.001, "auto", paper,
@@ -117,6 +124,8 @@ class CuttingAcceptanceTest {
     @ValueSource(strings = {"dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Teile.dxf",
         "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf", "dxf2gcode/lwpoly-bulge.dxf",
         "dxf2gcode/american-flag.dxf", "dxf2gcode/Schlüssel_Andi.dxf"})
+    @InterpreterCheck
+    @CorpusCheck
     void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
@@ -129,6 +138,7 @@ class CuttingAcceptanceTest {
 
     @ParameterizedTest(name = "post {0}")
     @ValueSource(strings = {"linuxcnc", "iso"})
+    @InterpreterCheck
     void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {
         CuttingSettings s = new CuttingSettings(Path.of("samples/cutting/plate.dxf"), 2, "laser", 3, 1, "line", 0.001,
                 "auto", false, post);
@@ -144,7 +154,7 @@ class CuttingAcceptanceTest {
     }
 
     static void rs274Accepts(String program, String name, double toolDiameter) throws IOException, InterruptedException {
-        Assumptions.assumeTrue(Files.isExecutable(RS274), "rs274 absent");
+        Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
         Path f = Files.createTempFile("cut", ".ngc");
         Files.writeString(f, program);
         org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, toolDiameter);

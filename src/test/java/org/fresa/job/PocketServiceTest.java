@@ -12,14 +12,13 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 class PocketServiceTest {
-
-    static final Path RS274 = Path.of("../shared/tools/rs274");
 
     static PocketSettings settings(String name, String post) throws Exception {
         for (String line : Files.readAllLines(Path.of("samples/pocket/jobs.csv"))) {
@@ -37,8 +36,9 @@ class PocketServiceTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"})
+    @InterpreterCheck
     void linuxCncAcceptsTheDefaultProgram(String name, @TempDir Path dir) throws Exception {
-        assumeTrue(Files.isExecutable(RS274), "LinuxCNC's rs274 is not installed here");
+        assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
         PocketSettings s = settings(name, "linuxcnc");
         Path out = dir.resolve(name + ".ngc");
         TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
@@ -213,6 +213,7 @@ class PocketServiceTest {
     }
 
     @Test
+    @InterpreterCheck
     void aContourFileWithTwoIslandsIsMilledAroundThemAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
         Path out = dir.resolve("rooms.ngc");
         TaskOutcome o = PocketService.run(islandSettings(Path.of("samples/pocket/rooms-islands.contour"), "linuxcnc"),
@@ -221,7 +222,7 @@ class PocketServiceTest {
         assertEquals(2, o.summary().get("islands"));
         // the largest circle: in the middle room, 40 x 40 without an island
         assertEquals(40, (double) o.summary().get("max_hole_diameter"), 1e-3);
-        assumeTrue(Files.isExecutable(RS274), "LinuxCNC's rs274 is not installed here");
+        assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
         org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(out, 6);
         assertEquals(0, r.exitStatus(), org.fresa.post.Rs274.log(r));
     }

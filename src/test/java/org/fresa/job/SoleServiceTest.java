@@ -16,6 +16,7 @@ import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.sole.Foot;
 import org.fresa.sole.SoleTread;
+import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -82,6 +83,7 @@ class SoleServiceTest {
     }
 
     @Test
+    @InterpreterCheck
     void theSampleJobWritesEveryProgramAndLinuxCncAcceptsThem(@TempDir Path dir)
             throws Exception {
         TaskOutcome t = JobRunner.run(JobXml.read(SAMPLE), new OutputFolder(dir), ProgressMonitor.NONE);
@@ -92,8 +94,7 @@ class SoleServiceTest {
                 assertTrue(Files.size(dir.resolve(f)) > 0, f);
             }
         }
-        Path rs274 = Path.of("../shared/tools/rs274");
-        Assumptions.assumeTrue(Files.isExecutable(rs274), "rs274 not available");
+        Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
         try (var files = Files.list(dir)) {
             for (Path f : files.filter(x -> x.toString().endsWith(".ngc")).toList()) {
                 org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, 3.5);

@@ -22,6 +22,7 @@ import org.fresa.post.ExpectedMotions;
 import org.fresa.post.NcPosts;
 import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
+import org.fresa.testing.InterpreterCheck;
 import org.fresa.toolpath.Profile;
 import org.fresa.toolpath.Swept;
 import org.fresa.toolpath.ToolpathPlanner;
@@ -44,8 +45,9 @@ class ToolpathServiceTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"samples/stepnc/iso14649-11-example1.stp", "samples/stepnc/example2.stp"})
+    @InterpreterCheck
     void theProgramIsAcceptedByLinuxCncAndItsMotionsAreTheCsvsMoves(String input, @TempDir Path dir) throws Exception {
-        assumeTrue(Rs274.available(), "rs274 not present");
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         TaskOutcome o = ToolpathService.run(Path.of(input), "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
@@ -62,6 +64,7 @@ class ToolpathServiceTest {
      * toolpath.csv has a dwell row for each DWELL, and the cycle time counts them.
      */
     @Test
+    @InterpreterCheck
     void aProgramWithDwellsIsAcceptedByLinuxCncAndItsDwellsAreTheCsvsDwells(@TempDir Path dir) throws Exception {
         String text = Files.readString(EXAMPLE1)
                 .replace("#20= DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,$,$,#46);",
@@ -86,7 +89,7 @@ class ToolpathServiceTest {
             total = total.plus(CycleTime.of(s, ToolpathService.RAPID_MM_PER_MIN));
         }
         assertEquals(total.feedSeconds() + total.rapidSeconds() + 4.75, (double) o.summary().get("cycle_time_s"), 1e-9);
-        assumeTrue(Rs274.available(), "rs274 not present");
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         Rs274.Result r = Rs274.run(out.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
         List<Rs274.Canon> expected = ExpectedMotions.of(path, false, NcPosts.CHORD_TOLERANCE_MM);
@@ -132,7 +135,7 @@ class ToolpathServiceTest {
     /**
      * Example 1's planar face, x 0..100, y 0..120, finished at z 0.
      *
-     * <p>Against NIST's interpreter (../shared/samples/stepnc/iso14649-11-example1.nist-canonical.txt,
+     * <p>Against NIST's interpreter (samples/stepnc/iso14649-11-example1.nist-canonical.txt,
      * lines 13-41): the same 6 bidirectional passes along +Y from y -13.5 to 133.5 (the tool edge
      * clears the boundary by 0.25 D), the same two layers at z 2.5 and 0, and the same stepping to
      * the left (-X) as BIDIRECTIONAL(.., .LEFT.) asks. NIST steps by exactly 17.1 = 18 (1 - 0.05)
@@ -184,7 +187,7 @@ class ToolpathServiceTest {
      * 2.0, 0.50, 0.75, 8.0) by the D20 TWIST_DRILL (tool_top_angle 31 deg from the plane, a 118 deg
      * point: tip 10 tan 31 = 6.0086 mm) at 1800 mm/min, retract plane 10.
      *
-     * <p>Against NIST's interpreter (../shared/samples/stepnc/iso14649-11-example1.nist-canonical.txt,
+     * <p>Against NIST's interpreter (samples/stepnc/iso14649-11-example1.nist-canonical.txt,
      * lines 50-62): feed 900 from z 10 to -9.1378, 1800 to -15.1378, 1350 to -37.1378, out at 1800.
      * Same feeds (0.5 F, F, 0.75 F), same start zone rule (until the full diameter is 2 mm deep,
      * the tip one point length deeper), same first zone starting at the retract plane. Differences:

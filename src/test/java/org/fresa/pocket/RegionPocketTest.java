@@ -19,6 +19,7 @@ import org.fresa.geom.Vec2;
 import org.fresa.model.ContourFile;
 import org.fresa.post.NcPosts;
 import org.fresa.post.Rs274;
+import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Coordinate;
@@ -86,6 +87,7 @@ class RegionPocketTest {
     }
 
     @Test
+    @InterpreterCheck
     void threeRoomsWithTwoIslandsSplitThreeWaysAndAreMilledCompletelyWithinTheirWalls(@TempDir Path dir) throws Exception {
         List<Contour> c = read("samples/pocket/rooms-islands.contour");
         assertEquals(3, c.size());
@@ -109,7 +111,7 @@ class RegionPocketTest {
                 plan.levels().size(), uncut, outside);
         assertTrue(uncut < 1e-3, "uncut " + uncut + " mm2");
         assertTrue(outside < 1e-3, "beyond the walls " + outside + " mm2");
-        assumeTrue(Rs274.available(), "rs274 not available");
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         StringWriter w = new StringWriter();
         NcPosts.byName("linuxcnc").orElseThrow().write(plan.toolpath(), "rooms-islands", w);
         Path f = dir.resolve("rooms-islands.ngc");

@@ -14,6 +14,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import org.fresa.model.Toolpath;
+import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -60,8 +61,9 @@ class NcPostsTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"linuxcnc", "iso", "fanuc", "840d"})
+    @InterpreterCheck
     void linuxCncsInterpreterMakesExactlyTheToolpathsMotions(String post, @TempDir Path dir) throws Exception {
-        assumeTrue(Rs274.available(), "rs274 not present");
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         Toolpath path = SampleToolpaths.mixed();
         String text = program(post, path);
         // 840D words LinuxCNC lacks (G71, D1, TURN=) are mapped to their RS274 twins; the rest is read as is
@@ -119,8 +121,9 @@ class NcPostsTest {
      */
     @ParameterizedTest
     @ValueSource(strings = {"linuxcnc", "iso", "fanuc", "840d"})
+    @InterpreterCheck
     void linuxCncsInterpreterDwellsWhereTheToolpathDoes(String post, @TempDir Path dir) throws Exception {
-        assumeTrue(Rs274.available(), "rs274 not present");
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         Toolpath path = SampleToolpaths.drilling();
         String text = program(post, path);
         text = post.equals("840d") ? siemensAsNgc(text) : text.replaceAll("(?m)^(N\\d+ )?G04 X", "$1G04 P");

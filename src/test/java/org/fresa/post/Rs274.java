@@ -12,20 +12,76 @@ import java.util.regex.Pattern;
 import org.fresa.geom.Vec3;
 
 /**
- * Test helper: runs {@code ../shared/tools/rs274} (LinuxCNC's interpreter) on a program and
- * reads its canonical motions back into workpiece-frame values. Tests skip when it is absent.
+ * Test helper: runs LinuxCNC's interpreter on a program and reads its canonical motions back into
+ * workpiece-frame values. The interpreter is the project's own {@code tools/rs274}, which fetches
+ * it from the Debian/Ubuntu archive into a cache on first use; {@code ../shared/tools/rs274}
+ * beside the checkout serves only when ours cannot set it up. Tests skip, saying why, when
+ * neither can.
  */
 public final class Rs274 {
 
-    public static final Path TOOL = Path.of("../shared/tools/rs274");
+    /** The project's script. */
+    static final Path OWN = Path.of("tools/rs274");
+
+    /** The one beside the checkout, a fallback only. */
+    static final Path SHARED = Path.of("../shared/tools/rs274");
 
     private static final Pattern CALL = Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE|DWELL)\\((.*)\\)");
+
+    /** The script to run, or null; and why not, when null. Decided once per test JVM. */
+    private static Path tool;
+    private static String whyNot;
 
     private Rs274() {
     }
 
-    public static boolean available() {
-        return Files.isExecutable(TOOL);
+    /**
+     * Whether an interpreter can run here: {@code tools/rs274 --fetch} sets ours up (the first
+     * time it downloads the package, up to a few minutes); the shared one is the fallback.
+     */
+    public static synchronized boolean available() {
+        if (tool == null && whyNot == null) {
+            String own = fetch(OWN);
+            if (own == null) {
+                tool = OWN;
+            } else if (Files.isExecutable(SHARED)) {
+                tool = SHARED;
+            } else {
+                whyNot = "LinuxCNC's interpreter could not be set up: " + own;
+            }
+        }
+        return tool != null;
+    }
+
+    /** Why {@link #available()} is false, for the skip message. */
+    public static synchronized String whyNot() {
+        return available() ? "" : whyNot;
+    }
+
+    /** Runs {@code script --fetch}: null when the interpreter is ready, else what it said. */
+    private static String fetch(Path script) {
+        if (!Files.isExecutable(script)) {
+            return script + " is not here (run the tests from the project's folder)";
+        }
+        try {
+            Path log = Files.createTempFile("rs274-fetch", ".txt");
+            try {
+                Process p = new ProcessBuilder(script.toString(), "--fetch").redirectErrorStream(true)
+                        .redirectOutput(log.toFile()).start();
+                if (!p.waitFor(10, TimeUnit.MINUTES)) {
+                    p.destroyForcibly();
+                    return script + " --fetch took more than 10 minutes";
+                }
+                return p.exitValue() == 0 ? null : Files.readString(log, StandardCharsets.UTF_8).strip();
+            } finally {
+                Files.deleteIfExists(log);
+            }
+        } catch (IOException e) {
+            return script + ": " + e.getMessage();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return "interrupted";
+        }
     }
 
     /** What the interpreter did with a program. */
@@ -73,7 +129,10 @@ public final class Rs274 {
         Path outFile = Files.createTempFile("rs274", ".out");
         Path errFile = Files.createTempFile("rs274", ".err");
         try {
-            List<String> cmd = new ArrayList<>(List.of(TOOL.toString()));
+            if (!available()) {
+                throw new IOException(whyNot());
+            }
+            List<String> cmd = new ArrayList<>(List.of(tool.toString()));
             if (toolDiameterMm > 0) {
                 cmd.addAll(List.of("--tool-diameter", Double.toString(toolDiameterMm)));
             }

@@ -21,6 +21,7 @@ import org.fresa.model.ContourFile;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.post.NcPosts;
+import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -179,8 +180,8 @@ class SoleTreadTest {
     }
 
     @Test
+    @InterpreterCheck
     void theTreadProgramIsAcceptedByLinuxCnc(@TempDir Path dir) throws Exception {
-        Path rs274 = Path.of("../shared/tools/rs274");
         SoleTread tread = sample();
         Contour outline = men40();
         for (Foot foot : Foot.values()) {
@@ -192,7 +193,7 @@ class SoleTreadTest {
             Path f = dir.resolve("tread-40-" + foot.id() + ".ngc");
             Files.writeString(f, w.toString());
             assertFalse(w.toString().isEmpty());
-            Assumptions.assumeTrue(Files.isExecutable(rs274), "rs274 not available");
+            Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
             org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(f, 3.5);
             assertEquals(0, r.exitStatus(), org.fresa.post.Rs274.log(r));
         }

@@ -17,6 +17,8 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec3;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -25,7 +27,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 class StepNcReaderTest {
 
     static final Path SAMPLES = Path.of("samples/stepnc");
-    static final Path CORPUS = Path.of("../shared/corpus/stepnc");
+    static final Path CORPUS = TestInputs.SHARED_CORPUS.resolve("stepnc");
     private static final Tolerance TOL = Tolerance.DEFAULT;
 
     static StepNcProgram read(String name) throws Exception {
@@ -172,9 +174,10 @@ class StepNcReaderTest {
     }
 
     @Test
+    @CorpusCheck
     void theFdisExample1IsReadWithItsDraftSpellingsReported() throws Exception {
         Path f = CORPUS.resolve("fdis/iso14649-11-fdis-example1.p21");
-        Assumptions.assumeTrue(Files.exists(f), "corpus absent");
+        Assumptions.assumeTrue(Files.exists(f), TestInputs.sharedCorpusAbsent(CORPUS));
         StepNcProgram p = StepNcReader.read(f);
         assertEquals(5, p.workingsteps().size());
         String seen = String.join("\n", p.spellings());
@@ -226,16 +229,18 @@ class StepNcReaderTest {
 
     @ParameterizedTest
     @MethodSource("corpusFiles")
+    @CorpusCheck
     void everyCorpusFileReadsWithoutError(Path file) throws Exception {
-        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(file), "corpus not found: " + CORPUS);
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(file), TestInputs.sharedCorpusAbsent(CORPUS));
         StepNcProgram p = StepNcReader.read(file);
         assertTrue(p.instanceCount() > 0);
         assertFalse(p.workingsteps().isEmpty(), "no workingstep executed in " + file);
     }
 
     @Test
+    @CorpusCheck
     void theCorpusIsThere() throws IOException {
-        Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
+        Assumptions.assumeTrue(Files.isDirectory(CORPUS), TestInputs.sharedCorpusAbsent(CORPUS));
         assertTrue(corpusFiles().count() >= 20);
     }
 

@@ -12,6 +12,8 @@ import org.assertj.swing.timing.Timeout;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobTask;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.Test;
 
 /** The Cutting tab under a (virtual) display: a job's drawing cut, shown and written to target/screenshots. */
@@ -57,8 +59,9 @@ class CuttingTabGuiTest extends WindowGuiTest {
     }
 
     @Test
+    @CorpusCheck
     void aCorpusDrawingIsCutAndShown() {
-        Path p = Path.of("../shared/corpus/dxf/dxf2gcode/pumpenteile.dxf");
+        Path p = TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf");
         org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
         cut(p, "cutting-pumpenteile.png");
     }

@@ -19,6 +19,8 @@ import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobTask;
 import org.fresa.stepnc.RepeatedPart21;
+import org.fresa.testing.CorpusCheck;
+import org.fresa.testing.TestInputs;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
@@ -113,16 +115,18 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     }
 
     @Test
+    @CorpusCheck
     void theBigCorpusDrawingIsReadChainedAndCut() {
-        Path p = Path.of("../shared/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf");
+        Path p = TestInputs.DXF_CORPUS.resolve("ezdxf/examples_edgeminer_3_us_main.dxf");
         Assumptions.assumeTrue(Files.exists(p), "corpus absent");
         cut(p, "reading, chaining and cutting the 10 052-LINE corpus drawing");
     }
 
     @Test
+    @CorpusCheck
     void aWorkshopDrawingIsCut() {
-        Path p = Path.of("../shared/corpus/dxf/dxf2gcode/pumpenteile.dxf");
-        cut(Files.exists(p) ? p : Path.of("samples/cutting/plate.dxf"), "cutting " + p.getFileName());
+        Path p = TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf");
+        cut(p, "cutting " + p.getFileName());
     }
 
     @Test
