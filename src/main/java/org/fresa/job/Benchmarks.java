@@ -20,7 +20,9 @@ import org.fresa.stepnc.StepNcReader;
 /**
  * The short benchmarks of {@code fresa bench} (issue 11): each figure is the median of repeated
  * runs after a JIT warm-up, measured in this JVM (except the whole-process figure, which starts a
- * fresh one). Figures whose input is missing are reported as null with the reason.
+ * fresh one). The inputs are resources of the jar ({@value #INPUTS}: example part 2, cavity 02 and
+ * the 10 052-line ezdxf drawing), so that a copied jar or an installed app image measures the
+ * same files as a checkout. A figure that cannot be measured is null, with the reason.
  */
 public final class Benchmarks {
 
@@ -33,16 +35,39 @@ public final class Benchmarks {
             "pocket_ms_cavity02", 50.0,
             "example2_irb140_process_s", 3.0);
 
+    /** Where the inputs are in the jar (pom.xml's resources). */
+    static final String INPUTS = "/org/fresa/bench/";
+    static final String EXAMPLE2 = "stepnc/example2.stp";
+    static final String CAVITY02 = "pocket/cavity02.dad";
+    static final String DXF = "ezdxf/examples_edgeminer_3_us_main.dxf";
+
     private Benchmarks() {
+    }
+
+    /** The bytes of one benchmark input. */
+    static byte[] input(String name) throws IOException {
+        try (java.io.InputStream in = Benchmarks.class.getResourceAsStream(INPUTS + name)) {
+            if (in == null) {
+                throw new java.io.FileNotFoundException("benchmark input " + INPUTS + name + " is not in the jar");
+            }
+            return in.readAllBytes();
+        }
+    }
+
+    /** One benchmark input as a temporary file, for the code that reads files; the caller deletes it. */
+    static Path inputFile(String name) throws IOException {
+        String file = name.substring(name.lastIndexOf('/') + 1);
+        Path f = Files.createTempFile("fresa-bench-", "-" + file);
+        Files.write(f, input(name));
+        return f;
     }
 
     /**
      * Runs every figure.
      *
-     * @param projectRoot where samples/ and ../shared/corpus are looked for
      * @param jar the Fresa jar for the whole-process figure, or null to skip it
      */
-    public static Map<String, Object> run(Path projectRoot, Path jar, ProgressMonitor progress) {
+    public static Map<String, Object> run(Path jar, ProgressMonitor progress) {
         Map<String, Object> figures = new LinkedHashMap<>();
         Map<String, Object> notes = new LinkedHashMap<>();
         progress.progress(0.0, "inverse kinematics, IRB-140");
@@ -55,7 +80,7 @@ public final class Benchmarks {
         figures.put("ik_cpu_us_per_point_tricept806", tri.cpuUsPerPoint());
         progress.progress(0.3, "Part 21");
         try {
-            Rate r = part21MbPerS(projectRoot.resolve("samples/stepnc/example2.stp"));
+            Rate r = part21MbPerS(input(EXAMPLE2));
             figures.put("part21_mb_per_s", r.wall());
             figures.put("part21_cpu_mb_per_s", r.cpu());
         } catch (IOException | CamInputException e) {
@@ -63,21 +88,17 @@ public final class Benchmarks {
             notes.put("part21_mb_per_s", e.getMessage());
         }
         progress.progress(0.45, "DXF");
-        Path dxf = projectRoot.resolve("../shared/corpus/dxf/ezdxf/examples_edgeminer_3_us_main.dxf").normalize();
         try {
-            Rate r = Files.isRegularFile(dxf) ? dxfMbPerS(dxf) : null;
-            figures.put("dxf_mb_per_s", r == null ? null : r.wall());
-            figures.put("dxf_cpu_mb_per_s", r == null ? null : r.cpu());
-            if (!Files.isRegularFile(dxf)) {
-                notes.put("dxf_mb_per_s", "corpus file not found: " + dxf);
-            }
+            Rate r = dxfMbPerS(input(DXF));
+            figures.put("dxf_mb_per_s", r.wall());
+            figures.put("dxf_cpu_mb_per_s", r.cpu());
         } catch (IOException | CamInputException e) {
             figures.put("dxf_mb_per_s", null);
             notes.put("dxf_mb_per_s", e.getMessage());
         }
         progress.progress(0.6, "pocket cavity02");
         try {
-            figures.put("pocket_ms_cavity02", pocketMs(projectRoot.resolve("samples/pocket/cavity02.dad")));
+            figures.put("pocket_ms_cavity02", pocketMs());
         } catch (IOException | CamInputException | RuntimeException e) {
             figures.put("pocket_ms_cavity02", null);
             notes.put("pocket_ms_cavity02", e.getMessage());
@@ -85,10 +106,8 @@ public final class Benchmarks {
         progress.progress(0.75, "example 2 on the IRB-140, a fresh JVM");
         if (jar != null) {
             try {
-                figures.put("example2_irb140_process_s", processSeconds(projectRoot, jar));
-                notes.put("example2_irb140_process_s", javaCommand(jar).stream().anyMatch(a -> a.startsWith("-XX:Shared"))
-                        ? "with the class-data archive " + jar.resolveSibling("fresa.jsa") + ", as ./fresa starts"
-                        : "without a class-data archive (./fresa makes " + jar.resolveSibling("fresa.jsa") + ")");
+                figures.put("example2_irb140_process_s", processSeconds(jar));
+                notes.put("example2_irb140_process_s", processNote(jar));
             } catch (IOException e) {
                 figures.put("example2_irb140_process_s", null);
                 notes.put("example2_irb140_process_s", e.getMessage());
@@ -179,8 +198,7 @@ public final class Benchmarks {
     }
 
     /** Reads and binds example 2 from memory, repeated for 200 ms, median of 9. */
-    static Rate part21MbPerS(Path example2) throws IOException, CamInputException {
-        byte[] data = Files.readAllBytes(example2);
+    static Rate part21MbPerS(byte[] data) throws IOException, CamInputException {
         Run read = () -> {
             StepNcReader.read(new ByteArrayInputStream(data), "bench");
             return data.length;
@@ -202,8 +220,7 @@ public final class Benchmarks {
     }
 
     /** Reads the 10 052-line corpus drawing and chains it, from memory, median of 7. */
-    static Rate dxfMbPerS(Path file) throws IOException, CamInputException {
-        byte[] data = Files.readAllBytes(file);
+    static Rate dxfMbPerS(byte[] data) throws IOException, CamInputException {
         warmUp(() -> {
             Chainer.chain(DxfReader.read(data, "bench", DxfReadOptions.DEFAULT).curves(), 0.001);
             return data.length;
@@ -222,9 +239,16 @@ public final class Benchmarks {
     }
 
     /** Recognition, passes and the 7M post of cavity 02 with the thesis's technology, in ms. */
-    static double pocketMs(Path dad) throws IOException, CamInputException {
-        JobSettings.PocketSettings s = new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100,
-                "linuxcnc");
+    static double pocketMs() throws IOException, CamInputException {
+        Path dad = inputFile(CAVITY02);
+        try {
+            return pocketMs(new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, "linuxcnc"));
+        } finally {
+            Files.deleteIfExists(dad);
+        }
+    }
+
+    private static double pocketMs(JobSettings.PocketSettings s) throws IOException, CamInputException {
         double[] ms = new double[15];
         for (int r = -10; r < ms.length; r++) {
             long t0 = System.nanoTime();
@@ -245,12 +269,21 @@ public final class Benchmarks {
      * The JVM starts as the {@code ./fresa} launcher starts it: with the class-data archive next to
      * the jar when there is one newer than the jar (see {@link #javaCommand}).
      */
-    static double processSeconds(Path root, Path jar) throws IOException, InterruptedException {
+    static double processSeconds(Path jar) throws IOException, InterruptedException {
+        Path example2 = inputFile(EXAMPLE2);
+        try {
+            return processSeconds(jar, example2);
+        } finally {
+            Files.deleteIfExists(example2);
+        }
+    }
+
+    private static double processSeconds(Path jar, Path example2) throws IOException, InterruptedException {
         double[] s = new double[3];
         for (int r = 0; r < s.length; r++) {
             Path out = Files.createTempDirectory("fresa-bench");
             List<String> cmd = javaCommand(jar);
-            cmd.addAll(List.of("robot", root.resolve("samples/stepnc/example2.stp").toString(),
+            cmd.addAll(List.of("robot", example2.toString(),
                     "--robot", "irb140", "--robot-table", "450,0,350", "--table-piece", "0,10,0", "--out", out.toString()));
             long t0 = System.nanoTime();
             Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
@@ -269,14 +302,33 @@ public final class Benchmarks {
         return median(s);
     }
 
+    /** How the fresh JVM of the whole-process figure was started, for the figure's note. */
+    private static String processNote(Path jar) {
+        List<String> cmd = javaCommand(jar);
+        if (!cmd.contains("-jar")) {
+            return "the installed application's launcher " + cmd.get(0);
+        }
+        return cmd.stream().anyMatch(a -> a.startsWith("-XX:Shared"))
+                ? "with the class-data archive " + jar.resolveSibling("fresa.jsa") + ", as ./fresa starts"
+                : "without a class-data archive (./fresa makes " + jar.resolveSibling("fresa.jsa") + ")";
+    }
+
     /**
      * The command line that starts the jar as {@code ./fresa} does: this JVM's java, and
      * {@code fresa.jsa} beside the jar as the class-data archive when it is newer than the jar
-     * (the JVM ignores an archive that does not match, silently).
+     * (the JVM ignores an archive that does not match, silently). In an installed app image, whose
+     * runtime has no {@code java} command, the application's own launcher (jpackage names it in
+     * {@code jpackage.app-path}) starts the fresh JVM, as the user starts it.
      */
     static List<String> javaCommand(Path jar) {
         List<String> cmd = new ArrayList<>();
-        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
+        String launcher = System.getProperty("jpackage.app-path");
+        if (!Files.isExecutable(java) && launcher != null) {
+            cmd.add(launcher);
+            return cmd;
+        }
+        cmd.add(java.toString());
         Path jsa = jar.resolveSibling("fresa.jsa");
         try {
             if (Files.isRegularFile(jsa)

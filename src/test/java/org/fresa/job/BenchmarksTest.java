@@ -1,5 +1,6 @@
 package org.fresa.job;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -18,6 +19,18 @@ class BenchmarksTest {
             return x > 0 ? 1000 : 0;
         });
         assertTrue(ns >= 5_000_000_000L && ns < 12_000_000_000L, ns + " ns");
+    }
+
+    @Test
+    void theInputsComeFromTheJarNotFromTheProjectFolder() throws Exception {
+        // the same files as the checkout's, so that figures from an installed app compare with them
+        assertArrayEquals(java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/stepnc/example2.stp")),
+                Benchmarks.input(Benchmarks.EXAMPLE2));
+        assertArrayEquals(java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/pocket/cavity02.dad")),
+                Benchmarks.input(Benchmarks.CAVITY02));
+        assertEquals(1_809_590, Benchmarks.input(Benchmarks.DXF).length);
+        assertTrue(new String(Benchmarks.input("ezdxf/LICENSE.txt"), java.nio.charset.StandardCharsets.UTF_8)
+                .startsWith("Copyright (c) 2011-2018, Manfred Moitzi"), "the drawing's licence beside it");
     }
 
     @Test

@@ -30,8 +30,7 @@ final class BenchCommand implements Callable<Integer> {
             } catch (java.net.URISyntaxException | SecurityException e) {
                 jar = null;
             }
-            java.nio.file.Path root = jar != null ? jar.toAbsolutePath().getParent().getParent() : java.nio.file.Path.of("");
-            java.util.Map<String, Object> figures = Benchmarks.run(root, jar, progress);
+            java.util.Map<String, Object> figures = Benchmarks.run(jar, progress);
             if (json) {
                 spec.commandLine().getOut().println(Json.write(figures));
             } else {
