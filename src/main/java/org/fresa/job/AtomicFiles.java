@@ -7,6 +7,8 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 
 /**
  * Writes a file so that it appears complete or not at all: the content goes to a hidden
@@ -52,9 +54,32 @@ public final class AtomicFiles {
         void writeTo(OutputStream out) throws IOException;
     }
 
-    /** Writes the target atomically, creating its folder when needed. */
+    /**
+     * Checks that a file may be written there: nothing is there yet, or a regular file that the
+     * write replaces. A directory, a named pipe, a device or a socket is refused: the rename would
+     * replace the node itself (a FIFO another program reads, /dev/full) with a file.
+     *
+     * @param option how the user named the path ({@code --out}), for the message
+     * @throws CamInputException naming the option, the path and what it is
+     */
+    public static Path requireWritable(Path target, String option) throws CamInputException {
+        if (Files.exists(target) && !Files.isRegularFile(target)) {
+            throw new CamInputException(option, target + " is " + FileChecks.kind(target)
+                    + ", not a file: Fresa writes a new file and renames it into place, which would replace it");
+        }
+        return target;
+    }
+
+    /**
+     * Writes the target atomically, creating its folder when needed.
+     *
+     * @throws IOException also when the target exists and is not a regular file (it is left as it is)
+     */
     public static void write(Path target, Body body) throws IOException {
         Path abs = target.toAbsolutePath();
+        if (Files.exists(abs) && !Files.isRegularFile(abs)) {
+            throw new IOException(abs + " is " + FileChecks.kind(abs) + ", not a regular file: not replaced");
+        }
         Path dir = abs.getParent();
         Files.createDirectories(dir);
         if (CLEANED.add(dir)) {
