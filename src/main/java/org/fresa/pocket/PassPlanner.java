@@ -62,6 +62,8 @@ public final class PassPlanner {
         }
         List<PocketPass> milled = new ArrayList<>(p.generated);
         Collections.reverse(milled);
+        // each pass: its pieces, a ramp down along them at most as long, a link and rapids
+        tech.checkMoves(milled.stream().mapToLong(x -> 2L * x.pieces().size() + 4).sum());
         return new PocketPlan(rec, tech, p.generated, milled);
     }
 

@@ -93,6 +93,8 @@ public final class RegionPocket {
         for (Cut c : order) {
             directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
         }
+        // each loop: its elements, a ramp down along them at most as long, a link and rapids
+        tech.checkMoves(directed.stream().mapToLong(c -> 2L * c.loop().size() + 4).sum());
         Toolpath path = toolpath(directed, levels.get(0), tech);
         return new Plan(levels, directed, path);
     }

@@ -33,7 +33,7 @@ final class SoleCommand implements Callable<Integer> {
             if (j.sole().isEmpty()) {
                 throw new org.fresa.model.CamInputException(job.toString(), "the job has no <sole> settings");
             }
-            return org.fresa.job.SoleService.run(j, new org.fresa.job.OutputFolder(out), progress);
+            return CliSupport.intoFolder(out, folder -> org.fresa.job.SoleService.run(j, folder, progress));
         });
     }
 }
