@@ -32,9 +32,17 @@ public final class AtomicFiles {
 
     private static final java.util.Set<Path> IN_PROGRESS = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private static final java.util.Set<Path> CLEANED = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /** Guards the creation of temporary files against the shutdown hook. */
+    private static final Object GATE = new Object();
+    private static boolean ending;
 
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            // the run's threads go on while the hook runs: from here no new temporary file is made,
+            // so every one that exists is in IN_PROGRESS and removed below
+            synchronized (GATE) {
+                ending = true;
+            }
             for (Path p : IN_PROGRESS) {
                 try {
                     Files.deleteIfExists(p);
@@ -85,8 +93,14 @@ public final class AtomicFiles {
         if (CLEANED.add(dir)) {
             removeStale(dir);
         }
-        Path tmp = createTemporary(dir);
-        IN_PROGRESS.add(tmp);
+        Path tmp;
+        synchronized (GATE) {
+            if (ending) {
+                throw new java.io.InterruptedIOException("the program is ending: " + abs.getFileName() + " not written");
+            }
+            tmp = createTemporary(dir);
+            IN_PROGRESS.add(tmp);
+        }
         boolean done = false;
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16)) {
