@@ -59,13 +59,13 @@ public record PocketTechnology(double toolDiameterMm, double cutFraction, double
     /**
      * Checks that the program of a plan stays within {@link #MAX_MOVES} over all depth passes.
      *
-     * @param movesPerLayer the moves of one layer (pass elements and the moves that link passes)
+     * @param movesPerLayer an upper bound of the moves of one layer (pass elements and the moves that link passes)
      * @throws ToolTooLargeException when it would not
      */
     public void checkMoves(long movesPerLayer) throws ToolTooLargeException {
         // both factors are bounded (pass elements by the planners, layers by MAX_DEPTH_PASSES): no overflow
         if (movesPerLayer * depthPasses() > MAX_MOVES) {
-            throw new ToolTooLargeException("the program would have about " + movesPerLayer + " moves in each of "
+            throw new ToolTooLargeException("the program would have up to " + movesPerLayer + " moves in each of "
                     + depthPasses() + " depth passes, more than " + MAX_MOVES + " in all: use a larger depth per pass"
                     + " or a larger tool");
         }
