@@ -6,10 +6,12 @@ import java.nio.channels.FileChannel;
 import java.nio.channels.FileLock;
 import java.nio.channels.OverlappingFileLockException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.time.Instant;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
@@ -38,14 +40,18 @@ public final class FolderLock implements AutoCloseable {
     /** The lock file's name in the folder (hidden). */
     public static final String FILE_NAME = ".fresa-lock";
 
-    private static final Map<Path, FolderLock> HELD = new ConcurrentHashMap<>();
+    private static final Map<Path, Object> HELD = new ConcurrentHashMap<>();
+    /** Marks a folder in HELD while its lock is being taken. */
+    private static final Object RESERVED = new Object();
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss", Locale.ROOT)
             .withZone(ZoneId.systemDefault());
 
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            for (FolderLock l : HELD.values()) {
-                l.removeFile();
+            for (Object l : HELD.values()) {
+                if (l instanceof FolderLock f) {
+                    f.removeFile();
+                }
             }
         }, "fresa-folder-locks"));
     }
@@ -86,12 +92,46 @@ public final class FolderLock implements AutoCloseable {
         boolean created = !Files.isDirectory(dir);
         Files.createDirectories(dir);
         Path file = dir.resolve(FILE_NAME);
-        String token = "process " + ProcessHandle.current().pid() + ", started " + TIME.format(Instant.now());
-        for (int attempt = 0; ; attempt++) {
-            if (HELD.containsKey(dir)) {
-                throw new FolderBusyException(dir, "in this program");
+        // one run per folder in this JVM: the operating system's lock does not tell threads apart
+        if (HELD.putIfAbsent(dir, RESERVED) != null) {
+            throw new FolderBusyException(dir, "in this program");
+        }
+        boolean done = false;
+        try {
+            FolderLock l = lockFile(dir, file, created);
+            HELD.put(dir, l);
+            done = true;
+            return l;
+        } finally {
+            if (!done) {
+                HELD.remove(dir, RESERVED);
             }
-            FileChannel ch = FileChannel.open(file, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
+        }
+    }
+
+    /**
+     * Takes the lock file. No other descriptor of the file is ever opened by its holder, as
+     * closing one would drop the holder's (POSIX) lock. The run before removes the file while it
+     * still holds the lock: a run that opened the file just before that holds a lock on a removed
+     * file, which is seen by the file's identity (device and inode) having changed, and tries again.
+     */
+    private static FolderLock lockFile(Path dir, Path file, boolean created) throws IOException {
+        for (int attempt = 0; attempt < 100; attempt++) {
+            Object before = null;
+            FileChannel ch;
+            try {
+                ch = FileChannel.open(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+            } catch (FileAlreadyExistsException e) {
+                before = identity(file);
+                try {
+                    ch = before == null ? null : FileChannel.open(file, StandardOpenOption.WRITE);
+                } catch (NoSuchFileException gone) {
+                    ch = null;
+                }
+                if (ch == null) {
+                    continue;
+                }
+            }
             Optional<FileLock> lock;
             try {
                 FileLock l = ch.tryLock();
@@ -109,46 +149,40 @@ public final class FolderLock implements AutoCloseable {
                 // a file system without locks (some network shares): the lock file alone marks the folder
                 lock = Optional.empty();
             }
-            String mine = token + " #" + attempt + "-" + System.nanoTime();
-            ch.truncate(0);
-            ch.write(ByteBuffer.wrap((mine + "\n").getBytes(StandardCharsets.UTF_8)), 0);
-            ch.force(false);
-            // the run before may have removed the file between our open and our lock: then this
-            // lock is on a deleted file and the folder's file is another run's (or none); try again
-            if (mine.equals(holderLine(file))) {
-                FolderLock l = new FolderLock(dir, file, ch, lock, created);
-                if (HELD.putIfAbsent(dir, l) == null) {
-                    return l;
+            if (before != null && !before.equals(identity(file))) {
+                if (lock.isPresent()) {
+                    lock.get().release();
                 }
-                l.release(false);
-                throw new FolderBusyException(dir, "in this program");
+                ch.close();
+                continue;
             }
-            if (lock.isPresent()) {
-                lock.get().release();
-            }
-            ch.close();
-            if (attempt > 100) {
-                throw new FolderBusyException(dir, holder(file));
-            }
+            String holder = "process " + ProcessHandle.current().pid() + ", started " + TIME.format(Instant.now());
+            ch.truncate(0);
+            ch.write(ByteBuffer.wrap((holder + "\n").getBytes(StandardCharsets.UTF_8)), 0);
+            ch.force(false);
+            return new FolderLock(dir, file, ch, lock, created);
         }
+        throw new FolderBusyException(dir, holder(file));
     }
 
-    private static String holderLine(Path file) {
+    /** The file's identity (device and inode) without opening it, or null when it is gone. */
+    private static Object identity(Path file) throws IOException {
         try {
-            String s = Files.readString(file, StandardCharsets.UTF_8);
-            int nl = s.indexOf('\n');
-            return nl < 0 ? s : s.substring(0, nl);
+            Object key = Files.readAttributes(file, BasicFileAttributes.class).fileKey();
+            return key != null ? key : Files.getLastModifiedTime(file);
         } catch (NoSuchFileException e) {
-            return "";
-        } catch (IOException e) {
-            return "";
+            return null;
         }
     }
 
+    /** Who holds the folder, as its lock file says (read by a run that does not hold it). */
     private static String holder(Path file) {
-        String line = holderLine(file);
-        int mark = line.indexOf(" #");
-        return mark > 0 ? line.substring(0, mark) : "unknown process";
+        try {
+            String s = Files.readString(file, StandardCharsets.UTF_8).strip();
+            return s.startsWith("process ") && s.indexOf('\n') < 0 ? s : "unknown process";
+        } catch (IOException e) {
+            return "unknown process";
+        }
     }
 
     /** The folder held. */
@@ -162,10 +196,10 @@ public final class FolderLock implements AutoCloseable {
      */
     @Override
     public void close() throws IOException {
-        release(true);
+        release();
     }
 
-    private synchronized void release(boolean registered) throws IOException {
+    private synchronized void release() throws IOException {
         if (closed) {
             return;
         }
@@ -177,9 +211,7 @@ public final class FolderLock implements AutoCloseable {
             }
             channel.close();
         } finally {
-            if (registered) {
-                HELD.remove(dir, this);
-            }
+            HELD.remove(dir, this);
         }
         if (createdFolder) {
             try (var s = Files.list(dir)) {
