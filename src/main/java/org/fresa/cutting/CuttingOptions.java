@@ -29,10 +29,23 @@ public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm,
         boolean outerClockwise, boolean holesClockwise, double feedMmPerMin, double pierceDwellS,
         boolean avoidCutParts) {
 
+    /** Widest kerf (mm): no jet or beam cuts wider. */
+    public static final double MAX_KERF_MM = 100;
+    /**
+     * Longest lead-in, lead-out and overcut (mm): the search for a clear lead looks at the
+     * drawing around it, so its length bounds the work.
+     */
+    public static final double MAX_LEAD_MM = 1000;
+
     public CuttingOptions {
         Objects.requireNonNull(process, "process");
         if (!(kerfMm >= 0) || !(leadInMm >= 0) || !(leadOutMm >= 0) || !(overcutMm >= 0) || !(gapToleranceMm >= 0)) {
             throw new IllegalArgumentException("kerf, leads, overcut and tolerance must be >= 0");
+        }
+        if (!(kerfMm <= MAX_KERF_MM) || !(Math.max(leadInMm, Math.max(leadOutMm, overcutMm)) <= MAX_LEAD_MM)
+                || !Double.isFinite(gapToleranceMm)) {
+            throw new IllegalArgumentException("the kerf may be at most " + MAX_KERF_MM + " mm, leads and overcut at most "
+                    + MAX_LEAD_MM + " mm");
         }
         if (!(feedMmPerMin > 0) || !(pierceDwellS >= 0)) {
             throw new IllegalArgumentException("feed must be > 0 and dwell >= 0");

@@ -21,6 +21,8 @@ import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
+import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 
 /**
  * Reads the model space of a DXF drawing (ASCII R12 to R2018, or binary) into lines and exact
@@ -80,9 +82,30 @@ public final class DxfReader {
         return read(file, DxfReadOptions.DEFAULT);
     }
 
+    /**
+     * Reads a drawing file.
+     *
+     * @throws DxfException also for a path that is not a regular file, or a file larger than
+     *     {@link #maxFileBytes()}
+     */
     public static DxfDrawing read(Path file, DxfReadOptions opt) throws DxfException, IOException {
         String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
+        try {
+            FileChecks.requireInput(file, "a DXF drawing", maxFileBytes());
+        } catch (DxfException e) {
+            throw e;
+        } catch (CamInputException e) {
+            throw new DxfException(e.source(), 0, e.problem());
+        }
         return read(Files.readAllBytes(file), name, opt);
+    }
+
+    /**
+     * The largest drawing read: the whole file and its group codes are held in memory, about 16
+     * times the file's size at the peak, so a sixteenth of the Java heap (32 MB in 512 MB).
+     */
+    public static long maxFileBytes() {
+        return FileChecks.heapShare(16);
     }
 
     /**
@@ -814,6 +837,23 @@ public final class DxfReader {
         }
     }
 
+    /**
+     * The cycle of blocks an insert closes, named in insertion order: "block 'A' inserts itself"
+     * or "blocks insert each other in a cycle: A -> B -> A".
+     *
+     * @param stack the blocks being expanded, the innermost first
+     */
+    static String cycle(Deque<String> stack, String name) {
+        List<String> path = new ArrayList<>(stack);
+        java.util.Collections.reverse(path);
+        List<String> loop = new ArrayList<>(path.subList(path.indexOf(name), path.size()));
+        if (loop.size() == 1) {
+            return "block '" + name + "' inserts itself";
+        }
+        loop.add(name);
+        return "blocks insert each other in a cycle: " + String.join(" -> ", loop);
+    }
+
     private void insert(Entity e, String layer, DxfAffine t, int depth, Deque<String> stack) throws BadEntity {
         String name = str(e, 2, "");
         Block b = blocks.get(name);
@@ -822,7 +862,7 @@ public final class DxfReader {
         }
         if (stack.contains(name)) {
             if (reportedCycles.add(name)) {
-                warn(describe(e) + ": block '" + name + "' inserts itself; the inner insert is left out");
+                warn(describe(e) + ": " + cycle(stack, name) + "; the inner insert is left out");
             }
             return;
         }

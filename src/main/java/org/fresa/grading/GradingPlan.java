@@ -41,6 +41,14 @@ public record GradingPlan(SizeSystem system, double baseSize, List<Double> sizes
         if (!(arcToleranceMm > 0)) {
             throw new IllegalArgumentException("arc tolerance must be > 0: " + arcToleranceMm);
         }
+        system.checkSize(baseSize, "base size");
+        for (double s : sizes) {
+            system.checkSize(s, "size");
+        }
+        if (!(lengthStepMm > 0) || !(widthStepMm >= 0) || !Double.isFinite(lengthStepMm + widthStepMm)) {
+            throw new IllegalArgumentException("steps must be finite, the length step > 0 mm and the width step >= 0 mm: "
+                    + lengthStepMm + ", " + widthStepMm);
+        }
     }
 
     /** A plan with the system's steps, the heel-centre origin, no shrinkage, biarcs. */

@@ -37,11 +37,16 @@ public final class SizeRange {
         if (!Double.isFinite(a) || !Double.isFinite(b) || b < a) {
             throw new IllegalArgumentException("expected sizes A-B with A <= B, found '" + text + "'");
         }
+        system.checkSize(a, "size");
+        system.checkSize(b, "size");
         double step = system.wholeSizeStep() / (halfSizes ? 2 : 1);
-        long n = Math.round(Math.floor((b - a) / step + 1e-9)) + 1;
-        if (n > MAX_SIZES) {
-            throw new IllegalArgumentException("too many sizes in '" + text + "': " + n + " (at most " + MAX_SIZES + ")");
+        // counted in double: a range of 1e308 sizes would overflow a long
+        double count = Math.floor((b - a) / step + 1e-9) + 1;
+        if (!(count <= MAX_SIZES)) {
+            throw new IllegalArgumentException("too many sizes in '" + text + "': " + String.format(java.util.Locale.ROOT,
+                    "%.0f", count) + " (at most " + MAX_SIZES + ")");
         }
+        long n = (long) count;
         List<Double> out = new ArrayList<>();
         for (long i = 0; i < n; i++) {
             out.add(a + i * step);

@@ -107,6 +107,33 @@ public enum SizeSystem {
         }
     }
 
+    /** The longest last a size may have (mm): beyond any foot, and it keeps graded outlines within reach. */
+    public static final double MAX_LAST_LENGTH_MM = 1000;
+
+    /** The largest size number of the system: the one whose last is {@link #MAX_LAST_LENGTH_MM} long. */
+    public double maxSize() {
+        return sizeOfLastLength(MAX_LAST_LENGTH_MM);
+    }
+
+    /**
+     * Checks a size number: above 0 and at most {@link #maxSize()}.
+     *
+     * @param what how the message names it ("base size", "size")
+     * @throws IllegalArgumentException with a message for the user
+     */
+    public double checkSize(double size, String what) {
+        if (!(size > 0 && size <= maxSize())) {
+            throw new IllegalArgumentException(what + " " + trim(size) + " is not a " + title + " size: expected a "
+                    + "number above 0 and at most " + trim(Math.floor(maxSize() * 100) / 100) + " (a last of "
+                    + trim(MAX_LAST_LENGTH_MM) + " mm)");
+        }
+        return size;
+    }
+
+    private static String trim(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
     /** The size in another system with the same nominal last length, rounded to a half size. */
     public double convert(double size, SizeSystem to) {
         double s = to.sizeOfLastLength(lastLengthMm(size)) / to.wholeSizeStep;

@@ -7,6 +7,8 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 
 /**
  * Writes a file so that it appears complete or not at all: the content goes to a hidden
@@ -30,9 +32,17 @@ public final class AtomicFiles {
 
     private static final java.util.Set<Path> IN_PROGRESS = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private static final java.util.Set<Path> CLEANED = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /** Guards the creation of temporary files against the shutdown hook. */
+    private static final Object GATE = new Object();
+    private static boolean ending;
 
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            // the run's threads go on while the hook runs: from here no new temporary file is made,
+            // so every one that exists is in IN_PROGRESS and removed below
+            synchronized (GATE) {
+                ending = true;
+            }
             for (Path p : IN_PROGRESS) {
                 try {
                     Files.deleteIfExists(p);
@@ -52,16 +62,45 @@ public final class AtomicFiles {
         void writeTo(OutputStream out) throws IOException;
     }
 
-    /** Writes the target atomically, creating its folder when needed. */
+    /**
+     * Checks that a file may be written there: nothing is there yet, or a regular file that the
+     * write replaces. A directory, a named pipe, a device or a socket is refused: the rename would
+     * replace the node itself (a FIFO another program reads, /dev/full) with a file.
+     *
+     * @param option how the user named the path ({@code --out}), for the message
+     * @throws CamInputException naming the option, the path and what it is
+     */
+    public static Path requireWritable(Path target, String option) throws CamInputException {
+        if (Files.exists(target) && !Files.isRegularFile(target)) {
+            throw new CamInputException(option, target + " is " + FileChecks.kind(target)
+                    + ", not a file: Fresa writes a new file and renames it into place, which would replace it");
+        }
+        return target;
+    }
+
+    /**
+     * Writes the target atomically, creating its folder when needed.
+     *
+     * @throws IOException also when the target exists and is not a regular file (it is left as it is)
+     */
     public static void write(Path target, Body body) throws IOException {
         Path abs = target.toAbsolutePath();
+        if (Files.exists(abs) && !Files.isRegularFile(abs)) {
+            throw new IOException(abs + " is " + FileChecks.kind(abs) + ", not a regular file: not replaced");
+        }
         Path dir = abs.getParent();
         Files.createDirectories(dir);
         if (CLEANED.add(dir)) {
             removeStale(dir);
         }
-        Path tmp = createTemporary(dir);
-        IN_PROGRESS.add(tmp);
+        Path tmp;
+        synchronized (GATE) {
+            if (ending) {
+                throw new java.io.InterruptedIOException("the program is ending: " + abs.getFileName() + " not written");
+            }
+            tmp = createTemporary(dir);
+            IN_PROGRESS.add(tmp);
+        }
         boolean done = false;
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16)) {

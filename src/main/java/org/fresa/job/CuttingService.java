@@ -59,10 +59,14 @@ public final class CuttingService {
         }
         boolean outerCw = direction("--outer-direction", s.outerDirection(), p.outerClockwise());
         boolean holesCw = direction("--hole-direction", s.holeDirection(), !outerCw);
-        return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead().equals("arc"))
-                .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode())
-                .withControllerCompensation(s.compensation().equals("controller")).withOvercut(s.overcutMm())
-                .withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
+        try {
+            return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead().equals("arc"))
+                    .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode())
+                    .withControllerCompensation(s.compensation().equals("controller")).withOvercut(s.overcutMm())
+                    .withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("options", e.getMessage());
+        }
     }
 
     /** cw, ccw, or process (the given default); true for clockwise. */

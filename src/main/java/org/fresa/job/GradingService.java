@@ -29,6 +29,7 @@ import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
 import org.fresa.model.ExactDecimal;
+import org.fresa.model.FileChecks;
 
 /**
  * The grading task ({@code fresa grade}, {@code fresa run} with task grade, the Grading tab):
@@ -96,6 +97,7 @@ public final class GradingService {
             }
             return closed;
         }
+        FileChecks.requireInput(file, "a sole outline (.dxf or .contour)", FileChecks.MAX_TEXT_FILE_BYTES);
         try (Reader r = Files.newBufferedReader(file)) {
             return ContourFile.read(r, file.getFileName().toString());
         }

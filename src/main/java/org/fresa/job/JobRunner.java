@@ -13,12 +13,21 @@ public final class JobRunner {
     }
 
     /**
-     * Runs the job's task, writing its files into the folder.
+     * Runs the job's task, writing its files into the folder, which it holds for the run
+     * ({@link FolderLock}).
      *
      * @throws CamInputException when an input file is bad (nothing is written then)
+     * @throws FolderLock.FolderBusyException when another run writes into the folder
      * @throws IOException when an output cannot be written
      */
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        try (FolderLock lock = FolderLock.acquire(out)) {
+            return runTask(job, out, progress);
+        }
+    }
+
+    private static TaskOutcome runTask(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         switch (job.task()) {
             case STEPNC:

@@ -25,6 +25,10 @@ import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobSettings.RobotSettings;
 import org.fresa.job.JobSettings.SoleSettings;
 import org.fresa.job.JobSettings.StepNcSettings;
+import org.fresa.job.SettingRanges.Cutting;
+import org.fresa.job.SettingRanges.Grading;
+import org.fresa.job.SettingRanges.Pocket;
+import org.fresa.job.SettingRanges.Sole;
 import org.fresa.job.xml.CuttingType;
 import org.fresa.job.xml.GradingType;
 import org.fresa.job.xml.JobType;
@@ -36,6 +40,7 @@ import org.fresa.job.xml.RobotType;
 import org.fresa.job.xml.SoleType;
 import org.fresa.job.xml.StepNcType;
 import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 import org.fresa.model.Placement;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
@@ -73,6 +78,7 @@ public final class JobXml {
      */
     public static Job read(Path file) throws CamInputException {
         String name = file.toString();
+        FileChecks.requireInput(file, "a job file", FileChecks.MAX_TEXT_FILE_BYTES);
         JobType xml;
         try (InputStream in = Files.newInputStream(file)) {
             Unmarshaller u = CONTEXT.createUnmarshaller();
@@ -91,7 +97,35 @@ public final class JobXml {
                     + " is newer than this Fresa understands (" + VERSION + ")");
         }
         Path base = file.toAbsolutePath().getParent();
-        return fromXml(xml, base);
+        try {
+            return fromXml(xml, base);
+        } catch (SettingRange.OutOfRange e) {
+            throw new CamInputException(name, lineOf(file, e.range().attribute(), e.value()), 0,
+                    e.range().attribute() + ": " + e.range().problem(e.value()));
+        }
+    }
+
+    /** The line where an attribute has the value, or 0 when it cannot be found. */
+    static int lineOf(Path file, String attribute, double value) {
+        java.util.regex.Pattern p = java.util.regex.Pattern.compile("\\b" + attribute + "\\s*=\\s*([\"'])(.*?)\\1");
+        try {
+            List<String> lines = Files.readAllLines(file, java.nio.charset.StandardCharsets.UTF_8);
+            for (int i = 0; i < lines.size(); i++) {
+                java.util.regex.Matcher m = p.matcher(lines.get(i));
+                while (m.find()) {
+                    try {
+                        if (Double.compare(Double.parseDouble(m.group(2).trim()), value) == 0) {
+                            return i + 1;
+                        }
+                    } catch (NumberFormatException e) {
+                        // another attribute's text: look on
+                    }
+                }
+            }
+        } catch (IOException e) {
+            // the message goes without a line
+        }
+        return 0;
     }
 
     private static CamInputException fromUnmarshal(String name, UnmarshalException e) {
@@ -160,25 +194,30 @@ public final class JobXml {
         }
         PocketType p = x.getPocket();
         if (p != null) {
-            job = job.withPocket(new PocketSettings(resolve(base, p.getContour()), p.getToolDiameterMm(),
-                    p.getCutFraction(), p.getFinishFraction(), p.getZTopMm(), p.getZBottomMm(),
-                    p.getMaxDepthPerPassMm(), p.getSpindleRpm(), p.getFeedMmPerMin(), p.getFinishFeedMmPerMin(),
-                    p.getPost(), p.getDirection()));
+            job = job.withPocket(new PocketSettings(resolve(base, p.getContour()),
+                    Pocket.TOOL_DIAMETER.require(p.getToolDiameterMm()), Pocket.CUT.require(p.getCutFraction()),
+                    Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
+                    Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
+                    Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
+                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection()));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
-            job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), c.getKerfMm(), c.getProcess(),
-                    c.getLeadInMm(), c.getLeadOutMm(), c.getLead(), c.getToleranceMm(), c.getUnits(),
-                    c.isPaperMode(), c.getPost(), c.getCompensation(), c.getOuterDirection(), c.getHoleDirection(),
-                    c.getOvercutMm(), c.isAvoidCutParts()));
+            job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), Cutting.KERF.require(c.getKerfMm()),
+                    c.getProcess(), Cutting.LEAD_IN.require(c.getLeadInMm()), Cutting.LEAD_OUT.require(c.getLeadOutMm()),
+                    c.getLead(), Cutting.TOLERANCE.require(c.getToleranceMm()), c.getUnits(), c.isPaperMode(),
+                    c.getPost(), c.getCompensation(), c.getOuterDirection(), c.getHoleDirection(),
+                    Cutting.OVERCUT.require(c.getOvercutMm()), c.isAvoidCutParts()));
         }
         GradingType g = x.getGrading();
         if (g != null) {
             Optional<Vec2> origin = g.getOriginXMm() != null && g.getOriginYMm() != null
-                    ? Optional.of(Vec2.of(g.getOriginXMm(), g.getOriginYMm())) : Optional.empty();
-            job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()), g.getBaseSize(), g.getSizes(),
-                    g.isHalfSizes(), g.getSystem(), optional(g.getLengthStepMm()), optional(g.getWidthStepMm()),
-                    origin, g.getShrinkage(), g.getShrinkageMode()));
+                    ? Optional.of(Vec2.of(Grading.ORIGIN_X.require(g.getOriginXMm()),
+                            Grading.ORIGIN_Y.require(g.getOriginYMm()))) : Optional.empty();
+            job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
+                    Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(), g.getSystem(),
+                    optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
+                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode()));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -193,21 +232,28 @@ public final class JobXml {
 
     private static SoleSettings soleSettings(SoleType so, Path base) {
         Optional<Vec2> origin = so.getOriginXMm() != null && so.getOriginYMm() != null
-                ? Optional.of(Vec2.of(so.getOriginXMm(), so.getOriginYMm())) : Optional.empty();
+                ? Optional.of(Vec2.of(Sole.ORIGIN_X.require(so.getOriginXMm()), Sole.ORIGIN_Y.require(so.getOriginYMm())))
+                : Optional.empty();
         List<JobSettings.SoleTool> tools = so.getTool().stream().map(t -> new JobSettings.SoleTool(t.getId(),
-                t.getNumber(), t.getDiameterMm(), t.getSpindleRpm(), t.getFeedMmPerMin(), t.getPlungeFeedMmPerMin()))
-                .toList();
+                Sole.TOOL_NUMBER.require(t.getNumber()), Sole.TOOL_DIAMETER.require(t.getDiameterMm()),
+                Sole.TOOL_SPINDLE.require(t.getSpindleRpm()), Sole.TOOL_FEED.require(t.getFeedMmPerMin()),
+                Sole.TOOL_PLUNGE_FEED.require(t.getPlungeFeedMmPerMin()))).toList();
         List<JobSettings.SoleDesign> designs = so.getDesign().stream().map(d -> new JobSettings.SoleDesign(d.getName(),
-                d.getTool(), d.getRule(), d.isText(), d.getPattern(), d.getCount(), d.getRows(), d.getDxMm(),
-                d.getDyMm(), d.getRowShiftMm(), d.getStepDeg(), d.getCenterXMm(), d.getCenterYMm(),
+                d.getTool(), d.getRule(), d.isText(), d.getPattern(), Sole.COUNT.require(d.getCount()),
+                Sole.ROWS.require(d.getRows()), Sole.DX.require(d.getDxMm()), Sole.DY.require(d.getDyMm()),
+                Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
+                Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
                 d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
                 d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
-                d.getCopy().stream().map(c -> new JobSettings.SoleCopy(c.getDxMm(), c.getDyMm(),
-                        optional(c.getMirrorXMm()), optional(c.getMirrorYMm()), c.getRotateDeg())).toList()))
+                d.getCopy().stream().map(c -> new JobSettings.SoleCopy(Sole.DX.require(c.getDxMm()),
+                        Sole.DY.require(c.getDyMm()), optional(Sole.MIRROR_X, c.getMirrorXMm()),
+                        optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
                 .toList();
-        return new SoleSettings(resolve(base, so.getOutline()), so.getBaseSize(), so.getSizes(), so.getCavityDepthMm(),
-                so.getPost(), so.getSystem(), origin, so.getShrinkage(), so.getShrinkageMode(), so.getTreadDepthMm(),
-                so.getClearanceMm(), so.getMarginMm(), tools, designs, so.getCavityTool());
+        return new SoleSettings(resolve(base, so.getOutline()), Sole.BASE_SIZE.require(so.getBaseSize()), so.getSizes(),
+                Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), so.getPost(), so.getSystem(), origin,
+                Sole.SHRINKAGE.require(so.getShrinkage()), so.getShrinkageMode(),
+                Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
+                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool());
     }
 
     private static SoleType soleType(SoleSettings s, Path base) {
@@ -276,15 +322,16 @@ public final class JobXml {
         return t;
     }
 
-    private static OptionalDouble optional(Double d) {
-        return d == null ? OptionalDouble.empty() : OptionalDouble.of(d);
+    private static OptionalDouble optional(SettingRange range, Double d) {
+        return d == null ? OptionalDouble.empty() : OptionalDouble.of(range.require(d));
     }
 
     private static Placement placement(PlacementType p) {
         if (p == null) {
             return Placement.ORIGIN;
         }
-        return new Placement(p.getXMm(), p.getYMm(), p.getZMm(), p.getRxDeg(), p.getRyDeg(), p.getRzDeg());
+        return SettingRanges.Robot.require(new Placement(p.getXMm(), p.getYMm(), p.getZMm(), p.getRxDeg(),
+                p.getRyDeg(), p.getRzDeg()));
     }
 
     private static PlacementType placement(Placement p) {

@@ -10,6 +10,8 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Future;
 import java.util.regex.Pattern;
+import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 
 /**
  * The output folder of a run ({@code --out DIR}): files are written atomically, their names are
@@ -40,6 +42,19 @@ public final class OutputFolder {
 
     public Path dir() {
         return dir;
+    }
+
+    /**
+     * An output folder that is a folder or does not exist yet (it is created when written).
+     *
+     * @param option how the user named it ({@code --out}), for the message
+     * @throws CamInputException for a path that names a file, a named pipe, a device or a socket
+     */
+    public static OutputFolder of(Path dir, String option) throws CamInputException {
+        if (Files.exists(dir) && !Files.isDirectory(dir)) {
+            throw new CamInputException(option, dir + " is " + FileChecks.kind(dir) + ", not a folder");
+        }
+        return new OutputFolder(dir);
     }
 
     /** Creates the folder (and its parents) if needed. */

@@ -18,6 +18,7 @@ import org.fresa.geom.Tolerance;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
+import org.fresa.model.FileChecks;
 import org.fresa.model.Toolpath;
 import org.fresa.pocket.DadReader;
 import org.fresa.pocket.PassPlanner;
@@ -53,6 +54,7 @@ public final class PocketService {
     public static PocketProfile readContour(Path file) throws CamInputException, IOException {
         String lower = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (lower.endsWith(".dad")) {
+            FileChecks.requireInput(file, "a pocket contour (.dad records)", FileChecks.MAX_TEXT_FILE_BYTES);
             return DadReader.read(Files.readString(file, StandardCharsets.ISO_8859_1), file.toString());
         }
         try {
@@ -81,6 +83,7 @@ public final class PocketService {
             }
             contours = drawing.closed();
         } else {
+            FileChecks.requireInput(file, "a contour file", FileChecks.MAX_TEXT_FILE_BYTES);
             String text = Files.readString(file, StandardCharsets.ISO_8859_1);
             contours = ContourFile.read(new StringReader(text), file.toString());
         }

@@ -17,6 +17,7 @@ import java.util.Map;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
 import org.fresa.geom.Transform3;
+import org.fresa.job.SettingRanges.RobotFile;
 import org.fresa.job.robotxml.FrameType;
 import org.fresa.job.robotxml.JointType;
 import org.fresa.job.robotxml.LimitType;
@@ -34,6 +35,7 @@ import org.fresa.kin.SerialRobot;
 import org.fresa.kin.TriceptRobot;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
+import org.fresa.model.FileChecks;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -56,7 +58,9 @@ public final class RobotFiles {
             return builtIn.get();
         }
         Path p = Path.of(nameOrFile);
-        if (!Files.isRegularFile(p)) {
+        if (Files.exists(p)) {
+            FileChecks.requireInput(p, "a robot file", FileChecks.MAX_TEXT_FILE_BYTES);
+        } else {
             throw new CamInputException(nameOrFile, "neither a built-in robot (irb140, adept-one, tricept806) nor a"
                     + " robot file");
         }
@@ -66,6 +70,7 @@ public final class RobotFiles {
     /** Reads and validates a robot file. */
     public static Robot read(Path file) throws CamInputException {
         String name = file.toString();
+        FileChecks.requireInput(file, "a robot file", FileChecks.MAX_TEXT_FILE_BYTES);
         RobotType xml;
         try (InputStream in = Files.newInputStream(file)) {
             Unmarshaller u = Holder.CONTEXT.createUnmarshaller();
@@ -90,6 +95,9 @@ public final class RobotFiles {
                 return serial(name, xml.getName(), description, xml.getSerial());
             }
             return tricept(xml.getName(), description, xml.getTricept());
+        } catch (SettingRange.OutOfRange e) {
+            throw new CamInputException(name, JobXml.lineOf(file, e.range().attribute(), e.value()), 0,
+                    e.range().attribute() + ": " + e.range().problem(e.value()));
         } catch (IllegalArgumentException e) {
             throw new CamInputException(name, e.getMessage());
         }
@@ -102,20 +110,26 @@ public final class RobotFiles {
         for (JointType j : s.getJoint()) {
             boolean rev = j.getType().equals("revolute");
             String variable = rev ? j.getTheta() : j.getD();
-            double offset = variableOffset(file, i, rev ? "theta" : "d", variable);
-            double a = number(file, i, "a", j.getA());
-            double alpha = number(file, i, "alpha", j.getAlpha());
+            double offset = (rev ? RobotFile.THETA : RobotFile.D).require(variableOffset(file, i, rev ? "theta" : "d",
+                    variable));
+            double a = RobotFile.A.require(number(file, i, "a", j.getA()));
+            double alpha = RobotFile.ALPHA.require(number(file, i, "alpha", j.getAlpha()));
+            double min = RobotFile.limit("min", rev).require(j.getMin());
+            double max = RobotFile.limit("max", rev).require(j.getMax());
             if (rev) {
-                joints.add(DhJoint.revolute(a, alpha, number(file, i, "d", j.getD()), offset, j.getMin(), j.getMax()));
+                joints.add(DhJoint.revolute(a, alpha, RobotFile.D.require(number(file, i, "d", j.getD())), offset, min,
+                        max));
             } else {
-                joints.add(DhJoint.prismatic(a, alpha, offset, number(file, i, "theta", j.getTheta()), j.getMin(),
-                        j.getMax()));
+                joints.add(DhJoint.prismatic(a, alpha, offset, RobotFile.THETA.require(number(file, i, "theta",
+                        j.getTheta())), min, max));
             }
             i++;
         }
         FrameType t = s.getTool();
         Transform3 tool = t == null ? Transform3.IDENTITY
-                : Transform3.ofXyzRpyDeg(t.getX(), t.getY(), t.getZ(), t.getRx(), t.getRy(), t.getRz());
+                : Transform3.ofXyzRpyDeg(RobotFile.tool(0).require(t.getX()), RobotFile.tool(1).require(t.getY()),
+                        RobotFile.tool(2).require(t.getZ()), RobotFile.tool(3).require(t.getRx()),
+                        RobotFile.tool(4).require(t.getRy()), RobotFile.tool(5).require(t.getRz()));
         int wrist = s.getWristJoint() == 0 ? -1 : s.getWristJoint() - 1;
         return new SerialRobot(name, description, new DenavitHartenbergChain(joints, Transform3.IDENTITY, tool), wrist);
     }
@@ -125,13 +139,17 @@ public final class RobotFiles {
         List<JointLimit> wrist = new ArrayList<>();
         int i = 1;
         for (LimitType l : t.getLeg()) {
-            legs.add(new JointLimit("q" + i++, org.fresa.kin.JointType.PRISMATIC, l.getMin(), l.getMax()));
+            legs.add(new JointLimit("q" + i++, org.fresa.kin.JointType.PRISMATIC,
+                    RobotFile.limit("min", false).require(l.getMin()), RobotFile.limit("max", false).require(l.getMax())));
         }
         for (LimitType l : t.getWrist()) {
-            wrist.add(new JointLimit("q" + i++, org.fresa.kin.JointType.REVOLUTE, l.getMin(), l.getMax()));
+            wrist.add(new JointLimit("q" + i++, org.fresa.kin.JointType.REVOLUTE,
+                    RobotFile.limit("min", true).require(l.getMin()), RobotFile.limit("max", true).require(l.getMax())));
         }
-        return new TriceptRobot(name, description, t.getBaseRadius(), t.getPlatformRadius(), t.getCentreOffset(),
-                t.getEffectorLength(), legs, wrist);
+        return new TriceptRobot(name, description, RobotFile.BASE_RADIUS.require(t.getBaseRadius()),
+                RobotFile.PLATFORM_RADIUS.require(t.getPlatformRadius()),
+                RobotFile.CENTRE_OFFSET.require(t.getCentreOffset()),
+                RobotFile.EFFECTOR_LENGTH.require(t.getEffectorLength()), legs, wrist);
     }
 
     /**

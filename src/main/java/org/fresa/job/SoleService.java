@@ -27,6 +27,7 @@ import org.fresa.grading.SizeSystem;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
 import org.fresa.model.ExactDecimal;
+import org.fresa.model.FileChecks;
 import org.fresa.model.Toolpath;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
@@ -54,6 +55,8 @@ import org.fresa.sole.TreadTool;
 public final class SoleService {
 
     private static final Tolerance TOL = Tolerance.DEFAULT;
+    /** Most copies of a design's figures a pattern may make. */
+    private static final int MAX_FIGURES = 10_000;
 
     private SoleService() {
     }
@@ -73,14 +76,15 @@ public final class SoleService {
         SizeSystem system;
         List<Double> sizes;
         ShrinkageMode mode;
+        GradingPlan gp;
         try {
             system = SizeSystem.ofId(s.system());
             sizes = SizeRange.parse(s.sizes(), system, false);
             mode = ShrinkageMode.ofId(s.shrinkageMode());
+            gp = GradingPlan.of(system, s.baseSize(), sizes).withShrinkage(s.shrinkage(), mode);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(source, e.getMessage());
         }
-        GradingPlan gp = GradingPlan.of(system, s.baseSize(), sizes).withShrinkage(s.shrinkage(), mode);
         if (s.originMm().isPresent()) {
             gp = gp.withOrigin(s.originMm().get());
         }
@@ -114,6 +118,7 @@ public final class SoleService {
         if (!name.toLowerCase(Locale.ROOT).endsWith(".contour")) {
             throw new CamInputException(name, "a sole outline must be a .contour file (lines and arcs)");
         }
+        FileChecks.requireInput(file, "a sole outline (.contour)", FileChecks.MAX_TEXT_FILE_BYTES);
         try (var r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             return ContourFile.read(r, name);
         } catch (IOException e) {
@@ -140,7 +145,7 @@ public final class SoleService {
                 case "single" -> TreadPattern.single();
                 case "linear" -> TreadPattern.linear(d.dxMm(), d.dyMm(), positive(d.count(), "count"));
                 case "grid" -> TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"),
-                        positive(d.rows(), "rows"), d.rowShiftMm());
+                        gridRows(d), d.rowShiftMm());
                 case "polar" -> TreadPattern.polar(Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(),
                         positive(d.count(), "count"));
                 case "copies" -> copies(d.copies());
@@ -153,6 +158,16 @@ public final class SoleService {
         } catch (IllegalArgumentException e) {
             throw new CamInputException(where, e.getMessage());
         }
+    }
+
+    /** The rows of a grid, when the grid has at most {@value #MAX_FIGURES} copies in all. */
+    private static int gridRows(JobSettings.SoleDesign d) {
+        long all = (long) positive(d.count(), "count") * positive(d.rows(), "rows");
+        if (all > MAX_FIGURES) {
+            throw new IllegalArgumentException("a grid of " + d.count() + " x " + d.rows() + " = " + all
+                    + " copies: at most " + MAX_FIGURES);
+        }
+        return d.rows();
     }
 
     private static int positive(int n, String what) {

@@ -10,6 +10,19 @@ package org.fresa.kin;
  */
 public record JointLimit(String name, JointType type, double min, double max) {
 
+    /**
+     * @throws IllegalArgumentException for limits that are not finite or whose max is not above
+     *     the min (a serial joint's limits are held to the same rule in {@link DhJoint})
+     */
+    public JointLimit {
+        java.util.Objects.requireNonNull(name, "name");
+        java.util.Objects.requireNonNull(type, "type");
+        if (!Double.isFinite(min) || !Double.isFinite(max) || !(max > min)) {
+            throw new IllegalArgumentException("joint " + name + ": limits must have max > min, found " + min + " .. "
+                    + max + " " + type.unit());
+        }
+    }
+
     public boolean contains(double q, double slack) {
         return q >= min - slack && q <= max + slack;
     }

@@ -62,6 +62,9 @@ public final class PassPlanner {
         }
         List<PocketPass> milled = new ArrayList<>(p.generated);
         Collections.reverse(milled);
+        // each piece once cut and once ramped down, some arcs joined by short lines, and a link or
+        // rapids and a plunge per pass (the thesis's pockets have 1.4 moves per piece and layer)
+        tech.checkMoves(milled.stream().mapToLong(x -> 3L * x.pieces().size() + 4).sum());
         return new PocketPlan(rec, tech, p.generated, milled);
     }
 

@@ -16,7 +16,19 @@ package org.fresa.pocket;
 public record PocketTechnology(double toolDiameterMm, double cutFraction, double finishFraction, double zTopMm,
         double zBottomMm, double maxDepthMm, double spindleRpm, double feedMmPerMin, double finishFeedMmPerMin) {
 
+    /** Most depth passes (layers) a pocket may have. */
+    public static final int MAX_DEPTH_PASSES = 1_000_000;
+    /** Most moves a pocket program may have, all layers together: about 30 MB of G-code. */
+    public static final long MAX_MOVES = 1_000_000;
+
     public PocketTechnology {
+        double[] all = {toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthMm, spindleRpm,
+            feedMmPerMin, finishFeedMmPerMin};
+        for (double v : all) {
+            if (!Double.isFinite(v)) {
+                throw new IllegalArgumentException("technology values must be finite numbers: " + v);
+            }
+        }
         if (!(toolDiameterMm > 0)) {
             throw new IllegalArgumentException("tool diameter must be > 0: " + toolDiameterMm);
         }
@@ -32,8 +44,30 @@ public record PocketTechnology(double toolDiameterMm, double cutFraction, double
         if (!(maxDepthMm > 0)) {
             throw new IllegalArgumentException("max depth per pass must be > 0: " + maxDepthMm);
         }
+        if ((zTopMm - zBottomMm) / maxDepthMm > MAX_DEPTH_PASSES) {
+            throw new IllegalArgumentException("a max depth per pass of " + maxDepthMm + " mm over " + (zTopMm - zBottomMm)
+                    + " mm makes more than " + MAX_DEPTH_PASSES + " depth passes: give a larger depth per pass");
+        }
+        if (!(spindleRpm > 0)) {
+            throw new IllegalArgumentException("spindle speed must be > 0 rpm: " + spindleRpm);
+        }
         if (!(feedMmPerMin > 0) || !(finishFeedMmPerMin > 0)) {
             throw new IllegalArgumentException("feeds must be > 0");
+        }
+    }
+
+    /**
+     * Checks that the program of a plan stays within {@link #MAX_MOVES} over all depth passes.
+     *
+     * @param movesPerLayer an upper bound of the moves of one layer (pass elements and the moves that link passes)
+     * @throws ToolTooLargeException when it would not
+     */
+    public void checkMoves(long movesPerLayer) throws ToolTooLargeException {
+        // both factors are bounded (pass elements by the planners, layers by MAX_DEPTH_PASSES): no overflow
+        if (movesPerLayer * depthPasses() > MAX_MOVES) {
+            throw new ToolTooLargeException("the program would have up to " + movesPerLayer + " moves in each of "
+                    + depthPasses() + " depth passes, more than " + MAX_MOVES + " in all: use a larger depth per pass"
+                    + " or a larger tool");
         }
     }
 

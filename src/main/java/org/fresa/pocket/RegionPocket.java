@@ -93,6 +93,9 @@ public final class RegionPocket {
         for (Cut c : order) {
             directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
         }
+        // each element once cut and once ramped down, some arcs joined by short lines, and a link
+        // or rapids and a plunge per loop
+        tech.checkMoves(directed.stream().mapToLong(c -> 3L * c.loop().size() + 4).sum());
         Toolpath path = toolpath(directed, levels.get(0), tech);
         return new Plan(levels, directed, path);
     }

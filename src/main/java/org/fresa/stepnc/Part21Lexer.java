@@ -79,10 +79,11 @@ final class Part21Lexer {
         if (n <= 0) {
             return false;
         }
-        pos = 0;
+        // a UTF-8 byte order mark (Windows editors write one) is no character of the file
+        pos = charsRead == 0 && buf[0] == '\uFEFF' ? 1 : 0;
         lim = n;
         charsRead += n;
-        return true;
+        return pos < lim || fill();
     }
 
     /** Appends c to the current word. */

@@ -12,6 +12,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import org.fresa.model.CamInputException;
+import org.fresa.model.FileChecks;
 import org.fresa.stepnc.Part21Lexer.Tok;
 
 /**
@@ -41,11 +43,32 @@ public final class Part21Reader {
         this.source = source;
     }
 
-    /** Reads a file (UTF-8; bytes that are not UTF-8 become U+FFFD inside strings). */
+    /**
+     * Reads a file (UTF-8; bytes that are not UTF-8 become U+FFFD inside strings; a byte order
+     * mark at the start is skipped).
+     *
+     * @throws StepParseException also for a path that is not a regular file, or a file larger
+     *     than {@link #maxFileBytes()}
+     */
     public static StepFile read(Path file) throws IOException, StepParseException {
+        try {
+            FileChecks.requireInput(file, "a Part 21 file", maxFileBytes());
+        } catch (StepParseException e) {
+            throw e;
+        } catch (CamInputException e) {
+            throw new StepParseException(e.source(), 0, 0, 0, e.problem());
+        }
         try (InputStream in = Files.newInputStream(file)) {
             return read(in, file.getFileName() == null ? file.toString() : file.getFileName().toString());
         }
+    }
+
+    /**
+     * The largest file read: the text streams through, but its instance graph stays in memory,
+     * about four times the file's size, so a quarter of the Java heap (128 MB in 512 MB).
+     */
+    public static long maxFileBytes() {
+        return FileChecks.heapShare(4);
     }
 
     public static StepFile read(InputStream in, String source) throws IOException, StepParseException {

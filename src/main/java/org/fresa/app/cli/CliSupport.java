@@ -3,7 +3,10 @@ package org.fresa.app.cli;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.CancellationException;
+import org.fresa.job.AtomicFiles;
+import org.fresa.job.FolderLock;
 import org.fresa.job.Json;
+import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -69,7 +72,36 @@ public final class CliSupport {
             TerminalProgress.clear(progress);
             err.println("fresa: cancelled");
             return EXIT_NOT_DOABLE;
+        } catch (OutOfMemoryError e) {
+            // the readers refuse files larger than their share of the heap; this is what is left
+            TerminalProgress.clear(progress);
+            err.println("fresa: not enough memory for this input (Java heap of "
+                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MB): give Java more memory, e.g. "
+                    + "FRESA_JAVA_OPTS=-Xmx4g, or split the input");
+            return EXIT_NOT_DOABLE;
         }
+    }
+
+    /** A command's work that writes into an output folder. */
+    @FunctionalInterface
+    public interface FolderTask {
+        TaskOutcome run(OutputFolder folder) throws CamInputException, java.io.IOException;
+    }
+
+    /**
+     * Runs a task into the {@code --out} folder, which it holds for the run: a path that is not a
+     * folder is refused, and so is a folder another run writes into ({@link FolderLock}).
+     */
+    static TaskOutcome intoFolder(Path out, FolderTask task) throws CamInputException, java.io.IOException {
+        OutputFolder folder = OutputFolder.of(out, "--out");
+        try (FolderLock lock = FolderLock.acquire(folder)) {
+            return task.run(folder);
+        }
+    }
+
+    /** The {@code --out} file of a command that writes one file: a regular file or nothing yet. */
+    static Path outFile(Path out) throws CamInputException {
+        return AtomicFiles.requireWritable(out, "--out");
     }
 
     /** A bug, not bad input: a short message for the user, the trace in the log file. */

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.SettingRanges.Cutting;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -75,10 +76,12 @@ final class CutCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        CuttingSettings s = new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead,
-                tolerance == null ? 0.001 : tolerance, units, paperMode, post, compensation, outerDirection, holeDirection,
-                overcutMm, !straightRapids);
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
-                progress -> CuttingService.run(s, out, tolerance != null, progress));
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            CuttingSettings s = new CuttingSettings(drawing, Cutting.KERF.check(kerfMm),
+                    process, Cutting.LEAD_IN.check(leadInMm), Cutting.LEAD_OUT.check(leadOutMm), lead,
+                    tolerance == null ? 0.001 : Cutting.TOLERANCE.check(tolerance), units, paperMode, post, compensation,
+                    outerDirection, holeDirection, Cutting.OVERCUT.check(overcutMm), !straightRapids);
+            return CuttingService.run(s, CliSupport.outFile(out), tolerance != null, progress);
+        });
     }
 }

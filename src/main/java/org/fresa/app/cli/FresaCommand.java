@@ -65,6 +65,13 @@ public final class FresaCommand implements Callable<Integer> {
         return cl.execute(args);
     }
 
+    /** The command line with every command, as the help lists them; tests walk its options. */
+    public static CommandLine withAllCommands() {
+        CommandLine cl = new CommandLine(new FresaCommand());
+        COMMANDS.forEach(cl::addSubcommand);
+        return cl;
+    }
+
     private static String commandPath(CommandLine cl) {
         String name = cl.getCommandName();
         return "fresa".equals(name) ? "" : name + " ";

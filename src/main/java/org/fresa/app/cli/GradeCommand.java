@@ -9,7 +9,8 @@ import org.fresa.grading.ArcMode;
 import org.fresa.grading.Coordination;
 import org.fresa.job.GradingService;
 import org.fresa.job.JobSettings.GradingSettings;
-import org.fresa.job.OutputFolder;
+import org.fresa.job.SettingRange;
+import org.fresa.job.SettingRanges.Grading;
 import org.fresa.model.CamInputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -84,20 +85,25 @@ final class GradeCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
-            GradingSettings s = new GradingSettings(outline.toAbsolutePath(), baseSize, sizes, halfSizes, system,
-                    lengthStepMm == null ? OptionalDouble.empty() : OptionalDouble.of(lengthStepMm),
-                    widthStepMm == null ? OptionalDouble.empty() : OptionalDouble.of(widthStepMm), origin(),
-                    shrinkage, shrinkageMode);
+            GradingSettings s = new GradingSettings(outline.toAbsolutePath(), Grading.BASE_SIZE.check(baseSize), sizes,
+                    halfSizes, system, optional(Grading.LENGTH_STEP, lengthStepMm),
+                    optional(Grading.WIDTH_STEP, widthStepMm), origin(), Grading.SHRINKAGE.check(shrinkage),
+                    shrinkageMode);
+            OptionalDouble axis = optional(Grading.LENGTH_AXIS, lengthAxisDeg);
+            Grading.HEEL_GROUP.check(heelGroup);
             GradingService.Options o;
             try {
-                o = new GradingService.Options(ArcMode.ofId(arcs),
-                        lengthAxisDeg == null ? OptionalDouble.empty() : OptionalDouble.of(lengthAxisDeg),
-                        coordinationMm == null ? Optional.empty() : Optional.of(new Coordination(coordinationMm, heelGroup)));
+                o = new GradingService.Options(ArcMode.ofId(arcs), axis, coordinationMm == null ? Optional.empty()
+                        : Optional.of(new Coordination(Grading.COORDINATION.check(coordinationMm), heelGroup)));
             } catch (IllegalArgumentException e) {
                 throw new CamInputException("options", e.getMessage());
             }
-            return GradingService.run(s, o, new OutputFolder(out), progress);
+            return CliSupport.intoFolder(out, folder -> GradingService.run(s, o, folder, progress));
         });
+    }
+
+    private static OptionalDouble optional(SettingRange range, Double v) throws CamInputException {
+        return v == null ? OptionalDouble.empty() : OptionalDouble.of(range.check(v));
     }
 
     private Optional<Vec2> origin() throws CamInputException {
@@ -105,13 +111,17 @@ final class GradeCommand implements Callable<Integer> {
             return Optional.empty();
         }
         String[] p = origin.split(",");
+        double x;
+        double y;
         try {
-            if (p.length == 2) {
-                return Optional.of(Vec2.of(Double.parseDouble(p[0].trim()), Double.parseDouble(p[1].trim())));
+            if (p.length != 2) {
+                throw new NumberFormatException(origin);
             }
-        } catch (IllegalArgumentException e) {
-            // reported below
+            x = Double.parseDouble(p[0].trim());
+            y = Double.parseDouble(p[1].trim());
+        } catch (NumberFormatException e) {
+            throw new CamInputException("--origin", "expected X,Y in mm, found '" + origin + "'");
         }
-        throw new CamInputException("--origin", "expected X,Y in mm, found '" + origin + "'");
+        return Optional.of(Vec2.of(Grading.ORIGIN_X.check(x), Grading.ORIGIN_Y.check(y)));
     }
 }

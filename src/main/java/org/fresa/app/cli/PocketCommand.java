@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketService;
+import org.fresa.job.SettingRanges.Pocket;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -65,9 +66,13 @@ final class PocketCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        PocketSettings settings = new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm,
-                zBottomMm, maxDepthMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction);
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json,
-                progress -> PocketService.run(settings, out, progress));
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            PocketSettings settings = new PocketSettings(contour,
+                    Pocket.TOOL_DIAMETER.check(toolDiameterMm), Pocket.CUT.check(cutFraction),
+                    Pocket.FINISH.check(finishFraction), Pocket.Z_TOP.check(zTopMm), Pocket.Z_BOTTOM.check(zBottomMm),
+                    Pocket.MAX_DEPTH.check(maxDepthMm), Pocket.SPINDLE.check(spindleRpm), Pocket.FEED.check(feedMmPerMin),
+                    Pocket.FINISH_FEED.check(finishFeedMmPerMin), post, direction);
+            return PocketService.run(settings, CliSupport.outFile(out), progress);
+        });
     }
 }

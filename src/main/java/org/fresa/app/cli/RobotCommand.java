@@ -3,7 +3,7 @@ package org.fresa.app.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.List;
-import org.fresa.job.OutputFolder;
+import org.fresa.job.SettingRanges;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.Placement;
@@ -49,10 +49,12 @@ final class RobotCommand implements Callable<Integer> {
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
             List<String> fmts = RobotService.parseFormats(formats);
-            Placement table = robotTable == null ? Placement.ORIGIN : RobotTrajectoryService.parseRobotTable(robotTable);
-            Placement piece = tablePiece == null ? Placement.ORIGIN : RobotTrajectoryService.parseTablePiece(tablePiece);
-            return RobotService.run(new RobotService.Settings(file, robot, table, piece, fmts), new OutputFolder(out),
-                    progress);
+            Placement table = robotTable == null ? Placement.ORIGIN
+                    : SettingRanges.Robot.check("--robot-table", RobotTrajectoryService.parseRobotTable(robotTable));
+            Placement piece = tablePiece == null ? Placement.ORIGIN
+                    : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
+            return CliSupport.intoFolder(out, folder -> RobotService.run(
+                    new RobotService.Settings(file, robot, table, piece, fmts), folder, progress));
         });
     }
 }

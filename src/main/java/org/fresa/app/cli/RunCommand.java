@@ -32,8 +32,9 @@ final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            OutputFolder folder = OutputFolder.of(out, "--out");
             Job j = JobXml.read(job);
-            return JobRunner.run(j, new OutputFolder(out), progress);
+            return JobRunner.run(j, folder, progress);
         });
     }
 }

@@ -2,7 +2,6 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.fresa.job.OutputFolder;
 import org.fresa.job.ToolpathService;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -35,6 +34,6 @@ final class ToolpathCommand implements Callable<Integer> {
     public Integer call() {
         java.io.PrintWriter o = spec.commandLine().getOut();
         return CliSupport.run(o, spec.commandLine().getErr(), json,
-                progress -> ToolpathService.run(file, post, new OutputFolder(out), progress));
+                progress -> CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, folder, progress)));
     }
 }

@@ -1,0 +1,216 @@
+package org.fresa.job;
+
+import org.fresa.cutting.CuttingOptions;
+import org.fresa.model.CamInputException;
+import org.fresa.model.Placement;
+
+/**
+ * The ranges of every numeric setting, one holder per module: the commands check their options
+ * against them before any work, {@link JobXml} checks the job file's attributes against the same
+ * ranges, so that a job file cannot bring a value the option refuses.
+ *
+ * <p>The bounds are what a workshop meets, with room to spare: a machine travels at most 10 m
+ * each way, a robot cell is at most 100 m across, spindles turn 1 to 100 000 rpm and feeds run
+ * 0.1 to 100 000 mm/min (the program check's machine range), a cutter is 0.01 mm to 1 m across.
+ * Counts are bounded so that no run holds more than about a million moves or figures.
+ */
+public final class SettingRanges {
+
+    /** Largest coordinate on a machine tool, either way (mm). */
+    public static final double MACHINE_TRAVEL_MM = 10_000;
+    /** Largest coordinate of a frame in a robot cell, either way (mm), as the Position tab allows. */
+    public static final double CELL_SIZE_MM = 100_000;
+    /** Largest rotation of a frame, either way (deg). */
+    public static final double TURN_DEG = 360;
+    /** Slowest and fastest spindle (rpm). */
+    public static final double MIN_SPINDLE_RPM = 1;
+    public static final double MAX_SPINDLE_RPM = 100_000;
+    /** Slowest and fastest feed (mm/min). */
+    public static final double MIN_FEED_MM_PER_MIN = 0.1;
+    public static final double MAX_FEED_MM_PER_MIN = 100_000;
+
+    private SettingRanges() {
+    }
+
+    private static SettingRange spindle(String option, String attribute) {
+        return SettingRange.of(option, attribute, MIN_SPINDLE_RPM, MAX_SPINDLE_RPM, "rpm");
+    }
+
+    private static SettingRange feed(String option, String attribute) {
+        return SettingRange.of(option, attribute, MIN_FEED_MM_PER_MIN, MAX_FEED_MM_PER_MIN, "mm/min");
+    }
+
+    private static SettingRange coordinate(String option, String attribute) {
+        return SettingRange.of(option, attribute, -MACHINE_TRAVEL_MM, MACHINE_TRAVEL_MM, "mm");
+    }
+
+    private static SettingRange angle(String option, String attribute) {
+        return SettingRange.of(option, attribute, -TURN_DEG, TURN_DEG, "deg");
+    }
+
+    /** {@code fresa pocket} and the job's {@code <pocket>}. */
+    public static final class Pocket {
+        public static final SettingRange TOOL_DIAMETER = SettingRange.of("--tool-diameter", "toolDiameterMm", 0.01,
+                1000, "mm");
+        public static final SettingRange CUT = SettingRange.above("--cut", "cutFraction", 0, 1, "");
+        public static final SettingRange FINISH = SettingRange.of("--finish", "finishFraction", 0, 0.5, "");
+        public static final SettingRange Z_TOP = coordinate("--z-top", "zTopMm");
+        public static final SettingRange Z_BOTTOM = coordinate("--z-bottom", "zBottomMm");
+        /** At least 1 um, no machine steps finer; the planner also refuses more than 10^6 layers. */
+        public static final SettingRange MAX_DEPTH = SettingRange.of("--max-depth", "maxDepthPerPassMm", 0.001, 1000,
+                "mm");
+        public static final SettingRange SPINDLE = spindle("--rpm", "spindleRpm");
+        public static final SettingRange FEED = feed("--feed", "feedMmPerMin");
+        public static final SettingRange FINISH_FEED = feed("--finish-feed", "finishFeedMmPerMin");
+
+        private Pocket() {
+        }
+    }
+
+    /** {@code fresa cut} and the job's {@code <cutting>}. */
+    public static final class Cutting {
+        public static final SettingRange KERF = SettingRange.of("--kerf", "kerfMm", 0, CuttingOptions.MAX_KERF_MM,
+                "mm");
+        public static final SettingRange LEAD_IN = SettingRange.of("--lead-in", "leadInMm", 0,
+                CuttingOptions.MAX_LEAD_MM, "mm");
+        public static final SettingRange LEAD_OUT = SettingRange.of("--lead-out", "leadOutMm", 0,
+                CuttingOptions.MAX_LEAD_MM, "mm");
+        /** The command line's tolerance is in drawing units, the job file's in mm: 10 of either. */
+        public static final SettingRange TOLERANCE = SettingRange.of("--tolerance", "toleranceMm", 0, 10, "");
+        public static final SettingRange OVERCUT = SettingRange.of("--overcut", "overcutMm", 0,
+                CuttingOptions.MAX_LEAD_MM, "mm");
+
+        private Cutting() {
+        }
+    }
+
+    /** {@code fresa grade} and the job's {@code <grading>}. */
+    public static final class Grading {
+        /** The size system's own limits ({@code grading.SizeSystem}) are checked when the plan is made. */
+        public static final SettingRange BASE_SIZE = SettingRange.above("--base-size", "baseSize", 0, 1000, "");
+        public static final SettingRange LENGTH_STEP = SettingRange.above("--length-step", "lengthStepMm", 0, 100,
+                "mm");
+        public static final SettingRange WIDTH_STEP = SettingRange.of("--width-step", "widthStepMm", 0, 100, "mm");
+        public static final SettingRange ORIGIN_X = coordinate("--origin", "originXMm");
+        public static final SettingRange ORIGIN_Y = coordinate("--origin", "originYMm");
+        public static final SettingRange SHRINKAGE = SettingRange.below("--shrinkage", "shrinkage", 0, 0.5, "");
+        public static final SettingRange LENGTH_AXIS = angle("--length-axis", "lengthAxisDeg");
+        public static final SettingRange COORDINATION = SettingRange.above("--coordination", "coordinationMm", 0,
+                5000, "mm");
+        public static final SettingRange HEEL_GROUP = SettingRange.wholeNumbers("--heel-group", "heelGroup", 1, 400,
+                "sizes");
+
+        private Grading() {
+        }
+    }
+
+    /** The placements of {@code fresa robot} ({@code --robot-table}, {@code --table-piece}) and the job's {@code <robot>}. */
+    public static final class Robot {
+        private static final String[] ATTRIBUTES = {"xMm", "yMm", "zMm", "rxDeg", "ryDeg", "rzDeg"};
+
+        private Robot() {
+        }
+
+        /** The range of one value of a placement: x, y, z (mm) or rx, ry, rz (deg). */
+        public static SettingRange placement(String option, int index) {
+            String attribute = ATTRIBUTES[index];
+            return index < 3 ? SettingRange.of(option, attribute, -CELL_SIZE_MM, CELL_SIZE_MM, "mm")
+                    : angle(option, attribute);
+        }
+
+        /**
+         * The placement, when every value is in range.
+         *
+         * @throws CamInputException naming the option and the value
+         */
+        public static Placement check(String option, Placement p) throws CamInputException {
+            double[] v = {p.xMm(), p.yMm(), p.zMm(), p.rxDeg(), p.ryDeg(), p.rzDeg()};
+            for (int i = 0; i < v.length; i++) {
+                SettingRange r = placement(option, i);
+                if (!r.contains(v[i])) {
+                    throw new CamInputException(option, ATTRIBUTES[i].replaceAll("(Mm|Deg)$", "") + ": "
+                            + r.problem(v[i]));
+                }
+            }
+            return p;
+        }
+
+        /** {@link #check} for a job file's placement element. */
+        public static Placement require(Placement p) {
+            double[] v = {p.xMm(), p.yMm(), p.zMm(), p.rxDeg(), p.ryDeg(), p.rzDeg()};
+            for (int i = 0; i < v.length; i++) {
+                placement("", i).require(v[i]);
+            }
+            return p;
+        }
+    }
+
+    /**
+     * The numbers of a robot file ({@code schemas/robot.xsd}): a robot at most {@link #CELL_SIZE_MM}
+     * across, angles within two turns either way (the Robot tab's rule), so that no product of
+     * them overflows in the kinematics.
+     */
+    public static final class RobotFile {
+        /** Joint angles, DH twists and offsets (deg), either way. */
+        public static final double MAX_JOINT_DEG = 720;
+
+        public static final SettingRange A = SettingRange.of("", "a", -CELL_SIZE_MM, CELL_SIZE_MM, "mm");
+        public static final SettingRange D = SettingRange.of("", "d", -CELL_SIZE_MM, CELL_SIZE_MM, "mm");
+        public static final SettingRange ALPHA = SettingRange.of("", "alpha", -MAX_JOINT_DEG, MAX_JOINT_DEG, "deg");
+        public static final SettingRange THETA = SettingRange.of("", "theta", -MAX_JOINT_DEG, MAX_JOINT_DEG, "deg");
+        public static final SettingRange BASE_RADIUS = SettingRange.above("", "baseRadius", 0, CELL_SIZE_MM, "mm");
+        public static final SettingRange PLATFORM_RADIUS = SettingRange.above("", "platformRadius", 0, CELL_SIZE_MM,
+                "mm");
+        public static final SettingRange CENTRE_OFFSET = SettingRange.of("", "centreOffset", 0, CELL_SIZE_MM, "mm");
+        public static final SettingRange EFFECTOR_LENGTH = SettingRange.of("", "effectorLength", 0, CELL_SIZE_MM,
+                "mm");
+        private static final String[] TOOL = {"x", "y", "z", "rx", "ry", "rz"};
+
+        private RobotFile() {
+        }
+
+        /** A joint limit ({@code min} or {@code max}): deg for a revolute joint, mm for a prismatic one. */
+        public static SettingRange limit(String attribute, boolean revolute) {
+            return revolute ? SettingRange.of("", attribute, -MAX_JOINT_DEG, MAX_JOINT_DEG, "deg")
+                    : SettingRange.of("", attribute, -CELL_SIZE_MM, CELL_SIZE_MM, "mm");
+        }
+
+        /** One value of the tool frame: x, y, z (mm) or rx, ry, rz (deg). */
+        public static SettingRange tool(int index) {
+            return index < 3 ? SettingRange.of("", TOOL[index], -CELL_SIZE_MM, CELL_SIZE_MM, "mm")
+                    : angle("", TOOL[index]);
+        }
+    }
+
+    /** The job's {@code <sole>}, its tools, designs and copies (no command-line options: {@code fresa sole JOB}). */
+    public static final class Sole {
+        public static final SettingRange BASE_SIZE = SettingRange.above("", "baseSize", 0, 1000, "");
+        public static final SettingRange ORIGIN_X = coordinate("", "originXMm");
+        public static final SettingRange ORIGIN_Y = coordinate("", "originYMm");
+        public static final SettingRange SHRINKAGE = SettingRange.below("", "shrinkage", 0, 0.5, "");
+        public static final SettingRange CAVITY_DEPTH = SettingRange.above("", "cavityDepthMm", 0, 1000, "mm");
+        public static final SettingRange TREAD_DEPTH = SettingRange.above("", "treadDepthMm", 0, 1000, "mm");
+        public static final SettingRange CLEARANCE = SettingRange.above("", "clearanceMm", 0, 1000, "mm");
+        public static final SettingRange MARGIN = SettingRange.of("", "marginMm", 0, 1000, "mm");
+        public static final SettingRange TOOL_NUMBER = SettingRange.wholeNumbers("", "number", 0, 9999, "");
+        public static final SettingRange TOOL_DIAMETER = SettingRange.of("", "diameterMm", 0.01, 1000, "mm");
+        public static final SettingRange TOOL_SPINDLE = spindle("", "spindleRpm");
+        public static final SettingRange TOOL_FEED = feed("", "feedMmPerMin");
+        public static final SettingRange TOOL_PLUNGE_FEED = feed("", "plungeFeedMmPerMin");
+        /** Copies of a design: count by rows at most 10^4 figures (checked by the sole service). */
+        public static final SettingRange COUNT = SettingRange.wholeNumbers("", "count", 1, 10_000, "");
+        public static final SettingRange ROWS = SettingRange.wholeNumbers("", "rows", 1, 10_000, "");
+        public static final SettingRange DX = coordinate("", "dxMm");
+        public static final SettingRange DY = coordinate("", "dyMm");
+        public static final SettingRange ROW_SHIFT = coordinate("", "rowShiftMm");
+        public static final SettingRange STEP = angle("", "stepDeg");
+        public static final SettingRange CENTER_X = coordinate("", "centerXMm");
+        public static final SettingRange CENTER_Y = coordinate("", "centerYMm");
+        public static final SettingRange MIRROR_X = coordinate("", "mirrorXMm");
+        public static final SettingRange MIRROR_Y = coordinate("", "mirrorYMm");
+        public static final SettingRange ROTATE = angle("", "rotateDeg");
+
+        private Sole() {
+        }
+    }
+}
