@@ -221,10 +221,12 @@ public final class Sinumerik7MPost {
 
     /**
      * mm to integer micrometres: the thesis's INT(v·1000 ± .499) in compat mode, else symmetric.
-     * In compat mode the expression is evaluated as the BASIC program did, in single precision
-     * (a 24-bit mantissa): above 2^17 µm (131.072 mm) the spacing of single-precision numbers is
-     * 1/64 µm, so {@code v·1000 + .499} already rounds up to the next integer when the fraction is
-     * .4922 or more, and a vertex at ...x.4995 µm prints one micrometre higher than in double.
+     * In compat mode the expression is evaluated as the BASIC program did, in Microsoft single
+     * precision on the number as BASIC holds it (a 24-bit mantissa): above 2^17 µm (131.072 mm)
+     * single-precision numbers are 1/64 µm apart, so {@code v·1000 + .499} already rounds up to
+     * the next integer when the fraction is .4922 or more, and a vertex at ...x.4995 µm prints one
+     * micrometre higher than in double; a coordinate of exactly 0 takes the {@code - .499} branch
+     * and prints -1, as the program's {@code IF X > 0} test does.
      */
     long um(double mm) {
         double v = mm * 1000;

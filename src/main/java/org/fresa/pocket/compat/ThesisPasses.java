@@ -118,7 +118,12 @@ public final class ThesisPasses {
      *     PocketTechnology)})
      */
     public static Optional<PocketPlan> of(PocketPlan plan) {
-        return new ThesisPasses(plan).run();
+        try {
+            return new ThesisPasses(plan).run();
+        } catch (ArithmeticException e) {
+            // an overflow or a division by zero: the thesis's program would have stopped too
+            return Optional.empty();
+        }
     }
 
     /** The thesis's tolerance COMPAR of the plan's contour, in single precision. */
@@ -181,7 +186,7 @@ public final class ThesisPasses {
                 move(root, radius.minus(allowance));
                 chain = root;
             } else if (k == 1) {
-                chain = chains.get(pass.nodePath());
+                chain = root;
                 move(chain, allowance);
                 chain.dperc = chain.dperc.plus(allowance);
             } else {
@@ -209,16 +214,7 @@ public final class ThesisPasses {
             chain = own;
             advance(chain, path);
         } else {
-            int parentId = path.get(path.size() - 2);
-            Chain parent = atDivision.get(parentId);
-            if (parent == null) {
-                List<Integer> parentPath = path.subList(0, path.size() - 1);
-                Chain last = chains.get(parentPath);
-                parent = last.copy();
-                advance(parent, parentPath);
-                atDivision.put(parentId, parent);
-            }
-            chain = parent.copy();
+            chain = divided(path, chains, atDivision).copy();
         }
         Mbf dperc = chain.dteste.plus(radius);
         if (Math.abs(pass.offsetMm() - dperc.toDouble()) < 1e-4) {
@@ -230,6 +226,29 @@ public final class ThesisPasses {
             chain.dperc = last;
         }
         return chain;
+    }
+
+    /**
+     * The subcontour a sub-area starts from: its nearest ancestor's at that ancestor's last pass,
+     * moved on to DTESTE (the same for every sub-area of one division).
+     */
+    private Chain divided(List<Integer> path, Map<List<Integer>, Chain> chains, Map<Integer, Chain> atDivision) {
+        for (int i = path.size() - 1; i >= 1; i--) {
+            List<Integer> ancestor = path.subList(0, i);
+            int id = ancestor.get(i - 1);
+            Chain snapshot = atDivision.get(id);
+            if (snapshot != null) {
+                return snapshot;
+            }
+            Chain last = chains.get(ancestor);
+            if (last != null) {
+                Chain c = last.copy();
+                advance(c, ancestor);
+                atDivision.put(id, c);
+                return c;
+            }
+        }
+        throw new IllegalStateException("a sub-area's pass before any pass of the pocket: " + path);
     }
 
     /** After a pass at DPERC: DTESTE grows by the stepover and the subcontour moves there. */

@@ -55,4 +55,18 @@ class ThesisPassesTest {
             }
         }
     }
+
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"clover.contour", "rooms.contour", "slot-ccw.contour"})
+    void contoursBeyondTheThesisGetTheSamePassesInItsArithmetic(String name) throws Exception {
+        // Fresa's own test contours: several sub-areas, a four-way split; every pass is recomputed
+        var contours = org.fresa.pocket.PocketProfile.fromContours(org.fresa.model.ContourFile.read(
+                new java.io.StringReader(Files.readString(Path.of("samples/pocket", name))), name));
+        PocketPlan plan = PassPlanner.plan(Recognition.of(contours), new PocketTechnology(2, 0.6, 0.1, 5, 0, 5, 3000, 300, 100));
+        PocketPlan thesis = ThesisPasses.of(plan).orElseThrow();
+        assertEquals(plan.generated().size(), thesis.generated().size());
+        for (int i = 0; i < plan.generated().size(); i++) {
+            assertEquals(plan.generated().get(i).offsetMm(), thesis.generated().get(i).offsetMm(), 1e-4);
+        }
+    }
 }
