@@ -7,6 +7,9 @@ import org.fresa.pocket.PassPiece;
 import org.fresa.pocket.PocketPass;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketTechnology;
+import org.fresa.pocket.compat.BasicNumbers;
+import org.fresa.pocket.compat.Mbf;
+import org.fresa.pocket.compat.ThesisPasses;
 
 /**
  * The 1988 thesis's post-processor for the Thyssen Hüller NBH-65 with a Siemens Sinumerik 7M
@@ -22,6 +25,15 @@ import org.fresa.pocket.PocketTechnology;
  * asked for ({@code fresa pocket --direction}): climb (each pass counter-clockwise, convex arcs
  * G03, with the clockwise M03 spindle) or conventional (the thesis's clockwise passes). Compat
  * always writes the thesis's conventional passes.
+ *
+ * <p>Compat mode also computes as the thesis's program did: the passes' offsets and junctions
+ * come from {@link ThesisPasses} (Microsoft single precision, coefficients written back as
+ * 7-digit text at every pass), and every number is rounded to micrometres in that precision,
+ * {@code INT(v·1000 + .499)} for v > 0 and {@code INT(v·1000 - .499)} otherwise (lines
+ * 8649-8709), the depth step {@code INT(ZPASSE·1000 + .499)} with {@code ZPASSE = (ZSUP -
+ * ZBASE)/PROF} and {@code PROF = INT((ZSUP - ZBASE)/ZPASSE + .9999999)} (lines 3072-3080). Where
+ * the single-precision junction does not exist (the thesis's program stops there), the passes
+ * keep their exact junctions.
  */
 public final class Sinumerik7MPost {
 
@@ -51,18 +63,19 @@ public final class Sinumerik7MPost {
     }
 
     /** The whole program text, lines ending in LF. */
-    public String write(PocketPlan plan) {
+    public String write(PocketPlan exactPlan) {
+        PocketPlan plan = mode == Mode.COMPAT ? ThesisPasses.of(exactPlan).orElse(exactPlan) : exactPlan;
         PocketTechnology t = plan.technology();
         List<Block> blocks = new ArrayList<>();
         add(blocks, "%");
         add(blocks, "G00 G40 G53 G90 Y150000 Z600000 B0");
         add(blocks, "G53 X450000");
-        add(blocks, "G54 X 0 Y 0 Z" + str(um(t.zTopMm())));
+        add(blocks, "G54 X 0 Y 0 Z" + str(mode == Mode.COMPAT ? basicInt(mbf(t.zTopMm()), false) : um(t.zTopMm())));
         add(blocks, "T01 M06");
         add(blocks, "M21");
         add(blocks, "G43 Z 5000 S" + str((long) Math.rint(t.spindleRpm())) + " M03");
-        int passes = t.depthPasses();
-        long zp = um(t.depthStepMm());
+        int passes = mode == Mode.COMPAT ? thesisDepthPasses(t) : t.depthPasses();
+        long zp = mode == Mode.COMPAT ? thesisDepthStepUm(t) : um(t.depthStepMm());
         long feed = (long) Math.rint(t.feedMmPerMin());
         List<PocketPass> milled = milled(plan);
         if (milled.isEmpty()) {
@@ -180,18 +193,45 @@ public final class Sinumerik7MPost {
         blocks.add(new Block(text, -1));
     }
 
+    private static Mbf mbf(double v) {
+        return BasicNumbers.val(Double.toString(v));
+    }
+
+    /** {@code INT(v*1000 + .499)}, or with {@code - .499} when signed and v is not positive. */
+    private static long basicInt(Mbf v, boolean signed) {
+        Mbf thousand = Mbf.of(1000);
+        Mbf bias = BasicNumbers.val(".499");
+        Mbf scaled = v.times(thousand);
+        Mbf r = signed && !v.greaterThan(Mbf.ZERO) ? scaled.minus(bias) : scaled.plus(bias);
+        return (long) r.floor().toDouble();
+    }
+
+    /** Lines 3072 and 3079: {@code PROF = INT((ZSUP - ZBASE)/ZPROF + .9999999)}, at least 1. */
+    private static int thesisDepthPasses(PocketTechnology t) {
+        Mbf depth = mbf(t.zTopMm()).minus(mbf(t.zBottomMm()));
+        Mbf prof = depth.dividedBy(mbf(t.maxDepthMm())).plus(BasicNumbers.val(".9999999")).floor();
+        return prof.isZero() ? 1 : (int) prof.toDouble();
+    }
+
+    /** Lines 3080 and 4003: {@code INT(ZPASSE*1000 + .499)}, {@code ZPASSE = (ZSUP - ZBASE)/PROF}. */
+    private static long thesisDepthStepUm(PocketTechnology t) {
+        Mbf depth = mbf(t.zTopMm()).minus(mbf(t.zBottomMm()));
+        return basicInt(depth.dividedBy(Mbf.of(thesisDepthPasses(t))), false);
+    }
+
     /**
      * mm to integer micrometres: the thesis's INT(v·1000 ± .499) in compat mode, else symmetric.
-     * In compat mode the expression is evaluated as the BASIC program did, in single precision
-     * (a 24-bit mantissa): above 2^17 µm (131.072 mm) the spacing of single-precision numbers is
-     * 1/64 µm, so {@code v·1000 + .499} already rounds up to the next integer when the fraction is
-     * .4922 or more, and a vertex at ...x.4995 µm prints one micrometre higher than in double.
+     * In compat mode the expression is evaluated as the BASIC program did, in Microsoft single
+     * precision on the number as BASIC holds it (a 24-bit mantissa): above 2^17 µm (131.072 mm)
+     * single-precision numbers are 1/64 µm apart, so {@code v·1000 + .499} already rounds up to
+     * the next integer when the fraction is .4922 or more, and a vertex at ...x.4995 µm prints one
+     * micrometre higher than in double; a coordinate of exactly 0 takes the {@code - .499} branch
+     * and prints -1, as the program's {@code IF X > 0} test does.
      */
     long um(double mm) {
         double v = mm * 1000;
         if (mode == Mode.COMPAT) {
-            float single = (float) mm * 1000f;
-            return (long) Math.floor(single >= 0 ? single + .499f : single - .499f);
+            return basicInt(mbf(mm), true);
         }
         return (long) Math.signum(v) * (long) Math.floor(Math.abs(v) + 0.5);
     }
