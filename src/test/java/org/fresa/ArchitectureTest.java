@@ -79,6 +79,7 @@ class ArchitectureTest {
             entry("stepnc", List.of("model", "geom")),
             entry("dxf", List.of("model", "geom")),
             entry("pocket", List.of("geom", "model")),
+            entry("pocket.compat", List.of("pocket", "geom")),
             entry("toolpath", List.of("pocket", "stepnc", "model", "geom")),
             entry("cutting", List.of("pocket", "model", "geom")),
             entry("grading", List.of("geom", "model")),
@@ -117,6 +118,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule pocketUsesOnlyStatedPackages = usesOnlyStatedPackages("pocket");
+
+    @ArchTest
+    static final ArchRule pocketCompatUsesOnlyStatedPackages = usesOnlyStatedPackages("pocket.compat");
 
     @ArchTest
     static final ArchRule toolpathUsesOnlyStatedPackages = usesOnlyStatedPackages("toolpath");
