@@ -93,6 +93,10 @@ public final class RobotService {
         Timing.mark("robot loaded");
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
         Timing.mark("part 21 read and bound");
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return ToolpathService.nothingToMachine(program, nothing.get());
+        }
         progress.progress(-1, "planning toolpaths");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
         Timing.mark("toolpaths planned");

@@ -45,6 +45,10 @@ public final class ToolpathService {
             throws CamInputException, IOException {
         NcPost post = post(postName, "--post");
         StepNcProgram program = StepNcService.read(file, progress);
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return nothingToMachine(program, nothing.get());
+        }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
         Toolpath path = plan.toolpath();
@@ -65,6 +69,15 @@ public final class ToolpathService {
         progress.progress(1, "done");
         int status = plan.problems().isEmpty() || plan.planned() == plan.workingsteps() ? 0 : 1;
         return new TaskOutcome(status, plan.problems(), summary, out.written());
+    }
+
+    /** A file with nothing to machine writes no program: an empty one would look like a finished job. */
+    static TaskOutcome nothingToMachine(StepNcProgram program, String why) {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("schema", program.schema());
+        summary.put("workingsteps", 0);
+        summary.put("planned", 0);
+        return new TaskOutcome(1, List.of(why), summary, List.of());
     }
 
     /** The job task. */

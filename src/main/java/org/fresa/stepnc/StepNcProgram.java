@@ -43,6 +43,34 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
         Objects.requireNonNull(file);
     }
 
+    /**
+     * The file is AP238 in its integrated form (AIM, STEP Tools' ST-Developer and STEP-NC Maker
+     * write it): the workingsteps are {@code action_method}s tied by relationships, not the ISO
+     * 14649 entities this binding reads, so nothing of it is machined.
+     */
+    public boolean integratedForm() {
+        return schemas.stream().map(s -> s.toUpperCase(java.util.Locale.ROOT))
+                .anyMatch(s -> s.startsWith("MODEL_BASED_INTEGRATED_MANUFACTURING_SCHEMA")
+                        || s.startsWith("INTEGRATED_CNC_SCHEMA"));
+    }
+
+    /**
+     * Why a program with no executable workingstep gives nothing to machine, in the planner's
+     * words; empty when there are workingsteps.
+     */
+    public Optional<String> whyNothingToMachine() {
+        if (!workingsteps.isEmpty()) {
+            return Optional.empty();
+        }
+        if (integratedForm()) {
+            return Optional.of(source + " is AP238 in its integrated form (AIM, FILE_SCHEMA " + schema()
+                    + "): Fresa reads the ISO 14649 form (ARM) only, so nothing of it can be machined;"
+                    + " no program written");
+        }
+        return Optional.of(source + " has no workingstep reached from a workplan (" + skipped.size()
+                + " skipped): nothing to machine, no program written");
+    }
+
     /** The schema names joined as the header lists them. */
     public String schema() {
         return String.join(",", schemas);

@@ -277,4 +277,14 @@ class ToolpathServiceTest {
                 o.problems().toString());
         assertFalse(json.contains("1000 mm/min used"), json);
     }
+
+    @Test
+    void anIntegratedFormFileIsRefusedWithItsReasonAndNoProgram(@TempDir Path dir) throws Exception {
+        Path aim = Path.of("src/test/resources/stepnc/aim-header-only.stp");
+        TaskOutcome o = ToolpathService.run(aim, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus());
+        assertTrue(o.problems().get(0).contains("AP238 in its integrated form (AIM"), o.problems().toString());
+        assertTrue(o.files().isEmpty());
+        assertFalse(Files.exists(dir.resolve("program.ngc")));
+    }
 }
