@@ -232,6 +232,11 @@ public final class SoleService {
             throw new CamInputException("sole", "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
                     + p.tools().keySet());
         }
+        java.util.Optional<org.fresa.sole.CavityToolRule.Violation> tight =
+                org.fresa.sole.CavityToolRule.check(g.output().get(0), t.diameterMm());
+        if (tight.isPresent()) {
+            throw new CamInputException("sole", "size " + g.name() + ": " + tight.get().sentence());
+        }
         Contour outline = foot == Foot.RIGHT ? g.output().get(0)
                 : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
         try {
