@@ -83,7 +83,7 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
         } else if (!Double.isNaN(fromV) && Math.max(spindle, fromV) / Math.min(spindle, fromV) >= DISAGREEMENT_FACTOR) {
             String both = "spindle " + n(spindle) + " rpm and cutting speed " + cutSpeed(t) + " (" + n(fromV)
                     + " rpm for the " + n(toolDiameterMm) + " mm tool) disagree by a factor of "
-                    + n(Math.max(spindle, fromV) / Math.min(spindle, fromV));
+                    + n(Math.rint(Math.max(spindle, fromV) / Math.min(spindle, fromV)));
             if (!trustCuttingSpeed) {
                 throw new IllegalArgumentException(both + "; correct the file, or plan from the cutting speed with"
                         + " --trust-cutting-speed");
