@@ -16,11 +16,28 @@ public final class JobSettings {
     private JobSettings() {
     }
 
-    /** STEP-NC input and the machine-tool post used by {@code toolpath}. */
-    public record StepNcSettings(Path file, String post) {
+    /**
+     * STEP-NC input, the machine-tool post used by {@code toolpath}, and the planner's choices
+     * where the file is silent or doubtful ({@code toolpath} and {@code robot}).
+     *
+     * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
+     * @param breakthroughMm how far a through hole's tool passes its exit
+     */
+    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
+            SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
+        }
+
+        /** The file and post with the planner's default choices. */
+        public StepNcSettings(Path file, String post) {
+            this(file, post, false, org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM);
+        }
+
+        /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
+        public org.fresa.toolpath.PlanningChoices choices() {
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm);
         }
     }
 

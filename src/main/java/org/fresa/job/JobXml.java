@@ -185,7 +185,8 @@ public final class JobXml {
         }
         StepNcType s = x.getStepnc();
         if (s != null) {
-            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost()));
+            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -354,6 +355,13 @@ public final class JobXml {
             StepNcType t = new StepNcType();
             t.setFile(relativize(base, s.file()));
             t.setPost(s.post());
+            // written only when not the default, so that saved jobs stay as they were
+            if (s.trustCuttingSpeed()) {
+                t.setTrustCuttingSpeed(true);
+            }
+            if (s.breakthroughMm() != org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM) {
+                t.setBreakthroughMm(s.breakthroughMm());
+            }
             x.setStepnc(t);
         });
         job.robot().ifPresent(r -> {

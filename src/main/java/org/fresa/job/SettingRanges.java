@@ -48,6 +48,16 @@ public final class SettingRanges {
         return SettingRange.of(option, attribute, -TURN_DEG, TURN_DEG, "deg");
     }
 
+    /** {@code fresa toolpath}, {@code fresa robot} and the job's {@code <stepnc>}. */
+    public static final class StepNc {
+        /** How far a through hole's tool passes its exit. */
+        public static final SettingRange BREAKTHROUGH = SettingRange.of("--breakthrough", "breakthroughMm", 0,
+                org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
+
+        private StepNc() {
+        }
+    }
+
     /** {@code fresa pocket} and the job's {@code <pocket>}. */
     public static final class Pocket {
         public static final SettingRange TOOL_DIAMETER = SettingRange.of("--tool-diameter", "toolDiameterMm", 0.01,

@@ -16,6 +16,7 @@ import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**
@@ -40,9 +41,15 @@ public final class ToolpathService {
                 "unknown post '" + name + "': expected one of " + String.join(", ", NcPosts.names())));
     }
 
-    /** Plans and writes the three files into the folder. */
+    /** Plans and writes the three files into the folder, with the planner's default choices. */
     public static TaskOutcome run(Path file, String postName, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
+        return run(file, postName, PlanningChoices.DEFAULT, out, progress);
+    }
+
+    /** Plans with these choices and writes the three files into the folder. */
+    public static TaskOutcome run(Path file, String postName, PlanningChoices choices, OutputFolder out,
+            ProgressMonitor progress) throws CamInputException, IOException {
         NcPost post = post(postName, "--post");
         StepNcProgram program = StepNcService.read(file, progress);
         java.util.Optional<String> nothing = program.whyNothingToMachine();
@@ -50,7 +57,7 @@ public final class ToolpathService {
             return nothingToMachine(program, nothing.get());
         }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
         Toolpath path = plan.toolpath();
         out.create();
         out.write("toolpath.csv", os -> {
@@ -85,7 +92,7 @@ public final class ToolpathService {
             throws CamInputException, IOException {
         JobSettings.StepNcSettings s = JobRunner.require(job.stepnc(), "stepnc", job);
         String post = s.post() == null || s.post().isBlank() ? NcPosts.DEFAULT : s.post();
-        return run(s.file(), post, out, progress);
+        return run(s.file(), post, s.choices(), out, progress);
     }
 
     static Map<String, Object> summary(StepNcProgram program, ToolpathPlanner.Plan plan, NcPost post) {
@@ -110,6 +117,7 @@ public final class ToolpathService {
             x.put("workingstep_instance", step.workingstepInstanceId());
             x.put("tool", s.toolNumber());
             x.put("tool_diameter_mm", s.toolDiameterMm());
+            x.put("spindle_rpm", s.spindleRpm());
             x.put("moves", s.moves().size());
             x.put("feed_mm_per_min", step.feed().feedMmPerMin());
             x.put("feed_read_as", step.feed().readAs());

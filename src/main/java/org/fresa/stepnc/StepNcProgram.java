@@ -71,6 +71,27 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
                 + " skipped): nothing to machine, no program written");
     }
 
+    /**
+     * The workpiece a feature is made in: the one its its_workpiece names, else the project's
+     * only workpiece; empty when neither tells.
+     */
+    public Optional<Workpiece> workpieceOf(Feature f) {
+        Optional<StepInstance> inst = file.instance(f.instanceId());
+        if (inst.isPresent() && !inst.get().isComplex()) {
+            // ISO 14649-10 manufacturing_feature: its_id, its_workpiece, its_operations, ...
+            int i = Iso14649Schema.get().find(inst.get().record().type())
+                    .map(l -> l.def().indexOf("its_workpiece")).orElse(-1);
+            if (i >= 0 && inst.get().record().param(i) instanceof StepValue.Ref r) {
+                for (Workpiece w : workpieces) {
+                    if (w.instanceId() == r.id()) {
+                        return Optional.of(w);
+                    }
+                }
+            }
+        }
+        return workpieces.size() == 1 ? Optional.of(workpieces.get(0)) : Optional.empty();
+    }
+
     /** The schema names joined as the header lists them. */
     public String schema() {
         return String.join(",", schemas);
