@@ -225,13 +225,13 @@ public final class PocketService {
             throw new CamInputException("--direction", "unknown milling direction '" + s.direction()
                     + "': expected " + String.join(" or ", PocketSettings.DIRECTIONS));
         }
+        EntryRule entry = entryRule(s);
         if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
             List<Contour> contours = readContours(s.contour());
             if (contours.size() > 1) {
                 return runRegion(s, contours, outFile);
             }
         }
-        EntryRule entry = entryRule(s);
         PocketPlan plan;
         String nc;
         Toolpath path;
