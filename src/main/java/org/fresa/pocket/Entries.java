@@ -50,7 +50,8 @@ public final class Entries {
      * The entry of a cut.
      *
      * @param rule what is allowed
-     * @param cut the cut's path from its start (lines and arcs chained); the ramp runs along it
+     * @param start where the cut starts (mm)
+     * @param cut the cut's path from its start (lines and arcs chained, may be empty); the ramp runs along it
      * @param ccw the cut's sense (a helix turns the same way)
      * @param room where a helix may lie
      * @param toolRadiusMm the cutter's radius
@@ -58,9 +59,8 @@ public final class Entries {
      * @return the entry, or empty when the rule allows none here (no room for a helix or a ramp
      *     and a tool that does not cut at its centre)
      */
-    public static Optional<Entry> choose(EntryRule rule, List<Curve2> cut, boolean ccw, Room room, double toolRadiusMm,
-            double depthMm) {
-        Vec2 start = cut.get(0).start();
+    public static Optional<Entry> choose(EntryRule rule, Vec2 start, List<Curve2> cut, boolean ccw, Room room,
+            double toolRadiusMm, double depthMm) {
         if (rule.kind() == EntryRule.Kind.PLUNGE) {
             return Optional.of(new Entry.Plunge(start));
         }

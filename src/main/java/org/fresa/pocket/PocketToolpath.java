@@ -74,7 +74,7 @@ public final class PocketToolpath {
                     moves.add(new Move.Rapid(at(s, t.zTopMm() + 1)));
                     moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
                     // no straight plunge into solid material: a helix or a zig-zag ramp within the entry angle
-                    Entry entry = Entries.choose(rule, chain(pieces), climb, room, t.radiusMm(), t.depthStepMm())
+                    Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), t.depthStepMm())
                             .orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
                                     "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
                                             + " tool (--centre-cutting) may plunge there", s.x(), s.y())));
