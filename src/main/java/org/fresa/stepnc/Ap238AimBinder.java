@@ -16,7 +16,6 @@ import java.util.OptionalDouble;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.TreeMap;
-import org.fresa.geom.Tolerance;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.stepnc.StepNcProgram.Dialect;
@@ -50,7 +49,8 @@ import org.fresa.stepnc.StepNcProgram.Dialect;
  */
 final class Ap238AimBinder {
 
-    private static final Tolerance SAME_FRAME = Tolerance.DEFAULT;
+    /** Feeds below this (mm/min) are reported as doubtful: no cutting feed is that slow. */
+    static final double SLOWEST_PLAUSIBLE_FEED = 10;
     private static final Set<String> FEATURE_NOISE = Set.of("CHARACTERIZED_OBJECT", "FEATURE_DEFINITION",
             "INSTANCED_FEATURE", "SHAPE_ASPECT", "SHAPE_FEATURE_DEFINITION");
 
@@ -1250,6 +1250,13 @@ final class Ap238AimBinder {
         OptionalDouble rpm = s.converted().isPresent()
                 ? OptionalDouble.of(Math.abs(s.converted().getAsDouble()) * 60) : OptionalDouble.empty();
         boolean cw = s.converted().isPresent() && s.converted().getAsDouble() < 0;
+        if (feedMmMin.isPresent() && feedMmMin.getAsDouble() > 0 && feedMmMin.getAsDouble() < SLOWEST_PLAUSIBLE_FEED) {
+            // kept as written (a slow feed endangers nothing), but told: Annex J.6 writes the ARM's
+            // 0.04 (m/s there) as 0.04 mm/s, a thousandth of the part's feed
+            warnings.add("#" + id + " MACHINING_TECHNOLOGY: feed " + num(f.written().getAsDouble()) + " " + f.unit()
+                    + " is " + num(Math.round(feedMmMin.getAsDouble() * 1e4) / 1e4) + " mm/min, too slow to cut;"
+                    + " kept as written (is the unit right? ISO 14649's ARM writes feeds in m/s)");
+        }
         Optional<String> reference = description(property(props, "feedrate reference"))
                 .map(x -> x.toLowerCase(Locale.ROOT).contains("contact") ? "CCP" : "TCP");
         return new Technology(id, f.written(), f.unit(), reference, c.written(), c.unit(), s.written(), s.unit(),
