@@ -132,12 +132,13 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
 
     /**
      * A hint when the cutting speed read in the other unit (m/min for m/s, or the reverse) agrees
-     * with the spindle: GRIMA's ISO-dialect files write m/min where ISO 14649-10 has m/s.
+     * with the spindle at a speed a cutting spindle turns (100 rpm or more): GRIMA's ISO-dialect
+     * files write m/min where ISO 14649-10 has m/s.
      */
     private static String otherUnit(Technology t, double spindleRpm, double toolDiameterMm) {
         boolean perSecond = "m/s".equals(t.cutSpeedUnit());
         double other = 1000 * t.cutSpeed().getAsDouble() * (perSecond ? 1 : 60) / (Math.PI * toolDiameterMm);
-        if (Math.max(other, spindleRpm) / Math.min(other, spindleRpm) < DISAGREEMENT_FACTOR) {
+        if (other >= 100 && Math.max(other, spindleRpm) / Math.min(other, spindleRpm) < DISAGREEMENT_FACTOR) {
             return " (read in " + (perSecond ? "m/min" : "m/s") + ", the cutting speed would give " + n(other)
                     + " rpm)";
         }
