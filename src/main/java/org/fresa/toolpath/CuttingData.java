@@ -73,8 +73,9 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
         double rpm;
         boolean fromCuttingSpeed;
         if (Double.isNaN(spindle) && Double.isNaN(fromV)) {
-            throw new IllegalArgumentException("no spindle speed and no cutting speed in the file (MILLING_TECHNOLOGY #"
-                    + t.instanceId() + "): the tool would cut with the spindle stopped");
+            throw new IllegalArgumentException("no spindle speed and no cutting speed in the file ("
+                    + (t.instanceId() == 0 ? "the operation has no MILLING_TECHNOLOGY"
+                            : "MILLING_TECHNOLOGY #" + t.instanceId()) + "): the tool would cut with the spindle stopped");
         } else if (Double.isNaN(spindle)) {
             rpm = fromV;
             fromCuttingSpeed = true;
@@ -85,8 +86,8 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
                     + " rpm for the " + n(toolDiameterMm) + " mm tool) disagree by a factor of "
                     + n(Math.rint(Math.max(spindle, fromV) / Math.min(spindle, fromV)));
             if (!trustCuttingSpeed) {
-                throw new IllegalArgumentException(both + "; correct the file, or plan from the cutting speed with"
-                        + " --trust-cutting-speed");
+                throw new IllegalArgumentException(both + otherUnit(t, spindle, toolDiameterMm)
+                        + "; correct the file, or plan from the cutting speed with --trust-cutting-speed");
             }
             rpm = fromV;
             fromCuttingSpeed = true;
@@ -127,6 +128,21 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
         double mPerMin = t.cutSpeed().getAsDouble() * ("m/s".equals(t.cutSpeedUnit()) ? 60 : 1);
         double rpm = 1000 * mPerMin / (Math.PI * toolDiameterMm);
         return Double.isFinite(rpm) ? rpm : Double.NaN;
+    }
+
+    /**
+     * A hint when the cutting speed read in the other unit (m/min for m/s, or the reverse) agrees
+     * with the spindle at a speed a cutting spindle turns (100 rpm or more): GRIMA's ISO-dialect
+     * files write m/min where ISO 14649-10 has m/s.
+     */
+    private static String otherUnit(Technology t, double spindleRpm, double toolDiameterMm) {
+        boolean perSecond = "m/s".equals(t.cutSpeedUnit());
+        double other = 1000 * t.cutSpeed().getAsDouble() * (perSecond ? 1 : 60) / (Math.PI * toolDiameterMm);
+        if (other >= 100 && Math.max(other, spindleRpm) / Math.min(other, spindleRpm) < DISAGREEMENT_FACTOR) {
+            return " (read in " + (perSecond ? "m/min" : "m/s") + ", the cutting speed would give " + n(other)
+                    + " rpm)";
+        }
+        return "";
     }
 
     private static String cutSpeed(Technology t) {

@@ -74,6 +74,7 @@ class HostileOptionsTest {
                 "450,0,350", "--table-piece", "0,10,0", "--formats", "csv"));
         m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
         m.put("ik", List.of("ik", targets.toString(), "--robot", "irb140", "--out", "OUT"));
+        m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
         return m;
     }
 
