@@ -81,7 +81,7 @@ public final class PocketMilling {
                 b.feed(Vec3.of(p.start(), z), tool.feedMmPerMin());
             } else {
                 b.liftAndTraverse(p.start(), lift);
-                enter(b, p, region, z, prevZ, tool, plan, tol);
+                enter(b, p, region, z, tool, plan, tol);
             }
             b.curves(p.curves(), z, tool.feedMmPerMin());
         }
@@ -89,23 +89,19 @@ public final class PocketMilling {
     }
 
     /**
-     * From the tool's height straight above the pass start down to z: straight down through the air
-     * to the top of the material here (the previous layer), then the entry the plan's approach and
-     * the entry angle allow ({@link #rule}, {@link Entries}): a helix inside the tool-centre region,
+     * From the tool's height straight above the pass start (the lift height, just above the
+     * material) down to z by the entry the plan's approach and the entry angle allow ({@link #rule}, {@link Entries}): a helix inside the tool-centre region,
      * else a zig-zag ramp along the pass.
      *
      * @throws IllegalArgumentException when there is room for neither (the workingstep is refused)
      */
-    static void enter(MoveBuilder b, Pass p, Ring region, double z, double materialTopZ, Tooling tool,
+    static void enter(MoveBuilder b, Pass p, Ring region, double z, Tooling tool,
             MillingPlan plan, Tolerance tol) {
         Vec3 bottom = Vec3.of(p.start(), z);
-        double top = Math.max(z, Math.min(b.at().z(), materialTopZ));
-        if (b.at().z() <= z) {
-            b.feed(bottom, tool.plungeFeedMmPerMin());
-            return;
-        }
-        b.feed(Vec3.of(p.start(), top), tool.plungeFeedMmPerMin());
+        // from the lift height just above the material: no straight feed down, even through the air
+        double top = b.at().z();
         if (top <= z) {
+            b.feed(bottom, tool.plungeFeedMmPerMin());
             return;
         }
         EntryRule rule = rule(plan.approach());
