@@ -16,7 +16,9 @@ import org.fresa.geom.Vec2;
  * <p>The helix: radius the tool radius, else three quarters or half of it (a smaller helix would
  * leave a core wider than the tool radius under a cutter that does not cut at its centre); its
  * sense is the cut's, and its axis lies first beside the cut's start so that the helix runs into
- * the cut tangentially, then in seven other directions. The ramp: legs of
+ * the cut tangentially, then in seven other directions, then nearer the start (half the radius
+ * away, then at the start itself: the tool then joins the helix's circle level at the top and
+ * comes back to the start at depth). The ramp: legs of
  * {@code H / n} along the cut, H = depth / tan(angle), n the smallest even number for which a
  * leg is no longer than the cut.
  */
@@ -96,14 +98,17 @@ public final class Entries {
         for (int k = 1; k < 8; k++) {
             directions.add(side.rotated(k * Math.PI / 4));
         }
-        for (double f : HELIX_RADII) {
-            double r = f * toolRadiusMm;
-            for (Vec2 d : directions) {
-                Vec2 c = start.plus(d.times(r));
-                if (room.holds(c, r)) {
-                    Entry.Helix h = new Entry.Helix(start, c, ccw, angleDeg);
-                    if (h.turns(depthMm) <= MAX_STEPS) {
-                        return Optional.of(h);
+        // through the start first (the helix runs into the cut), then about points nearer the start
+        for (double near : new double[] {1, 0.5, 0}) {
+            for (double f : HELIX_RADII) {
+                double r = f * toolRadiusMm;
+                for (Vec2 d : near == 0 ? List.of(side) : directions) {
+                    Vec2 c = start.plus(d.times(r * near));
+                    if (room.holds(c, r)) {
+                        Entry.Helix h = new Entry.Helix(start, c, r, ccw, angleDeg);
+                        if (h.turns(depthMm) <= MAX_STEPS) {
+                            return Optional.of(h);
+                        }
                     }
                 }
             }

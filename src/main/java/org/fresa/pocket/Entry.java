@@ -33,30 +33,37 @@ public sealed interface Entry permits Entry.Helix, Entry.Ramp, Entry.Plunge {
     List<Move> moves(double topZ, double z, double feedMmPerMin);
 
     /**
-     * Down a helix about {@code centre} through {@code start}, as many full turns as the angle
-     * needs, then one full turn at depth so that the floor inside the helix is flat.
+     * Down a helix of radius {@code radiusMm} about {@code centre}, as many full turns as the angle
+     * needs, then one full turn at depth so that the floor inside the helix is flat. The helix
+     * begins on its circle nearest the cut's start; when the start is not on the circle, the tool
+     * first moves there level at the top of the material and returns at depth, inside the hole the
+     * helix has cut (the start lies within the helix radius of its centre).
      *
-     * @param start where the helix begins (above) and ends (at depth)
-     * @param centre the helix axis (mm); its distance to start is the helix radius, > 0
+     * @param start the cut's start (mm)
+     * @param centre the helix axis (mm), at most radiusMm from start
+     * @param radiusMm the helix radius, > 0
      * @param ccw counter-clockwise seen from +Z
      * @param angleDeg steepest descent allowed (deg)
      */
-    record Helix(Vec2 start, Vec2 centre, boolean ccw, double angleDeg) implements Entry {
+    record Helix(Vec2 start, Vec2 centre, double radiusMm, boolean ccw, double angleDeg) implements Entry {
         public Helix {
             Objects.requireNonNull(start, "start");
             Objects.requireNonNull(centre, "centre");
-            if (!(start.distance(centre) > 0) || !(angleDeg > 0 && angleDeg < 90)) {
-                throw new IllegalArgumentException("bad helix: radius " + start.distance(centre) + ", angle " + angleDeg);
+            if (!(radiusMm > 0) || !(angleDeg > 0 && angleDeg < 90) || start.distance(centre) > radiusMm * (1 + 1e-9)) {
+                throw new IllegalArgumentException("bad helix: radius " + radiusMm + ", angle " + angleDeg
+                        + ", start " + start.distance(centre) + " from the centre");
             }
         }
 
-        public double radiusMm() {
-            return start.distance(centre);
+        /** Where the helix begins and ends (XY). */
+        public Vec2 onCircle() {
+            Vec2 d = start.minus(centre);
+            return d.norm() < 1e-9 ? centre.plus(new Vec2(radiusMm, 0)) : centre.plus(d.times(radiusMm / d.norm()));
         }
 
         /** Full turns down a depth of dz (mm), at least one. */
         public int turns(double dz) {
-            double pitch = 2 * Math.PI * radiusMm() * Math.tan(Math.toRadians(angleDeg));
+            double pitch = 2 * Math.PI * radiusMm * Math.tan(Math.toRadians(angleDeg));
             return Math.max(1, (int) Math.ceil(dz / pitch - 1e-9));
         }
 
@@ -66,9 +73,18 @@ public sealed interface Entry permits Entry.Helix, Entry.Ramp, Entry.Plunge {
                 return List.of();
             }
             int n = turns(topZ - z);
-            Vec3 bottom = at(start, z);
-            return List.of(new Move.Circular(bottom, at(centre, topZ), Vec3.UNIT_Z, ccw, n - 1, feedMmPerMin),
-                    new Move.Circular(bottom, at(centre, z), Vec3.UNIT_Z, ccw, 0, feedMmPerMin));
+            Vec2 p = onCircle();
+            boolean off = p.distance(start) > 1e-9;
+            List<Move> out = new ArrayList<>();
+            if (off) {
+                out.add(new Move.Linear(at(p, topZ), feedMmPerMin));
+            }
+            out.add(new Move.Circular(at(p, z), at(centre, topZ), Vec3.UNIT_Z, ccw, n - 1, feedMmPerMin));
+            out.add(new Move.Circular(at(p, z), at(centre, z), Vec3.UNIT_Z, ccw, 0, feedMmPerMin));
+            if (off) {
+                out.add(new Move.Linear(at(start, z), feedMmPerMin));
+            }
+            return out;
         }
     }
 

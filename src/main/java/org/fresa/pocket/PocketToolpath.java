@@ -71,14 +71,15 @@ public final class PocketToolpath {
                     double layerTop = z + t.depthStepMm();
                     moves.add(new Move.Rapid(new Vec3(lastXY(moves, s).x(), lastXY(moves, s).y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
-                    moves.add(new Move.Rapid(at(s, t.zTopMm() + 1)));
-                    moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
-                    // no straight plunge into solid material: a helix or a zig-zag ramp within the entry angle
-                    Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), t.depthStepMm())
+                    // down at rapid through the pocket cleared at the layer above, to 1 mm above its floor
+                    double above = layerTop + 1;
+                    moves.add(new Move.Rapid(at(s, above)));
+                    // no straight feed down at all: a helix or a zig-zag ramp within the entry angle
+                    Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), above - z)
                             .orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
                                     "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
                                             + " tool (--centre-cutting) may plunge there", s.x(), s.y())));
-                    moves.addAll(entry.moves(layerTop, z, t.feedMmPerMin()));
+                    moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
                 for (PassPiece pc : pieces) {
                     piece(moves, pc, z, z, feed);

@@ -2,13 +2,15 @@ package org.fresa.toolpath;
 
 import java.util.List;
 import org.fresa.geom.Contour;
-import org.fresa.pocket.Entries;
-import org.fresa.pocket.Entry;
-import org.fresa.pocket.EntryRule;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.model.ToolpathSection;
+import org.fresa.pocket.Entries;
+import org.fresa.pocket.Entry;
+import org.fresa.pocket.EntryRule;
 
 /**
  * A closed pocket cleared layer by layer (thesis section 3.2.2.2), in the feature frame: the
@@ -81,7 +83,7 @@ public final class PocketMilling {
                 b.feed(Vec3.of(p.start(), z), tool.feedMmPerMin());
             } else {
                 b.liftAndTraverse(p.start(), lift);
-                enter(b, p, region, z, prevZ, tool, plan, tol);
+                enter(b, p, ahead(passes, i), region, z, tool, plan, tol);
             }
             b.curves(p.curves(), z, tool.feedMmPerMin());
         }
@@ -89,30 +91,27 @@ public final class PocketMilling {
     }
 
     /**
-     * From the tool's height straight above the pass start down to z: straight down through the air
-     * to the top of the material here (the previous layer), then the entry the plan's approach and
-     * the entry angle allow ({@link #rule}, {@link Entries}): a helix inside the tool-centre region,
+     * From the tool's height straight above the pass start (the lift height, just above the
+     * material) down to z by the entry the plan's approach and the entry angle allow ({@link #rule}, {@link Entries}): a helix inside the tool-centre region,
      * else a zig-zag ramp along the pass.
      *
+     * @param ahead the path the tool follows at depth from the pass start ({@link #ahead})
      * @throws IllegalArgumentException when there is room for neither (the workingstep is refused)
      */
-    static void enter(MoveBuilder b, Pass p, Ring region, double z, double materialTopZ, Tooling tool,
+    static void enter(MoveBuilder b, Pass p, List<Curve2> ahead, Ring region, double z, Tooling tool,
             MillingPlan plan, Tolerance tol) {
         Vec3 bottom = Vec3.of(p.start(), z);
-        double top = Math.max(z, Math.min(b.at().z(), materialTopZ));
-        if (b.at().z() <= z) {
-            b.feed(bottom, tool.plungeFeedMmPerMin());
-            return;
-        }
-        b.feed(Vec3.of(p.start(), top), tool.plungeFeedMmPerMin());
+        // from the lift height just above the material: no straight feed down, even through the air
+        double top = b.at().z();
         if (top <= z) {
+            b.feed(bottom, tool.plungeFeedMmPerMin());
             return;
         }
         EntryRule rule = rule(plan.approach());
         Contour boundary = new Contour(region.curves());
         Entries.Room room = (centre, r) -> boundary.distanceTo(centre) >= r - tol.linear()
                 && boundary.windingNumber(centre) != 0;
-        Entry entry = Entries.choose(rule, p.start(), p.curves(), !plan.clockwise(), room, tool.radiusMm(), top - z)
+        Entry entry = Entries.choose(rule, p.start(), ahead, !plan.clockwise(), room, tool.radiusMm(), top - z)
                 .orElse(null);
         if (entry == null) {
             throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
@@ -120,6 +119,25 @@ public final class PocketMilling {
                             + " cutter is not taken to cut at its centre", rule.angleDeg(), p.start().x(), p.start().y()));
         }
         b.append(entry.moves(top, z, tool.plungeFeedMmPerMin()));
+    }
+
+    /**
+     * The path the tool will follow at depth from pass i's start: its curves, then those of the
+     * passes joined to it at depth, with the straight links between them (a ramp may run along
+     * it: the tool cuts there anyway).
+     */
+    static List<Curve2> ahead(List<Pass> passes, int i) {
+        List<Curve2> out = new java.util.ArrayList<>(passes.get(i).curves());
+        Vec2 end = passes.get(i).end();
+        for (int j = i + 1; j < passes.size() && passes.get(j).joinAtDepth(); j++) {
+            Pass q = passes.get(j);
+            if (end.distance(q.start()) > 1e-9) {
+                out.add(new Segment2(end, q.start()));
+            }
+            out.addAll(q.curves());
+            end = q.end();
+        }
+        return out;
     }
 
     /**
