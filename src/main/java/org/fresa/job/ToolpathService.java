@@ -58,6 +58,10 @@ public final class ToolpathService {
         }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        if (plan.planned() == 0) {
+            // every workingstep refused: an empty program would look like a finished job
+            return new TaskOutcome(1, plan.problems(), nothingToMachine(program, "").summary(), List.of());
+        }
         Toolpath path = plan.toolpath();
         out.create();
         out.write("toolpath.csv", os -> {

@@ -813,6 +813,12 @@ final class Ap238AimBinder {
                 }
             }
             featureId = fi.part("SHAPE_ASPECT").map(r -> text(r.param(0))).orElse("");
+            if (!fi.isComplex() && fi.record().type().equals("INSTANCED_FEATURE")) {
+                // a feature of no shape, e.g. the toolpath feature of explicit toolpaths (description 'toolpath')
+                String kind = text(fi.record().param(1)).trim().toUpperCase(Locale.ROOT).replace(' ', '_');
+                entity = kind.isEmpty() ? "INSTANCED_FEATURE" : kind + "_FEATURE";
+                featureId = text(fi.record().param(0));
+            }
         }
         Optional<Long> pds = firstUser(id, "PRODUCT_DEFINITION_SHAPE", 2);
         Transform3 placement = Transform3.IDENTITY;
@@ -1043,11 +1049,147 @@ final class Ap238AimBinder {
                     stop.map(x -> !x.toLowerCase(Locale.ROOT).contains("not") && !x.toLowerCase(Locale.ROOT)
                             .contains("no "))));
         }
+        List<ExplicitToolpath> toolpaths = toolpaths(id);
         return new Operation(id, type, kind.isEmpty() ? entity : entity + " '" + kind + "'", opId,
                 measure(property(props, "retract plane")), start, tool, tech, strategy, approach, retract,
                 measure(property(props, "axial cutting depth")), measure(property(props, "radial cutting depth")),
                 measure(property(props, "allowance side")), measure(property(props, "allowance bottom")),
-                measure(property(props, "cutting depth")), measure(property(props, "overcut length")), drilling);
+                measure(property(props, "cutting depth")), measure(property(props, "overcut length")), drilling,
+                toolpaths);
+    }
+
+    // ---- explicit toolpaths (CC1) ----
+
+    /** The operation's MACHINING_TOOLPATHs in sequence_position order. */
+    private List<ExplicitToolpath> toolpaths(long op) throws StepParseException {
+        List<long[]> rel = new ArrayList<>();
+        List<Double> pos = new ArrayList<>();
+        for (long r : usersOf(op, "MACHINING_TOOLPATH_SEQUENCE_RELATIONSHIP", 2)) {
+            StepRecord x = rec(r, "MACHINING_TOOLPATH_SEQUENCE_RELATIONSHIP").orElseThrow();
+            Optional<Long> tp = ref(x.param(3));
+            if (tp.isPresent()) {
+                rel.add(new long[] {tp.get()});
+                pos.add(number(x.param(4)).orElse(Double.MAX_VALUE));
+            }
+        }
+        List<Integer> idx = new ArrayList<>();
+        for (int i = 0; i < rel.size(); i++) {
+            idx.add(i);
+        }
+        idx.sort(Comparator.comparingDouble((Integer i) -> pos.get(i)).thenComparingInt(i -> i));
+        List<ExplicitToolpath> out = new ArrayList<>();
+        for (int i : idx) {
+            long tp = rel.get(i)[0];
+            StepInstance t = inst(tp);
+            if (t == null || t.isComplex()) {
+                continue;
+            }
+            List<Property> props = actionProperties(tp);
+            boolean rapid = description(property(props, "speed profile")).map(x -> x.equalsIgnoreCase("rapid"))
+                    .orElse(false);
+            Optional<Technology> tech = firstUser(tp, "MACHINING_TECHNOLOGY_RELATIONSHIP", 2)
+                    .flatMap(r -> ref(rec(r, "MACHINING_TECHNOLOGY_RELATIONSHIP").orElseThrow().param(3)))
+                    .map(this::technology);
+            Optional<Property> basic = property(props, "basic curve");
+            List<Profile.Segment> curve = new ArrayList<>();
+            if (basic.isPresent()) {
+                for (long item : basic.get().items()) {
+                    curve.addAll(curve(item, 0));
+                }
+            }
+            if (property(props, "tool axis").isPresent()) {
+                warnings.add("#" + tp + " MACHINING_TOOLPATH '" + text(t.record().param(0)) + "': its tool axis curve is"
+                        + " not read; the tool stays along the feature's z axis");
+            }
+            out.add(new ExplicitToolpath(tp, text(t.record().param(0)), text(t.record().param(1)), rapid, tech, curve));
+        }
+        return out;
+    }
+
+    /**
+     * A curve as lines and arcs in the order it is traversed: POLYLINE, COMPOSITE_CURVE (its
+     * segments' same_sense honoured), TRIMMED_CURVE of a LINE, POLYLINE or CIRCLE (ISO 10303-42:
+     * from trim_1 to trim_2, along the circle's own sense when sense_agreement is true, against it
+     * when false).
+     */
+    private List<Profile.Segment> curve(long id, int depth) throws StepParseException {
+        if (depth > 8) {
+            throw error(id, "curves nested more than 8 deep");
+        }
+        List<Profile.Segment> out = new ArrayList<>();
+        if (isA(id, "POLYLINE")) {
+            List<Vec3> pts = new ArrayList<>();
+            for (long p : refs(rec(id, "POLYLINE").orElseThrow().param(1))) {
+                pts.add(mm(geometry.pointOf(p)));
+            }
+            for (int i = 0; i + 1 < pts.size(); i++) {
+                if (pts.get(i).distance(pts.get(i + 1)) > 0) {
+                    out.add(new Profile.Line(pts.get(i), pts.get(i + 1)));
+                }
+            }
+            return out;
+        }
+        if (isA(id, "COMPOSITE_CURVE")) {
+            for (long seg : refs(rec(id, "COMPOSITE_CURVE").orElseThrow().param(1))) {
+                StepRecord s = rec(seg, "COMPOSITE_CURVE_SEGMENT")
+                        .orElseThrow(() -> error(seg, "a composite curve's segment should be a COMPOSITE_CURVE_SEGMENT"));
+                boolean same = !(s.param(1) instanceof StepValue.Enumeration e && e.name().equals("F"));
+                List<Profile.Segment> part = curve(ref(s.param(2)).orElseThrow(
+                        () -> error(seg, "COMPOSITE_CURVE_SEGMENT.parent_curve should be a reference")), depth + 1);
+                if (!same) {
+                    part = reversed(part);
+                }
+                out.addAll(part);
+            }
+            return out;
+        }
+        if (isA(id, "TRIMMED_CURVE")) {
+            StepRecord t = rec(id, "TRIMMED_CURVE").orElseThrow();
+            Optional<Vec3> p1 = trimPoint(t.param(2));
+            Optional<Vec3> p2 = trimPoint(t.param(3));
+            if (p1.isEmpty() || p2.isEmpty()) {
+                throw error(id, "TRIMMED_CURVE trimmed by parameters only: trim it by CARTESIAN_POINTs");
+            }
+            boolean sense = !(t.param(4) instanceof StepValue.Enumeration e && e.name().equals("F"));
+            long basis = ref(t.param(1)).orElseThrow(() -> error(id, "TRIMMED_CURVE.basis_curve should be a reference"));
+            if (isA(basis, "CIRCLE")) {
+                StepRecord c = rec(basis, "CIRCLE").orElseThrow();
+                Transform3 frame = placement(ref(c.param(1)).orElseThrow(() -> error(basis, "CIRCLE has no position")));
+                double r = number(c.param(2)).orElseThrow(() -> error(basis, "CIRCLE has no radius")) * lengthScale;
+                double z = frame.zAxis().z();
+                if (Math.abs(Math.abs(z) - 1) > 1e-9) {
+                    throw error(basis, "the arc's circle is not in a plane normal to z (axis " + frame.zAxis() + ")");
+                }
+                Vec3 centre = frame.translationPart();
+                out.add(new Profile.Arc(p1.get(), p2.get(), centre, r, (z > 0) == sense));
+                return out;
+            }
+            if (isA(basis, "LINE") || isA(basis, "POLYLINE")) {
+                out.add(new Profile.Line(p1.get(), p2.get()));
+                return out;
+            }
+            throw error(id, "TRIMMED_CURVE of a " + typeOf(basis) + ": lines and circles are read");
+        }
+        throw error(id, "a toolpath curve should be a POLYLINE, COMPOSITE_CURVE or TRIMMED_CURVE, found " + typeOf(id));
+    }
+
+    private Optional<Vec3> trimPoint(StepValue v) throws StepParseException {
+        for (long p : refs(v)) {
+            if (isA(p, "CARTESIAN_POINT")) {
+                return Optional.of(mm(geometry.pointOf(p)));
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static List<Profile.Segment> reversed(List<Profile.Segment> in) {
+        List<Profile.Segment> out = new ArrayList<>();
+        for (int i = in.size() - 1; i >= 0; i--) {
+            Profile.Segment s = in.get(i);
+            out.add(s instanceof Profile.Arc a ? new Profile.Arc(a.end(), a.start(), a.center(), a.radiusMm(), !a.ccw())
+                    : new Profile.Line(s.end(), s.start()));
+        }
+        return out;
     }
 
     /** The ARM operation an AIM operation entity and its description stand for. */

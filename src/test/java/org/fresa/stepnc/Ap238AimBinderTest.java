@@ -123,4 +123,32 @@ class Ap238AimBinderTest {
         assertEquals(Operation.OperationType.OTHER, op.type());
         assertTrue(op.entity().startsWith("FACING_TURNING_OPERATION"), op.entity());
     }
+
+    @Test
+    void explicitToolpathsAreReadInSequenceWithTheirArcsTraversedAsTheFileSays() throws Exception {
+        StepNcProgram p = StepNcReader.read(Path.of("src/test/resources/stepnc/aim-cc1-toolpaths.stp"));
+        MachiningWorkingstep ws = p.workingsteps().get(0);
+        assertEquals("TOOLPATH_FEATURE", ws.feature().entity());
+        Operation op = ws.operation();
+        assertEquals(Operation.OperationType.FREEFORM_OPERATION, op.type());
+        assertEquals(List.of("TP 1", "TP 2", "TP 3"), op.toolpaths().stream().map(ExplicitToolpath::id).toList());
+        assertEquals(List.of(true, false, true), op.toolpaths().stream().map(ExplicitToolpath::rapid).toList());
+        assertEquals(300, op.technology().feedMmPerMin().getAsDouble(), 1e-9);
+        assertEquals(1200, op.technology().spindleRpm().getAsDouble(), 1e-9);
+        List<Profile.Segment> cut = op.toolpaths().get(1).curve();
+        assertEquals(5, cut.size());
+        // sense_agreement .T.: along the circle (counter-clockwise); .F.: against it (clockwise)
+        Profile.Arc ccw = (Profile.Arc) cut.get(2);
+        near(new Vec3(30, 0, -1), ccw.start());
+        near(new Vec3(40, 10, -1), ccw.end());
+        assertTrue(ccw.ccw());
+        Profile.Arc cw = (Profile.Arc) cut.get(3);
+        near(new Vec3(40, 10, -1), cw.start());
+        near(new Vec3(50, 20, -1), cw.end());
+        near(new Vec3(50, 10, -1), cw.center());
+        assertFalse(cw.ccw());
+        // a segment whose same_sense is .F. is traversed from its curve's end
+        near(new Vec3(50, 20, -1), cut.get(4).start());
+        near(new Vec3(60, 20, -1), cut.get(4).end());
+    }
 }
