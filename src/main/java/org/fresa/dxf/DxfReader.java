@@ -32,8 +32,11 @@ import org.fresa.model.FileChecks;
  * the segment from vertex i to i + 1), ELLIPSE and SPLINE (replaced by arcs within
  * {@link DxfReadOptions#curveToleranceMm()}), INSERT and MINSERT with nested blocks, scale,
  * rotation and mirroring (depth bounded, a block inserting itself is reported once), OCS
- * extrusions ((0, 0, -1) mirrors x), {@code $INSUNITS}. Skipped and counted: text, hatches,
- * dimensions, images, points, paper space, frozen or switched-off layers and every other type.
+ * extrusions ((0, 0, -1) mirrors x), {@code $INSUNITS}. An ELLIPSE whose axis ratio is above 1
+ * (QCAD writes the longer axis as the minor one) is read with its axes swapped, as AutoCAD does.
+ * Skipped, counted and named in one warning per kind (how many, where the first is): text,
+ * hatches, dimensions, images, points, paper space, frozen or switched-off layers and every
+ * other type.
  *
  * <p>An entity that cannot be used (a circle of radius 0, a spline whose knots do not match its
  * control points) is named in {@link DxfDrawing#warnings()} by type, handle and line; the rest
@@ -53,6 +56,7 @@ public final class DxfReader {
     private final DxfReadOptions opt;
     private final List<String> warnings = new ArrayList<>();
     private final Map<String, Integer> ignored = new TreeMap<>();
+    private final Map<String, Entity> firstIgnored = new HashMap<>();
     private final Map<String, List<Curve2>> layers = new LinkedHashMap<>();
     private final Map<String, Block> blocks = new HashMap<>();
     private final Set<String> hiddenLayers = new HashSet<>();
@@ -157,6 +161,7 @@ public final class DxfReader {
         if (warningsLeftOut > 0) {
             warnings.add(warningsLeftOut + " more warnings like the ones above are left out");
         }
+        ignoredWarnings();
         return new DxfDrawing(tags.source, units, mm, layers, warnings, ignored);
     }
 
@@ -287,7 +292,7 @@ public final class DxfReader {
             } else if (type.equals("SEQEND")) {
                 open = null;
             } else if (type.equals("ATTRIB") && open == null) {
-                count("ATTRIB");
+                count("ATTRIB", e);
             } else {
                 open = type.equals("POLYLINE") ? e : null;
                 out.add(e);
@@ -297,8 +302,27 @@ public final class DxfReader {
         return out;
     }
 
-    private void count(String type) {
-        ignored.merge(type, 1, Integer::sum);
+    private void count(String type, Entity e) {
+        if (ignored.merge(type, 1, Integer::sum) == 1) {
+            firstIgnored.put(type, e);
+        }
+    }
+
+    /** One warning per kind of entity left out, with how many and where the first one is. */
+    private void ignoredWarnings() {
+        ignored.forEach((kind, n) -> {
+            Entity e = firstIgnored.get(kind);
+            String what = kind.equals("paper space") || kind.equals("on frozen or off layers")
+                    ? n + (n == 1 ? " entity " : " entities ") + kind
+                    : n + " " + kind + (n == 1 ? " entity" : " entities");
+            String why = switch (kind) {
+                case "paper space" -> "the sheet is cut from model space";
+                case "on frozen or off layers" -> "their layers are hidden";
+                case "POLYLINE mesh" -> "a 3D mesh has no outline to cut";
+                default -> "not a line, arc or curve to cut";
+            };
+            warnings.add(what + " left out (" + why + "), the first: " + describe(e));
+        });
     }
 
     // ---------------------------------------------------------------- entity access
@@ -395,7 +419,7 @@ public final class DxfReader {
             return;
         }
         if (str(e, 67, "0").trim().equals("1")) {
-            count("paper space");
+            count("paper space", e);
             return;
         }
         String layer = str(e, 8, "0");
@@ -403,7 +427,7 @@ public final class DxfReader {
             layer = insertLayer;
         }
         if (hiddenLayers.contains(layer)) {
-            count("on frozen or off layers");
+            count("on frozen or off layers", e);
             return;
         }
         List<Curve2> local = new ArrayList<>();
@@ -446,7 +470,7 @@ public final class DxfReader {
                 case "INSERT" -> insert(e, layer, t, depth, stack);
                 default -> {
                     if (!QUIET.contains(e.type)) {
-                        count(e.type);
+                        count(e.type, e);
                     }
                 }
             }
@@ -455,6 +479,13 @@ public final class DxfReader {
         } catch (IllegalArgumentException ex) {
             warn(describe(e) + ": " + ex.getMessage() + "; left out");
         }
+    }
+
+    /** A number for a message: up to 6 decimals, no trailing zeros. */
+    static String num(double v) {
+        String s = String.format(Locale.ROOT, "%.6f", v);
+        s = s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
+        return s.equals("-0") ? "0" : s;
     }
 
     private static Vec2 unit(double deg) {
@@ -621,7 +652,7 @@ public final class DxfReader {
     private void polyline(Entity e, String layer, DxfAffine t) throws BadEntity {
         int flags = (int) num(e, 70, 0);
         if ((flags & (16 | 64)) != 0) {
-            count("POLYLINE mesh");
+            count("POLYLINE mesh", e);
             return;
         }
         boolean threeD = (flags & 8) != 0;
@@ -668,11 +699,23 @@ public final class DxfReader {
         double u0 = num(e, 41, 0);
         double u1 = num(e, 42, 2 * Math.PI);
         double nz = num(e, 230, 1);
-        if (major.norm() == 0 || !(ratio > 0) || ratio > 1 + 1e-9) {
-            throw new BadEntity("major axis " + major + " and ratio " + ratio + " do not describe an ellipse");
+        if (major.norm() == 0 || !(ratio > 0)) {
+            throw new BadEntity(String.format(Locale.ROOT,
+                    "major axis (%s, %s) and axis ratio %s do not describe an ellipse (the axis must not be zero, the"
+                    + " ratio must be > 0)", num(major.x()), num(major.y()), num(ratio)));
         }
         // the minor axis is N x major: turned -90 degrees for an extrusion of (0, 0, -1)
         Vec2 minor = (nz >= 0 ? major.leftNormal() : major.leftNormal().negated()).times(ratio);
+        if (ratio > 1) {
+            // QCAD writes the longer axis as the "minor" one: AutoCAD and ezdxf swap the axes, which
+            // turns the parameter by a quarter (old u = new u + pi / 2), and read the same curve
+            Vec2 longer = minor;
+            minor = major.negated();
+            major = longer;
+            ratio = 1 / ratio;
+            u0 -= Math.PI / 2;
+            u1 -= Math.PI / 2;
+        }
         double sweep = u1 - u0;
         if (sweep <= 0) {
             // one step instead of adding 2 pi until positive, which never ends for |u0| >> 2 pi
@@ -697,9 +740,11 @@ public final class DxfReader {
         int pieces = Math.max(1, (int) Math.ceil(span / (Math.PI / 2)));
         boolean full = span == 2 * Math.PI;
         double last = start + span;
+        Vec2 ax = major;
+        Vec2 bx = minor;
         DoubleFunction<Vec2> f = u -> {
             double v = full && u == last ? start : u; // a closed ellipse ends exactly where it starts
-            return t.apply(c.plus(major.times(Math.cos(v)).plus(minor.times(Math.sin(v)))));
+            return t.apply(c.plus(ax.times(Math.cos(v)).plus(bx.times(Math.sin(v)))));
         };
         List<DxfArcFitter.Piece> ps = new ArrayList<>();
         for (int k = 0; k < pieces; k++) {

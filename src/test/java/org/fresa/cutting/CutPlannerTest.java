@@ -45,6 +45,21 @@ class CutPlannerTest {
     }
 
     @Test
+    void aQcadEllipseWithARatioAboveOneIsCutAsAHole() throws Exception {
+        org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(java.nio.file.Path.of(
+                CutPlannerTest.class.getResource("ellipse-ratio-above-one.dxf").toURI()));
+        CutPlan p = CutPlanner.plan(d.layers(), plasma(2));
+        assertEquals(1, p.outers().size());
+        assertEquals(1, p.holes().size());
+        assertEquals(2, p.cuts().size());
+        assertTrue(p.uncut().isEmpty() && p.open().isEmpty(), p.warnings().toString());
+        // the hole's semi-axes are 17.5 mm across and 5 mm up
+        org.fresa.geom.Box2 b = p.holes().get(0).bounds();
+        assertEquals(35, b.width(), 0.01);
+        assertEquals(10, b.height(), 0.01);
+    }
+
+    @Test
     void chainingIgnoresOrderAndDirectionAndRemovesRepeats() {
         List<Curve2> r = rect(0, 0, 10, 10);
         List<Curve2> l = List.of(r.get(2).reversed(), r.get(0), r.get(3), r.get(1).reversed(), r.get(0).reversed(),

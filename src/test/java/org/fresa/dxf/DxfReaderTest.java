@@ -161,6 +161,51 @@ class DxfReaderTest {
     }
 
     @Test
+    void anEllipseWithTheLongerAxisWrittenAsMinorIsReadWithItsAxesSwapped() throws Exception {
+        // QCAD: major axis (0, 5), ratio 3.5, so the "minor" axis (-17.5, 0) is the longer one
+        String e = "0\nELLIPSE\n5\n2F\n10\n0\n20\n0\n11\n0\n21\n5\n40\n3.5\n41\n0\n42\n6.283185307179586\n";
+        DxfDrawing d = read(dxf("", "", e));
+        List<Curve2> c = d.curves();
+        assertTrue(c.size() > 4, d.warnings().toString());
+        for (Curve2 cv : c) {
+            for (int k = 0; k <= 10; k++) {
+                Vec2 p = cv.pointAt(k / 10.0);
+                assertEquals(1, Math.pow(p.x() / 17.5, 2) + Math.pow(p.y() / 5, 2), 0.001, p::toString);
+            }
+        }
+        assertEquals(c.get(c.size() - 1).end(), c.get(0).start());
+    }
+
+    @Test
+    void anEllipticArcWithARatioAboveOneKeepsItsEndPoints() throws Exception {
+        // u from 0 to pi/2 on centre + major cos u + (N x major) ratio sin u: from (0, 5) to (-10, 0)
+        String e = "0\nELLIPSE\n10\n0\n20\n0\n11\n0\n21\n5\n40\n2\n41\n0\n42\n1.5707963267948966\n";
+        List<Curve2> c = read(dxf("", "", e)).curves();
+        near(Vec2.of(0, 5), c.get(0).start());
+        near(Vec2.of(-10, 0), c.get(c.size() - 1).end());
+        Vec2 mid = c.get(c.size() / 2).start();
+        assertTrue(mid.x() < 0 && mid.y() > 0, mid::toString);
+        assertEquals(1, Math.pow(mid.x() / 10, 2) + Math.pow(mid.y() / 5, 2), 0.001);
+    }
+
+    @Test
+    void aDegenerateEllipseIsNamedWithItsNumbersNotARecord() throws Exception {
+        String e = "0\nELLIPSE\n5\n2F\n10\n0\n20\n0\n11\n0\n21\n5\n40\n0\n";
+        DxfDrawing d = read(dxf("", "", e));
+        String w = d.warnings().stream().filter(x -> x.startsWith("ELLIPSE 2F")).findFirst().orElseThrow();
+        assertAll(() -> assertTrue(w.contains("major axis (0, 5) and axis ratio 0"), w),
+                () -> assertFalse(w.contains("Vec2"), w));
+    }
+
+    @Test
+    void everyKindOfEntityLeftOutIsNamedWithItsFirstPlace() throws Exception {
+        String e = "0\nTEXT\n5\n1A\n1\nhi\n0\nTEXT\n5\n1B\n1\nho\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
+        DxfDrawing d = read(dxf("", "", e));
+        assertTrue(d.warnings().contains("2 TEXT entities left out (not a line, arc or curve to cut), the first: TEXT 1A"
+                + " at line 6"), d.warnings().toString());
+    }
+
+    @Test
     void brokenEntitiesAreNamedAndTheRestIsKept() throws Exception {
         String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n0\nCIRCLE\n5\nA2\n10\n0\n20\n0\n40\n5\n0\nTEXT\n1\nhi\n";
         DxfDrawing d = read(dxf("", "", e));
