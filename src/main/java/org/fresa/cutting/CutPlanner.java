@@ -70,13 +70,21 @@ public final class CutPlanner {
         int dups = 0;
         int zero = 0;
         int junctions = 0;
+        List<Chainer.Gap> gaps = new ArrayList<>();
+        double joint = Math.min(CuttingOptions.JOINT_MM, o.gapToleranceMm());
         for (Map.Entry<String, List<Curve2>> e : layers.entrySet()) {
-            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4) : Chainer.chain(e.getValue(), o.gapToleranceMm());
+            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4)
+                    : Chainer.chain(e.getValue(), joint, o.gapToleranceMm());
             closed.addAll(ch.closed());
             open.addAll(ch.open());
             dups += ch.duplicates();
             zero += ch.zeroLength();
             junctions += ch.junctions();
+            gaps.addAll(ch.gaps());
+        }
+        for (Chainer.Gap g : gaps) {
+            warnings.add(String.format(Locale.ROOT, "gap of %.4f mm between two ends closed at (%.3f, %.3f)",
+                    g.widthMm(), g.at().x(), g.at().y()));
         }
         if (dups > 0) {
             warnings.add(dups + " duplicate elements removed");
@@ -87,11 +95,24 @@ public final class CutPlanner {
         if (junctions > 0) {
             warnings.add(junctions + " nodes where more than two element ends meet (the nearest end was followed)");
         }
+        List<Vec2> ends = new ArrayList<>();
         for (List<Curve2> chain : open) {
-            Vec2 a = chain.get(0).start();
-            Vec2 b = chain.get(chain.size() - 1).end();
-            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f), gap %.4g mm: not cut",
-                    chain.size(), a.x(), a.y(), b.x(), b.y(), a.distance(b)));
+            ends.add(chain.get(0).start());
+            ends.add(chain.get(chain.size() - 1).end());
+        }
+        for (int k = 0; k < open.size(); k++) {
+            List<Curve2> chain = open.get(k);
+            Vec2 a = ends.get(2 * k);
+            Vec2 b = ends.get(2 * k + 1);
+            String why = String.format(Locale.ROOT, "its ends are %.4g mm apart", a.distance(b));
+            if (ends.size() <= 4000) {
+                // the gap tolerance that would join both ends to something: the farther of their nearest other ends
+                double need = Math.max(nearestOther(ends, 2 * k), nearestOther(ends, 2 * k + 1));
+                why = String.format(Locale.ROOT, "its ends are %.4g mm from the nearest other end (a gap tolerance of"
+                        + " %.4g mm would join them)", need, need * 1.001);
+            }
+            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
+                    chain.size(), a.x(), a.y(), b.x(), b.y(), why));
         }
         List<Node> nodes = classify(closed, o.paperMode());
         List<Curve2> all = new ArrayList<>();
@@ -186,6 +207,17 @@ public final class CutPlanner {
         List<List<Vec2>> rapids = rapids(order, o, warnings);
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
                 rapids);
+    }
+
+    /** The distance from end i to the nearest other end of an open chain (its own other end included). */
+    private static double nearestOther(List<Vec2> ends, int i) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int j = 0; j < ends.size(); j++) {
+            if (j != i) {
+                best = Math.min(best, ends.get(i).distance(ends.get(j)));
+            }
+        }
+        return best;
     }
 
     // ------------------------------------------------------------------ classification
@@ -353,6 +385,12 @@ public final class CutPlanner {
                     continue; // LinuxCNC: the entry move must be longer than the tool radius
                 }
                 Contour started = startAt(path, (int) cand[0], cand[1]);
+                if (comp != 0 && Math.min(started.get(0).length(), started.get(started.size() - 1).length())
+                        <= 2 * half + 1e-3) {
+                    // LinuxCNC: the entry turns a corner into the first element, which must be longer
+                    // than the tool's diameter there ("cannot be reached without gouging")
+                    continue;
+                }
                 Vec2 s = started.get(0).start();
                 Vec2 t = started.get(0).startTangent();
                 List<Curve2> in = leadIn <= 0 ? List.of() : List.of(lead(s, t, len, scrapLeft, arcs, true));

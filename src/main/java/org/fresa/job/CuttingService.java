@@ -96,7 +96,7 @@ public final class CuttingService {
      * Reads and plans without writing anything.
      *
      * @param toleranceInDrawingUnits the settings' gap tolerance is in drawing units (the command
-     *     line's {@code --tolerance}), not millimetres (job files, the default 0.001 mm)
+     *     line's {@code --tolerance}), not millimetres (job files, the default {@link CuttingOptions#DEFAULT_GAP_MM})
      */
     public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
             throws CamInputException, IOException {
