@@ -206,13 +206,30 @@ class DxfReaderTest {
     }
 
     @Test
-    void brokenEntitiesAreNamedAndTheRestIsKept() throws Exception {
-        String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n0\nCIRCLE\n5\nA2\n10\n0\n20\n0\n40\n5\n0\nTEXT\n1\nhi\n";
+    void unusableEntitiesAreNamedAndTheRestIsKept() throws Exception {
+        String e = "0\nCIRCLE\n5\nA1\n10\n0\n20\n0\n40\n0\n0\nCIRCLE\n5\nA2\n10\n0\n20\n0\n40\n5\n0\nTEXT\n1\nhi\n";
         DxfDrawing d = read(dxf("", "", e));
         assertEquals(1, d.curveCount());
         assertEquals(1, d.ignored().get("TEXT"));
-        assertTrue(d.warnings().stream().anyMatch(w -> w.startsWith("LINE A1 at line 6: group 11 is not a number")),
+        assertTrue(d.warnings().contains("CIRCLE A1 at line 6: radius 0.0 is not > 0; the circle is left out"),
                 d.warnings().toString());
+    }
+
+    @Test
+    void aCoordinateThatIsNotANumberRefusesTheDrawingAtItsLine() {
+        String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n";
+        DxfException ex = assertThrows(DxfException.class, () -> read(dxf("", "", e)));
+        assertEquals("t.dxf: line 14: LINE A1 (from line 6): group 11 is 'abc': expected an x coordinate (a finite number)",
+                ex.getMessage());
+    }
+
+    @Test
+    void aDrawingPastTheCurveLimitIsRefusedNotCutShort() {
+        String line = "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
+        DxfReadOptions three = new DxfReadOptions(Optional.empty(), DxfUnits.MM, 0.001, 16, 3);
+        DxfException ex = assertThrows(DxfException.class, () -> DxfReader.read(
+                dxf("", "", line.repeat(4)).getBytes(StandardCharsets.UTF_8), "t.dxf", three));
+        assertTrue(ex.getMessage().startsWith("t.dxf: the drawing expands to more than 3 lines and arcs"), ex.getMessage());
     }
 
     @Test
