@@ -128,6 +128,7 @@ public final class CutPlanner {
         CurveGrid grid = new CurveGrid(all, cell);
         List<Vec2> invalid = new ArrayList<>();
         List<Contour> uncut = new ArrayList<>();
+        List<CutPlan.NotCut> notCut = new ArrayList<>();
         List<Contour> outers = new ArrayList<>();
         List<Contour> holes = new ArrayList<>();
         int partNo = 0;
@@ -142,9 +143,8 @@ public final class CutPlanner {
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
             if (n.contour.size() > MAX_CONTOUR_ELEMENTS) {
                 // the offset compares every piece with every element: such a contour would not finish
-                uncut.add(n.contour);
-                warnings.add(label + " has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
-                        + " a contour may have (simplify the drawing): not cut");
+                notCut(label, n.contour, "has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
+                        + " a contour may have (simplify the drawing)", uncut, notCut, warnings);
                 continue;
             }
             Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
@@ -156,9 +156,12 @@ public final class CutPlanner {
                 PaperCrc.Result r = half > 0 ? PaperCrc.offset(oriented, half, toolLeft)
                         : new PaperCrc.Result(java.util.Optional.of(oriented), List.of());
                 invalid.addAll(r.invalidVertices());
+                for (Vec2 v : r.invalidVertices()) {
+                    warnings.add(String.format(Locale.ROOT, "invalid vertex of %s at (%.3f, %.3f): a corner the kerf"
+                            + " cannot follow on the nozzle's side (round it with an arc in the drawing)", label, v.x(), v.y()));
+                }
                 if (r.path().isEmpty()) {
-                    uncut.add(n.contour);
-                    warnings.add(label + " collapses under the kerf: not cut");
+                    notCut(label, n.contour, "collapses under the kerf", uncut, notCut, warnings);
                 } else {
                     n.cuts.add(new CutPath(label, outer, n.contour, r.path().get(), List.of(), List.of(), 0));
                 }
@@ -175,7 +178,7 @@ public final class CutPlanner {
                     n.cuts.add(cp);
                     continue;
                 }
-                warnings.add(label + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
+                warnings.add(label + place(n.contour) + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
                         + " for an entry move longer than it); cut on the offset path instead");
             }
             List<Contour> same = new ArrayList<>();
@@ -185,17 +188,16 @@ public final class CutPlanner {
                 }
             }
             if (same.isEmpty()) {
-                uncut.add(n.contour);
-                Box2 b = n.contour.bounds();
-                warnings.add(String.format(Locale.ROOT, "%s (%.3f x %.3f mm at %.3f, %.3f) is too small for a %.3f mm kerf: not cut",
-                        label, b.width(), b.height(), b.minX(), b.minY(), o.kerfMm()));
+                notCut(label, n.contour, String.format(Locale.ROOT, "is too small for a %.3f mm kerf", o.kerfMm()), uncut,
+                        notCut, warnings);
                 continue;
             }
             if (outer && loops.size() > same.size()) {
-                warnings.add(label + " has a slot or gap narrower than the kerf: it closes up and is not cut");
+                warnings.add(label + place(n.contour) + " has a slot or gap narrower than the kerf: it closes up and is not cut");
             }
             if (!outer && same.size() > 1) {
-                warnings.add(label + " has a waist narrower than the kerf: cut as " + same.size() + " separate loops");
+                warnings.add(label + place(n.contour) + " has a waist narrower than the kerf: cut as " + same.size()
+                        + " separate loops");
             }
             for (int k = 0; k < same.size(); k++) {
                 String l = same.size() > 1 ? label + "." + (k + 1) : label;
@@ -206,7 +208,7 @@ public final class CutPlanner {
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
         List<List<Vec2>> rapids = rapids(order, o, warnings);
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
-                rapids);
+                rapids, notCut);
     }
 
     /** The distance from end i to the nearest other end of an open chain (its own other end included). */
@@ -218,6 +220,19 @@ public final class CutPlanner {
             }
         }
         return best;
+    }
+
+    /** " (W x H mm at X, Y)": a contour's size and the lower left corner of its box, for messages. */
+    static String place(Contour c) {
+        Box2 b = c.bounds();
+        return String.format(Locale.ROOT, " (%.3f x %.3f mm at %.3f, %.3f)", b.width(), b.height(), b.minX(), b.minY());
+    }
+
+    private static void notCut(String label, Contour c, String reason, List<Contour> uncut, List<CutPlan.NotCut> notCut,
+            List<String> warnings) {
+        uncut.add(c);
+        notCut.add(new CutPlan.NotCut(label, c, reason));
+        warnings.add(label + place(c) + " " + reason + ": not cut");
     }
 
     // ------------------------------------------------------------------ classification

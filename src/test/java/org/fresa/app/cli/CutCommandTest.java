@@ -82,4 +82,49 @@ class CutCommandTest {
                         + " (the file is truncated)"), r.err()),
                 () -> assertFalse(Files.exists(dir.resolve("d.ngc"))));
     }
+
+    /** A 200 x 200 plate with 30 square holes of 1 mm, too small for the default 2 mm kerf. */
+    static String plateWithTinyHoles() {
+        StringBuilder sb = new StringBuilder("0\nSECTION\n2\nENTITIES\n");
+        sb.append(poly(0, 0, 200));
+        for (int k = 0; k < 30; k++) {
+            sb.append(poly(10 + 6 * k, 100, 1));
+        }
+        return sb.append("0\nENDSEC\n0\nEOF\n").toString();
+    }
+
+    static String poly(double x, double y, double side) {
+        return String.format(java.util.Locale.ROOT, "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n"
+                + "10\n%s\n20\n%s\n", x, y, x + side, y, x + side, y + side, x, y + side);
+    }
+
+    @Test
+    void everyContourNotCutIsNamedAndPlacedOnTheTerminalAndInTheJson() throws IOException {
+        Path in = dir.resolve("holes.dxf");
+        Files.writeString(in, plateWithTinyHoles());
+        Run r = fresa("cut", in.toString(), "--out", dir.resolve("h.ngc").toString());
+        Run j = fresa("cut", in.toString(), "--out", dir.resolve("h.ngc").toString(), "--json");
+        long named = r.err().lines().filter(l -> l.matches("fresa: part 1 hole \\d+ \\(1\\.000 x 1\\.000 mm at \\d+\\.000,"
+                + " 100\\.000\\) is too small for a 2\\.000 mm kerf: not cut")).count();
+        assertAll(() -> assertEquals(1, r.status()),
+                () -> assertEquals(30, named, r.err()),
+                () -> assertFalse(r.err().contains("more warnings"), r.err()),
+                () -> assertTrue(r.err().contains("fresa: part 1 hole 30 (1.000 x 1.000 mm at 184.000, 100.000) is too"
+                        + " small"), r.err()),
+                () -> assertTrue(j.out().contains("\"not_cut_contours\":[{\"contour\":\"part 1 hole 1\",\"x_mm\":"), j.out()),
+                () -> assertEquals(30, j.out().split("\"reason\":\"is too small for a 2.000 mm kerf\"", -1).length - 1,
+                        j.out()));
+    }
+
+    @Test
+    void thePapersInvalidVerticesAreListedWithTheirPlaces() throws IOException {
+        // the paper's rule: the four sharp corners of a square hole are concave for the nozzle
+        Path in = dir.resolve("square-hole.dxf");
+        Files.writeString(in, "0\nSECTION\n2\nENTITIES\n" + poly(0, 0, 100) + poly(40, 40, 20) + "0\nENDSEC\n0\nEOF\n");
+        Run r = fresa("cut", in.toString(), "--out", dir.resolve("s.ngc").toString(), "--paper-mode", "--json");
+        assertAll(() -> assertTrue(r.out().contains("\"invalid_vertex_points\":[[40,40],[60,40],[60,60],[40,60]]"), r.out()),
+                () -> assertEquals(4, r.err().lines().filter(l -> l.startsWith("fresa: invalid vertex of part 1 hole 1 at (")).count(),
+                        r.err()),
+                () -> assertTrue(r.err().contains("invalid vertex of part 1 hole 1 at (40.000, 40.000)"), r.err()));
+    }
 }
