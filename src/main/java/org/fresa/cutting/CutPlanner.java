@@ -2,6 +2,7 @@ package org.fresa.cutting;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -37,6 +38,8 @@ public final class CutPlanner {
     private static final Tolerance TOL = Tolerance.DEFAULT;
     /** Most elements one contour may have to be offset. */
     static final int MAX_CONTOUR_ELEMENTS = 20_000;
+    /** Most time spent shortening the cut order once the nearest-neighbour order is found. */
+    static final long ORDER_BUDGET_NANOS = 3_000_000_000L;
 
     private CutPlanner() {
     }
@@ -562,98 +565,88 @@ public final class CutPlanner {
         return out;
     }
 
+    /**
+     * The cuts in the order of {@link CutOrder}: every cut inside a contour (its holes, the parts
+     * in a hole) before the contour's own cut.
+     */
     private static List<CutPath> order(List<Node> nodes) {
-        List<Node> top = new ArrayList<>();
+        List<CutPath> cuts = new ArrayList<>();
+        Map<Node, int[]> ids = new java.util.IdentityHashMap<>();
         for (Node n : nodes) {
-            if (n.parent == null) {
-                top.add(n);
+            int[] id = new int[n.cuts.size()];
+            for (int k = 0; k < id.length; k++) {
+                id[k] = cuts.size();
+                cuts.add(n.cuts.get(k));
+            }
+            ids.put(n, id);
+        }
+        List<Vec2> pierce = new ArrayList<>(cuts.size());
+        List<Vec2> exit = new ArrayList<>(cuts.size());
+        for (CutPath c : cuts) {
+            pierce.add(c.pierce());
+            exit.add(c.exit());
+        }
+        List<int[]> before = new ArrayList<>(cuts.size());
+        for (Node n : nodes) {
+            int m = 0;
+            for (Node child : n.children) {
+                m += ids.get(child).length;
+            }
+            int[] inner = new int[m];
+            int k = 0;
+            for (Node child : n.children) {
+                for (int id : ids.get(child)) {
+                    inner[k++] = id;
+                }
+            }
+            for (int unused : ids.get(n)) {
+                before.add(inner);
             }
         }
-        List<Node> seq = tour(top, Vec2.ZERO);
-        List<CutPath> out = new ArrayList<>();
-        Vec2[] at = {Vec2.ZERO};
-        for (Node n : seq) {
-            emitPart(n, at, out);
+        CutOrder co = new CutOrder(pierce, exit, before);
+        int[] nn = co.nearestNeighbour();
+        // a part with everything inside it is one stop of the tour, its cuts in their nearest-neighbour
+        // order: between parts there is no rule, so the stops can be reordered freely
+        Map<Node, List<Integer>> byPart = new java.util.LinkedHashMap<>();
+        Map<Integer, Node> partOf = new HashMap<>();
+        for (Node n : nodes) {
+            Node top = n;
+            while (top.parent != null) {
+                top = top.parent;
+            }
+            for (int id : ids.get(n)) {
+                partOf.put(id, top);
+            }
+        }
+        for (int id : nn) {
+            byPart.computeIfAbsent(partOf.get(id), k -> new ArrayList<>()).add(id);
+        }
+        List<List<Integer>> stops = new ArrayList<>(byPart.values());
+        List<Vec2> stopIn = new ArrayList<>(stops.size());
+        List<Vec2> stopOut = new ArrayList<>(stops.size());
+        List<int[]> free = new ArrayList<>(stops.size());
+        for (List<Integer> stop : stops) {
+            stopIn.add(pierce.get(stop.get(0)));
+            stopOut.add(exit.get(stop.get(stop.size() - 1)));
+            free.add(new int[0]);
+        }
+        CutOrder so = new CutOrder(stopIn, stopOut, free);
+        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 100_000_000L + 20_000L * cuts.size()));
+        int[] seq = new int[cuts.size()];
+        int k = 0;
+        for (int st : stopSeq) {
+            for (int id : stops.get(st)) {
+                seq[k++] = id;
+            }
+        }
+        if (co.travel(nn) < co.travel(seq)) {
+            seq = nn;
+        }
+        List<CutPath> out = new ArrayList<>(cuts.size());
+        for (int i : seq) {
+            out.add(cuts.get(i));
         }
         return out;
-    }
-
-    /** A part: the parts inside each hole, then the hole, for each hole nearest first; then its outside. */
-    private static void emitPart(Node part, Vec2[] at, List<CutPath> out) {
-        List<Node> holes = new ArrayList<>(part.children);
-        while (!holes.isEmpty()) {
-            Node best = null;
-            for (Node h : holes) {
-                if (best == null || entry(h).distance(at[0]) < entry(best).distance(at[0])) {
-                    best = h;
-                }
-            }
-            holes.remove(best);
-            for (Node inner : tour(best.children, at[0])) {
-                emitPart(inner, at, out);
-            }
-            for (CutPath c : best.cuts) {
-                out.add(c);
-                at[0] = c.exit();
-            }
-        }
-        for (CutPath c : part.cuts) {
-            out.add(c);
-            at[0] = c.exit();
-        }
-    }
-
-    private static Vec2 entry(Node n) {
-        return n.cuts.isEmpty() ? n.box.center() : n.cuts.get(0).pierce();
-    }
-
-    /** Nearest neighbour from the start, then 2-opt on the open tour's rapid length. */
-    private static List<Node> tour(List<Node> nodes, Vec2 start) {
-        List<Node> left = new ArrayList<>(nodes);
-        List<Node> seq = new ArrayList<>();
-        Vec2 at = start;
-        while (!left.isEmpty()) {
-            int best = 0;
-            for (int i = 1; i < left.size(); i++) {
-                if (entry(left.get(i)).distance(at) < entry(left.get(best)).distance(at)) {
-                    best = i;
-                }
-            }
-            Node n = left.remove(best);
-            seq.add(n);
-            at = entry(n);
-        }
-        int n = seq.size();
-        if (n < 4 || n > 3000) {
-            return seq;
-        }
-        Vec2[] p = new Vec2[n + 1];
-        p[0] = start;
-        for (int i = 0; i < n; i++) {
-            p[i + 1] = entry(seq.get(i));
-        }
-        boolean improved = true;
-        for (int pass = 0; pass < 50 && improved; pass++) {
-            improved = false;
-            for (int i = 0; i < n - 1; i++) {
-                for (int j = i + 2; j <= n; j++) {
-                    double before = p[i].distance(p[i + 1]) + (j < n ? p[j].distance(p[j + 1]) : 0);
-                    double after = p[i].distance(p[j]) + (j < n ? p[i + 1].distance(p[j + 1]) : 0);
-                    if (after < before - 1e-9) {
-                        for (int a = i + 1, b = j; a < b; a++, b--) {
-                            Vec2 tp = p[a];
-                            p[a] = p[b];
-                            p[b] = tp;
-                            Node tn = seq.get(a - 1);
-                            seq.set(a - 1, seq.get(b - 1));
-                            seq.set(b - 1, tn);
-                        }
-                        improved = true;
-                    }
-                }
-            }
-        }
-        return seq;
     }
 
     // ------------------------------------------------------------------ rapids
