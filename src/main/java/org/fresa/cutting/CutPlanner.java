@@ -25,8 +25,9 @@ import org.fresa.pocket.LineArcOffsetter;
  * hole; a part inside a hole is cut before that hole), orients them (outer contours clockwise
  * and holes counter-clockwise by default, so the scrap is on the left), offsets each by half the
  * kerf into the scrap with {@link LineArcOffsetter}, chooses pierce points and leads that stay in
- * the scrap, orders the pierces (holes before their part, parts by nearest neighbour then 2-opt)
- * and produces the tool-centre path.
+ * the scrap, orders the pierces ({@link CutOrder}: holes before their part, a nearest-neighbour
+ * tour improved by 2-opt and Or-opt moves between parts, never longer than the plain
+ * nearest-neighbour tour) and produces the tool-centre path.
  *
  * <p>Pierce point rule: the middle of the longest straight element of the cut path, then the
  * next longest, then corners, then the middle of arcs; the first where a lead fits (tried at its
