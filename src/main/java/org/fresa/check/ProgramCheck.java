@@ -28,6 +28,9 @@ public final class ProgramCheck {
     public static final List<Rule> RULES = List.of(new WordRule(), new SpindleRule(), new EntryAngleRule(),
             new FloorRule());
 
+    private static final java.util.regex.Pattern AXIS_COMMENT = java.util.regex.Pattern.compile(
+            "(?i)tool axis (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) is not \\+Z");
+
     /** Most points an arc is sampled into (a degree each), against absurd turn counts. */
     private static final int MAX_ARC_POINTS = 100_000;
 
@@ -51,6 +54,7 @@ public final class ProgramCheck {
         List<Words.Block> blocks = Words.blocks(program);
         Machine m = new Machine(dialect, limits);
         for (Words.Block b : blocks) {
+            m.readAxis(b.text());
             Step step = m.execute(b);
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
@@ -81,10 +85,31 @@ public final class ProgramCheck {
         private boolean on;
         private int selected;
         private int tool;
+        private Vec3 axis = Vec3.UNIT_Z;
 
         Machine(NcDialect dialect, Limits limits) {
             this.dialect = dialect;
             this.limits = limits;
+        }
+
+        /**
+         * Fresa's posts write a section whose tool axis is not +Z as it is, with a comment naming
+         * the axis (the part is to be turned so that it becomes the spindle's): the section's
+         * entries are measured along it. Every other comment line starts a section along +Z.
+         */
+        void readAxis(String text) {
+            String t = text.strip();
+            if (!(t.startsWith("(") || t.startsWith(";"))) {
+                return;
+            }
+            java.util.regex.Matcher mt = AXIS_COMMENT.matcher(t);
+            if (mt.find()) {
+                Vec3 v = new Vec3(Double.parseDouble(mt.group(1)), Double.parseDouble(mt.group(2)),
+                        Double.parseDouble(mt.group(3)));
+                axis = v.norm() > 0.5 ? v.times(1 / v.norm()) : Vec3.UNIT_Z;
+            } else {
+                axis = Vec3.UNIT_Z;
+            }
         }
 
         Step execute(Words.Block b) {
@@ -153,7 +178,7 @@ public final class ProgramCheck {
                 y = ny;
                 z = nz;
             }
-            Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell);
+            Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis);
             // a tool change and the program's end stop the spindle after the block
             if (b.has("M", 6)) {
                 tool = selected;

@@ -6,7 +6,8 @@ import java.util.stream.Collectors;
 /**
  * Every cutting move (G01/G02/G03) runs with the spindle on at a speed in the machine's range:
  * after M03/M04 with S in range and before M05 (or a tool change, or the program's end). On a
- * sheet-cutting machine the process's on word (torch, laser, jet) takes the spindle's place.
+ * sheet-cutting machine the process's on word (torch, laser, jet) takes the spindle's place. A
+ * straight retract along the tool axis cuts nothing and may run with the spindle stopped.
  */
 public record SpindleRule() implements Rule {
 
@@ -33,10 +34,10 @@ public record SpindleRule() implements Rule {
             }
             return null;
         }
-        if (!s.cuttingOn()) {
+        if (!s.cuttingOn() && !s.retract()) {
             return "cutting move with the spindle stopped: no M03/M04 with an S word before it, or M05 since";
         }
-        if (!(s.spindleRpm() >= l.spindleMinRpm() && s.spindleRpm() <= l.spindleMaxRpm())) {
+        if (s.cuttingOn() && !(s.spindleRpm() >= l.spindleMinRpm() && s.spindleRpm() <= l.spindleMaxRpm())) {
             return "cutting move with the spindle at " + (Double.isNaN(s.spindleRpm()) ? "no stated speed"
                     : String.format(Locale.ROOT, "S%s", Num.of(s.spindleRpm()))) + ": the machine turns "
                     + Num.of(l.spindleMinRpm()) + ".." + Num.of(l.spindleMaxRpm()) + " rpm";

@@ -19,11 +19,26 @@ import org.fresa.geom.Vec3;
  * @param feedMmPerMin the feed rate in effect (NaN when none was given)
  * @param tool the tool in the spindle (0 when none was called)
  * @param dwell a G04 block: its address words are a time
+ * @param axis the tool axis, from the tip towards the spindle (+Z unless the post states another)
  */
 public record Step(Words.Block block, NcDialect dialect, boolean feedMove, List<Vec3> path, boolean arcInPlane,
-        double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell) {
+        double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell, Vec3 axis) {
 
     public Step {
         path = List.copyOf(path);
+        java.util.Objects.requireNonNull(axis, "axis");
+    }
+
+    /**
+     * A straight move back along the tool axis, out of the cut (a reamer or a boring bar leaving
+     * its hole with the spindle stopped): it removes no material.
+     */
+    public boolean retract() {
+        if (path.size() != 2) {
+            return false;
+        }
+        Vec3 d = path.get(1).minus(path.get(0));
+        double along = d.dot(axis);
+        return along > 0 && d.minus(axis.times(along)).norm() <= 1e-3;
     }
 }

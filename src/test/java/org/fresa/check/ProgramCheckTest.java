@@ -186,4 +186,34 @@ class ProgramCheckTest {
         assertEquals("entry angle", plunge.rule().name());
         assertTrue(plunge.reason().contains("90.0 degrees (a plunge)"), plunge.reason());
     }
+
+    @Test
+    void entryAngleRuleLeavesPlungesBesideTheStockAlone() {
+        String p = GOOD.replace("G1 X57.272 Y0.000 Z-2.000", "G1 X0.000 Y0.000 Z-2.000\nG1 X57.272 Y0.000 Z-2.000");
+        Limits.Stock block = new Limits.Stock(10, -50, -20, 100, 50, 0);
+        Limits mill = Limits.milling().withStock(block);
+        // the cutter of radius 4 at X0 stands 6 mm clear of the block's side: it plunges in the air
+        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(4))).ok());
+        Failure f = fails(p, NcDialect.LINUXCNC, mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(12)));
+        assertEquals("entry angle", f.rule().name());
+    }
+
+    @Test
+    void entryAngleRuleFollowsTheToolAxisThePostStates() {
+        String p = GOOD.replace("(slot)", "(slot tool 1 D8.000)\n(tool axis 0.000 -1.000 0.000 is not +Z: needs the part turned)")
+                .replace("G1 X57.272 Y0.000 Z-2.000", "G1 X0.000 Y2.000 Z0.000");
+        // along -Y the move to Y2 goes against the axis: a plunge; the descent to Z0 is sideways
+        Failure f = fails(p, NcDialect.LINUXCNC, Limits.milling());
+        assertEquals("entry angle", f.rule().name());
+        assertEquals(11, f.line());
+    }
+
+    @Test
+    void spindleRuleLetsAReamerLeaveItsHoleWithTheSpindleStopped() {
+        String ream = "G21 G90 G17\nT3 M6\nS1080 M3\nG0 X20 Y60 Z10\nG1 X20 Y60 Z-30 F180\nM5\nG1 X20 Y60 Z10\nM30\n";
+        Limits l = Limits.milling().withTool(3, ToolLimits.drill());
+        assertTrue(ProgramCheck.of(ream, NcDialect.LINUXCNC, l).ok());
+        Failure f = fails(ream.replace("G1 X20 Y60 Z10", "G1 X21 Y60 Z10"), NcDialect.LINUXCNC, l);
+        assertEquals("spindle", f.rule().name());
+    }
 }
