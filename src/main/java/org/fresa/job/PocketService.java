@@ -234,6 +234,13 @@ public final class PocketService {
         }
         String name = s.contour().getFileName().toString();
         String nc = program(plan, s.post(), name, s.climb());
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
         AtomicFiles.writeString(outFile, nc);
         boolean thesis = s.post().equals("7m-compat");
         Toolpath path = PocketToolpath.of(plan, !thesis && s.climb());
@@ -289,7 +296,15 @@ public final class PocketService {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         String name = s.contour().getFileName().toString();
-        AtomicFiles.writeString(outFile, regionProgram(plan, s.post(), name));
+        String nc = regionProgram(plan, s.post(), name);
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
+        AtomicFiles.writeString(outFile, nc);
         double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
                 contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();

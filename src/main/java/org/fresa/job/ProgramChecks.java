@@ -85,6 +85,25 @@ public final class ProgramChecks {
                 .withOtherTools(ToolLimits.notCentreCutting().withRadiusMm(r));
     }
 
+    /**
+     * A sole's tread programs: the stock below the mould's top face (z = 0), the floor the tread
+     * depth. The job gives every tread tool a plunge feed: they are engravers that go straight
+     * down into the groove, taken as centre-cutting tools asked to plunge.
+     */
+    public static Limits soleTread(JobSettings.SoleSettings s) {
+        return Limits.milling().withHeights(0, -s.treadDepthMm(), 0)
+                .withOtherTools(ToolLimits.centreCuttingPlunge().withKind("a tread engraver, given a plunge feed by the job"));
+    }
+
+    /**
+     * A sole's cavity programs: the stock below the top face (z = 0), the floor the cavity depth,
+     * the cavity tool a pocket cutter that does not cut at its centre (3 degrees), as the pocket
+     * module's.
+     */
+    public static Limits soleCavity(JobSettings.SoleSettings s) {
+        return Limits.milling().withHeights(0, -s.cavityDepthMm(), 0);
+    }
+
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */
     public static NcDialect dialect(String post) {
         return NcDialect.byPost(post).orElseThrow(() -> new IllegalArgumentException("no dialect for post " + post));
