@@ -126,6 +126,11 @@ public final class CuttingService {
     public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
             ProgressMonitor progress) throws CamInputException, IOException {
         Result r = compute(s, toleranceInDrawingUnits, progress);
+        try {
+            check(r, outFile.getFileName().toString());
+        } catch (ProgramChecks.RefusedProgram e) {
+            return refused(outcome(r, List.of()), e);
+        }
         AtomicFiles.writeString(outFile, r.program());
         return outcome(r, List.of(outFile.toAbsolutePath()));
     }
@@ -135,10 +140,38 @@ public final class CuttingService {
             throws CamInputException, IOException {
         Result r = compute(s, progress);
         out.create();
-        Path p = out.writeString(r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc",
-                r.program());
+        String file = r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc";
+        try {
+            check(r, file);
+        } catch (ProgramChecks.RefusedProgram e) {
+            Path j = out.writeString("summary.json", Json.write(summary(r)));
+            return refused(outcome(r, List.of(j)), e);
+        }
+        Path p = out.writeString(file, r.program());
         Path j = out.writeString("summary.json", Json.write(summary(r)));
         return outcome(r, List.of(p, j));
+    }
+
+    /**
+     * Checks the program as the machine would run it: every cutting move with the process's jet on,
+     * every word in range.
+     */
+    public static void check(Result r, String file) throws ProgramChecks.RefusedProgram {
+        ProgramChecks.require(file, r.program(), ProgramChecks.dialect(r.dialect().id()), limits(r));
+    }
+
+    /** The limits of a sheet-cutting program: the process's on and off words instead of a spindle. */
+    public static org.fresa.check.Limits limits(Result r) {
+        String[] jet = SheetCuttingPost.jetWords(r.dialect(), r.options().process().id());
+        return org.fresa.check.Limits.sheetCutting(r.options().process().id(), jet[0], jet[1]);
+    }
+
+    private static TaskOutcome refused(TaskOutcome o, ProgramChecks.RefusedProgram e) {
+        List<String> problems = new ArrayList<>(o.problems());
+        problems.add(e.getMessage());
+        Map<String, Object> summary = new LinkedHashMap<>(o.summary());
+        summary.put("program_refused", e.failure().message());
+        return new TaskOutcome(1, problems, summary, o.files());
     }
 
     /** The JSON summary (spec/cli.md: contours, outer, inner, open, pierces, lengths, warnings). */

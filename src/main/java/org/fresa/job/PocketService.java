@@ -250,6 +250,13 @@ public final class PocketService {
             problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
         AtomicFiles.writeString(outFile, nc);
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
@@ -319,7 +326,15 @@ public final class PocketService {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         String name = s.contour().getFileName().toString();
-        AtomicFiles.writeString(outFile, regionProgram(plan, s.post(), name));
+        String nc = regionProgram(plan, s.post(), name);
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
+        AtomicFiles.writeString(outFile, nc);
         double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
                 contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();
