@@ -203,7 +203,7 @@ public final class PocketService {
             case "7m-compat":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
             case "7m":
-                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb).write(plan);
+                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb, entry).write(plan);
             default: {
                 NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
