@@ -297,7 +297,8 @@ public final class PocketService {
             throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
                     + " found): choose one of " + String.join(", ", NcPosts.names()));
         }
-        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb());
+        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb(),
+                entryRule(s));
     }
 
     /** The program text of a region plan for a G-code post. */
