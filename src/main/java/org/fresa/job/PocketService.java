@@ -203,7 +203,7 @@ public final class PocketService {
             case "7m-compat":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
             case "7m":
-                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb).write(plan);
+                return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb, entry).write(plan);
             default: {
                 NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
@@ -304,7 +304,8 @@ public final class PocketService {
             throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
                     + " found): choose one of " + String.join(", ", NcPosts.names()));
         }
-        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb());
+        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb(),
+                entryRule(s));
     }
 
     /** The program text of a region plan for a G-code post. */
