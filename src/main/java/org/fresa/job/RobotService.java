@@ -104,9 +104,18 @@ public final class RobotService {
         Timing.mark("robot loaded");
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
         Timing.mark("part 21 read and bound");
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return ToolpathService.nothingToMachine(program, nothing.get());
+        }
         progress.progress(-1, "planning toolpaths");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, s.choices());
         Timing.mark("toolpaths planned");
+        if (plan.planned() == 0) {
+            // every workingstep refused: no trajectory and no robot program for nothing
+            return new TaskOutcome(1, plan.problems(), ToolpathService.nothingToMachine(program, "").summary(),
+                    List.of());
+        }
         Toolpath path = plan.toolpath();
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),

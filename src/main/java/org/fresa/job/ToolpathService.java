@@ -52,8 +52,16 @@ public final class ToolpathService {
             ProgressMonitor progress) throws CamInputException, IOException {
         NcPost post = post(postName, "--post");
         StepNcProgram program = StepNcService.read(file, progress);
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return nothingToMachine(program, nothing.get());
+        }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        if (plan.planned() == 0) {
+            // every workingstep refused: an empty program would look like a finished job
+            return new TaskOutcome(1, plan.problems(), nothingToMachine(program, "").summary(), List.of());
+        }
         Toolpath path = plan.toolpath();
         out.create();
         out.write("toolpath.csv", os -> {
@@ -62,16 +70,33 @@ public final class ToolpathService {
             w.flush();
         });
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        out.write("program.ngc", os -> {
-            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-            post.write(path, name, w);
-            w.flush();
-        });
+        java.io.StringWriter nc = new java.io.StringWriter();
+        post.write(path, name, nc);
+        List<String> problems = new ArrayList<>(plan.problems());
         Map<String, Object> summary = summary(program, plan, post);
+        boolean refused = false;
+        try {
+            ProgramChecks.require("program.ngc", nc.toString(), ProgramChecks.dialect(post.name()),
+                    ProgramChecks.stepnc(program, plan));
+            out.writeString("program.ngc", nc.toString());
+        } catch (ProgramChecks.RefusedProgram e) {
+            problems.add(e.getMessage());
+            summary.put("program_refused", e.failure().message());
+            refused = true;
+        }
         out.writeString("summary.json", Json.writePretty(summary));
         progress.progress(1, "done");
-        int status = plan.problems().isEmpty() || plan.planned() == plan.workingsteps() ? 0 : 1;
-        return new TaskOutcome(status, plan.problems(), summary, out.written());
+        int status = !refused && (plan.problems().isEmpty() || plan.planned() == plan.workingsteps()) ? 0 : 1;
+        return new TaskOutcome(status, problems, summary, out.written());
+    }
+
+    /** A file with nothing to machine writes no program: an empty one would look like a finished job. */
+    static TaskOutcome nothingToMachine(StepNcProgram program, String why) {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("schema", program.schema());
+        summary.put("workingsteps", 0);
+        summary.put("planned", 0);
+        return new TaskOutcome(1, List.of(why), summary, List.of());
     }
 
     /** The job task. */

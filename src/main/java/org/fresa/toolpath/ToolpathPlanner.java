@@ -65,8 +65,11 @@ import org.fresa.stepnc.Tool;
  * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
- * <li>Features other than planar faces, closed pockets and round holes are reported and
- * skipped.
+ * <li>Slots with a square-U profile on a linear path are milled as a pocket of the rectangle
+ * they sweep ({@link #slotOutline}): the tool stays inside the slot whatever its end types.
+ * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
+ * <li>Features other than planar faces, closed pockets, round holes and those slots are
+ * reported and skipped.
  * </ul>
  */
 public final class ToolpathPlanner {
@@ -224,6 +227,14 @@ public final class ToolpathPlanner {
         }
         Heights h = new Heights(retract, retract, 0, -depth);
         Transform3 place = f.placement();
+        if (op.type() == Operation.OperationType.OTHER && op.entity().contains("TURNING")) {
+            throw new UnsupportedOperationException("turning is not supported (" + op.entity() + ")");
+        }
+        if (!op.toolpaths().isEmpty()) {
+            // the file gives the path itself (AP238 CC1): followed as written, in the feature frame
+            return Optional.of(viaSecurityPlane(Placing.place(ExplicitPaths.section(label, op, tooling, problems),
+                    place), ws.securityPlane()));
+        }
         ToolpathSection local;
         switch (f.type()) {
             case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
@@ -248,10 +259,61 @@ public final class ToolpathPlanner {
                     problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
                 }
             }
-            default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
+            case SLOT -> {
+                Transform3 pp = slotFrame(f);
+                place = place.times(pp);
+                local = pocket(label, slotOutline(f), op, h, tooling, pp, tol);
+            }
+            default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
+                    : f.type()) + " features are not supported yet");
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * A slot along a linear path with a square-U profile: the rectangle it sweeps (path length by
+     * profile width), milled as a pocket of that outline in a frame whose x runs along the path
+     * from the slot's middle, so the tool stays within the slot's volume whatever its end types.
+     */
+    static Profile slotOutline(Feature f) {
+        org.fresa.stepnc.Profile shape = f.profile()
+                .orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
+        if (!(shape instanceof org.fresa.stepnc.Profile.U u) || !shape.entity().equals("SQUARE_U_PROFILE")) {
+            throw new UnsupportedOperationException("slots with a " + shape.entity() + " are not supported yet");
+        }
+        double length = slotLength(f);
+        if (!(u.widthMm() > 0 && u.widthMm() <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("slot width " + u.widthMm() + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+        }
+        return new Profile.RoundedRectangle(Vec2.ZERO, length, u.widthMm(), 0);
+    }
+
+    private static double slotLength(Feature f) {
+        org.fresa.stepnc.TravelPath path = f.courseOfTravel()
+                .orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
+        if (!path.entity().equals("LINEAR_PATH")) {
+            throw new UnsupportedOperationException("slots along a " + path.entity() + " are not supported yet");
+        }
+        double length = path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
+        if (!(length > 0 && length <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("slot length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+        }
+        return length;
+    }
+
+    /** The slot's middle, x along its path, z the feature's axis, in the feature frame. */
+    static Transform3 slotFrame(Feature f) {
+        org.fresa.stepnc.TravelPath path = f.courseOfTravel().orElseThrow();
+        Vec3 dir = path.placement().applyToDirection(path.direction().orElse(Vec3.UNIT_X));
+        Vec3 along = new Vec3(dir.x(), dir.y(), 0);
+        if (along.norm() < 1e-9) {
+            throw new UnsupportedOperationException("the slot's path runs along the tool axis");
+        }
+        along = along.normalized();
+        Vec3 start = path.placement().applyToPoint(Vec3.ZERO);
+        Vec3 middle = start.plus(along.times(slotLength(f) / 2));
+        return Transform3.ofFrame(new Vec3(middle.x(), middle.y(), 0), Vec3.UNIT_Z, along);
     }
 
     private static ToolpathSection face(String label, Feature f, Operation op, Heights h, Tooling t,

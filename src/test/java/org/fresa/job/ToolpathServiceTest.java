@@ -281,4 +281,19 @@ class ToolpathServiceTest {
                 o.problems().toString());
         assertFalse(json.contains("1000 mm/min used"), json);
     }
+
+    @Test
+    void anIntegratedFormFileWithNothingToMachineIsRefusedWithItsRealReasonAndNoProgram(@TempDir Path dir)
+            throws Exception {
+        // the workingstep is in the main workplan's sequence but has no operation: that is the reason given,
+        // never "not referenced by any workplan"
+        Path aim = Path.of("src/test/resources/stepnc/aim-header-only.stp");
+        TaskOutcome o = ToolpathService.run(aim, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus());
+        assertTrue(o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
+                o.problems().toString());
+        assertFalse(o.problems().get(0).contains("not referenced"), o.problems().toString());
+        assertTrue(o.files().isEmpty());
+        assertFalse(Files.exists(dir.resolve("program.ngc")));
+    }
 }
