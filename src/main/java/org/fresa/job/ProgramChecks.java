@@ -33,11 +33,6 @@ public final class ProgramChecks {
             OperationType.MULTISTEP_DRILLING, OperationType.COUNTER_SINKING, OperationType.REAMING,
             OperationType.BORING, OperationType.BACK_BORING, OperationType.TAPPING, OperationType.THREAD_DRILLING);
 
-    /**
-     * How far below the stock's bottom a through hole's drill may reach: its tip (a 118 degree point,
-     * D/2 / tan 59 degrees) and 1 mm of breakthrough.
-     */
-    static final double BREAKTHROUGH_MM = 1;
 
     private ProgramChecks() {
     }
@@ -116,32 +111,35 @@ public final class ProgramChecks {
     /**
      * A STEP-NC program's limits: each tool as its operations use it (drills, reamers, taps and
      * boring bars straight down; milling cutters not cutting at their centre, 3 degrees), the stock
-     * the workpiece's block when the file gives one (the floor its bottom, with the deepest drill's
-     * tip and {@link #BREAKTHROUGH_MM} below it), otherwise unbounded with no floor.
+     * the workpiece's block when the file gives one (the floor its bottom, with the deepest through
+     * allowance of the planned tools below it: a drill's point or a cutter's edge radius, plus the
+     * breakthrough the planner was given), otherwise unbounded with no floor.
      */
-    public static Limits stepnc(StepNcProgram program, ToolpathPlanner.Plan plan) {
+    public static Limits stepnc(StepNcProgram program, ToolpathPlanner.Plan plan,
+            org.fresa.toolpath.PlanningChoices choices) {
         Limits l = Limits.milling();
         Map<Long, MachiningWorkingstep> byId = new HashMap<>();
         for (MachiningWorkingstep w : program.workingsteps()) {
             byId.put(w.instanceId(), w);
         }
         List<ToolpathSection> sections = plan.toolpath().sections();
-        double deepestTipMm = 0;
+        double allowanceMm = choices.breakthroughMm();
         for (int i = 0; i < sections.size() && i < plan.steps().size(); i++) {
             ToolpathSection s = sections.get(i);
             MachiningWorkingstep w = byId.get(plan.steps().get(i).workingstepInstanceId());
             boolean axial = w != null && AXIAL.contains(w.operation().type());
             ToolLimits t = axial ? ToolLimits.drill() : ToolLimits.notCentreCutting();
             l = l.withTool(s.toolNumber(), t.withRadiusMm(s.toolDiameterMm() / 2));
-            if (axial) {
-                deepestTipMm = Math.max(deepestTipMm, s.toolDiameterMm() / 2 / Math.tan(Math.toRadians(59)));
+            if (w != null) {
+                allowanceMm = Math.max(allowanceMm, ToolpathPlanner.throughAllowanceMm(w.operation(),
+                        s.toolDiameterMm(), choices.breakthroughMm()));
             }
         }
         Optional<Workpiece.Block> block = program.workpieces().size() == 1 ? program.workpieces().get(0).block()
                 : Optional.empty();
         if (block.isPresent()) {
             Limits.Stock stock = box(block.get());
-            l = l.withStock(stock).withFloor(stock.minZMm(), deepestTipMm + BREAKTHROUGH_MM);
+            l = l.withStock(stock).withFloor(stock.minZMm(), allowanceMm);
         }
         return l;
     }

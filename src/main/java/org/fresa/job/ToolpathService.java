@@ -77,7 +77,7 @@ public final class ToolpathService {
         boolean refused = false;
         try {
             ProgramChecks.require("program.ngc", nc.toString(), ProgramChecks.dialect(post.name()),
-                    ProgramChecks.stepnc(program, plan));
+                    ProgramChecks.stepnc(program, plan, choices));
             out.writeString("program.ngc", nc.toString());
         } catch (ProgramChecks.RefusedProgram e) {
             problems.add(e.getMessage());

@@ -429,6 +429,24 @@ public final class ToolpathPlanner {
      * the included point angle; without a usable angle, a 118 deg point. 0 for reamers, boring bars and other drilling-type operations
      * whose tool has no point.
      */
+    /**
+     * How far below a through hole's exit the planner may take this operation's tool (mm): a
+     * drill's point ({@link #tipLength}) or a milling cutter's edge radius, plus the breakthrough.
+     * What a program check allows below the stock's bottom.
+     */
+    public static double throughAllowanceMm(Operation op, double toolDiameterMm, double breakthroughMm) {
+        if (!(toolDiameterMm > 0)) {
+            return breakthroughMm;
+        }
+        if (op.type().isDrillingType()) {
+            return tipLength(op, new Tooling(1, toolDiameterMm, 0, 1, 1)) + breakthroughMm;
+        }
+        double edge = op.tool().flatMap(x -> x.edgeRadiusMm().isPresent()
+                ? Optional.of(x.edgeRadiusMm().getAsDouble()) : Optional.empty())
+                .filter(r -> r > 0 && r <= toolDiameterMm / 2).orElse(0.0);
+        return edge + breakthroughMm;
+    }
+
     static double tipLength(Operation op, Tooling t) {
         Operation.OperationType k = op.type();
         if (k != Operation.OperationType.DRILLING && k != Operation.OperationType.MULTISTEP_DRILLING

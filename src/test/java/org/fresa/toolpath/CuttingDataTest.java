@@ -7,9 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import org.fresa.geom.Tolerance;
 import org.fresa.model.ToolpathSection;
+import org.fresa.stepnc.DrillingParameters;
+import org.fresa.stepnc.DrillingStrategy;
+import org.fresa.stepnc.Operation;
 import org.fresa.stepnc.StepNcReader;
+import org.fresa.stepnc.Technology;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -88,6 +93,31 @@ class CuttingDataTest {
         assertAll(() -> assertEquals(80 * 60, section(p, name).orElseThrow().spindleRpm(), EPS),
                 () -> assertTrue(p.problems().stream().noneMatch(q -> q.contains(name)), p.problems().toString()),
                 () -> assertEquals(2, p.planned()), () -> assertEquals(5, p.workingsteps()));
+    }
+
+    /**
+     * STEP Modeler's units (spindle rpm, cutting speed m/min, feed without unit): a Ø10 drill with
+     * cutting speed 110 m/min and spindle unset turns at 3501.4087 rpm, and its feed 0.245 mm/rev
+     * is converted at that speed, not left to a default.
+     */
+    @Test
+    void aChipLoadIsConvertedAtTheSpindleSpeedTakenFromTheCuttingSpeed() {
+        Technology stepModeler = new Technology(7, OptionalDouble.of(0.245), "unstated", Optional.empty(),
+                OptionalDouble.of(110), "m/min", OptionalDouble.empty(), "rpm", OptionalDouble.empty(),
+                OptionalDouble.empty(), OptionalDouble.empty(), false);
+        Operation base = DrillCycleTest.op(Operation.OperationType.DRILLING, DrillCycleTest.drill(0.54, "rad"),
+                DrillingStrategy.NONE, DrillingParameters.NONE);
+        Operation op = new Operation(base.instanceId(), base.type(), base.entity(), base.id(), base.retractPlaneMm(),
+                base.startPoint(), base.tool(), stepModeler, base.strategy(), base.approach(), base.retract(),
+                base.axialCuttingDepthMm(), base.radialCuttingDepthMm(), base.allowanceSideMm(),
+                base.allowanceBottomMm(), base.cuttingDepthMm(), base.overcutLengthMm(), base.drilling());
+        CuttingData c = CuttingData.of(op, 10, false);
+        double n = 1000 * 110 / (Math.PI * 10);
+        assertAll(() -> assertEquals(n, c.spindleRpm(), EPS), () -> assertTrue(c.fromCuttingSpeed()),
+                () -> assertEquals(0.245 * n, c.feed().feedMmPerMin(), EPS),
+                () -> assertEquals("mm/rev", c.feed().readAs()),
+                () -> assertEquals(List.of("no spindle speed in the file: 3501.4087 rpm from the cutting speed 110 m/min"
+                        + " for the 10 mm tool (n = 1000 v / (pi D))"), c.notes()));
     }
 
     @Test
