@@ -62,7 +62,6 @@ public final class StepNcService {
     public static Map<String, Object> summary(StepNcProgram p) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("schema", p.schema());
-        m.put("form", p.form());
         m.put("instances", p.instanceCount());
         m.put("project", p.projectId());
         List<Object> ws = new ArrayList<>();
@@ -80,6 +79,7 @@ public final class StepNcService {
         }
         m.put("skipped", skipped);
         m.put("dialect", p.dialect().name());
+        m.put("form", p.form());
         m.put("workplans", p.mainWorkplan().map(StepNcService::workplan).orElse(null));
         List<Object> wps = new ArrayList<>();
         for (Workpiece w : p.workpieces()) {

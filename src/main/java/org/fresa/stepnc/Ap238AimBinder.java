@@ -1050,6 +1050,17 @@ final class Ap238AimBinder {
                             .contains("no "))));
         }
         List<ExplicitToolpath> toolpaths = toolpaths(id);
+        if (!(tech.feedMmPerMin().orElse(0) > 0)) {
+            // the feed is the cutting toolpaths' when the operation's own technology gives none
+            // (Annex J.4: 0 at the operation, 250 mm/min on every cutting toolpath)
+            Optional<Technology> cutting = toolpaths.stream().filter(t -> !t.rapid())
+                    .map(ExplicitToolpath::technology).flatMap(Optional::stream)
+                    .filter(t -> t.feedMmPerMin().orElse(0) > 0).findFirst();
+            if (cutting.isPresent()) {
+                spellings.add("an operation without a feed of its own takes its first cutting toolpath's technology");
+                tech = cutting.get();
+            }
+        }
         return new Operation(id, type, kind.isEmpty() ? entity : entity + " '" + kind + "'", opId,
                 measure(property(props, "retract plane")), start, tool, tech, strategy, approach, retract,
                 measure(property(props, "axial cutting depth")), measure(property(props, "radial cutting depth")),

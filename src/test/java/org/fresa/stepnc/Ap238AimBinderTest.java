@@ -42,6 +42,19 @@ class Ap238AimBinderTest {
         assertEquals("MAIN WORKPLAN", p.mainWorkplan().orElseThrow().id());
         assertEquals("SETUP1", p.workingsteps().get(0).setup().orElseThrow().id());
         assertEquals(List.of("PLATE"), p.workpieces().stream().map(Workpiece::id).toList());
+        // the project is a MACHINING_PROJECT, the workingsteps are in the main workplan's sequence
+        assertFalse(p.warnings().stream().anyMatch(w -> w.contains("PROJECT")), p.warnings().toString());
+    }
+
+    @Test
+    void anSiPrefixScalesTheFilesLengths() throws Exception {
+        String text = Files.readString(INCH).replace("#1=(CONVERSION_BASED_UNIT('INCH',#3) LENGTH_UNIT() NAMED_UNIT(#4));",
+                "#1=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.CENTI.,.METRE.));");
+        StepNcProgram p = StepNcReader.read(new StringReader(text), "cm.stp");
+        near(new Vec3(10, 20, 0), p.workingsteps().get(0).feature().location());
+        assertEquals(5, p.workingsteps().get(0).feature().depthMm().getAsDouble(), EPS);
+        // 5 cm/minute
+        assertEquals(50, p.workingsteps().get(0).operation().technology().feedMmPerMin().getAsDouble(), 1e-9);
     }
 
     @Test
