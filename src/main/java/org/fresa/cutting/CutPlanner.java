@@ -632,13 +632,18 @@ public final class CutPlanner {
             free.add(new int[0]);
         }
         CutOrder so = new CutOrder(stopIn, stopOut, free);
-        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 100_000_000L + 20_000L * cuts.size()));
+        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 1_000_000_000L + 50_000L * cuts.size()));
         int[] seq = new int[cuts.size()];
         int k = 0;
         for (int st : stopSeq) {
             for (int id : stops.get(st)) {
                 seq[k++] = id;
             }
+        }
+        // then single cuts moved within the rule (a hole nearer the part's next neighbour, ...)
+        seq = co.improve(seq, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()));
+        if (cuts.size() <= CutOrder.EXACT_MAX) {
+            seq = co.exact();
         }
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
