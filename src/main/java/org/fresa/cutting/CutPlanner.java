@@ -404,9 +404,9 @@ public final class CutPlanner {
                     continue; // LinuxCNC: the entry move must be longer than the tool radius
                 }
                 Contour started = startAt(path, (int) cand[0], cand[1]);
-                if (comp != 0 && Math.min(started.get(0).length(), started.get(started.size() - 1).length())
-                        <= 2 * half + 1e-3) {
-                    // LinuxCNC: the entry turns a corner into the first element, which must be longer
+                if (comp != 0 && cand[1] == 0 && Math.min(started.get(0).length(),
+                        started.get(started.size() - 1).length()) <= 2 * half + 1e-3) {
+                    // LinuxCNC: an entry at a corner turns into the first element, which must be longer
                     // than the tool's diameter there ("cannot be reached without gouging")
                     continue;
                 }
