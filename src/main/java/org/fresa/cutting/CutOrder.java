@@ -98,6 +98,51 @@ final class CutOrder {
         return seq;
     }
 
+    /** Cuts up to this many are ordered by trying every order the rule allows. */
+    static final int EXACT_MAX = 8;
+
+    /** The shortest order the rule allows, by trying them all; only for up to {@link #EXACT_MAX} cuts. */
+    int[] exact() {
+        if (n > EXACT_MAX) {
+            throw new IllegalArgumentException(n + " cuts are too many to try every order");
+        }
+        int[] best = nearestNeighbour();
+        double[] bestLen = {travel(best)};
+        int[] cur = new int[n];
+        boolean[] done = new boolean[n];
+        search(cur, 0, done, -1, 0, best, bestLen);
+        return best;
+    }
+
+    private void search(int[] cur, int k, boolean[] done, int last, double len, int[] best, double[] bestLen) {
+        if (len >= bestLen[0] - 1e-9) {
+            return;
+        }
+        if (k == n) {
+            System.arraycopy(cur, 0, best, 0, n);
+            bestLen[0] = len;
+            return;
+        }
+        for (int c = 0; c < n; c++) {
+            if (done[c] || !ready(c, done)) {
+                continue;
+            }
+            done[c] = true;
+            cur[k] = c;
+            search(cur, k + 1, done, c, len + d(last, c), best, bestLen);
+            done[c] = false;
+        }
+    }
+
+    private boolean ready(int c, boolean[] done) {
+        for (int b : before[c]) {
+            if (!done[b]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** The tour improved by 2-opt and Or-opt moves within the budget; never longer than the input. */
     int[] improve(int[] start, long budgetNanos) {
         long deadline = System.nanoTime() + budgetNanos;

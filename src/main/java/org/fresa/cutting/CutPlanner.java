@@ -404,10 +404,9 @@ public final class CutPlanner {
                     continue; // LinuxCNC: the entry move must be longer than the tool radius
                 }
                 Contour started = startAt(path, (int) cand[0], cand[1]);
-                if (comp != 0 && Math.min(started.get(0).length(), started.get(started.size() - 1).length())
-                        <= 2 * half + 1e-3) {
-                    // LinuxCNC: the entry turns a corner into the first element, which must be longer
-                    // than the tool's diameter there ("cannot be reached without gouging")
+                if (comp != 0 && shortBeforeConcave(started, scrapLeft, half)) {
+                    // LinuxCNC: after the entry, a straight piece shorter than the tool's diameter
+                    // into a corner concave for the tool "cannot be reached without gouging"
                     continue;
                 }
                 Vec2 s = started.get(0).start();
@@ -430,6 +429,27 @@ public final class CutPlanner {
         }
         return new CutPath(label, outer, part, started, List.of(), tail(started, o, half, scrapLeft, arcs, grid, clearance,
                 part, outer), comp);
+    }
+
+    /**
+     * True when the path's first element is shorter than the tool's diameter and turns into a
+     * corner concave for the tool, or its last element comes out of such a corner and is as short.
+     */
+    private static boolean shortBeforeConcave(Contour path, boolean toolLeft, double toolRadius) {
+        int n = path.size();
+        if (n < 2) {
+            return false;
+        }
+        return shortAndConcave(path.get(0), path.get(0), path.get(1), toolLeft, toolRadius)
+                || shortAndConcave(path.get(n - 1), path.get(n - 2), path.get(n - 1), toolLeft, toolRadius);
+    }
+
+    private static boolean shortAndConcave(Curve2 piece, Curve2 a, Curve2 b, boolean toolLeft, double toolRadius) {
+        if (piece.length() > 2 * toolRadius + 1e-3 || a.length() == 0 || b.length() == 0) {
+            return false;
+        }
+        double cross = a.endTangent().cross(b.startTangent());
+        return toolLeft ? cross > 1e-9 : cross < -1e-9;
     }
 
     /** (curve index, fraction) pairs: longest lines' middles, then corners, then arcs' middles. */
@@ -632,13 +652,18 @@ public final class CutPlanner {
             free.add(new int[0]);
         }
         CutOrder so = new CutOrder(stopIn, stopOut, free);
-        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 100_000_000L + 20_000L * cuts.size()));
+        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 1_000_000_000L + 50_000L * cuts.size()));
         int[] seq = new int[cuts.size()];
         int k = 0;
         for (int st : stopSeq) {
             for (int id : stops.get(st)) {
                 seq[k++] = id;
             }
+        }
+        // then single cuts moved within the rule (a hole nearer the part's next neighbour, ...)
+        seq = co.improve(seq, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()));
+        if (cuts.size() <= CutOrder.EXACT_MAX) {
+            seq = co.exact();
         }
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
