@@ -104,6 +104,25 @@ public final class ProgramChecks {
         return Limits.milling().withHeights(0, -s.cavityDepthMm(), 0);
     }
 
+    /**
+     * Checks a robot program before its formats are written: every linear motion on the part with
+     * the spindle running in range, speeds and joint values in range, no entry along the tool axis
+     * steeper than its tool allows (each workingstep's tool as the toolpath numbers it). The
+     * program is in the robot's base frame: the stock and the floor, given in the workpiece's, are
+     * left out.
+     *
+     * @return the first failure, or empty
+     */
+    public static Optional<Failure> robot(org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path,
+            Limits limits) {
+        Map<String, Integer> tools = new HashMap<>();
+        for (ToolpathSection s : path.sections()) {
+            tools.putIfAbsent(s.label(), s.toolNumber());
+        }
+        return ProgramCheck.of(program, limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0), tools)
+                .failure();
+    }
+
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */
     public static NcDialect dialect(String post) {
         return NcDialect.byPost(post).orElseThrow(() -> new IllegalArgumentException("no dialect for post " + post));
