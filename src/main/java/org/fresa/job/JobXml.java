@@ -199,7 +199,8 @@ public final class JobXml {
                     Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
                     Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
                     Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
-                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection()));
+                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection(), p.getEntry(),
+                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting()));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -378,6 +379,9 @@ public final class JobXml {
             t.setFinishFeedMmPerMin(p.finishFeedMmPerMin());
             t.setPost(p.post());
             t.setDirection(p.direction());
+            t.setEntry(p.entry());
+            t.setEntryAngleDeg(p.entryAngleDeg());
+            t.setCentreCutting(p.centreCutting());
             x.setPocket(t);
         });
         job.cutting().ifPresent(c -> {

@@ -67,22 +67,33 @@ public final class ProgramChecks {
     }
 
     /**
-     * The pocket module's limits. The G-code posts: the stock below the pocket's top, the floor its
-     * bottom with no breakthrough, the cutter not cutting at its centre (3 degrees). The 7M posts
-     * write the thesis's programs, which plunge straight down at every depth pass (G01 G91 Z-):
-     * they are checked with the thesis's cutter declared centre-cutting and asked to plunge (a
-     * slot drill, as the NBH-65's pocket programs assume), in the 7M's frame whose zero is the
-     * pocket's top (G54 Z = the top).
+     * The pocket module's limits. The stock below the pocket's top, the floor its bottom with no
+     * breakthrough. The cutter as the settings say: the entry angle asked for, straight down only
+     * for a centre-cutting cutter asked to plunge (or left to plunge where a helix and a ramp have
+     * no room). {@code 7m-compat} writes the thesis's programs, which plunge straight down at every
+     * depth pass ({@code G01 G91 Z-}): it is checked with the thesis's cutter declared
+     * centre-cutting and asked to plunge (a slot drill, the only tool those programs can have been
+     * run with), in the 7M's frame whose zero is the pocket's top ({@code G54 Z} = the top), as
+     * {@code 7m} is.
      */
     public static Limits pocket(PocketSettings s) {
         double r = s.toolDiameterMm() / 2;
-        if (PocketService.SINUMERIK_7M_POSTS.contains(s.post())) {
-            return Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
-                    .withOtherTools(ToolLimits.centreCuttingPlunge().withRadiusMm(r)
-                            .withKind("the thesis's slot drill, declared centre-cutting: the 7M posts plunge"));
+        boolean sevenM = PocketService.SINUMERIK_7M_POSTS.contains(s.post());
+        Limits l = sevenM ? Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
+                : Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0);
+        ToolLimits tool;
+        if (s.post().equals("7m-compat")) {
+            tool = ToolLimits.centreCuttingPlunge()
+                    .withKind("the thesis's slot drill, declared centre-cutting: 7m-compat plunges as its programs do");
+        } else if (s.centreCutting() && (s.entry().equals("plunge") || s.entry().equals("auto"))) {
+            tool = ToolLimits.centreCuttingPlunge();
+        } else {
+            double angle = s.entryAngleDeg() > 0 && s.entryAngleDeg() <= 90 ? s.entryAngleDeg()
+                    : ToolLimits.DEFAULT_ENTRY_ANGLE_DEG;
+            tool = new ToolLimits(angle, false, s.centreCutting() ? "a centre-cutting cutter asked to ramp"
+                    : "a cutter not cutting at its centre", 0);
         }
-        return Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0)
-                .withOtherTools(ToolLimits.notCentreCutting().withRadiusMm(r));
+        return l.withOtherTools(tool.withRadiusMm(r));
     }
 
     /**

@@ -62,6 +62,8 @@ public final class SettingRanges {
         public static final SettingRange SPINDLE = spindle("--rpm", "spindleRpm");
         public static final SettingRange FEED = feed("--feed", "feedMmPerMin");
         public static final SettingRange FINISH_FEED = feed("--finish-feed", "finishFeedMmPerMin");
+        /** Steepest descent of a helix or ramp entry: below half a degree a ramp is no entry, 90 is a plunge. */
+        public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
 
         private Pocket() {
         }

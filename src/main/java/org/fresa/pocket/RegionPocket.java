@@ -33,14 +33,14 @@ import org.fresa.model.ToolpathSection;
  * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
  * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
  * and stays inside the finishing offset (so the tool never touches a wall or island), otherwise a
- * retract, a rapid and a ramp down along the next loop (no vertical plunge into material).
+ * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
+ * vertical plunge into material unless a centre-cutting tool is asked to).
  */
 public final class RegionPocket {
 
     private static final Tolerance TOL = Tolerance.DEFAULT;
     private static final Vec3 Z = new Vec3(0, 0, 1);
     private static final double CLEARANCE_MM = 5;
-    private static final double RAMP_DEG = 5;
 
     /** One offset level: its distance from the region boundary and its loops (faces CCW, holes CW). */
     public record Level(double offsetMm, List<Contour> loops) {
@@ -78,6 +78,20 @@ public final class RegionPocket {
      */
     public static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb)
             throws ToolTooLargeException {
+        return plan(outer, islands, tech, climb, EntryRule.DEFAULT);
+    }
+
+    /**
+     * Plans the pocket with the given entries: each loop that is not joined to the previous one at
+     * depth is entered by a ramp along the loop itself, round it as many times as the entry angle
+     * needs (a helix is this ramp too: the loop is the region's own path), or, for a centre-cutting
+     * tool asked to, by a plunge.
+     *
+     * @throws ToolTooLargeException as {@link #plan(Contour, List, PocketTechnology, boolean)}, or
+     *     when a loop is so short that its ramp would need more than {@link Entries#MAX_STEPS} rounds
+     */
+    public static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb, EntryRule entry)
+            throws ToolTooLargeException {
         List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
         List<Level> levels = levels(boundary, tech);
         List<Face> roots = faces(levels);
@@ -96,7 +110,7 @@ public final class RegionPocket {
         // each element once cut and once ramped down, some arcs joined by short lines, and a link
         // or rapids and a plunge per loop
         tech.checkMoves(directed.stream().mapToLong(c -> 3L * c.loop().size() + 4).sum());
-        Toolpath path = toolpath(directed, levels.get(0), tech);
+        Toolpath path = toolpath(directed, levels.get(0), tech, entry);
         return new Plan(levels, directed, path);
     }
 
@@ -348,7 +362,8 @@ public final class RegionPocket {
         return new Contour(out);
     }
 
-    private static Toolpath toolpath(List<Cut> order, Level finishing, PocketTechnology t) {
+    private static Toolpath toolpath(List<Cut> order, Level finishing, PocketTechnology t, EntryRule entry)
+            throws ToolTooLargeException {
         List<Move> moves = new ArrayList<>();
         double safe = t.zTopMm() + CLEARANCE_MM;
         Vec2 s0 = order.get(0).loop().get(0).start();
@@ -366,9 +381,17 @@ public final class RegionPocket {
                     Vec2 from = cursor == null ? s : cursor;
                     moves.add(new Move.Rapid(at(from, safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
+                    // down at rapid to 1 mm above the floor cleared at the layer above, then no straight feed down
                     moves.add(new Move.Rapid(at(s, layerTop + 1)));
-                    moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
-                    ramp(moves, loop, layerTop, z, t.feedMmPerMin());
+                    if (entry.kind() == EntryRule.Kind.PLUNGE) {
+                        moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                    } else {
+                        ramp(moves, loop, layerTop + 1, z, t.feedMmPerMin(), entry.angleDeg());
+                    }
+                    if (moves.size() > PocketTechnology.MAX_MOVES) {
+                        throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
+                                + " moves: use a larger depth per pass, a larger entry angle or a larger tool");
+                    }
                 }
                 for (Curve2 c : loop.curves()) {
                     emit(moves, c, z, z, feed);
@@ -383,14 +406,18 @@ public final class RegionPocket {
         return new Toolpath(List.of(section));
     }
 
-    /** Down from top to z along the loop, as many times round as a ramp of RAMP_DEG needs. */
-    private static void ramp(List<Move> moves, Contour loop, double top, double z, double feed) {
+    /** Down from top to z along the loop, as many times round as a ramp no steeper than angleDeg needs. */
+    private static void ramp(List<Move> moves, Contour loop, double top, double z, double feed, double angleDeg)
+            throws ToolTooLargeException {
         double len = loop.length();
-        if (len < 1e-6) {
-            moves.add(new Move.Linear(at(loop.get(0).start(), z), feed));
-            return;
+        double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
+        if (!(len >= 1e-3) || !(need <= Entries.MAX_STEPS)) {
+            throw new ToolTooLargeException(String.format(java.util.Locale.ROOT, "a loop of %.4f mm at X%.3f Y%.3f"
+                    + " leaves no room for a ramp no steeper than %.1f deg: a centre-cutting tool (--centre-cutting)"
+                    + " may plunge there (--entry plunge)", len, loop.get(0).start().x(), loop.get(0).start().y(),
+                    angleDeg));
         }
-        int rounds = Math.max(1, (int) Math.ceil((top - z) / (len * Math.tan(Math.toRadians(RAMP_DEG))) - 1e-9));
+        int rounds = Math.max(1, (int) need);
         double total = rounds * len;
         double done = 0;
         for (int k = 0; k < rounds; k++) {

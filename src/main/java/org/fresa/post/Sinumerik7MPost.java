@@ -2,11 +2,18 @@ package org.fresa.post;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
+import org.fresa.model.Move;
+import org.fresa.pocket.Entries;
+import org.fresa.pocket.Entry;
+import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.PassPiece;
 import org.fresa.pocket.PocketPass;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketTechnology;
+import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.pocket.compat.BasicNumbers;
 import org.fresa.pocket.compat.Mbf;
 import org.fresa.pocket.compat.ThesisPasses;
@@ -20,8 +27,11 @@ import org.fresa.pocket.compat.ThesisPasses;
  * <p>{@link Mode#COMPAT} reproduces the printed programs with their defects: extra depth passes
  * copied at the first depth with the finishing feed still modal, negative numbers rounded with
  * the floor bias of {@code INT(v - .499)}, no blank after 3-digit block numbers in copied blocks.
- * {@link Mode#CORRECTED} cuts every depth pass at its own depth, restates the roughing feed on
- * every plunge, rounds symmetrically and always writes the blank; it also mills in the direction
+ * {@link Mode#CORRECTED} cuts every depth pass at its own depth, enters each sub-area at each
+ * depth on a zig-zag ramp no steeper than the entry angle instead of the thesis's vertical plunge
+ * (straight incremental G01 X Y Z legs: the 7M's DIN 66025 interpolates arcs in the plane only, so
+ * there is no helix; a plunge only for a centre-cutting tool), rounds symmetrically and always
+ * writes the blank; it also mills in the direction
  * asked for ({@code fresa pocket --direction}): climb (each pass counter-clockwise, convex arcs
  * G03, with the clockwise M03 spindle) or conventional (the thesis's clockwise passes). Compat
  * always writes the thesis's conventional passes.
@@ -42,8 +52,12 @@ public final class Sinumerik7MPost {
         COMPAT, CORRECTED
     }
 
+    /** Chord tolerance of a ramp leg over an arc of the pass (mm): the 7M has no helical interpolation. */
+    static final double RAMP_CHORD_MM = 0.005;
+
     private final Mode mode;
     private final boolean climb;
+    private final EntryRule entry;
 
     /** The thesis's direction: clockwise (conventional) passes. */
     public Sinumerik7MPost(Mode mode) {
@@ -55,15 +69,31 @@ public final class Sinumerik7MPost {
      *     which reproduces the printed programs
      */
     public Sinumerik7MPost(Mode mode, boolean climb) {
+        this(mode, climb, EntryRule.DEFAULT);
+    }
+
+    /**
+     * @param climb as {@link #Sinumerik7MPost(Mode, boolean)}
+     * @param entry how {@link Mode#CORRECTED} enters each sub-area at each depth: a zig-zag ramp of
+     *     straight G01 legs in X, Y and Z (the 7M interpolates arcs in the plane only, so a helix
+     *     asked for is a ramp here), a plunge only for a centre-cutting tool; ignored in
+     *     {@link Mode#COMPAT}, which keeps the thesis's vertical plunge
+     */
+    public Sinumerik7MPost(Mode mode, boolean climb, EntryRule entry) {
         this.mode = mode;
         this.climb = climb && mode == Mode.CORRECTED;
+        this.entry = java.util.Objects.requireNonNull(entry, "entry");
     }
 
     private record Block(String text, int copiedFrom) {
     }
 
-    /** The whole program text, lines ending in LF. */
-    public String write(PocketPlan exactPlan) {
+    /**
+     * The whole program text, lines ending in LF.
+     *
+     * @throws ToolTooLargeException when an entry has no room for a ramp and the tool may not plunge
+     */
+    public String write(PocketPlan exactPlan) throws ToolTooLargeException {
         PocketPlan plan = mode == Mode.COMPAT ? ThesisPasses.of(exactPlan).orElse(exactPlan) : exactPlan;
         PocketTechnology t = plan.technology();
         List<Block> blocks = new ArrayList<>();
@@ -84,7 +114,11 @@ public final class Sinumerik7MPost {
         Vec2 s0 = milled.get(0).start();
         int firstRapid = blocks.size();
         add(blocks, "G00 G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
-        add(blocks, "G01 G91 Z" + str(-(zp + 5000)) + "F" + str(feed));
+        if (mode == Mode.COMPAT) {
+            add(blocks, "G01 G91 Z" + str(-(zp + 5000)) + "F" + str(feed));
+        } else {
+            enter(blocks, milled.get(0), 1, zp, feed, t);
+        }
         int firstCut = blocks.size();
         emitContours(blocks, plan, 1, zp, feed);
         int lastCut = blocks.size();
@@ -101,7 +135,7 @@ public final class Sinumerik7MPost {
                 add(blocks, "G00 G91 Z" + str((j - 1) * zp + 20000));
                 add(blocks, "G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
                 add(blocks, "G91 Z -15000");
-                add(blocks, "G01 Z" + str(-(j * zp + 5000)) + " F" + str(feed));
+                enter(blocks, milled.get(0), j, zp, feed, t);
                 emitContours(blocks, plan, j, zp, feed);
             }
         }
@@ -113,7 +147,96 @@ public final class Sinumerik7MPost {
         return climb ? plan.milled().stream().map(PocketPass::reversed).toList() : plan.milled();
     }
 
-    private void emitContours(List<Block> blocks, PocketPlan plan, int depth, long zp, long feed) {
+    /**
+     * From 5 mm above the top (incremental Z) down to depth pass {@code depth} at the pass start:
+     * a rapid to 1 mm above the floor of the depth pass above, then the entry's straight legs
+     * as incremental G01 X Y Z blocks between micrometre points (no drift), the roughing feed
+     * on the first; the next contour block returns to G90.
+     */
+    private void enter(List<Block> blocks, PocketPass pass, int depth, long zp, long feed, PocketTechnology t)
+            throws ToolTooLargeException {
+        long top = -(depth - 1) * zp + 1000;
+        long bottom = -depth * zp;
+        add(blocks, "G00 G91 Z" + str(top - 5000));
+        EntryRule rule = entry.kind() == EntryRule.Kind.HELIX
+                ? new EntryRule(EntryRule.Kind.RAMP, entry.angleDeg(), entry.centreCutting()) : entry;
+        Vec2 s = pass.start();
+        Entry e = Entries.choose(rule, s, chords(pass.pieces()), climb, Entries.Room.NONE, t.radiusMm(),
+                (top - bottom) / 1000.0).orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
+                        "no room for a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting tool"
+                                + " (--centre-cutting) may plunge there", s.x(), s.y())));
+        long x = um(s.x());
+        long y = um(s.y());
+        List<Move> moves = e.moves(top / 1000.0, bottom / 1000.0, feed);
+        if (e instanceof Entry.Plunge) {
+            add(blocks, "G01 G91 X 0 Y 0 Z" + str(bottom - top) + " F" + str(feed));
+            return;
+        }
+        // the legs' points in micrometres; each block descends at most floor(run x tan(angle)) um,
+        // so that rounding never makes a block steeper than the entry angle; the legs are run
+        // again (they start and end at the pass start) until the depth is reached
+        double slope = Math.tan(Math.toRadians(rule.angleDeg()));
+        long z = top;
+        long sx = x;
+        long sy = y;
+        boolean first = true;
+        boolean done = false;
+        for (int round = 0; round <= Entries.MAX_STEPS && !done; round++) {
+            for (Move m : moves) {
+                long nx = um(m.end().x());
+                long ny = um(m.end().y());
+                long run = (long) Math.floor(Math.hypot(nx - x, ny - y));
+                long nz = Math.max(bottom, z - (long) Math.floor(run * slope));
+                if (nx == x && ny == y) {
+                    continue;
+                }
+                add(blocks, (first ? "G01 G91 " : "") + "X" + str(nx - x) + " Y" + str(ny - y) + " Z" + str(nz - z)
+                        + (first ? " F" + str(feed) : ""));
+                x = nx;
+                y = ny;
+                z = nz;
+                first = false;
+                if (z == bottom && x == sx && y == sy) {
+                    done = true;
+                    break;
+                }
+            }
+        }
+        if (z > bottom) {
+            throw new ToolTooLargeException("the ramp to enter the pocket at X" + s.x() + " Y" + s.y()
+                    + " does not reach the depth in " + Entries.MAX_STEPS + " rounds");
+        }
+    }
+
+    /** The pass as the 7M cuts it, its arcs as chords within {@link #RAMP_CHORD_MM} (for the ramp legs). */
+    private static List<Curve2> chords(List<PassPiece> pieces) {
+        List<Curve2> out = new ArrayList<>();
+        for (PassPiece p : pieces) {
+            double r = p.isArc() ? p.radiusMm() : 0;
+            double len = p.lengthMm();
+            if (!p.isArc() || r < 1e-6 || p.start().distance(p.end()) < 1e-9) {
+                if (p.start().distance(p.end()) > 1e-9) {
+                    out.add(new Segment2(p.start(), p.end()));
+                }
+                continue;
+            }
+            double sweep = len / p.start().distance(p.center());
+            double step = 2 * Math.acos(Math.max(-1, 1 - RAMP_CHORD_MM / r));
+            int n = (int) Math.max(1, Math.ceil(sweep / step));
+            Vec2 a0 = p.start().minus(p.center());
+            double sign = p.ccw() ? 1 : -1;
+            Vec2 prev = p.start();
+            for (int k = 1; k <= n; k++) {
+                Vec2 q = k == n ? p.end() : p.center().plus(a0.rotated(sign * sweep * k / n));
+                out.add(new Segment2(prev, q));
+                prev = q;
+            }
+        }
+        return out;
+    }
+
+    private void emitContours(List<Block> blocks, PocketPlan plan, int depth, long zp, long feed)
+            throws ToolTooLargeException {
         PocketTechnology t = plan.technology();
         List<PocketPass> milled = milled(plan);
         String[] modal = {"G01"};
@@ -132,7 +255,7 @@ public final class Sinumerik7MPost {
                     if (mode == Mode.COMPAT) {
                         add(blocks, "G01 Z -" + (zp + 5000));
                     } else {
-                        add(blocks, "G01 Z" + str(-(depth * zp + 5000)) + " F" + str(feed));
+                        enter(blocks, pass, depth, zp, feed, t);
                     }
                     modal[0] = "G01";
                     afterPlunge[0] = true;

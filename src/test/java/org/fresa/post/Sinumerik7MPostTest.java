@@ -180,7 +180,21 @@ class Sinumerik7MPostTest {
         }
         // from Z+5 above the top: first level -2.5 (Z-7500), second -5 (Z-10000 below +5)
         assertEquals(-10000, deepest);
-        assertTrue(nc.contains("N140 G01 Z-10000 F 310") || nc.stream().anyMatch(l -> l.endsWith("G01 Z-10000 F 310")));
+        // each depth pass is entered on a zig-zag ramp of incremental G01 X Y Z legs, none steeper than 3 deg
+        // (the 7M interpolates arcs in the plane only: no helix), no vertical feed
+        assertFalse(nc.stream().anyMatch(l -> l.matches("N\\d+ G01 (G91 )?Z.*")), "a vertical feed");
+        Pattern leg = Pattern.compile("X ?(-?\\d+) Y ?(-?\\d+) Z ?(-?\\d+)");
+        long legs = 0;
+        for (String l : nc) {
+            Matcher m = leg.matcher(l);
+            if (m.find() && !l.contains("G90")) {
+                double run = Math.hypot(Long.parseLong(m.group(1)), Long.parseLong(m.group(2)));
+                long dz = Long.parseLong(m.group(3));
+                assertTrue(dz >= 0 || Math.toDegrees(Math.atan2(-dz, run)) <= 3, l);
+                legs++;
+            }
+        }
+        assertTrue(legs >= 4, "ramp legs: " + legs);
         assertFalse(nc.stream().anyMatch(l -> l.matches("N\\d{3}[A-Z].*")));
     }
 
