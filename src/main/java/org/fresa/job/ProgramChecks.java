@@ -126,12 +126,22 @@ public final class ProgramChecks {
      */
     public static Optional<Failure> robot(org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path,
             Limits limits) {
+        // a label may name several workingsteps with different tools (example 2's holes: a drill,
+        // then a face mill): the motions carry only the label, so the strictest of its tools applies
         Map<String, Integer> tools = new HashMap<>();
         for (ToolpathSection s : path.sections()) {
-            tools.putIfAbsent(s.label(), s.toolNumber());
+            tools.merge(s.label(), s.toolNumber(), (a, b) -> stricter(limits.tool(a), limits.tool(b)) ? a : b);
         }
         return ProgramCheck.of(program, limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0), tools)
                 .failure();
+    }
+
+    /** True when tool a may enter the material no more steeply than tool b. */
+    private static boolean stricter(ToolLimits a, ToolLimits b) {
+        if (a.plunge() != b.plunge()) {
+            return !a.plunge();
+        }
+        return a.entryAngleDeg() <= b.entryAngleDeg();
     }
 
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */
