@@ -70,6 +70,65 @@ public final class ProgramCheck {
         return new Verdict(Optional.empty(), blocks.size());
     }
 
+    /**
+     * Checks a robot program before any of its formats (XML, RAPID, KRL) is written: each motion
+     * as a block whose feed is its speed (mm/s x 60) and whose spindle is its spindle speed; linear
+     * motions on the part are the cutting moves; the tool axis is each target's z axis (into the
+     * material). Joint values must be finite and within their joints' limits. The floor is not
+     * checked here: the robot program is in the robot's base frame, the floor in the workpiece's
+     * (the toolpath the program follows is checked where it is planned).
+     */
+    public static Verdict of(org.fresa.post.RobotProgram program, Limits limits) {
+        return of(program, limits, java.util.Map.of());
+    }
+
+    /**
+     * Checks a robot program as {@link #of(org.fresa.post.RobotProgram, Limits)} does, each
+     * workingstep's motions made with the tool of that number ({@link Limits#tool}).
+     */
+    public static Verdict of(org.fresa.post.RobotProgram program, Limits limits,
+            java.util.Map<String, Integer> toolByWorkingstep) {
+        Vec3 prev = null;
+        List<org.fresa.post.RobotProgram.Motion> motions = program.motions();
+        for (org.fresa.post.RobotProgram.Motion m : motions) {
+            Vec3 at = m.target().translationPart();
+            String where = "motion " + m.index();
+            String text = (m.type() == org.fresa.post.RobotProgram.MotionType.LINEAR ? "linear" : "joint")
+                    + " motion in workingstep " + m.workingstep();
+            for (int j = 0; j < m.jointValues().size() && j < program.joints().size(); j++) {
+                org.fresa.post.RobotProgram.Joint joint = program.joints().get(j);
+                double q = m.joint(j);
+                if (!Double.isFinite(q) || q < joint.minValue() - 1e-6 || q > joint.maxValue() + 1e-6) {
+                    return new Verdict(Optional.of(new Failure(m.index(), where, text, RULES.get(0), "joint "
+                            + joint.name() + " at " + Num.of(q) + " " + joint.type().unit() + ", outside its limits "
+                            + Num.of(joint.minValue()) + ".." + Num.of(joint.maxValue()))), motions.size());
+                }
+            }
+            List<Words.Word> words = new ArrayList<>();
+            double feed = m.speedMmPerS() * 60;
+            words.add(new Words.Word("F", feed, Num.of(feed)));
+            if (m.spindleRpm() > 0) {
+                words.add(new Words.Word("S", m.spindleRpm(), Num.of(m.spindleRpm())));
+            }
+            Words.Block b = new Words.Block(m.index(), text, words, Optional.empty());
+            boolean cutting = m.type() == org.fresa.post.RobotProgram.MotionType.LINEAR
+                    && m.role() == org.fresa.post.RobotProgram.PointRole.PART;
+            Vec3 axis = m.target().zAxis().times(-1);
+            List<Vec3> path = prev == null ? List.of(at) : List.of(prev, at);
+            Step step = new Step(b, NcDialect.LINUXCNC, cutting, path, false, 0, m.spindleRpm() > 0,
+                    m.spindleRpm() > 0 ? m.spindleRpm() : Double.NaN, feed,
+                    toolByWorkingstep.getOrDefault(m.workingstep(), 0), false, axis);
+            for (Rule r : RULES) {
+                String why = r.broken(step, limits);
+                if (why != null) {
+                    return new Verdict(Optional.of(new Failure(m.index(), where, text, r, why)), motions.size());
+                }
+            }
+            prev = at;
+        }
+        return new Verdict(Optional.empty(), motions.size());
+    }
+
     /** The control's state while the program runs. */
     private static final class Machine {
         private final NcDialect dialect;

@@ -62,26 +62,33 @@ public final class ProgramChecks {
     }
 
     /**
-     * The pocket module's limits. The G-code posts: the stock below the pocket's top, the floor its
-     * bottom with no breakthrough, the cutter not cutting at its centre (3 degrees). The 7M posts
-     * write the thesis's programs, which plunge straight down at every depth pass (G01 G91 Z-):
-     * they are checked with the thesis's cutter declared centre-cutting and asked to plunge (a
-     * slot drill, as the NBH-65's pocket programs assume), in the 7M's frame whose zero is the
-     * pocket's top (G54 Z = the top).
+     * The pocket module's limits. The stock below the pocket's top, the floor its bottom with no
+     * breakthrough. The cutter as the settings say: the entry angle asked for, straight down only
+     * for a centre-cutting cutter asked to plunge (or left to plunge where a helix and a ramp have
+     * no room). {@code 7m-compat} writes the thesis's programs, which plunge straight down at every
+     * depth pass ({@code G01 G91 Z-}): it is checked with the thesis's cutter declared
+     * centre-cutting and asked to plunge (a slot drill, the only tool those programs can have been
+     * run with), in the 7M's frame whose zero is the pocket's top ({@code G54 Z} = the top), as
+     * {@code 7m} is.
      */
     public static Limits pocket(PocketSettings s) {
         double r = s.toolDiameterMm() / 2;
-        if (PocketService.SINUMERIK_7M_POSTS.contains(s.post())) {
-            return Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
-                    .withOtherTools(ToolLimits.centreCuttingPlunge().withRadiusMm(r)
-                            .withKind("the thesis's slot drill, declared centre-cutting: the 7M posts plunge"));
+        boolean sevenM = PocketService.SINUMERIK_7M_POSTS.contains(s.post());
+        Limits l = sevenM ? Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
+                : Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0);
+        ToolLimits tool;
+        if (s.post().equals("7m-compat")) {
+            tool = ToolLimits.centreCuttingPlunge()
+                    .withKind("the thesis's slot drill, declared centre-cutting: 7m-compat plunges as its programs do");
+        } else if (s.centreCutting() && (s.entry().equals("plunge") || s.entry().equals("auto"))) {
+            tool = ToolLimits.centreCuttingPlunge();
+        } else {
+            double angle = s.entryAngleDeg() > 0 && s.entryAngleDeg() <= 90 ? s.entryAngleDeg()
+                    : ToolLimits.DEFAULT_ENTRY_ANGLE_DEG;
+            tool = new ToolLimits(angle, false, s.centreCutting() ? "a centre-cutting cutter asked to ramp"
+                    : "a cutter not cutting at its centre", 0);
         }
-        // the planner's own entry limits: a plunge only for a centre-cutting tool asked to plunge,
-        // else the entry angle the job states (3 degrees unless the planner says otherwise)
-        ToolLimits tool = s.centreCutting() && "plunge".equals(s.entry())
-                ? ToolLimits.centreCuttingPlunge().withKind("a centre-cutting tool asked to plunge")
-                : ToolLimits.notCentreCutting().withEntryAngleDeg(s.entryAngleDeg());
-        return Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0).withOtherTools(tool.withRadiusMm(r));
+        return l.withOtherTools(tool.withRadiusMm(r));
     }
 
     /**
@@ -101,6 +108,35 @@ public final class ProgramChecks {
      */
     public static Limits soleCavity(JobSettings.SoleSettings s) {
         return Limits.milling().withHeights(0, -s.cavityDepthMm(), 0);
+    }
+
+    /**
+     * Checks a robot program before its formats are written: every linear motion on the part with
+     * the spindle running in range, speeds and joint values in range, no entry along the tool axis
+     * steeper than its tool allows (each workingstep's tool as the toolpath numbers it). The
+     * program is in the robot's base frame: the stock and the floor, given in the workpiece's, are
+     * left out.
+     *
+     * @return the first failure, or empty
+     */
+    public static Optional<Failure> robot(org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path,
+            Limits limits) {
+        // a label may name several workingsteps with different tools (example 2's holes: a drill,
+        // then a face mill): the motions carry only the label, so the strictest of its tools applies
+        Map<String, Integer> tools = new HashMap<>();
+        for (ToolpathSection s : path.sections()) {
+            tools.merge(s.label(), s.toolNumber(), (a, b) -> stricter(limits.tool(a), limits.tool(b)) ? a : b);
+        }
+        return ProgramCheck.of(program, limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0), tools)
+                .failure();
+    }
+
+    /** True when tool a may enter the material no more steeply than tool b. */
+    private static boolean stricter(ToolLimits a, ToolLimits b) {
+        if (a.plunge() != b.plunge()) {
+            return !a.plunge();
+        }
+        return a.entryAngleDeg() <= b.entryAngleDeg();
     }
 
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */

@@ -218,6 +218,10 @@ public final class RobotProgramXml {
                 .append(mv.getMotionBasis().getValue()).append("</MotionBasis>\n");
         sb.append("                <Rounding Units=\"").append(mv.getRounding().getUnits()).append("\">")
                 .append(mv.getRounding().getValue()).append("</Rounding>\n");
+        if (mv.getSpindle() != null) {
+            sb.append("                <Spindle Units=\"").append(mv.getSpindle().getUnits()).append("\">")
+                    .append(mv.getSpindle().getValue()).append("</Spindle>\n");
+        }
         sb.append("            </MoveAttributes>\n");
         sb.append("        </Activity>\n");
     }
@@ -364,6 +368,12 @@ public final class RobotProgramXml {
             rd.setUnits("mm");
             rd.setValue(m.zoneMm());
             mv.setRounding(rd);
+            if (m.spindleRpm() > 0) {
+                MoveAttributesType.Spindle sp = new MoveAttributesType.Spindle();
+                sp.setUnits("rpm");
+                sp.setValue(m.spindleRpm());
+                mv.setSpindle(sp);
+            }
             a.setMoveAttributes(mv);
             list.getActivity().add(a);
         }
@@ -412,7 +422,8 @@ public final class RobotProgramXml {
                     "Joint".equals(a.getMotionType()) ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     "part".equals(a.getRole()) ? RobotProgram.PointRole.PART : RobotProgram.PointRole.RELINK,
                     values, target, a.getMoveAttributes().getMotionBasis().getValue(),
-                    a.getMoveAttributes().getRounding().getValue()));
+                    a.getMoveAttributes().getRounding().getValue(),
+                    a.getMoveAttributes().getSpindle() == null ? 0 : a.getMoveAttributes().getSpindle().getValue()));
         }
         return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
     }

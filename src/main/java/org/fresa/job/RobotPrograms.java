@@ -34,6 +34,9 @@ import org.fresa.post.RobotProgramWriter;
  */
 public final class RobotPrograms {
 
+    /** The formats that are robot programs. */
+    public static final List<String> FORMATS = List.of("xml", "rapid", "krl");
+
     /** The speed of joint motions (approach, relinks), mm/s. */
     public static final double JOINT_SPEED_MM_PER_S = 250;
 
@@ -51,6 +54,10 @@ public final class RobotPrograms {
                     ? RobotProgram.JointType.PRISMATIC : RobotProgram.JointType.REVOLUTE, j.min(), j.max()));
         }
         Map<String, Double> feed = feedsByWorkingstep(path);
+        Map<String, Double> spindle = new HashMap<>();
+        for (ToolpathSection s : path.sections()) {
+            spindle.merge(s.label(), s.spindleRpm(), Math::max);
+        }
         List<RobotProgram.Motion> motions = new ArrayList<>();
         String ws = null;
         for (int i = 0; i < points.size(); i++) {
@@ -71,7 +78,7 @@ public final class RobotPrograms {
             motions.add(new RobotProgram.Motion(i, p.label(),
                     joint ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART, q, pose, speed,
-                    joint ? 0 : ZONE_MM));
+                    joint ? 0 : ZONE_MM, spindle.getOrDefault(p.label(), 0.0)));
         }
         return new RobotProgram(programName, robot.name(), joints, motions);
     }

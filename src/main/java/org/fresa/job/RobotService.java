@@ -134,7 +134,7 @@ public final class RobotService {
             solved = RobotTrajectoryService.solve(req, progress);
             Timing.mark("trajectory solved");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
-            o = RobotTrajectoryService.write(solved, name, out);
+            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan));
             Timing.mark("files asked for");
             out.finishParallel();
             Timing.mark("files written");

@@ -24,6 +24,7 @@ import org.fresa.model.Move;
 import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
+import org.fresa.post.RobotProgram;
 
 /**
  * A toolpath in the workpiece frame turned into a robot joint trajectory (issue 5):
@@ -142,6 +143,17 @@ public final class RobotTrajectoryService {
      * @param programName the name robot programs carry
      */
     public static TaskOutcome write(Solved solved, String programName, OutputFolder out) throws IOException {
+        return write(solved, programName, out, org.fresa.check.Limits.milling());
+    }
+
+    /**
+     * Writes the formats as {@link #write(Solved, String, OutputFolder)} does, the robot programs
+     * only when they pass the program check against the limits (each tool by its number, as the
+     * toolpath's sections have them; with the plain milling limits every tool is a cutter not
+     * cutting at its centre).
+     */
+    public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits)
+            throws IOException {
         Request req = solved.request();
         TrajectorySolver.Result r = solved.result();
         out.create();
@@ -154,12 +166,21 @@ public final class RobotTrajectoryService {
         if (fmts.contains("csv")) {
             out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points()), req.robot(),
-                fmts, out);
+        RobotProgram program = RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points());
+        java.util.Optional<org.fresa.check.Failure> refused = ProgramChecks.robot(program, req.toolpath(), limits);
+        if (refused.isEmpty()) {
+            RobotPrograms.write(program, req.robot(), fmts, out);
+        }
         Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
+        refused.ifPresent(f -> summary.put("program_refused", f.message()));
         out.writeString("summary.json", Json.writePretty(summary));
         List<String> problems = new ArrayList<>(r.notes());
         int exit = 0;
+        if (refused.isPresent() && fmts.stream().anyMatch(RobotPrograms.FORMATS::contains)) {
+            exit = 1;
+            problems.add("robot programs (" + String.join(", ", fmts.stream().filter(RobotPrograms.FORMATS::contains)
+                    .toList()) + ") not written: the program fails the program check at " + refused.get().message());
+        }
         if (r.unreachable() > 0) {
             exit = 1;
             problems.add(0, r.unreachable() + " of " + r.points().size() + " points are unreachable for "

@@ -46,10 +46,15 @@ public final class KrlWriter implements RobotProgramWriter {
         sb.append("$APO.CDIS = 0.5\n");
         double vel = Double.NaN;
         String ws = null;
+        double rpm = 0;
         for (RobotProgram.Motion m : p.motions()) {
             if (!m.workingstep().equals(ws)) {
                 ws = m.workingstep();
                 sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
+            }
+            if (m.spindleRpm() != rpm) {
+                spindle(sb, m.spindleRpm());
+                rpm = m.spindleRpm();
             }
             if (m.type() == RobotProgram.MotionType.JOINT) {
                 sb.append("PTP {AXIS: ");
@@ -81,9 +86,35 @@ public final class KrlWriter implements RobotProgramWriter {
             }
             sb.append(" ; ").append(m.index()).append('\n');
         }
+        if (rpm != 0) {
+            spindle(sb, 0);
+        }
         sb.append("END\n");
         out.write(sb.toString());
     }
+
+    /**
+     * Starts the spindle at the speed and waits for it to run up, or stops it: output
+     * {@value #SPINDLE_ON} starts the spindle drive, analog output {@value #SPINDLE_SPEED} gives
+     * the speed as a fraction of {@value #SPINDLE_FULL_SCALE_RPM} rpm.
+     */
+    private static void spindle(StringBuilder sb, double rpm) {
+        if (rpm > 0) {
+            sb.append("; spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
+            sb.append(SPINDLE_SPEED).append(" = ").append(f(rpm / SPINDLE_FULL_SCALE_RPM, 6)).append('\n');
+            sb.append(SPINDLE_ON).append(" = TRUE\n");
+            sb.append("WAIT SEC ").append(f(RapidWriter.SPINDLE_RUN_UP_S, 1)).append('\n');
+        } else {
+            sb.append(SPINDLE_ON).append(" = FALSE\n");
+        }
+    }
+
+    /** The output that starts the spindle drive. */
+    public static final String SPINDLE_ON = "$OUT[1]";
+    /** The analog output of the spindle speed. */
+    public static final String SPINDLE_SPEED = "$ANOUT[1]";
+    /** The speed at full scale of {@link #SPINDLE_SPEED}, rpm. */
+    public static final double SPINDLE_FULL_SCALE_RPM = 100_000;
 
     int status(RobotProgram.Motion m) {
         int s = 0;

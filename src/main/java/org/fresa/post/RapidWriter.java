@@ -66,10 +66,15 @@ public final class RapidWriter implements RobotProgramWriter {
         sb.append("    ConfJ \\On;\n");
         sb.append("    ConfL \\On;\n");
         String ws = null;
+        double rpm = 0;
         for (RobotProgram.Motion m : p.motions()) {
             if (!m.workingstep().equals(ws)) {
                 ws = m.workingstep();
                 sb.append("    ! workingstep ").append(ws.replace('\n', ' ')).append('\n');
+            }
+            if (m.spindleRpm() != rpm) {
+                spindle(sb, m.spindleRpm());
+                rpm = m.spindleRpm();
             }
             String speed = speed(m.speedMmPerS());
             String zone = zone(m.zoneMm());
@@ -101,10 +106,36 @@ public final class RapidWriter implements RobotProgramWriter {
             }
             sb.append(" ! ").append(m.index()).append('\n');
         }
+        if (rpm != 0) {
+            spindle(sb, 0);
+        }
         sb.append("  ENDPROC\n");
         sb.append("ENDMODULE\n");
         out.write(sb.toString());
     }
+
+    /**
+     * Starts the spindle at the speed and waits for it to run up, or stops it: the spindle drive is
+     * wired to the controller's signals {@value #SPINDLE_ON} (start) and {@value #SPINDLE_RPM}
+     * (speed in rpm), which the cell's I/O configuration must define.
+     */
+    private static void spindle(StringBuilder sb, double rpm) {
+        if (rpm > 0) {
+            sb.append("    ! spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
+            sb.append("    SetAO ").append(SPINDLE_RPM).append(", ").append(f(rpm, 0)).append(";\n");
+            sb.append("    SetDO ").append(SPINDLE_ON).append(", 1;\n");
+            sb.append("    WaitTime ").append(f(SPINDLE_RUN_UP_S, 1)).append(";\n");
+        } else {
+            sb.append("    SetDO ").append(SPINDLE_ON).append(", 0;\n");
+        }
+    }
+
+    /** The digital output that starts the spindle drive. */
+    public static final String SPINDLE_ON = "doFresaSpindleOn";
+    /** The analog output of the spindle speed, rpm. */
+    public static final String SPINDLE_RPM = "aoFresaSpindleRpm";
+    /** The time the spindle is given to reach its speed before the first motion, s. */
+    public static final double SPINDLE_RUN_UP_S = 2;
 
     /** The quarter revolution of a joint angle in degrees, as confdata counts it. */
     static int quarter(double angleDeg) {

@@ -73,9 +73,17 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
      * @param target the tool-tip pose in the robot base frame (mm), from forward kinematics
      * @param speedMmPerS tool-tip speed along the path (mm/s)
      * @param zoneMm rounding (blend) radius; 0 for a fine point
+     * @param spindleRpm the spindle speed while the robot makes the motion, rpm; 0 with the spindle stopped
      */
     public record Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
-            Transform3 target, double speedMmPerS, double zoneMm) {
+            Transform3 target, double speedMmPerS, double zoneMm, double spindleRpm) {
+
+        /** A motion with the spindle stopped. */
+        public Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
+                Transform3 target, double speedMmPerS, double zoneMm) {
+            this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0);
+        }
+
         public Motion {
             Objects.requireNonNull(workingstep, "workingstep");
             Objects.requireNonNull(type, "type");
@@ -87,6 +95,9 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
             }
             if (!(zoneMm >= 0)) {
                 throw new IllegalArgumentException("zone must be >= 0: " + zoneMm);
+            }
+            if (!(spindleRpm >= 0) || Double.isInfinite(spindleRpm)) {
+                throw new IllegalArgumentException("spindle speed must be finite and >= 0: " + spindleRpm);
             }
         }
 

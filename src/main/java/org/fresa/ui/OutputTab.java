@@ -169,7 +169,11 @@ final class OutputTab implements ModuleTab {
                 }
                 String s = Files.readString(f, StandardCharsets.UTF_8);
                 // a preview of a long program shows its beginning; Save writes all of it
-                return (Object) (s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s);
+                String shownText = s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s;
+                java.util.Optional<org.fresa.check.Failure> refusal = org.fresa.job.RobotPrograms.FORMATS.contains(format)
+                        ? OutputViewModel.refusal(run) : java.util.Optional.empty();
+                return (Object) new Previewed(shownText, refusal.map(x -> OutputViewModel.lineOfMotion(shownText, x.line()))
+                        .orElse(0), refusal.map(org.fresa.check.Failure::message).orElse(""));
             } finally {
                 deleteTree(scratch);
             }
@@ -180,10 +184,20 @@ final class OutputTab implements ModuleTab {
                 image.setIcon(new ImageIcon(img));
                 cards.show(previewCards, "image");
             } else {
-                showText((String) shown);
+                Previewed p = (Previewed) shown;
+                showText(p.text());
+                text.getHighlighter().removeAllHighlights();
+                if (!p.refusal().isEmpty()) {
+                    ProgramHighlight.line(text, p.line());
+                    status.setText("program refused, cannot be saved: " + p.refusal());
+                }
                 cards.show(previewCards, "text");
             }
         });
+    }
+
+    /** A program preview: its text, and the line of the motion that fails the program check (0: none). */
+    private record Previewed(String text, int line, String refusal) {
     }
 
     private void showText(String s) {
@@ -209,6 +223,14 @@ final class OutputTab implements ModuleTab {
         if (!problem.isEmpty()) {
             Dialogs.error(ctx.owner(), "Save", problem);
             return;
+        }
+        if (vm.checkedFormats().stream().anyMatch(org.fresa.job.RobotPrograms.FORMATS::contains)) {
+            java.util.Optional<org.fresa.check.Failure> refusal = OutputViewModel.refusal(runs.last().get());
+            if (refusal.isPresent()) {
+                Dialogs.error(ctx.owner(), "Save", "The robot program fails the program check and cannot be saved: "
+                        + refusal.get().message());
+                return;
+            }
         }
         JFileChooser fc = new JFileChooser();
         fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);

@@ -124,11 +124,43 @@ final class OutputViewModel {
     static Path previewFile(RobotRunModel.Run run, String format, Path scratch) throws IOException {
         OutputFolder out = new OutputFolder(scratch);
         write(run, List.of(format), out);
+        if (org.fresa.job.RobotPrograms.FORMATS.contains(format) && refusal(run).isPresent()) {
+            // refused programs are not saved; the preview shows the program so that its failing motion can be marked
+            org.fresa.job.RobotPrograms.write(program(run), run.solved().request().robot(), List.of(format), out);
+        }
         Path f = scratch.resolve(fileOf(format));
         if (!Files.exists(f)) {
             throw new IOException("the " + format + " writer wrote no " + fileOf(format));
         }
         return f;
+    }
+
+    /** The robot program of a run, as the writers take it. */
+    static org.fresa.post.RobotProgram program(RobotRunModel.Run run) {
+        RobotTrajectoryService.Request r = run.solved().request();
+        return org.fresa.job.RobotPrograms.of(run.programName(), r.robot(), r.toolpath(), run.solved().result().points());
+    }
+
+    /** The program check's first failure of a run's robot program (as Save would check it), or empty. */
+    static java.util.Optional<org.fresa.check.Failure> refusal(RobotRunModel.Run run) {
+        return org.fresa.job.ProgramChecks.robot(program(run), run.solved().request().toolpath(),
+                org.fresa.check.Limits.milling());
+    }
+
+    /**
+     * The line (from 1) of a program text that holds the motion of the trajectory row: RAPID and
+     * KRL end each motion's line with its index, program.xml carries it as {@code Index}; 0 when
+     * none does.
+     */
+    static int lineOfMotion(String text, int index) {
+        String[] lines = text.split("\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            String l = lines[i];
+            if (l.endsWith("! " + index) || l.endsWith("; " + index) || l.contains("Index=\"" + index + "\"")) {
+                return i + 1;
+            }
+        }
+        return 0;
     }
 
     /** Start and end offsets of the keywords in a program text, for colouring. */

@@ -89,6 +89,7 @@ final class PocketTab implements ModuleTab {
         form.add(status);
         report.setEditable(false);
         nc.setEditable(false);
+        nc.setName("pocket-nc");
         report.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, 12));
         nc.setFont(report.getFont());
         JTabbedPane texts = new JTabbedPane();
@@ -136,6 +137,12 @@ final class PocketTab implements ModuleTab {
             nc.setCaretPosition(0);
             plot.show(r.get().scene());
             status.setText("done");
+            nc.getHighlighter().removeAllHighlights();
+            if (r.get().refusal().isPresent()) {
+                org.fresa.check.Failure f = r.get().refusal().get();
+                ProgramHighlight.line(nc, f.line());
+                status.setText("program refused, not written: " + f.message());
+            }
         } else {
             status.setText(model.error().orElse("failed"));
         }

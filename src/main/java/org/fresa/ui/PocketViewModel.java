@@ -35,8 +35,17 @@ public final class PocketViewModel {
      * @param scene contour (element numbers as labels), recognition subcontours and toolpath
      * @param report the thesis's sizes and the recognition tree, like its Appendix C
      * @param nc the NC program for the chosen post
+     * @param refusal the program check's first failure: the program is not written (Job > Run
+     *     ends with exit 1), the tab shows the block highlighted
      */
-    public record Result(PlotScene scene, String report, String nc) {
+    public record Result(PlotScene scene, String report, String nc, Optional<org.fresa.check.Failure> refusal) {
+
+        /** A result whose program is checked against the settings' limits. */
+        static Result checked(PlotScene scene, String report, String nc, PocketSettings settings) {
+            return new Result(scene, report, nc, org.fresa.check.ProgramCheck.of(nc,
+                    org.fresa.job.ProgramChecks.dialect(settings.post()), org.fresa.job.ProgramChecks.pocket(settings))
+                    .failure());
+        }
     }
 
     private PocketSettings settings = new PocketSettings(Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3,
@@ -84,14 +93,14 @@ public final class PocketViewModel {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
-                    return new Outcome(Optional.of(new Result(regionScene(contours, rp), regionReport(contours, rp),
-                            PocketService.regionProgram(rp, settings.post(), name))), Optional.empty());
+                    return new Outcome(Optional.of(Result.checked(regionScene(contours, rp), regionReport(contours, rp),
+                            PocketService.regionProgram(rp, settings.post(), name), settings)), Optional.empty());
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
                     settings.climb(), settings.entryRule());
-            return new Outcome(Optional.of(new Result(scene(plan, settings), report(plan), nc)),
+            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, settings)),
                     Optional.empty());
         } catch (CamInputException | IOException | ToolTooLargeException | IllegalArgumentException e) {
             return new Outcome(Optional.empty(), Optional.of(String.valueOf(e.getMessage())));

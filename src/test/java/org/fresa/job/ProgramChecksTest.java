@@ -1,0 +1,69 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.fresa.check.ProgramCheck;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The program check as the writers run it: programs that pass are written, the others are not. */
+class ProgramChecksTest {
+
+    @TempDir
+    Path dir;
+
+    /** The thesis's eight pockets on both 7M posts: the check passes and the programs are written. */
+    @Test
+    void theThesisPocketsPassOnBothSevenMPosts() throws Exception {
+        for (String line : Files.readAllLines(Path.of("samples/pocket/jobs.csv"))) {
+            if (line.startsWith("contour")) {
+                continue;
+            }
+            String[] f = line.split(",");
+            for (String post : List.of("7m-compat", "7m")) {
+                PocketSettings s = new PocketSettings(Path.of("samples/pocket/" + f[0]), Double.parseDouble(f[1]),
+                        Double.parseDouble(f[2]), Double.parseDouble(f[3]), Double.parseDouble(f[4]),
+                        Double.parseDouble(f[5]), Double.parseDouble(f[6]), Double.parseDouble(f[7]),
+                        Double.parseDouble(f[8]), Double.parseDouble(f[9]), post);
+                Path out = dir.resolve(f[0] + "-" + post + ".nc");
+                TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
+                assertEquals(0, o.exitStatus(), f[0] + " " + post + ": " + o.problems());
+                assertTrue(Files.exists(out));
+                assertTrue(ProgramCheck.of(Files.readString(out), ProgramChecks.dialect(post), ProgramChecks.pocket(s)).ok());
+            }
+        }
+    }
+
+    /**
+     * A STEP-NC file whose workingsteps have a feed but spindle $: no cutting program (the check
+     * refuses the feed moves with the spindle stopped), exit 1, the other files written.
+     */
+    @Test
+    void workingstepsWithoutASpindleSpeedGiveNoCuttingProgram() throws Exception {
+        String text = Files.readString(Path.of("samples/stepnc/iso14649-11-example1.stp"))
+                .replaceAll("(#\\d+= MILLING_TECHNOLOGY\\([^,]*,[^,]*,[^,]*,)-?[0-9.]+,", "$1\\$,");
+        assertTrue(text.contains("MILLING_TECHNOLOGY(0.040,.TCP.,$,$,"), "the spindle speeds were replaced");
+        Path file = dir.resolve("no-spindle.stp");
+        Files.writeString(file, text);
+        Path out = dir.resolve("out");
+        TaskOutcome o = ToolpathService.run(file, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus(), o.problems().toString());
+        assertTrue(Files.exists(out.resolve("summary.json")));
+        Path ngc = out.resolve("program.ngc");
+        if (Files.exists(ngc)) {
+            // a planner that refuses such workingsteps may leave a program of the others: it must pass
+            assertTrue(ProgramCheck.of(Files.readString(ngc), org.fresa.check.NcDialect.LINUXCNC,
+                    org.fresa.check.Limits.milling().withOtherTools(org.fresa.check.ToolLimits.drill())).ok());
+        } else {
+            assertTrue(o.problems().stream().anyMatch(p -> p.contains("program.ngc not written")
+                    && p.contains("spindle")), o.problems().toString());
+        }
+        assertFalse(Files.list(out).anyMatch(p -> p.getFileName().toString().startsWith(AtomicFiles.TEMP_PREFIX)));
+    }
+}

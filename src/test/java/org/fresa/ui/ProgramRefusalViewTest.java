@@ -1,0 +1,47 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import javax.swing.JTextArea;
+import org.fresa.chart.PlotScene;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.junit.jupiter.api.Test;
+
+/** The Pocket and Output tabs' side of the program check: the failing block found and marked. */
+class ProgramRefusalViewTest {
+
+    private static final PocketSettings CAVITY03 = new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73,
+            0.22, 30, 27, 5, 2750, 280, 90, "7m-compat");
+
+    @Test
+    void theThesisProgramOfCavity03PassesTheCheck() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(CAVITY03);
+        m.compute();
+        assertTrue(m.result().orElseThrow().refusal().isEmpty());
+    }
+
+    @Test
+    void aProgramCuttingWithTheSpindleStoppedIsRefusedAtItsBlock() {
+        String nc = "N05 %\nN10 G00 G90 X 0 Y 0 Z 5000\nN15 G01 G91 Z-8000F 280\nN20 M30\n";
+        PocketViewModel.Result r = PocketViewModel.Result.checked(PlotScene.empty("x"), "", nc, CAVITY03);
+        assertEquals(3, r.refusal().orElseThrow().line());
+        assertEquals("spindle", r.refusal().get().rule().name());
+        JTextArea text = new JTextArea(nc);
+        assertTrue(ProgramHighlight.line(text, 3));
+        assertEquals(1, text.getHighlighter().getHighlights().length);
+        assertEquals(nc.indexOf("N15"), text.getHighlighter().getHighlights()[0].getStartOffset());
+        assertFalse(ProgramHighlight.line(text, 9));
+    }
+
+    @Test
+    void theMotionOfARobotProgramIsFoundByItsIndex() {
+        String rapid = "    MoveAbsJ [[0,0,0,0,0,0],[9E+09]],v,fine,tFresa; ! 0\n    MoveL [[1,2,3]] ! j=[1] ! 17\n";
+        assertEquals(2, OutputViewModel.lineOfMotion(rapid, 17));
+        assertEquals(1, OutputViewModel.lineOfMotion("<Activity Index=\"4\" Workingstep=\"w\">\n", 4));
+        assertEquals(0, OutputViewModel.lineOfMotion(rapid, 5));
+    }
+}
