@@ -690,7 +690,9 @@ final class StepNcViewModel {
         }
         int drop = selected.map(ws -> dominant(ws.feature().axis())).orElse(2);
         String[] names = {"Side view (YZ)", "Front view (XZ)", "Top view (XY)"};
-        PlotScene scene = PlotScene.empty(names[drop]);
+        PlotScene.Axes[] axes = {new PlotScene.Axes("y (mm)", "z (mm)"), new PlotScene.Axes("x (mm)", "z (mm)"),
+            PlotScene.Axes.XY_MM};
+        PlotScene scene = PlotScene.empty(names[drop]).withAxes(axes[drop]);
         for (Workpiece w : program.get().workpieces()) {
             if (w.block().isPresent()) {
                 Workpiece.Block b = w.block().get();
@@ -738,7 +740,7 @@ final class StepNcViewModel {
         }
         String title = scene.title() + ": " + selected.get().id() + (layer == 0 ? "" : ", layer " + layer + " of "
                 + layers().size());
-        PlotScene out = new PlotScene(title, scene.layers(), scene.labels())
+        PlotScene out = scene.withTitle(title)
                 .with(new PlotScene.Layer("rapid", PlotScene.Style.RAPID, rapids))
                 .with(new PlotScene.Layer("feed", PlotScene.Style.FEED, feeds))
                 .with(new PlotScene.Layer("travelled", PlotScene.Style.FINISH, done));

@@ -80,6 +80,17 @@ class StepNcViewModelTest {
     }
 
     @Test
+    void theFrontViewNamesItsAxesXAndZ() throws Exception {
+        StepNcViewModel vm = loaded("example2.stp");
+        vm.select(Optional.of(vm.program().orElseThrow().workingsteps().get(11)));
+        PlotScene s = vm.plot();
+        assertAll(
+                () -> assertEquals("x (mm)", s.axes().horizontal()),
+                () -> assertEquals("z (mm)", s.axes().vertical()),
+                () -> assertEquals("z (mm)", org.fresa.chart.ToolpathChart.frame(s).getXYPlot().getRangeAxis().getLabel()));
+    }
+
+    @Test
     void theTopPocketIsDrawnAsItsRoundedRectangle() throws Exception {
         StepNcViewModel vm = loaded("example2.stp");
         vm.select(Optional.of(vm.program().orElseThrow().workingsteps().get(8)));
