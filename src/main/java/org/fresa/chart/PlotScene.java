@@ -99,6 +99,19 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels, Ax
         return new PlotScene(title, layers, l, axes);
     }
 
+    /**
+     * The scene with a ring and a cross at a point in the warning style, the place a warning of
+     * the module names.
+     *
+     * @param radiusMm the ring's radius
+     */
+    public PlotScene withMarker(String name, Vec2 at, double radiusMm) {
+        double r = Math.max(1e-3, radiusMm);
+        return with(new Layer(name, Style.WARNING, List.of(Arc2.circle(at, r, true),
+                Segment2.of(at.minus(new Vec2(2 * r, 0)), at.plus(new Vec2(2 * r, 0))),
+                Segment2.of(at.minus(new Vec2(0, 2 * r)), at.plus(new Vec2(0, 2 * r))))));
+    }
+
     /** The same scene under another title. */
     public PlotScene withTitle(String newTitle) {
         return new PlotScene(newTitle, layers, labels, axes);

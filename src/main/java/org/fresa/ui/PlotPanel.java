@@ -200,6 +200,16 @@ public final class PlotPanel extends JPanel {
         chartPanel.setChart(chart);
     }
 
+    /**
+     * Centres the view on a place of the scene, showing at least sizeMm around it at equal scale
+     * (a warning's place). Call on the event thread.
+     */
+    public void showPlace(org.fresa.geom.Vec2 at, double sizeMm) {
+        double h = Math.max(1e-3, sizeMm) / 2;
+        Box2 b = new Box2(at.x() - h, at.y() - h, at.x() + h, at.y() + h);
+        dataArea().ifPresent(area -> EqualScale.fit(chart.getXYPlot(), b, area));
+    }
+
     /** Fits the scene into the view with equal millimetres per pixel on both axes. */
     public void fit() {
         Box2 b = scene.bounds().orElse(new Box2(0, 0, 100, 100));

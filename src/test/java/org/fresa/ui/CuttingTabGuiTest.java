@@ -65,4 +65,45 @@ class CuttingTabGuiTest extends WindowGuiTest {
         org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
         cut(p, "cutting-pumpenteile.png");
     }
+
+    @Test
+    @CorpusCheck
+    void everyWarningIsListedAndAClickShowsItsPlaceInThePlot() {
+        Path p = TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
+        cut(p, "cutting-pumpenteile.png");
+        org.assertj.swing.fixture.JListFixture list = window.list("cutting-warnings");
+        String[] rows = list.contents();
+        assertEquals(32, rows.length);
+        int tooSmall = java.util.stream.IntStream.range(0, rows.length)
+                .filter(i -> rows[i].contains("part 15 hole 1 (")).findFirst().orElseThrow();
+        list.clickItem(tooSmall);
+        PlotPanel plot = window.robot().finder().find(new org.assertj.swing.core.GenericTypeMatcher<PlotPanel>(
+                PlotPanel.class, true) {
+            @Override
+            protected boolean isMatching(PlotPanel c) {
+                return true;
+            }
+        });
+        Pause.pause(new Condition("the plot is drawn") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> plot.isDrawn());
+            }
+        }, Timeout.timeout(20_000));
+        org.fresa.geom.Box2 view = GuiActionRunner.execute(() -> plot.view());
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertTrue(view.contains(org.fresa.geom.Vec2.of(92, 92)), "the place in view: " + view),
+                () -> assertTrue(view.width() < 80, "zoomed to the place: " + view),
+                () -> assertTrue(GuiActionRunner.execute(() -> plot.scene().layers().stream()
+                        .anyMatch(l -> l.name().equals("selected warning"))), "the place is marked"),
+                () -> assertEquals(1, GuiActionRunner.execute(() -> plot.shownAspect()), 0.01));
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        try {
+            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", "cutting-warning-place.png").toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
 }

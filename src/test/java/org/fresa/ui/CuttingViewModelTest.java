@@ -46,6 +46,27 @@ class CuttingViewModelTest {
     }
 
     @Test
+    @org.fresa.testing.CorpusCheck
+    void everyWarningOfADrawingIsListedWithItsPlace() throws Exception {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(org.fresa.testing.TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf"));
+        CuttingService.Result r = CuttingService.compute(vm.settings(), ProgressMonitor.NONE);
+        vm.setResult(r);
+        WarningList w = vm.warnings();
+        java.util.List<?> summary = (java.util.List<?>) CuttingService.summary(r).get("warnings");
+        WarningList.Warning tooSmall = w.all().stream().filter(x -> x.text().startsWith("part 15 hole 1 ("))
+                .findFirst().orElseThrow();
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertEquals(32, w.size()),
+                () -> assertEquals(summary, w.all().stream().map(WarningList.Warning::text).toList()),
+                () -> assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(23, 109)), w.all().stream()
+                        .filter(x -> x.text().startsWith("open chain")).findFirst().orElseThrow().place()),
+                () -> assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(92, 92)), tooSmall.place()),
+                () -> assertEquals(java.util.Optional.empty(), w.all().get(0).place()),
+                () -> assertTrue(w.heading().startsWith("32 warnings"), w.heading()));
+    }
+
+    @Test
     void aJobSavedFromTheTabRunsWithFresaRun(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         CuttingViewModel vm = new CuttingViewModel();
         vm.setDrawing(Path.of("samples/cutting/plate.dxf").toAbsolutePath());
