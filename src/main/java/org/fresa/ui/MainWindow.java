@@ -106,6 +106,7 @@ public final class MainWindow extends JFrame {
         job.add(item("Run job into folder...", 'R', KeyStroke.getKeyStroke("F5"), this::runJob));
         job.add(item("Cancel running task", 'C', KeyStroke.getKeyStroke("ESCAPE"), tasks::cancel));
         bar.add(job);
+        bar.add(HelpMenu.create(this));
         return bar;
     }
 

@@ -375,6 +375,7 @@ final class RobotTab implements ModuleTab {
             int index = i;
             JTextField f = new JTextField(vm.parameter(i), i == 0 ? 12 : 7);
             f.setName("robot-param-" + i);
+            f.setToolTipText(Tooltips.robotParameter(names.get(i)));
             JLabel l = new JLabel(names.get(i) + ":");
             l.setLabelFor(f);
             TextChanges.onChange(f, () -> {
@@ -404,7 +405,7 @@ final class RobotTab implements ModuleTab {
         for (int i = 0; i < paramFields.length; i++) {
             var p = vm.parameterProblem(i);
             paramFields[i].setBackground(p.isPresent() ? BAD : Color.WHITE);
-            paramFields[i].setToolTipText(p.orElse(null));
+            paramFields[i].setToolTipText(p.orElse(Tooltips.robotParameter(vm.parameterNames().get(i))));
         }
         String c = vm.choice();
         boolean builtIn = RobotViewModel.builtIns().contains(c);
