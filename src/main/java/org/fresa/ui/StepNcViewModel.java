@@ -130,6 +130,26 @@ final class StepNcViewModel {
         replay = REPLAY_STEPS;
     }
 
+    /** Every problem of the toolpath planning (workingsteps not planned, parts of them not milled). */
+    WarningList problems() {
+        return WarningList.of(plan.map(ToolpathPlanner.Plan::problems).orElse(List.of()));
+    }
+
+    /**
+     * The workingstep a problem's text names: by its instance ("(#123)") or, failing that, by its
+     * name in quotes ("workingstep 'WS FINISH POCKET1'").
+     */
+    Optional<MachiningWorkingstep> workingstepNamedIn(String text) {
+        if (program.isEmpty()) {
+            return Optional.empty();
+        }
+        List<MachiningWorkingstep> all = program.get().workingsteps();
+        Optional<MachiningWorkingstep> byInstance = all.stream()
+                .filter(ws -> text.contains("(#" + ws.instanceId() + ")")).findFirst();
+        return byInstance.isPresent() ? byInstance
+                : all.stream().filter(ws -> text.contains("'" + ws.id() + "'")).findFirst();
+    }
+
     Optional<ToolpathPlanner.Plan> plan() {
         return plan;
     }
