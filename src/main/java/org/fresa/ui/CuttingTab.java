@@ -19,7 +19,6 @@ import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
@@ -183,9 +182,9 @@ final class CuttingTab implements ModuleTab {
     }
 
     private void choose() {
-        JFileChooser ch = new JFileChooser();
-        ch.setFileFilter(new FileNameExtensionFilter("DXF drawings", "dxf"));
+        JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.DXF);
         if (ch.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            FileChoosers.chosen(ch);
             Path p = ch.getSelectedFile().toPath();
             vm.setDrawing(p);
             file.setText(p.getFileName().toString());

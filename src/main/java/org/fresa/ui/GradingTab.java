@@ -22,7 +22,6 @@ import javax.swing.JSplitPane;
 import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.JToggleButton;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.table.DefaultTableModel;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradingResult;
@@ -194,14 +193,13 @@ final class GradingTab implements ModuleTab {
     }
 
     private void openOutline() {
-        JFileChooser fc = new JFileChooser();
-        fc.setFileFilter(new FileNameExtensionFilter("Fresa contour (*.contour)", "contour"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.OUTLINE);
         vm.outlineFile().ifPresent(p -> fc.setCurrentDirectory(p.getParent().toFile()));
         if (fc.showOpenDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
             return;
         }
         try {
-            vm.openOutline(fc.getSelectedFile().toPath());
+            vm.openOutline(FileChoosers.chosen(fc));
         } catch (CamInputException | java.io.IOException e) {
             Dialogs.error(ctx.owner(), "Open outline", e.getMessage());
             return;
@@ -233,13 +231,12 @@ final class GradingTab implements ModuleTab {
 
     private void export() {
         pushFields();
-        JFileChooser fc = new JFileChooser();
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Folder for the graded sizes");
         if (fc.showSaveDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        Path dir = fc.getSelectedFile().toPath();
+        Path dir = FileChoosers.chosen(fc);
         ctx.tasks().start("Export grading", progress -> vm.export(dir, progress), (TaskOutcome o) ->
                 Dialogs.info(ctx.owner(), "Export grading", "Wrote " + o.files().size() + " files in " + dir));
     }

@@ -360,11 +360,10 @@ final class SoleTab implements ModuleTab {
     }
 
     private void chooseFolder() {
-        JFileChooser fc = new JFileChooser();
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Output folder of the sole programs");
         if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            outFolder.setText(fc.getSelectedFile().getAbsolutePath());
+            outFolder.setText(FileChoosers.chosen(fc).toAbsolutePath().toString());
         }
     }
 

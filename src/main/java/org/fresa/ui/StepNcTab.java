@@ -23,7 +23,6 @@ import javax.swing.JTextArea;
 import javax.swing.JTree;
 import javax.swing.Timer;
 import javax.swing.TransferHandler;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
@@ -217,11 +216,9 @@ final class StepNcTab implements ModuleTab {
     }
 
     private void choose() {
-        JFileChooser fc = new JFileChooser(ctx.model().job().stepnc().map(s -> s.file().getParent())
-                .map(Path::toFile).orElse(null));
-        fc.setFileFilter(new FileNameExtensionFilter("STEP-NC Part 21 (*.stp, *.step, *.p21)", "stp", "step", "p21"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.STEPNC);
         if (fc.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            open(fc.getSelectedFile().toPath());
+            open(FileChoosers.chosen(fc));
         }
     }
 
