@@ -33,11 +33,18 @@ class BackgroundTasksTest {
 
     @Test
     void aPhaseOfUnknownLengthAfterAFinishedOneReadsNoPercentage() throws Exception {
-        StatusBar bar = new StatusBar();
+        // Swing components are made on the event thread, as everywhere
+        AtomicReference<StatusBar> made = new AtomicReference<>();
+        AtomicReference<BackgroundTasks> madeTasks = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            made.set(new StatusBar());
+            madeTasks.set(new BackgroundTasks(made.get(), null));
+        });
+        StatusBar bar = made.get();
+        BackgroundTasks tasks = madeTasks.get();
         CountDownLatch planning = new CountDownLatch(1);
         CountDownLatch solving = new CountDownLatch(1);
         CountDownLatch end = new CountDownLatch(1);
-        BackgroundTasks tasks = new BackgroundTasks(bar, null);
         SwingUtilities.invokeAndWait(() -> tasks.start("Robot", pm -> {
             pm.progress(1, "read 2954 instances");
             pm.progress(-1, "planning toolpaths");
