@@ -119,7 +119,11 @@ final class Tooltips {
             if (tip == null && root instanceof AbstractButton b) {
                 tip = TIPS.get(tab + "|" + b.getText());
             }
-            if (tip != null) {
+            if (tip != null && root instanceof JTable t && t.getTableHeader() != null) {
+                // a table's cells give their own tooltips (the problem of a cell): its meaning goes
+                // on its header, and the cells are not all registered for a tooltip of their own
+                t.getTableHeader().setToolTipText(tip);
+            } else if (tip != null) {
                 j.setToolTipText(tip);
             }
         }

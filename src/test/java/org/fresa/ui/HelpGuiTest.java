@@ -77,7 +77,10 @@ class HelpGuiTest extends WindowGuiTest {
         boolean input = c instanceof JTextComponent t && t.isEditable()
                 || c instanceof JComboBox<?> || c instanceof JSpinner || c instanceof JSlider
                 || c instanceof JToggleButton || c instanceof JTable;
-        if (input && c instanceof JComponent j && (j.getToolTipText() == null || j.getToolTipText().isBlank())) {
+        // a table says what it holds on its header (its cells give their own problems)
+        JComponent said = c instanceof JTable t && t.getTableHeader() != null ? t.getTableHeader()
+                : c instanceof JComponent j ? j : null;
+        if (input && said != null && (said.getToolTipText() == null || said.getToolTipText().isBlank())) {
             String label = c instanceof AbstractButton b ? b.getText() : "";
             out.add(tab + ": " + c.getClass().getSimpleName() + " " + c.getName() + " " + label);
         }
