@@ -45,22 +45,10 @@ public final class GradingChart {
         return ToolpathChart.create(scene(title, sizes, lengthAxis));
     }
 
-    /** The nested outlines as a PNG image (via {@link ChartFiles}), for headless runs. */
+    /** The nested outlines as a PNG image at equal scale (via {@link ToolpathChart}), for headless runs. */
     public static void writePng(String title, List<SizeOutline> sizes, Vec2 lengthAxis, int widthPx, int heightPx,
             java.io.OutputStream out) throws java.io.IOException {
-        PlotScene scene = scene(title, sizes, lengthAxis);
-        JFreeChart chart = ToolpathChart.create(scene);
-        scene.bounds().ifPresent(b -> equalScale(chart, b, widthPx - 70, heightPx - 70));
-        ChartFiles.writePng(chart, widthPx, heightPx, out);
-    }
-
-    /** Axis ranges with equal mm per pixel, for a data area of about w x h pixels. */
-    private static void equalScale(JFreeChart chart, org.fresa.geom.Box2 b, double w, double h) {
-        double pad = 0.05 * Math.max(1, Math.max(b.width(), b.height()));
-        double scale = Math.max((b.width() + 2 * pad) / w, (b.height() + 2 * pad) / h);
-        org.jfree.chart.plot.XYPlot plot = chart.getXYPlot();
-        plot.getDomainAxis().setRange(b.center().x() - scale * w / 2, b.center().x() + scale * w / 2);
-        plot.getRangeAxis().setRange(b.center().y() - scale * h / 2, b.center().y() + scale * h / 2);
+        ToolpathChart.writePng(scene(title, sizes, lengthAxis), widthPx, heightPx, out);
     }
 
     private static Vec2 toe(Contour c, Vec2 axis) {

@@ -21,8 +21,20 @@ import org.fresa.model.ToolpathSection;
  * @param title the plot's title (may be empty)
  * @param layers drawn in order, later over earlier
  * @param labels text at points
+ * @param axes the names of the horizontal and vertical axes (the plane the scene is seen in)
  */
-public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
+public record PlotScene(String title, List<Layer> layers, List<Label> labels, Axes axes) {
+
+    /** The names of the plot's axes, with their unit: the view's plane, not always x and y. */
+    public record Axes(String horizontal, String vertical) {
+        /** Seen from above: x to the right, y up. */
+        public static final Axes XY_MM = new Axes("x (mm)", "y (mm)");
+
+        public Axes {
+            Objects.requireNonNull(horizontal, "horizontal");
+            Objects.requireNonNull(vertical, "vertical");
+        }
+    }
 
     /** How a layer is drawn. */
     public enum Style {
@@ -63,6 +75,12 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
         Objects.requireNonNull(title, "title");
         layers = List.copyOf(layers);
         labels = List.copyOf(labels);
+        Objects.requireNonNull(axes, "axes");
+    }
+
+    /** A scene seen from above (axes x and y). */
+    public PlotScene(String title, List<Layer> layers, List<Label> labels) {
+        this(title, layers, labels, Axes.XY_MM);
     }
 
     public static PlotScene empty(String title) {
@@ -72,13 +90,36 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels) {
     public PlotScene with(Layer layer) {
         List<Layer> l = new ArrayList<>(layers);
         l.add(layer);
-        return new PlotScene(title, l, labels);
+        return new PlotScene(title, l, labels, axes);
     }
 
     public PlotScene withLabel(Vec2 at, String text) {
         List<Label> l = new ArrayList<>(labels);
         l.add(new Label(at, text));
-        return new PlotScene(title, layers, l);
+        return new PlotScene(title, layers, l, axes);
+    }
+
+    /**
+     * The scene with a ring and a cross at a point in the warning style, the place a warning of
+     * the module names.
+     *
+     * @param radiusMm the ring's radius
+     */
+    public PlotScene withMarker(String name, Vec2 at, double radiusMm) {
+        double r = Math.max(1e-3, radiusMm);
+        return with(new Layer(name, Style.WARNING, List.of(Arc2.circle(at, r, true),
+                Segment2.of(at.minus(new Vec2(2 * r, 0)), at.plus(new Vec2(2 * r, 0))),
+                Segment2.of(at.minus(new Vec2(0, 2 * r)), at.plus(new Vec2(0, 2 * r))))));
+    }
+
+    /** The same scene under another title. */
+    public PlotScene withTitle(String newTitle) {
+        return new PlotScene(newTitle, layers, labels, axes);
+    }
+
+    /** The same scene with other axis names (a front or side view). */
+    public PlotScene withAxes(Axes newAxes) {
+        return new PlotScene(title, layers, labels, newAxes);
     }
 
     public PlotScene withContour(String name, Style style, Contour c) {

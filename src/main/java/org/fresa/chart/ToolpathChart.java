@@ -6,6 +6,12 @@ import java.awt.Font;
 import java.awt.Paint;
 import java.awt.Stroke;
 import java.awt.geom.Arc2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Rectangle2D;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import java.awt.geom.Path2D;
 import java.awt.geom.Point2D;
 import org.fresa.geom.Arc2;
@@ -13,6 +19,11 @@ import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.LegendItem;
+import org.jfree.chart.LegendItemCollection;
+import org.jfree.chart.axis.AxisSpace;
+import org.jfree.chart.block.BlockBorder;
+import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.annotations.XYTextAnnotation;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.plot.XYPlot;
@@ -22,34 +33,22 @@ import org.jfree.data.xy.XYSeriesCollection;
 
 /**
  * Draws a {@link PlotScene} as a JFreeChart XY plot in millimetres. Arcs are drawn as true arcs
- * (Java2D {@link Arc2D} shapes), not polylines; the axes keep equal scale when the chart is
- * shown in the GUI plot panel, which keeps them so.
+ * (Java2D {@link Arc2D} shapes), not polylines. Equal scale on both axes depends on the size the
+ * chart is drawn at: {@link EqualScale} sets it, for the plot view and for the files.
  */
 public final class ToolpathChart {
 
     private ToolpathChart() {
     }
 
+    /**
+     * The chart of a scene: its title, axes named after the view, a legend of the layers' styles,
+     * and the layers' curves. The axes are set to the scene's box (not yet at equal scale: that
+     * needs the size it is drawn at, see {@link EqualScale} and {@link #writePng}).
+     */
     public static JFreeChart create(PlotScene scene) {
-        XYSeriesCollection data = new XYSeriesCollection();
-        XYSeries extent = new XYSeries("extent");
-        scene.bounds().ifPresent(b -> {
-            double pad = 0.04 * Math.max(1, Math.max(b.width(), b.height()));
-            extent.add(b.minX() - pad, b.minY() - pad);
-            extent.add(b.maxX() + pad, b.maxY() + pad);
-        });
-        data.addSeries(extent);
-        NumberAxis x = new NumberAxis("x (mm)");
-        NumberAxis y = new NumberAxis("y (mm)");
-        x.setAutoRangeIncludesZero(false);
-        y.setAutoRangeIncludesZero(false);
-        XYLineAndShapeRenderer r = new XYLineAndShapeRenderer(false, false);
-        XYPlot plot = new XYPlot(data, x, y, r);
-        plot.setBackgroundPaint(Color.WHITE);
-        plot.setDomainGridlinePaint(new Color(0xE0E0E0));
-        plot.setRangeGridlinePaint(new Color(0xE0E0E0));
-        plot.setDomainPannable(true);
-        plot.setRangePannable(true);
+        JFreeChart chart = frame(scene);
+        XYPlot plot = chart.getXYPlot();
         for (PlotScene.Layer layer : scene.layers()) {
             if (layer.curves().isEmpty()) {
                 continue;
@@ -66,10 +65,101 @@ public final class ToolpathChart {
             t.setPaint(new Color(0x1A237E));
             plot.addAnnotation(t, false);
         }
-        JFreeChart chart = new JFreeChart(scene.title().isEmpty() ? null : scene.title(),
-                new Font(Font.SANS_SERIF, Font.BOLD, 13), plot, false);
-        chart.setBackgroundPaint(Color.WHITE);
         return chart;
+    }
+
+    /**
+     * The chart of a scene without its curves: title, named axes, legend and the scene's extent
+     * (what Auto Range fits to). Laid out exactly as {@link #create} lays out the same scene, and
+     * cheap to draw: the plot view keeps one on the event thread for zoom and the mouse.
+     */
+    public static JFreeChart frame(PlotScene scene) {
+        XYSeriesCollection data = new XYSeriesCollection();
+        XYSeries extent = new XYSeries("extent");
+        scene.bounds().ifPresent(b -> {
+            double pad = EqualScale.FIT_MARGIN * Math.max(1e-3, Math.max(b.width(), b.height()));
+            extent.add(b.minX() - pad, b.minY() - pad);
+            extent.add(b.maxX() + pad, b.maxY() + pad);
+        });
+        data.addSeries(extent);
+        NumberAxis x = new NumberAxis(scene.axes().horizontal());
+        NumberAxis y = new NumberAxis(scene.axes().vertical());
+        for (NumberAxis a : List.of(x, y)) {
+            a.setAutoRangeIncludesZero(false);
+            // the extent already holds the margin
+            a.setLowerMargin(0);
+            a.setUpperMargin(0);
+        }
+        XYLineAndShapeRenderer r = new XYLineAndShapeRenderer(false, false);
+        XYPlot plot = new XYPlot(data, x, y, r);
+        plot.setBackgroundPaint(Color.WHITE);
+        plot.setDomainGridlinePaint(new Color(0xE0E0E0));
+        plot.setRangeGridlinePaint(new Color(0xE0E0E0));
+        plot.setDomainPannable(true);
+        plot.setRangePannable(true);
+        // fixed room for the axes: the data area, and so the scale, does not move with the width
+        // of the tick labels while the planner zooms and pans
+        AxisSpace left = new AxisSpace();
+        left.setLeft(AXIS_ROOM_LEFT_PX);
+        plot.setFixedRangeAxisSpace(left);
+        AxisSpace bottom = new AxisSpace();
+        bottom.setBottom(AXIS_ROOM_BOTTOM_PX);
+        plot.setFixedDomainAxisSpace(bottom);
+        LegendItemCollection legend = legend(scene);
+        plot.setFixedLegendItems(legend);
+        JFreeChart chart = new JFreeChart(scene.title().isEmpty() ? null : scene.title(),
+                new Font(Font.SANS_SERIF, Font.BOLD, 13), plot, legend.getItemCount() > 0);
+        chart.setBackgroundPaint(Color.WHITE);
+        if (chart.getLegend() != null) {
+            chart.getLegend().setPosition(RectangleEdge.BOTTOM);
+            chart.getLegend().setFrame(BlockBorder.NONE);
+        }
+        return chart;
+    }
+
+    private static final double AXIS_ROOM_LEFT_PX = 72;
+    private static final double AXIS_ROOM_BOTTOM_PX = 42;
+
+    /**
+     * One legend entry per style drawn, named after its layers: the layer's name when one layer
+     * has the style, the names joined when a few have it, the first and last of many (sizes).
+     */
+    static LegendItemCollection legend(PlotScene scene) {
+        Map<PlotScene.Style, List<String>> names = new LinkedHashMap<>();
+        for (PlotScene.Layer layer : scene.layers()) {
+            if (!layer.curves().isEmpty()) {
+                List<String> l = names.computeIfAbsent(layer.style(), k -> new ArrayList<>());
+                if (!l.contains(layer.name())) {
+                    l.add(layer.name());
+                }
+            }
+        }
+        LegendItemCollection items = new LegendItemCollection();
+        for (Map.Entry<PlotScene.Style, List<String>> e : names.entrySet()) {
+            List<String> l = e.getValue();
+            String label = l.size() <= 3 ? String.join(", ", l) : l.get(0) + " ... " + l.get(l.size() - 1);
+            Style s = style(e.getKey());
+            LegendItem item;
+            if (s.fill != null) {
+                item = new LegendItem(label, null, null, null, new Rectangle2D.Double(-6, -5, 12, 10), s.fill,
+                        s.stroke, s.outline);
+            } else {
+                item = new LegendItem(label, null, null, null, new Line2D.Double(-10, 0, 10, 0), s.stroke,
+                        s.outline);
+            }
+            items.add(item);
+        }
+        return items;
+    }
+
+    /**
+     * The scene as a PNG image at equal scale, fitted to the image: for files written headless.
+     */
+    public static void writePng(PlotScene scene, int widthPx, int heightPx, java.io.OutputStream out)
+            throws java.io.IOException {
+        JFreeChart chart = create(scene);
+        EqualScale.prepare(chart, scene.bounds(), widthPx, heightPx);
+        ChartFiles.writePng(chart, widthPx, heightPx, out);
     }
 
     /** The layer's curves as one Java2D path; consecutive curves that meet are joined. */

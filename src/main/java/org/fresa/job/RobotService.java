@@ -133,6 +133,8 @@ public final class RobotService {
             });
             solved = RobotTrajectoryService.solve(req, progress);
             Timing.mark("trajectory solved");
+            // the inverse kinematics is done; the charts and programs take a while yet
+            progress.progress(-1, "writing the files");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
             o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan));
             Timing.mark("files asked for");

@@ -119,7 +119,10 @@ public final class RobotTrajectoryService {
 
     /** Solves and writes the files; exit status 1 (with the reason) when points are unreachable. */
     public static TaskOutcome run(Request req, OutputFolder out, ProgressMonitor progress) throws IOException {
-        return write(solve(req, progress), "program", out);
+        Solved solved = solve(req, progress);
+        // the inverse kinematics is done; the charts and programs take a while yet
+        progress.progress(-1, "writing the files");
+        return write(solved, "program", out);
     }
 
     /** Places the toolpath in the cell and solves the inverse kinematics of every point. */

@@ -9,7 +9,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.fresa.chart.ChartFiles;
 import org.fresa.chart.PlotScene;
 import org.fresa.chart.ToolpathChart;
 import org.fresa.geom.Contour;
@@ -307,7 +306,7 @@ public final class SoleService {
             }
             out.writeString("size-" + g.name() + ".csv", csv(g));
             PlotScene sc = scene;
-            out.write("sole-" + g.name() + ".png", os -> ChartFiles.writePng(ToolpathChart.create(sc), 1000, 1100, os));
+            out.write("sole-" + g.name() + ".png", os -> ToolpathChart.writePng(sc, 1000, 1100, os));
             perSize.add(m);
         }
         progress.progress(1, "done");

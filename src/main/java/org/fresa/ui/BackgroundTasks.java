@@ -55,6 +55,7 @@ final class BackgroundTasks {
         bar.message.setText(title + "...");
         bar.progress.setValue(0);
         bar.progress.setIndeterminate(true);
+        bar.progress.setStringPainted(false);
         bar.progress.setVisible(true);
         bar.cancel.setVisible(true);
         SwingWorker<T, Object[]> worker = new SwingWorker<>() {
@@ -87,6 +88,9 @@ final class BackgroundTasks {
                 Object[] last = chunks.get(chunks.size() - 1);
                 double f = (Double) last[0];
                 bar.progress.setIndeterminate(f < 0);
+                // a phase of unknown length shows no percentage: the 100 % of the phase before
+                // (a file read) stood on the toolpath planning and the inverse kinematics after it
+                bar.progress.setStringPainted(f >= 0);
                 if (f >= 0) {
                     bar.progress.setValue((int) Math.round(f * 1000));
                 }

@@ -19,7 +19,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
-import javax.swing.filechooser.FileNameExtensionFilter;
+import org.fresa.chart.PlotScene;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.model.CamInputException;
@@ -34,6 +34,7 @@ final class CuttingTab implements ModuleTab {
     private final CuttingViewModel vm = new CuttingViewModel();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
+    private final WarningsPanel warnings = new WarningsPanel("cutting-warnings", 5);
     private final JTextArea program = new JTextArea();
     private final JTextArea totals = new JTextArea("No drawing cut yet.");
     private final JLabel file = new JLabel("(none)");
@@ -110,7 +111,10 @@ final class CuttingTab implements ModuleTab {
 
         JScrollPane text = new JScrollPane(program);
         text.setPreferredSize(new java.awt.Dimension(260, 200));
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plot, text);
+        warnings.onSelect(this::showWarning);
+        JSplitPane plotAndWarnings = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, warnings);
+        plotAndWarnings.setResizeWeight(0.85);
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plotAndWarnings, text);
         split.setResizeWeight(0.75);
         panel.add(new JScrollPane(form), BorderLayout.WEST);
         panel.add(split, BorderLayout.CENTER);
@@ -178,9 +182,9 @@ final class CuttingTab implements ModuleTab {
     }
 
     private void choose() {
-        JFileChooser ch = new JFileChooser();
-        ch.setFileFilter(new FileNameExtensionFilter("DXF drawings", "dxf"));
+        JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.DXF);
         if (ch.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
+            FileChoosers.chosen(ch);
             Path p = ch.getSelectedFile().toPath();
             vm.setDrawing(p);
             file.setText(p.getFileName().toString());
@@ -209,7 +213,20 @@ final class CuttingTab implements ModuleTab {
             program.setDocument(shown.program());
             program.setCaretPosition(0);
             totals.setText(shown.totals());
+            warnings.show(vm.warnings());
         });
+    }
+
+    /** A warning's place in the plot: the view centred on it, a ring around it. */
+    private void showWarning(WarningList.Warning w) {
+        if (w.place().isEmpty()) {
+            return;
+        }
+        PlotScene scene = vm.scene();
+        double size = scene.bounds().map(b -> Math.max(b.width(), b.height())).orElse(100.0);
+        double view = Math.max(5, size / 6);
+        plot.update(scene.withMarker("selected warning", w.place().get(), view / 30));
+        plot.showPlace(w.place().get(), view);
     }
 
     /** A result with what the tab shows of it, prepared off the event thread. */

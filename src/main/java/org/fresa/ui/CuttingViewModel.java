@@ -261,7 +261,21 @@ public final class CuttingViewModel {
         return s;
     }
 
-    /** Contours, pierces, cut and rapid lengths, the estimated time and the warnings, a few lines. */
+    /** Every warning of a result: the drawing's, then the cut plan's (those of the summary, in order). */
+    static WarningList warningsOf(CuttingService.Result result) {
+        List<String> all = new ArrayList<>();
+        for (Object w : (List<?>) CuttingService.summary(result).get("warnings")) {
+            all.add(String.valueOf(w));
+        }
+        return WarningList.of(all);
+    }
+
+    /** The warnings of the last result shown, all of them. */
+    WarningList warnings() {
+        return result == null ? WarningList.none() : warningsOf(result);
+    }
+
+    /** Contours, pierces, cut and rapid lengths, the estimated time and the number of warnings. */
     public String totals() {
         return result == null ? "No drawing cut yet." : totalsOf(result);
     }
@@ -275,8 +289,8 @@ public final class CuttingViewModel {
                 + " about %.0f s; %d not cut, %d warnings", m.get("contours"), m.get("outer"), m.get("inner"),
                 m.get("open"), m.get("pierces"), (Double) m.get("cut_length_mm"), (Double) m.get("rapid_length_mm"),
                 (Long) m.get("rapid_detours"), (Double) m.get("estimated_time_s"), m.get("not_cut"), warnings.size()));
-        for (int i = 0; i < Math.min(3, warnings.size()); i++) {
-            b.append("\n- ").append(warnings.get(i));
+        if (!warnings.isEmpty()) {
+            b.append(" (listed under the plot)");
         }
         return b.toString();
     }

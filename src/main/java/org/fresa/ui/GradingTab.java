@@ -6,8 +6,6 @@ import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
-import java.awt.geom.Point2D;
-import java.awt.geom.Rectangle2D;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
@@ -24,14 +22,11 @@ import javax.swing.JSplitPane;
 import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.JToggleButton;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.table.DefaultTableModel;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradingResult;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
-import org.jfree.chart.ChartPanel;
-import org.jfree.chart.plot.XYPlot;
 
 /**
  * The Grading tab: a base outline, the grading options (origin typed or picked on the plot,
@@ -157,21 +152,13 @@ final class GradingTab implements ModuleTab {
 
     /** Clicks on the plot set the origin while "Pick on plot" is on. */
     private void installPicking() {
-        if (!(plot.getComponent(0) instanceof ChartPanel cp)) {
-            return;
-        }
-        cp.addMouseListener(new MouseAdapter() {
+        plot.chartComponent().addMouseListener(new MouseAdapter() {
             @Override
             public void mouseClicked(MouseEvent e) {
                 if (!pick.isSelected()) {
                     return;
                 }
-                Point2D p = cp.translateScreenToJava2D(e.getPoint());
-                Rectangle2D area = cp.getChartRenderingInfo().getPlotInfo().getDataArea();
-                XYPlot xy = cp.getChart().getXYPlot();
-                double x = xy.getDomainAxis().java2DToValue(p.getX(), area, xy.getDomainAxisEdge());
-                double y = xy.getRangeAxis().java2DToValue(p.getY(), area, xy.getRangeAxisEdge());
-                vm.pickOrigin(new Vec2(x, y));
+                vm.pickOrigin(plot.toPlotMm(e.getPoint()));
                 origin.setText(vm.origin());
                 pick.setSelected(false);
                 tableModel.setRowCount(0);
@@ -206,14 +193,13 @@ final class GradingTab implements ModuleTab {
     }
 
     private void openOutline() {
-        JFileChooser fc = new JFileChooser();
-        fc.setFileFilter(new FileNameExtensionFilter("Fresa contour (*.contour)", "contour"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.OUTLINE);
         vm.outlineFile().ifPresent(p -> fc.setCurrentDirectory(p.getParent().toFile()));
         if (fc.showOpenDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
             return;
         }
         try {
-            vm.openOutline(fc.getSelectedFile().toPath());
+            vm.openOutline(FileChoosers.chosen(fc));
         } catch (CamInputException | java.io.IOException e) {
             Dialogs.error(ctx.owner(), "Open outline", e.getMessage());
             return;
@@ -245,13 +231,12 @@ final class GradingTab implements ModuleTab {
 
     private void export() {
         pushFields();
-        JFileChooser fc = new JFileChooser();
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Folder for the graded sizes");
         if (fc.showSaveDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        Path dir = fc.getSelectedFile().toPath();
+        Path dir = FileChoosers.chosen(fc);
         ctx.tasks().start("Export grading", progress -> vm.export(dir, progress), (TaskOutcome o) ->
                 Dialogs.info(ctx.owner(), "Export grading", "Wrote " + o.files().size() + " files in " + dir));
     }

@@ -106,6 +106,7 @@ public final class MainWindow extends JFrame {
         job.add(item("Run job into folder...", 'R', KeyStroke.getKeyStroke("F5"), this::runJob));
         job.add(item("Cancel running task", 'C', KeyStroke.getKeyStroke("ESCAPE"), tasks::cancel));
         bar.add(job);
+        bar.add(HelpMenu.create(this));
         return bar;
     }
 
@@ -233,13 +234,11 @@ public final class MainWindow extends JFrame {
             Dialogs.info(this, "Export plot", "This tab has no plot to export.");
             return;
         }
-        JFileChooser fc = new JFileChooser();
-        fc.addChoosableFileFilter(new FileNameExtensionFilter("SVG drawing (*.svg)", "svg"));
-        fc.setFileFilter(new FileNameExtensionFilter("PNG image (*.png)", "png"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.PLOT);
         if (fc.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        Path p = fc.getSelectedFile().toPath();
+        Path p = FileChoosers.chosen(fc);
         if (!p.getFileName().toString().contains(".")) {
             boolean svg = fc.getFileFilter().getDescription().startsWith("SVG");
             p = p.resolveSibling(p.getFileName() + (svg ? ".svg" : ".png"));
@@ -253,13 +252,12 @@ public final class MainWindow extends JFrame {
     }
 
     private void runJob() {
-        JFileChooser fc = new JFileChooser();
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Output folder");
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
         if (fc.showDialog(this, "Run here") != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        Path dir = fc.getSelectedFile().toPath();
+        Path dir = FileChoosers.chosen(fc);
         var job = model.job();
         tasks.start("Run " + job.task().id(), pm -> JobRunner.run(job, new OutputFolder(dir), pm), this::showOutcome);
     }

@@ -3,8 +3,8 @@ package org.fresa.ui;
 import java.awt.Color;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
-import java.awt.Insets;
-import java.awt.geom.AffineTransform;
+import java.awt.Dimension;
+import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
@@ -47,73 +47,65 @@ final class OffThreadChartPanel extends ChartPanel {
     private transient BufferedImage image;
     private transient Object imageKey;
     private transient volatile Object pendingKey;
-    private final transient java.lang.reflect.Field zoomRectangle = zoomRectangleField();
+    // the frame ChartPanel copies to the screen, when the last image has another size than the panel
+    private transient BufferedImage frame;
     private transient Runnable onDrawn = () -> {
     };
     private String placeholder;
 
     /** picture is asked on the event thread at every paint; null means nothing to draw. */
     OffThreadChartPanel(JFreeChart chart, Supplier<Picture> picture) {
-        super(chart, false, false, false, true, false);
+        // the off-screen buffer is on: ChartPanel asks paintChartToBuffer for it, which this class
+        // answers with the image drawn in the background
+        super(chart, DEFAULT_WIDTH, DEFAULT_HEIGHT, 10, 10, 8000, 6000, true, false, false, false, true, false);
         this.picture = picture;
-        setMinimumDrawWidth(10);
-        setMinimumDrawHeight(10);
-        setMaximumDrawWidth(8000);
-        setMaximumDrawHeight(6000);
-        // ChartPanel sets its pixel scale in the paintComponent this class replaces; the image is
-        // drawn at the panel's size, so the scale is 1 (left at 0, every mouse point maps to 0)
-        setPrivateDouble("scaleX", 1);
-        setPrivateDouble("scaleY", 1);
-    }
-
-    private void setPrivateDouble(String name, double value) {
-        try {
-            java.lang.reflect.Field f = ChartPanel.class.getDeclaredField(name);
-            f.setAccessible(true);
-            f.setDouble(this, value);
-        } catch (ReflectiveOperationException | RuntimeException e) {
-            throw new IllegalStateException("JFreeChart's ChartPanel has no field " + name, e);
-        }
     }
 
     @Override
     public void paintComponent(Graphics g) {
-        Insets in = getInsets();
-        int w = getWidth() - in.left - in.right;
-        int h = getHeight() - in.top - in.bottom;
-        g.setColor(getBackground());
-        g.fillRect(0, 0, getWidth(), getHeight());
-        Picture p = getChart() == null ? null : picture.get();
-        if (p == null || w < 1 || h < 1) {
-            if (placeholder != null) {
-                g.setColor(Color.GRAY);
-                g.drawString(placeholder, 16, 30);
+        super.paintComponent(g);
+        if (getChart() == null && placeholder != null) {
+            g.setColor(Color.GRAY);
+            g.drawString(placeholder, 16, 30);
+        }
+    }
+
+    /**
+     * Called by ChartPanel's paint on the event thread instead of drawing the chart there: asks
+     * for the picture of the moment to be drawn in the background if it has changed, and gives
+     * the last image drawn. ChartPanel copies it to the screen and draws the zoom rectangle on it.
+     */
+    @Override
+    protected BufferedImage paintChartToBuffer(Graphics2D g2, Dimension bufferSize, Dimension chartSize,
+            Point2D anchor, ChartRenderingInfo info) {
+        int w = chartSize.width;
+        int h = chartSize.height;
+        double scale = g2.getTransform().getScaleX();
+        Picture p = picture.get();
+        if (p != null) {
+            Object key = List.of(p.key(), w, h, scale);
+            if (!key.equals(imageKey) && !key.equals(pendingKey)) {
+                pendingKey = key;
+                DRAWING.execute(() -> draw(p, key, w, h, scale));
             }
-            return;
         }
-        double scale = ((Graphics2D) g).getTransform().getScaleX();
-        Object key = List.of(p.key(), w, h, scale);
-        if (!key.equals(imageKey) && !key.equals(pendingKey)) {
-            pendingKey = key;
-            DRAWING.execute(() -> draw(p, key, w, h, scale));
+        if (image != null && image.getWidth() == bufferSize.width && image.getHeight() == bufferSize.height) {
+            return image;
         }
+        // an older image of another size is shown cropped or padded, copied 1:1, until the new one
+        // is drawn: a scaled copy of a large image took 95 ms on the event thread (Xvfb)
+        if (frame == null || frame.getWidth() != bufferSize.width || frame.getHeight() != bufferSize.height) {
+            frame = new BufferedImage(Math.max(1, bufferSize.width), Math.max(1, bufferSize.height),
+                    BufferedImage.TYPE_INT_RGB);
+        }
+        Graphics2D f = frame.createGraphics();
+        f.setColor(Color.WHITE);
+        f.fillRect(0, 0, frame.getWidth(), frame.getHeight());
         if (image != null) {
-            // always a plain 1:1 copy of device pixels: a scaled or interpolated drawImage of a
-            // large image took 95 ms on the event thread (Xvfb); an older image of another size is
-            // shown cropped or padded for the moment until the new one is drawn
-            Graphics2D g2 = (Graphics2D) g.create();
-            g2.clipRect(in.left, in.top, w, h);
-            if (scale == 1) {
-                g2.drawImage(image, in.left, in.top, null);
-            } else {
-                AffineTransform t = g2.getTransform();
-                g2.setTransform(AffineTransform.getTranslateInstance(
-                        t.getTranslateX() + in.left * scale, t.getTranslateY() + in.top * scale));
-                g2.drawImage(image, 0, 0, null);
-            }
-            g2.dispose();
+            f.drawImage(image, 0, 0, null);
         }
-        drawZoomRectangle((Graphics2D) g);
+        f.dispose();
+        return frame;
     }
 
     /** Runs on the drawing thread. */
@@ -174,31 +166,5 @@ final class OffThreadChartPanel extends ChartPanel {
         Picture p = getChart() == null ? null : picture.get();
         return p == null || image != null && imageKey instanceof List<?> k && k.get(0).equals(p.key())
                 && pendingKey == null;
-    }
-
-    private void drawZoomRectangle(Graphics2D g) {
-        // ChartPanel draws its zoom rectangle in the paintComponent this class replaces
-        Rectangle2D r = null;
-        try {
-            r = zoomRectangle == null ? null : (Rectangle2D) zoomRectangle.get(this);
-        } catch (IllegalAccessException e) {
-            r = null;
-        }
-        if (r != null) {
-            g.setPaint(getZoomFillPaint());
-            g.fill(r);
-            g.setPaint(getZoomOutlinePaint());
-            g.draw(r);
-        }
-    }
-
-    private static java.lang.reflect.Field zoomRectangleField() {
-        try {
-            java.lang.reflect.Field f = ChartPanel.class.getDeclaredField("zoomRectangle");
-            f.setAccessible(true);
-            return f;
-        } catch (ReflectiveOperationException | RuntimeException e) {
-            return null;
-        }
     }
 }

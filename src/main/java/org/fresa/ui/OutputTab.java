@@ -232,13 +232,12 @@ final class OutputTab implements ModuleTab {
                 return;
             }
         }
-        JFileChooser fc = new JFileChooser();
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Save robot programs into folder");
         if (fc.showSaveDialog(ctx.owner()) != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        saveInto(fc.getSelectedFile().toPath());
+        saveInto(FileChoosers.chosen(fc));
     }
 
     void saveInto(Path dir) {

@@ -51,9 +51,9 @@ final class PocketTab implements ModuleTab {
         JButton browse = new JButton("...");
         browse.getAccessibleContext().setAccessibleName("Choose contour file");
         browse.addActionListener(e -> {
-            JFileChooser ch = new JFileChooser(Path.of(contour.getText()).toAbsolutePath().getParent().toFile());
+            JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.POCKET_CONTOUR);
             if (ch.showOpenDialog(panel) == JFileChooser.APPROVE_OPTION) {
-                contour.setText(ch.getSelectedFile().toString());
+                contour.setText(FileChoosers.chosen(ch).toString());
             }
         });
         file.add(browse, BorderLayout.EAST);

@@ -249,7 +249,7 @@ final class PositionTab implements ModuleTab {
                     + f.getName().substring(prefix.length());
             String p = problems.get(key);
             f.setBackground(p == null ? Color.WHITE : new Color(255, 220, 220));
-            f.setToolTipText(p);
+            f.setToolTipText(p != null ? p : Tooltips.of("Position", f.getName()));
         }
     }
 

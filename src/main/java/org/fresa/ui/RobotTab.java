@@ -28,7 +28,6 @@ import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.table.AbstractTableModel;
 import javax.swing.table.DefaultTableCellRenderer;
 import org.fresa.kin.Robot;
@@ -260,10 +259,9 @@ final class RobotTab implements ModuleTab {
     }
 
     private void openFile() {
-        JFileChooser fc = new JFileChooser();
-        fc.setFileFilter(new FileNameExtensionFilter("Robot files (*.xml)", "xml"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.ROBOT);
         if (fc.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            choose(fc.getSelectedFile().toPath().toAbsolutePath().toString());
+            choose(FileChoosers.chosen(fc).toAbsolutePath().toString());
         }
     }
 
@@ -272,11 +270,10 @@ final class RobotTab implements ModuleTab {
             Dialogs.error(ctx.owner(), "Save robot", "Correct the table first: " + vm.messages().get(0));
             return;
         }
-        JFileChooser fc = new JFileChooser();
-        fc.setFileFilter(new FileNameExtensionFilter("Robot files (*.xml)", "xml"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.ROBOT);
         fc.setSelectedFile(new java.io.File(vm.parameter(0) + ".xml"));
         if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            Path f = fc.getSelectedFile().toPath();
+            Path f = FileChoosers.chosen(fc);
             saveAs(f.getFileName().toString().contains(".") ? f : f.resolveSibling(f.getFileName() + ".xml"));
         }
     }
@@ -298,11 +295,10 @@ final class RobotTab implements ModuleTab {
             Dialogs.error(ctx.owner(), "Export symbolic FK", "Correct the table first: " + vm.messages().get(0));
             return;
         }
-        JFileChooser fc = new JFileChooser();
-        fc.setFileFilter(new FileNameExtensionFilter("Text files (*.txt)", "txt"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.TEXT);
         fc.setSelectedFile(new java.io.File(vm.parameter(0) + "-fk.txt"));
         if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            exportSymbolicTo(fc.getSelectedFile().toPath());
+            exportSymbolicTo(FileChoosers.chosen(fc));
         }
     }
 
@@ -375,6 +371,7 @@ final class RobotTab implements ModuleTab {
             int index = i;
             JTextField f = new JTextField(vm.parameter(i), i == 0 ? 12 : 7);
             f.setName("robot-param-" + i);
+            f.setToolTipText(Tooltips.robotParameter(names.get(i)));
             JLabel l = new JLabel(names.get(i) + ":");
             l.setLabelFor(f);
             TextChanges.onChange(f, () -> {
@@ -404,7 +401,7 @@ final class RobotTab implements ModuleTab {
         for (int i = 0; i < paramFields.length; i++) {
             var p = vm.parameterProblem(i);
             paramFields[i].setBackground(p.isPresent() ? BAD : Color.WHITE);
-            paramFields[i].setToolTipText(p.orElse(null));
+            paramFields[i].setToolTipText(p.orElse(Tooltips.robotParameter(vm.parameterNames().get(i))));
         }
         String c = vm.choice();
         boolean builtIn = RobotViewModel.builtIns().contains(c);

@@ -49,6 +49,7 @@ final class SoleTab implements ModuleTab {
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final PlotPanel preview = new PlotPanel();
+    private final WarningsPanel problems = new WarningsPanel("sole-problems", 3);
     private final JList<String> library;
     private final JTextArea info = new JTextArea(9, 22);
     private final JComboBox<String> sizes = new JComboBox<>();
@@ -152,7 +153,10 @@ final class SoleTab implements ModuleTab {
         JPanel right = new JPanel(new BorderLayout());
         right.add(top, BorderLayout.NORTH);
         right.add(plot, BorderLayout.CENTER);
-        right.add(bottom, BorderLayout.SOUTH);
+        JPanel south = new JPanel(new BorderLayout());
+        south.add(bottom, BorderLayout.NORTH);
+        south.add(problems, BorderLayout.CENTER);
+        right.add(south, BorderLayout.SOUTH);
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right), BorderLayout.CENTER);
         installPlotEditing();
         ctx.model().addListener(e -> {
@@ -356,11 +360,10 @@ final class SoleTab implements ModuleTab {
     }
 
     private void chooseFolder() {
-        JFileChooser fc = new JFileChooser();
-        fc.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.FOLDER);
         fc.setDialogTitle("Output folder of the sole programs");
         if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            outFolder.setText(fc.getSelectedFile().getAbsolutePath());
+            outFolder.setText(FileChoosers.chosen(fc).toAbsolutePath().toString());
         }
     }
 
@@ -373,7 +376,8 @@ final class SoleTab implements ModuleTab {
         Path folder = Path.of(f);
         ctx.tasks().start("Generating the sole programs", pm -> vm.generate(folder, pm), outcome -> {
             status.setText(outcome.files().size() + " files written to " + folder
-                    + (outcome.problems().isEmpty() ? "" : "; " + outcome.problems().get(0)));
+                    + (outcome.problems().isEmpty() ? "" : "; " + outcome.problems().size() + " problems listed below"));
+            problems.show(WarningList.of(outcome.problems()));
         });
     }
 

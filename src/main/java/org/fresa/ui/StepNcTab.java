@@ -23,7 +23,6 @@ import javax.swing.JTextArea;
 import javax.swing.JTree;
 import javax.swing.Timer;
 import javax.swing.TransferHandler;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
@@ -49,6 +48,7 @@ final class StepNcTab implements ModuleTab {
     private final JTree tree = new JTree(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
     private final JTextArea details = new JTextArea(14, 40);
     private final PlotPanel plot = new PlotPanel();
+    private final WarningsPanel problems = new WarningsPanel("stepnc-problems", 4);
     private final JComboBox<String> layers = new JComboBox<>();
     private final JSlider replay = new JSlider(0, StepNcViewModel.REPLAY_STEPS, StepNcViewModel.REPLAY_STEPS);
     private final JButton play = new JButton("Play");
@@ -87,6 +87,8 @@ final class StepNcTab implements ModuleTab {
         JPanel left = new JPanel(new BorderLayout());
         left.add(treeLabel, BorderLayout.NORTH);
         left.add(new JScrollPane(tree), BorderLayout.CENTER);
+        problems.onSelect(this::showProblem);
+        left.add(problems, BorderLayout.SOUTH);
 
         details.setEditable(false);
         details.setName("stepnc-details");
@@ -214,11 +216,9 @@ final class StepNcTab implements ModuleTab {
     }
 
     private void choose() {
-        JFileChooser fc = new JFileChooser(ctx.model().job().stepnc().map(s -> s.file().getParent())
-                .map(Path::toFile).orElse(null));
-        fc.setFileFilter(new FileNameExtensionFilter("STEP-NC Part 21 (*.stp, *.step, *.p21)", "stp", "step", "p21"));
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.STEPNC);
         if (fc.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            open(fc.getSelectedFile().toPath());
+            open(FileChoosers.chosen(fc));
         }
     }
 
@@ -252,6 +252,7 @@ final class StepNcTab implements ModuleTab {
             StepNcProgram program = loaded.program();
             vm.load(program);
             vm.planned(loaded.plan(), loaded.time());
+            problems.show(vm.problems());
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
@@ -284,6 +285,23 @@ final class StepNcTab implements ModuleTab {
             d.add(toSwing(c));
         }
         return d;
+    }
+
+    /** Selects the workingstep a planning problem names, so that its details and plot show. */
+    private void showProblem(WarningList.Warning w) {
+        vm.workingstepNamedIn(w.text()).ifPresent(ws -> {
+            java.util.Enumeration<javax.swing.tree.TreeNode> all = ((DefaultMutableTreeNode) tree.getModel().getRoot())
+                    .breadthFirstEnumeration();
+            while (all.hasMoreElements()) {
+                if (all.nextElement() instanceof DefaultMutableTreeNode d && d.getUserObject() instanceof StepNcViewModel.Node n
+                        && n.workingstep().equals(Optional.of(ws))) {
+                    TreePath path = new TreePath(d.getPath());
+                    tree.setSelectionPath(path);
+                    tree.scrollPathToVisible(path);
+                    return;
+                }
+            }
+        });
     }
 
     private void selectionChanged() {

@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.TreeSet;
 import org.fresa.chart.PlotScene;
+import org.fresa.chart.ViewPlane;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
@@ -128,6 +129,26 @@ final class StepNcViewModel {
         plan = Optional.of(Objects.requireNonNull(p));
         layer = 0;
         replay = REPLAY_STEPS;
+    }
+
+    /** Every problem of the toolpath planning (workingsteps not planned, parts of them not milled). */
+    WarningList problems() {
+        return WarningList.of(plan.map(ToolpathPlanner.Plan::problems).orElse(List.of()));
+    }
+
+    /**
+     * The workingstep a problem's text names: by its instance ("(#123)") or, failing that, by its
+     * name in quotes ("workingstep 'WS FINISH POCKET1'").
+     */
+    Optional<MachiningWorkingstep> workingstepNamedIn(String text) {
+        if (program.isEmpty()) {
+            return Optional.empty();
+        }
+        List<MachiningWorkingstep> all = program.get().workingsteps();
+        Optional<MachiningWorkingstep> byInstance = all.stream()
+                .filter(ws -> text.contains("(#" + ws.instanceId() + ")")).findFirst();
+        return byInstance.isPresent() ? byInstance
+                : all.stream().filter(ws -> text.contains("'" + ws.id() + "'")).findFirst();
     }
 
     Optional<ToolpathPlanner.Plan> plan() {
@@ -448,7 +469,7 @@ final class StepNcViewModel {
      * The moves seen along the dropped axis, rapids and feeds apart; arcs about the view axis as
      * arcs (full turns as circles), other arcs as chords.
      */
-    static void drawMoves(Vec3 start, List<Move> moves, int drop, List<Curve2> feeds, List<Curve2> rapids) {
+    static void drawMoves(Vec3 start, List<Move> moves, ViewPlane drop, List<Curve2> feeds, List<Curve2> rapids) {
         Vec3 at = start;
         for (Move m : moves) {
             (m instanceof Move.Rapid ? rapids : feeds).addAll(curvesOf(at, m, drop, 1));
@@ -457,21 +478,19 @@ final class StepNcViewModel {
     }
 
     /** The part [0, fraction] of one move, in the view plane. */
-    static List<Curve2> curvesOf(Vec3 from, Move m, int drop, double fraction) {
+    static List<Curve2> curvesOf(Vec3 from, Move m, ViewPlane drop, double fraction) {
         List<Curve2> out = new ArrayList<>();
         if (fraction <= 0) {
             return out;
         }
         if (m instanceof Move.Circular c) {
             ArcGeometry g = ArcGeometry.of(from, c);
-            Vec3 axis = drop == 0 ? Vec3.UNIT_X : drop == 1 ? Vec3.UNIT_Y : Vec3.UNIT_Z;
-            double along = c.normal().dot(axis);
+            double along = c.normal().dot(drop.viewAxis());
             if (Math.abs(Math.abs(along) - 1) < 1e-9 && g.radiusMm() > 0) {
-                // (y, z) and (x, y) keep the sense about +x and +z; (x, z) reverses the sense about +y
-                double sense = Math.signum(along) * (drop == 1 ? -1 : 1);
+                double sense = Math.signum(along) * (drop.keepsSense() ? 1 : -1);
                 double sweep = g.sweepRad() * fraction * sense;
-                Vec2 center = project(c.center(), drop);
-                double a0 = project(from, drop).minus(center).angleRad();
+                Vec2 center = drop.project(c.center());
+                double a0 = drop.project(from).minus(center).angleRad();
                 double r = g.radiusMm();
                 double left = sweep;
                 while (Math.abs(left) > 1e-12) {
@@ -487,9 +506,9 @@ final class StepNcViewModel {
                 }
                 return out;
             }
-            Vec2 a = project(from, drop);
+            Vec2 a = drop.project(from);
             for (Vec3 q : g.points(CHORD_MM)) {
-                Vec2 b = project(q, drop);
+                Vec2 b = drop.project(q);
                 if (!a.equals(b)) {
                     out.add(Segment2.of(a, b));
                 }
@@ -497,9 +516,9 @@ final class StepNcViewModel {
             }
             if (fraction < 1) {
                 // chords up to the replay point only
-                Vec2 end = project(g.pointAt(fraction), drop);
+                Vec2 end = drop.project(g.pointAt(fraction));
                 List<Curve2> cut = new ArrayList<>();
-                Vec2 p0 = project(from, drop);
+                Vec2 p0 = drop.project(from);
                 int keep = (int) Math.floor(out.size() * fraction);
                 cut.addAll(out.subList(0, Math.min(keep, out.size())));
                 Vec2 last = cut.isEmpty() ? p0 : cut.get(cut.size() - 1).end();
@@ -510,8 +529,8 @@ final class StepNcViewModel {
             }
             return out;
         }
-        Vec2 a = project(from, drop);
-        Vec2 b = project(pointOn(from, m, fraction), drop);
+        Vec2 a = drop.project(from);
+        Vec2 b = drop.project(pointOn(from, m, fraction));
         if (!a.equals(b)) {
             out.add(Segment2.of(a, b));
         }
@@ -688,9 +707,8 @@ final class StepNcViewModel {
         if (program.isEmpty()) {
             return PlotScene.empty("STEP-NC");
         }
-        int drop = selected.map(ws -> dominant(ws.feature().axis())).orElse(2);
-        String[] names = {"Side view (YZ)", "Front view (XZ)", "Top view (XY)"};
-        PlotScene scene = PlotScene.empty(names[drop]);
+        ViewPlane drop = selected.map(ws -> ViewPlane.along(ws.feature().axis())).orElse(ViewPlane.TOP_XY);
+        PlotScene scene = PlotScene.empty(drop.title()).withAxes(drop.axes());
         for (Workpiece w : program.get().workpieces()) {
             if (w.block().isPresent()) {
                 Workpiece.Block b = w.block().get();
@@ -698,7 +716,7 @@ final class StepNcViewModel {
                 for (int i = 0; i < 8; i++) {
                     Vec3 c = b.placement().applyToPoint(new Vec3((i & 1) * b.xMm(), ((i >> 1) & 1) * b.yMm(),
                             ((i >> 2) & 1) * b.zMm()));
-                    pts.add(project(c, drop));
+                    pts.add(drop.project(c));
                 }
                 scene = scene.with(new PlotScene.Layer("block '" + w.id() + "'", PlotScene.Style.AUX,
                         box(pts)));
@@ -712,13 +730,13 @@ final class StepNcViewModel {
                         outline));
             }
             scene = withToolpath(scene, drop);
-            scene = scene.withLabel(project(f.location(), drop), f.id());
+            scene = scene.withLabel(drop.project(f.location()), f.id());
         }
         return scene;
     }
 
     /** The shown moves (rapid, feed), the path travelled up to the replay point, and the tool there. */
-    private PlotScene withToolpath(PlotScene scene, int drop) {
+    private PlotScene withToolpath(PlotScene scene, ViewPlane drop) {
         Optional<Shown> sh = shown();
         if (sh.isEmpty()) {
             return scene;
@@ -738,12 +756,12 @@ final class StepNcViewModel {
         }
         String title = scene.title() + ": " + selected.get().id() + (layer == 0 ? "" : ", layer " + layer + " of "
                 + layers().size());
-        PlotScene out = new PlotScene(title, scene.layers(), scene.labels())
+        PlotScene out = scene.withTitle(title)
                 .with(new PlotScene.Layer("rapid", PlotScene.Style.RAPID, rapids))
                 .with(new PlotScene.Layer("feed", PlotScene.Style.FEED, feeds))
                 .with(new PlotScene.Layer("travelled", PlotScene.Style.FINISH, done));
         double radius = section().map(ToolpathSection::toolDiameterMm).orElse(0.0) / 2;
-        Vec2 tool = project(r.position(), drop);
+        Vec2 tool = drop.project(r.position());
         List<Curve2> marker = new ArrayList<>();
         if (radius > 0) {
             marker.add(Arc2.circle(tool, radius, true));
@@ -755,11 +773,11 @@ final class StepNcViewModel {
     }
 
     /** The feature outline in the view plane; empty when the profile is not drawable. */
-    static List<Curve2> outline(Feature f, int drop) {
+    static List<Curve2> outline(Feature f, ViewPlane drop) {
         List<Curve2> out = new ArrayList<>();
         Transform3 frame = f.placement();
         if (f.type() == Feature.FeatureType.ROUND_HOLE && f.diameterMm().isPresent()) {
-            Vec2 c = project(frame.translationPart(), drop);
+            Vec2 c = drop.project(frame.translationPart());
             out.add(Arc2.circle(c, f.diameterMm().getAsDouble() / 2, true));
             return out;
         }
@@ -778,8 +796,8 @@ final class StepNcViewModel {
                     .times(c.distanceMm().orElse(0));
             List<Vec3> corners = List.of(p0, p0.plus(a), p0.plus(a).plus(b), p0.plus(b), p0);
             for (int i = 0; i + 1 < corners.size(); i++) {
-                Vec2 u = project(frame.applyToPoint(corners.get(i)), drop);
-                Vec2 w = project(frame.applyToPoint(corners.get(i + 1)), drop);
+                Vec2 u = drop.project(frame.applyToPoint(corners.get(i)));
+                Vec2 w = drop.project(frame.applyToPoint(corners.get(i + 1)));
                 if (u.distance(w) > 0) {
                     out.add(Segment2.of(u, w));
                 }
@@ -795,7 +813,7 @@ final class StepNcViewModel {
             }
             return out;
         } else if (p instanceof Profile.Circular c) {
-            out.add(Arc2.circle(project(t.translationPart(), drop), c.diameterMm() / 2, true));
+            out.add(Arc2.circle(drop.project(t.translationPart()), c.diameterMm() / 2, true));
             return out;
         } else if (p instanceof Profile.Ngon g) {
             double r = g.circumscribed() ? g.diameterMm() / 2 / Math.cos(Math.PI / g.sides()) : g.diameterMm() / 2;
@@ -806,8 +824,8 @@ final class StepNcViewModel {
             }
         } else if (p instanceof Profile.General g) {
             for (Profile.Segment s : g.segments()) {
-                Vec2 a = project(t.applyToPoint(s.start()), drop);
-                Vec2 b = project(t.applyToPoint(s.end()), drop);
+                Vec2 a = drop.project(t.applyToPoint(s.start()));
+                Vec2 b = drop.project(t.applyToPoint(s.end()));
                 if (a.distance(b) > 0) {
                     out.add(Segment2.of(a, b));
                 }
@@ -815,8 +833,8 @@ final class StepNcViewModel {
             return out;
         }
         for (int i = 0; i + 1 < local.size(); i++) {
-            Vec2 a = project(t.applyToPoint(local.get(i)), drop);
-            Vec2 b = project(t.applyToPoint(local.get(i + 1)), drop);
+            Vec2 a = drop.project(t.applyToPoint(local.get(i)));
+            Vec2 b = drop.project(t.applyToPoint(local.get(i + 1)));
             if (a.distance(b) > 0) {
                 out.add(Segment2.of(a, b));
             }
@@ -828,27 +846,26 @@ final class StepNcViewModel {
      * A curve of a profile's own plane placed by {@code t} and seen along the dropped axis: an
      * arc stays an arc when the plane faces the view, else it becomes chords.
      */
-    private static List<Curve2> placed(Curve2 c, Transform3 t, int drop) {
+    private static List<Curve2> placed(Curve2 c, Transform3 t, ViewPlane drop) {
         List<Curve2> out = new ArrayList<>();
         if (c instanceof Arc2 a) {
-            Vec3 axis = drop == 0 ? Vec3.UNIT_X : drop == 1 ? Vec3.UNIT_Y : Vec3.UNIT_Z;
-            double along = t.zAxis().dot(axis);
+            double along = t.zAxis().dot(drop.viewAxis());
             if (Math.abs(Math.abs(along) - 1) < 1e-9) {
-                boolean keep = (along > 0) == (drop != 1);
-                out.add(new Arc2(project(t.applyToPoint(Vec3.of(a.center(), 0)), drop),
-                        project(t.applyToPoint(Vec3.of(a.start(), 0)), drop),
-                        project(t.applyToPoint(Vec3.of(a.end(), 0)), drop), keep == a.ccw()));
+                boolean keep = (along > 0) == drop.keepsSense();
+                out.add(new Arc2(drop.project(t.applyToPoint(Vec3.of(a.center(), 0))),
+                        drop.project(t.applyToPoint(Vec3.of(a.start(), 0))),
+                        drop.project(t.applyToPoint(Vec3.of(a.end(), 0))), keep == a.ccw()));
                 return out;
             }
             int n = 16;
             for (int i = 0; i < n; i++) {
-                out.add(Segment2.of(project(t.applyToPoint(Vec3.of(a.pointAt((double) i / n), 0)), drop),
-                        project(t.applyToPoint(Vec3.of(a.pointAt((double) (i + 1) / n), 0)), drop)));
+                out.add(Segment2.of(drop.project(t.applyToPoint(Vec3.of(a.pointAt((double) i / n), 0))),
+                        drop.project(t.applyToPoint(Vec3.of(a.pointAt((double) (i + 1) / n), 0)))));
             }
             return out;
         }
-        Vec2 u = project(t.applyToPoint(Vec3.of(c.start(), 0)), drop);
-        Vec2 w = project(t.applyToPoint(Vec3.of(c.end(), 0)), drop);
+        Vec2 u = drop.project(t.applyToPoint(Vec3.of(c.start(), 0)));
+        Vec2 w = drop.project(t.applyToPoint(Vec3.of(c.end(), 0)));
         if (u.distance(w) > 0) {
             out.add(Segment2.of(u, w));
         }
@@ -863,25 +880,6 @@ final class StepNcViewModel {
         double y1 = b.maxY();
         return List.of(Segment2.of(x0, y0, x1, y0), Segment2.of(x1, y0, x1, y1), Segment2.of(x1, y1, x0, y1),
                 Segment2.of(x0, y1, x0, y0));
-    }
-
-    /** 0, 1 or 2: the coordinate the axis mostly points along (the one a view along it drops). */
-    static int dominant(Vec3 axis) {
-        double ax = Math.abs(axis.x());
-        double ay = Math.abs(axis.y());
-        double az = Math.abs(axis.z());
-        if (az >= ax && az >= ay) {
-            return 2;
-        }
-        return ay >= ax ? 1 : 0;
-    }
-
-    static Vec2 project(Vec3 p, int drop) {
-        return switch (drop) {
-            case 0 -> new Vec2(p.y(), p.z());
-            case 1 -> new Vec2(p.x(), p.z());
-            default -> new Vec2(p.x(), p.y());
-        };
     }
 
     private static String n(double d) {

@@ -9,7 +9,7 @@ final class Tabs {
 
     static List<ModuleTab> create(AppContext ctx) {
         RobotRunModel runs = new RobotRunModel();
-        return List.of(
+        List<ModuleTab> tabs = List.of(
                 new StepNcTab(ctx),
                 new PositionTab(ctx, runs),
                 new RobotTab(ctx),
@@ -18,5 +18,9 @@ final class Tabs {
                 new GradingTab(ctx),
                 new SoleTab(ctx),
                 new OutputTab(ctx, runs));
+        for (ModuleTab t : tabs) {
+            Tooltips.install(t.title(), t.component());
+        }
+        return tabs;
     }
 }

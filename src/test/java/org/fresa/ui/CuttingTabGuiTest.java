@@ -65,4 +65,52 @@ class CuttingTabGuiTest extends WindowGuiTest {
         org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
         cut(p, "cutting-pumpenteile.png");
     }
+
+    @Test
+    @CorpusCheck
+    void everyWarningIsListedAndAClickShowsItsPlaceInThePlot() {
+        Path p = TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(p), "corpus absent");
+        cut(p, "cutting-pumpenteile.png");
+        org.assertj.swing.fixture.JListFixture list = window.list("cutting-warnings");
+        String[] rows = list.contents();
+        String totals = GuiActionRunner.execute(() -> window.textBox("cutting-totals").target().getText());
+        java.util.regex.Matcher counted = java.util.regex.Pattern.compile("(\\d+) warnings").matcher(totals);
+        assertTrue(counted.find(), totals);
+        // every warning the totals count is in the list (the tab used to show 3 of 32)
+        assertEquals(Integer.parseInt(counted.group(1)), rows.length);
+        assertTrue(rows.length > 20, rows.length + " warnings");
+        int placed = java.util.stream.IntStream.range(0, rows.length)
+                .filter(i -> WarningList.placeIn(rows[i]).isPresent() && !rows[i].contains("open chain"))
+                .findFirst().orElseThrow();
+        org.fresa.geom.Vec2 place = WarningList.placeIn(rows[placed]).orElseThrow();
+        list.clickItem(placed);
+        PlotPanel plot = window.robot().finder().find(new org.assertj.swing.core.GenericTypeMatcher<PlotPanel>(
+                PlotPanel.class, true) {
+            @Override
+            protected boolean isMatching(PlotPanel c) {
+                return true;
+            }
+        });
+        Pause.pause(new Condition("the plot is drawn") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> plot.isDrawn());
+            }
+        }, Timeout.timeout(20_000));
+        org.fresa.geom.Box2 view = GuiActionRunner.execute(() -> plot.view());
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertTrue(view.contains(place), "the place " + place + " in view: " + view),
+                () -> assertTrue(view.width() < 80, "zoomed to the place: " + view),
+                () -> assertTrue(GuiActionRunner.execute(() -> plot.scene().layers().stream()
+                        .anyMatch(l -> l.name().equals("selected warning"))), "the place is marked"),
+                () -> assertEquals(1, GuiActionRunner.execute(() -> plot.shownAspect()), 0.01));
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        try {
+            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", "cutting-warning-place.png").toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
 }

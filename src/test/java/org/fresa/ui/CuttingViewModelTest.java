@@ -46,6 +46,25 @@ class CuttingViewModelTest {
     }
 
     @Test
+    @org.fresa.testing.CorpusCheck
+    void everyWarningOfADrawingIsListedWithItsPlace() throws Exception {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(org.fresa.testing.TestInputs.DXF_CORPUS.resolve("dxf2gcode/pumpenteile.dxf"));
+        CuttingService.Result r = CuttingService.compute(vm.settings(), ProgressMonitor.NONE);
+        vm.setResult(r);
+        WarningList w = vm.warnings();
+        java.util.List<?> summary = (java.util.List<?>) CuttingService.summary(r).get("warnings");
+        org.junit.jupiter.api.Assertions.assertAll(
+                // 32 on the drawing in 2026-12 (18 contours not cut); the tab listed 3 of them
+                () -> assertTrue(w.size() > 20, w.size() + " warnings"),
+                () -> assertEquals(summary, w.all().stream().map(WarningList.Warning::text).toList()),
+                () -> assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(23, 109)), w.all().stream()
+                        .filter(x -> x.text().startsWith("open chain")).findFirst().orElseThrow().place()),
+                () -> assertEquals(java.util.Optional.empty(), w.all().get(0).place()),
+                () -> assertTrue(w.heading().startsWith(w.size() + " warnings"), w.heading()));
+    }
+
+    @Test
     void aJobSavedFromTheTabRunsWithFresaRun(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         CuttingViewModel vm = new CuttingViewModel();
         vm.setDrawing(Path.of("samples/cutting/plate.dxf").toAbsolutePath());

@@ -80,6 +80,33 @@ class StepNcViewModelTest {
     }
 
     @Test
+    void theFrontViewNamesItsAxesXAndZ() throws Exception {
+        StepNcViewModel vm = loaded("example2.stp");
+        vm.select(Optional.of(vm.program().orElseThrow().workingsteps().get(11)));
+        PlotScene s = vm.plot();
+        assertAll(
+                () -> assertEquals("x (mm)", s.axes().horizontal()),
+                () -> assertEquals("z (mm)", s.axes().vertical()),
+                () -> assertEquals("z (mm)", org.fresa.chart.ToolpathChart.frame(s).getXYPlot().getRangeAxis().getLabel()));
+    }
+
+    @Test
+    void everyPlanningProblemIsListedAndNamesItsWorkingstep() throws Exception {
+        StepNcViewModel vm = loaded("iso14649-11-example1.stp");
+        StepNcProgram p = vm.program().orElseThrow();
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+        vm.planned(plan);
+        MachiningWorkingstep ws = p.workingsteps().get(1);
+        assertAll(
+                () -> assertEquals(plan.problems(), vm.problems().all().stream().map(WarningList.Warning::text).toList()),
+                () -> assertEquals(Optional.of(ws), vm.workingstepNamedIn("workingstep 'x' (#" + ws.instanceId()
+                        + "): no tool")),
+                () -> assertEquals(Optional.of(ws), vm.workingstepNamedIn("workingstep '" + ws.id()
+                        + "': read but not in the moves: depth")),
+                () -> assertEquals(Optional.empty(), vm.workingstepNamedIn("3 workingsteps: feed from the tool")));
+    }
+
+    @Test
     void theTopPocketIsDrawnAsItsRoundedRectangle() throws Exception {
         StepNcViewModel vm = loaded("example2.stp");
         vm.select(Optional.of(vm.program().orElseThrow().workingsteps().get(8)));
