@@ -35,6 +35,9 @@ public final class MainWindow extends JFrame {
     private final transient BackgroundTasks tasks;
     private final transient List<ModuleTab> moduleTabs;
     private final JMenu recentMenu = new JMenu("Recent jobs");
+    private final transient RobotRunModel runs = new RobotRunModel();
+    private final JMenuItem undoItem = item("Undo", 'U', KeyStroke.getKeyStroke("ctrl Z"), this::undo);
+    private final JMenuItem redoItem = item("Redo", 'R', KeyStroke.getKeyStroke("ctrl Y"), this::redo);
 
     MainWindow(MainViewModel model) {
         super("Fresa");
@@ -48,7 +51,13 @@ public final class MainWindow extends JFrame {
                 quit();
             }
         });
-        moduleTabs = Tabs.create(new AppContext(model, tasks, this));
+        // results belong to the document: New and Open drop them before the tabs show the new job
+        model.addListener(e -> {
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())) {
+                runs.clear();
+            }
+        });
+        moduleTabs = Tabs.create(new AppContext(model, tasks, this, runs));
         tabs.setName("tabs");
         for (int i = 0; i < moduleTabs.size(); i++) {
             ModuleTab t = moduleTabs.get(i);
@@ -63,13 +72,34 @@ public final class MainWindow extends JFrame {
         setMinimumSize(new Dimension(800, 560));
         pack();
         setLocationRelativeTo(null);
-        model.addListener(e -> updateTitle());
+        model.addListener(e -> {
+            updateTitle();
+            updateHistory();
+        });
         updateTitle();
+        updateHistory();
     }
 
     private void updateTitle() {
         setTitle(model.file().isEmpty() && !model.isDirty() && "untitled".equals(model.job().name())
                 ? "Fresa" : model.title());
+    }
+
+    private void updateHistory() {
+        undoItem.setEnabled(model.canUndo());
+        redoItem.setEnabled(model.canRedo());
+    }
+
+    private void undo() {
+        if (model.undo()) {
+            status.message.setText("Undone");
+        }
+    }
+
+    private void redo() {
+        if (model.redo()) {
+            status.message.setText("Redone");
+        }
     }
 
     private JMenuBar menuBar() {
@@ -101,6 +131,22 @@ public final class MainWindow extends JFrame {
         file.addSeparator();
         file.add(item("Quit", 'Q', KeyStroke.getKeyStroke("ctrl Q"), this::quit));
         bar.add(file);
+        JMenu edit = new JMenu("Edit");
+        edit.setMnemonic('E');
+        edit.add(undoItem);
+        edit.add(redoItem);
+        // Ctrl+Shift+Z redoes too, as in most editors
+        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(
+                KeyStroke.getKeyStroke("ctrl shift Z"), "fresa-redo");
+        getRootPane().getActionMap().put("fresa-redo", new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                redo();
+            }
+        });
+        bar.add(edit);
         JMenu job = new JMenu("Job");
         job.setMnemonic('J');
         job.add(item("Run job into folder...", 'R', KeyStroke.getKeyStroke("F5"), this::runJob));
@@ -261,7 +307,15 @@ public final class MainWindow extends JFrame {
         }
         Path dir = fc.getSelectedFile().toPath();
         var job = model.job();
-        tasks.start("Run " + job.task().id(), pm -> JobRunner.run(job, new OutputFolder(dir), pm), this::showOutcome);
+        int generation = model.generation();
+        tasks.start("Run " + job.task().id(), pm -> JobRunner.run(job, new OutputFolder(dir), pm), o -> {
+            // the programs of this run are the job's, unless another job was opened meanwhile
+            if (generation == model.generation() && job.task() == org.fresa.job.JobTask.ROBOT
+                    && job.robot().isPresent()) {
+                runs.setWritten(new RobotRunModel.Written(job.robot().get().robot(), dir, o.files()));
+            }
+            showOutcome(o);
+        });
     }
 
     private void showOutcome(TaskOutcome o) {

@@ -44,6 +44,8 @@ final class OutputTab implements ModuleTab {
 
     private static final int[] KEYS = {KeyEvent.VK_V, KeyEvent.VK_X, KeyEvent.VK_A, KeyEvent.VK_K, KeyEvent.VK_N};
 
+    static final String NONE = "No programs for this job yet: press Compute in the Position tab, or run the job (F5).";
+
     private final AppContext ctx;
     private final RobotRunModel runs;
     private final OutputViewModel vm = new OutputViewModel();
@@ -52,7 +54,7 @@ final class OutputTab implements ModuleTab {
     private final JTextPane text = new JTextPane();
     private final JLabel image = new JLabel();
     private final JPanel previewCards = new JPanel(new CardLayout());
-    private final JLabel status = new JLabel("Nothing computed yet: press Compute in the Position tab.");
+    private final JLabel status = new JLabel(NONE);
     // a new result is previewed when the tab is shown, so that computing does not also write a preview
     private boolean stale;
 
@@ -113,14 +115,7 @@ final class OutputTab implements ModuleTab {
         panel.add(left, BorderLayout.WEST);
         panel.add(right, BorderLayout.CENTER);
         panel.add(status, BorderLayout.SOUTH);
-        runs.addListener(r -> {
-            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
-                    + r.solved().result().points().size() + " points");
-            stale = true;
-            if (panel.isShowing()) {
-                preview();
-            }
-        });
+        runs.addListener(this::runsChanged);
         panel.addHierarchyListener(e -> {
             if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
                     && stale) {
@@ -154,22 +149,53 @@ final class OutputTab implements ModuleTab {
                 new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats()))));
     }
 
+    /** New programs (or none): the status says which, the preview follows when the tab is shown. */
+    private void runsChanged() {
+        if (runs.last().isPresent()) {
+            RobotRunModel.Run r = runs.last().get();
+            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
+                    + r.solved().result().points().size() + " points");
+        } else if (runs.written().isPresent()) {
+            RobotRunModel.Written w = runs.written().get();
+            status.setText("Programs the run on " + w.robot() + " wrote into " + w.folder());
+        } else {
+            status.setText(NONE);
+        }
+        stale = true;
+        if (runs.isEmpty()) {
+            showNothing();
+        } else if (panel.isShowing()) {
+            preview();
+        }
+    }
+
+    private void showNothing() {
+        stale = false;
+        showText("");
+        image.setIcon(null);
+        ((CardLayout) previewCards.getLayout()).show(previewCards, "text");
+    }
+
     private void preview() {
-        if (runs.last().isEmpty()) {
+        if (runs.isEmpty()) {
+            showNothing();
             return;
         }
-        RobotRunModel.Run run = runs.last().get();
+        RobotRunModel.Run run = runs.last().orElse(null);
+        RobotRunModel.Written written = runs.written().orElse(null);
         String format = vm.previewed();
         ctx.tasks().start("Preview " + format, progress -> {
+            if (written != null) {
+                Path f = written.file(OutputViewModel.fileOf(format)).orElse(null);
+                if (f == null || !Files.isRegularFile(f)) {
+                    return (Object) ("The run wrote no " + OutputViewModel.fileOf(format)
+                            + ": tick the format in this tab and run the job again.");
+                }
+                return shown(f, format);
+            }
             Path scratch = Files.createTempDirectory("fresa-preview");
             try {
-                Path f = OutputViewModel.previewFile(run, format, scratch);
-                if (format.equals("png")) {
-                    return (Object) ImageIO.read(f.toFile());
-                }
-                String s = Files.readString(f, StandardCharsets.UTF_8);
-                // a preview of a long program shows its beginning; Save writes all of it
-                return (Object) (s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s);
+                return shown(OutputViewModel.previewFile(run, format, scratch), format);
             } finally {
                 deleteTree(scratch);
             }
@@ -184,6 +210,16 @@ final class OutputTab implements ModuleTab {
                 cards.show(previewCards, "text");
             }
         });
+    }
+
+    /** The picture or the text of a file to preview. */
+    private static Object shown(Path f, String format) throws IOException {
+        if (format.equals("png")) {
+            return ImageIO.read(f.toFile());
+        }
+        String s = Files.readString(f, StandardCharsets.UTF_8);
+        // a preview of a long program shows its beginning; Save writes all of it
+        return s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s;
     }
 
     private void showText(String s) {
@@ -206,6 +242,10 @@ final class OutputTab implements ModuleTab {
 
     private void save() {
         String problem = vm.saveProblem(runs.last().isPresent());
+        if (runs.last().isEmpty() && runs.written().isPresent()) {
+            problem = "The run wrote its programs into " + runs.written().get().folder()
+                    + " already: press Compute in the Position tab to save them elsewhere.";
+        }
         if (!problem.isEmpty()) {
             Dialogs.error(ctx.owner(), "Save", problem);
             return;
