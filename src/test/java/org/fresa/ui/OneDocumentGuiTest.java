@@ -162,6 +162,82 @@ class OneDocumentGuiTest extends WindowGuiTest {
         assertEquals(edited, model().job());
     }
 
+    @Test
+    void aJobSavedWithSeveralModulesRunsTheTickedOnesOnly() throws Exception {
+        open(EXAMPLE2);
+        window.tabbedPane("tabs").selectTab("Grading");
+        window.button("grading-open").click();
+        JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
+        fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
+        fc.selectFile(Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
+        fc.approve();
+        window.button("grading-grade").click();
+        waitUntilNoTaskRuns();
+        assertTrue(model().job().grading().isPresent());
+        assertEquals(java.util.List.of(JobTask.ROBOT), model().job().runs());
+
+        window.menuItem("run-toolpath").click();
+        window.menuItem("run-grade").click();
+        window.menuItem("run-robot").click();
+        assertEquals(java.util.List.of(JobTask.TOOLPATH, JobTask.GRADE), model().job().runs());
+        Path saved = saveAs("several.xml");
+        assertEquals(java.util.List.of(JobTask.TOOLPATH, JobTask.GRADE), JobXml.read(saved).runs());
+
+        Path out = dir.resolve("out");
+        run(saved, out);
+        try (java.util.stream.Stream<Path> s = Files.list(out)) {
+            assertEquals(java.util.List.of("grade", "toolpath"), s.filter(Files::isDirectory)
+                    .map(p -> p.getFileName().toString()).sorted().toList());
+        }
+        assertTrue(Files.exists(out.resolve("toolpath/program.ngc")));
+        assertFalse(Files.exists(out.resolve("robot")));
+    }
+
+    /** Every sample job, opened, every tab visited and saved again, runs as the sample does. */
+    @Test
+    void everySampleJobSavedAfterVisitingEveryTabWritesTheSameFiles() throws Exception {
+        java.util.List<Path> samples;
+        try (java.util.stream.Stream<Path> s = Files.list(Path.of("samples/jobs"))) {
+            samples = s.filter(f -> f.toString().endsWith(".xml")).sorted().toList();
+        }
+        for (Path sample : samples) {
+            open(sample.toAbsolutePath());
+            for (String tab : MainWindowGuiTest.TABS) {
+                window.tabbedPane("tabs").selectTab(tab);
+                waitUntilNoTaskRuns();
+            }
+            String name = sample.getFileName().toString();
+            Path saved = dir.resolve("saved-" + name);
+            MainViewModel m = model();
+            GuiActionRunner.execute(() -> {
+                m.saveAs(saved);
+                return null;
+            });
+            assertEquals(JobXml.read(sample).withName("x"), JobXml.read(saved).withName("x"), name);
+            Path a = dir.resolve("a-" + name);
+            Path b = dir.resolve("b-" + name);
+            run(sample, a);
+            run(saved, b);
+            assertEquals(contents(a), contents(b), name);
+        }
+    }
+
+    /** File name -> text of every file but pictures. */
+    private static java.util.Map<String, String> contents(Path folder) throws java.io.IOException {
+        java.util.Map<String, String> out = new java.util.TreeMap<>();
+        try (java.util.stream.Stream<Path> s = Files.walk(folder)) {
+            for (Path f : s.filter(Files::isRegularFile).toList()) {
+                String n = folder.relativize(f).toString();
+                if (!n.endsWith(".png") && !n.startsWith(".fresa")) {
+                    // the time a step took differs from run to run
+                    out.put(n, Files.readString(f, java.nio.charset.StandardCharsets.ISO_8859_1)
+                            .replaceAll("\"[a-z_]*_ms\": [0-9.Ee+-]+", "\"ms\""));
+                }
+            }
+        }
+        return out;
+    }
+
     private MainViewModel model() {
         return GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
     }
