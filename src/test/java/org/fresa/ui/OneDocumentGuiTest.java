@@ -238,6 +238,32 @@ class OneDocumentGuiTest extends WindowGuiTest {
         return out;
     }
 
+    @Test
+    void thePocketTabMarksABadFieldInThePlannersWordsAndAFailedComputeSaysFailed() {
+        open(CAVITY01);
+        window.tabbedPane("tabs").selectTab("Pocket");
+        java.util.List<String> posts = java.util.Arrays.asList(window.comboBox("pocket-post").contents());
+        assertTrue(posts.containsAll(java.util.List.of("7m-compat", "7m", "linuxcnc", "iso", "fanuc", "840d")),
+                posts.toString());
+        window.textBox("pocket-tool").setText("6,5");
+        window.button("pocket-compute").requireDisabled();
+        String why = window.label("pocket-status").target().getToolTipText();
+        assertEquals("Tool diameter (mm): '6,5' is not a number (decimals take a point: 6.5).", why);
+        assertEquals(new java.awt.Color(255, 220, 220), window.textBox("pocket-tool").background().target());
+        window.textBox("pocket-tool").setText("6");
+        window.button("pocket-compute").requireEnabled();
+
+        window.textBox("pocket-contour").setText(dir.resolve("none.dad").toString());
+        window.button("pocket-compute").click();
+        waitUntilNoTaskRuns();
+        window.label("status").requireText("Pocket: failed");
+        String failed = window.label("pocket-status").target().getToolTipText();
+        assertTrue(failed.startsWith("There is no file") || failed.contains("none.dad"), failed);
+        assertFalse(failed.contains("--") || failed.contains("Exception"), failed);
+        // the refused contour is not the job's
+        assertTrue(model().job().pocket().orElseThrow().contour().endsWith("cavity01.dad"));
+    }
+
     private MainViewModel model() {
         return GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
     }
@@ -254,7 +280,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
         save.fileNameTextBox().setText(name);
         save.approve();
         Path file = dir.resolve(name);
-        assertTrue(Files.exists(file));
+        waitFor(name + " is written", () -> Files.exists(file));
         return file;
     }
 
