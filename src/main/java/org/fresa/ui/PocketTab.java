@@ -45,11 +45,12 @@ final class PocketTab implements ModuleTab {
     private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
     private final JButton run = new JButton("Compute");
     private final JLabel status = new JLabel(" ");
+    private final JPanel form = new JPanel();
     private boolean filling;
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
-        JPanel form = new JPanel(new GridLayout(0, 2, 4, 4));
+        form.setLayout(new GridLayout(0, 2, 4, 4));
         JLabel cl = new JLabel("Contour (.dad, .contour)");
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
@@ -90,8 +91,10 @@ final class PocketTab implements ModuleTab {
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
         form.add(run);
+        form.add(new JLabel());
+        // the reason under the form, as wide as it: a long one wraps instead of being cut off
         status.setName("pocket-status");
-        form.add(status);
+        status.setBorder(javax.swing.BorderFactory.createEmptyBorder(4, 4, 4, 4));
         report.setEditable(false);
         nc.setEditable(false);
         report.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, 12));
@@ -100,7 +103,10 @@ final class PocketTab implements ModuleTab {
         texts.addTab("Recognition tree", new JScrollPane(report));
         texts.addTab("NC program", new JScrollPane(nc));
         JPanel left = new JPanel(new BorderLayout());
-        left.add(form, BorderLayout.NORTH);
+        JPanel north = new JPanel(new BorderLayout());
+        north.add(form, BorderLayout.NORTH);
+        north.add(status, BorderLayout.SOUTH);
+        left.add(north, BorderLayout.NORTH);
         left.add(texts, BorderLayout.CENTER);
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, plot), BorderLayout.CENTER);
         ctx.model().addListener(e -> {
@@ -175,8 +181,9 @@ final class PocketTab implements ModuleTab {
      */
     private void say(String text, boolean problem) {
         status.setForeground(problem ? new Color(180, 0, 0) : Color.BLACK);
-        int width = Math.max(120, status.getWidth());
-        status.setText(text.length() <= 30 ? text : "<html><div style='width:" + width + "px'>"
+        // Swing's HTML takes CSS pixels as points (4/3 of a screen pixel at 96 dpi)
+        int width = Math.max(180, (form.getWidth() - 12) * 3 / 4);
+        status.setText(text.length() <= 40 ? text : "<html><div style='width:" + width + "px'>"
                 + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
         status.setToolTipText(text.isBlank() ? null : text);
     }

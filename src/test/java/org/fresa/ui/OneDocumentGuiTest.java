@@ -248,6 +248,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.textBox("pocket-tool").setText("6,5");
         window.button("pocket-compute").requireDisabled();
         String why = window.label("pocket-status").target().getToolTipText();
+        shoot("pocket-bad-field.png");
         assertEquals("Tool diameter (mm): '6,5' is not a number (decimals take a point: 6.5).", why);
         assertEquals(new java.awt.Color(255, 220, 220), window.textBox("pocket-tool").background().target());
         window.textBox("pocket-tool").setText("6");
@@ -262,6 +263,35 @@ class OneDocumentGuiTest extends WindowGuiTest {
         assertFalse(failed.contains("--") || failed.contains("Exception"), failed);
         // the refused contour is not the job's
         assertTrue(model().job().pocket().orElseThrow().contour().endsWith("cavity01.dad"));
+    }
+
+    @Test
+    void undoOfAPocketComputeAndOfARunTickRestoresTheJobExactly() {
+        open(CAVITY01);
+        Job opened = model().job();
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.textBox("pocket-tool").setText("5");
+        window.button("pocket-compute").click();
+        waitUntilNoTaskRuns();
+        window.label("pocket-status").requireText("done");
+        assertEquals(5, model().job().pocket().orElseThrow().toolDiameterMm());
+        assertEquals(opened.runs(), model().job().runs());
+        window.menuItem("run-robot").requireDisabled();
+        window.menuItemWithPath("Edit", "Undo").click();
+        assertEquals(opened, model().job());
+        assertEquals("6", window.textBox("pocket-tool").text());
+        window.requireTitle("Fresa - pocket-cavity01.xml");
+    }
+
+    private void shoot(String name) {
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        try {
+            Files.createDirectories(Path.of("target", "screenshots"));
+            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 
     private MainViewModel model() {
