@@ -128,10 +128,14 @@ public final class MainWindow extends JFrame {
         }
     }
 
-    /** A tick in the Job menu: the job runs that module too, or no longer; one always stays. */
+    /**
+     * A tick in the Job menu: the job runs that module too, or no longer; one always stays. A
+     * module without settings cannot run: ticking one that has them drops those (a new job's).
+     */
     private void tickRun(JobTask t, boolean on) {
         java.util.EnumSet<JobTask> r = java.util.EnumSet.copyOf(model.job().runs());
         if (on) {
+            r.removeIf(x -> !hasSettings(model.job(), x));
             r.add(t);
         } else {
             r.remove(t);
