@@ -86,8 +86,9 @@ class ArchitectureTest {
             entry("sole", List.of("pocket", "model", "geom")),
             // pocket: a stated exception for now (the 7M compat post posts the thesis's passes)
             entry("post", List.of("model", "kin", "geom", "pocket")),
+            entry("check", List.of("post", "model", "geom")),
             entry("chart", List.of("model", "geom")),
-            entry("job", List.of("chart", "stepnc", "dxf", "pocket", "toolpath", "cutting", "grading", "sole", "post",
+            entry("job", List.of("check", "chart", "stepnc", "dxf", "pocket", "toolpath", "cutting", "grading", "sole", "post",
                     "kin", "model", "geom")));
 
     /** No class of the package uses a Fresa package that its package-info does not state. */
@@ -136,6 +137,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule postUsesOnlyStatedPackages = usesOnlyStatedPackages("post");
+
+    @ArchTest
+    static final ArchRule checkUsesOnlyStatedPackages = usesOnlyStatedPackages("check");
 
     @ArchTest
     static final ArchRule chartUsesOnlyStatedPackages = usesOnlyStatedPackages("chart");

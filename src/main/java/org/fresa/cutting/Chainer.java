@@ -18,8 +18,10 @@ import org.fresa.geom.Vec2;
  * <p>Default: zero-length elements and duplicates (the same element drawn twice, either way
  * round) are removed and counted; chains grow from both ends, each step taking the nearest free
  * end within the gap tolerance from a hash grid of end points, so n elements take about n
- * steps. A node where more than two ends meet is counted as a junction. Joints are snapped so
- * each element starts exactly where the previous one ends.
+ * steps. A node where more than two ends meet is counted as a junction. Then the open chains
+ * left are joined end to end across gaps up to the gap tolerance, and each gap closed is
+ * listed with its place and width. Joints are snapped so each element starts exactly where the
+ * previous one ends, arcs keeping both ends on their circle.
  *
  * <p>Paper mode (Marques et al. 2010, section 2.2): circles are contours; every other chain
  * grows one way only from its seed's end, scanning the remaining elements in file order (first
@@ -35,19 +37,49 @@ public final class Chainer {
      * @param duplicates elements removed as repeats of another
      * @param zeroLength elements removed for a length within the tolerance
      * @param junctions nodes where more than two element ends meet
+     * @param gaps the gaps closed between open chains (wider than the joint tolerance)
      */
-    public record Chains(List<Contour> closed, List<List<Curve2>> open, int duplicates, int zeroLength, int junctions) {
+    public record Chains(List<Contour> closed, List<List<Curve2>> open, int duplicates, int zeroLength, int junctions,
+            List<Gap> gaps) {
         public Chains {
             closed = List.copyOf(closed);
             open = open.stream().map(List::copyOf).toList();
+            gaps = List.copyOf(gaps);
         }
+    }
+
+    /**
+     * A gap closed while chaining.
+     *
+     * @param at the middle of the gap (mm)
+     * @param widthMm the distance between the two ends joined
+     */
+    public record Gap(Vec2 at, double widthMm) {
     }
 
     private Chainer() {
     }
 
+    /**
+     * Chains at one tolerance: ends within {@code tolMm} are joined, elements shorter than it
+     * dropped (as {@link #chain(List, double, double)} with both tolerances equal).
+     */
     public static Chains chain(List<Curve2> curves, double tolMm) {
-        double tol = Math.max(tolMm, 1e-9);
+        return chain(curves, tolMm, tolMm);
+    }
+
+    /**
+     * Chains in two steps: first the ends that meet within {@code jointMm} (the drawing's own
+     * rounding; zero-length and duplicate elements are judged at this tolerance), then the open
+     * chains left are joined end to end across gaps up to {@code gapMm}, nearest end first, and
+     * each gap wider than {@code jointMm} that was closed is listed in {@link Chains#gaps()}.
+     *
+     * @param jointMm ends this close are the same point
+     * @param gapMm widest gap closed between open chains (at least jointMm)
+     */
+    public static Chains chain(List<Curve2> curves, double jointMm, double gapMm) {
+        double tol = Math.max(jointMm, 1e-9);
+        double gap = Math.max(gapMm, tol);
         List<Curve2> work = new ArrayList<>(curves.size());
         int zero = 0;
         for (Curve2 c : curves) {
@@ -82,45 +114,130 @@ public final class Chainer {
             if (used[i]) {
                 continue;
             }
-            used[i] = true;
-            Deque<Curve2> chain = new ArrayDeque<>();
-            chain.add(work.get(i));
-            boolean isClosed = false;
-            // forward
+            Grown g = grow(i, work, used, index, tol, junctions);
+            List<Curve2> list = new ArrayList<>(g.links.size());
+            for (long link : g.links) {
+                Curve2 c = work.get((int) (link >> 1));
+                list.add((link & 1) != 0 ? c.reversed() : c);
+            }
+            if (g.closed) {
+                closed.add(new Contour(snap(list, true)));
+            } else {
+                open.add(list);
+            }
+        }
+        List<Gap> gaps = new ArrayList<>();
+        if (gap > tol && !open.isEmpty()) {
+            open = joinAcrossGaps(open, tol, gap, closed, gaps, junctions);
+        }
+        List<List<Curve2>> snappedOpen = new ArrayList<>(open.size());
+        for (List<Curve2> o : open) {
+            snappedOpen.add(snap(o, false));
+        }
+        return new Chains(closed, snappedOpen, dups, zero, junctions[0], gaps);
+    }
+
+    /**
+     * The second step: each open chain stands for a segment from its start to its end, and the
+     * segments are chained as elements are, at the gap tolerance.
+     */
+    private static List<List<Curve2>> joinAcrossGaps(List<List<Curve2>> open, double tol, double gap,
+            List<Contour> closed, List<Gap> gaps, int[] junctions) {
+        List<Curve2> proxies = new ArrayList<>(open.size());
+        for (List<Curve2> o : open) {
+            proxies.add(new Segment2(o.get(0).start(), o.get(o.size() - 1).end()));
+        }
+        int n = proxies.size();
+        boolean[] used = new boolean[n];
+        EndIndex index = new EndIndex(gap);
+        for (int i = 0; i < n; i++) {
+            index.add(proxies.get(i).start(), i, false);
+            index.add(proxies.get(i).end(), i, true);
+        }
+        List<List<Curve2>> stillOpen = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            if (used[i]) {
+                continue;
+            }
+            Grown g = grow(i, proxies, used, index, gap, junctions);
+            List<Curve2> list = new ArrayList<>();
+            List<Gap> found = new ArrayList<>();
+            for (long link : g.links) {
+                List<Curve2> part = open.get((int) (link >> 1));
+                if ((link & 1) != 0) {
+                    for (int k = part.size() - 1; k >= 0; k--) {
+                        list.add(part.get(k).reversed());
+                    }
+                } else {
+                    list.addAll(part);
+                }
+                if (list.size() > part.size()) {
+                    Vec2 a = list.get(list.size() - part.size() - 1).end();
+                    Vec2 b = list.get(list.size() - part.size()).start();
+                    gapBetween(a, b, tol, found);
+                }
+            }
+            if (g.closed || (g.links.size() == 1 && list.get(0).start().distance(list.get(list.size() - 1).end()) <= gap
+                    && list.size() > 1)) {
+                gapBetween(list.get(list.size() - 1).end(), list.get(0).start(), tol, found);
+                closed.add(new Contour(snap(list, true)));
+                gaps.addAll(found);
+            } else {
+                stillOpen.add(list);
+            }
+        }
+        return stillOpen;
+    }
+
+    private static void gapBetween(Vec2 a, Vec2 b, double tol, List<Gap> out) {
+        double w = a.distance(b);
+        if (w > tol) {
+            out.add(new Gap(a.interpolate(b, 0.5), w));
+        }
+    }
+
+    /** A chain grown from one element: links are index * 2 + (1 when reversed), in travel order. */
+    private record Grown(Deque<Long> links, boolean closed) {
+    }
+
+    /** Grows a chain from element i both ways, each step taking the nearest free end within tol. */
+    private static Grown grow(int i, List<Curve2> work, boolean[] used, EndIndex index, double tol, int[] junctions) {
+        used[i] = true;
+        Deque<Long> links = new ArrayDeque<>();
+        links.add((long) i << 1);
+        Vec2 first = work.get(i).start();
+        Vec2 last = work.get(i).end();
+        boolean isClosed = false;
+        while (true) {
+            if (links.size() > 1 && last.distance(first) <= tol) {
+                isClosed = true;
+                break;
+            }
+            long next = index.take(last, work, used, junctions);
+            if (next < 0) {
+                break;
+            }
+            links.addLast(next);
+            Curve2 c = work.get((int) (next >> 1));
+            last = (next & 1) != 0 ? c.start() : c.end();
+        }
+        if (!isClosed) {
             while (true) {
-                Vec2 at = chain.getLast().end();
-                if (chain.size() > 1 && at.distance(chain.getFirst().start()) <= tol) {
+                long prev = index.take(first, work, used, junctions);
+                if (prev < 0) {
+                    break;
+                }
+                // the element found starts at the chain's first point: travelled the other way
+                links.addFirst(prev ^ 1);
+                Curve2 c = work.get((int) (prev >> 1));
+                first = (prev & 1) != 0 ? c.start() : c.end();
+                if (first.distance(last) <= tol) {
                     isClosed = true;
                     break;
                 }
-                Curve2 next = index.take(at, work, used, junctions);
-                if (next == null) {
-                    break;
-                }
-                chain.addLast(next);
-            }
-            if (!isClosed) {
-                while (true) {
-                    Vec2 at = chain.getFirst().start();
-                    Curve2 prev = index.take(at, work, used, junctions);
-                    if (prev == null) {
-                        break;
-                    }
-                    chain.addFirst(prev.reversed());
-                    if (chain.getFirst().start().distance(chain.getLast().end()) <= tol) {
-                        isClosed = true;
-                        break;
-                    }
-                }
-            }
-            List<Curve2> list = new ArrayList<>(chain);
-            if (isClosed) {
-                closed.add(new Contour(snap(list, true)));
-            } else {
-                open.add(snap(list, false));
             }
         }
-        return new Chains(closed, open, dups, zero, junctions[0]);
+        return new Grown(links, isClosed);
     }
 
     /** The paper's one-way chaining: first match in file order wins, tolerance as given (1e-4 mm). */
@@ -177,7 +294,7 @@ public final class Chainer {
                 open.add(cj);
             }
         }
-        return new Chains(closed, open, 0, zero, 0);
+        return new Chains(closed, open, 0, zero, 0, List.of());
     }
 
     private static boolean isClosedAlone(Curve2 c, double tol) {
@@ -190,27 +307,67 @@ public final class Chainer {
         return a.isFullCircle() ? a : new Arc2(a.center(), a.start(), a.start(), a.ccw());
     }
 
-    /** Each element made to start exactly where the previous ends (cyclically when closed). */
+    /**
+     * Each element made to start exactly where the previous ends (cyclically when closed). A
+     * joint between a line and an arc is put on the arc's end, so the arc stays exact and the
+     * line moves; between two arcs it is the middle of their ends. An arc whose end moves keeps
+     * its sweep and gets the centre of its new chord, so both ends stay on its circle.
+     */
     static List<Curve2> snap(List<Curve2> list, boolean closed) {
-        List<Curve2> out = new ArrayList<>(list);
-        for (int k = 1; k < out.size(); k++) {
-            out.set(k, withStart(out.get(k), out.get(k - 1).end()));
+        int n = list.size();
+        if (n < 2) {
+            return new ArrayList<>(list);
         }
-        if (closed && out.size() > 1) {
-            out.set(0, withStart(out.get(0), out.get(out.size() - 1).end()));
+        Vec2[] joint = new Vec2[n + 1]; // joint[k]: where element k starts; joint[n]: where the last ends
+        for (int k = 1; k < n; k++) {
+            joint[k] = jointOf(list.get(k - 1), list.get(k));
+        }
+        if (closed) {
+            joint[0] = jointOf(list.get(n - 1), list.get(0));
+            joint[n] = joint[0];
+        } else {
+            joint[0] = list.get(0).start();
+            joint[n] = list.get(n - 1).end();
+        }
+        List<Curve2> out = new ArrayList<>(n);
+        for (int k = 0; k < n; k++) {
+            out.add(withEnds(list.get(k), joint[k], joint[k + 1]));
         }
         return out;
     }
 
-    private static Curve2 withStart(Curve2 c, Vec2 s) {
-        if (c.start().equals(s)) {
+    private static Vec2 jointOf(Curve2 before, Curve2 after) {
+        Vec2 a = before.end();
+        Vec2 b = after.start();
+        if (a.equals(b)) {
+            return a;
+        }
+        if (before instanceof Arc2 && after instanceof Segment2) {
+            return a;
+        }
+        if (before instanceof Segment2 && after instanceof Arc2) {
+            return b;
+        }
+        return before instanceof Arc2 ? a.interpolate(b, 0.5) : a;
+    }
+
+    private static Curve2 withEnds(Curve2 c, Vec2 s, Vec2 e) {
+        if (c.start().equals(s) && c.end().equals(e)) {
             return c;
         }
-        if (c instanceof Segment2 seg) {
-            return new Segment2(s, seg.end());
+        if (c instanceof Segment2) {
+            return new Segment2(s, e);
         }
         Arc2 a = (Arc2) c;
-        return new Arc2(a.center(), s, a.end(), a.ccw());
+        double sweep = a.sweepRad();
+        if (s.equals(e) || Math.abs(sweep) > 2 * Math.PI - 1e-6) {
+            return new Arc2(a.center(), s, e, a.ccw());
+        }
+        // the centre of the chord s-e seen under the same sweep: mid + left normal * L (1 - b^2) / (4 b), b = tan(sweep / 4)
+        double b = Math.tan(sweep / 4);
+        Vec2 chord = e.minus(s);
+        Vec2 centre = s.interpolate(e, 0.5).plus(chord.leftNormal().times((1 - b * b) / (4 * b)));
+        return new Arc2(centre, s, e, a.ccw());
     }
 
     private static List<Curve2> withoutDuplicates(List<Curve2> in, double tol) {
@@ -283,8 +440,11 @@ public final class Chainer {
                     k -> new ArrayList<>(2)).add(new long[] {index, isEnd ? 1 : 0});
         }
 
-        /** The free element with an end nearest p within tol, oriented to start at p; null if none. */
-        Curve2 take(Vec2 p, List<Curve2> work, boolean[] used, int[] junctions) {
+        /**
+         * The free element with an end nearest p within tol, as a link that starts at p (index * 2,
+         * plus 1 when the element must be reversed); -1 if none.
+         */
+        long take(Vec2 p, List<Curve2> work, boolean[] used, int[] junctions) {
             long cx = (long) Math.floor(p.x() / cell);
             long cy = (long) Math.floor(p.y() / cell);
             int best = -1;
@@ -317,14 +477,13 @@ public final class Chainer {
                 }
             }
             if (best < 0) {
-                return null;
+                return -1;
             }
             if (candidates > 1) {
                 junctions[0]++;
             }
             used[best] = true;
-            Curve2 c = work.get(best);
-            return bestEnd ? c.reversed() : c;
+            return ((long) best << 1) | (bestEnd ? 1 : 0);
         }
     }
 }

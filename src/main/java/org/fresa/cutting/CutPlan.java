@@ -22,10 +22,21 @@ import org.fresa.model.Toolpath;
  * @param toolpath the moves from the machine origin, one section per pierce
  * @param rapids for each cut, the rapid travel from the previous exit (the origin for the first)
  *     to its pierce: both ends and any detour points around parts already cut free
+ * @param notCut each contour of {@code uncut} with its label and why it is not cut
  */
 public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> holes, List<List<Curve2>> open,
         List<Vec2> invalidVertices, List<String> warnings, List<Contour> uncut, int duplicates, int zeroLength,
-        Toolpath toolpath, List<List<Vec2>> rapids) {
+        Toolpath toolpath, List<List<Vec2>> rapids, List<NotCut> notCut) {
+
+    /**
+     * A closed contour left uncut.
+     *
+     * @param label e.g. "part 2 hole 1"
+     * @param contour the drawn contour
+     * @param reason why, in the planner's words ("is too small for a 2.000 mm kerf")
+     */
+    public record NotCut(String label, Contour contour, String reason) {
+    }
 
     public CutPlan {
         cuts = List.copyOf(cuts);
@@ -36,6 +47,7 @@ public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> ho
         warnings = List.copyOf(warnings);
         uncut = List.copyOf(uncut);
         rapids = rapids.stream().map(List::copyOf).toList();
+        notCut = List.copyOf(notCut);
         if (rapids.size() != cuts.size()) {
             throw new IllegalArgumentException(rapids.size() + " rapids for " + cuts.size() + " cuts");
         }

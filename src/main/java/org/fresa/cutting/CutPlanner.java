@@ -2,6 +2,7 @@ package org.fresa.cutting;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -24,8 +25,9 @@ import org.fresa.pocket.LineArcOffsetter;
  * hole; a part inside a hole is cut before that hole), orients them (outer contours clockwise
  * and holes counter-clockwise by default, so the scrap is on the left), offsets each by half the
  * kerf into the scrap with {@link LineArcOffsetter}, chooses pierce points and leads that stay in
- * the scrap, orders the pierces (holes before their part, parts by nearest neighbour then 2-opt)
- * and produces the tool-centre path.
+ * the scrap, orders the pierces ({@link CutOrder}: holes before their part, a nearest-neighbour
+ * tour improved by 2-opt and Or-opt moves between parts, never longer than the plain
+ * nearest-neighbour tour) and produces the tool-centre path.
  *
  * <p>Pierce point rule: the middle of the longest straight element of the cut path, then the
  * next longest, then corners, then the middle of arcs; the first where a lead fits (tried at its
@@ -37,6 +39,8 @@ public final class CutPlanner {
     private static final Tolerance TOL = Tolerance.DEFAULT;
     /** Most elements one contour may have to be offset. */
     static final int MAX_CONTOUR_ELEMENTS = 20_000;
+    /** Most time spent shortening the cut order once the nearest-neighbour order is found. */
+    static final long ORDER_BUDGET_NANOS = 3_000_000_000L;
 
     private CutPlanner() {
     }
@@ -70,13 +74,21 @@ public final class CutPlanner {
         int dups = 0;
         int zero = 0;
         int junctions = 0;
+        List<Chainer.Gap> gaps = new ArrayList<>();
+        double joint = Math.min(CuttingOptions.JOINT_MM, o.gapToleranceMm());
         for (Map.Entry<String, List<Curve2>> e : layers.entrySet()) {
-            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4) : Chainer.chain(e.getValue(), o.gapToleranceMm());
+            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4)
+                    : Chainer.chain(e.getValue(), joint, o.gapToleranceMm());
             closed.addAll(ch.closed());
             open.addAll(ch.open());
             dups += ch.duplicates();
             zero += ch.zeroLength();
             junctions += ch.junctions();
+            gaps.addAll(ch.gaps());
+        }
+        for (Chainer.Gap g : gaps) {
+            warnings.add(String.format(Locale.ROOT, "gap of %.4f mm between two ends closed at (%.3f, %.3f)",
+                    g.widthMm(), g.at().x(), g.at().y()));
         }
         if (dups > 0) {
             warnings.add(dups + " duplicate elements removed");
@@ -87,11 +99,24 @@ public final class CutPlanner {
         if (junctions > 0) {
             warnings.add(junctions + " nodes where more than two element ends meet (the nearest end was followed)");
         }
+        List<Vec2> ends = new ArrayList<>();
         for (List<Curve2> chain : open) {
-            Vec2 a = chain.get(0).start();
-            Vec2 b = chain.get(chain.size() - 1).end();
-            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f), gap %.4g mm: not cut",
-                    chain.size(), a.x(), a.y(), b.x(), b.y(), a.distance(b)));
+            ends.add(chain.get(0).start());
+            ends.add(chain.get(chain.size() - 1).end());
+        }
+        for (int k = 0; k < open.size(); k++) {
+            List<Curve2> chain = open.get(k);
+            Vec2 a = ends.get(2 * k);
+            Vec2 b = ends.get(2 * k + 1);
+            String why = String.format(Locale.ROOT, "its ends are %.4g mm apart", a.distance(b));
+            if (ends.size() <= 4000) {
+                // the gap tolerance that would join both ends to something: the farther of their nearest other ends
+                double need = Math.max(nearestOther(ends, 2 * k), nearestOther(ends, 2 * k + 1));
+                why = String.format(Locale.ROOT, "its ends are %.4g mm from the nearest other end (a gap tolerance of"
+                        + " %.4g mm would join them)", need, need * 1.001);
+            }
+            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
+                    chain.size(), a.x(), a.y(), b.x(), b.y(), why));
         }
         List<Node> nodes = classify(closed, o.paperMode());
         List<Curve2> all = new ArrayList<>();
@@ -107,6 +132,7 @@ public final class CutPlanner {
         CurveGrid grid = new CurveGrid(all, cell);
         List<Vec2> invalid = new ArrayList<>();
         List<Contour> uncut = new ArrayList<>();
+        List<CutPlan.NotCut> notCut = new ArrayList<>();
         List<Contour> outers = new ArrayList<>();
         List<Contour> holes = new ArrayList<>();
         int partNo = 0;
@@ -121,9 +147,8 @@ public final class CutPlanner {
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
             if (n.contour.size() > MAX_CONTOUR_ELEMENTS) {
                 // the offset compares every piece with every element: such a contour would not finish
-                uncut.add(n.contour);
-                warnings.add(label + " has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
-                        + " a contour may have (simplify the drawing): not cut");
+                notCut(label, n.contour, "has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
+                        + " a contour may have (simplify the drawing)", uncut, notCut, warnings);
                 continue;
             }
             Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
@@ -135,9 +160,12 @@ public final class CutPlanner {
                 PaperCrc.Result r = half > 0 ? PaperCrc.offset(oriented, half, toolLeft)
                         : new PaperCrc.Result(java.util.Optional.of(oriented), List.of());
                 invalid.addAll(r.invalidVertices());
+                for (Vec2 v : r.invalidVertices()) {
+                    warnings.add(String.format(Locale.ROOT, "invalid vertex of %s at (%.3f, %.3f): a corner the kerf"
+                            + " cannot follow on the nozzle's side (round it with an arc in the drawing)", label, v.x(), v.y()));
+                }
                 if (r.path().isEmpty()) {
-                    uncut.add(n.contour);
-                    warnings.add(label + " collapses under the kerf: not cut");
+                    notCut(label, n.contour, "collapses under the kerf", uncut, notCut, warnings);
                 } else {
                     n.cuts.add(new CutPath(label, outer, n.contour, r.path().get(), List.of(), List.of(), 0));
                 }
@@ -154,7 +182,7 @@ public final class CutPlanner {
                     n.cuts.add(cp);
                     continue;
                 }
-                warnings.add(label + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
+                warnings.add(label + place(n.contour) + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
                         + " for an entry move longer than it); cut on the offset path instead");
             }
             List<Contour> same = new ArrayList<>();
@@ -164,17 +192,16 @@ public final class CutPlanner {
                 }
             }
             if (same.isEmpty()) {
-                uncut.add(n.contour);
-                Box2 b = n.contour.bounds();
-                warnings.add(String.format(Locale.ROOT, "%s (%.3f x %.3f mm at %.3f, %.3f) is too small for a %.3f mm kerf: not cut",
-                        label, b.width(), b.height(), b.minX(), b.minY(), o.kerfMm()));
+                notCut(label, n.contour, String.format(Locale.ROOT, "is too small for a %.3f mm kerf", o.kerfMm()), uncut,
+                        notCut, warnings);
                 continue;
             }
             if (outer && loops.size() > same.size()) {
-                warnings.add(label + " has a slot or gap narrower than the kerf: it closes up and is not cut");
+                warnings.add(label + place(n.contour) + " has a slot or gap narrower than the kerf: it closes up and is not cut");
             }
             if (!outer && same.size() > 1) {
-                warnings.add(label + " has a waist narrower than the kerf: cut as " + same.size() + " separate loops");
+                warnings.add(label + place(n.contour) + " has a waist narrower than the kerf: cut as " + same.size()
+                        + " separate loops");
             }
             for (int k = 0; k < same.size(); k++) {
                 String l = same.size() > 1 ? label + "." + (k + 1) : label;
@@ -185,7 +212,31 @@ public final class CutPlanner {
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
         List<List<Vec2>> rapids = rapids(order, o, warnings);
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
-                rapids);
+                rapids, notCut);
+    }
+
+    /** The distance from end i to the nearest other end of an open chain (its own other end included). */
+    private static double nearestOther(List<Vec2> ends, int i) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int j = 0; j < ends.size(); j++) {
+            if (j != i) {
+                best = Math.min(best, ends.get(i).distance(ends.get(j)));
+            }
+        }
+        return best;
+    }
+
+    /** " (W x H mm at X, Y)": a contour's size and the lower left corner of its box, for messages. */
+    static String place(Contour c) {
+        Box2 b = c.bounds();
+        return String.format(Locale.ROOT, " (%.3f x %.3f mm at %.3f, %.3f)", b.width(), b.height(), b.minX(), b.minY());
+    }
+
+    private static void notCut(String label, Contour c, String reason, List<Contour> uncut, List<CutPlan.NotCut> notCut,
+            List<String> warnings) {
+        uncut.add(c);
+        notCut.add(new CutPlan.NotCut(label, c, reason));
+        warnings.add(label + place(c) + " " + reason + ": not cut");
     }
 
     // ------------------------------------------------------------------ classification
@@ -353,6 +404,12 @@ public final class CutPlanner {
                     continue; // LinuxCNC: the entry move must be longer than the tool radius
                 }
                 Contour started = startAt(path, (int) cand[0], cand[1]);
+                if (comp != 0 && Math.min(started.get(0).length(), started.get(started.size() - 1).length())
+                        <= 2 * half + 1e-3) {
+                    // LinuxCNC: the entry turns a corner into the first element, which must be longer
+                    // than the tool's diameter there ("cannot be reached without gouging")
+                    continue;
+                }
                 Vec2 s = started.get(0).start();
                 Vec2 t = started.get(0).startTangent();
                 List<Curve2> in = leadIn <= 0 ? List.of() : List.of(lead(s, t, len, scrapLeft, arcs, true));
@@ -509,98 +566,88 @@ public final class CutPlanner {
         return out;
     }
 
+    /**
+     * The cuts in the order of {@link CutOrder}: every cut inside a contour (its holes, the parts
+     * in a hole) before the contour's own cut.
+     */
     private static List<CutPath> order(List<Node> nodes) {
-        List<Node> top = new ArrayList<>();
+        List<CutPath> cuts = new ArrayList<>();
+        Map<Node, int[]> ids = new java.util.IdentityHashMap<>();
         for (Node n : nodes) {
-            if (n.parent == null) {
-                top.add(n);
+            int[] id = new int[n.cuts.size()];
+            for (int k = 0; k < id.length; k++) {
+                id[k] = cuts.size();
+                cuts.add(n.cuts.get(k));
+            }
+            ids.put(n, id);
+        }
+        List<Vec2> pierce = new ArrayList<>(cuts.size());
+        List<Vec2> exit = new ArrayList<>(cuts.size());
+        for (CutPath c : cuts) {
+            pierce.add(c.pierce());
+            exit.add(c.exit());
+        }
+        List<int[]> before = new ArrayList<>(cuts.size());
+        for (Node n : nodes) {
+            int m = 0;
+            for (Node child : n.children) {
+                m += ids.get(child).length;
+            }
+            int[] inner = new int[m];
+            int k = 0;
+            for (Node child : n.children) {
+                for (int id : ids.get(child)) {
+                    inner[k++] = id;
+                }
+            }
+            for (int unused : ids.get(n)) {
+                before.add(inner);
             }
         }
-        List<Node> seq = tour(top, Vec2.ZERO);
-        List<CutPath> out = new ArrayList<>();
-        Vec2[] at = {Vec2.ZERO};
-        for (Node n : seq) {
-            emitPart(n, at, out);
+        CutOrder co = new CutOrder(pierce, exit, before);
+        int[] nn = co.nearestNeighbour();
+        // a part with everything inside it is one stop of the tour, its cuts in their nearest-neighbour
+        // order: between parts there is no rule, so the stops can be reordered freely
+        Map<Node, List<Integer>> byPart = new java.util.LinkedHashMap<>();
+        Map<Integer, Node> partOf = new HashMap<>();
+        for (Node n : nodes) {
+            Node top = n;
+            while (top.parent != null) {
+                top = top.parent;
+            }
+            for (int id : ids.get(n)) {
+                partOf.put(id, top);
+            }
+        }
+        for (int id : nn) {
+            byPart.computeIfAbsent(partOf.get(id), k -> new ArrayList<>()).add(id);
+        }
+        List<List<Integer>> stops = new ArrayList<>(byPart.values());
+        List<Vec2> stopIn = new ArrayList<>(stops.size());
+        List<Vec2> stopOut = new ArrayList<>(stops.size());
+        List<int[]> free = new ArrayList<>(stops.size());
+        for (List<Integer> stop : stops) {
+            stopIn.add(pierce.get(stop.get(0)));
+            stopOut.add(exit.get(stop.get(stop.size() - 1)));
+            free.add(new int[0]);
+        }
+        CutOrder so = new CutOrder(stopIn, stopOut, free);
+        int[] stopSeq = so.improve(so.nearestNeighbour(), Math.min(ORDER_BUDGET_NANOS, 100_000_000L + 20_000L * cuts.size()));
+        int[] seq = new int[cuts.size()];
+        int k = 0;
+        for (int st : stopSeq) {
+            for (int id : stops.get(st)) {
+                seq[k++] = id;
+            }
+        }
+        if (co.travel(nn) < co.travel(seq)) {
+            seq = nn;
+        }
+        List<CutPath> out = new ArrayList<>(cuts.size());
+        for (int i : seq) {
+            out.add(cuts.get(i));
         }
         return out;
-    }
-
-    /** A part: the parts inside each hole, then the hole, for each hole nearest first; then its outside. */
-    private static void emitPart(Node part, Vec2[] at, List<CutPath> out) {
-        List<Node> holes = new ArrayList<>(part.children);
-        while (!holes.isEmpty()) {
-            Node best = null;
-            for (Node h : holes) {
-                if (best == null || entry(h).distance(at[0]) < entry(best).distance(at[0])) {
-                    best = h;
-                }
-            }
-            holes.remove(best);
-            for (Node inner : tour(best.children, at[0])) {
-                emitPart(inner, at, out);
-            }
-            for (CutPath c : best.cuts) {
-                out.add(c);
-                at[0] = c.exit();
-            }
-        }
-        for (CutPath c : part.cuts) {
-            out.add(c);
-            at[0] = c.exit();
-        }
-    }
-
-    private static Vec2 entry(Node n) {
-        return n.cuts.isEmpty() ? n.box.center() : n.cuts.get(0).pierce();
-    }
-
-    /** Nearest neighbour from the start, then 2-opt on the open tour's rapid length. */
-    private static List<Node> tour(List<Node> nodes, Vec2 start) {
-        List<Node> left = new ArrayList<>(nodes);
-        List<Node> seq = new ArrayList<>();
-        Vec2 at = start;
-        while (!left.isEmpty()) {
-            int best = 0;
-            for (int i = 1; i < left.size(); i++) {
-                if (entry(left.get(i)).distance(at) < entry(left.get(best)).distance(at)) {
-                    best = i;
-                }
-            }
-            Node n = left.remove(best);
-            seq.add(n);
-            at = entry(n);
-        }
-        int n = seq.size();
-        if (n < 4 || n > 3000) {
-            return seq;
-        }
-        Vec2[] p = new Vec2[n + 1];
-        p[0] = start;
-        for (int i = 0; i < n; i++) {
-            p[i + 1] = entry(seq.get(i));
-        }
-        boolean improved = true;
-        for (int pass = 0; pass < 50 && improved; pass++) {
-            improved = false;
-            for (int i = 0; i < n - 1; i++) {
-                for (int j = i + 2; j <= n; j++) {
-                    double before = p[i].distance(p[i + 1]) + (j < n ? p[j].distance(p[j + 1]) : 0);
-                    double after = p[i].distance(p[j]) + (j < n ? p[i + 1].distance(p[j + 1]) : 0);
-                    if (after < before - 1e-9) {
-                        for (int a = i + 1, b = j; a < b; a++, b--) {
-                            Vec2 tp = p[a];
-                            p[a] = p[b];
-                            p[b] = tp;
-                            Node tn = seq.get(a - 1);
-                            seq.set(a - 1, seq.get(b - 1));
-                            seq.set(b - 1, tn);
-                        }
-                        improved = true;
-                    }
-                }
-            }
-        }
-        return seq;
     }
 
     // ------------------------------------------------------------------ rapids

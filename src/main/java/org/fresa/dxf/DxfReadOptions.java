@@ -10,7 +10,7 @@ import java.util.Optional;
  * @param unitlessAs the unit of a drawing that declares none (or an unknown one)
  * @param curveToleranceMm largest distance between an ELLIPSE or SPLINE and the arcs replacing it
  * @param maxInsertDepth block nesting deeper than this is reported and not expanded
- * @param maxCurves a drawing expanding to more curves is cut short with a warning
+ * @param maxCurves a drawing expanding to more curves is refused (nothing is cut short)
  */
 public record DxfReadOptions(Optional<DxfUnits> units, DxfUnits unitlessAs, double curveToleranceMm,
         int maxInsertDepth, int maxCurves) {

@@ -32,12 +32,18 @@ import org.fresa.model.FileChecks;
  * the segment from vertex i to i + 1), ELLIPSE and SPLINE (replaced by arcs within
  * {@link DxfReadOptions#curveToleranceMm()}), INSERT and MINSERT with nested blocks, scale,
  * rotation and mirroring (depth bounded, a block inserting itself is reported once), OCS
- * extrusions ((0, 0, -1) mirrors x), {@code $INSUNITS}. Skipped and counted: text, hatches,
- * dimensions, images, points, paper space, frozen or switched-off layers and every other type.
+ * extrusions ((0, 0, -1) mirrors x), {@code $INSUNITS}. An ELLIPSE whose axis ratio is above 1
+ * (QCAD writes the longer axis as the minor one) is read with its axes swapped, as AutoCAD does.
+ * Skipped, counted and named in one warning per kind (how many, where the first is): text,
+ * hatches, dimensions, images, points, paper space, frozen or switched-off layers and every
+ * other type.
  *
  * <p>An entity that cannot be used (a circle of radius 0, a spline whose knots do not match its
  * control points) is named in {@link DxfDrawing#warnings()} by type, handle and line; the rest
- * of the drawing is read. Only a file that is not a group-code stream at all is rejected.
+ * of the drawing is read. The drawing is refused ({@link DxfException}, with the line) when the
+ * file itself is broken, since cutting the sheet without the entity would make a wrong part: a
+ * numeric group that is not a finite number, a coordinate missing from an entity, a file that
+ * ends without its {@code 0 EOF}, or a drawing past the limits of {@link DxfReadOptions}.
  */
 public final class DxfReader {
 
@@ -53,6 +59,7 @@ public final class DxfReader {
     private final DxfReadOptions opt;
     private final List<String> warnings = new ArrayList<>();
     private final Map<String, Integer> ignored = new TreeMap<>();
+    private final Map<String, Entity> firstIgnored = new HashMap<>();
     private final Map<String, List<Curve2>> layers = new LinkedHashMap<>();
     private final Map<String, Block> blocks = new HashMap<>();
     private final Set<String> hiddenLayers = new HashSet<>();
@@ -154,9 +161,15 @@ public final class DxfReader {
         for (Entity e : entities) {
             convert(e, root, null, 0, new ArrayDeque<>());
         }
+        if (truncated) {
+            throw new DxfException(tags.source, 0, "the drawing expands to more than " + opt.maxCurves()
+                    + " lines and arcs (the limit of one drawing; ellipses and splines count as the arcs replacing"
+                    + " them): refused rather than cut without the rest; split the drawing");
+        }
         if (warningsLeftOut > 0) {
             warnings.add(warningsLeftOut + " more warnings like the ones above are left out");
         }
+        ignoredWarnings();
         return new DxfDrawing(tags.source, units, mm, layers, warnings, ignored);
     }
 
@@ -229,7 +242,7 @@ public final class DxfReader {
         return v == null ? dflt : v;
     }
 
-    private void blocks(int from, int to) {
+    private void blocks(int from, int to) throws DxfException {
         int i = from;
         while (i < to) {
             if (tags.codes[i] == 0 && tags.values[i].equals("BLOCK")) {
@@ -240,8 +253,8 @@ public final class DxfReader {
                 for (; j < to && tags.codes[j] != 0; j++) {
                     switch (tags.codes[j]) {
                         case 2 -> name = tags.values[j];
-                        case 10 -> bx = dbl(tags.values[j], 0);
-                        case 20 -> by = dbl(tags.values[j], 0);
+                        case 10 -> bx = blockNumber(j, name);
+                        case 20 -> by = blockNumber(j, name);
                         default -> {
                         }
                     }
@@ -258,12 +271,14 @@ public final class DxfReader {
         }
     }
 
-    private static double dbl(String s, double dflt) {
+    /** A block's base point coordinate; a value that is not a number refuses the drawing. */
+    private double blockNumber(int i, String block) throws DxfException {
         try {
-            double d = Double.parseDouble(s);
-            return Double.isFinite(d) ? d : dflt;
-        } catch (NumberFormatException e) {
-            return dflt;
+            return number(i);
+        } catch (BadEntity ex) {
+            String where = tags.binary ? tags.where(i) + ": " : "";
+            throw new DxfException(tags.source, tags.binary ? 0 : tags.lines[i] + 1,
+                    where + "BLOCK '" + block + "': " + ex.getMessage());
         }
     }
 
@@ -287,7 +302,7 @@ public final class DxfReader {
             } else if (type.equals("SEQEND")) {
                 open = null;
             } else if (type.equals("ATTRIB") && open == null) {
-                count("ATTRIB");
+                count("ATTRIB", e);
             } else {
                 open = type.equals("POLYLINE") ? e : null;
                 out.add(e);
@@ -297,8 +312,27 @@ public final class DxfReader {
         return out;
     }
 
-    private void count(String type) {
-        ignored.merge(type, 1, Integer::sum);
+    private void count(String type, Entity e) {
+        if (ignored.merge(type, 1, Integer::sum) == 1) {
+            firstIgnored.put(type, e);
+        }
+    }
+
+    /** One warning per kind of entity left out, with how many and where the first one is. */
+    private void ignoredWarnings() {
+        ignored.forEach((kind, n) -> {
+            Entity e = firstIgnored.get(kind);
+            String what = kind.equals("paper space") || kind.equals("on frozen or off layers")
+                    ? n + (n == 1 ? " entity " : " entities ") + kind
+                    : n + " " + kind + (n == 1 ? " entity" : " entities");
+            String why = switch (kind) {
+                case "paper space" -> "the sheet is cut from model space";
+                case "on frozen or off layers" -> "their layers are hidden";
+                case "POLYLINE mesh" -> "a 3D mesh has no outline to cut";
+                default -> "not a line, arc or curve to cut";
+            };
+            warnings.add(what + " left out (" + why + "), the first: " + describe(e));
+        });
     }
 
     // ---------------------------------------------------------------- entity access
@@ -315,37 +349,61 @@ public final class DxfReader {
     private double num(Entity e, int code, double dflt) throws BadEntity {
         for (int i = e.first; i < e.end; i++) {
             if (tags.codes[i] == code) {
-                try {
-                    double d = Double.parseDouble(tags.values[i]);
-                    if (!Double.isFinite(d)) {
-                        throw new BadEntity("group " + code + " is not a finite number: " + tags.values[i]);
-                    }
-                    return d;
-                } catch (NumberFormatException ex) {
-                    throw new BadEntity("group " + code + " is not a number: '" + tags.values[i] + "'");
-                }
+                return number(i);
             }
         }
         return dflt;
     }
 
-    private double req(Entity e, int code) throws BadEntity {
-        double d = num(e, code, Double.NaN);
-        if (Double.isNaN(d)) {
-            throw new BadEntity("group code " + code + " is missing");
+    /** The value of tag i as a finite number; anything else is bad input at that tag. */
+    private double number(int i) throws BadEntity {
+        String v = tags.values[i];
+        double d;
+        try {
+            d = Double.parseDouble(v);
+        } catch (NumberFormatException ex) {
+            d = Double.NaN;
+        }
+        if (!Double.isFinite(d)) {
+            String shown = v.length() > 40 ? v.substring(0, 40) + "..." : v;
+            throw new BadEntity("group " + tags.codes[i] + " is '" + shown + "': expected " + meaning(tags.codes[i])
+                    + " (a finite number)", i);
         }
         return d;
+    }
+
+    /** What a numeric group code holds, for messages. */
+    static String meaning(int code) {
+        if (code >= 10 && code <= 18) {
+            return "an x coordinate";
+        } else if (code >= 20 && code <= 28) {
+            return "a y coordinate";
+        } else if (code >= 30 && code <= 38) {
+            return "a z coordinate or elevation";
+        } else if (code >= 50 && code <= 58) {
+            return "an angle in degrees";
+        } else if (code >= 60 && code <= 99) {
+            return "an integer";
+        } else if (code >= 210 && code <= 239) {
+            return "a component of the extrusion direction";
+        }
+        return "a number";
+    }
+
+    private double req(Entity e, int code) throws BadEntity {
+        for (int i = e.first; i < e.end; i++) {
+            if (tags.codes[i] == code) {
+                return number(i);
+            }
+        }
+        throw new BadEntity("group " + code + " (" + meaning(code) + ") is missing", e.index);
     }
 
     private List<Double> nums(Entity e, int code) throws BadEntity {
         List<Double> out = new ArrayList<>();
         for (int i = e.first; i < e.end; i++) {
             if (tags.codes[i] == code) {
-                try {
-                    out.add(Double.parseDouble(tags.values[i]));
-                } catch (NumberFormatException ex) {
-                    throw new BadEntity("group " + code + " is not a number: '" + tags.values[i] + "'");
-                }
+                out.add(number(i));
             }
         }
         return out;
@@ -360,13 +418,34 @@ public final class DxfReader {
         return false;
     }
 
-    /** An entity that cannot be converted; the message names what is wrong. */
+    /**
+     * An entity that cannot be converted; the message names what is wrong. With a tag, the file
+     * itself is broken there (a coordinate that is not a number, or missing): the drawing is
+     * refused, since leaving the entity out would cut the sheet without it.
+     */
     private static final class BadEntity extends Exception {
         private static final long serialVersionUID = 1L;
+        /** The tag at fault (the entity's own for a missing group), or -1 for an entity that is only unusable. */
+        final int tag;
 
         BadEntity(String m) {
-            super(m, null, false, false);
+            this(m, -1);
         }
+
+        BadEntity(String m, int tag) {
+            super(m, null, false, false);
+            this.tag = tag;
+        }
+    }
+
+    /** The drawing refused at a broken tag, with the line of the value (ASCII) or its byte (binary). */
+    private DxfException refused(Entity e, BadEntity ex) {
+        String h = str(e, 5, null);
+        String what = e.type + (h != null ? " " + h : "") + (ex.tag == e.index ? "" : " (from " + tags.whereValue(e.index) + ")");
+        if (tags.binary) {
+            return new DxfException(tags.source, 0, tags.where(ex.tag) + ": " + what + ": " + ex.getMessage());
+        }
+        return new DxfException(tags.source, tags.lines[ex.tag] + 1, what + ": " + ex.getMessage());
     }
 
     private String describe(Entity e) {
@@ -384,18 +463,17 @@ public final class DxfReader {
         }
     }
 
-    private void convert(Entity e, DxfAffine t, String insertLayer, int depth, Deque<String> stack) {
+    private void convert(Entity e, DxfAffine t, String insertLayer, int depth, Deque<String> stack) throws DxfException {
         if (truncated) {
             return;
         }
         if (++visits > MAX_VISITS) {
-            truncated = true;
-            warnings.add("the drawing's inserts expand to more than " + MAX_VISITS + " entities (" + describe(e)
-                    + "); the rest is left out");
-            return;
+            throw new DxfException(tags.source, 0, "the drawing's inserts expand to more than " + MAX_VISITS
+                    + " entities (the limit of one drawing; reached at " + describe(e) + "): refused rather than cut"
+                    + " without the rest");
         }
         if (str(e, 67, "0").trim().equals("1")) {
-            count("paper space");
+            count("paper space", e);
             return;
         }
         String layer = str(e, 8, "0");
@@ -403,7 +481,7 @@ public final class DxfReader {
             layer = insertLayer;
         }
         if (hiddenLayers.contains(layer)) {
-            count("on frozen or off layers");
+            count("on frozen or off layers", e);
             return;
         }
         List<Curve2> local = new ArrayList<>();
@@ -446,15 +524,25 @@ public final class DxfReader {
                 case "INSERT" -> insert(e, layer, t, depth, stack);
                 default -> {
                     if (!QUIET.contains(e.type)) {
-                        count(e.type);
+                        count(e.type, e);
                     }
                 }
             }
         } catch (BadEntity ex) {
+            if (ex.tag >= 0) {
+                throw refused(e, ex);
+            }
             warn(describe(e) + ": " + ex.getMessage());
         } catch (IllegalArgumentException ex) {
             warn(describe(e) + ": " + ex.getMessage() + "; left out");
         }
+    }
+
+    /** A number for a message: up to 6 decimals, no trailing zeros. */
+    static String num(double v) {
+        String s = String.format(Locale.ROOT, "%.6f", v);
+        s = s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
+        return s.equals("-0") ? "0" : s;
     }
 
     private static Vec2 unit(double deg) {
@@ -520,10 +608,7 @@ public final class DxfReader {
 
     private void emit(String layer, DxfAffine t, Curve2 c) {
         if (curveCount >= opt.maxCurves()) {
-            if (!truncated) {
-                truncated = true;
-                warnings.add("the drawing expands to more than " + opt.maxCurves() + " curves; the rest is left out");
-            }
+            truncated = true; // refused in run(), once every entity is left
             return;
         }
         if (t.isSimilarity()) {
@@ -579,49 +664,36 @@ public final class DxfReader {
             int code = tags.codes[i];
             if (code == 10) {
                 if (!Double.isNaN(x)) {
-                    vs.add(new Vertex(new Vec2(x, y), bulge));
+                    vs.add(vertex(e, vs.size(), x, y, bulge));
                 }
-                x = parse(tags.values[i], code);
+                x = number(i);
                 y = Double.NaN;
                 bulge = 0;
             } else if (code == 20) {
-                y = parse(tags.values[i], code);
+                y = number(i);
             } else if (code == 42) {
-                bulge = parse(tags.values[i], code);
+                bulge = number(i);
             }
         }
         if (!Double.isNaN(x)) {
-            if (Double.isNaN(y)) {
-                throw new BadEntity("the last vertex has no y (group 20)");
-            }
-            vs.add(new Vertex(new Vec2(x, y), bulge));
-        }
-        for (Vertex v : vs) {
-            if (Double.isNaN(v.p.y())) {
-                throw new BadEntity("a vertex has no y (group 20)");
-            }
+            vs.add(vertex(e, vs.size(), x, y, bulge));
         }
         boolean closed = (((int) num(e, 70, 0)) & 1) != 0;
         DxfAffine o = ocs(e, num(e, 38, 0));
         emitPolyline(vs, closed, layer, o.isIdentity() ? t : t.times(o));
     }
 
-    private double parse(String v, int code) throws BadEntity {
-        try {
-            double d = Double.parseDouble(v);
-            if (!Double.isFinite(d)) {
-                throw new BadEntity("group " + code + " is not finite: " + v);
-            }
-            return d;
-        } catch (NumberFormatException ex) {
-            throw new BadEntity("group " + code + " is not a number: '" + v + "'");
+    private static Vertex vertex(Entity e, int k, double x, double y, double bulge) throws BadEntity {
+        if (Double.isNaN(y)) {
+            throw new BadEntity("vertex " + (k + 1) + " has no y coordinate (group 20)", e.index);
         }
+        return new Vertex(new Vec2(x, y), bulge);
     }
 
     private void polyline(Entity e, String layer, DxfAffine t) throws BadEntity {
         int flags = (int) num(e, 70, 0);
         if ((flags & (16 | 64)) != 0) {
-            count("POLYLINE mesh");
+            count("POLYLINE mesh", e);
             return;
         }
         boolean threeD = (flags & 8) != 0;
@@ -668,11 +740,23 @@ public final class DxfReader {
         double u0 = num(e, 41, 0);
         double u1 = num(e, 42, 2 * Math.PI);
         double nz = num(e, 230, 1);
-        if (major.norm() == 0 || !(ratio > 0) || ratio > 1 + 1e-9) {
-            throw new BadEntity("major axis " + major + " and ratio " + ratio + " do not describe an ellipse");
+        if (major.norm() == 0 || !(ratio > 0)) {
+            throw new BadEntity(String.format(Locale.ROOT,
+                    "major axis (%s, %s) and axis ratio %s do not describe an ellipse (the axis must not be zero, the"
+                    + " ratio must be > 0)", num(major.x()), num(major.y()), num(ratio)));
         }
         // the minor axis is N x major: turned -90 degrees for an extrusion of (0, 0, -1)
         Vec2 minor = (nz >= 0 ? major.leftNormal() : major.leftNormal().negated()).times(ratio);
+        if (ratio > 1) {
+            // QCAD writes the longer axis as the "minor" one: AutoCAD and ezdxf swap the axes, which
+            // turns the parameter by a quarter (old u = new u + pi / 2), and read the same curve
+            Vec2 longer = minor;
+            minor = major.negated();
+            major = longer;
+            ratio = 1 / ratio;
+            u0 -= Math.PI / 2;
+            u1 -= Math.PI / 2;
+        }
         double sweep = u1 - u0;
         if (sweep <= 0) {
             // one step instead of adding 2 pi until positive, which never ends for |u0| >> 2 pi
@@ -697,9 +781,11 @@ public final class DxfReader {
         int pieces = Math.max(1, (int) Math.ceil(span / (Math.PI / 2)));
         boolean full = span == 2 * Math.PI;
         double last = start + span;
+        Vec2 ax = major;
+        Vec2 bx = minor;
         DoubleFunction<Vec2> f = u -> {
             double v = full && u == last ? start : u; // a closed ellipse ends exactly where it starts
-            return t.apply(c.plus(major.times(Math.cos(v)).plus(minor.times(Math.sin(v)))));
+            return t.apply(c.plus(ax.times(Math.cos(v)).plus(bx.times(Math.sin(v)))));
         };
         List<DxfArcFitter.Piece> ps = new ArrayList<>();
         for (int k = 0; k < pieces; k++) {
@@ -854,7 +940,8 @@ public final class DxfReader {
         return "blocks insert each other in a cycle: " + String.join(" -> ", loop);
     }
 
-    private void insert(Entity e, String layer, DxfAffine t, int depth, Deque<String> stack) throws BadEntity {
+    private void insert(Entity e, String layer, DxfAffine t, int depth, Deque<String> stack)
+            throws BadEntity, DxfException {
         String name = str(e, 2, "");
         Block b = blocks.get(name);
         if (b == null) {

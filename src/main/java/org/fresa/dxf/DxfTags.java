@@ -51,6 +51,15 @@ final class DxfTags {
         size++;
     }
 
+    /** A drawing ends with (0, EOF): without it the file was cut short and its end is missing. */
+    private void requireEof(int lastLine) throws DxfException {
+        if (size > 0 && codes[size - 1] == 0 && values[size - 1].equals("EOF")) {
+            return;
+        }
+        throw new DxfException(source, binary ? 0 : lastLine, (binary ? "byte " + lastLine + ": " : "")
+                + "the drawing ends without its closing group 0 EOF (the file is truncated)");
+    }
+
     static DxfTags parse(byte[] data, String source) throws DxfException {
         if (data.length >= BINARY_SENTINEL.length
                 && Arrays.equals(Arrays.copyOf(data, BINARY_SENTINEL.length), BINARY_SENTINEL)) {
@@ -128,6 +137,7 @@ final class DxfTags {
         if (t.size == 0) {
             throw new DxfException(source, 1, "not a DXF file: empty");
         }
+        t.requireEof(line);
         return t;
     }
 
@@ -232,6 +242,7 @@ final class DxfTags {
         } catch (IndexOutOfBoundsException e) {
             throw new DxfException(source, data.length, "binary DXF ends in the middle of a group (file truncated)");
         }
+        t.requireEof(data.length);
         return t;
     }
 

@@ -96,7 +96,7 @@ public final class CuttingService {
      * Reads and plans without writing anything.
      *
      * @param toleranceInDrawingUnits the settings' gap tolerance is in drawing units (the command
-     *     line's {@code --tolerance}), not millimetres (job files, the default 0.001 mm)
+     *     line's {@code --tolerance}), not millimetres (job files, the default {@link CuttingOptions#DEFAULT_GAP_MM})
      */
     public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
             throws CamInputException, IOException {
@@ -126,6 +126,11 @@ public final class CuttingService {
     public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
             ProgressMonitor progress) throws CamInputException, IOException {
         Result r = compute(s, toleranceInDrawingUnits, progress);
+        try {
+            check(r, outFile.getFileName().toString());
+        } catch (ProgramChecks.RefusedProgram e) {
+            return refused(outcome(r, List.of()), e);
+        }
         AtomicFiles.writeString(outFile, r.program());
         return outcome(r, List.of(outFile.toAbsolutePath()));
     }
@@ -135,10 +140,38 @@ public final class CuttingService {
             throws CamInputException, IOException {
         Result r = compute(s, progress);
         out.create();
-        Path p = out.writeString(r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc",
-                r.program());
+        String file = r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc";
+        try {
+            check(r, file);
+        } catch (ProgramChecks.RefusedProgram e) {
+            Path j = out.writeString("summary.json", Json.write(summary(r)));
+            return refused(outcome(r, List.of(j)), e);
+        }
+        Path p = out.writeString(file, r.program());
         Path j = out.writeString("summary.json", Json.write(summary(r)));
         return outcome(r, List.of(p, j));
+    }
+
+    /**
+     * Checks the program as the machine would run it: every cutting move with the process's jet on,
+     * every word in range.
+     */
+    public static void check(Result r, String file) throws ProgramChecks.RefusedProgram {
+        ProgramChecks.require(file, r.program(), ProgramChecks.dialect(r.dialect().id()), limits(r));
+    }
+
+    /** The limits of a sheet-cutting program: the process's on and off words instead of a spindle. */
+    public static org.fresa.check.Limits limits(Result r) {
+        String[] jet = SheetCuttingPost.jetWords(r.dialect(), r.options().process().id());
+        return org.fresa.check.Limits.sheetCutting(r.options().process().id(), jet[0], jet[1]);
+    }
+
+    private static TaskOutcome refused(TaskOutcome o, ProgramChecks.RefusedProgram e) {
+        List<String> problems = new ArrayList<>(o.problems());
+        problems.add(e.getMessage());
+        Map<String, Object> summary = new LinkedHashMap<>(o.summary());
+        summary.put("program_refused", e.failure().message());
+        return new TaskOutcome(1, problems, summary, o.files());
     }
 
     /** The JSON summary (spec/cli.md: contours, outer, inner, open, pierces, lengths, warnings). */
@@ -159,6 +192,37 @@ public final class CuttingService {
         m.put("duplicates_removed", p.duplicates());
         m.put("zero_length_removed", p.zeroLength());
         m.put("invalid_vertices", p.invalidVertices().size());
+        List<Object> notCut = new ArrayList<>();
+        for (CutPlan.NotCut n : p.notCut()) {
+            org.fresa.geom.Box2 b = n.contour().bounds();
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("contour", n.label());
+            e.put("x_mm", round(b.minX()));
+            e.put("y_mm", round(b.minY()));
+            e.put("width_mm", round(b.width()));
+            e.put("height_mm", round(b.height()));
+            e.put("reason", n.reason());
+            notCut.add(e);
+        }
+        for (List<org.fresa.geom.Curve2> chain : p.open()) {
+            org.fresa.geom.Vec2 a = chain.get(0).start();
+            org.fresa.geom.Vec2 z = chain.get(chain.size() - 1).end();
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("contour", "open chain of " + chain.size() + " elements");
+            e.put("x_mm", round(a.x()));
+            e.put("y_mm", round(a.y()));
+            e.put("to_x_mm", round(z.x()));
+            e.put("to_y_mm", round(z.y()));
+            e.put("reason", "open: its ends do not meet within the gap tolerance");
+            notCut.add(e);
+        }
+        // each contour not cut, with its place (lower left corner of its box) and why
+        m.put("not_cut_contours", notCut);
+        List<Object> invalid = new ArrayList<>();
+        for (org.fresa.geom.Vec2 v : p.invalidVertices()) {
+            invalid.add(List.of(round(v.x()), round(v.y())));
+        }
+        m.put("invalid_vertex_points", invalid);
         m.put("units", r.drawing().units().name().toLowerCase(Locale.ROOT));
         m.put("process", r.options().process().id());
         m.put("kerf_mm", r.options().kerfMm());
@@ -184,10 +248,8 @@ public final class CuttingService {
         CutPlan p = r.plan();
         List<String> all = new ArrayList<>(r.drawing().warnings());
         all.addAll(p.warnings());
-        List<String> problems = new ArrayList<>(all.subList(0, Math.min(20, all.size())));
-        if (all.size() > 20) {
-            problems.add((all.size() - 20) + " more warnings (see --json)");
-        }
+        // every one: a contour not cut that the planner is not told of is a part missing from the sheet
+        List<String> problems = new ArrayList<>(all);
         int status = p.cuts().isEmpty() || !p.uncut().isEmpty() ? 1 : 0;
         if (p.cuts().isEmpty()) {
             problems.add("nothing to cut: the drawing has no closed contour");

@@ -16,11 +16,28 @@ public final class JobSettings {
     private JobSettings() {
     }
 
-    /** STEP-NC input and the machine-tool post used by {@code toolpath}. */
-    public record StepNcSettings(Path file, String post) {
+    /**
+     * STEP-NC input, the machine-tool post used by {@code toolpath}, and the planner's choices
+     * where the file is silent or doubtful ({@code toolpath} and {@code robot}).
+     *
+     * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
+     * @param breakthroughMm how far a through hole's tool passes its exit
+     */
+    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
+            SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
+        }
+
+        /** The file and post with the planner's default choices. */
+        public StepNcSettings(Path file, String post) {
+            this(file, post, false, org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM);
+        }
+
+        /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
+        public org.fresa.toolpath.PlanningChoices choices() {
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm);
         }
     }
 
@@ -48,10 +65,16 @@ public final class JobSettings {
      *
      * @param direction {@code climb} (the default: counter-clockwise around the walls with a clockwise
      *     spindle) or {@code conventional}; {@code 7m-compat} always writes the thesis's own direction
+     * @param entry how the tool enters the material: {@code auto} (the default: a helix where it has
+     *     room, else a zig-zag ramp), {@code helix}, {@code ramp} or {@code plunge} (centre-cutting tools
+     *     only); {@code 7m-compat} keeps the thesis's vertical plunge
+     * @param entryAngleDeg steepest descent of a helix or ramp entry (deg)
+     * @param centreCutting whether the cutter cuts at its centre (may plunge)
      */
     public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
             double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-            double finishFeedMmPerMin, String post, String direction) {
+            double finishFeedMmPerMin, String post, String direction, String entry, double entryAngleDeg,
+            boolean centreCutting) {
         /** The milling directions, the default first. */
         public static final List<String> DIRECTIONS = List.of("climb", "conventional");
 
@@ -59,6 +82,16 @@ public final class JobSettings {
             Objects.requireNonNull(contour, "contour");
             Objects.requireNonNull(post, "post");
             Objects.requireNonNull(direction, "direction");
+            Objects.requireNonNull(entry, "entry");
+        }
+
+        /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
+        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
+                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
+                double finishFeedMmPerMin, String post, String direction) {
+            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
+                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, "auto",
+                    org.fresa.pocket.EntryRule.DEFAULT_ANGLE_DEG, false);
         }
 
         /** Climb-milled settings. */
@@ -69,6 +102,26 @@ public final class JobSettings {
                     spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, "climb");
         }
 
+        /**
+         * The entry rule of these settings.
+         *
+         * @throws IllegalArgumentException for an unknown entry name, an angle outside (0, 90] or a
+         *     plunge asked for a tool that does not cut at its centre
+         */
+        public org.fresa.pocket.EntryRule entryRule() {
+            org.fresa.pocket.EntryRule.Kind kind = org.fresa.pocket.EntryRule.Kind.of(entry).orElseThrow(
+                    () -> new IllegalArgumentException("unknown entry '" + entry + "': expected "
+                            + String.join(", ", org.fresa.pocket.EntryRule.Kind.words())));
+            return new org.fresa.pocket.EntryRule(kind, entryAngleDeg, centreCutting);
+        }
+
+        /** The same settings with other entries. */
+        public PocketSettings withEntry(String kind, double angleDeg, boolean centre) {
+            return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
+                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, kind, angleDeg,
+                    centre);
+        }
+
         /** Whether the passes are climb-milled. */
         public boolean climb() {
             return !direction.equals("conventional");
@@ -77,7 +130,8 @@ public final class JobSettings {
         /** The same settings milled in the given direction. */
         public PocketSettings withDirection(String d) {
             return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
-                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d);
+                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d, entry, entryAngleDeg,
+                    centreCutting);
         }
     }
 

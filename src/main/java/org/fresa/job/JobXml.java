@@ -191,7 +191,8 @@ public final class JobXml {
         }
         StepNcType s = x.getStepnc();
         if (s != null) {
-            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost()));
+            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -205,7 +206,8 @@ public final class JobXml {
                     Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
                     Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
                     Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
-                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection()));
+                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection(), p.getEntry(),
+                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting()));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -363,6 +365,13 @@ public final class JobXml {
             StepNcType t = new StepNcType();
             t.setFile(relativize(base, s.file()));
             t.setPost(s.post());
+            // written only when not the default, so that saved jobs stay as they were
+            if (s.trustCuttingSpeed()) {
+                t.setTrustCuttingSpeed(true);
+            }
+            if (s.breakthroughMm() != org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM) {
+                t.setBreakthroughMm(s.breakthroughMm());
+            }
             x.setStepnc(t);
         });
         job.robot().ifPresent(r -> {
@@ -387,6 +396,9 @@ public final class JobXml {
             t.setFinishFeedMmPerMin(p.finishFeedMmPerMin());
             t.setPost(p.post());
             t.setDirection(p.direction());
+            t.setEntry(p.entry());
+            t.setEntryAngleDeg(p.entryAngleDeg());
+            t.setCentreCutting(p.centreCutting());
             x.setPocket(t);
         });
         job.cutting().ifPresent(c -> {

@@ -21,6 +21,7 @@ import org.fresa.model.ContourFile;
 import org.fresa.model.FileChecks;
 import org.fresa.model.Toolpath;
 import org.fresa.pocket.DadReader;
+import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.PassPlanner;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketProfile;
@@ -174,9 +175,16 @@ public final class PocketService {
         return PassPlanner.plan(rec, tech, faithful);
     }
 
-    /** The NC program text for a plan, climb-milled on the G-code posts and 7m. */
-    public static String program(PocketPlan plan, String post, String programName) throws IOException {
+    /** The NC program text for a plan, climb-milled on the G-code posts and 7m, with the default entries. */
+    public static String program(PocketPlan plan, String post, String programName)
+            throws IOException, ToolTooLargeException {
         return program(plan, post, programName, true);
+    }
+
+    /** The NC program text for a plan with the default entries ({@link EntryRule#DEFAULT}). */
+    public static String program(PocketPlan plan, String post, String programName, boolean climb)
+            throws IOException, ToolTooLargeException {
+        return program(plan, post, programName, climb, EntryRule.DEFAULT);
     }
 
     /**
@@ -185,9 +193,12 @@ public final class PocketService {
      * @param climb climb milling (counter-clockwise passes with a clockwise spindle) or conventional
      *     on the G-code posts and {@code 7m}; {@code 7m-compat} writes the thesis's own direction (its
      *     passes as generated, conventional)
+     * @param entry how each sub-area is entered at each depth on the G-code posts and {@code 7m};
+     *     {@code 7m-compat} keeps the thesis's vertical plunge
+     * @throws ToolTooLargeException when an entry has no room and the tool may not plunge
      */
-    public static String program(PocketPlan plan, String post, String programName, boolean climb)
-            throws IOException {
+    public static String program(PocketPlan plan, String post, String programName, boolean climb, EntryRule entry)
+            throws IOException, ToolTooLargeException {
         switch (post) {
             case "7m-compat":
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
@@ -196,7 +207,7 @@ public final class PocketService {
             default: {
                 NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
                 StringWriter w = new StringWriter();
-                p.write(PocketToolpath.of(plan, climb), programName, w);
+                p.write(PocketToolpath.of(plan, climb, entry), programName, w);
                 return w.toString();
             }
         }
@@ -214,6 +225,7 @@ public final class PocketService {
             throw new CamInputException("--direction", "unknown milling direction '" + s.direction()
                     + "': expected " + String.join(" or ", PocketSettings.DIRECTIONS));
         }
+        EntryRule entry = entryRule(s);
         if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
             List<Contour> contours = readContours(s.contour());
             if (contours.size() > 1) {
@@ -221,8 +233,14 @@ public final class PocketService {
             }
         }
         PocketPlan plan;
+        String nc;
+        Toolpath path;
+        boolean thesis = s.post().equals("7m-compat");
+        String name = s.contour().getFileName().toString();
         try {
             plan = plan(s);
+            nc = program(plan, s.post(), name, s.climb(), entry);
+            path = PocketToolpath.of(plan, !thesis && s.climb(), entry);
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
@@ -232,11 +250,14 @@ public final class PocketService {
             problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
-        String name = s.contour().getFileName().toString();
-        String nc = program(plan, s.post(), name, s.climb());
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
         AtomicFiles.writeString(outFile, nc);
-        boolean thesis = s.post().equals("7m-compat");
-        Toolpath path = PocketToolpath.of(plan, !thesis && s.climb());
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post());
@@ -252,6 +273,22 @@ public final class PocketService {
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, problems, summary, List.of(outFile));
+    }
+
+    /**
+     * The entry rule of the settings.
+     *
+     * @throws CamInputException (exit 2) for an unknown entry, an angle out of range or a plunge
+     *     asked for a tool that does not cut at its centre
+     */
+    static EntryRule entryRule(PocketSettings s) throws CamInputException {
+        try {
+            return s.entryRule();
+        } catch (IllegalArgumentException e) {
+            String option = e.getMessage().startsWith("a plunge") ? "--entry plunge" : "--entry";
+            throw new CamInputException(option, e.getMessage()
+                    + (option.equals("--entry plunge") ? ": say so with --centre-cutting, or choose auto, helix or ramp" : ""));
+        }
     }
 
     /**
@@ -289,7 +326,15 @@ public final class PocketService {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         String name = s.contour().getFileName().toString();
-        AtomicFiles.writeString(outFile, regionProgram(plan, s.post(), name));
+        String nc = regionProgram(plan, s.post(), name);
+        try {
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
+                    e.failure().message()), List.of());
+        }
+        AtomicFiles.writeString(outFile, nc);
         double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
                 contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();

@@ -19,6 +19,7 @@ import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**
@@ -36,11 +37,21 @@ public final class RobotService {
     private RobotService() {
     }
 
-    /** What the planner asked for. */
+    /**
+     * What the planner asked for.
+     *
+     * @param choices the toolpath planner's choices where the STEP-NC file is silent or doubtful
+     */
     public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-            List<String> formats) {
+            List<String> formats, PlanningChoices choices) {
+        /** The settings with the planner's default choices. */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
+            this(stepnc, robot, robotTable, tablePiece, formats, PlanningChoices.DEFAULT);
+        }
+
         /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
+            java.util.Objects.requireNonNull(choices, "choices");
             formats = List.copyOf(formats);
             for (String f : formats) {
                 if (!FORMATS.contains(f)) {
@@ -93,9 +104,18 @@ public final class RobotService {
         Timing.mark("robot loaded");
         StepNcProgram program = StepNcService.read(s.stepnc(), progress);
         Timing.mark("part 21 read and bound");
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return ToolpathService.nothingToMachine(program, nothing.get());
+        }
         progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, s.choices());
         Timing.mark("toolpaths planned");
+        if (plan.planned() == 0) {
+            // every workingstep refused: no trajectory and no robot program for nothing
+            return new TaskOutcome(1, plan.problems(), ToolpathService.nothingToMachine(program, "").summary(),
+                    List.of());
+        }
         Toolpath path = plan.toolpath();
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
@@ -136,6 +156,7 @@ public final class RobotService {
         JobSettings.StepNcSettings st = JobRunner.require(job.stepnc(), "stepnc", job);
         JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
         List<String> formats = parseFormats(String.join(",", r.formats()));
-        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats), out, progress);
+        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats, st.choices()), out,
+                progress);
     }
 }

@@ -48,6 +48,16 @@ public final class SettingRanges {
         return SettingRange.of(option, attribute, -TURN_DEG, TURN_DEG, "deg");
     }
 
+    /** {@code fresa toolpath}, {@code fresa robot} and the job's {@code <stepnc>}. */
+    public static final class StepNc {
+        /** How far a through hole's tool passes its exit. */
+        public static final SettingRange BREAKTHROUGH = SettingRange.of("--breakthrough", "breakthroughMm", 0,
+                org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
+
+        private StepNc() {
+        }
+    }
+
     /** {@code fresa pocket} and the job's {@code <pocket>}. */
     public static final class Pocket {
         public static final SettingRange TOOL_DIAMETER = SettingRange.of("--tool-diameter", "toolDiameterMm", 0.01,
@@ -62,6 +72,8 @@ public final class SettingRanges {
         public static final SettingRange SPINDLE = spindle("--rpm", "spindleRpm");
         public static final SettingRange FEED = feed("--feed", "feedMmPerMin");
         public static final SettingRange FINISH_FEED = feed("--finish-feed", "finishFeedMmPerMin");
+        /** Steepest descent of a helix or ramp entry: below half a degree a ramp is no entry, 90 is a plunge. */
+        public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
 
         private Pocket() {
         }

@@ -1,8 +1,6 @@
 package org.fresa.job;
 
 import java.io.IOException;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -232,6 +230,11 @@ public final class SoleService {
             throw new CamInputException("sole", "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
                     + p.tools().keySet());
         }
+        java.util.Optional<org.fresa.sole.CavityToolRule.Violation> tight =
+                org.fresa.sole.CavityToolRule.check(g.output().get(0), t.diameterMm());
+        if (tight.isPresent()) {
+            throw new CamInputException("sole", "size " + g.name() + ": " + tight.get().sentence());
+        }
         Contour outline = foot == Foot.RIGHT ? g.output().get(0)
                 : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
         try {
@@ -277,11 +280,7 @@ public final class SoleService {
             for (Foot foot : Foot.values()) {
                 Toolpath tp = treadProgram(p, g, foot);
                 String name = "tread-" + g.name() + "-" + foot.id();
-                out.write(name + ".ngc", os -> {
-                    Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-                    p.post().write(tp, name, w);
-                    w.flush();
-                });
+                writeChecked(out, name + ".ngc", tp, p, ProgramChecks.soleTread(s), cavityProblems);
                 m.put(foot.id() + "_moves", tp.moveCount());
                 java.util.Optional<Toolpath> cavity;
                 try {
@@ -294,11 +293,7 @@ public final class SoleService {
                 if (cavity.isPresent()) {
                     String cname = "cavity-" + g.name() + "-" + foot.id();
                     Toolpath ct = cavity.get();
-                    out.write(cname + ".ngc", os -> {
-                        Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-                        p.post().write(ct, cname, w);
-                        w.flush();
-                    });
+                    writeChecked(out, cname + ".ngc", ct, p, ProgramChecks.soleCavity(s), cavityProblems);
                     m.put(foot.id() + "_cavity_moves", ct.moveCount());
                 }
                 Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
@@ -329,6 +324,19 @@ public final class SoleService {
                     + " the tread programs, outlines and sheets are written");
         }
         return new TaskOutcome(problems.isEmpty() ? 0 : 1, problems, summary, out.written());
+    }
+
+    /** Writes the program when it passes the program check; otherwise says why it is not written. */
+    private static void writeChecked(OutputFolder out, String file, Toolpath tp, SolePlan p,
+            org.fresa.check.Limits limits, List<String> problems) throws IOException {
+        java.io.StringWriter w = new java.io.StringWriter();
+        p.post().write(tp, file.replaceFirst("\\.ngc$", ""), w);
+        try {
+            ProgramChecks.require(file, w.toString(), ProgramChecks.dialect(p.post().name()), limits);
+            out.writeString(file, w.toString());
+        } catch (ProgramChecks.RefusedProgram e) {
+            problems.add(e.getMessage());
+        }
     }
 
     private static List<Curve2> feeds(Toolpath tp, Vec2 dx) {

@@ -62,6 +62,7 @@ public final class StepNcService {
     public static Map<String, Object> summary(StepNcProgram p) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("schema", p.schema());
+        m.put("form", p.form());
         m.put("instances", p.instanceCount());
         m.put("project", p.projectId());
         List<Object> ws = new ArrayList<>();
@@ -230,7 +231,11 @@ public final class StepNcService {
         StringBuilder sb = new StringBuilder();
         sb.append(p.source()).append(": ").append(p.schema().isEmpty() ? "no schema" : p.schema())
                 .append(", ").append(p.instanceCount()).append(" instances (")
-                .append(p.dialect() == StepNcProgram.Dialect.ISO_14649 ? "ISO 14649 units" : "STEP Modeler units")
+                .append(switch (p.dialect()) {
+                    case ISO_14649 -> "ISO 14649 units";
+                    case STEP_MODELER -> "STEP Modeler units";
+                    case AP238_AIM -> "AP238 AIM; every value converted from its own unit to mm, mm/min, rpm";
+                })
                 .append(")\n");
         sb.append("project '").append(p.projectId()).append("'\n");
         for (Workpiece w : p.workpieces()) {

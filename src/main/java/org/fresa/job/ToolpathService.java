@@ -16,6 +16,7 @@ import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
+import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**
@@ -40,13 +41,27 @@ public final class ToolpathService {
                 "unknown post '" + name + "': expected one of " + String.join(", ", NcPosts.names())));
     }
 
-    /** Plans and writes the three files into the folder. */
+    /** Plans and writes the three files into the folder, with the planner's default choices. */
     public static TaskOutcome run(Path file, String postName, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
+        return run(file, postName, PlanningChoices.DEFAULT, out, progress);
+    }
+
+    /** Plans with these choices and writes the three files into the folder. */
+    public static TaskOutcome run(Path file, String postName, PlanningChoices choices, OutputFolder out,
+            ProgressMonitor progress) throws CamInputException, IOException {
         NcPost post = post(postName, "--post");
         StepNcProgram program = StepNcService.read(file, progress);
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return nothingToMachine(program, nothing.get());
+        }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        if (plan.planned() == 0) {
+            // every workingstep refused: an empty program would look like a finished job
+            return new TaskOutcome(1, plan.problems(), nothingToMachine(program, "").summary(), List.of());
+        }
         Toolpath path = plan.toolpath();
         out.create();
         out.write("toolpath.csv", os -> {
@@ -55,16 +70,33 @@ public final class ToolpathService {
             w.flush();
         });
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        out.write("program.ngc", os -> {
-            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-            post.write(path, name, w);
-            w.flush();
-        });
+        java.io.StringWriter nc = new java.io.StringWriter();
+        post.write(path, name, nc);
+        List<String> problems = new ArrayList<>(plan.problems());
         Map<String, Object> summary = summary(program, plan, post);
+        boolean refused = false;
+        try {
+            ProgramChecks.require("program.ngc", nc.toString(), ProgramChecks.dialect(post.name()),
+                    ProgramChecks.stepnc(program, plan));
+            out.writeString("program.ngc", nc.toString());
+        } catch (ProgramChecks.RefusedProgram e) {
+            problems.add(e.getMessage());
+            summary.put("program_refused", e.failure().message());
+            refused = true;
+        }
         out.writeString("summary.json", Json.writePretty(summary));
         progress.progress(1, "done");
-        int status = plan.problems().isEmpty() || plan.planned() == plan.workingsteps() ? 0 : 1;
-        return new TaskOutcome(status, plan.problems(), summary, out.written());
+        int status = !refused && (plan.problems().isEmpty() || plan.planned() == plan.workingsteps()) ? 0 : 1;
+        return new TaskOutcome(status, problems, summary, out.written());
+    }
+
+    /** A file with nothing to machine writes no program: an empty one would look like a finished job. */
+    static TaskOutcome nothingToMachine(StepNcProgram program, String why) {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("schema", program.schema());
+        summary.put("workingsteps", 0);
+        summary.put("planned", 0);
+        return new TaskOutcome(1, List.of(why), summary, List.of());
     }
 
     /** The job task. */
@@ -72,7 +104,7 @@ public final class ToolpathService {
             throws CamInputException, IOException {
         JobSettings.StepNcSettings s = JobRunner.require(job.stepnc(), "stepnc", job);
         String post = s.post() == null || s.post().isBlank() ? NcPosts.DEFAULT : s.post();
-        return run(s.file(), post, out, progress);
+        return run(s.file(), post, s.choices(), out, progress);
     }
 
     static Map<String, Object> summary(StepNcProgram program, ToolpathPlanner.Plan plan, NcPost post) {
@@ -97,6 +129,7 @@ public final class ToolpathService {
             x.put("workingstep_instance", step.workingstepInstanceId());
             x.put("tool", s.toolNumber());
             x.put("tool_diameter_mm", s.toolDiameterMm());
+            x.put("spindle_rpm", s.spindleRpm());
             x.put("moves", s.moves().size());
             x.put("feed_mm_per_min", step.feed().feedMmPerMin());
             x.put("feed_read_as", step.feed().readAs());

@@ -3,7 +3,8 @@
  * planner edits, its XML form ({@code schemas/job.xsd}), the module services that execute a job
  * and the atomic writing of their output files.
  *
- * <p>Dependencies: {@code chart} for plots written as files, every domain package
+ * <p>Dependencies: {@code check} (every program is checked before it is written), {@code chart}
+ * for plots written as files, every domain package
  * ({@code stepnc}, {@code dxf}, {@code pocket}, {@code toolpath}, {@code cutting},
  * {@code grading}, {@code sole}, {@code post}), {@code kin}, {@code model}, {@code geom}; never
  * {@code ui} or {@code app}. File I/O is allowed here and above, not below.

@@ -2,6 +2,10 @@ package org.fresa.pocket;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
@@ -10,8 +14,9 @@ import org.fresa.model.ToolpathSection;
 
 /**
  * A pocket plan as a generic {@link Toolpath} for the G-code posts: every depth pass at its own
- * depth, each sub-area entered by a ramp along its innermost pass (no vertical plunge into solid
- * material), passes inside out, links inside cleared material as straight feed moves (the next outer
+ * depth, each sub-area entered by a helix or a zig-zag ramp no steeper than the entry angle
+ * ({@link Entries}; no vertical plunge into solid material unless the tool cuts at its centre and
+ * a plunge is asked for), passes inside out, links inside cleared material as straight feed moves (the next outer
  * pass encloses the inner one), a retract and rapid between sibling sub-areas, arcs as
  * {@link Move.Circular} about +Z. Climb milling reverses each pass (counter-clockwise with a
  * clockwise spindle) unless conventional milling is asked for. Where the thesis's near-tangent
@@ -25,8 +30,20 @@ public final class PocketToolpath {
     private PocketToolpath() {
     }
 
-    /** The moves of the plan; climb reverses the passes' direction. */
-    public static Toolpath of(PocketPlan plan, boolean climb) {
+    /** The moves of the plan with the default entries ({@link EntryRule#DEFAULT}); climb reverses the passes' direction. */
+    public static Toolpath of(PocketPlan plan, boolean climb) throws ToolTooLargeException {
+        return of(plan, climb, EntryRule.DEFAULT);
+    }
+
+    /**
+     * The moves of the plan; climb reverses the passes' direction; each sub-area at each depth
+     * is entered as the rule allows ({@link Entries}): a helix inside the region the passes clear,
+     * else a zig-zag ramp along the sub-area's innermost pass.
+     *
+     * @throws ToolTooLargeException when an entry has no room for a helix or a ramp and the tool
+     *     may not plunge, or the program would have more than {@link PocketTechnology#MAX_MOVES} moves
+     */
+    public static Toolpath of(PocketPlan plan, boolean climb, EntryRule rule) throws ToolTooLargeException {
         PocketTechnology t = plan.technology();
         List<Move> moves = new ArrayList<>();
         double safe = t.zTopMm() + CLEARANCE_MM;
@@ -35,6 +52,7 @@ public final class PocketToolpath {
             passes.add(climb ? p.reversed().pieces() : p.pieces());
         }
         List<PocketPass> milled = plan.milled();
+        Entries.Room room = room(milled, t.finishFraction() * t.toolDiameterMm());
         int levels = t.depthPasses();
         for (int j = 1; j <= levels; j++) {
             double z = t.zTopMm() - j * t.depthStepMm();
@@ -53,28 +71,22 @@ public final class PocketToolpath {
                     double layerTop = z + t.depthStepMm();
                     moves.add(new Move.Rapid(new Vec3(lastXY(moves, s).x(), lastXY(moves, s).y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
-                    moves.add(new Move.Rapid(at(s, t.zTopMm() + 1)));
-                    moves.add(new Move.Linear(at(s, layerTop), t.feedMmPerMin()));
-                    // ramp down along the innermost pass itself instead of plunging into solid material
-                    double total = 0;
-                    for (PassPiece pc : pieces) {
-                        total += Math.max(pc.lengthMm(), pc.start().distance(pc.end()));
-                    }
-                    if (total < 1e-6) {
-                        moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
-                    } else {
-                        double done = 0;
-                        for (PassPiece pc : pieces) {
-                            double len = Math.max(pc.lengthMm(), pc.start().distance(pc.end()));
-                            double z0 = layerTop - (layerTop - z) * done / total;
-                            done += len;
-                            double z1 = layerTop - (layerTop - z) * done / total;
-                            piece(moves, pc, z0, z1, t.feedMmPerMin());
-                        }
-                    }
+                    // down at rapid through the pocket cleared at the layer above, to 1 mm above its floor
+                    double above = layerTop + 1;
+                    moves.add(new Move.Rapid(at(s, above)));
+                    // no straight feed down at all: a helix or a zig-zag ramp within the entry angle
+                    Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), above - z)
+                            .orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
+                                    "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
+                                            + " tool (--centre-cutting) may plunge there", s.x(), s.y())));
+                    moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
                 for (PassPiece pc : pieces) {
                     piece(moves, pc, z, z, feed);
+                }
+                if (moves.size() > PocketTechnology.MAX_MOVES) {
+                    throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
+                            + " moves: use a larger depth per pass, a larger entry angle or a larger tool");
                 }
             }
         }
@@ -86,6 +98,58 @@ public final class PocketToolpath {
         ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
                 new Vec3(s0.x(), s0.y(), safe), moves);
         return new Toolpath(List.of(section));
+    }
+
+    /**
+     * Where a helix may lie: inside the loop of a milled pass, everything inside which is cleared
+     * at every depth; inside the finishing pass only as far as the finishing allowance stays.
+     */
+    private static Entries.Room room(List<PocketPass> milled, double allowanceMm) {
+        List<Contour> loops = new ArrayList<>();
+        List<Double> margins = new ArrayList<>();
+        for (PocketPass p : milled) {
+            List<Curve2> c = chain(p.pieces());
+            if (!c.isEmpty()) {
+                loops.add(new Contour(c));
+                margins.add(p.finishing() ? allowanceMm : 0.0);
+            }
+        }
+        return (centre, r) -> {
+            for (int i = 0; i < loops.size(); i++) {
+                Contour loop = loops.get(i);
+                if (loop.distanceTo(centre) >= r + margins.get(i) + 1e-6 && loop.windingNumber(centre) != 0) {
+                    return true;
+                }
+            }
+            return false;
+        };
+    }
+
+    /** The pieces as the curves the tool follows ({@link #piece}): arcs on their circles, snapped junctions as lines. */
+    static List<Curve2> chain(List<PassPiece> pieces) {
+        List<Curve2> out = new ArrayList<>();
+        Vec2 at = pieces.isEmpty() ? Vec2.ZERO : pieces.get(0).start();
+        for (PassPiece pc : pieces) {
+            Vec2 c = pc.center();
+            double rn = pc.isArc() ? pc.radiusMm() : 0;
+            if (!pc.isArc() || rn < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
+                add(out, at, pc.end());
+            } else {
+                Vec2 start = onCircle(pc.start(), c, rn);
+                Vec2 end = onCircle(pc.end(), c, rn);
+                add(out, at, start);
+                out.add(new Arc2(c, start, end, pc.ccw()));
+                add(out, end, pc.end());
+            }
+            at = pc.end();
+        }
+        return out;
+    }
+
+    private static void add(List<Curve2> out, Vec2 from, Vec2 to) {
+        if (from.distance(to) > 1e-9) {
+            out.add(new Segment2(from, to));
+        }
     }
 
     /** One piece from height z0 to z1 (a helix for arcs when they differ). */
@@ -129,7 +193,7 @@ public final class PocketToolpath {
         return new Vec3(p.x(), p.y(), z);
     }
 
-    /** Total length of the feed and rapid moves' XY projection plus Z travel (mm). */
+    /** Total length of the feed and rapid moves (mm): lines and helices in space, full turns counted. */
     public static double lengthMm(Toolpath path) {
         double len = 0;
         for (ToolpathSection s : path.sections()) {
@@ -144,7 +208,12 @@ public final class PocketToolpath {
                     } else if (!c.ccw() && sweep > 0) {
                         sweep -= 2 * Math.PI;
                     }
-                    len += Math.abs(sweep) * a.norm();
+                    if (Math.abs(sweep) < 1e-12 && a.distance(b) < 1e-9) {
+                        sweep = 2 * Math.PI;
+                    }
+                    // a helix's extra full turns and its rise
+                    double turnsMm = (Math.abs(sweep) + 2 * Math.PI * c.turns()) * a.norm();
+                    len += Math.hypot(turnsMm, c.end().z() - cur.z());
                 } else {
                     len += cur.minus(m.end()).norm();
                 }

@@ -166,6 +166,14 @@ public final class SheetCuttingPost {
     }
 
     private String[] jetCodes(String process) {
+        return jetWords(d, process);
+    }
+
+    /**
+     * The words that switch the process on and off in the dialect ({@code M07}/{@code M08}, or on
+     * LinuxCNC {@code M3 S1}/{@code M5} for plasma and the digital outputs for laser and waterjet).
+     */
+    public static String[] jetWords(Dialect d, String process) {
         if (d != Dialect.LINUXCNC) {
             return new String[] {"M07", "M08"};
         }

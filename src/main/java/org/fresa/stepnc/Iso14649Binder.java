@@ -397,6 +397,44 @@ final class Iso14649Binder {
         return p.isPresent() ? placementAttr(p.get(), "position") : Optional.empty();
     }
 
+    // ---- the geometry binding, shared with the AP238 AIM binder ----
+
+    private E geometry(long id, String kind) throws StepParseException {
+        Optional<E> e = known(id);
+        if (e.isEmpty() || !e.get().def.isA(kind)) {
+            int i = file.indexOf(id);
+            StepInstance inst = i < 0 ? null : file.instanceAt(i);
+            throw new StepParseException(file.source(), inst == null ? 0 : inst.line(), inst == null ? 0 : inst.column(),
+                    id, "expected a " + kind + ", found #" + id + " " + typeOf(id));
+        }
+        return e.get();
+    }
+
+    /** CARTESIAN_POINT #id, in the file's length unit. */
+    Vec3 pointOf(long id) throws StepParseException {
+        return point(geometry(id, "CARTESIAN_POINT"));
+    }
+
+    /** DIRECTION #id, normalised. */
+    Vec3 directionOf(long id) throws StepParseException {
+        return direction(geometry(id, "DIRECTION"));
+    }
+
+    /** AXIS2_PLACEMENT_3D #id as a frame, in the file's length unit. */
+    Transform3 placementOf(long id) throws StepParseException {
+        return placement(geometry(id, "AXIS2_PLACEMENT_3D"));
+    }
+
+    /** PLANE #id: its position. */
+    Optional<Transform3> planeOf(long id) throws StepParseException {
+        return placementAttr(geometry(id, "PLANE"), "position");
+    }
+
+    /** The doubts the geometry binding noted so far. */
+    List<String> geometryWarnings() {
+        return List.copyOf(warnings);
+    }
+
     // ---- project level ----
 
     StepNcProgram bind() throws StepParseException {
@@ -719,10 +757,17 @@ final class Iso14649Binder {
     }
 
     private Profile general(E p, Transform3 pl, String attr) throws StepParseException {
-        Optional<Long> cid = refId(p, attr);
+        return curveProfile(p.name(), p.id(), pl, refId(p, attr));
+    }
+
+    /**
+     * A POLYLINE or COMPOSITE_CURVE as a general profile of the given entity; {@link Profile.Other}
+     * when the curve is missing or of another kind.
+     */
+    Profile curveProfile(String entity, long ownerId, Transform3 pl, Optional<Long> cid) throws StepParseException {
         Optional<E> c = cid.flatMap(this::known);
         if (c.isEmpty()) {
-            return new Profile.Other(p.name(), pl, p.id());
+            return new Profile.Other(entity, pl, ownerId);
         }
         List<Profile.Segment> segs = new ArrayList<>();
         if (c.get().def.isA("POLYLINE")) {
@@ -741,18 +786,18 @@ final class Iso14649Binder {
             for (long id : refList(c.get(), "segments")) {
                 Optional<Profile.Segment> s = compositeSegment(id);
                 if (s.isEmpty()) {
-                    warnings.add("#" + p.id() + " " + p.name() + ": composite curve segment #" + id
+                    warnings.add("#" + ownerId + " " + entity + ": composite curve segment #" + id
                             + " is not a trimmed line or circle with point trims; the profile is kept raw");
-                    return new Profile.Other(p.name(), pl, p.id());
+                    return new Profile.Other(entity, pl, ownerId);
                 }
                 segs.add(s.get());
             }
         } else {
-            return new Profile.Other(p.name(), pl, p.id());
+            return new Profile.Other(entity, pl, ownerId);
         }
         boolean closed = !segs.isEmpty()
                 && segs.get(0).start().distance(segs.get(segs.size() - 1).end()) <= 1e-9;
-        return new Profile.General(p.name(), pl, c.get().name(), segs, closed);
+        return new Profile.General(entity, pl, c.get().name(), segs, closed);
     }
 
     private Optional<Profile.Segment> compositeSegment(long id) throws StepParseException {

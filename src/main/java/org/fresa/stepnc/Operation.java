@@ -1,5 +1,6 @@
 package org.fresa.stepnc;
 
+import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
@@ -26,13 +27,27 @@ import org.fresa.geom.Vec3;
  * @param cuttingDepthMm drilling: depth of the drilling operation
  * @param overcutLengthMm overcut_length
  * @param drilling drilling-type operations: dwell, retract feed, steps, spindle stop
+ * @param toolpaths its explicit toolpaths (its_toolpath), in order; empty when the planner makes them
  */
 public record Operation(long instanceId, OperationType type, String entity, String id,
         OptionalDouble retractPlaneMm, Optional<Vec3> startPoint, Optional<Tool> tool, Technology technology,
         Optional<Strategy> strategy, Optional<ApproachRetract> approach, Optional<ApproachRetract> retract,
         OptionalDouble axialCuttingDepthMm, OptionalDouble radialCuttingDepthMm, OptionalDouble allowanceSideMm,
         OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm,
-        Optional<DrillingParameters> drilling) {
+        Optional<DrillingParameters> drilling, List<ExplicitToolpath> toolpaths) {
+
+    /** An operation without explicit toolpaths. */
+    public Operation(long instanceId, OperationType type, String entity, String id,
+            OptionalDouble retractPlaneMm, Optional<Vec3> startPoint, Optional<Tool> tool, Technology technology,
+            Optional<Strategy> strategy, Optional<ApproachRetract> approach, Optional<ApproachRetract> retract,
+            OptionalDouble axialCuttingDepthMm, OptionalDouble radialCuttingDepthMm, OptionalDouble allowanceSideMm,
+            OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm,
+            Optional<DrillingParameters> drilling) {
+        this(instanceId, type, entity, id, retractPlaneMm, startPoint, tool, technology, strategy, approach, retract,
+                axialCuttingDepthMm, radialCuttingDepthMm, allowanceSideMm, allowanceBottomMm, cuttingDepthMm,
+                overcutLengthMm, drilling, List.of());
+    }
+
     public Operation {
         Objects.requireNonNull(type);
         Objects.requireNonNull(entity);
@@ -51,6 +66,7 @@ public record Operation(long instanceId, OperationType type, String entity, Stri
         Objects.requireNonNull(cuttingDepthMm);
         Objects.requireNonNull(overcutLengthMm);
         Objects.requireNonNull(drilling);
+        toolpaths = List.copyOf(toolpaths);
     }
 
     public enum OperationType {

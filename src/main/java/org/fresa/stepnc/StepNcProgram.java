@@ -43,6 +43,62 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
         Objects.requireNonNull(file);
     }
 
+    /**
+     * The file is AP238 in its integrated form (AIM, as STEP Tools' ST-Developer and STEP-NC Maker
+     * write it): its workingsteps are {@code action_method}s tied by relationships, read through
+     * their AIM mapping into this model.
+     */
+    public boolean integratedForm() {
+        return dialect == Dialect.AP238_AIM;
+    }
+
+    /** "ARM" (ISO 14649 entities) or "AIM" (AP238 integrated form). */
+    public String form() {
+        return integratedForm() ? "AIM" : "ARM";
+    }
+
+    /**
+     * Why a program with no executable workingstep gives nothing to machine, in the planner's
+     * words; empty when there are workingsteps.
+     */
+    public Optional<String> whyNothingToMachine() {
+        if (!workingsteps.isEmpty()) {
+            return Optional.empty();
+        }
+        StringBuilder why = new StringBuilder(source).append(" has no workingstep reached from a workplan");
+        if (!skipped.isEmpty()) {
+            why.append(" (").append(skipped.size()).append(" skipped: ");
+            for (int i = 0; i < Math.min(3, skipped.size()); i++) {
+                Skipped s = skipped.get(i);
+                why.append(i > 0 ? "; " : "").append('#').append(s.instanceId()).append(" '").append(s.id())
+                        .append("' ").append(s.reason());
+            }
+            why.append(skipped.size() > 3 ? "; ...)" : ")");
+        }
+        return Optional.of(why.append(": nothing to machine, no program written").toString());
+    }
+
+    /**
+     * The workpiece a feature is made in: the one its its_workpiece names, else the project's
+     * only workpiece; empty when neither tells.
+     */
+    public Optional<Workpiece> workpieceOf(Feature f) {
+        Optional<StepInstance> inst = file.instance(f.instanceId());
+        if (inst.isPresent() && !inst.get().isComplex()) {
+            // ISO 14649-10 manufacturing_feature: its_id, its_workpiece, its_operations, ...
+            int i = Iso14649Schema.get().find(inst.get().record().type())
+                    .map(l -> l.def().indexOf("its_workpiece")).orElse(-1);
+            if (i >= 0 && inst.get().record().param(i) instanceof StepValue.Ref r) {
+                for (Workpiece w : workpieces) {
+                    if (w.instanceId() == r.id()) {
+                        return Optional.of(w);
+                    }
+                }
+            }
+        }
+        return workpieces.size() == 1 ? Optional.of(workpieces.get(0)) : Optional.empty();
+    }
+
     /** The schema names joined as the header lists them. */
     public String schema() {
         return String.join(",", schemas);
@@ -64,6 +120,11 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
          * UFSC GRIMA's writers (STEP Modeler, COMBINED_SCHEMA, and their JSDAI files whose spindle
          * speeds are rpm): spindle rpm, cutting speed m/min, overlap in mm, angles in radians
          */
-        STEP_MODELER
+        STEP_MODELER,
+        /**
+         * AP238 in its integrated form (AIM): every measure carries its own unit and is converted
+         * to mm, mm/min, rpm and degrees when it is read
+         */
+        AP238_AIM
     }
 }

@@ -7,7 +7,8 @@ import java.nio.file.Path;
 
 /**
  * Reads an ISO 14649 (STEP-NC) Part 21 file into a {@link StepNcProgram}: the Part 21 layer
- * ({@link Part21Reader}) then the binding driven by {@link Iso14649Schema}.
+ * ({@link Part21Reader}) then the binding driven by {@link Iso14649Schema}, or, for AP238 in its
+ * integrated form (AIM), {@link Ap238AimBinder}.
  */
 public final class StepNcReader {
     private StepNcReader() {
@@ -31,6 +32,9 @@ public final class StepNcReader {
 
     /** Binds an already parsed file. */
     public static StepNcProgram bind(StepFile file) throws StepParseException {
+        if (Ap238AimBinder.isIntegrated(file.schemas())) {
+            return new Ap238AimBinder(file).bind();
+        }
         return new Iso14649Binder(file).bind();
     }
 }

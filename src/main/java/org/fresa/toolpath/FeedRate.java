@@ -46,14 +46,26 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
         }
     }
 
-    /** The operation's feed, by the rules of the class comment. */
+    /** The operation's feed, by the rules of the class comment, at the file's spindle speed. */
     public static FeedRate of(Operation op) {
+        Technology t = op.technology();
+        return of(op, t.spindleRpm().isPresent() ? t.spindleRpm().getAsDouble() : 0);
+    }
+
+    /**
+     * The operation's feed, by the rules of the class comment, with chip loads multiplied by the
+     * spindle speed the workingstep is cut with (which may come from the cutting speed,
+     * {@link CuttingData}).
+     *
+     * @param spindleRpm the spindle speed; 0 or less when there is none
+     */
+    public static FeedRate of(Operation op, double spindleRpm) {
         Technology t = op.technology();
         if (t.feedMmPerMin().isPresent() && t.feedMmPerMin().getAsDouble() > 0) {
             return new FeedRate(t.feedMmPerMin().getAsDouble(), t.feedrateUnit(), t.feedrate(), OptionalInt.empty(),
                     OptionalDouble.empty());
         }
-        OptionalDouble rpm = t.spindleRpm().isPresent() && t.spindleRpm().getAsDouble() > 0 ? t.spindleRpm()
+        OptionalDouble rpm = spindleRpm > 0 && Double.isFinite(spindleRpm) ? OptionalDouble.of(spindleRpm)
                 : OptionalDouble.empty();
         OptionalInt teeth = op.tool().map(tool -> tool.teeth()).filter(k -> k.isPresent() && k.getAsInt() > 0)
                 .orElse(OptionalInt.empty());

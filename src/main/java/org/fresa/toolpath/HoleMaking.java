@@ -7,6 +7,8 @@ import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
+import org.fresa.pocket.Entries;
+import org.fresa.pocket.EntryRule;
 
 /**
  * Round holes in the feature frame (axis +Z through {@code center}), written as explicit moves
@@ -210,6 +212,13 @@ public final class HoleMaking {
         b.rapid(Vec3.of(p0, start));
         double dz = start - h.bottomZ();
         int turns = axialDepthMm > 0 ? Math.max(1, (int) Math.ceil(dz / axialDepthMm - 1e-9)) : 1;
+        // a milling cutter is not taken to cut at its centre: the helix no steeper than the entry angle
+        double byAngle = Math.ceil(dz / (2 * Math.PI * rp * Math.tan(Math.toRadians(EntryRule.DEFAULT_ANGLE_DEG))) - 1e-9);
+        if (!(byAngle <= Entries.MAX_STEPS)) {
+            throw new IllegalArgumentException("the hole (D" + holeDiameterMm + ") leaves the tool (D" + tool.diameterMm()
+                    + ") no helix within " + EntryRule.DEFAULT_ANGLE_DEG + " deg");
+        }
+        turns = Math.max(turns, (int) byAngle);
         b.arc(Vec3.of(p0, h.bottomZ()), Vec3.of(center, start), !clockwise, turns - 1, tool.feedMmPerMin());
         b.arc(Vec3.of(p0, h.bottomZ()), Vec3.of(center, h.bottomZ()), !clockwise, 0, tool.feedMmPerMin());
         b.feed(Vec3.of(center, h.bottomZ()), tool.feedMmPerMin());

@@ -40,6 +40,14 @@ final class MoveBuilder {
         }
     }
 
+    /** Moves that start where the tool is (an entry's). */
+    void append(List<Move> ms) {
+        for (Move m : ms) {
+            moves.add(m);
+            at = m.end();
+        }
+    }
+
     /** The tool waits where it is. */
     void dwell(double seconds) {
         moves.add(new Move.Dwell(at, seconds));

@@ -1,7 +1,6 @@
 package org.fresa.toolpath;
 
 import java.util.List;
-import java.util.Optional;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
@@ -9,6 +8,9 @@ import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.model.ToolpathSection;
+import org.fresa.pocket.Entries;
+import org.fresa.pocket.Entry;
+import org.fresa.pocket.EntryRule;
 
 /**
  * A closed pocket cleared layer by layer (thesis section 3.2.2.2), in the feature frame: the
@@ -17,7 +19,7 @@ import org.fresa.model.ToolpathSection;
  *
  * <p>Each layer repeats the strategy's passes ({@link PlanarPasses}). A pass that cannot be
  * joined at depth is reached by lifting just above the previous layer (1 mm, or less under the
- * retract height), traversing, and entering again with the plan's approach. The section starts
+ * retract height), traversing, and entering again within the entry angle ({@link #enter}). The section starts
  * and ends at the clearance height above the first pass.
  */
 public final class PocketMilling {
@@ -81,67 +83,76 @@ public final class PocketMilling {
                 b.feed(Vec3.of(p.start(), z), tool.feedMmPerMin());
             } else {
                 b.liftAndTraverse(p.start(), lift);
-                enter(b, p, region, z, tool, plan, tol);
+                enter(b, p, ahead(passes, i), region, z, tool, plan, tol);
             }
             b.curves(p.curves(), z, tool.feedMmPerMin());
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), lift));
     }
 
-    /** From the tool's height straight above the pass start down to z, by the plan's approach. */
-    static void enter(MoveBuilder b, Pass p, Ring region, double z, Tooling tool, MillingPlan plan, Tolerance tol) {
-        double top = b.at().z();
-        double dz = top - z;
+    /**
+     * From the tool's height straight above the pass start (the lift height, just above the
+     * material) down to z by the entry the plan's approach and the entry angle allow ({@link #rule}, {@link Entries}): a helix inside the tool-centre region,
+     * else a zig-zag ramp along the pass.
+     *
+     * @param ahead the path the tool follows at depth from the pass start ({@link #ahead})
+     * @throws IllegalArgumentException when there is room for neither (the workingstep is refused)
+     */
+    static void enter(MoveBuilder b, Pass p, List<Curve2> ahead, Ring region, double z, Tooling tool,
+            MillingPlan plan, Tolerance tol) {
         Vec3 bottom = Vec3.of(p.start(), z);
-        if (dz <= 0) {
+        // from the lift height just above the material: no straight feed down, even through the air
+        double top = b.at().z();
+        if (top <= z) {
             b.feed(bottom, tool.plungeFeedMmPerMin());
             return;
         }
-        if (plan.approach() instanceof Approach.Ramp ramp && !p.curves().isEmpty()
-                && p.curves().get(0) instanceof Segment2 s && s.length() > tol.linear()) {
-            double horizontal = dz / Math.tan(Math.toRadians(ramp.angleDeg()));
-            int legs = 2 * (int) Math.ceil(horizontal / (2 * s.length()) - 1e-12);
-            legs = Math.max(2, legs);
-            double leg = Math.min(s.length(), horizontal / legs);
-            Vec2 far = p.start().plus(s.direction().normalized().times(leg));
-            for (int k = 1; k <= legs; k++) {
-                Vec2 xy = k % 2 == 1 ? far : p.start();
-                b.feed(Vec3.of(xy, top - dz * k / legs), tool.plungeFeedMmPerMin());
-            }
-            return;
+        EntryRule rule = rule(plan.approach());
+        Contour boundary = new Contour(region.curves());
+        Entries.Room room = (centre, r) -> boundary.distanceTo(centre) >= r - tol.linear()
+                && boundary.windingNumber(centre) != 0;
+        Entry entry = Entries.choose(rule, p.start(), ahead, !plan.clockwise(), room, tool.radiusMm(), top - z)
+                .orElse(null);
+        if (entry == null) {
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                    "no room for a helix or a ramp no steeper than %.1f deg to enter at X%.3f Y%.3f, and a milling"
+                            + " cutter is not taken to cut at its centre", rule.angleDeg(), p.start().x(), p.start().y()));
         }
-        if (plan.approach() instanceof Approach.Helix helix) {
-            Optional<Vec2> centre = helixCentre(p, region, helix.radiusMm(), tol);
-            if (centre.isPresent()) {
-                double pitch = 2 * Math.PI * helix.radiusMm() * Math.tan(Math.toRadians(helix.angleDeg()));
-                int turns = Math.max(1, (int) Math.ceil(dz / pitch - 1e-12));
-                b.arc(bottom, Vec3.of(centre.get(), top), !plan.clockwise(), turns - 1, tool.plungeFeedMmPerMin());
-                return;
-            }
-        }
-        b.feed(bottom, tool.plungeFeedMmPerMin());
+        b.append(entry.moves(top, z, tool.plungeFeedMmPerMin()));
     }
 
-    private static Optional<Vec2> helixCentre(Pass p, Ring region, double rh, Tolerance tol) {
-        if (region.curves().size() < 2) {
-            return Optional.empty();
-        }
-        Contour c = new Contour(region.curves());
-        Vec2 dir = p.curves().isEmpty() ? Vec2.UNIT_X : firstDirection(p.curves().get(0));
-        for (Vec2 d : List.of(dir, dir.leftNormal(), dir.negated(), dir.leftNormal().negated())) {
-            Vec2 centre = p.start().plus(d.times(rh));
-            if (c.distanceTo(centre) >= rh - tol.linear() && c.windingNumber(centre) != 0) {
-                return Optional.of(centre);
+    /**
+     * The path the tool will follow at depth from pass i's start: its curves, then those of the
+     * passes joined to it at depth, with the straight links between them (a ramp may run along
+     * it: the tool cuts there anyway).
+     */
+    static List<Curve2> ahead(List<Pass> passes, int i) {
+        List<Curve2> out = new java.util.ArrayList<>(passes.get(i).curves());
+        Vec2 end = passes.get(i).end();
+        for (int j = i + 1; j < passes.size() && passes.get(j).joinAtDepth(); j++) {
+            Pass q = passes.get(j);
+            if (end.distance(q.start()) > 1e-9) {
+                out.add(new Segment2(end, q.start()));
             }
+            out.addAll(q.curves());
+            end = q.end();
         }
-        return Optional.empty();
+        return out;
     }
 
-    private static Vec2 firstDirection(Curve2 c) {
-        try {
-            return c.startTangent();
-        } catch (IllegalArgumentException e) {
-            return Vec2.UNIT_X;
+    /**
+     * The entry rule of a file's approach: ISO 14649-111 does not say whether a milling cutter cuts
+     * at its centre, so none is taken to; a file's plunge (or no approach) is entered as {@code auto},
+     * its ramp or helix as asked, never steeper than {@link EntryRule#DEFAULT_ANGLE_DEG}.
+     */
+    static EntryRule rule(Approach a) {
+        double limit = EntryRule.DEFAULT_ANGLE_DEG;
+        if (a instanceof Approach.Ramp r) {
+            return new EntryRule(EntryRule.Kind.RAMP, Math.min(r.angleDeg(), limit), false);
         }
+        if (a instanceof Approach.Helix h) {
+            return new EntryRule(EntryRule.Kind.HELIX, Math.min(h.angleDeg(), limit), false);
+        }
+        return EntryRule.DEFAULT;
     }
 }

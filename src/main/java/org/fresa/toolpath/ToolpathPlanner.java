@@ -24,7 +24,6 @@ import org.fresa.stepnc.Feature;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.Operation;
 import org.fresa.stepnc.StepNcProgram;
-import org.fresa.stepnc.Technology;
 import org.fresa.stepnc.Tool;
 
 /**
@@ -46,21 +45,31 @@ import org.fresa.stepnc.Tool;
  * the feature placement again) is read as lying in the feature frame, with a note.
  * <li>Stepover: the radial cutting depth, else D (1 - overlap), else D / 2 (NIST's default,
  * the tool radius). Layers: the axial cutting depth, else full depth in one layer.
+ * <li>Spindle speed and feed: the file's, checked ({@link CuttingData}): a spindle speed from
+ * the cutting speed when the spindle is unset, said so; a workingstep with neither, with no
+ * feed, or whose spindle and cutting speed disagree tenfold is refused (unless the cutting speed
+ * is trusted, {@link PlanningChoices}).
  * <li>Plunges, ramps and drilling feed at half the cutting feed for milling cutters and at the
  * cutting feed for drills. A feed without a unit (STEP Modeler) is a chip load: mm/tooth for
- * milling, mm/rev for drilling, times the spindle speed ({@link FeedRate}); 1000 mm/min when
- * the file gives nothing to convert. Each such reading is reported once per distinct value.
+ * milling, mm/rev for drilling, times the spindle speed ({@link FeedRate}). Each such reading is
+ * reported once per distinct value.
  * <li>Loops run clockwise when rotation_direction is CW, or, without it, when the cut mode is
  * climb (a pocket with an M3 spindle); counter-clockwise otherwise.
  * <li>Rough operations keep the file's allowances; finish operations cut to size.
  * <li>Round holes: drilling-type operations drill along the axis with the drilling strategy's
- * reduced feeds over the start and end depths; drills go through a through hole until the full
- * diameter has passed the bottom ({@link #tipLength}); multistep drilling steps by first_depth
+ * reduced feeds over the start and end depths; the tip goes to cutting_depth when the file
+ * gives it (never deeper), else through a through hole until the full diameter has passed the
+ * exit by the breakthrough ({@link #tipLength}, {@link PlanningChoices}); a through hole without
+ * depth goes to the bottom of the workpiece's BLOCK along its axis; milled through holes go the
+ * breakthrough (and the cutter's edge radius) below the exit; multistep drilling steps by first_depth
  * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
- * <li>Features other than planar faces, closed pockets and round holes are reported and
- * skipped.
+ * <li>Slots with a square-U profile on a linear path are milled as a pocket of the rectangle
+ * they sweep ({@link #slotOutline}): the tool stays inside the slot whatever its end types.
+ * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
+ * <li>Features other than planar faces, closed pockets, round holes and those slots are
+ * reported and skipped.
  * </ul>
  */
 public final class ToolpathPlanner {
@@ -132,7 +141,16 @@ public final class ToolpathPlanner {
         }
     }
 
+    /** {@link #plan(StepNcProgram, Tolerance, PlanningChoices)} with the default choices. */
     public static Plan plan(StepNcProgram program, Tolerance tol) {
+        return plan(program, tol, PlanningChoices.DEFAULT);
+    }
+
+    /**
+     * Plans every workingstep of the program; a workingstep that cannot be planned, or must not
+     * be cut as its file says ({@link CuttingData}), is reported and left out.
+     */
+    public static Plan plan(StepNcProgram program, Tolerance tol, PlanningChoices choices) {
         Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<ToolpathSection> sections = new ArrayList<>();
         List<PlannedStep> steps = new ArrayList<>();
@@ -141,10 +159,13 @@ public final class ToolpathPlanner {
         int planned = 0;
         for (MachiningWorkingstep ws : program.workingsteps()) {
             try {
-                Optional<ToolpathSection> s = section(ws, toolNumbers, problems, tol);
+                CuttingData cutting = cuttingData(ws.operation(), choices);
+                Optional<ToolpathSection> s = section(ws, toolNumbers, problems, tol, cutting,
+                        new HoleContext(program, choices));
                 if (s.isPresent()) {
                     sections.add(s.get());
-                    FeedRate feed = FeedRate.of(ws.operation());
+                    FeedRate feed = cutting.feed();
+                    cutting.notes().forEach(n -> problems.add("workingstep '" + s.get().label() + "': " + n));
                     steps.add(new PlannedStep(ws.instanceId(), s.get().label(), feed));
                     if (feed.inferred()) {
                         feedNotes.merge(feed.note(), 1, Integer::sum);
@@ -160,8 +181,19 @@ public final class ToolpathPlanner {
         return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps);
     }
 
+    /** The cutting data of an operation (the tool's diameter for the cutting speed), checked. */
+    static CuttingData cuttingData(Operation op, PlanningChoices choices) {
+        Tool tool = op.tool().orElseThrow(() -> new IllegalArgumentException("the operation has no tool"));
+        double dia = tool.diameterMm().orElseThrow(() -> new IllegalArgumentException("the tool has no diameter"));
+        return CuttingData.of(op, dia, choices.trustCuttingSpeed());
+    }
+
+    /** What hole depths need beyond the workingstep: the workpiece's block, the breakthrough asked for. */
+    record HoleContext(StepNcProgram program, PlanningChoices choices) {
+    }
+
     static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<String, Integer> toolNumbers,
-            List<String> problems, Tolerance tol) {
+            List<String> problems, Tolerance tol, CuttingData cutting, HoleContext holes) {
         Feature f = ws.feature();
         Operation op = ws.operation();
         String label = ws.id().isEmpty() ? "#" + ws.instanceId() : ws.id();
@@ -170,12 +202,16 @@ public final class ToolpathPlanner {
         // writers repeat one physical tool as an instance per operation: same name, body and size, same tool
         String key = tool.id() + "|" + tool.body() + "|" + dia;
         int number = toolNumbers.computeIfAbsent(key, k -> toolNumbers.size() + 1);
-        Technology tech = op.technology();
-        double feed = FeedRate.of(op).feedMmPerMin();
+        double feed = cutting.feed().feedMmPerMin();
         boolean drillingTool = op.type().isDrillingType();
-        Tooling tooling = new Tooling(number, dia, tech.spindleRpm().orElse(0), feed, drillingTool ? feed : feed / 2);
+        Tooling tooling = new Tooling(number, dia, cutting.spindleRpm(), feed, drillingTool ? feed : feed / 2);
         double retract = op.retractPlaneMm().orElse(DEFAULT_RETRACT_MM);
         double depth = f.depthMm().orElse(0);
+        if (f.type() == Feature.FeatureType.ROUND_HOLE && isThrough(f) && f.depthMm().isEmpty()) {
+            depth = stockDepth(holes.program(), f, tol);
+            problems.add("workingstep '" + label + "': the through hole has no depth: " + mm(depth)
+                    + " mm to the bottom of the workpiece's block");
+        }
         if (!(dia >= MIN_TOOL_MM && dia <= MAX_LENGTH_MM)) {
             throw new IllegalArgumentException("tool diameter " + dia + " mm is outside " + MIN_TOOL_MM + " to "
                     + MAX_LENGTH_MM + " mm");
@@ -191,6 +227,14 @@ public final class ToolpathPlanner {
         }
         Heights h = new Heights(retract, retract, 0, -depth);
         Transform3 place = f.placement();
+        if (op.type() == Operation.OperationType.OTHER && op.entity().contains("TURNING")) {
+            throw new UnsupportedOperationException("turning is not supported (" + op.entity() + ")");
+        }
+        if (!op.toolpaths().isEmpty()) {
+            // the file gives the path itself (AP238 CC1): followed as written, in the feature frame
+            return Optional.of(viaSecurityPlane(Placing.place(ExplicitPaths.section(label, op, tooling, problems),
+                    place), ws.securityPlane()));
+        }
         ToolpathSection local;
         switch (f.type()) {
             case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
@@ -209,16 +253,67 @@ public final class ToolpathPlanner {
                 local = pocket(label, p, op, h, tooling, pp, tol);
             }
             case ROUND_HOLE -> {
-                local = hole(label, f, op, h, tooling, tol);
-                List<String> unmoved = notInTheMoves(op);
+                local = hole(label, f, op, h, tooling, tol, holes.choices().breakthroughMm(), problems);
+                List<String> unmoved = notInTheMoves(op, tooling.spindleRpm());
                 if (!unmoved.isEmpty()) {
                     problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
                 }
             }
-            default -> throw new UnsupportedOperationException(f.type() + " features are not supported yet");
+            case SLOT -> {
+                Transform3 pp = slotFrame(f);
+                place = place.times(pp);
+                local = pocket(label, slotOutline(f), op, h, tooling, pp, tol);
+            }
+            default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
+                    : f.type()) + " features are not supported yet");
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * A slot along a linear path with a square-U profile: the rectangle it sweeps (path length by
+     * profile width), milled as a pocket of that outline in a frame whose x runs along the path
+     * from the slot's middle, so the tool stays within the slot's volume whatever its end types.
+     */
+    static Profile slotOutline(Feature f) {
+        org.fresa.stepnc.Profile shape = f.profile()
+                .orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
+        if (!(shape instanceof org.fresa.stepnc.Profile.U u) || !shape.entity().equals("SQUARE_U_PROFILE")) {
+            throw new UnsupportedOperationException("slots with a " + shape.entity() + " are not supported yet");
+        }
+        double length = slotLength(f);
+        if (!(u.widthMm() > 0 && u.widthMm() <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("slot width " + u.widthMm() + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+        }
+        return new Profile.RoundedRectangle(Vec2.ZERO, length, u.widthMm(), 0);
+    }
+
+    private static double slotLength(Feature f) {
+        org.fresa.stepnc.TravelPath path = f.courseOfTravel()
+                .orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
+        if (!path.entity().equals("LINEAR_PATH")) {
+            throw new UnsupportedOperationException("slots along a " + path.entity() + " are not supported yet");
+        }
+        double length = path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
+        if (!(length > 0 && length <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("slot length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+        }
+        return length;
+    }
+
+    /** The slot's middle, x along its path, z the feature's axis, in the feature frame. */
+    static Transform3 slotFrame(Feature f) {
+        org.fresa.stepnc.TravelPath path = f.courseOfTravel().orElseThrow();
+        Vec3 dir = path.placement().applyToDirection(path.direction().orElse(Vec3.UNIT_X));
+        Vec3 along = new Vec3(dir.x(), dir.y(), 0);
+        if (along.norm() < 1e-9) {
+            throw new UnsupportedOperationException("the slot's path runs along the tool axis");
+        }
+        along = along.normalized();
+        Vec3 start = path.placement().applyToPoint(Vec3.ZERO);
+        Vec3 middle = start.plus(along.times(slotLength(f) / 2));
+        return Transform3.ofFrame(new Vec3(middle.x(), middle.y(), 0), Vec3.UNIT_Z, along);
     }
 
     private static ToolpathSection face(String label, Feature f, Operation op, Heights h, Tooling t,
@@ -385,8 +480,13 @@ public final class ToolpathPlanner {
      * the spindle stop and speed changes are moves otherwise.
      */
     static List<String> notInTheMoves(Operation op) {
+        return notInTheMoves(op, op.technology().spindleRpm().orElse(0));
+    }
+
+    /** {@link #notInTheMoves(Operation)} for an operation cut at this spindle speed (rpm, 0 for none). */
+    static List<String> notInTheMoves(Operation op, double spindleRpm) {
         List<String> out = new ArrayList<>();
-        boolean noSpeed = !(op.technology().spindleRpm().orElse(0) > 0);
+        boolean noSpeed = !(spindleRpm > 0);
         op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).ifPresent(d -> {
             if (noSpeed && d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
                 out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble() + " (no spindle speed)");
@@ -411,29 +511,109 @@ public final class ToolpathPlanner {
         return v.isPresent() && v.getAsDouble() > 0 && Double.isFinite(v.getAsDouble()) ? v.getAsDouble() : otherwise;
     }
 
-    private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol) {
+    /** Whether the feature's bottom condition is a through bottom (ISO 14649-10 through_bottom_condition). */
+    static boolean isThrough(Feature f) {
+        return f.bottomCondition().map(b -> b.contains("THROUGH")).orElse(false);
+    }
+
+    /**
+     * Distance (mm) from a feature's origin down its axis (-z of the feature frame) to where the
+     * axis leaves its workpiece's BLOCK: the depth of a through hole whose file gives none.
+     *
+     * @throws IllegalArgumentException when the file has no block for the feature's workpiece or
+     *     the axis does not pass through it
+     */
+    static double stockDepth(StepNcProgram program, Feature f, Tolerance tol) {
+        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f).flatMap(org.fresa.stepnc.Workpiece::block)
+                .orElseThrow(() -> new IllegalArgumentException("the through hole has no depth and the file gives"
+                        + " no workpiece BLOCK to find the bottom of the stock"));
+        Transform3 toBlock = b.placement().inverse();
+        Vec3 o = toBlock.applyToPoint(f.location());
+        Vec3 d = toBlock.applyToDirection(f.axis().negated());
+        double[] from = {o.x(), o.y(), o.z()};
+        double[] dir = {d.x(), d.y(), d.z()};
+        double[] size = {b.xMm(), b.yMm(), b.zMm()};
+        double in = Double.NEGATIVE_INFINITY;
+        double out = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < 3; i++) {
+            double lo = Math.min(0, size[i]);
+            double hi = Math.max(0, size[i]);
+            if (Math.abs(dir[i]) < 1e-12) {
+                if (from[i] < lo - tol.linear() || from[i] > hi + tol.linear()) {
+                    out = Double.NEGATIVE_INFINITY;
+                }
+                continue;
+            }
+            double t1 = (lo - from[i]) / dir[i];
+            double t2 = (hi - from[i]) / dir[i];
+            in = Math.max(in, Math.min(t1, t2));
+            out = Math.min(out, Math.max(t1, t2));
+        }
+        if (!(out > tol.linear() && out >= in && out <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("the through hole has no depth and its axis does not pass through the"
+                    + " workpiece BLOCK (" + mm(b.xMm()) + " x " + mm(b.yMm()) + " x " + mm(b.zMm()) + " mm)");
+        }
+        return out;
+    }
+
+    private static String mm(double v) {
+        return org.fresa.model.ExactDecimal.of(Math.round(v * 1e6) / 1e6 + 0.0);
+    }
+
+    /**
+     * A round hole. Drilling-type operations: the tool tip goes to cutting_depth when the file
+     * gives it (ISO 14649-11: the depth the tool reaches; nothing is added to it), else to the
+     * hole's depth, and through a through hole to its depth plus the tip and the breakthrough,
+     * so that the full diameter passes the exit by the breakthrough. Milling operations: to the
+     * hole's depth, and through a through hole to its depth plus the breakthrough plus the
+     * cutter's edge radius, so that no skin is left at the exit.
+     */
+    private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol,
+            double breakthroughMm, List<String> problems) {
         double holeD = f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"));
+        boolean through = isThrough(f);
+        double holeDepth = h.topZ() - h.bottomZ();
         if (op.type().isDrillingType()) {
-            double holeDepth = h.topZ() - h.bottomZ();
-            double depth = op.cuttingDepthMm().orElse(holeDepth);
             double tip = tipLength(op, t);
-            // a through hole is drilled until the full diameter has passed the bottom
-            boolean through = f.bottomCondition().map(b -> b.contains("THROUGH")).orElse(false)
-                    && depth >= holeDepth - tol.linear();
-            double allowance = through ? tip : 0;
-            Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth - allowance);
+            double depth;
+            if (op.cuttingDepthMm().isPresent()) {
+                depth = op.cuttingDepthMm().getAsDouble();
+                double past = depth - tip - holeDepth;
+                // a cutting_depth meant to reach the exit that stops the full diameter short of the breakthrough
+                if (through && depth >= holeDepth - tol.linear() && past < breakthroughMm - tol.linear()) {
+                    problems.add("workingstep '" + label + "': cutting_depth " + mm(depth) + " mm takes the full"
+                            + " diameter " + mm(past) + " mm past the exit of the through hole (" + mm(holeDepth)
+                            + " mm deep, tip " + mm(tip) + " mm), less than the breakthrough " + mm(breakthroughMm)
+                            + " mm; drilled to cutting_depth as the file says");
+                }
+            } else {
+                depth = holeDepth + (through ? tip + breakthroughMm : 0);
+            }
+            if (!(depth > 0 && depth <= MAX_LENGTH_MM)) {
+                throw new IllegalArgumentException("drilling depth " + mm(depth) + " mm is not between 0 and "
+                        + MAX_LENGTH_MM + " mm");
+            }
+            Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth);
             DrillCycle cycle = drillCycle(op, t, tip);
             if (cycle.peck() > 0) {
-                bounded("depth", depth + allowance, "depth_of_step", cycle.peck());
+                bounded("depth", depth, "depth_of_step", cycle.peck());
             }
             return HoleMaking.drill(label, Vec2.ZERO, hh, t, cycle);
         }
         if (!op.type().isMilling()) {
             throw new UnsupportedOperationException(op.type() + " is not supported yet");
         }
+        Heights hm = h;
+        if (through) {
+            // a corner radius leaves a fillet of its height at the exit: the cutter goes that much further
+            double edge = op.tool().flatMap(x -> x.edgeRadiusMm().isPresent()
+                    ? Optional.of(x.edgeRadiusMm().getAsDouble()) : Optional.empty())
+                    .filter(r -> r > 0 && r <= t.radiusMm()).orElse(0.0);
+            hm = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.bottomZ() - breakthroughMm - edge);
+        }
         double ap = op.axialCuttingDepthMm().orElse(0);
         if (HoleMaking.helicalClears(holeD, t.diameterMm())) {
-            return HoleMaking.mill(label, Vec2.ZERO, holeD, h, t, ap, clockwise(op), tol);
+            return HoleMaking.mill(label, Vec2.ZERO, holeD, hm, t, ap, clockwise(op), tol);
         }
         bounded("the hole", holeD, "the stepover", stepover(op, t));
         Profile circle = new Profile.Circle(Vec2.ZERO, holeD / 2);
@@ -441,7 +621,7 @@ public final class ToolpathPlanner {
         Approach a = new Approach.Helix(Math.max(room / 2, 0.1), 5);
         MillingPlan plan = new MillingPlan(strategy(op).orElse(Strategy.CONTOUR_PARALLEL), stepover(op, t), ap,
                 0, 0, Vec2.UNIT_X, clockwise(op), a, false);
-        return PocketMilling.section(label, circle, h, t, plan, tol);
+        return PocketMilling.section(label, circle, hm, t, plan, tol);
     }
 
     static Optional<Strategy> strategy(Operation op) {

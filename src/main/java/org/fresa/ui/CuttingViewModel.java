@@ -178,7 +178,7 @@ public final class CuttingViewModel {
             throw new CamInputException("Cutting", "choose a DXF drawing first");
         }
         return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
-                number("lead-out", leadOutMm), lead, 0.001, "auto", paperMode, post, compensation, outerDirection,
+                number("lead-out", leadOutMm), lead, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM, "auto", paperMode, post, compensation, outerDirection,
                 holeDirection, number("overcut", overcutMm), avoidCutParts);
     }
 

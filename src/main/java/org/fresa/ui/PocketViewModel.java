@@ -224,8 +224,8 @@ public final class PocketViewModel {
             }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
-                    settings.climb());
-            return new Outcome(Optional.of(new Result(scene(plan, settings.climb()), report(plan), nc)),
+                    settings.climb(), settings.entryRule());
+            return new Outcome(Optional.of(new Result(scene(plan, settings), report(plan), nc)),
                     Optional.empty());
         } catch (CamInputException e) {
             return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));
@@ -311,14 +311,14 @@ public final class PocketViewModel {
         return out;
     }
 
-    private static PlotScene scene(PocketPlan plan, boolean climb) {
+    private static PlotScene scene(PocketPlan plan, PocketSettings settings) throws ToolTooLargeException {
         LoopState ref = plan.recognition().reference();
         PlotScene scene = PlotScene.empty("pocket")
                 .with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, curves(ref, 0)));
         List<Curve2> sub = new ArrayList<>();
         collectSubcontours(plan.recognition().root(), sub);
         scene = scene.with(new PlotScene.Layer("subcontours", PlotScene.Style.AUX, sub));
-        scene = scene.withToolpath(PocketToolpath.of(plan, climb));
+        scene = scene.withToolpath(PocketToolpath.of(plan, settings.climb(), settings.entryRule()));
         Optional<List<Vec2>> v = ref.vertices(0);
         if (v.isPresent()) {
             for (int i = 0; i < ref.size(); i++) {

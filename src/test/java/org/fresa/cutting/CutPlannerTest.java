@@ -45,6 +45,39 @@ class CutPlannerTest {
     }
 
     @Test
+    void aQcadEllipseWithARatioAboveOneIsCutAsAHole() throws Exception {
+        org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(java.nio.file.Path.of(
+                CutPlannerTest.class.getResource("ellipse-ratio-above-one.dxf").toURI()));
+        CutPlan p = CutPlanner.plan(d.layers(), plasma(2));
+        assertEquals(1, p.outers().size());
+        assertEquals(1, p.holes().size());
+        assertEquals(2, p.cuts().size());
+        assertTrue(p.uncut().isEmpty() && p.open().isEmpty(), p.warnings().toString());
+        // the hole's semi-axes are 17.5 mm across and 5 mm up
+        org.fresa.geom.Box2 b = p.holes().get(0).bounds();
+        assertEquals(35, b.width(), 0.01);
+        assertEquals(10, b.height(), 0.01);
+    }
+
+    @Test
+    void anOutlineWithGapsOfAHundredthAtItsArcsClosesAndIsOffset() {
+        // a 100 x 100 square with round corners of radius 10, each line stopping 0.01 mm short of its arc
+        double g = 0.01;
+        List<Curve2> l = List.of(Segment2.of(10, 0, 90 - g, 0), new Arc2(Vec2.of(90, 10), Vec2.of(90, 0), Vec2.of(100, 10), true),
+                Segment2.of(100, 10 + g, 100, 90), new Arc2(Vec2.of(90, 90), Vec2.of(100, 90), Vec2.of(90, 100), true),
+                Segment2.of(90 - g, 100, 10, 100), new Arc2(Vec2.of(10, 90), Vec2.of(10, 100), Vec2.of(0, 90), true),
+                Segment2.of(0, 90 - g, 0, 10), new Arc2(Vec2.of(10, 10), Vec2.of(0, 10), Vec2.of(10, 0), true));
+        CutPlan p = CutPlanner.plan(Map.of("0", l), plasma(2));
+        assertEquals(1, p.cuts().size(), p.warnings()::toString);
+        assertEquals(4, p.warnings().stream().filter(w -> w.startsWith("gap of 0.0100 mm")).count(), p.warnings()::toString);
+        for (Curve2 c : p.outers().get(0).curves()) {
+            if (c instanceof Arc2 a) {
+                assertEquals(a.radius(), a.center().distance(a.end()), 1e-9, "both ends of an arc on its circle");
+            }
+        }
+    }
+
+    @Test
     void chainingIgnoresOrderAndDirectionAndRemovesRepeats() {
         List<Curve2> r = rect(0, 0, 10, 10);
         List<Curve2> l = List.of(r.get(2).reversed(), r.get(0), r.get(3), r.get(1).reversed(), r.get(0).reversed(),

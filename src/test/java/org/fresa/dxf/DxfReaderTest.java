@@ -161,13 +161,75 @@ class DxfReaderTest {
     }
 
     @Test
-    void brokenEntitiesAreNamedAndTheRestIsKept() throws Exception {
-        String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n0\nCIRCLE\n5\nA2\n10\n0\n20\n0\n40\n5\n0\nTEXT\n1\nhi\n";
+    void anEllipseWithTheLongerAxisWrittenAsMinorIsReadWithItsAxesSwapped() throws Exception {
+        // QCAD: major axis (0, 5), ratio 3.5, so the "minor" axis (-17.5, 0) is the longer one
+        String e = "0\nELLIPSE\n5\n2F\n10\n0\n20\n0\n11\n0\n21\n5\n40\n3.5\n41\n0\n42\n6.283185307179586\n";
+        DxfDrawing d = read(dxf("", "", e));
+        List<Curve2> c = d.curves();
+        assertTrue(c.size() > 4, d.warnings().toString());
+        for (Curve2 cv : c) {
+            for (int k = 0; k <= 10; k++) {
+                Vec2 p = cv.pointAt(k / 10.0);
+                assertEquals(1, Math.pow(p.x() / 17.5, 2) + Math.pow(p.y() / 5, 2), 0.001, p::toString);
+            }
+        }
+        assertEquals(c.get(c.size() - 1).end(), c.get(0).start());
+    }
+
+    @Test
+    void anEllipticArcWithARatioAboveOneKeepsItsEndPoints() throws Exception {
+        // u from 0 to pi/2 on centre + major cos u + (N x major) ratio sin u: from (0, 5) to (-10, 0)
+        String e = "0\nELLIPSE\n10\n0\n20\n0\n11\n0\n21\n5\n40\n2\n41\n0\n42\n1.5707963267948966\n";
+        List<Curve2> c = read(dxf("", "", e)).curves();
+        near(Vec2.of(0, 5), c.get(0).start());
+        near(Vec2.of(-10, 0), c.get(c.size() - 1).end());
+        Vec2 mid = c.get(c.size() / 2).start();
+        assertTrue(mid.x() < 0 && mid.y() > 0, mid::toString);
+        assertEquals(1, Math.pow(mid.x() / 10, 2) + Math.pow(mid.y() / 5, 2), 0.001);
+    }
+
+    @Test
+    void aDegenerateEllipseIsNamedWithItsNumbersNotARecord() throws Exception {
+        String e = "0\nELLIPSE\n5\n2F\n10\n0\n20\n0\n11\n0\n21\n5\n40\n0\n";
+        DxfDrawing d = read(dxf("", "", e));
+        String w = d.warnings().stream().filter(x -> x.startsWith("ELLIPSE 2F")).findFirst().orElseThrow();
+        assertAll(() -> assertTrue(w.contains("major axis (0, 5) and axis ratio 0"), w),
+                () -> assertFalse(w.contains("Vec2"), w));
+    }
+
+    @Test
+    void everyKindOfEntityLeftOutIsNamedWithItsFirstPlace() throws Exception {
+        String e = "0\nTEXT\n5\n1A\n1\nhi\n0\nTEXT\n5\n1B\n1\nho\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
+        DxfDrawing d = read(dxf("", "", e));
+        assertTrue(d.warnings().contains("2 TEXT entities left out (not a line, arc or curve to cut), the first: TEXT 1A"
+                + " at line 6"), d.warnings().toString());
+    }
+
+    @Test
+    void unusableEntitiesAreNamedAndTheRestIsKept() throws Exception {
+        String e = "0\nCIRCLE\n5\nA1\n10\n0\n20\n0\n40\n0\n0\nCIRCLE\n5\nA2\n10\n0\n20\n0\n40\n5\n0\nTEXT\n1\nhi\n";
         DxfDrawing d = read(dxf("", "", e));
         assertEquals(1, d.curveCount());
         assertEquals(1, d.ignored().get("TEXT"));
-        assertTrue(d.warnings().stream().anyMatch(w -> w.startsWith("LINE A1 at line 6: group 11 is not a number")),
+        assertTrue(d.warnings().contains("CIRCLE A1 at line 6: radius 0.0 is not > 0; the circle is left out"),
                 d.warnings().toString());
+    }
+
+    @Test
+    void aCoordinateThatIsNotANumberRefusesTheDrawingAtItsLine() {
+        String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n";
+        DxfException ex = assertThrows(DxfException.class, () -> read(dxf("", "", e)));
+        assertEquals("t.dxf: line 14: LINE A1 (from line 6): group 11 is 'abc': expected an x coordinate (a finite number)",
+                ex.getMessage());
+    }
+
+    @Test
+    void aDrawingPastTheCurveLimitIsRefusedNotCutShort() {
+        String line = "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
+        DxfReadOptions three = new DxfReadOptions(Optional.empty(), DxfUnits.MM, 0.001, 16, 3);
+        DxfException ex = assertThrows(DxfException.class, () -> DxfReader.read(
+                dxf("", "", line.repeat(4)).getBytes(StandardCharsets.UTF_8), "t.dxf", three));
+        assertTrue(ex.getMessage().startsWith("t.dxf: the drawing expands to more than 3 lines and arcs"), ex.getMessage());
     }
 
     @Test

@@ -74,6 +74,31 @@ class CuttingAcceptanceTest {
         }
     }
 
+    /**
+     * dxf2gcode's inch plate: its outlines meet with gaps of 0.008 to 0.011 mm, closed at the
+     * default gap tolerance; all 20 loops (ezdxf 1.4's edgeminer finds 20 too) are cut, the four
+     * 1049 x 1863 mm parts among them, and each gap closed is listed with its place.
+     */
+    @org.junit.jupiter.api.Test
+    @CorpusCheck
+    void theInchPlatesPartsCloseAcrossTheirTinyGapsAndAreAllCut() throws Exception {
+        Path dxf = CORPUS.resolve("dxf2gcode/Teile.dxf");
+        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                "auto", false, "linuxcnc");
+        CutPlan plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();
+        List<String> gaps = plan.warnings().stream().filter(w -> w.startsWith("gap of ")).toList();
+        org.junit.jupiter.api.Assertions.assertAll(
+                () -> assertEquals(20, plan.outers().size() + plan.holes().size()),
+                () -> assertEquals(0, plan.open().size(), plan.warnings()::toString),
+                () -> assertEquals(List.of(), plan.uncut(), plan.warnings()::toString),
+                () -> assertEquals(20, plan.cuts().size()),
+                () -> assertEquals(4, plan.outers().stream().filter(c -> c.bounds().width() > 1049
+                        && c.bounds().height() > 1863).count()),
+                () -> assertEquals(16, gaps.size(), gaps::toString),
+                () -> assertTrue(gaps.contains("gap of 0.0084 mm between two ends closed at (445.423, 289.217)"),
+                        gaps::toString));
+    }
+
     @org.junit.jupiter.api.Test
     @InterpreterCheck
     void controllerCompensationProgramsPassLinuxCncsGougeChecks() throws Exception {

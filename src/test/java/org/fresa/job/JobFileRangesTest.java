@@ -60,6 +60,8 @@ class JobFileRangesTest {
         a.add(new Attribute(grade, "grading", Grading.WIDTH_STEP, j -> j.grading().get().widthStepMm().getAsDouble()));
         a.add(new Attribute(grade, "grading", Grading.SHRINKAGE, j -> j.grading().get().shrinkage()));
         String robot = "example2-irb140.xml";
+        a.add(new Attribute(robot, "stepnc", SettingRanges.StepNc.BREAKTHROUGH,
+                j -> j.stepnc().get().breakthroughMm()));
         for (int i = 0; i < 6; i++) {
             int k = i;
             a.add(new Attribute(robot, "robotTable", SettingRanges.Robot.placement("", i),

@@ -146,4 +146,21 @@ class SoleServiceTest {
             assertTrue(floorTurning(right, -4) > 0 && floorTurning(left, -4) > 0, "climb kept");
         }
     }
+
+    @Test
+    void aCavityToolNotSmallerThanTheToeArcIsRefusedNamingTheArc() throws Exception {
+        Job job = JobXml.read(SAMPLE);
+        JobSettings.SoleSettings s = job.sole().orElseThrow();
+        List<JobSettings.SoleTool> tools = new java.util.ArrayList<>(s.tools());
+        tools.add(new JobSettings.SoleTool("em60", 9, 60, 1500, 200, 80));
+        JobSettings.SoleSettings big = new JobSettings.SoleSettings(s.outline(), s.baseSize(), s.sizes(),
+                s.cavityDepthMm(), s.post(), s.system(), s.originMm(), s.shrinkage(), s.shrinkageMode(),
+                s.treadDepthMm(), s.clearanceMm(), s.marginMm(), tools, s.designs(), "em60");
+        SoleService.SolePlan p = SoleService.plan(big, "sample");
+        GradedSize g = p.grader().grade(40);
+        org.fresa.model.CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+                org.fresa.model.CamInputException.class, () -> SoleService.cavityProgram(p, g, Foot.RIGHT));
+        // figure 6.16: the toe arc C7 graded at 1.02 is 55.8 mm across
+        assertTrue(e.getMessage().contains("55.8") && e.getMessage().contains("60.000 mm cavity tool"), e.getMessage());
+    }
 }

@@ -194,16 +194,18 @@ class ToolpathServiceTest {
      * <ul>
      * <li>Point length: NIST's is 7.1378 mm, ours 6.0086 = r tan 31 deg; NIST's figure is close to
      * (r - edge_radius) tan 31 + edge_radius / cos 31 = 7.1402 (edge_radius 2) but not equal, and its
-     * source is not in ../shared, so the 1.13 mm is left unexplained; both go until the full
-     * diameter has passed z -30.
+     * source is not in ../shared, so the 1.13 mm is left unexplained. NIST goes until the full
+     * diameter reaches z -30, ours 1 mm further (the default breakthrough, so that no burr of the
+     * exit is left uncut), to -37.0086.
      * <li>End zone: NIST starts the reduced end feed 8 mm + tip below the top (z -15.1378), i.e. it
      * measures depth_of_end from the top like depth_of_start and reduces 22 mm of travel; ISO's
-     * depth_of_end is the last part of the drilling, so we reduce the last 8 mm (from -28.0086).
+     * depth_of_end is the last part of the drilling, so we reduce the last 8 mm (from -29.0086).
      * <li>Out: NIST retracts at 1800 mm/min; feed_on_retract is unset, so our drill leaves at rapid.
      * <li>Spindle: NIST sets 720 / 960 / 480 rpm (reduced_cut_at_start/end 0.75, 0.5) where the
      * zones begin, and so do we (spindle starts at the new speed, at our zone boundaries).
      * <li>Ream: NIST stops the spindle at the bottom (spindle_stop_at_bottom) and leaves at feed;
-     * so do we, and start the spindle again at the retract height.
+     * so do we, and start the spindle again at the retract height. NIST reams to z -30, we ream
+     * the breakthrough further, to -31.
      * </ul>
      */
     @Test
@@ -211,6 +213,7 @@ class ToolpathServiceTest {
         Toolpath p = plan(EXAMPLE1);
         ToolpathSection drill = section(p, "WS DRILL HOLE1");
         double tip = 10 * Math.tan(Math.toRadians(31));
+        double breakthrough = 1;
         List<double[]> feeds = new ArrayList<>();
         for (Move m : drill.moves()) {
             if (m.end().z() < 0) {
@@ -224,18 +227,19 @@ class ToolpathServiceTest {
         assertEquals(3, feeds.size());
         assertAll(() -> assertEquals(-(2 + tip), feeds.get(0)[0], 1e-9),
                 () -> assertEquals(900, feeds.get(0)[1], 1e-9),
-                () -> assertEquals(-(30 + tip) + 8, feeds.get(1)[0], 1e-9),
+                () -> assertEquals(-(30 + tip + breakthrough) + 8, feeds.get(1)[0], 1e-9),
                 () -> assertEquals(1800, feeds.get(1)[1], 1e-9),
-                () -> assertEquals(-(30 + tip), feeds.get(2)[0], 1e-9),
+                () -> assertEquals(-(30 + tip + breakthrough), feeds.get(2)[0], 1e-9),
                 () -> assertEquals(1350, feeds.get(2)[1], 1e-9),
-                () -> assertEquals(-36.0086, feeds.get(2)[0], 1e-4),
-                // NIST's bottom, 1.13 mm deeper for its longer point (see above)
-                () -> assertEquals(-37.1378 + 1.1292, feeds.get(2)[0], 1e-4));
+                () -> assertEquals(-37.0086, feeds.get(2)[0], 1e-4),
+                // NIST's bottom, 1.13 mm deeper for its longer point, less our breakthrough (see above)
+                () -> assertEquals(-37.1378 + 1.1292 - breakthrough, feeds.get(2)[0], 1e-4));
         assertEquals(20, drill.toolDiameterMm());
-        // the reamer (no point, no strategy) stops at -30 and leaves at its feed, as NIST's does
+        // the reamer (no point, no strategy) stops the breakthrough below the exit at -30 and leaves
+        // at its feed, as NIST's does
         ToolpathSection ream = section(p, "WS REAM HOLE1");
-        assertEquals(-30, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
-        assertEquals(List.of(-30.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
+        assertEquals(-31, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
+        assertEquals(List.of(-31.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
                 .map(m -> m.end().z()).toList());
         List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
         assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS DRILL HOLE1'")), problems.toString());
@@ -250,13 +254,13 @@ class ToolpathServiceTest {
         assertEquals(3, speeds.size());
         assertAll(() -> assertEquals(10, speeds.get(0)[0], 1e-9), () -> assertEquals(720, speeds.get(0)[1], 1e-9),
                 () -> assertEquals(-(2 + tip), speeds.get(1)[0], 1e-9), () -> assertEquals(960, speeds.get(1)[1], 1e-9),
-                () -> assertEquals(-(30 + tip) + 8, speeds.get(2)[0], 1e-9),
+                () -> assertEquals(-(30 + tip + breakthrough) + 8, speeds.get(2)[0], 1e-9),
                 () -> assertEquals(480, speeds.get(2)[1], 1e-9));
-        // the reamer's spindle_stop_at_bottom: M5 at -30, out at feed, M3 again at the retract height
+        // the reamer's spindle_stop_at_bottom: M5 at -31, out at feed, M3 again at the retract height
         assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")), problems.toString());
         List<Move> rm = ream.moves();
         int stop = rm.indexOf(rm.stream().filter(m -> m instanceof Move.SpindleStop).findFirst().orElseThrow());
-        assertEquals(-30, rm.get(stop).end().z(), 1e-9);
+        assertEquals(-31, rm.get(stop).end().z(), 1e-9);
         assertTrue(rm.get(stop + 1) instanceof Move.Linear && rm.get(stop + 2) instanceof Move.SpindleStart,
                 rm.toString());
         assertEquals(10, rm.get(stop + 2).end().z(), 1e-9);
@@ -276,5 +280,20 @@ class ToolpathServiceTest {
         assertTrue(o.problems().stream().anyMatch(p -> p.contains("0.0505 (no unit in the file) read as mm/tooth")),
                 o.problems().toString());
         assertFalse(json.contains("1000 mm/min used"), json);
+    }
+
+    @Test
+    void anIntegratedFormFileWithNothingToMachineIsRefusedWithItsRealReasonAndNoProgram(@TempDir Path dir)
+            throws Exception {
+        // the workingstep is in the main workplan's sequence but has no operation: that is the reason given,
+        // never "not referenced by any workplan"
+        Path aim = Path.of("src/test/resources/stepnc/aim-header-only.stp");
+        TaskOutcome o = ToolpathService.run(aim, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus());
+        assertTrue(o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
+                o.problems().toString());
+        assertFalse(o.problems().get(0).contains("not referenced"), o.problems().toString());
+        assertTrue(o.files().isEmpty());
+        assertFalse(Files.exists(dir.resolve("program.ngc")));
     }
 }

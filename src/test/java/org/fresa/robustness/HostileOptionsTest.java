@@ -72,7 +72,9 @@ class HostileOptionsTest {
                 "--sizes", "40-41", "--system", "br"));
         m.put("robot", List.of("robot", one.toString(), "--robot", "irb140", "--out", "OUT", "--robot-table",
                 "450,0,350", "--table-piece", "0,10,0", "--formats", "csv"));
+        m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
         m.put("ik", List.of("ik", targets.toString(), "--robot", "irb140", "--out", "OUT"));
+        m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
         return m;
     }
 

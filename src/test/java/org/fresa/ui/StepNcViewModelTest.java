@@ -133,19 +133,19 @@ class StepNcViewModelTest {
 
     /**
      * The drill (feed 0.03 m/s = 1800 mm/min, DRILLING_TYPE_STRATEGY(0.75, 0.50, 2, 0.50, 0.75, 8))
-     * rapids 30 -> 10, drills the through hole until its full diameter is past z -30: at 900 from
-     * 10 to -(2 + tip), at 1800 for 20 mm, at 1350 over the last 8 mm down to -(30 + tip), then
-     * rapids back to 10 and 30 (80 mm + tip of rapids in all); the reamer (no strategy, no point)
-     * leaves at feed (80 mm fed, 40 mm of rapids). The program is the sum of its workingsteps.
+     * rapids 30 -> 10, drills the through hole until its full diameter is 1 mm (the breakthrough)
+     * past z -30: at 900 from 10 to -(2 + tip), at 1800 for 21 mm, at 1350 over the last 8 mm down
+     * to -(31 + tip), then rapids back to 10 and 30 (81 mm + tip of rapids in all); the reamer (no
+     * strategy, no point) reams to -31 and leaves at feed (82 mm fed, 40 mm of rapids). The program is the sum of its workingsteps.
      */
     @Test
     void theHolesAndTheProgramCycleTimesAreTheHandComputation() throws Exception {
         StepNcViewModel vm = planned(EX1, DRILL);
-        double drill = (12 + TIP) / 900.0 * 60 + 20 / 1800.0 * 60 + 8 / 1350.0 * 60 + (80 + TIP) / 10000.0 * 60;
+        double drill = (12 + TIP) / 900.0 * 60 + 21 / 1800.0 * 60 + 8 / 1350.0 * 60 + (81 + TIP) / 10000.0 * 60;
         assertEquals(drill, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
         vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS REAM HOLE1"))
                 .findFirst());
-        double ream = 80 / 1800.0 * 60 + 40 / 10000.0 * 60;
+        double ream = 82 / 1800.0 * 60 + 40 / 10000.0 * 60;
         assertEquals(ream, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
         double sum = 0;
         for (MachiningWorkingstep ws : vm.program().orElseThrow().workingsteps()) {
@@ -212,8 +212,8 @@ class StepNcViewModelTest {
     }
 
     /**
-     * The drill's moves take 0.12 s (rapid 20 mm), (12 + tip) / 15 s (feed 900), 0.6667 s (feed
-     * 20 mm at 1800), 0.3556 s (8 mm at 1350) and the rapids out: at half of the total the tool is in
+     * The drill's moves take 0.12 s (rapid 20 mm), (12 + tip) / 15 s (feed 900), 0.7 s (feed
+     * 21 mm at 1800), 0.3556 s (8 mm at 1350) and the rapids out: at half of the total the tool is in
      * the full-feed zone, fed at 30 mm/s down from z -(2 + tip).
      */
     @Test
@@ -223,7 +223,7 @@ class StepNcViewModelTest {
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
         vm.setReplay(StepNcViewModel.REPLAY_STEPS / 2);
         StepNcViewModel.ReplayPoint half = vm.replayPoint().orElseThrow();
-        double total = (12 + TIP) / 900.0 * 60 + 20 / 1800.0 * 60 + 8 / 1350.0 * 60 + (80 + TIP) / 10000.0 * 60;
+        double total = (12 + TIP) / 900.0 * 60 + 21 / 1800.0 * 60 + 8 / 1350.0 * 60 + (81 + TIP) / 10000.0 * 60;
         double intoFullFeed = total / 2 - 0.12 - (12 + TIP) / 15;
         assertAll(() -> assertEquals(4, half.moveIndex()),
                 () -> assertEquals(total / 2, half.timeS(), 1e-9),
@@ -231,8 +231,8 @@ class StepNcViewModelTest {
                 () -> assertEquals(20, half.position().x(), EPS),
                 () -> assertEquals(60, half.position().y(), EPS),
                 () -> assertEquals(-(2 + TIP) - intoFullFeed * 30, half.position().z(), 1e-9),
-                () -> assertEquals(-9.4741, half.position().z(), 1e-4));
-        assertTrue(vm.replayText().startsWith("1.4 s of 2.7 s: move 5 of 9 (feed 1800 mm/min), tool at (20, 60, -9.4741) mm"),
+                () -> assertEquals(-10.0641, half.position().z(), 1e-4));
+        assertTrue(vm.replayText().startsWith("1.4 s of 2.8 s: move 5 of 9 (feed 1800 mm/min), tool at (20, 60, -10.0641) mm"),
                 vm.replayText());
         vm.setReplay(0);
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());

@@ -2,6 +2,7 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.fresa.cutting.CuttingOptions;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.SettingRanges.Cutting;
@@ -40,7 +41,7 @@ final class CutCommand implements Callable<Integer> {
     @Option(names = "--lead", paramLabel = "arc|line", defaultValue = "arc", description = "lead shape")
     String lead;
 
-    @Option(names = "--tolerance", paramLabel = "T", description = "chaining gap tolerance in drawing units (default 0.001 mm)")
+    @Option(names = "--tolerance", paramLabel = "T", description = "widest gap closed between the ends of an outline, in drawing units (default 0.05 mm); each gap closed is listed")
     Double tolerance;
 
     @Option(names = "--units", paramLabel = "mm|inch|auto", defaultValue = "auto", description = "drawing units; auto reads $INSUNITS")
@@ -79,7 +80,7 @@ final class CutCommand implements Callable<Integer> {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
             CuttingSettings s = new CuttingSettings(drawing, Cutting.KERF.check(kerfMm),
                     process, Cutting.LEAD_IN.check(leadInMm), Cutting.LEAD_OUT.check(leadOutMm), lead,
-                    tolerance == null ? 0.001 : Cutting.TOLERANCE.check(tolerance), units, paperMode, post, compensation,
+                    tolerance == null ? CuttingOptions.DEFAULT_GAP_MM : Cutting.TOLERANCE.check(tolerance), units, paperMode, post, compensation,
                     outerDirection, holeDirection, Cutting.OVERCUT.check(overcutMm), !straightRapids);
             return CuttingService.run(s, CliSupport.outFile(out), tolerance != null, progress);
         });

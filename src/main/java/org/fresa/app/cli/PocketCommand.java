@@ -61,6 +61,19 @@ final class PocketCommand implements Callable<Integer> {
                     + " passes); default ${DEFAULT-VALUE}")
     String direction;
 
+    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge", defaultValue = "auto",
+            description = "how the tool enters the material: a helix where it has room, else a zig-zag ramp (auto),"
+                    + " helix, ramp, or plunge (centre-cutting tools only); 7m-compat keeps the thesis's plunge;"
+                    + " default ${DEFAULT-VALUE}")
+    String entry;
+
+    @Option(names = "--entry-angle", paramLabel = "DEG", defaultValue = "3",
+            description = "steepest descent of a helix or ramp entry (deg, 0.5 to 90); default ${DEFAULT-VALUE}")
+    double entryAngleDeg;
+
+    @Option(names = "--centre-cutting", description = "the cutter cuts at its centre (may plunge)")
+    boolean centreCutting;
+
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
@@ -71,7 +84,8 @@ final class PocketCommand implements Callable<Integer> {
                     Pocket.TOOL_DIAMETER.check(toolDiameterMm), Pocket.CUT.check(cutFraction),
                     Pocket.FINISH.check(finishFraction), Pocket.Z_TOP.check(zTopMm), Pocket.Z_BOTTOM.check(zBottomMm),
                     Pocket.MAX_DEPTH.check(maxDepthMm), Pocket.SPINDLE.check(spindleRpm), Pocket.FEED.check(feedMmPerMin),
-                    Pocket.FINISH_FEED.check(finishFeedMmPerMin), post, direction);
+                    Pocket.FINISH_FEED.check(finishFeedMmPerMin), post, direction, entry,
+                    Pocket.ENTRY_ANGLE.check(entryAngleDeg), centreCutting);
             return PocketService.run(settings, CliSupport.outFile(out), progress);
         });
     }

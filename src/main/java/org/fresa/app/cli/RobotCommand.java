@@ -7,6 +7,7 @@ import org.fresa.job.SettingRanges;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.Placement;
+import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -45,6 +46,16 @@ final class RobotCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
+    @Option(names = "--trust-cutting-speed",
+            description = "plan a workingstep whose spindle and cutting speed disagree tenfold from the cutting speed"
+                    + " (else it is refused)")
+    boolean trustCuttingSpeed;
+
+    @Option(names = "--breakthrough", paramLabel = "MM", defaultValue = "1",
+            description = "how far a through hole's drill (full diameter) or milling cutter passes the exit;"
+                    + " default ${DEFAULT-VALUE} mm")
+    double breakthroughMm;
+
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
@@ -53,8 +64,10 @@ final class RobotCommand implements Callable<Integer> {
                     : SettingRanges.Robot.check("--robot-table", RobotTrajectoryService.parseRobotTable(robotTable));
             Placement piece = tablePiece == null ? Placement.ORIGIN
                     : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
+            PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm));
             return CliSupport.intoFolder(out, folder -> RobotService.run(
-                    new RobotService.Settings(file, robot, table, piece, fmts), folder, progress));
+                    new RobotService.Settings(file, robot, table, piece, fmts, choices), folder, progress));
         });
     }
 }

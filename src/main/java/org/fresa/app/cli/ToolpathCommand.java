@@ -2,7 +2,9 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.fresa.job.SettingRanges;
 import org.fresa.job.ToolpathService;
+import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -30,10 +32,23 @@ final class ToolpathCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
+    @Option(names = "--trust-cutting-speed",
+            description = "plan a workingstep whose spindle and cutting speed disagree tenfold from the cutting speed"
+                    + " (else it is refused)")
+    boolean trustCuttingSpeed;
+
+    @Option(names = "--breakthrough", paramLabel = "MM", defaultValue = "1",
+            description = "how far a through hole's drill (full diameter) or milling cutter passes the exit;"
+                    + " default ${DEFAULT-VALUE} mm")
+    double breakthroughMm;
+
     @Override
     public Integer call() {
         java.io.PrintWriter o = spec.commandLine().getOut();
-        return CliSupport.run(o, spec.commandLine().getErr(), json,
-                progress -> CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, folder, progress)));
+        return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
+            PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm));
+            return CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, choices, folder, progress));
+        });
     }
 }

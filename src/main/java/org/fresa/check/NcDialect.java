@@ -1,0 +1,72 @@
+package org.fresa.check;
+
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * How the check reads the program text of one of Fresa's NC dialects: the length unit of the
+ * coordinates, the word that asks a G02/G03 block for extra full turns, and the smallest step of
+ * the coordinates as written (a rounding the entry-angle and floor rules must not count).
+ *
+ * <p>What every dialect shares: parenthesised and {@code ;} comments, tape marks and
+ * {@code %_N_} headers, an O program number, N block numbers, G04 blocks whose address words are
+ * a time (X, P, and F on the 840D), G90/G91, G17/G18/G19, incremental I/J/K centres.
+ */
+public enum NcDialect {
+    /** LinuxCNC RS274/NGC: P on G02/G03 is the number of turns (1 = no extra turn). */
+    LINUXCNC("linuxcnc", 1, "P"),
+    /** Plain ISO 6983: one block per extra helix turn. */
+    ISO("iso", 1, null),
+    /** Fanuc milling: one block per extra helix turn. */
+    FANUC("fanuc", 1, null),
+    /** Sinumerik 840D: {@code TURN=} extra turns. */
+    SINUMERIK_840D("840d", 1, "TURN"),
+    /** The thesis's Sinumerik 7M: integer micrometres; G54 with coordinates sets the zero. */
+    SINUMERIK_7M("7m", 0.001, null);
+
+    private final String id;
+    private final double mmPerUnit;
+    private final String turnWord;
+
+    NcDialect(String id, double mmPerUnit, String turnWord) {
+        this.id = id;
+        this.mmPerUnit = mmPerUnit;
+        this.turnWord = turnWord;
+    }
+
+    public String id() {
+        return id;
+    }
+
+    /** Millimetres per unit of a coordinate word. */
+    public double mmPerUnit() {
+        return mmPerUnit;
+    }
+
+    /** The word of extra turns on an arc block, or null. */
+    String turnWord() {
+        return turnWord;
+    }
+
+    /** The smallest coordinate step the posts write: 0.001 mm (three decimals, or 1 µm). */
+    double quantumMm() {
+        return 0.001;
+    }
+
+    /**
+     * The dialect of a post's name: linuxcnc, iso, fanuc, 840d, 7m, 7m-compat (the 7M dialect),
+     * ignoring case.
+     */
+    public static Optional<NcDialect> byPost(String post) {
+        String p = post.trim().toLowerCase(Locale.ROOT);
+        if (p.equals("7m-compat")) {
+            return Optional.of(SINUMERIK_7M);
+        }
+        for (NcDialect d : values()) {
+            if (d.id.equals(p)) {
+                return Optional.of(d);
+            }
+        }
+        return Optional.empty();
+    }
+}

@@ -1,0 +1,28 @@
+package org.fresa.toolpath;
+
+/**
+ * What the planner is told where a STEP-NC file is silent or contradicts itself: the user's
+ * choices of {@code fresa toolpath}, {@code fresa robot} and the job's {@code <stepnc>}.
+ *
+ * @param trustCuttingSpeed plan a workingstep whose spindle and cutting speed disagree
+ *     ({@link CuttingData}) from the cutting speed, instead of refusing it
+ * @param breakthroughMm how far the full diameter of a drill, or the bottom of a milling cutter,
+ *     passes the exit of a through hole (mm), 0 to {@value #MAX_BREAKTHROUGH_MM}
+ */
+public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) {
+
+    /** Breakthrough of through holes when none is asked (mm). */
+    public static final double DEFAULT_BREAKTHROUGH_MM = 1;
+    /** Largest breakthrough (mm): more is a unit or typing mistake. */
+    public static final double MAX_BREAKTHROUGH_MM = 100;
+
+    /** The file's spindle speeds, 1 mm breakthrough. */
+    public static final PlanningChoices DEFAULT = new PlanningChoices(false, DEFAULT_BREAKTHROUGH_MM);
+
+    public PlanningChoices {
+        if (!(breakthroughMm >= 0 && breakthroughMm <= MAX_BREAKTHROUGH_MM)) {
+            throw new IllegalArgumentException("breakthrough must be 0 to " + MAX_BREAKTHROUGH_MM + " mm: "
+                    + breakthroughMm);
+        }
+    }
+}
