@@ -173,8 +173,10 @@ public final class PocketViewModel {
         for (int i = 0; i < v.length; i++) {
             v[i] = Double.parseDouble(values[i]);
         }
+        // the entry the job holds (the tab has no fields for it) goes on with the typed technology
         return Optional.of(new PocketSettings(Path.of(contourText).toAbsolutePath(), v[0], v[1], v[2], v[3], v[4],
-                v[5], v[6], v[7], v[8], post, direction));
+                v[5], v[6], v[7], v[8], post, direction).withEntry(settings.entry(), settings.entryAngleDeg(),
+                settings.centreCutting()));
     }
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
