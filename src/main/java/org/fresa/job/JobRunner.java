@@ -13,8 +13,11 @@ public final class JobRunner {
     }
 
     /**
-     * Runs the job's task, writing its files into the folder, which it holds for the run
-     * ({@link FolderLock}).
+     * Runs the job's tasks, writing their files into the folder, which it holds for the run
+     * ({@link FolderLock}). A job that runs one task writes into the folder itself; one that runs
+     * several writes each task's files into a subfolder named after the task ({@code robot/},
+     * {@code grade/}), so that files of the same name (summary.json, toolpath.csv) stay apart.
+     * The outcome is the worst of the tasks', with every problem and file.
      *
      * @throws CamInputException when an input file is bad (nothing is written then)
      * @throws FolderLock.FolderBusyException when another run writes into the folder
@@ -23,11 +26,34 @@ public final class JobRunner {
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         try (FolderLock lock = FolderLock.acquire(out)) {
-            return runTask(job, out, progress);
+            if (job.runs().size() == 1) {
+                return runTask(job, job.task(), out, progress);
+            }
+            int status = 0;
+            java.util.List<String> problems = new java.util.ArrayList<>();
+            java.util.Map<String, Object> summary = new java.util.LinkedHashMap<>();
+            java.util.List<java.nio.file.Path> files = new java.util.ArrayList<>();
+            for (JobTask t : job.runs()) {
+                progress.checkCancelled();
+                progress.progress(-1, t.id());
+                TaskOutcome o = runTask(job, t, new OutputFolder(out.dir().resolve(t.id())), progress);
+                status = Math.max(status, o.exitStatus());
+                o.problems().forEach(p -> problems.add(t.id() + ": " + p));
+                summary.put(t.id(), o.summary());
+                files.addAll(o.files());
+            }
+            return new TaskOutcome(status, problems, summary, files);
         }
     }
 
-    private static TaskOutcome runTask(Job job, OutputFolder out, ProgressMonitor progress)
+    private static TaskOutcome runTask(Job job, JobTask task, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        // the module services read the task from the job: give each the job as if it ran alone
+        Job one = job.withTask(task);
+        return runOne(one, out, progress);
+    }
+
+    private static TaskOutcome runOne(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         switch (job.task()) {
             case STEPNC:

@@ -180,6 +180,12 @@ public final class JobXml {
 
     static Job fromXml(JobType x, Path base) {
         Job job = Job.empty(JobTask.ofId(x.getTask().value()));
+        if (!x.getRuns().isEmpty()) {
+            java.util.List<JobTask> runs = new java.util.ArrayList<>();
+            runs.add(job.task());
+            x.getRuns().forEach(t -> runs.add(JobTask.ofId(t.value())));
+            job = job.withRuns(runs);
+        }
         if (x.getName() != null) {
             job = job.withName(x.getName());
         }
@@ -351,6 +357,9 @@ public final class JobXml {
         JobType x = new JobType();
         x.setVersion(VERSION);
         x.setTask(org.fresa.job.xml.TaskType.fromValue(job.task().id()));
+        if (job.runs().size() > 1) {
+            job.runs().forEach(t -> x.getRuns().add(org.fresa.job.xml.TaskType.fromValue(t.id())));
+        }
         x.setName(job.name());
         job.stepnc().ifPresent(s -> {
             StepNcType t = new StepNcType();

@@ -46,6 +46,11 @@ final class BackgroundTasks {
         }
     }
 
+    /** Says in the status bar that a task, which ended without an exception, could not do its work. */
+    void failed(String title) {
+        bar.message.setText(title + ": failed");
+    }
+
     /** Starts the work unless another task runs; onDone gets the result on the event thread. */
     <T> void start(String title, Work<T> work, Consumer<T> onDone) {
         if (isBusy()) {

@@ -31,7 +31,9 @@ import org.fresa.model.CamInputException;
 final class CuttingTab implements ModuleTab {
 
     private final AppContext ctx;
-    private final CuttingViewModel vm = new CuttingViewModel();
+    private CuttingViewModel vm = new CuttingViewModel();
+    // the job's cutting settings the fields show: a job that holds others is shown afresh
+    private Optional<CuttingSettings> shown = Optional.empty();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel warnings = new WarningsPanel("cutting-warnings", 5);
@@ -120,13 +122,24 @@ final class CuttingTab implements ModuleTab {
         panel.add(split, BorderLayout.CENTER);
 
         ctx.model().addListener(e -> {
-            if (MainViewModel.JOB.equals(e.getPropertyName()) && ctx.model().job().cutting().isPresent()) {
-                vm.load(ctx.model().job());
-                showFields();
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
+                    || MainViewModel.JOB.equals(e.getPropertyName())
+                    && !ctx.model().job().cutting().equals(shown)) {
+                showJob();
             }
         });
+        showJob();
+    }
+
+    /** The job's cutting settings, or the empty tab when it has none; no result. */
+    private void showJob() {
+        vm = new CuttingViewModel();
         vm.load(ctx.model().job());
+        shown = ctx.model().job().cutting();
         showFields();
+        plot.show(vm.scene());
+        program.setText("");
+        totals.setText("No drawing cut yet.");
     }
 
     private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent a, JComponent b) {
@@ -191,23 +204,32 @@ final class CuttingTab implements ModuleTab {
         }
     }
 
-    /** Cuts the drawing with the typed settings; they also become the job's cutting settings. */
+    /**
+     * Cuts the drawing with the typed settings; they become the job's cutting settings once the
+     * cut accepts them (a refused value is never saved), and what the job runs is unchanged.
+     */
     void run() {
         takeFields();
         CuttingSettings s;
         try {
             s = vm.settings();
-            ctx.model().setJob(vm.applyTo(ctx.model().job()));
         } catch (CamInputException e) {
             totals.setText(e.getMessage());
             return;
         }
+        CuttingViewModel cut = vm;
+        int generation = ctx.model().generation();
         ctx.tasks().start("Cutting", progress -> {
             CuttingService.Result r = CuttingService.compute(s, progress);
             progress.progress(-1, "preparing the plot and the program text");
             return new Shown(r, CuttingViewModel.sceneOf(r), CuttingViewModel.totalsOf(r),
                     TextDocuments.of(r.program()));
         }, shown -> {
+            if (cut != vm || generation != ctx.model().generation()) {
+                return;
+            }
+            this.shown = Optional.of(s);
+            ctx.model().setJob(ctx.model().job().withCutting(s));
             vm.setResult(shown.result());
             plot.show(shown.scene());
             program.setDocument(shown.program());

@@ -25,6 +25,7 @@ import javax.swing.JToggleButton;
 import javax.swing.table.DefaultTableModel;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradingResult;
+import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
 
@@ -36,7 +37,9 @@ import org.fresa.model.CamInputException;
 final class GradingTab implements ModuleTab {
 
     private final AppContext ctx;
-    private final GradingViewModel vm = new GradingViewModel();
+    private GradingViewModel vm = new GradingViewModel();
+    // the job's grading settings the fields show: a job that holds others is shown afresh
+    private Optional<GradingSettings> shown = Optional.empty();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final DefaultTableModel tableModel = new DefaultTableModel(GradingViewModel.COLUMNS.toArray(), 0) {
@@ -117,15 +120,22 @@ final class GradingTab implements ModuleTab {
 
         installPicking();
         ctx.model().addListener(e -> {
-            if (MainViewModel.JOB.equals(e.getPropertyName())) {
-                ctx.model().job().grading().ifPresent(g -> {
-                    vm.load(ctx.model().job());
-                    showFields();
-                });
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
+                    || MainViewModel.JOB.equals(e.getPropertyName())
+                    && !ctx.model().job().grading().equals(shown)) {
+                showJob();
             }
         });
+        showJob();
+    }
+
+    /** The job's grading settings, or the empty tab when it has none; no result. */
+    private void showJob() {
+        vm = new GradingViewModel();
         vm.load(ctx.model().job());
+        shown = ctx.model().job().grading();
         showFields();
+        tableModel.setRowCount(0);
         refreshPlot();
     }
 
@@ -209,15 +219,29 @@ final class GradingTab implements ModuleTab {
         refreshPlot();
     }
 
+    /**
+     * Grades with the typed settings; they become the job's grading settings only when the
+     * grading accepts them (a refused value is never saved), and what the job runs is unchanged.
+     */
     private void grade() {
         pushFields();
+        GradingSettings s;
         try {
-            ctx.model().setJob(vm.applyTo(ctx.model().job()));
+            s = vm.settings();
         } catch (CamInputException e) {
             Dialogs.error(ctx.owner(), "Grade", e.getMessage());
             return;
         }
-        ctx.tasks().start("Grading", progress -> vm.grade(), this::showResult);
+        GradingViewModel graded = vm;
+        int generation = ctx.model().generation();
+        ctx.tasks().start("Grading", progress -> graded.grade(s), r -> {
+            if (graded != vm || generation != ctx.model().generation()) {
+                return;
+            }
+            shown = Optional.of(s);
+            ctx.model().setJob(ctx.model().job().withGrading(s));
+            showResult(r);
+        });
     }
 
     private void showResult(GradingResult r) {

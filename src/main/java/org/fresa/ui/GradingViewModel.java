@@ -105,18 +105,29 @@ public final class GradingViewModel {
                 number("Shrinkage", shrinkage), shrinkageMode);
     }
 
-    /** The job with these grading settings, task grade. */
+    /** The job with these grading settings, what it runs unchanged. */
     public Job applyTo(Job job) throws CamInputException {
-        return job.withGrading(settings()).withTask(org.fresa.job.JobTask.GRADE);
+        return job.withGrading(settings());
     }
 
     /** Grades the outline with the fields' settings (call off the event thread for long runs). */
     public GradingResult grade() throws CamInputException {
-        if (outline.isEmpty()) {
+        return grade(settings());
+    }
+
+    /**
+     * Grades the outline with the given settings: touches no state, so the tab calls it off the
+     * event thread with the settings it read on it.
+     *
+     * @throws CamInputException when there is no outline or the settings are refused
+     */
+    public GradingResult grade(GradingSettings s) throws CamInputException {
+        List<Contour> base = outline;
+        if (base.isEmpty()) {
             throw new CamInputException("Outline", "open a base outline first");
         }
-        String name = outlineFile.map(p -> p.getFileName().toString()).orElse("outline");
-        return GradingService.grade(outline, name, settings(), GradingService.Options.DEFAULT);
+        String name = s.outline().getFileName().toString();
+        return GradingService.grade(base, name, s, GradingService.Options.DEFAULT);
     }
 
     /** Keeps a result computed by {@link #grade()} for the table and the plot. */

@@ -4,6 +4,8 @@ import java.beans.PropertyChangeListener;
 import java.beans.PropertyChangeSupport;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
@@ -15,20 +17,37 @@ import org.fresa.model.CamInputException;
 
 /**
  * The state behind the main window, without Swing: the job being edited, its file, whether it
- * has unsaved changes, and the recent jobs. Tabs replace the job through {@link #setJob}; the
- * window listens for {@link #JOB}, {@link #FILE} and {@link #DIRTY} changes.
+ * has unsaved changes, the undo and redo history, and the recent jobs. Tabs replace the job
+ * through {@link #setJob}; the window listens for {@link #JOB}, {@link #FILE} and {@link #DIRTY}
+ * changes. New and Open replace the whole document: {@link #DOCUMENT} first (every tab drops
+ * what it shows and its results), then {@link #JOB} with the new job.
+ *
+ * <p>The job is immutable, so the history is a stack of whole jobs: undo gives back exactly the
+ * job before the edit ({@code equals}), and the job is unsaved exactly when it differs from the
+ * one last read or written.
  */
 public final class MainViewModel {
 
     public static final String JOB = "job";
     public static final String FILE = "file";
     public static final String DIRTY = "dirty";
+    /** Fired when New or Open replaced the document, before {@link #JOB}. */
+    public static final String DOCUMENT = "document";
+    /** Fired when undo or redo became possible or impossible. */
+    public static final String HISTORY = "history";
+
+    /** How many edits undo goes back at most. */
+    static final int HISTORY_LIMIT = 500;
 
     private final PropertyChangeSupport changes = new PropertyChangeSupport(this);
     private final RecentJobs recent;
     private Job job = Job.empty(JobTask.POCKET);
     private Optional<Path> file = Optional.empty();
     private boolean dirty;
+    private Job saved = job;
+    private final Deque<Job> undo = new ArrayDeque<>();
+    private final Deque<Job> redo = new ArrayDeque<>();
+    private int generation;
 
     public MainViewModel(RecentJobs recent) {
         this.recent = Objects.requireNonNull(recent, "recent");
@@ -56,34 +75,87 @@ public final class MainViewModel {
         return "Fresa - " + name + (dirty ? " *" : "");
     }
 
-    /** Replaces the job after an edit in a tab; marks it unsaved when it changed. */
+    /**
+     * How many times New or Open replaced the document: work started for one document (a read,
+     * a run) compares it when it ends and drops its result when another document came meanwhile.
+     */
+    public int generation() {
+        return generation;
+    }
+
+    /** Replaces the job after an edit in a tab; the edit can be undone; unsaved when it differs. */
     public void setJob(Job j) {
         Objects.requireNonNull(j, "job");
         Job old = job;
-        job = j;
-        if (!j.equals(old)) {
-            setDirty(true);
-            changes.firePropertyChange(JOB, old, j);
+        if (j.equals(old)) {
+            return;
         }
+        boolean could = canUndo() || canRedo();
+        undo.push(old);
+        if (undo.size() > HISTORY_LIMIT) {
+            undo.removeLast();
+        }
+        redo.clear();
+        job = j;
+        setDirty(!j.equals(saved));
+        changes.firePropertyChange(JOB, old, j);
+        changes.firePropertyChange(HISTORY, could, true);
+    }
+
+    public boolean canUndo() {
+        return !undo.isEmpty();
+    }
+
+    public boolean canRedo() {
+        return !redo.isEmpty();
+    }
+
+    /** Goes back to the job before the last edit; false when there is none. */
+    public boolean undo() {
+        return step(undo, redo);
+    }
+
+    /** Makes the last undone edit again; false when there is none. */
+    public boolean redo() {
+        return step(redo, undo);
+    }
+
+    private boolean step(Deque<Job> from, Deque<Job> to) {
+        if (from.isEmpty()) {
+            return false;
+        }
+        Job old = job;
+        to.push(old);
+        job = from.pop();
+        setDirty(!job.equals(saved));
+        changes.firePropertyChange(JOB, old, job);
+        changes.firePropertyChange(HISTORY, null, job);
+        return true;
     }
 
     public void newJob() {
-        Job old = job;
-        job = Job.empty(JobTask.POCKET);
-        setFile(Optional.empty());
-        setDirty(false);
-        changes.firePropertyChange(JOB, old, job);
+        replace(Job.empty(JobTask.POCKET), Optional.empty());
     }
 
     /** Opens a job file; the current job is kept when the file is bad. */
     public void open(Path f) throws CamInputException {
         Job read = JobXml.read(f);
-        Job old = job;
-        job = read;
-        setFile(Optional.of(f.toAbsolutePath()));
-        setDirty(false);
         recent.add(f);
-        changes.firePropertyChange(JOB, old, job);
+        replace(read, Optional.of(f.toAbsolutePath()));
+    }
+
+    private void replace(Job j, Optional<Path> f) {
+        Job old = job;
+        generation++;
+        job = j;
+        saved = j;
+        undo.clear();
+        redo.clear();
+        setFile(f);
+        setDirty(false);
+        changes.firePropertyChange(DOCUMENT, null, j);
+        changes.firePropertyChange(JOB, old, j);
+        changes.firePropertyChange(HISTORY, null, j);
     }
 
     /** Saves to the current file; false when the job has none yet (ask for a name, then saveAs). */
@@ -104,6 +176,7 @@ public final class MainViewModel {
             changes.firePropertyChange(JOB, old, job);
         }
         JobXml.write(job, target);
+        saved = job;
         setFile(Optional.of(target.toAbsolutePath()));
         setDirty(false);
         recent.add(target);

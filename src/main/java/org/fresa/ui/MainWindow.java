@@ -20,6 +20,7 @@ import javax.swing.KeyStroke;
 import javax.swing.WindowConstants;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.fresa.job.JobRunner;
+import org.fresa.job.JobTask;
 import org.fresa.job.OutputFolder;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -35,6 +36,9 @@ public final class MainWindow extends JFrame {
     private final transient BackgroundTasks tasks;
     private final transient List<ModuleTab> moduleTabs;
     private final JMenu recentMenu = new JMenu("Recent jobs");
+    private final transient RobotRunModel runs = new RobotRunModel();
+    private final JMenuItem undoItem = item("Undo", 'U', KeyStroke.getKeyStroke("ctrl Z"), this::undo);
+    private final JMenuItem redoItem = item("Redo", 'R', KeyStroke.getKeyStroke("ctrl Y"), this::redo);
 
     MainWindow(MainViewModel model) {
         super("Fresa");
@@ -48,7 +52,13 @@ public final class MainWindow extends JFrame {
                 quit();
             }
         });
-        moduleTabs = Tabs.create(new AppContext(model, tasks, this));
+        // results belong to the document: New and Open drop them before the tabs show the new job
+        model.addListener(e -> {
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())) {
+                runs.clear();
+            }
+        });
+        moduleTabs = Tabs.create(new AppContext(model, tasks, this, runs));
         tabs.setName("tabs");
         for (int i = 0; i < moduleTabs.size(); i++) {
             ModuleTab t = moduleTabs.get(i);
@@ -63,13 +73,96 @@ public final class MainWindow extends JFrame {
         setMinimumSize(new Dimension(800, 560));
         pack();
         setLocationRelativeTo(null);
-        model.addListener(e -> updateTitle());
+        model.addListener(e -> {
+            updateTitle();
+            updateHistory();
+            updateRunTicks();
+        });
         updateTitle();
+        updateHistory();
+        updateRunTicks();
     }
 
     private void updateTitle() {
         setTitle(model.file().isEmpty() && !model.isDirty() && "untitled".equals(model.job().name())
                 ? "Fresa" : model.title());
+    }
+
+    /** What each task's tick in the Job menu says. */
+    private static final java.util.Map<JobTask, String> RUN_LABELS = new java.util.EnumMap<>(java.util.Map.of(
+            JobTask.STEPNC, "STEP-NC description (stepnc)", JobTask.TOOLPATH, "Toolpaths and NC program (toolpath)",
+            JobTask.ROBOT, "Robot trajectory and programs (robot)", JobTask.POCKET, "Pocket program (pocket)",
+            JobTask.CUT, "Sheet cutting program (cut)", JobTask.GRADE, "Graded sizes (grade)",
+            JobTask.SOLE, "Sole mould programs (sole)"));
+
+    private final transient java.util.Map<JobTask, javax.swing.JCheckBoxMenuItem> runTicks =
+            new java.util.EnumMap<>(JobTask.class);
+
+    /** Ticks what the job runs; a module without its settings can be ticked only once it has them. */
+    private void updateRunTicks() {
+        var job = model.job();
+        for (var e : runTicks.entrySet()) {
+            boolean on = job.runs().contains(e.getKey());
+            e.getValue().setSelected(on);
+            e.getValue().setEnabled(on || hasSettings(job, e.getKey()));
+        }
+    }
+
+    private static boolean hasSettings(org.fresa.job.Job job, JobTask t) {
+        switch (t) {
+            case STEPNC:
+            case TOOLPATH:
+                return job.stepnc().isPresent();
+            case ROBOT:
+                return job.stepnc().isPresent() && job.robot().isPresent();
+            case POCKET:
+                return job.pocket().isPresent();
+            case CUT:
+                return job.cutting().isPresent();
+            case GRADE:
+                return job.grading().isPresent();
+            case SOLE:
+                return job.sole().isPresent();
+            default:
+                return false;
+        }
+    }
+
+    /**
+     * A tick in the Job menu: the job runs that module too, or no longer; one always stays. A
+     * module without settings cannot run: ticking one that has them drops those (a new job's).
+     */
+    private void tickRun(JobTask t, boolean on) {
+        java.util.EnumSet<JobTask> r = java.util.EnumSet.copyOf(model.job().runs());
+        if (on) {
+            r.removeIf(x -> !hasSettings(model.job(), x));
+            r.add(t);
+        } else {
+            r.remove(t);
+        }
+        if (r.isEmpty()) {
+            status.message.setText("A job runs at least one module: tick another one first");
+        } else {
+            model.setJob(model.job().withRuns(r));
+        }
+        updateRunTicks();
+    }
+
+    private void updateHistory() {
+        undoItem.setEnabled(model.canUndo());
+        redoItem.setEnabled(model.canRedo());
+    }
+
+    private void undo() {
+        if (model.undo()) {
+            status.message.setText("Undone");
+        }
+    }
+
+    private void redo() {
+        if (model.redo()) {
+            status.message.setText("Redone");
+        }
     }
 
     private JMenuBar menuBar() {
@@ -101,10 +194,51 @@ public final class MainWindow extends JFrame {
         file.addSeparator();
         file.add(item("Quit", 'Q', KeyStroke.getKeyStroke("ctrl Q"), this::quit));
         bar.add(file);
+        JMenu edit = new JMenu("Edit");
+        edit.setMnemonic('E');
+        edit.add(undoItem);
+        edit.add(redoItem);
+        // Ctrl+Shift+Z redoes too, as in most editors
+        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(
+                KeyStroke.getKeyStroke("ctrl shift Z"), "fresa-redo");
+        getRootPane().getActionMap().put("fresa-redo", new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                redo();
+            }
+        });
+        bar.add(edit);
         JMenu job = new JMenu("Job");
         job.setMnemonic('J');
         job.add(item("Run job into folder...", 'R', KeyStroke.getKeyStroke("F5"), this::runJob));
         job.add(item("Cancel running task", 'C', KeyStroke.getKeyStroke("ESCAPE"), tasks::cancel));
+        job.addSeparator();
+        JMenuItem title = new JMenuItem("Run executes:");
+        title.setEnabled(false);
+        job.add(title);
+        for (JobTask t : JobTask.values()) {
+            javax.swing.JCheckBoxMenuItem tick = new javax.swing.JCheckBoxMenuItem(RUN_LABELS.get(t));
+            tick.setName("run-" + t.id());
+            tick.addActionListener(e -> tickRun(t, tick.isSelected()));
+            runTicks.put(t, tick);
+            job.add(tick);
+        }
+        job.addMenuListener(new javax.swing.event.MenuListener() {
+            @Override
+            public void menuSelected(javax.swing.event.MenuEvent e) {
+                updateRunTicks();
+            }
+
+            @Override
+            public void menuDeselected(javax.swing.event.MenuEvent e) {
+            }
+
+            @Override
+            public void menuCanceled(javax.swing.event.MenuEvent e) {
+            }
+        });
         bar.add(job);
         bar.add(HelpMenu.create(this));
         return bar;
@@ -259,7 +393,17 @@ public final class MainWindow extends JFrame {
         }
         Path dir = FileChoosers.chosen(fc);
         var job = model.job();
-        tasks.start("Run " + job.task().id(), pm -> JobRunner.run(job, new OutputFolder(dir), pm), this::showOutcome);
+        int generation = model.generation();
+        String what = String.join(", ", job.runs().stream().map(JobTask::id).toList());
+        tasks.start("Run " + what, pm -> JobRunner.run(job, new OutputFolder(dir), pm), o -> {
+            // the programs of this run are the job's, unless another job was opened meanwhile
+            if (generation == model.generation() && job.runs().contains(JobTask.ROBOT) && job.robot().isPresent()) {
+                Path folder = job.runs().size() == 1 ? dir : dir.resolve(JobTask.ROBOT.id());
+                runs.setWritten(new RobotRunModel.Written(job.robot().get().robot(), folder,
+                        o.files().stream().filter(f -> f.startsWith(folder)).toList()));
+            }
+            showOutcome(o);
+        });
     }
 
     private void showOutcome(TaskOutcome o) {

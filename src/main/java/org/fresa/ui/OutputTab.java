@@ -44,6 +44,8 @@ final class OutputTab implements ModuleTab {
 
     private static final int[] KEYS = {KeyEvent.VK_V, KeyEvent.VK_X, KeyEvent.VK_A, KeyEvent.VK_K, KeyEvent.VK_N};
 
+    static final String NONE = "No programs for this job yet: press Compute in the Position tab, or run the job (F5).";
+
     private final AppContext ctx;
     private final RobotRunModel runs;
     private final OutputViewModel vm = new OutputViewModel();
@@ -52,7 +54,7 @@ final class OutputTab implements ModuleTab {
     private final JTextPane text = new JTextPane();
     private final JLabel image = new JLabel();
     private final JPanel previewCards = new JPanel(new CardLayout());
-    private final JLabel status = new JLabel("Nothing computed yet: press Compute in the Position tab.");
+    private final JLabel status = new JLabel(NONE);
     // a new result is previewed when the tab is shown, so that computing does not also write a preview
     private boolean stale;
 
@@ -113,14 +115,7 @@ final class OutputTab implements ModuleTab {
         panel.add(left, BorderLayout.WEST);
         panel.add(right, BorderLayout.CENTER);
         panel.add(status, BorderLayout.SOUTH);
-        runs.addListener(r -> {
-            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
-                    + r.solved().result().points().size() + " points");
-            stale = true;
-            if (panel.isShowing()) {
-                preview();
-            }
-        });
+        runs.addListener(this::runsChanged);
         panel.addHierarchyListener(e -> {
             if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
                     && stale) {
@@ -154,13 +149,50 @@ final class OutputTab implements ModuleTab {
                 new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats()))));
     }
 
+    /** New programs (or none): the status says which, the preview follows when the tab is shown. */
+    private void runsChanged() {
+        if (runs.last().isPresent()) {
+            RobotRunModel.Run r = runs.last().get();
+            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
+                    + r.solved().result().points().size() + " points");
+        } else if (runs.written().isPresent()) {
+            RobotRunModel.Written w = runs.written().get();
+            status.setText("Programs the run on " + w.robot() + " wrote into " + w.folder());
+        } else {
+            status.setText(NONE);
+        }
+        stale = true;
+        if (runs.isEmpty()) {
+            showNothing();
+        } else if (panel.isShowing()) {
+            preview();
+        }
+    }
+
+    private void showNothing() {
+        stale = false;
+        showText("");
+        image.setIcon(null);
+        ((CardLayout) previewCards.getLayout()).show(previewCards, "text");
+    }
+
     private void preview() {
-        if (runs.last().isEmpty()) {
+        if (runs.isEmpty()) {
+            showNothing();
             return;
         }
-        RobotRunModel.Run run = runs.last().get();
+        RobotRunModel.Run run = runs.last().orElse(null);
+        RobotRunModel.Written written = runs.written().orElse(null);
         String format = vm.previewed();
         ctx.tasks().start("Preview " + format, progress -> {
+            if (written != null) {
+                Path f = written.file(OutputViewModel.fileOf(format)).orElse(null);
+                if (f == null || !Files.isRegularFile(f)) {
+                    return (Object) new Previewed("The run wrote no " + OutputViewModel.fileOf(format)
+                            + ": tick the format in this tab and run the job again.", 0, "");
+                }
+                return shown(f, format);
+            }
             Path scratch = Files.createTempDirectory("fresa-preview");
             try {
                 Path f = OutputViewModel.previewFile(run, format, scratch);
@@ -200,6 +232,17 @@ final class OutputTab implements ModuleTab {
     private record Previewed(String text, int line, String refusal) {
     }
 
+    /** The picture or the text of a file to preview. */
+    private static Object shown(Path f, String format) throws IOException {
+        if (format.equals("png")) {
+            return ImageIO.read(f.toFile());
+        }
+        String s = Files.readString(f, StandardCharsets.UTF_8);
+        // a preview of a long program shows its beginning; Save writes all of it
+        // a written file passed the program check before it was renamed into place
+        return new Previewed(s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s, 0, "");
+    }
+
     private void showText(String s) {
         StyledDocument doc = text.getStyledDocument();
         SimpleAttributeSet plain = new SimpleAttributeSet();
@@ -220,12 +263,17 @@ final class OutputTab implements ModuleTab {
 
     private void save() {
         String problem = vm.saveProblem(runs.last().isPresent());
+        if (runs.last().isEmpty() && runs.written().isPresent()) {
+            problem = "The run wrote its programs into " + runs.written().get().folder()
+                    + " already: press Compute in the Position tab to save them elsewhere.";
+        }
         if (!problem.isEmpty()) {
             Dialogs.error(ctx.owner(), "Save", problem);
             return;
         }
         if (vm.checkedFormats().stream().anyMatch(org.fresa.job.RobotPrograms.FORMATS::contains)) {
-            java.util.Optional<org.fresa.check.Failure> refusal = OutputViewModel.refusal(runs.last().get());
+            java.util.Optional<org.fresa.check.Failure> refusal = runs.last().isPresent()
+                    ? OutputViewModel.refusal(runs.last().get()) : java.util.Optional.empty();
             if (refusal.isPresent()) {
                 Dialogs.error(ctx.owner(), "Save", "The robot program fails the program check and cannot be saved: "
                         + refusal.get().message());

@@ -1,8 +1,10 @@
 package org.fresa.ui;
 
 import java.awt.BorderLayout;
+import java.awt.Color;
 import java.awt.GridLayout;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.Optional;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
@@ -15,52 +17,58 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
 
-/** The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC text. */
+/**
+ * The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC
+ * text. It shows the job's pocket settings (a new job's technology and no contour when the job
+ * has none); Compute previews the pocket, and its settings become the job's once the planner
+ * accepted them. A bad field is marked, with the reason beside Compute.
+ */
 final class PocketTab implements ModuleTab {
 
+    private static final Color BAD = new Color(255, 220, 220);
+
     private final AppContext ctx;
-    private final PocketViewModel model = new PocketViewModel();
+    private PocketViewModel model = new PocketViewModel();
+    // the job's pocket settings the fields show: a job that holds others is shown afresh
+    private Optional<PocketSettings> shown = Optional.empty();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final PlotPanel plot = new PlotPanel();
     private final JTextArea report = new JTextArea(12, 40);
     private final JTextArea nc = new JTextArea(12, 40);
     private final JTextField contour = new JTextField(24);
-    private final JTextField[] tech = new JTextField[9];
-    private final JComboBox<String> post = new JComboBox<>(new String[] {"7m-compat", "7m", "linuxcnc"});
+    private final JTextField[] tech = new JTextField[PocketViewModel.LABELS.size()];
+    private final JComboBox<String> post = new JComboBox<>(PocketViewModel.POSTS.toArray(new String[0]));
     private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
+    private final JButton run = new JButton("Compute");
     private final JLabel status = new JLabel(" ");
+    private final JPanel form = new JPanel();
+    private boolean filling;
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
-        String[] names = {"Tool diameter (mm)", "Cut fraction", "Finish fraction", "Z top (mm)", "Z bottom (mm)",
-            "Max depth per pass (mm)", "Spindle (rpm)", "Feed (mm/min)", "Finish feed (mm/min)"};
-        PocketSettings s = model.settings();
-        double[] values = {s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(), s.zBottomMm(),
-            s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin()};
-        JPanel form = new JPanel(new GridLayout(0, 2, 4, 4));
+        form.setLayout(new GridLayout(0, 2, 4, 4));
         JLabel cl = new JLabel("Contour (.dad, .contour)");
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
-        contour.setText(s.contour().toString());
-        contour.setName("pocket-contour");
+        contour.setName(PocketViewModel.CONTOUR);
+        TextChanges.onChange(contour, this::fieldsChanged);
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
         JButton browse = new JButton("...");
         browse.getAccessibleContext().setAccessibleName("Choose contour file");
-        browse.addActionListener(e -> {
-            JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.POCKET_CONTOUR);
-            if (ch.showOpenDialog(panel) == JFileChooser.APPROVE_OPTION) {
-                contour.setText(FileChoosers.chosen(ch).toString());
-            }
-        });
+        browse.addActionListener(e -> chooseContour());
         file.add(browse, BorderLayout.EAST);
         form.add(file);
-        for (int i = 0; i < names.length; i++) {
-            tech[i] = new JTextField(Double.toString(values[i]), 8);
-            JLabel l = new JLabel(names[i]);
+        for (int i = 0; i < tech.length; i++) {
+            tech[i] = new JTextField(8);
+            tech[i].setName(PocketViewModel.NAMES.get(i));
+            TextChanges.onChange(tech[i], this::fieldsChanged);
+            JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
             l.setLabelFor(tech[i]);
             form.add(l);
             form.add(tech[i]);
@@ -68,25 +76,25 @@ final class PocketTab implements ModuleTab {
         JLabel pl = new JLabel("Post");
         pl.setLabelFor(post);
         pl.setDisplayedMnemonic('P');
+        post.setName("pocket-post");
+        post.addActionListener(e -> fieldsChanged());
         form.add(pl);
         form.add(post);
         JLabel dl = new JLabel("Direction (not 7m-compat)");
         dl.setLabelFor(direction);
         dl.setDisplayedMnemonic('D');
-        direction.setSelectedItem(s.direction());
+        direction.setName("pocket-direction");
+        direction.addActionListener(e -> fieldsChanged());
         form.add(dl);
         form.add(direction);
-        JButton run = new JButton("Compute");
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
         form.add(run);
+        form.add(new JLabel());
+        // the reason under the form, as wide as it: a long one wraps instead of being cut off
         status.setName("pocket-status");
-        // a fixed width: "computing" and "done" of another width re-flowed the whole form at every
-        // job's start and end, and its fields were painted again on the event thread
-        status.setPreferredSize(new java.awt.Dimension(status.getFontMetrics(status.getFont()).stringWidth("m") * 28,
-                status.getPreferredSize().height));
-        form.add(status);
+        status.setBorder(javax.swing.BorderFactory.createEmptyBorder(4, 4, 4, 4));
         report.setEditable(false);
         nc.setEditable(false);
         nc.setName("pocket-nc");
@@ -96,31 +104,113 @@ final class PocketTab implements ModuleTab {
         texts.addTab("Recognition tree", new JScrollPane(report));
         texts.addTab("NC program", new JScrollPane(nc));
         JPanel left = new JPanel(new BorderLayout());
-        left.add(form, BorderLayout.NORTH);
+        JPanel north = new JPanel(new BorderLayout());
+        north.add(form, BorderLayout.NORTH);
+        north.add(status, BorderLayout.SOUTH);
+        left.add(north, BorderLayout.NORTH);
         left.add(texts, BorderLayout.CENTER);
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, plot), BorderLayout.CENTER);
+        ctx.model().addListener(e -> {
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
+                    || MainViewModel.JOB.equals(e.getPropertyName())
+                    && !ctx.model().job().pocket().equals(shown)) {
+                showJob();
+            }
+        });
+        showJob();
+    }
+
+    /** The job's pocket settings, or a new job's; no result. */
+    private void showJob() {
+        model = new PocketViewModel();
+        model.load(ctx.model().job());
+        shown = ctx.model().job().pocket();
+        filling = true;
+        try {
+            contour.setText(model.contourText());
+            for (int i = 0; i < tech.length; i++) {
+                tech[i].setText(model.value(i));
+            }
+            post.setSelectedItem(model.post());
+            direction.setSelectedItem(model.direction());
+        } finally {
+            filling = false;
+        }
+        report.setText("");
+        nc.setText("");
+        plot.show(PlotScene.empty(shown.isPresent() ? "Press Compute" : "Choose a contour"));
+        fieldsChanged();
+    }
+
+    private void chooseContour() {
+        String t = contour.getText().trim();
+        JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.POCKET_CONTOUR);
+        if (ch.showOpenDialog(panel) == JFileChooser.APPROVE_OPTION) {
+            contour.setText(FileChoosers.chosen(ch).toString());
+        }
+    }
+
+    /** Takes the fields into the view model, marks the bad ones and says why beside Compute. */
+    private Map<String, String> fieldsChanged() {
+        if (filling) {
+            return Map.of();
+        }
+        model.setContourText(contour.getText());
+        for (int i = 0; i < tech.length; i++) {
+            model.setValue(i, tech[i].getText());
+        }
+        model.setPost((String) post.getSelectedItem());
+        model.setDirection((String) direction.getSelectedItem());
+        Map<String, String> problems = model.problems();
+        mark(contour, problems);
+        for (JTextField f : tech) {
+            mark(f, problems);
+        }
+        run.setEnabled(problems.isEmpty());
+        run.setToolTipText(problems.isEmpty() ? "Plan the pocket and show its passes and program"
+                : "Correct the marked field first");
+        say(problems.isEmpty() ? " " : problems.values().iterator().next()
+                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""), !problems.isEmpty());
+        return problems;
+    }
+
+    /**
+     * The line beside Compute; a long reason wraps (HTML) within the label's width instead of
+     * being cut off, and stays whole in the tooltip.
+     */
+    private void say(String text, boolean problem) {
+        status.setForeground(problem ? new Color(180, 0, 0) : Color.BLACK);
+        // Swing's HTML takes CSS pixels as points (4/3 of a screen pixel at 96 dpi)
+        int width = Math.max(180, (form.getWidth() - 12) * 3 / 4);
+        status.setText(text.length() <= 40 ? text : "<html><div style='width:" + width + "px'>"
+                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setToolTipText(text.isBlank() ? null : text);
+    }
+
+    private static void mark(JTextField f, Map<String, String> problems) {
+        String p = problems.get(f.getName());
+        f.setBackground(p == null ? Color.WHITE : BAD);
+        f.setToolTipText(p);
     }
 
     private void compute() {
-        try {
-            double[] v = new double[9];
-            for (int i = 0; i < 9; i++) {
-                v[i] = Double.parseDouble(tech[i].getText().trim());
-            }
-            model.setSettings(new PocketSettings(Path.of(contour.getText().trim()), v[0], v[1], v[2], v[3], v[4], v[5],
-                    v[6], v[7], v[8], (String) post.getSelectedItem(), (String) direction.getSelectedItem()));
-        } catch (NumberFormatException ex) {
-            status.setText("not a number: " + ex.getMessage());
-            status.setToolTipText(status.getText());
+        if (!fieldsChanged().isEmpty()) {
             return;
         }
-        PocketSettings settings = model.settings();
-        status.setText("computing");
+        PocketSettings settings = model.typedSettings().orElseThrow();
+        model.setSettings(settings);
+        PocketViewModel computing = model;
+        int generation = ctx.model().generation();
+        say("computing", false);
         ctx.tasks().start("Pocket", progress -> {
             PocketViewModel.Outcome o = PocketViewModel.outcome(settings);
             return new Shown(o, o.result().map(r -> TextDocuments.of(r.report())).orElse(null),
                     o.result().map(r -> TextDocuments.of(r.nc())).orElse(null));
-        }, this::show);
+        }, shown -> {
+            if (computing == model && generation == ctx.model().generation()) {
+                show(settings, shown);
+            }
+        });
     }
 
     /** An outcome with its texts as documents, filled off the event thread. */
@@ -128,25 +218,28 @@ final class PocketTab implements ModuleTab {
             javax.swing.text.Document nc) {
     }
 
-    private void show(Shown shown) {
-        model.show(shown.outcome());
+    private void show(PocketSettings settings, Shown result) {
+        model.show(result.outcome());
         Optional<PocketViewModel.Result> r = model.result();
         if (r.isPresent()) {
-            report.setDocument(shown.report());
-            nc.setDocument(shown.nc());
+            // the planner accepted the settings: they are the job's pocket now
+            shown = Optional.of(settings);
+            ctx.model().setJob(ctx.model().job().withPocket(settings));
+            report.setDocument(result.report());
+            nc.setDocument(result.nc());
             nc.setCaretPosition(0);
             plot.show(r.get().scene());
-            status.setText("done");
+            say("done", false);
             nc.getHighlighter().removeAllHighlights();
             if (r.get().refusal().isPresent()) {
                 org.fresa.check.Failure f = r.get().refusal().get();
                 ProgramHighlight.line(nc, f.line());
-                status.setText("program refused, not written: " + f.message());
+                say("The program is refused and not written: " + f.message(), true);
             }
         } else {
-            status.setText(model.error().orElse("failed"));
+            ctx.tasks().failed("Pocket");
+            say(model.error().orElse("The pocket cannot be planned."), true);
         }
-        status.setToolTipText(status.getText());
     }
 
     @Override

@@ -3,8 +3,10 @@ package org.fresa.ui;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Arc2;
@@ -12,7 +14,12 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
+import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.SettingRange;
+import org.fresa.job.SettingRanges.Pocket;
+import org.fresa.model.ExactDecimal;
+import org.fresa.post.NcPosts;
 import org.fresa.job.PocketService;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.LoopState;
@@ -48,8 +55,138 @@ public final class PocketViewModel {
         }
     }
 
-    private PocketSettings settings = new PocketSettings(Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3,
-            3200, 290, 100, "7m-compat");
+    /** Every post the pocket module writes: the thesis's 7M dialect, then the G-code posts. */
+    public static final List<String> POSTS = posts();
+    /** The technology fields, in the order shown, with their units. */
+    public static final List<String> LABELS = List.of("Tool diameter (mm)", "Cut fraction", "Finish fraction",
+            "Z top (mm)", "Z bottom (mm)", "Max depth per pass (mm)", "Spindle (rpm)", "Feed (mm/min)",
+            "Finish feed (mm/min)");
+    /** The field names of the technology fields (for tests and accessibility). */
+    public static final List<String> NAMES = List.of("pocket-tool", "pocket-cut", "pocket-finish", "pocket-z-top",
+            "pocket-z-bottom", "pocket-max-depth", "pocket-spindle", "pocket-feed", "pocket-finish-feed");
+    private static final List<SettingRange> RANGES = List.of(Pocket.TOOL_DIAMETER, Pocket.CUT, Pocket.FINISH,
+            Pocket.Z_TOP, Pocket.Z_BOTTOM, Pocket.MAX_DEPTH, Pocket.SPINDLE, Pocket.FEED, Pocket.FINISH_FEED);
+    /** The key of the contour field in {@link #problems()}. */
+    public static final String CONTOUR = "pocket-contour";
+    /** A new job's technology: cavity 01 of the thesis (samples/pocket/jobs.csv); no contour. */
+    private static final double[] DEFAULT_TECHNOLOGY = {6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100};
+
+    private PocketSettings settings = new PocketSettings(Path.of(""), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
+            "7m-compat");
+    // the fields as typed
+    private String contourText = "";
+    private final String[] values = new String[DEFAULT_TECHNOLOGY.length];
+    private String post = "7m-compat";
+    private String direction = "climb";
+
+    public PocketViewModel() {
+        for (int i = 0; i < values.length; i++) {
+            values[i] = ExactDecimal.of(DEFAULT_TECHNOLOGY[i]);
+        }
+    }
+
+    private static List<String> posts() {
+        List<String> out = new ArrayList<>(PocketService.SINUMERIK_7M_POSTS);
+        out.addAll(NcPosts.names());
+        return List.copyOf(out);
+    }
+
+    /** Shows the job's pocket settings, or a new job's (no contour) when it has none. */
+    public void load(Job job) {
+        result = Optional.empty();
+        error = Optional.empty();
+        if (job.pocket().isEmpty()) {
+            return;
+        }
+        PocketSettings p = job.pocket().get();
+        settings = p;
+        contourText = p.contour().toString();
+        double[] v = {p.toolDiameterMm(), p.cutFraction(), p.finishFraction(), p.zTopMm(), p.zBottomMm(),
+            p.maxDepthPerPassMm(), p.spindleRpm(), p.feedMmPerMin(), p.finishFeedMmPerMin()};
+        for (int i = 0; i < v.length; i++) {
+            values[i] = ExactDecimal.of(v[i]);
+        }
+        post = p.post();
+        direction = p.direction();
+    }
+
+    public String contourText() {
+        return contourText;
+    }
+
+    public void setContourText(String t) {
+        contourText = t.trim();
+    }
+
+    public String value(int i) {
+        return values[i];
+    }
+
+    public void setValue(int i, String t) {
+        values[i] = t.trim();
+    }
+
+    public String post() {
+        return post;
+    }
+
+    public void setPost(String p) {
+        if (!POSTS.contains(p)) {
+            throw new IllegalArgumentException("unknown post " + p);
+        }
+        post = p;
+    }
+
+    public String direction() {
+        return direction;
+    }
+
+    public void setDirection(String d) {
+        if (!PocketSettings.DIRECTIONS.contains(d)) {
+            throw new IllegalArgumentException("unknown direction " + d);
+        }
+        direction = d;
+    }
+
+    /**
+     * What is wrong with the typed fields, in the planner's words, by field name ({@link #CONTOUR}
+     * or one of {@link #NAMES}); empty when Compute may run.
+     */
+    public Map<String, String> problems() {
+        Map<String, String> out = new LinkedHashMap<>();
+        if (contourText.isEmpty()) {
+            out.put(CONTOUR, "Choose the contour to pocket (.dad or .contour file).");
+        }
+        for (int i = 0; i < values.length; i++) {
+            String label = LABELS.get(i);
+            try {
+                double v = Double.parseDouble(values[i]);
+                if (!RANGES.get(i).contains(v)) {
+                    out.put(NAMES.get(i), label + ": " + RANGES.get(i).problem(v) + ".");
+                }
+            } catch (NumberFormatException e) {
+                out.put(NAMES.get(i), label + ": '" + values[i] + "' is not a number"
+                        + (values[i].contains(",") ? " (decimals take a point: " + values[i].replace(',', '.') + ")."
+                                : "."));
+            }
+        }
+        return out;
+    }
+
+    /** The settings of the typed fields; empty while {@link #problems()} is not. */
+    public Optional<PocketSettings> typedSettings() {
+        if (!problems().isEmpty()) {
+            return Optional.empty();
+        }
+        double[] v = new double[values.length];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = Double.parseDouble(values[i]);
+        }
+        // the entry the job holds (the tab has no fields for it) goes on with the typed technology
+        return Optional.of(new PocketSettings(Path.of(contourText).toAbsolutePath(), v[0], v[1], v[2], v[3], v[4],
+                v[5], v[6], v[7], v[8], post, direction).withEntry(settings.entry(), settings.entryAngleDeg(),
+                settings.centreCutting()));
+    }
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
 
@@ -69,7 +206,6 @@ public final class PocketViewModel {
         return error;
     }
 
-    /** Recomputes from the settings; on bad input keeps the message and clears the result. */
     /** The outcome of one computation: a result or the reason there is none. */
     public record Outcome(Optional<Result> result, Optional<String> error) {
     }
@@ -102,9 +238,35 @@ public final class PocketViewModel {
                     settings.climb(), settings.entryRule());
             return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, settings)),
                     Optional.empty());
-        } catch (CamInputException | IOException | ToolTooLargeException | IllegalArgumentException e) {
-            return new Outcome(Optional.empty(), Optional.of(String.valueOf(e.getMessage())));
+        } catch (CamInputException e) {
+            return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));
+        } catch (java.nio.file.NoSuchFileException e) {
+            return new Outcome(Optional.empty(), Optional.of("There is no file " + settings.contour() + "."));
+        } catch (IOException e) {
+            return new Outcome(Optional.empty(), Optional.of("Cannot read " + settings.contour() + "."));
+        } catch (ToolTooLargeException | IllegalArgumentException e) {
+            return new Outcome(Optional.empty(), Optional.of(sentence(e.getMessage())));
         }
+    }
+
+    /** A refusal as the planner reads it: the problem, with the file it is in, never an option name. */
+    static String plannerWords(CamInputException e) {
+        String source = e.source();
+        String problem = sentence(e.problem());
+        if (source.startsWith("--") || source.equals("technology") || source.isEmpty()) {
+            return problem;
+        }
+        String file = source.substring(source.lastIndexOf('/') + 1);
+        return file + (e.line().isPresent() ? ", line " + e.line().getAsInt() : "") + ": " + problem;
+    }
+
+    private static String sentence(String s) {
+        String t = String.valueOf(s).trim();
+        if (t.isEmpty()) {
+            return "The pocket cannot be planned.";
+        }
+        t = Character.toUpperCase(t.charAt(0)) + t.substring(1);
+        return t.endsWith(".") ? t : t + ".";
     }
 
     /** A pocket with islands: the contours, every offset level and the toolpath. */

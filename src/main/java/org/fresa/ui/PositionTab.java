@@ -131,7 +131,9 @@ final class PositionTab implements ModuleTab {
         panel.add(top, BorderLayout.NORTH);
         panel.add(centre, BorderLayout.CENTER);
         ctx.model().addListener(e -> {
-            if (MainViewModel.JOB.equals(e.getPropertyName())) {
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())) {
+                documentReplaced();
+            } else if (MainViewModel.JOB.equals(e.getPropertyName())) {
                 ctx.model().job().robot().ifPresent(this::load);
             }
         });
@@ -203,7 +205,26 @@ final class PositionTab implements ModuleTab {
         } finally {
             loading = false;
         }
-        validateFields();
+        // the fields show the job's values: nothing to write back
+        validateFields(false);
+    }
+
+    /** New or Open: the new job's placements (or none), no trajectory. */
+    private void documentReplaced() {
+        vm.clearResult();
+        charts = null;
+        jointsChart.setChart(null);
+        errorChart.setChart(null);
+        drawnRobot = "";
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(new JobSettings.RobotSettings("irb140",
+                org.fresa.model.Placement.ORIGIN, org.fresa.model.Placement.ORIGIN,
+                JobSettings.RobotSettings.DEFAULT_FORMATS));
+        // the fields take the new job's values without writing them into it
+        boolean was = loading;
+        loading = false;
+        load(r);
+        loading = was;
+        showResult();
     }
 
     /** A built-in name, or a file with the time it was written (a file saved again is read again). */
@@ -225,12 +246,16 @@ final class PositionTab implements ModuleTab {
 
     /** Shows the first problem, marks the bad fields, and writes good placements into the job. */
     private boolean validateFields() {
+        return validateFields(true);
+    }
+
+    private boolean validateFields(boolean write) {
         Map<String, String> problems = vm.problems();
         mark(robotTable, "position-rt-", problems);
         mark(tablePiece, "position-tp-", problems);
         messages.setText(problems.isEmpty() ? " " : problems.size() == 1 ? problems.values().iterator().next()
                 : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
-        if (problems.isEmpty() && !loading) {
+        if (problems.isEmpty() && !loading && write) {
             loading = true;
             try {
                 ctx.model().setJob(vm.applyTo(ctx.model().job()));
@@ -264,9 +289,10 @@ final class PositionTab implements ModuleTab {
             return;
         }
         Path file = stepnc.get().file();
-        // computing the cell makes this a robot job: Job > Run and fresa run then do the same
-        ctx.model().setJob(vm.applyTo(ctx.model().job()).withTask(org.fresa.job.JobTask.ROBOT));
+        // Compute previews the cell: it changes the job's placements only, never what the job runs
+        ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
+        int generation = ctx.model().generation();
         java.util.List<String> formats = r.formats();
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
             RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
@@ -275,6 +301,9 @@ final class PositionTab implements ModuleTab {
             TrajectoryCharts c = TrajectoryCharts.of(solved);
             return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));
         }, charted -> {
+                    if (generation != ctx.model().generation()) {
+                        return;
+                    }
                     RobotTrajectoryService.Solved solved = charted.solved();
                     vm.setResult(solved, charted.scene());
                     String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");

@@ -169,6 +169,14 @@ final class PositionViewModel {
         sceneCacheKey = List.of(s, 0);
     }
 
+    /** Forgets the computed trajectory (another document was opened). */
+    void clearResult() {
+        solved = Optional.empty();
+        selected = 0;
+        sceneCache = null;
+        sceneCacheKey = null;
+    }
+
     Optional<RobotTrajectoryService.Solved> result() {
         return solved;
     }

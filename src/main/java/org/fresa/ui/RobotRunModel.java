@@ -1,14 +1,16 @@
 package org.fresa.ui;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 import java.util.Optional;
-import java.util.function.Consumer;
 import org.fresa.job.RobotTrajectoryService;
 
 /**
- * The last trajectory the Position tab computed, shared with the Output tab (no Swing). Listeners
- * hear about every new result; a result stays until the next compute replaces it.
+ * The robot programs of the current job (no Swing): the last trajectory the Position tab
+ * computed, or the files the last Job > Run wrote, whichever came last; none after New or Open.
+ * The Output tab shows them. Listeners hear about every change.
  */
 final class RobotRunModel {
 
@@ -16,21 +18,68 @@ final class RobotRunModel {
     record Run(RobotTrajectoryService.Solved solved, String programName) {
     }
 
-    private final List<Consumer<Run>> listeners = new ArrayList<>();
+    /**
+     * The files a run of the job wrote into a folder.
+     *
+     * @param robot the robot the job names
+     * @param files every file the run wrote, in order
+     */
+    record Written(String robot, Path folder, List<Path> files) {
+        Written {
+            Objects.requireNonNull(robot, "robot");
+            Objects.requireNonNull(folder, "folder");
+            files = List.copyOf(files);
+        }
+
+        /** The file of this name the run wrote, if it wrote one. */
+        Optional<Path> file(String name) {
+            return files.stream().filter(f -> f.getFileName().toString().equals(name)).findFirst();
+        }
+    }
+
+    private final List<Runnable> listeners = new ArrayList<>();
     private Run last;
+    private Written written;
 
     Optional<Run> last() {
         return Optional.ofNullable(last);
     }
 
+    Optional<Written> written() {
+        return Optional.ofNullable(written);
+    }
+
+    /** Whether there are programs to show. */
+    boolean isEmpty() {
+        return last == null && written == null;
+    }
+
     void set(Run r) {
-        last = r;
-        for (Consumer<Run> l : List.copyOf(listeners)) {
-            l.accept(r);
+        last = Objects.requireNonNull(r, "run");
+        written = null;
+        fire();
+    }
+
+    void setWritten(Written w) {
+        written = Objects.requireNonNull(w, "written");
+        last = null;
+        fire();
+    }
+
+    /** Drops the programs: another document was opened. */
+    void clear() {
+        last = null;
+        written = null;
+        fire();
+    }
+
+    private void fire() {
+        for (Runnable l : List.copyOf(listeners)) {
+            l.run();
         }
     }
 
-    void addListener(Consumer<Run> l) {
+    void addListener(Runnable l) {
         listeners.add(l);
     }
 }

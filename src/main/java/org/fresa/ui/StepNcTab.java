@@ -42,7 +42,7 @@ import org.fresa.toolpath.ToolpathPlanner;
 final class StepNcTab implements ModuleTab {
 
     private final AppContext ctx;
-    private final StepNcViewModel vm = new StepNcViewModel();
+    private StepNcViewModel vm = new StepNcViewModel();
     private final JPanel panel = new JPanel(new BorderLayout());
     private final JLabel fileLabel = new JLabel("No file read. Open a STEP-NC file or drop one here.");
     private final JTree tree = new JTree(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
@@ -222,11 +222,36 @@ final class StepNcTab implements ModuleTab {
         }
     }
 
-    /** A job opened with a STEP-NC file shows that file here. */
+    /**
+     * A job with a STEP-NC file shows that file here; a job without one (New, another Open, an
+     * undo) shows the empty tab, never the last job's part.
+     */
     private void jobChanged() {
-        ctx.model().job().stepnc().map(JobSettings.StepNcSettings::file)
-                .filter(f -> !f.equals(loadedFile) && !f.equals(requestedFile))
-                .ifPresent(this::open);
+        Optional<Path> want = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::file);
+        if (want.isEmpty()) {
+            if (loadedFile != null || requestedFile != null) {
+                clear();
+            }
+            return;
+        }
+        Path f = want.get();
+        if (!f.equals(loadedFile) && !f.equals(requestedFile)) {
+            clear();
+            open(f);
+        }
+    }
+
+    /** The empty tab: no program, no tree, no plot. */
+    private void clear() {
+        player.stop();
+        play.setText("Play");
+        vm = new StepNcViewModel();
+        loadedFile = null;
+        requestedFile = null;
+        preparedPlot = null;
+        preparedDetails = null;
+        fileLabel.setText("No file read. Open a STEP-NC file or drop one here.");
+        refresh(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
     }
 
     /** A program and its toolpaths, read and planned in one background task. */
@@ -236,6 +261,7 @@ final class StepNcTab implements ModuleTab {
 
     void open(Path file) {
         requestedFile = file;
+        int generation = ctx.model().generation();
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
             StepNcProgram p = StepNcService.read(file, progress);
             progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
@@ -249,6 +275,10 @@ final class StepNcTab implements ModuleTab {
             return new Loaded(p, plan, time, new DefaultTreeModel(toSwing(StepNcViewModel.treeOf(p))), first.plot(),
                     first.details());
         }, loaded -> {
+            if (generation != ctx.model().generation() || !file.equals(requestedFile)) {
+                // another document (or file) was asked for while this one was read
+                return;
+            }
             StepNcProgram program = loaded.program();
             vm.load(program);
             vm.planned(loaded.plan(), loaded.time());

@@ -8,7 +8,7 @@ final class Tabs {
     }
 
     static List<ModuleTab> create(AppContext ctx) {
-        RobotRunModel runs = new RobotRunModel();
+        RobotRunModel runs = ctx.runs();
         List<ModuleTab> tabs = List.of(
                 new StepNcTab(ctx),
                 new PositionTab(ctx, runs),

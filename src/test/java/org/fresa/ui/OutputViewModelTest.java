@@ -53,9 +53,12 @@ class OutputViewModelTest {
         RobotRunModel.Run run = new RobotRunModel.Run(s, "example1");
         RobotRunModel shared = new RobotRunModel();
         Object[] heard = new Object[1];
-        shared.addListener(r -> heard[0] = r);
+        shared.addListener(() -> heard[0] = shared.last().orElse(null));
         shared.set(run);
         assertEquals(run, heard[0]);
+        shared.clear();
+        assertEquals(null, heard[0]);
+        shared.set(run);
         OutputViewModel.write(run, List.of("rapid", "krl"), new OutputFolder(dir.resolve("out")));
         assertTrue(Files.exists(dir.resolve("out/program.mod")));
         assertTrue(Files.exists(dir.resolve("out/program.src")));

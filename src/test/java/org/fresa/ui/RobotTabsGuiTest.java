@@ -162,7 +162,11 @@ class RobotTabsGuiTest extends WindowGuiTest {
         window.tabbedPane("position-results").selectTab("Position error");
         shoot("robot-position-error.png");
 
-        // the job saved from the window runs with fresa run on the edited robot
+        // Compute never changes what the job runs: the planner ticks the robot module (which drops
+        // the new job's pocket, which has no settings); the saved job runs on the edited robot
+        assertEquals(java.util.List.of(org.fresa.job.JobTask.POCKET), GuiActionRunner.execute(() -> model.job().runs()));
+        window.menuItem("run-robot").click();
+        assertEquals(java.util.List.of(org.fresa.job.JobTask.ROBOT), GuiActionRunner.execute(() -> model.job().runs()));
         Path job = dir.resolve("edited.xml");
         GuiActionRunner.execute(() -> {
             model.saveAs(job);
