@@ -136,7 +136,7 @@ public final class RobotService {
             // the inverse kinematics is done; the charts and programs take a while yet
             progress.progress(-1, "writing the files");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
-            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan));
+            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan, s.choices()));
             Timing.mark("files asked for");
             out.finishParallel();
             Timing.mark("files written");
