@@ -32,6 +32,7 @@ import org.fresa.job.robotprogram.MoveAttributesType;
 import org.fresa.job.robotprogram.ObjectFactory;
 import org.fresa.job.robotprogram.ResourceType;
 import org.fresa.job.robotprogram.RobotProgramType;
+import org.fresa.job.robotprogram.ToolFrameType;
 import org.fresa.model.CamInputException;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
@@ -165,6 +166,12 @@ public final class RobotProgramXml {
                     .append("\" DOFNumber=\"").append(d.getDOFNumber()).append("\" Min=\"").append(d.getMin())
                     .append("\" Max=\"").append(d.getMax()).append("\"/>\n");
         }
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            sb.append("        <ToolFrame Number=\"").append(t.getNumber()).append("\" X=\"").append(t.getX())
+                    .append("\" Y=\"").append(t.getY()).append("\" Z=\"").append(t.getZ()).append("\" Q1=\"")
+                    .append(t.getQ1()).append("\" Q2=\"").append(t.getQ2()).append("\" Q3=\"").append(t.getQ3())
+                    .append("\" Q4=\"").append(t.getQ4()).append("\"/>\n");
+        }
         sb.append("    </Resource>\n");
         List<ActivityType> activities = x.getActivityList().getActivity();
         if (activities.isEmpty()) {
@@ -187,7 +194,7 @@ public final class RobotProgramXml {
     private static void activity(ActivityType a, StringBuilder sb) {
         sb.append("        <Activity ActivityType=\"").append(a.getActivityType()).append("\" Index=\"")
                 .append(a.getIndex()).append("\" Workingstep=\"").append(a.getWorkingstep()).append("\" Role=\"")
-                .append(a.getRole()).append("\">\n");
+                .append(a.getRole()).append(a.getTool() == null ? "\">\n" : "\" Tool=\"" + a.getTool() + "\">\n");
         sb.append("            <ActivityName>").append(a.getActivityName()).append("</ActivityName>\n");
         sb.append("            <MotionType>").append(a.getMotionType()).append("</MotionType>\n");
         sb.append("            <JointTarget>\n");
@@ -264,6 +271,13 @@ public final class RobotProgramXml {
                 return "joint " + d.getJointName() + " has the limits " + d.getMin() + ", " + d.getMax();
             }
         }
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            for (double v : new double[] {t.getX(), t.getY(), t.getZ(), t.getQ1(), t.getQ2(), t.getQ3(), t.getQ4()}) {
+                if (!finite(v)) {
+                    return "tool " + t.getNumber() + " has the number " + v + " in its frame";
+                }
+            }
+        }
         for (ActivityType a : x.getActivityList().getActivity()) {
             if (a.getIndex().signum() < 0) {
                 return "motion index " + a.getIndex() + " is negative";
@@ -309,6 +323,20 @@ public final class RobotProgramXml {
             d.setMax(j.maxValue());
             r.getJointDefinition().add(d);
         }
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            ToolFrameType f = new ToolFrameType();
+            f.setNumber(BigInteger.valueOf(t.number()));
+            Vec3 at = t.tcp().translationPart();
+            Quaternion q = Quaternion.of(t.tcp());
+            f.setX(at.x());
+            f.setY(at.y());
+            f.setZ(at.z());
+            f.setQ1(q.w());
+            f.setQ2(q.x());
+            f.setQ3(q.y());
+            f.setQ4(q.z());
+            r.getToolFrame().add(f);
+        }
         x.setResource(r);
         ActivityListType list = new ActivityListType();
         list.setTask(p.programName());
@@ -318,6 +346,7 @@ public final class RobotProgramXml {
             a.setIndex(BigInteger.valueOf(m.index()));
             a.setWorkingstep(m.workingstep());
             a.setRole(m.role() == RobotProgram.PointRole.PART ? "part" : "relink");
+            a.setTool(BigInteger.valueOf(p.toolOf(m.workingstep()).number()));
             a.setActivityName("Move " + m.index());
             a.setMotionType(m.type() == RobotProgram.MotionType.JOINT ? "Joint" : "Linear");
             JointTargetType jt = new JointTargetType();
@@ -414,6 +443,22 @@ public final class RobotProgramXml {
                     values, target, a.getMoveAttributes().getMotionBasis().getValue(),
                     a.getMoveAttributes().getRounding().getValue()));
         }
-        return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
+        List<RobotProgram.ToolFrame> tools = new ArrayList<>();
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            List<String> steps = new ArrayList<>();
+            for (ActivityType a : x.getActivityList().getActivity()) {
+                if (a.getTool() != null && a.getTool().equals(t.getNumber()) && !steps.contains(a.getWorkingstep())) {
+                    steps.add(a.getWorkingstep());
+                }
+            }
+            Transform3 r = new Quaternion(t.getQ1(), t.getQ2(), t.getQ3(), t.getQ4()).toTransform();
+            tools.add(new RobotProgram.ToolFrame(t.getNumber().intValueExact(), new Transform3(r.r00(), r.r01(),
+                    r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(), r.r22(), t.getX(), t.getY(), t.getZ()),
+                    steps));
+        }
+        if (tools.isEmpty()) {
+            return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
+        }
+        return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions, tools);
     }
 }

@@ -43,8 +43,19 @@ public final class RobotPrograms {
     private RobotPrograms() {
     }
 
-    /** The program of a trajectory. */
+    /** The program of a trajectory whose every workingstep uses the robot's own tool frame. */
     public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points) {
+        return of(programName, robot, path, points, label -> robot.tool());
+    }
+
+    /**
+     * The program of a trajectory, one tool frame per tool of the toolpath (its T number) with the
+     * TCP of its workingsteps.
+     *
+     * @param tcpOfLabel the TCP in the flange frame of each workingstep
+     */
+    public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points,
+            java.util.function.Function<String, Transform3> tcpOfLabel) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointLimit j : robot.joints()) {
             joints.add(new RobotProgram.Joint(j.name(), j.type() == JointType.PRISMATIC
@@ -73,7 +84,39 @@ public final class RobotPrograms {
                     relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART, q, pose, speed,
                     joint ? 0 : ZONE_MM));
         }
-        return new RobotProgram(programName, robot.name(), joints, motions);
+        return new RobotProgram(programName, robot.name(), joints, motions, tools(path, points, tcpOfLabel));
+    }
+
+    /** One tool frame per tool number and TCP, numbered as the toolpath numbers its tools. */
+    private static List<RobotProgram.ToolFrame> tools(Toolpath path, List<TrajectoryPoint> points,
+            java.util.function.Function<String, Transform3> tcpOfLabel) {
+        Map<Integer, Transform3> tcpOf = new java.util.TreeMap<>();
+        Map<Integer, List<String>> steps = new HashMap<>();
+        int next = 1;
+        for (ToolpathSection s : path.sections()) {
+            next = Math.max(next, s.toolNumber() + 1);
+        }
+        for (ToolpathSection s : path.sections()) {
+            Transform3 tcp = tcpOfLabel.apply(s.label());
+            int number = s.toolNumber();
+            if (tcpOf.containsKey(number) && !tcpOf.get(number).equals(tcp)) {
+                // one magazine number with another TCP: a tool of its own for the controller
+                number = next++;
+            }
+            tcpOf.putIfAbsent(number, tcp);
+            List<String> ws = steps.computeIfAbsent(number, k -> new ArrayList<>());
+            if (!ws.contains(s.label())) {
+                ws.add(s.label());
+            }
+        }
+        if (tcpOf.isEmpty()) {
+            // targets without a toolpath: one tool, the TCP of the first point's label
+            tcpOf.put(1, tcpOfLabel.apply(points.isEmpty() ? "" : points.get(0).label()));
+            steps.put(1, List.of());
+        }
+        List<RobotProgram.ToolFrame> out = new ArrayList<>();
+        tcpOf.forEach((n, tcp) -> out.add(new RobotProgram.ToolFrame(n, tcp, steps.get(n))));
+        return out;
     }
 
     private static Map<String, Double> feedsByWorkingstep(Toolpath path) {

@@ -38,7 +38,7 @@ public final class RobotService {
 
     /** What the planner asked for. */
     public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-            List<String> formats) {
+            List<String> formats, RobotTools.Choice tool) {
         /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
             formats = List.copyOf(formats);
@@ -47,6 +47,12 @@ public final class RobotService {
                     throw new IllegalArgumentException("unknown format '" + f + "'");
                 }
             }
+            java.util.Objects.requireNonNull(tool, "tool");
+        }
+
+        /** No spindle or tool length given: the robot file's tool frame and the STEP-NC tools' lengths. */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
+            this(stepnc, robot, robotTable, tablePiece, formats, RobotTools.Choice.NONE);
         }
     }
 
@@ -97,9 +103,10 @@ public final class RobotService {
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
         Timing.mark("toolpaths planned");
         Toolpath path = plan.toolpath();
+        RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
-                org.fresa.kin.TrajectorySolver.Options.DEFAULT);
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel());
         out.create();
         TaskOutcome o;
         RobotTrajectoryService.Solved solved;
@@ -121,7 +128,8 @@ public final class RobotService {
         } finally {
             out.abandonParallel();
         }
-        List<String> problems = new ArrayList<>(plan.problems());
+        List<String> problems = new ArrayList<>(tools.warnings());
+        problems.addAll(plan.problems());
         problems.addAll(o.problems());
         Map<String, Object> summary = new LinkedHashMap<>(o.summary());
         summary.put("workingsteps", plan.workingsteps());
@@ -136,6 +144,7 @@ public final class RobotService {
         JobSettings.StepNcSettings st = JobRunner.require(job.stepnc(), "stepnc", job);
         JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
         List<String> formats = parseFormats(String.join(",", r.formats()));
-        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats), out, progress);
+        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats,
+                new RobotTools.Choice(r.spindle(), r.toolLengthMm())), out, progress);
     }
 }

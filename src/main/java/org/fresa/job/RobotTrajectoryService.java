@@ -49,9 +49,12 @@ public final class RobotTrajectoryService {
      * @param chordToleranceMm largest distance of an arc from its sampled chords, > 0
      * @param formats output formats; csv and png are handled here
      * @param options trajectory options (IK method, continuity, free rotation)
+     * @param tcpByLabel the tool frame (TCP) in the flange frame of each workingstep (its label);
+     *     a workingstep not in it (or an empty map) uses the robot's own tool frame
      */
     public record Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
-            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
+            Map<String, Transform3> tcpByLabel) {
         public Request {
             Objects.requireNonNull(toolpath, "toolpath");
             Objects.requireNonNull(robot, "robot");
@@ -59,9 +62,28 @@ public final class RobotTrajectoryService {
             Objects.requireNonNull(tablePiece, "tablePiece");
             Objects.requireNonNull(options, "options");
             formats = List.copyOf(formats);
+            tcpByLabel = Map.copyOf(tcpByLabel);
             if (!(chordToleranceMm > 0)) {
                 throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
             }
+        }
+
+        /** Every workingstep with the robot's own tool frame. */
+        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
+                double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+            this(toolpath, robot, robotTable, tablePiece, chordToleranceMm, formats, options, Map.of());
+        }
+
+        /** The TCP of a workingstep in the flange frame. */
+        public Transform3 tcp(String label) {
+            return tcpByLabel.getOrDefault(label, robot.tool());
+        }
+
+        /** The robot carrying each workingstep's TCP, one instance per distinct TCP. */
+        public java.util.function.Function<String, Robot> robotOfLabel() {
+            Map<Transform3, Robot> byTcp = new java.util.HashMap<>();
+            byTcp.put(robot.tool(), robot);
+            return label -> byTcp.computeIfAbsent(tcp(label), robot::withTool);
         }
 
         public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece) {
@@ -88,6 +110,18 @@ public final class RobotTrajectoryService {
         double[] v = numbers("--table-piece", text, 3, 6);
         return new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0,
                 v.length > 5 ? v[5] : 0);
+    }
+
+    /**
+     * Reads {@code --spindle X,Y,Z[,RX,RY,RZ]}: the spindle nose in the flange frame (mm, deg;
+     * R = Rz*Ry*Rx), each value within {@link SettingRanges.Robot#checkSpindle}'s ranges.
+     *
+     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers in range
+     */
+    public static Placement parseSpindle(String text) throws org.fresa.model.CamInputException {
+        double[] v = numbers("--spindle", text, 3, 6);
+        return SettingRanges.Robot.checkSpindle("--spindle", new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0,
+                v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0));
     }
 
     private static double[] numbers(String option, String text, int min, int max)
@@ -126,7 +160,9 @@ public final class RobotTrajectoryService {
         Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
         List<ToolTarget> targets = targets(req.toolpath(), robotToPiece, req.chordToleranceMm());
         progress.progress(0, "inverse kinematics");
-        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, (done, total) -> {
+        java.util.function.Function<String, Robot> robots = req.tcpByLabel().isEmpty() ? null : req.robotOfLabel();
+        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, robots,
+                (done, total) -> {
             progress.checkCancelled();
             if ((done & 255) == 0 || done == total) {
                 progress.progress((double) done / total, "inverse kinematics");
@@ -152,9 +188,9 @@ public final class RobotTrajectoryService {
             writeCharts(req.robot(), r, out);
         }
         if (fmts.contains("csv")) {
-            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
+            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points()), req.robot(),
+        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points(), req::tcp), req.robot(),
                 fmts, out);
         Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
         out.writeString("summary.json", Json.writePretty(summary));
@@ -242,13 +278,26 @@ public final class RobotTrajectoryService {
     }
 
     static String trajectoryCsv(Robot robot, TrajectorySolver.Result r) {
+        return trajectoryCsv(robot, r, label -> robot.tool());
+    }
+
+    static String trajectoryCsv(Request req, TrajectorySolver.Result r) {
+        return trajectoryCsv(req.robot(), r, req::tcp);
+    }
+
+    /**
+     * The rows of trajectory.csv, with the flange position (the reached pose without the TCP of
+     * the row's workingstep) after the spec's columns.
+     */
+    static String trajectoryCsv(Robot robot, TrajectorySolver.Result r,
+            java.util.function.Function<String, Transform3> tcpOfLabel) {
         int n = robot.dof();
         StringBuilder sb = new StringBuilder(r.points().size() * 200);
         sb.append("index,workingstep,x,y,z,roll,pitch,yaw");
         for (int i = 1; i <= n; i++) {
             sb.append(",q").append(i);
         }
-        sb.append(",reached_x,reached_y,reached_z,pos_err_mm,rot_err_rad,status\n");
+        sb.append(",reached_x,reached_y,reached_z,pos_err_mm,rot_err_rad,status,flange_x,flange_y,flange_z\n");
         int index = 1;
         for (TrajectoryPoint p : r.points()) {
             Transform3 t = p.target();
@@ -262,7 +311,14 @@ public final class RobotTrajectoryService {
                 Transform3 reached = p.reached().orElseThrow();
                 appendNumbers(sb, reached.tx(), reached.ty(), reached.tz(), p.posErrMm(), p.rotErrRad());
             }
-            sb.append(',').append(p.status().csv()).append('\n');
+            sb.append(',').append(p.status().csv());
+            if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
+                sb.append(",,,");
+            } else {
+                Transform3 flange = p.reached().orElseThrow().times(tcpOfLabel.apply(p.label()).inverse());
+                appendNumbers(sb, flange.tx(), flange.ty(), flange.tz());
+            }
+            sb.append('\n');
         }
         return sb.toString();
     }

@@ -40,9 +40,17 @@ public final class KrlWriter implements RobotProgramWriter {
         sb.append("DEF ").append(name).append("( )\n");
         sb.append(";FOLD INI\n  BAS (#INITMOV,0 )\n;ENDFOLD (INI)\n");
         sb.append("; Fresa robot program for ").append(p.robotName()).append(": ").append(p.motions().size())
-                .append(" motions, base and tool frames 0 (the robot base frame and the flange+TCP of the job)\n");
+                .append(" motions, base frame 0 (the robot base frame), TOOL_DATA[n] the TCP of tool n in the flange"
+                        + " frame\n");
         sb.append("$BASE = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
-        sb.append("$TOOL = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            Vec3 at = t.tcp().translationPart();
+            Vec3 abc = t.tcp().zyxAnglesDeg();
+            sb.append("TOOL_DATA[").append(t.number()).append("] = {X ").append(f(at.x(), 3)).append(",Y ")
+                    .append(f(at.y(), 3)).append(",Z ").append(f(at.z(), 3)).append(",A ").append(f(abc.x(), 6))
+                    .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6)).append("}\n");
+        }
+        int tool = -1;
         sb.append("$APO.CDIS = 0.5\n");
         double vel = Double.NaN;
         String ws = null;
@@ -50,6 +58,11 @@ public final class KrlWriter implements RobotProgramWriter {
             if (!m.workingstep().equals(ws)) {
                 ws = m.workingstep();
                 sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
+                int t = p.toolOf(ws).number();
+                if (t != tool) {
+                    tool = t;
+                    sb.append("$TOOL = TOOL_DATA[").append(t).append("]\n");
+                }
             }
             if (m.type() == RobotProgram.MotionType.JOINT) {
                 sb.append("PTP {AXIS: ");

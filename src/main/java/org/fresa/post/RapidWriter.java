@@ -57,10 +57,17 @@ public final class RapidWriter implements RobotProgramWriter {
         sb.append("MODULE ").append(module).append('\n');
         sb.append("  ! Fresa robot program for ").append(p.robotName()).append(": ")
                 .append(p.motions().size()).append(" motions\n");
-        sb.append("  PERS tooldata tFresa := [TRUE,[[0,0,0],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            Vec3 at = t.tcp().translationPart();
+            Quaternion q = Quaternion.of(t.tcp());
+            sb.append("  PERS tooldata ").append(toolName(t)).append(" := [TRUE,[[").append(f(at.x(), 3)).append(',')
+                    .append(f(at.y(), 3)).append(',').append(f(at.z(), 3)).append("],[").append(f(q.w(), 8))
+                    .append(',').append(f(q.x(), 8)).append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8))
+                    .append("]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+        }
         sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
-        sb.append("  ! the joints and poses are in the robot base frame; tFresa and wFresa are the identity\n");
-        sb.append("  ! so that the controller's TCP matches Fresa's (set the real tool's TCP in tFresa)\n");
+        sb.append("  ! the joints and poses are in the robot base frame (wFresa is the identity); each tooldata\n");
+        sb.append("  ! is a tool's TCP in the flange frame (spindle and tool length), as Fresa solved it\n");
         sb.append('\n');
         sb.append("  PROC main()\n");
         sb.append("    ConfJ \\On;\n");
@@ -82,7 +89,7 @@ public final class RapidWriter implements RobotProgramWriter {
                     sb.append(i < m.jointValues().size() ? f(m.joint(i), 6) : "0");
                 }
                 sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(",tFresa\\WObj:=wFresa;");
+                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
             } else {
                 Vec3 pos = m.target().translationPart();
                 Quaternion q = Quaternion.of(m.target());
@@ -91,7 +98,7 @@ public final class RapidWriter implements RobotProgramWriter {
                         .append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8)).append("],[")
                         .append(confdata(m, arm))
                         .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(",tFresa\\WObj:=wFresa;");
+                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
                 // the joints the trajectory found for this robtarget, so a reader can check them
                 sb.append(" ! j=[");
                 for (int i = 0; i < 6; i++) {
@@ -104,6 +111,11 @@ public final class RapidWriter implements RobotProgramWriter {
         sb.append("  ENDPROC\n");
         sb.append("ENDMODULE\n");
         out.write(sb.toString());
+    }
+
+    /** The tooldata's name of a tool. */
+    static String toolName(RobotProgram.ToolFrame t) {
+        return "tFresa" + t.number();
     }
 
     /** The quarter revolution of a joint angle in degrees, as confdata counts it. */

@@ -13,18 +13,57 @@ import org.fresa.geom.Transform3;
  * @param robotName the robot's name (e.g. irb140)
  * @param joints the robot's joints in order
  * @param motions the motions in order
+ * @param tools the tool frames, at least one; each motion uses the one of its workingstep
  */
-public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions) {
+public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions,
+        List<ToolFrame> tools) {
 
     public RobotProgram {
         Objects.requireNonNull(programName, "programName");
         Objects.requireNonNull(robotName, "robotName");
         joints = List.copyOf(joints);
         motions = List.copyOf(motions);
+        tools = List.copyOf(tools);
+        if (tools.isEmpty()) {
+            throw new IllegalArgumentException("a robot program needs a tool frame");
+        }
         for (Motion m : motions) {
             if (m.jointValues().size() != joints.size()) {
                 throw new IllegalArgumentException("motion " + m.index() + " has " + m.jointValues().size()
                         + " joint values for " + joints.size() + " joints");
+            }
+        }
+    }
+
+    /** A program whose every motion uses the flange as its TCP (tool 1, the identity). */
+    public RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions) {
+        this(programName, robotName, joints, motions, List.of(new ToolFrame(1, Transform3.IDENTITY, List.of())));
+    }
+
+    /** The tool frame of a workingstep: the one that lists it, else the first. */
+    public ToolFrame toolOf(String workingstep) {
+        for (ToolFrame t : tools) {
+            if (t.workingsteps().contains(workingstep)) {
+                return t;
+            }
+        }
+        return tools.get(0);
+    }
+
+    /**
+     * A tool as the controller knows it: its number and its TCP in the flange frame (spindle and
+     * tool length, z from the flange towards the tip).
+     *
+     * @param number the tool's number (the T word of the toolpath), >= 1
+     * @param tcp the TCP in the flange frame (mm)
+     * @param workingsteps the workingsteps cut with it
+     */
+    public record ToolFrame(int number, Transform3 tcp, List<String> workingsteps) {
+        public ToolFrame {
+            Objects.requireNonNull(tcp, "tcp");
+            workingsteps = List.copyOf(workingsteps);
+            if (number < 1) {
+                throw new IllegalArgumentException("tool number must be >= 1: " + number);
             }
         }
     }
