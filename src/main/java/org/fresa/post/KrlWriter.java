@@ -99,6 +99,11 @@ public final class KrlWriter implements RobotProgramWriter {
     }
 
     int status(RobotProgram.Motion m) {
+        return status(m, arm);
+    }
+
+    /** KUKA's Status of a motion (see the class comment). */
+    public static int status(RobotProgram.Motion m, RapidWriter.ArmGeometry arm) {
         int s = 0;
         if (arm.rear(m)) {
             s |= 1;
@@ -112,7 +117,8 @@ public final class KrlWriter implements RobotProgramWriter {
         return s;
     }
 
-    static int turn(RobotProgram.Motion m) {
+    /** KUKA's Turn of a motion: bit i set when axis i + 1 is negative. */
+    public static int turn(RobotProgram.Motion m) {
         int t = 0;
         for (int i = 0; i < Math.min(6, m.jointValues().size()); i++) {
             if (m.joint(i) < 0) {
