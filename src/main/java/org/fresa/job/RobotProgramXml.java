@@ -225,6 +225,10 @@ public final class RobotProgramXml {
                 .append(mv.getMotionBasis().getValue()).append("</MotionBasis>\n");
         sb.append("                <Rounding Units=\"").append(mv.getRounding().getUnits()).append("\">")
                 .append(mv.getRounding().getValue()).append("</Rounding>\n");
+        if (mv.getDwell() != null) {
+            sb.append("                <Dwell Units=\"").append(mv.getDwell().getUnits()).append("\">")
+                    .append(mv.getDwell().getValue()).append("</Dwell>\n");
+        }
         sb.append("            </MoveAttributes>\n");
         sb.append("        </Activity>\n");
     }
@@ -291,7 +295,8 @@ public final class RobotProgramXml {
             CartesianTargetType.Orientation o = a.getCartesianTarget().getOrientation();
             MoveAttributesType mv = a.getMoveAttributes();
             double[] numbers = {pos.getX(), pos.getY(), pos.getZ(), o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4(),
-                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue()};
+                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue(),
+                mv.getDwell() == null ? 0 : mv.getDwell().getValue()};
             for (double v : numbers) {
                 if (!finite(v)) {
                     return "motion " + a.getIndex() + " has the number " + v + " in its target or move attributes";
@@ -393,6 +398,12 @@ public final class RobotProgramXml {
             rd.setUnits("mm");
             rd.setValue(m.zoneMm());
             mv.setRounding(rd);
+            if (m.dwellS() > 0) {
+                MoveAttributesType.Dwell dw = new MoveAttributesType.Dwell();
+                dw.setUnits("s");
+                dw.setValue(m.dwellS());
+                mv.setDwell(dw);
+            }
             a.setMoveAttributes(mv);
             list.getActivity().add(a);
         }
@@ -441,7 +452,8 @@ public final class RobotProgramXml {
                     "Joint".equals(a.getMotionType()) ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     "part".equals(a.getRole()) ? RobotProgram.PointRole.PART : RobotProgram.PointRole.RELINK,
                     values, target, a.getMoveAttributes().getMotionBasis().getValue(),
-                    a.getMoveAttributes().getRounding().getValue()));
+                    a.getMoveAttributes().getRounding().getValue(),
+                    a.getMoveAttributes().getDwell() == null ? 0 : a.getMoveAttributes().getDwell().getValue()));
         }
         List<RobotProgram.ToolFrame> tools = new ArrayList<>();
         for (ToolFrameType t : x.getResource().getToolFrame()) {

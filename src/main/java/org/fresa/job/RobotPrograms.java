@@ -37,15 +37,19 @@ public final class RobotPrograms {
     /** The speed of joint motions (approach, relinks), mm/s. */
     public static final double JOINT_SPEED_MM_PER_S = 250;
 
-    /** Blend radius of linear motions on the part, mm: small against the toolpath's chord tolerance. */
-    public static final double ZONE_MM = 0.1;
+    /**
+     * The path tolerance of linear motions on the part (mm): the blend radius of every point
+     * inside a workingstep (RAPID {@code z1}, KRL {@code $APO.CDIS}); a corner is rounded within
+     * it. The ends of workingsteps, relinks, points before a gap and dwells are fine points.
+     */
+    public static final double ZONE_MM = 1;
 
     private RobotPrograms() {
     }
 
     /** The program of a trajectory whose every workingstep uses the robot's own tool frame. */
     public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points) {
-        return of(programName, robot, path, points, label -> robot.tool());
+        return of(programName, robot, path, points, label -> robot.tool(), List.of());
     }
 
     /**
@@ -53,9 +57,11 @@ public final class RobotPrograms {
      * TCP of its workingsteps.
      *
      * @param tcpOfLabel the TCP in the flange frame of each workingstep
+     * @param dwellAfterTarget the wait at each target (s), in the order of the trajectory's targets
+     *     (its rows not inserted by the solver); missing entries are no wait
      */
     public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points,
-            java.util.function.Function<String, Transform3> tcpOfLabel) {
+            java.util.function.Function<String, Transform3> tcpOfLabel, List<Double> dwellAfterTarget) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointLimit j : robot.joints()) {
             joints.add(new RobotProgram.Joint(j.name(), j.type() == JointType.PRISMATIC
@@ -64,8 +70,12 @@ public final class RobotPrograms {
         Map<String, Double> feed = feedsByWorkingstep(path);
         List<RobotProgram.Motion> motions = new ArrayList<>();
         String ws = null;
+        int target = -1;
         for (int i = 0; i < points.size(); i++) {
             TrajectoryPoint p = points.get(i);
+            if (!p.inserted()) {
+                target++;
+            }
             if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
                 continue;
             }
@@ -77,14 +87,28 @@ public final class RobotPrograms {
                 q.add(v);
             }
             boolean joint = relink || first;
+            double dwell = !p.inserted() && target < dwellAfterTarget.size() ? dwellAfterTarget.get(target) : 0;
             double speed = joint ? JOINT_SPEED_MM_PER_S : feed.getOrDefault(p.label(), 60.0) / 60.0;
             Transform3 pose = p.reached().orElse(p.target());
+            boolean stop = joint || dwell > 0 || stopsAfter(points, i);
             motions.add(new RobotProgram.Motion(i, p.label(),
                     joint ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART, q, pose, speed,
-                    joint ? 0 : ZONE_MM));
+                    stop ? 0 : ZONE_MM, dwell));
         }
         return new RobotProgram(programName, robot.name(), joints, motions, tools(path, points, tcpOfLabel));
+    }
+
+    /**
+     * Whether the robot must stop exactly at point i: the last point of its workingstep or of the
+     * program, before a relink, or before a point the robot cannot reach (the program skips it).
+     */
+    private static boolean stopsAfter(List<TrajectoryPoint> points, int i) {
+        if (i + 1 >= points.size()) {
+            return true;
+        }
+        TrajectoryPoint next = points.get(i + 1);
+        return next.status() != TrajectoryPoint.Status.OK || !next.label().equals(points.get(i).label());
     }
 
     /** One tool frame per tool number and TCP, numbered as the toolpath numbers its tools. */
@@ -185,12 +209,14 @@ public final class RobotPrograms {
                 Vec3 base = s.chain().frame(0, q).translationPart();
                 Vec3 up = s.chain().frame(0, q).zAxis();
                 Vec3 forward = f1.xAxis().minus(up.times(f1.xAxis().dot(up)));
-                return w.minus(base).dot(forward) < 0;
+                // a wrist centre on the axis (within a nanometre) is in front, whichever way rounding goes
+                return w.minus(base).dot(forward) < -1e-6;
             }
 
             @Override
             public boolean lowerArm(RobotProgram.Motion m) {
-                return Math.signum(elbowSide(s, values(m))) != homeSide;
+                // a stretched arm (elbow on the line, within rounding) is the upper arm, as at home
+                return elbowSide(s, values(m)) * homeSide < -1e-6;
             }
         };
     }

@@ -190,7 +190,8 @@ public final class RobotTrajectoryService {
         if (fmts.contains("csv")) {
             out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points(), req::tcp), req.robot(),
+        RobotPrograms.write(RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points(), req::tcp,
+                dwellsAfterTargets(req)), req.robot(),
                 fmts, out);
         Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
         out.writeString("summary.json", Json.writePretty(summary));
@@ -207,6 +208,23 @@ public final class RobotTrajectoryService {
     /** The toolpath as robot targets: positions in the robot base frame, z_e into the material. */
     public static List<ToolTarget> targets(Toolpath path, Transform3 robotToPiece, double chordToleranceMm) {
         List<ToolTarget> out = new ArrayList<>();
+        walk(path, robotToPiece, chordToleranceMm, out, new ArrayList<>());
+        return out;
+    }
+
+    /**
+     * For each target of {@link #targets} of the request, the time the tool waits there once it
+     * has arrived (s): the dwells of the toolpath that follow it (a drilling's dwell at the bottom).
+     */
+    public static List<Double> dwellsAfterTargets(Request req) {
+        Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
+        List<Double> dwells = new ArrayList<>();
+        walk(req.toolpath(), robotToPiece, req.chordToleranceMm(), new ArrayList<>(), dwells);
+        return dwells;
+    }
+
+    private static void walk(Toolpath path, Transform3 robotToPiece, double chordToleranceMm, List<ToolTarget> out,
+            List<Double> dwells) {
         for (ToolpathSection s : path.sections()) {
             Vec3 axis = robotToPiece.applyToDirection(s.toolAxis()).negated().normalized();
             Vec3 x = ToolTarget.naturalX(axis);
@@ -216,21 +234,26 @@ public final class RobotTrajectoryService {
             if (last == null || !last.positionMm().eq(robotToPiece.applyToPoint(at), org.fresa.geom.Tolerance.DEFAULT)
                     || last.toolAxis().distance(axis) > 1e-12) {
                 out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(at), axis, x));
+                dwells.add(0.0);
             }
             for (Move m : s.moves()) {
                 if (m instanceof Move.Circular c) {
                     for (Vec3 p : sampleArc(at, c, chordToleranceMm)) {
                         out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(p), axis, x));
+                        dwells.add(0.0);
                     }
                 } else if (m.travels()) {
                     out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(m.end()), axis, x));
+                    dwells.add(0.0);
+                } else if (m instanceof Move.Dwell d && !dwells.isEmpty()) {
+                    // the wait belongs to the point where the tool is: the robot program says it there
+                    dwells.set(dwells.size() - 1, dwells.get(dwells.size() - 1) + d.seconds());
                 }
                 // a dwell or spindle event holds the pose: no point, as a repeated one would be a
                 // zero-length linear motion in the robot program
                 at = m.end();
             }
         }
-        return out;
     }
 
     /**

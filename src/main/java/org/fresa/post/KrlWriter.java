@@ -11,7 +11,10 @@ import org.fresa.geom.Vec3;
  *
  * <p>A, B, C are Z-Y-X Euler angles (A about z, B about y, C about x). Status: bit 0 the wrist
  * centre behind axis 1 (overhead area), bit 1 axis 3 beyond the straight arm, bit 2 axis 5 <= 0.
- * Turn: bit i set when axis i + 1 is negative. The axes are the robot's joints in Fresa's
+ * Turn: bit i set when axis i + 1 is negative. A joint within
+ * {@link RapidWriter#CONFIGURATION_TOLERANCE_DEG} of 0 counts as 0. {@code $APO.CDIS} is the
+ * program's path tolerance, {@code C_DIS} on every point that is not a stop point; a dwell is
+ * {@code WAIT SEC}. The axes are the robot's joints in Fresa's
  * convention (spec/robots.md), named A1..A6.
  */
 public final class KrlWriter implements RobotProgramWriter {
@@ -51,7 +54,12 @@ public final class KrlWriter implements RobotProgramWriter {
                     .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6)).append("}\n");
         }
         int tool = -1;
-        sb.append("$APO.CDIS = 0.5\n");
+        double apo = 0;
+        for (RobotProgram.Motion m : p.motions()) {
+            apo = Math.max(apo, m.zoneMm());
+        }
+        // the approximation distance of the C_DIS points: the program's path tolerance
+        sb.append("$APO.CDIS = ").append(f(apo > 0 ? apo : 0.5, 3)).append('\n');
         double vel = Double.NaN;
         String ws = null;
         for (RobotProgram.Motion m : p.motions()) {
@@ -93,6 +101,9 @@ public final class KrlWriter implements RobotProgramWriter {
                 sb.append(']');
             }
             sb.append(" ; ").append(m.index()).append('\n');
+            if (m.dwellS() > 0) {
+                sb.append("WAIT SEC ").append(f(m.dwellS(), 3)).append('\n');
+            }
         }
         sb.append("END\n");
         out.write(sb.toString());
@@ -111,7 +122,7 @@ public final class KrlWriter implements RobotProgramWriter {
         if (!arm.lowerArm(m)) {
             s |= 2;
         }
-        if (m.jointValues().size() > 4 && m.joint(4) <= 0) {
+        if (m.jointValues().size() > 4 && !(m.joint(4) > RapidWriter.CONFIGURATION_TOLERANCE_DEG)) {
             s |= 4;
         }
         return s;
@@ -121,7 +132,7 @@ public final class KrlWriter implements RobotProgramWriter {
     public static int turn(RobotProgram.Motion m) {
         int t = 0;
         for (int i = 0; i < Math.min(6, m.jointValues().size()); i++) {
-            if (m.joint(i) < 0) {
+            if (RapidWriter.negative(m.joint(i))) {
                 t |= 1 << i;
             }
         }

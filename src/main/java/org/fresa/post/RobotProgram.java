@@ -112,10 +112,25 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
      * @param target the tool-tip pose in the robot base frame (mm), from forward kinematics
      * @param speedMmPerS tool-tip speed along the path (mm/s)
      * @param zoneMm rounding (blend) radius; 0 for a fine point
+     * @param dwellS time the tool waits at the point once reached (s), 0 for none; a point with a
+     *     dwell is a fine point
      */
     public record Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
-            Transform3 target, double speedMmPerS, double zoneMm) {
+            Transform3 target, double speedMmPerS, double zoneMm, double dwellS) {
+
+        /** A motion without a dwell. */
+        public Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
+                Transform3 target, double speedMmPerS, double zoneMm) {
+            this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0);
+        }
+
         public Motion {
+            if (!(dwellS >= 0) || !Double.isFinite(dwellS)) {
+                throw new IllegalArgumentException("dwell must be >= 0 s: " + dwellS);
+            }
+            if (dwellS > 0 && zoneMm > 0) {
+                throw new IllegalArgumentException("a point with a dwell is a fine point, zone " + zoneMm);
+            }
             Objects.requireNonNull(workingstep, "workingstep");
             Objects.requireNonNull(type, "type");
             Objects.requireNonNull(role, "role");
