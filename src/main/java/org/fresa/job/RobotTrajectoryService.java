@@ -364,11 +364,13 @@ public final class RobotTrajectoryService {
         double maxRot = 0;
         double maxStep = 0;
         double[] prevOk = null;
+        ErrorStatistics stats = new ErrorStatistics();
         for (TrajectoryPoint p : r.points()) {
             if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
                 prevOk = null;
                 continue;
             }
+            stats.add(p.target(), p.reached().orElseThrow());
             maxPos = Math.max(maxPos, p.posErrMm());
             maxRot = Math.max(maxRot, p.rotErrRad());
             if (p.status() == TrajectoryPoint.Status.OK) {
@@ -395,6 +397,7 @@ public final class RobotTrajectoryService {
         m.put("max_pos_err_mm", maxPos);
         m.put("max_rot_err_rad", maxRot);
         m.put("max_joint_step_deg", maxStep);
+        m.putAll(stats.summary());
         m.put("ik_ms", r.ikNanos() / 1e6);
         Map<String, Object> free = new LinkedHashMap<>();
         free.put("rotated_points", r.rotatedPoints());

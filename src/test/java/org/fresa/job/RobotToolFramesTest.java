@@ -88,4 +88,18 @@ class RobotToolFramesTest {
     private static double num(String[] c, List<String> h, String column) {
         return Double.parseDouble(c[h.indexOf(column)]);
     }
+
+    @Test
+    void theSummaryGivesTheErrorPerAxisAsTheThesisTable() {
+        @SuppressWarnings("unchecked")
+        java.util.Map<String, Object> axes = (java.util.Map<String, Object>) outcome.summary().get("error_per_axis");
+        assertEquals(List.of("x_mm", "y_mm", "z_mm", "rx_rad", "ry_rad", "rz_rad"), List.copyOf(axes.keySet()));
+        for (String a : axes.keySet()) {
+            @SuppressWarnings("unchecked")
+            java.util.Map<String, Double> m = (java.util.Map<String, Double>) axes.get(a);
+            assertTrue(m.get("min") <= m.get("mean") && m.get("mean") <= m.get("max"), a + " " + m);
+            double bound = a.endsWith("_mm") ? 1e-6 : 1e-8;
+            assertTrue(Math.abs(m.get("min")) <= bound && Math.abs(m.get("max")) <= bound, a + " " + m);
+        }
+    }
 }
