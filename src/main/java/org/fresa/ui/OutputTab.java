@@ -151,7 +151,8 @@ final class OutputTab implements ModuleTab {
 
     private void writeFormatsToJob() {
         ctx.model().job().robot().ifPresent(rs -> ctx.model().setJob(ctx.model().job().withRobot(
-                new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats()))));
+                new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats(),
+                        rs.spindle(), rs.toolLengthMm()))));
     }
 
     private void preview() {
