@@ -104,7 +104,7 @@ public final class RobotService {
         Timing.mark("toolpaths planned");
         Toolpath path = plan.toolpath();
         RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel());
         out.create();

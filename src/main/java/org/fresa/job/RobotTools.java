@@ -35,8 +35,11 @@ public final class RobotTools {
      * @param spindle the spindle nose in the flange frame
      * @param tcpByLabel each workingstep's TCP in the flange frame
      * @param warnings one sentence each, for the planner
+     * @param toolpath the plan's toolpath, a section relabelled {@code "id [Tn]"} where workingsteps
+     *     sharing an id use tools of different lengths, so that each label has one TCP
      */
-    public record Frames(Transform3 spindle, Map<String, Transform3> tcpByLabel, List<String> warnings) {
+    public record Frames(Transform3 spindle, Map<String, Transform3> tcpByLabel, List<String> warnings,
+            org.fresa.model.Toolpath toolpath) {
         public Frames {
             tcpByLabel = Map.copyOf(tcpByLabel);
             warnings = List.copyOf(warnings);
@@ -87,7 +90,7 @@ public final class RobotTools {
         for (MachiningWorkingstep ws : program.workingsteps()) {
             byId.put(ws.instanceId(), ws);
         }
-        Map<String, Transform3> tcp = new LinkedHashMap<>();
+        List<Transform3> tcpOfSection = new ArrayList<>();
         for (ToolpathPlanner.PlannedStep step : plan.steps()) {
             double length;
             if (choice.toolLengthMm().isPresent()) {
@@ -103,9 +106,27 @@ public final class RobotTools {
                 }
                 length = l.getAsDouble();
             }
-            tcp.put(step.label(), tcp(spindle, length));
+            tcpOfSection.add(tcp(spindle, length));
         }
-        return new Frames(spindle, tcp, warnings);
+        List<org.fresa.model.ToolpathSection> sections = plan.toolpath().sections();
+        Map<String, java.util.Set<Transform3>> tcpsOfLabel = new LinkedHashMap<>();
+        for (int i = 0; i < sections.size(); i++) {
+            tcpsOfLabel.computeIfAbsent(sections.get(i).label(), k -> new java.util.HashSet<>()).add(tcpOfSection.get(i));
+        }
+        Map<String, Transform3> tcp = new LinkedHashMap<>();
+        List<org.fresa.model.ToolpathSection> relabelled = new ArrayList<>();
+        for (int i = 0; i < sections.size(); i++) {
+            org.fresa.model.ToolpathSection sec = sections.get(i);
+            String label = sec.label();
+            if (tcpsOfLabel.get(label).size() > 1) {
+                // one id, tools of different lengths: each tool's points must carry its own TCP
+                label = label + " [T" + sec.toolNumber() + "]";
+            }
+            tcp.put(label, tcpOfSection.get(i));
+            relabelled.add(new org.fresa.model.ToolpathSection(label, sec.toolAxis(), sec.toolDiameterMm(),
+                    sec.toolNumber(), sec.spindleRpm(), sec.start(), sec.moves()));
+        }
+        return new Frames(spindle, tcp, warnings, new org.fresa.model.Toolpath(relabelled));
     }
 
     /** The tool's length from the spindle nose to the tip, when the file gives it (and it is sane). */

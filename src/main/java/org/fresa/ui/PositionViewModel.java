@@ -162,7 +162,7 @@ final class PositionViewModel {
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
         org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
                 stepnc.toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(plan.toolpath(), robot, robotTable,
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
                 tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT,
                 tools.tcpByLabel());
         return RobotTrajectoryService.solve(req, progress);
