@@ -108,7 +108,12 @@ public final class RobotTools {
             }
             tcpOfSection.add(tcp(spindle, length));
         }
-        List<org.fresa.model.ToolpathSection> sections = plan.toolpath().sections();
+        return labelled(spindle, plan.toolpath().sections(), tcpOfSection, warnings);
+    }
+
+    /** The frames of sections with their TCPs, a shared label split by tool where the TCPs differ. */
+    static Frames labelled(Transform3 spindle, List<org.fresa.model.ToolpathSection> sections,
+            List<Transform3> tcpOfSection, List<String> warnings) {
         Map<String, java.util.Set<Transform3>> tcpsOfLabel = new LinkedHashMap<>();
         for (int i = 0; i < sections.size(); i++) {
             tcpsOfLabel.computeIfAbsent(sections.get(i).label(), k -> new java.util.HashSet<>()).add(tcpOfSection.get(i));
