@@ -30,6 +30,7 @@ public final class Benchmarks {
     public static final Map<String, Double> GOALS = Map.of(
             "ik_us_per_point_irb140", 5.0,
             "ik_us_per_point_tricept806", 10.0,
+            "ik_cold_cpu_us_per_pose_irb140", 10.0,
             "part21_mb_per_s", 20.0,
             "dxf_mb_per_s", 30.0,
             "pocket_ms_cavity02", 50.0,
@@ -75,6 +76,7 @@ public final class Benchmarks {
         figures.put("ik_us_per_point_irb140", irb.usPerPoint());
         figures.put("ik_cpu_us_per_point_irb140", irb.cpuUsPerPoint());
         progress.progress(0.15, "inverse kinematics, Tricept 806");
+        figures.put("ik_cold_cpu_us_per_pose_irb140", IkBenchmark.irb140ColdCpuUsPerPose(9));
         IkBenchmark.Figure tri = IkBenchmark.tricept806(9);
         figures.put("ik_us_per_point_tricept806", tri.usPerPoint());
         figures.put("ik_cpu_us_per_point_tricept806", tri.cpuUsPerPoint());

@@ -48,8 +48,13 @@ public final class JobSettings {
      * @param robotTable the table origin in the robot base frame
      * @param tablePiece the workpiece origin in the table frame
      * @param formats output formats, e.g. csv, xml, rapid, krl, png
+     * @param spindle the spindle nose in the flange frame (x, y, z mm; rx, ry, rz deg, R = Rz Ry Rx);
+     *     empty: the robot file's tool frame, or the flange
+     * @param toolLengthMm the tool length from the spindle nose to the tip for every tool; empty:
+     *     each STEP-NC tool's own
      */
-    public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
+    public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
         public static final List<String> DEFAULT_FORMATS = List.of("csv", "xml", "png");
 
         public RobotSettings {
@@ -57,6 +62,13 @@ public final class JobSettings {
             Objects.requireNonNull(robotTable, "robotTable");
             Objects.requireNonNull(tablePiece, "tablePiece");
             formats = List.copyOf(formats);
+            Objects.requireNonNull(spindle, "spindle");
+            Objects.requireNonNull(toolLengthMm, "toolLengthMm");
+        }
+
+        /** A cell with no spindle or tool length given. */
+        public RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
+            this(robot, robotTable, tablePiece, formats, java.util.Optional.empty(), java.util.OptionalDouble.empty());
         }
     }
 

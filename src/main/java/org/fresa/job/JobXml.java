@@ -197,7 +197,11 @@ public final class JobXml {
         RobotType r = x.getRobot();
         if (r != null) {
             job = job.withRobot(new RobotSettings(r.getRobot(), placement(r.getRobotTable()),
-                    placement(r.getTablePiece()), splitList(r.getFormats())));
+                    placement(r.getTablePiece()), splitList(r.getFormats()),
+                    r.getSpindle() == null ? java.util.Optional.empty()
+                            : java.util.Optional.of(SettingRanges.Robot.requireSpindle(placement(r.getSpindle()))),
+                    r.getToolLengthMm() == null ? OptionalDouble.empty()
+                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm()))));
         }
         PocketType p = x.getPocket();
         if (p != null) {
@@ -380,6 +384,10 @@ public final class JobXml {
             t.setRobotTable(placement(r.robotTable()));
             t.setTablePiece(placement(r.tablePiece()));
             t.setFormats(String.join(",", r.formats()));
+            r.spindle().ifPresent(sp -> t.setSpindle(placement(sp)));
+            if (r.toolLengthMm().isPresent()) {
+                t.setToolLengthMm(r.toolLengthMm().getAsDouble());
+            }
             x.setRobot(t);
         });
         job.pocket().ifPresent(p -> {

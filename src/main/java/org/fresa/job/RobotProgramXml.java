@@ -32,6 +32,7 @@ import org.fresa.job.robotprogram.MoveAttributesType;
 import org.fresa.job.robotprogram.ObjectFactory;
 import org.fresa.job.robotprogram.ResourceType;
 import org.fresa.job.robotprogram.RobotProgramType;
+import org.fresa.job.robotprogram.ToolFrameType;
 import org.fresa.model.CamInputException;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
@@ -165,6 +166,12 @@ public final class RobotProgramXml {
                     .append("\" DOFNumber=\"").append(d.getDOFNumber()).append("\" Min=\"").append(d.getMin())
                     .append("\" Max=\"").append(d.getMax()).append("\"/>\n");
         }
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            sb.append("        <ToolFrame Number=\"").append(t.getNumber()).append("\" X=\"").append(t.getX())
+                    .append("\" Y=\"").append(t.getY()).append("\" Z=\"").append(t.getZ()).append("\" Q1=\"")
+                    .append(t.getQ1()).append("\" Q2=\"").append(t.getQ2()).append("\" Q3=\"").append(t.getQ3())
+                    .append("\" Q4=\"").append(t.getQ4()).append("\"/>\n");
+        }
         sb.append("    </Resource>\n");
         List<ActivityType> activities = x.getActivityList().getActivity();
         if (activities.isEmpty()) {
@@ -187,7 +194,7 @@ public final class RobotProgramXml {
     private static void activity(ActivityType a, StringBuilder sb) {
         sb.append("        <Activity ActivityType=\"").append(a.getActivityType()).append("\" Index=\"")
                 .append(a.getIndex()).append("\" Workingstep=\"").append(a.getWorkingstep()).append("\" Role=\"")
-                .append(a.getRole()).append("\">\n");
+                .append(a.getRole()).append(a.getTool() == null ? "\">\n" : "\" Tool=\"" + a.getTool() + "\">\n");
         sb.append("            <ActivityName>").append(a.getActivityName()).append("</ActivityName>\n");
         sb.append("            <MotionType>").append(a.getMotionType()).append("</MotionType>\n");
         sb.append("            <JointTarget>\n");
@@ -218,6 +225,10 @@ public final class RobotProgramXml {
                 .append(mv.getMotionBasis().getValue()).append("</MotionBasis>\n");
         sb.append("                <Rounding Units=\"").append(mv.getRounding().getUnits()).append("\">")
                 .append(mv.getRounding().getValue()).append("</Rounding>\n");
+        if (mv.getDwell() != null) {
+            sb.append("                <Dwell Units=\"").append(mv.getDwell().getUnits()).append("\">")
+                    .append(mv.getDwell().getValue()).append("</Dwell>\n");
+        }
         if (mv.getSpindle() != null) {
             sb.append("                <Spindle Units=\"").append(mv.getSpindle().getUnits()).append("\">")
                     .append(mv.getSpindle().getValue()).append("</Spindle>\n");
@@ -268,6 +279,13 @@ public final class RobotProgramXml {
                 return "joint " + d.getJointName() + " has the limits " + d.getMin() + ", " + d.getMax();
             }
         }
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            for (double v : new double[] {t.getX(), t.getY(), t.getZ(), t.getQ1(), t.getQ2(), t.getQ3(), t.getQ4()}) {
+                if (!finite(v)) {
+                    return "tool " + t.getNumber() + " has the number " + v + " in its frame";
+                }
+            }
+        }
         for (ActivityType a : x.getActivityList().getActivity()) {
             if (a.getIndex().signum() < 0) {
                 return "motion index " + a.getIndex() + " is negative";
@@ -281,7 +299,8 @@ public final class RobotProgramXml {
             CartesianTargetType.Orientation o = a.getCartesianTarget().getOrientation();
             MoveAttributesType mv = a.getMoveAttributes();
             double[] numbers = {pos.getX(), pos.getY(), pos.getZ(), o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4(),
-                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue()};
+                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue(),
+                mv.getDwell() == null ? 0 : mv.getDwell().getValue()};
             for (double v : numbers) {
                 if (!finite(v)) {
                     return "motion " + a.getIndex() + " has the number " + v + " in its target or move attributes";
@@ -313,6 +332,20 @@ public final class RobotProgramXml {
             d.setMax(j.maxValue());
             r.getJointDefinition().add(d);
         }
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            ToolFrameType f = new ToolFrameType();
+            f.setNumber(BigInteger.valueOf(t.number()));
+            Vec3 at = t.tcp().translationPart();
+            Quaternion q = Quaternion.of(t.tcp());
+            f.setX(at.x());
+            f.setY(at.y());
+            f.setZ(at.z());
+            f.setQ1(q.w());
+            f.setQ2(q.x());
+            f.setQ3(q.y());
+            f.setQ4(q.z());
+            r.getToolFrame().add(f);
+        }
         x.setResource(r);
         ActivityListType list = new ActivityListType();
         list.setTask(p.programName());
@@ -322,6 +355,7 @@ public final class RobotProgramXml {
             a.setIndex(BigInteger.valueOf(m.index()));
             a.setWorkingstep(m.workingstep());
             a.setRole(m.role() == RobotProgram.PointRole.PART ? "part" : "relink");
+            a.setTool(BigInteger.valueOf(p.toolOf(m.workingstep()).number()));
             a.setActivityName("Move " + m.index());
             a.setMotionType(m.type() == RobotProgram.MotionType.JOINT ? "Joint" : "Linear");
             JointTargetType jt = new JointTargetType();
@@ -368,6 +402,12 @@ public final class RobotProgramXml {
             rd.setUnits("mm");
             rd.setValue(m.zoneMm());
             mv.setRounding(rd);
+            if (m.dwellS() > 0) {
+                MoveAttributesType.Dwell dw = new MoveAttributesType.Dwell();
+                dw.setUnits("s");
+                dw.setValue(m.dwellS());
+                mv.setDwell(dw);
+            }
             if (m.spindleRpm() > 0) {
                 MoveAttributesType.Spindle sp = new MoveAttributesType.Spindle();
                 sp.setUnits("rpm");
@@ -423,8 +463,25 @@ public final class RobotProgramXml {
                     "part".equals(a.getRole()) ? RobotProgram.PointRole.PART : RobotProgram.PointRole.RELINK,
                     values, target, a.getMoveAttributes().getMotionBasis().getValue(),
                     a.getMoveAttributes().getRounding().getValue(),
+                    a.getMoveAttributes().getDwell() == null ? 0 : a.getMoveAttributes().getDwell().getValue(),
                     a.getMoveAttributes().getSpindle() == null ? 0 : a.getMoveAttributes().getSpindle().getValue()));
         }
-        return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
+        List<RobotProgram.ToolFrame> tools = new ArrayList<>();
+        for (ToolFrameType t : x.getResource().getToolFrame()) {
+            List<String> steps = new ArrayList<>();
+            for (ActivityType a : x.getActivityList().getActivity()) {
+                if (a.getTool() != null && a.getTool().equals(t.getNumber()) && !steps.contains(a.getWorkingstep())) {
+                    steps.add(a.getWorkingstep());
+                }
+            }
+            Transform3 r = new Quaternion(t.getQ1(), t.getQ2(), t.getQ3(), t.getQ4()).toTransform();
+            tools.add(new RobotProgram.ToolFrame(t.getNumber().intValueExact(), new Transform3(r.r00(), r.r01(),
+                    r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(), r.r22(), t.getX(), t.getY(), t.getZ()),
+                    steps));
+        }
+        if (tools.isEmpty()) {
+            return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions);
+        }
+        return new RobotProgram(x.getName(), x.getResource().getRobotName(), joints, motions, tools);
     }
 }

@@ -40,14 +40,31 @@ public final class RobotPrograms {
     /** The speed of joint motions (approach, relinks), mm/s. */
     public static final double JOINT_SPEED_MM_PER_S = 250;
 
-    /** Blend radius of linear motions on the part, mm: small against the toolpath's chord tolerance. */
-    public static final double ZONE_MM = 0.1;
+    /**
+     * The path tolerance of linear motions on the part (mm): the blend radius of every point
+     * inside a workingstep (RAPID {@code z1}, KRL {@code $APO.CDIS}); a corner is rounded within
+     * it. The ends of workingsteps, relinks, points before a gap and dwells are fine points.
+     */
+    public static final double ZONE_MM = 1;
 
     private RobotPrograms() {
     }
 
-    /** The program of a trajectory. */
+    /** The program of a trajectory whose every workingstep uses the robot's own tool frame. */
     public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points) {
+        return of(programName, robot, path, points, label -> robot.tool(), List.of());
+    }
+
+    /**
+     * The program of a trajectory, one tool frame per tool of the toolpath (its T number) with the
+     * TCP of its workingsteps.
+     *
+     * @param tcpOfLabel the TCP in the flange frame of each workingstep
+     * @param dwellAfterTarget the wait at each target (s), in the order of the trajectory's targets
+     *     (its rows not inserted by the solver); missing entries are no wait
+     */
+    public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points,
+            java.util.function.Function<String, Transform3> tcpOfLabel, List<Double> dwellAfterTarget) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointLimit j : robot.joints()) {
             joints.add(new RobotProgram.Joint(j.name(), j.type() == JointType.PRISMATIC
@@ -60,8 +77,12 @@ public final class RobotPrograms {
         }
         List<RobotProgram.Motion> motions = new ArrayList<>();
         String ws = null;
+        int target = -1;
         for (int i = 0; i < points.size(); i++) {
             TrajectoryPoint p = points.get(i);
+            if (!p.inserted()) {
+                target++;
+            }
             if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
                 continue;
             }
@@ -73,14 +94,60 @@ public final class RobotPrograms {
                 q.add(v);
             }
             boolean joint = relink || first;
+            double dwell = !p.inserted() && target < dwellAfterTarget.size() ? dwellAfterTarget.get(target) : 0;
             double speed = joint ? JOINT_SPEED_MM_PER_S : feed.getOrDefault(p.label(), 60.0) / 60.0;
             Transform3 pose = p.reached().orElse(p.target());
+            boolean stop = joint || dwell > 0 || stopsAfter(points, i);
             motions.add(new RobotProgram.Motion(i, p.label(),
                     joint ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART, q, pose, speed,
-                    joint ? 0 : ZONE_MM, spindle.getOrDefault(p.label(), 0.0)));
+                    stop ? 0 : ZONE_MM, dwell, spindle.getOrDefault(p.label(), 0.0)));
         }
-        return new RobotProgram(programName, robot.name(), joints, motions);
+        return new RobotProgram(programName, robot.name(), joints, motions, tools(path, points, tcpOfLabel));
+    }
+
+    /**
+     * Whether the robot must stop exactly at point i: the last point of its workingstep or of the
+     * program, before a relink, or before a point the robot cannot reach (the program skips it).
+     */
+    private static boolean stopsAfter(List<TrajectoryPoint> points, int i) {
+        if (i + 1 >= points.size()) {
+            return true;
+        }
+        TrajectoryPoint next = points.get(i + 1);
+        return next.status() != TrajectoryPoint.Status.OK || !next.label().equals(points.get(i).label());
+    }
+
+    /** One tool frame per tool number and TCP, numbered as the toolpath numbers its tools. */
+    private static List<RobotProgram.ToolFrame> tools(Toolpath path, List<TrajectoryPoint> points,
+            java.util.function.Function<String, Transform3> tcpOfLabel) {
+        Map<Integer, Transform3> tcpOf = new java.util.TreeMap<>();
+        Map<Integer, List<String>> steps = new HashMap<>();
+        int next = 1;
+        for (ToolpathSection s : path.sections()) {
+            next = Math.max(next, s.toolNumber() + 1);
+        }
+        for (ToolpathSection s : path.sections()) {
+            Transform3 tcp = tcpOfLabel.apply(s.label());
+            int number = s.toolNumber();
+            if (tcpOf.containsKey(number) && !tcpOf.get(number).equals(tcp)) {
+                // one magazine number with another TCP: a tool of its own for the controller
+                number = next++;
+            }
+            tcpOf.putIfAbsent(number, tcp);
+            List<String> ws = steps.computeIfAbsent(number, k -> new ArrayList<>());
+            if (!ws.contains(s.label())) {
+                ws.add(s.label());
+            }
+        }
+        if (tcpOf.isEmpty()) {
+            // targets without a toolpath: one tool, the TCP of the first point's label
+            tcpOf.put(1, tcpOfLabel.apply(points.isEmpty() ? "" : points.get(0).label()));
+            steps.put(1, List.of());
+        }
+        List<RobotProgram.ToolFrame> out = new ArrayList<>();
+        tcpOf.forEach((n, tcp) -> out.add(new RobotProgram.ToolFrame(n, tcp, steps.get(n))));
+        return out;
     }
 
     private static Map<String, Double> feedsByWorkingstep(Toolpath path) {
@@ -149,12 +216,14 @@ public final class RobotPrograms {
                 Vec3 base = s.chain().frame(0, q).translationPart();
                 Vec3 up = s.chain().frame(0, q).zAxis();
                 Vec3 forward = f1.xAxis().minus(up.times(f1.xAxis().dot(up)));
-                return w.minus(base).dot(forward) < 0;
+                // a wrist centre on the axis (within a nanometre) is in front, whichever way rounding goes
+                return w.minus(base).dot(forward) < -1e-6;
             }
 
             @Override
             public boolean lowerArm(RobotProgram.Motion m) {
-                return Math.signum(elbowSide(s, values(m))) != homeSide;
+                // a stretched arm (elbow on the line, within rounding) is the upper arm, as at home
+                return elbowSide(s, values(m)) * homeSide < -1e-6;
             }
         };
     }

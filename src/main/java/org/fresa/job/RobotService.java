@@ -41,14 +41,10 @@ public final class RobotService {
      * What the planner asked for.
      *
      * @param choices the toolpath planner's choices where the STEP-NC file is silent or doubtful
+     * @param tool the spindle and tool length asked for, else the robot file's and the STEP-NC tools'
      */
     public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-            List<String> formats, PlanningChoices choices) {
-        /** The settings with the planner's default choices. */
-        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
-            this(stepnc, robot, robotTable, tablePiece, formats, PlanningChoices.DEFAULT);
-        }
-
+            List<String> formats, PlanningChoices choices, RobotTools.Choice tool) {
         /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
             java.util.Objects.requireNonNull(choices, "choices");
@@ -58,6 +54,27 @@ public final class RobotService {
                     throw new IllegalArgumentException("unknown format '" + f + "'");
                 }
             }
+            java.util.Objects.requireNonNull(tool, "tool");
+        }
+
+        /**
+         * The planner's default choices; no spindle or tool length given: the robot file's tool frame
+         * and the STEP-NC tools' lengths.
+         */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats) {
+            this(stepnc, robot, robotTable, tablePiece, formats, PlanningChoices.DEFAULT, RobotTools.Choice.NONE);
+        }
+
+        /** The planner's choices; the robot file's tool frame and the STEP-NC tools' lengths. */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+                PlanningChoices choices) {
+            this(stepnc, robot, robotTable, tablePiece, formats, choices, RobotTools.Choice.NONE);
+        }
+
+        /** The planner's default choices with the spindle and tool length asked for. */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+                RobotTools.Choice tool) {
+            this(stepnc, robot, robotTable, tablePiece, formats, PlanningChoices.DEFAULT, tool);
         }
     }
 
@@ -117,9 +134,10 @@ public final class RobotService {
                     List.of());
         }
         Toolpath path = plan.toolpath();
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(path, robot, s.robotTable(),
+        RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, s.robotTable(),
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
-                org.fresa.kin.TrajectorySolver.Options.DEFAULT);
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel());
         out.create();
         TaskOutcome o;
         RobotTrajectoryService.Solved solved;
@@ -143,7 +161,8 @@ public final class RobotService {
         } finally {
             out.abandonParallel();
         }
-        List<String> problems = new ArrayList<>(plan.problems());
+        List<String> problems = new ArrayList<>(tools.warnings());
+        problems.addAll(plan.problems());
         problems.addAll(o.problems());
         Map<String, Object> summary = new LinkedHashMap<>(o.summary());
         summary.put("workingsteps", plan.workingsteps());
@@ -158,7 +177,7 @@ public final class RobotService {
         JobSettings.StepNcSettings st = JobRunner.require(job.stepnc(), "stepnc", job);
         JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
         List<String> formats = parseFormats(String.join(",", r.formats()));
-        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats, st.choices()), out,
-                progress);
+        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats, st.choices(),
+                new RobotTools.Choice(r.spindle(), r.toolLengthMm())), out, progress);
     }
 }

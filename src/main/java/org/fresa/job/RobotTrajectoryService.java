@@ -50,9 +50,12 @@ public final class RobotTrajectoryService {
      * @param chordToleranceMm largest distance of an arc from its sampled chords, > 0
      * @param formats output formats; csv and png are handled here
      * @param options trajectory options (IK method, continuity, free rotation)
+     * @param tcpByLabel the tool frame (TCP) in the flange frame of each workingstep (its label);
+     *     a workingstep not in it (or an empty map) uses the robot's own tool frame
      */
     public record Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
-            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
+            Map<String, Transform3> tcpByLabel) {
         public Request {
             Objects.requireNonNull(toolpath, "toolpath");
             Objects.requireNonNull(robot, "robot");
@@ -60,9 +63,28 @@ public final class RobotTrajectoryService {
             Objects.requireNonNull(tablePiece, "tablePiece");
             Objects.requireNonNull(options, "options");
             formats = List.copyOf(formats);
+            tcpByLabel = Map.copyOf(tcpByLabel);
             if (!(chordToleranceMm > 0)) {
                 throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
             }
+        }
+
+        /** Every workingstep with the robot's own tool frame. */
+        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
+                double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+            this(toolpath, robot, robotTable, tablePiece, chordToleranceMm, formats, options, Map.of());
+        }
+
+        /** The TCP of a workingstep in the flange frame. */
+        public Transform3 tcp(String label) {
+            return tcpByLabel.getOrDefault(label, robot.tool());
+        }
+
+        /** The robot carrying each workingstep's TCP, one instance per distinct TCP. */
+        public java.util.function.Function<String, Robot> robotOfLabel() {
+            Map<Transform3, Robot> byTcp = new java.util.HashMap<>();
+            byTcp.put(robot.tool(), robot);
+            return label -> byTcp.computeIfAbsent(tcp(label), robot::withTool);
         }
 
         public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece) {
@@ -89,6 +111,18 @@ public final class RobotTrajectoryService {
         double[] v = numbers("--table-piece", text, 3, 6);
         return new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0,
                 v.length > 5 ? v[5] : 0);
+    }
+
+    /**
+     * Reads {@code --spindle X,Y,Z[,RX,RY,RZ]}: the spindle nose in the flange frame (mm, deg;
+     * R = Rz*Ry*Rx), each value within {@link SettingRanges.Robot#checkSpindle}'s ranges.
+     *
+     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers in range
+     */
+    public static Placement parseSpindle(String text) throws org.fresa.model.CamInputException {
+        double[] v = numbers("--spindle", text, 3, 6);
+        return SettingRanges.Robot.checkSpindle("--spindle", new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0,
+                v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0));
     }
 
     private static double[] numbers(String option, String text, int min, int max)
@@ -130,7 +164,9 @@ public final class RobotTrajectoryService {
         Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
         List<ToolTarget> targets = targets(req.toolpath(), robotToPiece, req.chordToleranceMm());
         progress.progress(0, "inverse kinematics");
-        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, (done, total) -> {
+        java.util.function.Function<String, Robot> robots = req.tcpByLabel().isEmpty() ? null : req.robotOfLabel();
+        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, robots,
+                (done, total) -> {
             progress.checkCancelled();
             if ((done & 255) == 0 || done == total) {
                 progress.progress((double) done / total, "inverse kinematics");
@@ -167,9 +203,10 @@ public final class RobotTrajectoryService {
             writeCharts(req.robot(), r, out);
         }
         if (fmts.contains("csv")) {
-            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req.robot(), r).getBytes(StandardCharsets.UTF_8)));
+            out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotProgram program = RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points());
+        RobotProgram program = RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points(), req::tcp,
+                dwellsAfterTargets(req));
         java.util.Optional<org.fresa.check.Failure> refused = ProgramChecks.robot(program, req.toolpath(), limits);
         if (refused.isEmpty()) {
             RobotPrograms.write(program, req.robot(), fmts, out);
@@ -195,6 +232,23 @@ public final class RobotTrajectoryService {
     /** The toolpath as robot targets: positions in the robot base frame, z_e into the material. */
     public static List<ToolTarget> targets(Toolpath path, Transform3 robotToPiece, double chordToleranceMm) {
         List<ToolTarget> out = new ArrayList<>();
+        walk(path, robotToPiece, chordToleranceMm, out, new ArrayList<>());
+        return out;
+    }
+
+    /**
+     * For each target of {@link #targets} of the request, the time the tool waits there once it
+     * has arrived (s): the dwells of the toolpath that follow it (a drilling's dwell at the bottom).
+     */
+    public static List<Double> dwellsAfterTargets(Request req) {
+        Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
+        List<Double> dwells = new ArrayList<>();
+        walk(req.toolpath(), robotToPiece, req.chordToleranceMm(), new ArrayList<>(), dwells);
+        return dwells;
+    }
+
+    private static void walk(Toolpath path, Transform3 robotToPiece, double chordToleranceMm, List<ToolTarget> out,
+            List<Double> dwells) {
         for (ToolpathSection s : path.sections()) {
             Vec3 axis = robotToPiece.applyToDirection(s.toolAxis()).negated().normalized();
             Vec3 x = ToolTarget.naturalX(axis);
@@ -204,21 +258,26 @@ public final class RobotTrajectoryService {
             if (last == null || !last.positionMm().eq(robotToPiece.applyToPoint(at), org.fresa.geom.Tolerance.DEFAULT)
                     || last.toolAxis().distance(axis) > 1e-12) {
                 out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(at), axis, x));
+                dwells.add(0.0);
             }
             for (Move m : s.moves()) {
                 if (m instanceof Move.Circular c) {
                     for (Vec3 p : sampleArc(at, c, chordToleranceMm)) {
                         out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(p), axis, x));
+                        dwells.add(0.0);
                     }
                 } else if (m.travels()) {
                     out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(m.end()), axis, x));
+                    dwells.add(0.0);
+                } else if (m instanceof Move.Dwell d && !dwells.isEmpty()) {
+                    // the wait belongs to the point where the tool is: the robot program says it there
+                    dwells.set(dwells.size() - 1, dwells.get(dwells.size() - 1) + d.seconds());
                 }
                 // a dwell or spindle event holds the pose: no point, as a repeated one would be a
                 // zero-length linear motion in the robot program
                 at = m.end();
             }
         }
-        return out;
     }
 
     /**
@@ -266,13 +325,26 @@ public final class RobotTrajectoryService {
     }
 
     static String trajectoryCsv(Robot robot, TrajectorySolver.Result r) {
+        return trajectoryCsv(robot, r, label -> robot.tool());
+    }
+
+    static String trajectoryCsv(Request req, TrajectorySolver.Result r) {
+        return trajectoryCsv(req.robot(), r, req::tcp);
+    }
+
+    /**
+     * The rows of trajectory.csv, with the flange position (the reached pose without the TCP of
+     * the row's workingstep) after the spec's columns.
+     */
+    static String trajectoryCsv(Robot robot, TrajectorySolver.Result r,
+            java.util.function.Function<String, Transform3> tcpOfLabel) {
         int n = robot.dof();
         StringBuilder sb = new StringBuilder(r.points().size() * 200);
         sb.append("index,workingstep,x,y,z,roll,pitch,yaw");
         for (int i = 1; i <= n; i++) {
             sb.append(",q").append(i);
         }
-        sb.append(",reached_x,reached_y,reached_z,pos_err_mm,rot_err_rad,status\n");
+        sb.append(",reached_x,reached_y,reached_z,pos_err_mm,rot_err_rad,status,flange_x,flange_y,flange_z\n");
         int index = 1;
         for (TrajectoryPoint p : r.points()) {
             Transform3 t = p.target();
@@ -286,7 +358,14 @@ public final class RobotTrajectoryService {
                 Transform3 reached = p.reached().orElseThrow();
                 appendNumbers(sb, reached.tx(), reached.ty(), reached.tz(), p.posErrMm(), p.rotErrRad());
             }
-            sb.append(',').append(p.status().csv()).append('\n');
+            sb.append(',').append(p.status().csv());
+            if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
+                sb.append(",,,");
+            } else {
+                Transform3 flange = p.reached().orElseThrow().times(tcpOfLabel.apply(p.label()).inverse());
+                appendNumbers(sb, flange.tx(), flange.ty(), flange.tz());
+            }
+            sb.append('\n');
         }
         return sb.toString();
     }
@@ -309,11 +388,13 @@ public final class RobotTrajectoryService {
         double maxRot = 0;
         double maxStep = 0;
         double[] prevOk = null;
+        ErrorStatistics stats = new ErrorStatistics();
         for (TrajectoryPoint p : r.points()) {
             if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
                 prevOk = null;
                 continue;
             }
+            stats.add(p.target(), p.reached().orElseThrow());
             maxPos = Math.max(maxPos, p.posErrMm());
             maxRot = Math.max(maxRot, p.rotErrRad());
             if (p.status() == TrajectoryPoint.Status.OK) {
@@ -340,6 +421,7 @@ public final class RobotTrajectoryService {
         m.put("max_pos_err_mm", maxPos);
         m.put("max_rot_err_rad", maxRot);
         m.put("max_joint_step_deg", maxStep);
+        m.putAll(stats.summary());
         m.put("ik_ms", r.ikNanos() / 1e6);
         Map<String, Object> free = new LinkedHashMap<>();
         free.put("rotated_points", r.rotatedPoints());

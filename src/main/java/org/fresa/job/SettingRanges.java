@@ -119,6 +119,14 @@ public final class SettingRanges {
     /** The placements of {@code fresa robot} ({@code --robot-table}, {@code --table-piece}) and the job's {@code <robot>}. */
     public static final class Robot {
         private static final String[] ATTRIBUTES = {"xMm", "yMm", "zMm", "rxDeg", "ryDeg", "rzDeg"};
+        /** Largest spindle offset from the flange and longest tool (mm): a tool is held, not a boom. */
+        public static final double MAX_TOOL_MM = 5000;
+        /** {@code --tool-length} and the job's {@code toolLengthMm}: from the spindle nose to the tip. */
+        public static final SettingRange TOOL_LENGTH = SettingRange.of("--tool-length", "toolLengthMm", 0,
+                MAX_TOOL_MM, "mm");
+        /** {@code --tolerance-mm} of {@code fresa ik}: 1e-12 mm (below it doubles cannot tell) to 1 mm. */
+        public static final SettingRange IK_TOLERANCE = SettingRange.of("--tolerance-mm", "toleranceMm", 1e-12, 1,
+                "mm");
 
         private Robot() {
         }
@@ -145,6 +153,38 @@ public final class SettingRanges {
                 }
             }
             return p;
+        }
+
+        /**
+         * The spindle nose in the flange frame ({@code --spindle}), when each offset is within
+         * {@link #MAX_TOOL_MM} and each angle within a turn.
+         *
+         * @throws CamInputException naming the option and the value
+         */
+        public static Placement checkSpindle(String option, Placement p) throws CamInputException {
+            double[] v = {p.xMm(), p.yMm(), p.zMm(), p.rxDeg(), p.ryDeg(), p.rzDeg()};
+            for (int i = 0; i < v.length; i++) {
+                SettingRange r = spindle(option, i);
+                if (!r.contains(v[i])) {
+                    throw new CamInputException(option, ATTRIBUTES[i].replaceAll("(Mm|Deg)$", "") + ": "
+                            + r.problem(v[i]));
+                }
+            }
+            return p;
+        }
+
+        /** {@link #checkSpindle} for a job file's spindle element. */
+        public static Placement requireSpindle(Placement p) {
+            double[] v = {p.xMm(), p.yMm(), p.zMm(), p.rxDeg(), p.ryDeg(), p.rzDeg()};
+            for (int i = 0; i < v.length; i++) {
+                spindle("", i).require(v[i]);
+            }
+            return p;
+        }
+
+        private static SettingRange spindle(String option, int index) {
+            return index < 3 ? SettingRange.of(option, ATTRIBUTES[index], -MAX_TOOL_MM, MAX_TOOL_MM, "mm")
+                    : angle(option, ATTRIBUTES[index]);
         }
 
         /** {@link #check} for a job file's placement element. */

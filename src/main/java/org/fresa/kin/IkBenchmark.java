@@ -54,6 +54,41 @@ public final class IkBenchmark {
         return run(Robots.tricept806(), zigZag(new Vec3(150, 250, -1700)), rounds);
     }
 
+    /**
+     * Cold solves (every solution branch, no seed) of the IRB-140 zig-zag's points, one in seven:
+     * the median CPU microseconds per pose over the rounds, after a warm-up of at least 2 s.
+     */
+    public static double irb140ColdCpuUsPerPose(int rounds) {
+        IkSolver solver = Robots.irb140().newSolver(IkOptions.DEFAULT);
+        List<Transform3> all = zigZag(new Vec3(420, -50, 300));
+        List<Transform3> path = new ArrayList<>();
+        for (int i = 0; i < all.size(); i += 7) {
+            path.add(all.get(i));
+        }
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        double[] cpu = new double[rounds];
+        long warmStart = System.nanoTime();
+        int found = 0;
+        for (int round = -Math.max(3, rounds / 2); round < rounds; round++) {
+            if (round == -1 && System.nanoTime() - warmStart < 2_000_000_000L) {
+                round = -2;
+            }
+            long c0 = mx.getCurrentThreadCpuTime();
+            found = 0;
+            for (Transform3 t : path) {
+                found += solver.solveAll(t).isEmpty() ? 0 : 1;
+            }
+            if (round >= 0) {
+                cpu[round] = (mx.getCurrentThreadCpuTime() - c0) / 1e3 / path.size();
+            }
+        }
+        if (found != path.size()) {
+            throw new IllegalStateException("cold IK found no solution for " + (path.size() - found) + " poses");
+        }
+        Arrays.sort(cpu);
+        return cpu[rounds / 2];
+    }
+
     /** Warm-start solves along the path; the first point is solved cold (not timed). */
     public static Figure run(Robot robot, List<Transform3> path, int rounds) {
         IkSolver solver = robot.newSolver(IkOptions.DEFAULT);

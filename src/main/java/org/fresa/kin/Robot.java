@@ -33,6 +33,20 @@ public sealed interface Robot permits SerialRobot, TriceptRobot {
     /** The tool pose for joint values q (deg / mm). */
     Transform3 forward(double... q);
 
+    /**
+     * The tool frame (TCP) in the flange frame: the identity for a bare flange, else the spindle
+     * and the tool's length, its z pointing from the flange towards the tip.
+     */
+    Transform3 tool();
+
+    /** The same robot with another tool frame (TCP) in the flange frame. */
+    Robot withTool(Transform3 tool);
+
+    /** The flange pose for joint values q (deg / mm): {@link #forward} without the tool frame. */
+    default Transform3 flange(double... q) {
+        return forward(q).times(tool().inverse());
+    }
+
     /** A new solver with its own work buffers. */
     IkSolver newSolver(IkOptions options);
 

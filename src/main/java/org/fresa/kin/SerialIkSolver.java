@@ -17,6 +17,8 @@ final class SerialIkSolver implements IkSolver {
     private static final int RANDOM_STARTS = 24;
     /** Two solutions closer than this (rad or mm, per joint) are the same. */
     private static final double SAME_SOLUTION = 1e-6;
+    /** A closed-form joint value this far beyond a limit (rad or mm) is on it: rounding, not reach. */
+    private static final double LIMIT_ROUNDING = 1e-9;
 
     private final DenavitHartenbergChain chain;
     private final IkOptions options;
@@ -137,15 +139,86 @@ final class SerialIkSolver implements IkSolver {
                 lastPos, lastRot, iterations);
     }
 
+    /**
+     * The closed form first, where the arm has one: its solutions within the joint limits are
+     * polished (and so checked) and, when any converges, they are the answer; the generic starts
+     * run only when the closed form finds nothing (a pose at the edge of the workspace, a chain
+     * the closed form does not fit).
+     */
     @Override
     public List<IkResult.Converged> solveAll(Transform3 targetPose) {
+        if (closedForm.isPresent()) {
+            Pose.fromTransform(targetPose, target, 0);
+            List<IkResult.Converged> found = new ArrayList<>();
+            List<double[]> internal = new ArrayList<>();
+            int spent = 0;
+            for (double[] s : closedForm.get().solutions(target, false)) {
+                if (!withinLimits(s)) {
+                    continue;
+                }
+                for (int i = 0; i < n; i++) {
+                    q[i] = clamp(i, s[i]);
+                }
+                boolean ok = run();
+                spent += lastIterations;
+                if (!ok) {
+                    continue;
+                }
+                // the other whole turns of a joint give the same pose: no need to polish them again
+                double pos = lastPos;
+                double rot = lastRot;
+                for (double[] t : closedForm.get().turns(q)) {
+                    System.arraycopy(t, 0, q, 0, n);
+                    if (!duplicate(internal)) {
+                        internal.add(t);
+                        found.add(new IkResult.Converged(chain.toUser(t), pos, rot, spent));
+                    }
+                }
+            }
+            if (!found.isEmpty()) {
+                found.sort(Comparator.comparingDouble((IkResult.Converged c) -> -margin(c.q())));
+                return found;
+            }
+        }
+        return solveAllFromStarts(targetPose);
+    }
+
+    /** Whether closed-form joint values (internal units) lie within the limits, up to rounding. */
+    private boolean withinLimits(double[] s) {
+        for (int i = 0; i < n; i++) {
+            if (!(s[i] >= chain.qMin[i] - LIMIT_ROUNDING && s[i] <= chain.qMax[i] + LIMIT_ROUNDING)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean duplicate(List<double[]> internal) {
+        for (double[] other : internal) {
+            double dmax = 0;
+            for (int i = 0; i < n; i++) {
+                dmax = Math.max(dmax, Math.abs(other[i] - q[i]));
+            }
+            if (dmax < SAME_SOLUTION) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Every start: the closed form's solutions (clamped into the limits) and the generic starts,
+     * which stop six after the closed form's once anything converged. The search {@link #solveAll}
+     * did before it trusted the closed form; kept as the reference its tests compare against.
+     */
+    List<IkResult.Converged> solveAllFromStarts(Transform3 targetPose) {
         Pose.fromTransform(targetPose, target, 0);
         List<IkResult.Converged> found = new ArrayList<>();
         List<double[]> internal = new ArrayList<>();
         int spent = 0;
         List<double[]> seeds = new ArrayList<>();
         if (closedForm.isPresent()) {
-            seeds.addAll(closedForm.get().solutions(target));
+            seeds.addAll(closedForm.get().solutions(target, false));
         }
         int closedFormSeeds = seeds.size();
         seeds.addAll(java.util.Arrays.asList(starts));

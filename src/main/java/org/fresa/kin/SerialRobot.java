@@ -56,7 +56,12 @@ public record SerialRobot(String name, String description, DenavitHartenbergChai
         return a.zAxis().cross(b.zAxis()).norm();
     }
 
-    /** The same robot with another tool (TCP) in the flange frame. */
+    @Override
+    public Transform3 tool() {
+        return chain.tool();
+    }
+
+    @Override
     public SerialRobot withTool(Transform3 tool) {
         return new SerialRobot(name, description, chain.withTool(tool), wristJoint);
     }

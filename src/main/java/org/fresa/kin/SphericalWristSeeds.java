@@ -52,6 +52,14 @@ final class SphericalWristSeeds {
 
     /** Joint values (internal units) of the closed-form solutions for a TCP pose (12 doubles). */
     List<double[]> solutions(double[] target) {
+        return solutions(target, true);
+    }
+
+    /**
+     * The closed-form solutions, each joint moved into its limits by whole turns where it can be,
+     * with every other whole-turn variant within the limits too when {@code allTurns}.
+     */
+    List<double[]> solutions(double[] target, boolean allTurns) {
         double[] fl = new double[Pose.SIZE];
         Pose.mul(target, 0, toolInverse, 0, fl, 0);
         double wx = fl[3] - d6 * fl[2];
@@ -102,11 +110,42 @@ final class SphericalWristSeeds {
                     for (int i = 0; i < 6; i++) {
                         s[i] = intoLimits(i, s[i]);
                     }
-                    out.add(s);
+                    if (allTurns) {
+                        addTurns(s, 0, out);
+                    } else {
+                        out.add(s);
+                    }
                 }
             }
         }
         return out;
+    }
+
+    /**
+     * q and every variant of it with revolute joints turned by whole turns that stay within the
+     * limits (a range wider than a turn, as the IRB-140's axes 4 and 6, holds the same pose twice).
+     */
+    List<double[]> turns(double[] q) {
+        List<double[]> out = new ArrayList<>();
+        addTurns(q.clone(), 0, out);
+        return out;
+    }
+
+    /** s and its whole-turn variants from joint {@code from} on, into out. */
+    private void addTurns(double[] s, int from, List<double[]> out) {
+        if (from == 6) {
+            out.add(s);
+            return;
+        }
+        addTurns(s, from + 1, out);
+        for (int k = -2; k <= 2; k++) {
+            double v = s[from] + k * TWO_PI;
+            if (k != 0 && v >= chain.qMin[from] && v <= chain.qMax[from]) {
+                double[] t = s.clone();
+                t[from] = v;
+                addTurns(t, from + 1, out);
+            }
+        }
     }
 
     /** The whole-turn shift of v nearest mid-range that lies within the limits (or v itself). */

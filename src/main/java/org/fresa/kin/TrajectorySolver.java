@@ -89,10 +89,12 @@ public final class TrajectorySolver {
         void done(int targetsDone, int total);
     }
 
-    private final Robot robot;
     private final Options options;
-    private final IkSolver solver;
+    /** The robot with the TCP of the current tool, and its solver: a tool change changes both. */
+    private Robot robot;
+    private IkSolver solver;
     private final List<JointLimit> limits;
+    private final java.util.Map<Robot, IkSolver> solvers = new java.util.IdentityHashMap<>();
 
     private final List<TrajectoryPoint> rows = new ArrayList<>();
     private final List<String> notes = new ArrayList<>();
@@ -105,6 +107,16 @@ public final class TrajectorySolver {
         this.options = Objects.requireNonNull(options, "options");
         this.solver = robot.newSolver(options.ik());
         this.limits = robot.joints();
+        solvers.put(robot, solver);
+    }
+
+    private void use(Robot r) {
+        if (r.dof() != limits.size()) {
+            throw new IllegalArgumentException("a tool change cannot change the robot: " + r.dof() + " joints for "
+                    + limits.size());
+        }
+        robot = r;
+        solver = solvers.computeIfAbsent(r, x -> x.newSolver(options.ik()));
     }
 
     /** A solved pose: joints and the free rotation used. */
@@ -112,6 +124,20 @@ public final class TrajectorySolver {
     }
 
     public Result solve(List<ToolTarget> targets, Listener listener) {
+        return solve(targets, null, listener);
+    }
+
+    /**
+     * As {@link #solve(List, Listener)}, each target with the robot (the same joints, its own tool
+     * frame) that {@code robotOfLabel} gives for its label. Where the robot changes (a tool change)
+     * the point is solved cold, in the configuration nearest the previous point's, with no relink:
+     * the robot leaves the part to change the tool.
+     *
+     * @param robotOfLabel the robot carrying the TCP of each label's tool; null keeps the
+     *     constructor's robot; must return the same instance for the same tool
+     */
+    public Result solve(List<ToolTarget> targets, java.util.function.Function<String, Robot> robotOfLabel,
+            Listener listener) {
         rows.clear();
         notes.clear();
         ikNanos = 0;
@@ -123,9 +149,17 @@ public final class TrajectorySolver {
         double phi = 0;
         for (int k = 0; k < targets.size(); k++) {
             ToolTarget t = targets.get(k);
+            boolean toolChange = false;
+            if (robotOfLabel != null) {
+                Robot r = robotOfLabel.apply(t.label());
+                if (r != robot) {
+                    use(r);
+                    toolChange = prev != null;
+                }
+            }
             Sol s;
-            if (prev == null) {
-                s = cold(t, phi, null);
+            if (prev == null || toolChange) {
+                s = cold(t, phi, prev == null ? null : prev.q);
             } else {
                 s = next(prevTarget, prev, t);
                 if (s == null) {

@@ -23,7 +23,12 @@ final class TriceptIkSolver implements IkSolver {
     private final TriceptGeometry geo;
     private final double[] min = new double[6];
     private final double[] max = new double[6];
+    /** The flange target: the TCP target times the inverse tool frame. */
     private final double[] target = new double[Pose.SIZE];
+    private final double[] tcpTarget = new double[Pose.SIZE];
+    private final double[] tool = new double[Pose.SIZE];
+    private final double[] toolInverse = new double[Pose.SIZE];
+    private final double[] tcpPose = new double[Pose.SIZE];
     private final double[] w = new double[3];
     private final double[] wv = new double[3];
     private final double[] legs = new double[3];
@@ -41,6 +46,8 @@ final class TriceptIkSolver implements IkSolver {
         this.robot = robot;
         this.options = options;
         this.geo = new TriceptGeometry(robot);
+        Pose.fromTransform(robot.tool(), tool, 0);
+        Pose.fromTransform(robot.tool().inverse(), toolInverse, 0);
         List<JointLimit> js = robot.joints();
         for (int i = 0; i < 6; i++) {
             boolean rev = js.get(i).type() == JointType.REVOLUTE;
@@ -57,7 +64,7 @@ final class TriceptIkSolver implements IkSolver {
         for (int i = 0; i < 6; i++) {
             seedI[i] = i < 3 ? seed[i] : Math.toRadians(seed[i]);
         }
-        Pose.fromTransform(targetPose, target, 0);
+        setTarget(targetPose);
         if (!solveInternal(false)) {
             return new IkResult.Unreachable(failure, lastPos, lastRot, 1);
         }
@@ -66,7 +73,7 @@ final class TriceptIkSolver implements IkSolver {
 
     @Override
     public List<IkResult.Converged> solveAll(Transform3 targetPose) {
-        Pose.fromTransform(targetPose, target, 0);
+        setTarget(targetPose);
         List<IkResult.Converged> out = new ArrayList<>();
         // the wrist's two branches, from the middle of its range
         for (int branch = 0; branch < 2; branch++) {
@@ -91,6 +98,11 @@ final class TriceptIkSolver implements IkSolver {
         }
         out.sort(Comparator.comparingDouble((IkResult.Converged c) -> -margin(c.q())));
         return out;
+    }
+
+    private void setTarget(Transform3 tcp) {
+        Pose.fromTransform(tcp, tcpTarget, 0);
+        Pose.mul(tcpTarget, 0, toolInverse, 0, target, 0);
     }
 
     private double margin(double[] qUser) {
@@ -144,7 +156,9 @@ final class TriceptIkSolver implements IkSolver {
             return false;
         }
         geo.pose(wv, best[3], best[4], best[5], pose);
-        Pose.error(target, 0, pose, 0, err);
+        // checked at the TCP, where the tolerance is asked
+        Pose.mul(pose, 0, tool, 0, tcpPose, 0);
+        Pose.error(tcpTarget, 0, tcpPose, 0, err);
         lastPos = Math.sqrt(err[0] * err[0] + err[1] * err[1] + err[2] * err[2]);
         lastRot = Math.sqrt(err[3] * err[3] + err[4] * err[4] + err[5] * err[5]);
         if (lastPos > options.posTolMm() || lastRot > options.rotTolRad()) {

@@ -25,22 +25,37 @@ import org.fresa.geom.Vec3;
  * @param effectorLengthMm e_ffl, from W to the tool tip
  * @param legs the three leg limits (mm)
  * @param wrist the three wrist limits (deg)
+ * @param tool the tool frame (TCP) in the flange frame, the flange being e_ffl beyond W
  */
 public record TriceptRobot(String name, String description, double baseRadiusMm, double platformRadiusMm,
-        double centreOffsetMm, double effectorLengthMm, List<JointLimit> legs, List<JointLimit> wrist)
-        implements Robot {
+        double centreOffsetMm, double effectorLengthMm, List<JointLimit> legs, List<JointLimit> wrist,
+        Transform3 tool) implements Robot {
 
     public TriceptRobot {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(description, "description");
         legs = List.copyOf(legs);
         wrist = List.copyOf(wrist);
+        Objects.requireNonNull(tool, "tool");
         if (legs.size() != 3 || wrist.size() != 3) {
             throw new IllegalArgumentException("a Tricept has 3 legs and a 3-joint wrist");
         }
         if (!(baseRadiusMm > 0) || !(platformRadiusMm > 0) || !(centreOffsetMm >= 0) || !(effectorLengthMm >= 0)) {
             throw new IllegalArgumentException("Tricept dimensions must be positive");
         }
+    }
+
+    /** A Tricept whose TCP is its flange. */
+    public TriceptRobot(String name, String description, double baseRadiusMm, double platformRadiusMm,
+            double centreOffsetMm, double effectorLengthMm, List<JointLimit> legs, List<JointLimit> wrist) {
+        this(name, description, baseRadiusMm, platformRadiusMm, centreOffsetMm, effectorLengthMm, legs, wrist,
+                Transform3.IDENTITY);
+    }
+
+    @Override
+    public TriceptRobot withTool(Transform3 newTool) {
+        return new TriceptRobot(name, description, baseRadiusMm, platformRadiusMm, centreOffsetMm, effectorLengthMm,
+                legs, wrist, newTool);
     }
 
     @Override
@@ -75,7 +90,7 @@ public record TriceptRobot(String name, String description, double baseRadiusMm,
         }
         double[] pose = new double[Pose.SIZE];
         geo.pose(w, Math.toRadians(q[3]), Math.toRadians(q[4]), Math.toRadians(q[5]), pose);
-        return Pose.toTransform(pose, 0);
+        return Pose.toTransform(pose, 0).times(tool);
     }
 
     /** The wrist centre W (mm, base frame) for leg lengths (mm); numerical (Newton). */

@@ -11,7 +11,10 @@ import org.fresa.geom.Vec3;
  *
  * <p>A, B, C are Z-Y-X Euler angles (A about z, B about y, C about x). Status: bit 0 the wrist
  * centre behind axis 1 (overhead area), bit 1 axis 3 beyond the straight arm, bit 2 axis 5 <= 0.
- * Turn: bit i set when axis i + 1 is negative. The axes are the robot's joints in Fresa's
+ * Turn: bit i set when axis i + 1 is negative. A joint within
+ * {@link RapidWriter#CONFIGURATION_TOLERANCE_DEG} of 0 counts as 0. {@code $APO.CDIS} is the
+ * program's path tolerance, {@code C_DIS} on every point that is not a stop point; a dwell is
+ * {@code WAIT SEC}. The axes are the robot's joints in Fresa's
  * convention (spec/robots.md), named A1..A6.
  */
 public final class KrlWriter implements RobotProgramWriter {
@@ -40,10 +43,23 @@ public final class KrlWriter implements RobotProgramWriter {
         sb.append("DEF ").append(name).append("( )\n");
         sb.append(";FOLD INI\n  BAS (#INITMOV,0 )\n;ENDFOLD (INI)\n");
         sb.append("; Fresa robot program for ").append(p.robotName()).append(": ").append(p.motions().size())
-                .append(" motions, base and tool frames 0 (the robot base frame and the flange+TCP of the job)\n");
+                .append(" motions, base frame 0 (the robot base frame), TOOL_DATA[n] the TCP of tool n in the flange"
+                        + " frame\n");
         sb.append("$BASE = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
-        sb.append("$TOOL = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
-        sb.append("$APO.CDIS = 0.5\n");
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            Vec3 at = t.tcp().translationPart();
+            Vec3 abc = t.tcp().zyxAnglesDeg();
+            sb.append("TOOL_DATA[").append(t.number()).append("] = {X ").append(f(at.x(), 3)).append(",Y ")
+                    .append(f(at.y(), 3)).append(",Z ").append(f(at.z(), 3)).append(",A ").append(f(abc.x(), 6))
+                    .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6)).append("}\n");
+        }
+        int tool = -1;
+        double apo = 0;
+        for (RobotProgram.Motion m : p.motions()) {
+            apo = Math.max(apo, m.zoneMm());
+        }
+        // the approximation distance of the C_DIS points: the program's path tolerance
+        sb.append("$APO.CDIS = ").append(f(apo > 0 ? apo : 0.5, 3)).append('\n');
         double vel = Double.NaN;
         String ws = null;
         double rpm = 0;
@@ -51,6 +67,11 @@ public final class KrlWriter implements RobotProgramWriter {
             if (!m.workingstep().equals(ws)) {
                 ws = m.workingstep();
                 sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
+                int t = p.toolOf(ws).number();
+                if (t != tool) {
+                    tool = t;
+                    sb.append("$TOOL = TOOL_DATA[").append(t).append("]\n");
+                }
             }
             if (m.spindleRpm() != rpm) {
                 spindle(sb, m.spindleRpm());
@@ -85,6 +106,9 @@ public final class KrlWriter implements RobotProgramWriter {
                 sb.append(']');
             }
             sb.append(" ; ").append(m.index()).append('\n');
+            if (m.dwellS() > 0) {
+                sb.append("WAIT SEC ").append(f(m.dwellS(), 3)).append('\n');
+            }
         }
         if (rpm != 0) {
             spindle(sb, 0);
@@ -117,6 +141,11 @@ public final class KrlWriter implements RobotProgramWriter {
     public static final double SPINDLE_FULL_SCALE_RPM = 100_000;
 
     int status(RobotProgram.Motion m) {
+        return status(m, arm);
+    }
+
+    /** KUKA's Status of a motion (see the class comment). */
+    public static int status(RobotProgram.Motion m, RapidWriter.ArmGeometry arm) {
         int s = 0;
         if (arm.rear(m)) {
             s |= 1;
@@ -124,16 +153,17 @@ public final class KrlWriter implements RobotProgramWriter {
         if (!arm.lowerArm(m)) {
             s |= 2;
         }
-        if (m.jointValues().size() > 4 && m.joint(4) <= 0) {
+        if (m.jointValues().size() > 4 && !(m.joint(4) > RapidWriter.CONFIGURATION_TOLERANCE_DEG)) {
             s |= 4;
         }
         return s;
     }
 
-    static int turn(RobotProgram.Motion m) {
+    /** KUKA's Turn of a motion: bit i set when axis i + 1 is negative. */
+    public static int turn(RobotProgram.Motion m) {
         int t = 0;
         for (int i = 0; i < Math.min(6, m.jointValues().size()); i++) {
-            if (m.joint(i) < 0) {
+            if (RapidWriter.negative(m.joint(i))) {
                 t |= 1 << i;
             }
         }

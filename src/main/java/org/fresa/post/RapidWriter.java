@@ -14,7 +14,9 @@ import org.fresa.geom.Vec3;
  * trajectory's configuration (ConfL\On).
  *
  * <p>cf1, cf4, cf6 are the quarter revolutions of axes 1, 4 and 6 (floor(q/90): 0..89.999 deg is
- * 0, -90..-0.001 is -1). cfx follows RobotWare 6 for a 6R arm with a spherical wrist:
+ * 0, -90..-0.001 is -1; within {@link #CONFIGURATION_TOLERANCE_DEG} of a boundary, the boundary's).
+ * Zones: {@code fine} at the motion's stop points, RobotWare's named zone ({@code z1}, {@code z5})
+ * for a radius that has one, else a zonedata of that radius. A dwell is {@code WaitTime \InPos}. cfx follows RobotWare 6 for a 6R arm with a spherical wrist:
  * 4 * rear + 2 * lowerArm + flip, where flip is q5 < 0, lowerArm is q3 below the
  * straight-arm angle (the elbow below the line from shoulder to wrist) and rear is the wrist centre
  * behind axis 1. The joints are in Fresa's convention for the robot (spec/robots.md), which for the
@@ -57,10 +59,17 @@ public final class RapidWriter implements RobotProgramWriter {
         sb.append("MODULE ").append(module).append('\n');
         sb.append("  ! Fresa robot program for ").append(p.robotName()).append(": ")
                 .append(p.motions().size()).append(" motions\n");
-        sb.append("  PERS tooldata tFresa := [TRUE,[[0,0,0],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+        for (RobotProgram.ToolFrame t : p.tools()) {
+            Vec3 at = t.tcp().translationPart();
+            Quaternion q = Quaternion.of(t.tcp());
+            sb.append("  PERS tooldata ").append(toolName(t)).append(" := [TRUE,[[").append(f(at.x(), 3)).append(',')
+                    .append(f(at.y(), 3)).append(',').append(f(at.z(), 3)).append("],[").append(f(q.w(), 8))
+                    .append(',').append(f(q.x(), 8)).append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8))
+                    .append("]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+        }
         sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
-        sb.append("  ! the joints and poses are in the robot base frame; tFresa and wFresa are the identity\n");
-        sb.append("  ! so that the controller's TCP matches Fresa's (set the real tool's TCP in tFresa)\n");
+        sb.append("  ! the joints and poses are in the robot base frame (wFresa is the identity); each tooldata\n");
+        sb.append("  ! is a tool's TCP in the flange frame (spindle and tool length), as Fresa solved it\n");
         sb.append('\n');
         sb.append("  PROC main()\n");
         sb.append("    ConfJ \\On;\n");
@@ -87,7 +96,7 @@ public final class RapidWriter implements RobotProgramWriter {
                     sb.append(i < m.jointValues().size() ? f(m.joint(i), 6) : "0");
                 }
                 sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(",tFresa\\WObj:=wFresa;");
+                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
             } else {
                 Vec3 pos = m.target().translationPart();
                 Quaternion q = Quaternion.of(m.target());
@@ -96,7 +105,7 @@ public final class RapidWriter implements RobotProgramWriter {
                         .append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8)).append("],[")
                         .append(confdata(m, arm))
                         .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(",tFresa\\WObj:=wFresa;");
+                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
                 // the joints the trajectory found for this robtarget, so a reader can check them
                 sb.append(" ! j=[");
                 for (int i = 0; i < 6; i++) {
@@ -105,6 +114,9 @@ public final class RapidWriter implements RobotProgramWriter {
                 sb.append(']');
             }
             sb.append(" ! ").append(m.index()).append('\n');
+            if (m.dwellS() > 0) {
+                sb.append("    WaitTime \\InPos, ").append(f(m.dwellS(), 3)).append(";\n");
+            }
         }
         if (rpm != 0) {
             spindle(sb, 0);
@@ -137,9 +149,30 @@ public final class RapidWriter implements RobotProgramWriter {
     /** The time the spindle is given to reach its speed before the first motion, s. */
     public static final double SPINDLE_RUN_UP_S = 2;
 
+    /** The tooldata's name of a tool. */
+    static String toolName(RobotProgram.ToolFrame t) {
+        return "tFresa" + t.number();
+    }
+
+    /**
+     * Joint angles this close to a quadrant boundary or to 0 (deg) count as on it: a joint the
+     * solver leaves at -1e-16 instead of 0 must not change the configuration a controller is
+     * asked for between two neighbouring points.
+     */
+    public static final double CONFIGURATION_TOLERANCE_DEG = 1e-9;
+
     /** The quarter revolution of a joint angle in degrees, as confdata counts it. */
     static int quarter(double angleDeg) {
+        double k = Math.rint(angleDeg / 90.0);
+        if (Math.abs(angleDeg - 90.0 * k) <= CONFIGURATION_TOLERANCE_DEG) {
+            return (int) k;
+        }
         return (int) Math.floor(angleDeg / 90.0);
+    }
+
+    /** Whether a joint angle is below 0 by more than {@link #CONFIGURATION_TOLERANCE_DEG}. */
+    public static boolean negative(double angleDeg) {
+        return angleDeg < -CONFIGURATION_TOLERANCE_DEG;
     }
 
     /** ABB confdata of a six-joint motion: quarter turns of axes 1, 4 and 6, and cfx. */
@@ -152,7 +185,7 @@ public final class RapidWriter implements RobotProgramWriter {
 
     /** The confdata of a motion of a six-joint arm (see the class comment). */
     public static Confdata confdata(RobotProgram.Motion m, ArmGeometry arm) {
-        int flip = m.joint(4) < 0 ? 1 : 0;
+        int flip = negative(m.joint(4)) ? 1 : 0;
         int cfx = 4 * (arm.rear(m) ? 1 : 0) + 2 * (arm.lowerArm(m) ? 1 : 0) + flip;
         return new Confdata(quarter(m.joint(0)), quarter(m.joint(3)), quarter(m.joint(5)), cfx);
     }
@@ -162,9 +195,17 @@ public final class RapidWriter implements RobotProgramWriter {
         return "[" + f(mmPerS, 3) + ",500,5000,1000]";
     }
 
+    /** RobotWare's predefined zones by their TCP radius (mm). */
+    private static final double[] NAMED_ZONES_MM = {0.3, 1, 5, 10, 15, 20, 30, 40, 50, 60, 80, 100, 150, 200};
+
     static String zone(double mm) {
         if (mm <= 0) {
             return "fine";
+        }
+        for (double z : NAMED_ZONES_MM) {
+            if (z == mm) {
+                return z == 0.3 ? "z0" : "z" + (int) z;
+            }
         }
         return "[FALSE," + f(mm, 3) + "," + f(1.5 * mm, 3) + "," + f(1.5 * mm, 3) + ",0.15," + f(1.5 * mm, 3) + ",0.15]";
     }

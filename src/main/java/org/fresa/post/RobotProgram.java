@@ -13,18 +13,57 @@ import org.fresa.geom.Transform3;
  * @param robotName the robot's name (e.g. irb140)
  * @param joints the robot's joints in order
  * @param motions the motions in order
+ * @param tools the tool frames, at least one; each motion uses the one of its workingstep
  */
-public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions) {
+public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions,
+        List<ToolFrame> tools) {
 
     public RobotProgram {
         Objects.requireNonNull(programName, "programName");
         Objects.requireNonNull(robotName, "robotName");
         joints = List.copyOf(joints);
         motions = List.copyOf(motions);
+        tools = List.copyOf(tools);
+        if (tools.isEmpty()) {
+            throw new IllegalArgumentException("a robot program needs a tool frame");
+        }
         for (Motion m : motions) {
             if (m.jointValues().size() != joints.size()) {
                 throw new IllegalArgumentException("motion " + m.index() + " has " + m.jointValues().size()
                         + " joint values for " + joints.size() + " joints");
+            }
+        }
+    }
+
+    /** A program whose every motion uses the flange as its TCP (tool 1, the identity). */
+    public RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions) {
+        this(programName, robotName, joints, motions, List.of(new ToolFrame(1, Transform3.IDENTITY, List.of())));
+    }
+
+    /** The tool frame of a workingstep: the one that lists it, else the first. */
+    public ToolFrame toolOf(String workingstep) {
+        for (ToolFrame t : tools) {
+            if (t.workingsteps().contains(workingstep)) {
+                return t;
+            }
+        }
+        return tools.get(0);
+    }
+
+    /**
+     * A tool as the controller knows it: its number and its TCP in the flange frame (spindle and
+     * tool length, z from the flange towards the tip).
+     *
+     * @param number the tool's number (the T word of the toolpath), >= 1
+     * @param tcp the TCP in the flange frame (mm)
+     * @param workingsteps the workingsteps cut with it
+     */
+    public record ToolFrame(int number, Transform3 tcp, List<String> workingsteps) {
+        public ToolFrame {
+            Objects.requireNonNull(tcp, "tcp");
+            workingsteps = List.copyOf(workingsteps);
+            if (number < 1) {
+                throw new IllegalArgumentException("tool number must be >= 1: " + number);
             }
         }
     }
@@ -73,18 +112,26 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
      * @param target the tool-tip pose in the robot base frame (mm), from forward kinematics
      * @param speedMmPerS tool-tip speed along the path (mm/s)
      * @param zoneMm rounding (blend) radius; 0 for a fine point
+     * @param dwellS time the tool waits at the point once reached (s), 0 for none; a point with a
+     *     dwell is a fine point
      * @param spindleRpm the spindle speed while the robot makes the motion, rpm; 0 with the spindle stopped
      */
     public record Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
-            Transform3 target, double speedMmPerS, double zoneMm, double spindleRpm) {
+            Transform3 target, double speedMmPerS, double zoneMm, double dwellS, double spindleRpm) {
 
-        /** A motion with the spindle stopped. */
+        /** A motion without a dwell, with the spindle stopped. */
         public Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
                 Transform3 target, double speedMmPerS, double zoneMm) {
-            this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0);
+            this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0, 0);
         }
 
         public Motion {
+            if (!(dwellS >= 0) || !Double.isFinite(dwellS)) {
+                throw new IllegalArgumentException("dwell must be >= 0 s: " + dwellS);
+            }
+            if (dwellS > 0 && zoneMm > 0) {
+                throw new IllegalArgumentException("a point with a dwell is a fine point, zone " + zoneMm);
+            }
             Objects.requireNonNull(workingstep, "workingstep");
             Objects.requireNonNull(type, "type");
             Objects.requireNonNull(role, "role");

@@ -112,7 +112,7 @@ final class OutputViewModel {
     static TaskOutcome write(RobotRunModel.Run run, List<String> formats, OutputFolder out) throws IOException {
         RobotTrajectoryService.Request r = run.solved().request();
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(r.toolpath(), r.robot(), r.robotTable(),
-                r.tablePiece(), r.chordToleranceMm(), formats, r.options());
+                r.tablePiece(), r.chordToleranceMm(), formats, r.options(), r.tcpByLabel());
         return RobotTrajectoryService.write(new RobotTrajectoryService.Solved(req, run.solved().targets(),
                 run.solved().result()), run.programName(), out);
     }

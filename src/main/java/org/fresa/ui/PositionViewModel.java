@@ -138,7 +138,7 @@ final class PositionViewModel {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
         return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
-                old.formats()));
+                old.formats(), old.spindle(), old.toolLengthMm()));
     }
 
     /**
@@ -148,12 +148,23 @@ final class PositionViewModel {
     static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
             Placement tablePiece, List<String> formats, ProgressMonitor progress) throws CamInputException,
             java.io.IOException {
+        return compute(stepnc, robotName, robotTable, tablePiece, formats, org.fresa.job.RobotTools.Choice.NONE,
+                progress);
+    }
+
+    /** As above, with the job's spindle and tool length: each workingstep's TCP as {@code fresa robot} makes it. */
+    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
+            Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool, ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
         var program = StepNcService.read(stepnc, progress);
         progress.progress(-1, "planning toolpaths");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(plan.toolpath(), robot, robotTable,
-                tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT);
+        org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
+                stepnc.toString());
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
+                tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT,
+                tools.tcpByLabel());
         return RobotTrajectoryService.solve(req, progress);
     }
 
@@ -270,15 +281,18 @@ final class PositionViewModel {
     static CellScene sceneOf(RobotTrajectoryService.Solved s, int selected) {
         List<TrajectoryPoint> pts = s.result().points();
         double[] q = CellScene.homePose(s.request().robot());
+        Robot robot = s.request().robot();
         for (int i = Math.min(selected, pts.size() - 1); i >= 0; i--) {
             if (pts.get(i).status() != TrajectoryPoint.Status.UNREACHABLE) {
                 q = pts.get(i).q();
+                // drawn with the point's tool: the last link runs from the flange to the tool tip
+                robot = s.request().robot().withTool(s.request().tcp(pts.get(i).label()));
                 break;
             }
         }
         Transform3 table = s.request().robotTable().toTransform();
         Transform3 piece = table.times(s.request().tablePiece().toTransform());
-        return CellScene.of(s.request().robot(), q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+        return CellScene.of(robot, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
     }
 
     /**
@@ -331,7 +345,7 @@ final class PositionViewModel {
             return List.of();
         }
         double[] q = p.q();
-        Robot robot = solved.get().request().robot();
+        Robot robot = solved.get().request().robot().withTool(solved.get().request().tcp(p.label()));
         List<List<Vec3>> out = new ArrayList<>();
         if (robot instanceof SerialRobot s) {
             List<Vec3> arm = new ArrayList<>();

@@ -585,7 +585,8 @@ final class RobotViewModel {
     Job applyTo(Job job) {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
-        return job.withRobot(new JobSettings.RobotSettings(choice, old.robotTable(), old.tablePiece(), old.formats()));
+        return job.withRobot(new JobSettings.RobotSettings(choice, old.robotTable(), old.tablePiece(), old.formats(),
+                old.spindle(), old.toolLengthMm()));
     }
 
     /** The robot a job names, if it differs from the one shown. */

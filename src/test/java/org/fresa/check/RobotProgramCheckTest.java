@@ -18,7 +18,7 @@ class RobotProgramCheckTest {
     private static RobotProgram.Motion motion(int i, RobotProgram.MotionType type, double x, double z, double q,
             double rpm) {
         Transform3 pose = Transform3.translation(x, 0, z).times(Transform3.rotX(180));
-        return new RobotProgram.Motion(i, "ws", type, RobotProgram.PointRole.PART, List.of(q), pose, 5, 0, rpm);
+        return new RobotProgram.Motion(i, "ws", type, RobotProgram.PointRole.PART, List.of(q), pose, 5, 0, 0, rpm);
     }
 
     private static RobotProgram program(double rpm, double q, double lastZ) {

@@ -49,6 +49,23 @@ class JobXmlTest {
     }
 
     @Test
+    void theSpindleAndToolLengthAreKept() throws Exception {
+        Job job = Job.empty(JobTask.ROBOT).withRobot(new RobotSettings("irb140", Placement.ORIGIN, Placement.ORIGIN,
+                List.of("csv"), Optional.of(new Placement(0, 0, 150, 0, 0, 0)), OptionalDouble.of(50)));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertEquals(job, JobXml.read(file));
+    }
+
+    @Test
+    void aToolLengthOutOfRangeIsRefused() throws Exception {
+        Path file = dir.resolve("bad.xml");
+        Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"robot\">"
+                + "<robot robot=\"irb140\" toolLengthMm=\"-5\"/></job>\n");
+        org.junit.jupiter.api.Assertions.assertThrows(org.fresa.model.CamInputException.class, () -> JobXml.read(file));
+    }
+
+    @Test
     void aPocketWithoutDirectionIsClimbMilled() throws Exception {
         Path file = dir.resolve("old.xml");
         Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"

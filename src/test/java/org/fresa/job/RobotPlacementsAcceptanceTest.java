@@ -18,9 +18,11 @@ class RobotPlacementsAcceptanceTest {
     @TempDir
     Path dir;
 
+    /** The thesis placed its parts for a TCP at the flange: a tool length of 0 mm does the same. */
     static List<String[]> run(Path dir, String part, String robot, double x, double y, double z) throws Exception {
         RobotService.run(new RobotService.Settings(Path.of("samples/stepnc/" + part), robot,
-                new Placement(x, y, z, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0), List.of("csv")),
+                new Placement(x, y, z, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0), List.of("csv"),
+                new RobotTools.Choice(java.util.Optional.empty(), java.util.OptionalDouble.of(0))),
                 new OutputFolder(dir), ProgressMonitor.NONE);
         return Files.readAllLines(dir.resolve("trajectory.csv")).stream().skip(1).map(r -> r.split(",", -1)).toList();
     }

@@ -114,4 +114,72 @@ class RobotServiceTest {
             }
         }
     }
+
+    /** One RAPID move: its workingstep, instruction, zone, confdata and joints (from its comment). */
+    record RapidMove(String workingstep, String instruction, String zone, String confdata, double[] joints) {
+    }
+
+    static List<RapidMove> rapidMoves() throws Exception {
+        List<RapidMove> out = new ArrayList<>();
+        String ws = null;
+        java.util.regex.Pattern cf = java.util.regex.Pattern.compile("\\],\\[(-?\\d+,-?\\d+,-?\\d+,-?\\d+)\\],\\[9E");
+        java.util.regex.Pattern joints = java.util.regex.Pattern.compile("j=\\[([^\\]]*)\\]");
+        for (String line : Files.readAllLines(dir.resolve("program.mod"))) {
+            String l = line.trim();
+            if (l.startsWith("! workingstep ")) {
+                ws = l.substring("! workingstep ".length());
+            } else if (l.startsWith("Move")) {
+                String[] parts = l.split(",");
+                String zone = l.contains(",fine,") ? "fine" : l.contains(",z1,") ? "z1" : "other";
+                java.util.regex.Matcher c = cf.matcher(l);
+                java.util.regex.Matcher j = joints.matcher(l);
+                double[] q = null;
+                if (j.find()) {
+                    q = java.util.Arrays.stream(j.group(1).split(",")).mapToDouble(Double::parseDouble).toArray();
+                }
+                out.add(new RapidMove(ws, l.substring(0, l.indexOf(' ')), zone, c.find() ? c.group(1) : null, q));
+                assertTrue(parts.length > 1);
+            }
+        }
+        return out;
+    }
+
+    @Test
+    void rapidStopsOnlyAtTheEndsOfWorkingstepsAndAtRelinks() throws Exception {
+        List<RapidMove> moves = rapidMoves();
+        int blended = 0;
+        for (int i = 0; i + 1 < moves.size(); i++) {
+            RapidMove a = moves.get(i);
+            RapidMove b = moves.get(i + 1);
+            boolean insideAWorkingstep = a.instruction().equals("MoveL") && b.instruction().equals("MoveL")
+                    && a.workingstep().equals(b.workingstep());
+            if (insideAWorkingstep) {
+                assertEquals("z1", a.zone(), "move " + i + " of " + a.workingstep());
+                blended++;
+            }
+        }
+        assertTrue(blended > 4000, "blended moves: " + blended);
+    }
+
+    @Test
+    void theConfdataNeverFlipsBetweenNeighbouringMovesWithinADegree() throws Exception {
+        List<RapidMove> moves = rapidMoves();
+        int compared = 0;
+        for (int i = 0; i + 1 < moves.size(); i++) {
+            RapidMove a = moves.get(i);
+            RapidMove b = moves.get(i + 1);
+            if (a.confdata() == null || b.confdata() == null) {
+                continue;
+            }
+            double d = 0;
+            for (int j = 0; j < 6; j++) {
+                d = Math.max(d, Math.abs(a.joints()[j] - b.joints()[j]));
+            }
+            if (d < 1) {
+                assertEquals(a.confdata(), b.confdata(), "moves " + i + " and " + (i + 1));
+                compared++;
+            }
+        }
+        assertTrue(compared > 3000, "neighbours within a degree: " + compared);
+    }
 }

@@ -108,7 +108,7 @@ class RobotTrajectoryServiceTest {
         assertTrue((double) s.get("ik_ms") < 5000, s::toString);
         List<String[]> rows = rows(dir.resolve("trajectory.csv"));
         assertEquals(String.join(",", "index,workingstep,x,y,z,roll,pitch,yaw,q1,q2,q3,q4,q5,q6,reached_x,reached_y,"
-                + "reached_z,pos_err_mm,rot_err_rad,status"), String.join(",", rows.get(0)));
+                + "reached_z,pos_err_mm,rot_err_rad,status,flange_x,flange_y,flange_z"), String.join(",", rows.get(0)));
         assertEquals((int) s.get("points"), rows.size() - 1);
         for (String[] r : rows.subList(1, rows.size())) {
             double[] q = new double[6];
@@ -170,7 +170,7 @@ class RobotTrajectoryServiceTest {
         assertEquals(1, o.exitStatus());
         List<String[]> rows = rows(dir.resolve("trajectory.csv"));
         for (String[] r : rows.subList(1, rows.size())) {
-            String status = r[r.length - 1];
+            String status = r[r.length - 4];
             if (r[1].equals("top")) {
                 assertEquals("ok", status, () -> String.join(",", r));
             } else {
@@ -189,5 +189,25 @@ class RobotTrajectoryServiceTest {
                 () -> RobotTrajectoryService.parseTablePiece("0,ten,0"));
         org.junit.jupiter.api.Assertions.assertThrows(org.fresa.model.CamInputException.class,
                 () -> RobotTrajectoryService.parseRobotTable("1,2"));
+    }
+
+    @Test
+    void aDrillingsDwellIsAWaitInTheRobotPrograms() throws IOException {
+        Vec3 safe = new Vec3(100, 100, 225);
+        Toolpath hole = new Toolpath(List.of(new ToolpathSection("hole", Vec3.UNIT_Z, 10, 1, 3000, safe, List.of(
+                new Move.Rapid(new Vec3(100, 100, 205)),
+                new Move.Linear(new Vec3(100, 100, 190), F),
+                new Move.Dwell(new Vec3(100, 100, 190), 1.5),
+                new Move.Rapid(new Vec3(100, 100, 205))))));
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(hole, Robots.irb140(),
+                new Placement(400, -100, 200, 0, 0, 0), Placement.ORIGIN, 0.01, List.of("rapid", "krl"),
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT);
+        TaskOutcome o = RobotTrajectoryService.run(req, new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), () -> String.join("; ", o.problems()));
+        String mod = Files.readString(dir.resolve("program.mod"));
+        String src = Files.readString(dir.resolve("program.src"));
+        // the wait comes right after the move to the bottom (the third point), which stops there
+        assertTrue(mod.matches("(?s).*MoveL [^\\n]*,fine,[^\\n]* ! 2\\n    WaitTime \\\\InPos, 1\\.500;\\n.*"), mod);
+        assertTrue(src.contains(" ; 2\nWAIT SEC 1.500\n"), src);
     }
 }

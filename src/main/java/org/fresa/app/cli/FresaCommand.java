@@ -24,7 +24,7 @@ public final class FresaCommand implements Callable<Integer> {
      */
     static final List<Class<?>> COMMANDS = List.of(GuiCommand.class, RunCommand.class, StepncCommand.class,
             ToolpathCommand.class, RobotCommand.class, PocketCommand.class, CutCommand.class, GradeCommand.class,
-            SoleCommand.class, RobotsCommand.class, PostsCommand.class, BenchCommand.class);
+            SoleCommand.class, IkCommand.class, RobotsCommand.class, PostsCommand.class, BenchCommand.class);
 
     /** Returned when the desktop application was started and the JVM must stay up. */
     public static final int KEEP_RUNNING = -1;

@@ -3,6 +3,9 @@ package org.fresa.app.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.List;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import org.fresa.job.RobotTools;
 import org.fresa.job.SettingRanges;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTrajectoryService;
@@ -39,6 +42,16 @@ final class RobotCommand implements Callable<Integer> {
             description = "workpiece origin in the table frame (mm, deg; R = Rz*Ry*Rx)")
     String tablePiece;
 
+    @Option(names = "--spindle", paramLabel = "X,Y,Z[,RX,RY,RZ]",
+            description = "spindle nose in the flange frame (mm, deg; R = Rz*Ry*Rx); default: the robot file's tool"
+                    + " frame, else the flange")
+    String spindle;
+
+    @Option(names = "--tool-length", paramLabel = "MM",
+            description = "tool length from the spindle nose to the tip for every tool, overriding the STEP-NC"
+                    + " tools'; the TCP is spindle * Tz(tool length)")
+    Double toolLength;
+
     @Option(names = "--formats", paramLabel = "LIST", defaultValue = "csv,xml,png",
             description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
     String formats;
@@ -66,8 +79,12 @@ final class RobotCommand implements Callable<Integer> {
                     : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
                     SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm));
+            RobotTools.Choice tool = new RobotTools.Choice(
+                    spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
+                    toolLength == null ? OptionalDouble.empty()
+                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
             return CliSupport.intoFolder(out, folder -> RobotService.run(
-                    new RobotService.Settings(file, robot, table, piece, fmts, choices), folder, progress));
+                    new RobotService.Settings(file, robot, table, piece, fmts, choices, tool), folder, progress));
         });
     }
 }

@@ -1,0 +1,82 @@
+package org.fresa.app.cli;
+
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import java.util.concurrent.Callable;
+import org.fresa.job.IkService;
+import org.fresa.job.RobotTools;
+import org.fresa.job.RobotTrajectoryService;
+import org.fresa.job.SettingRanges;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code fresa ik TARGETS.csv --robot NAME|FILE --out DIR [ik options]}. */
+@Command(name = "ik", mixinStandardHelpOptions = true,
+        description = "Inverse kinematics of any list of tool poses (x,y,z,roll,pitch,yaw[,q1..qN] per row).")
+final class IkCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "TARGETS.csv",
+            description = "header x,y,z,roll,pitch,yaw[,q1,...,qN]; mm and deg in the robot base frame, "
+                    + "R = Rz(roll)*Ry(pitch)*Rx(yaw); optional seed joints")
+    Path targets;
+
+    @Option(names = "--robot", required = true, paramLabel = "NAME|FILE",
+            description = "built-in robot (irb140, adept-one, tricept806) or a robot file")
+    String robot;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
+    Path out;
+
+    @Option(names = "--tolerance-mm", paramLabel = "T", defaultValue = "1e-7",
+            description = "position tolerance (mm); the orientation's is T/100 rad; default ${DEFAULT-VALUE}")
+    double toleranceMm;
+
+    @Option(names = "--method", paramLabel = "default|thesis-dls", defaultValue = "default",
+            description = "Levenberg-Marquardt with the closed form where the robot has one (default), or the"
+                    + " thesis's damped least squares")
+    String method;
+
+    @Option(names = "--configuration", paramLabel = "K=V[,K=V]",
+            description = "keep only solutions in this arm configuration: cf1, cf4, cf6, cfx (ABB confdata), S, T"
+                    + " (KUKA Status and Turn)")
+    String configuration;
+
+    @Option(names = "--all", description = "every solution branch of each pose (column branch)")
+    boolean all;
+
+    @Option(names = "--spindle", paramLabel = "X,Y,Z[,RX,RY,RZ]",
+            description = "spindle nose in the flange frame (mm, deg); default: the robot file's tool frame, else"
+                    + " the flange")
+    String spindle;
+
+    @Option(names = "--tool-length", paramLabel = "MM",
+            description = "tool length from the spindle nose to the tip; the TCP is spindle * Tz(tool length)")
+    Double toolLength;
+
+    @Option(names = "--json", description = "print a JSON summary on stdout")
+    boolean json;
+
+    @Override
+    public Integer call() {
+        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+            double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
+            Map<String, Integer> conf = configuration == null ? Map.of()
+                    : IkService.parseConfiguration(configuration);
+            RobotTools.Choice tool = new RobotTools.Choice(
+                    spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
+                    toolLength == null ? OptionalDouble.empty()
+                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
+            IkService.Settings s = new IkService.Settings(targets, robot, tool, IkService.parseMethod(method), tol,
+                    conf, all);
+            return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
+        });
+    }
+}

@@ -1,0 +1,86 @@
+package org.fresa.job;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.fresa.geom.Transform3;
+
+/**
+ * The error of reached poses against their targets per axis, as the 2016 thesis's Table 5.3 gives
+ * it (mean, lower and upper error per axis): position target - reached along x, y, z of the robot
+ * base frame (mm), orientation as the rotation vector of R_target R_reached^T, whose components
+ * about x, y, z (rad) are the small turns that would take the reached tool onto the target.
+ * Not thread-safe.
+ */
+final class ErrorStatistics {
+
+    private static final String[] NAMES = {"x_mm", "y_mm", "z_mm", "rx_rad", "ry_rad", "rz_rad"};
+
+    private final double[] sum = new double[6];
+    private final double[] min = new double[6];
+    private final double[] max = new double[6];
+    private int count;
+    private double maxPosMm;
+    private double maxRotRad;
+
+    ErrorStatistics() {
+        java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(max, Double.NEGATIVE_INFINITY);
+    }
+
+    /** Adds one reached pose. */
+    void add(Transform3 target, Transform3 reached) {
+        double[] e = new double[6];
+        e[0] = target.tx() - reached.tx();
+        e[1] = target.ty() - reached.ty();
+        e[2] = target.tz() - reached.tz();
+        // E = R_t R_r^T; its skew part is sin(angle) * axis
+        Transform3 big = target.times(reached.inverse());
+        double sx = (big.r21() - big.r12()) / 2;
+        double sy = (big.r02() - big.r20()) / 2;
+        double sz = (big.r10() - big.r01()) / 2;
+        double s = Math.sqrt(sx * sx + sy * sy + sz * sz);
+        double angle = Math.atan2(s, (big.r00() + big.r11() + big.r22() - 1) / 2);
+        double k = s > 1e-300 ? angle / s : 1;
+        e[3] = sx * k;
+        e[4] = sy * k;
+        e[5] = sz * k;
+        maxPosMm = Math.max(maxPosMm, Math.sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+        maxRotRad = Math.max(maxRotRad, Math.abs(angle));
+        for (int i = 0; i < 6; i++) {
+            sum[i] += e[i];
+            min[i] = Math.min(min[i], e[i]);
+            max[i] = Math.max(max[i], e[i]);
+        }
+        count++;
+    }
+
+    /** The largest |target - reached| (mm). */
+    double maxPosMm() {
+        return maxPosMm;
+    }
+
+    /** The largest orientation error angle (rad). */
+    double maxRotRad() {
+        return maxRotRad;
+    }
+
+    /**
+     * {@code error_per_axis}: for each of x_mm, y_mm, z_mm, rx_rad, ry_rad, rz_rad its mean, min
+     * and max over the poses added (absent when there are none).
+     */
+    Map<String, Object> summary() {
+        Map<String, Object> axes = new LinkedHashMap<>();
+        if (count > 0) {
+            for (int i = 0; i < 6; i++) {
+                Map<String, Object> a = new LinkedHashMap<>();
+                a.put("mean", sum[i] / count);
+                a.put("min", min[i]);
+                a.put("max", max[i]);
+                axes.put(NAMES[i], a);
+            }
+        }
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("error_per_axis", axes);
+        return m;
+    }
+}

@@ -1,0 +1,80 @@
+package org.fresa.kin;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.fresa.geom.Transform3;
+import org.junit.jupiter.api.Test;
+
+/** The cold solve that trusts the closed form finds the same solutions as the search from every start. */
+class ColdIkTest {
+
+    static final double SAME_DEG = 1e-5;
+
+    static List<Transform3> randomPoses(SerialRobot r, int count, long seed) {
+        SplittableRandom rnd = new SplittableRandom(seed);
+        List<JointLimit> js = r.joints();
+        List<Transform3> out = new ArrayList<>();
+        for (int k = 0; k < count; k++) {
+            double[] q = new double[6];
+            for (int i = 0; i < 6; i++) {
+                q[i] = js.get(i).min() + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
+            }
+            out.add(r.forward(q));
+        }
+        return out;
+    }
+
+    static boolean contains(List<IkResult.Converged> set, double[] q) {
+        for (IkResult.Converged c : set) {
+            double d = 0;
+            for (int i = 0; i < q.length; i++) {
+                d = Math.max(d, Math.abs(c.q()[i] - q[i]));
+            }
+            if (d < SAME_DEG) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Test
+    void theClosedFormFindsEverySolutionTheSearchFromEveryStartFinds() {
+        // the search from every start finds the other whole turns of axes 4 and 6 only now and
+        // then (from a random start); the closed form gives them all, so its set holds the
+        // search's and the extra ones are the same poses
+        SerialRobot irb = Robots.irb140();
+        SerialIkSolver solver = (SerialIkSolver) irb.newSolver(IkOptions.DEFAULT);
+        int solutions = 0;
+        int extra = 0;
+        for (Transform3 t : randomPoses(irb, 500, 20261202L)) {
+            List<IkResult.Converged> fast = solver.solveAll(t);
+            List<IkResult.Converged> every = solver.solveAllFromStarts(t);
+            assertTrue(!fast.isEmpty());
+            for (IkResult.Converged c : every) {
+                assertTrue(contains(fast, c.q()), () -> "missing " + java.util.Arrays.toString(c.q()) + " for " + t);
+            }
+            for (IkResult.Converged c : fast) {
+                Transform3 reached = irb.forward(c.q());
+                assertTrue(reached.translationPart().distance(t.translationPart()) <= 1e-7, c::toString);
+                assertTrue(t.rotationAngleTo(reached) <= 1e-9, c::toString);
+                for (int i = 0; i < 6; i++) {
+                    JointLimit l = irb.joints().get(i);
+                    assertTrue(c.q()[i] >= l.min() && c.q()[i] <= l.max(), c::toString);
+                }
+                extra += contains(every, c.q()) ? 0 : 1;
+            }
+            solutions += fast.size();
+        }
+        assertTrue(solutions >= 500 + extra, solutions + " solutions, " + extra + " not found by every start");
+    }
+
+    @Test
+    void aPoseOutOfReachFindsNothing() {
+        SerialIkSolver solver = (SerialIkSolver) Robots.irb140().newSolver(IkOptions.DEFAULT);
+        assertEquals(0, solver.solveAll(Transform3.translation(2000, 0, 0)).size());
+    }
+}
