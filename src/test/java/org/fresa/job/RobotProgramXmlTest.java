@@ -47,6 +47,29 @@ class RobotProgramXmlTest {
         }
     }
 
+    /** A drilling's bottom: a wait there and the spindle running, both read back as written. */
+    @Test
+    void aDwellAndTheSpindleSpeedOfAMotionAreReadBack() throws Exception {
+        RobotProgram p = RobotProgramsForTest.sample();
+        java.util.List<RobotProgram.Motion> motions = new java.util.ArrayList<>(p.motions());
+        for (int i = 0; i < motions.size(); i++) {
+            RobotProgram.Motion m = motions.get(i);
+            motions.set(i, new RobotProgram.Motion(m.index(), m.workingstep(), m.type(), m.role(), m.jointValues(),
+                    m.target(), m.speedMmPerS(), i == 1 ? 0 : m.zoneMm(), i == 1 ? 1.5 : 0, 3000));
+        }
+        RobotProgram q = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
+        Path f = dir.resolve("dwell.xml");
+        try (OutputStream out = Files.newOutputStream(f)) {
+            RobotProgramXml.write(q, RobotProgramsForTest.FRONT_UPPER, out);
+        }
+        RobotProgram back = RobotProgramXml.read(f);
+        for (int i = 0; i < motions.size(); i++) {
+            assertEquals(motions.get(i).dwellS(), back.motions().get(i).dwellS());
+            assertEquals(3000, back.motions().get(i).spindleRpm());
+        }
+        assertEquals(1.5, back.motions().get(1).dwellS());
+    }
+
     @Test
     void theFileValidatesWithXmllint() throws Exception {
         Path xmllint = Path.of("/usr/bin/xmllint");

@@ -202,12 +202,19 @@ class RobotTrajectoryServiceTest {
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(hole, Robots.irb140(),
                 new Placement(400, -100, 200, 0, 0, 0), Placement.ORIGIN, 0.01, List.of("rapid", "krl"),
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT);
-        TaskOutcome o = RobotTrajectoryService.run(req, new OutputFolder(dir), ProgressMonitor.NONE);
+        // tool 1 is a drill: the program check lets it go straight down into the hole
+        TaskOutcome o = RobotTrajectoryService.write(RobotTrajectoryService.solve(req, ProgressMonitor.NONE), "program",
+                new OutputFolder(dir), org.fresa.check.Limits.milling().withTool(1, org.fresa.check.ToolLimits.drill()));
         assertEquals(0, o.exitStatus(), () -> String.join("; ", o.problems()));
         String mod = Files.readString(dir.resolve("program.mod"));
         String src = Files.readString(dir.resolve("program.src"));
         // the wait comes right after the move to the bottom (the third point), which stops there
         assertTrue(mod.matches("(?s).*MoveL [^\\n]*,fine,[^\\n]* ! 2\\n    WaitTime \\\\InPos, 1\\.500;\\n.*"), mod);
         assertTrue(src.contains(" ; 2\nWAIT SEC 1.500\n"), src);
+        // the spindle runs before the first motion of the hole and stops after the last
+        assertTrue(mod.indexOf("SetDO doFresaSpindleOn, 1;") < mod.indexOf("MoveAbsJ")
+                && mod.indexOf("SetDO doFresaSpindleOn, 1;") >= 0, mod);
+        assertTrue(mod.lastIndexOf("SetDO doFresaSpindleOn, 0;") > mod.lastIndexOf(" ! 3\n"), mod);
+        assertTrue(src.indexOf("$OUT[1] = TRUE") >= 0 && src.indexOf("$OUT[1] = TRUE") < src.indexOf("PTP"), src);
     }
 }
