@@ -123,15 +123,14 @@ public final class RobotService {
         Timing.mark("part 21 read and bound");
         java.util.Optional<String> nothing = program.whyNothingToMachine();
         if (nothing.isPresent()) {
-            return ToolpathService.nothingToMachine(program, nothing.get());
+            return ToolpathService.nothingToMachine(program, List.of(nothing.get()), out);
         }
         progress.progress(-1, "planning toolpaths");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, s.choices());
         Timing.mark("toolpaths planned");
         if (plan.planned() == 0) {
             // every workingstep refused: no trajectory and no robot program for nothing
-            return new TaskOutcome(1, plan.problems(), ToolpathService.nothingToMachine(program, "").summary(),
-                    List.of());
+            return ToolpathService.nothingToMachine(program, plan.problems(), out);
         }
         Toolpath path = plan.toolpath();
         RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());

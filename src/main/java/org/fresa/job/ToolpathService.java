@@ -54,13 +54,13 @@ public final class ToolpathService {
         StepNcProgram program = StepNcService.read(file, progress);
         java.util.Optional<String> nothing = program.whyNothingToMachine();
         if (nothing.isPresent()) {
-            return nothingToMachine(program, nothing.get());
+            return nothingToMachine(program, List.of(nothing.get()), out);
         }
         progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
         if (plan.planned() == 0) {
             // every workingstep refused: an empty program would look like a finished job
-            return new TaskOutcome(1, plan.problems(), nothingToMachine(program, "").summary(), List.of());
+            return nothingToMachine(program, plan.problems(), out);
         }
         Toolpath path = plan.toolpath();
         out.create();
@@ -90,13 +90,20 @@ public final class ToolpathService {
         return new TaskOutcome(status, problems, summary, out.written());
     }
 
-    /** A file with nothing to machine writes no program: an empty one would look like a finished job. */
-    static TaskOutcome nothingToMachine(StepNcProgram program, String why) {
+    /**
+     * A file with nothing to machine writes no program, since an empty one would look like a
+     * finished job: only {@code summary.json}, with the reasons.
+     */
+    static TaskOutcome nothingToMachine(StepNcProgram program, List<String> why, OutputFolder out)
+            throws IOException {
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("schema", program.schema());
-        summary.put("workingsteps", 0);
+        summary.put("workingsteps", program.workingsteps().size());
         summary.put("planned", 0);
-        return new TaskOutcome(1, List.of(why), summary, List.of());
+        summary.put("problems", why);
+        out.create();
+        out.writeString("summary.json", Json.writePretty(summary));
+        return new TaskOutcome(1, why, summary, out.written());
     }
 
     /** The job task. */

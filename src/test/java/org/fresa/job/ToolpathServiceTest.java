@@ -293,7 +293,8 @@ class ToolpathServiceTest {
         assertTrue(o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
                 o.problems().toString());
         assertFalse(o.problems().get(0).contains("not referenced"), o.problems().toString());
-        assertTrue(o.files().isEmpty());
+        assertEquals(List.of(dir.resolve("summary.json")), o.files());
         assertFalse(Files.exists(dir.resolve("program.ngc")));
+        assertTrue(Files.readString(dir.resolve("summary.json")).contains("integrated form"));
     }
 }
