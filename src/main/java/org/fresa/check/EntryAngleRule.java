@@ -8,7 +8,9 @@ import org.fresa.geom.Vec3;
  * angle (3 degrees for a cutter that does not cut at its centre), any angle for a drill or a
  * centre-cutting cutter asked to plunge. Descending means moving against the tool axis (from the
  * tip towards the spindle, +Z unless the post states another axis for the section); a descent
- * that ends where the tool does not touch the stock cuts air.
+ * that ends where the tool does not touch the stock cuts air, and one straight down into a hole
+ * the program made before, wide enough for the cutter's core ({@link Pilot}), meets material only
+ * with the cutting part of the end face.
  *
  * <p>The angle is measured from the plane normal to the tool axis over the whole block (a straight
  * move, or a helix about the axis, whose descent is uniform); other arcs are measured chord by
@@ -50,6 +52,10 @@ public record EntryAngleRule() implements Rule {
             Vec3 d = b.minus(a);
             double drop = -d.dot(axis) - q;
             if (drop <= 0 || !l.stock().touches(b, tool.radiusMm(), q)) {
+                return null;
+            }
+            if (p.size() == 2 && s.pilots().stream().anyMatch(h -> h.admits(a, b, axis, tool.radiusMm(), q))) {
+                // straight down into a hole made before: its core that does not cut meets no material
                 return null;
             }
             double side = helix ? s.horizontalMm() : d.minus(axis.times(d.dot(axis))).norm();

@@ -145,6 +145,7 @@ public final class ProgramCheck {
         private int selected;
         private int tool;
         private Vec3 axis = Vec3.UNIT_Z;
+        private final List<Pilot> drilled = new ArrayList<>();
 
         Machine(NcDialect dialect, Limits limits) {
             this.dialect = dialect;
@@ -237,7 +238,9 @@ public final class ProgramCheck {
                 y = ny;
                 z = nz;
             }
-            Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis);
+            Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis,
+                    drilled);
+            madeHole(step);
             // a tool change and the program's end stop the spindle after the block
             if (b.has("M", 6)) {
                 tool = selected;
@@ -247,6 +250,24 @@ public final class ProgramCheck {
                 on = false;
             }
             return step;
+        }
+
+        /**
+         * Remembers the hole a tool that may plunge leaves when it goes straight down with
+         * its spindle on, along the section's tool axis: a later cutter may enter it ({@link Pilot}).
+         */
+        private void madeHole(Step s) {
+            ToolLimits t = limits.tool(s.tool());
+            List<Vec3> p = s.path();
+            if (!s.feedMove() || !s.cuttingOn() || !t.plunge() || !(t.radiusMm() > 0) || p.size() != 2) {
+                return;
+            }
+            Vec3 d = p.get(1).minus(p.get(0));
+            double along = d.dot(s.axis());
+            if (along < 0 && d.minus(s.axis().times(along)).norm() <= dialect.quantumMm()
+                    && Double.isFinite(p.get(1).x() + p.get(1).y() + p.get(1).z())) {
+                drilled.add(new Pilot(p.get(1), s.axis(), t.radiusMm()));
+            }
         }
 
         private void switchCutting(Words.Block b) {

@@ -20,12 +20,23 @@ import org.fresa.geom.Vec3;
  * @param tool the tool in the spindle (0 when none was called)
  * @param dwell a G04 block: its address words are a time
  * @param axis the tool axis, from the tip towards the spindle (+Z unless the post states another)
+ * @param pilots the holes the program went straight down before this block ({@link Pilot})
  */
 public record Step(Words.Block block, NcDialect dialect, boolean feedMove, List<Vec3> path, boolean arcInPlane,
-        double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell, Vec3 axis) {
+        double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell, Vec3 axis,
+        List<Pilot> pilots) {
+
+    /** A step with no holes made before it. */
+    public Step(Words.Block block, NcDialect dialect, boolean feedMove, List<Vec3> path, boolean arcInPlane,
+            double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell,
+            Vec3 axis) {
+        this(block, dialect, feedMove, path, arcInPlane, horizontalMm, cuttingOn, spindleRpm, feedMmPerMin, tool, dwell,
+                axis, List.of());
+    }
 
     public Step {
         path = List.copyOf(path);
+        pilots = List.copyOf(pilots);
         java.util.Objects.requireNonNull(axis, "axis");
     }
 

@@ -176,8 +176,72 @@ public final class ProgramChecks {
         if (block.isPresent()) {
             Limits.Stock stock = box(block.get());
             l = l.withStock(stock).withFloor(stock.minZMm(), allowanceMm);
+        } else {
+            l = l.withStock(statedStock(program, sections, plan.steps(), byId));
         }
         return l;
+    }
+
+    /**
+     * The stock of a file that gives no workpiece block, as far as the file states it: its planar
+     * faces' removal boundaries (the part's top, machined flat), grown over every point another
+     * workingstep cuts (material is wherever a feature is cut), from below up to the highest
+     * feature's top. Outside it a descent is in the air (a face's passes start beyond its
+     * boundary). A file with no planar face states no top: the stock is unknown and every descent
+     * counts.
+     */
+    static Limits.Stock statedStock(StepNcProgram program, List<ToolpathSection> sections,
+            List<ToolpathPlanner.PlannedStep> steps, Map<Long, MachiningWorkingstep> byId) {
+        double minX = Double.POSITIVE_INFINITY;
+        double minY = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY;
+        double maxY = Double.NEGATIVE_INFINITY;
+        double top = Double.NEGATIVE_INFINITY;
+        boolean face = false;
+        for (MachiningWorkingstep w : program.workingsteps()) {
+            org.fresa.stepnc.Feature f = w.feature();
+            Transform3 place = f.placement();
+            top = Math.max(top, place.applyToPoint(Vec3.ZERO).z());
+            if (f.type() != org.fresa.stepnc.Feature.FeatureType.PLANAR_FACE) {
+                continue;
+            }
+            org.fresa.geom.Box2 b;
+            try {
+                b = ToolpathPlanner.faceBoundary(f);
+            } catch (IllegalArgumentException | UnsupportedOperationException e) {
+                return Limits.Stock.UNKNOWN;
+            }
+            face = true;
+            for (Vec3 c : List.of(new Vec3(b.minX(), b.minY(), 0), new Vec3(b.maxX(), b.minY(), 0),
+                    new Vec3(b.maxX(), b.maxY(), 0), new Vec3(b.minX(), b.maxY(), 0))) {
+                Vec3 p = place.applyToPoint(c);
+                minX = Math.min(minX, p.x());
+                minY = Math.min(minY, p.y());
+                maxX = Math.max(maxX, p.x());
+                maxY = Math.max(maxY, p.y());
+            }
+        }
+        if (!face || !Double.isFinite(top)) {
+            return Limits.Stock.UNKNOWN;
+        }
+        for (int i = 0; i < sections.size(); i++) {
+            MachiningWorkingstep w = byId.get(steps.get(i).workingstepInstanceId());
+            if (w != null && w.feature().type() == org.fresa.stepnc.Feature.FeatureType.PLANAR_FACE) {
+                continue;
+            }
+            for (org.fresa.model.Move m : sections.get(i).moves()) {
+                // an arc reaches at most its radius from its centre
+                double reach = m instanceof org.fresa.model.Move.Circular c ? c.end().minus(c.center()).norm() : 0;
+                Vec3 at = m instanceof org.fresa.model.Move.Circular c ? c.center() : m.end();
+                if (m instanceof org.fresa.model.Move.Linear || m instanceof org.fresa.model.Move.Circular) {
+                    minX = Math.min(minX, at.x() - reach);
+                    minY = Math.min(minY, at.y() - reach);
+                    maxX = Math.max(maxX, at.x() + reach);
+                    maxY = Math.max(maxY, at.y() + reach);
+                }
+            }
+        }
+        return new Limits.Stock(minX, minY, Double.NEGATIVE_INFINITY, maxX, maxY, top);
     }
 
     /** The block's bounding box in the workpiece frame. */

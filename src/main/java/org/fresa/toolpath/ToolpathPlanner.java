@@ -321,6 +321,31 @@ public final class ToolpathPlanner {
         double d = stepover(op, t);
         Vec2 course = f.courseOfTravel().flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
                 .map(v -> new Vec2(v.x(), v.y())).orElse(Vec2.UNIT_X);
+        Box2 box = faceBoundary(f);
+        bounded("the face", Math.max(box.width(), box.height()), "the stepover", d);
+        boolean bidirectional = true;
+        var st = op.strategy().map(org.fresa.stepnc.Strategy::type);
+        if (st.isPresent() && st.get() == org.fresa.stepnc.Strategy.StrategyType.UNIDIRECTIONAL) {
+            bidirectional = false;
+        } else if (st.isPresent() && st.get() != org.fresa.stepnc.Strategy.StrategyType.BIDIRECTIONAL) {
+            problems.add("workingstep '" + label + "': " + st.get() + " on a planar face is milled bidirectionally");
+        }
+        double overcut = op.overcutLengthMm().orElse(0.25 * t.diameterMm());
+        double bottom = h.bottomZ() + (isRough(op) ? op.allowanceBottomMm().orElse(0) : 0);
+        Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), bottom);
+        boolean left = !op.strategy().flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
+                .map(x -> x.equalsIgnoreCase("RIGHT")).orElse(false);
+        return FaceMilling.section(label, box, course, hh, t, d, op.axialCuttingDepthMm().orElse(0), overcut,
+                bidirectional, left);
+    }
+
+    /**
+     * A planar face's removal boundary in the feature frame: its rectangular profile, or its
+     * linear profile swept along the course of travel.
+     */
+    public static Box2 faceBoundary(Feature f) {
+        Vec2 course = f.courseOfTravel().flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
+                .map(v -> new Vec2(v.x(), v.y())).orElse(Vec2.UNIT_X);
         double along = f.courseOfTravel().flatMap(c -> c.distanceMm().isPresent()
                 ? Optional.of(c.distanceMm().getAsDouble()) : Optional.empty()).orElse(0.0);
         Box2 box;
@@ -339,21 +364,7 @@ public final class ToolpathPlanner {
         } else {
             throw new UnsupportedOperationException("planar faces bounded by " + sp.entity() + " are not supported yet");
         }
-        bounded("the face", Math.max(box.width(), box.height()), "the stepover", d);
-        boolean bidirectional = true;
-        var st = op.strategy().map(org.fresa.stepnc.Strategy::type);
-        if (st.isPresent() && st.get() == org.fresa.stepnc.Strategy.StrategyType.UNIDIRECTIONAL) {
-            bidirectional = false;
-        } else if (st.isPresent() && st.get() != org.fresa.stepnc.Strategy.StrategyType.BIDIRECTIONAL) {
-            problems.add("workingstep '" + label + "': " + st.get() + " on a planar face is milled bidirectionally");
-        }
-        double overcut = op.overcutLengthMm().orElse(0.25 * t.diameterMm());
-        double bottom = h.bottomZ() + (isRough(op) ? op.allowanceBottomMm().orElse(0) : 0);
-        Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), bottom);
-        boolean left = !op.strategy().flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
-                .map(x -> x.equalsIgnoreCase("RIGHT")).orElse(false);
-        return FaceMilling.section(label, box, course, hh, t, d, op.axialCuttingDepthMm().orElse(0), overcut,
-                bidirectional, left);
+        return box;
     }
 
     private static boolean isRough(Operation op) {

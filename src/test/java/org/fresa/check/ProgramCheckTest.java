@@ -199,6 +199,27 @@ class ProgramCheckTest {
     }
 
     @Test
+    void aCutterMayGoStraightDownIntoAHoleDrilledBeforeAtLeastHalfItsDiameter() {
+        String drill = "T1 M6\nS1000 M3\nG0 X20 Y20 Z5\nG1 Z-10 F100\nG0 Z5\n";
+        String mill = "T2 M6\nS1000 M3\nG0 X20 Y20 Z5\nG1 Z%s F100\nG0 Z5\nM5\nM2\n";
+        Limits l = MILL.withHeights(0, -10, 0).withTool(1, ToolLimits.drill().withRadiusMm(5));
+        Limits wide = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(10));
+        // a 10 mm pilot under a 20 mm cutter: its core is over the void down to the drill's tip
+        assertTrue(ProgramCheck.of(drill + mill.formatted("-10"), NcDialect.LINUXCNC, wide).ok());
+        // deeper than the drill went, before the drill, a pilot narrower than half the cutter, off its axis
+        assertEquals("entry angle", fails(drill + mill.formatted("-10.5"), NcDialect.LINUXCNC, wide).rule().name());
+        assertEquals("entry angle", fails(mill.formatted("-10").replace("M2\n", "") + drill + "M2\n",
+                NcDialect.LINUXCNC, wide).rule().name());
+        Limits huge = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(10.5));
+        assertEquals("entry angle", fails(drill + mill.formatted("-10"), NcDialect.LINUXCNC, huge).rule().name());
+        Limits small = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(6));
+        assertTrue(ProgramCheck.of(drill + mill.formatted("-10").replace("X20 Y20", "X22 Y20"), NcDialect.LINUXCNC,
+                small).ok());
+        assertEquals("entry angle", fails(drill + mill.formatted("-10").replace("X20 Y20", "X22.1 Y20"),
+                NcDialect.LINUXCNC, small).rule().name());
+    }
+
+    @Test
     void entryAngleRuleFollowsTheToolAxisThePostStates() {
         String p = GOOD.replace("(slot)", "(slot tool 1 D8.000)\n(tool axis 0.000 -1.000 0.000 is not +Z: needs the part turned)")
                 .replace("G1 X57.272 Y0.000 Z-2.000", "G1 X0.000 Y2.000 Z0.000");

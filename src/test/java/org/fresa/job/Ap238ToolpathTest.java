@@ -61,6 +61,7 @@ class Ap238ToolpathTest {
         List<ToolpathCsv.Row> r = ToolpathCsv.rows(arm.toolpath(), NcPosts.CHORD_TOLERANCE_MM);
         assertEquals(r.size(), a.size());
         int drillPoints = 0;
+        double deepestDz = 0;
         int slowFeeds = 0;
         for (int i = 0; i < r.size(); i++) {
             ToolpathCsv.Row x = r.get(i);
@@ -71,8 +72,14 @@ class Ap238ToolpathTest {
             double dz = Math.abs(x.point().z() - y.point().z());
             if (drillFeed && dz > 1e-6) {
                 drillPoints++;
-                // the tip of a 120 deg point against the ARM's reading of its 59
-                assertEquals(10 * (Math.tan(Math.toRadians(59)) - Math.tan(Math.toRadians(30))), dz, 1e-9);
+                // the AIM gives cutting_depth 30: the tip goes to it; the ARM gives none: its through
+                // hole is drilled 30 deep plus its point (its 59 read as the half angle) and the 1 mm breakthrough
+                // (the pecks before it are spread over the two depths)
+                deepestDz = Math.max(deepestDz, dz);
+                assertTrue(Math.hypot(x.point().x() - y.point().x(), x.point().y() - y.point().y()) <= 1e-6);
+            } else if (x.workingstep().equals("WS REAM HOLE1") && x.move().equals("feed") && dz > 1e-6) {
+                // the AIM's reamer stops at its cutting_depth 30, the ARM's passes the exit by the breakthrough
+                assertEquals(1, dz, 1e-9, "row " + i);
                 assertTrue(Math.hypot(x.point().x() - y.point().x(), x.point().y() - y.point().y()) <= 1e-6);
             } else {
                 assertTrue(x.point().distance(y.point()) <= 1e-6, "row " + i + ": " + x + " vs " + y);
@@ -84,6 +91,7 @@ class Ap238ToolpathTest {
         }
         if (aim.steps().stream().anyMatch(s -> s.label().equals("WS DRILL HOLE1"))) {
             assertEquals(3, drillPoints);
+            assertEquals(10 * Math.tan(Math.toRadians(59)) + 1, deepestDz, 1e-9);
         }
         assertTrue(slowFeeds > 0);
         StepNcProgram p = StepNcReader.read(J6);
@@ -97,7 +105,12 @@ class Ap238ToolpathTest {
     void annexJ6sProgramIsAcceptedByLinuxCnc(@TempDir Path dir) throws Exception {
         assumeTrue(Files.isRegularFile(J6), TestInputs.sharedCorpusAbsent(AP238));
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        interpreted(J6, dir);
+        // the pockets' MILLING_TECHNOLOGY gives no feed: refused (no feed is guessed), the rest written;
+        // the drill and the reamer stop at cutting_depth 30, short of a breakthrough, with a warning
+        List<String> problems = interpreted(J6, dir, 1);
+        assertEquals(2, problems.stream().filter(x -> x.contains("no feed is guessed")).count(), problems.toString());
+        assertTrue(problems.stream().anyMatch(x -> x.startsWith("workingstep 'WS DRILL HOLE1': cutting_depth 30 mm")
+                && x.contains("less than the breakthrough 1 mm")), problems.toString());
     }
 
     @Test
@@ -115,13 +128,19 @@ class Ap238ToolpathTest {
     }
 
     private static void interpreted(Path input, Path dir) throws Exception {
+        interpreted(input, dir, 0);
+    }
+
+    /** Runs the toolpath task, expects its exit status, interprets its program; returns its problems. */
+    private static List<String> interpreted(Path input, Path dir, int exitStatus) throws Exception {
         TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(exitStatus, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(StepNcReader.read(input), Tolerance.DEFAULT);
         List<Rs274.Canon> expected = ExpectedMotions.of(plan.toolpath(), false, NcPosts.CHORD_TOLERANCE_MM);
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
+        return o.problems();
     }
 
     static final Path J4 = AP238.resolve("annexJ4-cc1-simple-block.stp");
@@ -160,11 +179,11 @@ class Ap238ToolpathTest {
     /**
      * Annex J.4 with a spindle speed (the annex gives 0 rev/min): one section whose every point
      * lies on the file's curves within 1e-6 mm (an arc's radius is its trimming points' distance
-     * from its centre), arcs kept as arcs, accepted by LinuxCNC.
+     * from its centre), arcs kept as arcs; its straight-down descent onto the contour refused by the program check.
      */
     @Test
     @CorpusCheck
-    void annexJ4WithASpindleSpeedIsFollowedOnItsCurves(@TempDir Path dir) throws Exception {
+    void annexJ4WithASpindleSpeedIsFollowedOnItsCurvesAndItsPlungeRefused(@TempDir Path dir) throws Exception {
         assumeTrue(Files.isRegularFile(J4), TestInputs.sharedCorpusAbsent(AP238));
         String text = Files.readString(J4).replace("NUMERIC_MEASURE(0.),\n#483)", "NUMERIC_MEASURE(1000.),\n#483)")
                 .replace("NUMERIC_MEASURE(0.),\r\n#483)", "NUMERIC_MEASURE(1000.),\r\n#483)");
@@ -180,7 +199,13 @@ class Ap238ToolpathTest {
                 .filter(m -> m instanceof org.fresa.model.Move.Circular).count());
         Path out = dir.resolve("out");
         TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
+        // the file's own path goes straight down 3 mm onto its contour; the file states no stock (no
+        // block, no face), so the descent counts as into material and the program is refused, the
+        // toolpath written
+        assertEquals(1, o.exitStatus(), o.problems().toString());
+        assertTrue(o.problems().stream().anyMatch(x -> x.startsWith("program.ngc not written")
+                && x.contains("line 12") && x.contains("entry angle") && x.contains("(a plunge)")), o.problems().toString());
+        assertFalse(Files.exists(out.resolve("program.ngc")));
         List<String[]> rows = rows(out.resolve("toolpath.csv"));
         for (String[] r : rows.subList(1, rows.size())) {
             org.fresa.geom.Vec3 q = new org.fresa.geom.Vec3(Double.parseDouble(r[3]), Double.parseDouble(r[4]),
@@ -191,9 +216,6 @@ class Ap238ToolpathTest {
             }
             assertTrue(best <= 1e-6, "row " + r[0] + " is " + best + " mm from the file's curves");
         }
-        assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(out.resolve("program.ngc"), 18);
-        assertEquals(0, r.exitStatus(), r.stderr());
     }
 
     private static double distance(org.fresa.geom.Vec3 q, org.fresa.stepnc.Profile.Segment c) {

@@ -61,9 +61,11 @@ class FeedRateTest {
         // #276: the top pocket with the Ø16 four-tooth mill, feed 0.0505, spindle 2884.683343540603 rpm
         ToolpathSection mill = plan.sectionOf(276).orElseThrow();
         double expected = 0.0505 * 4 * 2884.683343540603;
-        List<Double> feeds = mill.moves().stream().filter(m -> m instanceof Move.Linear)
-                .map(m -> ((Move.Linear) m).feedMmPerMin()).distinct().toList();
-        // cutting at the feed, plunging at half of it
+        List<Double> feeds = mill.moves().stream()
+                .filter(m -> m instanceof Move.Linear || m instanceof Move.Circular)
+                .map(m -> m instanceof Move.Linear l ? l.feedMmPerMin() : ((Move.Circular) m).feedMmPerMin())
+                .distinct().toList();
+        // cutting at the feed, entering (down the helix) at half of it
         assertEquals(List.of(expected / 2, expected).stream().sorted().toList(), feeds.stream().sorted().toList());
         List<String> notes = plan.problems().stream().filter(s -> s.contains("no unit in the file")).toList();
         assertEquals(4, notes.size(), notes.toString());
