@@ -111,32 +111,38 @@ public final class ProgramChecks {
     }
 
     /**
-     * Checks a robot program before its formats are written: every linear motion on the part with
-     * the spindle running in range, speeds and joint values in range, no entry along the tool axis
-     * steeper than its tool allows (each workingstep's tool as the toolpath numbers it). The
-     * program is in the robot's base frame: the stock and the floor, given in the workpiece's, are
-     * left out.
+     * Checks a robot program before its formats are written. The robot follows the toolpath, so
+     * what depends on the material (entries into the stock, pilot holes drilled before, the floor)
+     * is checked on the toolpath in the workpiece frame, where the stock is known, exactly as
+     * {@code program.ngc} is; the robot program itself is then checked for what only it has:
+     * every linear motion on the part with the spindle running in range, speeds and joint values
+     * in range.
      *
      * @return the first failure, or empty
      */
     public static Optional<Failure> robot(org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path,
             Limits limits) {
-        // a label may name several workingsteps with different tools (example 2's holes: a drill,
-        // then a face mill): the motions carry only the label, so the strictest of its tools applies
+        java.io.StringWriter nc = new java.io.StringWriter();
+        try {
+            org.fresa.post.NcPosts.byName("linuxcnc").orElseThrow().write(path, "robot", nc);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        Optional<Failure> onPath = ProgramCheck.of(nc.toString(), NcDialect.LINUXCNC, limits).failure();
+        if (onPath.isPresent()) {
+            Failure f = onPath.get();
+            return Optional.of(new Failure(f.line(), "the toolpath the robot follows, " + f.where(), f.text(), f.rule(),
+                    f.reason()));
+        }
+        // the entries were checked on the path: here each tool may go along its axis
         Map<String, Integer> tools = new HashMap<>();
+        Limits onRobot = limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0);
         for (ToolpathSection s : path.sections()) {
-            tools.merge(s.label(), s.toolNumber(), (a, b) -> stricter(limits.tool(a), limits.tool(b)) ? a : b);
+            tools.putIfAbsent(s.label(), s.toolNumber());
+            onRobot = onRobot.withTool(s.toolNumber(), ToolLimits.centreCuttingPlunge()
+                    .withKind("entries checked on the toolpath").withRadiusMm(s.toolDiameterMm() / 2));
         }
-        return ProgramCheck.of(program, limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0), tools)
-                .failure();
-    }
-
-    /** True when tool a may enter the material no more steeply than tool b. */
-    private static boolean stricter(ToolLimits a, ToolLimits b) {
-        if (a.plunge() != b.plunge()) {
-            return !a.plunge();
-        }
-        return a.entryAngleDeg() <= b.entryAngleDeg();
+        return ProgramCheck.of(program, onRobot, tools).failure();
     }
 
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */

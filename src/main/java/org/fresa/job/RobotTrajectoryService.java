@@ -55,8 +55,9 @@ public final class RobotTrajectoryService {
      */
     public record Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
             double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
-            Map<String, Transform3> tcpByLabel) {
+            Map<String, Transform3> tcpByLabel, org.fresa.check.Limits checkLimits) {
         public Request {
+            Objects.requireNonNull(checkLimits, "checkLimits");
             Objects.requireNonNull(toolpath, "toolpath");
             Objects.requireNonNull(robot, "robot");
             Objects.requireNonNull(robotTable, "robotTable");
@@ -67,6 +68,17 @@ public final class RobotTrajectoryService {
             if (!(chordToleranceMm > 0)) {
                 throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
             }
+        }
+
+        /**
+         * Without the part's limits: every tool a milling cutter that does not cut at its centre
+         * and no stock known, the strictest reading of the program check.
+         */
+        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
+                double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
+                Map<String, Transform3> tcpByLabel) {
+            this(toolpath, robot, robotTable, tablePiece, chordToleranceMm, formats, options, tcpByLabel,
+                    org.fresa.check.Limits.milling());
         }
 
         /** Every workingstep with the robot's own tool frame. */
@@ -182,7 +194,7 @@ public final class RobotTrajectoryService {
      * @param programName the name robot programs carry
      */
     public static TaskOutcome write(Solved solved, String programName, OutputFolder out) throws IOException {
-        return write(solved, programName, out, org.fresa.check.Limits.milling());
+        return write(solved, programName, out, solved.request().checkLimits());
     }
 
     /**

@@ -112,7 +112,7 @@ final class OutputViewModel {
     static TaskOutcome write(RobotRunModel.Run run, List<String> formats, OutputFolder out) throws IOException {
         RobotTrajectoryService.Request r = run.solved().request();
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(r.toolpath(), r.robot(), r.robotTable(),
-                r.tablePiece(), r.chordToleranceMm(), formats, r.options(), r.tcpByLabel());
+                r.tablePiece(), r.chordToleranceMm(), formats, r.options(), r.tcpByLabel(), r.checkLimits());
         return RobotTrajectoryService.write(new RobotTrajectoryService.Solved(req, run.solved().targets(),
                 run.solved().result()), run.programName(), out);
     }
@@ -144,7 +144,7 @@ final class OutputViewModel {
     /** The program check's first failure of a run's robot program (as Save would check it), or empty. */
     static java.util.Optional<org.fresa.check.Failure> refusal(RobotRunModel.Run run) {
         return org.fresa.job.ProgramChecks.robot(program(run), run.solved().request().toolpath(),
-                org.fresa.check.Limits.milling());
+                run.solved().request().checkLimits());
     }
 
     /**

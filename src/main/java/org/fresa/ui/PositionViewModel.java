@@ -164,7 +164,8 @@ final class PositionViewModel {
                 stepnc.toString());
         RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
                 tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT,
-                tools.tcpByLabel());
+                tools.tcpByLabel(), org.fresa.job.ProgramChecks.stepnc(program, plan,
+                        org.fresa.toolpath.PlanningChoices.DEFAULT));
         return RobotTrajectoryService.solve(req, progress);
     }
 
