@@ -190,7 +190,16 @@ final class PocketTab implements ModuleTab {
     private static void mark(JTextField f, Map<String, String> problems) {
         String p = problems.get(f.getName());
         f.setBackground(p == null ? Color.WHITE : BAD);
-        f.setToolTipText(p);
+        // a valid field shows what it means again, in place of the problem it had
+        f.setToolTipText(p != null ? p : meaning(f));
+    }
+
+    private static String meaning(JTextField f) {
+        String tip = Tooltips.of("Pocket", f.getName());
+        if (tip == null && f.getClientProperty("labeledBy") instanceof JLabel l) {
+            tip = Tooltips.of("Pocket", l.getText());
+        }
+        return tip;
     }
 
     private void compute() {

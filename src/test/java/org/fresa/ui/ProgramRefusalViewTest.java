@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import javax.swing.JTextArea;
+import javax.swing.text.Highlighter;
+import org.assertj.swing.edt.GuiActionRunner;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.junit.jupiter.api.Test;
@@ -30,11 +32,14 @@ class ProgramRefusalViewTest {
         PocketViewModel.Result r = PocketViewModel.Result.checked(PlotScene.empty("x"), "", nc, CAVITY03);
         assertEquals(3, r.refusal().orElseThrow().line());
         assertEquals("spindle", r.refusal().get().rule().name());
-        JTextArea text = new JTextArea(nc);
-        assertTrue(ProgramHighlight.line(text, 3));
-        assertEquals(1, text.getHighlighter().getHighlights().length);
-        assertEquals(nc.indexOf("N15"), text.getHighlighter().getHighlights()[0].getStartOffset());
-        assertFalse(ProgramHighlight.line(text, 9));
+        // Swing components are made and read on the event thread: AssertJ Swing's check of that
+        // stays installed after a GUI test has run in the same JVM
+        JTextArea text = GuiActionRunner.execute(() -> new JTextArea(nc));
+        assertTrue(GuiActionRunner.execute(() -> ProgramHighlight.line(text, 3)));
+        Highlighter.Highlight[] marked = GuiActionRunner.execute(() -> text.getHighlighter().getHighlights());
+        assertEquals(1, marked.length);
+        assertEquals(nc.indexOf("N15"), marked[0].getStartOffset());
+        assertFalse(GuiActionRunner.execute(() -> ProgramHighlight.line(text, 9)));
     }
 
     @Test

@@ -37,7 +37,10 @@ class StepNcTabGuiTest extends WindowGuiTest {
 
         window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
         shoot("stepnc-selected.png");
-        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile(".* of .*: move 347 of 347.*"));
+        // per layer of 15: a rapid to 1 mm above the layer, a helix entry and a full circle at its
+        // floor, the layer's passes, the retract; the end is the last retract to the security plane
+        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile(
+                ".* of .*: move 362 of 362 \\(rapid\\), tool at \\(86, 70, 30\\) mm"));
         assertTrue(window.textBox("stepnc-details").text().contains("Cycle time of this workingstep"));
 
         // Alt+R focuses the replay slider; Home goes to the start, each Right arrow one step on
@@ -56,7 +59,7 @@ class StepNcTabGuiTest extends WindowGuiTest {
         }
         assertEquals(70, value(slider));
         String text = window.label("stepnc-replay-text").target().getText();
-        assertTrue(text.matches(".* of .*: move \\d+ of 347 .*"), text);
+        assertTrue(text.matches(".* of .*: move \\d+ of 362 .*"), text);
         assertNotEquals(toolAtStart, toolCircle(), "the tool marker moved");
 
         // one layer: the replay goes to its end

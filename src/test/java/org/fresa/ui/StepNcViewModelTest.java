@@ -292,21 +292,27 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, "WS FINISH POCKET1");
         StepNcViewModel.Shown sh = vm.shown().orElseThrow();
         Vec3 at = sh.start();
+        boolean helix = false;
+        boolean planar = false;
         for (Move m : sh.moves()) {
             if (m instanceof Move.Circular c) {
+                // the pass enters on a helix (it rises along the arc's normal) and then cuts planar
+                // arcs: both keep their radius in the arc's plane and rise evenly with the sweep
                 Vec3 mid = StepNcViewModel.pointOn(at, m, 0.5);
-                // the helix entry goes down about its axis; the pass's arcs stay at depth
-                assertEquals(Math.hypot(at.x() - c.center().x(), at.y() - c.center().y()),
-                        Math.hypot(mid.x() - c.center().x(), mid.y() - c.center().y()), 1e-9);
-                assertTrue(mid.z() <= Math.max(at.z(), c.end().z()) + 1e-9 && mid.z() >= c.end().z() - 1e-9);
-                if (Math.abs(at.z() - c.end().z()) < 1e-12) {
-                    assertEquals(c.end().z(), mid.z(), 1e-9);
-                    return;
-                }
+                assertEquals(radiusInPlane(at, c), radiusInPlane(mid, c), 1e-9);
+                double rise = c.end().minus(at).dot(c.normal());
+                assertEquals(rise / 2, mid.minus(at).dot(c.normal()), 1e-9);
+                helix |= Math.abs(rise) > 1e-9;
+                planar |= Math.abs(rise) <= 1e-9;
             }
             at = m.end();
         }
-        throw new AssertionError("no arc in the finish pass");
+        assertTrue(helix && planar, "helix " + helix + ", planar arc " + planar);
+    }
+
+    private static double radiusInPlane(Vec3 p, Move.Circular c) {
+        Vec3 d = p.minus(c.center());
+        return d.minus(c.normal().times(d.dot(c.normal()))).norm();
     }
 
     @Test
