@@ -146,6 +146,14 @@ class OneDocumentGuiTest extends WindowGuiTest {
         open(EXAMPLE2);
         Job opened = model().job();
         window.tabbedPane("tabs").selectTab("Position");
+        // on a loaded machine the tab's fields may be shown a moment after the tab is selected
+        waitFor("the Position tab's fields are shown", () -> window.robot().finder().findAll(
+                new GenericTypeMatcher<javax.swing.text.JTextComponent>(javax.swing.text.JTextComponent.class, true) {
+                    @Override
+                    protected boolean isMatching(javax.swing.text.JTextComponent c) {
+                        return "position-rt-X".equals(c.getName());
+                    }
+                }).size() == 1);
         window.textBox("position-rt-X").setText("300");
         Job edited = model().job();
         assertNotEquals(opened, edited);
