@@ -244,7 +244,7 @@ public final class Benchmarks {
     static double pocketMs() throws IOException, CamInputException {
         Path dad = inputFile(CAVITY02);
         try {
-            return pocketMs(new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, "linuxcnc"));
+            return pocketMs(new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, PocketPost.LINUXCNC));
         } finally {
             Files.deleteIfExists(dad);
         }
@@ -255,7 +255,7 @@ public final class Benchmarks {
         for (int r = -10; r < ms.length; r++) {
             long t0 = System.nanoTime();
             try {
-                PocketService.program(PocketService.plan(s), "linuxcnc", "cavity02");
+                PocketService.program(PocketService.plan(s), PocketPost.LINUXCNC, "cavity02");
             } catch (org.fresa.pocket.ToolTooLargeException e) {
                 throw new IllegalStateException(e.getMessage(), e);
             }

@@ -65,7 +65,7 @@ public final class JobRunner {
             case POCKET: {
                 JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
                 out.create();
-                String ext = s.post().startsWith("7m") ? ".nc" : ".ngc";
+                String ext = s.post().sevenM() ? ".nc" : ".ngc";
                 return PocketService.run(s, out.resolve("pocket" + ext), progress);
             }
             case CUT:

@@ -7,6 +7,8 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import org.fresa.geom.Vec2;
 import org.fresa.model.Placement;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 
 /**
  * The settings of each module, as they appear in a job file (schemas/job.xsd) and in the tabs.
@@ -75,20 +77,28 @@ public final class JobSettings {
     /**
      * Pocket milling technology (the 1988 thesis's data, samples/pocket/jobs.csv).
      *
-     * @param direction {@code climb} (the default: counter-clockwise around the walls with a clockwise
-     *     spindle) or {@code conventional}; {@code 7m-compat} always writes the thesis's own direction
-     * @param entry how the tool enters the material: {@code auto} (the default: a helix where it has
-     *     room, else a zig-zag ramp), {@code helix}, {@code ramp} or {@code plunge} (centre-cutting tools
-     *     only); {@code 7m-compat} keeps the thesis's vertical plunge
+     * @param post the post; {@code 7m-compat} always writes the thesis's own direction and entries
+     * @param direction climb (the default: counter-clockwise around the walls with a clockwise
+     *     spindle) or conventional
+     * @param entry how the tool enters the material: auto (the default: a helix where it has room,
+     *     else a zig-zag ramp), helix, ramp or plunge (centre-cutting tools only); {@code 7m-compat}
+     *     keeps the thesis's vertical plunge
      * @param entryAngleDeg steepest descent of a helix or ramp entry (deg)
      * @param centreCutting whether the cutter cuts at its centre (may plunge)
      */
     public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
             double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-            double finishFeedMmPerMin, String post, String direction, String entry, double entryAngleDeg,
-            boolean centreCutting) {
-        /** The milling directions, the default first. */
-        public static final List<String> DIRECTIONS = List.of("climb", "conventional");
+            double finishFeedMmPerMin, PocketPost post, MillingDirection direction, EntryRule.Kind entry,
+            double entryAngleDeg, boolean centreCutting) {
+        /**
+         * The pocket module's defaults, as {@code fresa pocket}, the Pocket tab of a new job and
+         * {@code schemas/job.xsd} have them. The contour and the tool diameter have none (the
+         * command line and the job file must give them): a new job's tab starts with no contour and
+         * this 6 mm cutter.
+         */
+        public static final PocketSettings DEFAULTS = new PocketSettings(Path.of(""), 6, 0.6, 0.15, 0, -5, 2, 3000,
+                300, 100, PocketPost.LINUXCNC, MillingDirection.CLIMB, EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG, false);
 
         public PocketSettings {
             Objects.requireNonNull(contour, "contour");
@@ -100,35 +110,32 @@ public final class JobSettings {
         /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
         public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
                 double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-                double finishFeedMmPerMin, String post, String direction) {
+                double finishFeedMmPerMin, PocketPost post, MillingDirection direction) {
             this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
-                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, "auto",
-                    org.fresa.pocket.EntryRule.DEFAULT_ANGLE_DEG, false);
+                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, EntryRule.Kind.AUTO,
+                    EntryRule.DEFAULT_ANGLE_DEG, false);
         }
 
         /** Climb-milled settings. */
         public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
                 double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-                double finishFeedMmPerMin, String post) {
+                double finishFeedMmPerMin, PocketPost post) {
             this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
-                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, "climb");
+                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, MillingDirection.CLIMB);
         }
 
         /**
          * The entry rule of these settings.
          *
-         * @throws IllegalArgumentException for an unknown entry name, an angle outside (0, 90] or a
-         *     plunge asked for a tool that does not cut at its centre
+         * @throws IllegalArgumentException for an angle outside (0, 90] or a plunge asked for a tool
+         *     that does not cut at its centre
          */
-        public org.fresa.pocket.EntryRule entryRule() {
-            org.fresa.pocket.EntryRule.Kind kind = org.fresa.pocket.EntryRule.Kind.of(entry).orElseThrow(
-                    () -> new IllegalArgumentException("unknown entry '" + entry + "': expected "
-                            + String.join(", ", org.fresa.pocket.EntryRule.Kind.words())));
-            return new org.fresa.pocket.EntryRule(kind, entryAngleDeg, centreCutting);
+        public EntryRule entryRule() {
+            return new EntryRule(entry, entryAngleDeg, centreCutting);
         }
 
         /** The same settings with other entries. */
-        public PocketSettings withEntry(String kind, double angleDeg, boolean centre) {
+        public PocketSettings withEntry(EntryRule.Kind kind, double angleDeg, boolean centre) {
             return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
                     maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, kind, angleDeg,
                     centre);
@@ -136,11 +143,11 @@ public final class JobSettings {
 
         /** Whether the passes are climb-milled. */
         public boolean climb() {
-            return !direction.equals("conventional");
+            return direction.climb();
         }
 
         /** The same settings milled in the given direction. */
-        public PocketSettings withDirection(String d) {
+        public PocketSettings withDirection(MillingDirection d) {
             return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
                     maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d, entry, entryAngleDeg,
                     centreCutting);

@@ -102,7 +102,28 @@ public final class JobXml {
         } catch (SettingRange.OutOfRange e) {
             throw new CamInputException(name, lineOf(file, e.range().attribute(), e.value()), 0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
+        } catch (SettingChoice.Unknown e) {
+            throw new CamInputException(name, lineOf(file, e.choice().attribute(), e.text()), 0, e.getMessage());
         }
+    }
+
+    /** The line where an attribute has the word, or 0 when it cannot be found. */
+    static int lineOf(Path file, String attribute, String word) {
+        java.util.regex.Pattern p = java.util.regex.Pattern.compile("\\b" + attribute + "\\s*=\\s*([\"'])(.*?)\\1");
+        try {
+            List<String> lines = Files.readAllLines(file, java.nio.charset.StandardCharsets.UTF_8);
+            for (int i = 0; i < lines.size(); i++) {
+                java.util.regex.Matcher m = p.matcher(lines.get(i));
+                while (m.find()) {
+                    if (m.group(2).trim().equals(word.trim())) {
+                        return i + 1;
+                    }
+                }
+            }
+        } catch (IOException e) {
+            // the message goes without a line
+        }
+        return 0;
     }
 
     /** The line where an attribute has the value, or 0 when it cannot be found. */
@@ -210,7 +231,8 @@ public final class JobXml {
                     Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
                     Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
                     Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
-                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), p.getPost(), p.getDirection(), p.getEntry(),
+                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), Pocket.POST.require(p.getPost()),
+                    Pocket.DIRECTION.require(p.getDirection()), Pocket.ENTRY.require(p.getEntry()),
                     Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting()));
         }
         CuttingType c = x.getCutting();
@@ -402,9 +424,9 @@ public final class JobXml {
             t.setSpindleRpm(p.spindleRpm());
             t.setFeedMmPerMin(p.feedMmPerMin());
             t.setFinishFeedMmPerMin(p.finishFeedMmPerMin());
-            t.setPost(p.post());
-            t.setDirection(p.direction());
-            t.setEntry(p.entry());
+            t.setPost(p.post().word());
+            t.setDirection(p.direction().word());
+            t.setEntry(p.entry().word());
             t.setEntryAngleDeg(p.entryAngleDeg());
             t.setCentreCutting(p.centreCutting());
             x.setPocket(t);

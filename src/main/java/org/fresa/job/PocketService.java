@@ -42,9 +42,6 @@ import org.fresa.post.Sinumerik7MPost;
  */
 public final class PocketService {
 
-    /** The thesis's own dialect, written by this module; every other post comes from {@link NcPosts}. */
-    public static final List<String> SINUMERIK_7M_POSTS = List.of("7m-compat", "7m");
-
     /** Most elements a pocket contour may have: the recognition compares elements pairwise at each event. */
     public static final int MAX_ELEMENTS = 2000;
 
@@ -158,7 +155,7 @@ public final class PocketService {
 
     /** The plan for the settings (no file written). */
     public static PocketPlan plan(PocketSettings s) throws CamInputException, IOException, ToolTooLargeException {
-        return plan(s, s.post().equals("7m-compat"));
+        return plan(s, s.post().thesis());
     }
 
     /** The plan for the settings; faithful: the thesis's pass rules exactly. */
@@ -176,13 +173,13 @@ public final class PocketService {
     }
 
     /** The NC program text for a plan, climb-milled on the G-code posts and 7m, with the default entries. */
-    public static String program(PocketPlan plan, String post, String programName)
+    public static String program(PocketPlan plan, PocketPost post, String programName)
             throws IOException, ToolTooLargeException {
         return program(plan, post, programName, true);
     }
 
     /** The NC program text for a plan with the default entries ({@link EntryRule#DEFAULT}). */
-    public static String program(PocketPlan plan, String post, String programName, boolean climb)
+    public static String program(PocketPlan plan, PocketPost post, String programName, boolean climb)
             throws IOException, ToolTooLargeException {
         return program(plan, post, programName, climb, EntryRule.DEFAULT);
     }
@@ -197,15 +194,15 @@ public final class PocketService {
      *     {@code 7m-compat} keeps the thesis's vertical plunge
      * @throws ToolTooLargeException when an entry has no room and the tool may not plunge
      */
-    public static String program(PocketPlan plan, String post, String programName, boolean climb, EntryRule entry)
-            throws IOException, ToolTooLargeException {
+    public static String program(PocketPlan plan, PocketPost post, String programName, boolean climb,
+            EntryRule entry) throws IOException, ToolTooLargeException {
         switch (post) {
-            case "7m-compat":
+            case SINUMERIK_7M_COMPAT:
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
-            case "7m":
+            case SINUMERIK_7M:
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED, climb, entry).write(plan);
             default: {
-                NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
+                NcPost p = post.gcode().orElseThrow().ncPost();
                 StringWriter w = new StringWriter();
                 p.write(PocketToolpath.of(plan, climb, entry), programName, w);
                 return w.toString();
@@ -217,14 +214,6 @@ public final class PocketService {
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
-        if (!SINUMERIK_7M_POSTS.contains(s.post()) && NcPosts.byName(s.post()).isEmpty()) {
-            throw new CamInputException("--post", "unknown post '" + s.post() + "': expected 7m-compat, 7m or "
-                    + String.join(", ", NcPosts.names()));
-        }
-        if (!PocketSettings.DIRECTIONS.contains(s.direction())) {
-            throw new CamInputException("--direction", "unknown milling direction '" + s.direction()
-                    + "': expected " + String.join(" or ", PocketSettings.DIRECTIONS));
-        }
         EntryRule entry = entryRule(s);
         if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
             List<Contour> contours = readContours(s.contour());
@@ -235,7 +224,7 @@ public final class PocketService {
         PocketPlan plan;
         String nc;
         Toolpath path;
-        boolean thesis = s.post().equals("7m-compat");
+        boolean thesis = s.post().thesis();
         String name = s.contour().getFileName().toString();
         try {
             plan = plan(s);
@@ -251,7 +240,7 @@ public final class PocketService {
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
         try {
-            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post().word()),
                     ProgramChecks.pocket(s));
         } catch (ProgramChecks.RefusedProgram e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
@@ -260,13 +249,13 @@ public final class PocketService {
         AtomicFiles.writeString(outFile, nc);
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
-        summary.put("post", s.post());
+        summary.put("post", s.post().word());
         summary.put("leaf_offsets", rec.leafOffsets());
         summary.put("max_hole_diameter", rec.maxHoleDiameterMm());
         summary.put("max_tool_diameter", rec.maxToolDiameterMm());
         summary.put("wall_tool_diameter", rec.wallToolDiameterMm());
         // the thesis's passes as generated: clockwise, conventional with its clockwise (M3) spindle
-        summary.put("direction", thesis ? "conventional" : s.direction());
+        summary.put("direction", thesis ? "conventional" : s.direction().word());
         summary.put("passes", plan.milled().size());
         summary.put("pass_offsets", plan.generated().stream().map(p -> p.offsetMm()).toList());
         summary.put("depth_passes", plan.technology().depthPasses());
@@ -278,7 +267,7 @@ public final class PocketService {
     /**
      * The entry rule of the settings.
      *
-     * @throws CamInputException (exit 2) for an unknown entry, an angle out of range or a plunge
+     * @throws CamInputException (exit 2) for an angle out of range or a plunge
      *     asked for a tool that does not cut at its centre
      */
     static EntryRule entryRule(PocketSettings s) throws CamInputException {
@@ -300,7 +289,7 @@ public final class PocketService {
      */
     public static RegionPocket.Plan regionPlan(PocketSettings s, List<Contour> contours)
             throws CamInputException, ToolTooLargeException {
-        if (SINUMERIK_7M_POSTS.contains(s.post())) {
+        if (s.post().sevenM()) {
             throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
                     + " found): choose one of " + String.join(", ", NcPosts.names()));
         }
@@ -309,8 +298,9 @@ public final class PocketService {
     }
 
     /** The program text of a region plan for a G-code post. */
-    public static String regionProgram(RegionPocket.Plan plan, String post, String programName) throws IOException {
-        NcPost p = NcPosts.byName(post).orElseThrow(() -> new IllegalArgumentException(post));
+    public static String regionProgram(RegionPocket.Plan plan, PocketPost post, String programName)
+            throws IOException {
+        NcPost p = post.gcode().orElseThrow(() -> new IllegalArgumentException(post.word())).ncPost();
         StringWriter w = new StringWriter();
         p.write(plan.toolpath(), programName, w);
         return w.toString();
@@ -329,7 +319,7 @@ public final class PocketService {
         String name = s.contour().getFileName().toString();
         String nc = regionProgram(plan, s.post(), name);
         try {
-            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post()),
+            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post().word()),
                     ProgramChecks.pocket(s));
         } catch (ProgramChecks.RefusedProgram e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
@@ -340,9 +330,9 @@ public final class PocketService {
                 contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
-        summary.put("post", s.post());
+        summary.put("post", s.post().word());
         summary.put("islands", contours.size() - 1);
-        summary.put("direction", s.direction());
+        summary.put("direction", s.direction().word());
         summary.put("max_hole_diameter", 2 * inradius);
         summary.put("passes", plan.order().size());
         summary.put("pass_offsets", plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());

@@ -73,14 +73,15 @@ public final class ProgramChecks {
      */
     public static Limits pocket(PocketSettings s) {
         double r = s.toolDiameterMm() / 2;
-        boolean sevenM = PocketService.SINUMERIK_7M_POSTS.contains(s.post());
+        boolean sevenM = s.post().sevenM();
         Limits l = sevenM ? Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
                 : Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0);
         ToolLimits tool;
-        if (s.post().equals("7m-compat")) {
+        if (s.post().thesis()) {
             tool = ToolLimits.centreCuttingPlunge()
                     .withKind("the thesis's slot drill, declared centre-cutting: 7m-compat plunges as its programs do");
-        } else if (s.centreCutting() && (s.entry().equals("plunge") || s.entry().equals("auto"))) {
+        } else if (s.centreCutting() && (s.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
+                || s.entry() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
             tool = ToolLimits.centreCuttingPlunge();
         } else {
             double angle = s.entryAngleDeg() > 0 && s.entryAngleDeg() <= 90 ? s.entryAngleDeg()

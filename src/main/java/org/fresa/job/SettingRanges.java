@@ -5,9 +5,10 @@ import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
 
 /**
- * The ranges of every numeric setting, one holder per module: the commands check their options
- * against them before any work, {@link JobXml} checks the job file's attributes against the same
- * ranges, so that a job file cannot bring a value the option refuses.
+ * The ranges of every numeric setting and the choices of every enumerated one
+ * ({@link SettingChoice}), one holder per module: the commands check their options against them
+ * before any work, {@link JobXml} checks the job file's attributes against the same ranges and
+ * choices, so that a job file cannot bring a value the option refuses.
  *
  * <p>The bounds are what a workshop meets, with room to spare: a machine travels at most 10 m
  * each way, a robot cell is at most 100 m across, spindles turn 1 to 100 000 rpm and feeds run
@@ -74,6 +75,13 @@ public final class SettingRanges {
         public static final SettingRange FINISH_FEED = feed("--finish-feed", "finishFeedMmPerMin");
         /** Steepest descent of a helix or ramp entry: below half a degree a ramp is no entry, 90 is a plunge. */
         public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
+        public static final SettingChoice<PocketPost> POST = SettingChoice.of("--post", "post", PocketPost.class,
+                PocketPost::word);
+        public static final SettingChoice<org.fresa.pocket.MillingDirection> DIRECTION = SettingChoice.of(
+                "--direction", "direction", org.fresa.pocket.MillingDirection.class,
+                org.fresa.pocket.MillingDirection::word);
+        public static final SettingChoice<org.fresa.pocket.EntryRule.Kind> ENTRY = SettingChoice.of("--entry",
+                "entry", org.fresa.pocket.EntryRule.Kind.class, org.fresa.pocket.EntryRule.Kind::word);
 
         private Pocket() {
         }

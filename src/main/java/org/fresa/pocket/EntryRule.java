@@ -54,6 +54,11 @@ public record EntryRule(Kind kind, double angleDeg, boolean centreCutting) {
         public static List<String> words() {
             return java.util.Arrays.stream(values()).map(Kind::word).toList();
         }
+
+        @Override
+        public String toString() {
+            return word();
+        }
     }
 
     public EntryRule {

@@ -20,6 +20,8 @@ import javax.swing.JTextField;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.PocketPost;
+import org.fresa.pocket.MillingDirection;
 
 /**
  * The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC
@@ -41,8 +43,9 @@ final class PocketTab implements ModuleTab {
     private final JTextArea nc = new JTextArea(12, 40);
     private final JTextField contour = new JTextField(24);
     private final JTextField[] tech = new JTextField[PocketViewModel.LABELS.size()];
-    private final JComboBox<String> post = new JComboBox<>(PocketViewModel.POSTS.toArray(new String[0]));
-    private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
+    private final JComboBox<PocketPost> post = new JComboBox<>(PocketViewModel.POSTS.toArray(new PocketPost[0]));
+    private final JComboBox<MillingDirection> direction = new JComboBox<>(
+            PocketViewModel.DIRECTIONS.toArray(new MillingDirection[0]));
     private final JButton run = new JButton("Compute");
     private final JLabel status = new JLabel(" ");
     private final JPanel form = new JPanel();
@@ -159,8 +162,8 @@ final class PocketTab implements ModuleTab {
         for (int i = 0; i < tech.length; i++) {
             model.setValue(i, tech[i].getText());
         }
-        model.setPost((String) post.getSelectedItem());
-        model.setDirection((String) direction.getSelectedItem());
+        model.setPost((PocketPost) post.getSelectedItem());
+        model.setDirection((MillingDirection) direction.getSelectedItem());
         Map<String, String> problems = model.problems();
         mark(contour, problems);
         for (JTextField f : tech) {

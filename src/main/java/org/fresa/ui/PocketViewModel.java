@@ -16,10 +16,11 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.PocketPost;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.job.SettingRange;
 import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.model.ExactDecimal;
-import org.fresa.post.NcPosts;
 import org.fresa.job.PocketService;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.LoopState;
@@ -50,13 +51,15 @@ public final class PocketViewModel {
         /** A result whose program is checked against the settings' limits. */
         static Result checked(PlotScene scene, String report, String nc, PocketSettings settings) {
             return new Result(scene, report, nc, org.fresa.check.ProgramCheck.of(nc,
-                    org.fresa.job.ProgramChecks.dialect(settings.post()), org.fresa.job.ProgramChecks.pocket(settings))
+                    org.fresa.job.ProgramChecks.dialect(settings.post().word()), org.fresa.job.ProgramChecks.pocket(settings))
                     .failure());
         }
     }
 
     /** Every post the pocket module writes: the thesis's 7M dialect, then the G-code posts. */
-    public static final List<String> POSTS = posts();
+    public static final List<PocketPost> POSTS = Pocket.POST.values();
+    /** The milling directions, the default first. */
+    public static final List<MillingDirection> DIRECTIONS = Pocket.DIRECTION.values();
     /** The technology fields, in the order shown, with their units. */
     public static final List<String> LABELS = List.of("Tool diameter (mm)", "Cut fraction", "Finish fraction",
             "Z top (mm)", "Z bottom (mm)", "Max depth per pass (mm)", "Spindle (rpm)", "Feed (mm/min)",
@@ -68,27 +71,24 @@ public final class PocketViewModel {
             Pocket.Z_TOP, Pocket.Z_BOTTOM, Pocket.MAX_DEPTH, Pocket.SPINDLE, Pocket.FEED, Pocket.FINISH_FEED);
     /** The key of the contour field in {@link #problems()}. */
     public static final String CONTOUR = "pocket-contour";
-    /** A new job's technology: cavity 01 of the thesis (samples/pocket/jobs.csv); no contour. */
-    private static final double[] DEFAULT_TECHNOLOGY = {6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100};
-
-    private PocketSettings settings = new PocketSettings(Path.of(""), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
-            "7m-compat");
+    /** A new job's technology: the pocket module's defaults ({@link PocketSettings#DEFAULTS}); no contour. */
+    private PocketSettings settings = PocketSettings.DEFAULTS;
     // the fields as typed
     private String contourText = "";
-    private final String[] values = new String[DEFAULT_TECHNOLOGY.length];
-    private String post = "7m-compat";
-    private String direction = "climb";
+    private final String[] values = new String[LABELS.size()];
+    private PocketPost post = PocketSettings.DEFAULTS.post();
+    private MillingDirection direction = PocketSettings.DEFAULTS.direction();
 
     public PocketViewModel() {
-        for (int i = 0; i < values.length; i++) {
-            values[i] = ExactDecimal.of(DEFAULT_TECHNOLOGY[i]);
-        }
+        showTechnology(PocketSettings.DEFAULTS);
     }
 
-    private static List<String> posts() {
-        List<String> out = new ArrayList<>(PocketService.SINUMERIK_7M_POSTS);
-        out.addAll(NcPosts.names());
-        return List.copyOf(out);
+    private void showTechnology(PocketSettings p) {
+        double[] v = {p.toolDiameterMm(), p.cutFraction(), p.finishFraction(), p.zTopMm(), p.zBottomMm(),
+            p.maxDepthPerPassMm(), p.spindleRpm(), p.feedMmPerMin(), p.finishFeedMmPerMin()};
+        for (int i = 0; i < v.length; i++) {
+            values[i] = ExactDecimal.of(v[i]);
+        }
     }
 
     /** Shows the job's pocket settings, or a new job's (no contour) when it has none. */
@@ -101,11 +101,7 @@ public final class PocketViewModel {
         PocketSettings p = job.pocket().get();
         settings = p;
         contourText = p.contour().toString();
-        double[] v = {p.toolDiameterMm(), p.cutFraction(), p.finishFraction(), p.zTopMm(), p.zBottomMm(),
-            p.maxDepthPerPassMm(), p.spindleRpm(), p.feedMmPerMin(), p.finishFeedMmPerMin()};
-        for (int i = 0; i < v.length; i++) {
-            values[i] = ExactDecimal.of(v[i]);
-        }
+        showTechnology(p);
         post = p.post();
         direction = p.direction();
     }
@@ -126,26 +122,20 @@ public final class PocketViewModel {
         values[i] = t.trim();
     }
 
-    public String post() {
+    public PocketPost post() {
         return post;
     }
 
-    public void setPost(String p) {
-        if (!POSTS.contains(p)) {
-            throw new IllegalArgumentException("unknown post " + p);
-        }
-        post = p;
+    public void setPost(PocketPost p) {
+        post = java.util.Objects.requireNonNull(p, "post");
     }
 
-    public String direction() {
+    public MillingDirection direction() {
         return direction;
     }
 
-    public void setDirection(String d) {
-        if (!PocketSettings.DIRECTIONS.contains(d)) {
-            throw new IllegalArgumentException("unknown direction " + d);
-        }
-        direction = d;
+    public void setDirection(MillingDirection d) {
+        direction = java.util.Objects.requireNonNull(d, "direction");
     }
 
     /**

@@ -32,8 +32,8 @@ class JobXmlTest {
                 .withStepnc(new StepNcSettings(dir.resolve("parts/example2.stp"), "840d"))
                 .withRobot(new RobotSettings("irb140", new Placement(450, 0, 350, 0, 0, 15),
                         new Placement(0, 10, 0, -90, 0, 0), List.of("csv", "rapid")))
-                .withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, "7m",
-                        "conventional"))
+                .withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, PocketPost.SINUMERIK_7M,
+                        org.fresa.pocket.MillingDirection.CONVENTIONAL))
                 .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, "laser", 3, 1, "line", 0.001, "mm", true, "iso",
                         "controller", "ccw", "ccw", 0.5, false))
                 .withGrading(new GradingSettings(dir.resolve("sole.contour"), 40, "36-44", true, "paris",
@@ -70,7 +70,18 @@ class JobXmlTest {
         Path file = dir.resolve("old.xml");
         Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"
                 + "<pocket contour=\"c.dad\" toolDiameterMm=\"6\"/></job>\n");
-        assertEquals("climb", JobXml.read(file).pocket().orElseThrow().direction());
+        assertEquals(org.fresa.pocket.MillingDirection.CLIMB, JobXml.read(file).pocket().orElseThrow().direction());
+    }
+
+    @Test
+    void aPocketWithOnlyItsContourAndToolReadsAsThePocketDefaults() throws Exception {
+        Path file = dir.resolve("least.xml");
+        Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"
+                + "<pocket contour=\"c.dad\" toolDiameterMm=\"6\"/></job>\n");
+        PocketSettings d = PocketSettings.DEFAULTS;
+        assertEquals(new PocketSettings(dir.resolve("c.dad"), 6, d.cutFraction(), d.finishFraction(), d.zTopMm(),
+                d.zBottomMm(), d.maxDepthPerPassMm(), d.spindleRpm(), d.feedMmPerMin(), d.finishFeedMmPerMin(), d.post(),
+                d.direction(), d.entry(), d.entryAngleDeg(), d.centreCutting()), JobXml.read(file).pocket().orElseThrow());
     }
 
     @Test

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -28,7 +29,8 @@ class PocketServiceTest {
                 for (int i = 0; i < 9; i++) {
                     v[i] = Double.parseDouble(f[i + 1]);
                 }
-                return new PocketSettings(Path.of("samples/pocket", f[0]), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post);
+                return new PocketSettings(Path.of("samples/pocket", f[0]), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8],
+                        SettingRanges.Pocket.POST.require(post));
             }
         }
         throw new IllegalArgumentException(name);
@@ -61,7 +63,7 @@ class PocketServiceTest {
     void aBadRecordWritesNothing(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.dad");
         Files.writeString(bad, " 1R                   1.2.3\r\n");
-        PocketSettings s = new PocketSettings(bad, 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, "7m");
+        PocketSettings s = new PocketSettings(bad, 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, PocketPost.SINUMERIK_7M);
         CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(s, dir.resolve("x.nc"), ProgressMonitor.NONE));
         assertEquals(1, e.line().orElseThrow());
         assertFalse(Files.exists(dir.resolve("x.nc")));
@@ -102,8 +104,8 @@ class PocketServiceTest {
         // issue 7: climb milling by default, conventional on request
         // the example part's arcs are all convex: clockwise (G02) in the thesis's conventional passes
         PocketSettings climb = settings("examplepart", "linuxcnc");
-        PocketSettings conventional = climb.withDirection("conventional");
-        assertEquals("climb", climb.direction());
+        PocketSettings conventional = climb.withDirection(MillingDirection.CONVENTIONAL);
+        assertEquals(MillingDirection.CLIMB, climb.direction());
         TaskOutcome a = PocketService.run(climb, dir.resolve("climb.ngc"), ProgressMonitor.NONE);
         TaskOutcome b = PocketService.run(conventional, dir.resolve("conv.ngc"), ProgressMonitor.NONE);
         String ca = Files.readString(dir.resolve("climb.ngc"));
@@ -131,8 +133,8 @@ class PocketServiceTest {
         List<org.fresa.geom.Contour> c = PocketService.readContours(rooms);
         double floor = climb.zBottomMm();
         double climbArea = floorArea(PocketService.regionPlan(climb, c).toolpath(), floor);
-        double convArea = floorArea(PocketService.regionPlan(climb.withDirection("conventional"), c).toolpath(), floor);
-        TaskOutcome o = PocketService.run(climb.withDirection("conventional"), dir.resolve("r.ngc"), ProgressMonitor.NONE);
+        double convArea = floorArea(PocketService.regionPlan(climb.withDirection(MillingDirection.CONVENTIONAL), c).toolpath(), floor);
+        TaskOutcome o = PocketService.run(climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("r.ngc"), ProgressMonitor.NONE);
         assertEquals("conventional", o.summary().get("direction"));
         assertTrue(climbArea > 0 && convArea < 0, climbArea + " " + convArea);
     }
@@ -141,7 +143,7 @@ class PocketServiceTest {
     void theSevenMPostsKeepTheThesisDirection(@TempDir Path dir) throws Exception {
         PocketSettings s = settings("cavity01", "7m-compat");
         TaskOutcome a = PocketService.run(s, dir.resolve("a.nc"), ProgressMonitor.NONE);
-        TaskOutcome b = PocketService.run(s.withDirection("conventional"), dir.resolve("b.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("b.nc"), ProgressMonitor.NONE);
         assertEquals("conventional", a.summary().get("direction"));
         assertEquals(Files.readString(dir.resolve("a.nc")), Files.readString(dir.resolve("b.nc")));
         assertEquals(0, b.exitStatus());
@@ -153,7 +155,7 @@ class PocketServiceTest {
         // the G-code posts; conventional gives the thesis's clockwise passes
         PocketSettings climb = settings("examplepart", "7m");
         TaskOutcome a = PocketService.run(climb, dir.resolve("climb.nc"), ProgressMonitor.NONE);
-        TaskOutcome b = PocketService.run(climb.withDirection("conventional"), dir.resolve("conv.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("conv.nc"), ProgressMonitor.NONE);
         String ca = Files.readString(dir.resolve("climb.nc"));
         String cb = Files.readString(dir.resolve("conv.nc"));
         org.fresa.pocket.PocketPlan plan = PocketService.plan(climb);
@@ -174,11 +176,10 @@ class PocketServiceTest {
     }
 
     @Test
-    void anUnknownDirectionIsBadUsage(@TempDir Path dir) throws Exception {
-        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(
-                settings("cavity01", "linuxcnc").withDirection("down"), dir.resolve("d.ngc"), ProgressMonitor.NONE));
-        assertTrue(e.getMessage().contains("climb or conventional"), e.getMessage());
-        assertFalse(Files.exists(dir.resolve("d.ngc")));
+    void anUnknownDirectionIsBadUsage() {
+        CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Pocket.DIRECTION.check("down"));
+        assertTrue(e.getMessage().contains("--direction") && e.getMessage().contains("climb, conventional"),
+                e.getMessage());
     }
 
     @Test
@@ -188,7 +189,7 @@ class PocketServiceTest {
         PocketSettings s = settings("cavity01", "linuxcnc");
         Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(),
                 s.finishFraction(), s.zTopMm(), s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(),
-                s.finishFeedMmPerMin(), "linuxcnc", "conventional"));
+                s.finishFeedMmPerMin(), PocketPost.LINUXCNC, MillingDirection.CONVENTIONAL));
         Path file = dir.resolve("job.xml");
         JobXml.write(job, file);
         assertTrue(Files.readString(file).contains("direction=\"conventional\""));
@@ -198,18 +199,18 @@ class PocketServiceTest {
         TaskOutcome o = JobRunner.run(read, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         assertEquals("conventional", o.summary().get("direction"));
-        PocketService.run(s.withDirection("conventional"), dir.resolve("direct.ngc"), ProgressMonitor.NONE);
+        PocketService.run(s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("direct.ngc"), ProgressMonitor.NONE);
         assertEquals(Files.readString(dir.resolve("direct.ngc")), Files.readString(out.resolve("pocket.ngc")));
     }
 
     @Test
-    void anUnknownPostIsBadUsage(@TempDir Path dir) {
-        assertThrows(CamInputException.class, () -> PocketService.run(settings("cavity01", "heidenhain"),
-                dir.resolve("h.nc"), ProgressMonitor.NONE));
+    void anUnknownPostIsBadUsage() {
+        CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Pocket.POST.check("heidenhain"));
+        assertTrue(e.getMessage().contains("7m-compat, 7m, linuxcnc, iso, fanuc, 840d"), e.getMessage());
     }
 
     static PocketSettings islandSettings(Path contour, String post) {
-        return new PocketSettings(contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, post);
+        return new PocketSettings(contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, SettingRanges.Pocket.POST.require(post));
     }
 
     @Test

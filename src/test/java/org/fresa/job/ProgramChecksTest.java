@@ -30,7 +30,7 @@ class ProgramChecksTest {
                 PocketSettings s = new PocketSettings(Path.of("samples/pocket/" + f[0]), Double.parseDouble(f[1]),
                         Double.parseDouble(f[2]), Double.parseDouble(f[3]), Double.parseDouble(f[4]),
                         Double.parseDouble(f[5]), Double.parseDouble(f[6]), Double.parseDouble(f[7]),
-                        Double.parseDouble(f[8]), Double.parseDouble(f[9]), post);
+                        Double.parseDouble(f[8]), Double.parseDouble(f[9]), SettingRanges.Pocket.POST.require(post));
                 Path out = dir.resolve(f[0] + "-" + post + ".nc");
                 TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
                 assertEquals(0, o.exitStatus(), f[0] + " " + post + ": " + o.problems());

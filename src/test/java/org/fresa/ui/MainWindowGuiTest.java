@@ -42,7 +42,7 @@ class MainWindowGuiTest extends WindowGuiTest {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(
                 Path.of("samples/pocket/cavity01.dad").toAbsolutePath(), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
-                "linuxcnc"));
+                org.fresa.job.PocketPost.LINUXCNC));
         GuiActionRunner.execute(() -> model.setJob(job));
 
         window.menuItemWithPath("File", "Save as...").click();

@@ -13,7 +13,7 @@ class PocketViewModelTest {
     @Test
     void computesTreeSceneAndProgramForCavity03() {
         PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90, "7m-compat"));
+        m.setSettings(new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90, org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow();
         assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
@@ -26,7 +26,7 @@ class PocketViewModelTest {
     @Test
     void aMissingFileIsAMessageNotAnException() {
         PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(Path.of("samples/pocket/none.dad"), 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, "7m"));
+        m.setSettings(new PocketSettings(Path.of("samples/pocket/none.dad"), 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, org.fresa.job.PocketPost.SINUMERIK_7M));
         m.compute();
         assertTrue(m.result().isEmpty());
         assertTrue(m.error().isPresent());
@@ -36,7 +36,7 @@ class PocketViewModelTest {
     void aContourWithIslandsShowsItsOffsetsAndTheLinuxCncProgram() {
         PocketViewModel m = new PocketViewModel();
         m.setSettings(new PocketSettings(Path.of("samples/pocket/rooms-islands.contour"), 6, 0.7, 0.1, 0, -6, 3, 3000,
-                300, 100, "linuxcnc"));
+                300, 100, org.fresa.job.PocketPost.LINUXCNC));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
         assertTrue(r.report().startsWith("2 island(s)"), r.report());
@@ -49,11 +49,11 @@ class PocketViewModelTest {
     void theDirectionSettingReversesTheProgramsArcs() {
         PocketViewModel m = new PocketViewModel();
         PocketSettings climb = new PocketSettings(Path.of("samples/pocket/examplepart.dad"), 4, 0.62, 0.18, 8, 6, 2,
-                3000, 300, 100, "linuxcnc");
+                3000, 300, 100, org.fresa.job.PocketPost.LINUXCNC);
         m.setSettings(climb);
         m.compute();
         String a = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
-        m.setSettings(climb.withDirection("conventional"));
+        m.setSettings(climb.withDirection(org.fresa.pocket.MillingDirection.CONVENTIONAL));
         m.compute();
         String b = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
         assertEquals(words(a, "G3"), words(b, "G2"));

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 class ProgramRefusalViewTest {
 
     private static final PocketSettings CAVITY03 = new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73,
-            0.22, 30, 27, 5, 2750, 280, 90, "7m-compat");
+            0.22, 30, 27, 5, 2750, 280, 90, org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT);
 
     @Test
     void theThesisProgramOfCavity03PassesTheCheck() {

@@ -53,6 +53,7 @@ public final class FresaCommand implements Callable<Integer> {
                 cl.addSubcommand(c);
             }
         }
+        SettingConverters.register(cl);
         cl.setOut(out);
         cl.setErr(err);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
@@ -69,7 +70,7 @@ public final class FresaCommand implements Callable<Integer> {
     public static CommandLine withAllCommands() {
         CommandLine cl = new CommandLine(new FresaCommand());
         COMMANDS.forEach(cl::addSubcommand);
-        return cl;
+        return SettingConverters.register(cl);
     }
 
     private static String commandPath(CommandLine cl) {

@@ -3,6 +3,9 @@ package org.fresa.app.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.PocketPost;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.job.PocketService;
 import org.fresa.job.SettingRanges.Pocket;
 import picocli.CommandLine.Command;
@@ -16,6 +19,8 @@ import picocli.CommandLine.Model.CommandSpec;
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
 final class PocketCommand implements Callable<Integer> {
 
+    private static final PocketSettings DEFAULTS = PocketSettings.DEFAULTS;
+
     @Spec
     CommandSpec spec;
 
@@ -28,48 +33,48 @@ final class PocketCommand implements Callable<Integer> {
     @Option(names = "--tool-diameter", required = true, paramLabel = "D", description = "cutter diameter (mm)")
     double toolDiameterMm;
 
-    @Option(names = "--cut", paramLabel = "P", defaultValue = "0.6", description = "stepover as a fraction of the diameter")
-    double cutFraction;
+    @Option(names = "--cut", paramLabel = "P", description = "stepover as a fraction of the diameter")
+    double cutFraction = DEFAULTS.cutFraction();
 
-    @Option(names = "--finish", paramLabel = "F", defaultValue = "0.15", description = "finish allowance as a fraction of the diameter")
-    double finishFraction;
+    @Option(names = "--finish", paramLabel = "F", description = "finish allowance as a fraction of the diameter")
+    double finishFraction = DEFAULTS.finishFraction();
 
-    @Option(names = "--z-top", paramLabel = "Z", defaultValue = "0", description = "top of the pocket (mm)")
-    double zTopMm;
+    @Option(names = "--z-top", paramLabel = "Z", description = "top of the pocket (mm)")
+    double zTopMm = DEFAULTS.zTopMm();
 
-    @Option(names = "--z-bottom", paramLabel = "Z", defaultValue = "-5", description = "floor of the pocket (mm)")
-    double zBottomMm;
+    @Option(names = "--z-bottom", paramLabel = "Z", description = "floor of the pocket (mm)")
+    double zBottomMm = DEFAULTS.zBottomMm();
 
-    @Option(names = "--max-depth", paramLabel = "DZ", defaultValue = "2", description = "largest depth per pass (mm)")
-    double maxDepthMm;
+    @Option(names = "--max-depth", paramLabel = "DZ", description = "largest depth per pass (mm)")
+    double maxDepthMm = DEFAULTS.maxDepthPerPassMm();
 
-    @Option(names = "--rpm", paramLabel = "S", defaultValue = "3000", description = "spindle speed (rpm)")
-    double spindleRpm;
+    @Option(names = "--rpm", paramLabel = "S", description = "spindle speed (rpm)")
+    double spindleRpm = DEFAULTS.spindleRpm();
 
-    @Option(names = "--feed", paramLabel = "F", defaultValue = "300", description = "roughing feed (mm/min)")
-    double feedMmPerMin;
+    @Option(names = "--feed", paramLabel = "F", description = "roughing feed (mm/min)")
+    double feedMmPerMin = DEFAULTS.feedMmPerMin();
 
-    @Option(names = "--finish-feed", paramLabel = "F", defaultValue = "100", description = "finishing feed (mm/min)")
-    double finishFeedMmPerMin;
+    @Option(names = "--finish-feed", paramLabel = "F", description = "finishing feed (mm/min)")
+    double finishFeedMmPerMin = DEFAULTS.finishFeedMmPerMin();
 
-    @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc",
+    @Option(names = "--post", paramLabel = "NAME",
             description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d; default ${DEFAULT-VALUE}")
-    String post;
+    PocketPost post = DEFAULTS.post();
 
-    @Option(names = "--direction", paramLabel = "climb|conventional", defaultValue = "climb",
+    @Option(names = "--direction", paramLabel = "climb|conventional",
             description = "milling direction on every post but 7m-compat (which keeps the thesis's conventional"
                     + " passes); default ${DEFAULT-VALUE}")
-    String direction;
+    MillingDirection direction = DEFAULTS.direction();
 
-    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge", defaultValue = "auto",
+    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge",
             description = "how the tool enters the material: a helix where it has room, else a zig-zag ramp (auto),"
                     + " helix, ramp, or plunge (centre-cutting tools only); 7m-compat keeps the thesis's plunge;"
                     + " default ${DEFAULT-VALUE}")
-    String entry;
+    EntryRule.Kind entry = DEFAULTS.entry();
 
-    @Option(names = "--entry-angle", paramLabel = "DEG", defaultValue = "3",
+    @Option(names = "--entry-angle", paramLabel = "DEG",
             description = "steepest descent of a helix or ramp entry (deg, 0.5 to 90); default ${DEFAULT-VALUE}")
-    double entryAngleDeg;
+    double entryAngleDeg = DEFAULTS.entryAngleDeg();
 
     @Option(names = "--centre-cutting", description = "the cutter cuts at its centre (may plunge)")
     boolean centreCutting;

@@ -1,0 +1,34 @@
+package org.fresa.app.cli;
+
+import java.util.List;
+import org.fresa.job.SettingChoice;
+import org.fresa.job.SettingRanges;
+import picocli.CommandLine;
+
+/**
+ * The enumerated options of every command, converted once where picocli parses them, with the
+ * words of {@link SettingChoice} (the job file's words): a word that is no value is bad usage
+ * (exit 2) with the allowed values named.
+ */
+final class SettingConverters {
+
+    /** Every choice an option takes, one per enumeration. */
+    static final List<SettingChoice<?>> CHOICES = List.of(SettingRanges.Pocket.POST, SettingRanges.Pocket.DIRECTION,
+            SettingRanges.Pocket.ENTRY);
+
+    private SettingConverters() {
+    }
+
+    /** Registers the converters on a command line and the subcommands it has now. */
+    static CommandLine register(CommandLine cl) {
+        for (SettingChoice<?> c : CHOICES) {
+            add(cl, c);
+        }
+        return cl;
+    }
+
+    private static <E extends Enum<E>> void add(CommandLine cl, SettingChoice<E> c) {
+        cl.registerConverter(c.type(), text -> c.find(text)
+                .orElseThrow(() -> new CommandLine.TypeConversionException(c.problem(text))));
+    }
+}
