@@ -47,6 +47,11 @@ public enum CutProcess {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    @Override
+    public String toString() {
+        return id();
+    }
+
     public static Optional<CutProcess> ofId(String id) {
         for (CutProcess p : values()) {
             if (p.id().equalsIgnoreCase(id)) {

@@ -8,16 +8,16 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Optional;
 import org.fresa.cutting.CutPath;
 import org.fresa.cutting.CutPlan;
 import org.fresa.cutting.CutPlanner;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CuttingOptions;
+import org.fresa.cutting.KerfCompensation;
+import org.fresa.cutting.LeadShape;
 import org.fresa.dxf.DxfDrawing;
 import org.fresa.dxf.DxfReadOptions;
 import org.fresa.dxf.DxfReader;
-import org.fresa.dxf.DxfUnits;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.post.SheetCuttingPost;
@@ -41,50 +41,24 @@ public final class CuttingService {
 
     /** Checks the settings and converts them to planner options (the gap tolerance still in drawing units). */
     public static CuttingOptions options(CuttingSettings s) throws CamInputException {
-        CutProcess p = CutProcess.ofId(s.process()).orElseThrow(() -> new CamInputException("--process",
-                "unknown process '" + s.process() + "': expected plasma, laser or waterjet"));
-        if (!s.lead().equals("arc") && !s.lead().equals("line")) {
-            throw new CamInputException("--lead", "unknown lead '" + s.lead() + "': expected arc or line");
-        }
+        CutProcess p = s.process();
         if (!(s.kerfMm() >= 0) || !(s.leadInMm() >= 0) || !(s.leadOutMm() >= 0) || !(s.toleranceMm() >= 0)
                 || !Double.isFinite(s.kerfMm() + s.leadInMm() + s.leadOutMm() + s.toleranceMm())) {
             throw new CamInputException("options", "kerf, lead lengths and tolerance must be finite and >= 0");
         }
-        if (!s.compensation().equals("software") && !s.compensation().equals("controller")) {
-            throw new CamInputException("--compensation", "unknown compensation '" + s.compensation()
-                    + "': expected software or controller");
-        }
         if (!(s.overcutMm() >= 0) || !Double.isFinite(s.overcutMm())) {
             throw new CamInputException("--overcut", "the overcut must be finite and >= 0");
         }
-        boolean outerCw = direction("--outer-direction", s.outerDirection(), p.outerClockwise());
-        boolean holesCw = direction("--hole-direction", s.holeDirection(), !outerCw);
+        boolean outerCw = s.outerDirection().clockwise(p.outerClockwise());
+        boolean holesCw = s.holeDirection().clockwise(!outerCw);
         try {
-            return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead().equals("arc"))
+            return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead() == LeadShape.ARC)
                     .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode())
-                    .withControllerCompensation(s.compensation().equals("controller")).withOvercut(s.overcutMm())
-                    .withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
+                    .withControllerCompensation(s.compensation() == KerfCompensation.CONTROLLER)
+                    .withOvercut(s.overcutMm()).withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
         } catch (IllegalArgumentException e) {
             throw new CamInputException("options", e.getMessage());
         }
-    }
-
-    /** cw, ccw, or process (the given default); true for clockwise. */
-    private static boolean direction(String option, String v, boolean processDefault) throws CamInputException {
-        return switch (v) {
-            case "cw" -> true;
-            case "ccw" -> false;
-            case "process" -> processDefault;
-            default -> throw new CamInputException(option, "unknown direction '" + v + "': expected cw, ccw or process");
-        };
-    }
-
-    static Optional<DxfUnits> units(String u) throws CamInputException {
-        if (u.equalsIgnoreCase("auto")) {
-            return Optional.empty();
-        }
-        return Optional.of(DxfUnits.ofName(u).orElseThrow(() -> new CamInputException("--units",
-                "unknown units '" + u + "': expected mm, inch or auto")));
     }
 
     /** Reads and plans without writing anything. */
@@ -101,10 +75,9 @@ public final class CuttingService {
     public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
             throws CamInputException, IOException {
         CuttingOptions o = options(s);
-        SheetCuttingPost.Dialect dialect = SheetCuttingPost.Dialect.byName(s.post()).orElseThrow(() ->
-                new CamInputException("--post", "unknown post '" + s.post() + "': expected linuxcnc, iso, fanuc or 840d"));
+        SheetCuttingPost.Dialect dialect = s.post();
         progress.progress(0.05, "reading " + s.drawing().getFileName());
-        DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(units(s.units())));
+        DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(s.units().units()));
         progress.checkCancelled();
         progress.progress(0.3, "planning");
         CutPlan plan = CutPlanner.plan(d.layers(),

@@ -5,10 +5,17 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cutting.CutProcess;
+import org.fresa.cutting.CutSense;
+import org.fresa.cutting.CuttingOptions;
+import org.fresa.cutting.KerfCompensation;
+import org.fresa.cutting.LeadShape;
+import org.fresa.dxf.DrawingUnits;
 import org.fresa.geom.Vec2;
 import org.fresa.model.Placement;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.post.SheetCuttingPost;
 
 /**
  * The settings of each module, as they appear in a job file (schemas/job.xsd) and in the tabs.
@@ -157,16 +164,26 @@ public final class JobSettings {
     /**
      * Sheet cutting options (spec/cli.md, {@code fresa cut}).
      *
-     * @param compensation {@code software} (the path is the contour offset by half the kerf) or
-     *     {@code controller} (the drawn contour with G41/G42, the kerf left to the controller)
-     * @param outerDirection {@code process} (the process's default), {@code cw} or {@code ccw}
-     * @param holeDirection as outerDirection; {@code process} means the opposite of the outer sense
+     * @param compensation software (the path is the contour offset by half the kerf) or controller
+     *     (the drawn contour with G41/G42, the kerf left to the controller)
+     * @param outerDirection process (the process's default), cw or ccw
+     * @param holeDirection as outerDirection; process means the opposite of the outer sense
      * @param overcutMm how far each cut runs past its start before the lead-out
      * @param avoidCutParts route rapids around the parts already cut free
      */
-    public record CuttingSettings(Path drawing, double kerfMm, String process, double leadInMm, double leadOutMm,
-            String lead, double toleranceMm, String units, boolean paperMode, String post, String compensation,
-            String outerDirection, String holeDirection, double overcutMm, boolean avoidCutParts) {
+    public record CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
+            LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode, SheetCuttingPost.Dialect post,
+            KerfCompensation compensation, CutSense outerDirection, CutSense holeDirection, double overcutMm,
+            boolean avoidCutParts) {
+        /**
+         * The cutting module's defaults, as {@code fresa cut}, the Cutting tab of a new job and
+         * {@code schemas/job.xsd} have them; the drawing has none.
+         */
+        public static final CuttingSettings DEFAULTS = new CuttingSettings(Path.of(""), 2, CutProcess.PLASMA, 3, 1,
+                LeadShape.ARC, CuttingOptions.DEFAULT_GAP_MM, DrawingUnits.AUTO, false,
+                SheetCuttingPost.Dialect.LINUXCNC, KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0,
+                true);
+
         public CuttingSettings {
             Objects.requireNonNull(drawing, "drawing");
             Objects.requireNonNull(process, "process");
@@ -179,10 +196,11 @@ public final class JobSettings {
         }
 
         /** Software compensation, the process's directions, no overcut, rapids around cut parts. */
-        public CuttingSettings(Path drawing, double kerfMm, String process, double leadInMm, double leadOutMm,
-                String lead, double toleranceMm, String units, boolean paperMode, String post) {
-            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post, "software",
-                    "process", "process", 0, true);
+        public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
+                LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
+                SheetCuttingPost.Dialect post) {
+            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post,
+                    KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0, true);
         }
     }
 

@@ -238,10 +238,13 @@ public final class JobXml {
         CuttingType c = x.getCutting();
         if (c != null) {
             job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), Cutting.KERF.require(c.getKerfMm()),
-                    c.getProcess(), Cutting.LEAD_IN.require(c.getLeadInMm()), Cutting.LEAD_OUT.require(c.getLeadOutMm()),
-                    c.getLead(), Cutting.TOLERANCE.require(c.getToleranceMm()), c.getUnits(), c.isPaperMode(),
-                    c.getPost(), c.getCompensation(), c.getOuterDirection(), c.getHoleDirection(),
-                    Cutting.OVERCUT.require(c.getOvercutMm()), c.isAvoidCutParts()));
+                    Cutting.PROCESS.require(c.getProcess()), Cutting.LEAD_IN.require(c.getLeadInMm()),
+                    Cutting.LEAD_OUT.require(c.getLeadOutMm()), Cutting.LEAD.require(c.getLead()),
+                    Cutting.TOLERANCE.require(c.getToleranceMm()), Cutting.UNITS.require(c.getUnits()), c.isPaperMode(),
+                    Cutting.POST.require(c.getPost()), Cutting.COMPENSATION.require(c.getCompensation()),
+                    Cutting.OUTER_DIRECTION.require(c.getOuterDirection()),
+                    Cutting.HOLE_DIRECTION.require(c.getHoleDirection()), Cutting.OVERCUT.require(c.getOvercutMm()),
+                    c.isAvoidCutParts()));
         }
         GradingType g = x.getGrading();
         if (g != null) {
@@ -435,17 +438,17 @@ public final class JobXml {
             CuttingType t = new CuttingType();
             t.setDrawing(relativize(base, c.drawing()));
             t.setKerfMm(c.kerfMm());
-            t.setProcess(c.process());
+            t.setProcess(c.process().id());
             t.setLeadInMm(c.leadInMm());
             t.setLeadOutMm(c.leadOutMm());
-            t.setLead(c.lead());
+            t.setLead(c.lead().word());
             t.setToleranceMm(c.toleranceMm());
-            t.setUnits(c.units());
+            t.setUnits(c.units().word());
             t.setPaperMode(c.paperMode());
-            t.setPost(c.post());
-            t.setCompensation(c.compensation());
-            t.setOuterDirection(c.outerDirection());
-            t.setHoleDirection(c.holeDirection());
+            t.setPost(c.post().id());
+            t.setCompensation(c.compensation().word());
+            t.setOuterDirection(c.outerDirection().word());
+            t.setHoleDirection(c.holeDirection().word());
             t.setOvercutMm(c.overcutMm());
             t.setAvoidCutParts(c.avoidCutParts());
             x.setCutting(t);

@@ -19,10 +19,12 @@ import org.fresa.model.CamInputException;
  * @param attribute the job file's attribute ({@code schemas/job.xsd})
  * @param type the enumeration
  * @param word how a value is written
+ * @param reader how a word is read, when it takes more spellings than {@link #word} writes; null
+ *     for the written words only
  * @param <E> the enumeration
  */
 public record SettingChoice<E extends Enum<E>>(String option, String attribute, Class<E> type,
-        Function<E, String> word) {
+        Function<E, String> word, Function<String, Optional<E>> reader) {
 
     public SettingChoice {
         Objects.requireNonNull(option, "option");
@@ -34,7 +36,13 @@ public record SettingChoice<E extends Enum<E>>(String option, String attribute, 
     /** A choice among every value of the enumeration, in their declared order. */
     public static <E extends Enum<E>> SettingChoice<E> of(String option, String attribute, Class<E> type,
             Function<E, String> word) {
-        return new SettingChoice<>(option, attribute, type, word);
+        return new SettingChoice<>(option, attribute, type, word, null);
+    }
+
+    /** A choice that also reads other spellings than the written words (the command line's aliases). */
+    public static <E extends Enum<E>> SettingChoice<E> of(String option, String attribute, Class<E> type,
+            Function<E, String> word, Function<String, Optional<E>> reader) {
+        return new SettingChoice<>(option, attribute, type, word, reader);
     }
 
     /** The values, in the order the tabs offer them. */
@@ -56,6 +64,9 @@ public record SettingChoice<E extends Enum<E>>(String option, String attribute, 
     public Optional<E> find(String text) {
         if (text == null) {
             return Optional.empty();
+        }
+        if (reader != null) {
+            return reader.apply(text);
         }
         String t = text.trim().toLowerCase(Locale.ROOT);
         return values().stream().filter(v -> word.apply(v).toLowerCase(Locale.ROOT).equals(t)).findFirst();

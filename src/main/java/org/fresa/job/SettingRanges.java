@@ -99,6 +99,23 @@ public final class SettingRanges {
         public static final SettingRange TOLERANCE = SettingRange.of("--tolerance", "toleranceMm", 0, 10, "");
         public static final SettingRange OVERCUT = SettingRange.of("--overcut", "overcutMm", 0,
                 CuttingOptions.MAX_LEAD_MM, "mm");
+        public static final SettingChoice<org.fresa.cutting.CutProcess> PROCESS = SettingChoice.of("--process",
+                "process", org.fresa.cutting.CutProcess.class, org.fresa.cutting.CutProcess::id);
+        public static final SettingChoice<org.fresa.cutting.LeadShape> LEAD = SettingChoice.of("--lead", "lead",
+                org.fresa.cutting.LeadShape.class, org.fresa.cutting.LeadShape::word);
+        public static final SettingChoice<org.fresa.dxf.DrawingUnits> UNITS = SettingChoice.of("--units", "units",
+                org.fresa.dxf.DrawingUnits.class, org.fresa.dxf.DrawingUnits::word, org.fresa.dxf.DrawingUnits::of);
+        public static final SettingChoice<org.fresa.post.SheetCuttingPost.Dialect> POST = SettingChoice.of("--post",
+                "post", org.fresa.post.SheetCuttingPost.Dialect.class, org.fresa.post.SheetCuttingPost.Dialect::id);
+        public static final SettingChoice<org.fresa.cutting.KerfCompensation> COMPENSATION = SettingChoice.of(
+                "--compensation", "compensation", org.fresa.cutting.KerfCompensation.class,
+                org.fresa.cutting.KerfCompensation::word);
+        public static final SettingChoice<org.fresa.cutting.CutSense> OUTER_DIRECTION = SettingChoice.of(
+                "--outer-direction", "outerDirection", org.fresa.cutting.CutSense.class,
+                org.fresa.cutting.CutSense::word);
+        public static final SettingChoice<org.fresa.cutting.CutSense> HOLE_DIRECTION = SettingChoice.of(
+                "--hole-direction", "holeDirection", org.fresa.cutting.CutSense.class,
+                org.fresa.cutting.CutSense::word);
 
         private Cutting() {
         }

@@ -40,6 +40,11 @@ public final class SheetCuttingPost {
             return id;
         }
 
+        @Override
+        public String toString() {
+            return id;
+        }
+
         public static Optional<Dialect> byName(String name) {
             for (Dialect d : values()) {
                 if (d.id.equalsIgnoreCase(name)) {

@@ -21,7 +21,13 @@ import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.CuttingService;
+import org.fresa.cutting.CutProcess;
+import org.fresa.cutting.CutSense;
+import org.fresa.cutting.KerfCompensation;
+import org.fresa.cutting.LeadShape;
 import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.SettingRanges.Cutting;
+import org.fresa.post.SheetCuttingPost;
 import org.fresa.model.CamInputException;
 
 /**
@@ -41,16 +47,18 @@ final class CuttingTab implements ModuleTab {
     private final JTextArea totals = new JTextArea("No drawing cut yet.");
     private final JLabel file = new JLabel("(none)");
     private final JTextField kerf = new JTextField(6);
-    private final JComboBox<String> process = new JComboBox<>(new String[] {"plasma", "laser", "waterjet"});
+    private final JComboBox<CutProcess> process = new JComboBox<>(Cutting.PROCESS.values().toArray(new CutProcess[0]));
     private final JTextField leadIn = new JTextField(6);
     private final JTextField leadOut = new JTextField(6);
-    private final JComboBox<String> lead = new JComboBox<>(new String[] {"arc", "line"});
+    private final JComboBox<LeadShape> lead = new JComboBox<>(Cutting.LEAD.values().toArray(new LeadShape[0]));
     private final JTextField overcut = new JTextField(6);
-    private final JComboBox<String> compensation = new JComboBox<>(new String[] {"software", "controller"});
-    private final JComboBox<String> outerDir = new JComboBox<>(new String[] {"process", "cw", "ccw"});
-    private final JComboBox<String> holeDir = new JComboBox<>(new String[] {"process", "cw", "ccw"});
+    private final JComboBox<KerfCompensation> compensation = new JComboBox<>(
+            Cutting.COMPENSATION.values().toArray(new KerfCompensation[0]));
+    private final JComboBox<CutSense> outerDir = new JComboBox<>(Cutting.OUTER_DIRECTION.values().toArray(new CutSense[0]));
+    private final JComboBox<CutSense> holeDir = new JComboBox<>(Cutting.HOLE_DIRECTION.values().toArray(new CutSense[0]));
     private final JCheckBox avoid = new JCheckBox("Rapids around cut parts");
-    private final JComboBox<String> post = new JComboBox<>(new String[] {"linuxcnc", "iso", "fanuc", "840d"});
+    private final JComboBox<SheetCuttingPost.Dialect> post = new JComboBox<>(
+            Cutting.POST.values().toArray(new SheetCuttingPost.Dialect[0]));
     private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
 
     CuttingTab(AppContext ctx) {
@@ -181,16 +189,16 @@ final class CuttingTab implements ModuleTab {
 
     private void takeFields() {
         vm.setKerfMm(kerf.getText());
-        vm.setProcess((String) process.getSelectedItem());
+        vm.setProcess((CutProcess) process.getSelectedItem());
         vm.setLeadInMm(leadIn.getText());
         vm.setLeadOutMm(leadOut.getText());
-        vm.setLead((String) lead.getSelectedItem());
+        vm.setLead((LeadShape) lead.getSelectedItem());
         vm.setOvercutMm(overcut.getText());
-        vm.setCompensation((String) compensation.getSelectedItem());
-        vm.setOuterDirection((String) outerDir.getSelectedItem());
-        vm.setHoleDirection((String) holeDir.getSelectedItem());
+        vm.setCompensation((KerfCompensation) compensation.getSelectedItem());
+        vm.setOuterDirection((CutSense) outerDir.getSelectedItem());
+        vm.setHoleDirection((CutSense) holeDir.getSelectedItem());
         vm.setAvoidCutParts(avoid.isSelected());
-        vm.setPost((String) post.getSelectedItem());
+        vm.setPost((SheetCuttingPost.Dialect) post.getSelectedItem());
         vm.setPaperMode(paper.isSelected());
     }
 

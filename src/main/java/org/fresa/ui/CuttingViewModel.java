@@ -15,7 +15,13 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.CuttingService;
 import org.fresa.job.Job;
+import org.fresa.cutting.CutProcess;
+import org.fresa.cutting.CutSense;
+import org.fresa.cutting.KerfCompensation;
+import org.fresa.cutting.LeadShape;
+import org.fresa.dxf.DrawingUnits;
 import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.post.SheetCuttingPost;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 
@@ -25,19 +31,25 @@ import org.fresa.model.ExactDecimal;
  */
 public final class CuttingViewModel {
 
+    /** A new job's settings: the cutting module's defaults ({@link CuttingSettings#DEFAULTS}); no drawing. */
+    private static final CuttingSettings DEFAULTS = CuttingSettings.DEFAULTS;
+
     private Path drawing;
-    private String kerfMm = "2";
-    private String process = "plasma";
-    private String leadInMm = "3";
-    private String leadOutMm = "1";
-    private String lead = "arc";
-    private boolean paperMode;
-    private String post = "linuxcnc";
-    private String compensation = "software";
-    private String outerDirection = "process";
-    private String holeDirection = "process";
-    private String overcutMm = "0";
-    private boolean avoidCutParts = true;
+    private String kerfMm = ExactDecimal.of(DEFAULTS.kerfMm());
+    private CutProcess process = DEFAULTS.process();
+    private String leadInMm = ExactDecimal.of(DEFAULTS.leadInMm());
+    private String leadOutMm = ExactDecimal.of(DEFAULTS.leadOutMm());
+    private LeadShape lead = DEFAULTS.lead();
+    private boolean paperMode = DEFAULTS.paperMode();
+    private SheetCuttingPost.Dialect post = DEFAULTS.post();
+    private KerfCompensation compensation = DEFAULTS.compensation();
+    private CutSense outerDirection = DEFAULTS.outerDirection();
+    private CutSense holeDirection = DEFAULTS.holeDirection();
+    private String overcutMm = ExactDecimal.of(DEFAULTS.overcutMm());
+    private boolean avoidCutParts = DEFAULTS.avoidCutParts();
+    // the job's gap tolerance and units, which the tab has no fields for, go on as the job has them
+    private double toleranceMm = DEFAULTS.toleranceMm();
+    private DrawingUnits units = DEFAULTS.units();
     private CuttingService.Result result;
 
     /** Takes the job's cutting settings, if it has any (the drawing, kerf, process, leads, ...). */
@@ -59,6 +71,8 @@ public final class CuttingViewModel {
             holeDirection = c.holeDirection();
             overcutMm = ExactDecimal.of(c.overcutMm());
             avoidCutParts = c.avoidCutParts();
+            toleranceMm = c.toleranceMm();
+            units = c.units();
         });
     }
 
@@ -71,7 +85,7 @@ public final class CuttingViewModel {
         return kerfMm;
     }
 
-    public String process() {
+    public CutProcess process() {
         return process;
     }
 
@@ -83,7 +97,7 @@ public final class CuttingViewModel {
         return leadOutMm;
     }
 
-    public String lead() {
+    public LeadShape lead() {
         return lead;
     }
 
@@ -91,31 +105,31 @@ public final class CuttingViewModel {
         return paperMode;
     }
 
-    public String post() {
+    public SheetCuttingPost.Dialect post() {
         return post;
     }
 
-    public String compensation() {
+    public KerfCompensation compensation() {
         return compensation;
     }
 
-    public void setCompensation(String v) {
+    public void setCompensation(KerfCompensation v) {
         compensation = v;
     }
 
-    public String outerDirection() {
+    public CutSense outerDirection() {
         return outerDirection;
     }
 
-    public void setOuterDirection(String v) {
+    public void setOuterDirection(CutSense v) {
         outerDirection = v;
     }
 
-    public String holeDirection() {
+    public CutSense holeDirection() {
         return holeDirection;
     }
 
-    public void setHoleDirection(String v) {
+    public void setHoleDirection(CutSense v) {
         holeDirection = v;
     }
 
@@ -148,7 +162,7 @@ public final class CuttingViewModel {
         kerfMm = v.trim();
     }
 
-    public void setProcess(String v) {
+    public void setProcess(CutProcess v) {
         process = v;
     }
 
@@ -160,7 +174,7 @@ public final class CuttingViewModel {
         leadOutMm = v.trim();
     }
 
-    public void setLead(String v) {
+    public void setLead(LeadShape v) {
         lead = v;
     }
 
@@ -168,7 +182,7 @@ public final class CuttingViewModel {
         paperMode = v;
     }
 
-    public void setPost(String v) {
+    public void setPost(SheetCuttingPost.Dialect v) {
         post = v;
     }
 
@@ -178,7 +192,7 @@ public final class CuttingViewModel {
             throw new CamInputException("Cutting", "choose a DXF drawing first");
         }
         return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
-                number("lead-out", leadOutMm), lead, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM, "auto", paperMode, post, compensation, outerDirection,
+                number("lead-out", leadOutMm), lead, toleranceMm, units, paperMode, post, compensation, outerDirection,
                 holeDirection, number("overcut", overcutMm), avoidCutParts);
     }
 

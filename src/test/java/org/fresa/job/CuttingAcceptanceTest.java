@@ -54,7 +54,7 @@ class CuttingAcceptanceTest {
     void aRealDrawingIsCutCleanlyWithATwoMillimetreKerf(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", 0.001, "auto", false, "linuxcnc");
+        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         CutPlan plan = r.plan();
         rs274Accepts(r.program(), name, 0);
@@ -83,8 +83,8 @@ class CuttingAcceptanceTest {
     @CorpusCheck
     void theInchPlatesPartsCloseAcrossTheirTinyGapsAndAreAllCut() throws Exception {
         Path dxf = CORPUS.resolve("dxf2gcode/Teile.dxf");
-        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                "auto", false, "linuxcnc");
+        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
         CutPlan plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();
         List<String> gaps = plan.warnings().stream().filter(w -> w.startsWith("gap of ")).toList();
         org.junit.jupiter.api.Assertions.assertAll(
@@ -131,8 +131,8 @@ class CuttingAcceptanceTest {
     @CorpusCheck
     void everyCorpusDrawingIsCutInBothModesIntoAProgramLinuxCncAccepts(String name) throws Exception {
         for (boolean paper : new boolean[] {false, true}) {
-            CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, "plasma", 3, 1, "arc", 0.001, "auto", paper,
-                    "linuxcnc");
+            CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, paper,
+                    org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
             CuttingService.Result r;
             try {
                 r = CuttingService.compute(s, ProgressMonitor.NONE);
@@ -154,8 +154,8 @@ class CuttingAcceptanceTest {
     void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, "plasma", 3, 1, "arc", 0.001, "auto", false, "linuxcnc",
-                "controller", "process", "process", 0, true);
+        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC,
+                org.fresa.cutting.KerfCompensation.CONTROLLER, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, true);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertTrue(r.program().contains("G41"), name);
         rs274Accepts(r.program(), name + " G41/G42", 2);
@@ -165,8 +165,8 @@ class CuttingAcceptanceTest {
     @ValueSource(strings = {"linuxcnc", "iso"})
     @InterpreterCheck
     void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {
-        CuttingSettings s = new CuttingSettings(Path.of("samples/cutting/plate.dxf"), 2, "laser", 3, 1, "line", 0.001,
-                "auto", false, post);
+        CuttingSettings s = new CuttingSettings(Path.of("samples/cutting/plate.dxf"), 2, org.fresa.cutting.CutProcess.LASER, 3, 1, org.fresa.cutting.LeadShape.LINE, 0.001,
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.job.SettingRanges.Cutting.POST.require(post));
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(10, r.plan().cuts().size());
         // iso dwells are G04 X seconds (Fanuc-like controls); LinuxCNC's word for the same is P,

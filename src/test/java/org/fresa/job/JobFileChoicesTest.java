@@ -48,4 +48,14 @@ class JobFileChoicesTest {
         assertTrue(Files.readString(saved).contains("post=\"7m-compat\""), Files.readString(saved));
         assertEquals(job, JobXml.read(saved));
     }
+
+    @Test
+    void aMistypedCuttingPostIsRefusedWhenTheJobIsRead() throws Exception {
+        Path job = sampleWith("cut-plate.xml", "post=\"linuxcnc\"", "post=\"fanuk\"");
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(job));
+        assertAll(e.getMessage(),
+                () -> assertEquals(5, e.line().getAsInt()),
+                () -> assertEquals("post: unknown value 'fanuk': expected one of linuxcnc, iso, fanuc, 840d",
+                        e.problem()));
+    }
 }

@@ -68,10 +68,10 @@ class CuttingViewModelTest {
     void aJobSavedFromTheTabRunsWithFresaRun(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
         CuttingViewModel vm = new CuttingViewModel();
         vm.setDrawing(Path.of("samples/cutting/plate.dxf").toAbsolutePath());
-        vm.setProcess("laser");
-        vm.setCompensation("controller");
-        vm.setOuterDirection("ccw");
-        vm.setHoleDirection("cw");
+        vm.setProcess(org.fresa.cutting.CutProcess.LASER);
+        vm.setCompensation(org.fresa.cutting.KerfCompensation.CONTROLLER);
+        vm.setOuterDirection(org.fresa.cutting.CutSense.CCW);
+        vm.setHoleDirection(org.fresa.cutting.CutSense.CW);
         vm.setOvercutMm("0.5");
         vm.setAvoidCutParts(false);
         org.fresa.job.Job job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT));

@@ -14,7 +14,9 @@ final class SettingConverters {
 
     /** Every choice an option takes, one per enumeration. */
     static final List<SettingChoice<?>> CHOICES = List.of(SettingRanges.Pocket.POST, SettingRanges.Pocket.DIRECTION,
-            SettingRanges.Pocket.ENTRY);
+            SettingRanges.Pocket.ENTRY, SettingRanges.Cutting.PROCESS, SettingRanges.Cutting.LEAD,
+            SettingRanges.Cutting.UNITS, SettingRanges.Cutting.POST, SettingRanges.Cutting.COMPENSATION,
+            SettingRanges.Cutting.OUTER_DIRECTION);
 
     private SettingConverters() {
     }

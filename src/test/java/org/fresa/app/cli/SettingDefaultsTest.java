@@ -44,7 +44,8 @@ class SettingDefaultsTest {
 
     static List<Module> modules() {
         return List.of(new Module("PocketType", JobSettings.PocketSettings.DEFAULTS, SettingRanges.Pocket.class,
-                "pocket"));
+                "pocket"), new Module("CuttingType", JobSettings.CuttingSettings.DEFAULTS, SettingRanges.Cutting.class,
+                        "cut"));
     }
 
     /** The attribute defaults of a complex type of job.xsd. */

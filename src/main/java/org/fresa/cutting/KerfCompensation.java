@@ -1,0 +1,21 @@
+package org.fresa.cutting;
+
+import java.util.Locale;
+
+/**
+ * Who allows for the kerf: {@link #SOFTWARE} (the default: the path is the contour offset by half
+ * the kerf) or {@link #CONTROLLER} (the drawn contour with G41/G42, the kerf left to the controller).
+ */
+public enum KerfCompensation {
+    SOFTWARE, CONTROLLER;
+
+    /** The name as written: {@code software}, {@code controller}. */
+    public String word() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    @Override
+    public String toString() {
+        return word();
+    }
+}
