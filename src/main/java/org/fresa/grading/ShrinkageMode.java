@@ -29,6 +29,11 @@ public enum ShrinkageMode {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    @Override
+    public String toString() {
+        return id();
+    }
+
     /** @throws IllegalArgumentException for a name that is not a mode */
     public static ShrinkageMode ofId(String id) {
         for (ShrinkageMode m : values()) {

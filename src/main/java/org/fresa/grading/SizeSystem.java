@@ -141,6 +141,11 @@ public enum SizeSystem {
     }
 
     /** @throws IllegalArgumentException for a name that is not a system */
+    @Override
+    public String toString() {
+        return id;
+    }
+
     public static SizeSystem ofId(String id) {
         String s = id.trim().toLowerCase(Locale.ROOT);
         for (SizeSystem v : values()) {

@@ -110,7 +110,7 @@ public final class GradingService {
      */
     public static GradingPlan plan(GradingSettings s, Options o) throws CamInputException {
         try {
-            SizeSystem system = SizeSystem.ofId(s.system());
+            SizeSystem system = s.system();
             List<Double> sizes = SizeRange.parse(s.sizes(), system, s.halfSizes());
             double vc = s.lengthStepMm().orElse(system.lengthStepMm());
             double vl = s.widthStepMm().orElse(system.widthStepMm());
@@ -123,7 +123,7 @@ public final class GradingService {
             if (!Double.isFinite(s.baseSize())) {
                 throw new IllegalArgumentException("base size must be a number");
             }
-            ShrinkageMode mode = ShrinkageMode.ofId(s.shrinkageMode());
+            ShrinkageMode mode = s.shrinkageMode();
             return new GradingPlan(system, s.baseSize(), sizes, vc, vl, s.originMm(), o.lengthAxisDeg(), s.shrinkage(),
                     mode, o.arcMode(), GradingPlan.DEFAULT_ARC_TOLERANCE_MM, o.coordination());
         } catch (IllegalArgumentException e) {

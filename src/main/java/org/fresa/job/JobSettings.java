@@ -12,9 +12,12 @@ import org.fresa.cutting.KerfCompensation;
 import org.fresa.cutting.LeadShape;
 import org.fresa.dxf.DrawingUnits;
 import org.fresa.geom.Vec2;
+import org.fresa.grading.ShrinkageMode;
+import org.fresa.grading.SizeSystem;
 import org.fresa.model.Placement;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.post.MillingPost;
 import org.fresa.post.SheetCuttingPost;
 
 /**
@@ -32,7 +35,14 @@ public final class JobSettings {
      * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
      * @param breakthroughMm how far a through hole's tool passes its exit
      */
-    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+    public record StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm) {
+        /**
+         * The STEP-NC module's defaults, as {@code fresa toolpath} and {@code fresa robot}, a new
+         * job and {@code schemas/job.xsd} have them; the file has none.
+         */
+        public static final StepNcSettings DEFAULTS = new StepNcSettings(Path.of(""), MillingPost.LINUXCNC, false,
+                org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM);
+
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
@@ -40,8 +50,8 @@ public final class JobSettings {
         }
 
         /** The file and post with the planner's default choices. */
-        public StepNcSettings(Path file, String post) {
-            this(file, post, false, org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM);
+        public StepNcSettings(Path file, MillingPost post) {
+            this(file, post, DEFAULTS.trustCuttingSpeed(), DEFAULTS.breakthroughMm());
         }
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
@@ -205,9 +215,18 @@ public final class JobSettings {
     }
 
     /** Grading options (spec/cli.md, {@code fresa grade}); empty steps mean the system's own. */
-    public record GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, String system,
+    public record GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, SizeSystem system,
             OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
-            double shrinkage, String shrinkageMode) {
+            double shrinkage, ShrinkageMode shrinkageMode) {
+        /**
+         * The grading module's defaults, as {@code fresa grade}, the Grading tab of a new job and
+         * {@code schemas/job.xsd} have them; the outline has none, and the command line asks for
+         * the base size, the sizes and the system.
+         */
+        public static final GradingSettings DEFAULTS = new GradingSettings(Path.of(""), 40, "36-44", false,
+                SizeSystem.BR, OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0,
+                ShrinkageMode.MULTIPLICATIVE);
+
         public GradingSettings {
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
@@ -227,11 +246,11 @@ public final class JobSettings {
      * @param baseSize NP
      * @param sizes the sizes wanted, e.g. {@code 38-42} or {@code 40}
      * @param cavityDepthMm depth of the sole cavity
-     * @param post the machine-tool post name
-     * @param system the size system id ({@code br}, {@code paris}, ...)
+     * @param post the machine-tool post
+     * @param system the size system
      * @param originMm the grading origin and foot of the mirror axis, or empty for the heel centre
      * @param shrinkage the material's shrinkage, fraction
-     * @param shrinkageMode {@code additive} (thesis) or {@code multiplicative}
+     * @param shrinkageMode additive (thesis) or multiplicative
      * @param treadDepthMm depth of the tread grooves
      * @param clearanceMm height of rapid travel above the top face
      * @param marginMm least distance of a groove's centre line from the outline
@@ -239,9 +258,17 @@ public final class JobSettings {
      * @param designs the tread designs in cutting order
      * @param cavityTool the id of the tool that pockets the cavity, empty for no cavity program
      */
-    public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post,
-            String system, Optional<Vec2> originMm, double shrinkage, String shrinkageMode, double treadDepthMm,
-            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs, String cavityTool) {
+    public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, MillingPost post,
+            SizeSystem system, Optional<Vec2> originMm, double shrinkage, ShrinkageMode shrinkageMode,
+            double treadDepthMm, double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs,
+            String cavityTool) {
+        /**
+         * The sole module's defaults, as {@code schemas/job.xsd} has them (the sole has no command-line
+         * options: {@code fresa sole JOB}); the outline has none, and there are no tools or designs.
+         */
+        public static final SoleSettings DEFAULTS = new SoleSettings(Path.of(""), 40, "40", 10, MillingPost.LINUXCNC,
+                SizeSystem.BR, Optional.empty(), 0, ShrinkageMode.MULTIPLICATIVE, 2, 5, 2, List.of(), List.of(), "");
+
         public SoleSettings {
             Objects.requireNonNull(cavityTool, "cavityTool");
             Objects.requireNonNull(outline, "outline");
@@ -254,10 +281,10 @@ public final class JobSettings {
             designs = List.copyOf(designs);
         }
 
-        /** A sole job without tread designs, thesis defaults elsewhere. */
-        public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post) {
-            this(outline, baseSize, sizes, cavityDepthMm, post, "br", Optional.empty(), 0, "multiplicative", 2, 5, 2,
-                    List.of(), List.of(), "");
+        /** A sole job without tread designs, the defaults elsewhere. */
+        public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, MillingPost post) {
+            this(outline, baseSize, sizes, cavityDepthMm, post, SizeSystem.BR, Optional.empty(), 0,
+                    ShrinkageMode.MULTIPLICATIVE, 2, 5, 2, List.of(), List.of(), "");
         }
     }
 

@@ -212,7 +212,8 @@ public final class JobXml {
         }
         StepNcType s = x.getStepnc();
         if (s != null) {
-            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
+            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()),
+                    SettingRanges.StepNc.POST.require(s.getPost()), s.isTrustCuttingSpeed(),
                     SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
         }
         RobotType r = x.getRobot();
@@ -252,9 +253,11 @@ public final class JobXml {
                     ? Optional.of(Vec2.of(Grading.ORIGIN_X.require(g.getOriginXMm()),
                             Grading.ORIGIN_Y.require(g.getOriginYMm()))) : Optional.empty();
             job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
-                    Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(), g.getSystem(),
+                    Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(),
+                    Grading.SYSTEM.require(g.getSystem()),
                     optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
-                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode()));
+                    origin, Grading.SHRINKAGE.require(g.getShrinkage()),
+                    Grading.SHRINKAGE_MODE.require(g.getShrinkageMode())));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -287,8 +290,9 @@ public final class JobXml {
                         optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
                 .toList();
         return new SoleSettings(resolve(base, so.getOutline()), Sole.BASE_SIZE.require(so.getBaseSize()), so.getSizes(),
-                Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), so.getPost(), so.getSystem(), origin,
-                Sole.SHRINKAGE.require(so.getShrinkage()), so.getShrinkageMode(),
+                Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), Sole.POST.require(so.getPost()),
+                Sole.SYSTEM.require(so.getSystem()), origin, Sole.SHRINKAGE.require(so.getShrinkage()),
+                Sole.SHRINKAGE_MODE.require(so.getShrinkageMode()),
                 Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
                 Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool());
     }
@@ -299,14 +303,14 @@ public final class JobXml {
         t.setBaseSize(s.baseSize());
         t.setSizes(s.sizes());
         t.setCavityDepthMm(s.cavityDepthMm());
-        t.setPost(s.post());
-        t.setSystem(s.system());
+        t.setPost(s.post().word());
+        t.setSystem(s.system().id());
         s.originMm().ifPresent(o -> {
             t.setOriginXMm(o.x());
             t.setOriginYMm(o.y());
         });
         t.setShrinkage(s.shrinkage());
-        t.setShrinkageMode(s.shrinkageMode());
+        t.setShrinkageMode(s.shrinkageMode().id());
         t.setTreadDepthMm(s.treadDepthMm());
         t.setClearanceMm(s.clearanceMm());
         t.setMarginMm(s.marginMm());
@@ -393,7 +397,7 @@ public final class JobXml {
         job.stepnc().ifPresent(s -> {
             StepNcType t = new StepNcType();
             t.setFile(relativize(base, s.file()));
-            t.setPost(s.post());
+            t.setPost(s.post().word());
             // written only when not the default, so that saved jobs stay as they were
             if (s.trustCuttingSpeed()) {
                 t.setTrustCuttingSpeed(true);
@@ -459,7 +463,7 @@ public final class JobXml {
             t.setBaseSize(g.baseSize());
             t.setSizes(g.sizes());
             t.setHalfSizes(g.halfSizes());
-            t.setSystem(g.system());
+            t.setSystem(g.system().id());
             g.lengthStepMm().ifPresent(t::setLengthStepMm);
             g.widthStepMm().ifPresent(t::setWidthStepMm);
             g.originMm().ifPresent(o -> {
@@ -467,7 +471,7 @@ public final class JobXml {
                 t.setOriginYMm(o.y());
             });
             t.setShrinkage(g.shrinkage());
-            t.setShrinkageMode(g.shrinkageMode());
+            t.setShrinkageMode(g.shrinkageMode().id());
             x.setGrading(t);
         });
         job.sole().ifPresent(s -> x.setSole(soleType(s, base)));

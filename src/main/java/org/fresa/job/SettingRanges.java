@@ -54,6 +54,8 @@ public final class SettingRanges {
         /** How far a through hole's tool passes its exit. */
         public static final SettingRange BREAKTHROUGH = SettingRange.of("--breakthrough", "breakthroughMm", 0,
                 org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
+        public static final SettingChoice<org.fresa.post.MillingPost> POST = SettingChoice.of("--post", "post",
+                org.fresa.post.MillingPost.class, org.fresa.post.MillingPost::word);
 
         private StepNc() {
         }
@@ -136,6 +138,11 @@ public final class SettingRanges {
                 5000, "mm");
         public static final SettingRange HEEL_GROUP = SettingRange.wholeNumbers("--heel-group", "heelGroup", 1, 400,
                 "sizes");
+        public static final SettingChoice<org.fresa.grading.SizeSystem> SYSTEM = SettingChoice.of("--system", "system",
+                org.fresa.grading.SizeSystem.class, org.fresa.grading.SizeSystem::id);
+        public static final SettingChoice<org.fresa.grading.ShrinkageMode> SHRINKAGE_MODE = SettingChoice.of(
+                "--shrinkage-mode", "shrinkageMode", org.fresa.grading.ShrinkageMode.class,
+                org.fresa.grading.ShrinkageMode::id);
 
         private Grading() {
         }
@@ -286,6 +293,12 @@ public final class SettingRanges {
         public static final SettingRange MIRROR_X = coordinate("", "mirrorXMm");
         public static final SettingRange MIRROR_Y = coordinate("", "mirrorYMm");
         public static final SettingRange ROTATE = angle("", "rotateDeg");
+        public static final SettingChoice<org.fresa.post.MillingPost> POST = SettingChoice.of("", "post",
+                org.fresa.post.MillingPost.class, org.fresa.post.MillingPost::word);
+        public static final SettingChoice<org.fresa.grading.SizeSystem> SYSTEM = SettingChoice.of("", "system",
+                org.fresa.grading.SizeSystem.class, org.fresa.grading.SizeSystem::id);
+        public static final SettingChoice<org.fresa.grading.ShrinkageMode> SHRINKAGE_MODE = SettingChoice.of("",
+                "shrinkageMode", org.fresa.grading.ShrinkageMode.class, org.fresa.grading.ShrinkageMode::id);
 
         private Sole() {
         }

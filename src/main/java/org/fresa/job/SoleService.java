@@ -27,7 +27,6 @@ import org.fresa.model.ExactDecimal;
 import org.fresa.model.FileChecks;
 import org.fresa.model.Toolpath;
 import org.fresa.post.NcPost;
-import org.fresa.post.NcPosts;
 import org.fresa.sole.Foot;
 import org.fresa.sole.Similarity2;
 import org.fresa.sole.SizeRule;
@@ -75,9 +74,9 @@ public final class SoleService {
         ShrinkageMode mode;
         GradingPlan gp;
         try {
-            system = SizeSystem.ofId(s.system());
+            system = s.system();
             sizes = SizeRange.parse(s.sizes(), system, false);
-            mode = ShrinkageMode.ofId(s.shrinkageMode());
+            mode = s.shrinkageMode();
             gp = GradingPlan.of(system, s.baseSize(), sizes).withShrinkage(s.shrinkage(), mode);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(source, e.getMessage());
@@ -105,8 +104,7 @@ public final class SoleService {
         for (JobSettings.SoleDesign d : s.designs()) {
             items.add(item(d, tools, source));
         }
-        NcPost post = NcPosts.byName(s.post()).orElseThrow(() -> new CamInputException(source,
-                "unknown post '" + s.post() + "', expected one of " + String.join(", ", NcPosts.names())));
+        NcPost post = s.post().ncPost();
         return new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s);
     }
 

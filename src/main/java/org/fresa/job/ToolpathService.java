@@ -14,6 +14,7 @@ import org.fresa.model.CamInputException;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPost;
+import org.fresa.post.MillingPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.PlanningChoices;
@@ -35,22 +36,17 @@ public final class ToolpathService {
     private ToolpathService() {
     }
 
-    /** The post by name, or bad usage naming the known ones. */
-    public static NcPost post(String name, String source) throws CamInputException {
-        return NcPosts.byName(name).orElseThrow(() -> new CamInputException(source,
-                "unknown post '" + name + "': expected one of " + String.join(", ", NcPosts.names())));
-    }
 
     /** Plans and writes the three files into the folder, with the planner's default choices. */
-    public static TaskOutcome run(Path file, String postName, OutputFolder out, ProgressMonitor progress)
+    public static TaskOutcome run(Path file, MillingPost postName, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         return run(file, postName, PlanningChoices.DEFAULT, out, progress);
     }
 
     /** Plans with these choices and writes the three files into the folder. */
-    public static TaskOutcome run(Path file, String postName, PlanningChoices choices, OutputFolder out,
+    public static TaskOutcome run(Path file, MillingPost postName, PlanningChoices choices, OutputFolder out,
             ProgressMonitor progress) throws CamInputException, IOException {
-        NcPost post = post(postName, "--post");
+        NcPost post = postName.ncPost();
         StepNcProgram program = StepNcService.read(file, progress);
         java.util.Optional<String> nothing = program.whyNothingToMachine();
         if (nothing.isPresent()) {
@@ -110,8 +106,7 @@ public final class ToolpathService {
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         JobSettings.StepNcSettings s = JobRunner.require(job.stepnc(), "stepnc", job);
-        String post = s.post() == null || s.post().isBlank() ? NcPosts.DEFAULT : s.post();
-        return run(s.file(), post, s.choices(), out, progress);
+        return run(s.file(), s.post(), s.choices(), out, progress);
     }
 
     static Map<String, Object> summary(StepNcProgram program, ToolpathPlanner.Plan plan, NcPost post) {

@@ -25,6 +25,8 @@ import javax.swing.JToggleButton;
 import javax.swing.table.DefaultTableModel;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradingResult;
+import org.fresa.grading.ShrinkageMode;
+import org.fresa.grading.SizeSystem;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -53,14 +55,15 @@ final class GradingTab implements ModuleTab {
     private final JLabel outlineName = new JLabel("(none)");
     private final JTextField origin = new JTextField(12);
     private final JToggleButton pick = new JToggleButton("Pick on plot");
-    private final JComboBox<String> system = new JComboBox<>(GradingViewModel.SYSTEMS.toArray(new String[0]));
+    private final JComboBox<SizeSystem> system = new JComboBox<>(GradingViewModel.SYSTEMS.toArray(new SizeSystem[0]));
     private final JTextField baseSize = new JTextField(6);
     private final JTextField sizes = new JTextField(8);
     private final JCheckBox halfSizes = new JCheckBox("Half sizes");
     private final JTextField lengthStep = new JTextField(6);
     private final JTextField widthStep = new JTextField(6);
     private final JTextField shrinkage = new JTextField(6);
-    private final JComboBox<String> shrinkageMode = new JComboBox<>(GradingViewModel.SHRINKAGE_MODES.toArray(new String[0]));
+    private final JComboBox<ShrinkageMode> shrinkageMode = new JComboBox<>(
+            GradingViewModel.SHRINKAGE_MODES.toArray(new ShrinkageMode[0]));
 
     GradingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -192,14 +195,14 @@ final class GradingTab implements ModuleTab {
 
     private void pushFields() {
         vm.setOrigin(origin.getText());
-        vm.setSystem((String) system.getSelectedItem());
+        vm.setSystem((SizeSystem) system.getSelectedItem());
         vm.setBaseSize(baseSize.getText());
         vm.setSizes(sizes.getText());
         vm.setHalfSizes(halfSizes.isSelected());
         vm.setLengthStep(lengthStep.getText());
         vm.setWidthStep(widthStep.getText());
         vm.setShrinkage(shrinkage.getText());
-        vm.setShrinkageMode((String) shrinkageMode.getSelectedItem());
+        vm.setShrinkageMode((ShrinkageMode) shrinkageMode.getSelectedItem());
     }
 
     private void openOutline() {

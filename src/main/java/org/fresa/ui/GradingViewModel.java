@@ -14,10 +14,13 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradedSize;
 import org.fresa.grading.GradingResult;
+import org.fresa.grading.ShrinkageMode;
+import org.fresa.grading.SizeSystem;
 import org.fresa.job.GradingService;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.OutputFolder;
+import org.fresa.job.SettingRanges;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -31,25 +34,26 @@ import org.fresa.model.ExactDecimal;
  */
 public final class GradingViewModel {
 
-    /** The size systems offered, as their ids. */
-    public static final List<String> SYSTEMS = List.of("br", "paris", "uk", "us", "mondopoint");
+    /** The size systems offered. */
+    public static final List<SizeSystem> SYSTEMS = SettingRanges.Grading.SYSTEM.values();
     /** The shrinkage modes offered. */
-    public static final List<String> SHRINKAGE_MODES = List.of("multiplicative", "additive");
+    public static final List<ShrinkageMode> SHRINKAGE_MODES = List.of(ShrinkageMode.MULTIPLICATIVE,
+            ShrinkageMode.ADDITIVE);
     /** The grading table's column titles. */
     public static final List<String> COLUMNS = List.of("Size", "Length (mm)", "Width (mm)", "ALFA", "BETA",
             "Length factor", "Width factor", "Max deviation (mm)");
 
     private Optional<Path> outlineFile = Optional.empty();
     private List<Contour> outline = List.of();
-    private String system = "br";
-    private String baseSize = "40";
-    private String sizes = "36-44";
+    private SizeSystem system = GradingSettings.DEFAULTS.system();
+    private String baseSize = ExactDecimal.of(GradingSettings.DEFAULTS.baseSize());
+    private String sizes = GradingSettings.DEFAULTS.sizes();
     private boolean halfSizes;
     private String lengthStep = "";
     private String widthStep = "";
     private String origin = "";
-    private String shrinkage = "0";
-    private String shrinkageMode = "multiplicative";
+    private String shrinkage = ExactDecimal.of(GradingSettings.DEFAULTS.shrinkage());
+    private ShrinkageMode shrinkageMode = GradingSettings.DEFAULTS.shrinkageMode();
     private Optional<GradingResult> result = Optional.empty();
 
     /** Reads the base outline (a .contour file) and forgets the last result. */
@@ -248,15 +252,12 @@ public final class GradingViewModel {
         return text.trim().isEmpty() ? OptionalDouble.empty() : OptionalDouble.of(number(field, text));
     }
 
-    public String system() {
+    public SizeSystem system() {
         return system;
     }
 
-    public void setSystem(String s) {
-        if (!SYSTEMS.contains(s)) {
-            throw new IllegalArgumentException("unknown system " + s);
-        }
-        system = s;
+    public void setSystem(SizeSystem s) {
+        system = java.util.Objects.requireNonNull(s, "system");
     }
 
     public String baseSize() {
@@ -315,14 +316,11 @@ public final class GradingViewModel {
         shrinkage = s;
     }
 
-    public String shrinkageMode() {
+    public ShrinkageMode shrinkageMode() {
         return shrinkageMode;
     }
 
-    public void setShrinkageMode(String s) {
-        if (!SHRINKAGE_MODES.contains(s)) {
-            throw new IllegalArgumentException("unknown shrinkage mode " + s);
-        }
-        shrinkageMode = s;
+    public void setShrinkageMode(ShrinkageMode s) {
+        shrinkageMode = java.util.Objects.requireNonNull(s, "shrinkageMode");
     }
 }

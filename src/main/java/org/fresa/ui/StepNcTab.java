@@ -286,7 +286,8 @@ final class StepNcTab implements ModuleTab {
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
-            String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
+            org.fresa.post.MillingPost post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post)
+                    .orElse(JobSettings.StepNcSettings.DEFAULTS.post());
             ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
                     + program.skipped().size() + " skipped, " + program.unknownEntities().size()

@@ -133,7 +133,7 @@ class Ap238ToolpathTest {
 
     /** Runs the toolpath task, expects its exit status, interprets its program; returns its problems. */
     private static List<String> interpreted(Path input, Path dir, int exitStatus) throws Exception {
-        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(exitStatus, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
@@ -169,7 +169,7 @@ class Ap238ToolpathTest {
         StepNcProgram p = StepNcReader.read(J4);
         assertEquals(1, p.workingsteps().size());
         assertEquals(12, p.workingsteps().get(0).operation().toolpaths().size());
-        TaskOutcome o = ToolpathService.run(J4, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(J4, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
         assertTrue(o.problems().get(0).contains("spindle"), o.problems().toString());
         // no program: only summary.json, with the reasons
@@ -199,7 +199,7 @@ class Ap238ToolpathTest {
         assertEquals(arcs, plan.toolpath().sections().get(0).moves().stream()
                 .filter(m -> m instanceof org.fresa.model.Move.Circular).count());
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         // the file's own path goes straight down 3 mm onto its contour; the file states no stock (no
         // block, no face), so the descent counts as into material and the program is refused, the
         // toolpath written
@@ -256,7 +256,7 @@ class Ap238ToolpathTest {
                         "#520=CONTOURING_TURNING_OPERATION('CONTOUR','roughing','','');");
         Path input = dir.resolve("turning.stp");
         Files.writeString(input, text);
-        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(dir.resolve("out")),
+        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")),
                 ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
         assertEquals(2, o.problems().stream().filter(x -> x.contains("turning is not supported")).count(),

@@ -73,16 +73,13 @@ class GradingServiceTest {
 
     @Test
     void anUnknownSystemIsBadInput() {
-        GradingSettings s = new GradingSettings(Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40,
-                "36-44", false, "zz", OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0,
-                "multiplicative");
-        CamInputException e = assertThrows(CamInputException.class,
-                () -> GradingService.run(s, new OutputFolder(dir), ProgressMonitor.NONE));
-        assertTrue(e.getMessage().contains("br, paris, uk, us or mondopoint"));
+        CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Grading.SYSTEM.check("zz"));
+        assertTrue(e.getMessage().contains("--system") && e.getMessage().contains("br, paris, uk, us, mondopoint"),
+                e.getMessage());
     }
 
     private static GradingSettings settings(String sizes, boolean half) {
-        return new GradingSettings(Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, "br",
-                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, "multiplicative");
+        return new GradingSettings(Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, org.fresa.grading.SizeSystem.BR,
+                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, org.fresa.grading.ShrinkageMode.MULTIPLICATIVE);
     }
 }

@@ -35,7 +35,7 @@ class JobRunsTest {
     @Test
     void aRunSetIsKeptInTaskOrderAndReadBack() throws Exception {
         Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml")).withStepnc(new JobSettings.StepNcSettings(
-                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), "linuxcnc"));
+                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC));
         Job both = job.withRuns(List.of(JobTask.GRADE, JobTask.STEPNC));
         assertAll(() -> assertEquals(List.of(JobTask.STEPNC, JobTask.GRADE), both.runs()),
                 () -> assertEquals(JobTask.STEPNC, both.task()));
@@ -54,7 +54,7 @@ class JobRunsTest {
     @Test
     void eachTaskOfARunSetWritesIntoItsOwnFolderAndOnlyTheTicked() throws Exception {
         Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml")).withStepnc(new JobSettings.StepNcSettings(
-                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), "linuxcnc"))
+                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC))
                 .withRuns(List.of(JobTask.STEPNC, JobTask.GRADE));
         TaskOutcome o = JobRunner.run(job, new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());

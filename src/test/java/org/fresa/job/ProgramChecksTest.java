@@ -52,7 +52,7 @@ class ProgramChecksTest {
         Path file = dir.resolve("no-spindle.stp");
         Files.writeString(file, text);
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(file, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(file, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus(), o.problems().toString());
         assertTrue(Files.exists(out.resolve("summary.json")));
         Path ngc = out.resolve("program.ngc");

@@ -31,7 +31,7 @@ class SoleServiceTest {
         JobSettings.SoleSettings s = job.sole().orElseThrow();
         assertEquals(8, s.designs().size());
         assertEquals(5, s.tools().size());
-        assertEquals("additive", s.shrinkageMode());
+        assertEquals(org.fresa.grading.ShrinkageMode.ADDITIVE, s.shrinkageMode());
         Path copy = dir.resolve("copy.xml");
         JobXml.write(job, copy);
         JobSettings.SoleSettings back = JobXml.read(copy).sole().orElseThrow();

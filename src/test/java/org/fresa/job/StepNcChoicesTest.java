@@ -31,7 +31,7 @@ class StepNcChoicesTest {
 
     @Test
     void refusedWorkingstepsExitOneAndTheOthersAreWritten() throws Exception {
-        TaskOutcome o = ToolpathService.run(TECHNOLOGY, "linuxcnc", PlanningChoices.DEFAULT, new OutputFolder(dir),
+        TaskOutcome o = ToolpathService.run(TECHNOLOGY, org.fresa.post.MillingPost.LINUXCNC, PlanningChoices.DEFAULT, new OutputFolder(dir),
                 ProgressMonitor.NONE);
         String ngc = Files.readString(dir.resolve("program.ngc"));
         String summary = Files.readString(dir.resolve("summary.json"));
@@ -64,9 +64,9 @@ class StepNcChoicesTest {
     @Test
     void theChoicesAreSavedOnlyWhenNotTheDefaults() throws Exception {
         Path file = dir.resolve("job.xml");
-        JobXml.write(Job.empty(JobTask.TOOLPATH).withStepnc(new StepNcSettings(HOLES.toAbsolutePath(), "linuxcnc")), file);
+        JobXml.write(Job.empty(JobTask.TOOLPATH).withStepnc(new StepNcSettings(HOLES.toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC)), file);
         String plain = Files.readString(file);
-        Job chosen = Job.empty(JobTask.TOOLPATH).withStepnc(new StepNcSettings(HOLES.toAbsolutePath(), "linuxcnc", true,
+        Job chosen = Job.empty(JobTask.TOOLPATH).withStepnc(new StepNcSettings(HOLES.toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC, true,
                 0.5));
         JobXml.write(chosen, file);
         assertAll(() -> assertFalse(plain.contains("breakthroughMm") || plain.contains("trustCuttingSpeed"), plain),
@@ -75,7 +75,7 @@ class StepNcChoicesTest {
 
     @Test
     void aHandMadeFilesThroughHolesDrillOneMillimetreThroughByDefault() throws Exception {
-        TaskOutcome o = ToolpathService.run(HOLES, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(HOLES, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertAll(() -> assertEquals(0, o.exitStatus(), o.problems().toString()),
                 () -> assertTrue(Files.readString(dir.resolve("program.ngc")).contains("Z-2.803")));
     }
@@ -84,8 +84,8 @@ class StepNcChoicesTest {
     @InterpreterCheck
     void theHandMadeFilesProgramsAreAcceptedByLinuxCncDownToTheirBreakthrough() throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        ToolpathService.run(HOLES, "linuxcnc", new OutputFolder(dir.resolve("holes")), ProgressMonitor.NONE);
-        ToolpathService.run(TECHNOLOGY, "linuxcnc", new PlanningChoices(true, 1), new OutputFolder(dir.resolve("tech")),
+        ToolpathService.run(HOLES, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir.resolve("holes")), ProgressMonitor.NONE);
+        ToolpathService.run(TECHNOLOGY, org.fresa.post.MillingPost.LINUXCNC, new PlanningChoices(true, 1), new OutputFolder(dir.resolve("tech")),
                 ProgressMonitor.NONE);
         Rs274.Result holes = Rs274.run(dir.resolve("holes/program.ngc"), 6);
         Rs274.Result tech = Rs274.run(dir.resolve("tech/program.ngc"), 6);

@@ -48,7 +48,7 @@ class ToolpathServiceTest {
     @InterpreterCheck
     void theProgramIsAcceptedByLinuxCncAndItsMotionsAreTheCsvsMoves(String input, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        TaskOutcome o = ToolpathService.run(Path.of(input), "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(Path.of(input), org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
@@ -74,7 +74,7 @@ class ToolpathServiceTest {
         Path input = dir.resolve("dwells.stp");
         Files.writeString(input, text);
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(input, "linuxcnc", new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         Toolpath path = plan(input);
         List<Double> dwells = new ArrayList<>();
@@ -270,7 +270,7 @@ class ToolpathServiceTest {
     /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */
     @Test
     void summaryJsonSaysHowEachUnitlessFeedWasRead(@TempDir Path dir) throws Exception {
-        TaskOutcome o = ToolpathService.run(EXAMPLE2, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(EXAMPLE2, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         String json = Files.readString(dir.resolve("summary.json"));
         assertTrue(json.contains("\"rapid_mm_per_min\": 10000"), json);
@@ -288,7 +288,7 @@ class ToolpathServiceTest {
         // the workingstep is in the main workplan's sequence but has no operation: that is the reason given,
         // never "not referenced by any workplan"
         Path aim = Path.of("src/test/resources/stepnc/aim-header-only.stp");
-        TaskOutcome o = ToolpathService.run(aim, "linuxcnc", new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(aim, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
         assertTrue(o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
                 o.problems().toString());

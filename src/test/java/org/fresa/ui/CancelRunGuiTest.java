@@ -33,8 +33,8 @@ class CancelRunGuiTest extends WindowGuiTest {
 
     static Job grading(String sizes, boolean half) {
         return Job.empty(JobTask.GRADE).withGrading(new GradingSettings(
-                Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, "br",
-                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, "multiplicative"));
+                Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, org.fresa.grading.SizeSystem.BR,
+                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, org.fresa.grading.ShrinkageMode.MULTIPLICATIVE));
     }
 
     /** Presses a key in the window, clicking it first: without a window manager a closed chooser leaves no focus. */

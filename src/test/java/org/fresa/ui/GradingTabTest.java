@@ -39,9 +39,9 @@ class GradingTabTest {
             f.setSize(1200, 800);
             f.setVisible(true);
             model.setJob(model.job().withTask(JobTask.GRADE).withGrading(new GradingSettings(
-                    Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, "38-42", false, "br",
+                    Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, "38-42", false, org.fresa.grading.SizeSystem.BR,
                     java.util.OptionalDouble.empty(), java.util.OptionalDouble.empty(), java.util.Optional.empty(), 0,
-                    "multiplicative")));
+                    org.fresa.grading.ShrinkageMode.MULTIPLICATIVE)));
             tab.set(t);
             frame.set(f);
         });

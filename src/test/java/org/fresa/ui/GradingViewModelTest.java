@@ -70,24 +70,24 @@ class GradingViewModelTest {
     void settingsGoIntoTheJobAndComeBack() throws Exception {
         GradingViewModel vm = new GradingViewModel();
         vm.openOutline(SOLE);
-        vm.setSystem("paris");
+        vm.setSystem(org.fresa.grading.SizeSystem.PARIS);
         vm.setBaseSize("42");
         vm.setSizes("40-44");
         vm.setHalfSizes(true);
         vm.setLengthStep("6.67");
         vm.setOrigin("0,0");
         vm.setShrinkage("0.02");
-        vm.setShrinkageMode("additive");
+        vm.setShrinkageMode(org.fresa.grading.ShrinkageMode.ADDITIVE);
         Job job = vm.applyTo(Job.empty(JobTask.POCKET));
         // the grading settings only: what the job runs stays the planner's choice
         assertEquals(JobTask.POCKET, job.task());
         GradingViewModel other = new GradingViewModel();
         other.load(job);
-        assertAll(() -> assertEquals("paris", other.system()), () -> assertEquals("42", other.baseSize()),
+        assertAll(() -> assertEquals(org.fresa.grading.SizeSystem.PARIS, other.system()), () -> assertEquals("42", other.baseSize()),
                 () -> assertEquals("40-44", other.sizes()), () -> assertTrue(other.halfSizes()),
                 () -> assertEquals("6.67", other.lengthStep()), () -> assertEquals("", other.widthStep()),
                 () -> assertEquals("0,0", other.origin()), () -> assertEquals("0.02", other.shrinkage()),
-                () -> assertEquals("additive", other.shrinkageMode()),
+                () -> assertEquals(org.fresa.grading.ShrinkageMode.ADDITIVE, other.shrinkageMode()),
                 () -> assertEquals(1, other.outline().size()));
     }
 

@@ -20,7 +20,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
         GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                "linuxcnc"))));
+                org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
 
         window.tabbedPane("tabs").selectTab("Robot");
@@ -77,7 +77,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
         GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                "linuxcnc"))));
+                org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
         window.tabbedPane("tabs").selectTab("Robot");
         window.comboBox("robot-choice").selectItem("irb140");

@@ -26,7 +26,7 @@ class StepNcTabGuiTest extends WindowGuiTest {
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
         window.tabbedPane("tabs").selectTab("STEP-NC");
         GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                "linuxcnc"))));
+                org.fresa.post.MillingPost.LINUXCNC))));
         Pause.pause(new Condition("the program is read and planned") {
             @Override
             public boolean test() {

@@ -6,6 +6,8 @@ import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.ArcMode;
+import org.fresa.grading.ShrinkageMode;
+import org.fresa.grading.SizeSystem;
 import org.fresa.grading.Coordination;
 import org.fresa.job.GradingService;
 import org.fresa.job.JobSettings.GradingSettings;
@@ -39,10 +41,10 @@ final class GradeCommand implements Callable<Integer> {
     String sizes;
 
     @Option(names = "--half-sizes", description = "include half sizes")
-    boolean halfSizes;
+    boolean halfSizes = GradingSettings.DEFAULTS.halfSizes();
 
     @Option(names = "--system", required = true, paramLabel = "SYS", description = "br, paris, uk, us or mondopoint")
-    String system;
+    SizeSystem system;
 
     @Option(names = "--length-step", paramLabel = "MM", description = "length step per size (default: the system's)")
     Double lengthStepMm;
@@ -53,12 +55,12 @@ final class GradeCommand implements Callable<Integer> {
     @Option(names = "--origin", paramLabel = "X,Y", description = "fixed point of the grading (default: heel centre)")
     String origin;
 
-    @Option(names = "--shrinkage", paramLabel = "S", defaultValue = "0", description = "material shrinkage (fraction)")
-    double shrinkage;
+    @Option(names = "--shrinkage", paramLabel = "S", description = "material shrinkage (fraction)")
+    double shrinkage = GradingSettings.DEFAULTS.shrinkage();
 
-    @Option(names = "--shrinkage-mode", paramLabel = "MODE", defaultValue = "multiplicative",
+    @Option(names = "--shrinkage-mode", paramLabel = "MODE",
             description = "additive (the thesis) or multiplicative (default)")
-    String shrinkageMode;
+    ShrinkageMode shrinkageMode = GradingSettings.DEFAULTS.shrinkageMode();
 
     @Option(names = "--arcs", paramLabel = "MODE", defaultValue = "biarc",
             description = "graded arcs as biarc (within 0.005 mm of the exact ellipse, default) or three-point "

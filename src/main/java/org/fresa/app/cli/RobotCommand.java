@@ -64,10 +64,10 @@ final class RobotCommand implements Callable<Integer> {
                     + " (else it is refused)")
     boolean trustCuttingSpeed;
 
-    @Option(names = "--breakthrough", paramLabel = "MM", defaultValue = "1",
+    @Option(names = "--breakthrough", paramLabel = "MM",
             description = "how far a through hole's drill (full diameter) or milling cutter passes the exit;"
                     + " default ${DEFAULT-VALUE} mm")
-    double breakthroughMm;
+    double breakthroughMm = org.fresa.job.JobSettings.StepNcSettings.DEFAULTS.breakthroughMm();
 
     @Override
     public Integer call() {

@@ -16,7 +16,8 @@ final class SettingConverters {
     static final List<SettingChoice<?>> CHOICES = List.of(SettingRanges.Pocket.POST, SettingRanges.Pocket.DIRECTION,
             SettingRanges.Pocket.ENTRY, SettingRanges.Cutting.PROCESS, SettingRanges.Cutting.LEAD,
             SettingRanges.Cutting.UNITS, SettingRanges.Cutting.POST, SettingRanges.Cutting.COMPENSATION,
-            SettingRanges.Cutting.OUTER_DIRECTION);
+            SettingRanges.Cutting.OUTER_DIRECTION, SettingRanges.StepNc.POST,
+            SettingRanges.Grading.SYSTEM, SettingRanges.Grading.SHRINKAGE_MODE);
 
     private SettingConverters() {
     }

@@ -2,8 +2,10 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.job.SettingRanges;
 import org.fresa.job.ToolpathService;
+import org.fresa.post.MillingPost;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -25,9 +27,9 @@ final class ToolpathCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
     Path out;
 
-    @Option(names = "--post", paramLabel = "NAME", defaultValue = "linuxcnc",
+    @Option(names = "--post", paramLabel = "NAME",
             description = "post-processor (fresa posts lists them); default ${DEFAULT-VALUE}")
-    String post;
+    MillingPost post = StepNcSettings.DEFAULTS.post();
 
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
@@ -35,12 +37,12 @@ final class ToolpathCommand implements Callable<Integer> {
     @Option(names = "--trust-cutting-speed",
             description = "plan a workingstep whose spindle and cutting speed disagree tenfold from the cutting speed"
                     + " (else it is refused)")
-    boolean trustCuttingSpeed;
+    boolean trustCuttingSpeed = StepNcSettings.DEFAULTS.trustCuttingSpeed();
 
-    @Option(names = "--breakthrough", paramLabel = "MM", defaultValue = "1",
+    @Option(names = "--breakthrough", paramLabel = "MM",
             description = "how far a through hole's drill (full diameter) or milling cutter passes the exit;"
                     + " default ${DEFAULT-VALUE} mm")
-    double breakthroughMm;
+    double breakthroughMm = StepNcSettings.DEFAULTS.breakthroughMm();
 
     @Override
     public Integer call() {

@@ -39,7 +39,7 @@ class GradeCommandTest {
         int rc = run("grade", "samples/grading/sole-40.contour", "--out", dir.toString(), "--base-size", "40",
                 "--sizes", "36-44", "--system", "br", "--shrinkage-mode", "both");
         assertEquals(2, rc);
-        assertTrue(err.toString().contains("expected additive or multiplicative"), err.toString());
+        assertTrue(err.toString().contains("--shrinkage-mode") && err.toString().contains("expected one of additive, multiplicative"), err.toString());
     }
 
     @Test

@@ -38,14 +38,19 @@ class SettingDefaultsTest {
     record Module(String xsdType, Record defaults, Class<?> holder, String command) {
         @Override
         public String toString() {
-            return xsdType;
+            return xsdType + (command == null ? "" : " and fresa " + command);
         }
     }
 
     static List<Module> modules() {
-        return List.of(new Module("PocketType", JobSettings.PocketSettings.DEFAULTS, SettingRanges.Pocket.class,
-                "pocket"), new Module("CuttingType", JobSettings.CuttingSettings.DEFAULTS, SettingRanges.Cutting.class,
-                        "cut"));
+        return List.of(
+                new Module("StepNcType", JobSettings.StepNcSettings.DEFAULTS, SettingRanges.StepNc.class, "toolpath"),
+                new Module("StepNcType", JobSettings.StepNcSettings.DEFAULTS, SettingRanges.StepNc.class, "robot"),
+                new Module("PocketType", JobSettings.PocketSettings.DEFAULTS, SettingRanges.Pocket.class, "pocket"),
+                new Module("CuttingType", JobSettings.CuttingSettings.DEFAULTS, SettingRanges.Cutting.class, "cut"),
+                new Module("GradingType", JobSettings.GradingSettings.DEFAULTS, SettingRanges.Grading.class, "grade"),
+                // the sole has no command-line options (fresa sole JOB)
+                new Module("SoleType", JobSettings.SoleSettings.DEFAULTS, SettingRanges.Sole.class, null));
     }
 
     /** The attribute defaults of a complex type of job.xsd. */
@@ -132,7 +137,8 @@ class SettingDefaultsTest {
         Map<String, String> xsd = xsdDefaults(m.xsdType());
         Map<String, SettingChoice<?>> choices = choices(m.holder());
         Map<String, String> options = options(m.holder());
-        CommandLine command = FresaCommand.withAllCommands().getSubcommands().get(m.command());
+        CommandLine command = m.command() == null ? null
+                : FresaCommand.withAllCommands().getSubcommands().get(m.command());
         List<String> mismatches = new ArrayList<>();
         int compared = 0;
         for (Map.Entry<String, String> d : xsd.entrySet()) {
@@ -145,7 +151,7 @@ class SettingDefaultsTest {
             }
             compared++;
             String option = options.get(attribute);
-            if (option == null) {
+            if (option == null || command == null) {
                 continue;
             }
             OptionSpec o = command.getCommandSpec().findOption(option);
