@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import org.fresa.geom.Transform3;
@@ -70,18 +69,6 @@ public final class IkService {
 
     /** One row of the targets: the pose and its seed joints (empty when none). */
     record Target(int line, double[] pose, double[] seed) {
-    }
-
-    /** Reads {@code --method default|thesis-dls}. */
-    public static IkOptions.Method parseMethod(String text) throws CamInputException {
-        String t = text.trim().toLowerCase(Locale.ROOT);
-        if (t.equals("default")) {
-            return IkOptions.Method.LEVENBERG_MARQUARDT;
-        }
-        if (t.equals("thesis-dls")) {
-            return IkOptions.Method.THESIS_DLS;
-        }
-        throw new CamInputException("--method", "expected default or thesis-dls, got '" + text + "'");
     }
 
     /**

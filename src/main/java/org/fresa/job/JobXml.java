@@ -107,7 +107,7 @@ public final class JobXml {
         }
     }
 
-    /** The line where an attribute has the word, or 0 when it cannot be found. */
+    /** The line where an attribute has the word (or a list with it), or 0 when it cannot be found. */
     static int lineOf(Path file, String attribute, String word) {
         java.util.regex.Pattern p = java.util.regex.Pattern.compile("\\b" + attribute + "\\s*=\\s*([\"'])(.*?)\\1");
         try {
@@ -115,7 +115,8 @@ public final class JobXml {
             for (int i = 0; i < lines.size(); i++) {
                 java.util.regex.Matcher m = p.matcher(lines.get(i));
                 while (m.find()) {
-                    if (m.group(2).trim().equals(word.trim())) {
+                    // the word alone, or one item of a comma list
+                    if (Arrays.stream(m.group(2).split(",")).anyMatch(w -> w.trim().equals(word.trim()))) {
                         return i + 1;
                     }
                 }
@@ -199,6 +200,11 @@ public final class JobXml {
         return Arrays.stream(s.split(",")).map(String::trim).filter(t -> !t.isEmpty()).toList();
     }
 
+    /** The robot's formats as written, each one checked (a typo is refused when the job is read). */
+    private static List<String> robotFormats(String text) {
+        return splitList(text).stream().map(f -> SettingRanges.Robot.FORMAT.require(f).word()).toList();
+    }
+
     static Job fromXml(JobType x, Path base) {
         Job job = Job.empty(JobTask.ofId(x.getTask().value()));
         if (!x.getRuns().isEmpty()) {
@@ -219,7 +225,7 @@ public final class JobXml {
         RobotType r = x.getRobot();
         if (r != null) {
             job = job.withRobot(new RobotSettings(r.getRobot(), placement(r.getRobotTable()),
-                    placement(r.getTablePiece()), splitList(r.getFormats()),
+                    placement(r.getTablePiece()), robotFormats(r.getFormats()),
                     r.getSpindle() == null ? java.util.Optional.empty()
                             : java.util.Optional.of(SettingRanges.Robot.requireSpindle(placement(r.getSpindle()))),
                     r.getToolLengthMm() == null ? OptionalDouble.empty()

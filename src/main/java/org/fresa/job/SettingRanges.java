@@ -159,6 +159,13 @@ public final class SettingRanges {
         /** {@code --tolerance-mm} of {@code fresa ik}: 1e-12 mm (below it doubles cannot tell) to 1 mm. */
         public static final SettingRange IK_TOLERANCE = SettingRange.of("--tolerance-mm", "toleranceMm", 1e-12, 1,
                 "mm");
+        /** One format of {@code --formats} and of the job's {@code formats} list. */
+        public static final SettingChoice<RobotFormat> FORMAT = SettingChoice.of("--formats", "formats",
+                RobotFormat.class, RobotFormat::word);
+        /** {@code --method} of {@code fresa ik}: the project's solver ({@code default}) or the thesis's. */
+        public static final SettingChoice<org.fresa.kin.IkOptions.Method> IK_METHOD = SettingChoice.of("--method",
+                "method", org.fresa.kin.IkOptions.Method.class,
+                m -> m == org.fresa.kin.IkOptions.Method.THESIS_DLS ? "thesis-dls" : "default");
 
         private Robot() {
         }

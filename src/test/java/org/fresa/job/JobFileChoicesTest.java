@@ -58,4 +58,14 @@ class JobFileChoicesTest {
                 () -> assertEquals("post: unknown value 'fanuk': expected one of linuxcnc, iso, fanuc, 840d",
                         e.problem()));
     }
+
+    @Test
+    void aMistypedRobotFormatIsRefusedWhenTheJobIsRead() throws Exception {
+        Path job = sampleWith("example2-irb140.xml", "formats=\"", "formats=\"rapdi,");
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(job));
+        assertAll(e.getMessage(),
+                () -> assertTrue(e.line().isPresent()),
+                () -> assertEquals("formats: unknown value 'rapdi': expected one of csv, xml, rapid, krl, png",
+                        e.problem()));
+    }
 }

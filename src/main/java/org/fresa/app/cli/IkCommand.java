@@ -9,6 +9,7 @@ import org.fresa.job.IkService;
 import org.fresa.job.RobotTools;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.job.SettingRanges;
+import org.fresa.kin.IkOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -39,10 +40,10 @@ final class IkCommand implements Callable<Integer> {
             description = "position tolerance (mm); the orientation's is T/100 rad; default ${DEFAULT-VALUE}")
     double toleranceMm;
 
-    @Option(names = "--method", paramLabel = "default|thesis-dls", defaultValue = "default",
+    @Option(names = "--method", paramLabel = "default|thesis-dls",
             description = "Levenberg-Marquardt with the closed form where the robot has one (default), or the"
                     + " thesis's damped least squares")
-    String method;
+    IkOptions.Method method = IkOptions.DEFAULT.method();
 
     @Option(names = "--configuration", paramLabel = "K=V[,K=V]",
             description = "keep only solutions in this arm configuration: cf1, cf4, cf6, cfx (ABB confdata), S, T"
@@ -74,7 +75,7 @@ final class IkCommand implements Callable<Integer> {
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
                     toolLength == null ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
-            IkService.Settings s = new IkService.Settings(targets, robot, tool, IkService.parseMethod(method), tol,
+            IkService.Settings s = new IkService.Settings(targets, robot, tool, method, tol,
                     conf, all);
             return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
         });

@@ -17,7 +17,8 @@ final class SettingConverters {
             SettingRanges.Pocket.ENTRY, SettingRanges.Cutting.PROCESS, SettingRanges.Cutting.LEAD,
             SettingRanges.Cutting.UNITS, SettingRanges.Cutting.POST, SettingRanges.Cutting.COMPENSATION,
             SettingRanges.Cutting.OUTER_DIRECTION, SettingRanges.StepNc.POST,
-            SettingRanges.Grading.SYSTEM, SettingRanges.Grading.SHRINKAGE_MODE);
+            SettingRanges.Grading.SYSTEM, SettingRanges.Grading.SHRINKAGE_MODE,
+            SettingRanges.Robot.IK_METHOD);
 
     private SettingConverters() {
     }
