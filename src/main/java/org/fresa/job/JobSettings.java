@@ -75,6 +75,13 @@ public final class JobSettings {
     public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
             java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
         public static final List<String> DEFAULT_FORMATS = List.of("csv", "xml", "png");
+        /**
+         * The robot module's defaults, as {@code schemas/job.xsd}, {@code fresa robot}'s
+         * {@code --formats} and a new job's Position tab have them: the IRB-140 with the table and the
+         * workpiece at the robot's base, the robot file's tool frame and the STEP-NC tools' lengths.
+         */
+        public static final RobotSettings DEFAULTS = new RobotSettings("irb140", Placement.ORIGIN, Placement.ORIGIN,
+                DEFAULT_FORMATS);
 
         public RobotSettings {
             Objects.requireNonNull(robot, "robot");

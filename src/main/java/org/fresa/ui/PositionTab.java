@@ -216,9 +216,7 @@ final class PositionTab implements ModuleTab {
         jointsChart.setChart(null);
         errorChart.setChart(null);
         drawnRobot = "";
-        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(new JobSettings.RobotSettings("irb140",
-                org.fresa.model.Placement.ORIGIN, org.fresa.model.Placement.ORIGIN,
-                JobSettings.RobotSettings.DEFAULT_FORMATS));
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(JobSettings.RobotSettings.DEFAULTS);
         // the fields take the new job's values without writing them into it
         boolean was = loading;
         loading = false;

@@ -135,8 +135,7 @@ final class PositionViewModel {
 
     /** The job with these placements (robot and formats kept, irb140 when it had none). */
     Job applyTo(Job job) {
-        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
-                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        JobSettings.RobotSettings old = job.robot().orElse(JobSettings.RobotSettings.DEFAULTS);
         return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
                 old.formats(), old.spindle(), old.toolLengthMm()));
     }

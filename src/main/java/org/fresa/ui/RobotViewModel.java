@@ -63,7 +63,7 @@ final class RobotViewModel {
             "Platform radius r_p (mm)", "Platform to wrist centre d_eff (mm)", "Wrist centre to tool tip e_ffl (mm)");
 
     private Robot robot = Robots.irb140();
-    private String choice = "irb140";
+    private String choice = JobSettings.RobotSettings.DEFAULTS.robot();
     private final List<String[]> cells = new ArrayList<>();
     private final List<String> params = new ArrayList<>();
     private Map<String, String> problems = new LinkedHashMap<>();

@@ -52,9 +52,9 @@ final class RobotCommand implements Callable<Integer> {
                     + " tools'; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
-    @Option(names = "--formats", paramLabel = "LIST", defaultValue = "csv,xml,png",
+    @Option(names = "--formats", paramLabel = "LIST",
             description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
-    String formats;
+    String formats = String.join(",", org.fresa.job.JobSettings.RobotSettings.DEFAULTS.formats());
 
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;

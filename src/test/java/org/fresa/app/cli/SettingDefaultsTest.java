@@ -46,6 +46,7 @@ class SettingDefaultsTest {
         return List.of(
                 new Module("StepNcType", JobSettings.StepNcSettings.DEFAULTS, SettingRanges.StepNc.class, "toolpath"),
                 new Module("StepNcType", JobSettings.StepNcSettings.DEFAULTS, SettingRanges.StepNc.class, "robot"),
+                new Module("RobotType", JobSettings.RobotSettings.DEFAULTS, SettingRanges.Robot.class, "robot"),
                 new Module("PocketType", JobSettings.PocketSettings.DEFAULTS, SettingRanges.Pocket.class, "pocket"),
                 new Module("CuttingType", JobSettings.CuttingSettings.DEFAULTS, SettingRanges.Cutting.class, "cut"),
                 new Module("GradingType", JobSettings.GradingSettings.DEFAULTS, SettingRanges.Grading.class, "grade"),
@@ -94,6 +95,9 @@ class SettingDefaultsTest {
         }
         if (value instanceof Enum<?> e && choice != null) {
             return written.equals(word(choice, e));
+        }
+        if (value instanceof List<?> l) {
+            return written.equals(String.join(",", l.stream().map(String::valueOf).toList()));
         }
         return written.equals(String.valueOf(value));
     }
@@ -161,7 +165,8 @@ class SettingDefaultsTest {
             if (o.defaultValue() != null) {
                 mismatches.add(m.command() + " " + option + ": declares its own default " + o.defaultValue()
                         + " instead of the constant's");
-            } else if (!o.initialValue().equals(constant)) {
+            } else if (o.initialValue() instanceof String text ? !same(text, constant, choice)
+                    : !o.initialValue().equals(constant)) {
                 mismatches.add(m.command() + " " + option + ": defaults to " + o.initialValue() + ", the constant "
                         + constant);
             }
