@@ -48,7 +48,7 @@ public final class GradingViewModel {
     private SizeSystem system = GradingSettings.DEFAULTS.system();
     private String baseSize = ExactDecimal.of(GradingSettings.DEFAULTS.baseSize());
     private String sizes = GradingSettings.DEFAULTS.sizes();
-    private boolean halfSizes;
+    private boolean halfSizes = GradingSettings.DEFAULTS.halfSizes();
     private String lengthStep = "";
     private String widthStep = "";
     private String origin = "";
