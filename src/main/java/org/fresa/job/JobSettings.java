@@ -19,6 +19,8 @@ import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.post.MillingPost;
 import org.fresa.post.SheetCuttingPost;
+import org.fresa.sole.PatternKind;
+import org.fresa.sole.SizeRule;
 
 /**
  * The settings of each module, as they appear in a job file (schemas/job.xsd) and in the tabs.
@@ -321,7 +323,8 @@ public final class JobSettings {
     }
 
     /** One tread design: figures repeated by a pattern (see schemas/job.xsd, element sole/design). */
-    public record SoleDesign(String name, String tool, String rule, boolean text, String pattern, int count, int rows,
+    public record SoleDesign(String name, String tool, SizeRule rule, boolean text, PatternKind pattern, int count,
+            int rows,
             double dxMm, double dyMm, double rowShiftMm, double stepDeg, double centerXMm, double centerYMm,
             List<SoleFigure> lead, List<SoleFigure> figures, List<SoleCopy> copies) {
         public SoleDesign {

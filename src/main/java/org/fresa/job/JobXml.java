@@ -285,7 +285,8 @@ public final class JobXml {
                 Sole.TOOL_SPINDLE.require(t.getSpindleRpm()), Sole.TOOL_FEED.require(t.getFeedMmPerMin()),
                 Sole.TOOL_PLUNGE_FEED.require(t.getPlungeFeedMmPerMin()))).toList();
         List<JobSettings.SoleDesign> designs = so.getDesign().stream().map(d -> new JobSettings.SoleDesign(d.getName(),
-                d.getTool(), d.getRule(), d.isText(), d.getPattern(), Sole.COUNT.require(d.getCount()),
+                d.getTool(), Sole.RULE.require(d.getRule()), d.isText(), Sole.PATTERN.require(d.getPattern()),
+                Sole.COUNT.require(d.getCount()),
                 Sole.ROWS.require(d.getRows()), Sole.DX.require(d.getDxMm()), Sole.DY.require(d.getDyMm()),
                 Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
                 Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
@@ -335,9 +336,9 @@ public final class JobXml {
             SoleType.Design x = new SoleType.Design();
             x.setName(d.name());
             x.setTool(d.tool());
-            x.setRule(d.rule());
+            x.setRule(d.rule().id());
             x.setText(d.text());
-            x.setPattern(d.pattern());
+            x.setPattern(d.pattern().word());
             x.setCount(d.count());
             x.setRows(d.rows());
             x.setDxMm(d.dxMm());

@@ -300,6 +300,10 @@ public final class SettingRanges {
         public static final SettingRange MIRROR_X = coordinate("", "mirrorXMm");
         public static final SettingRange MIRROR_Y = coordinate("", "mirrorYMm");
         public static final SettingRange ROTATE = angle("", "rotateDeg");
+        public static final SettingChoice<org.fresa.sole.SizeRule> RULE = SettingChoice.of("", "rule",
+                org.fresa.sole.SizeRule.class, org.fresa.sole.SizeRule::id);
+        public static final SettingChoice<org.fresa.sole.PatternKind> PATTERN = SettingChoice.of("", "pattern",
+                org.fresa.sole.PatternKind.class, org.fresa.sole.PatternKind::word);
         public static final SettingChoice<org.fresa.post.MillingPost> POST = SettingChoice.of("", "post",
                 org.fresa.post.MillingPost.class, org.fresa.post.MillingPost::word);
         public static final SettingChoice<org.fresa.grading.SizeSystem> SYSTEM = SettingChoice.of("", "system",

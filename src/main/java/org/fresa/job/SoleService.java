@@ -29,7 +29,6 @@ import org.fresa.model.Toolpath;
 import org.fresa.post.NcPost;
 import org.fresa.sole.Foot;
 import org.fresa.sole.Similarity2;
-import org.fresa.sole.SizeRule;
 import org.fresa.sole.SizeScale;
 import org.fresa.sole.SoleTread;
 import org.fresa.sole.TreadFigure;
@@ -137,17 +136,17 @@ public final class SoleService {
         }
         try {
             TreadPattern pattern = switch (d.pattern()) {
-                case "single" -> TreadPattern.single();
-                case "linear" -> TreadPattern.linear(d.dxMm(), d.dyMm(), positive(d.count(), "count"));
-                case "grid" -> TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"),
+                case SINGLE -> TreadPattern.single();
+                case LINEAR -> TreadPattern.linear(d.dxMm(), d.dyMm(), positive(d.count(), "count"));
+                case GRID -> TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"),
                         gridRows(d), d.rowShiftMm());
-                case "polar" -> TreadPattern.polar(Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(),
+                case POLAR -> TreadPattern.polar(Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(),
                         positive(d.count(), "count"));
-                case "copies" -> copies(d.copies());
-                default -> throw new IllegalArgumentException("pattern '" + d.pattern() + "' is not supported here"
-                        + (d.pattern().equals("fill") ? " yet (use grid: the outline clips it)" : ""));
+                case COPIES -> copies(d.copies());
+                case FILL -> throw new IllegalArgumentException("pattern 'fill' is not supported here yet"
+                        + " (use grid: the outline clips it)");
             };
-            TreadItem item = new TreadItem(d.name(), lead, figs, pattern, SizeRule.ofId(d.rule()), d.text(), d.tool());
+            TreadItem item = new TreadItem(d.name(), lead, figs, pattern, d.rule(), d.text(), d.tool());
             item.strokes(TOL);
             return item;
         } catch (IllegalArgumentException e) {

@@ -25,6 +25,8 @@ import org.fresa.model.ExactDecimal;
 import org.fresa.model.Toolpath;
 import org.fresa.sole.FigurePath;
 import org.fresa.sole.Foot;
+import org.fresa.sole.PatternKind;
+import org.fresa.sole.SizeRule;
 import org.fresa.sole.SizeScale;
 import org.fresa.sole.SoleTread;
 import org.fresa.sole.Stroke;
@@ -275,7 +277,8 @@ public final class SoleViewModel {
         }
         Vec2 d = toJobFrame(plotMm).minus(centre);
         String name = uniqueName(macro);
-        JobSettings.SoleDesign design = new JobSettings.SoleDesign(name, tool.get(), "position", false, "copies", 1, 1,
+        JobSettings.SoleDesign design = new JobSettings.SoleDesign(name, tool.get(), SizeRule.POSITION, false,
+                PatternKind.COPIES, 1, 1,
                 0, 0, 0, 0, 0, 0, List.of(), List.of(new JobSettings.SoleFigure(macro, params)),
                 List.of(copy(d.x(), d.y())));
         List<JobSettings.SoleDesign> ds = new ArrayList<>(s.designs());
@@ -300,15 +303,15 @@ public final class SoleViewModel {
         }
         JobSettings.SoleDesign d = designs().get(selected);
         List<JobSettings.SoleCopy> copies;
-        if (d.pattern().equals("single")) {
+        if (d.pattern() == PatternKind.SINGLE) {
             copies = List.of(copy(dxMm, dyMm));
-        } else if (d.pattern().equals("copies")) {
+        } else if (d.pattern() == PatternKind.COPIES) {
             copies = d.copies().stream().map(c -> new JobSettings.SoleCopy(c.dxMm() + dxMm, c.dyMm() + dyMm,
                     c.mirrorXMm(), c.mirrorYMm(), c.rotateDeg())).toList();
         } else {
             return Optional.of("'" + d.name() + "' is a " + d.pattern() + " pattern: move it by its parameters");
         }
-        JobSettings.SoleDesign moved = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), "copies",
+        JobSettings.SoleDesign moved = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), PatternKind.COPIES,
                 d.count(), d.rows(), d.dxMm(), d.dyMm(), d.rowShiftMm(), d.stepDeg(), d.centerXMm(), d.centerYMm(),
                 d.lead(), d.figures(), copies);
         List<JobSettings.SoleDesign> ds = new ArrayList<>(designs());

@@ -180,7 +180,7 @@ class SoleViewModelTest {
         Vec2 was = vm.position(0);
         assertEquals(Optional.empty(), vm.moveSelectedBy(2, 3));
         assertEquals(was.x() + 2, vm.position(0).x(), EPS);
-        assertEquals("copies", vm.designs().get(0).pattern());
+        assertEquals(org.fresa.sole.PatternKind.COPIES, vm.designs().get(0).pattern());
     }
 
     @Test
