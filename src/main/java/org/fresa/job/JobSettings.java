@@ -22,12 +22,22 @@ public final class JobSettings {
      *
      * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
      * @param breakthroughMm how far a through hole's tool passes its exit
+     * @param entry how pockets are entered and holes milled on a helix ({@code --entry},
+     *     {@code --entry-angle}, {@code --centre-cutting})
      */
-    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm,
+            org.fresa.pocket.EntryRule entry) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(entry, "entry");
             SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
+            SettingRanges.StepNc.ENTRY_ANGLE.require(entry.angleDeg());
+        }
+
+        /** The file and post with the planner's default entries. */
+        public StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+            this(file, post, trustCuttingSpeed, breakthroughMm, org.fresa.pocket.EntryRule.DEFAULT);
         }
 
         /** The file and post with the planner's default choices. */
@@ -37,7 +47,7 @@ public final class JobSettings {
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
         public org.fresa.toolpath.PlanningChoices choices() {
-            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm);
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry);
         }
     }
 

@@ -102,6 +102,8 @@ public final class JobXml {
         } catch (SettingRange.OutOfRange e) {
             throw new CamInputException(name, lineOf(file, e.range().attribute(), e.value()), 0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
+        } catch (BadEntry e) {
+            throw new CamInputException(name, e.getMessage());
         }
     }
 
@@ -161,6 +163,28 @@ public final class JobXml {
         }
     }
 
+    /** A STEP-NC entry the job file asks for that no tool may make (a plunge of a cutter not said to cut at its centre). */
+    private static final class BadEntry extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+
+        BadEntry(String message) {
+            super(message);
+        }
+    }
+
+    /** The entry of a job's {@code <stepnc>}, its angle checked against the option's range. */
+    private static org.fresa.pocket.EntryRule stepNcEntry(StepNcType s) {
+        org.fresa.pocket.EntryRule.Kind kind = org.fresa.pocket.EntryRule.Kind.of(s.getEntry())
+                .orElseThrow(() -> new BadEntry("<stepnc> entry=\"" + s.getEntry() + "\": expected one of "
+                        + String.join(", ", org.fresa.pocket.EntryRule.Kind.words())));
+        double angle = SettingRanges.StepNc.ENTRY_ANGLE.require(s.getEntryAngleDeg());
+        if (kind == org.fresa.pocket.EntryRule.Kind.PLUNGE && !s.isCentreCutting()) {
+            throw new BadEntry("<stepnc> entry=\"plunge\" needs centreCutting=\"true\": a cutter not said to cut at"
+                    + " its centre never goes straight down into material");
+        }
+        return new org.fresa.pocket.EntryRule(kind, angle, s.isCentreCutting());
+    }
+
     private static Path resolve(Path base, String ref) {
         return base.resolve(ref).normalize();
     }
@@ -192,7 +216,7 @@ public final class JobXml {
         StepNcType s = x.getStepnc();
         if (s != null) {
             job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s)));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -375,6 +399,11 @@ public final class JobXml {
             }
             if (s.breakthroughMm() != org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM) {
                 t.setBreakthroughMm(s.breakthroughMm());
+            }
+            if (!s.entry().equals(org.fresa.pocket.EntryRule.DEFAULT)) {
+                t.setEntry(s.entry().kind().word());
+                t.setEntryAngleDeg(s.entry().angleDeg());
+                t.setCentreCutting(s.entry().centreCutting());
             }
             x.setStepnc(t);
         });

@@ -53,6 +53,8 @@ public final class SettingRanges {
         /** How far a through hole's tool passes its exit. */
         public static final SettingRange BREAKTHROUGH = SettingRange.of("--breakthrough", "breakthroughMm", 0,
                 org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
+        /** Steepest descent of a pocket's helix or ramp entry, as the pocket module's. */
+        public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
 
         private StepNc() {
         }

@@ -29,6 +29,7 @@ import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.stepnc.Workpiece;
 import org.fresa.testing.InterpreterCheck;
+import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -80,11 +81,41 @@ class EntryAngleTest {
         "example2.stp; 60; 74 124 174 224 529 579 680 730"})
     @InterpreterCheck
     void stepNcPocketsFacesAndMilledHolesEnterWithinTheEntryAngle(String file, int pilotDescents, String throughPilots,
-            @TempDir Path dir)
-            throws Exception {
+            @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
+        Measured m = measure(file, PlanningChoices.DEFAULT, dir);
+        assertTrue(m.measured() > 0, file);
+        assertEquals(List.of(), m.intoMaterial(), file);
+        assertTrue(m.steepestDeg() <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + m.steepestDeg() + " deg");
+        assertEquals(pilotDescents, m.intoPilots().size(), file + ": " + m.intoPilots());
+        assertEquals(throughPilots.strip(), m.enteredThroughPilots().stream().map(String::valueOf)
+                .collect(java.util.stream.Collectors.joining(" ")), file);
+    }
+
+    /** {@code --entry-angle} and {@code --entry} of the STEP-NC commands: no entry into material steeper than asked. */
+    @ParameterizedTest
+    @CsvSource({"iso14649-11-example1.stp, auto, 1.5", "iso14649-11-example1.stp, ramp, 2",
+        "iso14649-11-example1.stp, helix, 5", "example2.stp, auto, 1.5", "example2.stp, ramp, 2"})
+    @InterpreterCheck
+    void stepNcEntriesKeepTheAngleAsked(String file, String kind, double angleDeg, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), Rs274.whyNot());
+        EntryRule asked = new EntryRule(EntryRule.Kind.of(kind).orElseThrow(), angleDeg, false);
+        Measured m = measure(file, new PlanningChoices(false, PlanningChoices.DEFAULT_BREAKTHROUGH_MM, asked), dir);
+        assertTrue(m.measured() > 0, file);
+        assertEquals(List.of(), m.intoMaterial(), file);
+        assertTrue(m.steepestDeg() <= angleDeg + TOLERANCE_DEG, file + " " + kind + " " + angleDeg + ": "
+                + m.steepestDeg() + " deg");
+    }
+
+    /** What the measure finds in a STEP-NC file's programs. */
+    record Measured(int measured, double steepestDeg, List<String> intoMaterial, List<String> intoPilots,
+            java.util.SortedSet<Long> enteredThroughPilots) {
+    }
+
+    static Measured measure(String file, PlanningChoices choices, Path dir) throws Exception {
         StepNcProgram program = StepNcReader.read(Path.of("samples/stepnc", file));
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        double limit = choices.entry().angleDeg();
         Map<Long, MachiningWorkingstep> byId = new HashMap<>();
         program.workingsteps().forEach(ws -> byId.put(ws.instanceId(), ws));
         Predicate<Vec3> stock = stock(program);
@@ -118,7 +149,7 @@ class EntryAngleTest {
             double a = 0;
             int pilots = 0;
             for (Descent d : descents(r.motions(), toLocal, material, 0, radius)) {
-                if (d.deg() <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG) {
+                if (d.deg() <= limit + TOLERANCE_DEG) {
                     a = Math.max(a, d.deg());
                     continue;
                 }
@@ -142,15 +173,10 @@ class EntryAngleTest {
         }
         intoPilots.forEach(s -> System.out.println("[entries] into a pilot: " + s));
         intoMaterial.forEach(s -> System.out.println("[entries] INTO MATERIAL: " + s));
-        System.out.printf(Locale.ROOT, "[entries] %s: %d workingsteps measured, steepest into material %.2f deg, "
-                + "%d steep descents into material, %d into pilot holes%n", file, measured, steepest, intoMaterial.size(),
+        System.out.printf(Locale.ROOT, "[entries] %s (%s %.1f deg): %d workingsteps measured, steepest into material %.2f deg, "
+                + "%d steep descents into material, %d into pilot holes%n", file, choices.entry().kind().word(), limit, measured, steepest, intoMaterial.size(),
                 intoPilots.size());
-        assertTrue(measured > 0, file);
-        assertEquals(List.of(), intoMaterial, file);
-        assertTrue(steepest <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + steepest + " deg");
-        assertEquals(pilotDescents, intoPilots.size(), file + ": " + intoPilots);
-        assertEquals(throughPilots.strip(), enteredThroughPilots.stream().map(String::valueOf)
-                .collect(java.util.stream.Collectors.joining(" ")), file);
+        return new Measured(measured, steepest, intoMaterial, intoPilots, enteredThroughPilots);
     }
 
     @Test
