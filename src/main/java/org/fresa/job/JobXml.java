@@ -265,7 +265,17 @@ public final class JobXml {
                 Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), so.getPost(), so.getSystem(), origin,
                 Sole.SHRINKAGE.require(so.getShrinkage()), so.getShrinkageMode(),
                 Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
-                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool());
+                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool(), block(so.getBlock()));
+    }
+
+    private static Optional<JobSettings.SoleBlock> block(SoleType.Block b) {
+        if (b == null) {
+            return Optional.empty();
+        }
+        return Optional.of(new JobSettings.SoleBlock(Sole.BLOCK_D.require(b.getDMm()), Sole.BLOCK_DLM.require(b.getDlmMm()),
+                Sole.BLOCK_E.require(b.getEMm()), Sole.BLOCK_S.require(b.getSMm()), Sole.BLOCK_CM.require(b.getCmMm()),
+                optional(Sole.BLOCK_CP, b.getCpMm()), optional(Sole.BLOCK_DPI, b.getDpiMm()),
+                optional(Sole.BLOCK_XTANP, b.getXtanpMm())));
     }
 
     private static SoleType soleType(SoleSettings s, Path base) {
@@ -286,6 +296,18 @@ public final class JobXml {
         t.setClearanceMm(s.clearanceMm());
         t.setMarginMm(s.marginMm());
         t.setCavityTool(s.cavityTool());
+        s.block().ifPresent(b -> {
+            SoleType.Block x = new SoleType.Block();
+            x.setDMm(b.dMm());
+            x.setDlmMm(b.dlmMm());
+            x.setEMm(b.eMm());
+            x.setSMm(b.sMm());
+            x.setCmMm(b.cmMm());
+            b.cpMm().ifPresent(x::setCpMm);
+            b.dpiMm().ifPresent(x::setDpiMm);
+            b.xtanpMm().ifPresent(x::setXtanpMm);
+            t.setBlock(x);
+        });
         for (JobSettings.SoleTool k : s.tools()) {
             SoleType.Tool x = new SoleType.Tool();
             x.setId(k.id());

@@ -167,6 +167,20 @@ public final class SoleViewModel {
         return scene;
     }
 
+    /**
+     * The selected size's pair in the mould block, as the programs place it (machine frame): the
+     * block's edges, the mirror line, both feet's outlines, treads and cavities; or an empty
+     * scene saying why there is none.
+     */
+    public PlotScene pairScene() {
+        if (plan.isEmpty()) {
+            return PlotScene.empty(problem.isEmpty() ? "No sole plan" : problem);
+        }
+        SoleService.SolePlan p = plan.get();
+        return SoleService.pairScene(p, p.grader().grade(Double.parseDouble(size))).orElseGet(() -> PlotScene.empty(
+                "The job has no mould block: each foot's programs stay in the outline's frame"));
+    }
+
     /** The edited job: the loaded one with the placed, moved and edited figures (empty before a load). */
     public Optional<Job> job() {
         return job;
@@ -434,9 +448,7 @@ public final class SoleViewModel {
     private Optional<String> apply(List<JobSettings.SoleDesign> ds) {
         Job j = job.orElseThrow();
         JobSettings.SoleSettings s = j.sole().orElseThrow();
-        JobSettings.SoleSettings n = new JobSettings.SoleSettings(s.outline(), s.baseSize(), s.sizes(),
-                s.cavityDepthMm(), s.post(), s.system(), s.originMm(), s.shrinkage(), s.shrinkageMode(),
-                s.treadDepthMm(), s.clearanceMm(), s.marginMm(), s.tools(), ds, s.cavityTool());
+        JobSettings.SoleSettings n = s.withDesigns(ds);
         try {
             plan = Optional.of(SoleService.plan(n, j.name()));
         } catch (CamInputException e) {
