@@ -293,11 +293,21 @@ public final class JobSettings {
         }
     }
 
-    /** A tread macro call: {@code macro} with its keyword parameters as the thesis writes them. */
-    public record SoleFigure(String macro, String params) {
+    /**
+     * A tread macro call: {@code macro} with its keyword parameters as the thesis writes them.
+     *
+     * @param drawing the DXF drawing whose outlines a LOGO figure engraves, or empty
+     */
+    public record SoleFigure(String macro, String params, Optional<Path> drawing) {
         public SoleFigure {
             Objects.requireNonNull(macro, "macro");
             Objects.requireNonNull(params, "params");
+            Objects.requireNonNull(drawing, "drawing");
+        }
+
+        /** A call without a drawing. */
+        public SoleFigure(String macro, String params) {
+            this(macro, params, Optional.empty());
         }
     }
 

@@ -256,7 +256,9 @@ public final class JobXml {
                 Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
                 Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
                 d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
-                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
+                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams(),
+                        f.getFile() == null || f.getFile().isBlank() ? Optional.<Path>empty()
+                                : Optional.of(resolve(base, f.getFile())))).toList(),
                 d.getCopy().stream().map(c -> new JobSettings.SoleCopy(Sole.DX.require(c.getDxMm()),
                         Sole.DY.require(c.getDyMm()), optional(Sole.MIRROR_X, c.getMirrorXMm()),
                         optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
@@ -334,7 +336,11 @@ public final class JobXml {
             x.setCenterXMm(d.centerXMm());
             x.setCenterYMm(d.centerYMm());
             d.lead().forEach(f -> x.getLead().add(figure(f)));
-            d.figures().forEach(f -> x.getFigure().add(figure(f)));
+            d.figures().forEach(f -> {
+                org.fresa.job.xml.SoleFigureType y = figure(f);
+                f.drawing().ifPresent(file -> y.setFile(relativize(base, file)));
+                x.getFigure().add(y);
+            });
             for (JobSettings.SoleCopy c : d.copies()) {
                 SoleType.Design.Copy y = new SoleType.Design.Copy();
                 y.setDxMm(c.dxMm());

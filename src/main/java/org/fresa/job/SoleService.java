@@ -230,7 +230,12 @@ public final class SoleService {
         }
         List<TreadFigure> figs = new ArrayList<>();
         for (JobSettings.SoleFigure f : d.figures()) {
-            figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), where));
+            List<List<Curve2>> drawing = f.drawing().isPresent() ? drawing(f.drawing().get()) : List.of();
+            if (TreadFigures.needsDrawing(f.macro()) && f.drawing().isEmpty()) {
+                throw new CamInputException(where, f.macro() + ": name the DXF drawing of its outlines in the figure's"
+                        + " file attribute");
+            }
+            figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), drawing, where));
         }
         try {
             TreadPattern pattern = switch (d.pattern()) {
@@ -249,6 +254,23 @@ public final class SoleService {
             return item;
         } catch (IllegalArgumentException e) {
             throw new CamInputException(where, e.getMessage());
+        }
+    }
+
+    /** The outlines of a logo's or text's DXF drawing: its chains of lines and arcs, closed or open. */
+    private static List<List<Curve2>> drawing(Path file) throws CamInputException {
+        try {
+            org.fresa.cutting.Chainer.Chains chains = org.fresa.cutting.Chainer.chain(
+                    org.fresa.dxf.DxfReader.read(file).curves(), DrawingContours.GAP_MM);
+            List<List<Curve2>> out = new ArrayList<>();
+            chains.closed().forEach(c -> out.add(c.curves()));
+            out.addAll(chains.open());
+            if (out.isEmpty()) {
+                throw new CamInputException(file.toString(), "the drawing has no lines or arcs to engrave");
+            }
+            return out;
+        } catch (IOException e) {
+            throw new CamInputException(file.toString(), "cannot read the drawing (" + e.getMessage() + ")");
         }
     }
 

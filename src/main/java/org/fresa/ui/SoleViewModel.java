@@ -74,6 +74,12 @@ public final class SoleViewModel {
         if (TreadFigures.isContinuous(macro)) {
             sb.append("continuous: carries on the groove in progress\n");
         }
+        if (TreadFigures.isSpecial(macro)) {
+            sb.append("special design, group ").append(org.fresa.sole.SpecialDesigns.group(macro)).append('\n');
+        }
+        if (TreadFigures.needsDrawing(macro)) {
+            sb.append("outlines from a DXF drawing: the figure's file in the job\n");
+        }
         return sb.toString();
     }
 
@@ -274,6 +280,10 @@ public final class SoleViewModel {
         if (TreadFigures.isContinuous(macro) || macro.equals("PRIM") || macro.equals("NOVO")) {
             return Optional.of(macro + " carries on a groove started by PRIM or NOVO: it cannot be placed on its own");
         }
+        if (TreadFigures.needsDrawing(macro)) {
+            return Optional.of(macro + " engraves a DXF drawing's outlines: name the drawing in the job's figure"
+                    + " (file attribute)");
+        }
         JobSettings.SoleSettings s = job.get().sole().orElseThrow();
         Optional<String> tool = s.tools().stream().map(JobSettings.SoleTool::id).filter(t -> !t.equals(s.cavityTool()))
                 .findFirst();
@@ -424,7 +434,7 @@ public final class SoleViewModel {
             return Optional.of(e.problem());
         }
         List<JobSettings.SoleFigure> figs = new ArrayList<>(d.figures());
-        figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString()));
+        figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString(), f.drawing()));
         JobSettings.SoleDesign edited = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), d.pattern(),
                 d.count(), d.rows(), d.dxMm(), d.dyMm(), d.rowShiftMm(), d.stepDeg(), d.centerXMm(), d.centerYMm(),
                 d.lead(), figs, d.copies());
