@@ -61,6 +61,8 @@ final class GradingTab implements ModuleTab {
     private final JTextField widthStep = new JTextField(6);
     private final JTextField shrinkage = new JTextField(6);
     private final JComboBox<String> shrinkageMode = new JComboBox<>(GradingViewModel.SHRINKAGE_MODES.toArray(new String[0]));
+    /** Table 3.1's width fitting whose last girths the table shows. */
+    private final JComboBox<String> fitting = new JComboBox<>(GradingViewModel.FITTINGS.toArray(new String[0]));
 
     GradingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -104,6 +106,14 @@ final class GradingTab implements ModuleTab {
         addRow(form, row++, "Width step (mm):", 'W', widthStep, null);
         addRow(form, row++, "Shrinkage:", 'S', shrinkage, null);
         addRow(form, row++, "Shrinkage mode:", 'M', shrinkageMode, null);
+        fitting.setName("grading-fitting");
+        fitting.setToolTipText("Width fitting A-H: the table shows the last girth of each size (thesis table 3.1,"
+                + " French sizes 29-42, Brazilian 27-40)");
+        fitting.addActionListener(e -> {
+            vm.setFitting((String) fitting.getSelectedItem());
+            vm.result().ifPresent(this::showResult);
+        });
+        addRow(form, row++, "Width fitting:", 'T', fitting, null);
         addRow(form, row++, "", (char) 0, grade, export);
         GridBagConstraints filler = new GridBagConstraints();
         filler.gridy = row;

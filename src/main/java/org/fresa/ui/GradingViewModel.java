@@ -14,6 +14,7 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradedSize;
 import org.fresa.grading.GradingResult;
+import org.fresa.grading.SizeSystem;
 import org.fresa.job.GradingService;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.GradingSettings;
@@ -37,7 +38,15 @@ public final class GradingViewModel {
     public static final List<String> SHRINKAGE_MODES = List.of("multiplicative", "additive");
     /** The grading table's column titles. */
     public static final List<String> COLUMNS = List.of("Size", "Length (mm)", "Width (mm)", "ALFA", "BETA",
-            "Length factor", "Width factor", "Max deviation (mm)");
+            "Length factor", "Width factor", "Max deviation (mm)", "Last girth (mm)");
+    /** The width fittings offered for the last girth column (table 3.1), "" for none. */
+    public static final List<String> FITTINGS;
+
+    static {
+        List<String> f = new ArrayList<>(List.of(""));
+        f.addAll(org.fresa.grading.LastGirths.FITTINGS);
+        FITTINGS = List.copyOf(f);
+    }
 
     private Optional<Path> outlineFile = Optional.empty();
     private List<Contour> outline = List.of();
@@ -50,6 +59,7 @@ public final class GradingViewModel {
     private String origin = "";
     private String shrinkage = "0";
     private String shrinkageMode = "multiplicative";
+    private String fitting = "";
     private Optional<GradingResult> result = Optional.empty();
 
     /** Reads the base outline (a .contour file) and forgets the last result. */
@@ -166,10 +176,45 @@ public final class GradingViewModel {
             for (GradedSize g : r.sizes()) {
                 rows.add(List.of(g.name(), fmt(g.lengthMm(), 3), fmt(g.widthMm(), 3), fmt(g.factors().alfa(), 6),
                         fmt(g.factors().beta(), 6), fmt(g.factors().length(), 6), fmt(g.factors().width(), 6),
-                        g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : ""));
+                        g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : "",
+                        girth(g.factors().size())));
             }
         });
         return rows;
+    }
+
+    /**
+     * The width fitting whose last girths (table 3.1, French sizes 29 to 42, Brazilian 27 to 40)
+     * the table shows, "" for none.
+     */
+    public String fitting() {
+        return fitting;
+    }
+
+    public void setFitting(String f) {
+        if (!FITTINGS.contains(f)) {
+            throw new IllegalArgumentException("width fitting must be one of " + FITTINGS + ": " + f);
+        }
+        fitting = f;
+    }
+
+    /** The girth of a graded size for the chosen fitting, "" without one or outside table 3.1. */
+    private String girth(double size) {
+        if (fitting.isEmpty()) {
+            return "";
+        }
+        SizeSystem sys;
+        try {
+            sys = SizeSystem.ofId(system);
+        } catch (IllegalArgumentException e) {
+            return "";
+        }
+        OptionalDouble french = org.fresa.grading.LastGirths.frenchSize(sys, size);
+        if (french.isEmpty()) {
+            return "";
+        }
+        OptionalDouble g = org.fresa.grading.LastGirths.girthMm(french.getAsDouble(), fitting);
+        return g.isPresent() ? fmt(g.getAsDouble(), 1) : "";
     }
 
     private static String fmt(double v, int decimals) {

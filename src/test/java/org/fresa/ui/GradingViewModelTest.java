@@ -43,6 +43,23 @@ class GradingViewModelTest {
     }
 
     @Test
+    void aWidthFittingShowsTheLastGirthsOfTable31() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setResult(vm.grade());
+        int girth = GradingViewModel.COLUMNS.indexOf("Last girth (mm)");
+        assertEquals("", vm.tableRows().get(0).get(girth), "no fitting chosen");
+        assertEquals(List.of("", "A", "B", "C", "D", "E", "F", "G", "H"), GradingViewModel.FITTINGS);
+        vm.setFitting("D");
+        List<List<String>> rows = vm.tableRows();
+        // Brazilian 36 is French 38: fitting D 210.0 mm; Brazilian 40 is French 42: 227.0; 41 is beyond the table
+        assertAll(() -> assertEquals("36", rows.get(0).get(0)), () -> assertEquals("210.0", rows.get(0).get(girth)),
+                () -> assertEquals("40", rows.get(4).get(0)), () -> assertEquals("227.0", rows.get(4).get(girth)),
+                () -> assertEquals("", rows.get(5).get(girth)));
+        assertThrows(IllegalArgumentException.class, () -> vm.setFitting("K"));
+    }
+
+    @Test
     void aPickedOriginIsUsedAndClearsTheLastResult() throws Exception {
         GradingViewModel vm = new GradingViewModel();
         vm.openOutline(SOLE);
