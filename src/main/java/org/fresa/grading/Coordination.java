@@ -50,6 +50,39 @@ public record Coordination(double boundaryMm, int groupSize, java.util.SortedSet
         return new Coordination(0, groupSize, new java.util.TreeSet<>(heelElements));
     }
 
+    /**
+     * Element numbers as a planner types them: {@code 1-4,18-20} (ranges and single numbers,
+     * commas or blanks between).
+     *
+     * @throws IllegalArgumentException naming what does not read
+     */
+    public static java.util.SortedSet<Integer> parseElements(String text) {
+        java.util.SortedSet<Integer> out = new java.util.TreeSet<>();
+        for (String tok : text.trim().split("[,\\s]+")) {
+            if (tok.isEmpty()) {
+                continue;
+            }
+            String[] ab = tok.split("-", -1);
+            try {
+                int a = Integer.parseInt(ab[0].trim());
+                int b = ab.length == 2 ? Integer.parseInt(ab[1].trim()) : a;
+                if (ab.length > 2 || a < 1 || b < a || b > 100_000) {
+                    throw new NumberFormatException();
+                }
+                for (int i = a; i <= b; i++) {
+                    out.add(i);
+                }
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("heel elements: expected numbers from 1 or ranges like 1-4, found '"
+                        + tok + "'");
+            }
+        }
+        if (out.isEmpty()) {
+            throw new IllegalArgumentException("heel elements: none given");
+        }
+        return out;
+    }
+
     /** Whether the heel is the planner's elements rather than what lies behind a boundary line. */
     public boolean byElements() {
         return !heelElements.isEmpty();

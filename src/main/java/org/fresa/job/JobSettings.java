@@ -182,7 +182,7 @@ public final class JobSettings {
     /** Grading options (spec/cli.md, {@code fresa grade}); empty steps mean the system's own. */
     public record GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, String system,
             OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
-            double shrinkage, String shrinkageMode) {
+            double shrinkage, String shrinkageMode, Optional<HeelCoordination> coordination) {
         public GradingSettings {
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
@@ -191,6 +191,35 @@ public final class JobSettings {
             Objects.requireNonNull(widthStepMm, "widthStepMm");
             Objects.requireNonNull(originMm, "originMm");
             Objects.requireNonNull(shrinkageMode, "shrinkageMode");
+            Objects.requireNonNull(coordination, "coordination");
+        }
+
+        /** Grading without heel coordination. */
+        public GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, String system,
+                OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
+                double shrinkage, String shrinkageMode) {
+            this(outline, baseSize, sizes, halfSizes, system, lengthStepMm, widthStepMm, originMm, shrinkage,
+                    shrinkageMode, Optional.empty());
+        }
+    }
+
+    /**
+     * Heel coordination (one heel per group of sizes), its heel either the elements the planner
+     * designates or what lies behind a boundary line across the length axis.
+     *
+     * @param groupSize sizes per heel (the thesis: 3)
+     * @param boundaryMm the boundary line's distance from the origin along the length axis, or
+     *     empty when the heel is designated by elements
+     * @param heelElements the heel's elements, e.g. {@code 1-4,18-20} (1 the outline's first), or
+     *     empty when the heel is the part behind the boundary
+     */
+    public record HeelCoordination(int groupSize, OptionalDouble boundaryMm, String heelElements) {
+        public HeelCoordination {
+            Objects.requireNonNull(boundaryMm, "boundaryMm");
+            Objects.requireNonNull(heelElements, "heelElements");
+            if (boundaryMm.isEmpty() && heelElements.isBlank()) {
+                throw new IllegalArgumentException("heel coordination needs a boundary or heel elements");
+            }
         }
     }
 

@@ -229,7 +229,7 @@ public final class JobXml {
             job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
                     Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(), g.getSystem(),
                     optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
-                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode()));
+                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode(), heel(g)));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -240,6 +240,19 @@ public final class JobXml {
             job = job.withOutputs(new OutputSettings(splitList(o.getFormats())));
         }
         return job;
+    }
+
+    /** The grading's heel coordination: by the designated elements, or a boundary, or none. */
+    private static Optional<JobSettings.HeelCoordination> heel(GradingType g) {
+        boolean elements = g.getHeelElements() != null && !g.getHeelElements().isBlank();
+        if (!elements && g.getCoordinationMm() == null) {
+            return Optional.empty();
+        }
+        int group = (int) Grading.HEEL_GROUP.require(g.getHeelGroup());
+        // both given is refused when the plan is made, with the job's other grading settings
+        return Optional.of(new JobSettings.HeelCoordination(group, g.getCoordinationMm() == null ? OptionalDouble.empty()
+                : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),
+                elements ? g.getHeelElements().trim() : ""));
     }
 
     private static SoleSettings soleSettings(SoleType so, Path base) {
@@ -471,6 +484,13 @@ public final class JobXml {
             });
             t.setShrinkage(g.shrinkage());
             t.setShrinkageMode(g.shrinkageMode());
+            g.coordination().ifPresent(h -> {
+                t.setHeelGroup(h.groupSize());
+                h.boundaryMm().ifPresent(t::setCoordinationMm);
+                if (!h.heelElements().isBlank()) {
+                    t.setHeelElements(h.heelElements());
+                }
+            });
             x.setGrading(t);
         });
         job.sole().ifPresent(s -> x.setSole(soleType(s, base)));

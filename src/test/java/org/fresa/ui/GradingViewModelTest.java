@@ -60,6 +60,29 @@ class GradingViewModelTest {
     }
 
     @Test
+    void designatedHeelElementsAreDrawnAndGoIntoTheJob() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setHeelElements("1,5");
+        vm.setHeelGroup("3");
+        PlotScene s = vm.scene();
+        assertEquals(2, s.layers().stream().filter(l -> l.name().equals("heel elements 1,5")).findFirst()
+                .orElseThrow().curves().size());
+        var job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.GRADE));
+        var h = job.grading().orElseThrow().coordination().orElseThrow();
+        assertAll(() -> assertEquals("1,5", h.heelElements()), () -> assertEquals(3, h.groupSize()));
+        GradingViewModel again = new GradingViewModel();
+        again.load(job);
+        assertEquals("1,5", again.heelElements());
+        // graded: 42 to 44 share the heel of 43
+        GradingResult r = vm.grade();
+        assertEquals(43, r.sizes().get(r.sizes().size() - 1).heelSize().getAsDouble(), 0);
+        vm.setHeelElements("1,x");
+        CamInputException e = assertThrows(CamInputException.class, vm::settings);
+        assertTrue(e.getMessage().contains("Heel elements"), e.getMessage());
+    }
+
+    @Test
     void aPickedOriginIsUsedAndClearsTheLastResult() throws Exception {
         GradingViewModel vm = new GradingViewModel();
         vm.openOutline(SOLE);
