@@ -17,6 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 class SoleSpecialDesignsJobTest {
 
     @Test
+    @org.fresa.testing.InterpreterCheck
     void aJobWithEverySpecialDesignWritesCheckedProgramsAndReadsBack(@TempDir Path dir) throws Exception {
         // a drawing of the size number's frame: a rectangle 30 x 12 and an inner one
         Path dxf = dir.resolve("mark.dxf");
@@ -61,6 +62,11 @@ class SoleSpecialDesignsJobTest {
         JobXml.write(j, copy);
         assertTrue(Files.readString(copy).contains("file=\"mark.dxf\""));
         assertEquals(j.sole().orElseThrow().designs(), JobXml.read(copy).sole().orElseThrow().designs());
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
+        for (String f : List.of("tread-40-right.ngc", "tread-40-left.ngc")) {
+            org.fresa.post.Rs274.Result r = org.fresa.post.Rs274.run(dir.resolve("out").resolve(f), 3.5);
+            assertEquals(0, r.exitStatus(), f + ": " + org.fresa.post.Rs274.log(r));
+        }
     }
 
     @Test
