@@ -253,7 +253,7 @@ public final class JobXml {
             job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
                     Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(), g.getSystem(),
                     optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
-                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode()));
+                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode(), heel(g)));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -264,6 +264,19 @@ public final class JobXml {
             job = job.withOutputs(new OutputSettings(splitList(o.getFormats())));
         }
         return job;
+    }
+
+    /** The grading's heel coordination: by the designated elements, or a boundary, or none. */
+    private static Optional<JobSettings.HeelCoordination> heel(GradingType g) {
+        boolean elements = g.getHeelElements() != null && !g.getHeelElements().isBlank();
+        if (!elements && g.getCoordinationMm() == null) {
+            return Optional.empty();
+        }
+        int group = (int) Grading.HEEL_GROUP.require(g.getHeelGroup());
+        // both given is refused when the plan is made, with the job's other grading settings
+        return Optional.of(new JobSettings.HeelCoordination(group, g.getCoordinationMm() == null ? OptionalDouble.empty()
+                : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),
+                elements ? g.getHeelElements().trim() : ""));
     }
 
     private static SoleSettings soleSettings(SoleType so, Path base) {
@@ -280,7 +293,9 @@ public final class JobXml {
                 Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
                 Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
                 d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
-                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
+                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams(),
+                        f.getFile() == null || f.getFile().isBlank() ? Optional.<Path>empty()
+                                : Optional.of(resolve(base, f.getFile())))).toList(),
                 d.getCopy().stream().map(c -> new JobSettings.SoleCopy(Sole.DX.require(c.getDxMm()),
                         Sole.DY.require(c.getDyMm()), optional(Sole.MIRROR_X, c.getMirrorXMm()),
                         optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
@@ -289,7 +304,17 @@ public final class JobXml {
                 Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), so.getPost(), so.getSystem(), origin,
                 Sole.SHRINKAGE.require(so.getShrinkage()), so.getShrinkageMode(),
                 Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
-                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool());
+                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool(), block(so.getBlock()));
+    }
+
+    private static Optional<JobSettings.SoleBlock> block(SoleType.Block b) {
+        if (b == null) {
+            return Optional.empty();
+        }
+        return Optional.of(new JobSettings.SoleBlock(Sole.BLOCK_D.require(b.getDMm()), Sole.BLOCK_DLM.require(b.getDlmMm()),
+                Sole.BLOCK_E.require(b.getEMm()), Sole.BLOCK_S.require(b.getSMm()), Sole.BLOCK_CM.require(b.getCmMm()),
+                optional(Sole.BLOCK_CP, b.getCpMm()), optional(Sole.BLOCK_DPI, b.getDpiMm()),
+                optional(Sole.BLOCK_XTANP, b.getXtanpMm())));
     }
 
     private static SoleType soleType(SoleSettings s, Path base) {
@@ -310,6 +335,18 @@ public final class JobXml {
         t.setClearanceMm(s.clearanceMm());
         t.setMarginMm(s.marginMm());
         t.setCavityTool(s.cavityTool());
+        s.block().ifPresent(b -> {
+            SoleType.Block x = new SoleType.Block();
+            x.setDMm(b.dMm());
+            x.setDlmMm(b.dlmMm());
+            x.setEMm(b.eMm());
+            x.setSMm(b.sMm());
+            x.setCmMm(b.cmMm());
+            b.cpMm().ifPresent(x::setCpMm);
+            b.dpiMm().ifPresent(x::setDpiMm);
+            b.xtanpMm().ifPresent(x::setXtanpMm);
+            t.setBlock(x);
+        });
         for (JobSettings.SoleTool k : s.tools()) {
             SoleType.Tool x = new SoleType.Tool();
             x.setId(k.id());
@@ -336,7 +373,11 @@ public final class JobXml {
             x.setCenterXMm(d.centerXMm());
             x.setCenterYMm(d.centerYMm());
             d.lead().forEach(f -> x.getLead().add(figure(f)));
-            d.figures().forEach(f -> x.getFigure().add(figure(f)));
+            d.figures().forEach(f -> {
+                org.fresa.job.xml.SoleFigureType y = figure(f);
+                f.drawing().ifPresent(file -> y.setFile(relativize(base, file)));
+                x.getFigure().add(y);
+            });
             for (JobSettings.SoleCopy c : d.copies()) {
                 SoleType.Design.Copy y = new SoleType.Design.Copy();
                 y.setDxMm(c.dxMm());
@@ -472,6 +513,13 @@ public final class JobXml {
             });
             t.setShrinkage(g.shrinkage());
             t.setShrinkageMode(g.shrinkageMode());
+            g.coordination().ifPresent(h -> {
+                t.setHeelGroup(h.groupSize());
+                h.boundaryMm().ifPresent(t::setCoordinationMm);
+                if (!h.heelElements().isBlank()) {
+                    t.setHeelElements(h.heelElements());
+                }
+            });
             x.setGrading(t);
         });
         job.sole().ifPresent(s -> x.setSole(soleType(s, base)));

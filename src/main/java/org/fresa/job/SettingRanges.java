@@ -263,6 +263,15 @@ public final class SettingRanges {
         public static final SettingRange MIRROR_X = coordinate("", "mirrorXMm");
         public static final SettingRange MIRROR_Y = coordinate("", "mirrorYMm");
         public static final SettingRange ROTATE = angle("", "rotateDeg");
+        /** The mould block (equations 6.1 to 6.9): a gap, fixture and block within the machine's travel. */
+        public static final SettingRange BLOCK_D = SettingRange.of("", "dMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DLM = coordinate("", "dlmMm");
+        public static final SettingRange BLOCK_E = coordinate("", "eMm");
+        public static final SettingRange BLOCK_S = coordinate("", "sMm");
+        public static final SettingRange BLOCK_CM = SettingRange.above("", "cmMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_CP = SettingRange.above("", "cpMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DPI = coordinate("", "dpiMm");
+        public static final SettingRange BLOCK_XTANP = coordinate("", "xtanpMm");
 
         private Sole() {
         }
