@@ -56,6 +56,8 @@ public final class SettingRanges {
                 org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
         public static final SettingChoice<org.fresa.post.MillingPost> POST = SettingChoice.of("--post", "post",
                 org.fresa.post.MillingPost.class, org.fresa.post.MillingPost::word);
+        /** Steepest descent of a pocket's helix or ramp entry, as the pocket module's. */
+        public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
 
         private StepNc() {
         }
@@ -310,6 +312,15 @@ public final class SettingRanges {
                 org.fresa.grading.SizeSystem.class, org.fresa.grading.SizeSystem::id);
         public static final SettingChoice<org.fresa.grading.ShrinkageMode> SHRINKAGE_MODE = SettingChoice.of("",
                 "shrinkageMode", org.fresa.grading.ShrinkageMode.class, org.fresa.grading.ShrinkageMode::id);
+        /** The mould block (equations 6.1 to 6.9): a gap, fixture and block within the machine's travel. */
+        public static final SettingRange BLOCK_D = SettingRange.of("", "dMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DLM = coordinate("", "dlmMm");
+        public static final SettingRange BLOCK_E = coordinate("", "eMm");
+        public static final SettingRange BLOCK_S = coordinate("", "sMm");
+        public static final SettingRange BLOCK_CM = SettingRange.above("", "cmMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_CP = SettingRange.above("", "cpMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DPI = coordinate("", "dpiMm");
+        public static final SettingRange BLOCK_XTANP = coordinate("", "xtanpMm");
 
         private Sole() {
         }

@@ -71,6 +71,14 @@ public final class PocketViewModel {
             Pocket.Z_TOP, Pocket.Z_BOTTOM, Pocket.MAX_DEPTH, Pocket.SPINDLE, Pocket.FEED, Pocket.FINISH_FEED);
     /** The key of the contour field in {@link #problems()}. */
     public static final String CONTOUR = "pocket-contour";
+    /** The names of the entry fields: the kind, the angle (a key of {@link #problems()}) and centre-cutting. */
+    public static final String ENTRY = "pocket-entry";
+    public static final String ENTRY_ANGLE = "pocket-entry-angle";
+    public static final String CENTRE_CUTTING = "pocket-centre-cutting";
+    /** The entry field's label. */
+    public static final String ENTRY_ANGLE_LABEL = "Entry angle (deg)";
+    /** The kinds of entry the tab offers, as the job and the command line name them. */
+    public static final List<String> ENTRIES = org.fresa.pocket.EntryRule.Kind.words();
     /** A new job's technology: the pocket module's defaults ({@link PocketSettings#DEFAULTS}); no contour. */
     private PocketSettings settings = PocketSettings.DEFAULTS;
     // the fields as typed
@@ -78,6 +86,9 @@ public final class PocketViewModel {
     private final String[] values = new String[LABELS.size()];
     private PocketPost post = PocketSettings.DEFAULTS.post();
     private MillingDirection direction = PocketSettings.DEFAULTS.direction();
+    private String entry = PocketSettings.DEFAULTS.entry().word();
+    private String entryAngle = ExactDecimal.of(PocketSettings.DEFAULTS.entryAngleDeg());
+    private boolean centreCutting = PocketSettings.DEFAULTS.centreCutting();
 
     public PocketViewModel() {
         showTechnology(PocketSettings.DEFAULTS);
@@ -104,6 +115,9 @@ public final class PocketViewModel {
         showTechnology(p);
         post = p.post();
         direction = p.direction();
+        entry = p.entry().word();
+        entryAngle = ExactDecimal.of(p.entryAngleDeg());
+        centreCutting = p.centreCutting();
     }
 
     public String contourText() {
@@ -138,6 +152,33 @@ public final class PocketViewModel {
         direction = java.util.Objects.requireNonNull(d, "direction");
     }
 
+    public String entry() {
+        return entry;
+    }
+
+    public void setEntry(String e) {
+        if (!ENTRIES.contains(e)) {
+            throw new IllegalArgumentException("unknown entry " + e);
+        }
+        entry = e;
+    }
+
+    public String entryAngle() {
+        return entryAngle;
+    }
+
+    public void setEntryAngle(String t) {
+        entryAngle = t.trim();
+    }
+
+    public boolean centreCutting() {
+        return centreCutting;
+    }
+
+    public void setCentreCutting(boolean c) {
+        centreCutting = c;
+    }
+
     /**
      * What is wrong with the typed fields, in the planner's words, by field name ({@link #CONTOUR}
      * or one of {@link #NAMES}); empty when Compute may run.
@@ -160,6 +201,15 @@ public final class PocketViewModel {
                                 : "."));
             }
         }
+        try {
+            double a = Double.parseDouble(entryAngle);
+            if (!Pocket.ENTRY_ANGLE.contains(a)) {
+                out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": " + Pocket.ENTRY_ANGLE.problem(a) + ".");
+            }
+        } catch (NumberFormatException e) {
+            out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": '" + entryAngle + "' is not a number"
+                    + (entryAngle.contains(",") ? " (decimals take a point: " + entryAngle.replace(',', '.') + ")." : "."));
+        }
         return out;
     }
 
@@ -172,10 +222,9 @@ public final class PocketViewModel {
         for (int i = 0; i < v.length; i++) {
             v[i] = Double.parseDouble(values[i]);
         }
-        // the entry the job holds (the tab has no fields for it) goes on with the typed technology
         return Optional.of(new PocketSettings(Path.of(contourText).toAbsolutePath(), v[0], v[1], v[2], v[3], v[4],
-                v[5], v[6], v[7], v[8], post, direction).withEntry(settings.entry(), settings.entryAngleDeg(),
-                settings.centreCutting()));
+                v[5], v[6], v[7], v[8], post, direction).withEntry(org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry), Double.parseDouble(entryAngle),
+                centreCutting));
     }
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
@@ -211,8 +260,26 @@ public final class PocketViewModel {
         error = o.error();
     }
 
-    /** Plans the pocket of these settings: touches no view-model state, so any thread may call it. */
-    public static Outcome outcome(PocketSettings settings) {
+    /**
+     * Why the computed program cannot be saved, or empty when it may: there is none yet, or it
+     * fails the program check (it is never written, as Job > Run would not write it).
+     */
+    public Optional<String> saveProblem() {
+        if (result.isEmpty()) {
+            return Optional.of("There is no program to save: press Compute first.");
+        }
+        return result.get().refusal().map(f -> "The program is not saved: it fails the program check at "
+                + f.message());
+    }
+
+    /**
+     * Plans the pocket of these settings: touches no view-model state, so any thread may call it.
+     * A plunge asked for a cutter not said to cut at its centre is planned as asked, so that the
+     * planner sees the block the program check refuses (Job > Run refuses such settings outright).
+     */
+    public static Outcome outcome(PocketSettings checked) {
+        PocketSettings settings = checked.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE && !checked.centreCutting()
+                ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true) : checked;
         try {
             String name = settings.contour().getFileName().toString();
             if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
@@ -220,13 +287,13 @@ public final class PocketViewModel {
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
                     return new Outcome(Optional.of(Result.checked(regionScene(contours, rp), regionReport(contours, rp),
-                            PocketService.regionProgram(rp, settings.post(), name), settings)), Optional.empty());
+                            PocketService.regionProgram(rp, settings.post(), name), checked)), Optional.empty());
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
                     settings.climb(), settings.entryRule());
-            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, settings)),
+            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, checked)),
                     Optional.empty());
         } catch (CamInputException e) {
             return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));
