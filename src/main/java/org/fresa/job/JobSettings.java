@@ -277,6 +277,9 @@ public final class JobSettings {
      *     empty when the heel is the part behind the boundary
      */
     public record HeelCoordination(int groupSize, OptionalDouble boundaryMm, String heelElements) {
+        /** Sizes per heel when the job, the command line or the tab says none (job.xsd's heelGroup). */
+        public static final int DEFAULT_GROUP_SIZE = 3;
+
         public HeelCoordination {
             Objects.requireNonNull(boundaryMm, "boundaryMm");
             Objects.requireNonNull(heelElements, "heelElements");

@@ -65,7 +65,7 @@ public final class GradingViewModel {
     private ShrinkageMode shrinkageMode = GradingSettings.DEFAULTS.shrinkageMode();
     private String fitting = "";
     private String heelElements = "";
-    private String heelGroup = "3";
+    private String heelGroup = Integer.toString(JobSettings.HeelCoordination.DEFAULT_GROUP_SIZE);
     /** A job's boundary-line coordination, kept while no heel elements are designated. */
     private OptionalDouble heelBoundaryMm = OptionalDouble.empty();
     private Optional<GradingResult> result = Optional.empty();

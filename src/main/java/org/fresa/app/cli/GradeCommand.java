@@ -77,9 +77,9 @@ final class GradeCommand implements Callable<Integer> {
                     + "grade as the group's middle size (the thesis's coordination; implies three-point arcs)")
     Double coordinationMm;
 
-    @Option(names = "--heel-group", paramLabel = "N", defaultValue = "3",
-            description = "sizes per heel with --coordination (default 3)")
-    int heelGroup;
+    @Option(names = "--heel-group", paramLabel = "N",
+            description = "sizes per heel with --coordination (default ${DEFAULT-VALUE})")
+    int heelGroup = org.fresa.job.JobSettings.HeelCoordination.DEFAULT_GROUP_SIZE;
 
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;

@@ -1,5 +1,6 @@
 package org.fresa.app.cli;
 
+import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.EntryRule;
@@ -12,29 +13,28 @@ import picocli.CommandLine.Option;
  */
 final class StepNcEntryOptions {
 
-    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge", defaultValue = "auto",
+    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge",
             description = "how pockets are entered: the file's own ramp or helix, else a helix where it has room,"
                     + " else a zig-zag ramp (auto), helix, ramp, or plunge (with --centre-cutting only);"
                     + " default ${DEFAULT-VALUE}")
-    String entry;
+    EntryRule.Kind entry = StepNcSettings.DEFAULTS.entry().kind();
 
-    @Option(names = "--entry-angle", paramLabel = "DEG", defaultValue = "3",
+    @Option(names = "--entry-angle", paramLabel = "DEG",
             description = "steepest descent of a pocket's helix or ramp entry and of a hole milled on a helix"
                     + " (deg, 0.5 to 90); default ${DEFAULT-VALUE}")
-    double entryAngleDeg;
+    double entryAngleDeg = StepNcSettings.DEFAULTS.entry().angleDeg();
 
     @Option(names = "--centre-cutting", description = "the file's milling cutters cut at their centre (may plunge)")
-    boolean centreCutting;
+    boolean centreCutting = StepNcSettings.DEFAULTS.entry().centreCutting();
 
     /**
      * The entry rule asked for.
      *
-     * @throws CamInputException (exit 2) for an unknown kind, an angle out of range or a plunge of a
+     * @throws CamInputException (exit 2) for an angle out of range or a plunge of a
      *     cutter not said to cut at its centre
      */
     EntryRule rule() throws CamInputException {
-        EntryRule.Kind kind = EntryRule.Kind.of(entry).orElseThrow(() -> new CamInputException("--entry",
-                "expected one of " + String.join(", ", EntryRule.Kind.words()) + ", not '" + entry + "'"));
+        EntryRule.Kind kind = entry;
         double angle = SettingRanges.StepNc.ENTRY_ANGLE.check(entryAngleDeg);
         if (kind == EntryRule.Kind.PLUNGE && !centreCutting) {
             throw new CamInputException("--entry plunge", "a plunge entry needs a centre-cutting tool: say so with"

@@ -57,7 +57,7 @@ class StepNcEntryCommandTest {
     @ParameterizedTest
     @CsvSource(delimiter = ';', value = {
         "--entry plunge; --entry plunge: a plunge entry needs a centre-cutting tool",
-        "--entry spiral; --entry: expected one of auto, helix, ramp, plunge",
+        "--entry spiral; '--entry': unknown value 'spiral': expected one of auto, helix, ramp, plunge",
         "--entry-angle 0.4; --entry-angle: expected a number from 0.5 to 90 deg",
         "--entry-angle NaN; --entry-angle: expected a number from 0.5 to 90 deg",
         "--entry-angle 91; --entry-angle: expected a number from 0.5 to 90 deg"})
