@@ -8,8 +8,9 @@ package org.fresa.toolpath;
  *     ({@link CuttingData}) from the cutting speed, instead of refusing it
  * @param breakthroughMm how far the full diameter of a drill, or the bottom of a milling cutter,
  *     passes the exit of a through hole (mm), 0 to {@value #MAX_BREAKTHROUGH_MM}
+ * @param paths whose path conventions: Fresa's own, or the 2016 robot thesis's ({@link ThesisPaths})
  */
-public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) {
+public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm, PathConvention paths) {
 
     /** Breakthrough of through holes when none is asked (mm). */
     public static final double DEFAULT_BREAKTHROUGH_MM = 1;
@@ -20,9 +21,20 @@ public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) 
     public static final PlanningChoices DEFAULT = new PlanningChoices(false, DEFAULT_BREAKTHROUGH_MM);
 
     public PlanningChoices {
+        java.util.Objects.requireNonNull(paths, "paths");
         if (!(breakthroughMm >= 0 && breakthroughMm <= MAX_BREAKTHROUGH_MM)) {
             throw new IllegalArgumentException("breakthrough must be 0 to " + MAX_BREAKTHROUGH_MM + " mm: "
                     + breakthroughMm);
         }
+    }
+
+    /** Fresa's own path conventions. */
+    public PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) {
+        this(trustCuttingSpeed, breakthroughMm, PathConvention.FRESA);
+    }
+
+    /** The same choices with these path conventions. */
+    public PlanningChoices withPaths(PathConvention p) {
+        return new PlanningChoices(trustCuttingSpeed, breakthroughMm, p);
     }
 }
