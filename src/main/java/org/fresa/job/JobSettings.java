@@ -22,12 +22,25 @@ public final class JobSettings {
      *
      * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
      * @param breakthroughMm how far a through hole's tool passes its exit
+     * @param paths whose path conventions: Fresa's own or the 2016 robot thesis's
      */
-    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm,
+            org.fresa.toolpath.PathConvention paths) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(paths, "paths");
             SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
+        }
+
+        /** Fresa's own path conventions. */
+        public StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+            this(file, post, trustCuttingSpeed, breakthroughMm, org.fresa.toolpath.PathConvention.FRESA);
+        }
+
+        /** The same settings with these path conventions. */
+        public StepNcSettings withPaths(org.fresa.toolpath.PathConvention p) {
+            return new StepNcSettings(file, post, trustCuttingSpeed, breakthroughMm, p);
         }
 
         /** The file and post with the planner's default choices. */
@@ -37,7 +50,7 @@ public final class JobSettings {
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
         public org.fresa.toolpath.PlanningChoices choices() {
-            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm);
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, paths);
         }
     }
 

@@ -192,7 +192,9 @@ public final class JobXml {
         StepNcType s = x.getStepnc();
         if (s != null) {
             job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()),
+                    org.fresa.toolpath.PathConvention.byWord(s.getPaths()).orElseThrow(
+                            () -> new IllegalArgumentException("paths must be fresa or thesis: " + s.getPaths()))));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -375,6 +377,9 @@ public final class JobXml {
             }
             if (s.breakthroughMm() != org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM) {
                 t.setBreakthroughMm(s.breakthroughMm());
+            }
+            if (s.paths() != org.fresa.toolpath.PathConvention.FRESA) {
+                t.setPaths(s.paths().word());
             }
             x.setStepnc(t);
         });

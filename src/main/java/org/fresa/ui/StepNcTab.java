@@ -50,6 +50,7 @@ final class StepNcTab implements ModuleTab {
     private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel problems = new WarningsPanel("stepnc-problems", 4);
     private final JComboBox<String> layers = new JComboBox<>();
+    private final JComboBox<String> paths = new JComboBox<>();
     private final JSlider replay = new JSlider(0, StepNcViewModel.REPLAY_STEPS, StepNcViewModel.REPLAY_STEPS);
     private final JButton play = new JButton("Play");
     private final JLabel replayText = new JLabel(" ");
@@ -73,6 +74,18 @@ final class StepNcTab implements ModuleTab {
         open.addActionListener(e -> choose());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(open);
+        JLabel pathsLabel = new JLabel("Paths:");
+        pathsLabel.setDisplayedMnemonic(KeyEvent.VK_P);
+        pathsLabel.setLabelFor(paths);
+        for (org.fresa.toolpath.PathConvention c : StepNcViewModel.PATHS) {
+            paths.addItem(StepNcViewModel.pathsLabel(c));
+        }
+        paths.setName("stepnc-paths");
+        paths.setToolTipText("Fresa's paths (exact arcs, gentle entries) or the 2016 STEP-NC robot thesis's points,"
+                + " for fresa toolpath and fresa robot (--paths)");
+        paths.addActionListener(e -> pathsChosen());
+        top.add(pathsLabel);
+        top.add(paths);
         top.add(fileLabel);
 
         tree.setName("stepnc-tree");
@@ -226,8 +239,38 @@ final class StepNcTab implements ModuleTab {
      * A job with a STEP-NC file shows that file here; a job without one (New, another Open, an
      * undo) shows the empty tab, never the last job's part.
      */
+    /** The path conventions the list shows. */
+    private org.fresa.toolpath.PathConvention chosenPaths() {
+        int i = paths.getSelectedIndex();
+        return StepNcViewModel.PATHS.get(Math.max(0, i));
+    }
+
+    /** A path convention picked: the job's STEP-NC settings carry it, and the file is planned again. */
+    private void pathsChosen() {
+        if (updating) {
+            return;
+        }
+        var s = ctx.model().job().stepnc();
+        if (s.isPresent() && s.get().paths() != chosenPaths()) {
+            ctx.model().setJob(ctx.model().job().withStepnc(s.get().withPaths(chosenPaths())));
+        }
+    }
+
     private void jobChanged() {
-        Optional<Path> want = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::file);
+        var settings = ctx.model().job().stepnc();
+        if (settings.isPresent() && settings.get().paths() != chosenPaths()) {
+            updating = true;
+            paths.setSelectedIndex(StepNcViewModel.PATHS.indexOf(settings.get().paths()));
+            updating = false;
+            if (settings.get().file().equals(loadedFile)) {
+                // the same file with other path conventions: planned again
+                Path f = loadedFile;
+                clear();
+                open(f);
+                return;
+            }
+        }
+        Optional<Path> want = settings.map(JobSettings.StepNcSettings::file);
         if (want.isEmpty()) {
             if (loadedFile != null || requestedFile != null) {
                 clear();
@@ -262,10 +305,11 @@ final class StepNcTab implements ModuleTab {
     void open(Path file) {
         requestedFile = file;
         int generation = ctx.model().generation();
+        JobSettings.StepNcSettings settings = StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
             StepNcProgram p = StepNcService.read(file, progress);
             progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
-            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT, settings.choices());
             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
             org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
             // the first workingstep's plot, from a view model of this thread in the tab's first state
@@ -286,8 +330,9 @@ final class StepNcTab implements ModuleTab {
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
-            String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
-            ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
+            if (!ctx.model().job().stepnc().equals(Optional.of(settings))) {
+                ctx.model().setJob(ctx.model().job().withStepnc(settings));
+            }
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
                     + program.skipped().size() + " skipped, " + program.unknownEntities().size()
                     + " entity types not interpreted");
