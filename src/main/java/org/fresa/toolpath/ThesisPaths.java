@@ -31,9 +31,10 @@ import org.fresa.stepnc.Tool;
  * the bottom, the surface, the retract point twice;
  * <li>a milled feature is cut in layers from its face (depth 0) down to its depth, in steps of
  * the axial depth with the remainder last; each layer is entered from its first point lifted by
- * the retract plane, follows its path, goes to the feature's centre and lifts by the retract
- * plane; after the last layer the tool goes to the first point above the face and to the
- * security point;
+ * the retract plane, follows its path and lifts its last point by the retract plane; after the
+ * last layer the tool goes to the first point above the face and to the security point;
+ * <li>a path ends at the feature's centre when its last contour leaves material there (further
+ * than the tool radius from it every way); a tool as wide as the hole has the centre as its path;
  * <li>contour-parallel paths are rectangles (corner radii ignored) counter-clockwise from the
  * bottom-left corner, the first one tool radius inside the outline, the next ones closer by the
  * stepover; a circle is a regular 40-gon inscribed in it (vertices 4.5 degrees off the axes),
@@ -130,7 +131,6 @@ public final class ThesisPaths {
         } else if (op.type().isMilling()) {
             double stepover = stepover(op, dia);
             List<Vec2> path;
-            Vec2 centre = Vec2.ZERO;
             switch (f.type()) {
                 case ROUND_HOLE -> path = circleContours(
                         f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter")) / 2,
@@ -155,13 +155,12 @@ public final class ThesisPaths {
                     Vec3 course = f.courseOfTravel().flatMap(c -> c.direction().map(d -> c.placement().applyToDirection(d)))
                             .orElse(Vec3.UNIT_X);
                     path = facePasses(box, Math.abs(course.y()) > Math.abs(course.x()), dia, stepover);
-                    centre = new Vec2((box.minX() + box.maxX()) / 2, (box.minY() + box.maxY()) / 2);
                 }
                 default -> throw new UnsupportedOperationException("the thesis's conventions do not cover a "
                         + f.entity());
             }
             double axial = op.axialCuttingDepthMm().orElse(depth);
-            local = milled(path, centre, layers(depth, axial), retract, dia);
+            local = milled(path, layers(depth, axial), retract);
         } else {
             throw new UnsupportedOperationException("the thesis's conventions do not cover " + op.entity());
         }
@@ -217,26 +216,22 @@ public final class ThesisPaths {
         return out;
     }
 
-    /** A milled feature's points: its path at every layer, then above the face and home. */
-    static List<Point> milled(List<Vec2> path, Vec2 centre, List<Double> layers, double retractMm, double stepMm) {
-        Vec2 first = path.isEmpty() ? centre : path.get(0);
+    /**
+     * A milled feature's points: at every layer its path, entered from its first point lifted by
+     * the retract plane and left by lifting its last point as much; then its first point above
+     * the face.
+     */
+    static List<Point> milled(List<Vec2> path, List<Double> layers, double retractMm) {
+        Vec2 first = path.get(0);
+        Vec2 last = path.get(path.size() - 1);
         List<Point> out = new ArrayList<>();
         for (double layer : layers) {
             double z = -layer;
             out.add(new Point(at(first, z + retractMm), Kind.RAPID));
-            Vec2 last = first;
             for (int i = 0; i < path.size(); i++) {
                 out.add(new Point(at(path.get(i), z), i == 0 ? Kind.PLUNGE : Kind.FEED));
-                last = path.get(i);
             }
-            if (path.isEmpty()) {
-                out.add(new Point(at(centre, z), Kind.PLUNGE));
-            } else {
-                for (Vec2 p : divide(last, centre, stepMm)) {
-                    out.add(new Point(at(p, z), Kind.FEED));
-                }
-            }
-            out.add(new Point(at(centre, z + retractMm), Kind.RAPID));
+            out.add(new Point(at(last, z + retractMm), Kind.RAPID));
         }
         out.add(new Point(at(first, retractMm), Kind.RAPID));
         return out;
@@ -271,16 +266,34 @@ public final class ThesisPaths {
         double ax = halfXMm - diameterMm / 2;
         double ay = halfYMm - diameterMm / 2;
         ToolpathPlanner.bounded("the pocket", Math.max(ax, ay), "the stepover", stepoverMm);
+        double lastX = -1;
+        double lastY = -1;
         while (ax >= -EPS_MM && ay >= -EPS_MM) {
             double x = Math.max(ax, 0);
             double y = Math.max(ay, 0);
             List<Vec2> corners = List.of(new Vec2(-x, -y), new Vec2(x, -y), new Vec2(x, y), new Vec2(-x, y),
                     new Vec2(-x, -y));
             link(out, corners, diameterMm);
+            lastX = x;
+            lastY = y;
             ax -= stepoverMm;
             ay -= stepoverMm;
         }
-        return out;
+        return toCentre(out, Math.min(lastX, lastY) > diameterMm / 2 + EPS_MM, diameterMm);
+    }
+
+    /**
+     * The path ended at the centre when the last contour leaves material there (it is further
+     * than the tool radius from the centre every way), or the centre alone when there is no
+     * contour (a tool as wide as the feature).
+     */
+    private static List<Vec2> toCentre(List<Vec2> path, boolean uncut, double stepMm) {
+        if (path.isEmpty()) {
+            path.add(Vec2.ZERO);
+        } else if (uncut) {
+            path.addAll(divide(path.get(path.size() - 1), Vec2.ZERO, stepMm));
+        }
+        return path;
     }
 
     /**
@@ -294,7 +307,9 @@ public final class ThesisPaths {
         double apothem = radiusMm * Math.cos(half) - diameterMm / 2;
         ToolpathPlanner.bounded("the hole", Math.max(apothem, 0), "the stepover", stepoverMm);
         double start = 1.5 * Math.PI - half;
+        double lastApothem = -1;
         while (apothem > EPS_MM) {
+            lastApothem = apothem;
             double r = apothem / Math.cos(half);
             List<Vec2> vertices = new ArrayList<>();
             for (int k = 0; k <= CIRCLE_SIDES; k++) {
@@ -304,7 +319,7 @@ public final class ThesisPaths {
             link(out, vertices, diameterMm);
             apothem -= stepoverMm;
         }
-        return out;
+        return toCentre(out, lastApothem > diameterMm / 2 + EPS_MM, diameterMm);
     }
 
     /** Appends a closed contour: linked from the path's last point, its sides divided. */
