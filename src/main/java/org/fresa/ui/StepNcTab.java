@@ -61,6 +61,8 @@ final class StepNcTab implements ModuleTab {
     private boolean updating;
     // the file shown, and the last one asked for (a failed read is not retried on every job change)
     private Path loadedFile;
+    // the path conventions the shown file was planned with
+    private org.fresa.toolpath.PathConvention loadedPaths;
     private Path requestedFile;
     // the plot of the state a read leaves the tab in, drawn with the read: shown once, then dropped
     private org.fresa.chart.PlotScene preparedPlot;
@@ -262,13 +264,13 @@ final class StepNcTab implements ModuleTab {
             updating = true;
             paths.setSelectedIndex(StepNcViewModel.PATHS.indexOf(settings.get().paths()));
             updating = false;
-            if (settings.get().file().equals(loadedFile)) {
-                // the same file with other path conventions: planned again
-                Path f = loadedFile;
-                clear();
-                open(f);
-                return;
-            }
+        }
+        if (settings.isPresent() && settings.get().file().equals(loadedFile) && settings.get().paths() != loadedPaths) {
+            // the same file with other path conventions: planned again
+            Path f = loadedFile;
+            clear();
+            open(f);
+            return;
         }
         Optional<Path> want = settings.map(JobSettings.StepNcSettings::file);
         if (want.isEmpty()) {
@@ -290,6 +292,7 @@ final class StepNcTab implements ModuleTab {
         play.setText("Play");
         vm = new StepNcViewModel();
         loadedFile = null;
+        loadedPaths = null;
         requestedFile = null;
         preparedPlot = null;
         preparedDetails = null;
@@ -330,6 +333,7 @@ final class StepNcTab implements ModuleTab {
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
+            loadedPaths = settings.paths();
             if (!ctx.model().job().stepnc().equals(Optional.of(settings))) {
                 ctx.model().setJob(ctx.model().job().withStepnc(settings));
             }
