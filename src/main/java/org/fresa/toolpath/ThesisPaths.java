@@ -138,17 +138,20 @@ public final class ThesisPaths {
                 case CLOSED_POCKET -> {
                     org.fresa.stepnc.Profile sp = f.profile()
                             .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
-                    if (!(sp instanceof org.fresa.stepnc.Profile.Rectangular r)) {
-                        throw new UnsupportedOperationException("the thesis's conventions are known for rectangular"
-                                + " pockets only, not a " + sp.entity());
-                    }
                     Transform3 pp = sp.placement();
                     // STEP Modeler writes the feature's own placement (workpiece frame) as the profile's
                     if (pp.eq(f.placement(), org.fresa.geom.Tolerance.DEFAULT)) {
                         pp = Transform3.IDENTITY;
                     }
                     place = place.times(pp);
-                    path = rectangleContours(r.lengthMm() / 2, r.widthMm() / 2, dia, stepover);
+                    if (sp instanceof org.fresa.stepnc.Profile.Rectangular r) {
+                        path = rectangleContours(r.lengthMm() / 2, r.widthMm() / 2, dia, stepover);
+                    } else if (sp instanceof org.fresa.stepnc.Profile.General g) {
+                        path = polylineRectangleContours(g, dia, stepover);
+                    } else {
+                        throw new UnsupportedOperationException("the thesis's conventions are known for rectangular"
+                                + " pockets only, not a " + sp.entity());
+                    }
                 }
                 case PLANAR_FACE -> {
                     Box2 box = ToolpathPlanner.faceBoundary(f);
@@ -257,11 +260,57 @@ public final class ThesisPaths {
         return out;
     }
 
+    /** The corners of a rectangle about its centre, counter-clockwise from the bottom-left. */
+    static final List<Vec2> BOTTOM_LEFT_CCW = List.of(new Vec2(-1, -1), new Vec2(1, -1), new Vec2(1, 1), new Vec2(-1, 1));
+
     /**
      * Contour-parallel rectangles about the origin, counter-clockwise from the bottom-left
      * corner, while both half-sizes stay at or above zero (a zero one is a line there and back).
      */
     static List<Vec2> rectangleContours(double halfXMm, double halfYMm, double diameterMm, double stepoverMm) {
+        return rectangleContours(Vec2.ZERO, halfXMm, halfYMm, BOTTOM_LEFT_CCW, diameterMm, stepoverMm);
+    }
+
+    /**
+     * A pocket whose outline is a closed polyline of four sides along the axes (the original ISO
+     * 14649-11 example 1's): its rectangles start at the corner of the polyline's first point and
+     * run in the polyline's order.
+     */
+    static List<Vec2> polylineRectangleContours(org.fresa.stepnc.Profile.General g, double diameterMm,
+            double stepoverMm) {
+        List<Vec2> corners = new ArrayList<>();
+        for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
+            if (!(seg instanceof org.fresa.stepnc.Profile.Line line)) {
+                throw new UnsupportedOperationException("the thesis's conventions are known for straight outlines only");
+            }
+            corners.add(new Vec2(line.start().x(), line.start().y()));
+        }
+        Box2 box = Box2.around(corners);
+        Vec2 centre = new Vec2((box.minX() + box.maxX()) / 2, (box.minY() + box.maxY()) / 2);
+        List<Vec2> signs = new ArrayList<>();
+        for (Vec2 c : corners) {
+            double sx = Math.signum(c.x() - centre.x());
+            double sy = Math.signum(c.y() - centre.y());
+            if (Math.abs(Math.abs(c.x() - centre.x()) - box.width() / 2) > 1e-6
+                    || Math.abs(Math.abs(c.y() - centre.y()) - box.height() / 2) > 1e-6) {
+                throw new UnsupportedOperationException("the thesis's conventions are known for rectangular outlines"
+                        + " only");
+            }
+            signs.add(new Vec2(sx, sy));
+        }
+        if (!g.closed() || signs.size() != 4) {
+            throw new UnsupportedOperationException("the thesis's conventions are known for closed rectangular"
+                    + " outlines only");
+        }
+        return rectangleContours(centre, box.width() / 2, box.height() / 2, signs, diameterMm, stepoverMm);
+    }
+
+    /**
+     * Contour-parallel rectangles about a centre, each through the given corners in order (signs
+     * of the half-sizes) and back, while both half-sizes stay at or above zero.
+     */
+    static List<Vec2> rectangleContours(Vec2 centre, double halfXMm, double halfYMm, List<Vec2> cornerSigns,
+            double diameterMm, double stepoverMm) {
         List<Vec2> out = new ArrayList<>();
         double ax = halfXMm - diameterMm / 2;
         double ay = halfYMm - diameterMm / 2;
@@ -271,15 +320,18 @@ public final class ThesisPaths {
         while (ax >= -EPS_MM && ay >= -EPS_MM) {
             double x = Math.max(ax, 0);
             double y = Math.max(ay, 0);
-            List<Vec2> corners = List.of(new Vec2(-x, -y), new Vec2(x, -y), new Vec2(x, y), new Vec2(-x, y),
-                    new Vec2(-x, -y));
+            List<Vec2> corners = new ArrayList<>();
+            for (Vec2 sign : cornerSigns) {
+                corners.add(centre.plus(new Vec2(sign.x() * x, sign.y() * y)));
+            }
+            corners.add(corners.get(0));
             link(out, corners, diameterMm);
             lastX = x;
             lastY = y;
             ax -= stepoverMm;
             ay -= stepoverMm;
         }
-        return toCentre(out, Math.min(lastX, lastY) > diameterMm / 2 + EPS_MM, diameterMm);
+        return toCentre(out, Math.min(lastX, lastY) > diameterMm / 2 + EPS_MM, centre, diameterMm);
     }
 
     /**
@@ -287,11 +339,11 @@ public final class ThesisPaths {
      * than the tool radius from the centre every way), or the centre alone when there is no
      * contour (a tool as wide as the feature).
      */
-    private static List<Vec2> toCentre(List<Vec2> path, boolean uncut, double stepMm) {
+    private static List<Vec2> toCentre(List<Vec2> path, boolean uncut, Vec2 centre, double stepMm) {
         if (path.isEmpty()) {
-            path.add(Vec2.ZERO);
+            path.add(centre);
         } else if (uncut) {
-            path.addAll(divide(path.get(path.size() - 1), Vec2.ZERO, stepMm));
+            path.addAll(divide(path.get(path.size() - 1), centre, stepMm));
         }
         return path;
     }
@@ -319,7 +371,7 @@ public final class ThesisPaths {
             link(out, vertices, diameterMm);
             apothem -= stepoverMm;
         }
-        return toCentre(out, lastApothem > diameterMm / 2 + EPS_MM, diameterMm);
+        return toCentre(out, lastApothem > diameterMm / 2 + EPS_MM, Vec2.ZERO, diameterMm);
     }
 
     /** Appends a closed contour: linked from the path's last point, its sides divided. */

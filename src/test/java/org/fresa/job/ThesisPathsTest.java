@@ -72,6 +72,38 @@ class ThesisPathsTest {
         assertEquals(531, points(thesis(EXAMPLE1)).size());
     }
 
+    /** ISO 14649-11 example 1 with the original values NIST's comments record (the thesis's part 1). */
+    static final Path EXAMPLE1_ORIGINAL = Path.of("src/test/resources/org/fresa/toolpath/example1-original.stp");
+
+    @Test
+    void theOriginalExample1GivesTheThesissFirstAndLastPointsAndLacksItsRoughingStrategy() throws Exception {
+        ToolpathPlanner.Plan p = thesis(EXAMPLE1_ORIGINAL);
+        List<Integer> perStep = p.toolpath().sections().stream().map(x -> 1 + x.moves().size()).toList();
+        // face 3 layers x 44 + 3; drill and ream 8 each; finishing 16 layers x 19 + 3; roughing as
+        // contour-parallel in the file's 6.5 mm layers: 6 x 15 + 3, where the thesis's 842 leave 384 points
+        // to its contour-bidirectional roughing in 2.5 mm layers (docs/thesis-paths.md)
+        assertEquals(List.of(135, 8, 8, 93, 307), perStep);
+        List<Vec3> ours = points(p);
+        assertEquals(551, ours.size());
+        assertEquals(384, 842 - 135 - 8 - 8 - 307);
+        for (String table : List.of("C.0.1 ex1 Adept One", "C.0.2 ex1 ABB IRB-140", "C.0.3 ex1 Tricept 806")) {
+            int matched = 0;
+            for (Sample x : samples(table)) {
+                // points 1-9 counted from the start, 830-842 from the end (the thesis's last point is 842)
+                int i = x.point() <= 9 ? x.point() - 1 : x.point() >= 830 ? ours.size() - 1 - (842 - x.point()) : -1;
+                if (i >= 0 && ours.get(i).distance(x.piece()) <= MATCH_MM) {
+                    matched++;
+                }
+            }
+            assertEquals(19, matched, table);
+            // in order a few roughing samples (at -20 mm) are also met by the finishing pass's corners
+            int inOrder = find(samples(table), ours).inOrder();
+            assertTrue(inOrder >= 19, table + " " + inOrder);
+            System.out.printf(java.util.Locale.ROOT, "%s (original example 1): %d at their numbers, %d in order%n",
+                    table, matched, inOrder);
+        }
+    }
+
     @Test
     void defaultPathsAreUnchanged() throws Exception {
         ToolpathPlanner.Plan p = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE2), Tolerance.DEFAULT);
