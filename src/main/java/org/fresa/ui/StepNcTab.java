@@ -77,7 +77,7 @@ final class StepNcTab implements ModuleTab {
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(open);
         JLabel pathsLabel = new JLabel("Paths:");
-        pathsLabel.setDisplayedMnemonic(KeyEvent.VK_P);
+        pathsLabel.setDisplayedMnemonic(KeyEvent.VK_A);
         pathsLabel.setLabelFor(paths);
         for (org.fresa.toolpath.PathConvention c : StepNcViewModel.PATHS) {
             paths.addItem(StepNcViewModel.pathsLabel(c));
