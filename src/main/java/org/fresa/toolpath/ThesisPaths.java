@@ -35,9 +35,11 @@ import org.fresa.stepnc.Tool;
  * last layer the tool goes to the first point above the face and to the security point;
  * <li>a path ends at the feature's centre when its last contour leaves material there (further
  * than the tool radius from it every way); a tool as wide as the hole has the centre as its path;
- * <li>contour-parallel paths are rectangles (corner radii ignored) counter-clockwise from the
- * bottom-left corner, the first one tool radius inside the outline, the next ones closer by the
- * stepover; a circle is a regular 40-gon inscribed in it (vertices 4.5 degrees off the axes),
+ * <li>a pocket's paths are contour-parallel whatever its strategy: rectangles (corner radii
+ * ignored) counter-clockwise from the bottom-left corner of a rectangular profile, or from a
+ * rectangular polyline's first corner in its order, the first one tool radius inside the outline,
+ * the next ones closer by the stepover (the thesis's contour-bidirectional roughing is not known
+ * well enough to be reproduced); a circle is a regular 40-gon inscribed in it (vertices 4.5 degrees off the axes),
  * offset inward flat by flat, each polygon starting at the left end of its bottom side;
  * <li>the stepover is the tool diameter less the strategy's overlap read as a length (as STEP
  * Modeler writes it, 20 % of the diameter); the radial depth is not used;
