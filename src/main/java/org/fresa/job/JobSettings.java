@@ -24,20 +24,33 @@ public final class JobSettings {
      * @param breakthroughMm how far a through hole's tool passes its exit
      * @param entry how pockets are entered and holes milled on a helix ({@code --entry},
      *     {@code --entry-angle}, {@code --centre-cutting})
+     * @param paths whose path conventions: Fresa's own or the 2016 robot thesis's
      */
     public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm,
-            org.fresa.pocket.EntryRule entry) {
+            org.fresa.pocket.EntryRule entry, org.fresa.toolpath.PathConvention paths) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
             Objects.requireNonNull(entry, "entry");
+            Objects.requireNonNull(paths, "paths");
             SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
             SettingRanges.StepNc.ENTRY_ANGLE.require(entry.angleDeg());
         }
 
-        /** The file and post with the planner's default entries. */
+        /** The file and post with the planner's default entries and Fresa's own path conventions. */
         public StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
             this(file, post, trustCuttingSpeed, breakthroughMm, org.fresa.pocket.EntryRule.DEFAULT);
+        }
+
+        /** These entries and Fresa's own path conventions. */
+        public StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm,
+                org.fresa.pocket.EntryRule entry) {
+            this(file, post, trustCuttingSpeed, breakthroughMm, entry, org.fresa.toolpath.PathConvention.FRESA);
+        }
+
+        /** The same settings with these path conventions. */
+        public StepNcSettings withPaths(org.fresa.toolpath.PathConvention p) {
+            return new StepNcSettings(file, post, trustCuttingSpeed, breakthroughMm, entry, p);
         }
 
         /** The file and post with the planner's default choices. */
@@ -47,7 +60,7 @@ public final class JobSettings {
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
         public org.fresa.toolpath.PlanningChoices choices() {
-            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry);
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry, paths);
         }
     }
 

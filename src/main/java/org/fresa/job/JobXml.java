@@ -216,7 +216,9 @@ public final class JobXml {
         StepNcType s = x.getStepnc();
         if (s != null) {
             job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s)));
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s),
+                    org.fresa.toolpath.PathConvention.byWord(s.getPaths()).orElseThrow(
+                            () -> new IllegalArgumentException("paths must be fresa or thesis: " + s.getPaths()))));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -445,6 +447,9 @@ public final class JobXml {
                 t.setEntry(s.entry().kind().word());
                 t.setEntryAngleDeg(s.entry().angleDeg());
                 t.setCentreCutting(s.entry().centreCutting());
+            }
+            if (s.paths() != org.fresa.toolpath.PathConvention.FRESA) {
+                t.setPaths(s.paths().word());
             }
             x.setStepnc(t);
         });

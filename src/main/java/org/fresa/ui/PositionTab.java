@@ -297,7 +297,7 @@ final class PositionTab implements ModuleTab {
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
             RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
                     r.tablePiece(), formats, new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
-                    progress);
+                    stepnc.get().choices(), progress);
             progress.progress(-1, "preparing the plots");
             TrajectoryCharts c = TrajectoryCharts.of(solved);
             return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));

@@ -73,6 +73,11 @@ final class RobotCommand implements Callable<Integer> {
     @Mixin
     StepNcEntryOptions entries = new StepNcEntryOptions();
 
+    @Option(names = "--paths", paramLabel = "fresa|thesis", defaultValue = "fresa",
+            description = "whose path conventions: fresa (exact arcs, gentle entries) or thesis (the 2016 STEP-NC robot"
+                    + " thesis's points, docs/thesis-paths.md); default ${DEFAULT-VALUE}")
+    String paths;
+
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
@@ -82,7 +87,8 @@ final class RobotCommand implements Callable<Integer> {
             Placement piece = tablePiece == null ? Placement.ORIGIN
                     : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
-                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule());
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule(),
+                    SettingRanges.StepNc.paths("--paths", paths));
             RobotTools.Choice tool = new RobotTools.Choice(
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
                     toolLength == null ? OptionalDouble.empty()
