@@ -668,11 +668,145 @@ public final class CutPlanner {
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
         }
-        List<CutPath> out = new ArrayList<>(cuts.size());
-        for (int i : seq) {
-            out.add(cuts.get(i));
+        return withStartPoints(cuts, seq, before, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()));
+    }
+
+    /**
+     * The cuts in order, those without leads started where the rapids to and from them are
+     * shortest (anywhere on the path, not only at a vertex). Two tours are refined, alternating
+     * the choice of start points with 2-opt and Or-opt moves of the order, and the shorter kept:
+     * the order found so far, and the nearest-neighbour tour that goes from the origin to the
+     * nearest point of the nearest cut whose inner cuts are done. So the travel is never longer
+     * than that tour's.
+     */
+    private static List<CutPath> withStartPoints(List<CutPath> cuts, int[] seq, List<int[]> before, long budgetNanos) {
+        int n = cuts.size();
+        boolean[] free = new boolean[n];
+        boolean any = false;
+        for (int i = 0; i < n; i++) {
+            CutPath c = cuts.get(i);
+            free[i] = c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0;
+            any |= free[i];
+        }
+        if (!any) {
+            List<CutPath> out = new ArrayList<>(n);
+            for (int i : seq) {
+                out.add(cuts.get(i));
+            }
+            return out;
+        }
+        long deadline = System.nanoTime() + budgetNanos;
+        CutPath[] a = cuts.toArray(new CutPath[0]);
+        int[] seqA = refine(a, seq, free, before, deadline);
+        CutPath[] b = cuts.toArray(new CutPath[0]);
+        int[] seqB = refine(b, nearestPointTour(b, free, before), free, before, deadline + budgetNanos);
+        CutPath[] best = travel(a, seqA) <= travel(b, seqB) ? a : b;
+        int[] bestSeq = best == a ? seqA : seqB;
+        List<CutPath> out = new ArrayList<>(n);
+        for (int i : bestSeq) {
+            out.add(best[i]);
         }
         return out;
+    }
+
+    private static double travel(CutPath[] cs, int[] seq) {
+        double d = 0;
+        Vec2 at = Vec2.ZERO;
+        for (int c : seq) {
+            d += at.distance(cs[c].pierce());
+            at = cs[c].exit();
+        }
+        return d;
+    }
+
+    /** Start points, then the order, then start points again, until neither changes or time is up. */
+    private static int[] refine(CutPath[] cs, int[] seq, boolean[] free, List<int[]> before, long deadline) {
+        for (int round = 0; round < 6 && System.nanoTime() < deadline; round++) {
+            boolean moved = placeStarts(cs, seq, free);
+            List<Vec2> pierce = new ArrayList<>(cs.length);
+            List<Vec2> exit = new ArrayList<>(cs.length);
+            for (CutPath c : cs) {
+                pierce.add(c.pierce());
+                exit.add(c.exit());
+            }
+            int[] next = new CutOrder(pierce, exit, before).improve(seq, Math.max(0, deadline - System.nanoTime()));
+            if (!moved && java.util.Arrays.equals(next, seq)) {
+                break;
+            }
+            seq = next;
+        }
+        placeStarts(cs, seq, free);
+        return seq;
+    }
+
+    /** Moves the start of every cut without leads to where the rapids in and out of it are shortest. */
+    private static boolean placeStarts(CutPath[] cs, int[] seq, boolean[] free) {
+        boolean moved = false;
+        for (int k = 0; k < seq.length; k++) {
+            int c = seq[k];
+            if (!free[c]) {
+                continue;
+            }
+            Vec2 from = k == 0 ? Vec2.ZERO : cs[seq[k - 1]].exit();
+            Vec2 to = k + 1 < seq.length ? cs[seq[k + 1]].pierce() : null;
+            Vec2 now = cs[c].pierce();
+            double cost = from.distance(now) + (to == null ? 0 : now.distance(to));
+            PathPoints.OnPath o = PathPoints.bestLink(cs[c].path(), from, to);
+            if (o.cost() < cost - 1e-6) {
+                cs[c] = restarted(cs[c], o);
+                moved = true;
+            }
+        }
+        return moved;
+    }
+
+    private static CutPath restarted(CutPath c, PathPoints.OnPath at) {
+        return new CutPath(c.label(), c.outer(), c.part(), PathPoints.restart(c.path(), at), c.leadIn(), c.tail(),
+                c.compensation());
+    }
+
+    /**
+     * The nearest-neighbour tour from the origin over the cuts whose inner cuts are done, to the
+     * nearest point of each cut without leads (started there) or to the pierce of one with leads.
+     */
+    private static int[] nearestPointTour(CutPath[] cs, boolean[] free, List<int[]> before) {
+        int n = cs.length;
+        List<List<Curve2>> curves = new ArrayList<>(n);
+        List<Vec2> fixed = new ArrayList<>(n);
+        int[] waiting = new int[n];
+        List<List<Integer>> after = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            curves.add(free[i] ? cs[i].path().curves() : null);
+            fixed.add(cs[i].pierce());
+            after.add(new ArrayList<>(1));
+        }
+        NearestCutIndex index = new NearestCutIndex(curves, fixed);
+        for (int i = 0; i < n; i++) {
+            waiting[i] = before.get(i).length;
+            for (int b : before.get(i)) {
+                after.get(b).add(i);
+            }
+            if (waiting[i] == 0) {
+                index.open(i);
+            }
+        }
+        int[] seq = new int[n];
+        Vec2 at = Vec2.ZERO;
+        for (int k = 0; k < n; k++) {
+            int c = index.nearest(at);
+            seq[k] = c;
+            index.close(c);
+            if (free[c]) {
+                cs[c] = restarted(cs[c], PathPoints.nearest(cs[c].path(), at));
+            }
+            at = cs[c].exit();
+            for (int o : after.get(c)) {
+                if (--waiting[o] == 0) {
+                    index.open(o);
+                }
+            }
+        }
+        return seq;
     }
 
     // ------------------------------------------------------------------ rapids
