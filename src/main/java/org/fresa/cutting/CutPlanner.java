@@ -302,10 +302,26 @@ public final class CutPlanner {
             }
             return nodes;
         }
+        // a contour's container holds the lower left corner of its box: only the contours whose
+        // boxes share that corner's cell are candidates
+        double sizes = 0;
+        for (Node n : nodes) {
+            sizes += Math.max(n.box.width(), n.box.height());
+        }
+        BoxGrid grid = new BoxGrid(Math.max(1e-3, sizes / Math.max(1, nodes.size())));
+        for (int i = 0; i < nodes.size(); i++) {
+            grid.add(i, nodes.get(i).box);
+        }
         for (int i = 0; i < nodes.size(); i++) {
             Node n = nodes.get(i);
             Node best = null;
-            for (int j = i - 1; j >= 0; j--) {
+            Vec2 corner = new Vec2(n.box.minX(), n.box.minY());
+            int[] candidates = grid.at(corner, corner);
+            for (int c = candidates.length - 1; c >= 0; c--) {
+                int j = candidates[c];
+                if (j >= i) {
+                    continue;
+                }
                 Node m = nodes.get(j);
                 if (m.area <= n.area || !contains(m.box, n.box)) {
                     continue;
@@ -817,7 +833,16 @@ public final class CutPlanner {
      */
     private static List<List<Vec2>> rapids(List<CutPath> order, CuttingOptions o, List<String> warnings) {
         List<List<Vec2>> out = new ArrayList<>();
-        RapidRouter router = new RapidRouter(Math.max(0.25, o.kerfMm() / 2));
+        // cells about the size of a part; at most 2048 across the sheet
+        Box2 ext = null;
+        double sizes = 0;
+        for (CutPath c : order) {
+            Box2 b = c.path().bounds();
+            ext = ext == null ? b : ext.union(b);
+            sizes += Math.max(b.width(), b.height());
+        }
+        double cell = ext == null ? 10 : Math.max(sizes / order.size(), Math.max(ext.width(), ext.height()) / 2048);
+        RapidRouter router = new RapidRouter(Math.max(0.25, o.kerfMm() / 2), Math.max(cell, 1e-3));
         Vec2 at = Vec2.ZERO;
         for (CutPath c : order) {
             out.add(o.paperMode() || !o.avoidCutParts() ? List.of(at, c.pierce()) : router.route(at, c.pierce()));
