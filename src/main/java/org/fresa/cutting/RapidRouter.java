@@ -31,9 +31,27 @@ final class RapidRouter {
     private static final double EPS = 1e-7;
     private static final int MAX_ROUNDS = 12;
 
-    /** A convex obstacle: counter-clockwise hull vertices, grown and raw. */
-    private record Obstacle(Vec2[] grown, Vec2[] raw, Box2 box) {
+    /**
+     * A convex obstacle: the counter-clockwise hull of the cut path as x, y pairs (compact: a sheet
+     * may hold a hundred thousand parts), and the box of the hull grown by the clearance.
+     */
+    private record Obstacle(double[] hull, Box2 box) {
+        Vec2[] raw() {
+            Vec2[] v = new Vec2[hull.length / 2];
+            for (int k = 0; k < v.length; k++) {
+                v[k] = new Vec2(hull[2 * k], hull[2 * k + 1]);
+            }
+            return v;
+        }
     }
+
+    /** The raw and grown hulls of the obstacles used lately: rapids meet the same parts again and again. */
+    private final Map<Integer, Vec2[][]> recent = new java.util.LinkedHashMap<>(256, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Integer, Vec2[][]> eldest) {
+            return size() > 4096;
+        }
+    };
 
     private final double clearanceMm;
     private final List<Obstacle> obstacles = new ArrayList<>();
@@ -79,17 +97,46 @@ final class RapidRouter {
         if (raw.length < 3) {
             return;
         }
-        List<Vec2> big = new ArrayList<>();
+        Vec2[] grown = clearanceMm > 0 ? hull(grownPoints(raw)) : raw;
+        double[] xy = new double[2 * raw.length];
+        for (int k = 0; k < raw.length; k++) {
+            xy[2 * k] = raw[k].x();
+            xy[2 * k + 1] = raw[k].y();
+        }
+        Obstacle o = new Obstacle(xy, box(grown));
+        obstacles.add(o);
+        grid.add(obstacles.size() - 1, o.box);
+        recent.put(obstacles.size() - 1, new Vec2[][] {raw, grown});
+    }
+
+    /** Each hull vertex moved by the clearance in eight directions: their hull holds the grown part. */
+    private List<Vec2> grownPoints(Vec2[] raw) {
+        List<Vec2> big = new ArrayList<>(8 * raw.length);
         double r = clearanceMm / Math.cos(Math.PI / 8);
         for (Vec2 p : raw) {
             for (int k = 0; k < 8; k++) {
                 big.add(p.plus(Vec2.ofAngle(Math.PI / 8 + k * Math.PI / 4).times(r)));
             }
         }
-        Vec2[] grown = clearanceMm > 0 ? hull(big) : raw;
-        Obstacle o = new Obstacle(grown, raw, box(grown));
-        obstacles.add(o);
-        grid.add(obstacles.size() - 1, o.box);
+        return big;
+    }
+
+    private Vec2[] raw(int i) {
+        return hulls(i)[0];
+    }
+
+    private Vec2[] grown(int i) {
+        return hulls(i)[1];
+    }
+
+    private Vec2[][] hulls(int i) {
+        Vec2[][] h = recent.get(i);
+        if (h == null) {
+            Vec2[] raw = obstacles.get(i).raw();
+            h = new Vec2[][] {raw, clearanceMm > 0 ? hull(grownPoints(raw)) : raw};
+            recent.put(i, h);
+        }
+        return h;
     }
 
     /** The rapid from a to b: a, any detour points, b. */
@@ -98,15 +145,16 @@ final class RapidRouter {
         // or left out (null) when even the raw hull holds one of them
         Map<Integer, Vec2[]> near = new HashMap<>();
         for (int i : grid.at(a, b)) {
-            Obstacle o = obstacles.get(i);
-            if (inside(o.grown, a) || inside(o.grown, b)) {
-                if (inside(o.raw, a) || inside(o.raw, b)) {
-                    if (crosses(o.raw, a, b)) {
+            Vec2[] grown = grown(i);
+            Vec2[] raw = raw(i);
+            if (inside(grown, a) || inside(grown, b)) {
+                if (inside(raw, a) || inside(raw, b)) {
+                    if (crosses(raw, a, b)) {
                         unavoidable++;
                     }
                     near.put(i, null);
                 } else {
-                    near.put(i, o.raw);
+                    near.put(i, raw);
                 }
             }
         }
@@ -126,7 +174,7 @@ final class RapidRouter {
             for (int i : active) {
                 Vec2[] poly = poly(near, i);
                 polys.add(poly);
-                boxes.add(poly == obstacles.get(i).grown ? obstacles.get(i).box : box(poly));
+                boxes.add(near.containsKey(i) ? box(poly) : obstacles.get(i).box);
             }
             List<Vec2> path = shortest(a, b, polys, boxes);
             if (path == null) {
@@ -153,7 +201,7 @@ final class RapidRouter {
     }
 
     private Vec2[] poly(Map<Integer, Vec2[]> near, int i) {
-        return near.containsKey(i) ? near.get(i) : obstacles.get(i).grown;
+        return near.containsKey(i) ? near.get(i) : grown(i);
     }
 
     /** Segments of the route crossing the raw hull of a cut part, counted per part. */
@@ -161,7 +209,7 @@ final class RapidRouter {
         int n = 0;
         for (int k = 0; k + 1 < route.size(); k++) {
             for (int i : grid.along(route.get(k), route.get(k + 1))) {
-                if (crosses(obstacles.get(i).raw, route.get(k), route.get(k + 1))) {
+                if (crosses(raw(i), route.get(k), route.get(k + 1))) {
                     n++;
                 }
             }
