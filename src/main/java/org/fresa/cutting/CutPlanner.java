@@ -68,6 +68,18 @@ public final class CutPlanner {
     }
 
     public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o) {
+        return plan(layers, o, (f, what) -> { });
+    }
+
+    /** How far the planning is: a fraction from 0 to 1 and the step under way, in the planner's words. */
+    @FunctionalInterface
+    public interface Progress {
+        void at(double fraction, String step);
+    }
+
+    /** Plans as {@link #plan(Map, CuttingOptions)}, telling how far it is (a big sheet takes a while). */
+    public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o, Progress progress) {
+        progress.at(0, "chaining the drawing into contours");
         List<String> warnings = new ArrayList<>();
         List<Contour> closed = new ArrayList<>();
         List<List<Curve2>> open = new ArrayList<>();
@@ -118,6 +130,7 @@ public final class CutPlanner {
             warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
                     chain.size(), a.x(), a.y(), b.x(), b.y(), why));
         }
+        progress.at(0.1, "nesting " + closed.size() + " contours into parts and holes");
         List<Node> nodes = classify(closed, o.paperMode());
         List<Curve2> all = new ArrayList<>();
         for (Contour c : closed) {
@@ -141,7 +154,12 @@ public final class CutPlanner {
                 n.index = ++partNo;
             }
         }
+        int done = 0;
         for (Node n : nodes) {
+            if (++done % 5000 == 0) {
+                progress.at(0.15 + 0.35 * done / nodes.size(), "offsetting by the kerf and placing leads: contour " + done
+                        + " of " + nodes.size());
+            }
             boolean outer = n.outer();
             (outer ? outers : holes).add(n.contour);
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
@@ -208,9 +226,13 @@ public final class CutPlanner {
                 n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
             }
         }
+        progress.at(0.5, "looking for contours that cross");
         crossings(nodes, warnings);
+        progress.at(0.55, "ordering the pierces");
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
+        progress.at(0.75, "routing the rapids around cut parts");
         List<List<Vec2>> rapids = rapids(order, o, warnings);
+        progress.at(0.95, "making the toolpath");
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
                 rapids, notCut);
     }
