@@ -71,8 +71,9 @@ class CutOrderCorpusTest {
         int pierces = plan.cuts().size();
         System.out.printf(Locale.ROOT, "cut order | %s | %d pierces | nearest-neighbour %.1f mm | ours %.1f mm | %.3f%n",
                 dxf.getFileName(), pierces, nn, ours, nn > 0 ? ours / nn : 1.0);
-        // start points are computed to a tenth of a micrometre, far below a program's resolution
-        assertTrue(ours <= nn + 1e-4 * pierces, dxf + ": rapids " + ours + " mm, the nearest-neighbour tour " + nn + " mm");
+        // within a micrometre a pierce, a program's resolution: celic-knot-simple's cut paths hold
+        // arcs of radius 5e12 mm (near-straight lines), whose points are known only to about that
+        assertTrue(ours <= nn + 1e-3 * pierces, dxf + ": rapids " + ours + " mm, the nearest-neighbour tour " + nn + " mm");
         if (pierces > 50) {
             assertTrue(ours <= 0.9 * nn, dxf + ": " + pierces + " pierces, rapids " + ours
                     + " mm, not 10 % below the nearest-neighbour tour's " + nn + " mm");
