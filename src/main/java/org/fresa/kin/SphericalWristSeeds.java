@@ -121,16 +121,6 @@ final class SphericalWristSeeds {
         return out;
     }
 
-    /**
-     * q and every variant of it with revolute joints turned by whole turns that stay within the
-     * limits (a range wider than a turn, as the IRB-140's axes 4 and 6, holds the same pose twice).
-     */
-    List<double[]> turns(double[] q) {
-        List<double[]> out = new ArrayList<>();
-        addTurns(q.clone(), 0, out);
-        return out;
-    }
-
     /** s and its whole-turn variants from joint {@code from} on, into out. */
     private void addTurns(double[] s, int from, List<double[]> out) {
         if (from == 6) {
