@@ -138,7 +138,7 @@ final class PositionViewModel {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
         return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
-                old.formats(), old.spindle(), old.toolLengthMm()));
+                old.formats(), old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
     /**
