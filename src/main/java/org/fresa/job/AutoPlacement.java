@@ -14,6 +14,7 @@ import org.fresa.kin.ToolTarget;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPosts;
 import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
@@ -61,6 +62,9 @@ public final class AutoPlacement {
                 sb.append("; reachable alone but not together with the rest: ").append(String.join(", ",
                         r.notTogether()));
             }
+            for (String n : r.notes()) {
+                sb.append("; ").append(n);
+            }
             sb.append(String.format(Locale.ROOT, " (the best placement tried, --robot-table %s, reaches %d of %d"
                     + " targets; %d placements tried in %.1f s)", text(robotTable), r.reached(), r.targets(),
                     r.placementsTried(), seconds));
@@ -77,6 +81,7 @@ public final class AutoPlacement {
             m.put("min_joint_margin", Double.isFinite(result.minMargin()) ? result.minMargin() : null);
             m.put("out_of_reach_everywhere", result.outOfReachEverywhere());
             m.put("reachable_alone_only", result.notTogether());
+            m.put("notes", result.notes());
             m.put("placements_tried", result.placementsTried());
             m.put("search_s", seconds);
             m.put("what", sentence());
@@ -98,16 +103,29 @@ public final class AutoPlacement {
      * Searches the robot -> table placement for a toolpath.
      *
      * @param toolpath the toolpath in the workpiece frame
-     * @param tcpByLabel each workingstep's TCP in the flange frame (absent: the robot's own tool)
+     * @param tcpByLabel each section label's TCP in the flange frame (absent: the robot's own tool)
+     * @param names the name the result gives each section (a workingstep's id and entity, as
+     *     workingsteps may share an id), one per section
      */
     public static Outcome search(Toolpath toolpath, Robot robot, Placement tablePiece,
-            Map<String, Transform3> tcpByLabel, ProgressMonitor progress) {
+            Map<String, Transform3> tcpByLabel, List<String> names, ProgressMonitor progress) {
         long t0 = System.nanoTime();
-        List<ToolTarget> inTable = RobotTrajectoryService.targets(toolpath, tablePiece.toTransform(),
+        if (names.size() != toolpath.sections().size()) {
+            throw new IllegalArgumentException("one name per section: " + names.size() + " for "
+                    + toolpath.sections().size());
+        }
+        List<ToolpathSection> named = new ArrayList<>();
+        Map<String, Transform3> tcps = new java.util.HashMap<>();
+        for (int i = 0; i < names.size(); i++) {
+            ToolpathSection sec = toolpath.sections().get(i);
+            named.add(new ToolpathSection(names.get(i), sec.toolAxis(), sec.toolDiameterMm(), sec.toolNumber(),
+                    sec.spindleRpm(), sec.start(), sec.moves()));
+            tcps.put(names.get(i), tcpByLabel.getOrDefault(sec.label(), robot.tool()));
+        }
+        List<ToolTarget> inTable = RobotTrajectoryService.targets(new Toolpath(named), tablePiece.toTransform(),
                 NcPosts.CHORD_TOLERANCE_MM * 10);
         Map<Transform3, Robot> byTcp = new java.util.HashMap<>();
         byTcp.put(robot.tool(), robot);
-        Map<String, Transform3> tcps = Map.copyOf(tcpByLabel);
         PlacementSearch search = new PlacementSearch(robot,
                 label -> byTcp.computeIfAbsent(tcps.getOrDefault(label, robot.tool()), robot::withTool),
                 new PlacementSearch.Bounds(SettingRanges.CELL_SIZE_MM));
@@ -123,7 +141,7 @@ public final class AutoPlacement {
                     rounded.yMm(), rounded.zMm(), rounded.rzDeg()));
             if (check.found().isPresent()) {
                 r = new PlacementSearch.Result(check.found(), check.best(), r.targets(), r.reached(), check.minMargin(),
-                        List.of(), List.of(), r.placementsTried() + 1);
+                        List.of(), List.of(), r.placementsTried() + 1, r.notes());
             } else {
                 rounded = new Placement(p.xMm(), p.yMm(), p.zMm(), 0, 0, p.rzDeg());
             }
@@ -142,7 +160,16 @@ public final class AutoPlacement {
             throw new CamInputException(stepnc.toString(), "no workingstep could be planned: nothing to place");
         }
         RobotTools.Frames tools = RobotTools.of(robot, tool, program, plan, stepnc.toString());
-        return search(tools.toolpath(), robot, tablePiece, tools.tcpByLabel(), progress);
+        return search(tools.toolpath(), robot, tablePiece, tools.tcpByLabel(), names(plan), progress);
+    }
+
+    /** Each planned workingstep's id with its entity ({@code Pocket_RGH (#1234)}): ids repeat in a file. */
+    static List<String> names(ToolpathPlanner.Plan plan) {
+        List<String> out = new ArrayList<>();
+        for (ToolpathPlanner.PlannedStep s : plan.steps()) {
+            out.add(s.label() + " (#" + s.workingstepInstanceId() + ")");
+        }
+        return out;
     }
 
     private static double round(double v) {

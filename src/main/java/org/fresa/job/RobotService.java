@@ -145,7 +145,8 @@ public final class RobotService {
         Placement robotTable = s.robotTable();
         java.util.Optional<AutoPlacement.Outcome> placed = java.util.Optional.empty();
         if (s.placing() == TablePlacing.AUTO) {
-            AutoPlacement.Outcome a = AutoPlacement.search(path, robot, s.tablePiece(), tools.tcpByLabel(), progress);
+            AutoPlacement.Outcome a = AutoPlacement.search(tools.toolpath(), robot, s.tablePiece(), tools.tcpByLabel(),
+                    AutoPlacement.names(plan), progress);
             Timing.mark("placement searched");
             if (!a.found()) {
                 // never a partial placement: the planner learns which workingsteps are out of reach

@@ -84,14 +84,16 @@ public final class PlacementSearch {
      *     the order of the targets
      * @param notTogether workingsteps left out at {@code best} that some placement reaches alone
      * @param placementsTried placements whose targets (or a sample of them) were solved
+     * @param notes why, in a sentence each (a robot whose tool axis cannot turn)
      */
     public record Result(Optional<TablePlacement> found, TablePlacement best, int targets, int reached, double minMargin,
-            List<String> outOfReachEverywhere, List<String> notTogether, int placementsTried) {
+            List<String> outOfReachEverywhere, List<String> notTogether, int placementsTried, List<String> notes) {
         public Result {
             Objects.requireNonNull(found, "found");
             Objects.requireNonNull(best, "best");
             outOfReachEverywhere = List.copyOf(outOfReachEverywhere);
             notTogether = List.copyOf(notTogether);
+            notes = List.copyOf(notes);
         }
     }
 
@@ -199,13 +201,33 @@ public final class PlacementSearch {
             throw new IllegalArgumentException("no targets to place");
         }
         tried = 0;
+        progress.at(0, "placement search: the robot's workspace");
+        Workspace ws = workspace();
+        // a target whose tool axis the robot never takes (a SCARA's is vertical) is out of reach
+        // from every placement: a turn of the table about the vertical keeps a vertical axis vertical
         List<Target> all = new ArrayList<>();
+        Set<String> wrongAxis = new LinkedHashSet<>();
         for (ToolTarget t : inTable) {
-            all.add(new Target(t));
+            if (ws.axisTaken(t.toolAxis())) {
+                all.add(new Target(t));
+            } else {
+                wrongAxis.add(t.label());
+            }
+        }
+        List<String> notes = new ArrayList<>();
+        if (!wrongAxis.isEmpty()) {
+            Vec3 a = ws.axes.get(0);
+            notes.add(String.format(java.util.Locale.ROOT, "the tool axis of %s is always (%.3g, %.3g, %.3g)%s: %d"
+                    + " workingsteps need another", robot.name(), a.x(), a.y(), a.z(), ws.axes.size() > 1 ? " or the"
+                            + " opposite" : "", wrongAxis.size()));
+        }
+        if (all.isEmpty()) {
+            TablePlacement origin = new TablePlacement(0, 0, 0, 0);
+            return new Result(Optional.empty(), origin, inTable.size(), 0, Double.NaN, List.copyOf(wrongAxis), List.of(),
+                    0, notes);
         }
         Ordered sample = new Ordered(sample(all));
-        progress.at(0, "placement search: the robot's workspace");
-        double[][] box = workspaceBox();
+        double[][] box = ws.box;
         Vec3 centre = centre(sample.targets);
         List<TablePlacement> grid = grid(box, centre);
         // 1. the grid, keeping the best few
@@ -248,9 +270,9 @@ public final class PlacementSearch {
             TablePlacement origin = new TablePlacement(0, 0, 0, 0);
             best = new Candidate(origin, evaluate(origin, every, null));
         }
-        if (best.score().failures() == 0) {
+        if (best.score().failures() == 0 && wrongAxis.isEmpty()) {
             return new Result(Optional.of(best.placement()), best.placement(), all.size(), all.size(),
-                    best.score().margin(), List.of(), List.of(), tried);
+                    best.score().margin(), List.of(), List.of(), tried, notes);
         }
         // the workingsteps left out at the best placement, each searched alone
         progress.at(0.9, "placement search: the workingsteps out of reach");
@@ -261,7 +283,7 @@ public final class PlacementSearch {
                 leftOut.add(t.inTable.label());
             }
         }
-        List<String> nowhere = new ArrayList<>();
+        List<String> nowhere = new ArrayList<>(wrongAxis);
         List<String> alone = new ArrayList<>();
         Map<String, List<Target>> byLabel = new LinkedHashMap<>();
         for (Target t : all) {
@@ -272,6 +294,9 @@ public final class PlacementSearch {
             everyTried.add(c.placement());
         }
         for (String label : leftOut) {
+            if (wrongAxis.contains(label)) {
+                continue;
+            }
             progress.at(0.9, "placement search: " + label + " alone");
             if (reachableAlone(byLabel.get(label), everyTried)) {
                 alone.add(label);
@@ -279,8 +304,15 @@ public final class PlacementSearch {
                 nowhere.add(label);
             }
         }
-        return new Result(Optional.empty(), best.placement(), all.size(), all.size() - best.score().failures(),
-                best.score().margin(), nowhere, alone, tried);
+        // in the order of the targets
+        List<String> order = new ArrayList<>();
+        for (ToolTarget t : inTable) {
+            if ((nowhere.contains(t.label())) && !order.contains(t.label())) {
+                order.add(t.label());
+            }
+        }
+        return new Result(Optional.empty(), best.placement(), inTable.size(), all.size() - best.score().failures(),
+                best.score().margin(), order, alone, tried, notes);
     }
 
     /** Every target solved from one placement: found when all are reached. */
@@ -291,7 +323,7 @@ public final class PlacementSearch {
         }
         Score s = evaluate(p, new Ordered(all), null);
         return new Result(s.failures() == 0 ? Optional.of(p) : Optional.empty(), p, all.size(),
-                all.size() - s.failures(), s.margin(), List.of(), List.of(), 1);
+                all.size() - s.failures(), s.margin(), List.of(), List.of(), 1, List.of());
     }
 
     private static int compare(Score a, Score b) {
@@ -355,7 +387,7 @@ public final class PlacementSearch {
                         continue;
                     }
                     TablePlacement q = new TablePlacement(p.xMm() + (axis == 0 ? dm : 0), p.yMm() + (axis == 1 ? dm : 0),
-                            p.zMm() + (axis == 2 ? dm : 0), p.rzDeg() + dd);
+                            p.zMm() + (axis == 2 ? dm : 0), halfTurn(p.rzDeg() + dd));
                     if (!inCell(q)) {
                         continue;
                     }
@@ -372,6 +404,12 @@ public final class PlacementSearch {
             }
         }
         return cur;
+    }
+
+    /** The angle in (-180, 180]. */
+    private static double halfTurn(double deg) {
+        double d = deg % 360;
+        return d > 180 ? d - 360 : d <= -180 ? d + 360 : d;
     }
 
     private boolean inCell(TablePlacement p) {
@@ -430,33 +468,65 @@ public final class PlacementSearch {
         return new Vec3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
     }
 
-    /** The box (min, max corners) of the tool positions of random joint values within the limits. */
-    private double[][] workspaceBox() {
+    /**
+     * The robot's workspace from the forward kinematics of random joint values within the limits.
+     *
+     * @param box the box (min, max corners) of the tool positions
+     * @param axes the tool axes when the robot takes one or two opposite ones only (and that axis
+     *     is vertical), else empty
+     */
+    private record Workspace(double[][] box, List<Vec3> axes) {
+        boolean axisTaken(Vec3 axis) {
+            if (axes.isEmpty()) {
+                return true;
+            }
+            for (Vec3 a : axes) {
+                if (a.distance(axis) <= FIXED_AXIS) {
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+
+    /** Tool axes this close (unit vectors) are the same; a SCARA's differ by rounding only. */
+    private static final double FIXED_AXIS = 1e-6;
+
+    private Workspace workspace() {
         SplittableRandom rnd = new SplittableRandom(20161027L);
         List<JointLimit> js = robot.joints();
         double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         double[] q = new double[js.size()];
+        List<Vec3> axes = new ArrayList<>();
+        boolean fixed = true;
         for (int k = 0; k < WORKSPACE_SAMPLES; k++) {
             for (int i = 0; i < q.length; i++) {
                 q[i] = js.get(i).min() + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
             }
-            Vec3 p;
+            Transform3 pose;
             try {
-                p = robot.forward(q).translationPart();
+                pose = robot.forward(q);
             } catch (IllegalArgumentException e) {
                 continue; // joint values without an assembly (a parallel robot's legs)
             }
+            Vec3 p = pose.translationPart();
             double[] v = {p.x(), p.y(), p.z()};
             for (int i = 0; i < 3; i++) {
                 lo[i] = Math.min(lo[i], v[i]);
                 hi[i] = Math.max(hi[i], v[i]);
             }
+            Vec3 z = pose.zAxis();
+            if (fixed && axes.stream().noneMatch(a -> a.distance(z) <= FIXED_AXIS)) {
+                axes.add(z);
+                fixed = axes.size() <= 2;
+            }
         }
         if (!(lo[0] <= hi[0])) {
             throw new IllegalStateException("no joint values of " + robot.name() + " have a pose");
         }
-        return new double[][] {lo, hi};
+        boolean vertical = fixed && axes.stream().allMatch(a -> Math.abs(Math.abs(a.z()) - 1) <= FIXED_AXIS);
+        return new Workspace(new double[][] {lo, hi}, vertical ? axes : List.of());
     }
 
     /** The grid: the sample's centre on each point of the workspace box, at each table turn. */

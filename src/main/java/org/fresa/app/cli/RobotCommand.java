@@ -93,8 +93,8 @@ final class RobotCommand implements Callable<Integer> {
             TablePlacing placing = place == null ? TablePlacing.GIVEN : TablePlacing.parse("--place", place);
             TaskOutcome o = CliSupport.intoFolder(out, folder -> RobotService.run(
                     new RobotService.Settings(file, robot, table, piece, fmts, choices, tool, placing), folder, progress));
-            if (!json && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
-                // the placement chosen (or why none) on stdout, where the planner reads it back
+            if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
+                // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
                 TerminalProgress.clear(progress);
                 spec.commandLine().getOut().println(m.get("what"));
             }
