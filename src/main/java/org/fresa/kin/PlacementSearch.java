@@ -120,6 +120,11 @@ public final class PlacementSearch {
     private final Map<Robot, IkSolver> solvers = new IdentityHashMap<>();
     private final double[] turnsDeg;
     private int tried;
+    /** Told again now and then while a long step runs, so that it may be cancelled. */
+    private Progress progress = (f, w) -> { };
+    private double fraction;
+    private String what = "";
+    private int ticks;
 
     /**
      * @param robot the robot (with the tool frame of workingsteps not in robotOfLabel)
@@ -196,11 +201,17 @@ public final class PlacementSearch {
      *
      * @param inTable the part's targets in the table frame (the table-to-piece placement applied)
      */
-    public Result search(List<ToolTarget> inTable, Progress progress) {
+    public Result search(List<ToolTarget> inTable, Progress told) {
         if (inTable.isEmpty()) {
             throw new IllegalArgumentException("no targets to place");
         }
         tried = 0;
+        this.progress = (f, w) -> {
+            fraction = f;
+            what = w;
+            told.at(f, w);
+        };
+        Progress progress = this.progress;
         progress.at(0, "placement search: the robot's workspace");
         Workspace ws = workspace();
         // a target whose tool axis the robot never takes (a SCARA's is vertical) is out of reach
@@ -354,6 +365,9 @@ public final class PlacementSearch {
         double margin = Double.POSITIVE_INFINITY;
         List<Target> list = targets.targets;
         for (int i = 0; i < list.size(); i++) {
+            if ((++ticks & 255) == 0) {
+                progress.at(fraction, what);
+            }
             double m = list.get(i).margin(table);
             if (Double.isNaN(m)) {
                 failures++;

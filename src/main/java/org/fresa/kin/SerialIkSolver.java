@@ -26,7 +26,7 @@ final class SerialIkSolver implements IkSolver {
     private final double rotWeight;
     private final double[][] starts;
     /** Closed-form start configurations for arms built like the IRB-140. */
-    private final java.util.Optional<SphericalWristSeeds> closedForm;
+    private final java.util.Optional<ClosedFormSeeds> closedForm;
 
     private final double[] target = new double[Pose.SIZE];
     private final double[] f;
@@ -62,7 +62,7 @@ final class SerialIkSolver implements IkSolver {
         q = new double[n];
         qt = new double[n];
         starts = startConfigurations();
-        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? SphericalWristSeeds.of(chain)
+        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? ClosedFormSeeds.of(chain)
                 : java.util.Optional.empty();
     }
 
@@ -169,7 +169,7 @@ final class SerialIkSolver implements IkSolver {
         Pose.fromTransform(targetPose, target, 0);
         SolutionSet found = new SolutionSet(chain, SAME_SOLUTION);
         int spent = 0;
-        for (double[] s : closedForm.get().solutions(target, false)) {
+        for (double[] s : closedForm.get().seeds(target)) {
             if (!withinLimits(s)) {
                 continue;
             }
@@ -207,7 +207,7 @@ final class SerialIkSolver implements IkSolver {
         int spent = 0;
         List<double[]> seeds = new ArrayList<>();
         if (closedForm.isPresent()) {
-            seeds.addAll(closedForm.get().solutions(target, false));
+            seeds.addAll(closedForm.get().seeds(target));
         }
         int closedFormSeeds = seeds.size();
         seeds.addAll(java.util.Arrays.asList(starts));

@@ -10,7 +10,7 @@ import java.util.List;
  * Euler angles (two flips). Up to 8 solutions, each angle moved by whole turns into the limits
  * where it can be. Used as start configurations that the numerical solver polishes (and so checks).
  */
-final class SphericalWristSeeds {
+final class SphericalWristSeeds implements ClosedFormSeeds {
 
     private static final double TWO_PI = 2 * Math.PI;
 
@@ -48,6 +48,11 @@ final class SphericalWristSeeds {
             return java.util.Optional.empty();
         }
         return java.util.Optional.of(new SphericalWristSeeds(c));
+    }
+
+    @Override
+    public List<double[]> seeds(double[] target) {
+        return solutions(target, false);
     }
 
     /** Joint values (internal units) of the closed-form solutions for a TCP pose (12 doubles). */

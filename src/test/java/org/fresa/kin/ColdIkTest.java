@@ -76,6 +76,31 @@ class ColdIkTest {
     }
 
     @Test
+    void theScarasClosedFormFindsExactlyTheSolutionsOfTheSearchFromEveryStart() {
+        SerialRobot adept = Robots.adeptOne();
+        SerialIkSolver solver = (SerialIkSolver) adept.newSolver(IkOptions.DEFAULT);
+        SplittableRandom rnd = new SplittableRandom(4L);
+        int solutions = 0;
+        for (int k = 0; k < 300; k++) {
+            double[] q = new double[4];
+            for (int i = 0; i < 4; i++) {
+                JointLimit l = adept.joints().get(i);
+                q[i] = l.min() + rnd.nextDouble() * (l.max() - l.min());
+            }
+            Transform3 t = adept.forward(q);
+            List<IkResult.Converged> fast = solver.solveAll(t);
+            List<IkResult.Converged> every = solver.solveAllFromStarts(t);
+            assertTrue(contains(fast, q), () -> "the pose's own joints are missing for " + t);
+            assertEquals(every.size(), fast.size(), () -> "for " + t);
+            for (IkResult.Converged c : every) {
+                assertTrue(contains(fast, c.q()), () -> "missing " + java.util.Arrays.toString(c.q()));
+            }
+            solutions += fast.size();
+        }
+        assertTrue(solutions > 300, solutions + " solutions");
+    }
+
+    @Test
     void theQuickSolveIsTheClosedFormsSetAndNothingOutOfReach() {
         SerialRobot irb = Robots.irb140();
         IkSolver solver = irb.newSolver(IkOptions.DEFAULT);
