@@ -141,6 +141,14 @@ final class PositionViewModel {
                 old.formats(), old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
+    /** The job with this robot -> table placement (the placement search's), all else kept. */
+    static Job withRobotTable(Job job, Placement robotTable) {
+        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
+                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTable, old.tablePiece(), old.formats(),
+                old.spindle(), old.toolLengthMm(), old.placing()));
+    }
+
     /**
      * What {@code fresa robot} does before writing: reads the STEP-NC file, plans its toolpaths,
      * places them in the cell and solves every point. Long: run it in the background.
