@@ -37,8 +37,10 @@ public final class AutoPlacement {
      * @param result the search's answer
      * @param robotTable the placement found (rounded), or the best one tried when none reaches everything
      * @param seconds the search's wall-clock time
+     * @param cpuSeconds the search's CPU time (its thread's; on a shared machine the wall clock
+     *     also counts the time it waited for a core)
      */
-    public record Outcome(PlacementSearch.Result result, Placement robotTable, double seconds) {
+    public record Outcome(PlacementSearch.Result result, Placement robotTable, double seconds, double cpuSeconds) {
 
         /** Whether every target is reached from {@link #robotTable}. */
         public boolean found() {
@@ -50,8 +52,8 @@ public final class AutoPlacement {
             PlacementSearch.Result r = result;
             if (found()) {
                 return String.format(Locale.ROOT, "placement found: --robot-table %s reaches all %d targets with a"
-                        + " joint-limit margin of %.1f %% (%d placements tried in %.1f s)", text(robotTable), r.targets(),
-                        100 * r.minMargin(), r.placementsTried(), seconds);
+                        + " joint-limit margin of %.1f %% (%d placements tried in %.1f s, %.1f s of CPU)", text(robotTable),
+                        r.targets(), 100 * r.minMargin(), r.placementsTried(), seconds, cpuSeconds);
             }
             StringBuilder sb = new StringBuilder("no table placement tried reaches every target");
             if (!r.outOfReachEverywhere().isEmpty()) {
@@ -66,8 +68,8 @@ public final class AutoPlacement {
                 sb.append("; ").append(n);
             }
             sb.append(String.format(Locale.ROOT, " (the best placement tried, --robot-table %s, reaches %d of %d"
-                    + " targets; %d placements tried in %.1f s)", text(robotTable), r.reached(), r.targets(),
-                    r.placementsTried(), seconds));
+                    + " targets; %d placements tried in %.1f s, %.1f s of CPU)", text(robotTable), r.reached(),
+                    r.targets(), r.placementsTried(), seconds, cpuSeconds));
             return sb.toString();
         }
 
@@ -84,6 +86,7 @@ public final class AutoPlacement {
             m.put("notes", result.notes());
             m.put("placements_tried", result.placementsTried());
             m.put("search_s", seconds);
+            m.put("search_cpu_s", cpuSeconds);
             m.put("what", sentence());
             return m;
         }
@@ -110,6 +113,8 @@ public final class AutoPlacement {
     public static Outcome search(Toolpath toolpath, Robot robot, Placement tablePiece,
             Map<String, Transform3> tcpByLabel, List<String> names, ProgressMonitor progress) {
         long t0 = System.nanoTime();
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        long c0 = mx.getCurrentThreadCpuTime();
         if (names.size() != toolpath.sections().size()) {
             throw new IllegalArgumentException("one name per section: " + names.size() + " for "
                     + toolpath.sections().size());
@@ -146,7 +151,7 @@ public final class AutoPlacement {
                 rounded = new Placement(p.xMm(), p.yMm(), p.zMm(), 0, 0, p.rzDeg());
             }
         }
-        return new Outcome(r, rounded, (System.nanoTime() - t0) / 1e9);
+        return new Outcome(r, rounded, (System.nanoTime() - t0) / 1e9, (mx.getCurrentThreadCpuTime() - c0) / 1e9);
     }
 
     /** The search for a STEP-NC file as {@code fresa robot} plans it (the Position tab's button). */
