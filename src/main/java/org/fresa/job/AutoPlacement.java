@@ -181,13 +181,4 @@ public final class AutoPlacement {
         double r = Math.rint(v * 10) / 10;
         return r == 0 ? 0 : r;
     }
-
-    /** The problems of an outcome with no placement, for a TaskOutcome. */
-    static List<String> problems(Outcome o) {
-        List<String> out = new ArrayList<>();
-        if (!o.found()) {
-            out.add(o.sentence());
-        }
-        return out;
-    }
 }
