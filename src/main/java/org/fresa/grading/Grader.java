@@ -57,6 +57,12 @@ public final class Grader {
             throw new CamInputException(source, "the outline is " + ExactDecimal.of(Math.max(box.width(), box.height()))
                     + " mm across; a sole outline is at most " + ExactDecimal.of(MAX_OUTLINE_MM) + " mm (wrong units?)");
         }
+        if (plan.coordination().isPresent()) {
+            java.util.Optional<String> misfit = plan.coordination().get().misfit(EscomPattern.ofContour(outer));
+            if (misfit.isPresent()) {
+                throw new CamInputException(source, "coordination: " + misfit.get());
+            }
+        }
         GradingFrame frame = OutlineFrames.detect(outer, plan.origin(), plan.lengthAxisDeg(), source);
         double cp = Extents.sizeAlong(outer, frame.lengthAxis());
         double lp = Extents.sizeAlong(outer, frame.widthAxis());
@@ -109,9 +115,12 @@ public final class Grader {
             double nbc = co.heelSize(size, plan.baseSize(), plan.system());
             heel = OptionalDouble.of(nbc);
             PantographMap heelMap = PantographMap.of(frame, rule.factors(nbc));
-            for (Contour c : outlines) {
-                EscomPattern p = EscomPattern.ofContour(c);
-                output.add(p.graded(n -> co.isHeel(frame.toLocal(p.point(n)).y()) ? heelMap : map).toContour());
+            for (int k = 0; k < outlines.size(); k++) {
+                EscomPattern p = EscomPattern.ofContour(outlines.get(k));
+                // designated elements are the outer outline's; an inner contour then grades with the size
+                boolean byLine = k == 0 || !co.byElements();
+                output.add(p.graded(n -> byLine && co.isHeelPoint(p, n, frame.toLocal(p.point(n)).y()) ? heelMap : map)
+                        .toContour());
             }
         } else if (plan.arcMode() == ArcMode.THREE_POINT) {
             for (Contour c : outlines) {

@@ -124,11 +124,25 @@ public final class GradingService {
                 throw new IllegalArgumentException("base size must be a number");
             }
             ShrinkageMode mode = ShrinkageMode.ofId(s.shrinkageMode());
+            // the command line's coordination before the job's
+            Optional<Coordination> co = o.coordination().isPresent() ? o.coordination()
+                    : s.coordination().map(GradingService::coordination);
             return new GradingPlan(system, s.baseSize(), sizes, vc, vl, s.originMm(), o.lengthAxisDeg(), s.shrinkage(),
-                    mode, o.arcMode(), GradingPlan.DEFAULT_ARC_TOLERANCE_MM, o.coordination());
+                    mode, o.arcMode(), GradingPlan.DEFAULT_ARC_TOLERANCE_MM, co);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(SETTINGS, e.getMessage());
         }
+    }
+
+    /** The job's heel coordination as the grading module takes it. */
+    static Coordination coordination(JobSettings.HeelCoordination h) {
+        if (h.boundaryMm().isPresent() && !h.heelElements().isBlank()) {
+            throw new IllegalArgumentException("heel coordination: give heelElements or coordinationMm, not both");
+        }
+        if (h.boundaryMm().isPresent()) {
+            return new Coordination(h.boundaryMm().getAsDouble(), h.groupSize());
+        }
+        return Coordination.ofHeelElements(Coordination.parseElements(h.heelElements()), h.groupSize());
     }
 
     /** Grades the outline (headless, no files), for the GUI's preview. */

@@ -22,12 +22,22 @@ public final class JobSettings {
      *
      * @param trustCuttingSpeed plan from the cutting speed where the file's spindle disagrees with it
      * @param breakthroughMm how far a through hole's tool passes its exit
+     * @param entry how pockets are entered and holes milled on a helix ({@code --entry},
+     *     {@code --entry-angle}, {@code --centre-cutting})
      */
-    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+    public record StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm,
+            org.fresa.pocket.EntryRule entry) {
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
+            Objects.requireNonNull(entry, "entry");
             SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
+            SettingRanges.StepNc.ENTRY_ANGLE.require(entry.angleDeg());
+        }
+
+        /** The file and post with the planner's default entries. */
+        public StepNcSettings(Path file, String post, boolean trustCuttingSpeed, double breakthroughMm) {
+            this(file, post, trustCuttingSpeed, breakthroughMm, org.fresa.pocket.EntryRule.DEFAULT);
         }
 
         /** The file and post with the planner's default choices. */
@@ -37,7 +47,7 @@ public final class JobSettings {
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
         public org.fresa.toolpath.PlanningChoices choices() {
-            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm);
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry);
         }
     }
 
@@ -189,7 +199,7 @@ public final class JobSettings {
     /** Grading options (spec/cli.md, {@code fresa grade}); empty steps mean the system's own. */
     public record GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, String system,
             OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
-            double shrinkage, String shrinkageMode) {
+            double shrinkage, String shrinkageMode, Optional<HeelCoordination> coordination) {
         public GradingSettings {
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
@@ -198,6 +208,35 @@ public final class JobSettings {
             Objects.requireNonNull(widthStepMm, "widthStepMm");
             Objects.requireNonNull(originMm, "originMm");
             Objects.requireNonNull(shrinkageMode, "shrinkageMode");
+            Objects.requireNonNull(coordination, "coordination");
+        }
+
+        /** Grading without heel coordination. */
+        public GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, String system,
+                OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
+                double shrinkage, String shrinkageMode) {
+            this(outline, baseSize, sizes, halfSizes, system, lengthStepMm, widthStepMm, originMm, shrinkage,
+                    shrinkageMode, Optional.empty());
+        }
+    }
+
+    /**
+     * Heel coordination (one heel per group of sizes), its heel either the elements the planner
+     * designates or what lies behind a boundary line across the length axis.
+     *
+     * @param groupSize sizes per heel (the thesis: 3)
+     * @param boundaryMm the boundary line's distance from the origin along the length axis, or
+     *     empty when the heel is designated by elements
+     * @param heelElements the heel's elements, e.g. {@code 1-4,18-20} (1 the outline's first), or
+     *     empty when the heel is the part behind the boundary
+     */
+    public record HeelCoordination(int groupSize, OptionalDouble boundaryMm, String heelElements) {
+        public HeelCoordination {
+            Objects.requireNonNull(boundaryMm, "boundaryMm");
+            Objects.requireNonNull(heelElements, "heelElements");
+            if (boundaryMm.isEmpty() && heelElements.isBlank()) {
+                throw new IllegalArgumentException("heel coordination needs a boundary or heel elements");
+            }
         }
     }
 
@@ -220,12 +259,16 @@ public final class JobSettings {
      * @param tools the tread tools
      * @param designs the tread designs in cutting order
      * @param cavityTool the id of the tool that pockets the cavity, empty for no cavity program
+     * @param block the mould block that holds the pair, or empty: each foot's programs then stay
+     *     in the outline's frame
      */
     public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post,
             String system, Optional<Vec2> originMm, double shrinkage, String shrinkageMode, double treadDepthMm,
-            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs, String cavityTool) {
+            double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs, String cavityTool,
+            Optional<SoleBlock> block) {
         public SoleSettings {
             Objects.requireNonNull(cavityTool, "cavityTool");
+            Objects.requireNonNull(block, "block");
             Objects.requireNonNull(outline, "outline");
             Objects.requireNonNull(sizes, "sizes");
             Objects.requireNonNull(post, "post");
@@ -236,10 +279,55 @@ public final class JobSettings {
             designs = List.copyOf(designs);
         }
 
+        /** A sole job without a mould block: each foot's programs in the outline's frame. */
+        public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post,
+                String system, Optional<Vec2> originMm, double shrinkage, String shrinkageMode, double treadDepthMm,
+                double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs,
+                String cavityTool) {
+            this(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage, shrinkageMode,
+                    treadDepthMm, clearanceMm, marginMm, tools, designs, cavityTool, Optional.empty());
+        }
+
         /** A sole job without tread designs, thesis defaults elsewhere. */
         public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, String post) {
             this(outline, baseSize, sizes, cavityDepthMm, post, "br", Optional.empty(), 0, "multiplicative", 2, 5, 2,
                     List.of(), List.of(), "");
+        }
+
+        /** The same job with other tread designs. */
+        public SoleSettings withDesigns(List<SoleDesign> ds) {
+            return new SoleSettings(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage,
+                    shrinkageMode, treadDepthMm, clearanceMm, marginMm, tools, ds, cavityTool, block);
+        }
+
+        /** The same job with another mould block (empty: none). */
+        public SoleSettings withBlock(Optional<SoleBlock> b) {
+            return new SoleSettings(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage,
+                    shrinkageMode, treadDepthMm, clearanceMm, marginMm, tools, designs, cavityTool, b);
+        }
+    }
+
+    /**
+     * The mould block that holds the left and right sole (Ahrens 1986, section 6.6.1, equations
+     * 6.1 to 6.9), in the thesis's names. The pattern's extents CP, DPI and XTANP are measured on
+     * the base outline about the part zero (the grading origin) when the job leaves them out; the
+     * thesis rounds them (270, 29, 60).
+     *
+     * @param dMm D, the gap between the two patterns along x
+     * @param dlmMm DLM, machine x of the tool's machining position on the fixture
+     * @param eMm E, from that position to the mirror line (fixture dependent, may be 0)
+     * @param sMm S, machine y of the block's lower edge
+     * @param cmMm CM, the block's length along y
+     * @param cpMm CP, the base pattern's length, or empty to measure it
+     * @param dpiMm DPI, from the part zero down to the pattern's lowest point, or empty to measure it
+     * @param xtanpMm XTANP, from the part zero to the inner tangent parallel to y, or empty to measure it
+     */
+    public record SoleBlock(double dMm, double dlmMm, double eMm, double sMm, double cmMm, OptionalDouble cpMm,
+            OptionalDouble dpiMm, OptionalDouble xtanpMm) {
+        public SoleBlock {
+            Objects.requireNonNull(cpMm, "cpMm");
+            Objects.requireNonNull(dpiMm, "dpiMm");
+            Objects.requireNonNull(xtanpMm, "xtanpMm");
         }
     }
 
@@ -251,11 +339,21 @@ public final class JobSettings {
         }
     }
 
-    /** A tread macro call: {@code macro} with its keyword parameters as the thesis writes them. */
-    public record SoleFigure(String macro, String params) {
+    /**
+     * A tread macro call: {@code macro} with its keyword parameters as the thesis writes them.
+     *
+     * @param drawing the DXF drawing whose outlines a LOGO figure engraves, or empty
+     */
+    public record SoleFigure(String macro, String params, Optional<Path> drawing) {
         public SoleFigure {
             Objects.requireNonNull(macro, "macro");
             Objects.requireNonNull(params, "params");
+            Objects.requireNonNull(drawing, "drawing");
+        }
+
+        /** A call without a drawing. */
+        public SoleFigure(String macro, String params) {
+            this(macro, params, Optional.empty());
         }
     }
 

@@ -102,6 +102,8 @@ public final class JobXml {
         } catch (SettingRange.OutOfRange e) {
             throw new CamInputException(name, lineOf(file, e.range().attribute(), e.value()), 0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
+        } catch (BadEntry e) {
+            throw new CamInputException(name, e.getMessage());
         }
     }
 
@@ -161,6 +163,28 @@ public final class JobXml {
         }
     }
 
+    /** A STEP-NC entry the job file asks for that no tool may make (a plunge of a cutter not said to cut at its centre). */
+    private static final class BadEntry extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+
+        BadEntry(String message) {
+            super(message);
+        }
+    }
+
+    /** The entry of a job's {@code <stepnc>}, its angle checked against the option's range. */
+    private static org.fresa.pocket.EntryRule stepNcEntry(StepNcType s) {
+        org.fresa.pocket.EntryRule.Kind kind = org.fresa.pocket.EntryRule.Kind.of(s.getEntry())
+                .orElseThrow(() -> new BadEntry("<stepnc> entry=\"" + s.getEntry() + "\": expected one of "
+                        + String.join(", ", org.fresa.pocket.EntryRule.Kind.words())));
+        double angle = SettingRanges.StepNc.ENTRY_ANGLE.require(s.getEntryAngleDeg());
+        if (kind == org.fresa.pocket.EntryRule.Kind.PLUNGE && !s.isCentreCutting()) {
+            throw new BadEntry("<stepnc> entry=\"plunge\" needs centreCutting=\"true\": a cutter not said to cut at"
+                    + " its centre never goes straight down into material");
+        }
+        return new org.fresa.pocket.EntryRule(kind, angle, s.isCentreCutting());
+    }
+
     private static Path resolve(Path base, String ref) {
         return base.resolve(ref).normalize();
     }
@@ -192,7 +216,7 @@ public final class JobXml {
         StepNcType s = x.getStepnc();
         if (s != null) {
             job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()), s.getPost(), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm())));
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s)));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -230,7 +254,7 @@ public final class JobXml {
             job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
                     Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(), g.getSystem(),
                     optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
-                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode()));
+                    origin, Grading.SHRINKAGE.require(g.getShrinkage()), g.getShrinkageMode(), heel(g)));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -241,6 +265,19 @@ public final class JobXml {
             job = job.withOutputs(new OutputSettings(splitList(o.getFormats())));
         }
         return job;
+    }
+
+    /** The grading's heel coordination: by the designated elements, or a boundary, or none. */
+    private static Optional<JobSettings.HeelCoordination> heel(GradingType g) {
+        boolean elements = g.getHeelElements() != null && !g.getHeelElements().isBlank();
+        if (!elements && g.getCoordinationMm() == null) {
+            return Optional.empty();
+        }
+        int group = (int) Grading.HEEL_GROUP.require(g.getHeelGroup());
+        // both given is refused when the plan is made, with the job's other grading settings
+        return Optional.of(new JobSettings.HeelCoordination(group, g.getCoordinationMm() == null ? OptionalDouble.empty()
+                : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),
+                elements ? g.getHeelElements().trim() : ""));
     }
 
     private static SoleSettings soleSettings(SoleType so, Path base) {
@@ -257,7 +294,9 @@ public final class JobXml {
                 Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
                 Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
                 d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
-                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
+                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams(),
+                        f.getFile() == null || f.getFile().isBlank() ? Optional.<Path>empty()
+                                : Optional.of(resolve(base, f.getFile())))).toList(),
                 d.getCopy().stream().map(c -> new JobSettings.SoleCopy(Sole.DX.require(c.getDxMm()),
                         Sole.DY.require(c.getDyMm()), optional(Sole.MIRROR_X, c.getMirrorXMm()),
                         optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
@@ -266,7 +305,17 @@ public final class JobXml {
                 Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), so.getPost(), so.getSystem(), origin,
                 Sole.SHRINKAGE.require(so.getShrinkage()), so.getShrinkageMode(),
                 Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
-                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool());
+                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool(), block(so.getBlock()));
+    }
+
+    private static Optional<JobSettings.SoleBlock> block(SoleType.Block b) {
+        if (b == null) {
+            return Optional.empty();
+        }
+        return Optional.of(new JobSettings.SoleBlock(Sole.BLOCK_D.require(b.getDMm()), Sole.BLOCK_DLM.require(b.getDlmMm()),
+                Sole.BLOCK_E.require(b.getEMm()), Sole.BLOCK_S.require(b.getSMm()), Sole.BLOCK_CM.require(b.getCmMm()),
+                optional(Sole.BLOCK_CP, b.getCpMm()), optional(Sole.BLOCK_DPI, b.getDpiMm()),
+                optional(Sole.BLOCK_XTANP, b.getXtanpMm())));
     }
 
     private static SoleType soleType(SoleSettings s, Path base) {
@@ -287,6 +336,18 @@ public final class JobXml {
         t.setClearanceMm(s.clearanceMm());
         t.setMarginMm(s.marginMm());
         t.setCavityTool(s.cavityTool());
+        s.block().ifPresent(b -> {
+            SoleType.Block x = new SoleType.Block();
+            x.setDMm(b.dMm());
+            x.setDlmMm(b.dlmMm());
+            x.setEMm(b.eMm());
+            x.setSMm(b.sMm());
+            x.setCmMm(b.cmMm());
+            b.cpMm().ifPresent(x::setCpMm);
+            b.dpiMm().ifPresent(x::setDpiMm);
+            b.xtanpMm().ifPresent(x::setXtanpMm);
+            t.setBlock(x);
+        });
         for (JobSettings.SoleTool k : s.tools()) {
             SoleType.Tool x = new SoleType.Tool();
             x.setId(k.id());
@@ -313,7 +374,11 @@ public final class JobXml {
             x.setCenterXMm(d.centerXMm());
             x.setCenterYMm(d.centerYMm());
             d.lead().forEach(f -> x.getLead().add(figure(f)));
-            d.figures().forEach(f -> x.getFigure().add(figure(f)));
+            d.figures().forEach(f -> {
+                org.fresa.job.xml.SoleFigureType y = figure(f);
+                f.drawing().ifPresent(file -> y.setFile(relativize(base, file)));
+                x.getFigure().add(y);
+            });
             for (JobSettings.SoleCopy c : d.copies()) {
                 SoleType.Design.Copy y = new SoleType.Design.Copy();
                 y.setDxMm(c.dxMm());
@@ -376,6 +441,11 @@ public final class JobXml {
             }
             if (s.breakthroughMm() != org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM) {
                 t.setBreakthroughMm(s.breakthroughMm());
+            }
+            if (!s.entry().equals(org.fresa.pocket.EntryRule.DEFAULT)) {
+                t.setEntry(s.entry().kind().word());
+                t.setEntryAngleDeg(s.entry().angleDeg());
+                t.setCentreCutting(s.entry().centreCutting());
             }
             x.setStepnc(t);
         });
@@ -447,6 +517,13 @@ public final class JobXml {
             });
             t.setShrinkage(g.shrinkage());
             t.setShrinkageMode(g.shrinkageMode());
+            g.coordination().ifPresent(h -> {
+                t.setHeelGroup(h.groupSize());
+                h.boundaryMm().ifPresent(t::setCoordinationMm);
+                if (!h.heelElements().isBlank()) {
+                    t.setHeelElements(h.heelElements());
+                }
+            });
             x.setGrading(t);
         });
         job.sole().ifPresent(s -> x.setSole(soleType(s, base)));

@@ -145,6 +145,23 @@ public final class ProgramChecks {
         return ProgramCheck.of(program, onRobot, tools).failure();
     }
 
+    /**
+     * A STEP-NC milling cutter as the user's entry choices say: straight down only for a cutter
+     * said to cut at its centre and asked to plunge (or left to, with {@code auto}), as the pocket
+     * module's; otherwise the entry angle asked for (3 degrees by default).
+     */
+    static ToolLimits cutter(org.fresa.pocket.EntryRule e) {
+        if (e.centreCutting() && (e.kind() == org.fresa.pocket.EntryRule.Kind.PLUNGE
+                || e.kind() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
+            return ToolLimits.centreCuttingPlunge();
+        }
+        if (e.equals(org.fresa.pocket.EntryRule.DEFAULT)) {
+            return ToolLimits.notCentreCutting();
+        }
+        return new ToolLimits(e.angleDeg(), false, e.centreCutting() ? "a centre-cutting cutter asked to ramp"
+                : "a cutter not cutting at its centre", 0);
+    }
+
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */
     public static NcDialect dialect(String post) {
         return NcDialect.byPost(post).orElseThrow(() -> new IllegalArgumentException("no dialect for post " + post));
@@ -152,7 +169,7 @@ public final class ProgramChecks {
 
     /**
      * A STEP-NC program's limits: each tool as its operations use it (drills, reamers, taps and
-     * boring bars straight down; milling cutters not cutting at their centre, 3 degrees), the stock
+     * boring bars straight down; milling cutters as the entry choices say, {@link #cutter}), the stock
      * the workpiece's block when the file gives one (the floor its bottom, with the deepest through
      * allowance of the planned tools below it: a drill's point or a cutter's edge radius, plus the
      * breakthrough the planner was given), otherwise unbounded with no floor.
@@ -170,7 +187,7 @@ public final class ProgramChecks {
             ToolpathSection s = sections.get(i);
             MachiningWorkingstep w = byId.get(plan.steps().get(i).workingstepInstanceId());
             boolean axial = w != null && AXIAL.contains(w.operation().type());
-            ToolLimits t = axial ? ToolLimits.drill() : ToolLimits.notCentreCutting();
+            ToolLimits t = axial ? ToolLimits.drill() : cutter(choices.entry());
             l = l.withTool(s.toolNumber(), t.withRadiusMm(s.toolDiameterMm() / 2));
             if (w != null) {
                 allowanceMm = Math.max(allowanceMm, ToolpathPlanner.throughAllowanceMm(w.operation(),

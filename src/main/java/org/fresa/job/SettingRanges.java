@@ -53,6 +53,8 @@ public final class SettingRanges {
         /** How far a through hole's tool passes its exit. */
         public static final SettingRange BREAKTHROUGH = SettingRange.of("--breakthrough", "breakthroughMm", 0,
                 org.fresa.toolpath.PlanningChoices.MAX_BREAKTHROUGH_MM, "mm");
+        /** Steepest descent of a pocket's helix or ramp entry, as the pocket module's. */
+        public static final SettingRange ENTRY_ANGLE = SettingRange.of("--entry-angle", "entryAngleDeg", 0.5, 90, "deg");
 
         private StepNc() {
         }
@@ -261,6 +263,15 @@ public final class SettingRanges {
         public static final SettingRange MIRROR_X = coordinate("", "mirrorXMm");
         public static final SettingRange MIRROR_Y = coordinate("", "mirrorYMm");
         public static final SettingRange ROTATE = angle("", "rotateDeg");
+        /** The mould block (equations 6.1 to 6.9): a gap, fixture and block within the machine's travel. */
+        public static final SettingRange BLOCK_D = SettingRange.of("", "dMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DLM = coordinate("", "dlmMm");
+        public static final SettingRange BLOCK_E = coordinate("", "eMm");
+        public static final SettingRange BLOCK_S = coordinate("", "sMm");
+        public static final SettingRange BLOCK_CM = SettingRange.above("", "cmMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_CP = SettingRange.above("", "cpMm", 0, MACHINE_TRAVEL_MM, "mm");
+        public static final SettingRange BLOCK_DPI = coordinate("", "dpiMm");
+        public static final SettingRange BLOCK_XTANP = coordinate("", "xtanpMm");
 
         private Sole() {
         }

@@ -29,6 +29,7 @@ import org.fresa.model.Toolpath;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.sole.Foot;
+import org.fresa.sole.MouldBlock;
 import org.fresa.sole.Similarity2;
 import org.fresa.sole.SizeRule;
 import org.fresa.sole.SizeScale;
@@ -60,7 +61,7 @@ public final class SoleService {
 
     /** The whole plan of a sole job, read and checked. */
     public record SolePlan(Grader grader, SoleTread tread, Map<String, TreadTool> tools, NcPost post,
-            JobSettings.SoleSettings settings) {
+            JobSettings.SoleSettings settings, java.util.Optional<MouldBlock> block) {
     }
 
     /**
@@ -107,7 +108,101 @@ public final class SoleService {
         }
         NcPost post = NcPosts.byName(s.post()).orElseThrow(() -> new CamInputException(source,
                 "unknown post '" + s.post() + "', expected one of " + String.join(", ", NcPosts.names())));
-        return new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s);
+        SolePlan p = new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s, java.util.Optional.empty());
+        if (s.block().isEmpty()) {
+            return p;
+        }
+        MouldBlock block = block(s.block().get(), outline.get(0), grader.origin(), source);
+        for (double size : sizes) {
+            java.util.Optional<String> misfit = block.misfit(scale(p, grader.grade(size)));
+            if (misfit.isPresent()) {
+                throw new CamInputException(source, "the pair does not fit the mould block: " + misfit.get());
+            }
+        }
+        return new SolePlan(grader, p.tread(), tools, post, s, java.util.Optional.of(block));
+    }
+
+    /**
+     * The job's mould block, the pattern's extents measured on the base outline about its part
+     * zero (the grading origin) where the job does not give the thesis's rounded CP, DPI, XTANP.
+     */
+    private static MouldBlock block(JobSettings.SoleBlock b, Contour outline, Vec2 zero, String source)
+            throws CamInputException {
+        MouldBlock.Pattern m = MouldBlock.Pattern.measured(outline.bounds(), zero);
+        try {
+            MouldBlock.Pattern pattern = new MouldBlock.Pattern(b.cpMm().orElse(m.lengthMm()),
+                    b.dpiMm().orElse(m.heelOverhangMm()), b.xtanpMm().orElse(m.innerReachMm()));
+            return new MouldBlock(b.dMm(), b.dlmMm(), b.eMm(), b.sMm(), b.cmMm(), pattern);
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(source, "mould block: " + e.getMessage());
+        }
+    }
+
+    /** Where the part zero of a size and foot lies in the mould block, or empty without a block. */
+    public static java.util.Optional<MouldBlock.PartZero> partZero(SolePlan p, GradedSize g, Foot foot) {
+        return p.block().map(b -> b.partZero(scale(p, g), foot));
+    }
+
+    /**
+     * A program of a size and foot, written about the part zero, placed where the block's
+     * equations put that foot's part zero; unchanged without a block.
+     */
+    public static Toolpath placed(SolePlan p, GradedSize g, Foot foot, Toolpath partFrame) {
+        return partZero(p, g, foot).map(z -> z.placed(partFrame, p.grader().origin())).orElse(partFrame);
+    }
+
+    /** The outline of a size and foot (the left one mirrored), placed in the block when there is one. */
+    public static Contour outline(SolePlan p, GradedSize g, Foot foot) {
+        Contour right = g.output().get(0);
+        Contour c = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
+        return partZero(p, g, foot).map(z -> z.placed(c, p.grader().origin())).orElse(c);
+    }
+
+    /** The block's edges y = S and S + CM across the pair (10 mm beyond it) and the mirror line x = DLM + E. */
+    private static PlotScene.Layer blockLayer(MouldBlock b, SolePlan p, GradedSize g) {
+        org.fresa.geom.Box2 span = outline(p, g, Foot.RIGHT).bounds().union(outline(p, g, Foot.LEFT).bounds());
+        double x0 = span.minX() - 10;
+        double x1 = span.maxX() + 10;
+        double y0 = b.blockEdgeMm();
+        double y1 = b.blockEdgeMm() + b.blockLengthMm();
+        double m = b.mirrorLineMachineXMm();
+        return new PlotScene.Layer("block edges y = S, S + CM; mirror line x = DLM + E", PlotScene.Style.AUX,
+                List.of(org.fresa.geom.Segment2.of(x0, y0, x1, y0), org.fresa.geom.Segment2.of(x0, y1, x1, y1),
+                        org.fresa.geom.Segment2.of(m, y0, m, y1)));
+    }
+
+    /**
+     * The pair in the mould block for one size: the block's lower and upper edges (y = S and
+     * S + CM) across the pair, the mirror line x = DLM + E, and each foot's outline, tread and
+     * cavity where the equations put it, in the machine frame. Empty when the job has no block.
+     */
+    public static java.util.Optional<PlotScene> pairScene(SolePlan p, GradedSize g) {
+        if (p.block().isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        MouldBlock b = p.block().get();
+        MouldBlock.PartZero right = partZero(p, g, Foot.RIGHT).orElseThrow();
+        MouldBlock.PartZero left = partZero(p, g, Foot.LEFT).orElseThrow();
+        PlotScene scene = PlotScene.empty(String.format(Locale.ROOT,
+                "Size %s in the mould block: right ZP (%.3f, %.3f), left ZP (%.3f, %.3f)", g.name(),
+                right.machineMm().x(), right.machineMm().y(), left.machineMm().x(), left.machineMm().y()));
+        scene = scene.with(blockLayer(b, p, g));
+        for (Foot foot : Foot.values()) {
+            java.util.Optional<Toolpath> cavity;
+            try {
+                cavity = cavityProgram(p, g, foot);
+            } catch (CamInputException e) {
+                cavity = java.util.Optional.empty();
+            }
+            if (cavity.isPresent()) {
+                scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
+                        feeds(placed(p, g, foot, cavity.get()), Vec2.ZERO)));
+            }
+            scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline(p, g, foot))
+                    .with(new PlotScene.Layer(foot.id() + " tread", PlotScene.Style.FEED,
+                            feeds(placed(p, g, foot, treadProgram(p, g, foot)), Vec2.ZERO)));
+        }
+        return java.util.Optional.of(scene);
     }
 
     private static List<Contour> readOutline(Path file) throws CamInputException {
@@ -135,7 +230,12 @@ public final class SoleService {
         }
         List<TreadFigure> figs = new ArrayList<>();
         for (JobSettings.SoleFigure f : d.figures()) {
-            figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), where));
+            List<List<Curve2>> drawing = f.drawing().isPresent() ? drawing(f.drawing().get()) : List.of();
+            if (TreadFigures.needsDrawing(f.macro()) && f.drawing().isEmpty()) {
+                throw new CamInputException(where, f.macro() + ": name the DXF drawing of its outlines in the figure's"
+                        + " file attribute");
+            }
+            figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), drawing, where));
         }
         try {
             TreadPattern pattern = switch (d.pattern()) {
@@ -154,6 +254,23 @@ public final class SoleService {
             return item;
         } catch (IllegalArgumentException e) {
             throw new CamInputException(where, e.getMessage());
+        }
+    }
+
+    /** The outlines of a logo's or text's DXF drawing: its chains of lines and arcs, closed or open. */
+    private static List<List<Curve2>> drawing(Path file) throws CamInputException {
+        try {
+            org.fresa.cutting.Chainer.Chains chains = org.fresa.cutting.Chainer.chain(
+                    org.fresa.dxf.DxfReader.read(file).curves(), DrawingContours.GAP_MM);
+            List<List<Curve2>> out = new ArrayList<>();
+            chains.closed().forEach(c -> out.add(c.curves()));
+            out.addAll(chains.open());
+            if (out.isEmpty()) {
+                throw new CamInputException(file.toString(), "the drawing has no lines or arcs to engrave");
+            }
+            return out;
+        } catch (IOException e) {
+            throw new CamInputException(file.toString(), "cannot read the drawing (" + e.getMessage() + ")");
         }
     }
 
@@ -273,11 +390,16 @@ public final class SoleService {
             m.put("length_factor", g.factors().length());
             m.put("length_mm", g.lengthMm());
             m.put("width_mm", g.widthMm());
-            PlotScene scene = PlotScene.empty("Sole " + g.name() + " (right, left)");
+            PlotScene scene = PlotScene.empty("Sole " + g.name() + (p.block().isPresent()
+                    ? " (left, right) in the mould block" : " (right, left)"));
             Contour right = g.output().get(0);
             double shift = right.bounds().width() + 30;
             for (Foot foot : Foot.values()) {
-                Toolpath tp = treadProgram(p, g, foot);
+                Toolpath tp = placed(p, g, foot, treadProgram(p, g, foot));
+                java.util.Optional<MouldBlock.PartZero> zp = partZero(p, g, foot);
+                if (zp.isPresent()) {
+                    m.put(foot.id() + "_part_zero_mm", List.of(zp.get().machineMm().x(), zp.get().machineMm().y()));
+                }
                 String name = "tread-" + g.name() + "-" + foot.id();
                 writeChecked(out, name + ".ngc", tp, p, ProgramChecks.soleTread(s), cavityProblems);
                 m.put(foot.id() + "_moves", tp.moveCount());
@@ -291,20 +413,24 @@ public final class SoleService {
                 }
                 if (cavity.isPresent()) {
                     String cname = "cavity-" + g.name() + "-" + foot.id();
-                    Toolpath ct = cavity.get();
+                    Toolpath ct = placed(p, g, foot, cavity.get());
                     writeChecked(out, cname + ".ngc", ct, p, ProgramChecks.soleCavity(s), cavityProblems);
                     m.put(foot.id() + "_cavity_moves", ct.moveCount());
                 }
-                Contour outline = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
-                Vec2 dx = Vec2.of(foot == Foot.RIGHT ? 0 : shift, 0);
+                Contour outline = outline(p, g, foot);
+                // without a block the left foot is drawn beside the right one; with one, where it is cut
+                Vec2 dx = Vec2.of(foot == Foot.RIGHT || p.block().isPresent() ? 0 : shift, 0);
                 if (cavity.isPresent()) {
                     scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
-                            feeds(cavity.get(), dx)));
+                            feeds(placed(p, g, foot, cavity.get()), dx)));
                 }
                 scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
                         .with(new PlotScene.Layer(foot.id() + " tread", PlotScene.Style.FEED, feeds(tp, dx)));
             }
             out.writeString("size-" + g.name() + ".csv", csv(g));
+            if (p.block().isPresent()) {
+                scene = scene.with(blockLayer(p.block().get(), p, g));
+            }
             PlotScene sc = scene;
             out.write("sole-" + g.name() + ".png", os -> ToolpathChart.writePng(sc, 1000, 1100, os));
             perSize.add(m);
@@ -313,6 +439,19 @@ public final class SoleService {
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("origin", List.of(p.grader().origin().x(), p.grader().origin().y()));
         summary.put("post", p.post().name());
+        p.block().ifPresent(b -> {
+            Map<String, Object> bm = new LinkedHashMap<>();
+            bm.put("d_mm", b.pairGapMm());
+            bm.put("dlm_mm", b.mirrorStationMm());
+            bm.put("e_mm", b.mirrorOffsetMm());
+            bm.put("s_mm", b.blockEdgeMm());
+            bm.put("cm_mm", b.blockLengthMm());
+            bm.put("cp_mm", b.pattern().lengthMm());
+            bm.put("dpi_mm", b.pattern().heelOverhangMm());
+            bm.put("xtanp_mm", b.pattern().innerReachMm());
+            bm.put("mirror_line_x_mm", b.mirrorLineMachineXMm());
+            summary.put("block", bm);
+        });
         summary.put("designs", s.designs().size());
         summary.put("sizes", perSize);
         boolean cavity = !s.cavityTool().isEmpty();

@@ -1,9 +1,16 @@
 package org.fresa.sole;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import org.fresa.geom.Box2;
+import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
 
 /**
  * The layout of a left and right sole in one mould block (Ahrens 1986, section 6.6.1): where the
@@ -61,8 +68,65 @@ public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirror
         }
     }
 
-    /** The part zero of one size and foot in the machine frame, and the block's fit. */
+    /**
+     * The part zero of one size and foot in the machine frame, and the block's fit.
+     *
+     * @param machineMm ZP in the machine frame: (xz(ND), yz(ND))
+     * @param mirrorLinePartXMm the mirror line's x in the right sole's part frame, -(XTANP(ND) + D/2)
+     * @param patternLengthMm CP(ND)
+     */
     public record PartZero(Foot foot, String size, Vec2 machineMm, double mirrorLinePartXMm, double patternLengthMm) {
+
+        /**
+         * A program of this foot written about its part zero {@code zeroMm} (the outline's frame,
+         * the left foot already mirrored about x = zeroMm.x) moved to the machine frame: every
+         * point shifted by {@code machineMm - zeroMm}, heights unchanged, arcs still arcs. Each
+         * section's label names the foot and its part zero, so the operator reads them in the
+         * program's comments.
+         */
+        public Toolpath placed(Toolpath partFrame, Vec2 zeroMm) {
+            Vec3 by = Vec3.of(machineMm.minus(zeroMm), 0);
+            List<ToolpathSection> out = new ArrayList<>();
+            for (ToolpathSection s : partFrame.sections()) {
+                List<Move> moves = new ArrayList<>(s.moves().size());
+                for (Move m : s.moves()) {
+                    moves.add(shifted(m, by));
+                }
+                String label = String.format(java.util.Locale.ROOT, "%s foot, part zero X%.3f Y%.3f: %s", foot.id(),
+                        machineMm.x(), machineMm.y(), s.label());
+                out.add(new ToolpathSection(label, s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(),
+                        s.start().plus(by), moves));
+            }
+            return new Toolpath(out);
+        }
+
+        /** An outline of this foot about {@code zeroMm} moved to the machine frame. */
+        public Contour placed(Contour partFrame, Vec2 zeroMm) {
+            return partFrame.translated(machineMm.minus(zeroMm));
+        }
+
+        private static Move shifted(Move m, Vec3 by) {
+            if (m instanceof Move.Rapid r) {
+                return new Move.Rapid(r.end().plus(by));
+            } else if (m instanceof Move.Linear l) {
+                return new Move.Linear(l.end().plus(by), l.feedMmPerMin());
+            } else if (m instanceof Move.Circular c) {
+                return new Move.Circular(c.end().plus(by), c.center().plus(by), c.normal(), c.ccw(), c.turns(),
+                        c.feedMmPerMin());
+            } else if (m instanceof Move.Dwell d) {
+                return new Move.Dwell(d.end().plus(by), d.seconds());
+            } else if (m instanceof Move.SpindleStop st) {
+                return new Move.SpindleStop(st.end().plus(by));
+            } else if (m instanceof Move.SpindleStart st) {
+                return new Move.SpindleStart(st.end().plus(by), st.rpm(), st.clockwise());
+            }
+            throw new IllegalArgumentException("unknown move " + m);
+        }
+    }
+
+    /** The mirror line x = DLM + E in the machine frame, about which the left sole is the right's image. */
+    public double mirrorLineMachineXMm() {
+        return mirrorStationMm + mirrorOffsetMm;
     }
 
     /** Where ZP of {@code foot} lies for the size {@code s} (equations 6.1, 6.2, 6.6 to 6.9). */

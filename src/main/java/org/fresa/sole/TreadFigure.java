@@ -37,6 +37,13 @@ import org.fresa.geom.Vec2;
  */
 public sealed interface TreadFigure {
 
+    /**
+     * The special designs of Table 5.2 (groups F to J), which the thesis's library does not
+     * cover: {@link SpecialDesigns}.
+     */
+    non-sealed interface Special extends TreadFigure {
+    }
+
     /** The thesis's macro name, e.g. {@code SUB1A}. */
     String macro();
 

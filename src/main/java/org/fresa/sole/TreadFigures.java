@@ -21,9 +21,13 @@ import org.fresa.model.CamInputException;
  */
 public final class TreadFigures {
 
-    /** Every macro name, in the thesis's order. */
+    /**
+     * Every macro name: the thesis's, in its order, then the special designs of its Table 5.2
+     * (groups F to J, {@link SpecialDesigns}).
+     */
     public static final List<String> MACROS = List.of("PRIM", "NOVO", "SUB1A", "SUB1B", "SUB2", "SUB3A", "SUB3B",
-            "SUB3E", "SUB4", "SUB5A", "SUB5B", "SUB5E", "SUB7A", "SUB7B", "SUB8A", "SUB8B", "SUB9A", "SUB9B");
+            "SUB3E", "SUB4", "SUB5A", "SUB5B", "SUB5E", "SUB7A", "SUB7B", "SUB8A", "SUB8B", "SUB9A", "SUB9B",
+            "PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO");
 
     private static final Map<String, List<String>> PARAMS = new LinkedHashMap<>();
 
@@ -46,6 +50,11 @@ public final class TreadFigures {
         PARAMS.put("SUB8B", List.of("XB8", "YB8", "XC8", "YC8", "XD8", "YD8"));
         PARAMS.put("SUB9A", List.of("XA9", "YA9", "XB9", "YB9", "XC9", "YC9", "XD9", "YD9", "XE9", "YE9"));
         PARAMS.put("SUB9B", List.of("XB9", "YB9", "XC9", "YC9", "XD9", "YD9", "XE9", "YE9"));
+        PARAMS.put("PARAL", List.of("XO", "YO", "A", "B", "ANG", "NA", "NB"));
+        PARAMS.put("COLMEIA", List.of("XO", "YO", "S", "NX", "NY"));
+        PARAMS.put("PIRAM", List.of("XO", "YO", "P", "ANG", "N1", "N2"));
+        PARAMS.put("TEXTURA", List.of("XO", "YO", "L", "P", "ANG", "N", "DASH", "GAP"));
+        PARAMS.put("LOGO", List.of("X", "Y", "H"));
     }
 
     private static final Map<String, String> EXAMPLES = Map.ofEntries(
@@ -66,7 +75,14 @@ public final class TreadFigures {
             Map.entry("SUB8A", "XA8=-39,YA8=20,XB8=4,YB8=0,XC8=5,YC8=-10,XD8=4,YD8=0"),
             Map.entry("SUB8B", "XB8=5,YB8=5,XC8=10,YC8=0,XD8=5,YD8=-5"),
             Map.entry("SUB9A", "XA9=15,YA9=15,XB9=5,YB9=0,XC9=-5,YC9=10,XD9=-5,YD9=0,XE9=5,YE9=-10"),
-            Map.entry("SUB9B", "XB9=5,YB9=0,XC9=5,YC9=8,XD9=5,YD9=0,XE9=5,YE9=-8"));
+            Map.entry("SUB9B", "XB9=5,YB9=0,XC9=5,YC9=8,XD9=5,YD9=0,XE9=5,YE9=-8"),
+            // the special designs: the closed SUB9A parallelograms of test 05 as a lattice, and
+            // fields of the same size (ours: the thesis has no call for them)
+            Map.entry("PARAL", "XO=10,YO=15,A=5,B=11.18034,ANG=116.56505,NA=4,NB=2"),
+            Map.entry("COLMEIA", "XO=-30,YO=-30,S=5,NX=6,NY=5"),
+            Map.entry("PIRAM", "XO=-30,YO=-30,P=6,ANG=45,N1=6,N2=6"),
+            Map.entry("TEXTURA", "XO=-30,YO=-30,L=60,P=3,ANG=0,N=6,DASH=4,GAP=2"),
+            Map.entry("LOGO", "X=-20,Y=-10,H=20"));
 
     private static final Set<String> IGNORED = Set.of("I", "PROF", "AVAN");
 
@@ -92,6 +108,16 @@ public final class TreadFigures {
             throw new IllegalArgumentException("unknown macro " + macro);
         }
         return e;
+    }
+
+    /** Whether the macro is one of the special designs of Table 5.2 (groups F to J). */
+    public static boolean isSpecial(String macro) {
+        return SpecialDesigns.MACROS.contains(macro.toUpperCase(Locale.ROOT));
+    }
+
+    /** Whether the macro draws a drawing's outlines (LOGO), which a file must give. */
+    public static boolean needsDrawing(String macro) {
+        return macro.trim().equalsIgnoreCase("LOGO");
     }
 
     /** Whether the macro carries on the groove in progress (B, E-less continuous types, PRIM/NOVO excluded). */
@@ -138,6 +164,17 @@ public final class TreadFigures {
      * @throws CamInputException naming a missing, unknown or inconsistent parameter
      */
     public static TreadFigure of(String macro, Map<String, Double> params, String source) throws CamInputException {
+        return of(macro, params, List.of(), source);
+    }
+
+    /**
+     * As {@link #of(String, Map, String)}, with the outlines of a drawing for LOGO (ignored by
+     * every other macro).
+     *
+     * @param drawing the drawing's chains of lines and arcs, in its frame
+     */
+    public static TreadFigure of(String macro, Map<String, Double> params, List<List<org.fresa.geom.Curve2>> drawing,
+            String source) throws CamInputException {
         String m = macro.trim().toUpperCase(Locale.ROOT);
         List<String> names = PARAMS.get(m);
         if (names == null) {
@@ -165,7 +202,8 @@ public final class TreadFigures {
         boolean ccw = p.getOrDefault("CCW", 0.0) != 0.0;
         TreadFigure f;
         try {
-            f = build(m, p, ccw);
+            f = m.equals("LOGO") ? new SpecialDesigns.Logo(p.get("X"), p.get("Y"), p.get("H"), drawing)
+                    : build(m, p, ccw);
             f.path(Vec2.ZERO, Tolerance.DEFAULT);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(source, m + ": " + e.getMessage());
@@ -218,6 +256,15 @@ public final class TreadFigures {
             case "SUB9B" -> new TreadFigure.Sub9b(g.applyAsDouble("XB9"), g.applyAsDouble("YB9"),
                     g.applyAsDouble("XC9"), g.applyAsDouble("YC9"), g.applyAsDouble("XD9"), g.applyAsDouble("YD9"),
                     g.applyAsDouble("XE9"), g.applyAsDouble("YE9"));
+            case "PARAL" -> new SpecialDesigns.Parallelograms(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
+                    g.applyAsDouble("A"), g.applyAsDouble("B"), g.applyAsDouble("ANG"), count(g, "NA"), count(g, "NB"));
+            case "COLMEIA" -> new SpecialDesigns.Honeycomb(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
+                    g.applyAsDouble("S"), count(g, "NX"), count(g, "NY"));
+            case "PIRAM" -> new SpecialDesigns.InvertedPyramids(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
+                    g.applyAsDouble("P"), g.applyAsDouble("ANG"), count(g, "N1"), count(g, "N2"));
+            case "TEXTURA" -> new SpecialDesigns.TextureLines(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
+                    g.applyAsDouble("L"), g.applyAsDouble("P"), g.applyAsDouble("ANG"), count(g, "N"),
+                    g.applyAsDouble("DASH"), g.applyAsDouble("GAP"));
             default -> throw new IllegalArgumentException("unknown macro " + m);
         };
     }

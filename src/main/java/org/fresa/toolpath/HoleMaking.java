@@ -197,6 +197,20 @@ public final class HoleMaking {
      */
     public static ToolpathSection mill(String label, Vec2 center, double holeDiameterMm, Heights h, Tooling tool,
             double axialDepthMm, boolean clockwise, Tolerance tol) {
+        return mill(label, center, holeDiameterMm, h, tool, axialDepthMm, clockwise, EntryRule.DEFAULT_ANGLE_DEG, tol);
+    }
+
+    /**
+     * {@link #mill(String, Vec2, double, Heights, Tooling, double, boolean, Tolerance)} with the
+     * helix no steeper than the entry angle asked for.
+     *
+     * @param entryAngleDeg steepest descent of the helix (deg, in (0, 90])
+     */
+    public static ToolpathSection mill(String label, Vec2 center, double holeDiameterMm, Heights h, Tooling tool,
+            double axialDepthMm, boolean clockwise, double entryAngleDeg, Tolerance tol) {
+        if (!(entryAngleDeg > 0 && entryAngleDeg <= 90)) {
+            throw new IllegalArgumentException("entry angle must be in (0, 90] deg: " + entryAngleDeg);
+        }
         double rp = (holeDiameterMm - tool.diameterMm()) / 2;
         if (rp < -tol.linear()) {
             throw new IllegalArgumentException("the tool (D" + tool.diameterMm() + ") is wider than the hole (D"
@@ -213,10 +227,10 @@ public final class HoleMaking {
         double dz = start - h.bottomZ();
         int turns = axialDepthMm > 0 ? Math.max(1, (int) Math.ceil(dz / axialDepthMm - 1e-9)) : 1;
         // a milling cutter is not taken to cut at its centre: the helix no steeper than the entry angle
-        double byAngle = Math.ceil(dz / (2 * Math.PI * rp * Math.tan(Math.toRadians(EntryRule.DEFAULT_ANGLE_DEG))) - 1e-9);
+        double byAngle = Math.ceil(dz / (2 * Math.PI * rp * Math.tan(Math.toRadians(entryAngleDeg))) - 1e-9);
         if (!(byAngle <= Entries.MAX_STEPS)) {
             throw new IllegalArgumentException("the hole (D" + holeDiameterMm + ") leaves the tool (D" + tool.diameterMm()
-                    + ") no helix within " + EntryRule.DEFAULT_ANGLE_DEG + " deg");
+                    + ") no helix within " + entryAngleDeg + " deg");
         }
         turns = Math.max(turns, (int) byAngle);
         b.arc(Vec3.of(p0, h.bottomZ()), Vec3.of(center, start), !clockwise, turns - 1, tool.feedMmPerMin());

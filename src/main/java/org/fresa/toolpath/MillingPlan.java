@@ -17,13 +17,24 @@ import org.fresa.geom.Vec2;
  *     clockwise loops climb-mill a pocket's walls
  * @param approach how each layer is entered
  * @param finishPass after roughing with allowances, run the pattern once more at full depth
+ * @param entry the entry the user asks for ({@link PlanningChoices#entry()}), with the approach
+ *     giving the kind where it is {@code auto} ({@link PocketMilling#rule})
  *     without allowances
  */
 public record MillingPlan(Strategy strategy, double stepoverMm, double axialDepthMm, double sideAllowanceMm,
-        double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass) {
+        double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass,
+        org.fresa.pocket.EntryRule entry) {
+
+    /** A plan entered as the file's approach allows, at the default entry angle ({@link org.fresa.pocket.EntryRule#DEFAULT}). */
+    public MillingPlan(Strategy strategy, double stepoverMm, double axialDepthMm, double sideAllowanceMm,
+            double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass) {
+        this(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection, clockwise, approach,
+                finishPass, org.fresa.pocket.EntryRule.DEFAULT);
+    }
 
     public MillingPlan {
         Objects.requireNonNull(strategy, "strategy");
+        Objects.requireNonNull(entry, "entry");
         Objects.requireNonNull(feedDirection, "feedDirection");
         Objects.requireNonNull(approach, "approach");
         if (!(stepoverMm > 0) || sideAllowanceMm < 0 || bottomAllowanceMm < 0) {
@@ -39,15 +50,22 @@ public record MillingPlan(Strategy strategy, double stepoverMm, double axialDept
 
     public MillingPlan withApproach(Approach a) {
         return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection,
-                clockwise, a, finishPass);
+                clockwise, a, finishPass, entry);
     }
 
     public MillingPlan withAllowances(double side, double bottom, boolean finish) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, side, bottom, feedDirection, clockwise, approach, finish);
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, side, bottom, feedDirection, clockwise, approach, finish,
+                entry);
     }
 
     public MillingPlan withDirection(Vec2 feed, boolean cw) {
         return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feed, cw,
-                approach, finishPass);
+                approach, finishPass, entry);
+    }
+
+    /** The same plan entered as the user asks ({@link PlanningChoices#entry()}). */
+    public MillingPlan withEntry(org.fresa.pocket.EntryRule e) {
+        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection,
+                clockwise, approach, finishPass, e);
     }
 }

@@ -1,5 +1,7 @@
 package org.fresa.toolpath;
 
+import org.fresa.pocket.EntryRule;
+
 /**
  * What the planner is told where a STEP-NC file is silent or contradicts itself: the user's
  * choices of {@code fresa toolpath}, {@code fresa robot} and the job's {@code <stepnc>}.
@@ -8,8 +10,11 @@ package org.fresa.toolpath;
  *     ({@link CuttingData}) from the cutting speed, instead of refusing it
  * @param breakthroughMm how far the full diameter of a drill, or the bottom of a milling cutter,
  *     passes the exit of a through hole (mm), 0 to {@value #MAX_BREAKTHROUGH_MM}
+ * @param entry how pockets are entered and holes milled on a helix ({@code --entry},
+ *     {@code --entry-angle}, {@code --centre-cutting}): with {@code auto} a file's own ramp or
+ *     helix keeps its kind, any other kind replaces the file's; no entry is steeper than the angle
  */
-public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) {
+public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm, EntryRule entry) {
 
     /** Breakthrough of through holes when none is asked (mm). */
     public static final double DEFAULT_BREAKTHROUGH_MM = 1;
@@ -19,7 +24,13 @@ public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) 
     /** The file's spindle speeds, 1 mm breakthrough. */
     public static final PlanningChoices DEFAULT = new PlanningChoices(false, DEFAULT_BREAKTHROUGH_MM);
 
+    /** The choices with the default entries ({@link EntryRule#DEFAULT}). */
+    public PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm) {
+        this(trustCuttingSpeed, breakthroughMm, EntryRule.DEFAULT);
+    }
+
     public PlanningChoices {
+        java.util.Objects.requireNonNull(entry, "entry");
         if (!(breakthroughMm >= 0 && breakthroughMm <= MAX_BREAKTHROUGH_MM)) {
             throw new IllegalArgumentException("breakthrough must be 0 to " + MAX_BREAKTHROUGH_MM + " mm: "
                     + breakthroughMm);

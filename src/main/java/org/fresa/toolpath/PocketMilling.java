@@ -107,7 +107,7 @@ public final class PocketMilling {
             b.feed(bottom, tool.plungeFeedMmPerMin());
             return;
         }
-        EntryRule rule = rule(plan.approach());
+        EntryRule rule = rule(plan.approach(), plan.entry());
         Contour boundary = new Contour(region.curves());
         Entries.Room room = (centre, r) -> boundary.distanceTo(centre) >= r - tol.linear()
                 && boundary.windingNumber(centre) != 0;
@@ -141,18 +141,28 @@ public final class PocketMilling {
     }
 
     /**
-     * The entry rule of a file's approach: ISO 14649-111 does not say whether a milling cutter cuts
-     * at its centre, so none is taken to; a file's plunge (or no approach) is entered as {@code auto},
-     * its ramp or helix as asked, never steeper than {@link EntryRule#DEFAULT_ANGLE_DEG}.
+     * The entry rule of a file's approach under the user's: ISO 14649-111 does not say whether a
+     * milling cutter cuts at its centre, so none is taken to unless the user says so
+     * ({@code --centre-cutting}). A kind asked for other than {@code auto} replaces the file's;
+     * with {@code auto} a file's plunge (or no approach) is entered as {@code auto}, its ramp or
+     * helix as it says. Never steeper than the user's entry angle (3 degrees by default).
      */
-    static EntryRule rule(Approach a) {
-        double limit = EntryRule.DEFAULT_ANGLE_DEG;
+    static EntryRule rule(Approach a, EntryRule asked) {
+        double limit = asked.angleDeg();
+        if (asked.kind() != EntryRule.Kind.AUTO) {
+            return asked;
+        }
         if (a instanceof Approach.Ramp r) {
-            return new EntryRule(EntryRule.Kind.RAMP, Math.min(r.angleDeg(), limit), false);
+            return new EntryRule(EntryRule.Kind.RAMP, Math.min(r.angleDeg(), limit), asked.centreCutting());
         }
         if (a instanceof Approach.Helix h) {
-            return new EntryRule(EntryRule.Kind.HELIX, Math.min(h.angleDeg(), limit), false);
+            return new EntryRule(EntryRule.Kind.HELIX, Math.min(h.angleDeg(), limit), asked.centreCutting());
         }
-        return EntryRule.DEFAULT;
+        return asked;
+    }
+
+    /** {@link #rule(Approach, EntryRule)} with the default entries. */
+    static EntryRule rule(Approach a) {
+        return rule(a, EntryRule.DEFAULT);
     }
 }

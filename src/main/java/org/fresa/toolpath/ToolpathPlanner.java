@@ -250,10 +250,10 @@ public final class ToolpathPlanner {
                 }
                 place = place.times(pp);
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
-                local = pocket(label, p, op, h, tooling, pp, tol);
+                local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
             }
             case ROUND_HOLE -> {
-                local = hole(label, f, op, h, tooling, tol, holes.choices().breakthroughMm(), problems);
+                local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
                 List<String> unmoved = notInTheMoves(op, tooling.spindleRpm());
                 if (!unmoved.isEmpty()) {
                     problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
@@ -262,7 +262,7 @@ public final class ToolpathPlanner {
             case SLOT -> {
                 Transform3 pp = slotFrame(f);
                 place = place.times(pp);
-                local = pocket(label, slotOutline(f), op, h, tooling, pp, tol);
+                local = pocket(label, slotOutline(f), op, h, tooling, pp, tol, holes.choices().entry());
             }
             default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
                     : f.type()) + " features are not supported yet");
@@ -414,7 +414,7 @@ public final class ToolpathPlanner {
     }
 
     private static ToolpathSection pocket(String label, Profile p, Operation op, Heights h, Tooling t,
-            Transform3 profilePlacement, Tolerance tol) {
+            Transform3 profilePlacement, Tolerance tol, org.fresa.pocket.EntryRule entry) {
         Strategy s = strategy(op).orElse(Strategy.CONTOUR_PARALLEL);
         Vec2 feedDir = op.strategy().flatMap(org.fresa.stepnc.Strategy::feedDirection)
                 .map(v -> profilePlacement.inverse().applyToDirection(v)).map(v -> new Vec2(v.x(), v.y()))
@@ -424,7 +424,7 @@ public final class ToolpathPlanner {
         bounded("the pocket", Math.max(extent.width(), extent.height()), "the stepover", stepover(op, t));
         MillingPlan plan = new MillingPlan(s, stepover(op, t), op.axialCuttingDepthMm().orElse(0),
                 rough ? op.allowanceSideMm().orElse(0) : 0, rough ? op.allowanceBottomMm().orElse(0) : 0,
-                feedDir, clockwise(op), approach(op.approach()), false);
+                feedDir, clockwise(op), approach(op.approach()), false, entry);
         return PocketMilling.section(label, p, h, t, plan, tol);
     }
 
@@ -598,7 +598,8 @@ public final class ToolpathPlanner {
      * cutter's edge radius, so that no skin is left at the exit.
      */
     private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol,
-            double breakthroughMm, List<String> problems) {
+            PlanningChoices choices, List<String> problems) {
+        double breakthroughMm = choices.breakthroughMm();
         double holeD = f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"));
         boolean through = isThrough(f);
         double holeDepth = h.topZ() - h.bottomZ();
@@ -642,14 +643,14 @@ public final class ToolpathPlanner {
         }
         double ap = op.axialCuttingDepthMm().orElse(0);
         if (HoleMaking.helicalClears(holeD, t.diameterMm())) {
-            return HoleMaking.mill(label, Vec2.ZERO, holeD, hm, t, ap, clockwise(op), tol);
+            return HoleMaking.mill(label, Vec2.ZERO, holeD, hm, t, ap, clockwise(op), choices.entry().angleDeg(), tol);
         }
         bounded("the hole", holeD, "the stepover", stepover(op, t));
         Profile circle = new Profile.Circle(Vec2.ZERO, holeD / 2);
         double room = holeD / 2 - t.radiusMm();
         Approach a = new Approach.Helix(Math.max(room / 2, 0.1), 5);
         MillingPlan plan = new MillingPlan(strategy(op).orElse(Strategy.CONTOUR_PARALLEL), stepover(op, t), ap,
-                0, 0, Vec2.UNIT_X, clockwise(op), a, false);
+                0, 0, Vec2.UNIT_X, clockwise(op), a, false, choices.entry());
         return PocketMilling.section(label, circle, hm, t, plan, tol);
     }
 

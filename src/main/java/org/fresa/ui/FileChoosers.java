@@ -21,6 +21,7 @@ final class FileChoosers {
         DXF("DXF drawings (*.dxf)", "dxf"),
         ROBOT("Robot files (*.xml)", "xml"),
         TEXT("Text files (*.txt)", "txt"),
+        NC_PROGRAM("NC programs (*.ngc, *.nc, *.mpf, *.txt)", "ngc", "nc", "mpf", "txt"),
         PLOT("PNG image (*.png)", "png"),
         FOLDER(null);
 

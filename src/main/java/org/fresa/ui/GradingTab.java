@@ -61,6 +61,11 @@ final class GradingTab implements ModuleTab {
     private final JTextField widthStep = new JTextField(6);
     private final JTextField shrinkage = new JTextField(6);
     private final JComboBox<String> shrinkageMode = new JComboBox<>(GradingViewModel.SHRINKAGE_MODES.toArray(new String[0]));
+    /** The heel's elements for coordination, and the sizes per heel. */
+    private final javax.swing.JTextField heelElements = new javax.swing.JTextField(10);
+    private final javax.swing.JTextField heelGroup = new javax.swing.JTextField(4);
+    /** Table 3.1's width fitting whose last girths the table shows. */
+    private final JComboBox<String> fitting = new JComboBox<>(GradingViewModel.FITTINGS.toArray(new String[0]));
 
     GradingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -104,6 +109,21 @@ final class GradingTab implements ModuleTab {
         addRow(form, row++, "Width step (mm):", 'W', widthStep, null);
         addRow(form, row++, "Shrinkage:", 'S', shrinkage, null);
         addRow(form, row++, "Shrinkage mode:", 'M', shrinkageMode, null);
+        fitting.setName("grading-fitting");
+        fitting.setToolTipText("Width fitting A-H: the table shows the last girth of each size (thesis table 3.1,"
+                + " French sizes 29-42, Brazilian 27-40)");
+        fitting.addActionListener(e -> {
+            vm.setFitting((String) fitting.getSelectedItem());
+            vm.result().ifPresent(this::showResult);
+        });
+        addRow(form, row++, "Width fitting:", 'T', fitting, null);
+        heelElements.setName("grading-heel-elements");
+        heelElements.setToolTipText("Coordination: the outline's elements that form the heel (e.g. 1-4,18-20; 1 the"
+                + " first element), graded as one heel per group of sizes; empty for none");
+        heelGroup.setName("grading-heel-group");
+        heelGroup.setToolTipText("Sizes per heel (the thesis: 3)");
+        addRow(form, row++, "Heel elements:", 'N', heelElements, null);
+        addRow(form, row++, "Heel group:", 'R', heelGroup, null);
         addRow(form, row++, "", (char) 0, grade, export);
         GridBagConstraints filler = new GridBagConstraints();
         filler.gridy = row;
@@ -188,6 +208,8 @@ final class GradingTab implements ModuleTab {
         widthStep.setText(vm.widthStep());
         shrinkage.setText(vm.shrinkage());
         shrinkageMode.setSelectedItem(vm.shrinkageMode());
+        heelElements.setText(vm.heelElements());
+        heelGroup.setText(vm.heelGroup());
     }
 
     private void pushFields() {
@@ -200,6 +222,8 @@ final class GradingTab implements ModuleTab {
         vm.setWidthStep(widthStep.getText());
         vm.setShrinkage(shrinkage.getText());
         vm.setShrinkageMode((String) shrinkageMode.getSelectedItem());
+        vm.setHeelElements(heelElements.getText());
+        vm.setHeelGroup(heelGroup.getText());
     }
 
     private void openOutline() {

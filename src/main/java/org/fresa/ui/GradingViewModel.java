@@ -14,8 +14,10 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.GradedSize;
 import org.fresa.grading.GradingResult;
+import org.fresa.grading.SizeSystem;
 import org.fresa.job.GradingService;
 import org.fresa.job.Job;
+import org.fresa.job.JobSettings;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
@@ -37,7 +39,15 @@ public final class GradingViewModel {
     public static final List<String> SHRINKAGE_MODES = List.of("multiplicative", "additive");
     /** The grading table's column titles. */
     public static final List<String> COLUMNS = List.of("Size", "Length (mm)", "Width (mm)", "ALFA", "BETA",
-            "Length factor", "Width factor", "Max deviation (mm)");
+            "Length factor", "Width factor", "Max deviation (mm)", "Last girth (mm)");
+    /** The width fittings offered for the last girth column (table 3.1), "" for none. */
+    public static final List<String> FITTINGS;
+
+    static {
+        List<String> f = new ArrayList<>(List.of(""));
+        f.addAll(org.fresa.grading.LastGirths.FITTINGS);
+        FITTINGS = List.copyOf(f);
+    }
 
     private Optional<Path> outlineFile = Optional.empty();
     private List<Contour> outline = List.of();
@@ -50,6 +60,11 @@ public final class GradingViewModel {
     private String origin = "";
     private String shrinkage = "0";
     private String shrinkageMode = "multiplicative";
+    private String fitting = "";
+    private String heelElements = "";
+    private String heelGroup = "3";
+    /** A job's boundary-line coordination, kept while no heel elements are designated. */
+    private OptionalDouble heelBoundaryMm = OptionalDouble.empty();
     private Optional<GradingResult> result = Optional.empty();
 
     /** Reads the base outline (a .contour file) and forgets the last result. */
@@ -80,6 +95,9 @@ public final class GradingViewModel {
             origin = g.originMm().map(o -> ExactDecimal.of(o.x()) + "," + ExactDecimal.of(o.y())).orElse("");
             shrinkage = ExactDecimal.of(g.shrinkage());
             shrinkageMode = g.shrinkageMode();
+            heelElements = g.coordination().map(JobSettings.HeelCoordination::heelElements).orElse("");
+            heelGroup = g.coordination().map(h -> Integer.toString(h.groupSize())).orElse("3");
+            heelBoundaryMm = g.coordination().map(JobSettings.HeelCoordination::boundaryMm).orElse(OptionalDouble.empty());
             if (outlineFile.isEmpty() || !outlineFile.get().equals(g.outline())) {
                 try {
                     openOutline(g.outline());
@@ -102,7 +120,49 @@ public final class GradingViewModel {
         }
         return new GradingSettings(outlineFile.get(), number("Base size", baseSize), sizes.trim(), halfSizes, system,
                 optional("Length step", lengthStep), optional("Width step", widthStep), parsedOrigin(),
-                number("Shrinkage", shrinkage), shrinkageMode);
+                number("Shrinkage", shrinkage), shrinkageMode, heel());
+    }
+
+    /** The heel coordination of the fields: the designated elements, else a job's boundary, else none. */
+    private Optional<JobSettings.HeelCoordination> heel() throws CamInputException {
+        if (heelElements.isBlank() && heelBoundaryMm.isEmpty()) {
+            return Optional.empty();
+        }
+        double g = number("Heel group", heelGroup);
+        if (g != Math.rint(g) || g < 1 || g > 400) {
+            throw new CamInputException("Heel group", "expected a whole number of sizes from 1 to 400, found '"
+                    + heelGroup + "'");
+        }
+        if (!heelElements.isBlank()) {
+            try {
+                org.fresa.grading.Coordination.parseElements(heelElements);
+            } catch (IllegalArgumentException e) {
+                throw new CamInputException("Heel elements", e.getMessage());
+            }
+            return Optional.of(new JobSettings.HeelCoordination((int) g, OptionalDouble.empty(), heelElements.trim()));
+        }
+        return Optional.of(new JobSettings.HeelCoordination((int) g, heelBoundaryMm, ""));
+    }
+
+    /**
+     * The outline's elements the planner designates as the heel for coordination (figure 4.4),
+     * e.g. {@code 1-4,18-20}, 1 the first element; empty for no coordination by elements.
+     */
+    public String heelElements() {
+        return heelElements;
+    }
+
+    public void setHeelElements(String s) {
+        heelElements = s;
+    }
+
+    /** Sizes per heel. */
+    public String heelGroup() {
+        return heelGroup;
+    }
+
+    public void setHeelGroup(String s) {
+        heelGroup = s;
     }
 
     /** The job with these grading settings, what it runs unchanged. */
@@ -166,10 +226,45 @@ public final class GradingViewModel {
             for (GradedSize g : r.sizes()) {
                 rows.add(List.of(g.name(), fmt(g.lengthMm(), 3), fmt(g.widthMm(), 3), fmt(g.factors().alfa(), 6),
                         fmt(g.factors().beta(), 6), fmt(g.factors().length(), 6), fmt(g.factors().width(), 6),
-                        g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : ""));
+                        g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : "",
+                        girth(g.factors().size())));
             }
         });
         return rows;
+    }
+
+    /**
+     * The width fitting whose last girths (table 3.1, French sizes 29 to 42, Brazilian 27 to 40)
+     * the table shows, "" for none.
+     */
+    public String fitting() {
+        return fitting;
+    }
+
+    public void setFitting(String f) {
+        if (!FITTINGS.contains(f)) {
+            throw new IllegalArgumentException("width fitting must be one of " + FITTINGS + ": " + f);
+        }
+        fitting = f;
+    }
+
+    /** The girth of a graded size for the chosen fitting, "" without one or outside table 3.1. */
+    private String girth(double size) {
+        if (fitting.isEmpty()) {
+            return "";
+        }
+        SizeSystem sys;
+        try {
+            sys = SizeSystem.ofId(system);
+        } catch (IllegalArgumentException e) {
+            return "";
+        }
+        OptionalDouble french = org.fresa.grading.LastGirths.frenchSize(sys, size);
+        if (french.isEmpty()) {
+            return "";
+        }
+        OptionalDouble g = org.fresa.grading.LastGirths.girthMm(french.getAsDouble(), fitting);
+        return g.isPresent() ? fmt(g.getAsDouble(), 1) : "";
     }
 
     private static String fmt(double v, int decimals) {
@@ -192,6 +287,7 @@ public final class GradingViewModel {
             for (Contour c : outline) {
                 s = s.withContour("base", PlotScene.Style.OUTLINE, c);
             }
+            s = withHeelElements(s);
             o = originOrEmpty();
         }
         if (o.isPresent()) {
@@ -202,6 +298,27 @@ public final class GradingViewModel {
                     Arc2.circle(c, 2, true)))).withLabel(c.plus(new Vec2(5, 5)), "origin");
         }
         return s;
+    }
+
+    /** The designated heel elements drawn over the base outline, when they read. */
+    private PlotScene withHeelElements(PlotScene s) {
+        if (outline.isEmpty() || heelElements.isBlank()) {
+            return s;
+        }
+        java.util.SortedSet<Integer> heel;
+        try {
+            heel = org.fresa.grading.Coordination.parseElements(heelElements);
+        } catch (IllegalArgumentException e) {
+            return s;
+        }
+        List<org.fresa.geom.Curve2> cs = new ArrayList<>();
+        List<org.fresa.geom.Curve2> all = outline.get(0).curves();
+        for (int i : heel) {
+            if (i <= all.size()) {
+                cs.add(all.get(i - 1));
+            }
+        }
+        return s.with(new PlotScene.Layer("heel elements " + heelElements.trim(), PlotScene.Style.FINISH, cs));
     }
 
     private Optional<Vec2> originOrEmpty() {

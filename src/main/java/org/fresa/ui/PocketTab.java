@@ -25,7 +25,8 @@ import org.fresa.job.JobSettings.PocketSettings;
  * The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC
  * text. It shows the job's pocket settings (a new job's technology and no contour when the job
  * has none); Compute previews the pocket, and its settings become the job's once the planner
- * accepted them. A bad field is marked, with the reason beside Compute.
+ * accepted them. A bad field is marked, with the reason beside Compute. A program that fails the
+ * program check is shown with its failing block marked, and Save program refuses it.
  */
 final class PocketTab implements ModuleTab {
 
@@ -43,9 +44,14 @@ final class PocketTab implements ModuleTab {
     private final JTextField[] tech = new JTextField[PocketViewModel.LABELS.size()];
     private final JComboBox<String> post = new JComboBox<>(PocketViewModel.POSTS.toArray(new String[0]));
     private final JComboBox<String> direction = new JComboBox<>(PocketSettings.DIRECTIONS.toArray(new String[0]));
+    private final JComboBox<String> entry = new JComboBox<>(PocketViewModel.ENTRIES.toArray(new String[0]));
+    private final JTextField entryAngle = new JTextField(8);
+    private final javax.swing.JCheckBox centreCutting = new javax.swing.JCheckBox("Centre-cutting cutter");
     private final JButton run = new JButton("Compute");
+    private final JButton saveProgram = new JButton("Save program...");
     private final JLabel status = new JLabel(" ");
     private final JPanel form = new JPanel();
+    private final JTabbedPane texts = new JTabbedPane();
     private boolean filling;
 
     PocketTab(AppContext ctx) {
@@ -87,11 +93,34 @@ final class PocketTab implements ModuleTab {
         direction.addActionListener(e -> fieldsChanged());
         form.add(dl);
         form.add(direction);
+        JLabel el = new JLabel("Entry (not 7m-compat)");
+        el.setLabelFor(entry);
+        el.setDisplayedMnemonic('E');
+        entry.setName(PocketViewModel.ENTRY);
+        entry.addActionListener(e -> fieldsChanged());
+        form.add(el);
+        form.add(entry);
+        JLabel al = new JLabel(PocketViewModel.ENTRY_ANGLE_LABEL);
+        al.setLabelFor(entryAngle);
+        entryAngle.setName(PocketViewModel.ENTRY_ANGLE);
+        TextChanges.onChange(entryAngle, this::fieldsChanged);
+        form.add(al);
+        form.add(entryAngle);
+        centreCutting.setName(PocketViewModel.CENTRE_CUTTING);
+        centreCutting.setMnemonic('u');
+        centreCutting.addActionListener(e -> fieldsChanged());
+        form.add(new JLabel());
+        form.add(centreCutting);
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
         form.add(run);
-        form.add(new JLabel());
+        saveProgram.setName("pocket-save-program");
+        saveProgram.setMnemonic('S');
+        saveProgram.setToolTipText("Write the computed NC program to a file (a program that fails the check is not"
+                + " written)");
+        saveProgram.addActionListener(e -> saveProgram());
+        form.add(saveProgram);
         // the reason under the form, as wide as it: a long one wraps instead of being cut off
         status.setName("pocket-status");
         status.setBorder(javax.swing.BorderFactory.createEmptyBorder(4, 4, 4, 4));
@@ -100,7 +129,7 @@ final class PocketTab implements ModuleTab {
         nc.setName("pocket-nc");
         report.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, 12));
         nc.setFont(report.getFont());
-        JTabbedPane texts = new JTabbedPane();
+        texts.setName("pocket-texts");
         texts.addTab("Recognition tree", new JScrollPane(report));
         texts.addTab("NC program", new JScrollPane(nc));
         JPanel left = new JPanel(new BorderLayout());
@@ -133,6 +162,9 @@ final class PocketTab implements ModuleTab {
             }
             post.setSelectedItem(model.post());
             direction.setSelectedItem(model.direction());
+            entry.setSelectedItem(model.entry());
+            entryAngle.setText(model.entryAngle());
+            centreCutting.setSelected(model.centreCutting());
         } finally {
             filling = false;
         }
@@ -161,11 +193,15 @@ final class PocketTab implements ModuleTab {
         }
         model.setPost((String) post.getSelectedItem());
         model.setDirection((String) direction.getSelectedItem());
+        model.setEntry((String) entry.getSelectedItem());
+        model.setEntryAngle(entryAngle.getText());
+        model.setCentreCutting(centreCutting.isSelected());
         Map<String, String> problems = model.problems();
         mark(contour, problems);
         for (JTextField f : tech) {
             mark(f, problems);
         }
+        mark(entryAngle, problems);
         run.setEnabled(problems.isEmpty());
         run.setToolTipText(problems.isEmpty() ? "Plan the pocket and show its passes and program"
                 : "Correct the marked field first");
@@ -200,6 +236,42 @@ final class PocketTab implements ModuleTab {
             tip = Tooltips.of("Pocket", l.getText());
         }
         return tip;
+    }
+
+    /** Writes the computed program to a chosen file, unless it fails the program check. */
+    private void saveProgram() {
+        Optional<String> problem = model.saveProblem();
+        if (problem.isPresent()) {
+            say(problem.get(), true);
+            return;
+        }
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.NC_PROGRAM);
+        fc.setDialogTitle("Save NC program");
+        if (fc.showSaveDialog(panel) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        saveProgramTo(FileChoosers.chosen(fc));
+    }
+
+    /** Writes the computed program, checked once more, to the file (a temporary name, then renamed). */
+    void saveProgramTo(Path file) {
+        Optional<String> problem = model.saveProblem();
+        if (problem.isPresent()) {
+            say(problem.get(), true);
+            return;
+        }
+        PocketSettings s = model.settings();
+        String text = model.result().orElseThrow().nc();
+        try {
+            org.fresa.job.ProgramChecks.require(file.getFileName().toString(), text,
+                    org.fresa.job.ProgramChecks.dialect(s.post()), org.fresa.job.ProgramChecks.pocket(s));
+            org.fresa.job.AtomicFiles.writeString(file, text);
+            say("Saved " + file, false);
+        } catch (org.fresa.job.ProgramChecks.RefusedProgram e) {
+            say(e.getMessage(), true);
+        } catch (java.io.IOException e) {
+            say("Cannot save " + file + ": " + e.getMessage(), true);
+        }
     }
 
     private void compute() {
@@ -242,8 +314,11 @@ final class PocketTab implements ModuleTab {
             nc.getHighlighter().removeAllHighlights();
             if (r.get().refusal().isPresent()) {
                 org.fresa.check.Failure f = r.get().refusal().get();
+                // the program's text, with the failing block marked, in front
+                texts.setSelectedIndex(1);
                 ProgramHighlight.line(nc, f.line());
                 say("The program is refused and not written: " + f.message(), true);
+                ctx.tasks().failed("Pocket program check (" + f.rule().name() + ")");
             }
         } else {
             ctx.tasks().failed("Pocket");

@@ -68,6 +68,14 @@ public final class PocketViewModel {
             Pocket.Z_TOP, Pocket.Z_BOTTOM, Pocket.MAX_DEPTH, Pocket.SPINDLE, Pocket.FEED, Pocket.FINISH_FEED);
     /** The key of the contour field in {@link #problems()}. */
     public static final String CONTOUR = "pocket-contour";
+    /** The names of the entry fields: the kind, the angle (a key of {@link #problems()}) and centre-cutting. */
+    public static final String ENTRY = "pocket-entry";
+    public static final String ENTRY_ANGLE = "pocket-entry-angle";
+    public static final String CENTRE_CUTTING = "pocket-centre-cutting";
+    /** The entry field's label. */
+    public static final String ENTRY_ANGLE_LABEL = "Entry angle (deg)";
+    /** The kinds of entry the tab offers, as the job and the command line name them. */
+    public static final List<String> ENTRIES = org.fresa.pocket.EntryRule.Kind.words();
     /** A new job's technology: cavity 01 of the thesis (samples/pocket/jobs.csv); no contour. */
     private static final double[] DEFAULT_TECHNOLOGY = {6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100};
 
@@ -78,6 +86,9 @@ public final class PocketViewModel {
     private final String[] values = new String[DEFAULT_TECHNOLOGY.length];
     private String post = "7m-compat";
     private String direction = "climb";
+    private String entry = "auto";
+    private String entryAngle = ExactDecimal.of(org.fresa.pocket.EntryRule.DEFAULT_ANGLE_DEG);
+    private boolean centreCutting;
 
     public PocketViewModel() {
         for (int i = 0; i < values.length; i++) {
@@ -108,6 +119,9 @@ public final class PocketViewModel {
         }
         post = p.post();
         direction = p.direction();
+        entry = p.entry();
+        entryAngle = ExactDecimal.of(p.entryAngleDeg());
+        centreCutting = p.centreCutting();
     }
 
     public String contourText() {
@@ -148,6 +162,33 @@ public final class PocketViewModel {
         direction = d;
     }
 
+    public String entry() {
+        return entry;
+    }
+
+    public void setEntry(String e) {
+        if (!ENTRIES.contains(e)) {
+            throw new IllegalArgumentException("unknown entry " + e);
+        }
+        entry = e;
+    }
+
+    public String entryAngle() {
+        return entryAngle;
+    }
+
+    public void setEntryAngle(String t) {
+        entryAngle = t.trim();
+    }
+
+    public boolean centreCutting() {
+        return centreCutting;
+    }
+
+    public void setCentreCutting(boolean c) {
+        centreCutting = c;
+    }
+
     /**
      * What is wrong with the typed fields, in the planner's words, by field name ({@link #CONTOUR}
      * or one of {@link #NAMES}); empty when Compute may run.
@@ -170,6 +211,15 @@ public final class PocketViewModel {
                                 : "."));
             }
         }
+        try {
+            double a = Double.parseDouble(entryAngle);
+            if (!Pocket.ENTRY_ANGLE.contains(a)) {
+                out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": " + Pocket.ENTRY_ANGLE.problem(a) + ".");
+            }
+        } catch (NumberFormatException e) {
+            out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": '" + entryAngle + "' is not a number"
+                    + (entryAngle.contains(",") ? " (decimals take a point: " + entryAngle.replace(',', '.') + ")." : "."));
+        }
         return out;
     }
 
@@ -182,10 +232,8 @@ public final class PocketViewModel {
         for (int i = 0; i < v.length; i++) {
             v[i] = Double.parseDouble(values[i]);
         }
-        // the entry the job holds (the tab has no fields for it) goes on with the typed technology
         return Optional.of(new PocketSettings(Path.of(contourText).toAbsolutePath(), v[0], v[1], v[2], v[3], v[4],
-                v[5], v[6], v[7], v[8], post, direction).withEntry(settings.entry(), settings.entryAngleDeg(),
-                settings.centreCutting()));
+                v[5], v[6], v[7], v[8], post, direction).withEntry(entry, Double.parseDouble(entryAngle), centreCutting));
     }
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
@@ -221,8 +269,26 @@ public final class PocketViewModel {
         error = o.error();
     }
 
-    /** Plans the pocket of these settings: touches no view-model state, so any thread may call it. */
-    public static Outcome outcome(PocketSettings settings) {
+    /**
+     * Why the computed program cannot be saved, or empty when it may: there is none yet, or it
+     * fails the program check (it is never written, as Job > Run would not write it).
+     */
+    public Optional<String> saveProblem() {
+        if (result.isEmpty()) {
+            return Optional.of("There is no program to save: press Compute first.");
+        }
+        return result.get().refusal().map(f -> "The program is not saved: it fails the program check at "
+                + f.message());
+    }
+
+    /**
+     * Plans the pocket of these settings: touches no view-model state, so any thread may call it.
+     * A plunge asked for a cutter not said to cut at its centre is planned as asked, so that the
+     * planner sees the block the program check refuses (Job > Run refuses such settings outright).
+     */
+    public static Outcome outcome(PocketSettings checked) {
+        PocketSettings settings = checked.entry().equals("plunge") && !checked.centreCutting()
+                ? checked.withEntry("plunge", checked.entryAngleDeg(), true) : checked;
         try {
             String name = settings.contour().getFileName().toString();
             if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
@@ -230,13 +296,13 @@ public final class PocketViewModel {
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
                     return new Outcome(Optional.of(Result.checked(regionScene(contours, rp), regionReport(contours, rp),
-                            PocketService.regionProgram(rp, settings.post(), name), settings)), Optional.empty());
+                            PocketService.regionProgram(rp, settings.post(), name), checked)), Optional.empty());
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
             String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
                     settings.climb(), settings.entryRule());
-            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, settings)),
+            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, checked)),
                     Optional.empty());
         } catch (CamInputException e) {
             return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));

@@ -132,6 +132,8 @@ final class SoleTab implements ModuleTab {
         JLabel footLabel = labelFor(feet, "sole-foot", "Foot", KeyEvent.VK_T);
         JButton load = Buttons.of("Load job", "sole-load", KeyEvent.VK_L, () -> loadJob());
         JButton show = Buttons.of("Show", null, KeyEvent.VK_S, () -> showSole());
+        JButton block = Buttons.of("Mould block", "sole-block", KeyEvent.VK_B, () -> showBlock());
+        block.setToolTipText("Shows the size's left and right sole where the mould block's equations place them");
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(load);
         top.add(sizeLabel);
@@ -139,6 +141,7 @@ final class SoleTab implements ModuleTab {
         top.add(footLabel);
         top.add(feet);
         top.add(show);
+        top.add(block);
         JLabel outLabel = labelFor(outFolder, "sole-out", "Output folder", KeyEvent.VK_O);
         JButton choose = Buttons.of("...", null, 0, () -> chooseFolder());
         choose.setToolTipText("Choose the output folder");
@@ -357,6 +360,15 @@ final class SoleTab implements ModuleTab {
         vm.selectSize((String) sizes.getSelectedItem());
         vm.selectFoot((Foot) feet.getSelectedItem());
         ctx.tasks().start("Tread of size " + vm.size(), pm -> vm.scene(), plot::show);
+    }
+
+    private void showBlock() {
+        if (sizes.getSelectedItem() == null) {
+            status.setText("Load a sole job first");
+            return;
+        }
+        vm.selectSize((String) sizes.getSelectedItem());
+        ctx.tasks().start("Pair of size " + vm.size() + " in the mould block", pm -> vm.pairScene(), plot::show);
     }
 
     private void chooseFolder() {

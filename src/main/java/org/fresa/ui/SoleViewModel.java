@@ -74,6 +74,12 @@ public final class SoleViewModel {
         if (TreadFigures.isContinuous(macro)) {
             sb.append("continuous: carries on the groove in progress\n");
         }
+        if (TreadFigures.isSpecial(macro)) {
+            sb.append("special design, group ").append(org.fresa.sole.SpecialDesigns.group(macro)).append('\n');
+        }
+        if (TreadFigures.needsDrawing(macro)) {
+            sb.append("outlines from a DXF drawing: the figure's file in the job\n");
+        }
         return sb.toString();
     }
 
@@ -165,6 +171,20 @@ public final class SoleViewModel {
                     PlotScene.Style.WARNING, cs));
         }
         return scene;
+    }
+
+    /**
+     * The selected size's pair in the mould block, as the programs place it (machine frame): the
+     * block's edges, the mirror line, both feet's outlines, treads and cavities; or an empty
+     * scene saying why there is none.
+     */
+    public PlotScene pairScene() {
+        if (plan.isEmpty()) {
+            return PlotScene.empty(problem.isEmpty() ? "No sole plan" : problem);
+        }
+        SoleService.SolePlan p = plan.get();
+        return SoleService.pairScene(p, p.grader().grade(Double.parseDouble(size))).orElseGet(() -> PlotScene.empty(
+                "The job has no mould block: each foot's programs stay in the outline's frame"));
     }
 
     /** The edited job: the loaded one with the placed, moved and edited figures (empty before a load). */
@@ -259,6 +279,10 @@ public final class SoleViewModel {
         }
         if (TreadFigures.isContinuous(macro) || macro.equals("PRIM") || macro.equals("NOVO")) {
             return Optional.of(macro + " carries on a groove started by PRIM or NOVO: it cannot be placed on its own");
+        }
+        if (TreadFigures.needsDrawing(macro)) {
+            return Optional.of(macro + " engraves a DXF drawing's outlines: name the drawing in the job's figure"
+                    + " (file attribute)");
         }
         JobSettings.SoleSettings s = job.get().sole().orElseThrow();
         Optional<String> tool = s.tools().stream().map(JobSettings.SoleTool::id).filter(t -> !t.equals(s.cavityTool()))
@@ -410,7 +434,7 @@ public final class SoleViewModel {
             return Optional.of(e.problem());
         }
         List<JobSettings.SoleFigure> figs = new ArrayList<>(d.figures());
-        figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString()));
+        figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString(), f.drawing()));
         JobSettings.SoleDesign edited = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), d.pattern(),
                 d.count(), d.rows(), d.dxMm(), d.dyMm(), d.rowShiftMm(), d.stepDeg(), d.centerXMm(), d.centerYMm(),
                 d.lead(), figs, d.copies());
@@ -434,9 +458,7 @@ public final class SoleViewModel {
     private Optional<String> apply(List<JobSettings.SoleDesign> ds) {
         Job j = job.orElseThrow();
         JobSettings.SoleSettings s = j.sole().orElseThrow();
-        JobSettings.SoleSettings n = new JobSettings.SoleSettings(s.outline(), s.baseSize(), s.sizes(),
-                s.cavityDepthMm(), s.post(), s.system(), s.originMm(), s.shrinkage(), s.shrinkageMode(),
-                s.treadDepthMm(), s.clearanceMm(), s.marginMm(), s.tools(), ds, s.cavityTool());
+        JobSettings.SoleSettings n = s.withDesigns(ds);
         try {
             plan = Optional.of(SoleService.plan(n, j.name()));
         } catch (CamInputException e) {

@@ -66,6 +66,13 @@ final class Tooltips {
         tip("Pocket", "Post", "The NC dialect written: 7m-compat reproduces the 1988 thesis program's arithmetic");
         tip("Pocket", "Direction (not 7m-compat)", "Milling direction of the passes: climb or conventional"
                 + " (the 7m-compat post keeps the thesis program's own)");
+        tip("Pocket", "Entry (not 7m-compat)", "How the cutter goes down into the material: auto (a helix where it"
+                + " has room, else a zig-zag ramp), helix, ramp, or plunge (straight down: only for a centre-cutting"
+                + " cutter; otherwise the program check refuses the program)");
+        tip("Pocket", PocketViewModel.ENTRY_ANGLE, "Steepest descent of a helix or ramp entry, degrees from the floor"
+                + " (0.5 to 90; 3 for a cutter that does not cut at its centre)");
+        tip("Pocket", PocketViewModel.CENTRE_CUTTING, "The cutter cuts at its centre (a slot drill): it may plunge"
+                + " straight down");
         tip("Cutting", "Process:", "The cutting process: sets the default speeds, pierce and cut senses");
         tip("Cutting", "Lead-in (mm):", "Length of the approach from the pierce point to the contour (mm)");
         tip("Cutting", "Lead-out (mm):", "Length of the move off the contour after the cut (mm)");

@@ -71,4 +71,47 @@ class CoordinationTest {
             }
         }
     }
+
+    /**
+     * Figure 4.4: the planner names the heel's elements (the CONTORNO INFERIOR). On the mould
+     * mouth: elements 1-4 (C P1-P21-P2 .. the line P4-P5) and 18-20 (C P18-P30-P19, the line
+     * P19-P20, C P20-P31-P1). Their points grade as the heel NBC 38, the junctions P5 and P18 with
+     * the forepart included; every other point as ND 37.
+     */
+    @Test
+    void theDesignatedHeelElementsAndTheirJunctionsGradeWithTheHeel() {
+        EscomPattern base = ThesisPatterns.mouldMouth35();
+        Coordination co = Coordination.ofHeelElements(java.util.List.of(1, 2, 3, 4, 18, 19, 20), 3);
+        assertEquals(java.util.Optional.empty(), co.misfit(base));
+        PantographMap fore = PantographMap.of(THESIS, MOUTH.factors(37));
+        PantographMap heel = PantographMap.of(THESIS, MOUTH.factors(co.heelSize(37, 35, SizeSystem.BR)));
+        EscomPattern g = base.graded(n -> co.isHeelPoint(base, n, base.point(n).y()) ? heel : fore);
+        for (String n : java.util.List.of("P1", "P2", "P5", "P18", "P19", "P20", "P21", "P30", "P31")) {
+            assertEquals(heel.apply(base.point(n)), g.point(n), n + " is a heel point");
+        }
+        for (String n : java.util.List.of("P6", "P17", "P24", "P29", "P10")) {
+            assertEquals(fore.apply(base.point(n)), g.point(n), n + " is a forepart point");
+        }
+        // P5 (31, 44) lies ahead of a ball line at 40 mm and P17 (-34.5, 139) far ahead: the
+        // elements, not the distance, decide
+        assertEquals(false, new Coordination(40, 3).isHeel(base.point("P5").y()));
+        org.fresa.geom.Contour c = g.toContour();
+        for (int i = 0; i < c.size(); i++) {
+            assertEquals(0, c.get(i).end().distance(c.get((i + 1) % c.size()).start()), 1e-9);
+        }
+    }
+
+    @Test
+    void heelElementsTheOutlineDoesNotHaveOrNoForepartAreRefused() {
+        EscomPattern base = ThesisPatterns.mouldMouth35();
+        assertEquals("heel element 21 does not exist: the outline has 20 elements",
+                Coordination.ofHeelElements(java.util.List.of(1, 21), 3).misfit(base).orElseThrow());
+        java.util.List<Integer> all = new java.util.ArrayList<>();
+        for (int i = 1; i <= 20; i++) {
+            all.add(i);
+        }
+        assertEquals(true, Coordination.ofHeelElements(all, 3).misfit(base).orElseThrow().contains("every element"));
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> Coordination.ofHeelElements(java.util.List.of(), 3));
+    }
 }

@@ -29,10 +29,12 @@ import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.stepnc.Workpiece;
 import org.fresa.testing.InterpreterCheck;
+import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
@@ -63,48 +65,195 @@ class EntryAngleTest {
         assertTrue(steepest <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, name + ": " + steepest + " deg");
     }
 
+    /**
+     * Every workingstep of the STEP-NC samples but the drills', replayed over the stock: each feed
+     * move that descends into material steeper than the entry angle is either <em>into a pilot</em>
+     * (straight down the axis of a hole a drill of the same program made before, at least half the
+     * cutter's diameter wide, the cutter's axis within the hole's radius less a quarter of its
+     * diameter of the hole's axis, ending no deeper than the drill's tip: example 2's holes as wide
+     * as the 20 mm cutter, opened by a 10 mm drill, as the file's process plan says) or <em>into
+     * material</em>, which no program may have.
+     */
     @ParameterizedTest
-    @ValueSource(strings = {"iso14649-11-example1.stp", "example2.stp"})
+    @CsvSource(delimiter = ';', value = {"iso14649-11-example1.stp; 0; ''",
+        // example 2's eight holes as wide as their cutter, each after its own 10 mm drill: the 20 mm
+        // cutter in 5 steps of 2 mm (4 holes), the 10 mm cutter in 10 steps of 1 mm (4 holes)
+        "example2.stp; 60; 74 124 174 224 529 579 680 730"})
     @InterpreterCheck
-    void stepNcPocketsFacesAndMilledHolesEnterWithinTheEntryAngle(String file, @TempDir Path dir) throws Exception {
+    void stepNcPocketsFacesAndMilledHolesEnterWithinTheEntryAngle(String file, int pilotDescents, String throughPilots,
+            @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
+        Measured m = measure(file, PlanningChoices.DEFAULT, dir);
+        assertTrue(m.measured() > 0, file);
+        assertEquals(List.of(), m.intoMaterial(), file);
+        assertTrue(m.steepestDeg() <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + m.steepestDeg() + " deg");
+        assertEquals(pilotDescents, m.intoPilots().size(), file + ": " + m.intoPilots());
+        assertEquals(throughPilots.strip(), m.enteredThroughPilots().stream().map(String::valueOf)
+                .collect(java.util.stream.Collectors.joining(" ")), file);
+    }
+
+    /** {@code --entry-angle} and {@code --entry} of the STEP-NC commands: no entry into material steeper than asked. */
+    @ParameterizedTest
+    @CsvSource({"iso14649-11-example1.stp, auto, 1.5", "iso14649-11-example1.stp, ramp, 2",
+        "iso14649-11-example1.stp, helix, 5", "example2.stp, auto, 1.5", "example2.stp, ramp, 2"})
+    @InterpreterCheck
+    void stepNcEntriesKeepTheAngleAsked(String file, String kind, double angleDeg, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), Rs274.whyNot());
+        EntryRule asked = new EntryRule(EntryRule.Kind.of(kind).orElseThrow(), angleDeg, false);
+        Measured m = measure(file, new PlanningChoices(false, PlanningChoices.DEFAULT_BREAKTHROUGH_MM, asked), dir);
+        assertTrue(m.measured() > 0, file);
+        assertEquals(List.of(), m.intoMaterial(), file);
+        assertTrue(m.steepestDeg() <= angleDeg + TOLERANCE_DEG, file + " " + kind + " " + angleDeg + ": "
+                + m.steepestDeg() + " deg");
+    }
+
+    /** What the measure finds in a STEP-NC file's programs. */
+    record Measured(int measured, double steepestDeg, List<String> intoMaterial, List<String> intoPilots,
+            java.util.SortedSet<Long> enteredThroughPilots) {
+    }
+
+    static Measured measure(String file, PlanningChoices choices, Path dir) throws Exception {
         StepNcProgram program = StepNcReader.read(Path.of("samples/stepnc", file));
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        double limit = choices.entry().angleDeg();
         Map<Long, MachiningWorkingstep> byId = new HashMap<>();
         program.workingsteps().forEach(ws -> byId.put(ws.instanceId(), ws));
         Predicate<Vec3> stock = stock(program);
+        List<DrilledHole> drilled = new ArrayList<>();
+        List<String> intoMaterial = new ArrayList<>();
+        List<String> intoPilots = new ArrayList<>();
+        java.util.SortedSet<Long> enteredThroughPilots = new java.util.TreeSet<>();
         double steepest = 0;
         int measured = 0;
         for (int i = 0; i < plan.steps().size(); i++) {
             MachiningWorkingstep ws = byId.get(plan.steps().get(i).workingstepInstanceId());
-            if (ws.operation().type().isDrillingType()) {
-                continue; // drills cut at their centre: they go straight down
-            }
             ToolpathSection section = plan.toolpath().sections().get(i);
-            boolean holeOfTheToolsSize = ws.feature().diameterMm().isPresent()
-                    && ws.feature().diameterMm().getAsDouble() <= section.toolDiameterMm() + 1e-6;
             Path out = dir.resolve("ws" + i + ".ngc");
             StringWriter w = new StringWriter();
             NcPosts.byName("linuxcnc").orElseThrow().write(new Toolpath(List.of(section)), "ws" + i, w);
             Files.writeString(out, w.toString());
             Rs274.Result r = Rs274.run(out, section.toolDiameterMm());
             assertEquals(0, r.exitStatus(), Rs274.log(r));
-            Transform3 toLocal = ws.feature().placement().inverse();
             Transform3 toWorld = ws.feature().placement();
-            // material: inside the stock, from the feature's top (z = 0 of its frame) down
-            Predicate<Vec2> material = p -> stock.test(toWorld.applyToPoint(Vec3.of(p, -1e-3)));
-            double a = steepestDeg(r.motions(), toLocal, material, 0, section.toolDiameterMm() / 2);
-            System.out.printf(Locale.ROOT, "[entries] %s %s (%s): steepest descent into material %.2f deg%n", file,
-                    section.label(), ws.feature().type(), a);
-            if (holeOfTheToolsSize) {
-                // a hole no wider than the cutter has room for no helix or ramp: measured, not held to the angle
+            Vec3 axis = toWorld.applyToDirection(Vec3.UNIT_Z).normalized();
+            String label = "ws " + i + " " + section.label() + " #" + ws.instanceId();
+            if (ws.operation().type().isDrillingType()) {
+                // drills cut at their centre: they go straight down, and leave the holes a cutter may enter
+                drilled.addAll(holes(r.motions(), axis, section.toolDiameterMm() / 2, label));
                 continue;
             }
+            Transform3 toLocal = toWorld.inverse();
+            // material: inside the stock, from the feature's top (z = 0 of its frame) down
+            Predicate<Vec2> material = p -> stock.test(toWorld.applyToPoint(Vec3.of(p, -1e-3)));
+            double radius = section.toolDiameterMm() / 2;
+            double a = 0;
+            int pilots = 0;
+            for (Descent d : descents(r.motions(), toLocal, material, 0, radius)) {
+                if (d.deg() <= limit + TOLERANCE_DEG) {
+                    a = Math.max(a, d.deg());
+                    continue;
+                }
+                Optional<String> pilot = drilled.stream().map(h -> h.admits(d, axis, radius)).flatMap(Optional::stream)
+                        .findFirst();
+                String what = String.format(Locale.ROOT, "%s %s: %.2f deg from %s to %s", file, label, d.deg(),
+                        d.from(), d.to());
+                if (pilot.isPresent()) {
+                    intoPilots.add(what + " into " + pilot.get());
+                    enteredThroughPilots.add(ws.instanceId());
+                    pilots++;
+                } else {
+                    intoMaterial.add(what);
+                    a = Math.max(a, d.deg());
+                }
+            }
+            System.out.printf(Locale.ROOT, "[entries] %s %s (%s): steepest descent into material %.2f deg, %d into a pilot%n",
+                    file, section.label(), ws.feature().type(), a, pilots);
             steepest = Math.max(steepest, a);
             measured++;
         }
-        assertTrue(measured > 0, file);
-        assertTrue(steepest <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + steepest + " deg");
+        intoPilots.forEach(s -> System.out.println("[entries] into a pilot: " + s));
+        intoMaterial.forEach(s -> System.out.println("[entries] INTO MATERIAL: " + s));
+        System.out.printf(Locale.ROOT, "[entries] %s (%s %.1f deg): %d workingsteps measured, steepest into material %.2f deg, "
+                + "%d steep descents into material, %d into pilot holes%n", file, choices.entry().kind().word(), limit, measured, steepest, intoMaterial.size(),
+                intoPilots.size());
+        return new Measured(measured, steepest, intoMaterial, intoPilots, enteredThroughPilots);
+    }
+
+    @Test
+    void aPlungeIsIntoAPilotOnlyOnItsAxisNoDeeperThanTheDrillsTipAndIntoAWideEnoughHole() {
+        DrilledHole pilot = new DrilledHole(new Vec3(20, 20, 190), Vec3.UNIT_Z, 5, "a 10 mm drill");
+        Descent onAxis = new Descent(new Vec3(20, 20, 199), new Vec3(20, 20, 190), 90);
+        assertTrue(pilot.admits(onAxis, Vec3.UNIT_Z, 10).isPresent());
+        // the 20 mm cutter's core, up to 5 mm about its axis, must stay over the 10 mm hole: no offset at all
+        assertTrue(pilot.admits(new Descent(new Vec3(20.5, 20, 199), new Vec3(20.5, 20, 195), 90), Vec3.UNIT_Z, 10)
+                .isEmpty());
+        // below the drill's tip
+        assertTrue(pilot.admits(new Descent(new Vec3(20, 20, 192), new Vec3(20, 20, 189), 90), Vec3.UNIT_Z, 10)
+                .isEmpty());
+        // a 24 mm cutter's core is wider than the 10 mm hole
+        assertTrue(pilot.admits(onAxis, Vec3.UNIT_Z, 12).isEmpty());
+        // a hole drilled along another axis
+        assertTrue(pilot.admits(onAxis, Vec3.UNIT_X, 10).isEmpty());
+        // not straight down
+        assertTrue(pilot.admits(new Descent(new Vec3(20, 20, 199), new Vec3(20, 20.2, 190), 88.7), Vec3.UNIT_Z, 10)
+                .isEmpty());
+    }
+
+    /** A steep descent into material: where it starts and ends (program frame) and its slope. */
+    record Descent(Vec3 from, Vec3 to, double deg) {
+    }
+
+    /**
+     * A hole a drill made going straight down its axis: the conditions under which a cutter that
+     * does not cut at its centre may follow it down, stated here independently of the program check.
+     */
+    record DrilledHole(Vec3 tip, Vec3 axis, double radiusMm, String by) {
+
+        /** The last written digit of the programs. */
+        static final double CLEAR_MM = 1e-3;
+
+        /** Why the descent is into this hole, or empty when it is not. */
+        Optional<String> admits(Descent d, Vec3 cutterAxis, double cutterRadiusMm) {
+            Vec3 move = d.to().minus(d.from());
+            double along = move.dot(axis);
+            boolean straightDown = along < 0 && move.minus(axis.times(along)).norm() <= CLEAR_MM
+                    && cutterAxis.dot(axis) > 1 - 1e-9;
+            boolean wideEnough = 2 * radiusMm >= cutterRadiusMm - 1e-9; // the hole at least half the cutter's diameter
+            double reach = radiusMm - cutterRadiusMm / 2 + CLEAR_MM; // hole's radius less a quarter of the cutter's diameter
+            double off = Math.max(off(d.from()), off(d.to()));
+            double belowTip = -d.to().minus(tip).dot(axis);
+            if (!(straightDown && wideEnough && off <= reach && belowTip <= CLEAR_MM)) {
+                return Optional.empty();
+            }
+            return Optional.of(String.format(Locale.ROOT,
+                    "the %.1f mm hole %s drilled to %s (cutter %.1f mm, %.3f mm off its axis of %.3f allowed, %.3f mm above its tip)",
+                    2 * radiusMm, by, tip, 2 * cutterRadiusMm, off, reach - CLEAR_MM, -belowTip));
+        }
+
+        private double off(Vec3 p) {
+            Vec3 d = p.minus(tip);
+            return d.minus(axis.times(d.dot(axis))).norm();
+        }
+    }
+
+    /** The holes a drilling section's straight-down feed moves leave: the tip of each. */
+    private static List<DrilledHole> holes(List<Rs274.Canon> motions, Vec3 axis, double radiusMm, String by) {
+        List<DrilledHole> out = new ArrayList<>();
+        Vec3 at = null;
+        for (Rs274.Canon c : motions) {
+            if (c.kind().equals("dwell")) {
+                continue;
+            }
+            if (at != null && c.kind().equals("feed")) {
+                Vec3 d = c.end().minus(at);
+                double along = d.dot(axis);
+                if (along < 0 && d.minus(axis.times(along)).norm() <= DrilledHole.CLEAR_MM) {
+                    out.add(new DrilledHole(c.end(), axis, radiusMm, by));
+                }
+            }
+            at = c.end();
+        }
+        return out;
     }
 
     @Test
@@ -150,10 +299,17 @@ class EntryAngleTest {
      */
     static double steepestDeg(List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ,
             double toolRadiusMm) {
+        return descents(motions, toLocal, material, topZ, toolRadiusMm).stream().mapToDouble(Descent::deg).max()
+                .orElse(0);
+    }
+
+    /** Every descending feed move into material, with its slope (deg). */
+    static List<Descent> descents(List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ,
+            double toolRadiusMm) {
+        List<Descent> out = new ArrayList<>();
         double res = Math.max(0.1, toolRadiusMm / 8);
         Map<Long, Double> cut = new HashMap<>();
         Vec3 at = null;
-        double steepest = 0;
         for (Rs274.Canon c : motions) {
             if (c.kind().equals("dwell")) {
                 continue;
@@ -194,11 +350,11 @@ class EntryAngleTest {
                 }
             }
             if (intoMaterial && drop > 1e-4) {
-                steepest = Math.max(steepest, Math.toDegrees(Math.atan2(drop, across)));
+                out.add(new Descent(at, c.end(), Math.toDegrees(Math.atan2(drop, across))));
             }
             at = c.end();
         }
-        return steepest;
+        return out;
     }
 
     /** Points along a move, at most res apart, the first its start. */

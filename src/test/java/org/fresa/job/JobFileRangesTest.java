@@ -86,6 +86,15 @@ class JobFileRangesTest {
         a.add(new Attribute(sole, "design", Sole.DX, j -> j.sole().get().designs().get(0).dxMm()));
         a.add(new Attribute(sole, "design", Sole.STEP, j -> j.sole().get().designs().get(0).stepDeg()));
         a.add(new Attribute(sole, "design", Sole.CENTER_Y, j -> j.sole().get().designs().get(0).centerYMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_D, j -> j.sole().get().block().get().dMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_DLM, j -> j.sole().get().block().get().dlmMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_E, j -> j.sole().get().block().get().eMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_S, j -> j.sole().get().block().get().sMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_CM, j -> j.sole().get().block().get().cmMm()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_CP, j -> j.sole().get().block().get().cpMm().getAsDouble()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_DPI, j -> j.sole().get().block().get().dpiMm().getAsDouble()));
+        a.add(new Attribute(sole, "block", Sole.BLOCK_XTANP,
+                j -> j.sole().get().block().get().xtanpMm().getAsDouble()));
         return a;
     }
 

@@ -66,4 +66,25 @@ class ProgramChecksTest {
         }
         assertFalse(Files.list(out).anyMatch(p -> p.getFileName().toString().startsWith(AtomicFiles.TEMP_PREFIX)));
     }
+
+    /**
+     * Every post's golden programs (the sample mixed and drilling toolpaths of the post tests,
+     * src/test/resources/org/fresa/post) pass the check's words and spindle rules, their tools taken
+     * as drills (the samples state no stock): no post writes a word out of range or a cut with the
+     * spindle stopped.
+     */
+    @Test
+    void everyPostsGoldenProgramsPassTheCheck() throws Exception {
+        int checked = 0;
+        try (var files = Files.list(Path.of("src/test/resources/org/fresa/post"))) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".nc")).sorted().toList()) {
+                String post = f.getFileName().toString().replaceAll("^[a-z]+\\.|\\.nc$", "");
+                var result = ProgramCheck.of(Files.readString(f), ProgramChecks.dialect(post),
+                        org.fresa.check.Limits.milling().withOtherTools(org.fresa.check.ToolLimits.drill()));
+                assertTrue(result.ok(), f + ": " + result.failure());
+                checked++;
+            }
+        }
+        assertEquals(8, checked);
+    }
 }

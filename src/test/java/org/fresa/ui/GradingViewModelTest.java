@@ -43,6 +43,46 @@ class GradingViewModelTest {
     }
 
     @Test
+    void aWidthFittingShowsTheLastGirthsOfTable31() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setResult(vm.grade());
+        int girth = GradingViewModel.COLUMNS.indexOf("Last girth (mm)");
+        assertEquals("", vm.tableRows().get(0).get(girth), "no fitting chosen");
+        assertEquals(List.of("", "A", "B", "C", "D", "E", "F", "G", "H"), GradingViewModel.FITTINGS);
+        vm.setFitting("D");
+        List<List<String>> rows = vm.tableRows();
+        // Brazilian 36 is French 38: fitting D 210.0 mm; Brazilian 40 is French 42: 227.0; 41 is beyond the table
+        assertAll(() -> assertEquals("36", rows.get(0).get(0)), () -> assertEquals("210.0", rows.get(0).get(girth)),
+                () -> assertEquals("40", rows.get(4).get(0)), () -> assertEquals("227.0", rows.get(4).get(girth)),
+                () -> assertEquals("", rows.get(5).get(girth)));
+        assertThrows(IllegalArgumentException.class, () -> vm.setFitting("K"));
+    }
+
+    @Test
+    void designatedHeelElementsAreDrawnAndGoIntoTheJob() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        vm.openOutline(SOLE);
+        vm.setHeelElements("1,5");
+        vm.setHeelGroup("3");
+        PlotScene s = vm.scene();
+        assertEquals(2, s.layers().stream().filter(l -> l.name().equals("heel elements 1,5")).findFirst()
+                .orElseThrow().curves().size());
+        var job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.GRADE));
+        var h = job.grading().orElseThrow().coordination().orElseThrow();
+        assertAll(() -> assertEquals("1,5", h.heelElements()), () -> assertEquals(3, h.groupSize()));
+        GradingViewModel again = new GradingViewModel();
+        again.load(job);
+        assertEquals("1,5", again.heelElements());
+        // graded: 42 to 44 share the heel of 43
+        GradingResult r = vm.grade();
+        assertEquals(43, r.sizes().get(r.sizes().size() - 1).heelSize().getAsDouble(), 0);
+        vm.setHeelElements("1,x");
+        CamInputException e = assertThrows(CamInputException.class, vm::settings);
+        assertTrue(e.getMessage().contains("Heel elements"), e.getMessage());
+    }
+
+    @Test
     void aPickedOriginIsUsedAndClearsTheLastResult() throws Exception {
         GradingViewModel vm = new GradingViewModel();
         vm.openOutline(SOLE);

@@ -63,4 +63,43 @@ class PocketViewModelTest {
     private static long words(String nc, String word) {
         return java.util.regex.Pattern.compile("\\b" + word + "\\b").matcher(nc).results().count();
     }
+
+    @Test
+    void theEntryFieldsAreBoundToTheJobsPocketAndTheAngleIsChecked() {
+        PocketViewModel m = new PocketViewModel();
+        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET).withPocket(new PocketSettings(
+                Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, "linuxcnc")
+                .withEntry("ramp", 2.5, true)));
+        assertEquals("ramp", m.entry());
+        assertEquals("2.5", m.entryAngle());
+        assertTrue(m.centreCutting());
+        m.setEntryAngle("95");
+        assertEquals("Entry angle (deg): expected a number from 0.5 to 90 deg, found 95.",
+                m.problems().get(PocketViewModel.ENTRY_ANGLE));
+        assertTrue(m.typedSettings().isEmpty());
+        m.setEntryAngle("1.5");
+        m.setEntry("helix");
+        m.setCentreCutting(false);
+        PocketSettings s = m.typedSettings().orElseThrow();
+        assertEquals("helix", s.entry());
+        assertEquals(1.5, s.entryAngleDeg());
+        assertTrue(!s.centreCutting());
+    }
+
+    @Test
+    void aPlungeOfACutterNotCuttingAtItsCentreIsPlannedAndRefusedByTheCheckAndCannotBeSaved() {
+        PocketViewModel m = new PocketViewModel();
+        assertTrue(m.saveProblem().orElseThrow().contains("press Compute"));
+        PocketSettings plunge = new PocketSettings(Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200,
+                290, 100, "linuxcnc").withEntry("plunge", 3, false);
+        m.setSettings(plunge);
+        m.compute();
+        org.fresa.check.Failure f = m.result().orElseThrow().refusal().orElseThrow();
+        assertEquals("entry angle", f.rule().name());
+        assertTrue(m.saveProblem().orElseThrow().startsWith("The program is not saved: it fails the program check at"));
+        m.setSettings(plunge.withEntry("plunge", 3, true));
+        m.compute();
+        assertTrue(m.result().orElseThrow().refusal().isEmpty());
+        assertTrue(m.saveProblem().isEmpty());
+    }
 }

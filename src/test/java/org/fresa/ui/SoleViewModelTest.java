@@ -33,11 +33,16 @@ class SoleViewModelTest {
     @Test
     void everyMacroOfTheLibraryHasAPreviewOfItsThesisCall() {
         SoleViewModel vm = new SoleViewModel();
-        assertEquals(18, vm.macros().size());
+        assertEquals(18 + 5, vm.macros().size(), "the thesis's 18 and the special designs F-J");
         for (String m : vm.macros()) {
             vm.selectMacro(m);
             assertTrue(vm.parametersText().startsWith(m), m);
             PlotScene s = vm.preview();
+            if (m.equals("LOGO")) {
+                // its outlines come from the job's drawing: the library says so instead of a preview
+                assertTrue(s.title().contains("drawing") && vm.parametersText().contains("group J"), s.title());
+                continue;
+            }
             assertEquals(m, s.title());
             boolean aux = m.equals("PRIM") || m.equals("NOVO");
             assertEquals(aux, s.layers().get(0).curves().isEmpty(), m);
@@ -68,6 +73,35 @@ class SoleViewModelTest {
     }
 
     private static final double EPS = 1e-6;
+
+    @Test
+    void theMouldBlockViewShowsThePairWhereTheEquationsPutIt() throws Exception {
+        SoleViewModel vm = sample();
+        PlotScene s = vm.pairScene();
+        assertTrue(s.title().contains("right ZP (296.200, 77.880)") && s.title().contains("left ZP (153.800, 77.880)"),
+                s.title());
+        Box2 right = bounds(s, "right outline");
+        Box2 left = bounds(s, "left outline");
+        // the patterns' inner tangents stand D = 20 apart about x = DLM + E = 225, widened by the
+        // job's rounded XTANP 60 against the outline's 59.72 (times 1.02 on each side)
+        double gap = 20 + 2 * (60 - 59.723) * 1.02;
+        assertEquals(gap, right.minX() - left.maxX(), 0.02);
+        assertEquals(450, right.minX() + left.maxX(), 1e-6, "mirror images about x = 225");
+        // CM 350 from S 11, the pattern of 275.4 mm centred: margins (350 - 275.4) / 2 = 37.3 at both ends
+        assertEquals(11 + (350 - 275.4) / 2, right.minY(), 0.02);
+        Box2 block = bounds(s, "block edges y = S, S + CM; mirror line x = DLM + E");
+        assertEquals(11, block.minY(), 1e-9);
+        assertEquals(361, block.maxY(), 1e-9);
+        assertTrue(bounds(s, "left tread").width() > 50 && bounds(s, "left tread").maxX() < 225, "the tread is drawn, left of the mirror line");
+    }
+
+    private static Box2 bounds(PlotScene s, String layer) {
+        Box2 b = null;
+        for (Curve2 c : s.layers().stream().filter(l -> l.name().equals(layer)).findFirst().orElseThrow().curves()) {
+            b = b == null ? c.bounds() : b.union(c.bounds());
+        }
+        return b;
+    }
 
     private static SoleViewModel sample() throws Exception {
         SoleViewModel vm = new SoleViewModel();

@@ -14,6 +14,7 @@ import org.fresa.job.TaskOutcome;
 import org.fresa.model.Placement;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -76,6 +77,9 @@ final class RobotCommand implements Callable<Integer> {
                     + " default ${DEFAULT-VALUE} mm")
     double breakthroughMm;
 
+    @Mixin
+    StepNcEntryOptions entries = new StepNcEntryOptions();
+
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
@@ -85,7 +89,7 @@ final class RobotCommand implements Callable<Integer> {
             Placement piece = tablePiece == null ? Placement.ORIGIN
                     : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
-                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm));
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule());
             RobotTools.Choice tool = new RobotTools.Choice(
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
                     toolLength == null ? OptionalDouble.empty()

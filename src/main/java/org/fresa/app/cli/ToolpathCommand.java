@@ -6,6 +6,7 @@ import org.fresa.job.SettingRanges;
 import org.fresa.job.ToolpathService;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -42,12 +43,15 @@ final class ToolpathCommand implements Callable<Integer> {
                     + " default ${DEFAULT-VALUE} mm")
     double breakthroughMm;
 
+    @Mixin
+    StepNcEntryOptions entries = new StepNcEntryOptions();
+
     @Override
     public Integer call() {
         java.io.PrintWriter o = spec.commandLine().getOut();
         return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
-                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm));
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule());
             return CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, choices, folder, progress));
         });
     }
