@@ -77,7 +77,7 @@ public final class JobSettings {
      *     each STEP-NC tool's own
      */
     public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
-            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
+            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm, TablePlacing placing) {
         public static final List<String> DEFAULT_FORMATS = List.of("csv", "xml", "png");
 
         public RobotSettings {
@@ -87,6 +87,13 @@ public final class JobSettings {
             formats = List.copyOf(formats);
             Objects.requireNonNull(spindle, "spindle");
             Objects.requireNonNull(toolLengthMm, "toolLengthMm");
+            Objects.requireNonNull(placing, "placing");
+        }
+
+        /** The robot -> table placement as given. */
+        public RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+                java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
+            this(robot, robotTable, tablePiece, formats, spindle, toolLengthMm, TablePlacing.GIVEN);
         }
 
         /** A cell with no spindle or tool length given. */

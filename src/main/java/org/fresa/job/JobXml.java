@@ -227,7 +227,8 @@ public final class JobXml {
                     r.getSpindle() == null ? java.util.Optional.empty()
                             : java.util.Optional.of(SettingRanges.Robot.requireSpindle(placement(r.getSpindle()))),
                     r.getToolLengthMm() == null ? OptionalDouble.empty()
-                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm()))));
+                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm())),
+                    "auto".equals(r.getPlace()) ? TablePlacing.AUTO : TablePlacing.GIVEN));
         }
         PocketType p = x.getPocket();
         if (p != null) {
@@ -462,6 +463,9 @@ public final class JobXml {
             r.spindle().ifPresent(sp -> t.setSpindle(placement(sp)));
             if (r.toolLengthMm().isPresent()) {
                 t.setToolLengthMm(r.toolLengthMm().getAsDouble());
+            }
+            if (r.placing() != TablePlacing.GIVEN) {
+                t.setPlace(r.placing().id());
             }
             x.setRobot(t);
         });

@@ -205,6 +205,12 @@ public final class RobotTrajectoryService {
      */
     public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits)
             throws IOException {
+        return write(solved, programName, out, limits, Map.of());
+    }
+
+    /** As above, with more entries for summary.json (the placement search's). */
+    public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits,
+            Map<String, Object> moreSummary) throws IOException {
         Request req = solved.request();
         TrajectorySolver.Result r = solved.result();
         out.create();
@@ -225,6 +231,7 @@ public final class RobotTrajectoryService {
         }
         Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
         refused.ifPresent(f -> summary.put("program_refused", f.message()));
+        summary.putAll(moreSummary);
         out.writeString("summary.json", Json.writePretty(summary));
         List<String> problems = new ArrayList<>(r.notes());
         int exit = 0;

@@ -48,6 +48,7 @@ final class PositionTab implements ModuleTab {
     private final JTextField[] tablePiece = new JTextField[PositionViewModel.TABLE_PIECE.length];
     private final JLabel messages = new JLabel(" ");
     private final JButton compute = new JButton("Compute");
+    private final JButton placeAuto = new JButton("Place automatically");
     private final JSlider replay = new JSlider(0, 0, 0);
     private final JLabel pointLabel = new JLabel(" ");
     private final JTextArea summary = new JTextArea(8, 26);
@@ -73,10 +74,15 @@ final class PositionTab implements ModuleTab {
         compute.setName("position-compute");
         compute.setMnemonic(KeyEvent.VK_C);
         compute.addActionListener(e -> compute());
+        placeAuto.setName("position-place-auto");
+        placeAuto.setMnemonic(KeyEvent.VK_L);
+        placeAuto.addActionListener(e -> placeAutomatically());
+        placeAuto.setToolTipText(Tooltips.of("Position", "position-place-auto"));
         messages.setName("position-messages");
         messages.setForeground(new Color(180, 0, 0));
         JPanel actions = new JPanel(new FlowLayout(FlowLayout.LEFT));
         actions.add(compute);
+        actions.add(placeAuto);
         actions.add(messages);
         JPanel top = new JPanel();
         top.setLayout(new BoxLayout(top, BoxLayout.Y_AXIS));
@@ -264,6 +270,7 @@ final class PositionTab implements ModuleTab {
             }
         }
         compute.setEnabled(problems.isEmpty());
+        placeAuto.setEnabled(problems.isEmpty());
         cell.repaint();
         return problems.isEmpty();
     }
@@ -311,6 +318,42 @@ final class PositionTab implements ModuleTab {
                     runs.set(new RobotRunModel.Run(solved, name));
                     showCharts(charted.charts(), charted.joints(), charted.error());
                     showResult();
+                });
+    }
+
+    /**
+     * Searches, in the background, the robot -> table placement that reaches every target of the
+     * part with the largest joint-limit margin ({@code fresa robot --place auto}) and puts it into
+     * the job's placement fields; says which workingsteps are out of reach when there is none.
+     */
+    void placeAutomatically() {
+        if (!validateFields()) {
+            return;
+        }
+        var stepnc = ctx.model().job().stepnc();
+        if (stepnc.isEmpty()) {
+            Dialogs.error(ctx.owner(), "Place automatically", "No STEP-NC file: open one in the STEP-NC tab first.");
+            return;
+        }
+        Path file = stepnc.get().file();
+        ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
+        int generation = ctx.model().generation();
+        ctx.tasks().start("Searching the table placement for " + r.robot(),
+                progress -> org.fresa.job.AutoPlacement.search(file, r.robot(), r.tablePiece(),
+                        new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), progress),
+                outcome -> {
+                    if (generation != ctx.model().generation()) {
+                        return;
+                    }
+                    if (outcome.found()) {
+                        // the fields follow the job (its listener loads them)
+                        ctx.model().setJob(PositionViewModel.withRobotTable(ctx.model().job(), outcome.robotTable()));
+                        messages.setText(" ");
+                        summary.setText(outcome.sentence());
+                    } else {
+                        Dialogs.info(ctx.owner(), "Place automatically", outcome.sentence());
+                    }
                 });
     }
 

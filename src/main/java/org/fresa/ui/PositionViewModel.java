@@ -138,7 +138,15 @@ final class PositionViewModel {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
         return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
-                old.formats(), old.spindle(), old.toolLengthMm()));
+                old.formats(), old.spindle(), old.toolLengthMm(), old.placing()));
+    }
+
+    /** The job with this robot -> table placement (the placement search's), all else kept. */
+    static Job withRobotTable(Job job, Placement robotTable) {
+        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
+                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTable, old.tablePiece(), old.formats(),
+                old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
     /**

@@ -586,7 +586,7 @@ final class RobotViewModel {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
         return job.withRobot(new JobSettings.RobotSettings(choice, old.robotTable(), old.tablePiece(), old.formats(),
-                old.spindle(), old.toolLengthMm()));
+                old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
     /** The robot a job names, if it differs from the one shown. */

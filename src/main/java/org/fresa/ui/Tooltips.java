@@ -45,6 +45,8 @@ final class Tooltips {
         for (int i = 0; i < tpKeys.length; i++) {
             tip("Position", "position-tp-" + tpKeys[i], "Table -> piece: " + tp[i]);
         }
+        tip("Position", "position-place-auto", "Searches the robot -> table placement (X, Y, Z, RZ) that reaches every"
+                + " target with the largest joint-limit margin, or says which workingsteps are out of reach (Alt+L)");
         tip("Position", "position-replay", "The trajectory point shown in the cell view and marked in the plots");
         tip("Robot", "robot-choice", "A built-in robot whose Denavit-Hartenberg table and limits fill the editor");
         tip("Robot", "robot-dh", "Denavit-Hartenberg table, one row per joint: theta and alpha in degrees, d and a in"

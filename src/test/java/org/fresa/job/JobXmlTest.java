@@ -79,6 +79,17 @@ class JobXmlTest {
     }
 
     @Test
+    void thePlacementSearchIsKept() throws Exception {
+        Job job = Job.empty(JobTask.ROBOT).withRobot(new RobotSettings("tricept806", Placement.ORIGIN,
+                new Placement(0, 10, 0, 0, 0, 0), List.of("csv"), Optional.empty(), OptionalDouble.empty(),
+                TablePlacing.AUTO));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertTrue(Files.readString(file).contains("place=\"auto\""));
+        assertEquals(job, JobXml.read(file));
+    }
+
+    @Test
     void aToolLengthOutOfRangeIsRefused() throws Exception {
         Path file = dir.resolve("bad.xml");
         Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"robot\">"

@@ -9,6 +9,8 @@ import org.fresa.job.RobotTools;
 import org.fresa.job.SettingRanges;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTrajectoryService;
+import org.fresa.job.TablePlacing;
+import org.fresa.job.TaskOutcome;
 import org.fresa.model.Placement;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
@@ -53,6 +55,11 @@ final class RobotCommand implements Callable<Integer> {
                     + " tools'; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
+    @Option(names = "--place", paramLabel = "auto",
+            description = "auto: search the table placement (X, Y, Z, RZ of --robot-table) that reaches every target"
+                    + " with the largest joint-limit margin; exit 1 naming the workingsteps out of reach when none does")
+    String place;
+
     @Option(names = "--formats", paramLabel = "LIST", defaultValue = "csv,xml,png",
             description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
     String formats;
@@ -93,8 +100,15 @@ final class RobotCommand implements Callable<Integer> {
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
                     toolLength == null ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
-            return CliSupport.intoFolder(out, folder -> RobotService.run(
-                    new RobotService.Settings(file, robot, table, piece, fmts, choices, tool), folder, progress));
+            TablePlacing placing = place == null ? TablePlacing.GIVEN : TablePlacing.parse("--place", place);
+            TaskOutcome o = CliSupport.intoFolder(out, folder -> RobotService.run(
+                    new RobotService.Settings(file, robot, table, piece, fmts, choices, tool, placing), folder, progress));
+            if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
+                // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
+                TerminalProgress.clear(progress);
+                spec.commandLine().getOut().println(m.get("what"));
+            }
+            return o;
         });
     }
 }
