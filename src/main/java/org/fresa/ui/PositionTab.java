@@ -61,6 +61,12 @@ final class PositionTab implements ModuleTab {
     private final OffThreadChartPanel errorChart = chartPanel(() -> picture(false));
     private boolean loading;
     private String drawnRobot = "";
+    private final JLabel reach = new JLabel(" ");
+    private final transient LiveReachability live = new LiveReachability(this::showLive, this::liveFailed);
+    // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
+    private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
+    private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
+    private long plotAskedNanos = -1;
 
     PositionTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -78,10 +84,16 @@ final class PositionTab implements ModuleTab {
         JPanel actions = new JPanel(new FlowLayout(FlowLayout.LEFT));
         actions.add(compute);
         actions.add(messages);
+        reach.setName("position-reach");
+        reach.setToolTipText("Which targets the robot reaches at these placements, worked out as you type"
+                + " (one solution per target; Compute solves the trajectory with its relinks)");
+        JPanel reachRow = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 0));
+        reachRow.add(reach);
         JPanel top = new JPanel();
         top.setLayout(new BoxLayout(top, BoxLayout.Y_AXIS));
         top.add(fields);
         top.add(actions);
+        top.add(reachRow);
 
         replay.setName("position-replay");
         replay.setEnabled(false);
@@ -119,6 +131,8 @@ final class PositionTab implements ModuleTab {
         results.addTab("Summary", summaryPanel);
         results.setMnemonicAt(2, KeyEvent.VK_M);
         results.setPreferredSize(new java.awt.Dimension(430, 420));
+        jointsChart.onDrawn(this::plotDrawn);
+        errorChart.onDrawn(this::plotDrawn);
 
         JSplitPane views = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, cell, results);
         views.setResizeWeight(0.6);
@@ -211,6 +225,7 @@ final class PositionTab implements ModuleTab {
 
     /** New or Open: the new job's placements (or none), no trajectory. */
     private void documentReplaced() {
+        live.forget();
         vm.clearResult();
         charts = null;
         jointsChart.setChart(null);
@@ -264,8 +279,75 @@ final class PositionTab implements ModuleTab {
             }
         }
         compute.setEnabled(problems.isEmpty());
+        if (problems.isEmpty()) {
+            requestLive();
+        }
         cell.repaint();
         return problems.isEmpty();
+    }
+
+    /** The live reachability's inputs now: the job's STEP-NC file, robot and tool, the fields' placements. */
+    private java.util.Optional<LiveReachability.Inputs> liveInputs() {
+        var stepnc = ctx.model().job().stepnc();
+        if (stepnc.isEmpty() || !vm.problems().isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(new JobSettings.RobotSettings("irb140",
+                org.fresa.model.Placement.ORIGIN, org.fresa.model.Placement.ORIGIN,
+                JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return java.util.Optional.of(new LiveReachability.Inputs(stepnc.get().file(), r.robot(),
+                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), vm.robotTablePlacement(),
+                vm.tablePiecePlacement(), r.formats()));
+    }
+
+    /** Asks which targets are reached at the placements shown (worked out in the background). */
+    private void requestLive() {
+        var in = liveInputs();
+        if (in.isEmpty()) {
+            if (ctx.model().job().stepnc().isEmpty()) {
+                reach.setText("Open a STEP-NC file: the targets' reach is then shown as you type.");
+            }
+            return;
+        }
+        live.request(in.get());
+    }
+
+    /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
+    private void showLive(LiveReachability.Answer a) {
+        vm.setLive(a.solved(), a.scene(), a.spindle());
+        reach.setForeground(a.solved().result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
+        reach.setText(vm.reachLine());
+        showCharts(a.charts(), a.joints(), a.errors());
+        showResult();
+        // painted now, so that the time measured is until the view shows the new reach
+        cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
+        viewLatenciesMs.add((System.nanoTime() - a.askedNanos()) / 1e6);
+        plotAskedNanos = a.askedNanos();
+    }
+
+    private void liveFailed(String message) {
+        reach.setForeground(CellView.UNREACHABLE);
+        reach.setText("Reach not known: " + message);
+    }
+
+    /** A plot image arrived: the first one up to date after a live answer ends its measurement. */
+    private void plotDrawn() {
+        OffThreadChartPanel shown = results.getSelectedComponent() == jointsChart ? jointsChart
+                : results.getSelectedComponent() == errorChart ? errorChart : null;
+        if (plotAskedNanos >= 0 && shown != null && shown.isUpToDate()) {
+            plotLatenciesMs.add((System.nanoTime() - plotAskedNanos) / 1e6);
+            plotAskedNanos = -1;
+        }
+    }
+
+    /** The times (ms) from each field change to the 3D view painted with its reachability. */
+    java.util.List<Double> viewLatenciesMs() {
+        return java.util.List.copyOf(viewLatenciesMs);
+    }
+
+    /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
+    java.util.List<Double> plotLatenciesMs() {
+        return java.util.List.copyOf(plotLatenciesMs);
     }
 
     private static void mark(JTextField[] fs, String prefix, Map<String, String> problems) {
@@ -294,20 +376,33 @@ final class PositionTab implements ModuleTab {
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
         java.util.List<String> formats = r.formats();
+        // Compute answers for these fields: a live answer still on its way would only hide it
+        var asked = liveInputs();
+        asked.ifPresent(live::answeredBy);
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
-            RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
-                    r.tablePiece(), formats, new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
-                    progress);
+            PositionViewModel.Planned planned = PositionViewModel.plan(file, r.robot(),
+                    new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), progress);
+            RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
+                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
             progress.progress(-1, "preparing the plots");
             TrajectoryCharts c = TrajectoryCharts.of(solved);
-            return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));
+            return new Charted(solved, c, c.joints(1), c.errors(1),
+                    PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
+                    planned.spindle());
         }, charted -> {
                     if (generation != ctx.model().generation()) {
                         return;
                     }
                     RobotTrajectoryService.Solved solved = charted.solved();
-                    vm.setResult(solved, charted.scene());
                     String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+                    if (!live.lastAsked().equals(asked)) {
+                        // the fields changed while it ran: the live view of the new ones stays
+                        runs.set(new RobotRunModel.Run(solved, name));
+                        return;
+                    }
+                    vm.setResult(solved, charted.scene(), charted.spindle());
+                    reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
+                    reach.setText(vm.reachLine());
                     runs.set(new RobotRunModel.Run(solved, name));
                     showCharts(charted.charts(), charted.joints(), charted.error());
                     showResult();
@@ -316,7 +411,8 @@ final class PositionTab implements ModuleTab {
 
     /** A solved trajectory with its charts, made off the event thread. */
     private record Charted(RobotTrajectoryService.Solved solved, TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene) {
+            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene,
+            org.fresa.geom.Transform3 spindle) {
     }
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
