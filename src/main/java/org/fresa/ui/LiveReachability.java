@@ -39,9 +39,19 @@ final class LiveReachability {
      * An answer ready to be shown, everything made off the event thread.
      *
      * @param askedNanos when the change that asked for it was made ({@link System#nanoTime})
+     * @param cpuNanos the CPU time the background thread spent on it (-1 where the JVM does not count it)
      */
     record Answer(Inputs inputs, RobotTrajectoryService.Solved solved, Transform3 spindle, CellScene scene,
-            TrajectoryCharts charts, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked errors, long askedNanos) {
+            TrajectoryCharts charts, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked errors, long askedNanos,
+            long cpuNanos) {
+    }
+
+    private static final java.lang.management.ThreadMXBean THREADS =
+            java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /** The CPU time of the calling thread (ns), -1 where the JVM does not count it. */
+    static long cpuNanos() {
+        return THREADS.isCurrentThreadCpuTimeSupported() ? THREADS.getCurrentThreadCpuTime() : -1;
     }
 
     // one thread: the answers come in the order asked, and a stale request costs only its check
@@ -102,6 +112,7 @@ final class LiveReachability {
         if (stale(gen)) {
             return;
         }
+        long cpu0 = cpuNanos();
         try {
             List<Object> key = List.of(in.stepnc(), modified(in.stepnc()), in.robot(), modified(in.robot()),
                     in.tool());
@@ -119,7 +130,8 @@ final class LiveReachability {
             RobotTrajectoryService.Solved s = solved.get();
             CellScene scene = PositionViewModel.sceneOf(s, 0, Optional.of(planned.spindle()));
             TrajectoryCharts c = TrajectoryCharts.of(s);
-            Answer a = new Answer(in, s, planned.spindle(), scene, c, c.joints(1), c.errors(1), asked);
+            Answer a = new Answer(in, s, planned.spindle(), scene, c, c.joints(1), c.errors(1), asked,
+                    cpu0 < 0 ? -1 : cpuNanos() - cpu0);
             SwingUtilities.invokeLater(() -> {
                 if (!stale(gen)) {
                     show.accept(a);

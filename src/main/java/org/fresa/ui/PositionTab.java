@@ -66,7 +66,9 @@ final class PositionTab implements ModuleTab {
     // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
     private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
+    private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
     private long plotAskedNanos = -1;
+    private transient LiveReachability.Inputs shownInputs;
 
     PositionTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -282,7 +284,10 @@ final class PositionTab implements ModuleTab {
         if (problems.isEmpty()) {
             requestLive();
         }
-        cell.repaint();
+        if (vm.result().isEmpty()) {
+            // before any answer the view draws the table where the fields put it; after, the answer's
+            cell.repaint();
+        }
         return problems.isEmpty();
     }
 
@@ -314,7 +319,9 @@ final class PositionTab implements ModuleTab {
 
     /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
     private void showLive(LiveReachability.Answer a) {
+        long cpu0 = LiveReachability.cpuNanos();
         vm.setLive(a.solved(), a.scene(), a.spindle());
+        shownInputs = a.inputs();
         reach.setForeground(a.solved().result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
         reach.setText(vm.reachLine());
         showCharts(a.charts(), a.joints(), a.errors());
@@ -322,6 +329,8 @@ final class PositionTab implements ModuleTab {
         // painted now, so that the time measured is until the view shows the new reach
         cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
         viewLatenciesMs.add((System.nanoTime() - a.askedNanos()) / 1e6);
+        cpuMs.add(cpu0 < 0 || a.cpuNanos() < 0 ? Double.NaN
+                : (a.cpuNanos() + LiveReachability.cpuNanos() - cpu0) / 1e6);
         plotAskedNanos = a.askedNanos();
     }
 
@@ -340,9 +349,27 @@ final class PositionTab implements ModuleTab {
         }
     }
 
+    /** Whether the live answer shown is that of the fields and job as they are now. */
+    boolean showsLiveAnswerOfFields() {
+        return shownInputs != null && liveInputs().equals(java.util.Optional.of(shownInputs));
+    }
+
+    /** The scene the 3D view draws now. */
+    CellScene scene() {
+        return cell.scene();
+    }
+
     /** The times (ms) from each field change to the 3D view painted with its reachability. */
     java.util.List<Double> viewLatenciesMs() {
         return java.util.List.copyOf(viewLatenciesMs);
+    }
+
+    /**
+     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene
+     * and charts) and the event thread's (showing and painting it), without the waits for a core.
+     */
+    java.util.List<Double> cpuMs() {
+        return java.util.List.copyOf(cpuMs);
     }
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */

@@ -454,6 +454,10 @@ final class PositionViewModel {
      * placements or robot), not while the replay moves the robot.
      */
     Object fitKey() {
+        if (live && solved.isPresent()) {
+            // the live answers follow the fields as they are typed: the view stays where the planner put it
+            return List.of("live", System.identityHashCode(robot()));
+        }
         return List.of(solved.map(System::identityHashCode).orElse(0), String.join(",", robotTable),
                 String.join(",", tablePiece), System.identityHashCode(robot()));
     }
