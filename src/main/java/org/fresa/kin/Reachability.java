@@ -13,14 +13,15 @@ import org.fresa.geom.Transform3;
 /**
  * Which targets of a list the robot reaches, with one joint solution each: what a planner needs
  * to see while moving the part about the cell, long before the trajectory (continuity, relinks)
- * is worked out. One solution per target is enough, so each target is solved warm from the last
- * one reached; a target the warm solve misses is tried cold at the turns about the tool axis the
- * trajectory solver tries first (the same turn, half a turn and both quarter turns), through the
- * closed form alone where the arm has one: its solutions within the limits, polished. That is
- * what makes an unreachable target cheap; the generic start configurations, which cost most of
- * the time of an unreachable target in {@link IkSolver#solveAll}, run only for arms without a
- * closed form. A target this calls unreachable is unreachable at those four turns; the
- * trajectory solver tries no others for a target without any solution.
+ * is worked out. One solution per target is enough. An arm with a closed form gets it directly:
+ * the closed-form solution within the limits nearest the last target's, polished (and so
+ * checked); other arms solve warm from the last target's solution, and cold
+ * ({@link IkSolver#solveAll}) where that fails. A target with no solution at the tool's turn
+ * about its axis is tried at the turns the trajectory solver tries first (half a turn and both
+ * quarter turns). So an unreachable target costs four closed-form evaluations, not the generic
+ * start configurations that make most of its time in {@link IkSolver#solveAll}; a target this
+ * calls unreachable is unreachable at those four turns, and the trajectory solver tries no others
+ * for a target without any solution.
  *
  * <p>Not thread-safe: one instance per thread. {@link #check} stops early, returning empty,
  * when told its result is no longer wanted.
@@ -67,7 +68,9 @@ public final class Reachability {
             IkSolver solver = solvers.computeIfAbsent(robot, r -> r.newSolver(options));
             double[] q = null;
             double at = phi;
-            if (prev != null && robot.dof() == prev.length) {
+            // an arm with a closed form gets its solutions directly, the one nearest the last polished:
+            // cheaper than a warm solve, which spends up to its iteration limit on an unreachable target
+            if (prev != null && robot.dof() == prev.length && closedForm(robot).isEmpty()) {
                 IkResult r = solver.solve(t.pose(phi), prev);
                 if (r instanceof IkResult.Converged c) {
                     q = c.q();
@@ -123,30 +126,39 @@ public final class Reachability {
         return p;
     }
 
-    /** One cold solution (deg / mm), the nearest to prev when there are several; null when none. */
-    private double[] cold(Robot robot, IkSolver solver, Transform3 target, double[] prev) {
-        Optional<SphericalWristSeeds> closed = closedForms.computeIfAbsent(robot,
+    private Optional<SphericalWristSeeds> closedForm(Robot robot) {
+        return closedForms.computeIfAbsent(robot,
                 r -> r instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
                         ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
+    }
+
+    /**
+     * One cold solution (deg / mm), the nearest to prev when there are several; null when none. With
+     * a closed form its solutions within the limits are polished (and so checked) nearest first
+     * until one converges.
+     */
+    private double[] cold(Robot robot, IkSolver solver, Transform3 target, double[] prev) {
+        Optional<SphericalWristSeeds> closed = closedForm(robot);
         if (closed.isEmpty()) {
             List<IkResult.Converged> all = solver.solveAll(target);
             return all.isEmpty() ? null : nearest(all.stream().map(IkResult.Converged::q).toList(), prev);
         }
         DenavitHartenbergChain chain = ((SerialRobot) robot).chain();
         Pose.fromTransform(target, pose, 0);
-        List<double[]> found = new ArrayList<>();
+        List<double[]> inLimits = new ArrayList<>();
         for (double[] s : closed.get().solutions(pose, false)) {
-            if (!withinLimits(chain, s)) {
-                continue;
-            }
-            if (solver.solve(target, chain.toUser(s)) instanceof IkResult.Converged c) {
-                found.add(c.q());
-                if (prev == null) {
-                    break;
-                }
+            if (withinLimits(chain, s)) {
+                inLimits.add(chain.toUser(s));
             }
         }
-        return found.isEmpty() ? null : nearest(found, prev);
+        while (!inLimits.isEmpty()) {
+            double[] seed = nearest(inLimits, prev);
+            if (solver.solve(target, seed) instanceof IkResult.Converged c) {
+                return c.q();
+            }
+            inLimits.remove(seed);
+        }
+        return null;
     }
 
     private static boolean withinLimits(DenavitHartenbergChain chain, double[] s) {

@@ -49,7 +49,8 @@ class LiveReachabilityTest {
         Reachability reach = checker();
         Placement piece = new Placement(0, 10, 0, 0, 0, 0);
         StringBuilder report = new StringBuilder();
-        for (double x : new double[] {450, 650, 700, 800, 2000}) {
+        // the full trajectory of a mostly unreachable placement takes half a minute: two placements suffice
+        for (double x : new double[] {450, 650}) {
             Placement table = new Placement(x, 0, 350, 0, 0, 0);
             long t0 = System.nanoTime();
             RobotTrajectoryService.Solved live = PositionViewModel.reach(planned, table, piece, List.of(), reach,
