@@ -53,6 +53,16 @@ final class PositionTab implements ModuleTab {
     private final JTextArea summary = new JTextArea(8, 26);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
+    private final javax.swing.table.DefaultTableModel errorAxesModel = new javax.swing.table.DefaultTableModel(
+            PositionViewModel.ERROR_COLUMNS, 0) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public boolean isCellEditable(int row, int column) {
+            return false;
+        }
+    };
+    private final javax.swing.JTable errorAxes = new javax.swing.JTable(errorAxesModel);
     // the charts of the last result; the panels draw new ones off the event thread
     private transient TrajectoryCharts charts;
     private transient ValueMarker jointsMarker = new ValueMarker(1);
@@ -123,6 +133,13 @@ final class PositionTab implements ModuleTab {
         JPanel summaryPanel = new JPanel(new BorderLayout());
         summaryPanel.add(summaryLabel, BorderLayout.NORTH);
         summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
+        errorAxes.setName("position-error-axes");
+        errorAxes.setToolTipText("Target - reached per axis over the reached points, as summary.json's"
+                + " error_per_axis: x, y, z in mm, the orientation about x, y, z in rad");
+        JScrollPane axesScroll = new JScrollPane(errorAxes);
+        axesScroll.setPreferredSize(new java.awt.Dimension(300, 7 * errorAxes.getRowHeight() + 28));
+        axesScroll.setBorder(BorderFactory.createTitledBorder("Error per axis (target - reached)"));
+        summaryPanel.add(axesScroll, BorderLayout.SOUTH);
         results.setName("position-results");
         jointsChart.setName("position-joints-chart");
         errorChart.setName("position-error-chart");
@@ -472,6 +489,10 @@ final class PositionTab implements ModuleTab {
 
     private void showResult() {
         summary.setText(String.join("\n", vm.summary()));
+        errorAxesModel.setRowCount(0);
+        for (String[] row : vm.errorRows()) {
+            errorAxesModel.addRow(row);
+        }
         replay.setMaximum(Math.max(0, vm.pointCount() - 1));
         replay.setValue(0);
         replay.setEnabled(vm.pointCount() > 0);

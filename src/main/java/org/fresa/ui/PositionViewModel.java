@@ -348,6 +348,26 @@ final class PositionViewModel {
         return out;
     }
 
+    /** The columns of the error-per-axis table. */
+    static final String[] ERROR_COLUMNS = {"Axis", "Mean", "Min", "Max"};
+
+    /**
+     * The error per axis of the result shown, target - reached, as summary.json's
+     * {@code error_per_axis} and the thesis's Table 5.3: x, y, z (mm), then the orientation about
+     * x, y, z (rad); empty before a result or when no point is reached.
+     */
+    List<String[]> errorRows() {
+        if (solved.isEmpty()) {
+            return List.of();
+        }
+        List<String[]> rows = new ArrayList<>();
+        for (org.fresa.job.ErrorStatistics.Axis a : org.fresa.job.ErrorStatistics.of(solved.get().result()).axes()) {
+            rows.add(new String[] {a.axis() + " (" + a.unit() + ")", String.format(Locale.ROOT, "%.3g", a.mean()),
+                String.format(Locale.ROOT, "%.3g", a.min()), String.format(Locale.ROOT, "%.3g", a.max())});
+        }
+        return rows;
+    }
+
     /** The selected point: label, status and joint values. */
     String selectedText() {
         if (solved.isEmpty() || pointCount() == 0) {
