@@ -48,6 +48,25 @@ class LiveReachabilityTest {
         PositionViewModel.Planned planned = PositionViewModel.plan(EXAMPLE2, "irb140", tool, ProgressMonitor.NONE);
         Reachability reach = checker();
         Placement piece = new Placement(0, 10, 0, 0, 0, 0);
+        RobotTrajectoryService.Solved atJobs = PositionViewModel.reach(planned, new Placement(450, 0, 350, 0, 0, 0),
+                piece, List.of(), reach, () -> false).orElseThrow();
+        // the tool drawn on the flange: the 150 mm spindle and the 50 mm cutter of the STEP-NC tool's diameter
+        CellScene.ToolShape shape = PositionViewModel.sceneOf(atJobs, 0, Optional.of(planned.spindle())).tool()
+                .orElseThrow();
+        assertEquals(200, shape.lengthMm(), 1e-6);
+        assertEquals(50, shape.cutterLengthMm(), 1e-6);
+        assertTrue(shape.diameterMm() > 0);
+        PositionViewModel vm = new PositionViewModel();
+        vm.setLive(atJobs, PositionViewModel.sceneOf(atJobs, 0), planned.spindle());
+        assertTrue(vm.isLive());
+        int n = atJobs.targets().size();
+        int out = atJobs.result().unreachable();
+        String line = vm.reachLine();
+        assertTrue(out == 0 ? line.equals("All " + n + " targets are within reach of irb140.")
+                : line.startsWith(out + " of " + n + " targets out of reach of irb140, in "), line);
+        assertEquals(6, vm.errorRows().size());
+        assertEquals("x (mm)", vm.errorRows().get(0)[0]);
+        assertEquals("rz (rad)", vm.errorRows().get(5)[0]);
         StringBuilder report = new StringBuilder();
         // the full trajectory of a mostly unreachable placement takes half a minute: two placements suffice
         for (double x : new double[] {450, 650}) {
