@@ -170,6 +170,12 @@ final class PositionTab implements ModuleTab {
                 ctx.model().job().robot().ifPresent(this::load);
             }
         });
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+                    && vm.problems().isEmpty()) {
+                requestLive();
+            }
+        });
         ctx.model().job().robot().ifPresent(this::load);
         showResult();
     }
@@ -324,6 +330,11 @@ final class PositionTab implements ModuleTab {
 
     /** Asks which targets are reached at the placements shown (worked out in the background). */
     private void requestLive() {
+        // only for the tab on screen: reading and planning the file takes a core for a second or
+        // more, which a job opened in another tab should not compete with; the tab asks when shown
+        if (!panel.isShowing()) {
+            return;
+        }
         var in = liveInputs();
         if (in.isEmpty()) {
             if (ctx.model().job().stepnc().isEmpty()) {
