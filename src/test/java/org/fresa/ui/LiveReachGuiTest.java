@@ -115,7 +115,12 @@ class LiveReachGuiTest extends WindowGuiTest {
         settle();
         watchdog.pause();
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
-        List<EventThreadWatchdog.Slow> over = slow.stream().filter(e -> e.isChargedOver(THRESHOLD_MS)).toList();
+        // an event that waited for the X toolkit's lock (held by the toolkit's thread while it talks to
+        // a starved Xvfb) with little CPU of its own waited for the X server, which the watchdog does
+        // not charge either when it sees it as a wait on the socket
+        List<EventThreadWatchdog.Slow> over = slow.stream().filter(e -> e.isChargedOver(THRESHOLD_MS))
+                .filter(e -> e.cpuMs() > THRESHOLD_MS || e.stack().stream().noneMatch(f -> f.contains(
+                        "SunToolkit.awtLock"))).toList();
         StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
                 "example 2 on the IRB-140, %d field changes typed: 3D view median %.1f ms, worst %.1f ms"
                         + " (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, worst %.1f ms; worst"
