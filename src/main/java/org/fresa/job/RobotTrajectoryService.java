@@ -462,8 +462,12 @@ public final class RobotTrajectoryService {
         double[][] err = positionErrorsMm(r);
         out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
                 1000, 160 * n + 80, o));
-        out.write("error.png", o -> ChartFiles.writePng(
-                RobotCharts.positionErrors("Position error per axis, " + robot.name(), err), 1000, 500, o));
+        // each curve's legend with its mean, least and largest error, the orientation's under the
+        // title: the figures of the thesis's Table 5.3
+        ErrorStatistics stats = ErrorStatistics.of(r);
+        out.write("error.png", o -> ChartFiles.writePng(RobotCharts.positionErrors("Position error per axis, "
+                + robot.name(), err, List.of(stats.positionLegend(0), stats.positionLegend(1),
+                        stats.positionLegend(2)), stats.orientationLine()), 1000, 500, o));
     }
 
     /** Each joint's values along the trajectory with its limits (NaN at unreachable points), for joints.png. */

@@ -145,6 +145,14 @@ final class Tooltips {
     }
 
     /** A robot parameter's meaning: the robot's name, or a length (mm) or angle (deg) of its geometry. */
+    /** The Robot tab's spindle field. */
+    static final String SPINDLE = "The spindle nose in the flange frame, as --spindle takes it: X,Y,Z in mm and"
+            + " optionally RX,RY,RZ in deg (R = Rz Ry Rx); empty: the robot file's tool frame, else the flange";
+
+    /** The Robot tab's tool length field. */
+    static final String TOOL_LENGTH = "The tool's length from the spindle nose to its tip (mm), for every tool, as"
+            + " --tool-length; empty: each STEP-NC tool's own length";
+
     static String robotParameter(String name) {
         if (name.equals("Name")) {
             return "The robot's name, written into its programs";
