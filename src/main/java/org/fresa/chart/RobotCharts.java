@@ -76,10 +76,17 @@ public final class RobotCharts {
      * @param errorsMm per point {ex, ey, ez} in mm
      */
     public static JFreeChart positionErrors(String title, double[][] errorsMm) {
+        return positionErrors(title, errorsMm, List.of("error x", "error y", "error z"), "");
+    }
+
+    /**
+     * The position error curves with a legend of their own (the figures of each axis) and a line
+     * under the title (the orientation's figures; none when empty).
+     */
+    public static JFreeChart positionErrors(String title, double[][] errorsMm, List<String> legends, String subtitle) {
         XYSeriesCollection data = new XYSeriesCollection();
-        String[] names = {"x", "y", "z"};
         for (int a = 0; a < 3; a++) {
-            XYSeries s = new XYSeries("error " + names[a], false, true);
+            XYSeries s = new XYSeries(legends.get(a), false, true);
             for (int i = 0; i < errorsMm.length; i++) {
                 double e = errorsMm[i][a];
                 s.add(i + 1, Double.isNaN(e) ? null : e * 1000, false);
@@ -97,6 +104,9 @@ public final class RobotCharts {
         plot.setRangeGridlinePaint(new Color(0xE0E0E0));
         JFreeChart chart = new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, true);
         chart.setBackgroundPaint(Color.WHITE);
+        if (!subtitle.isEmpty()) {
+            chart.addSubtitle(new org.jfree.chart.title.TextTitle(subtitle));
+        }
         return chart;
     }
 

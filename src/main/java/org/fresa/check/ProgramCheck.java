@@ -51,15 +51,25 @@ public final class ProgramCheck {
 
     /** Checks an NC program's text in its dialect against the limits. */
     public static Verdict of(String program, NcDialect dialect, Limits limits) {
-        List<Words.Block> blocks = Words.blocks(program);
         Machine m = new Machine(dialect, limits);
-        for (Words.Block b : blocks) {
+        // block by block, as the lines of Words.blocks: a long program is never held as blocks all at once
+        int count = 0;
+        int n = program.length();
+        int start = 0;
+        while (start <= n) {
+            int end = start;
+            while (end < n && program.charAt(end) != '\n' && program.charAt(end) != '\r') {
+                end++;
+            }
+            Words.Block b = Words.block(++count, program.substring(start, end));
+            start = end < n && program.charAt(end) == '\r' && end + 1 < n && program.charAt(end + 1) == '\n' ? end + 2 : end + 1;
             m.readAxis(b.text());
             Step step = m.execute(b);
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
-                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), blocks.size());
+                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)),
+                            lines(program, 0));
                 }
             }
             if (b.problem().isPresent()) {
@@ -67,7 +77,23 @@ public final class ProgramCheck {
                 break;
             }
         }
-        return new Verdict(Optional.empty(), blocks.size());
+        return new Verdict(Optional.empty(), count + lines(program, start));
+    }
+
+    /** The lines from offset start to the end of the text (as Words.blocks counts them). */
+    private static int lines(String program, int start) {
+        int n = 0;
+        int i = start;
+        while (i <= program.length()) {
+            int end = i;
+            while (end < program.length() && program.charAt(end) != '\n' && program.charAt(end) != '\r') {
+                end++;
+            }
+            n++;
+            i = end < program.length() && program.charAt(end) == '\r' && end + 1 < program.length()
+                    && program.charAt(end + 1) == '\n' ? end + 2 : end + 1;
+        }
+        return n;
     }
 
     /**

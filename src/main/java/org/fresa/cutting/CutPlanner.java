@@ -68,6 +68,18 @@ public final class CutPlanner {
     }
 
     public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o) {
+        return plan(layers, o, (f, what) -> { });
+    }
+
+    /** How far the planning is: a fraction from 0 to 1 and the step under way, in the planner's words. */
+    @FunctionalInterface
+    public interface Progress {
+        void at(double fraction, String step);
+    }
+
+    /** Plans as {@link #plan(Map, CuttingOptions)}, telling how far it is (a big sheet takes a while). */
+    public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o, Progress progress) {
+        progress.at(0, "chaining the drawing into contours");
         List<String> warnings = new ArrayList<>();
         List<Contour> closed = new ArrayList<>();
         List<List<Curve2>> open = new ArrayList<>();
@@ -118,6 +130,7 @@ public final class CutPlanner {
             warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
                     chain.size(), a.x(), a.y(), b.x(), b.y(), why));
         }
+        progress.at(0.1, "nesting " + closed.size() + " contours into parts and holes");
         List<Node> nodes = classify(closed, o.paperMode());
         List<Curve2> all = new ArrayList<>();
         for (Contour c : closed) {
@@ -141,7 +154,12 @@ public final class CutPlanner {
                 n.index = ++partNo;
             }
         }
+        int done = 0;
         for (Node n : nodes) {
+            if (++done % 5000 == 0) {
+                progress.at(0.15 + 0.35 * done / nodes.size(), "offsetting by the kerf and placing leads: contour " + done
+                        + " of " + nodes.size());
+            }
             boolean outer = n.outer();
             (outer ? outers : holes).add(n.contour);
             String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
@@ -208,9 +226,13 @@ public final class CutPlanner {
                 n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
             }
         }
+        progress.at(0.5, "looking for contours that cross");
         crossings(nodes, warnings);
+        progress.at(0.55, "ordering the pierces");
         List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
+        progress.at(0.75, "routing the rapids around cut parts");
         List<List<Vec2>> rapids = rapids(order, o, warnings);
+        progress.at(0.95, "making the toolpath");
         return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
                 rapids, notCut);
     }
@@ -302,10 +324,26 @@ public final class CutPlanner {
             }
             return nodes;
         }
+        // a contour's container holds the lower left corner of its box: only the contours whose
+        // boxes share that corner's cell are candidates
+        double sizes = 0;
+        for (Node n : nodes) {
+            sizes += Math.max(n.box.width(), n.box.height());
+        }
+        BoxGrid grid = new BoxGrid(Math.max(1e-3, sizes / Math.max(1, nodes.size())));
+        for (int i = 0; i < nodes.size(); i++) {
+            grid.add(i, nodes.get(i).box);
+        }
         for (int i = 0; i < nodes.size(); i++) {
             Node n = nodes.get(i);
             Node best = null;
-            for (int j = i - 1; j >= 0; j--) {
+            Vec2 corner = new Vec2(n.box.minX(), n.box.minY());
+            int[] candidates = grid.at(corner, corner);
+            for (int c = candidates.length - 1; c >= 0; c--) {
+                int j = candidates[c];
+                if (j >= i) {
+                    continue;
+                }
                 Node m = nodes.get(j);
                 if (m.area <= n.area || !contains(m.box, n.box)) {
                     continue;
@@ -668,11 +706,145 @@ public final class CutPlanner {
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
         }
-        List<CutPath> out = new ArrayList<>(cuts.size());
-        for (int i : seq) {
-            out.add(cuts.get(i));
+        return withStartPoints(cuts, seq, before, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()));
+    }
+
+    /**
+     * The cuts in order, those without leads started where the rapids to and from them are
+     * shortest (anywhere on the path, not only at a vertex). Two tours are refined, alternating
+     * the choice of start points with 2-opt and Or-opt moves of the order, and the shorter kept:
+     * the order found so far, and the nearest-neighbour tour that goes from the origin to the
+     * nearest point of the nearest cut whose inner cuts are done. So the travel is never longer
+     * than that tour's.
+     */
+    private static List<CutPath> withStartPoints(List<CutPath> cuts, int[] seq, List<int[]> before, long budgetNanos) {
+        int n = cuts.size();
+        boolean[] free = new boolean[n];
+        boolean any = false;
+        for (int i = 0; i < n; i++) {
+            CutPath c = cuts.get(i);
+            free[i] = c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0;
+            any |= free[i];
+        }
+        if (!any) {
+            List<CutPath> out = new ArrayList<>(n);
+            for (int i : seq) {
+                out.add(cuts.get(i));
+            }
+            return out;
+        }
+        long deadline = System.nanoTime() + budgetNanos;
+        CutPath[] a = cuts.toArray(new CutPath[0]);
+        int[] seqA = refine(a, seq, free, before, deadline);
+        CutPath[] b = cuts.toArray(new CutPath[0]);
+        int[] seqB = refine(b, nearestPointTour(b, free, before), free, before, deadline + budgetNanos);
+        CutPath[] best = travel(a, seqA) <= travel(b, seqB) ? a : b;
+        int[] bestSeq = best == a ? seqA : seqB;
+        List<CutPath> out = new ArrayList<>(n);
+        for (int i : bestSeq) {
+            out.add(best[i]);
         }
         return out;
+    }
+
+    private static double travel(CutPath[] cs, int[] seq) {
+        double d = 0;
+        Vec2 at = Vec2.ZERO;
+        for (int c : seq) {
+            d += at.distance(cs[c].pierce());
+            at = cs[c].exit();
+        }
+        return d;
+    }
+
+    /** Start points, then the order, then start points again, until neither changes or time is up. */
+    private static int[] refine(CutPath[] cs, int[] seq, boolean[] free, List<int[]> before, long deadline) {
+        for (int round = 0; round < 6 && System.nanoTime() < deadline; round++) {
+            boolean moved = placeStarts(cs, seq, free);
+            List<Vec2> pierce = new ArrayList<>(cs.length);
+            List<Vec2> exit = new ArrayList<>(cs.length);
+            for (CutPath c : cs) {
+                pierce.add(c.pierce());
+                exit.add(c.exit());
+            }
+            int[] next = new CutOrder(pierce, exit, before).improve(seq, Math.max(0, deadline - System.nanoTime()));
+            if (!moved && java.util.Arrays.equals(next, seq)) {
+                break;
+            }
+            seq = next;
+        }
+        placeStarts(cs, seq, free);
+        return seq;
+    }
+
+    /** Moves the start of every cut without leads to where the rapids in and out of it are shortest. */
+    private static boolean placeStarts(CutPath[] cs, int[] seq, boolean[] free) {
+        boolean moved = false;
+        for (int k = 0; k < seq.length; k++) {
+            int c = seq[k];
+            if (!free[c]) {
+                continue;
+            }
+            Vec2 from = k == 0 ? Vec2.ZERO : cs[seq[k - 1]].exit();
+            Vec2 to = k + 1 < seq.length ? cs[seq[k + 1]].pierce() : null;
+            Vec2 now = cs[c].pierce();
+            double cost = from.distance(now) + (to == null ? 0 : now.distance(to));
+            PathPoints.OnPath o = PathPoints.bestLink(cs[c].path(), from, to);
+            if (o.cost() < cost - 1e-6) {
+                cs[c] = restarted(cs[c], o);
+                moved = true;
+            }
+        }
+        return moved;
+    }
+
+    private static CutPath restarted(CutPath c, PathPoints.OnPath at) {
+        return new CutPath(c.label(), c.outer(), c.part(), PathPoints.restart(c.path(), at), c.leadIn(), c.tail(),
+                c.compensation());
+    }
+
+    /**
+     * The nearest-neighbour tour from the origin over the cuts whose inner cuts are done, to the
+     * nearest point of each cut without leads (started there) or to the pierce of one with leads.
+     */
+    private static int[] nearestPointTour(CutPath[] cs, boolean[] free, List<int[]> before) {
+        int n = cs.length;
+        List<List<Curve2>> curves = new ArrayList<>(n);
+        List<Vec2> fixed = new ArrayList<>(n);
+        int[] waiting = new int[n];
+        List<List<Integer>> after = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            curves.add(free[i] ? cs[i].path().curves() : null);
+            fixed.add(cs[i].pierce());
+            after.add(new ArrayList<>(1));
+        }
+        NearestCutIndex index = new NearestCutIndex(curves, fixed);
+        for (int i = 0; i < n; i++) {
+            waiting[i] = before.get(i).length;
+            for (int b : before.get(i)) {
+                after.get(b).add(i);
+            }
+            if (waiting[i] == 0) {
+                index.open(i);
+            }
+        }
+        int[] seq = new int[n];
+        Vec2 at = Vec2.ZERO;
+        for (int k = 0; k < n; k++) {
+            int c = index.nearest(at);
+            seq[k] = c;
+            index.close(c);
+            if (free[c]) {
+                cs[c] = restarted(cs[c], PathPoints.nearest(cs[c].path(), at));
+            }
+            at = cs[c].exit();
+            for (int o : after.get(c)) {
+                if (--waiting[o] == 0) {
+                    index.open(o);
+                }
+            }
+        }
+        return seq;
     }
 
     // ------------------------------------------------------------------ rapids
@@ -683,7 +855,16 @@ public final class CutPlanner {
      */
     private static List<List<Vec2>> rapids(List<CutPath> order, CuttingOptions o, List<String> warnings) {
         List<List<Vec2>> out = new ArrayList<>();
-        RapidRouter router = new RapidRouter(Math.max(0.25, o.kerfMm() / 2));
+        // cells about the size of a part; at most 2048 across the sheet
+        Box2 ext = null;
+        double sizes = 0;
+        for (CutPath c : order) {
+            Box2 b = c.path().bounds();
+            ext = ext == null ? b : ext.union(b);
+            sizes += Math.max(b.width(), b.height());
+        }
+        double cell = ext == null ? 10 : Math.max(sizes / order.size(), Math.max(ext.width(), ext.height()) / 2048);
+        RapidRouter router = new RapidRouter(Math.max(0.25, o.kerfMm() / 2), Math.max(cell, 1e-3));
         Vec2 at = Vec2.ZERO;
         for (CutPath c : order) {
             out.add(o.paperMode() || !o.avoidCutParts() ? List.of(at, c.pierce()) : router.route(at, c.pierce()));

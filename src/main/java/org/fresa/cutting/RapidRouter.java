@@ -3,7 +3,9 @@ package org.fresa.cutting;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.PriorityQueue;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
@@ -29,17 +31,45 @@ final class RapidRouter {
     private static final double EPS = 1e-7;
     private static final int MAX_ROUNDS = 12;
 
-    /** A convex obstacle: counter-clockwise hull vertices, grown and raw. */
-    private record Obstacle(Vec2[] grown, Vec2[] raw, Box2 box) {
+    /**
+     * A convex obstacle: the counter-clockwise hull of the cut path as x, y pairs (compact: a sheet
+     * may hold a hundred thousand parts), and the box of the hull grown by the clearance.
+     */
+    private record Obstacle(double[] hull, Box2 box) {
+        Vec2[] raw() {
+            Vec2[] v = new Vec2[hull.length / 2];
+            for (int k = 0; k < v.length; k++) {
+                v[k] = new Vec2(hull[2 * k], hull[2 * k + 1]);
+            }
+            return v;
+        }
     }
+
+    /** The raw and grown hulls of the obstacles used lately: rapids meet the same parts again and again. */
+    private final Map<Integer, Vec2[][]> recent = new java.util.LinkedHashMap<>(256, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Integer, Vec2[][]> eldest) {
+            return size() > 4096;
+        }
+    };
 
     private final double clearanceMm;
     private final List<Obstacle> obstacles = new ArrayList<>();
+    private final BoxGrid grid;
     private int unavoidable;
 
     /** @param clearanceMm how far a detour keeps from a cut part's path (mm) */
     RapidRouter(double clearanceMm) {
+        this(clearanceMm, 10);
+    }
+
+    /**
+     * @param clearanceMm how far a detour keeps from a cut part's path (mm)
+     * @param cellMm the side of the cells in which the cut parts are filed: about a part's size
+     */
+    RapidRouter(double clearanceMm, double cellMm) {
         this.clearanceMm = clearanceMm;
+        this.grid = new BoxGrid(cellMm);
     }
 
     /** Rapids that had to stay straight over a cut part. */
@@ -67,38 +97,71 @@ final class RapidRouter {
         if (raw.length < 3) {
             return;
         }
-        List<Vec2> big = new ArrayList<>();
+        Vec2[] grown = clearanceMm > 0 ? hull(grownPoints(raw)) : raw;
+        double[] xy = new double[2 * raw.length];
+        for (int k = 0; k < raw.length; k++) {
+            xy[2 * k] = raw[k].x();
+            xy[2 * k + 1] = raw[k].y();
+        }
+        Obstacle o = new Obstacle(xy, box(grown));
+        obstacles.add(o);
+        grid.add(obstacles.size() - 1, o.box);
+        recent.put(obstacles.size() - 1, new Vec2[][] {raw, grown});
+    }
+
+    /** Each hull vertex moved by the clearance in eight directions: their hull holds the grown part. */
+    private List<Vec2> grownPoints(Vec2[] raw) {
+        List<Vec2> big = new ArrayList<>(8 * raw.length);
         double r = clearanceMm / Math.cos(Math.PI / 8);
         for (Vec2 p : raw) {
             for (int k = 0; k < 8; k++) {
                 big.add(p.plus(Vec2.ofAngle(Math.PI / 8 + k * Math.PI / 4).times(r)));
             }
         }
-        Vec2[] grown = clearanceMm > 0 ? hull(big) : raw;
-        obstacles.add(new Obstacle(grown, raw, box(grown)));
+        return big;
+    }
+
+    private Vec2[] raw(int i) {
+        return hulls(i)[0];
+    }
+
+    private Vec2[] grown(int i) {
+        return hulls(i)[1];
+    }
+
+    private Vec2[][] hulls(int i) {
+        Vec2[][] h = recent.get(i);
+        if (h == null) {
+            Vec2[] raw = obstacles.get(i).raw();
+            h = new Vec2[][] {raw, clearanceMm > 0 ? hull(grownPoints(raw)) : raw};
+            recent.put(i, h);
+        }
+        return h;
     }
 
     /** The rapid from a to b: a, any detour points, b. */
     List<Vec2> route(Vec2 a, Vec2 b) {
-        List<Vec2[]> usable = new ArrayList<>();
-        List<Box2> boxes = new ArrayList<>();
-        for (Obstacle o : obstacles) {
-            Vec2[] poly = o.grown;
-            if (inside(poly, a) || inside(poly, b)) {
-                poly = o.raw;
-                if (inside(poly, a) || inside(poly, b)) {
-                    if (crosses(poly, a, b)) {
+        // obstacles whose grown hull holds a or b are planned around without their clearance,
+        // or left out (null) when even the raw hull holds one of them
+        Map<Integer, Vec2[]> near = new HashMap<>();
+        for (int i : grid.at(a, b)) {
+            Vec2[] grown = grown(i);
+            Vec2[] raw = raw(i);
+            if (inside(grown, a) || inside(grown, b)) {
+                if (inside(raw, a) || inside(raw, b)) {
+                    if (crosses(raw, a, b)) {
                         unavoidable++;
                     }
-                    continue;
+                    near.put(i, null);
+                } else {
+                    near.put(i, raw);
                 }
             }
-            usable.add(poly);
-            boxes.add(box(poly));
         }
         List<Integer> active = new ArrayList<>();
-        for (int i = 0; i < usable.size(); i++) {
-            if (boxHit(boxes.get(i), a, b) && crosses(usable.get(i), a, b)) {
+        for (int i : grid.along(a, b)) {
+            Vec2[] poly = poly(near, i);
+            if (poly != null && crosses(poly, a, b)) {
                 active.add(i);
             }
         }
@@ -106,15 +169,22 @@ final class RapidRouter {
             return List.of(a, b);
         }
         for (int round = 0; round < MAX_ROUNDS; round++) {
-            List<Vec2> path = shortest(a, b, usable, boxes, active);
+            List<Vec2[]> polys = new ArrayList<>(active.size());
+            List<Box2> boxes = new ArrayList<>(active.size());
+            for (int i : active) {
+                Vec2[] poly = poly(near, i);
+                polys.add(poly);
+                boxes.add(near.containsKey(i) ? box(poly) : obstacles.get(i).box);
+            }
+            List<Vec2> path = shortest(a, b, polys, boxes);
             if (path == null) {
                 break;
             }
             boolean clean = true;
             for (int k = 0; k + 1 < path.size(); k++) {
-                for (int i = 0; i < usable.size(); i++) {
-                    if (!active.contains(i) && boxHit(boxes.get(i), path.get(k), path.get(k + 1))
-                            && crosses(usable.get(i), path.get(k), path.get(k + 1))) {
+                for (int i : grid.along(path.get(k), path.get(k + 1))) {
+                    Vec2[] poly = poly(near, i);
+                    if (poly != null && !active.contains(i) && crosses(poly, path.get(k), path.get(k + 1))) {
                         active.add(i);
                         clean = false;
                     }
@@ -130,12 +200,16 @@ final class RapidRouter {
         return List.of(a, b);
     }
 
+    private Vec2[] poly(Map<Integer, Vec2[]> near, int i) {
+        return near.containsKey(i) ? near.get(i) : grown(i);
+    }
+
     /** Segments of the route crossing the raw hull of a cut part, counted per part. */
     private int badness(List<Vec2> route) {
         int n = 0;
         for (int k = 0; k + 1 < route.size(); k++) {
-            for (Obstacle o : obstacles) {
-                if (boxHit(o.box, route.get(k), route.get(k + 1)) && crosses(o.raw, route.get(k), route.get(k + 1))) {
+            for (int i : grid.along(route.get(k), route.get(k + 1))) {
+                if (crosses(raw(i), route.get(k), route.get(k + 1))) {
                     n++;
                 }
             }
@@ -144,12 +218,22 @@ final class RapidRouter {
     }
 
     /** Dijkstra over a, b and the active obstacles' vertices; edges that cross no active obstacle. */
-    private static List<Vec2> shortest(Vec2 a, Vec2 b, List<Vec2[]> polys, List<Box2> boxes, List<Integer> active) {
+    private static List<Vec2> shortest(Vec2 a, Vec2 b, List<Vec2[]> polys, List<Box2> boxes) {
         List<Vec2> nodes = new ArrayList<>();
         nodes.add(a);
         nodes.add(b);
-        for (int i : active) {
-            nodes.addAll(Arrays.asList(polys.get(i)));
+        List<Vec2> before = new ArrayList<>();
+        List<Vec2> after = new ArrayList<>();
+        before.add(null);
+        before.add(null);
+        after.add(null);
+        after.add(null);
+        for (Vec2[] poly : polys) {
+            nodes.addAll(Arrays.asList(poly));
+            for (int k = 0; k < poly.length; k++) {
+                before.add(poly[(k + poly.length - 1) % poly.length]);
+                after.add(poly[(k + 1) % poly.length]);
+            }
         }
         int n = nodes.size();
         double[] dist = new double[n];
@@ -174,11 +258,12 @@ final class RapidRouter {
                     continue;
                 }
                 double d = dist[u] + nodes.get(u).distance(nodes.get(v));
-                if (d >= dist[v]) {
+                if (d >= dist[v] || !supporting(nodes.get(u), nodes.get(v), before.get(u), after.get(u))
+                        || !supporting(nodes.get(v), nodes.get(u), before.get(v), after.get(v))) {
                     continue;
                 }
                 boolean free = true;
-                for (int i : active) {
+                for (int i = 0; i < polys.size(); i++) {
                     if (boxHit(boxes.get(i), nodes.get(u), nodes.get(v)) && crosses(polys.get(i), nodes.get(u), nodes.get(v))) {
                         free = false;
                         break;
@@ -199,6 +284,25 @@ final class RapidRouter {
             path.add(0, nodes.get(v));
         }
         return path;
+    }
+
+    /**
+     * True when the line from hull vertex p towards q leaves both of p's neighbours on one side:
+     * a shortest path among convex obstacles bends only along such lines (it wraps round the
+     * obstacle at p), so the other edges need no test. Free ends (a, b) have no neighbours.
+     */
+    private static boolean supporting(Vec2 p, Vec2 q, Vec2 before, Vec2 after) {
+        if (before == null) {
+            return true;
+        }
+        Vec2 d = q.minus(p);
+        double len = d.norm();
+        if (len == 0) {
+            return true;
+        }
+        double c1 = d.cross(before.minus(p)) / len;
+        double c2 = d.cross(after.minus(p)) / len;
+        return c1 >= -EPS && c2 >= -EPS || c1 <= EPS && c2 <= EPS;
     }
 
     /** True when the segment a-b passes through the open interior of the convex CCW polygon. */

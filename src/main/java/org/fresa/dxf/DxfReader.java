@@ -104,15 +104,17 @@ public final class DxfReader {
         } catch (CamInputException e) {
             throw new DxfException(e.source(), 0, e.problem());
         }
-        return read(Files.readAllBytes(file), name, opt);
+        return new DxfReader(DxfTags.parse(file, name), opt).run();
     }
 
     /**
-     * The largest drawing read: the whole file and its group codes are held in memory, about 16
-     * times the file's size at the peak, so a sixteenth of the Java heap (32 MB in 512 MB).
+     * The largest drawing read: its group codes and values are held in memory (about 2.5 times
+     * the file's size for a drawing of LINEs, read line by line, never as one string), then its
+     * lines and arcs and what cutting builds from them, so an eighth of the Java heap (64 MB in
+     * 512 MB).
      */
     public static long maxFileBytes() {
-        return FileChecks.heapShare(16);
+        return FileChecks.heapShare(8);
     }
 
     /**
@@ -131,12 +133,12 @@ public final class DxfReader {
         int i = 0;
         boolean sawSection = false;
         while (i < tags.size) {
-            if (tags.codes[i] == 0 && tags.values[i].equals("SECTION")) {
+            if (tags.code(i) == 0 && tags.valueIs(i, "SECTION")) {
                 sawSection = true;
-                String name = i + 1 < tags.size && tags.codes[i + 1] == 2 ? tags.values[i + 1] : "";
+                String name = i + 1 < tags.size && tags.code(i + 1) == 2 ? tags.value(i + 1) : "";
                 int j = i + 2;
                 int end = j;
-                while (end < tags.size && !(tags.codes[end] == 0 && tags.values[end].equals("ENDSEC"))) {
+                while (end < tags.size && !(tags.code(end) == 0 && tags.valueIs(end, "ENDSEC"))) {
                     end++;
                 }
                 switch (name) {
@@ -194,12 +196,12 @@ public final class DxfReader {
 
     private void header(int from, int to) {
         for (int i = from; i + 1 < to; i++) {
-            if (tags.codes[i] == 9) {
-                String var = tags.values[i];
-                if (var.equals("$INSUNITS") && tags.codes[i + 1] == 70) {
-                    insUnits = parseIntOrNull(tags.values[i + 1]);
-                } else if (var.equals("$MEASUREMENT") && tags.codes[i + 1] == 70) {
-                    measurement = parseIntOrNull(tags.values[i + 1]);
+            if (tags.code(i) == 9) {
+                String var = tags.value(i);
+                if (var.equals("$INSUNITS") && tags.code(i + 1) == 70) {
+                    insUnits = parseIntOrNull(tags.value(i + 1));
+                } else if (var.equals("$MEASUREMENT") && tags.code(i + 1) == 70) {
+                    measurement = parseIntOrNull(tags.value(i + 1));
                 }
             }
         }
@@ -215,16 +217,16 @@ public final class DxfReader {
 
     private void tables(int from, int to) {
         for (int i = from; i < to; i++) {
-            if (tags.codes[i] == 0 && tags.values[i].equals("LAYER")) {
+            if (tags.code(i) == 0 && tags.valueIs(i, "LAYER")) {
                 String name = null;
                 int flags = 0;
                 int color = 7;
                 int j = i + 1;
-                for (; j < to && tags.codes[j] != 0; j++) {
-                    switch (tags.codes[j]) {
-                        case 2 -> name = tags.values[j];
-                        case 70 -> flags = intOr(tags.values[j], 0);
-                        case 62 -> color = intOr(tags.values[j], 7);
+                for (; j < to && tags.code(j) != 0; j++) {
+                    switch (tags.code(j)) {
+                        case 2 -> name = tags.value(j);
+                        case 70 -> flags = intOr(tags.value(j), 0);
+                        case 62 -> color = intOr(tags.value(j), 7);
                         default -> {
                         }
                     }
@@ -245,14 +247,14 @@ public final class DxfReader {
     private void blocks(int from, int to) throws DxfException {
         int i = from;
         while (i < to) {
-            if (tags.codes[i] == 0 && tags.values[i].equals("BLOCK")) {
+            if (tags.code(i) == 0 && tags.valueIs(i, "BLOCK")) {
                 String name = "";
                 double bx = 0;
                 double by = 0;
                 int j = i + 1;
-                for (; j < to && tags.codes[j] != 0; j++) {
-                    switch (tags.codes[j]) {
-                        case 2 -> name = tags.values[j];
+                for (; j < to && tags.code(j) != 0; j++) {
+                    switch (tags.code(j)) {
+                        case 2 -> name = tags.value(j);
                         case 10 -> bx = blockNumber(j, name);
                         case 20 -> by = blockNumber(j, name);
                         default -> {
@@ -260,7 +262,7 @@ public final class DxfReader {
                     }
                 }
                 int end = j;
-                while (end < to && !(tags.codes[end] == 0 && tags.values[end].equals("ENDBLK"))) {
+                while (end < to && !(tags.code(end) == 0 && tags.valueIs(end, "ENDBLK"))) {
                     end++;
                 }
                 blocks.put(name, new Block(name, new Vec2(bx, by), entityList(j, end)));
@@ -277,7 +279,7 @@ public final class DxfReader {
             return number(i);
         } catch (BadEntity ex) {
             String where = tags.binary ? tags.where(i) + ": " : "";
-            throw new DxfException(tags.source, tags.binary ? 0 : tags.lines[i] + 1,
+            throw new DxfException(tags.source, tags.binary ? 0 : tags.line(i) + 1,
                     where + "BLOCK '" + block + "': " + ex.getMessage());
         }
     }
@@ -286,17 +288,17 @@ public final class DxfReader {
     private List<Entity> entityList(int from, int to) {
         List<Entity> out = new ArrayList<>();
         int i = from;
-        while (i < to && tags.codes[i] != 0) {
+        while (i < to && tags.code(i) != 0) {
             i++;
         }
         Entity open = null;
         while (i < to) {
-            String type = tags.values[i].toUpperCase(Locale.ROOT);
+            String type = tags.value(i).toUpperCase(Locale.ROOT).intern();
             int j = i + 1;
-            while (j < to && tags.codes[j] != 0) {
+            while (j < to && tags.code(j) != 0) {
                 j++;
             }
-            Entity e = new Entity(type, i, i + 1, j, new ArrayList<>());
+            Entity e = new Entity(type, i, i + 1, j, type.equals("POLYLINE") ? new ArrayList<>() : List.of());
             if (type.equals("VERTEX") && open != null) {
                 open.children.add(e);
             } else if (type.equals("SEQEND")) {
@@ -339,8 +341,8 @@ public final class DxfReader {
 
     private String str(Entity e, int code, String dflt) {
         for (int i = e.first; i < e.end; i++) {
-            if (tags.codes[i] == code) {
-                return tags.values[i];
+            if (tags.code(i) == code) {
+                return tags.value(i);
             }
         }
         return dflt;
@@ -348,7 +350,7 @@ public final class DxfReader {
 
     private double num(Entity e, int code, double dflt) throws BadEntity {
         for (int i = e.first; i < e.end; i++) {
-            if (tags.codes[i] == code) {
+            if (tags.code(i) == code) {
                 return number(i);
             }
         }
@@ -357,7 +359,7 @@ public final class DxfReader {
 
     /** The value of tag i as a finite number; anything else is bad input at that tag. */
     private double number(int i) throws BadEntity {
-        String v = tags.values[i];
+        String v = tags.value(i);
         double d;
         try {
             d = Double.parseDouble(v);
@@ -366,7 +368,7 @@ public final class DxfReader {
         }
         if (!Double.isFinite(d)) {
             String shown = v.length() > 40 ? v.substring(0, 40) + "..." : v;
-            throw new BadEntity("group " + tags.codes[i] + " is '" + shown + "': expected " + meaning(tags.codes[i])
+            throw new BadEntity("group " + tags.code(i) + " is '" + shown + "': expected " + meaning(tags.code(i))
                     + " (a finite number)", i);
         }
         return d;
@@ -392,7 +394,7 @@ public final class DxfReader {
 
     private double req(Entity e, int code) throws BadEntity {
         for (int i = e.first; i < e.end; i++) {
-            if (tags.codes[i] == code) {
+            if (tags.code(i) == code) {
                 return number(i);
             }
         }
@@ -402,7 +404,7 @@ public final class DxfReader {
     private List<Double> nums(Entity e, int code) throws BadEntity {
         List<Double> out = new ArrayList<>();
         for (int i = e.first; i < e.end; i++) {
-            if (tags.codes[i] == code) {
+            if (tags.code(i) == code) {
                 out.add(number(i));
             }
         }
@@ -411,7 +413,7 @@ public final class DxfReader {
 
     private boolean hasSubclass(Entity e) {
         for (int i = e.first; i < e.end; i++) {
-            if (tags.codes[i] == 100) {
+            if (tags.code(i) == 100) {
                 return true;
             }
         }
@@ -445,7 +447,7 @@ public final class DxfReader {
         if (tags.binary) {
             return new DxfException(tags.source, 0, tags.where(ex.tag) + ": " + what + ": " + ex.getMessage());
         }
-        return new DxfException(tags.source, tags.lines[ex.tag] + 1, what + ": " + ex.getMessage());
+        return new DxfException(tags.source, tags.line(ex.tag) + 1, what + ": " + ex.getMessage());
     }
 
     private String describe(Entity e) {
@@ -661,7 +663,7 @@ public final class DxfReader {
         double y = Double.NaN;
         double bulge = 0;
         for (int i = e.first; i < e.end; i++) {
-            int code = tags.codes[i];
+            int code = tags.code(i);
             if (code == 10) {
                 if (!Double.isNaN(x)) {
                     vs.add(vertex(e, vs.size(), x, y, bulge));

@@ -19,41 +19,129 @@ final class DxfTags {
     final String source;
     final boolean binary;
     int size;
-    int[] codes = new int[1024];
-    String[] values = new String[1024];
-    int[] lines = new int[1024];
+    /** Group codes from 0 to 32767 (all DXF uses); others are kept in {@link #wideCodes}. */
+    private short[] codes = new short[1024];
+    private java.util.Map<Integer, Integer> wideCodes;
+    /** The values' bytes one after another (UTF-8, or the ANSI code page of older drawings). */
+    private byte[] bytes = new byte[16 * 1024];
+    private int used;
+    /** Where value i starts in {@link #bytes}; value i ends where value i + 1 starts. */
+    private int[] starts = new int[1025];
+    /** Binary drawings: the byte offset of each group code; ASCII ones: code i is on line 2i + 1. */
+    private int[] offsets;
 
     private DxfTags(String source, boolean binary) {
         this.source = source;
         this.binary = binary;
+        this.offsets = binary ? new int[1024] : null;
+    }
+
+    int code(int index) {
+        short c = codes[index];
+        return c >= 0 ? c : wideCodes.get(index);
+    }
+
+    /** The value of tag index as text. */
+    String value(int index) {
+        int a = starts[index];
+        int b = starts[index + 1];
+        boolean ascii = true;
+        for (int k = a; k < b && ascii; k++) {
+            ascii = bytes[k] >= 0;
+        }
+        if (ascii) {
+            return new String(bytes, a, b - a, StandardCharsets.ISO_8859_1);
+        }
+        try {
+            return StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes, a, b - a)).toString();
+        } catch (CharacterCodingException e) {
+            // pre-2007 drawings are in the ANSI code page; names only, geometry is unaffected
+            return new String(bytes, a, b - a, StandardCharsets.ISO_8859_1);
+        }
+    }
+
+    /** True when the value of tag index is exactly the given ASCII text (no string is made). */
+    boolean valueIs(int index, String ascii) {
+        int a = starts[index];
+        int n = starts[index + 1] - a;
+        if (n != ascii.length()) {
+            return false;
+        }
+        for (int k = 0; k < n; k++) {
+            if (bytes[a + k] != ascii.charAt(k)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The line of tag index's group code (ASCII), or its byte offset (binary). */
+    int line(int index) {
+        return binary ? offsets[index] : 2 * index + 1;
     }
 
     String where(int index) {
-        int l = index < size ? lines[index] : (size > 0 ? lines[size - 1] : 0);
+        int l = index < size ? line(index) : (size > 0 ? line(size - 1) : 0);
         return binary ? "byte " + l : "line " + l;
     }
 
     /** Where the value of tag index is: its line in ASCII (the line after the code). */
     String whereValue(int index) {
-        return binary ? where(index) : "line " + (lines[index] + 1);
+        return binary ? where(index) : "line " + (line(index) + 1);
     }
 
-    private void add(int code, String value, int line) {
-        if (size == codes.length) {
-            int n = size * 2;
-            codes = Arrays.copyOf(codes, n);
-            values = Arrays.copyOf(values, n);
-            lines = Arrays.copyOf(lines, n);
+    private void grow() {
+        int n = size * 3 / 2 + 16;
+        codes = java.util.Arrays.copyOf(codes, n);
+        starts = java.util.Arrays.copyOf(starts, n + 1);
+        if (binary) {
+            offsets = java.util.Arrays.copyOf(offsets, n);
         }
-        codes[size] = code;
-        values[size] = value;
-        lines[size] = line;
+    }
+
+    private void setCode(int code) {
+        if (code >= 0 && code <= Short.MAX_VALUE) {
+            codes[size] = (short) code;
+        } else {
+            codes[size] = -1;
+            if (wideCodes == null) {
+                wideCodes = new java.util.HashMap<>();
+            }
+            wideCodes.put(size, code);
+        }
+    }
+
+    private void add(int code, byte[] value, int from, int len, int offset) {
+        if (size + 1 >= codes.length) {
+            grow();
+        }
+        if (used + len > bytes.length) {
+            long n = Math.max((long) used + len, (long) bytes.length * 3 / 2);
+            if (n > Integer.MAX_VALUE - 16) {
+                throw new IllegalStateException("a drawing with more than 2 GB of values");
+            }
+            bytes = java.util.Arrays.copyOf(bytes, (int) n);
+        }
+        System.arraycopy(value, from, bytes, used, len);
+        setCode(code);
+        starts[size] = used;
+        used += len;
+        starts[size + 1] = used;
+        if (binary) {
+            offsets[size] = offset;
+        }
         size++;
+    }
+
+    private void add(int code, String value, int offset) {
+        byte[] b = value.getBytes(StandardCharsets.UTF_8);
+        add(code, b, 0, b.length, offset);
     }
 
     /** A drawing ends with (0, EOF): without it the file was cut short and its end is missing. */
     private void requireEof(int lastLine) throws DxfException {
-        if (size > 0 && codes[size - 1] == 0 && values[size - 1].equals("EOF")) {
+        if (size > 0 && code(size - 1) == 0 && valueIs(size - 1, "EOF")) {
             return;
         }
         throw new DxfException(source, binary ? 0 : lastLine, (binary ? "byte " + lastLine + ": " : "")
@@ -65,72 +153,130 @@ final class DxfTags {
                 && Arrays.equals(Arrays.copyOf(data, BINARY_SENTINEL.length), BINARY_SENTINEL)) {
             return parseBinary(data, source);
         }
-        return parseAscii(decode(data), source);
-    }
-
-    private static String decode(byte[] data) {
         try {
-            return StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(data)).toString();
-        } catch (CharacterCodingException e) {
-            // pre-2007 drawings are in the ANSI code page; names only, geometry is unaffected
-            return new String(data, StandardCharsets.ISO_8859_1);
+            return parseAscii(new java.io.ByteArrayInputStream(data), source);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e); // a byte array does not fail
         }
     }
 
-    private static DxfTags parseAscii(String text, String source) throws DxfException {
-        DxfTags t = new DxfTags(source, false);
-        int pos = 0;
-        int n = text.length();
-        int line = 0;
-        if (n > 0 && text.charAt(0) == '\uFEFF') {
-            pos = 1;
-        }
-        while (pos < n) {
-            int codeLine = ++line;
-            int e1 = text.indexOf('\n', pos);
-            if (e1 < 0) {
-                e1 = n;
+    /**
+     * Reads a drawing file: an ASCII one line by line from the stream, never as one string (the
+     * values are kept as bytes, about 2.5 times the file's size for a drawing of LINEs), a
+     * binary one whole.
+     */
+    static DxfTags parse(java.nio.file.Path file, String source) throws DxfException, java.io.IOException {
+        try (java.io.InputStream in = java.nio.file.Files.newInputStream(file)) {
+            byte[] head = in.readNBytes(BINARY_SENTINEL.length);
+            if (Arrays.equals(head, BINARY_SENTINEL)) {
+                return parseBinary(java.nio.file.Files.readAllBytes(file), source);
             }
-            int a = pos;
-            int b = e1;
-            while (a < b && text.charAt(a) <= ' ') {
+            return parseAscii(new java.io.SequenceInputStream(new java.io.ByteArrayInputStream(head), in), source);
+        }
+    }
+
+    /** The lines of a byte stream, each without its line feed. */
+    private static final class Lines {
+        private final java.io.InputStream in;
+        private final byte[] buf = new byte[1 << 16];
+        private int pos;
+        private int lim;
+        byte[] line = new byte[256];
+        int len;
+        /** The last line read ended with a line feed. */
+        boolean terminated;
+
+        Lines(java.io.InputStream in) {
+            this.in = in;
+        }
+
+        private boolean fill() throws java.io.IOException {
+            if (pos < lim) {
+                return true;
+            }
+            int n = in.read(buf, 0, buf.length);
+            pos = 0;
+            lim = Math.max(0, n);
+            return n > 0;
+        }
+
+        /** Reads the next line; false when the stream has no more bytes. */
+        boolean next() throws java.io.IOException {
+            len = 0;
+            terminated = false;
+            if (!fill()) {
+                return false;
+            }
+            while (true) {
+                int s = pos;
+                while (pos < lim && buf[pos] != '\n') {
+                    pos++;
+                }
+                int n = pos - s;
+                if (len + n > line.length) {
+                    line = Arrays.copyOf(line, Math.max(len + n, line.length * 2));
+                }
+                System.arraycopy(buf, s, line, len, n);
+                len += n;
+                if (pos < lim) {
+                    pos++;
+                    terminated = true;
+                    return true;
+                }
+                if (!fill()) {
+                    return true;
+                }
+            }
+        }
+
+        /** More bytes follow. */
+        boolean more() throws java.io.IOException {
+            return fill();
+        }
+    }
+
+    private static DxfTags parseAscii(java.io.InputStream stream, String source) throws DxfException, java.io.IOException {
+        DxfTags t = new DxfTags(source, false);
+        Lines in = new Lines(stream);
+        int line = 0;
+        boolean first = true;
+        while (in.next()) {
+            int codeLine = ++line;
+            byte[] text = in.line;
+            int a = 0;
+            int b = in.len;
+            if (first && b >= 3 && (text[0] & 0xFF) == 0xEF && (text[1] & 0xFF) == 0xBB && (text[2] & 0xFF) == 0xBF) {
+                a = 3; // the byte order mark
+            }
+            first = false;
+            while (a < b && (text[a] & 0xFF) <= ' ') {
                 a++;
             }
-            while (b > a && text.charAt(b - 1) <= ' ') {
+            while (b > a && (text[b - 1] & 0xFF) <= ' ') {
                 b--;
             }
-            pos = e1 + 1;
-            if (a == b && pos >= n) {
+            if (a == b && !in.more()) {
                 break;
             }
             int code = smallInt(text, a, b);
             if (code < 0) {
-                code = code(text.substring(a, b), t.size == 0, source, codeLine);
+                code = code(new String(text, a, b - a, StandardCharsets.ISO_8859_1), t.size == 0, source, codeLine);
             }
-            if (pos > n) {
+            if (!in.terminated) {
                 throw new DxfException(source, codeLine, "group code " + code + " has no value line (file truncated)");
             }
             ++line;
-            int e2 = text.indexOf('\n', pos);
-            if (e2 < 0) {
-                e2 = n;
-            }
-            int end = e2;
-            if (end > pos && text.charAt(end - 1) == '\r') {
-                end--;
-            }
-            int va = pos;
-            while (va < end && text.charAt(va) <= ' ') {
+            in.next();
+            int va = 0;
+            int end = in.len;
+            while (va < end && (in.line[va] & 0xFF) <= ' ') {
                 va++;
             }
-            while (end > va && text.charAt(end - 1) <= ' ') {
+            while (end > va && (in.line[end - 1] & 0xFF) <= ' ') {
                 end--;
             }
-            String value = text.substring(va, end);
-            pos = e2 + 1;
-            t.add(code, value, codeLine);
-            if (code == 0 && value.equals("EOF")) {
+            t.add(code, in.line, va, end - va, 0);
+            if (code == 0 && t.valueIs(t.size - 1, "EOF")) {
                 break;
             }
         }
@@ -155,13 +301,13 @@ final class DxfTags {
     }
 
     /** The digits text[a, b) as an int when they are 1 to 9 plain digits, else -1. */
-    private static int smallInt(String text, int a, int b) {
+    private static int smallInt(byte[] text, int a, int b) {
         if (b <= a || b - a > 9) {
             return -1;
         }
         int v = 0;
         for (int i = a; i < b; i++) {
-            char c = text.charAt(i);
+            int c = text[i];
             if (c < '0' || c > '9') {
                 return -1;
             }

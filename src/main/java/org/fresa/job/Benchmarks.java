@@ -34,6 +34,7 @@ public final class Benchmarks {
             "part21_mb_per_s", 20.0,
             "dxf_mb_per_s", 30.0,
             "pocket_ms_cavity02", 50.0,
+            "cut_parts_per_s", (double) SquareSheet.FIFTY_MB_SQUARES / 60,
             "example2_irb140_process_s", 3.0);
 
     /** Where the inputs are in the jar (pom.xml's resources). */
@@ -104,6 +105,15 @@ public final class Benchmarks {
         } catch (IOException | CamInputException | RuntimeException e) {
             figures.put("pocket_ms_cavity02", null);
             notes.put("pocket_ms_cavity02", e.getMessage());
+        }
+        progress.progress(0.7, "cutting a sheet of " + CUT_SQUARES + " square parts");
+        try {
+            Rate r = cutPartsPerS(CUT_SQUARES);
+            figures.put("cut_parts_per_s", r.wall());
+            figures.put("cut_cpu_parts_per_s", r.cpu());
+        } catch (IOException | CamInputException | RuntimeException e) {
+            figures.put("cut_parts_per_s", null);
+            notes.put("cut_parts_per_s", e.getMessage());
         }
         progress.progress(0.75, "example 2 on the IRB-140, a fresh JVM");
         if (jar != null) {
@@ -238,6 +248,47 @@ public final class Benchmarks {
             cpuRates[r] = data.length / 1e6 / ((THREADS.getCurrentThreadCpuTime() - c0) / 1e9);
         }
         return new Rate(median(rates), median(cpuRates));
+    }
+
+    /** The parts of the generated sheet the cutting figure measures: a tenth of the 50 MB drawing's. */
+    static final int CUT_SQUARES = 18_000;
+
+    /**
+     * Square parts cut per second: {@link SquareSheet} with {@code squares} parts written to a
+     * temporary file, then read, planned (kerf 2 mm, arc leads 3 and 1 mm, rapids around cut
+     * parts), posted and checked as {@code fresa cut} does, once after a warm-up on a sheet a tenth as
+     * large; wall clock and this thread's CPU time.
+     */
+    static Rate cutPartsPerS(int squares) throws IOException, CamInputException {
+        Path small = Files.createTempFile("fresa-bench-", "-squares.dxf");
+        Path big = Files.createTempFile("fresa-bench-", "-squares.dxf");
+        try {
+            SquareSheet.write(small, Math.max(1, squares / 10));
+            SquareSheet.write(big, squares);
+            cutOnce(small);
+            long t0 = System.nanoTime();
+            long c0 = THREADS.getCurrentThreadCpuTime();
+            int parts = cutOnce(big);
+            double wall = (System.nanoTime() - t0) / 1e9;
+            double cpu = (THREADS.getCurrentThreadCpuTime() - c0) / 1e9;
+            return new Rate(parts / wall, parts / cpu);
+        } finally {
+            Files.deleteIfExists(small);
+            Files.deleteIfExists(big);
+        }
+    }
+
+    private static int cutOnce(Path dxf) throws IOException, CamInputException {
+        JobSettings.CuttingSettings s = new JobSettings.CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1,
+                org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+        CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
+        try {
+            CuttingService.check(r, "squares.ngc");
+        } catch (ProgramChecks.RefusedProgram e) {
+            throw new IllegalStateException("the program of the square sheet was refused: " + e.getMessage(), e);
+        }
+        return r.plan().outers().size();
     }
 
     /** Recognition, passes and the 7M post of cavity 02 with the thesis's technology, in ms. */

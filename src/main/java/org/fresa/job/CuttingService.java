@@ -81,7 +81,8 @@ public final class CuttingService {
         progress.checkCancelled();
         progress.progress(0.3, "planning");
         CutPlan plan = CutPlanner.plan(d.layers(),
-                o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)));
+                o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)),
+                (f, step) -> progress.progress(0.3 + 0.55 * f, step));
         progress.checkCancelled();
         StringBuilderWriter w = new StringBuilderWriter();
         List<Integer> comp = new ArrayList<>();

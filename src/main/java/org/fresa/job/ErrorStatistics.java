@@ -11,7 +11,71 @@ import org.fresa.geom.Transform3;
  * about x, y, z (rad) are the small turns that would take the reached tool onto the target.
  * Not thread-safe.
  */
-final class ErrorStatistics {
+public final class ErrorStatistics {
+
+    /**
+     * One axis: the mean, least and largest target - reached.
+     *
+     * @param name as in summary.json: x_mm, y_mm, z_mm, rx_rad, ry_rad, rz_rad
+     */
+    public record Axis(String name, double mean, double min, double max) {
+        /** The axis without its unit: x, y, z, rx, ry, rz. */
+        public String axis() {
+            return name.substring(0, name.indexOf('_'));
+        }
+
+        /** mm or rad. */
+        public String unit() {
+            return name.substring(name.indexOf('_') + 1);
+        }
+    }
+
+    /** The statistics of every point of a trajectory that reached its target. */
+    public static ErrorStatistics of(org.fresa.kin.TrajectorySolver.Result r) {
+        ErrorStatistics s = new ErrorStatistics();
+        for (org.fresa.kin.TrajectoryPoint p : r.points()) {
+            if (p.status() != org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE && p.reached().isPresent()) {
+                s.add(p.target(), p.reached().get());
+            }
+        }
+        return s;
+    }
+
+    /** The six axes (x, y, z in mm, then rx, ry, rz in rad); empty when no pose was added. */
+    public java.util.List<Axis> axes() {
+        java.util.List<Axis> out = new java.util.ArrayList<>();
+        for (int i = 0; i < 6 && count > 0; i++) {
+            out.add(new Axis(NAMES[i], sum[i] / count, min[i], max[i]));
+        }
+        return out;
+    }
+
+    /**
+     * The legend of a position error curve (x, y or z: index 0..2) with its figures in um, as
+     * error.png and the Position tab's plot show them.
+     */
+    public String positionLegend(int axis) {
+        String[] n = {"x", "y", "z"};
+        if (count == 0) {
+            return "error " + n[axis];
+        }
+        return String.format(java.util.Locale.ROOT, "error %s: mean %.3g, min %.3g, max %.3g um", n[axis],
+                sum[axis] / count * 1000, min[axis] * 1000, max[axis] * 1000);
+    }
+
+    /** One line on the orientation errors about x, y, z (urad), for under error.png's title. */
+    public String orientationLine() {
+        if (count == 0) {
+            return "";
+        }
+        StringBuilder sb = new StringBuilder("orientation error (urad):");
+        String[] n = {"rx", "ry", "rz"};
+        for (int i = 3; i < 6; i++) {
+            sb.append(String.format(java.util.Locale.ROOT, " %s mean %.3g, min %.3g, max %.3g%s", n[i - 3],
+                    sum[i] / count * 1e6, min[i] * 1e6, max[i] * 1e6, i < 5 ? ";" : ""));
+        }
+        return sb.toString();
+    }
 
     private static final String[] NAMES = {"x_mm", "y_mm", "z_mm", "rx_rad", "ry_rad", "rz_rad"};
 

@@ -38,27 +38,41 @@ public final class JobSettings {
      * @param breakthroughMm how far a through hole's tool passes its exit
      * @param entry how pockets are entered and holes milled on a helix ({@code --entry},
      *     {@code --entry-angle}, {@code --centre-cutting})
+     * @param paths whose path conventions: Fresa's own or the 2016 robot thesis's
      */
     public record StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm,
-            org.fresa.pocket.EntryRule entry) {
+            org.fresa.pocket.EntryRule entry, org.fresa.toolpath.PathConvention paths) {
         /**
          * The STEP-NC module's defaults, as {@code fresa toolpath} and {@code fresa robot}, a new
          * job and {@code schemas/job.xsd} have them; the file has none.
          */
         public static final StepNcSettings DEFAULTS = new StepNcSettings(Path.of(""), MillingPost.LINUXCNC, false,
-                org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM, org.fresa.pocket.EntryRule.DEFAULT);
+                org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM, org.fresa.pocket.EntryRule.DEFAULT,
+                org.fresa.toolpath.PathConvention.FRESA);
 
         public StepNcSettings {
             Objects.requireNonNull(file, "file");
             Objects.requireNonNull(post, "post");
             Objects.requireNonNull(entry, "entry");
+            Objects.requireNonNull(paths, "paths");
             SettingRanges.StepNc.BREAKTHROUGH.require(breakthroughMm);
             SettingRanges.StepNc.ENTRY_ANGLE.require(entry.angleDeg());
         }
 
-        /** The file and post with the planner's default entries. */
+        /** The file and post with the planner's default entries and Fresa's own path conventions. */
         public StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm) {
             this(file, post, trustCuttingSpeed, breakthroughMm, org.fresa.pocket.EntryRule.DEFAULT);
+        }
+
+        /** These entries and Fresa's own path conventions. */
+        public StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm,
+                org.fresa.pocket.EntryRule entry) {
+            this(file, post, trustCuttingSpeed, breakthroughMm, entry, org.fresa.toolpath.PathConvention.FRESA);
+        }
+
+        /** The same settings with these path conventions. */
+        public StepNcSettings withPaths(org.fresa.toolpath.PathConvention p) {
+            return new StepNcSettings(file, post, trustCuttingSpeed, breakthroughMm, entry, p);
         }
 
         /** The file and post with the planner's default choices. */
@@ -68,7 +82,7 @@ public final class JobSettings {
 
         /** The choices for {@link org.fresa.toolpath.ToolpathPlanner}. */
         public org.fresa.toolpath.PlanningChoices choices() {
-            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry);
+            return new org.fresa.toolpath.PlanningChoices(trustCuttingSpeed, breakthroughMm, entry, paths);
         }
     }
 
@@ -85,7 +99,7 @@ public final class JobSettings {
      *     each STEP-NC tool's own
      */
     public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
-            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
+            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm, TablePlacing placing) {
         public static final List<String> DEFAULT_FORMATS = List.of("csv", "xml", "png");
         /**
          * The robot module's defaults, as {@code schemas/job.xsd}, {@code fresa robot}'s
@@ -102,6 +116,13 @@ public final class JobSettings {
             formats = List.copyOf(formats);
             Objects.requireNonNull(spindle, "spindle");
             Objects.requireNonNull(toolLengthMm, "toolLengthMm");
+            Objects.requireNonNull(placing, "placing");
+        }
+
+        /** The robot -> table placement as given. */
+        public RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+                java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
+            this(robot, robotTable, tablePiece, formats, spindle, toolLengthMm, TablePlacing.GIVEN);
         }
 
         /** A cell with no spindle or tool length given. */

@@ -244,7 +244,9 @@ public final class JobXml {
         if (s != null) {
             job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()),
                     SettingRanges.StepNc.POST.require(s.getPost()), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s)));
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s),
+                    org.fresa.toolpath.PathConvention.byWord(s.getPaths()).orElseThrow(
+                            () -> new IllegalArgumentException("paths must be fresa or thesis: " + s.getPaths()))));
         }
         RobotType r = x.getRobot();
         if (r != null) {
@@ -253,7 +255,8 @@ public final class JobXml {
                     r.getSpindle() == null ? java.util.Optional.empty()
                             : java.util.Optional.of(SettingRanges.Robot.requireSpindle(placement(r.getSpindle()))),
                     r.getToolLengthMm() == null ? OptionalDouble.empty()
-                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm()))));
+                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm())),
+                    "auto".equals(r.getPlace()) ? TablePlacing.AUTO : TablePlacing.GIVEN));
         }
         PocketType p = x.getPocket();
         if (p != null) {
@@ -482,6 +485,9 @@ public final class JobXml {
                 t.setEntryAngleDeg(s.entry().angleDeg());
                 t.setCentreCutting(s.entry().centreCutting());
             }
+            if (s.paths() != org.fresa.toolpath.PathConvention.FRESA) {
+                t.setPaths(s.paths().word());
+            }
             x.setStepnc(t);
         });
         job.robot().ifPresent(r -> {
@@ -493,6 +499,9 @@ public final class JobXml {
             r.spindle().ifPresent(sp -> t.setSpindle(placement(sp)));
             if (r.toolLengthMm().isPresent()) {
                 t.setToolLengthMm(r.toolLengthMm().getAsDouble());
+            }
+            if (r.placing() != TablePlacing.GIVEN) {
+                t.setPlace(r.placing().id());
             }
             x.setRobot(t);
         });

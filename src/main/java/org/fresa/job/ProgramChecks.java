@@ -188,7 +188,13 @@ public final class ProgramChecks {
             ToolpathSection s = sections.get(i);
             MachiningWorkingstep w = byId.get(plan.steps().get(i).workingstepInstanceId());
             boolean axial = w != null && AXIAL.contains(w.operation().type());
-            ToolLimits t = axial ? ToolLimits.drill() : cutter(choices.entry());
+            // the thesis's paths go straight down into every layer (its robots were simulated, not
+            // cutting): they can only be run with a cutter that cuts at its centre, declared so
+            ToolLimits t = axial ? ToolLimits.drill()
+                    : choices.paths() == org.fresa.toolpath.PathConvention.THESIS
+                            ? ToolLimits.centreCuttingPlunge().withKind(
+                                    "the thesis's paths' cutter, declared centre-cutting: they plunge into every layer")
+                            : cutter(choices.entry());
             l = l.withTool(s.toolNumber(), t.withRadiusMm(s.toolDiameterMm() / 2));
             if (w != null) {
                 allowanceMm = Math.max(allowanceMm, ToolpathPlanner.throughAllowanceMm(w.operation(),

@@ -42,9 +42,10 @@ public final class RobotService {
      *
      * @param choices the toolpath planner's choices where the STEP-NC file is silent or doubtful
      * @param tool the spindle and tool length asked for, else the robot file's and the STEP-NC tools'
+     * @param placing whether robotTable is used as given or searched ({@code --place auto})
      */
     public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-            List<String> formats, PlanningChoices choices, RobotTools.Choice tool) {
+            List<String> formats, PlanningChoices choices, RobotTools.Choice tool, TablePlacing placing) {
         /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
             java.util.Objects.requireNonNull(choices, "choices");
@@ -55,6 +56,13 @@ public final class RobotService {
                 }
             }
             java.util.Objects.requireNonNull(tool, "tool");
+            java.util.Objects.requireNonNull(placing, "placing");
+        }
+
+        /** The robot -> table placement as given. */
+        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
+                List<String> formats, PlanningChoices choices, RobotTools.Choice tool) {
+            this(stepnc, robot, robotTable, tablePiece, formats, choices, tool, TablePlacing.GIVEN);
         }
 
         /**
@@ -134,7 +142,30 @@ public final class RobotService {
         }
         Toolpath path = plan.toolpath();
         RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, s.robotTable(),
+        Placement robotTable = s.robotTable();
+        java.util.Optional<AutoPlacement.Outcome> placed = java.util.Optional.empty();
+        if (s.placing() == TablePlacing.AUTO) {
+            AutoPlacement.Outcome a = AutoPlacement.search(tools.toolpath(), robot, s.tablePiece(), tools.tcpByLabel(),
+                    AutoPlacement.names(plan), progress);
+            Timing.mark("placement searched");
+            if (!a.found()) {
+                // never a partial placement: the planner learns which workingsteps are out of reach
+                List<String> problems = new ArrayList<>(tools.warnings());
+                problems.addAll(plan.problems());
+                problems.add(a.sentence());
+                Map<String, Object> summary = new LinkedHashMap<>();
+                summary.put("workingsteps", plan.workingsteps());
+                summary.put("planned_workingsteps", plan.planned());
+                summary.put("placement_search", a.summary());
+                summary.put("problems", problems);
+                out.create();
+                out.writeString("summary.json", Json.writePretty(summary));
+                return new TaskOutcome(1, problems, summary, out.written());
+            }
+            placed = java.util.Optional.of(a);
+            robotTable = a.robotTable();
+        }
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
                 s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
                 org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel());
         out.create();
@@ -153,7 +184,8 @@ public final class RobotService {
             // the inverse kinematics is done; the charts and programs take a while yet
             progress.progress(-1, "writing the files");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
-            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan, s.choices()));
+            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan, s.choices()),
+                    placed.isPresent() ? Map.of("placement_search", placed.get().summary()) : Map.of());
             Timing.mark("files asked for");
             out.finishParallel();
             Timing.mark("files written");
@@ -177,6 +209,6 @@ public final class RobotService {
         JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
         List<String> formats = parseFormats(String.join(",", r.formats()));
         return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats, st.choices(),
-                new RobotTools.Choice(r.spindle(), r.toolLengthMm())), out, progress);
+                new RobotTools.Choice(r.spindle(), r.toolLengthMm()), r.placing()), out, progress);
     }
 }

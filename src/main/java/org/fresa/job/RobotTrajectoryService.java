@@ -205,6 +205,12 @@ public final class RobotTrajectoryService {
      */
     public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits)
             throws IOException {
+        return write(solved, programName, out, limits, Map.of());
+    }
+
+    /** As above, with more entries for summary.json (the placement search's). */
+    public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits,
+            Map<String, Object> moreSummary) throws IOException {
         Request req = solved.request();
         TrajectorySolver.Result r = solved.result();
         out.create();
@@ -225,6 +231,7 @@ public final class RobotTrajectoryService {
         }
         Map<String, Object> summary = summary(req.robot(), solved.targets().size(), r);
         refused.ifPresent(f -> summary.put("program_refused", f.message()));
+        summary.putAll(moreSummary);
         out.writeString("summary.json", Json.writePretty(summary));
         List<String> problems = new ArrayList<>(r.notes());
         int exit = 0;
@@ -455,8 +462,12 @@ public final class RobotTrajectoryService {
         double[][] err = positionErrorsMm(r);
         out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
                 1000, 160 * n + 80, o));
-        out.write("error.png", o -> ChartFiles.writePng(
-                RobotCharts.positionErrors("Position error per axis, " + robot.name(), err), 1000, 500, o));
+        // each curve's legend with its mean, least and largest error, the orientation's under the
+        // title: the figures of the thesis's Table 5.3
+        ErrorStatistics stats = ErrorStatistics.of(r);
+        out.write("error.png", o -> ChartFiles.writePng(RobotCharts.positionErrors("Position error per axis, "
+                + robot.name(), err, List.of(stats.positionLegend(0), stats.positionLegend(1),
+                        stats.positionLegend(2)), stats.orientationLine()), 1000, 500, o));
     }
 
     /** Each joint's values along the trajectory with its limits (NaN at unreachable points), for joints.png. */

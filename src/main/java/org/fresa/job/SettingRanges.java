@@ -61,6 +61,16 @@ public final class SettingRanges {
 
         private StepNc() {
         }
+
+        /**
+         * Whose path conventions a word names ({@code --paths}, the job's {@code paths}): one of
+         * the known words, else bad input naming them.
+         */
+        public static org.fresa.toolpath.PathConvention paths(String source, String word)
+                throws org.fresa.model.CamInputException {
+            return org.fresa.toolpath.PathConvention.byWord(word).orElseThrow(() -> new org.fresa.model.CamInputException(
+                    source, "unknown path conventions '" + word + "': expected fresa or thesis"));
+        }
     }
 
     /** {@code fresa pocket} and the job's {@code <pocket>}. */

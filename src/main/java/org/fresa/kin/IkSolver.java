@@ -23,6 +23,15 @@ public interface IkSolver {
      */
     List<IkResult.Converged> solveAll(Transform3 target);
 
+    /**
+     * {@link #solveAll}'s cheapest path, for screening many poses (a placement search): an arm
+     * with a closed form gives the closed form's solutions and no others, so that a pose at the
+     * very edge of the workspace may count as out of reach here and be reached by solveAll.
+     */
+    default List<IkResult.Converged> solveAllQuickly(Transform3 target) {
+        return solveAll(target);
+    }
+
     /** The best of {@link #solveAll}, or an {@link IkResult.Unreachable} saying why. */
     default IkResult solveCold(Transform3 target) {
         List<IkResult.Converged> all = solveAll(target);

@@ -10,7 +10,7 @@ import java.util.List;
  * Euler angles (two flips). Up to 8 solutions, each angle moved by whole turns into the limits
  * where it can be. Used as start configurations that the numerical solver polishes (and so checks).
  */
-final class SphericalWristSeeds {
+final class SphericalWristSeeds implements ClosedFormSeeds {
 
     private static final double TWO_PI = 2 * Math.PI;
 
@@ -48,6 +48,11 @@ final class SphericalWristSeeds {
             return java.util.Optional.empty();
         }
         return java.util.Optional.of(new SphericalWristSeeds(c));
+    }
+
+    @Override
+    public List<double[]> seeds(double[] target) {
+        return solutions(target, false);
     }
 
     /** Joint values (internal units) of the closed-form solutions for a TCP pose (12 doubles). */
@@ -118,16 +123,6 @@ final class SphericalWristSeeds {
                 }
             }
         }
-        return out;
-    }
-
-    /**
-     * q and every variant of it with revolute joints turned by whole turns that stay within the
-     * limits (a range wider than a turn, as the IRB-140's axes 4 and 6, holds the same pose twice).
-     */
-    List<double[]> turns(double[] q) {
-        List<double[]> out = new ArrayList<>();
-        addTurns(q.clone(), 0, out);
         return out;
     }
 

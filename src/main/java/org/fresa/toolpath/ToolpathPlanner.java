@@ -151,6 +151,9 @@ public final class ToolpathPlanner {
      * be cut as its file says ({@link CuttingData}), is reported and left out.
      */
     public static Plan plan(StepNcProgram program, Tolerance tol, PlanningChoices choices) {
+        if (choices.paths() == PathConvention.THESIS) {
+            return ThesisPaths.plan(program, choices);
+        }
         Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<ToolpathSection> sections = new ArrayList<>();
         List<PlannedStep> steps = new ArrayList<>();

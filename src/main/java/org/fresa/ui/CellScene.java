@@ -29,9 +29,44 @@ import org.fresa.model.ToolpathSection;
  * @param joints the joint centres drawn as dots
  * @param frames named frames drawn as axes triads
  * @param selected the replayed point, if any
+ * @param tool the spindle and cutter at the flange, when known
  */
 record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> workpiece, List<PathSegment> path,
-        List<List<Vec3>> links, List<Vec3> joints, List<Frame> frames, Optional<PathPoint> selected) {
+        List<List<Vec3>> links, List<Vec3> joints, List<Frame> frames, Optional<PathPoint> selected,
+        Optional<ToolShape> tool) {
+
+    CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> workpiece, List<PathSegment> path,
+            List<List<Vec3>> links, List<Vec3> joints, List<Frame> frames, Optional<PathPoint> selected) {
+        this(floor, table, workpiece, path, links, joints, frames, selected, Optional.empty());
+    }
+
+    /**
+     * The spindle (from the flange to its nose) and the cutter (from the nose to the tip, of the
+     * STEP-NC tool's diameter), in the robot base frame.
+     */
+    record ToolShape(Vec3 flange, Vec3 nose, Vec3 tip, double diameterMm) {
+        /** From the flange to the tool tip (mm): spindle and tool length together. */
+        double lengthMm() {
+            return flange.distance(tip);
+        }
+
+        /** The cutter's length from the spindle nose to the tip (mm). */
+        double cutterLengthMm() {
+            return nose.distance(tip);
+        }
+    }
+
+    /**
+     * The same scene with the robot drawn to its flange and the spindle and cutter on it: the
+     * tool frame at the tool tip.
+     */
+    CellScene withTool(ToolShape shape, Transform3 tipPose) {
+        List<Frame> fs = new ArrayList<>();
+        for (Frame f : frames) {
+            fs.add(f.name().equals("tool") ? new Frame("tool", tipPose, f.axisMm()) : f);
+        }
+        return new CellScene(floor, table, workpiece, path, links, joints, fs, selected, Optional.of(shape));
+    }
 
     CellScene {
         floor = List.copyOf(floor);
@@ -41,6 +76,7 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
         links = List.copyOf(links);
         joints = List.copyOf(joints);
         frames = List.copyOf(frames);
+        java.util.Objects.requireNonNull(tool, "tool");
     }
 
     /** A piece of the toolpath, coloured by the status of the point it ends at. */
@@ -67,6 +103,7 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
         for (Frame f : frames) {
             out.add(f.pose().translationPart());
         }
+        tool.ifPresent(t -> out.add(t.tip()));
         return out;
     }
 

@@ -27,8 +27,8 @@ import org.fresa.kin.TrajectoryPoint;
 /**
  * The robot cell in 3D (robot base frame, mm, z up), drawn with Java2D through an
  * {@link OrbitCamera}: floor grid, table top, workpiece box, the toolpath coloured by status
- * (green ok, red unreachable, orange relink), the robot as links at the replayed point and the
- * base, table, workpiece and tool frames. Drag or the arrow keys turn the view, the wheel or
+ * (green ok, red unreachable, orange relink), the robot as links at the replayed point with its
+ * spindle and cutter, and the base, table, workpiece and tool frames. Drag or the arrow keys turn the view, the wheel or
  * +/- zoom, Home resets.
  */
 final class CellView extends JComponent {
@@ -37,6 +37,8 @@ final class CellView extends JComponent {
     static final Color OK = new Color(0, 140, 60);
     static final Color UNREACHABLE = new Color(210, 0, 0);
     static final Color RELINK = new Color(230, 130, 0);
+    private static final Color SPINDLE = new Color(70, 75, 85);
+    private static final Color CUTTER = new Color(150, 160, 175);
     private static final Color[] AXES = {new Color(210, 40, 40), new Color(30, 150, 50), new Color(40, 80, 220)};
     private static final double KEY_STEP_DEG = 5;
     private static final double DRAG_DEG_PER_PIXEL = 0.5;
@@ -230,6 +232,7 @@ final class CellView extends JComponent {
             g.setColor(new Color(245, 160, 40));
             draw(g, p.a(), p.b(), w, h);
         }
+        sc.tool().ifPresent(t -> paintTool(g, t, w, h));
         g.setStroke(new BasicStroke(1.2f));
         for (Vec3 j : sc.joints()) {
             double[] s = camera.project(j, w, h);
@@ -240,6 +243,24 @@ final class CellView extends JComponent {
             g.setColor(Color.WHITE);
             g.drawOval(x - 5, y - 5, 10, 10);
         }
+    }
+
+    /**
+     * The spindle as a thick dark body from the flange to its nose, and the cutter from the nose
+     * to the tip as wide as the STEP-NC tool's diameter at this zoom (at least 3 pixels).
+     */
+    private void paintTool(Graphics2D g, CellScene.ToolShape t, int w, int h) {
+        double pxPerMm = camera.scale(w, h);
+        if (t.flange().distance(t.nose()) > 1e-6) {
+            g.setStroke(new BasicStroke((float) Math.max(8, 60 * pxPerMm), BasicStroke.CAP_BUTT,
+                    BasicStroke.JOIN_ROUND));
+            g.setColor(SPINDLE);
+            draw(g, t.flange(), t.nose(), w, h);
+        }
+        g.setStroke(new BasicStroke((float) Math.max(3, t.diameterMm() * pxPerMm), BasicStroke.CAP_BUTT,
+                BasicStroke.JOIN_ROUND));
+        g.setColor(CUTTER);
+        draw(g, t.nose(), t.tip(), w, h);
     }
 
     private void paintFrame(Graphics2D g, CellScene.Frame f, int w, int h, List<java.awt.Rectangle> labels) {

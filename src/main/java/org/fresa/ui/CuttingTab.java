@@ -122,6 +122,17 @@ final class CuttingTab implements ModuleTab {
         JScrollPane text = new JScrollPane(program);
         text.setPreferredSize(new java.awt.Dimension(260, 200));
         warnings.onSelect(this::showWarning);
+        // a contour not cut names itself and its reason under the mouse
+        javax.swing.JComponent chart = plot.chartComponent();
+        chart.addMouseMotionListener(new java.awt.event.MouseMotionAdapter() {
+            @Override
+            public void mouseMoved(java.awt.event.MouseEvent e) {
+                org.fresa.geom.Vec2 at = plot.toPlotMm(e.getPoint());
+                java.awt.Point aside = new java.awt.Point(e.getX() + 6, e.getY());
+                double reach = plot.toPlotMm(aside).distance(at);
+                chart.setToolTipText(vm.notCutAt(at, reach).orElse(null));
+            }
+        });
         JSplitPane plotAndWarnings = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, warnings);
         plotAndWarnings.setResizeWeight(0.85);
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plotAndWarnings, text);

@@ -216,6 +216,34 @@ public final class CuttingViewModel {
         return Optional.ofNullable(result);
     }
 
+    /**
+     * What the plot shows on hover at p (mm): the contour not cut that passes within reachMm of p
+     * (or holds p), named with its size, place and the reason it is not cut; empty elsewhere.
+     */
+    public Optional<String> notCutAt(Vec2 p, double reachMm) {
+        if (result == null) {
+            return Optional.empty();
+        }
+        CutPlan.NotCut best = null;
+        double bestD = Double.POSITIVE_INFINITY;
+        for (CutPlan.NotCut n : result.plan().notCut()) {
+            double d = n.contour().distanceTo(p);
+            if (d > reachMm && n.contour().contains(p, org.fresa.geom.Tolerance.DEFAULT)) {
+                d = reachMm; // inside a small contour: still that one, unless an edge is nearer
+            }
+            if (d <= reachMm && d < bestD) {
+                bestD = d;
+                best = n;
+            }
+        }
+        if (best == null) {
+            return Optional.empty();
+        }
+        org.fresa.geom.Box2 b = best.contour().bounds();
+        return Optional.of(String.format(java.util.Locale.ROOT, "%s (%.3f x %.3f mm at %.3f, %.3f) %s: not cut", best.label(),
+                b.width(), b.height(), b.minX(), b.minY(), best.reason()));
+    }
+
     /** Parts filled, holes, open chains in the warning style, cuts, leads, rapids and order numbers. */
     public PlotScene scene() {
         return result == null ? PlotScene.empty("Cutting") : sceneOf(result);

@@ -280,6 +280,11 @@ public final class MainWindow extends JFrame {
         return tabs;
     }
 
+    /** The module tab of a class (the GUI tests read the Position tab's measurements). */
+    <T extends ModuleTab> T moduleTab(Class<T> type) {
+        return moduleTabs.stream().filter(type::isInstance).map(type::cast).findFirst().orElseThrow();
+    }
+
     public int tabCount() {
         return tabs.getTabCount();
     }

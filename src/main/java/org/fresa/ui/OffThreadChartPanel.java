@@ -26,6 +26,16 @@ import org.jfree.chart.plot.PlotRenderingInfo;
  */
 final class OffThreadChartPanel extends ChartPanel {
 
+    /**
+     * The chart's own tooltips (its entities), else the text a tab set for the place under the
+     * mouse (a contour not cut and its reason): ChartPanel alone ignores the latter.
+     */
+    @Override
+    public String getToolTipText(java.awt.event.MouseEvent e) {
+        String own = super.getToolTipText(e);
+        return own != null ? own : getToolTipText();
+    }
+
     private static final long serialVersionUID = 1L;
 
     /** What to draw: a chart built from values captured on the event thread, and their identity. */

@@ -147,7 +147,7 @@ final class OutputTab implements ModuleTab {
     private void writeFormatsToJob() {
         ctx.model().job().robot().ifPresent(rs -> ctx.model().setJob(ctx.model().job().withRobot(
                 new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats(),
-                        rs.spindle(), rs.toolLengthMm()))));
+                        rs.spindle(), rs.toolLengthMm(), rs.placing()))));
     }
 
     /** New programs (or none): the status says which, the preview follows when the tab is shown. */

@@ -48,11 +48,22 @@ final class PositionTab implements ModuleTab {
     private final JTextField[] tablePiece = new JTextField[PositionViewModel.TABLE_PIECE.length];
     private final JLabel messages = new JLabel(" ");
     private final JButton compute = new JButton("Compute");
+    private final JButton placeAuto = new JButton("Place automatically");
     private final JSlider replay = new JSlider(0, 0, 0);
     private final JLabel pointLabel = new JLabel(" ");
     private final JTextArea summary = new JTextArea(8, 26);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
+    private final javax.swing.table.DefaultTableModel errorAxesModel = new javax.swing.table.DefaultTableModel(
+            PositionViewModel.ERROR_COLUMNS, 0) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public boolean isCellEditable(int row, int column) {
+            return false;
+        }
+    };
+    private final javax.swing.JTable errorAxes = new javax.swing.JTable(errorAxesModel);
     // the charts of the last result; the panels draw new ones off the event thread
     private transient TrajectoryCharts charts;
     private transient ValueMarker jointsMarker = new ValueMarker(1);
@@ -61,6 +72,14 @@ final class PositionTab implements ModuleTab {
     private final OffThreadChartPanel errorChart = chartPanel(() -> picture(false));
     private boolean loading;
     private String drawnRobot = "";
+    private final JLabel reach = new JLabel(" ");
+    private final transient LiveReachability live = new LiveReachability(this::showLive, this::liveFailed);
+    // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
+    private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
+    private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
+    private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
+    private long plotAskedNanos = -1;
+    private transient LiveReachability.Inputs shownInputs;
 
     PositionTab(AppContext ctx, RobotRunModel runs) {
         this.ctx = ctx;
@@ -73,15 +92,26 @@ final class PositionTab implements ModuleTab {
         compute.setName("position-compute");
         compute.setMnemonic(KeyEvent.VK_C);
         compute.addActionListener(e -> compute());
+        placeAuto.setName("position-place-auto");
+        placeAuto.setMnemonic(KeyEvent.VK_L);
+        placeAuto.addActionListener(e -> placeAutomatically());
+        placeAuto.setToolTipText(Tooltips.of("Position", "position-place-auto"));
         messages.setName("position-messages");
         messages.setForeground(new Color(180, 0, 0));
         JPanel actions = new JPanel(new FlowLayout(FlowLayout.LEFT));
         actions.add(compute);
+        actions.add(placeAuto);
         actions.add(messages);
+        reach.setName("position-reach");
+        reach.setToolTipText("Which targets the robot reaches at these placements, worked out as you type"
+                + " (one solution per target; Compute solves the trajectory with its relinks)");
+        JPanel reachRow = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 0));
+        reachRow.add(reach);
         JPanel top = new JPanel();
         top.setLayout(new BoxLayout(top, BoxLayout.Y_AXIS));
         top.add(fields);
         top.add(actions);
+        top.add(reachRow);
 
         replay.setName("position-replay");
         replay.setEnabled(false);
@@ -109,6 +139,13 @@ final class PositionTab implements ModuleTab {
         JPanel summaryPanel = new JPanel(new BorderLayout());
         summaryPanel.add(summaryLabel, BorderLayout.NORTH);
         summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
+        errorAxes.setName("position-error-axes");
+        errorAxes.setToolTipText("Target - reached per axis over the reached points, as summary.json's"
+                + " error_per_axis: x, y, z in mm, the orientation about x, y, z in rad");
+        JScrollPane axesScroll = new JScrollPane(errorAxes);
+        axesScroll.setPreferredSize(new java.awt.Dimension(300, 7 * errorAxes.getRowHeight() + 28));
+        axesScroll.setBorder(BorderFactory.createTitledBorder("Error per axis (target - reached)"));
+        summaryPanel.add(axesScroll, BorderLayout.SOUTH);
         results.setName("position-results");
         jointsChart.setName("position-joints-chart");
         errorChart.setName("position-error-chart");
@@ -119,6 +156,8 @@ final class PositionTab implements ModuleTab {
         results.addTab("Summary", summaryPanel);
         results.setMnemonicAt(2, KeyEvent.VK_M);
         results.setPreferredSize(new java.awt.Dimension(430, 420));
+        jointsChart.onDrawn(this::plotDrawn);
+        errorChart.onDrawn(this::plotDrawn);
 
         JSplitPane views = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, cell, results);
         views.setResizeWeight(0.6);
@@ -135,6 +174,12 @@ final class PositionTab implements ModuleTab {
                 documentReplaced();
             } else if (MainViewModel.JOB.equals(e.getPropertyName())) {
                 ctx.model().job().robot().ifPresent(this::load);
+            }
+        });
+        panel.addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+                    && vm.problems().isEmpty()) {
+                requestLive();
             }
         });
         ctx.model().job().robot().ifPresent(this::load);
@@ -211,6 +256,7 @@ final class PositionTab implements ModuleTab {
 
     /** New or Open: the new job's placements (or none), no trajectory. */
     private void documentReplaced() {
+        live.forget();
         vm.clearResult();
         charts = null;
         jointsChart.setChart(null);
@@ -262,8 +308,106 @@ final class PositionTab implements ModuleTab {
             }
         }
         compute.setEnabled(problems.isEmpty());
-        cell.repaint();
+        placeAuto.setEnabled(problems.isEmpty());
+        if (problems.isEmpty()) {
+            requestLive();
+        }
+        if (vm.result().isEmpty()) {
+            // before any answer the view draws the table where the fields put it; after, the answer's
+            cell.repaint();
+        }
         return problems.isEmpty();
+    }
+
+    /** The live reachability's inputs now: the job's STEP-NC file, robot and tool, the fields' placements. */
+    private java.util.Optional<LiveReachability.Inputs> liveInputs() {
+        var stepnc = ctx.model().job().stepnc();
+        if (stepnc.isEmpty() || !vm.problems().isEmpty()) {
+            return java.util.Optional.empty();
+        }
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(new JobSettings.RobotSettings("irb140",
+                org.fresa.model.Placement.ORIGIN, org.fresa.model.Placement.ORIGIN,
+                JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return java.util.Optional.of(new LiveReachability.Inputs(stepnc.get().file(), stepnc.get().choices(), r.robot(),
+                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), vm.robotTablePlacement(),
+                vm.tablePiecePlacement(), r.formats()));
+    }
+
+    /** Asks which targets are reached at the placements shown (worked out in the background). */
+    private void requestLive() {
+        // only for the tab on screen: reading and planning the file takes a core for a second or
+        // more, which a job opened in another tab should not compete with; the tab asks when shown
+        if (!panel.isShowing()) {
+            return;
+        }
+        var in = liveInputs();
+        if (in.isEmpty()) {
+            if (ctx.model().job().stepnc().isEmpty()) {
+                reach.setText("Open a STEP-NC file: the targets' reach is then shown as you type.");
+            }
+            return;
+        }
+        live.request(in.get());
+    }
+
+    /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
+    private void showLive(LiveReachability.Answer a) {
+        long cpu0 = LiveReachability.cpuNanos();
+        vm.setLive(a.solved(), a.scene(), a.spindle());
+        shownInputs = a.inputs();
+        reach.setForeground(a.solved().result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
+        reach.setText(vm.reachLine());
+        showCharts(a.charts(), a.joints(), a.errors());
+        showResult();
+        // painted now, so that the time measured is until the view shows the new reach
+        cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
+        viewLatenciesMs.add((System.nanoTime() - a.askedNanos()) / 1e6);
+        cpuMs.add(cpu0 < 0 || a.cpuNanos() < 0 ? Double.NaN
+                : (a.cpuNanos() + LiveReachability.cpuNanos() - cpu0) / 1e6);
+        plotAskedNanos = a.askedNanos();
+    }
+
+    private void liveFailed(String message) {
+        reach.setForeground(CellView.UNREACHABLE);
+        reach.setText("Reach not known: " + message);
+    }
+
+    /** A plot image arrived: the first one up to date after a live answer ends its measurement. */
+    private void plotDrawn() {
+        OffThreadChartPanel shown = results.getSelectedComponent() == jointsChart ? jointsChart
+                : results.getSelectedComponent() == errorChart ? errorChart : null;
+        if (plotAskedNanos >= 0 && shown != null && shown.isUpToDate()) {
+            plotLatenciesMs.add((System.nanoTime() - plotAskedNanos) / 1e6);
+            plotAskedNanos = -1;
+        }
+    }
+
+    /** Whether the live answer shown is that of the fields and job as they are now. */
+    boolean showsLiveAnswerOfFields() {
+        return shownInputs != null && liveInputs().equals(java.util.Optional.of(shownInputs));
+    }
+
+    /** The scene the 3D view draws now. */
+    CellScene scene() {
+        return cell.scene();
+    }
+
+    /** The times (ms) from each field change to the 3D view painted with its reachability. */
+    java.util.List<Double> viewLatenciesMs() {
+        return java.util.List.copyOf(viewLatenciesMs);
+    }
+
+    /**
+     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene
+     * and charts) and the event thread's (showing and painting it), without the waits for a core.
+     */
+    java.util.List<Double> cpuMs() {
+        return java.util.List.copyOf(cpuMs);
+    }
+
+    /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
+    java.util.List<Double> plotLatenciesMs() {
+        return java.util.List.copyOf(plotLatenciesMs);
     }
 
     private static void mark(JTextField[] fs, String prefix, Map<String, String> problems) {
@@ -292,29 +436,79 @@ final class PositionTab implements ModuleTab {
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
         java.util.List<String> formats = r.formats();
+        // Compute answers for these fields: a live answer still on its way would only hide it
+        var asked = liveInputs();
+        asked.ifPresent(live::answeredBy);
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
-            RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
-                    r.tablePiece(), formats, new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
-                    progress);
+            PositionViewModel.Planned planned = PositionViewModel.plan(file, r.robot(),
+                    new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), stepnc.get().choices(), progress);
+            RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
+                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
             progress.progress(-1, "preparing the plots");
             TrajectoryCharts c = TrajectoryCharts.of(solved);
-            return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));
+            return new Charted(solved, c, c.joints(1), c.errors(1),
+                    PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
+                    planned.spindle());
         }, charted -> {
                     if (generation != ctx.model().generation()) {
                         return;
                     }
                     RobotTrajectoryService.Solved solved = charted.solved();
-                    vm.setResult(solved, charted.scene());
                     String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+                    if (!live.lastAsked().equals(asked)) {
+                        // the fields changed while it ran: the live view of the new ones stays
+                        runs.set(new RobotRunModel.Run(solved, name));
+                        return;
+                    }
+                    vm.setResult(solved, charted.scene(), charted.spindle());
+                    reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
+                    reach.setText(vm.reachLine());
                     runs.set(new RobotRunModel.Run(solved, name));
                     showCharts(charted.charts(), charted.joints(), charted.error());
                     showResult();
                 });
     }
 
+    /**
+     * Searches, in the background, the robot -> table placement that reaches every target of the
+     * part with the largest joint-limit margin ({@code fresa robot --place auto}) and puts it into
+     * the job's placement fields; says which workingsteps are out of reach when there is none.
+     */
+    void placeAutomatically() {
+        if (!validateFields()) {
+            return;
+        }
+        var stepnc = ctx.model().job().stepnc();
+        if (stepnc.isEmpty()) {
+            Dialogs.error(ctx.owner(), "Place automatically", "No STEP-NC file: open one in the STEP-NC tab first.");
+            return;
+        }
+        Path file = stepnc.get().file();
+        ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
+        int generation = ctx.model().generation();
+        ctx.tasks().start("Searching the table placement for " + r.robot(),
+                progress -> org.fresa.job.AutoPlacement.search(file, r.robot(), r.tablePiece(),
+                        new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), progress),
+                outcome -> {
+                    if (generation != ctx.model().generation()) {
+                        return;
+                    }
+                    if (outcome.found()) {
+                        // the fields follow the job (its listener loads them)
+                        ctx.model().setJob(PositionViewModel.withRobotTable(ctx.model().job(), outcome.robotTable()));
+                        messages.setText(" ");
+                        summary.setText(outcome.sentence());
+                    } else {
+                        Dialogs.info(ctx.owner(), "Place automatically", outcome.sentence());
+                    }
+                });
+    }
+
     /** A solved trajectory with its charts, made off the event thread. */
     private record Charted(RobotTrajectoryService.Solved solved, TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene) {
+            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene,
+            org.fresa.geom.Transform3 spindle) {
     }
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
@@ -347,6 +541,10 @@ final class PositionTab implements ModuleTab {
 
     private void showResult() {
         summary.setText(String.join("\n", vm.summary()));
+        errorAxesModel.setRowCount(0);
+        for (String[] row : vm.errorRows()) {
+            errorAxesModel.addRow(row);
+        }
         replay.setMaximum(Math.max(0, vm.pointCount() - 1));
         replay.setValue(0);
         replay.setEnabled(vm.pointCount() > 0);

@@ -137,7 +137,15 @@ final class PositionViewModel {
     Job applyTo(Job job) {
         JobSettings.RobotSettings old = job.robot().orElse(JobSettings.RobotSettings.DEFAULTS);
         return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
-                old.formats(), old.spindle(), old.toolLengthMm()));
+                old.formats(), old.spindle(), old.toolLengthMm(), old.placing()));
+    }
+
+    /** The job with this robot -> table placement (the placement search's), all else kept. */
+    static Job withRobotTable(Job job, Placement robotTable) {
+        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
+                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTable, old.tablePiece(), old.formats(),
+                old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
     /**
@@ -155,23 +163,144 @@ final class PositionViewModel {
     static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
             Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool, ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
+        return compute(stepnc, robotName, robotTable, tablePiece, formats, tool,
+                org.fresa.toolpath.PlanningChoices.DEFAULT, progress);
+    }
+
+    /** As above, with the planner's choices of the job's STEP-NC settings (its path conventions). */
+    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
+            Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool,
+            org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
+        Planned planned = plan(stepnc, robotName, tool, choices, progress);
+        return RobotTrajectoryService.solve(planned.request(robotTable, tablePiece, formats), progress);
+    }
+
+    /**
+     * A STEP-NC program planned for a robot with its tools, in the workpiece frame: all that the
+     * placements do not change, so that the live reachability reads and plans a file once and then
+     * only places its toolpath and solves it.
+     *
+     * @param spindle the spindle nose in the flange frame (drawn with the tool)
+     * @param robots the robot carrying each workingstep's TCP, one instance per TCP
+     */
+    record Planned(Robot robot, org.fresa.model.Toolpath toolpath, Map<String, Transform3> tcpByLabel,
+            org.fresa.check.Limits checkLimits, Transform3 spindle,
+            java.util.function.Function<String, Robot> robots) {
+
+        /** The request {@code fresa robot} makes of this plan at these placements. */
+        RobotTrajectoryService.Request request(Placement robotTable, Placement tablePiece, List<String> formats) {
+            return new RobotTrajectoryService.Request(toolpath, robot, robotTable, tablePiece,
+                    NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT, tcpByLabel,
+                    checkLimits);
+        }
+    }
+
+    /**
+     * Reads the STEP-NC file, plans its toolpaths with the job's choices and gives each workingstep
+     * its TCP. Long: in the background.
+     */
+    static Planned plan(Path stepnc, String robotName, org.fresa.job.RobotTools.Choice tool,
+            org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
         var program = StepNcService.read(stepnc, progress);
         progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
         org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
                 stepnc.toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
-                tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT,
-                tools.tcpByLabel(), org.fresa.job.ProgramChecks.stepnc(program, plan,
-                        org.fresa.toolpath.PlanningChoices.DEFAULT));
-        return RobotTrajectoryService.solve(req, progress);
+        org.fresa.check.Limits limits = org.fresa.job.ProgramChecks.stepnc(program, plan, choices);
+        RobotTrajectoryService.Request any = new RobotTrajectoryService.Request(tools.toolpath(), robot,
+                Placement.ORIGIN, Placement.ORIGIN, NcPosts.CHORD_TOLERANCE_MM * 10, List.of(),
+                TrajectorySolver.Options.DEFAULT, tools.tcpByLabel(), limits);
+        return new Planned(robot, tools.toolpath(), tools.tcpByLabel(), limits, tools.spindle(), any.robotOfLabel());
+    }
+
+    /**
+     * Which targets of the plan the robot reaches at these placements, one solution each (no
+     * relinks): the live view of the Position tab. Empty when {@code stale} says the answer is no
+     * longer wanted.
+     *
+     * @param reach the checker of the thread that runs this (it keeps a solver per tool)
+     */
+    static Optional<RobotTrajectoryService.Solved> reach(Planned planned, Placement robotTable, Placement tablePiece,
+            List<String> formats, org.fresa.kin.Reachability reach, java.util.function.BooleanSupplier stale) {
+        RobotTrajectoryService.Request req = planned.request(robotTable, tablePiece, formats);
+        List<org.fresa.kin.ToolTarget> targets = RobotTrajectoryService.targets(req.toolpath(),
+                robotTable.toTransform().times(tablePiece.toTransform()), req.chordToleranceMm());
+        return reach.check(targets, planned.robots(), stale)
+                .map(r -> new RobotTrajectoryService.Solved(req, targets, r));
     }
 
     void setResult(RobotTrajectoryService.Solved s) {
         solved = Optional.of(s);
         selected = 0;
+        live = false;
+        spindle = null;
     }
+
+    /**
+     * A live reachability result (one solution per target, no relinks) with its scene at the first
+     * point, made off the event thread: shown until the next one or Compute's trajectory.
+     */
+    void setLive(RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult) {
+        setResult(s, atFirstPoint, spindleOfResult);
+        live = true;
+    }
+
+    /** A Compute result with its spindle (drawn with the tool). */
+    void setResult(RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult) {
+        setResult(s, atFirstPoint);
+        spindle = spindleOfResult;
+    }
+
+    /** Whether the result shown is the live reachability, not a computed trajectory. */
+    boolean isLive() {
+        return live && solved.isPresent();
+    }
+
+    /**
+     * One line on what is out of reach: how many targets of which workingsteps (the most first),
+     * or that all are within reach; empty before anything is solved.
+     */
+    String reachLine() {
+        if (solved.isEmpty()) {
+            return "";
+        }
+        List<TrajectoryPoint> pts = solved.get().result().points();
+        Map<String, Integer> out = new LinkedHashMap<>();
+        int targets = 0;
+        for (TrajectoryPoint p : pts) {
+            if (p.inserted()) {
+                continue;
+            }
+            targets++;
+            if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
+                out.merge(p.label(), 1, Integer::sum);
+            }
+        }
+        String robotName = solved.get().request().robot().name();
+        if (out.isEmpty()) {
+            return "All " + targets + " targets are within reach of " + robotName + ".";
+        }
+        int total = out.values().stream().mapToInt(Integer::intValue).sum();
+        List<Map.Entry<String, Integer>> worst = new ArrayList<>(out.entrySet());
+        worst.sort((a, b) -> b.getValue() - a.getValue());
+        StringBuilder sb = new StringBuilder();
+        sb.append(total).append(" of ").append(targets).append(" targets out of reach of ").append(robotName)
+                .append(", in ").append(out.size()).append(out.size() == 1 ? " workingstep: " : " workingsteps: ");
+        for (int i = 0; i < Math.min(4, worst.size()); i++) {
+            sb.append(i == 0 ? "" : ", ").append(worst.get(i).getKey()).append(" (").append(worst.get(i).getValue())
+                    .append(')');
+        }
+        if (worst.size() > 4) {
+            sb.append(" and ").append(worst.size() - 4).append(" more");
+        }
+        return sb.toString();
+    }
+
+    private boolean live;
+    private Transform3 spindle;
 
     /** A result with its scene at the first point, made by {@link #sceneOf} in the background. */
     void setResult(RobotTrajectoryService.Solved s, CellScene atFirstPoint) {
@@ -183,6 +312,7 @@ final class PositionViewModel {
     /** Forgets the computed trajectory (another document was opened). */
     void clearResult() {
         solved = Optional.empty();
+        live = false;
         selected = 0;
         sceneCache = null;
         sceneCacheKey = null;
@@ -219,6 +349,14 @@ final class PositionViewModel {
             }
         }
         List<String> out = new ArrayList<>();
+        if (live) {
+            out.add("Live reachability: one solution per target, no relinks (Compute solves the trajectory)");
+            out.add("Robot: " + solved.get().request().robot().name());
+            out.add("Targets: " + r.points().size());
+            out.add("Out of reach: " + r.unreachable());
+            out.add(String.format(Locale.ROOT, "ik_ms: %.1f", r.ikNanos() / 1e6));
+            return out;
+        }
         out.add("Robot: " + solved.get().request().robot().name());
         out.add("Points: " + r.points().size() + " (" + solved.get().targets().size() + " targets)");
         out.add("Unreachable: " + r.unreachable());
@@ -227,6 +365,26 @@ final class PositionViewModel {
         out.add(String.format(Locale.ROOT, "Max orientation error: %.3g rad", maxRot));
         out.add(String.format(Locale.ROOT, "ik_ms: %.1f", r.ikNanos() / 1e6));
         return out;
+    }
+
+    /** The columns of the error-per-axis table. */
+    static final String[] ERROR_COLUMNS = {"Axis", "Mean", "Min", "Max"};
+
+    /**
+     * The error per axis of the result shown, target - reached, as summary.json's
+     * {@code error_per_axis} and the thesis's Table 5.3: x, y, z (mm), then the orientation about
+     * x, y, z (rad); empty before a result or when no point is reached.
+     */
+    List<String[]> errorRows() {
+        if (solved.isEmpty()) {
+            return List.of();
+        }
+        List<String[]> rows = new ArrayList<>();
+        for (org.fresa.job.ErrorStatistics.Axis a : org.fresa.job.ErrorStatistics.of(solved.get().result()).axes()) {
+            rows.add(new String[] {a.axis() + " (" + a.unit() + ")", String.format(Locale.ROOT, "%.3g", a.mean()),
+                String.format(Locale.ROOT, "%.3g", a.min()), String.format(Locale.ROOT, "%.3g", a.max())});
+        }
+        return rows;
     }
 
     /** The selected point: label, status and joint values. */
@@ -274,25 +432,60 @@ final class PositionViewModel {
     private List<Object> sceneCacheKey;
 
     private CellScene solvedScene(RobotTrajectoryService.Solved s) {
-        return sceneOf(s, selected);
+        return sceneOf(s, selected, spindleShown());
     }
 
-    /** The 3D scene of a result at a point (any thread: the tab prepares the first one off the event thread). */
+    /** The spindle drawn with a result: none for a result set without one. */
+    private Optional<Transform3> spindleShown() {
+        return Optional.ofNullable(spindle);
+    }
+
+    /** The 3D scene of a result at a point, the robot with a bare flange (no tool drawn). */
     static CellScene sceneOf(RobotTrajectoryService.Solved s, int selected) {
+        return sceneOf(s, selected, Optional.empty());
+    }
+
+    /**
+     * The 3D scene of a result at a point (any thread: the tab prepares the first one off the event
+     * thread): with a spindle, the robot is drawn to its flange and the spindle and the point's
+     * cutter (the tool length of its TCP, the diameter of its STEP-NC tool) on it.
+     */
+    static CellScene sceneOf(RobotTrajectoryService.Solved s, int selected, Optional<Transform3> spindle) {
         List<TrajectoryPoint> pts = s.result().points();
         double[] q = CellScene.homePose(s.request().robot());
         Robot robot = s.request().robot();
+        String label = null;
         for (int i = Math.min(selected, pts.size() - 1); i >= 0; i--) {
             if (pts.get(i).status() != TrajectoryPoint.Status.UNREACHABLE) {
                 q = pts.get(i).q();
+                label = pts.get(i).label();
                 // drawn with the point's tool: the last link runs from the flange to the tool tip
-                robot = s.request().robot().withTool(s.request().tcp(pts.get(i).label()));
+                robot = s.request().robot().withTool(s.request().tcp(label));
                 break;
             }
         }
         Transform3 table = s.request().robotTable().toTransform();
         Transform3 piece = table.times(s.request().tablePiece().toTransform());
-        return CellScene.of(robot, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+        if (spindle.isEmpty() || label == null) {
+            return CellScene.of(robot, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+        }
+        Robot bare = robot.withTool(Transform3.IDENTITY);
+        CellScene scene = CellScene.of(bare, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+        Transform3 flange = bare.forward(q);
+        Transform3 tip = robot.forward(q);
+        Vec3 nose = flange.times(spindle.get()).translationPart();
+        return scene.withTool(new CellScene.ToolShape(flange.translationPart(), nose, tip.translationPart(),
+                diameterOf(s.request().toolpath(), label)), tip);
+    }
+
+    /** The diameter of the tool of a workingstep (its label), 0 when unknown. */
+    private static double diameterOf(org.fresa.model.Toolpath toolpath, String label) {
+        for (org.fresa.model.ToolpathSection sec : toolpath.sections()) {
+            if (sec.label().equals(label)) {
+                return sec.toolDiameterMm();
+            }
+        }
+        return 0;
     }
 
     /**
@@ -300,6 +493,10 @@ final class PositionViewModel {
      * placements or robot), not while the replay moves the robot.
      */
     Object fitKey() {
+        if (live && solved.isPresent()) {
+            // the live answers follow the fields as they are typed: the view stays where the planner put it
+            return List.of("live", System.identityHashCode(robot()));
+        }
         return List.of(solved.map(System::identityHashCode).orElse(0), String.join(",", robotTable),
                 String.join(",", tablePiece), System.identityHashCode(robot()));
     }

@@ -71,6 +71,10 @@ final class RobotTab implements ModuleTab {
     private final JTextArea symbolic = new JTextArea(12, 60);
     private final Timer commitTimer;
     private JTextField[] paramFields = new JTextField[0];
+    private final JTextField spindle = new JTextField(14);
+    private final JTextField toolLength = new JTextField(6);
+    private final JLabel spindleMessage = new JLabel(" ");
+    private final JLabel toolLengthMessage = new JLabel(" ");
     private boolean updating;
     private int symbolicGeneration;
     private Robot symbolicOf;
@@ -129,7 +133,10 @@ final class RobotTab implements ModuleTab {
         msgs.add(uses);
         south.add(msgs, BorderLayout.NORTH);
         paramPanel.setBorder(BorderFactory.createTitledBorder("Parameters"));
-        south.add(paramPanel, BorderLayout.CENTER);
+        JPanel centre = new JPanel(new BorderLayout());
+        centre.add(paramPanel, BorderLayout.CENTER);
+        centre.add(toolPanel(), BorderLayout.SOUTH);
+        south.add(centre, BorderLayout.CENTER);
         params.setEditable(false);
         params.setName("robot-parameters");
         params.setBackground(panel.getBackground());
@@ -156,8 +163,10 @@ final class RobotTab implements ModuleTab {
         ctx.model().addListener(e -> {
             if (MainViewModel.JOB.equals(e.getPropertyName())) {
                 vm.fromJob(ctx.model().job()).ifPresent(this::chooseQuietly);
+                showJobsTool();
             }
         });
+        showJobsTool();
         // the derivation waits until the tab is shown (see computeSymbolic)
         panel.addHierarchyListener(e -> {
             if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()) {
@@ -165,6 +174,88 @@ final class RobotTab implements ModuleTab {
             }
         });
         refresh();
+    }
+
+    /**
+     * The tool on the flange, the job's: the spindle nose in the flange frame and the tool length
+     * from the nose to the tip, each field marked with its message beside it while it is wrong
+     * (the job then keeps the last good value).
+     */
+    private JPanel toolPanel() {
+        JPanel p = new JPanel(new GridBagLayout());
+        p.setBorder(BorderFactory.createTitledBorder("Tool on the flange (the job's)"));
+        spindle.setName("robot-spindle");
+        toolLength.setName("robot-tool-length");
+        spindleMessage.setName("robot-spindle-message");
+        toolLengthMessage.setName("robot-tool-length-message");
+        spindleMessage.setForeground(new Color(170, 0, 0));
+        toolLengthMessage.setForeground(new Color(170, 0, 0));
+        JLabel sl = new JLabel("Spindle X,Y,Z[,RX,RY,RZ] (mm, deg):");
+        sl.setDisplayedMnemonic(KeyEvent.VK_P);
+        sl.setLabelFor(spindle);
+        JLabel tl = new JLabel("Tool length (mm):");
+        tl.setDisplayedMnemonic(KeyEvent.VK_L);
+        tl.setLabelFor(toolLength);
+        GridBagConstraints c = new GridBagConstraints();
+        c.insets = new Insets(1, 4, 1, 4);
+        c.anchor = GridBagConstraints.WEST;
+        c.gridy = 0;
+        p.add(sl, c);
+        p.add(spindle, c);
+        p.add(spindleMessage, c);
+        c.gridy = 1;
+        p.add(tl, c);
+        p.add(toolLength, c);
+        p.add(toolLengthMessage, c);
+        TextChanges.onChange(spindle, () -> {
+            if (!updating) {
+                vm.setSpindle(spindle.getText());
+                toolEdited();
+            }
+        });
+        TextChanges.onChange(toolLength, () -> {
+            if (!updating) {
+                vm.setToolLength(toolLength.getText());
+                toolEdited();
+            }
+        });
+        markTool();
+        return p;
+    }
+
+    /** A tool field changed: marks it, and a good value goes into the job at once. */
+    private void toolEdited() {
+        markTool();
+        org.fresa.job.Job j = vm.applyToolTo(ctx.model().job());
+        if (!j.equals(ctx.model().job())) {
+            ctx.model().setJob(j);
+        }
+    }
+
+    /** The job's spindle and tool length in the fields, when the job changed them (a job opened). */
+    private void showJobsTool() {
+        if (!vm.loadTool(ctx.model().job())) {
+            return;
+        }
+        updating = true;
+        try {
+            spindle.setText(vm.spindleText());
+            toolLength.setText(vm.toolLengthText());
+        } finally {
+            updating = false;
+        }
+        markTool();
+    }
+
+    private void markTool() {
+        var sp = vm.spindleProblem();
+        var tp = vm.toolLengthProblem();
+        spindle.setBackground(sp.isPresent() ? BAD : Color.WHITE);
+        toolLength.setBackground(tp.isPresent() ? BAD : Color.WHITE);
+        spindleMessage.setText(sp.orElse(" "));
+        toolLengthMessage.setText(tp.orElse(" "));
+        spindle.setToolTipText(sp.orElse(Tooltips.SPINDLE));
+        toolLength.setToolTipText(tp.orElse(Tooltips.TOOL_LENGTH));
     }
 
     @Override

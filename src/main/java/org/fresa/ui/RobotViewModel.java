@@ -581,12 +581,126 @@ final class RobotViewModel {
         return s.chain().joints().stream().anyMatch(j -> j.type() == JointType.PRISMATIC);
     }
 
+    // ---- the tool on the flange: the job's spindle and tool length, as typed
+
+    private String spindleText = "";
+    private String toolLengthText = "";
+    private Optional<Placement> spindle = Optional.empty();
+    private java.util.OptionalDouble toolLengthMm = java.util.OptionalDouble.empty();
+
+    String spindleText() {
+        return spindleText;
+    }
+
+    String toolLengthText() {
+        return toolLengthText;
+    }
+
+    /**
+     * Sets the spindle as {@code --spindle} takes it: {@code X,Y,Z[,RX,RY,RZ]} (mm, deg) of the
+     * spindle nose in the flange frame, or nothing for the robot file's tool frame (or the flange).
+     * A bad text keeps the last good spindle.
+     */
+    void setSpindle(String text) {
+        spindleText = text.trim();
+        if (spindleProblem().isEmpty()) {
+            spindle = parseSpindle(spindleText);
+        }
+    }
+
+    /** Sets the tool length (mm, spindle nose to tip) for every tool; nothing for each STEP-NC tool's own. */
+    void setToolLength(String text) {
+        toolLengthText = text.trim();
+        if (toolLengthProblem().isEmpty()) {
+            toolLengthMm = toolLengthText.isEmpty() ? java.util.OptionalDouble.empty()
+                    : java.util.OptionalDouble.of(Double.parseDouble(toolLengthText));
+        }
+    }
+
+    /** What is wrong with the spindle text, if anything. */
+    Optional<String> spindleProblem() {
+        if (spindleText.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            org.fresa.job.RobotTrajectoryService.parseSpindle(spindleText);
+            return Optional.empty();
+        } catch (CamInputException e) {
+            return Optional.of("Spindle: " + e.problem());
+        }
+    }
+
+    /** What is wrong with the tool length text, if anything. */
+    Optional<String> toolLengthProblem() {
+        if (toolLengthText.isEmpty()) {
+            return Optional.empty();
+        }
+        double v;
+        try {
+            v = Double.parseDouble(toolLengthText);
+        } catch (NumberFormatException e) {
+            return Optional.of("Tool length: '" + toolLengthText + "' is not a number (mm)");
+        }
+        org.fresa.job.SettingRange r = org.fresa.job.SettingRanges.Robot.TOOL_LENGTH;
+        return r.contains(v) ? Optional.empty() : Optional.of("Tool length: " + r.problem(v));
+    }
+
+    private static Optional<Placement> parseSpindle(String text) {
+        if (text.isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(org.fresa.job.RobotTrajectoryService.parseSpindle(text));
+        } catch (CamInputException e) {
+            return Optional.empty();
+        }
+    }
+
+    /** The spindle and tool length last valid (what the job gets). */
+    Optional<Placement> spindle() {
+        return spindle;
+    }
+
+    java.util.OptionalDouble toolLengthMm() {
+        return toolLengthMm;
+    }
+
+    /** Shows the spindle and tool length a job holds; true when they differ from those shown. */
+    boolean loadTool(Job job) {
+        Optional<Placement> s = job.robot().flatMap(JobSettings.RobotSettings::spindle);
+        java.util.OptionalDouble l = job.robot().map(JobSettings.RobotSettings::toolLengthMm)
+                .orElse(java.util.OptionalDouble.empty());
+        if (s.equals(spindle) && l.equals(toolLengthMm)) {
+            return false;
+        }
+        spindle = s;
+        toolLengthMm = l;
+        spindleText = s.map(RobotViewModel::spindleText).orElse("");
+        toolLengthText = l.isPresent() ? num(l.getAsDouble()) : "";
+        return true;
+    }
+
+    /** A spindle as {@code --spindle} writes it: the rotations only when there are any. */
+    static String spindleText(Placement p) {
+        String xyz = num(p.xMm()) + "," + num(p.yMm()) + "," + num(p.zMm());
+        return p.rxDeg() == 0 && p.ryDeg() == 0 && p.rzDeg() == 0 ? xyz
+                : xyz + "," + num(p.rxDeg()) + "," + num(p.ryDeg()) + "," + num(p.rzDeg());
+    }
+
+    /** The job with the last valid spindle and tool length (robot, placements and formats kept). */
+    Job applyToolTo(Job job) {
+        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
+                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(old.robot(), old.robotTable(), old.tablePiece(),
+                old.formats(), spindle, toolLengthMm));
+    }
+
     /** The job with this robot in its RobotSettings (placements and formats kept). */
     Job applyTo(Job job) {
         JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
                 Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
         return job.withRobot(new JobSettings.RobotSettings(choice, old.robotTable(), old.tablePiece(), old.formats(),
-                old.spindle(), old.toolLengthMm()));
+                old.spindle(), old.toolLengthMm(), old.placing()));
     }
 
     /** The robot a job names, if it differs from the one shown. */

@@ -50,6 +50,7 @@ final class StepNcTab implements ModuleTab {
     private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel problems = new WarningsPanel("stepnc-problems", 4);
     private final JComboBox<String> layers = new JComboBox<>();
+    private final JComboBox<String> paths = new JComboBox<>();
     private final JSlider replay = new JSlider(0, StepNcViewModel.REPLAY_STEPS, StepNcViewModel.REPLAY_STEPS);
     private final JButton play = new JButton("Play");
     private final JLabel replayText = new JLabel(" ");
@@ -60,6 +61,8 @@ final class StepNcTab implements ModuleTab {
     private boolean updating;
     // the file shown, and the last one asked for (a failed read is not retried on every job change)
     private Path loadedFile;
+    // the path conventions the shown file was planned with
+    private org.fresa.toolpath.PathConvention loadedPaths;
     private Path requestedFile;
     // the plot of the state a read leaves the tab in, drawn with the read: shown once, then dropped
     private org.fresa.chart.PlotScene preparedPlot;
@@ -73,6 +76,18 @@ final class StepNcTab implements ModuleTab {
         open.addActionListener(e -> choose());
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(open);
+        JLabel pathsLabel = new JLabel("Paths:");
+        pathsLabel.setDisplayedMnemonic(KeyEvent.VK_A);
+        pathsLabel.setLabelFor(paths);
+        for (org.fresa.toolpath.PathConvention c : StepNcViewModel.PATHS) {
+            paths.addItem(StepNcViewModel.pathsLabel(c));
+        }
+        paths.setName("stepnc-paths");
+        paths.setToolTipText("Fresa's paths (exact arcs, gentle entries) or the 2016 STEP-NC robot thesis's points,"
+                + " for fresa toolpath and fresa robot (--paths)");
+        paths.addActionListener(e -> pathsChosen());
+        top.add(pathsLabel);
+        top.add(paths);
         top.add(fileLabel);
 
         tree.setName("stepnc-tree");
@@ -226,8 +241,38 @@ final class StepNcTab implements ModuleTab {
      * A job with a STEP-NC file shows that file here; a job without one (New, another Open, an
      * undo) shows the empty tab, never the last job's part.
      */
+    /** The path conventions the list shows. */
+    private org.fresa.toolpath.PathConvention chosenPaths() {
+        int i = paths.getSelectedIndex();
+        return StepNcViewModel.PATHS.get(Math.max(0, i));
+    }
+
+    /** A path convention picked: the job's STEP-NC settings carry it, and the file is planned again. */
+    private void pathsChosen() {
+        if (updating) {
+            return;
+        }
+        var s = ctx.model().job().stepnc();
+        if (s.isPresent() && s.get().paths() != chosenPaths()) {
+            ctx.model().setJob(ctx.model().job().withStepnc(s.get().withPaths(chosenPaths())));
+        }
+    }
+
     private void jobChanged() {
-        Optional<Path> want = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::file);
+        var settings = ctx.model().job().stepnc();
+        if (settings.isPresent() && settings.get().paths() != chosenPaths()) {
+            updating = true;
+            paths.setSelectedIndex(StepNcViewModel.PATHS.indexOf(settings.get().paths()));
+            updating = false;
+        }
+        if (settings.isPresent() && settings.get().file().equals(loadedFile) && settings.get().paths() != loadedPaths) {
+            // the same file with other path conventions: planned again
+            Path f = loadedFile;
+            clear();
+            open(f);
+            return;
+        }
+        Optional<Path> want = settings.map(JobSettings.StepNcSettings::file);
         if (want.isEmpty()) {
             if (loadedFile != null || requestedFile != null) {
                 clear();
@@ -247,6 +292,7 @@ final class StepNcTab implements ModuleTab {
         play.setText("Play");
         vm = new StepNcViewModel();
         loadedFile = null;
+        loadedPaths = null;
         requestedFile = null;
         preparedPlot = null;
         preparedDetails = null;
@@ -262,10 +308,11 @@ final class StepNcTab implements ModuleTab {
     void open(Path file) {
         requestedFile = file;
         int generation = ctx.model().generation();
+        JobSettings.StepNcSettings settings = StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
             StepNcProgram p = StepNcService.read(file, progress);
             progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
-            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT, settings.choices());
             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
             org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
             // the first workingstep's plot, from a view model of this thread in the tab's first state
@@ -286,9 +333,10 @@ final class StepNcTab implements ModuleTab {
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
-            org.fresa.post.MillingPost post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post)
-                    .orElse(JobSettings.StepNcSettings.DEFAULTS.post());
-            ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
+            loadedPaths = settings.paths();
+            if (!ctx.model().job().stepnc().equals(Optional.of(settings))) {
+                ctx.model().setJob(ctx.model().job().withStepnc(settings));
+            }
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
                     + program.skipped().size() + " skipped, " + program.unknownEntities().size()
                     + " entity types not interpreted");

@@ -889,4 +889,27 @@ final class StepNcViewModel {
     private static String v(Vec3 p) {
         return String.format(Locale.ROOT, "(%s, %s, %s)", n(p.x()), n(p.y()), n(p.z()));
     }
+
+    /** The path conventions the tab offers, in its list's order: Fresa's, then the thesis's. */
+    static final List<org.fresa.toolpath.PathConvention> PATHS = List.of(org.fresa.toolpath.PathConvention.FRESA,
+            org.fresa.toolpath.PathConvention.THESIS);
+
+    /** How the tab's list names a path convention. */
+    static String pathsLabel(org.fresa.toolpath.PathConvention p) {
+        return p == org.fresa.toolpath.PathConvention.THESIS ? "the 2016 robot thesis's points" : "Fresa's paths";
+    }
+
+    /**
+     * The job's STEP-NC settings once this file is read in the tab: the job's own when it already
+     * names the file (its post and choices kept), else the file with the default post and choices;
+     * in both cases with the path conventions the tab shows.
+     */
+    static org.fresa.job.JobSettings.StepNcSettings settingsFor(org.fresa.job.Job job, java.nio.file.Path file,
+            org.fresa.toolpath.PathConvention paths) {
+        return job.stepnc().filter(s -> s.file().equals(file))
+                .orElseGet(() -> new org.fresa.job.JobSettings.StepNcSettings(file,
+                        job.stepnc().map(org.fresa.job.JobSettings.StepNcSettings::post)
+                                .orElse(org.fresa.job.JobSettings.StepNcSettings.DEFAULTS.post())))
+                .withPaths(paths);
+    }
 }

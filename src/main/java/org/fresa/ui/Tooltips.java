@@ -45,6 +45,8 @@ final class Tooltips {
         for (int i = 0; i < tpKeys.length; i++) {
             tip("Position", "position-tp-" + tpKeys[i], "Table -> piece: " + tp[i]);
         }
+        tip("Position", "position-place-auto", "Searches the robot -> table placement (X, Y, Z, RZ) that reaches every"
+                + " target with the largest joint-limit margin, or says which workingsteps are out of reach (Alt+L)");
         tip("Position", "position-replay", "The trajectory point shown in the cell view and marked in the plots");
         tip("Robot", "robot-choice", "A built-in robot whose Denavit-Hartenberg table and limits fill the editor");
         tip("Robot", "robot-dh", "Denavit-Hartenberg table, one row per joint: theta and alpha in degrees, d and a in"
@@ -143,6 +145,14 @@ final class Tooltips {
     }
 
     /** A robot parameter's meaning: the robot's name, or a length (mm) or angle (deg) of its geometry. */
+    /** The Robot tab's spindle field. */
+    static final String SPINDLE = "The spindle nose in the flange frame, as --spindle takes it: X,Y,Z in mm and"
+            + " optionally RX,RY,RZ in deg (R = Rz Ry Rx); empty: the robot file's tool frame, else the flange";
+
+    /** The Robot tab's tool length field. */
+    static final String TOOL_LENGTH = "The tool's length from the spindle nose to its tip (mm), for every tool, as"
+            + " --tool-length; empty: each STEP-NC tool's own length";
+
     static String robotParameter(String name) {
         if (name.equals("Name")) {
             return "The robot's name, written into its programs";

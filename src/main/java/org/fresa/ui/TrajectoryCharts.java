@@ -24,17 +24,20 @@ final class TrajectoryCharts {
     private final String robot;
     private final List<RobotCharts.JointSeries> joints;
     private final double[][] errorsMm;
+    private final org.fresa.job.ErrorStatistics stats;
 
-    private TrajectoryCharts(String robot, List<RobotCharts.JointSeries> joints, double[][] errorsMm) {
+    private TrajectoryCharts(String robot, List<RobotCharts.JointSeries> joints, double[][] errorsMm,
+            org.fresa.job.ErrorStatistics stats) {
         this.robot = robot;
         this.joints = joints;
         this.errorsMm = errorsMm;
+        this.stats = stats;
     }
 
     static TrajectoryCharts of(RobotTrajectoryService.Solved s) {
         return new TrajectoryCharts(s.request().robot().name(),
                 RobotTrajectoryService.jointSeries(s.request().robot(), s.result()),
-                RobotTrajectoryService.positionErrorsMm(s.result()));
+                RobotTrajectoryService.positionErrorsMm(s.result()), org.fresa.job.ErrorStatistics.of(s.result()));
     }
 
     Marked joints(double point) {
@@ -49,7 +52,9 @@ final class TrajectoryCharts {
     }
 
     Marked errors(double point) {
-        JFreeChart c = RobotCharts.positionErrors("Position error per axis, " + robot, errorsMm);
+        JFreeChart c = RobotCharts.positionErrors("Position error per axis, " + robot, errorsMm,
+                List.of(stats.positionLegend(0), stats.positionLegend(1), stats.positionLegend(2)),
+                stats.orientationLine());
         ValueMarker m = marker(point);
         c.getXYPlot().addDomainMarker(m);
         return new Marked(c, m);

@@ -58,6 +58,38 @@ class JobXmlTest {
     }
 
     @Test
+    void theThesissPathConventionsAreKeptAndAnUnknownOneIsRefusedWithItsLine() throws Exception {
+        Job job = Job.empty(JobTask.ROBOT).withStepnc(new StepNcSettings(dir.resolve("example2.stp"), org.fresa.post.MillingPost.LINUXCNC)
+                .withPaths(org.fresa.toolpath.PathConvention.THESIS));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertTrue(Files.readString(file).contains("paths=\"thesis\""));
+        assertEquals(job, JobXml.read(file));
+        assertEquals(org.fresa.toolpath.PathConvention.THESIS, JobXml.read(file).stepnc().orElseThrow().choices().paths());
+        // the default is not written: saved jobs stay as they were
+        JobXml.write(Job.empty(JobTask.ROBOT).withStepnc(new StepNcSettings(dir.resolve("example2.stp"), org.fresa.post.MillingPost.LINUXCNC)),
+                file);
+        assertTrue(!Files.readString(file).contains("paths="));
+        Path bad = dir.resolve("bad.xml");
+        Files.writeString(bad, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"toolpath\">\n"
+                + "<stepnc file=\"a.stp\" paths=\"nist\"/></job>\n");
+        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
+                () -> JobXml.read(bad));
+        assertTrue(e.getMessage().contains("nist") && e.getMessage().contains("line 3"), e.getMessage());
+    }
+
+    @Test
+    void thePlacementSearchIsKept() throws Exception {
+        Job job = Job.empty(JobTask.ROBOT).withRobot(new RobotSettings("tricept806", Placement.ORIGIN,
+                new Placement(0, 10, 0, 0, 0, 0), List.of("csv"), Optional.empty(), OptionalDouble.empty(),
+                TablePlacing.AUTO));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        assertTrue(Files.readString(file).contains("place=\"auto\""));
+        assertEquals(job, JobXml.read(file));
+    }
+
+    @Test
     void aToolLengthOutOfRangeIsRefused() throws Exception {
         Path file = dir.resolve("bad.xml");
         Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"robot\">"

@@ -42,22 +42,22 @@ class ColdIkTest {
     }
 
     @Test
-    void theClosedFormFindsEverySolutionTheSearchFromEveryStartFinds() {
-        // the search from every start finds the other whole turns of axes 4 and 6 only now and
-        // then (from a random start); the closed form gives them all, so its set holds the
-        // search's and the extra ones are the same poses
+    void theClosedFormFindsExactlyTheSolutionsTheSearchFromEveryStartFinds() {
+        // both give every whole-turn variant within the limits (axes 4 and 6 of the IRB-140):
+        // the same sets, best margin first, each solution within the limits and on the pose
         SerialRobot irb = Robots.irb140();
         SerialIkSolver solver = (SerialIkSolver) irb.newSolver(IkOptions.DEFAULT);
         int solutions = 0;
-        int extra = 0;
-        for (Transform3 t : randomPoses(irb, 500, 20261202L)) {
+        for (Transform3 t : randomPoses(irb, 400, 20261202L)) {
             List<IkResult.Converged> fast = solver.solveAll(t);
             List<IkResult.Converged> every = solver.solveAllFromStarts(t);
             assertTrue(!fast.isEmpty());
+            assertEquals(every.size(), fast.size(), () -> "for " + t);
             for (IkResult.Converged c : every) {
                 assertTrue(contains(fast, c.q()), () -> "missing " + java.util.Arrays.toString(c.q()) + " for " + t);
             }
             for (IkResult.Converged c : fast) {
+                assertTrue(contains(every, c.q()), () -> "extra " + java.util.Arrays.toString(c.q()) + " for " + t);
                 Transform3 reached = irb.forward(c.q());
                 assertTrue(reached.translationPart().distance(t.translationPart()) <= 1e-7, c::toString);
                 assertTrue(t.rotationAngleTo(reached) <= 1e-9, c::toString);
@@ -65,11 +65,57 @@ class ColdIkTest {
                     JointLimit l = irb.joints().get(i);
                     assertTrue(c.q()[i] >= l.min() && c.q()[i] <= l.max(), c::toString);
                 }
-                extra += contains(every, c.q()) ? 0 : 1;
+            }
+            for (int k = 1; k < fast.size(); k++) {
+                assertTrue(margin(irb, fast.get(k - 1).q()) >= margin(irb, fast.get(k).q()), "best margin first");
             }
             solutions += fast.size();
         }
-        assertTrue(solutions >= 500 + extra, solutions + " solutions, " + extra + " not found by every start");
+        // axes 4 and 6 turn more than a full turn: most poses have several variants of a branch
+        assertTrue(solutions > 4 * 400, solutions + " solutions");
+    }
+
+    @Test
+    void theScarasClosedFormFindsExactlyTheSolutionsOfTheSearchFromEveryStart() {
+        SerialRobot adept = Robots.adeptOne();
+        SerialIkSolver solver = (SerialIkSolver) adept.newSolver(IkOptions.DEFAULT);
+        SplittableRandom rnd = new SplittableRandom(4L);
+        int solutions = 0;
+        for (int k = 0; k < 300; k++) {
+            double[] q = new double[4];
+            for (int i = 0; i < 4; i++) {
+                JointLimit l = adept.joints().get(i);
+                q[i] = l.min() + rnd.nextDouble() * (l.max() - l.min());
+            }
+            Transform3 t = adept.forward(q);
+            List<IkResult.Converged> fast = solver.solveAll(t);
+            List<IkResult.Converged> every = solver.solveAllFromStarts(t);
+            assertTrue(contains(fast, q), () -> "the pose's own joints are missing for " + t);
+            assertEquals(every.size(), fast.size(), () -> "for " + t);
+            for (IkResult.Converged c : every) {
+                assertTrue(contains(fast, c.q()), () -> "missing " + java.util.Arrays.toString(c.q()));
+            }
+            solutions += fast.size();
+        }
+        assertTrue(solutions > 300, solutions + " solutions");
+    }
+
+    @Test
+    void theQuickSolveIsTheClosedFormsSetAndNothingOutOfReach() {
+        SerialRobot irb = Robots.irb140();
+        IkSolver solver = irb.newSolver(IkOptions.DEFAULT);
+        for (Transform3 t : randomPoses(irb, 100, 7L)) {
+            assertEquals(solver.solveAll(t).size(), solver.solveAllQuickly(t).size());
+        }
+        assertEquals(0, solver.solveAllQuickly(Transform3.translation(2000, 0, 0)).size());
+    }
+
+    static double margin(SerialRobot r, double[] q) {
+        double m = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < q.length; i++) {
+            m = Math.min(m, r.joints().get(i).margin(q[i]));
+        }
+        return m;
     }
 
     @Test

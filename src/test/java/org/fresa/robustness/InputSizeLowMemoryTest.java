@@ -87,7 +87,7 @@ class InputSizeLowMemoryTest {
     @org.junit.jupiter.api.Test
     void theStatedLimitsAreShareOfTheHeapThatFit() {
         long heap = Runtime.getRuntime().maxMemory();
-        assertAll(() -> assertEquals(heap / 16, DxfReader.maxFileBytes()),
+        assertAll(() -> assertEquals(heap / 8, DxfReader.maxFileBytes()),
                 () -> assertEquals(heap / 4, Part21Reader.maxFileBytes()),
                 () -> assertTrue(Part21Reader.maxFileBytes() >= 100 * MIB, "the 100 MB Part 21 file of issue 11 fits"),
                 () -> assertEquals(16 * MIB, FileChecks.MAX_TEXT_FILE_BYTES));

@@ -113,4 +113,52 @@ class CuttingTabGuiTest extends WindowGuiTest {
             throw new java.io.UncheckedIOException(e);
         }
     }
+
+    /** A contour not cut is drawn in its own layer and names itself and its reason under the mouse. */
+    @Test
+    void aContourNotCutIsDrawnAndTellsWhyOnHover(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path dxf = dir.resolve("plate-with-pinhole.dxf");
+        StringBuilder d = new StringBuilder("0\nSECTION\n2\nENTITIES\n");
+        double[][] c = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+        for (int k = 0; k < 4; k++) {
+            d.append("0\nLINE\n8\n0\n10\n").append(c[k][0]).append("\n20\n").append(c[k][1]).append("\n11\n")
+                    .append(c[(k + 1) % 4][0]).append("\n21\n").append(c[(k + 1) % 4][1]).append("\n");
+        }
+        // a pin hole of 1 mm: a 2 mm kerf cannot cut it
+        d.append("0\nCIRCLE\n8\n0\n10\n50\n20\n50\n40\n0.5\n0\nENDSEC\n0\nEOF\n");
+        Files.writeString(dxf, d.toString());
+        cut(dxf, "cutting-not-cut.png");
+        PlotPanel plot = window.robot().finder().find(new org.assertj.swing.core.GenericTypeMatcher<PlotPanel>(
+                PlotPanel.class, true) {
+            @Override
+            protected boolean isMatching(PlotPanel p) {
+                return true;
+            }
+        });
+        Pause.pause(new Condition("the plot is drawn") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> plot.isDrawn());
+            }
+        }, Timeout.timeout(20_000));
+        assertTrue(GuiActionRunner.execute(() -> plot.scene().layers().stream()
+                .anyMatch(l -> l.name().equals("not cut") && !l.curves().isEmpty())), "a layer of the contours not cut");
+        javax.swing.JComponent chart = GuiActionRunner.execute(() -> plot.chartComponent());
+        java.awt.Point onHole = GuiActionRunner.execute(() -> plot.toPixels(org.fresa.geom.Vec2.of(50.5, 50)));
+        java.awt.Point onPart = GuiActionRunner.execute(() -> plot.toPixels(org.fresa.geom.Vec2.of(25, 25)));
+        window.robot().moveMouse(chart, onPart);
+        window.robot().waitForIdle();
+        assertEquals(null, GuiActionRunner.execute(() -> chart.getToolTipText()), "nothing to tell over a cut part");
+        window.robot().moveMouse(chart, onHole);
+        Pause.pause(new Condition("the pin hole tells why it is not cut") {
+            @Override
+            public boolean test() {
+                String t = GuiActionRunner.execute(() -> chart.getToolTipText());
+                return t != null && t.contains("not cut");
+            }
+        }, Timeout.timeout(10_000));
+        String tip = GuiActionRunner.execute(() -> chart.getToolTipText());
+        assertTrue(tip.startsWith("part 1 hole 1 (1.000 x 1.000 mm at 49.500, 49.500)") && tip.contains("too small for a 2.000 mm kerf"),
+                tip);
+    }
 }

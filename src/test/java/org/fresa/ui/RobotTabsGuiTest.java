@@ -138,8 +138,10 @@ class RobotTabsGuiTest extends WindowGuiTest {
             CellScene scene = GuiActionRunner.execute(cell::scene);
             CellScene.PathPoint sel = scene.selected().orElseThrow();
             java.util.List<org.fresa.geom.Vec3> arm = scene.links().get(0);
-            // the robot drawn reaches the replayed point
-            assertEquals(0, arm.get(arm.size() - 1).distance(sel.at()), 1e-6);
+            // the robot drawn reaches the replayed point with its tool, which starts at the arm's flange
+            org.fresa.geom.Vec3 flange = arm.get(arm.size() - 1);
+            assertEquals(0, scene.tool().map(CellScene.ToolShape::tip).orElse(flange).distance(sel.at()), 1e-6);
+            scene.tool().ifPresent(t -> assertEquals(0, flange.distance(t.flange()), 1e-6));
             double marked = GuiActionRunner.execute(() -> {
                 org.jfree.chart.ChartPanel p = (org.jfree.chart.ChartPanel) window.robot().finder().findByName(
                         "position-joints-chart");

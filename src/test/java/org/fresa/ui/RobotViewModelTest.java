@@ -227,4 +227,47 @@ class RobotViewModelTest {
                 () -> assertTrue(text.contains("J_wz_q3 = 0\n"), text),
                 () -> assertTrue(text.contains("J_vx_q3 = 0\n"), text));
     }
+
+    @Test
+    void theSpindleAndToolLengthGoIntoTheJobAndABadTextKeepsTheLastGoodValue() {
+        RobotViewModel vm = new RobotViewModel();
+        vm.setSpindle("0,0,150");
+        vm.setToolLength("50");
+        Job j = vm.applyToolTo(Job.empty(JobTask.ROBOT));
+        var r = j.robot().orElseThrow();
+        assertEquals(150, r.spindle().orElseThrow().zMm());
+        assertEquals(50, r.toolLengthMm().getAsDouble());
+
+        vm.setToolLength("5x");
+        assertEquals("Tool length: '5x' is not a number (mm)", vm.toolLengthProblem().orElseThrow());
+        vm.setToolLength("-3");
+        assertTrue(vm.toolLengthProblem().orElseThrow().startsWith("Tool length: expected "),
+                vm.toolLengthProblem().get());
+        vm.setSpindle("0,0");
+        assertTrue(vm.spindleProblem().orElseThrow().startsWith("Spindle: expected 3 to 6"),
+                vm.spindleProblem().get());
+        // the job keeps the last good values while a field is wrong
+        var kept = vm.applyToolTo(j).robot().orElseThrow();
+        assertEquals(150, kept.spindle().orElseThrow().zMm());
+        assertEquals(50, kept.toolLengthMm().getAsDouble());
+
+        // empty fields: the robot file's tool frame and each STEP-NC tool's own length
+        vm.setSpindle("");
+        vm.setToolLength("");
+        var none = vm.applyToolTo(j).robot().orElseThrow();
+        assertTrue(none.spindle().isEmpty() && none.toolLengthMm().isEmpty());
+    }
+
+    @Test
+    void aJobsToolIsShownInTheFields() {
+        RobotViewModel vm = new RobotViewModel();
+        RobotViewModel other = new RobotViewModel();
+        other.setSpindle("0,0,150,0,90,0");
+        other.setToolLength("50");
+        Job j = other.applyToolTo(Job.empty(JobTask.ROBOT));
+        assertTrue(vm.loadTool(j));
+        assertEquals("0,0,150,0,90,0", vm.spindleText());
+        assertEquals("50", vm.toolLengthText());
+        assertFalse(vm.loadTool(j), "the same tool again changes nothing");
+    }
 }

@@ -79,6 +79,56 @@ class StepNcTabGuiTest extends WindowGuiTest {
         assertEquals(70, GuiActionRunner.execute(() -> slider.target().getValue()));
     }
 
+    @Test
+    void theThesissPathsArePickedInTheTabPlannedAndKeptInTheJob() throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
+        window.tabbedPane("tabs").selectTab("STEP-NC");
+        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
+                org.fresa.post.MillingPost.LINUXCNC))));
+        waitForThePlan();
+        window.comboBox("stepnc-paths").requireSelection("Fresa's paths");
+        window.comboBox("stepnc-paths").selectItem("the 2016 robot thesis's points");
+        Pause.pause(new Condition("the job carries the thesis's paths") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> model.job().stepnc().orElseThrow().paths())
+                        == org.fresa.toolpath.PathConvention.THESIS;
+            }
+        }, Timeout.timeout(10_000));
+        waitForThePlan();
+        int moves = org.fresa.toolpath.ToolpathPlanner.plan(org.fresa.stepnc.StepNcReader.read(stp),
+                org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT
+                        .withPaths(org.fresa.toolpath.PathConvention.THESIS))
+                .toolpath().sections().stream().filter(x -> x.label().equals("WS FINISH POCKET1")).findFirst()
+                .orElseThrow().moves().size();
+        // planned again in the background: the workingstep shows the thesis's moves once it is done
+        String want = "move " + moves + " of " + moves + " (rapid), tool at (0, 0, 30) mm";
+        Pause.pause(new Condition("the thesis's plan is shown") {
+            @Override
+            public boolean test() {
+                try {
+                    window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
+                } catch (RuntimeException | AssertionError e) {
+                    return false;
+                }
+                return GuiActionRunner.execute(() -> window.label("stepnc-replay-text").target().getText())
+                        .endsWith(want);
+            }
+        }, Timeout.timeout(60_000));
+        shoot("stepnc-thesis-paths.png");
+    }
+
+    private void waitForThePlan() {
+        Pause.pause(new Condition("the program is read and planned") {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time").target().getText())
+                        .startsWith("Cycle time: this workingstep");
+            }
+        }, Timeout.timeout(60_000));
+    }
+
     private static int value(JSliderFixture slider) {
         return GuiActionRunner.execute(() -> slider.target().getValue());
     }

@@ -371,4 +371,21 @@ class StepNcViewModelTest {
         assertTrue(vm.layers().size() > 1);
         assertTrue(String.join("\n", vm.details()).contains("Cycle time of this workingstep"));
     }
+
+    @Test
+    void theTabsPathChoiceGoesIntoTheJobKeepingItsOtherStepNcSettings() {
+        Path file = Path.of("samples/stepnc/example2.stp");
+        org.fresa.job.Job job = org.fresa.job.Job.empty(org.fresa.job.JobTask.ofId("robot"))
+                .withStepnc(new org.fresa.job.JobSettings.StepNcSettings(file, org.fresa.post.MillingPost.SIEMENS_840D, true, 2));
+        var s = StepNcViewModel.settingsFor(job, file, org.fresa.toolpath.PathConvention.THESIS);
+        assertEquals(new org.fresa.job.JobSettings.StepNcSettings(file, org.fresa.post.MillingPost.SIEMENS_840D, true, 2,
+                org.fresa.pocket.EntryRule.DEFAULT, org.fresa.toolpath.PathConvention.THESIS), s);
+        assertEquals(org.fresa.toolpath.PathConvention.THESIS, s.choices().paths());
+        // another file: the job's post, the default choices, the paths shown
+        Path other = Path.of("samples/stepnc/iso14649-11-example1.stp");
+        var o = StepNcViewModel.settingsFor(job, other, org.fresa.toolpath.PathConvention.FRESA);
+        assertEquals(new org.fresa.job.JobSettings.StepNcSettings(other, org.fresa.post.MillingPost.SIEMENS_840D), o);
+        assertEquals(List.of("Fresa's paths", "the 2016 robot thesis's points"),
+                StepNcViewModel.PATHS.stream().map(StepNcViewModel::pathsLabel).toList());
+    }
 }

@@ -9,6 +9,8 @@ import org.fresa.job.RobotTools;
 import org.fresa.job.SettingRanges;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTrajectoryService;
+import org.fresa.job.TablePlacing;
+import org.fresa.job.TaskOutcome;
 import org.fresa.model.Placement;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
@@ -53,6 +55,11 @@ final class RobotCommand implements Callable<Integer> {
                     + " tools'; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
+    @Option(names = "--place", paramLabel = "auto",
+            description = "auto: search the table placement (X, Y, Z, RZ of --robot-table) that reaches every target"
+                    + " with the largest joint-limit margin; exit 1 naming the workingsteps out of reach when none does")
+    String place;
+
     @Option(names = "--formats", paramLabel = "LIST",
             description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
     String formats = String.join(",", org.fresa.job.JobSettings.RobotSettings.DEFAULTS.formats());
@@ -73,6 +80,11 @@ final class RobotCommand implements Callable<Integer> {
     @Mixin
     StepNcEntryOptions entries = new StepNcEntryOptions();
 
+    @Option(names = "--paths", paramLabel = "fresa|thesis", defaultValue = "fresa",
+            description = "whose path conventions: fresa (exact arcs, gentle entries) or thesis (the 2016 STEP-NC robot"
+                    + " thesis's points, docs/thesis-paths.md); default ${DEFAULT-VALUE}")
+    String paths;
+
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
@@ -82,13 +94,21 @@ final class RobotCommand implements Callable<Integer> {
             Placement piece = tablePiece == null ? Placement.ORIGIN
                     : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
-                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule());
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule(),
+                    SettingRanges.StepNc.paths("--paths", paths));
             RobotTools.Choice tool = new RobotTools.Choice(
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
                     toolLength == null ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
-            return CliSupport.intoFolder(out, folder -> RobotService.run(
-                    new RobotService.Settings(file, robot, table, piece, fmts, choices, tool), folder, progress));
+            TablePlacing placing = place == null ? TablePlacing.GIVEN : TablePlacing.parse("--place", place);
+            TaskOutcome o = CliSupport.intoFolder(out, folder -> RobotService.run(
+                    new RobotService.Settings(file, robot, table, piece, fmts, choices, tool, placing), folder, progress));
+            if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
+                // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
+                TerminalProgress.clear(progress);
+                spec.commandLine().getOut().println(m.get("what"));
+            }
+            return o;
         });
     }
 }

@@ -48,12 +48,18 @@ final class ToolpathCommand implements Callable<Integer> {
     @Mixin
     StepNcEntryOptions entries = new StepNcEntryOptions();
 
+    @Option(names = "--paths", paramLabel = "fresa|thesis", defaultValue = "fresa",
+            description = "whose path conventions: fresa (exact arcs, gentle entries) or thesis (the 2016 STEP-NC robot"
+                    + " thesis's points, docs/thesis-paths.md); default ${DEFAULT-VALUE}")
+    String paths;
+
     @Override
     public Integer call() {
         java.io.PrintWriter o = spec.commandLine().getOut();
         return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
             PlanningChoices choices = new PlanningChoices(trustCuttingSpeed,
-                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule());
+                    SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm), entries.rule(),
+                    SettingRanges.StepNc.paths("--paths", paths));
             return CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, choices, folder, progress));
         });
     }

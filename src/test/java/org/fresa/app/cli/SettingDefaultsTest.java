@@ -50,6 +50,9 @@ class SettingDefaultsTest {
                         break;
                 }
             }
+            if (defaults instanceof JobSettings.RobotSettings r && attribute.equals("place")) {
+                return r.placing();
+            }
             if (defaults instanceof JobSettings.GradingSettings && attribute.equals("heelGroup")) {
                 return JobSettings.HeelCoordination.DEFAULT_GROUP_SIZE;
             }
@@ -115,6 +118,17 @@ class SettingDefaultsTest {
         }
         if (value instanceof Enum<?> e && choice != null) {
             return written.equals(word(choice, e));
+        }
+        if (value instanceof Enum<?> e) {
+            // an enumeration without a choice of its own is written by its word() or id()
+            for (String method : List.of("word", "id")) {
+                try {
+                    return written.equals(e.getClass().getMethod(method).invoke(e));
+                } catch (ReflectiveOperationException x) {
+                    // try the next spelling
+                }
+            }
+            return written.equals(String.valueOf(e));
         }
         if (value instanceof List<?> l) {
             return written.equals(String.join(",", l.stream().map(String::valueOf).toList()));

@@ -1,0 +1,42 @@
+package org.fresa.job;
+
+import java.util.Locale;
+import org.fresa.model.CamInputException;
+
+/**
+ * Where the table of a robot cell comes from: the placement the planner typed, or the placement
+ * search ({@code --place auto}, the job's {@code place="auto"}), which replaces the robot -> table
+ * placement by the one reaching every target with the largest joint-limit margin.
+ */
+public enum TablePlacing {
+    /** The robot -> table placement as given. */
+    GIVEN("given"),
+    /** The robot -> table placement searched. */
+    AUTO("auto");
+
+    private final String id;
+
+    TablePlacing(String id) {
+        this.id = id;
+    }
+
+    /** The name on the command line and in the job file. */
+    public String id() {
+        return id;
+    }
+
+    /**
+     * Reads {@code --place}.
+     *
+     * @throws CamInputException naming the option for anything but {@code auto} or {@code given}
+     */
+    public static TablePlacing parse(String option, String text) throws CamInputException {
+        String t = text.trim().toLowerCase(Locale.ROOT);
+        for (TablePlacing p : values()) {
+            if (p.id.equals(t)) {
+                return p;
+            }
+        }
+        throw new CamInputException(option, "expected auto or given, got '" + text + "'");
+    }
+}

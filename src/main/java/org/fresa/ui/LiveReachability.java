@@ -1,0 +1,161 @@
+package org.fresa.ui;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import javax.swing.SwingUtilities;
+import org.fresa.geom.Transform3;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.RobotTools;
+import org.fresa.job.RobotTrajectoryService;
+import org.fresa.kin.Reachability;
+import org.fresa.kin.TrajectorySolver;
+import org.fresa.model.Placement;
+
+/**
+ * The Position tab's live reachability: each change of the placements, the robot or its tool
+ * asks which targets the robot reaches, and the answer (one solution per target, its 3D scene and
+ * its plots) is worked out on a background thread and handed to the event thread. Requests never
+ * queue up: a new one makes every older one stale, a stale one stops between targets and its
+ * answer is dropped, so the answer shown is always that of the latest fields, and typing never
+ * waits for a computation. The STEP-NC file is read and planned once per file, robot and tool;
+ * a placement change only places and solves the targets.
+ */
+final class LiveReachability {
+
+    /** What the answer depends on. */
+    record Inputs(Path stepnc, org.fresa.toolpath.PlanningChoices choices, String robot, RobotTools.Choice tool,
+            Placement robotTable, Placement tablePiece, List<String> formats) {
+        Inputs {
+            formats = List.copyOf(formats);
+        }
+    }
+
+    /**
+     * An answer ready to be shown, everything made off the event thread.
+     *
+     * @param askedNanos when the change that asked for it was made ({@link System#nanoTime})
+     * @param cpuNanos the CPU time the background thread spent on it (-1 where the JVM does not count it)
+     */
+    record Answer(Inputs inputs, RobotTrajectoryService.Solved solved, Transform3 spindle, CellScene scene,
+            TrajectoryCharts charts, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked errors, long askedNanos,
+            long cpuNanos) {
+    }
+
+    private static final java.lang.management.ThreadMXBean THREADS =
+            java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /** The CPU time of the calling thread (ns), -1 where the JVM does not count it. */
+    static long cpuNanos() {
+        return THREADS.isCurrentThreadCpuTimeSupported() ? THREADS.getCurrentThreadCpuTime() : -1;
+    }
+
+    // one thread: the answers come in the order asked, and a stale request costs only its check
+    private static final ExecutorService WORKER = BackgroundThreads.single("fresa-reachability");
+
+    private final AtomicLong generation = new AtomicLong();
+    private final Consumer<Answer> show;
+    private final Consumer<String> failed;
+    private Inputs last;
+
+    // the worker thread's own
+    private Object plannedKey;
+    private PositionViewModel.Planned planned;
+    private Reachability reach;
+
+    /**
+     * @param show runs on the event thread with each answer still wanted
+     * @param failed runs on the event thread when the file or robot cannot be read or planned
+     */
+    LiveReachability(Consumer<Answer> show, Consumer<String> failed) {
+        this.show = show;
+        this.failed = failed;
+    }
+
+    /** Asks for the answer of these inputs (event thread); nothing when they are those last asked. */
+    void request(Inputs in) {
+        if (in.equals(last)) {
+            return;
+        }
+        last = in;
+        long asked = System.nanoTime();
+        long gen = generation.incrementAndGet();
+        WORKER.execute(() -> run(in, gen, asked));
+    }
+
+    /** Drops any answer being worked out; the same inputs asked again are worked out again. */
+    void forget() {
+        last = null;
+        generation.incrementAndGet();
+    }
+
+    /** Drops any answer being worked out and takes these inputs as answered (by Compute). */
+    void answeredBy(Inputs in) {
+        last = in;
+        generation.incrementAndGet();
+    }
+
+    /** The inputs last asked for (event thread). */
+    Optional<Inputs> lastAsked() {
+        return Optional.ofNullable(last);
+    }
+
+    private boolean stale(long gen) {
+        return generation.get() != gen;
+    }
+
+    private void run(Inputs in, long gen, long asked) {
+        if (stale(gen)) {
+            return;
+        }
+        long cpu0 = cpuNanos();
+        try {
+            List<Object> key = List.of(in.stepnc(), modified(in.stepnc()), in.choices(), in.robot(),
+                    modified(in.robot()), in.tool());
+            if (!key.equals(plannedKey)) {
+                planned = PositionViewModel.plan(in.stepnc(), in.robot(), in.tool(), in.choices(),
+                        ProgressMonitor.NONE);
+                reach = new Reachability(TrajectorySolver.Options.DEFAULT.ik(),
+                        TrajectorySolver.Options.DEFAULT.freeRotation());
+                plannedKey = key;
+            }
+            Optional<RobotTrajectoryService.Solved> solved = PositionViewModel.reach(planned, in.robotTable(),
+                    in.tablePiece(), in.formats(), reach, () -> stale(gen));
+            if (solved.isEmpty() || stale(gen)) {
+                return;
+            }
+            RobotTrajectoryService.Solved s = solved.get();
+            CellScene scene = PositionViewModel.sceneOf(s, 0, Optional.of(planned.spindle()));
+            TrajectoryCharts c = TrajectoryCharts.of(s);
+            Answer a = new Answer(in, s, planned.spindle(), scene, c, c.joints(1), c.errors(1), asked,
+                    cpu0 < 0 ? -1 : cpuNanos() - cpu0);
+            SwingUtilities.invokeLater(() -> {
+                if (!stale(gen)) {
+                    show.accept(a);
+                }
+            });
+        } catch (org.fresa.model.CamInputException | java.io.IOException | RuntimeException e) {
+            plannedKey = null;
+            String message = e.getMessage();
+            SwingUtilities.invokeLater(() -> {
+                if (!stale(gen)) {
+                    failed.accept(message);
+                }
+            });
+        }
+    }
+
+    /** A file's modification time (a file saved again is read again); the text itself for a built-in name. */
+    private static Object modified(Object fileOrName) {
+        try {
+            Path p = fileOrName instanceof Path f ? f : Path.of(fileOrName.toString());
+            return Files.isRegularFile(p) ? Files.getLastModifiedTime(p) : "";
+        } catch (java.io.IOException | java.nio.file.InvalidPathException e) {
+            return "";
+        }
+    }
+}
