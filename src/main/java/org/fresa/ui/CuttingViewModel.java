@@ -16,6 +16,7 @@ import org.fresa.geom.Vec2;
 import org.fresa.job.CuttingService;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
+import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 
@@ -24,6 +25,13 @@ import org.fresa.model.ExactDecimal;
  * last result, and what the tab shows of it (the plot scene, the totals, the program text).
  */
 public final class CuttingViewModel {
+
+    /** The keys of {@link #problems()}: the names of the tab's fields. */
+    public static final String DRAWING = "cutting-drawing";
+    public static final String KERF = "cutting-kerf";
+    public static final String LEAD_IN = "cutting-lead-in";
+    public static final String LEAD_OUT = "cutting-lead-out";
+    public static final String OVERCUT = "cutting-overcut";
 
     private Path drawing;
     private String kerfMm = "2";
@@ -38,6 +46,9 @@ public final class CuttingViewModel {
     private String holeDirection = "process";
     private String overcutMm = "0";
     private boolean avoidCutParts = true;
+    // what the job holds and the tab has no field for: kept as the job has them
+    private double toleranceMm = org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM;
+    private String units = "auto";
     private CuttingService.Result result;
 
     /** Takes the job's cutting settings, if it has any (the drawing, kerf, process, leads, ...). */
@@ -59,6 +70,8 @@ public final class CuttingViewModel {
             holeDirection = c.holeDirection();
             overcutMm = ExactDecimal.of(c.overcutMm());
             avoidCutParts = c.avoidCutParts();
+            toleranceMm = c.toleranceMm();
+            units = c.units();
         });
     }
 
@@ -172,26 +185,44 @@ public final class CuttingViewModel {
         post = v;
     }
 
-    /** The settings as typed, checked. */
-    public CuttingSettings settings() throws CamInputException {
+    /**
+     * What is wrong with the typed fields, in the planner's words, by field name ({@link #DRAWING},
+     * {@link #KERF}, {@link #LEAD_IN}, {@link #LEAD_OUT}, {@link #OVERCUT}); empty when Cut may run.
+     */
+    public java.util.Map<String, String> problems() {
+        java.util.Map<String, String> out = new java.util.LinkedHashMap<>();
         if (drawing == null) {
-            throw new CamInputException("Cutting", "choose a DXF drawing first");
+            out.put(DRAWING, "Open the DXF drawing to cut.");
         }
-        return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
-                number("lead-out", leadOutMm), lead, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM, "auto", paperMode, post, compensation, outerDirection,
-                holeDirection, number("overcut", overcutMm), avoidCutParts);
+        FieldProblems.number("Kerf (mm)", kerfMm, SettingRanges.Cutting.KERF).ifPresent(m -> out.put(KERF, m));
+        FieldProblems.number("Lead-in (mm)", leadInMm, SettingRanges.Cutting.LEAD_IN).ifPresent(m -> out.put(LEAD_IN, m));
+        FieldProblems.number("Lead-out (mm)", leadOutMm, SettingRanges.Cutting.LEAD_OUT)
+                .ifPresent(m -> out.put(LEAD_OUT, m));
+        FieldProblems.number("Overcut (mm)", overcutMm, SettingRanges.Cutting.OVERCUT).ifPresent(m -> out.put(OVERCUT, m));
+        return out;
     }
 
-    private static double number(String what, String text) throws CamInputException {
-        try {
-            double d = Double.parseDouble(text);
-            if (!(d >= 0) || !Double.isFinite(d)) {
-                throw new NumberFormatException();
-            }
-            return d;
-        } catch (NumberFormatException e) {
-            throw new CamInputException(what, "'" + text + "' is not a length in mm (a number >= 0)");
+    /** The settings of the typed fields; empty while {@link #problems()} is not. */
+    public Optional<CuttingSettings> typedSettings() {
+        if (!problems().isEmpty()) {
+            return Optional.empty();
         }
+        return Optional.of(new CuttingSettings(drawing, Double.parseDouble(kerfMm), process,
+                Double.parseDouble(leadInMm), Double.parseDouble(leadOutMm), lead, toleranceMm, units, paperMode, post,
+                compensation, outerDirection, holeDirection, Double.parseDouble(overcutMm), avoidCutParts));
+    }
+
+    /**
+     * The settings as typed, checked.
+     *
+     * @throws CamInputException with the first problem of {@link #problems()}
+     */
+    public CuttingSettings settings() throws CamInputException {
+        java.util.Map<String, String> p = problems();
+        if (!p.isEmpty()) {
+            throw new CamInputException("Cutting", p.values().iterator().next());
+        }
+        return typedSettings().orElseThrow();
     }
 
     public void setResult(CuttingService.Result r) {

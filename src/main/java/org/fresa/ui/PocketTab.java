@@ -55,7 +55,7 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setName(PocketViewModel.CONTOUR);
-        TextChanges.onChange(contour, this::fieldsChanged);
+        TextChanges.onChange(contour, () -> edited(contour.getName()));
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -67,7 +67,8 @@ final class PocketTab implements ModuleTab {
         for (int i = 0; i < tech.length; i++) {
             tech[i] = new JTextField(8);
             tech[i].setName(PocketViewModel.NAMES.get(i));
-            TextChanges.onChange(tech[i], this::fieldsChanged);
+            String name = tech[i].getName();
+            TextChanges.onChange(tech[i], () -> edited(name));
             JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
             l.setLabelFor(tech[i]);
             form.add(l);
@@ -77,14 +78,14 @@ final class PocketTab implements ModuleTab {
         pl.setLabelFor(post);
         pl.setDisplayedMnemonic('P');
         post.setName("pocket-post");
-        post.addActionListener(e -> fieldsChanged());
+        post.addActionListener(e -> edited(null));
         form.add(pl);
         form.add(post);
         JLabel dl = new JLabel("Direction (not 7m-compat)");
         dl.setLabelFor(direction);
         dl.setDisplayedMnemonic('D');
         direction.setName("pocket-direction");
-        direction.addActionListener(e -> fieldsChanged());
+        direction.addActionListener(e -> edited(null));
         form.add(dl);
         form.add(direction);
         run.setMnemonic('C');
@@ -148,6 +149,31 @@ final class PocketTab implements ModuleTab {
         if (ch.showOpenDialog(panel) == JFileChooser.APPROVE_OPTION) {
             contour.setText(FileChoosers.chosen(ch).toString());
         }
+    }
+
+    /**
+     * A field changed: the view model takes it and, when every field is good, the job takes the
+     * settings (one undo step per field typed into). A contour that is not yet a file keeps the
+     * job's contour: the planner's check of it comes with Compute.
+     */
+    private void edited(String field) {
+        if (filling || !fieldsChanged().isEmpty()) {
+            return;
+        }
+        Optional<PocketSettings> typed = model.typedSettings();
+        if (typed.isEmpty()) {
+            return;
+        }
+        PocketSettings s = typed.get();
+        if (!java.nio.file.Files.isRegularFile(s.contour())) {
+            Optional<PocketSettings> job = ctx.model().job().pocket();
+            if (job.isEmpty()) {
+                return;
+            }
+            s = PocketViewModel.withContour(s, job.get().contour());
+        }
+        shown = Optional.of(s);
+        ctx.model().setJob(ctx.model().job().withPocket(s), field);
     }
 
     /** Takes the fields into the view model, marks the bad ones and says why beside Compute. */

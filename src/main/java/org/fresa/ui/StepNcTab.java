@@ -286,8 +286,13 @@ final class StepNcTab implements ModuleTab {
             preparedPlot = loaded.firstPlot();
             preparedDetails = loaded.firstDetails();
             loadedFile = file;
-            String post = ctx.model().job().stepnc().map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
-            ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
+            // the job's own settings of this file stay as they are (opening a job, an undo); another
+            // file keeps the job's post
+            Optional<JobSettings.StepNcSettings> had = ctx.model().job().stepnc();
+            if (had.isEmpty() || !had.get().file().equals(file)) {
+                String post = had.map(JobSettings.StepNcSettings::post).orElse("linuxcnc");
+                ctx.model().setJob(ctx.model().job().withStepnc(new JobSettings.StepNcSettings(file, post)));
+            }
             fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
                     + program.skipped().size() + " skipped, " + program.unknownEntities().size()
                     + " entity types not interpreted");

@@ -26,7 +26,7 @@ class CuttingViewModelTest {
         vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
         vm.setKerfMm("two");
         CamInputException e = assertThrows(CamInputException.class, vm::settings);
-        assertTrue(e.getMessage().contains("kerf"), e.getMessage());
+        assertTrue(e.getMessage().contains("Kerf (mm)"), e.getMessage());
     }
 
     @Test
