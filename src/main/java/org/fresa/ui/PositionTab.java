@@ -294,6 +294,7 @@ final class PositionTab implements ModuleTab {
             return;
         }
         Path file = stepnc.get().file();
+        org.fresa.toolpath.PlanningChoices choices = stepnc.get().choices();
         // Compute previews the cell: it changes the job's placements only, never what the job runs
         ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
@@ -302,7 +303,7 @@ final class PositionTab implements ModuleTab {
         ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
             RobotTrajectoryService.Solved solved = PositionViewModel.compute(file, r.robot(), r.robotTable(),
                     r.tablePiece(), formats, new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
-                    progress);
+                    choices, progress);
             progress.progress(-1, "preparing the plots");
             TrajectoryCharts c = TrajectoryCharts.of(solved);
             return new Charted(solved, c, c.joints(1), c.errors(1), PositionViewModel.sceneOf(solved, 0));

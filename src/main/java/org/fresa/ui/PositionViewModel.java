@@ -156,17 +156,17 @@ final class PositionViewModel {
     static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
             Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool, ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
-        Robot robot = RobotFiles.load(robotName);
-        var program = StepNcService.read(stepnc, progress);
-        progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT);
-        org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
-                stepnc.toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
-                tablePiece, NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT,
-                tools.tcpByLabel(), org.fresa.job.ProgramChecks.stepnc(program, plan,
-                        org.fresa.toolpath.PlanningChoices.DEFAULT));
-        return RobotTrajectoryService.solve(req, progress);
+        return compute(stepnc, robotName, robotTable, tablePiece, formats, tool,
+                org.fresa.toolpath.PlanningChoices.DEFAULT, progress);
+    }
+
+    /** As above, with the job's planning choices: the trajectory {@code fresa run} solves. */
+    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
+            Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool,
+            org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
+        return org.fresa.job.RobotService.compute(new org.fresa.job.RobotService.Settings(stepnc, robotName,
+                robotTable, tablePiece, formats, choices, tool), progress);
     }
 
     void setResult(RobotTrajectoryService.Solved s) {

@@ -26,9 +26,8 @@ import javax.swing.TransferHandler;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import org.fresa.geom.Tolerance;
 import org.fresa.job.JobSettings;
-import org.fresa.job.StepNcService;
+import org.fresa.job.ToolpathService;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.ToolpathPlanner;
 
@@ -262,10 +261,13 @@ final class StepNcTab implements ModuleTab {
     void open(Path file) {
         requestedFile = file;
         int generation = ctx.model().generation();
+        org.fresa.toolpath.PlanningChoices choices = ctx.model().job().stepnc().filter(s -> s.file().equals(file))
+                .map(JobSettings.StepNcSettings::choices).orElse(org.fresa.toolpath.PlanningChoices.DEFAULT);
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
-            StepNcProgram p = StepNcService.read(file, progress);
-            progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
-            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+            // planned as fresa run plans it: with the job's choices where it holds this file
+            ToolpathService.Planned planned = ToolpathService.compute(file, choices, progress);
+            StepNcProgram p = planned.program();
+            ToolpathPlanner.Plan plan = planned.plan();
             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
             org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
             // the first workingstep's plot, from a view model of this thread in the tab's first state
