@@ -59,6 +59,7 @@ final class CuttingTab implements ModuleTab {
     private final JLabel status = new JLabel(" ");
     // set while the fields are filled from the job, so their listeners do not write it back
     private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
 
     CuttingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -79,7 +80,7 @@ final class CuttingTab implements ModuleTab {
         status.setName("cutting-status");
         status.setForeground(PROBLEM);
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
-            TextChanges.onChange(f, () -> edited(f.getName()));
+            TextChanges.onChange(f, () -> typed(f.getName()));
         }
         for (JComboBox<?> c : java.util.List.of(process, lead, compensation, outerDir, holeDir, post)) {
             c.addActionListener(e -> edited(null));
@@ -162,6 +163,7 @@ final class CuttingTab implements ModuleTab {
 
     /** The job's cutting settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
+        typing.drop();
         if (document || ctx.model().job().cutting().isEmpty()) {
             vm = new CuttingViewModel();
         }
@@ -177,14 +179,33 @@ final class CuttingTab implements ModuleTab {
         check();
     }
 
-    /**
-     * A field changed: the view model takes it and, when every field is good, the job takes the
-     * settings (one undo step per field typed into; a bad value never reaches the job).
-     */
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        takeFields();
+        if (check().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice or a drawing: what was typed goes first, then the choice, each its own undo step. */
     private void edited(String field) {
         if (filling) {
             return;
         }
+        typing.flush();
+        commit(field);
+    }
+
+    /**
+     * The view model takes the fields and, when every field is good, the job takes the settings
+     * (one undo step per field typed into; a bad value never reaches the job).
+     */
+    private void commit(String field) {
         takeFields();
         if (!check().isEmpty()) {
             return;
@@ -298,6 +319,7 @@ final class CuttingTab implements ModuleTab {
      * it); a drawing the cut refuses is said beside Cut, and the status bar says "failed".
      */
     void run() {
+        typing.flush();
         takeFields();
         if (!check().isEmpty()) {
             return;

@@ -65,6 +65,7 @@ final class GradingTab implements ModuleTab {
     private final JLabel status = new JLabel(" ");
     // set while the fields are filled from the job, so their listeners do not write it back
     private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
     private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
 
     GradingTab(AppContext ctx) {
@@ -108,7 +109,7 @@ final class GradingTab implements ModuleTab {
         status.setName("grading-status");
         status.setForeground(new java.awt.Color(180, 0, 0));
         for (JTextField f : textFields()) {
-            TextChanges.onChange(f, () -> edited(f.getName()));
+            TextChanges.onChange(f, () -> typed(f.getName()));
         }
         system.addActionListener(e -> edited(null));
         shrinkageMode.addActionListener(e -> edited(null));
@@ -166,6 +167,7 @@ final class GradingTab implements ModuleTab {
 
     /** The job's grading settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
+        typing.drop();
         if (document || ctx.model().job().grading().isEmpty()) {
             vm = new GradingViewModel();
         }
@@ -178,14 +180,33 @@ final class GradingTab implements ModuleTab {
         check();
     }
 
-    /**
-     * A field changed: the view model takes it and, when every field is good, the job takes the
-     * settings (one undo step per field typed into; a value the grading refuses never reaches it).
-     */
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        pushFields();
+        if (check().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice, a tick or an outline: what was typed goes first, then the choice, each its own undo step. */
     private void edited(String field) {
         if (filling) {
             return;
         }
+        typing.flush();
+        commit(field);
+    }
+
+    /**
+     * The view model takes the fields and, when every field is good, the job takes the settings
+     * (one undo step per field typed into; a value the grading refuses never reaches it).
+     */
+    private void commit(String field) {
         pushFields();
         if (!check().isEmpty()) {
             return;
@@ -315,6 +336,7 @@ final class GradingTab implements ModuleTab {
      * grading the planner refuses is said beside Grade, and the status bar says "failed".
      */
     private void grade() {
+        typing.flush();
         pushFields();
         if (!check().isEmpty()) {
             return;

@@ -47,6 +47,7 @@ final class PocketTab implements ModuleTab {
     private final JLabel status = new JLabel(" ");
     private final JPanel form = new JPanel();
     private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
@@ -55,7 +56,7 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setName(PocketViewModel.CONTOUR);
-        TextChanges.onChange(contour, () -> edited(contour.getName()));
+        TextChanges.onChange(contour, () -> typed(contour.getName()));
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -68,7 +69,7 @@ final class PocketTab implements ModuleTab {
             tech[i] = new JTextField(8);
             tech[i].setName(PocketViewModel.NAMES.get(i));
             String name = tech[i].getName();
-            TextChanges.onChange(tech[i], () -> edited(name));
+            TextChanges.onChange(tech[i], () -> typed(name));
             JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
             l.setLabelFor(tech[i]);
             form.add(l);
@@ -123,6 +124,7 @@ final class PocketTab implements ModuleTab {
 
     /** The job's pocket settings, or a new job's; no result. */
     private void showJob() {
+        typing.drop();
         model = new PocketViewModel();
         model.load(ctx.model().job());
         shown = ctx.model().job().pocket();
@@ -151,12 +153,33 @@ final class PocketTab implements ModuleTab {
         }
     }
 
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        if (fieldsChanged().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice: what was typed goes first, then the choice, each its own undo step. */
+    private void edited(String field) {
+        if (filling) {
+            return;
+        }
+        typing.flush();
+        commit(field);
+    }
+
     /**
      * A field changed: the view model takes it and, when every field is good, the job takes the
      * settings (one undo step per field typed into). A contour that is not yet a file keeps the
      * job's contour: the planner's check of it comes with Compute.
      */
-    private void edited(String field) {
+    private void commit(String field) {
         if (filling || !fieldsChanged().isEmpty()) {
             return;
         }
@@ -229,6 +252,7 @@ final class PocketTab implements ModuleTab {
     }
 
     private void compute() {
+        typing.flush();
         if (!fieldsChanged().isEmpty()) {
             return;
         }
