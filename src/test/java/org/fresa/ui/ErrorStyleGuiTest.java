@@ -37,6 +37,7 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         assertEquals("Kerf (mm): '6,5' is not a number (decimals take a point: 6.5).",
                 window.label("cutting-status").target().getToolTipText());
         assertEquals(2, model().job().cutting().orElseThrow().kerfMm());
+        shoot("cutting-bad-field.png");
         window.textBox(CuttingViewModel.KERF).deleteText().enterText("2.5");
         window.button("cutting-cut").requireEnabled();
         // the good value goes into the job once the typing pauses
@@ -60,7 +61,7 @@ class ErrorStyleGuiTest extends WindowGuiTest {
     }
 
     @Test
-    void gradingMarksARefusedRangeBesideGradeWithoutADialog() {
+    void gradingMarksARefusedRangeBesideGradeWithoutADialog() throws Exception {
         open("grade-sole40.xml");
         window.tabbedPane("tabs").selectTab("Grading");
         waitFor("Grade may run", () -> window.button("grading-grade").target().isEnabled());
@@ -71,6 +72,7 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         assertEquals("Sizes: expected sizes A-B with A <= B, found '44-36'.",
                 window.label("grading-status").target().getToolTipText());
         assertEquals("36-44", model().job().grading().orElseThrow().sizes());
+        shoot("grading-bad-field.png");
         window.textBox(GradingViewModel.SHRINKAGE).deleteText().enterText("0,02");
         // a field that does not read comes first; the grading judges the values once every field reads
         assertEquals("Shrinkage: '0,02' is not a number (decimals take a point: 0.02).",
@@ -83,6 +85,13 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         waitFor("the grading is shown", () -> window.table("grading-table").target().getRowCount() == 5);
         window.label("status").requireText("Grading: done");
         assertEquals(0, optionPanes());
+    }
+
+    private void shoot(String name) throws java.io.IOException {
+        java.awt.image.BufferedImage img = GuiActionRunner.execute(
+                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        Files.createDirectories(Path.of("target", "screenshots"));
+        javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
     }
 
     private int optionPanes() {
