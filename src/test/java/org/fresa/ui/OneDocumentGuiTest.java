@@ -119,6 +119,24 @@ class OneDocumentGuiTest extends WindowGuiTest {
     }
 
     @Test
+    void openRecentAsksBeforeDiscardingChanges() {
+        open(EXAMPLE2);
+        open(CAVITY01);
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.textBox("pocket-tool").setText("5");
+        waitFor("the edit is the job's", () -> model().isDirty());
+        // the recent jobs, newest first: cavity 01, then example 2
+        askFromRecent(2);
+        answer(p -> p.cancelButton());
+        window.requireTitle("Fresa - pocket-cavity01.xml *");
+        assertEquals(5, model().job().pocket().orElseThrow().toolDiameterMm());
+        askFromRecent(2);
+        answer(p -> p.noButton());
+        waitUntilNoTaskRuns();
+        window.requireTitle("Fresa - example2-irb140.xml");
+    }
+
+    @Test
     void theOutputTabShowsTheLastRunsProgramsOfThisJobOnly() {
         window.tabbedPane("tabs").selectTab("Output");
         assertTrue(window.label("output-status").text().startsWith("No programs"), window.label("output-status").text());
@@ -352,6 +370,24 @@ class OneDocumentGuiTest extends WindowGuiTest {
             waitQuietly(() -> !pane.target().isShowing(), 3_000);
         }
         assertFalse(GuiActionRunner.execute(() -> pane.target().isShowing()), "the question is still open");
+    }
+
+    /** Chooses a recent job (the list is filled as File opens), again when the click was lost. */
+    private void askFromRecent(int n) {
+        for (int i = 0; i < 3; i++) {
+            window.menuItemWithPath("File").click();
+            window.menuItemWithPath("File", "Recent jobs").click();
+            window.menuItem("recent-" + n).click();
+            if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
+                    javax.swing.JOptionPane.class, true) {
+                @Override
+                protected boolean isMatching(javax.swing.JOptionPane p) {
+                    return true;
+                }
+            }).isEmpty(), 5_000)) {
+                return;
+            }
+        }
     }
 
     /** Chooses a menu item that asks a question, again when the click was lost and no question shows. */
