@@ -221,7 +221,7 @@ final class CuttingTab implements ModuleTab {
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
             String p = problems.get(f.getName());
             f.setBackground(p == null ? java.awt.Color.WHITE : BAD);
-            f.setToolTipText(p != null ? p : Tooltips.of("Cutting", f.getName()));
+            f.setToolTipText(p != null ? p : Tooltips.meaning("Cutting", f));
         }
         cut.setEnabled(problems.isEmpty());
         cut.setToolTipText(problems.isEmpty() ? "Plan the cut and show its path, totals and program"

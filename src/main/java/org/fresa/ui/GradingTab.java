@@ -223,7 +223,7 @@ final class GradingTab implements ModuleTab {
             shrinkageMode}) {
             String p = problems.get(f.getName());
             f.setBackground(p == null ? (f instanceof JTextField ? java.awt.Color.WHITE : null) : BAD);
-            f.setToolTipText(p != null ? p : Tooltips.of("Grading", f.getName()));
+            f.setToolTipText(p != null ? p : Tooltips.meaning("Grading", f));
         }
         grade.setEnabled(problems.isEmpty());
         grade.setToolTipText(problems.isEmpty() ? "Grade the outline into every size of the range"
