@@ -183,4 +183,32 @@ class ArchitectureTest {
     @ArchTest
     static final ArchRule noGenericExceptions = GeneralCodingRules.NO_CLASSES_SHOULD_THROW_GENERIC_EXCEPTIONS
             .because("throw a CamInputException for bad input, an IllegalArgumentException for misuse");
+
+    /**
+     * The planners and engines the module services call for {@code fresa run} (through
+     * {@code JobRunner}): a tab that called one itself would run its own pipeline beside the
+     * service's, with other checks and choices. Their result types (nested records such as
+     * {@code ToolpathPlanner.Plan}) may be shown; the computing classes themselves are the services'.
+     */
+    static final List<String> MODULE_PLANNERS = List.of(
+            "org.fresa.stepnc.StepNcReader",
+            "org.fresa.toolpath.ToolpathPlanner",
+            "org.fresa.pocket.RegionPocket", "org.fresa.pocket.PassPlanner", "org.fresa.pocket.Recognition",
+            "org.fresa.cutting.CutPlanner",
+            "org.fresa.grading.Grader",
+            "org.fresa.sole.TreadProgram", "org.fresa.sole.MouldBlock",
+            "org.fresa.kin.TrajectorySolver");
+
+    /** The rule over the given classes' package (the ui's, or a test fixture's). */
+    static ArchRule tabsComputeThroughTheModuleServices(String pkg) {
+        return noClasses().that().resideInAPackage(pkg)
+                .should().dependOnClassesThat(com.tngtech.archunit.base.DescribedPredicate.describe(
+                        "are a module's planner or engine " + MODULE_PLANNERS,
+                        (com.tngtech.archunit.core.domain.JavaClass c) -> MODULE_PLANNERS.contains(c.getName())))
+                .because("a tab shows what fresa run writes only if both compute through the module's service"
+                        + " (XService.compute(settings, progress)), never through a planner of their own");
+    }
+
+    @ArchTest
+    static final ArchRule noTabRunsAPlannerOfItsOwn = tabsComputeThroughTheModuleServices(UI);
 }

@@ -145,6 +145,47 @@ public final class GradingService {
         return Coordination.ofHeelElements(Coordination.parseElements(h.heelElements()), h.groupSize());
     }
 
+    /**
+     * What the grading says of each setting it refuses, in its own words, by setting:
+     * {@code system}, {@code sizes}, {@code baseSize}, {@code lengthStep}, {@code widthStep},
+     * {@code shrinkage}, {@code shrinkageMode}, or {@code settings} for a refusal of their
+     * combination; empty when {@link #plan} accepts them. The GUI marks the field of each.
+     */
+    public static Map<String, String> refusals(GradingSettings s, Options o) {
+        Map<String, String> out = new LinkedHashMap<>();
+        SizeSystem system = s.system();
+        try {
+            SizeRange.parse(s.sizes(), system, s.halfSizes());
+        } catch (IllegalArgumentException e) {
+            out.put("sizes", e.getMessage());
+        }
+        try {
+            system.checkSize(s.baseSize(), "base size");
+        } catch (IllegalArgumentException e) {
+            out.put("baseSize", e.getMessage());
+        }
+        double vc = s.lengthStepMm().orElse(system.lengthStepMm());
+        double vl = s.widthStepMm().orElse(system.widthStepMm());
+        if (!(vc > 0) || !Double.isFinite(vc)) {
+            out.put("lengthStep", "the length step must be above 0 mm, found " + ExactDecimal.of(vc));
+        }
+        if (!(vl >= 0) || !Double.isFinite(vl)) {
+            out.put("widthStep", "the width step must be at least 0 mm, found " + ExactDecimal.of(vl));
+        }
+        if (!(s.shrinkage() >= 0) || !(s.shrinkage() < 0.5)) {
+            out.put("shrinkage", "shrinkage must be a fraction in [0, 0.5), e.g. 0.02, found "
+                    + ExactDecimal.of(s.shrinkage()));
+        }
+        if (out.isEmpty()) {
+            try {
+                plan(s, o);
+            } catch (CamInputException e) {
+                out.put("settings", e.getMessage());
+            }
+        }
+        return out;
+    }
+
     /** Grades the outline (headless, no files), for the GUI's preview. */
     public static GradingResult grade(List<Contour> outline, String source, GradingSettings s, Options o)
             throws CamInputException {

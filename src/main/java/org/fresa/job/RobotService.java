@@ -133,8 +133,7 @@ public final class RobotService {
         if (nothing.isPresent()) {
             return ToolpathService.nothingToMachine(program, List.of(nothing.get()), out);
         }
-        progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, s.choices());
+        ToolpathPlanner.Plan plan = ToolpathService.plan(program, s.choices(), progress);
         Timing.mark("toolpaths planned");
         if (plan.planned() == 0) {
             // every workingstep refused: no trajectory and no robot program for nothing
@@ -200,6 +199,35 @@ public final class RobotService {
         summary.put("planned_workingsteps", plan.planned());
         int status = o.exitStatus() == 0 && plan.planned() == plan.workingsteps() ? 0 : 1;
         return new TaskOutcome(status, problems, summary, out.written());
+    }
+
+    /**
+     * Reads the STEP-NC file, plans its toolpaths with the settings' choices and solves the robot's
+     * trajectory, as {@link #run} does before it writes: what the Position tab shows. The
+     * solved request carries the part's limits, so the programs written from it later pass the
+     * same program check as {@code fresa run}'s.
+     *
+     * @throws CamInputException when the file has nothing to machine or no workingstep could be planned
+     */
+    public static RobotTrajectoryService.Solved compute(Settings s, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        Robot robot = RobotFiles.load(s.robot());
+        StepNcProgram program = StepNcService.read(s.stepnc(), progress);
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            throw new CamInputException(s.stepnc().toString(), nothing.get());
+        }
+        ToolpathPlanner.Plan plan = ToolpathService.plan(program, s.choices(), progress);
+        if (plan.planned() == 0) {
+            throw new CamInputException(s.stepnc().toString(), "no workingstep could be planned: "
+                    + String.join("; ", plan.problems()));
+        }
+        RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot,
+                s.robotTable(), s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel(),
+                ProgramChecks.stepnc(program, plan, s.choices()));
+        return RobotTrajectoryService.solve(req, progress);
     }
 
     /** The job task. */

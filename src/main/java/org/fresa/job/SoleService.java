@@ -307,6 +307,21 @@ public final class SoleService {
         return new TreadPattern.Copies(l);
     }
 
+    /** The sizes the sole is made in, as its grading plan has them. */
+    public static List<Double> sizes(SolePlan p) {
+        return p.grader().plan().sizes();
+    }
+
+    /** The graded outline of one size (the grading of {@code fresa run}'s sole). */
+    public static GradedSize graded(SolePlan p, double size) {
+        return p.grader().grade(size);
+    }
+
+    /** The fixed point of the grading (mm): a left sole is the right one mirrored about its x. */
+    public static Vec2 origin(SolePlan p) {
+        return p.grader().origin();
+    }
+
     /** The scale of one graded size as the tread needs it. */
     public static SizeScale scale(SolePlan p, GradedSize g) {
         return new SizeScale(g.name(), p.grader().origin(), g.factors().width(), g.factors().length(),

@@ -43,6 +43,26 @@ public final class ToolpathService {
         return run(file, postName, PlanningChoices.DEFAULT, out, progress);
     }
 
+    /** A STEP-NC program read and its toolpaths planned: what the STEP-NC tab shows. */
+    public record Planned(StepNcProgram program, ToolpathPlanner.Plan plan) {
+    }
+
+    /**
+     * Reads the STEP-NC file and plans its toolpaths with the job's choices, as {@code fresa
+     * toolpath} and {@code fresa run} do before they write anything.
+     */
+    public static Planned compute(Path file, PlanningChoices choices, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        StepNcProgram program = StepNcService.read(file, progress);
+        return new Planned(program, plan(program, choices, progress));
+    }
+
+    /** The toolpaths of a program read, with the planner's choices. */
+    public static ToolpathPlanner.Plan plan(StepNcProgram program, PlanningChoices choices, ProgressMonitor progress) {
+        progress.progress(-1, "planning " + program.workingsteps().size() + " workingsteps");
+        return ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+    }
+
     /** Plans with these choices and writes the three files into the folder. */
     public static TaskOutcome run(Path file, MillingPost postName, PlanningChoices choices, OutputFolder out,
             ProgressMonitor progress) throws CamInputException, IOException {
@@ -52,8 +72,7 @@ public final class ToolpathService {
         if (nothing.isPresent()) {
             return nothingToMachine(program, List.of(nothing.get()), out);
         }
-        progress.progress(0, "planning " + program.workingsteps().size() + " workingsteps");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        ToolpathPlanner.Plan plan = plan(program, choices, progress);
         if (plan.planned() == 0) {
             // every workingstep refused: an empty program would look like a finished job
             return nothingToMachine(program, plan.problems(), out);

@@ -36,6 +36,9 @@ import org.fresa.model.CamInputException;
  */
 final class CuttingTab implements ModuleTab {
 
+    private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
+    private static final java.awt.Color PROBLEM = new java.awt.Color(180, 0, 0);
+
     private final AppContext ctx;
     private CuttingViewModel vm = new CuttingViewModel();
     // the job's cutting settings the fields show: a job that holds others is shown afresh
@@ -60,6 +63,11 @@ final class CuttingTab implements ModuleTab {
     private final JComboBox<SheetCuttingPost.Dialect> post = new JComboBox<>(
             Cutting.POST.values().toArray(new SheetCuttingPost.Dialect[0]));
     private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
+    private final JButton cut = new JButton("Cut");
+    private final JLabel status = new JLabel(" ");
+    // set while the fields are filled from the job, so their listeners do not write it back
+    private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
 
     CuttingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -69,11 +77,24 @@ final class CuttingTab implements ModuleTab {
         open.setMnemonic('O');
         open.setName("cutting-open");
         open.addActionListener(e -> choose());
-        JButton cut = new JButton("Cut");
         cut.setMnemonic('C');
         cut.setName("cutting-cut");
         cut.addActionListener(e -> run());
-        kerf.setName("cutting-kerf");
+        kerf.setName(CuttingViewModel.KERF);
+        leadIn.setName(CuttingViewModel.LEAD_IN);
+        leadOut.setName(CuttingViewModel.LEAD_OUT);
+        overcut.setName(CuttingViewModel.OVERCUT);
+        file.setName(CuttingViewModel.DRAWING);
+        status.setName("cutting-status");
+        status.setForeground(PROBLEM);
+        for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
+            TextChanges.onChange(f, () -> typed(f.getName()));
+        }
+        for (JComboBox<?> c : java.util.List.of(process, lead, compensation, outerDir, holeDir, post)) {
+            c.addActionListener(e -> edited(null));
+        }
+        avoid.addActionListener(e -> edited(null));
+        paper.addActionListener(e -> edited(null));
         kerf.setToolTipText("full kerf width; the path runs half of it off the part");
         compensation.setName("cutting-compensation");
         compensation.setToolTipText("software: offset path; controller: the drawn contour with G41/G42");
@@ -107,6 +128,13 @@ final class CuttingTab implements ModuleTab {
         addRow(form, row++, "Post:", 'S', post, null);
         addRow(form, row++, "", (char) 0, paper, null);
         addRow(form, row++, "", (char) 0, cut, null);
+        GridBagConstraints st = new GridBagConstraints();
+        st.gridx = 0;
+        st.gridy = row++;
+        st.gridwidth = 3;
+        st.fill = GridBagConstraints.HORIZONTAL;
+        st.insets = new Insets(2, 2, 2, 2);
+        form.add(status, st);
         GridBagConstraints t = new GridBagConstraints();
         t.gridx = 0;
         t.gridy = row++;
@@ -141,24 +169,93 @@ final class CuttingTab implements ModuleTab {
         panel.add(split, BorderLayout.CENTER);
 
         ctx.model().addListener(e -> {
-            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
-                    || MainViewModel.JOB.equals(e.getPropertyName())
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())) {
+                showJob(true);
+            } else if (MainViewModel.JOB.equals(e.getPropertyName())
                     && !ctx.model().job().cutting().equals(shown)) {
-                showJob();
+                // an undo, a redo: the fields take the job's settings, a cut of the same drawing stays
+                showJob(false);
             }
         });
-        showJob();
+        showJob(true);
     }
 
-    /** The job's cutting settings, or the empty tab when it has none; no result. */
-    private void showJob() {
-        vm = new CuttingViewModel();
+    /** The job's cutting settings, or the empty tab when it has none; a new document shows no result. */
+    private void showJob(boolean document) {
+        typing.drop();
+        if (document || ctx.model().job().cutting().isEmpty()) {
+            vm = new CuttingViewModel();
+        }
         vm.load(ctx.model().job());
         shown = ctx.model().job().cutting();
         showFields();
-        plot.show(vm.scene());
-        program.setText("");
-        totals.setText("No drawing cut yet.");
+        if (vm.result().isEmpty()) {
+            plot.show(vm.scene());
+            program.setText("");
+            totals.setText("No drawing cut yet.");
+            warnings.show(WarningList.none());
+        }
+        check();
+    }
+
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        takeFields();
+        if (check().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice or a drawing: what was typed goes first, then the choice, each its own undo step. */
+    private void edited(String field) {
+        if (filling) {
+            return;
+        }
+        typing.flush();
+        commit(field);
+    }
+
+    /**
+     * The view model takes the fields and, when every field is good, the job takes the settings
+     * (one undo step per field typed into; a bad value never reaches the job).
+     */
+    private void commit(String field) {
+        takeFields();
+        if (!check().isEmpty()) {
+            return;
+        }
+        CuttingSettings s = vm.typedSettings().orElseThrow();
+        shown = Optional.of(s);
+        ctx.model().setJob(ctx.model().job().withCutting(s), field);
+    }
+
+    /** Marks the bad fields, says the first problem beside Cut and why Cut is disabled. */
+    private java.util.Map<String, String> check() {
+        java.util.Map<String, String> problems = vm.problems();
+        for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
+            String p = problems.get(f.getName());
+            f.setBackground(p == null ? java.awt.Color.WHITE : BAD);
+            f.setToolTipText(p != null ? p : Tooltips.meaning("Cutting", f));
+        }
+        cut.setEnabled(problems.isEmpty());
+        cut.setToolTipText(problems.isEmpty() ? "Plan the cut and show its path, totals and program"
+                : problems.containsKey(CuttingViewModel.DRAWING) && problems.size() == 1
+                        ? "Open a DXF drawing first" : "Correct the marked field first");
+        say(problems.isEmpty() ? " " : problems.values().iterator().next()
+                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        return problems;
+    }
+
+    /** The line under Cut; a long reason wraps within the form's width and stays whole in the tooltip. */
+    private void say(String text) {
+        status.setText(text.length() <= 36 ? text : "<html><div style='width:170px'>"
+                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setToolTipText(text.isBlank() ? null : text);
     }
 
     private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent a, JComponent b) {
@@ -183,6 +280,15 @@ final class CuttingTab implements ModuleTab {
     }
 
     private void showFields() {
+        filling = true;
+        try {
+            fillFields();
+        } finally {
+            filling = false;
+        }
+    }
+
+    private void fillFields() {
         file.setText(vm.drawing().map(p -> p.getFileName().toString()).orElse("(none)"));
         kerf.setText(vm.kerfMm());
         process.setSelectedItem(vm.process());
@@ -216,39 +322,51 @@ final class CuttingTab implements ModuleTab {
     private void choose() {
         JFileChooser ch = FileChoosers.chooser(FileChoosers.Kind.DXF);
         if (ch.showOpenDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            FileChoosers.chosen(ch);
-            Path p = ch.getSelectedFile().toPath();
+            Path p = FileChoosers.chosen(ch);
             vm.setDrawing(p);
             file.setText(p.getFileName().toString());
+            plot.show(vm.scene());
+            program.setText("");
+            totals.setText("No drawing cut yet.");
+            warnings.show(WarningList.none());
+            edited(null);
         }
     }
 
     /**
-     * Cuts the drawing with the typed settings; they become the job's cutting settings once the
-     * cut accepts them (a refused value is never saved), and what the job runs is unchanged.
+     * Cuts the drawing with the typed settings (the job's already, as each good field goes into
+     * it); a drawing the cut refuses is said beside Cut, and the status bar says "failed".
      */
     void run() {
+        typing.flush();
         takeFields();
-        CuttingSettings s;
-        try {
-            s = vm.settings();
-        } catch (CamInputException e) {
-            totals.setText(e.getMessage());
+        if (!check().isEmpty()) {
             return;
         }
-        CuttingViewModel cut = vm;
+        CuttingSettings s = vm.typedSettings().orElseThrow();
+        CuttingViewModel cutting = vm;
         int generation = ctx.model().generation();
+        say("cutting");
         ctx.tasks().start("Cutting", progress -> {
-            CuttingService.Result r = CuttingService.compute(s, progress);
+            CuttingService.Result r;
+            try {
+                r = CuttingService.compute(s, progress);
+            } catch (CamInputException | java.io.IOException e) {
+                return new Shown(null, null, e.getMessage(), null);
+            }
             progress.progress(-1, "preparing the plot and the program text");
             return new Shown(r, CuttingViewModel.sceneOf(r), CuttingViewModel.totalsOf(r),
                     TextDocuments.of(r.program()));
         }, shown -> {
-            if (cut != vm || generation != ctx.model().generation()) {
+            if (cutting != vm || generation != ctx.model().generation()) {
                 return;
             }
-            this.shown = Optional.of(s);
-            ctx.model().setJob(ctx.model().job().withCutting(s));
+            if (shown.result() == null) {
+                ctx.tasks().failed("Cutting");
+                say(shown.totals());
+                return;
+            }
+            say(" ");
             vm.setResult(shown.result());
             plot.show(shown.scene());
             program.setDocument(shown.program());
@@ -270,7 +388,7 @@ final class CuttingTab implements ModuleTab {
         plot.showPlace(w.place().get(), view);
     }
 
-    /** A result with what the tab shows of it, prepared off the event thread. */
+    /** A result with what the tab shows of it, prepared off the event thread; no result: totals says why. */
     private record Shown(CuttingService.Result result, org.fresa.chart.PlotScene scene, String totals,
             javax.swing.text.Document program) {
     }

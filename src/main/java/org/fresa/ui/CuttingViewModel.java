@@ -22,6 +22,7 @@ import org.fresa.cutting.LeadShape;
 import org.fresa.dxf.DrawingUnits;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.post.SheetCuttingPost;
+import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 
@@ -30,6 +31,13 @@ import org.fresa.model.ExactDecimal;
  * last result, and what the tab shows of it (the plot scene, the totals, the program text).
  */
 public final class CuttingViewModel {
+
+    /** The keys of {@link #problems()}: the names of the tab's fields. */
+    public static final String DRAWING = "cutting-drawing";
+    public static final String KERF = "cutting-kerf";
+    public static final String LEAD_IN = "cutting-lead-in";
+    public static final String LEAD_OUT = "cutting-lead-out";
+    public static final String OVERCUT = "cutting-overcut";
 
     /** A new job's settings: the cutting module's defaults ({@link CuttingSettings#DEFAULTS}); no drawing. */
     private static final CuttingSettings DEFAULTS = CuttingSettings.DEFAULTS;
@@ -186,26 +194,44 @@ public final class CuttingViewModel {
         post = v;
     }
 
-    /** The settings as typed, checked. */
-    public CuttingSettings settings() throws CamInputException {
+    /**
+     * What is wrong with the typed fields, in the planner's words, by field name ({@link #DRAWING},
+     * {@link #KERF}, {@link #LEAD_IN}, {@link #LEAD_OUT}, {@link #OVERCUT}); empty when Cut may run.
+     */
+    public java.util.Map<String, String> problems() {
+        java.util.Map<String, String> out = new java.util.LinkedHashMap<>();
         if (drawing == null) {
-            throw new CamInputException("Cutting", "choose a DXF drawing first");
+            out.put(DRAWING, "Open the DXF drawing to cut.");
         }
-        return new CuttingSettings(drawing, number("kerf", kerfMm), process, number("lead-in", leadInMm),
-                number("lead-out", leadOutMm), lead, toleranceMm, units, paperMode, post, compensation, outerDirection,
-                holeDirection, number("overcut", overcutMm), avoidCutParts);
+        FieldProblems.number("Kerf (mm)", kerfMm, SettingRanges.Cutting.KERF).ifPresent(m -> out.put(KERF, m));
+        FieldProblems.number("Lead-in (mm)", leadInMm, SettingRanges.Cutting.LEAD_IN).ifPresent(m -> out.put(LEAD_IN, m));
+        FieldProblems.number("Lead-out (mm)", leadOutMm, SettingRanges.Cutting.LEAD_OUT)
+                .ifPresent(m -> out.put(LEAD_OUT, m));
+        FieldProblems.number("Overcut (mm)", overcutMm, SettingRanges.Cutting.OVERCUT).ifPresent(m -> out.put(OVERCUT, m));
+        return out;
     }
 
-    private static double number(String what, String text) throws CamInputException {
-        try {
-            double d = Double.parseDouble(text);
-            if (!(d >= 0) || !Double.isFinite(d)) {
-                throw new NumberFormatException();
-            }
-            return d;
-        } catch (NumberFormatException e) {
-            throw new CamInputException(what, "'" + text + "' is not a length in mm (a number >= 0)");
+    /** The settings of the typed fields; empty while {@link #problems()} is not. */
+    public Optional<CuttingSettings> typedSettings() {
+        if (!problems().isEmpty()) {
+            return Optional.empty();
         }
+        return Optional.of(new CuttingSettings(drawing, Double.parseDouble(kerfMm), process,
+                Double.parseDouble(leadInMm), Double.parseDouble(leadOutMm), lead, toleranceMm, units, paperMode, post,
+                compensation, outerDirection, holeDirection, Double.parseDouble(overcutMm), avoidCutParts));
+    }
+
+    /**
+     * The settings as typed, checked.
+     *
+     * @throws CamInputException with the first problem of {@link #problems()}
+     */
+    public CuttingSettings settings() throws CamInputException {
+        java.util.Map<String, String> p = problems();
+        if (!p.isEmpty()) {
+            throw new CamInputException("Cutting", p.values().iterator().next());
+        }
+        return typedSettings().orElseThrow();
     }
 
     public void setResult(CuttingService.Result r) {

@@ -69,6 +69,12 @@ final class GradingTab implements ModuleTab {
     private final javax.swing.JTextField heelGroup = new javax.swing.JTextField(4);
     /** Table 3.1's width fitting whose last girths the table shows. */
     private final JComboBox<String> fitting = new JComboBox<>(GradingViewModel.FITTINGS.toArray(new String[0]));
+    private final JButton grade = new JButton("Grade");
+    private final JLabel status = new JLabel(" ");
+    // set while the fields are filled from the job, so their listeners do not write it back
+    private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
+    private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
 
     GradingTab(AppContext ctx) {
         this.ctx = ctx;
@@ -87,7 +93,6 @@ final class GradingTab implements ModuleTab {
         });
         pick.setMnemonic('P');
         pick.setToolTipText("Click the plot to set the fixed point of the grading");
-        JButton grade = new JButton("Grade");
         grade.setMnemonic('G');
         grade.setName("grading-grade");
         grade.addActionListener(e -> grade());
@@ -99,6 +104,24 @@ final class GradingTab implements ModuleTab {
         widthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 1.66)");
         origin.setToolTipText("X,Y in mm; empty for the heel circle's centre");
         halfSizes.setMnemonic('A');
+        outlineName.setName(GradingViewModel.OUTLINE);
+        origin.setName(GradingViewModel.ORIGIN);
+        system.setName(GradingViewModel.SYSTEM);
+        baseSize.setName(GradingViewModel.BASE_SIZE);
+        sizes.setName(GradingViewModel.SIZES);
+        halfSizes.setName("grading-half-sizes");
+        lengthStep.setName(GradingViewModel.LENGTH_STEP);
+        widthStep.setName(GradingViewModel.WIDTH_STEP);
+        shrinkage.setName(GradingViewModel.SHRINKAGE);
+        shrinkageMode.setName(GradingViewModel.SHRINKAGE_MODE);
+        status.setName("grading-status");
+        status.setForeground(new java.awt.Color(180, 0, 0));
+        for (JTextField f : textFields()) {
+            TextChanges.onChange(f, () -> typed(f.getName()));
+        }
+        system.addActionListener(e -> edited(null));
+        shrinkageMode.addActionListener(e -> edited(null));
+        halfSizes.addActionListener(e -> edited(null));
 
         int row = 0;
         addRow(form, row++, "Outline:", 'U', open, outlineName);
@@ -128,6 +151,13 @@ final class GradingTab implements ModuleTab {
         addRow(form, row++, "Heel elements:", 'N', heelElements, null);
         addRow(form, row++, "Heel group:", 'R', heelGroup, null);
         addRow(form, row++, "", (char) 0, grade, export);
+        GridBagConstraints st = new GridBagConstraints();
+        st.gridx = 0;
+        st.gridy = row++;
+        st.gridwidth = 3;
+        st.fill = GridBagConstraints.HORIZONTAL;
+        st.insets = new Insets(3, 3, 3, 3);
+        form.add(status, st);
         GridBagConstraints filler = new GridBagConstraints();
         filler.gridy = row;
         filler.weighty = 1;
@@ -143,23 +173,95 @@ final class GradingTab implements ModuleTab {
 
         installPicking();
         ctx.model().addListener(e -> {
-            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
-                    || MainViewModel.JOB.equals(e.getPropertyName())
+            if (MainViewModel.DOCUMENT.equals(e.getPropertyName())) {
+                showJob(true);
+            } else if (MainViewModel.JOB.equals(e.getPropertyName())
                     && !ctx.model().job().grading().equals(shown)) {
-                showJob();
+                // an undo, a redo: the fields take the job's settings
+                showJob(false);
             }
         });
-        showJob();
+        showJob(true);
     }
 
-    /** The job's grading settings, or the empty tab when it has none; no result. */
-    private void showJob() {
-        vm = new GradingViewModel();
+    private JTextField[] textFields() {
+        return new JTextField[] {origin, baseSize, sizes, lengthStep, widthStep, shrinkage};
+    }
+
+    /** The job's grading settings, or the empty tab when it has none; a new document shows no result. */
+    private void showJob(boolean document) {
+        typing.drop();
+        if (document || ctx.model().job().grading().isEmpty()) {
+            vm = new GradingViewModel();
+        }
         vm.load(ctx.model().job());
         shown = ctx.model().job().grading();
         showFields();
         tableModel.setRowCount(0);
+        vm.clearResult();
         refreshPlot();
+        check();
+    }
+
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        pushFields();
+        if (check().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice, a tick or an outline: what was typed goes first, then the choice, each its own undo step. */
+    private void edited(String field) {
+        if (filling) {
+            return;
+        }
+        typing.flush();
+        commit(field);
+    }
+
+    /**
+     * The view model takes the fields and, when every field is good, the job takes the settings
+     * (one undo step per field typed into; a value the grading refuses never reaches it).
+     */
+    private void commit(String field) {
+        pushFields();
+        if (!check().isEmpty()) {
+            return;
+        }
+        GradingSettings s = vm.typedSettings().orElseThrow();
+        shown = Optional.of(s);
+        ctx.model().setJob(ctx.model().job().withGrading(s), field);
+    }
+
+    /** Marks the bad fields, says the first problem beside Grade and why Grade is disabled. */
+    private java.util.Map<String, String> check() {
+        java.util.Map<String, String> problems = vm.problems();
+        for (JComponent f : new JComponent[] {origin, baseSize, sizes, lengthStep, widthStep, shrinkage, system,
+            shrinkageMode}) {
+            String p = problems.get(f.getName());
+            f.setBackground(p == null ? (f instanceof JTextField ? java.awt.Color.WHITE : null) : BAD);
+            f.setToolTipText(p != null ? p : Tooltips.meaning("Grading", f));
+        }
+        grade.setEnabled(problems.isEmpty());
+        grade.setToolTipText(problems.isEmpty() ? "Grade the outline into every size of the range"
+                : problems.size() == 1 && problems.containsKey(GradingViewModel.OUTLINE)
+                        ? "Open a base outline first" : "Correct the marked field first");
+        say(problems.isEmpty() ? " " : problems.values().iterator().next()
+                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        return problems;
+    }
+
+    /** The line under Grade; a long reason wraps within the form's width and stays whole in the tooltip. */
+    private void say(String text) {
+        status.setText(text.length() <= 36 ? text : "<html><div style='width:190px'>"
+                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setToolTipText(text.isBlank() ? null : text);
     }
 
     private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent field, JComponent extra) {
@@ -201,6 +303,15 @@ final class GradingTab implements ModuleTab {
     }
 
     private void showFields() {
+        filling = true;
+        try {
+            fillFields();
+        } finally {
+            filling = false;
+        }
+    }
+
+    private void fillFields() {
         outlineName.setText(vm.outlineFile().map(p -> p.getFileName().toString()).orElse("(none)"));
         origin.setText(vm.origin());
         system.setSelectedItem(vm.system());
@@ -238,36 +349,46 @@ final class GradingTab implements ModuleTab {
         try {
             vm.openOutline(FileChoosers.chosen(fc));
         } catch (CamInputException | java.io.IOException e) {
-            Dialogs.error(ctx.owner(), "Open outline", e.getMessage());
+            say(e.getMessage());
             return;
         }
         showFields();
         tableModel.setRowCount(0);
         refreshPlot();
+        edited(null);
     }
 
     /**
-     * Grades with the typed settings; they become the job's grading settings only when the
-     * grading accepts them (a refused value is never saved), and what the job runs is unchanged.
+     * Grades with the typed settings (the job's already, as each good field goes into it); a
+     * grading the planner refuses is said beside Grade, and the status bar says "failed".
      */
     private void grade() {
+        typing.flush();
         pushFields();
-        GradingSettings s;
-        try {
-            s = vm.settings();
-        } catch (CamInputException e) {
-            Dialogs.error(ctx.owner(), "Grade", e.getMessage());
+        if (!check().isEmpty()) {
             return;
         }
+        GradingSettings s = vm.typedSettings().orElseThrow();
         GradingViewModel graded = vm;
         int generation = ctx.model().generation();
-        ctx.tasks().start("Grading", progress -> graded.grade(s), r -> {
+        say("grading");
+        ctx.tasks().start("Grading", progress -> {
+            try {
+                return (Object) graded.grade(s);
+            } catch (CamInputException e) {
+                return e.getMessage();
+            }
+        }, r -> {
             if (graded != vm || generation != ctx.model().generation()) {
                 return;
             }
-            shown = Optional.of(s);
-            ctx.model().setJob(ctx.model().job().withGrading(s));
-            showResult(r);
+            if (r instanceof GradingResult g) {
+                say(" ");
+                showResult(g);
+            } else {
+                ctx.tasks().failed("Grading");
+                say(String.valueOf(r));
+            }
         });
     }
 

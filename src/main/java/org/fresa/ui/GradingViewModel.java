@@ -168,6 +168,98 @@ public final class GradingViewModel {
         heelGroup = s;
     }
 
+    /** The keys of {@link #problems()}: the names of the tab's fields. */
+    public static final String OUTLINE = "grading-outline";
+    public static final String ORIGIN = "grading-origin";
+    public static final String SYSTEM = "grading-system";
+    public static final String BASE_SIZE = "grading-base-size";
+    public static final String SIZES = "grading-sizes";
+    public static final String LENGTH_STEP = "grading-length-step";
+    public static final String WIDTH_STEP = "grading-width-step";
+    public static final String SHRINKAGE = "grading-shrinkage";
+    public static final String SHRINKAGE_MODE = "grading-shrinkage-mode";
+
+    /** The field of each setting the grading names in {@code GradingService.refusals}, with its label. */
+    private static final java.util.Map<String, String[]> FIELDS = java.util.Map.of(
+            "system", new String[] {SYSTEM, "System"}, "sizes", new String[] {SIZES, "Sizes"},
+            "baseSize", new String[] {BASE_SIZE, "Base size"},
+            "lengthStep", new String[] {LENGTH_STEP, "Length step (mm)"},
+            "widthStep", new String[] {WIDTH_STEP, "Width step (mm)"},
+            "shrinkage", new String[] {SHRINKAGE, "Shrinkage"},
+            "shrinkageMode", new String[] {SHRINKAGE_MODE, "Shrinkage mode"},
+            "settings", new String[] {SIZES, "Grading"});
+
+    /**
+     * What is wrong with the typed fields, by field name (the constants above), in the planner's
+     * words: first whether each field reads as what it holds, then what the grading says of the
+     * values (a range A-B with A > B, a size the system does not have, ...). Empty when Grade may run.
+     */
+    public java.util.Map<String, String> problems() {
+        java.util.Map<String, String> out = new java.util.LinkedHashMap<>();
+        if (outlineFile.isEmpty()) {
+            out.put(OUTLINE, "Open the base outline to grade (.contour or .dxf).");
+        } else if (outline.isEmpty()) {
+            out.put(OUTLINE, "Outline: " + outlineFile.get().getFileName() + " cannot be read; open another one.");
+        }
+        readable(out, BASE_SIZE, "Base size", baseSize, false);
+        readable(out, LENGTH_STEP, "Length step (mm)", lengthStep, true);
+        readable(out, WIDTH_STEP, "Width step (mm)", widthStep, true);
+        readable(out, SHRINKAGE, "Shrinkage", shrinkage, false);
+        try {
+            parsedOrigin();
+        } catch (CamInputException e) {
+            out.put(ORIGIN, "Origin X,Y: expected X,Y in mm (or empty for the heel centre), found '" + origin.trim()
+                    + "'.");
+        }
+        if (sizes.trim().isEmpty()) {
+            out.put(SIZES, "Sizes: a range A-B is needed (e.g. 36-44).");
+        }
+        if (!out.isEmpty() && !(out.size() == 1 && out.containsKey(OUTLINE))) {
+            return out;
+        }
+        try {
+            GradingSettings s = new GradingSettings(outlineFile.orElse(Path.of("")), number("Base size", baseSize),
+                    sizes.trim(), halfSizes, system, optional("Length step", lengthStep),
+                    optional("Width step", widthStep), parsedOrigin(), number("Shrinkage", shrinkage), shrinkageMode);
+            GradingService.refusals(s, GradingService.Options.DEFAULT).forEach((k, m) -> {
+                String[] f = FIELDS.getOrDefault(k, new String[] {SIZES, "Grading"});
+                out.putIfAbsent(f[0], f[1] + ": " + m + (m.endsWith(".") ? "" : "."));
+            });
+        } catch (CamInputException e) {
+            // every field was read above
+            throw new IllegalStateException(e);
+        }
+        return out;
+    }
+
+    private static void readable(java.util.Map<String, String> out, String key, String label, String text,
+            boolean mayBeEmpty) {
+        String t = text.trim();
+        if (t.isEmpty() && mayBeEmpty) {
+            return;
+        }
+        try {
+            if (Double.isFinite(Double.parseDouble(t))) {
+                return;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        out.put(key, FieldProblems.notANumber(label, t));
+    }
+
+    /** The settings of the fields; empty while {@link #problems()} is not. */
+    public Optional<GradingSettings> typedSettings() {
+        if (!problems().isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(settings());
+        } catch (CamInputException e) {
+            return Optional.empty();
+        }
+    }
+
     /** The job with these grading settings, what it runs unchanged. */
     public Job applyTo(Job job) throws CamInputException {
         return job.withGrading(settings());
@@ -196,6 +288,11 @@ public final class GradingViewModel {
     /** Keeps a result computed by {@link #grade()} for the table and the plot. */
     public void setResult(GradingResult r) {
         result = Optional.of(r);
+    }
+
+    /** Forgets the last result (the settings shown are no longer the ones graded). */
+    public void clearResult() {
+        result = Optional.empty();
     }
 
     public Optional<GradingResult> result() {

@@ -48,6 +48,8 @@ public final class MainViewModel {
     private final Deque<Job> undo = new ArrayDeque<>();
     private final Deque<Job> redo = new ArrayDeque<>();
     private int generation;
+    // the field whose typing made the last undo step: its next keystrokes extend that step
+    private String typing;
 
     public MainViewModel(RecentJobs recent) {
         this.recent = Objects.requireNonNull(recent, "recent");
@@ -85,21 +87,40 @@ public final class MainViewModel {
 
     /** Replaces the job after an edit in a tab; the edit can be undone; unsaved when it differs. */
     public void setJob(Job j) {
+        setJob(j, null);
+    }
+
+    /**
+     * Replaces the job after typing in a field: the keystrokes typed into one field one after the
+     * other are one edit, so one undo gives back the job from before the first of them (as a text
+     * editor undoes a word, not a letter). Any other edit, an undo or a redo ends the typing.
+     *
+     * @param field the field typed into, or null for an edit of its own (a choice, a button)
+     */
+    public void setJob(Job j, String field) {
         Objects.requireNonNull(j, "job");
         Job old = job;
         if (j.equals(old)) {
             return;
         }
         boolean could = canUndo() || canRedo();
-        undo.push(old);
-        if (undo.size() > HISTORY_LIMIT) {
-            undo.removeLast();
+        boolean same = field != null && field.equals(typing) && !undo.isEmpty();
+        if (same && j.equals(undo.peek())) {
+            // typed back to what it was: no edit is left
+            undo.pop();
+            typing = null;
+        } else if (!same) {
+            undo.push(old);
+            if (undo.size() > HISTORY_LIMIT) {
+                undo.removeLast();
+            }
+            typing = field;
         }
         redo.clear();
         job = j;
         setDirty(!j.equals(saved));
         changes.firePropertyChange(JOB, old, j);
-        changes.firePropertyChange(HISTORY, could, true);
+        changes.firePropertyChange(HISTORY, could, canUndo() || canRedo());
     }
 
     public boolean canUndo() {
@@ -125,6 +146,7 @@ public final class MainViewModel {
             return false;
         }
         Job old = job;
+        typing = null;
         to.push(old);
         job = from.pop();
         setDirty(!job.equals(saved));
@@ -147,6 +169,7 @@ public final class MainViewModel {
     private void replace(Job j, Optional<Path> f) {
         Job old = job;
         generation++;
+        typing = null;
         job = j;
         saved = j;
         undo.clear();

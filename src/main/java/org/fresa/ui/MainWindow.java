@@ -266,7 +266,13 @@ public final class MainWindow extends JFrame {
             if (n <= 9) {
                 i.setMnemonic(KeyEvent.VK_0 + n);
             }
-            i.addActionListener(e -> openJob(p));
+            i.setName("recent-" + n);
+            // another job replaces this one: its unsaved changes are asked about first, as for Open
+            i.addActionListener(e -> {
+                if (confirmDiscard()) {
+                    openJob(p);
+                }
+            });
             recentMenu.add(i);
             n++;
         }

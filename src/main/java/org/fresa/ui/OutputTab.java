@@ -55,6 +55,8 @@ final class OutputTab implements ModuleTab {
     private final JLabel image = new JLabel();
     private final JPanel previewCards = new JPanel(new CardLayout());
     private final JLabel status = new JLabel(NONE);
+    // every problem of the last save, not only the first (the status line says how many)
+    private final WarningsPanel problems = new WarningsPanel("output-problems", 3);
     // a new result is previewed when the tab is shown, so that computing does not also write a preview
     private boolean stale;
 
@@ -114,7 +116,11 @@ final class OutputTab implements ModuleTab {
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         panel.add(left, BorderLayout.WEST);
         panel.add(right, BorderLayout.CENTER);
-        panel.add(status, BorderLayout.SOUTH);
+        JPanel south = new JPanel(new BorderLayout());
+        south.add(status, BorderLayout.NORTH);
+        south.add(problems, BorderLayout.CENTER);
+        problems.setVisible(false);
+        panel.add(south, BorderLayout.SOUTH);
         runs.addListener(this::runsChanged);
         panel.addHierarchyListener(e -> {
             if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
@@ -152,6 +158,7 @@ final class OutputTab implements ModuleTab {
 
     /** New programs (or none): the status says which, the preview follows when the tab is shown. */
     private void runsChanged() {
+        showProblems(List.of());
         if (runs.last().isPresent()) {
             RobotRunModel.Run r = runs.last().get();
             status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
@@ -293,8 +300,19 @@ final class OutputTab implements ModuleTab {
         RobotRunModel.Run run = runs.last().orElseThrow();
         List<String> formats = vm.checkedFormats();
         ctx.tasks().start("Saving robot programs", progress -> OutputViewModel.write(run, formats,
-                new OutputFolder(dir)), (TaskOutcome o) -> status.setText("Saved " + o.files().size()
-                        + " files into " + dir + (o.problems().isEmpty() ? "" : ": " + o.problems().get(0))));
+                new OutputFolder(dir)), (TaskOutcome o) -> {
+                    status.setText("Saved " + o.files().size() + " files into " + dir + (o.problems().isEmpty() ? ""
+                            : "; " + o.problems().size() + (o.problems().size() == 1 ? " problem" : " problems")
+                                    + ", listed below"));
+                    showProblems(o.problems());
+                });
+    }
+
+    /** Lists every problem, or hides the list when there is none. */
+    private void showProblems(List<String> all) {
+        problems.show(WarningList.of(all));
+        problems.setVisible(!all.isEmpty());
+        panel.revalidate();
     }
 
     private static void deleteTree(Path dir) throws IOException {

@@ -56,6 +56,7 @@ final class PocketTab implements ModuleTab {
     private final JPanel form = new JPanel();
     private final JTabbedPane texts = new JTabbedPane();
     private boolean filling;
+    private final TypingPause typing = new TypingPause(this::commit);
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
@@ -64,7 +65,7 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setName(PocketViewModel.CONTOUR);
-        TextChanges.onChange(contour, this::fieldsChanged);
+        TextChanges.onChange(contour, () -> typed(contour.getName()));
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -76,7 +77,8 @@ final class PocketTab implements ModuleTab {
         for (int i = 0; i < tech.length; i++) {
             tech[i] = new JTextField(8);
             tech[i].setName(PocketViewModel.NAMES.get(i));
-            TextChanges.onChange(tech[i], this::fieldsChanged);
+            String name = tech[i].getName();
+            TextChanges.onChange(tech[i], () -> typed(name));
             JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
             l.setLabelFor(tech[i]);
             form.add(l);
@@ -86,14 +88,14 @@ final class PocketTab implements ModuleTab {
         pl.setLabelFor(post);
         pl.setDisplayedMnemonic('P');
         post.setName("pocket-post");
-        post.addActionListener(e -> fieldsChanged());
+        post.addActionListener(e -> edited(null));
         form.add(pl);
         form.add(post);
         JLabel dl = new JLabel("Direction (not 7m-compat)");
         dl.setLabelFor(direction);
         dl.setDisplayedMnemonic('D');
         direction.setName("pocket-direction");
-        direction.addActionListener(e -> fieldsChanged());
+        direction.addActionListener(e -> edited(null));
         form.add(dl);
         form.add(direction);
         JLabel el = new JLabel("Entry (not 7m-compat)");
@@ -154,6 +156,7 @@ final class PocketTab implements ModuleTab {
 
     /** The job's pocket settings, or a new job's; no result. */
     private void showJob() {
+        typing.drop();
         model = new PocketViewModel();
         model.load(ctx.model().job());
         shown = ctx.model().job().pocket();
@@ -183,6 +186,52 @@ final class PocketTab implements ModuleTab {
         if (ch.showOpenDialog(panel) == JFileChooser.APPROVE_OPTION) {
             contour.setText(FileChoosers.chosen(ch).toString());
         }
+    }
+
+    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
+    private void typed(String field) {
+        if (filling) {
+            return;
+        }
+        if (fieldsChanged().isEmpty()) {
+            typing.typed(field);
+        } else {
+            typing.drop();
+        }
+    }
+
+    /** A choice: what was typed goes first, then the choice, each its own undo step. */
+    private void edited(String field) {
+        if (filling) {
+            return;
+        }
+        typing.flush();
+        commit(field);
+    }
+
+    /**
+     * A field changed: the view model takes it and, when every field is good, the job takes the
+     * settings (one undo step per field typed into). A contour that is not yet a file keeps the
+     * job's contour: the planner's check of it comes with Compute.
+     */
+    private void commit(String field) {
+        if (filling || !fieldsChanged().isEmpty()) {
+            return;
+        }
+        Optional<PocketSettings> typed = model.typedSettings();
+        if (typed.isEmpty()) {
+            return;
+        }
+        PocketSettings s = typed.get();
+        if (!java.nio.file.Files.isRegularFile(s.contour())) {
+            Optional<PocketSettings> job = ctx.model().job().pocket();
+            if (job.isEmpty()) {
+                return;
+            }
+            s = PocketViewModel.withContour(s, job.get().contour());
+        }
+        shown = Optional.of(s);
+        ctx.model().setJob(ctx.model().job().withPocket(s), field);
     }
 
     /** Takes the fields into the view model, marks the bad ones and says why beside Compute. */
@@ -278,6 +327,7 @@ final class PocketTab implements ModuleTab {
     }
 
     private void compute() {
+        typing.flush();
         if (!fieldsChanged().isEmpty()) {
             return;
         }

@@ -439,4 +439,11 @@ public final class PocketViewModel {
             }
         }
     }
+
+    /** The same settings with another contour file. */
+    static PocketSettings withContour(PocketSettings s, Path contour) {
+        return new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
+                s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin(),
+                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting());
+    }
 }

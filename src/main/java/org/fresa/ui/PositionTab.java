@@ -205,7 +205,7 @@ final class PositionTab implements ModuleTab {
                 } else {
                     vm.setTablePiece(index, f.getText());
                 }
-                validateFields();
+                validateFields(true, f.getName());
             });
             out[i] = f;
             p.add(l);
@@ -290,10 +290,15 @@ final class PositionTab implements ModuleTab {
 
     /** Shows the first problem, marks the bad fields, and writes good placements into the job. */
     private boolean validateFields() {
-        return validateFields(true);
+        return validateFields(true, null);
     }
 
     private boolean validateFields(boolean write) {
+        return validateFields(write, null);
+    }
+
+    /** @param typed the field typed into (its keystrokes are one edit), or null */
+    private boolean validateFields(boolean write, String typed) {
         Map<String, String> problems = vm.problems();
         mark(robotTable, "position-rt-", problems);
         mark(tablePiece, "position-tp-", problems);
@@ -302,7 +307,7 @@ final class PositionTab implements ModuleTab {
         if (problems.isEmpty() && !loading && write) {
             loading = true;
             try {
-                ctx.model().setJob(vm.applyTo(ctx.model().job()));
+                ctx.model().setJob(vm.applyTo(ctx.model().job()), typed);
             } finally {
                 loading = false;
             }
@@ -431,6 +436,7 @@ final class PositionTab implements ModuleTab {
             return;
         }
         Path file = stepnc.get().file();
+        org.fresa.toolpath.PlanningChoices choices = stepnc.get().choices();
         // Compute previews the cell: it changes the job's placements only, never what the job runs
         ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();

@@ -167,7 +167,7 @@ final class PositionViewModel {
                 org.fresa.toolpath.PlanningChoices.DEFAULT, progress);
     }
 
-    /** As above, with the planner's choices of the job's STEP-NC settings (its path conventions). */
+    /** As above, with the job's planning choices: the trajectory {@code fresa run} solves. */
     static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
             Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool,
             org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
@@ -204,9 +204,9 @@ final class PositionViewModel {
             org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
-        var program = StepNcService.read(stepnc, progress);
-        progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
+        org.fresa.job.ToolpathService.Planned planned = org.fresa.job.ToolpathService.compute(stepnc, choices, progress);
+        var program = planned.program();
+        ToolpathPlanner.Plan plan = planned.plan();
         org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
                 stepnc.toString());
         org.fresa.check.Limits limits = org.fresa.job.ProgramChecks.stepnc(program, plan, choices);

@@ -117,7 +117,7 @@ public final class SoleViewModel {
             SoleService.SolePlan p = SoleService.plan(job.sole().get(), job.name());
             plan = Optional.of(p);
             this.job = Optional.of(job);
-            sizes = p.grader().plan().sizes().stream().map(ExactDecimal::of).toList();
+            sizes = SoleService.sizes(p).stream().map(ExactDecimal::of).toList();
             String base = ExactDecimal.of(job.sole().get().baseSize());
             size = sizes.contains(base) ? base : sizes.get(0);
         } catch (CamInputException e) {
@@ -158,10 +158,10 @@ public final class SoleViewModel {
             return PlotScene.empty(problem.isEmpty() ? "No sole plan" : problem);
         }
         SoleService.SolePlan p = plan.get();
-        GradedSize g = p.grader().grade(Double.parseDouble(size));
+        GradedSize g = SoleService.graded(p, Double.parseDouble(size));
         Toolpath tp = SoleService.treadProgram(p, g, foot);
         var outline = foot == Foot.RIGHT ? g.output().get(0)
-                : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
+                : SoleTread.mirrored(g.output().get(0), SoleService.origin(p).x());
         PlotScene scene = PlotScene.empty("Sole " + g.name() + ", " + foot.id() + " foot")
                 .withContour("outline", PlotScene.Style.OUTLINE, outline).withToolpath(tp);
         if (selected >= 0) {
@@ -256,9 +256,9 @@ public final class SoleViewModel {
      */
     public Vec2 toJobFrame(Vec2 plotMm) {
         SoleService.SolePlan p = plan.orElseThrow();
-        Vec2 o = p.grader().origin();
+        Vec2 o = SoleService.origin(p);
         double x = foot == Foot.LEFT ? 2 * o.x() - plotMm.x() : plotMm.x();
-        SizeScale sc = SoleService.scale(p, p.grader().grade(Double.parseDouble(size)));
+        SizeScale sc = SoleService.scale(p, SoleService.graded(p, Double.parseDouble(size)));
         return Vec2.of(o.x() + (x - o.x()) / sc.widthFactor(), o.y() + (plotMm.y() - o.y()) / sc.lengthFactor());
     }
 

@@ -26,9 +26,8 @@ import javax.swing.TransferHandler;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import org.fresa.geom.Tolerance;
 import org.fresa.job.JobSettings;
-import org.fresa.job.StepNcService;
+import org.fresa.job.ToolpathService;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.ToolpathPlanner;
 
@@ -310,9 +309,10 @@ final class StepNcTab implements ModuleTab {
         int generation = ctx.model().generation();
         JobSettings.StepNcSettings settings = StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
         ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
-            StepNcProgram p = StepNcService.read(file, progress);
-            progress.progress(-1, "planning " + p.workingsteps().size() + " workingsteps");
-            ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT, settings.choices());
+            // planned as fresa run plans it: with the job's choices where it holds this file
+            ToolpathService.Planned planned = ToolpathService.compute(file, settings.choices(), progress);
+            StepNcProgram p = planned.program();
+            ToolpathPlanner.Plan plan = planned.plan();
             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
             org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
             // the first workingstep's plot, from a view model of this thread in the tab's first state

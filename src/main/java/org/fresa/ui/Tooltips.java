@@ -73,6 +73,7 @@ final class Tooltips {
                 + " (0.5 to 90; 3 for a cutter that does not cut at its centre)");
         tip("Pocket", PocketViewModel.CENTRE_CUTTING, "The cutter cuts at its centre (a slot drill): it may plunge"
                 + " straight down");
+        tip("Cutting", "Kerf (mm):", "Full width of the cut (mm): the path runs half of it off the part");
         tip("Cutting", "Process:", "The cutting process: sets the default speeds, pierce and cut senses");
         tip("Cutting", "Lead-in (mm):", "Length of the approach from the pierce point to the contour (mm)");
         tip("Cutting", "Lead-out (mm):", "Length of the move off the contour after the cut (mm)");
@@ -115,6 +116,18 @@ final class Tooltips {
     /** The meaning of a tab's input by its component name or label text, or null when the table has none. */
     static String of(String tab, String key) {
         return TIPS.get(tab + "|" + key);
+    }
+
+    /**
+     * The meaning of an input by its component name, else by the text of its label; null when the
+     * table has none (a field that showed a problem shows its meaning again).
+     */
+    static String meaning(String tab, JComponent c) {
+        String tip = TIPS.get(tab + "|" + c.getName());
+        if (tip == null && c.getClientProperty("labeledBy") instanceof JLabel l) {
+            tip = TIPS.get(tab + "|" + l.getText());
+        }
+        return tip;
     }
 
     /** Sets the tooltip of every input of a tab that has none and that the table knows. */

@@ -26,7 +26,7 @@ class CuttingViewModelTest {
         vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
         vm.setKerfMm("two");
         CamInputException e = assertThrows(CamInputException.class, vm::settings);
-        assertTrue(e.getMessage().contains("kerf"), e.getMessage());
+        assertTrue(e.getMessage().contains("Kerf (mm)"), e.getMessage());
     }
 
     @Test
@@ -94,5 +94,41 @@ class CuttingViewModelTest {
 
     private static PlotScene.Layer layer(PlotScene s, String name) {
         return s.layers().stream().filter(l -> l.name().equals(name)).findFirst().orElseThrow();
+    }
+
+    @Test
+    void aBadFieldIsNamedInThePlannersWordsAndTheSettingsWaitForAGoodOne() {
+        CuttingViewModel vm = new CuttingViewModel();
+        assertEquals(java.util.List.of(CuttingViewModel.DRAWING), java.util.List.copyOf(vm.problems().keySet()));
+        vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
+        assertTrue(vm.problems().isEmpty(), vm.problems().toString());
+        vm.setKerfMm("1,5");
+        vm.setLeadInMm("-3");
+        vm.setOvercutMm("");
+        java.util.Map<String, String> p = vm.problems();
+        assertEquals("Kerf (mm): '1,5' is not a number (decimals take a point: 1.5).", p.get(CuttingViewModel.KERF));
+        assertTrue(p.get(CuttingViewModel.LEAD_IN).startsWith("Lead-in (mm): expected a number from 0 to "),
+                p.get(CuttingViewModel.LEAD_IN));
+        assertEquals("Overcut (mm): a number is needed.", p.get(CuttingViewModel.OVERCUT));
+        for (String m : p.values()) {
+            assertTrue(!m.contains("--") && !m.contains("Exception") && !m.contains("kerfMm"), m);
+        }
+        assertTrue(vm.typedSettings().isEmpty());
+        vm.setKerfMm("1.5");
+        vm.setLeadInMm("3");
+        vm.setOvercutMm("0");
+        assertEquals(1.5, vm.typedSettings().orElseThrow().kerfMm());
+    }
+
+    @Test
+    void whatTheTabHasNoFieldForStaysAsTheJobHasIt() throws Exception {
+        org.fresa.job.Job job = org.fresa.job.JobXml.read(Path.of("samples/jobs/cut-plate.xml"));
+        org.fresa.job.JobSettings.CuttingSettings c = job.cutting().orElseThrow();
+        org.fresa.job.JobSettings.CuttingSettings odd = new org.fresa.job.JobSettings.CuttingSettings(c.drawing(),
+                c.kerfMm(), c.process(), c.leadInMm(), c.leadOutMm(), c.lead(), 0.05, org.fresa.dxf.DrawingUnits.of("mm").orElseThrow(), c.paperMode(), c.post(),
+                c.compensation(), c.outerDirection(), c.holeDirection(), c.overcutMm(), c.avoidCutParts());
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.load(job.withCutting(odd));
+        assertEquals(odd, vm.typedSettings().orElseThrow());
     }
 }

@@ -141,4 +141,35 @@ class GradingViewModelTest {
         assertTrue(Files.exists(dir.resolve("size-41.dxf")));
         assertTrue(Files.exists(dir.resolve("grading.png")));
     }
+
+    @Test
+    void aRangeTheGradingRefusesMarksTheSizesInItsWordsBeforeGradeRuns() throws Exception {
+        GradingViewModel vm = new GradingViewModel();
+        assertEquals(java.util.Set.of(GradingViewModel.OUTLINE), vm.problems().keySet());
+        vm.openOutline(SOLE);
+        assertTrue(vm.problems().isEmpty(), vm.problems().toString());
+        vm.setSizes("44-36");
+        assertEquals(java.util.Map.of(GradingViewModel.SIZES, "Sizes: expected sizes A-B with A <= B, found '44-36'."),
+                vm.problems());
+        assertTrue(vm.typedSettings().isEmpty());
+        vm.setSizes("36-44");
+        vm.setBaseSize("4O");
+        vm.setShrinkage("0,02");
+        vm.setOrigin("10;20");
+        var p = vm.problems();
+        assertEquals("Base size: '4O' is not a number.", p.get(GradingViewModel.BASE_SIZE));
+        assertEquals("Shrinkage: '0,02' is not a number (decimals take a point: 0.02).", p.get(GradingViewModel.SHRINKAGE));
+        assertTrue(p.get(GradingViewModel.ORIGIN).startsWith("Origin X,Y: expected X,Y in mm"), p.toString());
+        vm.setBaseSize("40");
+        vm.setShrinkage("0.7");
+        vm.setOrigin("");
+        assertEquals(java.util.Set.of(GradingViewModel.SHRINKAGE), vm.problems().keySet());
+        assertTrue(vm.problems().get(GradingViewModel.SHRINKAGE).startsWith("Shrinkage: shrinkage must be a fraction"),
+                vm.problems().toString());
+        for (String m : vm.problems().values()) {
+            assertTrue(!m.contains("--") && !m.contains("Exception"), m);
+        }
+        vm.setShrinkage("0.02");
+        assertEquals(0.02, vm.typedSettings().orElseThrow().shrinkage());
+    }
 }

@@ -49,9 +49,10 @@ class OneDocumentGuiTest extends WindowGuiTest {
         fc.approve();
         JTextField sizes = (JTextField) textFieldShowing("36-44").target();
         GuiActionRunner.execute(() -> sizes.setText("44-36"));
-        window.button("grading-grade").click();
-        acknowledgeRefusal();
-        waitUntilNoTaskRuns();
+        // the refused range is marked and said beside Grade, which cannot run on it
+        window.button("grading-grade").requireDisabled();
+        assertEquals("Sizes: expected sizes A-B with A <= B, found '44-36'.",
+                window.label("grading-status").target().getToolTipText());
 
         Path saved = saveAs("refused.xml");
         Job read = JobXml.read(saved);
@@ -89,27 +90,25 @@ class OneDocumentGuiTest extends WindowGuiTest {
     }
 
     @Test
-    @org.junit.jupiter.api.Disabled("flaky under Xvfb: the click on the modal question's Cancel or No button is lost"
-            + " in about 4 of 10 runs (the dialog stays open with Yes focused); New's behaviour is right when run by"
-            + " hand; to be made reliable before it runs in CI again")
     void newEmptiesEveryTabAndAsksBeforeDiscardingChanges() {
         open(CAVITY01);
         window.tabbedPane("tabs").selectTab("Position");
+        waitFor("the Position tab's fields are shown", () -> window.robot().finder().findAll(
+                new GenericTypeMatcher<javax.swing.text.JTextComponent>(javax.swing.text.JTextComponent.class, true) {
+                    @Override
+                    protected boolean isMatching(javax.swing.text.JTextComponent c) {
+                        return "position-rt-X".equals(c.getName());
+                    }
+                }).size() == 1);
         window.textBox("position-rt-X").deleteText().enterText("123");
         window.requireTitle("Fresa - pocket-cavity01.xml *");
 
-        menu("File", "New").click();
-        window.optionPane(Timeout.timeout(5000)).cancelButton().click();
-        waitFor("the question is gone", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JOptionPane.class, true) {
-            @Override
-            protected boolean isMatching(javax.swing.JOptionPane p) {
-                return true;
-            }
-        }).isEmpty());
+        askFromMenu("File", "New");
+        answer(p -> p.cancelButton());
         assertEquals("123", window.textBox("position-rt-X").text());
-        menu("File", "New").click();
-        window.optionPane(Timeout.timeout(5000)).noButton().click();
+        window.requireTitle("Fresa - pocket-cavity01.xml *");
+        askFromMenu("File", "New");
+        answer(p -> p.noButton());
         waitUntilNoTaskRuns();
 
         window.requireTitle("Fresa");
@@ -117,6 +116,24 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.tabbedPane("tabs").selectTab("Pocket");
         assertEquals("", window.textBox("pocket-contour").text());
         assertFalse(allText().contains("cavity01"), "a tab still names the old pocket");
+    }
+
+    @Test
+    void openRecentAsksBeforeDiscardingChanges() {
+        open(EXAMPLE2);
+        open(CAVITY01);
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.textBox("pocket-tool").setText("5");
+        waitFor("the edit is the job's", () -> model().isDirty());
+        // the recent jobs, newest first: cavity 01, then example 2
+        askFromRecent(2);
+        answer(p -> p.cancelButton());
+        window.requireTitle("Fresa - pocket-cavity01.xml *");
+        assertEquals(5, model().job().pocket().orElseThrow().toolDiameterMm());
+        askFromRecent(2);
+        answer(p -> p.noButton());
+        waitUntilNoTaskRuns();
+        window.requireTitle("Fresa - example2-irb140.xml");
     }
 
     @Test
@@ -334,14 +351,70 @@ class OneDocumentGuiTest extends WindowGuiTest {
         }
     }
 
-    /** Presses OK on the refusal's message, again when Xvfb lost the click and the pane still shows. */
-    private void acknowledgeRefusal() {
+    /**
+     * Presses a button of the open question or message, again when Xvfb lost the click and the
+     * pane still shows (the dialog then stays open with its default button focused).
+     */
+    private void answer(java.util.function.Function<org.assertj.swing.fixture.JOptionPaneFixture,
+            org.assertj.swing.fixture.JButtonFixture> button) {
         org.assertj.swing.fixture.JOptionPaneFixture pane = window.optionPane(Timeout.timeout(20_000));
-        for (int i = 0; i < 3 && GuiActionRunner.execute(() -> pane.target().isShowing()); i++) {
-            pane.okButton().click();
-            window.robot().waitForIdle();
+        for (int i = 0; i < 5 && GuiActionRunner.execute(() -> pane.target().isShowing()); i++) {
+            org.assertj.swing.fixture.JButtonFixture b = button.apply(pane);
+            if (i > 0) {
+                // a lost click: the keyboard presses the button instead
+                b.focus();
+                b.pressAndReleaseKeys(java.awt.event.KeyEvent.VK_SPACE);
+            } else {
+                b.click();
+            }
+            waitQuietly(() -> !pane.target().isShowing(), 3_000);
         }
-        assertFalse(GuiActionRunner.execute(() -> pane.target().isShowing()), "the refusal's message is still open");
+        assertFalse(GuiActionRunner.execute(() -> pane.target().isShowing()), "the question is still open");
+    }
+
+    /** Chooses a recent job (the list is filled as File opens), again when the click was lost. */
+    private void askFromRecent(int n) {
+        for (int i = 0; i < 3; i++) {
+            window.menuItemWithPath("File").click();
+            window.menuItemWithPath("File", "Recent jobs").click();
+            window.menuItem("recent-" + n).click();
+            if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
+                    javax.swing.JOptionPane.class, true) {
+                @Override
+                protected boolean isMatching(javax.swing.JOptionPane p) {
+                    return true;
+                }
+            }).isEmpty(), 5_000)) {
+                return;
+            }
+        }
+    }
+
+    /** Chooses a menu item that asks a question, again when the click was lost and no question shows. */
+    private void askFromMenu(String... path) {
+        for (int i = 0; i < 3; i++) {
+            menu(path).click();
+            if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
+                    javax.swing.JOptionPane.class, true) {
+                @Override
+                protected boolean isMatching(javax.swing.JOptionPane p) {
+                    return true;
+                }
+            }).isEmpty(), 5_000)) {
+                return;
+            }
+        }
+    }
+
+    private boolean waitQuietly(BooleanSupplier test, long ms) {
+        long end = System.currentTimeMillis() + ms;
+        while (System.currentTimeMillis() < end) {
+            if (GuiActionRunner.execute(test::getAsBoolean)) {
+                return true;
+            }
+            Pause.pause(50);
+        }
+        return false;
     }
 
     private Path saveAs(String name) {

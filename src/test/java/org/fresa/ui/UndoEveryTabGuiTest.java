@@ -1,0 +1,261 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+
+import java.awt.event.KeyEvent;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+import org.assertj.swing.core.GenericTypeMatcher;
+import org.assertj.swing.core.KeyPressInfo;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.JFileChooserFixture;
+import org.assertj.swing.timing.Condition;
+import org.assertj.swing.timing.Pause;
+import org.assertj.swing.timing.Timeout;
+import org.fresa.job.Job;
+import org.fresa.job.JobTask;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Undo and redo of a change made in each tab that holds job settings, the way a planner makes it
+ * (typing into a field, a choice in a list, a tick): Ctrl+Z gives back exactly the job before the
+ * change ({@code equals}), Ctrl+Y and Ctrl+Shift+Z exactly the changed one.
+ */
+class UndoEveryTabGuiTest extends WindowGuiTest {
+
+    // the robot presses modifier keys given by the old masks
+    @SuppressWarnings("deprecation")
+    private static final int CTRL = java.awt.event.InputEvent.CTRL_MASK;
+    @SuppressWarnings("deprecation")
+    private static final int SHIFT = java.awt.event.InputEvent.SHIFT_MASK;
+    private static final Path JOBS = Path.of("samples/jobs").toAbsolutePath();
+
+    @Test
+    void stepNc() {
+        open("example2-irb140.xml");
+        waitFor("example 2 is read", () -> model().job().stepnc().isPresent() && treeText().contains("example2"));
+        select("STEP-NC");
+        undoAndRedoRestore(() -> {
+            window.button("stepnc-open").click();
+            JFileChooserFixture fc = window.fileChooser(Timeout.timeout(10_000));
+            Path other = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
+            fc.setCurrentDirectory(other.getParent().toFile());
+            fc.selectFile(other.toFile());
+            fc.approve();
+        });
+        waitUntilNoTaskRuns();
+        // after the last redo the tab shows the file the job has
+        String name = model().job().stepnc().orElseThrow().file().getFileName().toString();
+        assertEquals("iso14649-11-example1.stp", name);
+        waitFor("the tab shows the job's file", () -> window.robot().finder().findAll(window.target(),
+                new GenericTypeMatcher<>(javax.swing.JLabel.class, true) {
+                    @Override
+                    protected boolean isMatching(javax.swing.JLabel l) {
+                        return l.getText() != null && l.getText().startsWith(name + ": ");
+                    }
+                }).size() == 1);
+    }
+
+    @Test
+    void position() {
+        open("example2-irb140.xml");
+        select("Position");
+        waitFor("the fields are shown", () -> showing("position-rt-X"));
+        undoAndRedoRestore(() -> window.textBox("position-rt-X").deleteText().enterText("312.5"));
+        assertEquals("312.5", window.textBox("position-rt-X").text());
+    }
+
+    @Test
+    void robot() {
+        open("example2-irb140.xml");
+        select("Robot");
+        String other = GuiActionRunner.execute(() -> {
+            javax.swing.JComboBox<?> c = (javax.swing.JComboBox<?>) window.comboBox("robot-choice").target();
+            for (int i = 0; i < c.getItemCount(); i++) {
+                if (!"irb140".equals(c.getItemAt(i))) {
+                    return (String) c.getItemAt(i);
+                }
+            }
+            throw new AssertionError("one built-in robot only");
+        });
+        undoAndRedoRestore(() -> window.comboBox("robot-choice").selectItem(other));
+        assertEquals(other, model().job().robot().orElseThrow().robot());
+    }
+
+    @Test
+    void pocket() {
+        open("pocket-cavity01.xml");
+        select("Pocket");
+        undoAndRedoRestore(() -> window.textBox("pocket-tool").deleteText().enterText("5.5"));
+        assertEquals(5.5, model().job().pocket().orElseThrow().toolDiameterMm());
+        assertEquals("5.5", window.textBox("pocket-tool").text());
+        undoAndRedoRestore(() -> window.comboBox("pocket-direction").selectItem("conventional"));
+    }
+
+    @Test
+    void grading() {
+        open("grade-sole40.xml");
+        select("Grading");
+        waitFor("Grade may run", () -> window.button("grading-grade").target().isEnabled());
+        undoAndRedoRestore(() -> window.textBox(GradingViewModel.SIZES).deleteText().enterText("38-42"));
+        assertEquals("38-42", model().job().grading().orElseThrow().sizes());
+        undoAndRedoRestore(() -> window.checkBox("grading-half-sizes").click());
+        undoAndRedoRestore(() -> window.comboBox(GradingViewModel.SHRINKAGE_MODE).selectItem("additive"));
+    }
+
+    @Test
+    void sole() {
+        open("sole-men40.xml");
+        select("Sole");
+        window.button("sole-load").click();
+        waitFor("the sole is planned", () -> window.comboBox("sole-designs").target().getItemCount() > 1);
+        waitUntilNoTaskRuns();
+        window.list("sole-library").selectItem("SUB4");
+        undoAndRedoRestore(() -> window.button("sole-place").click());
+    }
+
+    @Test
+    void cutting() {
+        open("cut-plate.xml");
+        select("Cutting");
+        undoAndRedoRestore(() -> window.textBox(CuttingViewModel.KERF).deleteText().enterText("1.5"));
+        assertEquals(1.5, model().job().cutting().orElseThrow().kerfMm());
+        undoAndRedoRestore(() -> window.comboBox("cutting-compensation").selectItem("controller"));
+        undoAndRedoRestore(() -> window.checkBox(new GenericTypeMatcher<>(javax.swing.JCheckBox.class, true) {
+            @Override
+            protected boolean isMatching(javax.swing.JCheckBox b) {
+                return b.getText().startsWith("Rapids around");
+            }
+        }).click());
+    }
+
+    @Test
+    void theRunSetOfTheJobMenu() {
+        open("example2-irb140.xml");
+        undoAndRedoRestore(() -> window.menuItem("run-stepnc").click());
+        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.ROBOT), model().job().runs());
+    }
+
+    /**
+     * Makes the change, then: Ctrl+Z gives back the job before it, Ctrl+Y the changed one, and
+     * Ctrl+Z then Ctrl+Shift+Z the changed one again; the title's star follows.
+     */
+    private void undoAndRedoRestore(Runnable change) {
+        waitUntilNoTaskRuns();
+        Job before = model().job();
+        change.run();
+        waitFor("the change is the job's", () -> !model().job().equals(before));
+        waitUntilNoTaskRuns();
+        Job after = model().job();
+        assertNotEquals(before, after);
+        press(before, KeyEvent.VK_Z, CTRL);
+        press(after, KeyEvent.VK_Y, CTRL);
+        press(before, KeyEvent.VK_Z, CTRL);
+        press(after, KeyEvent.VK_Z, CTRL | SHIFT);
+        org.junit.jupiter.api.Assertions.assertTrue(GuiActionRunner.execute(() -> ((MainWindow) window.target()).getTitle()).endsWith(" *"));
+    }
+
+    /**
+     * Presses the keys until the job is the expected one; a press the virtual display lost (the
+     * job is still the one before it) is made again, a press that was seen is never repeated.
+     */
+    private void press(Job expected, int key, int modifiers) {
+        Job was = model().job();
+        regainFocus();
+        for (int attempt = 0; attempt < 3; attempt++) {
+            window.pressAndReleaseKey(KeyPressInfo.keyCode(key).modifiers(modifiers == (CTRL | SHIFT)
+                    ? new int[] {CTRL, SHIFT} : new int[] {modifiers}));
+            if (waitQuietly(() -> !model().job().equals(was), 5_000)) {
+                break;
+            }
+        }
+        waitUntilNoTaskRuns();
+        assertEquals(expected, model().job(), KeyEvent.getKeyModifiersText(modifiers) + "+"
+                + KeyEvent.getKeyText(key));
+    }
+
+    /**
+     * After a modal dialog (a file chooser) the virtual display, which has no window manager,
+     * may leave no component with the keyboard focus: a click on a field of the tab gives it back.
+     */
+    private void regainFocus() {
+        if (GuiActionRunner.execute(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager()
+                .getFocusOwner() != null)) {
+            return;
+        }
+        java.util.Collection<java.awt.Component> found = window.robot().finder().findAll(window.target(),
+                new GenericTypeMatcher<java.awt.Component>(java.awt.Component.class, true) {
+                    @Override
+                    protected boolean isMatching(java.awt.Component c) {
+                        return c instanceof javax.swing.JTree || c instanceof javax.swing.text.JTextComponent
+                                && ((javax.swing.text.JTextComponent) c).isEditable();
+                    }
+                });
+        window.robot().click(found.iterator().next());
+        waitQuietly(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() != null,
+                5_000);
+    }
+
+    private boolean waitQuietly(BooleanSupplier test, long ms) {
+        long end = System.currentTimeMillis() + ms;
+        while (System.currentTimeMillis() < end) {
+            if (GuiActionRunner.execute(test::getAsBoolean)) {
+                return true;
+            }
+            Pause.pause(50);
+        }
+        return false;
+    }
+
+    private void select(String tab) {
+        window.tabbedPane("tabs").selectTab(tab);
+        window.robot().waitForIdle();
+    }
+
+    private boolean showing(String name) {
+        return window.robot().finder().findAll(new GenericTypeMatcher<javax.swing.JComponent>(
+                javax.swing.JComponent.class, true) {
+            @Override
+            protected boolean isMatching(javax.swing.JComponent c) {
+                return name.equals(c.getName());
+            }
+        }).size() == 1;
+    }
+
+    private MainViewModel model() {
+        return GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+    }
+
+    private void open(String job) {
+        GuiActionRunner.execute(() -> ((MainWindow) window.target()).openJob(JOBS.resolve(job)));
+        waitUntilNoTaskRuns();
+    }
+
+    private String treeText() {
+        return GuiActionRunner.execute(() -> {
+            javax.swing.JTree t = window.robot().finder().findByName(window.target(), "stepnc-tree",
+                    javax.swing.JTree.class, false);
+            return String.valueOf(t.getModel().getRoot());
+        });
+    }
+
+    private void waitFor(String what, BooleanSupplier test) {
+        Pause.pause(new Condition(what) {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(test::getAsBoolean);
+            }
+        }, Timeout.timeout(120_000));
+    }
+
+    private void waitUntilNoTaskRuns() {
+        waitFor("no task is running", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
+                javax.swing.JProgressBar.class, false) {
+            @Override
+            protected boolean isMatching(javax.swing.JProgressBar b) {
+                return b.isShowing();
+            }
+        }).isEmpty());
+    }
+}
