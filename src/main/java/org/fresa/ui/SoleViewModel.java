@@ -185,7 +185,7 @@ public final class SoleViewModel {
             return PlotScene.empty(problem.isEmpty() ? "No sole plan" : problem);
         }
         SoleService.SolePlan p = plan.get();
-        return SoleService.pairScene(p, p.grader().grade(Double.parseDouble(size))).orElseGet(() -> PlotScene.empty(
+        return SoleService.pairScene(p, SoleService.graded(p, Double.parseDouble(size))).orElseGet(() -> PlotScene.empty(
                 "The job has no mould block: each foot's programs stay in the outline's frame"));
     }
 
