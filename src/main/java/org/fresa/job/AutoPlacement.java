@@ -154,13 +154,16 @@ public final class AutoPlacement {
         return new Outcome(r, rounded, (System.nanoTime() - t0) / 1e9, (mx.getCurrentThreadCpuTime() - c0) / 1e9);
     }
 
-    /** The search for a STEP-NC file as {@code fresa robot} plans it (the Position tab's button). */
-    public static Outcome search(Path stepnc, String robotName, Placement tablePiece, RobotTools.Choice tool,
-            ProgressMonitor progress) throws CamInputException, java.io.IOException {
+    /**
+     * The search for a STEP-NC file as {@code fresa robot} plans it with the job's choices (the
+     * Position tab's button): the toolpath placed is the one Compute solves.
+     */
+    public static Outcome search(Path stepnc, PlanningChoices choices, String robotName, Placement tablePiece,
+            RobotTools.Choice tool, ProgressMonitor progress) throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
-        var program = StepNcService.read(stepnc, progress);
-        progress.progress(-1, "planning toolpaths");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(program, Tolerance.DEFAULT, PlanningChoices.DEFAULT);
+        ToolpathService.Planned planned = ToolpathService.compute(stepnc, choices, progress);
+        var program = planned.program();
+        ToolpathPlanner.Plan plan = planned.plan();
         if (plan.planned() == 0) {
             throw new CamInputException(stepnc.toString(), "no workingstep could be planned: nothing to place");
         }

@@ -494,7 +494,7 @@ final class PositionTab implements ModuleTab {
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
         ctx.tasks().start("Searching the table placement for " + r.robot(),
-                progress -> org.fresa.job.AutoPlacement.search(file, r.robot(), r.tablePiece(),
+                progress -> org.fresa.job.AutoPlacement.search(file, stepnc.get().choices(), r.robot(), r.tablePiece(),
                         new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), progress),
                 outcome -> {
                     if (generation != ctx.model().generation()) {
