@@ -140,8 +140,6 @@ final class PositionTab implements ModuleTab {
         summaryPanel.add(summaryLabel, BorderLayout.NORTH);
         summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
         errorAxes.setName("position-error-axes");
-        errorAxes.setToolTipText("Target - reached per axis over the reached points, as summary.json's"
-                + " error_per_axis: x, y, z in mm, the orientation about x, y, z in rad");
         JScrollPane axesScroll = new JScrollPane(errorAxes);
         axesScroll.setPreferredSize(new java.awt.Dimension(300, 7 * errorAxes.getRowHeight() + 28));
         axesScroll.setBorder(BorderFactory.createTitledBorder("Error per axis (target - reached)"));

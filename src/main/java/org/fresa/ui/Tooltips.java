@@ -45,6 +45,8 @@ final class Tooltips {
         for (int i = 0; i < tpKeys.length; i++) {
             tip("Position", "position-tp-" + tpKeys[i], "Table -> piece: " + tp[i]);
         }
+        tip("Position", "position-error-axes", "Target - reached per axis over the reached points, as"
+                + " summary.json's error_per_axis: x, y, z in mm, the orientation about x, y, z in rad");
         tip("Position", "position-place-auto", "Searches the robot -> table placement (X, Y, Z, RZ) that reaches every"
                 + " target with the largest joint-limit margin, or says which workingsteps are out of reach (Alt+L)");
         tip("Position", "position-replay", "The trajectory point shown in the cell view and marked in the plots");
