@@ -23,7 +23,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
                 org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
 
-        window.tabbedPane("tabs").selectTab("Robot");
+        showTab("Robot");
         window.comboBox("robot-choice").selectItem("irb140");
         window.table("robot-dh").requireRowCount(6);
 
@@ -79,7 +79,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
         GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
                 org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
-        window.tabbedPane("tabs").selectTab("Robot");
+        showTab("Robot");
         window.comboBox("robot-choice").selectItem("irb140");
 
         // joint 2's theta: a variable of another joint is refused with the reason
@@ -225,5 +225,15 @@ class RobotTabsGuiTest extends WindowGuiTest {
                 }).isEmpty());
             }
         }, Timeout.timeout(60_000));
+    }
+
+    /** Selects a tab, again through the model when the virtual display lost the click. */
+    private void showTab(String title) {
+        window.tabbedPane("tabs").selectTab(title);
+        GuiActionRunner.execute(() -> {
+            javax.swing.JTabbedPane t = (javax.swing.JTabbedPane) window.tabbedPane("tabs").target();
+            t.setSelectedIndex(t.indexOfTab(title));
+        });
+        window.robot().waitForIdle();
     }
 }
