@@ -270,103 +270,11 @@ final class Part21Lexer {
         return new String(word, 0, wordLength);
     }
 
-    private void number() throws IOException, StepParseException {
-        if (!numberInBuffer()) {
-            numberAcrossRefills();
-        }
-    }
-
     /**
-     * The common case: the number and the character after it are in the buffer, read there with
-     * a local index as {@link #numberAcrossRefills} reads them. False, with nothing consumed, when
-     * the buffer ends first or the number is malformed (the other path then reads or refuses it).
+     * A number, read character by character through the buffer (a number may straddle one of its
+     * refills), its digits kept as a long while they are few enough to be exact.
      */
-    private boolean numberInBuffer() throws StepParseException {
-        char[] b = buf;
-        int l = lim;
-        int p = pos;
-        char c = b[p];
-        boolean negative = false;
-        if (c == '+' || c == '-') {
-            negative = c == '-';
-            p++;
-        }
-        if (p == l || !isDigit(b[p])) {
-            return false;
-        }
-        long mantissa = 0;
-        int significant = 0;
-        int scale = 0;
-        while (p < l && isDigit(c = b[p])) {
-            p++;
-            if (significant < 18) {
-                mantissa = mantissa * 10 + (c - '0');
-                if (mantissa != 0) {
-                    significant++;
-                }
-            } else {
-                significant++;
-                scale++;
-            }
-        }
-        if (p == l) {
-            return false;
-        }
-        boolean real = false;
-        if (b[p] == '.') {
-            real = true;
-            p++;
-            while (p < l && isDigit(c = b[p])) {
-                p++;
-                if (significant < 18) {
-                    mantissa = mantissa * 10 + (c - '0');
-                    if (mantissa != 0) {
-                        significant++;
-                    }
-                    scale--;
-                } else {
-                    significant++;
-                }
-            }
-            if (p == l) {
-                return false;
-            }
-            if (b[p] == 'E' || b[p] == 'e') {
-                p++;
-                boolean expNegative = false;
-                if (p < l && (b[p] == '+' || b[p] == '-')) {
-                    expNegative = b[p] == '-';
-                    p++;
-                }
-                if (p == l || !isDigit(b[p])) {
-                    return false;
-                }
-                int exp = 0;
-                while (p < l && isDigit(c = b[p])) {
-                    p++;
-                    if (exp < 100_000) {
-                        exp = exp * 10 + (c - '0');
-                    }
-                }
-                if (p == l) {
-                    return false;
-                }
-                scale += expNegative ? -exp : exp;
-            }
-        }
-        int n = p - pos;
-        if (n > word.length) {
-            word = Arrays.copyOf(word, Math.max(n, word.length * 2));
-        }
-        System.arraycopy(b, pos, word, 0, n);
-        wordLength = n;
-        col += n;
-        pos = p;
-        numberValue(real, negative, mantissa, significant, scale);
-        return true;
-    }
-
-    private void numberAcrossRefills() throws IOException, StepParseException {
+    private void number() throws IOException, StepParseException {
         wordLength = 0;
         int c = peekChar();
         boolean negative = false;
