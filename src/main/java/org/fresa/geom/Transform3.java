@@ -186,7 +186,7 @@ public record Transform3(
     /**
      * The record's own equality (each component by {@link Double#compare}) and hash (the same
      * 31-polynomial), written out: the generated ones are bootstrapped through method handles,
-     * which spins classes at start-up (issue 11).
+     * which spins classes at start-up.
      */
     @Override
     public boolean equals(Object other) {

@@ -89,7 +89,7 @@ public record Vec3(double x, double y, double z) {
     /**
      * The record's own equality (each component by {@link Double#compare}) and hash (the same
      * 31-polynomial), written out: the generated ones are bootstrapped through method handles,
-     * which spins classes at start-up (issue 11).
+     * which spins classes at start-up.
      */
     @Override
     public boolean equals(Object other) {

@@ -18,7 +18,7 @@ import org.fresa.model.CamInputException;
 import org.fresa.stepnc.StepNcReader;
 
 /**
- * The short benchmarks of {@code fresa bench} (issue 11): each figure is the median of repeated
+ * The short benchmarks of {@code fresa bench}: each figure is the median of repeated
  * runs after a JIT warm-up, measured in this JVM (except the whole-process figure, which starts a
  * fresh one). The inputs are resources of the jar ({@value #INPUTS}: example part 2, cavity 02 and
  * the 10 052-line ezdxf drawing), so that a copied jar or an installed app image measures the
@@ -26,7 +26,7 @@ import org.fresa.stepnc.StepNcReader;
  */
 public final class Benchmarks {
 
-    /** The goals of issue 11: figure name to goal (a maximum, or a minimum for *_per_s). */
+    /** The performance goals (docs/performance.md): figure name to goal (a maximum, or a minimum for *_per_s). */
     public static final Map<String, Double> GOALS = Map.of(
             "ik_us_per_point_irb140", 5.0,
             "ik_us_per_point_tricept806", 10.0,

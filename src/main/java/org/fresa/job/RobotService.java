@@ -23,9 +23,9 @@ import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**
- * {@code fresa robot} and the job task {@code robot}: a STEP-NC file's toolpaths (issue 4)
- * placed in the robot cell and turned into a joint trajectory (issue 5) and robot programs
- * (issue 6). Everything is read and checked before the first file is written.
+ * {@code fresa robot} and the job task {@code robot}: a STEP-NC file's toolpaths
+ * placed in the robot cell and turned into a joint trajectory and robot programs.
+ * Everything is read and checked before the first file is written.
  */
 public final class RobotService {
 

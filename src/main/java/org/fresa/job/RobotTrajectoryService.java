@@ -27,7 +27,7 @@ import org.fresa.model.ToolpathSection;
 import org.fresa.post.RobotProgram;
 
 /**
- * A toolpath in the workpiece frame turned into a robot joint trajectory (issue 5):
+ * A toolpath in the workpiece frame turned into a robot joint trajectory:
  * {@code trajectory.csv}, {@code summary.json}, {@code joints.png} and {@code error.png}.
  *
  * <p>A point p of the workpiece frame is p_R = T_robot_table * T_table_piece * p in the robot

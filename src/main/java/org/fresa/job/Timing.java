@@ -6,7 +6,7 @@ import java.time.Duration;
 import java.time.Instant;
 
 /**
- * An opt-in phase timer for finding where a command's time goes (issue 11, docs/performance.md):
+ * An opt-in phase timer for finding where a command's time goes (docs/performance.md):
  * with {@code -Dfresa.timing=true} (e.g. through {@code FRESA_JAVA_OPTS}) each phase's end is
  * logged (System.Logger {@code fresa.timing}, by default on standard error) with the wall time
  * since the JVM started and the thread's CPU time. Off, a phase costs one boolean test.

@@ -7,7 +7,7 @@ import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 
 /**
- * A short inverse-kinematics benchmark (issue 11): a bidirectional zig-zag of 3131 points over
+ * A short inverse-kinematics benchmark: a bidirectional zig-zag of 3131 points over
  * 60 x 100 mm with the tool pointing down, solved warm from the previous point to 1e-7 mm and
  * 1e-9 rad (full 6-D). Reports the median time per point over repeated rounds, after warm-up
  * rounds for the JIT. No output of its own: {@code fresa bench} and the test harness print.

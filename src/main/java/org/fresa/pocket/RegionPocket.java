@@ -16,7 +16,7 @@ import org.fresa.model.ToolpathSection;
 
 /**
  * Fresa's default contour-parallel pocketing of a region with islands and any number of sub-areas
- * (issue 7, beyond the thesis): offsets of the whole region (outer contour and islands together,
+ * (beyond the thesis): offsets of the whole region (outer contour and islands together,
  * {@link RegionOffsetter}) at R (finishing), R + a (pre-finish), then by the stepover, cut from
  * the inside out, climb by default.
  *

@@ -6,7 +6,7 @@ import org.fresa.geom.Tolerance;
 
 /**
  * Exact inward offsets of a closed line/arc contour, as the pocket module's offset engine
- * provides ({@link #EXACT}, {@code org.fresa.pocket.LineArcOffsetter}, issue 7).
+ * provides ({@link #EXACT}, {@code org.fresa.pocket.LineArcOffsetter}).
  */
 @FunctionalInterface
 public interface ContourOffsetter {
@@ -17,7 +17,7 @@ public interface ContourOffsetter {
      */
     List<Contour> inward(Contour c, double dMm, Tolerance tol);
 
-    /** The pocket module's exact line/arc offsetter (issue 7), largest loop first. */
+    /** The pocket module's exact line/arc offsetter, largest loop first. */
     ContourOffsetter EXACT = (c, d, tol) -> {
         java.util.List<Contour> loops = new java.util.ArrayList<>(
                 org.fresa.pocket.LineArcOffsetter.offset(c, -d, tol));

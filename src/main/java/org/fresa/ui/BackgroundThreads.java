@@ -8,7 +8,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 /**
  * The window's background threads (a task's worker, the chart drawer): daemons at
  * {@link Thread#MIN_PRIORITY}, so that on a machine of few cores the event thread wins a core
- * when it wakes while they compute (issue 11). Java priorities reach the operating system only
+ * when it wakes while they compute. Java priorities reach the operating system only
  * when the JVM is asked to (on Linux {@code -XX:ThreadPriorityPolicy=1}, which the {@code fresa}
  * launcher passes for the window: then MIN_PRIORITY is nice 4); without it they are hints the
  * JVM ignores, and nothing else changes. Threads these threads create inherit the priority (the

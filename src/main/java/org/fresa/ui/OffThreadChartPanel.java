@@ -19,7 +19,7 @@ import org.jfree.chart.plot.PlotRenderingInfo;
 /**
  * A chart panel whose chart is drawn off the event thread into an image, which the event thread
  * then only copies: drawing a big toolpath or many joint curves takes far longer than the 50 ms an
- * event may take (issue 11). The picture is described by a {@link Picture} taken on the event
+ * event may take. The picture is described by a {@link Picture} taken on the event
  * thread at paint time; a picture that has changed is drawn again in the background while the
  * previous image stays on screen. The chart the panel holds is the event thread's: zoom, pan and
  * the pixel-to-value mapping work on it as in any chart panel, with the data area of the image.

@@ -106,7 +106,7 @@ final class OrbitCamera {
 
     /**
      * The projection of the camera as it is now onto a view of the given size, its vectors
-     * computed once: the 3D view projects thousands of points per paint (issue 11).
+     * computed once: the 3D view projects thousands of points per paint.
      */
     Projection projection(int width, int height) {
         double az = Math.toRadians(azimuthDeg);

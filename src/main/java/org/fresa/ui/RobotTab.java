@@ -507,7 +507,7 @@ final class RobotTab implements ModuleTab {
     private void computeSymbolic() {
         // only for the tab on screen: Symja's start and derivation take a core for a second or more,
         // which a job started in another tab (a job file opened sets the robot) should not compete
-        // with (issue 11); the tab derives it when it is shown
+        // with; the tab derives it when it is shown
         if (vm.edited().isEmpty() || !panel.isShowing()) {
             return;
         }

@@ -39,7 +39,7 @@ final class StatusBar extends JPanel {
      * As high with the progress bar and Cancel shown as without them: a bar that grew when a task
      * starts (and shrank when it ends) made the whole tab above it one line shorter (longer), so
      * every component of the tab was laid out and painted again, 20 to 45 ms of the event
-     * thread's time in a fresh window (issue 11). Now only the status bar changes.
+     * thread's time in a fresh window. Now only the status bar changes.
      */
     @Override
     public java.awt.Dimension getPreferredSize() {

@@ -180,7 +180,7 @@ final class StepNcTab implements ModuleTab {
         texts.add(cycleText);
         legend.setName("stepnc-legend");
         // parsed here, with the window: the first HTML text of a JVM took 30 to 40 ms of the event
-        // thread when the first program was shown (issue 11); the grid keeps the hidden label's row
+        // thread when the first program was shown; the grid keeps the hidden label's row
         legend.setText("<html><font color='#1565C0'>blue: feed</font>, <font color='#E53935'>red dashed: rapid"
                 + "</font>, <font color='#2E7D32'>green: cut so far</font>, <font color='#FF8F00'>orange: the tool"
                 + "</font>, black: the feature</html>");

@@ -6,7 +6,7 @@ import javax.swing.text.PlainDocument;
 
 /**
  * Text documents filled off the event thread: a program of many thousand lines takes longer to
- * put into a text area's document than an event may take (issue 11). A document no component
+ * put into a text area's document than an event may take. A document no component
  * shows yet belongs to no thread; the event thread then only swaps it in.
  */
 final class TextDocuments {

@@ -13,7 +13,7 @@ import org.jfree.chart.plot.XYPlot;
 /**
  * The Position tab's two charts of one solved trajectory, made on demand with the replayed point
  * marked. The data are computed once and never change, so any thread may make a chart: the tab
- * makes them off the event thread, a new one for each picture drawn (issue 11).
+ * makes them off the event thread, a new one for each picture drawn.
  */
 final class TrajectoryCharts {
 

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 11: a 10 MB DXF drawing is read and chained within a 512 MB heap, and so is the largest
+ * A 10 MB DXF drawing is read and chained within a 512 MB heap, and so is the largest
  * corpus drawing. Runs in the {@code low-memory} surefire execution ({@code -Xmx512m}); skipped
  * in a larger heap, where it would prove nothing.
  */

@@ -31,7 +31,7 @@ import org.locationtech.jts.geom.prep.PreparedGeometry;
 import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
 
 /**
- * Rapid moves avoid crossing parts already cut free (issue 8), checked independently with JTS:
+ * Rapid moves avoid crossing parts already cut free, checked independently with JTS:
  * a rapid segment crosses a part when it meets the interior of the part's drawn outline.
  */
 class RapidRouterTest {

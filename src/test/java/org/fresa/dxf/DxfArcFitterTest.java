@@ -19,7 +19,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Property tests of the biarc fitting of ellipses and splines (issue 8): the arcs stay within
+ * Property tests of the biarc fitting of ellipses and splines: the arcs stay within
  * the tolerance of the exact curve both ways, consecutive arcs are tangent (G1), and the ends are
  * exact.
  */

@@ -8,7 +8,7 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 import org.junit.jupiter.api.Test;
 
-/** A cycle of blocks is named in insertion order (issue 17), not as one block inserting itself. */
+/** A cycle of blocks is named in insertion order, not as one block inserting itself. */
 class DxfBlockCycleTest {
 
     private static String block(String name, String inserts) {

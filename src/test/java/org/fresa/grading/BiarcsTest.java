@@ -14,7 +14,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 class BiarcsTest {
 
     /**
-     * The bound of issue 9: biarcs within 0.005 mm of the exact affine image, checked by dense
+     * The grading's bound: biarcs within 0.005 mm of the exact affine image, checked by dense
      * sampling both ways. Points of the arcs are pulled back onto the base circle by the inverse
      * map, where the distance is exact, and scaled by the larger factor; points of the exact
      * ellipse are measured against the arcs.

@@ -20,7 +20,7 @@ import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
 import org.junit.jupiter.api.Test;
 
-/** Issue 9's acceptance: the sample sole graded from base 40 over 36-44, Brazilian. */
+/** The grading's acceptance: the sample sole graded from base 40 over 36-44, Brazilian. */
 class GraderTest {
 
     static Contour sole40() throws Exception {

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** Size numbers are above 0 and at most a 1 m last, in every system (issue 17). */
+/** Size numbers are above 0 and at most a 1 m last, in every system. */
 class SizeBoundsTest {
 
     static final double TOL = 1e-9;

@@ -20,7 +20,7 @@ import org.junit.jupiter.api.function.Executable;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * A job file cannot bring a value the command-line option refuses (issue 17): every numeric
+ * A job file cannot bring a value the command-line option refuses: every numeric
  * attribute of the sample jobs, given values a typo or a script produces, is either refused by
  * the reader with the file, line and range, or read as a value inside the option's range.
  */

@@ -101,7 +101,7 @@ class PocketServiceTest {
 
     @Test
     void conventionalMillingTurnsTheLoopsTheOtherWay(@TempDir Path dir) throws Exception {
-        // issue 7: climb milling by default, conventional on request
+        // climb milling by default, conventional on request
         // the example part's arcs are all convex: clockwise (G02) in the thesis's conventional passes
         PocketSettings climb = settings("examplepart", "linuxcnc");
         PocketSettings conventional = climb.withDirection(MillingDirection.CONVENTIONAL);
@@ -151,7 +151,7 @@ class PocketServiceTest {
 
     @Test
     void theCorrectedSevenMPostTakesTheMillingDirection(@TempDir Path dir) throws Exception {
-        // issue 7: 7m (the thesis's dialect with its defects corrected) climb-mills by default like
+        // 7m (the thesis's dialect with its defects corrected) climb-mills by default like
         // the G-code posts; conventional gives the thesis's clockwise passes
         PocketSettings climb = settings("examplepart", "7m");
         TaskOutcome a = PocketService.run(climb, dir.resolve("climb.nc"), ProgressMonitor.NONE);

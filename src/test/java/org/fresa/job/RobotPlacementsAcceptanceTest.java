@@ -12,7 +12,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** Issue 5's placements (the thesis's table 5.1) through the whole robot pipeline. */
+/** The thesis's placements (its table 5.1) through the whole robot pipeline. */
 class RobotPlacementsAcceptanceTest {
 
     @TempDir

@@ -101,7 +101,7 @@ class RobotProgramXmlTest {
 
     @Test
     void theWrittenFileIsValidAgainstTheSchema() throws Exception {
-        // write() no longer validates as it goes (issue 11): the file must still be valid
+        // write() no longer validates as it goes: the file must still be valid
         javax.xml.validation.Validator v = SafeXml.schema("/schemas/robot-program.xsd").newValidator();
         v.validate(new javax.xml.transform.stream.StreamSource(writeSample().toFile()));
     }

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Issue 6's acceptance: example 2 on the IRB-140, every format, the same joints everywhere. */
+/** The robot programs' acceptance: example 2 on the IRB-140, every format, the same joints everywhere. */
 class RobotServiceTest {
 
     @TempDir
@@ -56,7 +56,7 @@ class RobotServiceTest {
 
     @Test
     void example2OnTheIrb140IsReachedExactlyWithoutJointJumps() throws Exception {
-        // issue 5's acceptance: every point reached within the limits, 1e-6 mm, 1e-8 rad, and no
+        // the trajectory's acceptance: every point reached within the limits, 1e-6 mm, 1e-8 rad, and no
         // jump over 20 deg between neighbouring ok points (relinks happen off the part)
         List<String> rows = Files.readAllLines(dir.resolve("trajectory.csv"));
         List<String> h = List.of(rows.get(0).split(","));

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The STEP-NC task with refused workingsteps and the planner's choices (issue 17): a refused
+ * The STEP-NC task with refused workingsteps and the planner's choices: a refused
  * workingstep makes the run exit 1 with its name and reason, the others' toolpath.csv,
  * program.ngc and summary.json are written; the choices come from the job file as from the
  * options.

@@ -183,7 +183,7 @@ class ToolpathServiceTest {
     }
 
     /**
-     * Issue 4: example 1's through hole at (20, 60), drilled with DRILLING_TYPE_STRATEGY(0.75, 0.50,
+     * Example 1's through hole at (20, 60), drilled with DRILLING_TYPE_STRATEGY(0.75, 0.50,
      * 2.0, 0.50, 0.75, 8.0) by the D20 TWIST_DRILL (tool_top_angle 31 deg from the plane, a 118 deg
      * point: tip 10 tan 31 = 6.0086 mm) at 1800 mm/min, retract plane 10.
      *
@@ -267,7 +267,7 @@ class ToolpathServiceTest {
         assertEquals(ream.spindleRpm(), ((Move.SpindleStart) rm.get(stop + 2)).rpm());
     }
 
-    /** Issue 4: example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */
+    /** Example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */
     @Test
     void summaryJsonSaysHowEachUnitlessFeedWasRead(@TempDir Path dir) throws Exception {
         TaskOutcome o = ToolpathService.run(EXAMPLE2, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);

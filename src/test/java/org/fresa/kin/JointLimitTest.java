@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-/** A Tricept's leg range is held to the rule of a serial joint's: finite, max above min (issue 17). */
+/** A Tricept's leg range is held to the rule of a serial joint's: finite, max above min. */
 class JointLimitTest {
 
     @ParameterizedTest

@@ -20,7 +20,7 @@ import org.locationtech.jts.operation.buffer.BufferParameters;
 import org.locationtech.jts.operation.union.UnaryUnionOp;
 
 /**
- * The acceptance check of issue 7: at the pocket floor the tool disc, swept along every feed move
+ * The acceptance check of pocket milling: at the pocket floor the tool disc, swept along every feed move
  * of Fresa's default toolpath, clears the region bounded by the thesis's own finishing pass grown
  * by R, and never leaves it (0.01 mm).
  */

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** The planner refuses technology that would make an endless program (issue 17). */
+/** The planner refuses technology that would make an endless program. */
 class PocketTechnologyBoundsTest {
 
     private static PocketTechnology depth(double zTop, double maxDepth) {

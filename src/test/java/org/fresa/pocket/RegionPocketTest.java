@@ -25,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 
-/** Issue 7, beyond the thesis: islands and many-way splits, milled completely. */
+/** Beyond the thesis: islands and many-way splits, milled completely. */
 class RegionPocketTest {
 
     static final Tolerance TOL = Tolerance.DEFAULT;

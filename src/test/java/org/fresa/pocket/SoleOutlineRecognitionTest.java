@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.locationtech.jts.geom.Geometry;
 
 /**
- * Issue 10: the men's size-40 sole outline (16 elements, near-tangent junctions, one arc of
+ * The men's size-40 sole outline (16 elements, near-tangent junctions, one arc of
  * R 750). Its two near-tangent reflex corners at the ends of the 11 mm heel line used to count as
  * a division at t = 5.5 (their sectors read at t = 0, where a zero-radius arc has no extent), so
  * the recognition reported FURO MAXIMO 11 mm on a 90 mm sole.

@@ -26,7 +26,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Damaged variants of real inputs through the command line (issue 12): truncated, bytes
+ * Damaged variants of real inputs through the command line: truncated, bytes
  * changed, huge numbers, shuffled lines. Whatever the damage: exit 0, 1 or 2 only, no stack
  * trace, nothing over 30 s, no output file when the input is refused, no temporary file left.
  * A reader joins by adding a case here when its command is built.

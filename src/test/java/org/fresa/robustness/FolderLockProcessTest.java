@@ -19,7 +19,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Two commands writing into the same folder at once (issue 17) with real processes: while a
+ * Two commands writing into the same folder at once with real processes: while a
  * long {@code fresa grade} holds the folder, a second run into it (here a job) is refused
  * with exit 1 naming the first one's process, and writes nothing. The first run is then killed:
  * SIGTERM leaves neither a temporary file nor the lock file; after SIGKILL the lock file may be

@@ -32,7 +32,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Hostile inputs (absurd counts, nesting, cycles, numeric hazards) through the command line in a
- * JVM with a 160 MB heap and a 512 KiB stack (issue 12): every command ends within 30 s with
+ * JVM with a 160 MB heap and a 512 KiB stack: every command ends within 30 s with
  * exit 0, 1 or 2, one message and no stack trace; a refused input writes nothing; no temporary
  * file is left; no output file holds NaN or Infinity. Some cases also pin the outcome.
  */

@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Inputs built to exhaust a reader or a planner (issue 12): absurd counts, deep nesting, cycles,
+ * Inputs built to exhaust a reader or a planner: absurd counts, deep nesting, cycles,
  * huge and degenerate numbers. Each is text written on the fly, so the repository holds none of
  * these files.
  */

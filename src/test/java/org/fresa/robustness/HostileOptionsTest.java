@@ -26,7 +26,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Model.OptionSpec;
 
 /**
- * Every numeric option of every command with values a typo or a script produces (issue 17): 0,
+ * Every numeric option of every command with values a typo or a script produces: 0,
  * -1, NaN, inf, -inf, 1e308, 1e-9 and the limits of the option's type. The options are found by
  * walking the command line's own model, so an option added later is tested too; a command with
  * numeric options needs a base command line here, which the test asks for.

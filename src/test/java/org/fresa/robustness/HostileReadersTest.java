@@ -26,7 +26,7 @@ import org.fresa.stepnc.StepNcReader;
 import org.junit.jupiter.api.Test;
 
 /**
- * Absurd counts, deep nesting and cycles straight into the readers (issue 12): each gives one
+ * Absurd counts, deep nesting and cycles straight into the readers: each gives one
  * CamInputException naming the line and what was expected, or a drawing read with a warning;
  * never an OutOfMemoryError, a StackOverflowError or a hang. The same files also go through the
  * command line with a small heap in {@link HostileCliTest}.

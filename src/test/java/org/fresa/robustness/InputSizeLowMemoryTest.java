@@ -26,7 +26,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 /**
- * Inputs larger than memory (issue 17) in a 512 MB heap (the {@code low-memory} surefire
+ * Inputs larger than memory in a 512 MB heap (the {@code low-memory} surefire
  * execution): a file beyond its reader's stated limit is refused with exit 2 before a byte is
  * read, never an OutOfMemoryError; a drawing just below the DXF limit is read whole. The large
  * files are sparse (their size without their bytes), so the test costs no disk.
@@ -89,7 +89,7 @@ class InputSizeLowMemoryTest {
         long heap = Runtime.getRuntime().maxMemory();
         assertAll(() -> assertEquals(heap / 8, DxfReader.maxFileBytes()),
                 () -> assertEquals(heap / 4, Part21Reader.maxFileBytes()),
-                () -> assertTrue(Part21Reader.maxFileBytes() >= 100 * MIB, "the 100 MB Part 21 file of issue 11 fits"),
+                () -> assertTrue(Part21Reader.maxFileBytes() >= 100 * MIB, "the 100 MB Part 21 file of the performance goals fits"),
                 () -> assertEquals(16 * MIB, FileChecks.MAX_TEXT_FILE_BYTES));
     }
 

@@ -21,7 +21,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * {@code fresa grade} over 67 sizes in its own JVM, killed while it writes (issue 12). SIGTERM:
+ * {@code fresa grade} over 67 sizes in its own JVM, killed while it writes. SIGTERM:
  * the shutdown hook removes the temporary file being written, so the folder holds only complete
  * files. SIGKILL: nothing can run, so at most the one hidden temporary file is left, never a
  * truncated file under a final name; the next run into the folder removes such a leftover once

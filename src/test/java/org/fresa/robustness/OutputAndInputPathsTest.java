@@ -25,7 +25,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * Paths that are not regular files (issue 17): {@code --out} naming a named pipe or a device is
+ * Paths that are not regular files: {@code --out} naming a named pipe or a device is
  * refused with exit 2 before any work and the node is left as it was (it used to be replaced by a
  * G-code file, /dev/full too when run as root); an input that is a directory or a pipe is refused
  * with exit 2 and a sentence saying what it is, without waiting on the pipe.

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 11: a 100 MB Part 21 file is read and bound within a 512 MB heap. The file is example 2
+ * A 100 MB Part 21 file is read and bound within a 512 MB heap. The file is example 2
  * repeated with its instance names shifted, so every copy is a complete, valid program. Runs in
  * the {@code low-memory} surefire execution ({@code -Xmx512m}); skipped in a larger heap, where
  * it would prove nothing.

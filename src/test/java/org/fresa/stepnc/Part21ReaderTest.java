@@ -240,7 +240,7 @@ class Part21ReaderTest {
 
     @Test
     void realsReadExactlyAsParseDoubleReadsThem() throws Exception {
-        // issue 11: the lexer's fast path for short decimals must round exactly like the JDK
+        // the lexer's fast path for short decimals must round exactly like the JDK
         java.util.Random rnd = new java.util.Random(11);
         StringBuilder sb = new StringBuilder();
         List<String> written = new java.util.ArrayList<>();

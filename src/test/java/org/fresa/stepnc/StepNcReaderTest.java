@@ -154,7 +154,7 @@ class StepNcReaderTest {
         assertEquals(120.0, p.workingsteps().get(0).feature().courseOfTravel().orElseThrow().distanceMm().orElseThrow());
     }
 
-    /** Issue 4: the drilling strategy and the drilling attributes are bound, not discarded. */
+    /** The drilling strategy and the drilling attributes are bound, not discarded. */
     @Test
     void example1sDrillingStrategyAndReamingAttributesAreBound() throws Exception {
         StepNcProgram p = read("iso14649-11-example1.stp");

@@ -18,7 +18,7 @@ import org.fresa.stepnc.Technology;
 import org.junit.jupiter.api.Test;
 
 /**
- * Technology from the file, checked (issue 17): src/test/resources/org/fresa/toolpath/technology.stp
+ * Technology from the file, checked: src/test/resources/org/fresa/toolpath/technology.stp
  * drills one Ø6 blind hole five times, each workingstep with its own MILLING_TECHNOLOGY in ISO
  * 14649-10 units (cutting speed m/s, spindle rev/s, feed m/s).
  */

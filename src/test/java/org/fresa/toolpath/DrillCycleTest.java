@@ -20,7 +20,7 @@ import org.fresa.stepnc.Technology;
 import org.fresa.stepnc.Tool;
 import org.junit.jupiter.api.Test;
 
-/** Issue 4: the moves of drilling, center drilling, multistep drilling, reaming and boring. */
+/** The moves of drilling, center drilling, multistep drilling, reaming and boring. */
 class DrillCycleTest {
 
     static final double EPS = 1e-9;

@@ -14,7 +14,7 @@ import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.StepNcReader;
 import org.junit.jupiter.api.Test;
 
-/** Feed units: ISO files in m/s, STEP Modeler's unitless chip loads (issue 4). */
+/** Feed units: ISO files in m/s, STEP Modeler's unitless chip loads. */
 class FeedRateTest {
 
     static StepNcProgram read(String name) throws Exception {

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Hole depths (issue 17): src/test/resources/org/fresa/toolpath/holes.stp is a 100 x 80 x 40 mm
+ * Hole depths: src/test/resources/org/fresa/toolpath/holes.stp is a 100 x 80 x 40 mm
  * block, top at z 40, with a Ø6 through hole without depth (118 deg drill), a Ø6 through hole
  * 40 deep whose drilling's cutting_depth 41.092 already holds its 140 deg point (3 / tan 70 deg
  * = 1.0919 mm), a Ø12 through hole 40 deep milled with a Ø8 end mill, and a Ø6 blind hole 10

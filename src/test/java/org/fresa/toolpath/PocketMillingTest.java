@@ -79,7 +79,7 @@ class PocketMillingTest {
         assertEquals(-12, lowestZ(s), 1e-9);
     }
 
-    /** Issue 4, cutting direction: every loop (corner arcs, helix entries) turns the way the plan says. */
+    /** Cutting direction: every loop (corner arcs, helix entries) turns the way the plan says. */
     @ParameterizedTest(name = "clockwise {0}")
     @CsvSource({"true", "false"})
     void loopsTurnInThePlansRotationDirection(boolean clockwise) {
@@ -98,7 +98,7 @@ class PocketMillingTest {
     }
 
     /**
-     * Issue 4, center milling: a slot-shaped pocket as wide as the tool (60 x 18, ends of radius 9,
+     * Center milling: a slot-shaped pocket as wide as the tool (60 x 18, ends of radius 9,
      * D18) is cut by one pass along its centre line, which clears it without touching the walls.
      */
     @org.junit.jupiter.api.Test

@@ -25,7 +25,7 @@ import org.fresa.robustness.CompleteOutputs;
 import org.junit.jupiter.api.Test;
 
 /**
- * Job > Run (F5) on a long grading job, then Cancel (Esc) while it writes (issue 12): the run
+ * Job > Run (F5) on a long grading job, then Cancel (Esc) while it writes: the run
  * stops, every file under a final name is complete, no temporary file is left, and the window
  * runs the next job as usual.
  */

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 11: the window stays responsive, no event-thread task over 50 ms, while each long job
+ * The window stays responsive, no event-thread task over 50 ms, while each long job
  * runs. Every job is started the way a planner starts it (a button, a file chooser) and recorded
  * from that press until its result is on screen and the event thread is idle again.
  *

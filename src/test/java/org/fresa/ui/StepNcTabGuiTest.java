@@ -17,7 +17,7 @@ import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings;
 import org.junit.jupiter.api.Test;
 
-/** The STEP-NC tab's toolpath view under a (virtual) display (issue 4); a headless run skips it. */
+/** The STEP-NC tab's toolpath view under a (virtual) display; a headless run skips it. */
 class StepNcTabGuiTest extends WindowGuiTest {
 
     @Test

@@ -9,7 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code fresa bench [--json]}: short versions of the performance benchmarks (issue 11). */
+/** {@code fresa bench [--json]}: short versions of the performance benchmarks. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Run short benchmarks and print the figures.")
 final class BenchCommand implements Callable<Integer> {
 

@@ -19,7 +19,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * The option values of issue 17 that hung, ate the heap or ended in an internal error, each
+ * The option values that hung, ate the heap or ended in an internal error, each
  * refused where it is parsed (exit 2, the option and its range named, nothing written), and the
  * limits that were inconsistent (a Tricept's legs, size 0, a Part 21 byte order mark).
  */

@@ -15,7 +15,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * {@code fresa toolpath} on workingsteps whose technology is missing or contradictory (issue 17):
+ * {@code fresa toolpath} on workingsteps whose technology is missing or contradictory:
  * exit 1 with each refused workingstep's name and reason, the rest written; {@code
  * --trust-cutting-speed} plans from the cutting speed; {@code --breakthrough} is bounded.
  */
