@@ -102,7 +102,7 @@ public record Vec2(double x, double y) {
     /**
      * The record's own equality (each component by {@link Double#compare}) and hash (the same
      * 31-polynomial), written out: the generated ones are bootstrapped through method handles,
-     * which spins classes at start-up.
+     * which spins classes at start-up (as {@link Vec3}'s: docs/performance.md, "Fast paths").
      */
     @Override
     public boolean equals(Object other) {

@@ -327,7 +327,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         return slowEvents().stream().filter(s -> s.isChargedOver(thresholdMs)).collect(Collectors.toList());
     }
 
-    /** The longest event recorded, in ms, GC included (the figure docs/performance.md reports). */
+    /** The longest event recorded, in ms, GC included (the figure docs/performance-log.md reports). */
     double worstMs() {
         return worstMs;
     }
