@@ -65,11 +65,24 @@ public final class Benchmarks {
     }
 
     /**
+     * How long the figures are measured: the bench's warm-ups and sheet, or a short pass that
+     * only shows every figure comes out (a test's, a few seconds of CPU; its figures mean little).
+     */
+    record Effort(long warmUpMinNs, long warmUpMaxNs, int cutSquares) {
+        static final Effort FULL = new Effort(WARM_UP_MIN_NS, WARM_UP_MAX_NS, CUT_SQUARES);
+        static final Effort QUICK = new Effort(200_000_000L, 400_000_000L, 200);
+    }
+
+    /**
      * Runs every figure.
      *
      * @param jar the Fresa jar for the whole-process figure, or null to skip it
      */
     public static Map<String, Object> run(Path jar, ProgressMonitor progress) {
+        return run(jar, progress, Effort.FULL);
+    }
+
+    static Map<String, Object> run(Path jar, ProgressMonitor progress, Effort effort) {
         Map<String, Object> figures = new LinkedHashMap<>();
         Map<String, Object> notes = new LinkedHashMap<>();
         progress.progress(0.0, "inverse kinematics, IRB-140");
@@ -83,7 +96,7 @@ public final class Benchmarks {
         figures.put("ik_cpu_us_per_point_tricept806", tri.cpuUsPerPoint());
         progress.progress(0.3, "Part 21");
         try {
-            Rate r = part21MbPerS(input(EXAMPLE2));
+            Rate r = part21MbPerS(input(EXAMPLE2), effort);
             figures.put("part21_mb_per_s", r.wall());
             figures.put("part21_cpu_mb_per_s", r.cpu());
         } catch (IOException | CamInputException e) {
@@ -92,7 +105,7 @@ public final class Benchmarks {
         }
         progress.progress(0.45, "DXF");
         try {
-            Rate r = dxfMbPerS(input(DXF));
+            Rate r = dxfMbPerS(input(DXF), effort);
             figures.put("dxf_mb_per_s", r.wall());
             figures.put("dxf_cpu_mb_per_s", r.cpu());
         } catch (IOException | CamInputException e) {
@@ -106,9 +119,9 @@ public final class Benchmarks {
             figures.put("pocket_ms_cavity02", null);
             notes.put("pocket_ms_cavity02", e.getMessage());
         }
-        progress.progress(0.7, "cutting a sheet of " + CUT_SQUARES + " square parts");
+        progress.progress(0.7, "cutting a sheet of " + effort.cutSquares() + " square parts");
         try {
-            Rate r = cutPartsPerS(CUT_SQUARES);
+            Rate r = cutPartsPerS(effort.cutSquares());
             figures.put("cut_parts_per_s", r.wall());
             figures.put("cut_cpu_parts_per_s", r.cpu());
         } catch (IOException | CamInputException | RuntimeException e) {
@@ -187,9 +200,13 @@ public final class Benchmarks {
      * @return how long the warm-up took, in ns
      */
     static long warmUp(Run run) throws IOException, CamInputException {
+        return warmUp(run, Effort.FULL);
+    }
+
+    static long warmUp(Run run, Effort effort) throws IOException, CamInputException {
         long w0 = System.nanoTime();
         List<Double> rates = new ArrayList<>();
-        while (System.nanoTime() - w0 < WARM_UP_MAX_NS) {
+        while (System.nanoTime() - w0 < effort.warmUpMaxNs()) {
             long t0 = System.nanoTime();
             long c0 = THREADS.getCurrentThreadCpuTime();
             long bytes = 0;
@@ -198,7 +215,7 @@ public final class Benchmarks {
             }
             rates.add(bytes / Math.max(1.0, THREADS.getCurrentThreadCpuTime() - c0));
             int n = rates.size();
-            if (System.nanoTime() - w0 >= WARM_UP_MIN_NS && n >= 10) {
+            if (System.nanoTime() - w0 >= effort.warmUpMinNs() && n >= 10) {
                 double last = median(rates.subList(n - 5, n).stream().mapToDouble(Double::doubleValue).toArray());
                 double before = median(rates.subList(n - 10, n - 5).stream().mapToDouble(Double::doubleValue).toArray());
                 if (last <= before * 1.05) {
@@ -210,12 +227,12 @@ public final class Benchmarks {
     }
 
     /** Reads and binds example 2 from memory, repeated for 200 ms, median of 9. */
-    static Rate part21MbPerS(byte[] data) throws IOException, CamInputException {
+    static Rate part21MbPerS(byte[] data, Effort effort) throws IOException, CamInputException {
         Run read = () -> {
             StepNcReader.read(new ByteArrayInputStream(data), "bench");
             return data.length;
         };
-        warmUp(read);
+        warmUp(read, effort);
         double[] rates = new double[9];
         double[] cpuRates = new double[9];
         for (int r = 0; r < rates.length; r++) {
@@ -232,11 +249,11 @@ public final class Benchmarks {
     }
 
     /** Reads the 10 052-line corpus drawing and chains it, from memory, median of 7. */
-    static Rate dxfMbPerS(byte[] data) throws IOException, CamInputException {
+    static Rate dxfMbPerS(byte[] data, Effort effort) throws IOException, CamInputException {
         warmUp(() -> {
             Chainer.chain(DxfReader.read(data, "bench", DxfReadOptions.DEFAULT).curves(), 0.001);
             return data.length;
-        });
+        }, effort);
         double[] rates = new double[7];
         double[] cpuRates = new double[7];
         for (int r = 0; r < rates.length; r++) {

@@ -34,6 +34,21 @@ class BenchmarksTest {
     }
 
     @Test
+    void everyFigureInThisJvmComesOutOfTheJarsInputs() {
+        // a short pass (a few seconds of CPU): each in-JVM figure is a number, none missing with a
+        // note, whatever the working folder holds; the whole-process figure needs the jar
+        java.util.Map<String, Object> figures = Benchmarks.run(null, ProgressMonitor.NONE, Benchmarks.Effort.QUICK);
+        for (String figure : Benchmarks.GOALS.keySet()) {
+            if (!figure.equals("example2_irb140_process_s")) {
+                assertTrue(figures.get(figure) instanceof Double d && d > 0, figure + ": " + figures.get(figure));
+            }
+        }
+        @SuppressWarnings("unchecked")
+        java.util.Map<String, Object> notes = (java.util.Map<String, Object>) figures.get("notes");
+        assertEquals(java.util.Map.of("example2_irb140_process_s", "not run from the jar"), notes);
+    }
+
+    @Test
     void theMedianOfAnEvenCountIsTheMeanOfTheMiddleTwo() {
         assertEquals(2.5, Benchmarks.median(new double[] {4, 1, 3, 2}));
         assertEquals(3, Benchmarks.median(new double[] {5, 3, 1}));
