@@ -413,20 +413,21 @@ public final class SoleService {
                     m.put(foot.id() + "_part_zero_mm", List.of(zp.get().machineMm().x(), zp.get().machineMm().y()));
                 }
                 String name = "tread-" + g.name() + "-" + foot.id();
-                writeChecked(out, name + ".ngc", tp, p, ProgramChecks.soleTread(s), cavityProblems);
+                String ext = "." + p.post().fileExtension();
+                writeChecked(out, name + ext, tp, p, ProgramChecks.soleTread(s), cavityProblems);
                 m.put(foot.id() + "_moves", tp.moveCount());
                 java.util.Optional<Toolpath> cavity;
                 try {
                     cavity = cavityProgram(p, g, foot);
                 } catch (CamInputException e) {
                     // the tread is still worth writing: report the cavity and carry on
-                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ".ngc not written: " + e.problem());
+                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ext + " not written: " + e.problem());
                     cavity = java.util.Optional.empty();
                 }
                 if (cavity.isPresent()) {
                     String cname = "cavity-" + g.name() + "-" + foot.id();
                     Toolpath ct = placed(p, g, foot, cavity.get());
-                    writeChecked(out, cname + ".ngc", ct, p, ProgramChecks.soleCavity(s), cavityProblems);
+                    writeChecked(out, cname + ext, ct, p, ProgramChecks.soleCavity(s), cavityProblems);
                     m.put(foot.id() + "_cavity_moves", ct.moveCount());
                 }
                 Contour outline = outline(p, g, foot);
@@ -480,7 +481,7 @@ public final class SoleService {
     private static void writeChecked(OutputFolder out, String file, Toolpath tp, SolePlan p,
             org.fresa.check.Limits limits, List<String> problems) throws IOException {
         java.io.StringWriter w = new java.io.StringWriter();
-        p.post().write(tp, file.replaceFirst("\\.ngc$", ""), w);
+        p.post().write(tp, file.replaceFirst("\\.[a-z]+$", ""), w);
         try {
             ProgramChecks.require(file, w.toString(), ProgramChecks.dialect(p.post().name()), limits);
             out.writeString(file, w.toString());

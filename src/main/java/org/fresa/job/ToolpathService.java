@@ -91,9 +91,10 @@ public final class ToolpathService {
         Map<String, Object> summary = summary(program, plan, post);
         boolean refused = false;
         try {
-            ProgramChecks.require("program.ngc", nc.toString(), ProgramChecks.dialect(post.name()),
+            String programFile = "program." + post.fileExtension();
+            ProgramChecks.require(programFile, nc.toString(), ProgramChecks.dialect(post.name()),
                     ProgramChecks.stepnc(program, plan, choices));
-            out.writeString("program.ngc", nc.toString());
+            out.writeString(programFile, nc.toString());
         } catch (ProgramChecks.RefusedProgram e) {
             problems.add(e.getMessage());
             summary.put("program_refused", e.failure().message());
