@@ -58,7 +58,7 @@ final class PocketCommand implements Callable<Integer> {
     double finishFeedMmPerMin = DEFAULTS.finishFeedMmPerMin();
 
     @Option(names = "--post", paramLabel = "NAME",
-            description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d; default ${DEFAULT-VALUE}")
+            description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d, apt (APT / CL data); default ${DEFAULT-VALUE}")
     PocketPost post = DEFAULTS.post();
 
     @Option(names = "--direction", paramLabel = "climb|conventional",
