@@ -45,8 +45,9 @@ import org.fresa.sole.TreadTool;
  * foot, and writes per size {@code tread-NN-right.ngc}, {@code tread-NN-left.ngc},
  * {@code size-NN.csv} (the graded outline, x,y), {@code sole-NN.png} (both feet: outline and
  * tread) and, when the job names a cavity tool, {@code cavity-NN-right.ngc} and
- * {@code cavity-NN-left.ngc} pocketed by the pocket module; without one the outcome says so and
- * the status is 1, with every tread file written.
+ * {@code cavity-NN-left.ngc} pocketed by the pocket module (with the post's extension: {@code .apt}
+ * for {@code post="apt"}); without one the outcome says so and the status is 1, with every tread
+ * file written.
  */
 public final class SoleService {
 

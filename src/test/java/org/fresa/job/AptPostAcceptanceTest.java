@@ -175,15 +175,19 @@ class AptPostAcceptanceTest {
     }
 
     @Test
-    void theJobRunnerNamesThePocketProgramByThePost(@TempDir Path dir) throws Exception {
-        Job job = JobXml.read(Path.of("samples/jobs/pocket-cavity01.xml"));
-        JobSettings.PocketSettings s = job.pocket().orElseThrow();
-        JobSettings.PocketSettings apt = PocketServiceTest.settings("cavity01", "apt");
-        assertEquals(s.toolDiameterMm(), apt.toolDiameterMm());
-        TaskOutcome o = JobRunner.run(job.withPocket(apt.withDirection(apt.direction())), new OutputFolder(dir),
-                ProgressMonitor.NONE);
+    void aJobWithPostAptWritesPocketApt(@TempDir Path dir) throws Exception {
+        String xml = Files.readString(Path.of("samples/jobs/pocket-cavity01.xml"));
+        Path contour = Path.of("samples/pocket/cavity01.dad").toAbsolutePath();
+        assertTrue(xml.contains("contour=\"../pocket/cavity01.dad\"") && xml.contains("post=\"7m-compat\""));
+        Path job = dir.resolve("cavity01-apt.xml");
+        Files.writeString(job, xml.replace("contour=\"../pocket/cavity01.dad\"", "contour=\"" + contour + "\"")
+                .replace("post=\"7m-compat\"", "post=\"apt\""));
+        Path out = dir.resolve("out");
+        TaskOutcome o = JobRunner.run(JobXml.read(job), new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
-        assertTrue(Files.readString(dir.resolve("pocket.apt")).startsWith("PARTNO cavity01.dad\nUNITS/MM\n"));
+        assertEquals("apt", o.summary().get("post"));
+        assertTrue(Files.readString(out.resolve("pocket.apt")).startsWith("PARTNO cavity01.dad\nUNITS/MM\n"));
+        assertTrue(!Files.exists(out.resolve("pocket.ngc")) && !Files.exists(out.resolve("pocket.nc")));
     }
 
     @Test
