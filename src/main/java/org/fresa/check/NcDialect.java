@@ -22,7 +22,9 @@ public enum NcDialect {
     /** Sinumerik 840D: {@code TURN=} extra turns. */
     SINUMERIK_840D("840d", 1, "TURN"),
     /** The thesis's Sinumerik 7M: integer micrometres; G54 with coordinates sets the zero. */
-    SINUMERIK_7M("7m", 0.001, null);
+    SINUMERIK_7M("7m", 0.001, null),
+    /** APT / CL data: statements, not address words; read by {@link AptStatements}. */
+    APT("apt", 1, null);
 
     private final String id;
     private final double mmPerUnit;
@@ -54,7 +56,7 @@ public enum NcDialect {
     }
 
     /**
-     * The dialect of a post's name: linuxcnc, iso, fanuc, 840d, 7m, 7m-compat (the 7M dialect),
+     * The dialect of a post's name: linuxcnc, iso, fanuc, 840d, 7m, 7m-compat (the 7M dialect), apt,
      * ignoring case.
      */
     public static Optional<NcDialect> byPost(String post) {

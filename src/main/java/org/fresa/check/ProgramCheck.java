@@ -51,6 +51,9 @@ public final class ProgramCheck {
 
     /** Checks an NC program's text in its dialect against the limits. */
     public static Verdict of(String program, NcDialect dialect, Limits limits) {
+        if (dialect == NcDialect.APT) {
+            return AptStatements.check(program, limits);
+        }
         Machine m = new Machine(dialect, limits);
         // block by block, as the lines of Words.blocks: a long program is never held as blocks all at once
         int count = 0;
@@ -155,6 +158,38 @@ public final class ProgramCheck {
         return new Verdict(Optional.empty(), motions.size());
     }
 
+    /**
+     * The tool axis a comment that starts a section states: the one its "tool axis x y z is not
+     * +Z" names, otherwise +Z.
+     */
+    static Vec3 axisOfComment(String comment) {
+        java.util.regex.Matcher mt = AXIS_COMMENT.matcher(comment);
+        if (mt.find()) {
+            Vec3 v = new Vec3(Double.parseDouble(mt.group(1)), Double.parseDouble(mt.group(2)),
+                    Double.parseDouble(mt.group(3)));
+            return v.norm() > 0.5 ? v.times(1 / v.norm()) : Vec3.UNIT_Z;
+        }
+        return Vec3.UNIT_Z;
+    }
+
+    /**
+     * Remembers the hole a tool that may plunge leaves when it goes straight down with its
+     * spindle on, along the section's tool axis: a later cutter may enter it ({@link Pilot}).
+     */
+    static void madeHole(Step s, Limits limits, List<Pilot> drilled) {
+        ToolLimits t = limits.tool(s.tool());
+        List<Vec3> p = s.path();
+        if (!s.feedMove() || !s.cuttingOn() || !t.plunge() || !(t.radiusMm() > 0) || p.size() != 2) {
+            return;
+        }
+        Vec3 d = p.get(1).minus(p.get(0));
+        double along = d.dot(s.axis());
+        if (along < 0 && d.minus(s.axis().times(along)).norm() <= s.dialect().quantumMm()
+                && Double.isFinite(p.get(1).x() + p.get(1).y() + p.get(1).z())) {
+            drilled.add(new Pilot(p.get(1), s.axis(), t.radiusMm()));
+        }
+    }
+
     /** The control's state while the program runs. */
     private static final class Machine {
         private final NcDialect dialect;
@@ -188,14 +223,7 @@ public final class ProgramCheck {
             if (!(t.startsWith("(") || t.startsWith(";"))) {
                 return;
             }
-            java.util.regex.Matcher mt = AXIS_COMMENT.matcher(t);
-            if (mt.find()) {
-                Vec3 v = new Vec3(Double.parseDouble(mt.group(1)), Double.parseDouble(mt.group(2)),
-                        Double.parseDouble(mt.group(3)));
-                axis = v.norm() > 0.5 ? v.times(1 / v.norm()) : Vec3.UNIT_Z;
-            } else {
-                axis = Vec3.UNIT_Z;
-            }
+            axis = axisOfComment(t);
         }
 
         Step execute(Words.Block b) {
@@ -266,7 +294,7 @@ public final class ProgramCheck {
             }
             Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis,
                     drilled);
-            madeHole(step);
+            madeHole(step, limits, drilled);
             // a tool change and the program's end stop the spindle after the block
             if (b.has("M", 6)) {
                 tool = selected;
@@ -276,24 +304,6 @@ public final class ProgramCheck {
                 on = false;
             }
             return step;
-        }
-
-        /**
-         * Remembers the hole a tool that may plunge leaves when it goes straight down with
-         * its spindle on, along the section's tool axis: a later cutter may enter it ({@link Pilot}).
-         */
-        private void madeHole(Step s) {
-            ToolLimits t = limits.tool(s.tool());
-            List<Vec3> p = s.path();
-            if (!s.feedMove() || !s.cuttingOn() || !t.plunge() || !(t.radiusMm() > 0) || p.size() != 2) {
-                return;
-            }
-            Vec3 d = p.get(1).minus(p.get(0));
-            double along = d.dot(s.axis());
-            if (along < 0 && d.minus(s.axis().times(along)).norm() <= dialect.quantumMm()
-                    && Double.isFinite(p.get(1).x() + p.get(1).y() + p.get(1).z())) {
-                drilled.add(new Pilot(p.get(1), s.axis(), t.radiusMm()));
-            }
         }
 
         private void switchCutting(Words.Block b) {

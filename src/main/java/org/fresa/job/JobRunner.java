@@ -65,8 +65,7 @@ public final class JobRunner {
             case POCKET: {
                 JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
                 out.create();
-                String ext = s.post().sevenM() ? ".nc" : ".ngc";
-                return PocketService.run(s, out.resolve("pocket" + ext), progress);
+                return PocketService.run(s, out.resolve("pocket." + s.post().fileExtension()), progress);
             }
             case CUT:
                 return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);

@@ -6,7 +6,7 @@ import org.fresa.post.MillingPost;
 /**
  * The posts the pocket module writes: the thesis's Sinumerik 7M dialect, as printed
  * ({@code 7m-compat}, the thesis's pass rules and programs character for character) or with its
- * defects corrected ({@code 7m}), then the G-code posts of {@link MillingPost}.
+ * defects corrected ({@code 7m}), then the posts of {@link MillingPost} (G-code and APT).
  */
 public enum PocketPost {
     SINUMERIK_7M_COMPAT("7m-compat", null),
@@ -14,7 +14,8 @@ public enum PocketPost {
     LINUXCNC("linuxcnc", MillingPost.LINUXCNC),
     ISO("iso", MillingPost.ISO),
     FANUC("fanuc", MillingPost.FANUC),
-    SIEMENS_840D("840d", MillingPost.SIEMENS_840D);
+    SIEMENS_840D("840d", MillingPost.SIEMENS_840D),
+    APT("apt", MillingPost.APT);
 
     private final String word;
     private final MillingPost gcode;
@@ -32,6 +33,11 @@ public enum PocketPost {
     /** The G-code post, empty for the 7M dialect. */
     public Optional<MillingPost> gcode() {
         return Optional.ofNullable(gcode);
+    }
+
+    /** The extension of the program file: {@code nc} for the 7M dialect, otherwise the post's. */
+    public String fileExtension() {
+        return gcode == null ? "nc" : gcode.ncPost().fileExtension();
     }
 
     /** Whether this is the thesis's 7M dialect (no islands, micrometre coordinates). */

@@ -210,6 +210,28 @@ public final class PocketService {
         }
     }
 
+    /**
+     * Runs the pocket job as {@link #run(PocketSettings, Path, ProgressMonitor)} does, then, when the
+     * program is written, the thesis's technology printout ({@link PocketReport}) to {@code report};
+     * the summary names both ({@code out}, {@code report}).
+     */
+    public static TaskOutcome run(PocketSettings s, Path outFile, java.util.Optional<Path> report,
+            ProgressMonitor progress) throws CamInputException, IOException {
+        if (report.isPresent() && report.get().toAbsolutePath().normalize().equals(outFile.toAbsolutePath().normalize())) {
+            throw new CamInputException("--report", report.get() + " is the program's own file (--out)");
+        }
+        TaskOutcome o = run(s, outFile, progress);
+        if (report.isEmpty() || o.exitStatus() != 0) {
+            return o;
+        }
+        AtomicFiles.writeString(report.get(), PocketReport.of(s));
+        Map<String, Object> summary = new LinkedHashMap<>(o.summary());
+        summary.put("report", report.get().toString());
+        List<Path> files = new ArrayList<>(o.files());
+        files.add(report.get());
+        return new TaskOutcome(o.exitStatus(), o.problems(), summary, files);
+    }
+
     /** Runs the pocket job and writes the NC program to outFile. */
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {

@@ -45,8 +45,9 @@ import org.fresa.sole.TreadTool;
  * foot, and writes per size {@code tread-NN-right.ngc}, {@code tread-NN-left.ngc},
  * {@code size-NN.csv} (the graded outline, x,y), {@code sole-NN.png} (both feet: outline and
  * tread) and, when the job names a cavity tool, {@code cavity-NN-right.ngc} and
- * {@code cavity-NN-left.ngc} pocketed by the pocket module; without one the outcome says so and
- * the status is 1, with every tread file written.
+ * {@code cavity-NN-left.ngc} pocketed by the pocket module (with the post's extension: {@code .apt}
+ * for {@code post="apt"}); without one the outcome says so and the status is 1, with every tread
+ * file written.
  */
 public final class SoleService {
 
@@ -413,20 +414,21 @@ public final class SoleService {
                     m.put(foot.id() + "_part_zero_mm", List.of(zp.get().machineMm().x(), zp.get().machineMm().y()));
                 }
                 String name = "tread-" + g.name() + "-" + foot.id();
-                writeChecked(out, name + ".ngc", tp, p, ProgramChecks.soleTread(s), cavityProblems);
+                String ext = "." + p.post().fileExtension();
+                writeChecked(out, name + ext, tp, p, ProgramChecks.soleTread(s), cavityProblems);
                 m.put(foot.id() + "_moves", tp.moveCount());
                 java.util.Optional<Toolpath> cavity;
                 try {
                     cavity = cavityProgram(p, g, foot);
                 } catch (CamInputException e) {
                     // the tread is still worth writing: report the cavity and carry on
-                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ".ngc not written: " + e.problem());
+                    cavityProblems.add("cavity-" + g.name() + "-" + foot.id() + ext + " not written: " + e.problem());
                     cavity = java.util.Optional.empty();
                 }
                 if (cavity.isPresent()) {
                     String cname = "cavity-" + g.name() + "-" + foot.id();
                     Toolpath ct = placed(p, g, foot, cavity.get());
-                    writeChecked(out, cname + ".ngc", ct, p, ProgramChecks.soleCavity(s), cavityProblems);
+                    writeChecked(out, cname + ext, ct, p, ProgramChecks.soleCavity(s), cavityProblems);
                     m.put(foot.id() + "_cavity_moves", ct.moveCount());
                 }
                 Contour outline = outline(p, g, foot);
@@ -480,7 +482,7 @@ public final class SoleService {
     private static void writeChecked(OutputFolder out, String file, Toolpath tp, SolePlan p,
             org.fresa.check.Limits limits, List<String> problems) throws IOException {
         java.io.StringWriter w = new java.io.StringWriter();
-        p.post().write(tp, file.replaceFirst("\\.ngc$", ""), w);
+        p.post().write(tp, file.replaceFirst("\\.[a-z]+$", ""), w);
         try {
             ProgramChecks.require(file, w.toString(), ProgramChecks.dialect(p.post().name()), limits);
             out.writeString(file, w.toString());

@@ -23,7 +23,7 @@ import org.fresa.toolpath.ToolpathPlanner;
 /**
  * STEP-NC toolpaths as a task ({@code fresa toolpath}, {@code fresa run} task toolpath): reads
  * the file, plans every workingstep in workplan order and writes {@code toolpath.csv},
- * {@code program.ngc} (the chosen post) and {@code summary.json} (spec/cli.md). Workingsteps that
+ * {@code program.ngc} (the chosen post; {@code program.apt} for {@code apt}) and {@code summary.json} (spec/cli.md). Workingsteps that
  * cannot be planned are reported and the rest written, with exit status 1.
  *
  * <p>Cycle time: feed moves at their feed, rapids at {@link #RAPID_MM_PER_MIN}; no acceleration.
@@ -91,9 +91,10 @@ public final class ToolpathService {
         Map<String, Object> summary = summary(program, plan, post);
         boolean refused = false;
         try {
-            ProgramChecks.require("program.ngc", nc.toString(), ProgramChecks.dialect(post.name()),
+            String programFile = "program." + post.fileExtension();
+            ProgramChecks.require(programFile, nc.toString(), ProgramChecks.dialect(post.name()),
                     ProgramChecks.stepnc(program, plan, choices));
-            out.writeString("program.ngc", nc.toString());
+            out.writeString(programFile, nc.toString());
         } catch (ProgramChecks.RefusedProgram e) {
             problems.add(e.getMessage());
             summary.put("program_refused", e.failure().message());

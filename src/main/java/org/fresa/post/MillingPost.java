@@ -4,10 +4,10 @@ import java.util.Locale;
 
 /**
  * The machine-tool posts of {@link NcPosts} as a setting: {@code linuxcnc} (the default),
- * {@code iso}, {@code fanuc}, {@code 840d}.
+ * {@code iso}, {@code fanuc}, {@code 840d}, and the APT / CL-data post {@code apt}.
  */
 public enum MillingPost {
-    LINUXCNC("linuxcnc"), ISO("iso"), FANUC("fanuc"), SIEMENS_840D("840d");
+    LINUXCNC("linuxcnc"), ISO("iso"), FANUC("fanuc"), SIEMENS_840D("840d"), APT("apt");
 
     private final String word;
 

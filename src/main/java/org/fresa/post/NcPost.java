@@ -23,4 +23,9 @@ public interface NcPost {
      * @param programName a name for the program header (sanitised by the post as its dialect needs)
      */
     void write(Toolpath path, String programName, Writer out) throws IOException;
+
+    /** The extension of the program files it writes, without the dot ({@code program.ngc}, {@code program.apt}). */
+    default String fileExtension() {
+        return "ngc";
+    }
 }

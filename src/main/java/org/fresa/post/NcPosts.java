@@ -6,9 +6,9 @@ import java.util.Optional;
 
 /**
  * The machine-tool posts by name: {@code linuxcnc} (the default), {@code iso}, {@code fanuc},
- * {@code 840d}. Names are matched ignoring case. Every post here writes arcs as G02/G03 in
- * G17/G18/G19 and replaces arcs in other planes by chords within
- * {@link #CHORD_TOLERANCE_MM}.
+ * {@code 840d}, {@code apt}. Names are matched ignoring case. Every G-code post here writes arcs
+ * as G02/G03 in G17/G18/G19 and replaces arcs in other planes by chords within
+ * {@link #CHORD_TOLERANCE_MM}; the APT post ({@link AptPost}) writes every arc as a CIRCLE.
  */
 public final class NcPosts {
 
@@ -22,7 +22,8 @@ public final class NcPosts {
             new LinuxCncPost(CHORD_TOLERANCE_MM),
             new IsoPost(CHORD_TOLERANCE_MM),
             new FanucPost(CHORD_TOLERANCE_MM),
-            new Sinumerik840dPost(CHORD_TOLERANCE_MM));
+            new Sinumerik840dPost(CHORD_TOLERANCE_MM),
+            new AptPost());
 
     private NcPosts() {
     }

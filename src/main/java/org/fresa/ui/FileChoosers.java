@@ -21,7 +21,7 @@ final class FileChoosers {
         DXF("DXF drawings (*.dxf)", "dxf"),
         ROBOT("Robot files (*.xml)", "xml"),
         TEXT("Text files (*.txt)", "txt"),
-        NC_PROGRAM("NC programs (*.ngc, *.nc, *.mpf, *.txt)", "ngc", "nc", "mpf", "txt"),
+        NC_PROGRAM("NC programs (*.ngc, *.nc, *.mpf, *.apt, *.txt)", "ngc", "nc", "mpf", "apt", "txt"),
         PLOT("PNG image (*.png)", "png"),
         FOLDER(null);
 

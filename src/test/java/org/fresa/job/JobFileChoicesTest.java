@@ -36,7 +36,7 @@ class JobFileChoicesTest {
                 () -> assertEquals(job.toString(), e.source()),
                 () -> assertEquals(7, e.line().getAsInt()),
                 () -> assertEquals("post: unknown value '7m-compta': expected one of 7m-compat, 7m, linuxcnc, iso, "
-                        + "fanuc, 840d", e.problem()));
+                        + "fanuc, 840d, apt", e.problem()));
     }
 
     @Test

@@ -206,7 +206,7 @@ class PocketServiceTest {
     @Test
     void anUnknownPostIsBadUsage() {
         CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Pocket.POST.check("heidenhain"));
-        assertTrue(e.getMessage().contains("7m-compat, 7m, linuxcnc, iso, fanuc, 840d"), e.getMessage());
+        assertTrue(e.getMessage().contains("7m-compat, 7m, linuxcnc, iso, fanuc, 840d, apt"), e.getMessage());
     }
 
     static PocketSettings islandSettings(Path contour, String post) {

@@ -165,7 +165,7 @@ class NcPostsTest {
         assertEquals("840d", NcPosts.byName("840D").orElseThrow().name());
         assertEquals("linuxcnc", NcPosts.byName(" LinuxCNC ").orElseThrow().name());
         assertTrue(NcPosts.byName("heidenhain").isEmpty());
-        assertEquals(List.of("linuxcnc", "iso", "fanuc", "840d"), NcPosts.names());
+        assertEquals(List.of("linuxcnc", "iso", "fanuc", "840d", "apt"), NcPosts.names());
         assertEquals("linuxcnc", NcPosts.defaultPost().name());
     }
 

@@ -14,7 +14,10 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--json]}. */
+/**
+ * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
+ * [--thesis-name NAME] [--json]}.
+ */
 @Command(name = "pocket", mixinStandardHelpOptions = true, sortOptions = false,
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
 final class PocketCommand implements Callable<Integer> {
@@ -58,7 +61,7 @@ final class PocketCommand implements Callable<Integer> {
     double finishFeedMmPerMin = DEFAULTS.finishFeedMmPerMin();
 
     @Option(names = "--post", paramLabel = "NAME",
-            description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d; default ${DEFAULT-VALUE}")
+            description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d, apt (APT / CL data); default ${DEFAULT-VALUE}")
     PocketPost post = DEFAULTS.post();
 
     @Option(names = "--direction", paramLabel = "climb|conventional",
@@ -79,6 +82,15 @@ final class PocketCommand implements Callable<Integer> {
     @Option(names = "--centre-cutting", description = "the cutter cuts at its centre (may plunge)")
     boolean centreCutting;
 
+    @Option(names = "--report", paramLabel = "FILE",
+            description = "also write the thesis's technology printout (GOTA.BAS's LPRINT block) to FILE")
+    java.nio.file.Path report;
+
+    @Option(names = "--thesis-name", paramLabel = "NAME",
+            description = "write the program beside --out as N01NAME.DAD, the thesis's output name (NAME: 1 to 5"
+                    + " letters or digits)")
+    String thesisName;
+
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;
 
@@ -91,7 +103,24 @@ final class PocketCommand implements Callable<Integer> {
                     Pocket.MAX_DEPTH.check(maxDepthMm), Pocket.SPINDLE.check(spindleRpm), Pocket.FEED.check(feedMmPerMin),
                     Pocket.FINISH_FEED.check(finishFeedMmPerMin), post, direction, entry,
                     Pocket.ENTRY_ANGLE.check(entryAngleDeg), centreCutting);
-            return PocketService.run(settings, CliSupport.outFile(out), progress);
+            java.nio.file.Path file = CliSupport.outFile(out);
+            String thesisFile = null;
+            if (thesisName != null) {
+                thesisFile = org.fresa.job.PocketReport.thesisFileName(thesisName);
+                java.nio.file.Path folder = file.toAbsolutePath().getParent();
+                file = CliSupport.outFile(folder.resolve(thesisFile));
+            }
+            java.util.Optional<java.nio.file.Path> printout = java.util.Optional.ofNullable(report);
+            if (printout.isPresent()) {
+                org.fresa.job.AtomicFiles.requireWritable(printout.get(), "--report");
+            }
+            org.fresa.job.TaskOutcome o = PocketService.run(settings, file, printout, progress);
+            if (thesisFile == null || o.exitStatus() != 0) {
+                return o;
+            }
+            java.util.Map<String, Object> summary = new java.util.LinkedHashMap<>(o.summary());
+            summary.put("thesis_name", thesisFile);
+            return new org.fresa.job.TaskOutcome(o.exitStatus(), o.problems(), summary, o.files());
         });
     }
 }

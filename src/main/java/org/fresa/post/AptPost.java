@@ -1,0 +1,195 @@
+package org.fresa.post;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.Toolpath;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * APT / CL data (cutter-location source, ISO 4343's statements as the thesis's APT macros write
+ * them): {@code PARTNO}, {@code UNITS/MM}, per tool {@code LOADTL/n} and {@code CUTTER/d},
+ * {@code SPINDL/rpm,CLW|CCLW} and {@code SPINDL/OFF}, {@code FEDRAT/f,MMPM}, {@code RAPID} before a
+ * rapid {@code GOTO/x,y,z}, {@code DELAY/s}, {@code COOLNT/OFF} and {@code FINI} at the end.
+ *
+ * <p>Arcs stay arcs, in any plane: {@code CIRCLE/xc,yc,zc,i,j,k,r} followed by the {@code GOTO} of
+ * the arc's end, the CL-data convention. The tool goes counter-clockwise about the axis (i,j,k)
+ * (right hand), so a clockwise arc is written with its normal reversed; the centre is given in the
+ * plane through the arc's start (a helix rises from there to the end's height); an end that
+ * coincides with the start is a full turn, and each extra turn of a helix is its own
+ * {@code CIRCLE}/{@code GOTO} pair, as the posts without a turn word write it.
+ *
+ * <p>Numbers as the G-code posts write them, so that an APT and a G-code program of the same
+ * toolpath describe the same motions to the digit: coordinates with three decimals, the arc's
+ * centre as the written start plus the centre offset rounded as a G-code post rounds I/J/K, feeds
+ * with one decimal, spindle speeds as integers. {@code Locale.ROOT} throughout.
+ */
+final class AptPost implements NcPost {
+
+    /** The longest part name PARTNO takes (the card's 72 columns less the word). */
+    static final int PARTNO_CHARS = 66;
+
+    @Override
+    public String name() {
+        return "apt";
+    }
+
+    @Override
+    public String description() {
+        return "APT / CL data: GOTO/, arcs as CIRCLE/ + GOTO/ in any plane, FEDRAT/, SPINDL/, LOADTL/, FINI";
+    }
+
+    @Override
+    public String fileExtension() {
+        return "apt";
+    }
+
+    @Override
+    public void write(Toolpath path, String programName, Writer out) throws IOException {
+        List<String> lines = new ArrayList<>();
+        String title = plain(programName);
+        lines.add("PARTNO " + (title.length() > PARTNO_CHARS ? title.substring(0, PARTNO_CHARS) : title));
+        lines.add("UNITS/MM");
+        int tool = 0;
+        long rpm = -1;
+        boolean clockwise = true;
+        double feed = -1;
+        for (ToolpathSection s : path.sections()) {
+            lines.add("$$ " + plain(s.label()) + " tool " + s.toolNumber() + " D" + num(s.toolDiameterMm()));
+            if (s.toolAxis().distance(Vec3.UNIT_Z) > 1e-9) {
+                lines.add("$$ tool axis " + num(s.toolAxis().x()) + " " + num(s.toolAxis().y()) + " "
+                        + num(s.toolAxis().z()) + " is not +Z: needs the part turned or a spindle along this axis");
+            }
+            if (s.toolNumber() != tool) {
+                lines.add("SPINDL/OFF");
+                lines.add("LOADTL/" + s.toolNumber());
+                lines.add("CUTTER/" + num(s.toolDiameterMm()));
+                tool = s.toolNumber();
+                rpm = -1;
+                feed = -1;
+            }
+            long sRpm = Math.round(s.spindleRpm());
+            if (sRpm > 0 && (sRpm != rpm || !clockwise)) {
+                lines.add(spindle(sRpm, true));
+                rpm = sRpm;
+                clockwise = true;
+            }
+            lines.add("RAPID");
+            lines.add("GOTO/" + xyz(s.start()));
+            Vec3 at = s.start();
+            for (Move m : s.moves()) {
+                if (m instanceof Move.Rapid r) {
+                    lines.add("RAPID");
+                    lines.add("GOTO/" + xyz(r.end()));
+                } else if (m instanceof Move.Linear l) {
+                    feed = feed(lines, l.feedMmPerMin(), feed);
+                    lines.add("GOTO/" + xyz(l.end()));
+                } else if (m instanceof Move.Circular c) {
+                    feed = feed(lines, c.feedMmPerMin(), feed);
+                    arc(lines, at, c);
+                } else if (m instanceof Move.Dwell d) {
+                    lines.add("DELAY/" + String.format(Locale.ROOT, "%.3f", d.seconds()));
+                } else if (m instanceof Move.SpindleStop) {
+                    lines.add("SPINDL/OFF");
+                    rpm = -1;
+                } else if (m instanceof Move.SpindleStart on) {
+                    rpm = Math.round(on.rpm());
+                    clockwise = on.clockwise();
+                    lines.add(spindle(rpm, clockwise));
+                } else {
+                    throw new IllegalStateException("no APT statement for " + m);
+                }
+                at = m.end();
+            }
+        }
+        lines.add("SPINDL/OFF");
+        lines.add("COOLNT/OFF");
+        lines.add("FINI");
+        out.write(String.join("\n", lines) + "\n");
+        out.flush();
+    }
+
+    private static String spindle(long rpm, boolean clockwise) {
+        return "SPINDL/" + rpm + (clockwise ? ",CLW" : ",CCLW");
+    }
+
+    private static double feed(List<String> lines, double f, double current) {
+        if (f != current) {
+            lines.add("FEDRAT/" + String.format(Locale.ROOT, "%.1f", f) + ",MMPM");
+        }
+        return f;
+    }
+
+    /** One CIRCLE/GOTO pair per turn: the extra full turns first (a helix rising in proportion), then the end. */
+    private static void arc(List<String> lines, Vec3 start, Move.Circular c) {
+        Vec3 n = c.ccw() ? c.normal() : c.normal().negated();
+        ArcGeometry geo = ArcGeometry.of(start, c);
+        Vec3 from = start;
+        if (c.turns() > 0) {
+            double perTurn = 2 * Math.PI / Math.abs(geo.sweepRad());
+            for (int k = 1; k <= c.turns(); k++) {
+                Vec3 q = start.plus(c.normal().times(geo.riseMm() * perTurn * k));
+                lines.add(circle(from, c.center(), c.normal(), n));
+                lines.add("GOTO/" + xyz(q));
+                from = q;
+            }
+        }
+        lines.add(circle(from, c.center(), c.normal(), n));
+        lines.add("GOTO/" + xyz(c.end()));
+    }
+
+    /**
+     * The CIRCLE statement of an arc starting at {@code from}: the centre in the plane through the
+     * start, written as the rounded start plus the rounded offset (the centre a G-code post's I/J/K
+     * give), the radius from that centre to the written start.
+     */
+    private static String circle(Vec3 from, Vec3 center, Vec3 planeNormal, Vec3 axis) {
+        Vec3 onPlane = center.plus(planeNormal.times(from.minus(center).dot(planeNormal)));
+        Vec3 off = onPlane.minus(from);
+        double cx = round(from.x()) + round(off.x());
+        double cy = round(from.y()) + round(off.y());
+        double cz = round(from.z()) + round(off.z());
+        Vec3 c = new Vec3(cx, cy, cz);
+        Vec3 s = new Vec3(round(from.x()), round(from.y()), round(from.z()));
+        Vec3 radial = s.minus(c);
+        radial = radial.minus(planeNormal.times(radial.dot(planeNormal)));
+        return "CIRCLE/" + num(cx) + "," + num(cy) + "," + num(cz) + "," + unit(axis.x()) + "," + unit(axis.y())
+                + "," + unit(axis.z()) + "," + num(radial.norm());
+    }
+
+    private static double round(double v) {
+        return Double.parseDouble(num(v));
+    }
+
+    private static String xyz(Vec3 v) {
+        return num(v.x()) + "," + num(v.y()) + "," + num(v.z());
+    }
+
+    /** A coordinate with three decimals, never "-0.000". */
+    static String num(double v) {
+        String s = String.format(Locale.ROOT, "%.3f", v);
+        if (s.startsWith("-") && s.chars().skip(1).allMatch(ch -> ch == '0' || ch == '.')) {
+            return s.substring(1);
+        }
+        return s;
+    }
+
+    /** A component of a unit vector: six decimals, trailing zeros dropped ("0", "1", "-0.707107"). */
+    static String unit(double v) {
+        String s = String.format(Locale.ROOT, "%.6f", v).replaceFirst("\\.?0+$", "");
+        return s.equals("-0") ? "0" : s;
+    }
+
+    /** Text safe in a PARTNO or a $$ comment: printable ASCII, no $ (the continuation mark). */
+    static String plain(String text) {
+        StringBuilder sb = new StringBuilder();
+        for (char ch : text.toCharArray()) {
+            sb.append(ch >= 32 && ch < 127 && ch != '$' ? ch : '_');
+        }
+        return sb.toString();
+    }
+}
