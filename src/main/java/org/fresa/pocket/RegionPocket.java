@@ -364,12 +364,12 @@ public final class RegionPocket {
 
     private static Toolpath toolpath(List<Cut> order, Level finishing, PocketTechnology t, EntryRule entry)
             throws ToolTooLargeException {
-        List<Move> moves = new ArrayList<>();
         double safe = t.zTopMm() + CLEARANCE_MM;
         Vec2 s0 = order.get(0).loop().get(0).start();
+        PocketMoves moves = new PocketMoves(new Vec3(s0.x(), s0.y(), safe));
         for (int j = 1; j <= t.depthPasses(); j++) {
             double z = t.zTopMm() - j * t.depthStepMm();
-            double layerTop = z + t.depthStepMm();
+            double above = PocketToolpath.entryTop(t, j);
             Vec2 cursor = null;
             for (Cut cut : order) {
                 Contour loop = cut.loop();
@@ -378,15 +378,15 @@ public final class RegionPocket {
                 if (cursor != null && feedLink(cursor, s, finishing, t.toolDiameterMm())) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
-                    Vec2 from = cursor == null ? s : cursor;
-                    moves.add(new Move.Rapid(at(from, safe)));
+                    // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
+                    moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
-                    // down at rapid to 1 mm above the floor cleared at the layer above, then no straight feed down
-                    moves.add(new Move.Rapid(at(s, layerTop + 1)));
+                    // down at rapid to just above the floor cleared at the layer above, then no straight feed down
+                    moves.add(new Move.Rapid(at(s, above)));
                     if (entry.kind() == EntryRule.Kind.PLUNGE) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
-                        ramp(moves, loop, layerTop + 1, z, t.feedMmPerMin(), entry.angleDeg());
+                        ramp(moves, loop, above, z, t.feedMmPerMin(), entry.angleDeg());
                     }
                     if (moves.size() > PocketTechnology.MAX_MOVES) {
                         throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
@@ -399,15 +399,14 @@ public final class RegionPocket {
                 cursor = s;
             }
         }
-        Vec3 last = moves.get(moves.size() - 1).end();
-        moves.add(new Move.Rapid(new Vec3(last.x(), last.y(), safe)));
+        moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
         ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
-                new Vec3(s0.x(), s0.y(), safe), moves);
+                new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
     }
 
     /** Down from top to z along the loop, as many times round as a ramp no steeper than angleDeg needs. */
-    private static void ramp(List<Move> moves, Contour loop, double top, double z, double feed, double angleDeg)
+    private static void ramp(PocketMoves moves, Contour loop, double top, double z, double feed, double angleDeg)
             throws ToolTooLargeException {
         double len = loop.length();
         double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
@@ -430,8 +429,8 @@ public final class RegionPocket {
         }
     }
 
-    private static void emit(List<Move> moves, Curve2 c, double z0, double z1, double feed) {
-        if (c instanceof Arc2 a && a.radius() > 1e-6 && a.start().distance(a.end()) > 1e-6) {
+    private static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
+        if (c instanceof Arc2 a && a.radius() >= PocketMoves.RESOLUTION_MM && !PocketMoves.same(a.start(), a.end())) {
             moves.add(new Move.Circular(at(a.end(), z1), at(a.center(), z0), Z, a.ccw(), 0, feed));
         } else {
             moves.add(new Move.Linear(at(c.end(), z1), feed));
