@@ -37,6 +37,7 @@ public final class Coverage {
     private final BitSet reach;
     private final BitSet cut;
     private final List<Vec2[]> faceChords;
+    private final double radiusMm;
 
     private Coverage(Box2 box, double cellMm, List<Contour> faces, List<List<Curve2>> passes, double radiusMm) {
         this.cellMm = cellMm;
@@ -48,6 +49,7 @@ public final class Coverage {
         this.reach = new BitSet(nx * ny);
         this.cut = new BitSet(nx * ny);
         this.faceChords = new ArrayList<>();
+        this.radiusMm = radiusMm;
         for (Contour c : faces) {
             faceChords.addAll(chords(c.curves()));
         }
@@ -106,6 +108,32 @@ public final class Coverage {
         BitSet u = (BitSet) reach.clone();
         u.andNot(cut);
         return u.cardinality() * cellMm * cellMm;
+    }
+
+    /** Adds what the tool cuts along the curves (its centre's path at the floor) to the cut cells. */
+    void cutAlong(List<Curve2> pass) {
+        for (Vec2[] s : chords(pass)) {
+            capsule(cut, s[0], s[1], radiusMm);
+        }
+    }
+
+    /**
+     * Whether the tool may feed straight from a to b inside material already cut: its centre stays
+     * inside the faces and every cell its disc sweeps is cut, or is cut by the pass that starts at b
+     * (the disc taken two cells smaller, for the grid's own edge).
+     */
+    boolean clearedAlong(Vec2 a, Vec2 b, List<Curve2> next) {
+        BitSet need = new BitSet();
+        capsule(need, a, b, radiusMm - 2 * cellMm);
+        need.andNot(cut);
+        if (!need.isEmpty()) {
+            BitSet ahead = new BitSet();
+            for (Vec2[] s : chords(next)) {
+                capsule(ahead, s[0], s[1], radiusMm);
+            }
+            need.andNot(ahead);
+        }
+        return need.isEmpty() && staysInside(a, b);
     }
 
     /** Whether the point lies inside the region the centre may go (by the chords of its faces). */

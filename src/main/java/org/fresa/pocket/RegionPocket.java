@@ -35,7 +35,9 @@ import org.fresa.model.ToolpathSection;
  * <p>Order: the offsets form a tree of faces (a face of one offset lies in exactly one face of
  * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
  * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
- * and stays inside the finishing offset (so the tool never touches a wall or island), otherwise a
+ * and stays inside the finishing offset (so the tool never touches a wall or island), or when the
+ * tool's disc along it stays in material this layer has already cut or the next loop cuts
+ * (whatever its length; {@link Coverage#clearedAlong}), otherwise a
  * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
  * vertical plunge into material unless a centre-cutting tool is asked to).
  */
@@ -473,11 +475,14 @@ public final class RegionPocket {
             double z = t.zTopMm() - j * t.depthStepMm();
             double above = PocketToolpath.entryTop(t, j);
             Vec2 cursor = null;
+            // what this layer has cut so far: a link through it stays down
+            Coverage cleared = Coverage.of(finishing.loops(), List.of(), t.radiusMm(), COVERAGE_CELL_MM);
             for (Cut cut : order) {
                 Contour loop = cut.loop();
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
-                if (cursor != null && feedLink(cursor, s, finishing, t.toolDiameterMm())) {
+                if (cursor != null && (feedLink(cursor, s, finishing, t.toolDiameterMm())
+                        || cleared.clearedAlong(cursor, s, loop.curves()))) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
@@ -498,6 +503,7 @@ public final class RegionPocket {
                 for (Curve2 c : loop.curves()) {
                     emit(moves, c, z, z, feed);
                 }
+                cleared.cutAlong(loop.curves());
                 cursor = s;
             }
         }
