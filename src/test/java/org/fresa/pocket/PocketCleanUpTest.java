@@ -111,7 +111,8 @@ class PocketCleanUpTest {
 
     static Verdict verdict(List<Rs274.Canon> motions, double floorZ, double topZ, double r, Geometry wall,
             Geometry reachable) {
-        BufferParameters bp = new BufferParameters(16);
+        // discs as polygons within 4 um of their circle (16 segments a quadrant for a 6 mm tool)
+        BufferParameters bp = new BufferParameters((int) Math.ceil(Math.PI / 2 / Math.acos(1 - 0.004 / r)));
         List<Geometry> discs = new ArrayList<>();
         IndexedFacetDistance toWall = new IndexedFacetDistance(wall.getBoundary());
         org.locationtech.jts.geom.prep.PreparedGeometry inside =
@@ -163,6 +164,25 @@ class PocketCleanUpTest {
         Rs274.Result res = Rs274.run(f, 6);
         assertEquals(0, res.exitStatus(), name + ": " + Rs274.log(res));
         return res.motions();
+    }
+
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03",
+            "cavity04", "cavity05", "cavity06", "cavity07"})
+    @InterpreterCheck
+    void theThesisContoursLeaveNoSliverAndNeverCutAWall(String name, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), Rs274.whyNot());
+        PocketTechnology t = PocketCoverageTest.tech(name);
+        Recognition.Result rec = Recognition.of(RecognitionTest.sample(name + ".dad"));
+        PocketPlan thesis = PassPlanner.plan(rec, t, true);
+        PocketPlan plan = PassPlanner.plan(rec, t, false);
+        // the wall: the thesis's own finishing pass grown by R, everything inside reachable
+        Geometry wall = PocketCoverageTest.region(thesis.generated().get(0), t.radiusMm());
+        Verdict v = verdict(interpreted(PocketToolpath.of(plan, true), dir, name), t.zBottomMm(), t.zTopMm(),
+                t.radiusMm(), wall, wall);
+        System.out.printf(Locale.ROOT, "%s: uncut %.4f mm2, gouge %.4f mm%n", name, v.uncutMm2(), v.gougeMm());
+        assertTrue(v.uncutMm2() < UNCUT_MM2, name + " leaves " + v.uncutMm2() + " mm2");
+        assertTrue(v.gougeMm() < GOUGE_MM, name + " cuts the wall by " + v.gougeMm() + " mm");
     }
 
     @Test
