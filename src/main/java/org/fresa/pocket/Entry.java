@@ -34,7 +34,7 @@ public sealed interface Entry permits Entry.Helix, Entry.Ramp, Entry.Plunge {
 
     /**
      * Down a helix of radius {@code radiusMm} about {@code centre}, as many full turns as the angle
-     * needs, then one full turn at depth, as two half turns, so that the floor inside the helix is flat. The helix
+     * needs, then one full turn at depth so that the floor inside the helix is flat. The helix
      * begins on its circle nearest the cut's start; when the start is not on the circle, the tool
      * first moves there level at the top of the material and returns at depth, inside the hole the
      * helix has cut (the start lies within the helix radius of its centre).
@@ -80,10 +80,6 @@ public sealed interface Entry permits Entry.Helix, Entry.Ramp, Entry.Plunge {
                 out.add(new Move.Linear(at(p, topZ), feedMmPerMin));
             }
             out.add(new Move.Circular(at(p, z), at(centre, topZ), Vec3.UNIT_Z, ccw, n - 1, feedMmPerMin));
-            // the flat turn at depth in two halves: written as one block it would repeat the helix's last
-            // block word for word on a post that writes each turn as its own block
-            Vec2 opposite = centre.times(2).minus(p);
-            out.add(new Move.Circular(at(opposite, z), at(centre, z), Vec3.UNIT_Z, ccw, 0, feedMmPerMin));
             out.add(new Move.Circular(at(p, z), at(centre, z), Vec3.UNIT_Z, ccw, 0, feedMmPerMin));
             if (off) {
                 out.add(new Move.Linear(at(start, z), feedMmPerMin));

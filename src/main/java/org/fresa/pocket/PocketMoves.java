@@ -12,7 +12,7 @@ import org.fresa.model.Move;
  * would write with the same three-decimal coordinates as the tool's position, is left out (the
  * next move goes to its own end, so nothing drifts); an arc whose ends the posts would write
  * alike, but which is not a full turn, becomes a straight move, since a control reads such a block
- * as a whole circle. Units mm.
+ * as a whole circle; a level full turn is written as two half turns. Units mm.
  */
 final class PocketMoves {
 
@@ -59,6 +59,16 @@ final class PocketMoves {
             // an exact return to the start is a full turn asked for; a sliver of arc is not
             if (a.distance(b) > 1e-12 && same(a, b)) {
                 add(new Move.Linear(c.end(), c.feedMmPerMin()));
+                return;
+            }
+            if (a.distance(b) <= 1e-12 && Math.abs(at.z() - c.end().z()) < 1e-12) {
+                // a level full turn (a helix's last, at depth) in two halves: as one block it would
+                // repeat word for word the helix's last block on a post that writes each turn alone
+                Vec2 ctr = new Vec2(c.center().x(), c.center().y());
+                Vec2 opposite = ctr.times(2).minus(a);
+                moves.add(new Move.Circular(new Vec3(opposite.x(), opposite.y(), at.z()), c.center(), c.normal(),
+                        c.ccw(), 0, c.feedMmPerMin()));
+                moves.add(c);
                 return;
             }
         }
