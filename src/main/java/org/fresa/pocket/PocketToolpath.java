@@ -45,12 +45,13 @@ public final class PocketToolpath {
      */
     public static Toolpath of(PocketPlan plan, boolean climb, EntryRule rule) throws ToolTooLargeException {
         PocketTechnology t = plan.technology();
-        List<Move> moves = new ArrayList<>();
         double safe = t.zTopMm() + CLEARANCE_MM;
         List<List<PassPiece>> passes = new ArrayList<>();
         for (PocketPass p : plan.milled()) {
             passes.add(climb ? p.reversed().pieces() : p.pieces());
         }
+        Vec2 s0 = plan.milled().isEmpty() || passes.get(0).isEmpty() ? Vec2.ZERO : passes.get(0).get(0).start();
+        PocketMoves moves = new PocketMoves(new Vec3(s0.x(), s0.y(), safe));
         List<PocketPass> milled = plan.milled();
         Entries.Room room = room(milled, t.finishFraction() * t.toolDiameterMm());
         int levels = t.depthPasses();
@@ -69,10 +70,10 @@ public final class PocketToolpath {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     double layerTop = z + t.depthStepMm();
-                    moves.add(new Move.Rapid(new Vec3(lastXY(moves, s).x(), lastXY(moves, s).y(), safe)));
+                    moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
-                    // down at rapid through the pocket cleared at the layer above, to 1 mm above its floor
-                    double above = layerTop + 1;
+                    // down at rapid through the pocket cleared at the layer above, to just above its floor
+                    double above = entryTop(t, j);
                     moves.add(new Move.Rapid(at(s, above)));
                     // no straight feed down at all: a helix or a zig-zag ramp within the entry angle
                     Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), above - z)
@@ -90,14 +91,28 @@ public final class PocketToolpath {
                 }
             }
         }
-        if (!moves.isEmpty()) {
-            Vec3 last = moves.get(moves.size() - 1).end();
-            moves.add(new Move.Rapid(new Vec3(last.x(), last.y(), safe)));
+        if (moves.size() > 0) {
+            moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
         }
-        Vec2 s0 = milled.isEmpty() || passes.get(0).isEmpty() ? Vec2.ZERO : passes.get(0).get(0).start();
         ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
-                new Vec3(s0.x(), s0.y(), safe), moves);
+                new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
+    }
+
+    /** Above the stock before the first layer (mm): its top face is as delivered. */
+    static final double ABOVE_STOCK_MM = 1;
+
+    /** Above the floor the layer before has cut (mm): a face just machined, so the entry wastes no feed in air. */
+    static final double ABOVE_FLOOR_MM = 0.2;
+
+    /**
+     * The height an entry into depth layer j (1 = the first) starts from: just above the material
+     * of that layer, which at the first layer is the stock's top and from the second on the floor
+     * the layer above has left inside the region its passes cleared (where every entry lies).
+     */
+    static double entryTop(PocketTechnology t, int j) {
+        double layerTop = t.zTopMm() - (j - 1) * t.depthStepMm();
+        return layerTop + (j == 1 ? ABOVE_STOCK_MM : ABOVE_FLOOR_MM);
     }
 
     /**
@@ -132,7 +147,7 @@ public final class PocketToolpath {
         for (PassPiece pc : pieces) {
             Vec2 c = pc.center();
             double rn = pc.isArc() ? pc.radiusMm() : 0;
-            if (!pc.isArc() || rn < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
+            if (!pc.isArc() || rn < PocketMoves.RESOLUTION_MM || PocketMoves.same(pc.start(), pc.end())) {
                 add(out, at, pc.end());
             } else {
                 Vec2 start = onCircle(pc.start(), c, rn);
@@ -153,14 +168,14 @@ public final class PocketToolpath {
     }
 
     /** One piece from height z0 to z1 (a helix for arcs when they differ). */
-    private static void piece(List<Move> moves, PassPiece pc, double z0, double z1, double feed) {
+    private static void piece(PocketMoves moves, PassPiece pc, double z0, double z1, double feed) {
         if (!pc.isArc()) {
             moves.add(new Move.Linear(at(pc.end(), z1), feed));
             return;
         }
         Vec2 c = pc.center();
         double rn = pc.radiusMm();
-        if (rn < 1e-6 || pc.start().distance(pc.end()) < 1e-6) {
+        if (rn < PocketMoves.RESOLUTION_MM || PocketMoves.same(pc.start(), pc.end())) {
             moves.add(new Move.Linear(at(pc.end(), z1), feed));
             return;
         }
@@ -179,14 +194,6 @@ public final class PocketToolpath {
     private static Vec2 onCircle(Vec2 p, Vec2 c, double r) {
         double d = p.distance(c);
         return d < 1e-12 ? p : c.plus(p.minus(c).times(r / d));
-    }
-
-    private static Vec2 lastXY(List<Move> moves, Vec2 fallback) {
-        if (moves.isEmpty()) {
-            return fallback;
-        }
-        Vec3 e = moves.get(moves.size() - 1).end();
-        return new Vec2(e.x(), e.y());
     }
 
     private static Vec3 at(Vec2 p, double z) {

@@ -20,19 +20,24 @@ import org.fresa.model.ToolpathSection;
  * {@link RegionOffsetter}) at R (finishing), R + a (pre-finish), then by the stepover, cut from
  * the inside out, climb by default.
  *
- * <p>No uncut material, by construction. Let delta(p) be the distance of p from the region's
+ * <p>No uncut material, by construction, and checked. Let delta(p) be the distance of p from the region's
  * boundary; the pass at offset d runs on {delta = d} and clears every point with
  * d &lt;= delta &lt;= d + R. So a step s &lt;= R between consecutive offsets leaves nothing; a
  * larger step (up to the nominal stepover) is taken only when the next offset has the same
  * topology (each face has one successor with the same number of holes: no neck is pinched and no
  * sub-area vanishes within the step) and no corner of the next offset is sharper than the
  * thesis's rule allows: s &lt;= R (1 + sin(alpha / 2)) for its smallest interior corner angle
- * alpha (with a 3 % margin for curved fronts). Otherwise the step is cut to 0.98 R.
+ * alpha (with a 3 % margin for curved fronts). Otherwise the step is cut to 0.98 R. The rule
+ * misses a sliver where the last pass round an island meets a sharp corner of the outer passes
+ * (the step there grows beyond R), so the plan's coverage is checked on a grid
+ * ({@link Coverage}) and each patch left gets a clean-up spur ({@link #cleanedUp}).
  *
  * <p>Order: the offsets form a tree of faces (a face of one offset lies in exactly one face of
  * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
  * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
- * and stays inside the finishing offset (so the tool never touches a wall or island), otherwise a
+ * and stays inside the finishing offset (so the tool never touches a wall or island), or when the
+ * tool's disc along it stays in material this layer has already cut or the next loop cuts
+ * (whatever its length; {@link Coverage#clearedAlong}), otherwise a
  * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
  * vertical plunge into material unless a centre-cutting tool is asked to).
  */
@@ -92,6 +97,12 @@ public final class RegionPocket {
      */
     public static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb, EntryRule entry)
             throws ToolTooLargeException {
+        return plan(outer, islands, tech, climb, entry, true);
+    }
+
+    /** As {@link #plan(Contour, List, PocketTechnology, boolean, EntryRule)}; cleanUp false leaves the remaining material. */
+    static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb, EntryRule entry,
+            boolean cleanUp) throws ToolTooLargeException {
         List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
         List<Level> levels = levels(boundary, tech);
         List<Face> roots = faces(levels);
@@ -107,11 +118,104 @@ public final class RegionPocket {
         for (Cut c : order) {
             directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
         }
+        if (cleanUp) {
+            directed = cleanedUp(directed, levels.get(0).loops(), tech.radiusMm());
+        }
         // each element once cut and once ramped down, some arcs joined by short lines, and a link
         // or rapids and a plunge per loop
         tech.checkMoves(directed.stream().mapToLong(c -> 3L * c.loop().size() + 4).sum());
         Toolpath path = toolpath(directed, levels.get(0), tech, entry);
         return new Plan(levels, directed, path);
+    }
+
+    /** The grid cell of the coverage check (mm): fine enough to see a sliver of a few hundredths of a mm2. */
+    static final double COVERAGE_CELL_MM = 0.1;
+
+    /**
+     * The loops with a clean-up spur wherever material the tool can reach is left: the passes'
+     * coverage is checked ({@link Coverage}) and each remaining patch is visited from the nearest
+     * point of a loop by a straight move out and back (the tool's centre kept inside the finishing
+     * offset, so no wall is touched), at every depth, as the loop is cut. The spots are chosen so
+     * that each covers every remaining cell within the tool radius of it; a patch no loop can reach
+     * straight is left (none in the tests). Two rounds: a spur's own disc is checked again.
+     */
+    static List<Cut> cleanedUp(List<Cut> cuts, List<Contour> faces, double radiusMm) {
+        List<Cut> out = new ArrayList<>(cuts);
+        for (int round = 0; round < 2; round++) {
+            List<List<Curve2>> passes = out.stream().map(c -> c.loop().curves()).toList();
+            Coverage cov = Coverage.of(faces, passes, radiusMm, COVERAGE_CELL_MM);
+            List<Vec2> left = cov.uncut();
+            if (left.isEmpty()) {
+                return out;
+            }
+            boolean[] covered = new boolean[left.size()];
+            boolean changed = false;
+            for (int i = 0; i < left.size(); i++) {
+                if (covered[i]) {
+                    continue;
+                }
+                Vec2 p = left.get(i);
+                Vec2 spot = p;
+                if (!cov.insideFaces(p)) {
+                    // the nearest place the centre may go, a hair inside
+                    Vec2 q = cov.nearestOnFaces(p);
+                    Vec2 in = q.minus(p);
+                    spot = in.norm() < 1e-12 ? q : q.plus(in.times(1e-4 / in.norm()));
+                }
+                for (int k = i; k < left.size(); k++) {
+                    if (left.get(k).distance(spot) <= radiusMm - 2 * cov.cellMm()) {
+                        covered[k] = true;
+                    }
+                }
+                covered[i] = true;
+                changed |= spur(out, spot, cov);
+            }
+            if (!changed) {
+                return out;
+            }
+        }
+        return out;
+    }
+
+    /** Adds a straight spur out to the spot and back on the nearest loop that reaches it inside the faces. */
+    private static boolean spur(List<Cut> cuts, Vec2 spot, Coverage cov) {
+        record Candidate(int cut, int curve, Vec2 at, double distance) {
+        }
+        List<Candidate> candidates = new ArrayList<>();
+        for (int k = 0; k < cuts.size(); k++) {
+            Contour loop = cuts.get(k).loop();
+            for (int i = 0; i < loop.size(); i++) {
+                Curve2 c = loop.get(i);
+                double t = Math.max(0, Math.min(1, OffsetSplit.param(c, spot)));
+                Vec2 q = c.pointAt(t);
+                candidates.add(new Candidate(k, i, q, q.distance(spot)));
+            }
+        }
+        candidates.sort(java.util.Comparator.comparingDouble(Candidate::distance));
+        for (Candidate cand : candidates) {
+            if (cand.distance() < 1e-6) {
+                return false;
+            }
+            if (!cov.staysInside(cand.at(), spot)) {
+                continue;
+            }
+            Cut cut = cuts.get(cand.cut());
+            Contour loop = cut.loop();
+            Curve2 c = loop.get(cand.curve());
+            List<Curve2> curves = new ArrayList<>(loop.curves().subList(0, cand.curve()));
+            if (cand.at().distance(c.start()) > 1e-9) {
+                curves.add(piece(c, c.start(), cand.at()));
+            }
+            curves.add(new Segment2(cand.at(), spot));
+            curves.add(new Segment2(spot, cand.at()));
+            if (cand.at().distance(c.end()) > 1e-9) {
+                curves.add(piece(c, cand.at(), c.end()));
+            }
+            curves.addAll(loop.curves().subList(cand.curve() + 1, loop.size()));
+            cuts.set(cand.cut(), new Cut(cut.level(), new Contour(curves)));
+            return true;
+        }
+        return false;
     }
 
     static List<Level> levels(List<Contour> boundary, PocketTechnology tech) throws ToolTooLargeException {
@@ -364,29 +468,32 @@ public final class RegionPocket {
 
     private static Toolpath toolpath(List<Cut> order, Level finishing, PocketTechnology t, EntryRule entry)
             throws ToolTooLargeException {
-        List<Move> moves = new ArrayList<>();
         double safe = t.zTopMm() + CLEARANCE_MM;
         Vec2 s0 = order.get(0).loop().get(0).start();
+        PocketMoves moves = new PocketMoves(new Vec3(s0.x(), s0.y(), safe));
         for (int j = 1; j <= t.depthPasses(); j++) {
             double z = t.zTopMm() - j * t.depthStepMm();
-            double layerTop = z + t.depthStepMm();
+            double above = PocketToolpath.entryTop(t, j);
             Vec2 cursor = null;
+            // what this layer has cut so far: a link through it stays down
+            Coverage cleared = Coverage.of(finishing.loops(), List.of(), t.radiusMm(), COVERAGE_CELL_MM);
             for (Cut cut : order) {
                 Contour loop = cut.loop();
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
-                if (cursor != null && feedLink(cursor, s, finishing, t.toolDiameterMm())) {
+                if (cursor != null && (feedLink(cursor, s, finishing, t.toolDiameterMm())
+                        || cleared.clearedAlong(cursor, s, loop.curves()))) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
-                    Vec2 from = cursor == null ? s : cursor;
-                    moves.add(new Move.Rapid(at(from, safe)));
+                    // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
+                    moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
-                    // down at rapid to 1 mm above the floor cleared at the layer above, then no straight feed down
-                    moves.add(new Move.Rapid(at(s, layerTop + 1)));
+                    // down at rapid to just above the floor cleared at the layer above, then no straight feed down
+                    moves.add(new Move.Rapid(at(s, above)));
                     if (entry.kind() == EntryRule.Kind.PLUNGE) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
-                        ramp(moves, loop, layerTop + 1, z, t.feedMmPerMin(), entry.angleDeg());
+                        ramp(moves, loop, above, z, t.feedMmPerMin(), entry.angleDeg());
                     }
                     if (moves.size() > PocketTechnology.MAX_MOVES) {
                         throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
@@ -396,18 +503,18 @@ public final class RegionPocket {
                 for (Curve2 c : loop.curves()) {
                     emit(moves, c, z, z, feed);
                 }
+                cleared.cutAlong(loop.curves());
                 cursor = s;
             }
         }
-        Vec3 last = moves.get(moves.size() - 1).end();
-        moves.add(new Move.Rapid(new Vec3(last.x(), last.y(), safe)));
+        moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
         ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
-                new Vec3(s0.x(), s0.y(), safe), moves);
+                new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
     }
 
     /** Down from top to z along the loop, as many times round as a ramp no steeper than angleDeg needs. */
-    private static void ramp(List<Move> moves, Contour loop, double top, double z, double feed, double angleDeg)
+    private static void ramp(PocketMoves moves, Contour loop, double top, double z, double feed, double angleDeg)
             throws ToolTooLargeException {
         double len = loop.length();
         double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
@@ -430,8 +537,8 @@ public final class RegionPocket {
         }
     }
 
-    private static void emit(List<Move> moves, Curve2 c, double z0, double z1, double feed) {
-        if (c instanceof Arc2 a && a.radius() > 1e-6 && a.start().distance(a.end()) > 1e-6) {
+    private static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
+        if (c instanceof Arc2 a && a.radius() >= PocketMoves.RESOLUTION_MM && !PocketMoves.same(a.start(), a.end())) {
             moves.add(new Move.Circular(at(a.end(), z1), at(a.center(), z0), Z, a.ccw(), 0, feed));
         } else {
             moves.add(new Move.Linear(at(c.end(), z1), feed));

@@ -122,8 +122,9 @@ class PocketServiceTest {
                 () -> assertEquals(words(ca, "G3"), words(cb, "G2")),
                 () -> assertTrue(climbArea > 0, "climb loops counter-clockwise: " + climbArea),
                 () -> assertTrue(convArea < 0, "conventional loops clockwise: " + convArea),
+                // a move shorter than a micrometre is left out of the program, which of them depends on the direction
                 () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
-                        1e-9));
+                        1e-3));
     }
 
     @Test
@@ -171,8 +172,9 @@ class PocketServiceTest {
                 // same start point of every pass: the rapid to the first pass is the same block
                 () -> assertEquals(ca.lines().filter(l -> l.startsWith("N40 ")).toList(),
                         cb.lines().filter(l -> l.startsWith("N40 ")).toList()),
+                // a move shorter than a micrometre is left out of the program, which of them depends on the direction
                 () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
-                        1e-9));
+                        1e-3));
     }
 
     @Test
