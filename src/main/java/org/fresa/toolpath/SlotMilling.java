@@ -46,6 +46,10 @@ final class SlotMilling {
     static final double SHAPED_LAYER_MM = 1.0;
     /** How far past an open end a T-slot mill goes down and comes back up, beyond its radius (mm). */
     static final double OPEN_END_CLEARANCE_MM = 2.0;
+    /** Below this room beside the cutter (mm), a layer of mixed ends is cut along the middle only. */
+    static final double CENTRE_ONLY_MM = 0.01;
+    /** An arc of a smaller radius (mm) is a point: cut as a straight move to its end. */
+    static final double NO_RADIUS_MM = 1e-4;
     /** Largest angle a tee's stem wall may differ from square to the cross bar (deg). */
     static final double SQUARE_TOLERANCE_DEG = 0.01;
 
@@ -184,7 +188,7 @@ final class SlotMilling {
 
     private static ToolpathSection straight(String label, double length, double halfWidth, List<SlotEnd> ends,
             Heights h, Tooling t, Tolerance tol, PocketCutter pocket) {
-        return pocket.cut(outline(length, halfWidth, ends, tol), h);
+        return join(label, List.of(pocket.cut(outline(length, halfWidth, t.radiusMm(), ends, tol), h)));
     }
 
     /**
@@ -200,7 +204,7 @@ final class SlotMilling {
         double top = h.topZ();
         if (zStraight < top - tol.linear()) {
             double z = Math.max(zStraight, floor);
-            parts.add(pocket.cut(outline(length, Math.max(reach.applyAsDouble(z), 0) + r, ends, tol),
+            parts.add(pocket.cut(outline(length, Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
                     new Heights(h.clearanceZ(), h.retractZ(), top, z)));
             top = z;
         }
@@ -211,7 +215,7 @@ final class SlotMilling {
             for (int i = 1; i <= n; i++) {
                 double z = i == n ? floor : top - (top - floor) * i / n;
                 double half = Math.max(reach.applyAsDouble(z), 0) + r;
-                parts.add(pocket.cut(outline(length, half, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+                parts.add(pocket.cut(outline(length, half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
                 prev = z;
             }
         }
@@ -222,12 +226,23 @@ final class SlotMilling {
     private static ToolpathSection join(String label, List<ToolpathSection> parts) {
         List<Move> moves = new ArrayList<>();
         ToolpathSection first = parts.get(0);
+        Vec3 at = first.start();
         for (int i = 0; i < parts.size(); i++) {
             ToolpathSection s = parts.get(i);
             if (i > 0) {
                 moves.add(new Move.Rapid(s.start()));
             }
-            moves.addAll(s.moves());
+            for (Move m : s.moves()) {
+                // the loops of a layer narrowed to the cutter's width close on arcs of no radius,
+                // which go nowhere and which a control refuses
+                if (m instanceof Move.Circular c && c.center().distance(at) < NO_RADIUS_MM) {
+                    moves.add(new Move.Linear(c.end(), c.feedMmPerMin()));
+                    at = m.end();
+                    continue;
+                }
+                moves.add(m);
+                at = m.end();
+            }
         }
         return new ToolpathSection(label, first.toolAxis(), first.toolDiameterMm(), first.toolNumber(),
                 first.spindleRpm(), first.start(), moves);
@@ -237,7 +252,7 @@ final class SlotMilling {
      * The outline the tool may sweep at one height: the path's length by twice the half width,
      * its ends radiused (half circles of the half width), flat with their corner radii, or square.
      */
-    static Profile outline(double length, double halfWidth, List<SlotEnd> ends, Tolerance tol) {
+    static Profile outline(double length, double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol) {
         SlotEnd start = ends.isEmpty() ? null : ends.get(0);
         SlotEnd end = ends.size() < 2 ? start : ends.get(1);
         double half = length / 2;
@@ -247,6 +262,15 @@ final class SlotMilling {
         }
         if (isRadiused(start) && isRadiused(end)) {
             return new Profile.RoundedRectangle(Vec2.ZERO, length + 2 * halfWidth, 2 * halfWidth, halfWidth);
+        }
+        if (halfWidth - toolRadius < CENTRE_ONLY_MM) {
+            // the cutter fits only along the middle: a strip as wide as the cutter whose ends
+            // keep its centre within each end's reach (a radiused end's centre, a flat end less
+            // the radius), which the cutter's disc sweeps without leaving the outline
+            double x0 = isRadiused(start) ? -half : -half + toolRadius;
+            double x1 = isRadiused(end) ? half : half - toolRadius;
+            return new Profile.RoundedRectangle(new Vec2((x0 + x1) / 2, 0), x1 - x0 + 2 * toolRadius,
+                    2 * toolRadius, 0);
         }
         List<Curve2> cs = new ArrayList<>();
         Vec2 at = new Vec2(-half, -halfWidth);
@@ -280,7 +304,9 @@ final class SlotMilling {
         Vec2 right = c.minus(n.times(hw));
         Vec2 left = c.plus(n.times(hw));
         if (isRadiused(e)) {
-            cs.add(new Segment2(from, right));
+            if (from.distance(right) > 1e-12) {
+                cs.add(new Segment2(from, right));
+            }
             cs.add(new Arc2(c, right, left, true));
             return left;
         }
