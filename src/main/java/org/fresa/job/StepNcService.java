@@ -44,6 +44,61 @@ public final class StepNcService {
         return new TaskOutcome(0, List.of(), summary(p), List.of());
     }
 
+    /** A workingstep the planner leaves out, and its reason in the planner's words. */
+    public record NotPlanned(long instanceId, String id, String reason) {
+    }
+
+    /**
+     * The workingsteps the planner (default choices) leaves out, in program order, each with the
+     * reason it gives: what {@code fresa toolpath} would refuse.
+     */
+    public static List<NotPlanned> notPlanned(StepNcProgram p) {
+        org.fresa.toolpath.ToolpathPlanner.Plan plan = org.fresa.toolpath.ToolpathPlanner.plan(p,
+                org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT);
+        java.util.Set<Long> planned = new java.util.HashSet<>();
+        plan.steps().forEach(s -> planned.add(s.workingstepInstanceId()));
+        List<NotPlanned> out = new ArrayList<>();
+        for (MachiningWorkingstep w : p.workingsteps()) {
+            if (!planned.contains(w.instanceId())) {
+                String prefix = "workingstep '" + w.id() + "' (#" + w.instanceId() + "): ";
+                String reason = plan.problems().stream().filter(x -> x.startsWith(prefix))
+                        .map(x -> x.substring(prefix.length())).findFirst().orElse("not planned");
+                out.add(new NotPlanned(w.instanceId(), w.id(), reason));
+            }
+        }
+        return out;
+    }
+
+    /** {@link #describe(StepNcProgram)} with the workingsteps the planner leaves out and why. */
+    public static TaskOutcome describe(StepNcProgram p, List<NotPlanned> notPlanned) {
+        Map<String, Object> m = summary(p);
+        List<Object> np = new ArrayList<>();
+        for (NotPlanned n : notPlanned) {
+            Map<String, Object> x = new LinkedHashMap<>();
+            x.put("id", n.id());
+            x.put("instance", n.instanceId());
+            x.put("reason", n.reason());
+            np.add(x);
+        }
+        m.put("not_planned", np);
+        return new TaskOutcome(0, List.of(), m, List.of());
+    }
+
+    /** The lines of {@link #prose} for the workingsteps the planner leaves out; empty when none. */
+    public static String notPlannedProse(List<NotPlanned> notPlanned) {
+        if (notPlanned.isEmpty()) {
+            return "";
+        }
+        StringBuilder sb = new StringBuilder();
+        sb.append(notPlanned.size()).append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
+                .append(" not planned:\n");
+        for (NotPlanned n : notPlanned) {
+            sb.append("  #").append(n.instanceId()).append(" '").append(n.id()).append("': ").append(n.reason())
+                    .append('\n');
+        }
+        return sb.toString();
+    }
+
     /**
      * The job task: reads the job's STEP-NC file and writes {@code summary.json} and
      * {@code description.txt} into the output folder.
