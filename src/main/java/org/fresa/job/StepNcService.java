@@ -191,6 +191,17 @@ public final class StepNcService {
         putIf(fm, "orthogonal_radius", f.orthogonalRadiusMm());
         putIf(fm, "planar_radius", f.planarRadiusMm());
         f.profile().ifPresent(p -> fm.put("profile", profile(p)));
+        if (!f.slotEnds().isEmpty()) {
+            List<Object> ends = new ArrayList<>();
+            for (org.fresa.stepnc.Feature.SlotEnd e : f.slotEnds()) {
+                Map<String, Object> em = new LinkedHashMap<>();
+                em.put("type", e.entity());
+                putIf(em, "radius1", e.firstRadiusMm());
+                putIf(em, "radius2", e.secondRadiusMm());
+                ends.add(em);
+            }
+            fm.put("ends", ends);
+        }
         m.put("feature", fm);
         Operation o = w.operation();
         Map<String, Object> om = new LinkedHashMap<>();
@@ -259,6 +270,17 @@ public final class StepNcService {
             m.put("length", l.lengthMm());
         } else if (p instanceof Profile.U u) {
             m.put("width", u.widthMm());
+        } else if (p instanceof Profile.Vee v) {
+            putIf(m, "radius", v.profileRadiusMm());
+            m.put("angle_deg", v.profileAngleDeg());
+            m.put("tilt_deg", v.tiltAngleDeg());
+        } else if (p instanceof Profile.Tee t) {
+            m.put("width", t.widthMm());
+            m.put("cross_bar_width", t.crossBarWidthMm());
+            m.put("cross_bar_depth", t.crossBarDepthMm());
+            putIf(m, "radius", t.radiusMm());
+            m.put("first_angle_deg", t.firstAngleDeg());
+            m.put("second_angle_deg", t.secondAngleDeg());
         } else if (p instanceof Profile.General g) {
             m.put("curve", g.curveEntity());
             m.put("segments", g.segments().size());

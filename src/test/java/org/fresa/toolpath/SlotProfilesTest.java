@@ -181,6 +181,26 @@ class SlotProfilesTest {
     }
 
     @Test
+    void theProfilesAndEndsAreBound() throws Exception {
+        var program = StepNcReader.read(PART);
+        var byId = new java.util.HashMap<String, org.fresa.stepnc.Feature>();
+        program.workingsteps().forEach(w -> byId.put(w.feature().id(), w.feature()));
+        var tee = (org.fresa.stepnc.Profile.Tee) byId.get("TEE").profile().orElseThrow();
+        assertEquals(List.of(10.0, 20.0, 6.0, 90.0, 90.0), List.of(tee.widthMm(), tee.crossBarWidthMm(),
+                tee.crossBarDepthMm(), tee.firstAngleDeg(), tee.secondAngleDeg()));
+        assertTrue(tee.radiusMm().isEmpty());
+        var vee = (org.fresa.stepnc.Profile.Vee) byId.get("VEE").profile().orElseThrow();
+        assertEquals(List.of(1.0, 90.0, 0.0), List.of(vee.profileRadiusMm().orElseThrow(), vee.profileAngleDeg(),
+                vee.tiltAngleDeg()));
+        var ends = byId.get("SQUARE U ENDS").slotEnds();
+        assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.FLAT, ends.get(0).type());
+        assertEquals(6.0, ends.get(0).firstRadiusMm().orElseThrow());
+        assertEquals(4.0, ends.get(0).secondRadiusMm().orElseThrow());
+        assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.RADIUSED, ends.get(1).type());
+        assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.OPEN, byId.get("TEE").slotEnds().get(1).type());
+    }
+
+    @Test
     void everySlotOfThePartIsPlanned() {
         assertEquals(6, plan.planned(), plan.problems().toString());
         assertEquals(6, plan.workingsteps());
