@@ -90,8 +90,9 @@ public sealed interface Profile {
 
     /**
      * VEE_PROFILE: two straight walls meeting at the included angle, blended at the bottom by the
-     * profile radius (a sharp V without it); the tilt turns the V's bisector away from the feature
-     * axis. Angles in degrees, converted from radians where the file's writer uses them.
+     * profile radius (a sharp V without it); the tilt is the first wall's angle from the profile's
+     * x axis (across the slot), so an upright V has tilt 90 - angle / 2. Angles in degrees,
+     * converted from radians where the file's writer uses them.
      */
     record Vee(String entity, Transform3 placement, OptionalDouble profileRadiusMm, double profileAngleDeg,
             double tiltAngleDeg) implements Profile {

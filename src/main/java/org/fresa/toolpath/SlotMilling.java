@@ -117,13 +117,16 @@ final class SlotMilling {
             return shaped(label, lengthMm, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.Vee v) {
-            if (Math.abs(v.tiltAngleDeg()) > SQUARE_TOLERANCE_DEG) {
-                throw new UnsupportedOperationException("the vee's walls are tilted by " + mm(v.tiltAngleDeg())
-                        + " deg: a cutter along the feature axis cannot follow a tilted vee");
-            }
             double angle = v.profileAngleDeg();
             if (!(angle > 0 && angle < 180)) {
                 throw new IllegalArgumentException("vee profile_angle " + angle + " deg is outside 0 to 180 deg");
+            }
+            // tilt_angle is the first wall's angle from the profile's x axis, across the slot: the
+            // V stands upright when its bisector is square to it (GRIMA's 90 deg vee has 45)
+            double lean = v.tiltAngleDeg() + angle / 2 - 90;
+            if (Math.abs(lean) > SQUARE_TOLERANCE_DEG) {
+                throw new UnsupportedOperationException("the vee leans by " + mm(lean) + " deg (tilt_angle "
+                        + mm(v.tiltAngleDeg()) + " deg for a " + mm(angle) + " deg vee): the layers follow upright vees only");
             }
             double a = Math.toRadians(angle / 2);
             double rho = Math.max(v.profileRadiusMm().orElse(0), 0);

@@ -190,7 +190,7 @@ class SlotProfilesTest {
                 tee.crossBarDepthMm(), tee.firstAngleDeg(), tee.secondAngleDeg()));
         assertTrue(tee.radiusMm().isEmpty());
         var vee = (org.fresa.stepnc.Profile.Vee) byId.get("VEE").profile().orElseThrow();
-        assertEquals(List.of(1.0, 90.0, 0.0), List.of(vee.profileRadiusMm().orElseThrow(), vee.profileAngleDeg(),
+        assertEquals(List.of(1.0, 90.0, 45.0), List.of(vee.profileRadiusMm().orElseThrow(), vee.profileAngleDeg(),
                 vee.tiltAngleDeg()));
         var ends = byId.get("SQUARE U ENDS").slotEnds();
         assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.FLAT, ends.get(0).type());
@@ -292,7 +292,7 @@ class SlotProfilesTest {
                 .replace("#29= RADIUSED_SLOT_END_TYPE();", "#29= WOODRUFF_SLOT_END_TYPE(8.000);")
                 .replace("#37= FLAT_SLOT_END_TYPE(6.000,4.000);", "#37= LOOP_SLOT_END_TYPE();")
                 // a tilted vee
-                .replace("#30= VEE_PROFILE($,1.000,90.000,0.000);", "#30= VEE_PROFILE($,1.000,90.000,15.000);")
+                .replace("#30= VEE_PROFILE($,1.000,90.000,45.000);", "#30= VEE_PROFILE($,1.000,90.000,30.000);")
                 .replace("(#29,#32)", "(#32,#32)")
                 // a dovetail cut with a ball end mill, a tee without an open end
                 .replace("#25= ROUNDED_U_PROFILE($,12.000);", "#25= DOVETAIL_PROFILE($,12.000,60.000);")
@@ -302,7 +302,7 @@ class SlotProfilesTest {
         assertTrue(problemOf(p, "WS ROUND U BALL").endsWith("a dovetail slot needs a DOVETAIL_MILL; the tool is a BALL_ENDMILL"),
                 p.problems().toString());
         assertTrue(problemOf(p, "WS ROUND U FLAT").contains("woodruff slot ends are not machined"), p.problems().toString());
-        assertTrue(problemOf(p, "WS VEE").contains("the vee's walls are tilted by 15 deg"), p.problems().toString());
+        assertTrue(problemOf(p, "WS VEE").contains("the vee leans by -15 deg (tilt_angle 30 deg for a 90 deg vee)"), p.problems().toString());
         assertTrue(problemOf(p, "WS TEE CROSS BAR").endsWith("a T_SLOT_MILL enters the cross bar from an open end; the slot"
                 + " has none"), p.problems().toString());
         assertTrue(problemOf(p, "WS SQUARE U ENDS").contains("loop slot ends are not machined"), p.problems().toString());
