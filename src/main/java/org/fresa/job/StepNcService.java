@@ -44,6 +44,61 @@ public final class StepNcService {
         return new TaskOutcome(0, List.of(), summary(p), List.of());
     }
 
+    /** A workingstep the planner leaves out, and its reason in the planner's words. */
+    public record NotPlanned(long instanceId, String id, String reason) {
+    }
+
+    /**
+     * The workingsteps the planner (default choices) leaves out, in program order, each with the
+     * reason it gives: what {@code fresa toolpath} would refuse.
+     */
+    public static List<NotPlanned> notPlanned(StepNcProgram p) {
+        org.fresa.toolpath.ToolpathPlanner.Plan plan = org.fresa.toolpath.ToolpathPlanner.plan(p,
+                org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT);
+        java.util.Set<Long> planned = new java.util.HashSet<>();
+        plan.steps().forEach(s -> planned.add(s.workingstepInstanceId()));
+        List<NotPlanned> out = new ArrayList<>();
+        for (MachiningWorkingstep w : p.workingsteps()) {
+            if (!planned.contains(w.instanceId())) {
+                String prefix = "workingstep '" + w.id() + "' (#" + w.instanceId() + "): ";
+                String reason = plan.problems().stream().filter(x -> x.startsWith(prefix))
+                        .map(x -> x.substring(prefix.length())).findFirst().orElse("not planned");
+                out.add(new NotPlanned(w.instanceId(), w.id(), reason));
+            }
+        }
+        return out;
+    }
+
+    /** {@link #describe(StepNcProgram)} with the workingsteps the planner leaves out and why. */
+    public static TaskOutcome describe(StepNcProgram p, List<NotPlanned> notPlanned) {
+        Map<String, Object> m = summary(p);
+        List<Object> np = new ArrayList<>();
+        for (NotPlanned n : notPlanned) {
+            Map<String, Object> x = new LinkedHashMap<>();
+            x.put("id", n.id());
+            x.put("instance", n.instanceId());
+            x.put("reason", n.reason());
+            np.add(x);
+        }
+        m.put("not_planned", np);
+        return new TaskOutcome(0, List.of(), m, List.of());
+    }
+
+    /** The lines of {@link #prose} for the workingsteps the planner leaves out; empty when none. */
+    public static String notPlannedProse(List<NotPlanned> notPlanned) {
+        if (notPlanned.isEmpty()) {
+            return "";
+        }
+        StringBuilder sb = new StringBuilder();
+        sb.append(notPlanned.size()).append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
+                .append(" not planned:\n");
+        for (NotPlanned n : notPlanned) {
+            sb.append("  #").append(n.instanceId()).append(" '").append(n.id()).append("': ").append(n.reason())
+                    .append('\n');
+        }
+        return sb.toString();
+    }
+
     /**
      * The job task: reads the job's STEP-NC file and writes {@code summary.json} and
      * {@code description.txt} into the output folder.
@@ -136,6 +191,17 @@ public final class StepNcService {
         putIf(fm, "orthogonal_radius", f.orthogonalRadiusMm());
         putIf(fm, "planar_radius", f.planarRadiusMm());
         f.profile().ifPresent(p -> fm.put("profile", profile(p)));
+        if (!f.slotEnds().isEmpty()) {
+            List<Object> ends = new ArrayList<>();
+            for (org.fresa.stepnc.Feature.SlotEnd e : f.slotEnds()) {
+                Map<String, Object> em = new LinkedHashMap<>();
+                em.put("type", e.entity());
+                putIf(em, "radius1", e.firstRadiusMm());
+                putIf(em, "radius2", e.secondRadiusMm());
+                ends.add(em);
+            }
+            fm.put("ends", ends);
+        }
         m.put("feature", fm);
         Operation o = w.operation();
         Map<String, Object> om = new LinkedHashMap<>();
@@ -204,6 +270,17 @@ public final class StepNcService {
             m.put("length", l.lengthMm());
         } else if (p instanceof Profile.U u) {
             m.put("width", u.widthMm());
+        } else if (p instanceof Profile.Vee v) {
+            putIf(m, "radius", v.profileRadiusMm());
+            m.put("angle_deg", v.profileAngleDeg());
+            m.put("tilt_deg", v.tiltAngleDeg());
+        } else if (p instanceof Profile.Tee t) {
+            m.put("width", t.widthMm());
+            m.put("cross_bar_width", t.crossBarWidthMm());
+            m.put("cross_bar_depth", t.crossBarDepthMm());
+            putIf(m, "radius", t.radiusMm());
+            m.put("first_angle_deg", t.firstAngleDeg());
+            m.put("second_angle_deg", t.secondAngleDeg());
         } else if (p instanceof Profile.General g) {
             m.put("curve", g.curveEntity());
             m.put("segments", g.segments().size());

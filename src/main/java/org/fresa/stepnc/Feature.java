@@ -32,11 +32,14 @@ import org.fresa.geom.Vec3;
  * @param planarRadiusMm pocket: radius between floor and walls
  * @param orthogonalRadiusMm pocket: corner radius of the walls (about the feature z axis)
  * @param operationIds the instance names of its_operations, in file order
+ * @param slotEnds a slot's end_conditions in file order (the path's start, then its end); empty
+ *                 for other features and for a slot whose file gives none
  */
 public record Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
         OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
         Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
-        OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds) {
+        OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds,
+        List<SlotEnd> slotEnds) {
 
     public Feature {
         Objects.requireNonNull(type);
@@ -52,6 +55,49 @@ public record Feature(long instanceId, FeatureType type, String entity, String i
         Objects.requireNonNull(planarRadiusMm);
         Objects.requireNonNull(orthogonalRadiusMm);
         operationIds = List.copyOf(operationIds);
+        slotEnds = List.copyOf(slotEnds);
+    }
+
+    /** A feature without slot ends. */
+    public Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
+            OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
+            Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
+            OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds) {
+        this(instanceId, type, entity, id, placement, depthMm, depthPlane, profile, courseOfTravel, diameterMm,
+                bottomCondition, planarRadiusMm, orthogonalRadiusMm, operationIds, List.of());
+    }
+
+    /**
+     * One end of a slot (ISO 14649-10 slot_end_type).
+     *
+     * @param type which end
+     * @param entity the entity name as written
+     * @param firstRadiusMm FLAT_SLOT_END_TYPE's corner_radius1, WOODRUFF_SLOT_END_TYPE's radius
+     * @param secondRadiusMm FLAT_SLOT_END_TYPE's corner_radius2
+     */
+    public record SlotEnd(EndType type, String entity, OptionalDouble firstRadiusMm, OptionalDouble secondRadiusMm) {
+        public SlotEnd {
+            Objects.requireNonNull(type);
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(firstRadiusMm);
+            Objects.requireNonNull(secondRadiusMm);
+        }
+
+        /** The kinds of slot end. */
+        public enum EndType {
+            /** the slot runs out of the material: the tool may pass the end */
+            OPEN,
+            /** a half circle of the slot's width about the path's end */
+            RADIUSED,
+            /** a wall square to the path, its corners rounded by the two radii where given */
+            FLAT,
+            /** the slot closes on itself (a closed path) */
+            LOOP,
+            /** the end rises to the top as an arc of the radius in the path's vertical plane */
+            WOODRUFF,
+            /** an end entity the binding does not know */
+            OTHER
+        }
     }
 
     /** The feature origin in the workpiece frame, mm. */

@@ -688,7 +688,8 @@ final class Iso14649Binder {
                     f.has("diameter") ? num(f, "diameter") : OptionalDouble.empty(), bottom,
                     f.has("planar_radius") ? num(f, "planar_radius") : OptionalDouble.empty(),
                     f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
-                    refList(f, "its_operations"));
+                    refList(f, "its_operations"), f.name().equals("SLOT") && f.has("end_conditions")
+                            ? slotEnds(f) : List.of());
         }
         features.put(id, out);
         return out;
@@ -751,11 +752,48 @@ final class Iso14649Binder {
                     num(p, "first_angle"), num(p, "second_radius"), num(p, "second_angle"));
             case "ROUNDED_U_PROFILE" -> new Profile.U(p.name(), pl, required(p, "width"), OptionalDouble.empty(),
                     OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
+            case "VEE_PROFILE" -> new Profile.Vee(p.name(), pl, num(p, "profile_radius"),
+                    degrees(required(p, "profile_angle")), degrees(required(p, "tilt_angle")));
+            case "TEE_PROFILE" -> new Profile.Tee(p.name(), pl, required(p, "width"), required(p, "cross_bar_width"),
+                    required(p, "cross_bar_depth"), num(p, "radius"), degrees(required(p, "first_angle")),
+                    degrees(required(p, "second_angle")));
             case "GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE" -> general(p, pl,
                     p.name().equals("GENERAL_PROFILE") ? "its_profile" : "closed_profile_shape");
             default -> new Profile.Other(p.name(), pl, p.id());
         };
         return Optional.of(out);
+    }
+
+    /** A plane angle as the file writes it, in degrees (STEP Modeler writes radians). */
+    private double degrees(double written) {
+        return dialect == Dialect.STEP_MODELER ? Math.toDegrees(written) : written;
+    }
+
+    /** A slot's end_conditions, in file order. */
+    private List<Feature.SlotEnd> slotEnds(E f) throws StepParseException {
+        List<Feature.SlotEnd> out = new ArrayList<>();
+        for (long id : refList(f, "end_conditions")) {
+            Optional<E> k = known(id);
+            String name = k.map(E::name).orElse(typeOf(id));
+            Feature.SlotEnd.EndType type = switch (name) {
+                case "OPEN_SLOT_END_TYPE" -> Feature.SlotEnd.EndType.OPEN;
+                case "RADIUSED_SLOT_END_TYPE" -> Feature.SlotEnd.EndType.RADIUSED;
+                case "FLAT_SLOT_END_TYPE" -> Feature.SlotEnd.EndType.FLAT;
+                case "LOOP_SLOT_END_TYPE" -> Feature.SlotEnd.EndType.LOOP;
+                case "WOODRUFF_SLOT_END_TYPE" -> Feature.SlotEnd.EndType.WOODRUFF;
+                default -> Feature.SlotEnd.EndType.OTHER;
+            };
+            OptionalDouble first = OptionalDouble.empty();
+            OptionalDouble second = OptionalDouble.empty();
+            if (k.isPresent() && type == Feature.SlotEnd.EndType.FLAT) {
+                first = num(k.get(), "corner_radius1");
+                second = num(k.get(), "corner_radius2");
+            } else if (k.isPresent() && type == Feature.SlotEnd.EndType.WOODRUFF) {
+                first = num(k.get(), "radius");
+            }
+            out.add(new Feature.SlotEnd(type, name, first, second));
+        }
+        return out;
     }
 
     private Profile general(E p, Transform3 pl, String attr) throws StepParseException {

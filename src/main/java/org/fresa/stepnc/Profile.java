@@ -88,7 +88,36 @@ public sealed interface Profile {
         }
     }
 
-    /** A profile the binding does not turn into geometry (VEE_PROFILE, PARTIAL_CIRCULAR_PROFILE, ...). */
+    /**
+     * VEE_PROFILE: two straight walls meeting at the included angle, blended at the bottom by the
+     * profile radius (a sharp V without it); the tilt is the first wall's angle from the profile's
+     * x axis (across the slot), so an upright V has tilt 90 - angle / 2. Angles in degrees,
+     * converted from radians where the file's writer uses them.
+     */
+    record Vee(String entity, Transform3 placement, OptionalDouble profileRadiusMm, double profileAngleDeg,
+            double tiltAngleDeg) implements Profile {
+        public Vee {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+            Objects.requireNonNull(profileRadiusMm);
+        }
+    }
+
+    /**
+     * TEE_PROFILE: a stem of the width from the top down to a cross bar of cross_bar_width by
+     * cross_bar_depth at the bottom of the feature (the T upside down, as a T-slot is cut); the
+     * angles are those of the stem's walls with the cross bar (90 for a straight stem), in degrees.
+     */
+    record Tee(String entity, Transform3 placement, double widthMm, double crossBarWidthMm, double crossBarDepthMm,
+            OptionalDouble radiusMm, double firstAngleDeg, double secondAngleDeg) implements Profile {
+        public Tee {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+            Objects.requireNonNull(radiusMm);
+        }
+    }
+
+    /** A profile the binding does not turn into geometry (PARTIAL_CIRCULAR_PROFILE, a dovetail, ...). */
     record Other(String entity, Transform3 placement, long instanceId) implements Profile {
         public Other {
             Objects.requireNonNull(entity);

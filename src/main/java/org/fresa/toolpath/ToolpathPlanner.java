@@ -65,8 +65,9 @@ import org.fresa.stepnc.Tool;
  * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
- * <li>Slots with a square-U profile on a linear path are milled as a pocket of the rectangle
- * they sweep ({@link #slotOutline}): the tool stays inside the slot whatever its end types.
+ * <li>Slots on a linear path are milled by {@link SlotMilling}: square-U, rounded-U, vee and tee
+ * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
+ * with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Features other than planar faces, closed pockets, round holes and those slots are
  * reported and skipped.
@@ -265,7 +266,9 @@ public final class ToolpathPlanner {
             case SLOT -> {
                 Transform3 pp = slotFrame(f);
                 place = place.times(pp);
-                local = pocket(label, slotOutline(f), op, h, tooling, pp, tol, holes.choices().entry());
+                local = SlotMilling.section(label, f, tool, tooling, h, slotLength(f), axial, tol, problems,
+                        (outline, layer) -> pocket(label, outline, op, layer, tooling, pp, tol,
+                                holes.choices().entry()));
             }
             default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
                     : f.type()) + " features are not supported yet");
@@ -274,25 +277,7 @@ public final class ToolpathPlanner {
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
     }
 
-    /**
-     * A slot along a linear path with a square-U profile: the rectangle it sweeps (path length by
-     * profile width), milled as a pocket of that outline in a frame whose x runs along the path
-     * from the slot's middle, so the tool stays within the slot's volume whatever its end types.
-     */
-    static Profile slotOutline(Feature f) {
-        org.fresa.stepnc.Profile shape = f.profile()
-                .orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
-        if (!(shape instanceof org.fresa.stepnc.Profile.U u) || !shape.entity().equals("SQUARE_U_PROFILE")) {
-            throw new UnsupportedOperationException("slots with a " + shape.entity() + " are not supported yet");
-        }
-        double length = slotLength(f);
-        if (!(u.widthMm() > 0 && u.widthMm() <= MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("slot width " + u.widthMm() + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
-        }
-        return new Profile.RoundedRectangle(Vec2.ZERO, length, u.widthMm(), 0);
-    }
-
-    private static double slotLength(Feature f) {
+    static double slotLength(Feature f) {
         org.fresa.stepnc.TravelPath path = f.courseOfTravel()
                 .orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
         if (!path.entity().equals("LINEAR_PATH")) {
@@ -588,7 +573,7 @@ public final class ToolpathPlanner {
         return out;
     }
 
-    private static String mm(double v) {
+    static String mm(double v) {
         return org.fresa.model.ExactDecimal.of(Math.round(v * 1e6) / 1e6 + 0.0);
     }
 

@@ -60,11 +60,12 @@ class SlotMillingTest {
         String text = java.nio.file.Files.readString(SLOTS).replace("#28= SQUARE_U_PROFILE($,10.000,$,$,$,$);",
                 "#28= SQUARE_U_PROFILE($,8.000,$,$,$,$);").replace("#24= LINEAR_PATH($,60.000,#55);",
                 "#24= LINEAR_PATH($,60.000,#55);\n#99= VEE_PROFILE($,$,$,$);").replace("#25= SQUARE_U_PROFILE($,16.000,$,$,$,$);",
-                "#25= ROUNDED_U_PROFILE($,16.000);");
+                "#25= VEE_PROFILE($,$,90.000,55.000);");
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(
                 StepNcReader.read(new java.io.StringReader(text), "t.stp"), Tolerance.DEFAULT);
         assertEquals(0, plan.planned());
-        assertTrue(plan.problems().get(0).contains("ROUNDED_U_PROFILE are not supported yet"), plan.problems().toString());
-        assertTrue(plan.problems().get(1).contains("SLOT2"), plan.problems().toString());
+        assertTrue(plan.problems().get(0).contains("the vee leans by 10 deg"), plan.problems().toString());
+        assertTrue(plan.problems().get(1).contains("SLOT2") && plan.problems().get(1).contains(
+                "the tool (10 mm) is wider than the slot (8 mm)"), plan.problems().toString());
     }
 }

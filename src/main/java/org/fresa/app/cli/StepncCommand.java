@@ -1,6 +1,7 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.fresa.job.StepNcService;
 import org.fresa.stepnc.StepNcProgram;
@@ -29,10 +30,12 @@ final class StepncCommand implements Callable<Integer> {
         java.io.PrintWriter out = spec.commandLine().getOut();
         return CliSupport.run(out, spec.commandLine().getErr(), json, progress -> {
             StepNcProgram program = StepNcService.read(file, progress);
+            List<StepNcService.NotPlanned> notPlanned = StepNcService.notPlanned(program);
             if (!json) {
                 out.print(StepNcService.prose(program));
+                out.print(StepNcService.notPlannedProse(notPlanned));
             }
-            return StepNcService.describe(program);
+            return StepNcService.describe(program, notPlanned);
         });
     }
 }

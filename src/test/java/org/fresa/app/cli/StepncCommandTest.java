@@ -59,4 +59,19 @@ class StepncCommandTest {
         assertFalse(r.err().contains("Exception"), r.err());
         assertFalse(r.err().contains("\tat "), r.err());
     }
+
+    @Test
+    void everyWorkingstepThePlannerLeavesOutIsListedWithItsReason(@TempDir Path dir) throws Exception {
+        String text = Files.readString(Path.of("src/test/resources/stepnc/slots-profiles.stp"), StandardCharsets.UTF_8);
+        Path file = dir.resolve("woodruff.stp");
+        Files.writeString(file, text.replace("#37= FLAT_SLOT_END_TYPE(6.000,4.000);", "#37= LOOP_SLOT_END_TYPE();"));
+        Run prose = fresa("stepnc", file.toString());
+        assertEquals(0, prose.status(), prose.err());
+        assertTrue(prose.out().contains("1 workingstep not planned:\n  #15 'WS SQUARE U ENDS': loop slot ends are not"
+                + " machined"), prose.out());
+        Run json = fresa("stepnc", file.toString(), "--json");
+        assertTrue(json.out().contains("\"not_planned\":[{\"id\":\"WS SQUARE U ENDS\",\"instance\":15,\"reason\":"
+                + "\"loop slot ends are not machined"), json.out());
+        assertFalse(fresa("stepnc", "src/test/resources/stepnc/slots-profiles.stp").out().contains("not planned"));
+    }
 }

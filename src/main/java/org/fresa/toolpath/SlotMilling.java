@@ -1,0 +1,396 @@
+package org.fresa.toolpath;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.DoubleUnaryOperator;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.ToolpathSection;
+import org.fresa.stepnc.Feature;
+import org.fresa.stepnc.Feature.SlotEnd;
+import org.fresa.stepnc.Feature.SlotEnd.EndType;
+import org.fresa.stepnc.Tool;
+
+/**
+ * Slots on a linear path (ISO 14649-10 slot), in the slot frame: x along the path from its
+ * middle, z the feature axis, the top at z 0 and the floor at minus the feature depth.
+ *
+ * <p>What each profile becomes:
+ * <ul>
+ * <li>square-U: the outline the path sweeps, cleared as a pocket in layers of the axial depth;
+ * <li>rounded-U (walls down to a half circle of the width) and vee (two walls at the included
+ * angle, blended by the profile radius): the straight part as a square-U, then thin layers whose
+ * outline is as wide as the cutter may reach at that depth without leaving the profile (a ball
+ * end mill as wide as the slot follows the middle down to the bottom; a flat or bull-nose cutter
+ * leaves steps and stops where its corner meets the walls);
+ * <li>tee: with an end mill, the stem (a square-U of the stem width, to the full depth); with a
+ * T_SLOT_MILL, the cross bar in one pass along the middle at the floor, the cutter entering and
+ * leaving past an open end, where it cuts air;
+ * <li>dovetail, and profiles or ends the planner cannot follow: refused with the reason.
+ * </ul>
+ * Ends, read as the profile turned about the vertical through the path's end: radiused ends are
+ * half circles of each layer's width about the path's ends; flat ends are square to the path,
+ * their corners rounded by corner_radius1 (the side left of the path) and corner_radius2; open
+ * ends are cut square at the path's end like flat ones: the tool stays within the path's length.
+ * Woodruff and loop ends are refused.
+ */
+final class SlotMilling {
+
+    /** Height of a layer where a rounded-U or vee profile narrows (mm): the steps a flat cutter leaves. */
+    static final double SHAPED_LAYER_MM = 1.0;
+    /** How far past an open end a T-slot mill goes down and comes back up, beyond its radius (mm). */
+    static final double OPEN_END_CLEARANCE_MM = 2.0;
+    /** Below this room beside the cutter (mm), a layer of mixed ends is cut along the middle only. */
+    static final double CENTRE_ONLY_MM = 0.01;
+    /** An arc of a smaller radius (mm) is a point: cut as a straight move to its end. */
+    static final double NO_RADIUS_MM = 1e-4;
+    /** Largest angle a tee's stem wall may differ from square to the cross bar (deg). */
+    static final double SQUARE_TOLERANCE_DEG = 0.01;
+
+    /** Mills one layer outline from a top height down to a bottom height (mm), in the slot frame. */
+    interface PocketCutter {
+        ToolpathSection cut(Profile outline, Heights heights);
+    }
+
+    private SlotMilling() {
+    }
+
+    /**
+     * The moves of a slot in its frame.
+     *
+     * @param lengthMm the path's length
+     * @param pocket mills an outline as a pocket with the operation's strategy and entry rules
+     * @throws UnsupportedOperationException with the reason when the slot cannot be machined with this tool
+     */
+    static ToolpathSection section(String label, Feature f, Tool tool, Tooling t, Heights h, double lengthMm,
+            double axialMm, Tolerance tol, List<String> problems, PocketCutter pocket) {
+        org.fresa.stepnc.Profile shape = f.profile()
+                .orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
+        List<SlotEnd> ends = f.slotEnds();
+        for (SlotEnd e : ends) {
+            switch (e.type()) {
+                case WOODRUFF -> throw new UnsupportedOperationException("woodruff slot ends are not machined: the end"
+                        + " rises to the top as an arc along the path, which a cutter along the feature axis cannot follow");
+                case LOOP -> throw new UnsupportedOperationException("loop slot ends are not machined: a loop needs a"
+                        + " closed course of travel, and the path is " + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
+                case OTHER -> throw new UnsupportedOperationException("slot end " + e.entity() + " is not known");
+                default -> {
+                }
+            }
+        }
+        double depth = -h.bottomZ();
+        double r = t.radiusMm();
+        double d = t.diameterMm();
+        if (shape.entity().contains("DOVETAIL")) {
+            throw new UnsupportedOperationException(tool.body().contains("DOVETAIL")
+                    ? "dovetail slots are not machined: ISO 14649-10 gives the dovetail no profile the planner can read"
+                    : "a dovetail slot needs a DOVETAIL_MILL; the tool is a " + tool.body());
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
+            double w = checkedWidth(u.widthMm(), d, tol);
+            return straight(label, lengthMm, w / 2, ends, h, t, tol, pocket);
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.U u) {
+            double w = checkedWidth(u.widthMm(), d, tol);
+            double big = w / 2;
+            double e = cornerRadius(tool, r);
+            double zc = -depth + big;
+            if (e > big + tol.linear() || big - e < -tol.linear()) {
+                throw new UnsupportedOperationException("the cutter's corner radius " + e + " mm is larger than the"
+                        + " rounded-U's radius " + big + " mm");
+            }
+            double re = Math.max(big - e, 0);
+            double ce = Math.max(r - e, 0);
+            double floor = Math.max(zc - e - Math.sqrt(Math.max(re * re - ce * ce, 0)), -depth);
+            DoubleUnaryOperator reach = z -> z + e >= zc ? big - r
+                    : Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
+            if (floor > -depth + tol.linear()) {
+                problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter reaches " + mm(-floor)
+                        + " mm of the rounded-U's " + mm(depth) + " mm; a ball end mill as wide as the slot reaches the bottom");
+            }
+            return shaped(label, lengthMm, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.Vee v) {
+            double angle = v.profileAngleDeg();
+            if (!(angle > 0 && angle < 180)) {
+                throw new IllegalArgumentException("vee profile_angle " + angle + " deg is outside 0 to 180 deg");
+            }
+            // tilt_angle is the first wall's angle from the profile's x axis, across the slot: the
+            // V stands upright when its bisector is square to it (GRIMA's 90 deg vee has 45)
+            double lean = v.tiltAngleDeg() + angle / 2 - 90;
+            if (Math.abs(lean) > SQUARE_TOLERANCE_DEG) {
+                throw new UnsupportedOperationException("the vee leans by " + mm(lean) + " deg (tilt_angle "
+                        + mm(v.tiltAngleDeg()) + " deg for a " + mm(angle) + " deg vee): the layers follow upright vees only");
+            }
+            double a = Math.toRadians(angle / 2);
+            double rho = Math.max(v.profileRadiusMm().orElse(0), 0);
+            double zc = -depth + rho;
+            double zApex = zc - rho / Math.sin(a);
+            double zTangent = zc - rho * Math.sin(a);
+            DoubleUnaryOperator half = z -> z >= zTangent ? (z - zApex) * Math.tan(a)
+                    : Math.sqrt(Math.max(rho * rho - (z - zc) * (z - zc), 0));
+            if (half.applyAsDouble(0) < r - tol.linear()) {
+                throw new UnsupportedOperationException("the tool (" + mm(d) + " mm) is wider than the vee at its top ("
+                        + mm(2 * half.applyAsDouble(0)) + " mm)");
+            }
+            double floor = r >= rho * Math.cos(a) ? zApex + r / Math.tan(a) : zc - Math.sqrt(rho * rho - r * r);
+            floor = Math.max(floor, -depth);
+            problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter follows the vee in "
+                    + mm(SHAPED_LAYER_MM) + " mm steps down to " + mm(-floor) + " mm of its " + mm(depth) + " mm");
+            return shaped(label, lengthMm, 0, floor, z -> half.applyAsDouble(z) - r, r, ends, h, t, axialMm, tol,
+                    pocket);
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.Tee tee) {
+            if (Math.abs(tee.firstAngleDeg() - 90) > SQUARE_TOLERANCE_DEG
+                    || Math.abs(tee.secondAngleDeg() - 90) > SQUARE_TOLERANCE_DEG) {
+                throw new UnsupportedOperationException("the tee's stem walls meet the cross bar at " + mm(tee.firstAngleDeg())
+                        + " and " + mm(tee.secondAngleDeg()) + " deg: only a square stem is machined");
+            }
+            if (!(tee.crossBarDepthMm() > 0 && tee.crossBarDepthMm() < depth && tee.crossBarWidthMm() > tee.widthMm())) {
+                throw new IllegalArgumentException("the tee's cross bar (" + mm(tee.crossBarWidthMm()) + " by "
+                        + mm(tee.crossBarDepthMm()) + " mm) does not fit under its " + mm(tee.widthMm())
+                        + " mm stem in the slot's depth " + mm(depth) + " mm");
+            }
+            if (tool.body().equals("T_SLOT_MILL")) {
+                return crossBar(label, lengthMm, tee, ends, tool, h, t, tol);
+            }
+            double w = checkedWidth(tee.widthMm(), d, tol);
+            problems.add("workingstep '" + label + "': the " + tool.body() + " mills the tee's stem; its cross bar"
+                    + " needs a T_SLOT_MILL");
+            return straight(label, lengthMm, w / 2, ends, h, t, tol, pocket);
+        }
+        throw new UnsupportedOperationException("slots with a " + shape.entity() + " are not supported yet");
+    }
+
+    private static double checkedWidth(double widthMm, double d, Tolerance tol) {
+        if (!(widthMm > 0 && widthMm <= ToolpathPlanner.MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("slot width " + widthMm + " mm is outside 0 to "
+                    + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+        }
+        if (d > widthMm + tol.linear()) {
+            throw new UnsupportedOperationException("the tool (" + mm(d) + " mm) is wider than the slot ("
+                    + mm(widthMm) + " mm)");
+        }
+        return widthMm;
+    }
+
+    /** The cutter's corner radius: a ball end mill's is its radius. */
+    private static double cornerRadius(Tool tool, double r) {
+        if (tool.body().equals("BALL_ENDMILL")) {
+            return r;
+        }
+        double e = tool.edgeRadiusMm().orElse(0);
+        return e > 0 ? Math.min(e, r) : 0;
+    }
+
+    private static ToolpathSection straight(String label, double length, double halfWidth, List<SlotEnd> ends,
+            Heights h, Tooling t, Tolerance tol, PocketCutter pocket) {
+        return join(label, List.of(pocket.cut(outline(length, halfWidth, t.radiusMm(), ends, tol), h)));
+    }
+
+    /**
+     * The straight-walled part down to zStraight as a square-U, then layers down to the floor,
+     * each as wide as the cutter may reach there.
+     *
+     * @param reach how far the cutter's centre may go from the middle with its tip at z (mm)
+     */
+    private static ToolpathSection shaped(String label, double length, double zStraight, double floor,
+            DoubleUnaryOperator reach, double r, List<SlotEnd> ends, Heights h, Tooling t, double axialMm,
+            Tolerance tol, PocketCutter pocket) {
+        List<ToolpathSection> parts = new ArrayList<>();
+        double top = h.topZ();
+        if (zStraight < top - tol.linear()) {
+            double z = Math.max(zStraight, floor);
+            parts.add(pocket.cut(outline(length, Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
+                    new Heights(h.clearanceZ(), h.retractZ(), top, z)));
+            top = z;
+        }
+        double step = axialMm > 0 ? Math.min(axialMm, SHAPED_LAYER_MM) : SHAPED_LAYER_MM;
+        if (top - floor > tol.linear()) {
+            int n = (int) Math.ceil((top - floor) / step - 1e-9);
+            double prev = top;
+            for (int i = 1; i <= n; i++) {
+                double z = i == n ? floor : top - (top - floor) * i / n;
+                double half = Math.max(reach.applyAsDouble(z), 0) + r;
+                parts.add(pocket.cut(outline(length, half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+                prev = z;
+            }
+        }
+        return join(label, parts);
+    }
+
+    /** One section of the parts in order, the tool going from the end of each to the start of the next at clearance. */
+    private static ToolpathSection join(String label, List<ToolpathSection> parts) {
+        List<Move> moves = new ArrayList<>();
+        ToolpathSection first = parts.get(0);
+        Vec3 at = first.start();
+        for (int i = 0; i < parts.size(); i++) {
+            ToolpathSection s = parts.get(i);
+            if (i > 0) {
+                moves.add(new Move.Rapid(s.start()));
+            }
+            for (Move m : s.moves()) {
+                // the loops of a layer narrowed to the cutter's width close on arcs of no radius,
+                // which go nowhere and which a control refuses
+                if (m instanceof Move.Circular c && c.center().distance(at) < NO_RADIUS_MM) {
+                    moves.add(new Move.Linear(c.end(), c.feedMmPerMin()));
+                    at = m.end();
+                    continue;
+                }
+                moves.add(m);
+                at = m.end();
+            }
+        }
+        return new ToolpathSection(label, first.toolAxis(), first.toolDiameterMm(), first.toolNumber(),
+                first.spindleRpm(), first.start(), moves);
+    }
+
+    /**
+     * The outline the tool may sweep at one height: the path's length by twice the half width,
+     * its ends radiused (half circles of the half width), flat with their corner radii, or square.
+     */
+    static Profile outline(double length, double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol) {
+        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+        double half = length / 2;
+        if (isSquare(start) && isSquare(end)) {
+            // the outline the square-U slots were always milled to
+            return new Profile.RoundedRectangle(Vec2.ZERO, length, 2 * halfWidth, 0);
+        }
+        if (isRadiused(start) && isRadiused(end)) {
+            return new Profile.RoundedRectangle(Vec2.ZERO, length + 2 * halfWidth, 2 * halfWidth, halfWidth);
+        }
+        if (halfWidth - toolRadius < CENTRE_ONLY_MM) {
+            // the cutter fits only along the middle: a strip as wide as the cutter whose ends
+            // keep its centre within each end's reach (a radiused end's centre, a flat end less
+            // the radius), which the cutter's disc sweeps without leaving the outline
+            double x0 = isRadiused(start) ? -half : -half + toolRadius;
+            double x1 = isRadiused(end) ? half : half - toolRadius;
+            return new Profile.RoundedRectangle(new Vec2((x0 + x1) / 2, 0), x1 - x0 + 2 * toolRadius,
+                    2 * toolRadius, 0);
+        }
+        List<Curve2> cs = new ArrayList<>();
+        Vec2 at = new Vec2(-half, -halfWidth);
+        at = cap(cs, at, new Vec2(half, 0), new Vec2(1, 0), halfWidth, end, tol);
+        cs.add(new Segment2(at, new Vec2(-half, halfWidth)));
+        at = new Vec2(-half, halfWidth);
+        at = cap(cs, at, new Vec2(-half, 0), new Vec2(-1, 0), halfWidth, start, tol);
+        if (at.distance(new Vec2(-half, -halfWidth)) > 1e-12) {
+            cs.add(new Segment2(at, new Vec2(-half, -halfWidth)));
+        }
+        return new Profile.General(Contour.of(cs, Tolerance.DRAWING), ContourOffsetter.EXACT);
+    }
+
+    private static boolean isSquare(SlotEnd e) {
+        return e == null || e.type() == EndType.OPEN
+                || e.type() == EndType.FLAT && !(e.firstRadiusMm().orElse(0) > 0) && !(e.secondRadiusMm().orElse(0) > 0);
+    }
+
+    private static boolean isRadiused(SlotEnd e) {
+        return e != null && e.type() == EndType.RADIUSED;
+    }
+
+    /**
+     * Adds, counter-clockwise from the point along the right-hand wall, the wall up to the end and
+     * the end itself about the path's end point c (u: the outward direction along the path).
+     *
+     * @return the point where the left-hand wall starts back
+     */
+    private static Vec2 cap(List<Curve2> cs, Vec2 from, Vec2 c, Vec2 u, double hw, SlotEnd e, Tolerance tol) {
+        Vec2 n = new Vec2(-u.y(), u.x()); // to the left of the outward direction
+        Vec2 right = c.minus(n.times(hw));
+        Vec2 left = c.plus(n.times(hw));
+        if (isRadiused(e)) {
+            if (from.distance(right) > 1e-12) {
+                cs.add(new Segment2(from, right));
+            }
+            cs.add(new Arc2(c, right, left, true));
+            return left;
+        }
+        // outward along the path, the right-hand corner is the path's left side when coming back: radius 2 then 1
+        double rRight = isSquare(e) ? 0 : Math.min(Math.max(u.x() > 0 ? e.secondRadiusMm().orElse(0)
+                : e.firstRadiusMm().orElse(0), 0), hw);
+        double rLeft = isSquare(e) ? 0 : Math.min(Math.max(u.x() > 0 ? e.firstRadiusMm().orElse(0)
+                : e.secondRadiusMm().orElse(0), 0), hw);
+        Vec2 a = right.minus(u.times(rRight));
+        if (from.distance(a) > 1e-12) {
+            cs.add(new Segment2(from, a));
+        }
+        Vec2 b = right.plus(n.times(rRight));
+        if (rRight > 0) {
+            cs.add(new Arc2(a.plus(n.times(rRight)), a, b, true));
+        }
+        Vec2 c2 = left.minus(n.times(rLeft));
+        if (b.distance(c2) > 1e-12) {
+            cs.add(new Segment2(b, c2));
+        }
+        Vec2 d2 = left.minus(u.times(rLeft));
+        if (rLeft > 0) {
+            cs.add(new Arc2(c2.minus(u.times(rLeft)), c2, d2, true));
+        }
+        return d2;
+    }
+
+    /**
+     * The tee's cross bar with a T-slot mill: down past an open end where the cutter cuts air,
+     * along the middle at the floor to the other end (past it when open, the cutter's radius short
+     * of a flat end, to a radiused end's centre), and back out the same way.
+     */
+    private static ToolpathSection crossBar(String label, double length, org.fresa.stepnc.Profile.Tee tee,
+            List<SlotEnd> ends, Tool tool, Heights h, Tooling t, Tolerance tol) {
+        double r = t.radiusMm();
+        if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
+                    + " cross bar (" + mm(tee.crossBarWidthMm()) + " mm)");
+        }
+        if (t.diameterMm() < tee.widthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
+                    + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
+        }
+        double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
+        if (edge < tee.crossBarDepthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill's cutting edge (" + mm(edge) + " mm) is shorter"
+                    + " than the cross bar (" + mm(tee.crossBarDepthMm()) + " mm)");
+        }
+        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+        boolean startOpen = start != null && start.type() == EndType.OPEN;
+        boolean endOpen = end != null && end.type() == EndType.OPEN;
+        if (!startOpen && !endOpen) {
+            throw new UnsupportedOperationException("a T_SLOT_MILL enters the cross bar from an open end; the slot has"
+                    + " none");
+        }
+        double sign = startOpen ? -1 : 1; // the side the cutter enters from
+        SlotEnd far = startOpen ? end : start;
+        double half = length / 2;
+        double outside = sign * (half + r + OPEN_END_CLEARANCE_MM);
+        double reach;
+        if (far != null && far.type() == EndType.OPEN) {
+            reach = -outside;
+        } else if (far != null && far.type() == EndType.RADIUSED) {
+            reach = -sign * half;
+        } else {
+            reach = -sign * (half - r);
+        }
+        double z = h.bottomZ();
+        MoveBuilder b = new MoveBuilder(new Vec3(outside, 0, h.clearanceZ()));
+        b.rapid(new Vec3(outside, 0, h.retractZ()));
+        b.feed(new Vec3(outside, 0, z), t.plungeFeedMmPerMin());
+        b.feed(new Vec3(reach, 0, z), t.feedMmPerMin());
+        b.feed(new Vec3(outside, 0, z), t.feedMmPerMin());
+        b.rapid(new Vec3(outside, 0, h.retractZ()));
+        b.rapid(new Vec3(outside, 0, h.clearanceZ()));
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
+                new Vec3(outside, 0, h.clearanceZ()), b.moves());
+    }
+
+    private static String mm(double v) {
+        return ToolpathPlanner.mm(v);
+    }
+}
