@@ -164,9 +164,11 @@ public final class CuttingViewModel {
         return Optional.ofNullable(drawing);
     }
 
+    /** A new drawing: its contours are not the old one's, so the cut order is the automatic one again. */
     public void setDrawing(Path p) {
         drawing = p;
         result = null;
+        cutOrder = org.fresa.cutting.CutOrderOverride.NONE;
     }
 
     public void setKerfMm(String v) {
