@@ -143,6 +143,31 @@ class CutOrderOverrideTest {
         assertEquals(List.of("part 2 hole 1", "part 2", "part 1 hole 1", "part 1"), labels(r.plan()));
         CuttingService.check(r, "program.ngc");
         assertTrue(r.program().contains("X75.000 Y31.000") || r.program().contains("X75 Y31"), r.program());
+        // and LinuxCNC's interpreter runs it
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
+        Path ngc = dir.resolve("program.ngc");
+        Files.writeString(ngc, r.program());
+        org.fresa.post.Rs274.Result run = org.fresa.post.Rs274.run(ngc, 0);
+        assertEquals(0, run.exitStatus(), () -> org.fresa.post.Rs274.log(run));
+    }
+
+    @Test
+    void aJobWhoseOrderCutsAPartBeforeItsHoleExitsTwoNamingBoth(@TempDir Path dir) throws Exception {
+        Path dxf = dir.resolve("plate.dxf");
+        Files.writeString(dxf, org.fresa.dxf.DxfWriter.write(List.of(new Contour(CutPlannerTest.rect(0, 0, 40, 30)),
+                new Contour(CutPlannerTest.rect(10, 10, 10, 10))), "0"));
+        Path job = dir.resolve("job.xml");
+        org.fresa.job.JobXml.write(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT).withCutting(new CuttingSettings(dxf,
+                2, CutProcess.PLASMA, 3, 1, LeadShape.ARC, 0.05, org.fresa.dxf.DrawingUnits.MM, false,
+                org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC).withCutOrder(new CutOrderOverride(List.of(
+                        at("part 1", 40, 15), at("part 1 hole 1", 10, 15))))), job);
+        java.io.StringWriter err = new java.io.StringWriter();
+        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true), "run", job.toString(), "--out", dir.resolve("out").toString());
+        assertEquals(2, status, err.toString());
+        assertTrue(err.toString().contains("cuts part 1 (40.000 x 30.000 mm at 0.000, 0.000) (cut 1) before part 1 hole 1")
+                && !err.toString().contains("\tat "), err.toString());
+        assertTrue(!Files.exists(dir.resolve("out").resolve("program.ngc")), "no program written");
     }
 
     static CutPath cut(CutPlan p, String label) {
