@@ -83,6 +83,8 @@ final class CuttingTab implements ModuleTab {
     private final JButton resetOrder = new JButton("Reset order");
     // the row to select once the cut after an edit of the list is shown
     private int selectAfterCut = -1;
+    // the order the list shows was cut with: an edit waits until the list shows the job's order
+    private org.fresa.cutting.CutOrderOverride listed;
     private final JLabel status = new JLabel(" ");
     // set while the fields are filled from the job, so their listeners do not write it back
     private boolean filling;
@@ -409,6 +411,7 @@ final class CuttingTab implements ModuleTab {
                 return;
             }
             say(" ");
+            listed = s.cutOrder();
             vm.setResult(shown.result());
             plot.show(shown.scene());
             program.setDocument(shown.program());
@@ -537,8 +540,23 @@ final class CuttingTab implements ModuleTab {
         start.setText(i >= 0 && i < rows.size() ? rows.get(i).start() : "");
     }
 
+    /**
+     * True when the list shows the cut of the job's order; else says so (an edit is being cut, or
+     * its cut was cancelled) and the edit waits: it would start from a list the job has left.
+     */
+    private boolean listCurrent() {
+        if (vm.result().isPresent() && !vm.cutOrder().equals(listed)) {
+            say("The list is not yet cut with the last edit: wait for the cut, or press Cut.");
+            return false;
+        }
+        return true;
+    }
+
     /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
     private void move(int delta) {
+        if (!listCurrent()) {
+            return;
+        }
         int i = order.getSelectedRow();
         if (i < 0) {
             say("Select a cut in the list first.");
@@ -553,6 +571,9 @@ final class CuttingTab implements ModuleTab {
     }
 
     private void typedStart() {
+        if (!listCurrent()) {
+            return;
+        }
         int i = order.getSelectedRow();
         if (i < 0) {
             say("Select a cut in the list first.");
@@ -573,6 +594,9 @@ final class CuttingTab implements ModuleTab {
 
     /** Shift+click in the plot: the nearest cut starts at the point of its path nearest the click. */
     private void pickStart(org.fresa.geom.Vec2 at) {
+        if (!listCurrent()) {
+            return;
+        }
         int i = vm.cutNearest(at);
         if (i < 0) {
             return;
