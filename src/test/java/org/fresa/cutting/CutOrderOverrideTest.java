@@ -120,6 +120,24 @@ class CutOrderOverrideTest {
     }
 
     @Test
+    void aHoleBeforeThePartInsideItIsRefusedAndAnUnnamedInnerCutComesBeforeItsNamedOuter() {
+        // a frame (part 1) whose window (part 1 hole 1) holds a small plate (part 2)
+        List<Curve2> l = new ArrayList<>(CutPlannerTest.rect(0, 0, 100, 100));
+        l.addAll(CutPlannerTest.rect(20, 20, 60, 60));
+        l.addAll(CutPlannerTest.rect(40, 40, 20, 20));
+        Map<String, List<Curve2>> d = Map.of("0", l);
+        CuttingOptions o = CutPlannerTest.plasma(2);
+        assertEquals(List.of("part 2", "part 1 hole 1", "part 1"), labels(CutPlanner.plan(d, o)));
+        CutOrderOverride.Refused e = assertThrows(CutOrderOverride.Refused.class, () -> CutPlanner.plan(d, o,
+                new CutOrderOverride(List.of(at("part 1 hole 1", 20, 50), at("part 2", 40, 50))), (f, s) -> { }));
+        assertTrue(e.getMessage().startsWith("the cut order cuts part 1 hole 1 (60.000 x 60.000 mm at 20.000, 20.000)"
+                + " (cut 1) before part 2"), e.getMessage());
+        // only the frame named: the window and the plate in it still come first, plate before window
+        assertEquals(List.of("part 2", "part 1 hole 1", "part 1"), labels(CutPlanner.plan(d, o,
+                new CutOrderOverride(List.of(at("part 1", 100, 50))), (f, s) -> { })));
+    }
+
+    @Test
     void aContourNotInTheDrawingIsWarnedAboutAndIgnored() {
         CutPlan p = plan(new CutOrderOverride(List.of(at("part 9", 500, 500), at("part 2", 90, 12))));
         assertEquals(List.of("part 2 hole 1", "part 2", "part 1 hole 1", "part 1"), labels(p));
