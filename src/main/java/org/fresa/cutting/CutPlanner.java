@@ -79,6 +79,17 @@ public final class CutPlanner {
 
     /** Plans as {@link #plan(Map, CuttingOptions)}, telling how far it is (a big sheet takes a while). */
     public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o, Progress progress) {
+        return plan(layers, o, CutOrderOverride.NONE, progress);
+    }
+
+    /**
+     * Plans as {@link #plan(Map, CuttingOptions, Progress)}, then lays the planner's own order and
+     * start points over the automatic ones ({@link CutOrderOverride}).
+     *
+     * @throws CutOrderOverride.Refused when the override cuts a contour before one inside it
+     */
+    public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o, CutOrderOverride override,
+            Progress progress) {
         progress.at(0, "chaining the drawing into contours");
         List<String> warnings = new ArrayList<>();
         List<Contour> closed = new ArrayList<>();
@@ -226,10 +237,15 @@ public final class CutPlanner {
                 n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
             }
         }
+        List<Asked> asked = resolve(override, nodes, warnings);
+        java.util.Set<String> pinned = startsAsked(asked, o, half, grid, warnings);
         progress.at(0.5, "looking for contours that cross");
         crossings(nodes, warnings);
         progress.at(0.55, "ordering the pierces");
-        List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes);
+        List<CutPath> order = o.paperMode() ? paperOrder(nodes) : order(nodes, pinned);
+        if (!override.isEmpty()) {
+            order = overridden(order, asked, nodes, o, pinned, warnings);
+        }
         progress.at(0.75, "routing the rapids around cut parts");
         List<List<Vec2>> rapids = rapids(order, o, warnings);
         progress.at(0.95, "making the toolpath");
@@ -431,10 +447,19 @@ public final class CutPlanner {
 
     private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
             CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp) {
+        return withLeads(label, outer, part, path, scrapLeft, o, half, grid, warnings, comp, null);
+    }
+
+    /**
+     * The cut with its leads at the first candidate (curve index, fraction) where they fit; with
+     * {@code forced} candidates, null when no lead fits at any of them.
+     */
+    private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
+            CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp, List<double[]> forced) {
         double leadIn = comp != 0 ? Math.max(o.leadInMm(), half * 1.5 + 0.1) : o.leadInMm();
         boolean arcs = o.arcLeads() && comp == 0;
         double clearance = Math.max(0, half - 1e-6);
-        List<double[]> candidates = candidates(path);
+        List<double[]> candidates = forced != null ? forced : candidates(path);
         for (double[] cand : candidates) {
             for (double scale : new double[] {1, 0.5, 0.25}) {
                 double len = leadIn * scale;
@@ -460,6 +485,9 @@ public final class CutPlanner {
                 List<Curve2> tail = tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer);
                 return new CutPath(label, outer, part, started, in, tail, comp);
             }
+        }
+        if (forced != null && (leadIn > 0 || comp != 0)) {
+            return null;
         }
         Contour started = startAt(path, (int) candidates.get(0)[0], candidates.get(0)[1]);
         if (leadIn > 0 && comp == 0) {
@@ -628,7 +656,7 @@ public final class CutPlanner {
      * The cuts in the order of {@link CutOrder}: every cut inside a contour (its holes, the parts
      * in a hole) before the contour's own cut.
      */
-    private static List<CutPath> order(List<Node> nodes) {
+    private static List<CutPath> order(List<Node> nodes, java.util.Set<String> pinned) {
         List<CutPath> cuts = new ArrayList<>();
         Map<Node, int[]> ids = new java.util.IdentityHashMap<>();
         for (Node n : nodes) {
@@ -706,7 +734,8 @@ public final class CutPlanner {
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
         }
-        return withStartPoints(cuts, seq, before, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()));
+        return withStartPoints(cuts, seq, before, Math.min(ORDER_BUDGET_NANOS, 500_000_000L + 20_000L * cuts.size()),
+                pinned);
     }
 
     /**
@@ -717,13 +746,14 @@ public final class CutPlanner {
      * nearest point of the nearest cut whose inner cuts are done. So the travel is never longer
      * than that tour's.
      */
-    private static List<CutPath> withStartPoints(List<CutPath> cuts, int[] seq, List<int[]> before, long budgetNanos) {
+    private static List<CutPath> withStartPoints(List<CutPath> cuts, int[] seq, List<int[]> before, long budgetNanos,
+            java.util.Set<String> pinned) {
         int n = cuts.size();
         boolean[] free = new boolean[n];
         boolean any = false;
         for (int i = 0; i < n; i++) {
             CutPath c = cuts.get(i);
-            free[i] = c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0;
+            free[i] = c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0 && !pinned.contains(c.label());
             any |= free[i];
         }
         if (!any) {
@@ -845,6 +875,216 @@ public final class CutPlanner {
             }
         }
         return seq;
+    }
+
+    // ------------------------------------------------------------------ the planner's own order
+
+    /** A cut of the override and the contour it names. */
+    private record Asked(CutOrderOverride.Cut cut, Node node) {
+    }
+
+    /**
+     * The contours the override names, in its order: each the contour whose drawn outline passes
+     * nearest its point, within {@link CutOrderOverride#MATCH_MM}. A point on no contour is warned
+     * about and left out.
+     */
+    private static List<Asked> resolve(CutOrderOverride override, List<Node> nodes, List<String> warnings) {
+        List<Asked> out = new ArrayList<>();
+        if (override.isEmpty() || nodes.isEmpty()) {
+            for (CutOrderOverride.Cut c : override.cuts()) {
+                warnings.add("cut order: no contour of the drawing passes through " + c.named() + ": ignored");
+            }
+            return out;
+        }
+        double sizes = 0;
+        for (Node n : nodes) {
+            sizes += Math.max(n.box.width(), n.box.height());
+        }
+        double m = CutOrderOverride.MATCH_MM;
+        // cells at least twice the match distance: the cells around a point's hold every contour near enough
+        BoxGrid grid = new BoxGrid(Math.max(2 * m, sizes / nodes.size()));
+        for (int i = 0; i < nodes.size(); i++) {
+            grid.add(i, nodes.get(i).box);
+        }
+        for (CutOrderOverride.Cut c : override.cuts()) {
+            Vec2 p = c.atMm();
+            Node best = null;
+            double bestD = Double.POSITIVE_INFINITY;
+            for (int i : grid.along(p, p)) {
+                Node n = nodes.get(i);
+                double d = n.contour.distanceTo(p);
+                if (d <= m && d < bestD) {
+                    best = n;
+                    bestD = d;
+                }
+            }
+            if (best == null) {
+                warnings.add("cut order: no contour of the drawing passes through " + c.named() + ": ignored");
+            } else {
+                out.add(new Asked(c, best));
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Starts the cuts the override gives a start point where it says: at the point of the tool
+     * path nearest it, the leads (if any) placed there. Where no lead fits, the automatic start
+     * stays and a warning says so. Returns the labels of the cuts so started, which the automatic
+     * order must not move.
+     */
+    private static java.util.Set<String> startsAsked(List<Asked> asked, CuttingOptions o, double half, CurveGrid grid,
+            List<String> warnings) {
+        java.util.Set<String> pinned = new java.util.HashSet<>();
+        for (Asked a : asked) {
+            if (a.cut().startMm().isEmpty() || a.node().cuts.isEmpty()) {
+                continue;
+            }
+            Vec2 want = a.cut().startMm().get();
+            List<CutPath> cuts = a.node().cuts;
+            int k = 0;
+            for (int i = 1; i < cuts.size(); i++) {
+                if (cuts.get(i).label().equals(a.cut().contour())
+                        || cuts.get(i).path().distanceTo(want) < cuts.get(k).path().distanceTo(want)
+                        && !cuts.get(k).label().equals(a.cut().contour())) {
+                    k = i;
+                }
+            }
+            CutPath c = cuts.get(k);
+            if (pinned.contains(c.label())) {
+                continue;
+            }
+            CutPath s = startedAt(c, want, o, half, grid, warnings);
+            if (s == null) {
+                warnings.add(String.format(Locale.ROOT, "cut order: no room for a lead at the start (%.3f, %.3f) asked for"
+                        + " %s: started where the planner chose", want.x(), want.y(), c.label()));
+                continue;
+            }
+            cuts.set(k, s);
+            pinned.add(c.label());
+        }
+        return pinned;
+    }
+
+    /** The cut started at the point of its path nearest p, its leads there; null when they do not fit. */
+    private static CutPath startedAt(CutPath c, Vec2 p, CuttingOptions o, double half, CurveGrid grid,
+            List<String> warnings) {
+        PathPoints.OnPath at = PathPoints.nearest(c.path(), p);
+        if (o.paperMode()) {
+            return restarted(c, at);
+        }
+        Curve2 e = c.path().get(at.index());
+        double[] cand = {at.index(), at.fraction()};
+        if (at.fraction() * e.length() < 1e-4) {
+            cand = new double[] {at.index(), 0};
+        } else if ((1 - at.fraction()) * e.length() < 1e-4) {
+            cand = new double[] {(at.index() + 1) % c.path().size(), 0};
+        }
+        boolean scrapLeft = c.outer() ? !c.path().isCcw() : c.path().isCcw();
+        return withLeads(c.label(), c.outer(), c.part(), c.path(), scrapLeft, o, half, grid, warnings, c.compensation(),
+                List.<double[]>of(cand));
+    }
+
+    /**
+     * The automatic order with the override laid over it: the named cuts in the override's order,
+     * each preceded by the cuts not named that lie inside it; the other cuts not named after them,
+     * in the automatic order. Refused when a contour comes before one inside it.
+     */
+    private static List<CutPath> overridden(List<CutPath> order, List<Asked> asked, List<Node> nodes, CuttingOptions o,
+            java.util.Set<String> pinned, List<String> warnings) {
+        Map<String, CutPath> byLabel = new HashMap<>();
+        for (CutPath c : order) {
+            byLabel.put(c.label(), c);
+        }
+        Map<String, Node> nodeOf = new HashMap<>();
+        for (Node n : nodes) {
+            for (CutPath c : n.cuts) {
+                nodeOf.put(c.label(), n);
+            }
+        }
+        List<String> listed = new ArrayList<>();
+        Map<String, Integer> rank = new HashMap<>();
+        for (Asked a : asked) {
+            List<String> labels = new ArrayList<>();
+            for (CutPath c : a.node().cuts) {
+                if (c.label().equals(a.cut().contour())) {
+                    labels = new ArrayList<>(List.of(c.label()));
+                    break;
+                }
+                labels.add(c.label());
+            }
+            if (labels.isEmpty()) {
+                warnings.add("cut order: " + a.cut().named() + " is not cut: ignored");
+                continue;
+            }
+            for (String l : labels) {
+                if (rank.containsKey(l)) {
+                    warnings.add("cut order: " + l + " named twice: the first place kept");
+                } else if (byLabel.containsKey(l)) {
+                    rank.put(l, listed.size());
+                    listed.add(l);
+                }
+            }
+        }
+        // the cuts not named: just before the first named cut around them, else at the end
+        Map<Integer, List<String>> before = new HashMap<>();
+        List<String> end = new ArrayList<>();
+        for (CutPath c : order) {
+            if (rank.containsKey(c.label())) {
+                continue;
+            }
+            int first = Integer.MAX_VALUE;
+            for (Node up = nodeOf.get(c.label()).parent; up != null; up = up.parent) {
+                for (CutPath u : up.cuts) {
+                    first = Math.min(first, rank.getOrDefault(u.label(), Integer.MAX_VALUE));
+                }
+            }
+            (first == Integer.MAX_VALUE ? end : before.computeIfAbsent(first, k -> new ArrayList<>())).add(c.label());
+        }
+        List<CutPath> out = new ArrayList<>(order.size());
+        for (int i = 0; i < listed.size(); i++) {
+            for (String l : before.getOrDefault(i, List.of())) {
+                out.add(byLabel.get(l));
+            }
+            out.add(byLabel.get(listed.get(i)));
+        }
+        for (String l : end) {
+            out.add(byLabel.get(l));
+        }
+        refuseInnerAfterOuter(out, nodeOf);
+        // cuts without leads and without a start of the planner's own: started where the rapids of the new order are shortest
+        CutPath[] cs = out.toArray(new CutPath[0]);
+        boolean[] free = new boolean[cs.length];
+        int[] seq = new int[cs.length];
+        for (int i = 0; i < cs.length; i++) {
+            seq[i] = i;
+            free[i] = !o.paperMode() && cs[i].leadIn().isEmpty() && cs[i].tail().isEmpty() && cs[i].compensation() == 0
+                    && !pinned.contains(cs[i].label());
+        }
+        placeStarts(cs, seq, free);
+        return List.of(cs);
+    }
+
+    /** Refuses an order that cuts a contour before a contour inside it (its hole, or the part in its hole). */
+    private static void refuseInnerAfterOuter(List<CutPath> order, Map<String, Node> nodeOf) {
+        Map<Node, Integer> first = new java.util.IdentityHashMap<>();
+        for (int i = 0; i < order.size(); i++) {
+            first.putIfAbsent(nodeOf.get(order.get(i).label()), i);
+        }
+        for (int i = 0; i < order.size(); i++) {
+            Node inner = nodeOf.get(order.get(i).label());
+            if (inner.parent == null) {
+                continue;
+            }
+            Integer outer = first.get(inner.parent);
+            if (outer != null && outer < i) {
+                CutPath o = order.get(outer);
+                CutPath c = order.get(i);
+                throw new CutOrderOverride.Refused(String.format(Locale.ROOT, "the cut order cuts %s%s (cut %d) before"
+                        + " %s%s (cut %d) inside it: whatever lies inside a contour is cut before it, so nothing falls"
+                        + " out uncut", o.label(), place(o.part()), outer + 1, c.label(), place(c.part()), i + 1));
+            }
+        }
     }
 
     // ------------------------------------------------------------------ rapids

@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.fresa.cutting.CutOrderOverride;
 import org.fresa.cutting.CutPath;
 import org.fresa.cutting.CutPlan;
 import org.fresa.cutting.CutPlanner;
@@ -80,9 +81,14 @@ public final class CuttingService {
         DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(s.units().units()));
         progress.checkCancelled();
         progress.progress(0.3, "planning");
-        CutPlan plan = CutPlanner.plan(d.layers(),
-                o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)),
-                (f, step) -> progress.progress(0.3 + 0.55 * f, step));
+        CutPlan plan;
+        try {
+            plan = CutPlanner.plan(d.layers(),
+                    o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)), s.cutOrder(),
+                    (f, step) -> progress.progress(0.3 + 0.55 * f, step));
+        } catch (CutOrderOverride.Refused e) {
+            throw new CamInputException("cutOrder", e.getMessage());
+        }
         progress.checkCancelled();
         StringBuilderWriter w = new StringBuilderWriter();
         List<Integer> comp = new ArrayList<>();

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cutting.CutOrderOverride;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CutSense;
 import org.fresa.cutting.CuttingOptions;
@@ -220,11 +221,13 @@ public final class JobSettings {
      * @param holeDirection as outerDirection; process means the opposite of the outer sense
      * @param overcutMm how far each cut runs past its start before the lead-out
      * @param avoidCutParts route rapids around the parts already cut free
+     * @param cutOrder the planner's own cut order and start points over the automatic ones
+     *     ({@link CutOrderOverride#NONE}: the automatic order)
      */
     public record CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
             LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode, SheetCuttingPost.Dialect post,
             KerfCompensation compensation, CutSense outerDirection, CutSense holeDirection, double overcutMm,
-            boolean avoidCutParts) {
+            boolean avoidCutParts, CutOrderOverride cutOrder) {
         /**
          * The cutting module's defaults, as {@code fresa cut}, the Cutting tab of a new job and
          * {@code schemas/job.xsd} have them; the drawing has none.
@@ -243,6 +246,22 @@ public final class JobSettings {
             Objects.requireNonNull(compensation, "compensation");
             Objects.requireNonNull(outerDirection, "outerDirection");
             Objects.requireNonNull(holeDirection, "holeDirection");
+            Objects.requireNonNull(cutOrder, "cutOrder");
+        }
+
+        /** The automatic cut order and start points. */
+        public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
+                LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
+                SheetCuttingPost.Dialect post, KerfCompensation compensation, CutSense outerDirection,
+                CutSense holeDirection, double overcutMm, boolean avoidCutParts) {
+            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post, compensation,
+                    outerDirection, holeDirection, overcutMm, avoidCutParts, CutOrderOverride.NONE);
+        }
+
+        /** These settings with the planner's own cut order. */
+        public CuttingSettings withCutOrder(CutOrderOverride o) {
+            return new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode,
+                    post, compensation, outerDirection, holeDirection, overcutMm, avoidCutParts, o);
         }
 
         /** Software compensation, the process's directions, no overcut, rapids around cut parts. */

@@ -105,7 +105,8 @@ public final class JobXml {
         } catch (SettingChoice.Unknown e) {
             throw new CamInputException(name, lineOf(file, e.choice().attribute(), e.text()), 0, e.getMessage());
         } catch (BadEntry e) {
-            throw new CamInputException(name, e.getMessage());
+            int line = e.attribute == null ? 0 : lineOf(file, e.attribute, e.word);
+            throw line > 0 ? new CamInputException(name, line, 0, e.getMessage()) : new CamInputException(name, e.getMessage());
         }
     }
 
@@ -189,9 +190,39 @@ public final class JobXml {
     private static final class BadEntry extends IllegalArgumentException {
         private static final long serialVersionUID = 1L;
 
+        /** The attribute and its word that find the entry's line, or null. */
+        final String attribute;
+        final String word;
+
         BadEntry(String message) {
-            super(message);
+            this(message, null, null);
         }
+
+        BadEntry(String message, String attribute, String word) {
+            super(message);
+            this.attribute = attribute;
+            this.word = word;
+        }
+    }
+
+    /** The planner's own cut order of a job's {@code <cutting>}, every point checked against the machine's travel. */
+    private static org.fresa.cutting.CutOrderOverride cutOrder(org.fresa.job.xml.CutOrderType t) {
+        if (t == null) {
+            return org.fresa.cutting.CutOrderOverride.NONE;
+        }
+        List<org.fresa.cutting.CutOrderOverride.Cut> cuts = new java.util.ArrayList<>();
+        for (org.fresa.job.xml.OrderedCutType c : t.getCut()) {
+            Vec2 at = Vec2.of(Cutting.CUT_X.require(c.getXMm()), Cutting.CUT_Y.require(c.getYMm()));
+            if ((c.getStartXMm() == null) != (c.getStartYMm() == null)) {
+                throw new BadEntry("<cut contour=\"" + c.getContour() + "\"> has one of startXMm and startYMm: give"
+                        + " both (the start point) or neither (the automatic start)", "contour", c.getContour());
+            }
+            Optional<Vec2> start = c.getStartXMm() == null ? Optional.empty()
+                    : Optional.of(Vec2.of(Cutting.START_X.require(c.getStartXMm()),
+                            Cutting.START_Y.require(c.getStartYMm())));
+            cuts.add(new org.fresa.cutting.CutOrderOverride.Cut(c.getContour(), at, start));
+        }
+        return new org.fresa.cutting.CutOrderOverride(cuts);
     }
 
     /** The entry of a job's {@code <stepnc>}, its angle checked against the option's range. */
@@ -278,7 +309,7 @@ public final class JobXml {
                     Cutting.POST.require(c.getPost()), Cutting.COMPENSATION.require(c.getCompensation()),
                     Cutting.OUTER_DIRECTION.require(c.getOuterDirection()),
                     Cutting.HOLE_DIRECTION.require(c.getHoleDirection()), Cutting.OVERCUT.require(c.getOvercutMm()),
-                    c.isAvoidCutParts()));
+                    c.isAvoidCutParts(), cutOrder(c.getCutOrder())));
         }
         GradingType g = x.getGrading();
         if (g != null) {
@@ -541,6 +572,21 @@ public final class JobXml {
             t.setHoleDirection(c.holeDirection().word());
             t.setOvercutMm(c.overcutMm());
             t.setAvoidCutParts(c.avoidCutParts());
+            if (!c.cutOrder().isEmpty()) {
+                org.fresa.job.xml.CutOrderType order = new org.fresa.job.xml.CutOrderType();
+                for (org.fresa.cutting.CutOrderOverride.Cut k : c.cutOrder().cuts()) {
+                    org.fresa.job.xml.OrderedCutType e = new org.fresa.job.xml.OrderedCutType();
+                    e.setContour(k.contour());
+                    e.setXMm(k.atMm().x());
+                    e.setYMm(k.atMm().y());
+                    k.startMm().ifPresent(p -> {
+                        e.setStartXMm(p.x());
+                        e.setStartYMm(p.y());
+                    });
+                    order.getCut().add(e);
+                }
+                t.setCutOrder(order);
+            }
             x.setCutting(t);
         });
         job.grading().ifPresent(g -> {

@@ -113,6 +113,14 @@ public final class SettingRanges {
         public static final SettingRange TOLERANCE = SettingRange.of("--tolerance", "toleranceMm", 0, 10, "");
         public static final SettingRange OVERCUT = SettingRange.of("--overcut", "overcutMm", 0,
                 CuttingOptions.MAX_LEAD_MM, "mm");
+        /**
+         * A point of the planner's cut order (a contour's reference point or its start), on the
+         * machine; job files only (the tab checks what it takes).
+         */
+        public static final SettingRange CUT_X = coordinate("", "xMm");
+        public static final SettingRange CUT_Y = coordinate("", "yMm");
+        public static final SettingRange START_X = coordinate("", "startXMm");
+        public static final SettingRange START_Y = coordinate("", "startYMm");
         public static final SettingChoice<org.fresa.cutting.CutProcess> PROCESS = SettingChoice.of("--process",
                 "process", org.fresa.cutting.CutProcess.class, org.fresa.cutting.CutProcess::id);
         public static final SettingChoice<org.fresa.cutting.LeadShape> LEAD = SettingChoice.of("--lead", "lead",

@@ -6,6 +6,7 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Optional;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
@@ -64,6 +65,26 @@ final class CuttingTab implements ModuleTab {
             Cutting.POST.values().toArray(new SheetCuttingPost.Dialect[0]));
     private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
     private final JButton cut = new JButton("Cut");
+    // the cut list: the order and starts of the last cut, which the planner edits
+    private final javax.swing.table.DefaultTableModel orderRows = new javax.swing.table.DefaultTableModel(
+            new Object[] {"#", "Contour", "Start (mm)"}, 0) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public boolean isCellEditable(int row, int column) {
+            return false;
+        }
+    };
+    private final javax.swing.JTable order = new javax.swing.JTable(orderRows);
+    private final JTextField start = new JTextField(12);
+    private final JButton setStart = new JButton("Set");
+    private final JButton up = new JButton("Up");
+    private final JButton down = new JButton("Down");
+    private final JButton resetOrder = new JButton("Reset order");
+    // the row to select once the cut after an edit of the list is shown
+    private int selectAfterCut = -1;
+    // the order the list shows was cut with: an edit waits until the list shows the job's order
+    private org.fresa.cutting.CutOrderOverride listed;
     private final JLabel status = new JLabel(" ");
     // set while the fields are filled from the job, so their listeners do not write it back
     private boolean filling;
@@ -112,6 +133,7 @@ final class CuttingTab implements ModuleTab {
         totals.setName("cutting-totals");
         totals.setColumns(18);
 
+        buildOrderControls();
         int row = 0;
         addRow(form, row++, "Drawing:", (char) 0, open, null);
         addRow(form, row++, "", (char) 0, file, null);
@@ -142,6 +164,13 @@ final class CuttingTab implements ModuleTab {
         t.fill = GridBagConstraints.HORIZONTAL;
         t.insets = new Insets(10, 2, 2, 2);
         form.add(totals, t);
+        GridBagConstraints o = new GridBagConstraints();
+        o.gridx = 0;
+        o.gridy = row++;
+        o.gridwidth = 3;
+        o.fill = GridBagConstraints.HORIZONTAL;
+        o.insets = new Insets(10, 2, 2, 2);
+        form.add(orderPanel(), o);
         GridBagConstraints filler = new GridBagConstraints();
         filler.gridy = row;
         filler.weighty = 1;
@@ -161,6 +190,15 @@ final class CuttingTab implements ModuleTab {
                 chart.setToolTipText(vm.notCutAt(at, reach).orElse(null));
             }
         });
+        // Shift+click: the cut nearest the click starts at the point of its path nearest the click
+        chart.addMouseListener(new java.awt.event.MouseAdapter() {
+            @Override
+            public void mouseClicked(java.awt.event.MouseEvent e) {
+                if (e.isShiftDown() && javax.swing.SwingUtilities.isLeftMouseButton(e)) {
+                    pickStart(plot.toPlotMm(e.getPoint()));
+                }
+            }
+        });
         JSplitPane plotAndWarnings = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, warnings);
         plotAndWarnings.setResizeWeight(0.85);
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plotAndWarnings, text);
@@ -173,8 +211,13 @@ final class CuttingTab implements ModuleTab {
                 showJob(true);
             } else if (MainViewModel.JOB.equals(e.getPropertyName())
                     && !ctx.model().job().cutting().equals(shown)) {
-                // an undo, a redo: the fields take the job's settings, a cut of the same drawing stays
+                // an undo, a redo: the fields take the job's settings, a cut of the same drawing stays;
+                // an order or start undone is cut again, so that the list shows what the job cuts
+                org.fresa.cutting.CutOrderOverride was = vm.cutOrder();
                 showJob(false);
+                if (vm.result().isPresent() && !vm.cutOrder().equals(was)) {
+                    run();
+                }
             }
         });
         showJob(true);
@@ -194,6 +237,7 @@ final class CuttingTab implements ModuleTab {
             program.setText("");
             totals.setText("No drawing cut yet.");
             warnings.show(WarningList.none());
+            showOrder();
         }
         check();
     }
@@ -367,13 +411,216 @@ final class CuttingTab implements ModuleTab {
                 return;
             }
             say(" ");
+            listed = s.cutOrder();
             vm.setResult(shown.result());
             plot.show(shown.scene());
             program.setDocument(shown.program());
             program.setCaretPosition(0);
             totals.setText(shown.totals());
             warnings.show(vm.warnings());
+            showOrder();
         });
+    }
+
+    // ------------------------------------------------------------------ the cut list
+
+    private void buildOrderControls() {
+        order.setName("cutting-order");
+        order.setSelectionMode(javax.swing.ListSelectionModel.SINGLE_SELECTION);
+        order.setFillsViewportHeight(true);
+        order.getColumnModel().getColumn(0).setMaxWidth(32);
+        order.getColumnModel().getColumn(1).setPreferredWidth(110);
+        order.getColumnModel().getColumn(2).setPreferredWidth(140);
+        order.setToolTipText("The cuts in order: Alt+Up and Alt+Down move the selected one; Shift+click in the plot"
+                + " starts the nearest cut there; * marks a start of your own");
+        // the header says what the table holds, as every table's
+        order.getTableHeader().setToolTipText(order.getToolTipText());
+        javax.swing.InputMap im = order.getInputMap(JComponent.WHEN_FOCUSED);
+        im.put(javax.swing.KeyStroke.getKeyStroke("alt UP"), "cut-up");
+        im.put(javax.swing.KeyStroke.getKeyStroke("alt DOWN"), "cut-down");
+        order.getActionMap().put("cut-up", action(() -> move(-1)));
+        order.getActionMap().put("cut-down", action(() -> move(1)));
+        order.getSelectionModel().addListSelectionListener(e -> {
+            if (!e.getValueIsAdjusting()) {
+                showSelectedStart();
+            }
+        });
+        start.setName("cutting-start");
+        start.setToolTipText("Where the selected cut starts, x, y in mm: it moves to the nearest point of its path"
+                + " (Enter to apply)");
+        start.addActionListener(e -> typedStart());
+        setStart.setName("cutting-start-set");
+        setStart.setToolTipText("Start the selected cut at the point typed");
+        setStart.addActionListener(e -> typedStart());
+        up.setName("cutting-order-up");
+        up.setToolTipText("Cut the selected contour one place earlier (Alt+Up)");
+        up.addActionListener(e -> move(-1));
+        down.setName("cutting-order-down");
+        down.setToolTipText("Cut the selected contour one place later (Alt+Down)");
+        down.addActionListener(e -> move(1));
+        resetOrder.setName("cutting-order-reset");
+        resetOrder.setMnemonic('T');
+        resetOrder.setToolTipText("Back to the automatic order and start points");
+        resetOrder.addActionListener(e -> {
+            if (!vm.cutOrder().isEmpty()) {
+                vm.resetOrder();
+                orderEdited(order.getSelectedRow());
+            }
+        });
+    }
+
+    private static javax.swing.Action action(Runnable r) {
+        return new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                r.run();
+            }
+        };
+    }
+
+    private JPanel orderPanel() {
+        JPanel p = new JPanel(new BorderLayout(2, 2));
+        p.setBorder(BorderFactory.createTitledBorder("Cut order"));
+        JScrollPane rows = new JScrollPane(order);
+        rows.setPreferredSize(new java.awt.Dimension(280, 170));
+        p.add(rows, BorderLayout.CENTER);
+        JPanel below = new JPanel(new GridBagLayout());
+        GridBagConstraints c = new GridBagConstraints();
+        c.insets = new Insets(1, 1, 1, 1);
+        c.anchor = GridBagConstraints.WEST;
+        JLabel l = new JLabel("Start:");
+        l.setDisplayedMnemonic('A');
+        l.setLabelFor(start);
+        below.add(l, c);
+        c.gridx = 1;
+        c.weightx = 1;
+        c.fill = GridBagConstraints.HORIZONTAL;
+        below.add(start, c);
+        c.gridx = 2;
+        c.weightx = 0;
+        c.fill = GridBagConstraints.NONE;
+        below.add(setStart, c);
+        JPanel buttons = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.LEFT, 2, 0));
+        buttons.add(up);
+        buttons.add(down);
+        buttons.add(resetOrder);
+        c.gridx = 0;
+        c.gridy = 1;
+        c.gridwidth = 3;
+        below.add(buttons, c);
+        p.add(below, BorderLayout.SOUTH);
+        return p;
+    }
+
+    /** The list shows the last cut's order and starts; the row asked for after an edit is selected. */
+    private void showOrder() {
+        orderRows.setRowCount(0);
+        for (CuttingViewModel.CutRow r : vm.cutList()) {
+            orderRows.addRow(new Object[] {r.number(), r.contour(), r.start() + (r.startAsked() ? " *" : "")});
+        }
+        boolean any = orderRows.getRowCount() > 0;
+        int select = Math.min(selectAfterCut, orderRows.getRowCount() - 1);
+        selectAfterCut = -1;
+        if (select >= 0) {
+            order.setRowSelectionInterval(select, select);
+            order.scrollRectToVisible(order.getCellRect(select, 0, true));
+        }
+        for (JComponent c : new JComponent[] {order, start, setStart, up, down}) {
+            c.setEnabled(any);
+        }
+        resetOrder.setEnabled(any && !vm.cutOrder().isEmpty());
+        showSelectedStart();
+    }
+
+    private void showSelectedStart() {
+        int i = order.getSelectedRow();
+        List<CuttingViewModel.CutRow> rows = vm.cutList();
+        start.setText(i >= 0 && i < rows.size() ? rows.get(i).start() : "");
+    }
+
+    /**
+     * True when the list shows the cut of the job's order; else says so (an edit is being cut, or
+     * its cut was cancelled) and the edit waits: it would start from a list the job has left.
+     */
+    private boolean listCurrent() {
+        if (vm.result().isPresent() && !vm.cutOrder().equals(listed)) {
+            say("The list is not yet cut with the last edit: wait for the cut, or press Cut.");
+            return false;
+        }
+        return true;
+    }
+
+    /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
+    private void move(int delta) {
+        if (!listCurrent()) {
+            return;
+        }
+        int i = order.getSelectedRow();
+        if (i < 0) {
+            say("Select a cut in the list first.");
+            return;
+        }
+        Optional<String> refused = vm.moveCut(i, delta);
+        if (refused.isPresent()) {
+            say(refused.get());
+            return;
+        }
+        orderEdited(i + delta);
+    }
+
+    private void typedStart() {
+        if (!listCurrent()) {
+            return;
+        }
+        int i = order.getSelectedRow();
+        if (i < 0) {
+            say("Select a cut in the list first.");
+            return;
+        }
+        Optional<org.fresa.geom.Vec2> p = CuttingViewModel.parseStart(start.getText());
+        if (p.isEmpty()) {
+            say("Start: type x, y in mm, e.g. 12.5, 30");
+            return;
+        }
+        Optional<String> refused = vm.setStart(i, p.get());
+        if (refused.isPresent()) {
+            say(refused.get());
+            return;
+        }
+        orderEdited(i);
+    }
+
+    /** Shift+click in the plot: the nearest cut starts at the point of its path nearest the click. */
+    private void pickStart(org.fresa.geom.Vec2 at) {
+        if (!listCurrent()) {
+            return;
+        }
+        int i = vm.cutNearest(at);
+        if (i < 0) {
+            return;
+        }
+        Optional<String> refused = vm.setStart(i, at);
+        if (refused.isPresent()) {
+            say(refused.get());
+            return;
+        }
+        orderEdited(i);
+    }
+
+    /** An edit of the list goes into the job (one undo step) and the drawing is cut again to show it. */
+    private void orderEdited(int select) {
+        typing.flush();
+        takeFields();
+        if (!check().isEmpty()) {
+            return;
+        }
+        CuttingSettings s = vm.typedSettings().orElseThrow();
+        shown = Optional.of(s);
+        ctx.model().setJob(ctx.model().job().withCutting(s), null);
+        selectAfterCut = select;
+        run();
     }
 
     /** A warning's place in the plot: the view centred on it, a ring around it. */

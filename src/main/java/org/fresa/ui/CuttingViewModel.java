@@ -58,6 +58,8 @@ public final class CuttingViewModel {
     // the job's gap tolerance and units, which the tab has no fields for, go on as the job has them
     private double toleranceMm = DEFAULTS.toleranceMm();
     private DrawingUnits units = DEFAULTS.units();
+    // the planner's own order and start points over the automatic ones
+    private org.fresa.cutting.CutOrderOverride cutOrder = DEFAULTS.cutOrder();
     private CuttingService.Result result;
 
     /** Takes the job's cutting settings, if it has any (the drawing, kerf, process, leads, ...). */
@@ -81,6 +83,7 @@ public final class CuttingViewModel {
             avoidCutParts = c.avoidCutParts();
             toleranceMm = c.toleranceMm();
             units = c.units();
+            cutOrder = c.cutOrder();
         });
     }
 
@@ -161,9 +164,11 @@ public final class CuttingViewModel {
         return Optional.ofNullable(drawing);
     }
 
+    /** A new drawing: its contours are not the old one's, so the cut order is the automatic one again. */
     public void setDrawing(Path p) {
         drawing = p;
         result = null;
+        cutOrder = org.fresa.cutting.CutOrderOverride.NONE;
     }
 
     public void setKerfMm(String v) {
@@ -218,7 +223,7 @@ public final class CuttingViewModel {
         }
         return Optional.of(new CuttingSettings(drawing, Double.parseDouble(kerfMm), process,
                 Double.parseDouble(leadInMm), Double.parseDouble(leadOutMm), lead, toleranceMm, units, paperMode, post,
-                compensation, outerDirection, holeDirection, Double.parseDouble(overcutMm), avoidCutParts));
+                compensation, outerDirection, holeDirection, Double.parseDouble(overcutMm), avoidCutParts, cutOrder));
     }
 
     /**
@@ -361,6 +366,169 @@ public final class CuttingViewModel {
             b.append(" (listed under the plot)");
         }
         return b.toString();
+    }
+
+    // ------------------------------------------------------------------ the cut list
+
+    /**
+     * One line of the cut list: the place in the order (1 the first), the contour, and where its
+     * cut starts (the end of its lead-in), as the last cut shows them.
+     */
+    public record CutRow(int number, String contour, Vec2 startMm, boolean startAsked) {
+        /** "12.500, 31.000": the start as the start field takes it. */
+        public String start() {
+            return String.format(Locale.ROOT, "%.3f, %.3f", startMm.x(), startMm.y());
+        }
+    }
+
+    /** The planner's own order and start points (empty: the automatic ones). */
+    public org.fresa.cutting.CutOrderOverride cutOrder() {
+        return cutOrder;
+    }
+
+    /** The cuts of the last result in order, each with its start; empty before a cut. */
+    public List<CutRow> cutList() {
+        List<CutRow> rows = new ArrayList<>();
+        if (result == null) {
+            return rows;
+        }
+        java.util.Set<String> asked = new java.util.HashSet<>();
+        for (org.fresa.cutting.CutOrderOverride.Cut c : cutOrder.cuts()) {
+            if (c.startMm().isPresent()) {
+                asked.add(c.contour());
+            }
+        }
+        int k = 1;
+        for (CutPath c : result.plan().cuts()) {
+            rows.add(new CutRow(k++, c.label(), c.path().get(0).start(), asked.contains(c.label())));
+        }
+        return rows;
+    }
+
+    /**
+     * The order of the last result as an override, keeping the start points the planner gave:
+     * what an edit of the list starts from.
+     */
+    private Optional<org.fresa.cutting.CutOrderOverride> shownOrder() {
+        if (result == null || result.plan().cuts().isEmpty()) {
+            return Optional.empty();
+        }
+        java.util.Map<String, Vec2> starts = new java.util.HashMap<>();
+        for (org.fresa.cutting.CutOrderOverride.Cut c : cutOrder.cuts()) {
+            c.startMm().ifPresent(p -> starts.put(c.contour(), p));
+        }
+        List<org.fresa.cutting.CutOrderOverride.Cut> l = new ArrayList<>();
+        for (org.fresa.cutting.CutOrderOverride.Cut c : org.fresa.cutting.CutOrderOverride.of(result.plan().cuts()).cuts()) {
+            l.add(c.withStart(Optional.ofNullable(starts.get(c.contour()))));
+        }
+        return Optional.of(new org.fresa.cutting.CutOrderOverride(l));
+    }
+
+    /**
+     * Moves cut {@code index} (0-based) one place up (delta -1) or down (+1) in the order.
+     *
+     * @return why the move is refused (a hole would come after its part, a part in a hole after
+     *     the hole, or there is no place to go), or empty when the order took it
+     */
+    public Optional<String> moveCut(int index, int delta) {
+        Optional<org.fresa.cutting.CutOrderOverride> now = shownOrder();
+        if (now.isEmpty() || index < 0 || index >= now.get().cuts().size()) {
+            return Optional.of("Cut the drawing first, then order its cuts.");
+        }
+        int to = index + delta;
+        if (to < 0 || to >= now.get().cuts().size()) {
+            return Optional.of(delta < 0 ? "The first cut cannot move up." : "The last cut cannot move down.");
+        }
+        List<CutPath> cuts = result.plan().cuts();
+        // the cut jumped over: moving up puts the moved cut before it, moving down after it
+        CutPath moved = cuts.get(index);
+        CutPath other = cuts.get(to);
+        CutPath outer = delta < 0 ? moved : other;
+        CutPath inner = delta < 0 ? other : moved;
+        if (inside(inner.part(), outer.part())) {
+            return Optional.of(inner.label() + " lies inside " + outer.label() + ": it is cut before it, so nothing"
+                    + " falls out uncut.");
+        }
+        cutOrder = now.get().moved(index, to);
+        return Optional.empty();
+    }
+
+    /** True when the drawn contour a lies inside the drawn contour b. */
+    private static boolean inside(Contour a, Contour b) {
+        if (a == b) {
+            return false;
+        }
+        org.fresa.geom.Box2 ab = a.bounds();
+        org.fresa.geom.Box2 bb = b.bounds();
+        if (!(ab.minX() >= bb.minX() && ab.maxX() <= bb.maxX() && ab.minY() >= bb.minY() && ab.maxY() <= bb.maxY())) {
+            return false;
+        }
+        for (Curve2 c : a.curves()) {
+            Vec2 p = c.pointAt(0.5);
+            if (b.distanceTo(p) > 1e-6) {
+                return b.contains(p, org.fresa.geom.Tolerance.DEFAULT);
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Starts cut {@code index} (0-based) at the point of its path nearest p (the next cut puts it
+     * there, its leads with it).
+     */
+    public Optional<String> setStart(int index, Vec2 p) {
+        Optional<org.fresa.cutting.CutOrderOverride> now = shownOrder();
+        if (now.isEmpty() || index < 0 || index >= now.get().cuts().size()) {
+            return Optional.of("Cut the drawing first, then choose where a cut starts.");
+        }
+        if (!SettingRanges.Cutting.START_X.contains(p.x()) || !SettingRanges.Cutting.START_Y.contains(p.y())) {
+            return Optional.of("Start: " + SettingRanges.Cutting.START_X.problem(
+                    SettingRanges.Cutting.START_X.contains(p.x()) ? p.y() : p.x()));
+        }
+        cutOrder = now.get().withStart(index, Optional.of(p));
+        return Optional.empty();
+    }
+
+    /**
+     * The start typed into the start field: "x, y" in mm (a comma, a semicolon or spaces between).
+     *
+     * @return the point, or empty when the text is not two numbers
+     */
+    public static Optional<Vec2> parseStart(String text) {
+        String[] parts = text.trim().split("\\s*[,;]\\s*|\\s+");
+        if (parts.length != 2) {
+            return Optional.empty();
+        }
+        try {
+            double x = Double.parseDouble(parts[0]);
+            double y = Double.parseDouble(parts[1]);
+            return Double.isFinite(x + y) ? Optional.of(Vec2.of(x, y)) : Optional.empty();
+        } catch (NumberFormatException e) {
+            return Optional.empty();
+        }
+    }
+
+    /** The index (0-based) of the cut whose path passes nearest p, or -1 before a cut. */
+    public int cutNearest(Vec2 p) {
+        if (result == null) {
+            return -1;
+        }
+        int best = -1;
+        double bestD = Double.POSITIVE_INFINITY;
+        List<CutPath> cuts = result.plan().cuts();
+        for (int i = 0; i < cuts.size(); i++) {
+            double d = cuts.get(i).path().distanceTo(p);
+            if (d < bestD) {
+                bestD = d;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    /** Back to the automatic order and start points. */
+    public void resetOrder() {
+        cutOrder = org.fresa.cutting.CutOrderOverride.NONE;
     }
 
     public String program() {

@@ -49,6 +49,43 @@ class JobXmlTest {
     }
 
     @Test
+    void thePlannersCutOrderAndStartPointsRoundTrip() throws Exception {
+        org.fresa.cutting.CutOrderOverride order = new org.fresa.cutting.CutOrderOverride(List.of(
+                new org.fresa.cutting.CutOrderOverride.Cut("part 2 hole 1", Vec2.of(70, 15.125), Optional.empty()),
+                new org.fresa.cutting.CutOrderOverride.Cut("part 2", Vec2.of(90, 12), Optional.of(Vec2.of(75, 31))),
+                new org.fresa.cutting.CutOrderOverride.Cut("part 1", Vec2.of(-0.1, 1.0 / 3), Optional.of(Vec2.of(-1e-7, 9999.5)))));
+        Job job = fullJob(dir).withCutting(fullJob(dir).cutting().orElseThrow().withCutOrder(order));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(job, file);
+        String xml = Files.readString(file);
+        assertTrue(xml.contains("<cutOrder>") && xml.contains("contour=\"part 2 hole 1\"")
+                && xml.contains("startXMm=\"75.0\""), xml);
+        assertEquals(job, JobXml.read(file));
+        assertEquals(order, JobXml.read(file).cutting().orElseThrow().cutOrder());
+        // no override: no element, saved jobs stay as they were
+        JobXml.write(fullJob(dir), file);
+        assertTrue(!Files.readString(file).contains("cutOrder"));
+    }
+
+    @org.junit.jupiter.params.ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.CsvSource(delimiter = '|', textBlock = """
+            xMm="20000" yMm="1"                           | xMm
+            xMm="1" yMm="1" startXMm="1" startYMm="-1e5" | startYMm
+            xMm="1" yMm="1" startXMm="1"                  | startXMm and startYMm
+            xMm="NaN" yMm="1"                             | NaN
+            xMm="1"                                       | yMm
+            """)
+    void aBadCutOrderEntryIsRefusedWithItsLine(String attributes, String named) throws Exception {
+        Path file = dir.resolve("bad.xml");
+        Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"cut\">\n"
+                + "<cutting drawing=\"a.dxf\">\n<cutOrder>\n<cut contour=\"part 1\" xMm=\"0\" yMm=\"0\"/>\n"
+                + "<cut contour=\"part 2\" " + attributes + "/>\n</cutOrder>\n</cutting>\n</job>\n");
+        CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(file));
+        assertEquals(6, e.line().orElse(0), e.getMessage());
+        assertTrue(e.getMessage().contains(named), e.getMessage());
+    }
+
+    @Test
     void theSpindleAndToolLengthAreKept() throws Exception {
         Job job = Job.empty(JobTask.ROBOT).withRobot(new RobotSettings("irb140", Placement.ORIGIN, Placement.ORIGIN,
                 List.of("csv"), Optional.of(new Placement(0, 0, 150, 0, 0, 0)), OptionalDouble.of(50)));

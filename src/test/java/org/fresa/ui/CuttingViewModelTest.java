@@ -92,6 +92,67 @@ class CuttingViewModelTest {
         assertTrue(program.contains("G42") && program.contains("M64 P0"), program);
     }
 
+    /**
+     * The planner moves a cut and a start point in the tab; the job saved then, run by
+     * {@code fresa run}, writes byte for byte the program the tab shows.
+     */
+    @Test
+    void anOrderEditedInTheTabIsSavedAndRunsToTheProgramTheTabShows(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.setDrawing(Path.of("samples/cutting/plate.dxf").toAbsolutePath());
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        java.util.List<CuttingViewModel.CutRow> auto = vm.cutList();
+        assertEquals(10, auto.size());
+        // a part may not move up over its own hole (the part's last hole comes just before it)
+        int part = java.util.stream.IntStream.range(1, auto.size()).filter(i -> !auto.get(i).contour().contains("hole")
+                && auto.get(i - 1).contour().startsWith(auto.get(i).contour() + " hole")).findFirst().orElseThrow();
+        java.util.Optional<String> refused = vm.moveCut(part, -1);
+        assertTrue(refused.isPresent() && refused.get().startsWith(auto.get(part - 1).contour() + " lies inside "
+                + auto.get(part).contour()), refused.toString());
+        assertTrue(vm.cutOrder().isEmpty(), "a refused move leaves the order alone");
+        // a hole moved up over another hole of the same part is allowed
+        int hole = java.util.stream.IntStream.range(1, auto.size()).filter(i -> auto.get(i).contour().contains("hole")
+                && auto.get(i - 1).contour().contains("hole")).findFirst().orElseThrow();
+        assertEquals(java.util.Optional.empty(), vm.moveCut(hole, -1));
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        assertEquals(auto.get(hole).contour(), vm.cutList().get(hole - 1).contour());
+        assertEquals(auto.get(hole - 1).contour(), vm.cutList().get(hole).contour());
+        // the first cut started 5 mm from where it starts now: the start moves onto its path
+        org.fresa.geom.Vec2 was = vm.cutList().get(0).startMm();
+        assertEquals(java.util.Optional.empty(), vm.setStart(0, was.plus(org.fresa.geom.Vec2.of(5, 0))));
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        CuttingViewModel.CutRow first = vm.cutList().get(0);
+        assertTrue(first.startAsked() && first.startMm().distance(was) > 1e-3, first.toString());
+        String shown = vm.program();
+
+        org.fresa.job.Job job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT));
+        Path file = dir.resolve("cut.xml");
+        org.fresa.job.JobXml.write(job, file);
+        assertTrue(java.nio.file.Files.readString(file).contains("<cutOrder>"));
+        CuttingViewModel again = new CuttingViewModel();
+        again.load(org.fresa.job.JobXml.read(file));
+        assertEquals(vm.settings(), again.settings());
+        java.io.StringWriter err = new java.io.StringWriter();
+        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        assertTrue(status <= 1, err.toString());
+        assertEquals(shown, java.nio.file.Files.readString(dir.resolve("out").resolve("program.ngc")));
+        // Reset: the automatic order and starts again
+        vm.resetOrder();
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        assertEquals(auto, vm.cutList());
+    }
+
+    @Test
+    void aStartIsTypedAsTwoNumbers() {
+        assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(12.5, -3)), CuttingViewModel.parseStart(" 12.5, -3 "));
+        assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(1, 2)), CuttingViewModel.parseStart("1 2"));
+        assertEquals(java.util.Optional.empty(), CuttingViewModel.parseStart("1"));
+        assertEquals(java.util.Optional.empty(), CuttingViewModel.parseStart("a, b"));
+        assertEquals(java.util.Optional.empty(), CuttingViewModel.parseStart("NaN, 1"));
+    }
+
     private static PlotScene.Layer layer(PlotScene s, String name) {
         return s.layers().stream().filter(l -> l.name().equals(name)).findFirst().orElseThrow();
     }
