@@ -92,7 +92,7 @@ final class AptPost implements NcPost {
                     feed = feed(lines, c.feedMmPerMin(), feed);
                     arc(lines, at, c);
                 } else if (m instanceof Move.Dwell d) {
-                    lines.add("DELAY/" + String.format(Locale.ROOT, "%.3f", d.seconds()));
+                    lines.add("DELAY/" + GcodePost.seconds(d.seconds()));
                 } else if (m instanceof Move.SpindleStop) {
                     lines.add("SPINDL/OFF");
                     rpm = -1;
@@ -171,11 +171,7 @@ final class AptPost implements NcPost {
 
     /** A coordinate with three decimals, never "-0.000". */
     static String num(double v) {
-        String s = String.format(Locale.ROOT, "%.3f", v);
-        if (s.startsWith("-") && s.chars().skip(1).allMatch(ch -> ch == '0' || ch == '.')) {
-            return s.substring(1);
-        }
-        return s;
+        return GcodePost.fixed(v, 3);
     }
 
     /** A component of a unit vector: six decimals, trailing zeros dropped ("0", "1", "-0.707107"). */

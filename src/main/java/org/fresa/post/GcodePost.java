@@ -221,7 +221,12 @@ abstract class GcodePost implements NcPost {
 
     /** A coordinate with the dialect's fixed decimals, never "-0.000". */
     String num(double v) {
-        String s = String.format(Locale.ROOT, "%." + decimals() + "f", v);
+        return fixed(v, decimals());
+    }
+
+    /** A number with fixed decimals, never a negative zero ("-0.000" is written "0.000"). */
+    static String fixed(double v, int decimals) {
+        String s = String.format(Locale.ROOT, "%." + decimals + "f", v);
         if (s.startsWith("-") && s.chars().skip(1).allMatch(ch -> ch == '0' || ch == '.')) {
             return s.substring(1);
         }
