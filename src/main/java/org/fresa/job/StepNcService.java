@@ -60,10 +60,8 @@ public final class StepNcService {
         List<NotPlanned> out = new ArrayList<>();
         for (MachiningWorkingstep w : p.workingsteps()) {
             if (!planned.contains(w.instanceId())) {
-                String prefix = "workingstep '" + w.id() + "' (#" + w.instanceId() + "): ";
-                String reason = plan.problems().stream().filter(x -> x.startsWith(prefix))
-                        .map(x -> x.substring(prefix.length())).findFirst().orElse("not planned");
-                out.add(new NotPlanned(w.instanceId(), w.id(), reason));
+                out.add(new NotPlanned(w.instanceId(), w.id(),
+                        plan.refusals().getOrDefault(w.instanceId(), "not planned")));
             }
         }
         return out;

@@ -76,6 +76,7 @@ public final class ThesisPaths {
         List<ToolpathSection> sections = new ArrayList<>();
         List<ToolpathPlanner.PlannedStep> steps = new ArrayList<>();
         List<String> problems = new ArrayList<>();
+        Map<Long, String> refusals = new java.util.LinkedHashMap<>();
         Map<String, Integer> feedNotes = new LinkedHashMap<>();
         int planned = 0;
         for (MachiningWorkingstep ws : program.workingsteps()) {
@@ -92,12 +93,13 @@ public final class ThesisPaths {
                 planned++;
             } catch (IllegalArgumentException | UnsupportedOperationException e) {
                 problems.add("workingstep '" + ws.id() + "' (#" + ws.instanceId() + "): " + e.getMessage());
+                refusals.put(ws.instanceId(), e.getMessage());
             }
         }
         feedNotes.forEach((note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ")
                 + note));
         return new ToolpathPlanner.Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned,
-                steps);
+                steps, refusals);
     }
 
     static ToolpathSection section(MachiningWorkingstep ws, String label, Map<String, Integer> toolNumbers,

@@ -105,12 +105,14 @@ public final class ToolpathPlanner {
      * @param problems one sentence per workingstep skipped or planned with a doubt, and one per
      *     distinct feed whose unit had to be inferred
      * @param steps the planned workingsteps, one per section of the toolpath, in the same order
+     * @param refusals the reason each workingstep refused outright was left out, by its instance id
      */
     public record Plan(Toolpath toolpath, List<String> problems, int workingsteps, int planned,
-            List<PlannedStep> steps) {
+            List<PlannedStep> steps, Map<Long, String> refusals) {
         public Plan {
             problems = List.copyOf(problems);
             steps = List.copyOf(steps);
+            refusals = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(refusals));
             if (steps.size() != toolpath.sections().size()) {
                 throw new IllegalArgumentException("one planned step per section: " + steps.size() + " vs "
                         + toolpath.sections().size());
@@ -159,6 +161,7 @@ public final class ToolpathPlanner {
         List<ToolpathSection> sections = new ArrayList<>();
         List<PlannedStep> steps = new ArrayList<>();
         List<String> problems = new ArrayList<>();
+        Map<Long, String> refusals = new LinkedHashMap<>();
         Map<String, Integer> feedNotes = new LinkedHashMap<>();
         int planned = 0;
         for (MachiningWorkingstep ws : program.workingsteps()) {
@@ -178,11 +181,12 @@ public final class ToolpathPlanner {
                 }
             } catch (IllegalArgumentException | UnsupportedOperationException e) {
                 problems.add("workingstep '" + ws.id() + "' (#" + ws.instanceId() + "): " + e.getMessage());
+                refusals.put(ws.instanceId(), e.getMessage());
             }
         }
         feedNotes.forEach((note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ")
                 + note));
-        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps);
+        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps, refusals);
     }
 
     /** The cutting data of an operation (the tool's diameter for the cutting speed), checked. */
