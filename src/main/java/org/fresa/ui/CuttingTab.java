@@ -562,12 +562,7 @@ final class CuttingTab implements ModuleTab {
             say("Select a cut in the list first.");
             return;
         }
-        Optional<String> refused = vm.moveCut(i, delta);
-        if (refused.isPresent()) {
-            say(refused.get());
-            return;
-        }
-        orderEdited(i + delta);
+        answered(vm.moveCut(i, delta), i + delta);
     }
 
     private void typedStart() {
@@ -584,12 +579,7 @@ final class CuttingTab implements ModuleTab {
             say("Start: type x, y in mm, e.g. 12.5, 30");
             return;
         }
-        Optional<String> refused = vm.setStart(i, p.get());
-        if (refused.isPresent()) {
-            say(refused.get());
-            return;
-        }
-        orderEdited(i);
+        answered(vm.setStart(i, p.get()), i);
     }
 
     /** Shift+click in the plot: the nearest cut starts at the point of its path nearest the click. */
@@ -601,12 +591,12 @@ final class CuttingTab implements ModuleTab {
         if (i < 0) {
             return;
         }
-        Optional<String> refused = vm.setStart(i, at);
-        if (refused.isPresent()) {
-            say(refused.get());
-            return;
-        }
-        orderEdited(i);
+        answered(vm.setStart(i, at), i);
+    }
+
+    /** The view model's answer to an edit: its refusal said, or the edit taken into the job. */
+    private void answered(Optional<String> refused, int select) {
+        refused.ifPresentOrElse(this::say, () -> orderEdited(select));
     }
 
     /** An edit of the list goes into the job (one undo step) and the drawing is cut again to show it. */
