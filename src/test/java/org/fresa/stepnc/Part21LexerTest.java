@@ -79,7 +79,9 @@ class Part21LexerTest {
     @ParameterizedTest
     @MethodSource("projectFiles")
     void theProjectsFilesGiveTheSameTokensAsBefore(Path file) throws Exception {
-        sameTokensAsBefore(file);
+        // a test part added since the digests were taken has no "before": it is read whole and
+        // one character at a time alike
+        sameTokensAsBefore(file, DIGESTS.containsKey(file.getFileName().toString()));
     }
 
     @ParameterizedTest
@@ -87,16 +89,26 @@ class Part21LexerTest {
     @CorpusCheck
     void theCorpusFilesGiveTheSameTokensAsBefore(Path file) throws Exception {
         Assumptions.assumeTrue(Files.isRegularFile(file), TestInputs.sharedCorpusAbsent(StepNcReaderTest.CORPUS));
-        sameTokensAsBefore(file);
+        sameTokensAsBefore(file, true);
     }
 
-    private static void sameTokensAsBefore(Path file) throws Exception {
+    private static void sameTokensAsBefore(Path file, boolean digested) throws Exception {
         String text = Files.readString(file, StandardCharsets.ISO_8859_1);
         String whole = digest(new StringReader(text));
         assertEquals(whole, digest(new Trickle(text)), "one character at a time");
+        if (!digested) {
+            return;
+        }
         String expected = DIGESTS.get(file.getFileName().toString());
         assertTrue(expected != null, "no digest for " + file);
         assertEquals(expected, whole);
+    }
+
+    @Test
+    void theProjectsDigestedFilesAreStillRead() throws Exception {
+        // the project's own files among the digests: if they were renamed away, the test above
+        // would compare nothing with the old lexer
+        assertTrue(projectFiles().filter(p -> DIGESTS.containsKey(p.getFileName().toString())).count() >= 7);
     }
 
     @Test
