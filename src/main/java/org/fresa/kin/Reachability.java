@@ -29,18 +29,23 @@ import org.fresa.geom.Transform3;
 public final class Reachability {
 
     private final IkOptions options;
-    private final boolean freeRotation;
+    private final ToolTurns turns;
     private final Map<Robot, IkSolver> solvers = new IdentityHashMap<>();
     private final Map<Robot, Optional<SphericalWristSeeds>> closedForms = new IdentityHashMap<>();
     private final double[] pose = new double[Pose.SIZE];
 
+    /** Checks with the IK method, tolerances and tool turns the trajectory will be solved with. */
+    public Reachability(TrajectorySolver.Options options) {
+        this(options.ik(), ToolTurns.of(options));
+    }
+
     /**
      * @param options the IK method and tolerances (as the trajectory will be solved)
-     * @param freeRotation whether the tool may be turned about its own axis (a spindle)
+     * @param turns the turns about the tool axis allowed (as the trajectory will use them)
      */
-    public Reachability(IkOptions options, boolean freeRotation) {
+    public Reachability(IkOptions options, ToolTurns turns) {
         this.options = Objects.requireNonNull(options, "options");
-        this.freeRotation = freeRotation;
+        this.turns = Objects.requireNonNull(turns, "turns");
     }
 
     /**
@@ -77,7 +82,7 @@ public final class Reachability {
                 }
             }
             if (q == null) {
-                for (double turn : turns(robot, phi)) {
+                for (double turn : turns.firstDeg(robot, phi)) {
                     q = cold(robot, solver, t.pose(turn), prev);
                     if (q != null) {
                         at = turn;
@@ -105,25 +110,6 @@ public final class Reachability {
         }
         return Optional.of(new TrajectorySolver.Result(points, unreachable, 0, 0, rotated, 0, maxRot, List.of(),
                 System.nanoTime() - t0));
-    }
-
-    /** The turns about the tool axis tried cold, as the trajectory solver's first ones. */
-    private List<Double> turns(Robot robot, double phi) {
-        if (!freeRotation || !robot.controlsFullOrientation()) {
-            return List.of(phi);
-        }
-        return List.of(phi, wrap(phi + 180), wrap(phi + 90), wrap(phi - 90));
-    }
-
-    private static double wrap(double deg) {
-        double p = deg;
-        while (p > 180) {
-            p -= 360;
-        }
-        while (p < -180) {
-            p += 360;
-        }
-        return p;
     }
 
     private Optional<SphericalWristSeeds> closedForm(Robot robot) {
