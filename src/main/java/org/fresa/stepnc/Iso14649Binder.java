@@ -689,7 +689,7 @@ final class Iso14649Binder {
                     f.has("planar_radius") ? num(f, "planar_radius") : OptionalDouble.empty(),
                     f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
                     refList(f, "its_operations"), f.name().equals("SLOT") && f.has("end_conditions")
-                            ? slotEnds(f) : List.of());
+                            ? slotEnds(f) : List.of(), f.has("its_boss") ? refList(f, "its_boss") : List.of());
         }
         features.put(id, out);
         return out;
