@@ -124,12 +124,7 @@ final class OpenSideMilling {
         List<Curve2> ring = new ArrayList<>(cs.subList(best, cs.size()));
         ring.addAll(cs.subList(0, best));
         if (climb) {
-            List<Curve2> rev = new ArrayList<>();
-            for (int i = ring.size() - 1; i >= 0; i--) {
-                Curve2 c = ring.get(i);
-                rev.add(c instanceof Arc2 a ? a.reversed() : ((Segment2) c).reversed());
-            }
-            ring = rev;
+            ring = reversed(ring);
         }
         Vec2 p = ring.get(0).start();
         double floor = h.bottomZ() + bottomAllowanceMm;
@@ -147,6 +142,138 @@ final class OpenSideMilling {
         b.rapid(Vec3.of(bestOut, h.clearanceZ()));
         return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
                 Vec3.of(bestOut, h.clearanceZ()), b.moves());
+    }
+
+    /**
+     * An open pocket: its walls (an open chain of lines and arcs, in the feature frame) closed by
+     * the straight open side from the chain's end back to its start, which must lie on the
+     * stock's edge. The region is carried past the open side by a cutter's diameter and the
+     * clearance, so that each layer is cut by passes square to the open side that start in the
+     * air beyond it at depth, run in to the far wall and come back out the same way, then by one
+     * loop along the walls entered at its point farthest out. No entry ramp is needed.
+     *
+     * @param walls the wall chain, start to end
+     * @param stock the stock's outline in the feature frame, counter-clockwise
+     * @param climb with M3: passes in order with the material on the tool's right, the loop
+     *     counter-clockwise
+     * @throws UnsupportedOperationException when the open side is not on the stock's edge or the
+     *     tool does not fit
+     */
+    static ToolpathSection openPocket(String label, List<Curve2> walls, Contour stock, Heights h, Tooling t,
+            double stepoverMm, double axialMm, double sideAllowanceMm, double bottomAllowanceMm, boolean climb,
+            Tolerance tol, List<String> problems) {
+        double r = t.radiusMm();
+        double off = r + sideAllowanceMm;
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        if (s.distance(e) < 2 * off + tol.linear()) {
+            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
+                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
+        }
+        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
+            if (stock.distanceTo(p) > tol.linear()) {
+                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to ("
+                        + xy(s) + "), is not on the edge of the workpiece's block");
+            }
+        }
+        List<Curve2> closed = new ArrayList<>(walls);
+        closed.add(new Segment2(e, s));
+        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
+        Vec2 chord = s.minus(e).normalized();
+        Vec2 out = chord.leftNormal();
+        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
+            out = out.negated();
+        }
+        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
+        double past = 2 * off + OUTSIDE_MM;
+        List<Curve2> grown = new ArrayList<>(walls);
+        Vec2 e2 = e.plus(out.times(past));
+        Vec2 s2 = s.plus(out.times(past));
+        grown.add(new Segment2(e, e2));
+        grown.add(new Segment2(e2, s2));
+        grown.add(new Segment2(s2, s));
+        Profile region = new Profile.General(Contour.of(grown, Tolerance.DRAWING), ContourOffsetter.EXACT);
+        List<Ring> rings = region.insetAll(off, tol);
+        if (rings.isEmpty()) {
+            throw new UnsupportedOperationException("the tool (" + ToolpathPlanner.mm(t.diameterMm()) + " mm) does not"
+                    + " fit in the open pocket");
+        }
+        Ring ring = rings.get(0);
+        if (rings.size() > 1) {
+            problems.add("workingstep '" + label + "': " + (rings.size() - 1) + " part(s) of the pocket the "
+                    + ToolpathPlanner.mm(t.diameterMm()) + " mm tool cannot reach from the open side are left");
+        }
+        double edge = s.dot(out);
+        List<Pass> passes = new ArrayList<>();
+        int skipped = 0;
+        for (Pass p : PlanarPasses.parallelSplit(ring, stepoverMm, out.negated(), false, tol)) {
+            // only passes that start in the air past the open side: the others would need an entry ramp
+            if (p.start().dot(out) >= edge + r + OUTSIDE_MM / 2) {
+                passes.add(p);
+            } else {
+                skipped++;
+            }
+        }
+        if (skipped > 0) {
+            problems.add("workingstep '" + label + "': " + skipped + " pass(es) behind the walls, which the tool"
+                    + " cannot reach straight from the open side, are left to the loop along the walls");
+        }
+        if (!climb) {
+            java.util.Collections.reverse(passes);
+        }
+        List<Curve2> loop = startFarthestOut(ring.curves(), out);
+        if (!climb) {
+            loop = reversed(loop);
+        }
+        Vec2 loopStart = loop.get(0).start();
+        Vec2 first = passes.isEmpty() ? loopStart : passes.get(0).start();
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
+        for (double z : layers.layers(axialMm)) {
+            for (Pass p : passes) {
+                b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+                b.rapid(Vec3.of(p.start(), h.retractZ()));
+                b.feed(Vec3.of(p.start(), z), t.plungeFeedMmPerMin());
+                b.curves(p.curves(), z, t.feedMmPerMin());
+                b.feed(Vec3.of(p.start(), z), t.feedMmPerMin());
+            }
+            b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+            b.rapid(Vec3.of(loopStart, h.retractZ()));
+            b.feed(Vec3.of(loopStart, z), t.plungeFeedMmPerMin());
+            b.curves(loop, z, t.feedMmPerMin());
+            b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+        }
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
+                Vec3.of(first, h.clearanceZ()), b.moves());
+    }
+
+    /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */
+    private static List<Curve2> startFarthestOut(List<Curve2> cs, Vec2 out) {
+        List<Curve2> split = splitAtMiddles(cs);
+        int best = 0;
+        for (int i = 1; i < split.size(); i++) {
+            if (split.get(i).start().dot(out) > split.get(best).start().dot(out) + 1e-9) {
+                best = i;
+            }
+        }
+        List<Curve2> ring = new ArrayList<>(split.subList(best, split.size()));
+        ring.addAll(split.subList(0, best));
+        return ring;
+    }
+
+    private static List<Curve2> reversed(List<Curve2> cs) {
+        List<Curve2> rev = new ArrayList<>();
+        for (int i = cs.size() - 1; i >= 0; i--) {
+            Curve2 c = cs.get(i);
+            rev.add(c instanceof Arc2 a ? a.reversed() : ((Segment2) c).reversed());
+        }
+        return rev;
+    }
+
+    private static String xy(Vec2 p) {
+        return ToolpathPlanner.mm(p.x()) + ", " + ToolpathPlanner.mm(p.y());
     }
 
     /** The curves with every straight segment split at its middle: more places to lead in. */

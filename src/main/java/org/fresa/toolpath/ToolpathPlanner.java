@@ -306,6 +306,45 @@ public final class ToolpathPlanner {
                         isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
                         isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);
             }
+            case OPEN_POCKET -> {
+                noBosses(f);
+                org.fresa.stepnc.Profile sp = f.profile()
+                        .orElseThrow(() -> new IllegalArgumentException("the open pocket has no open boundary"));
+                if (!(sp instanceof org.fresa.stepnc.Profile.General g) || g.closed() || g.segments().isEmpty()) {
+                    throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
+                            + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side");
+                }
+                if (isThrough(f) || f.depthMm().isEmpty()) {
+                    throw new UnsupportedOperationException("through open pockets are not supported yet");
+                }
+                double rho = f.planarRadiusMm().orElse(0);
+                double edge = tool.edgeRadiusMm().orElse(0);
+                if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
+                    throw new UnsupportedOperationException("the open pocket's floor meets its walls in a " + mm(rho)
+                            + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
+                }
+                if (f.orthogonalRadiusMm().orElse(0) > tooling.radiusMm() + tol.linear()) {
+                    throw new UnsupportedOperationException("the open pocket's corner radius "
+                            + mm(f.orthogonalRadiusMm().getAsDouble()) + " mm is larger than the tool's radius: the"
+                            + " corners would be cut sharper than drawn");
+                }
+                Transform3 pp = g.placement();
+                place = place.times(pp);
+                List<Curve2> walls = new ArrayList<>();
+                for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
+                    Vec2 a = new Vec2(seg.start().x(), seg.start().y());
+                    Vec2 b = new Vec2(seg.end().x(), seg.end().y());
+                    if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
+                        walls.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+                    } else if (a.distance(b) > tol.linear()) {
+                        walls.add(new Segment2(a, b));
+                    }
+                }
+                Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "open pocket");
+                local = OpenSideMilling.openPocket(label, walls, stock, h, tooling, stepover(op, tooling), axial,
+                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol, problems);
+            }
             default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
                     : f.type()) + " features are not supported yet");
         }
@@ -356,7 +395,10 @@ public final class ToolpathPlanner {
         org.fresa.stepnc.Profile wall = f.profile()
                 .orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
         if (wall instanceof org.fresa.stepnc.Profile.Vee v) {
-            if (Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
+            // GRIMA's writers put pi / 2 there in radians, also in files not otherwise known as
+            // theirs: a wall 1.57 deg from its floor is no step
+            boolean radiansRight = Math.abs(v.profileAngleDeg() - Math.PI / 2) < 1e-6;
+            if (!radiansRight && Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
                 throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
                         + " deg to its floor: only a vertical wall (profile_angle 90 deg) is milled");
             }
