@@ -69,8 +69,11 @@ import org.fresa.stepnc.Tool;
  * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
  * with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
- * <li>Features other than planar faces, closed pockets, round holes and those slots are
- * reported and skipped.
+ * <li>Steps, closed general outside profiles and open pockets bounded by an open general
+ * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
+ * depth; a feature with bosses is refused (its bosses would be milled away).
+ * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
+ * outside profiles and open pockets are reported and skipped.
  * </ul>
  */
 public final class ToolpathPlanner {
