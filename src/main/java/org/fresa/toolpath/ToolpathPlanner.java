@@ -261,7 +261,13 @@ public final class ToolpathPlanner {
                 }
                 place = place.times(pp);
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
-                local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                if (!f.bosses().isEmpty()) {
+                    local = BossPockets.section(label, p, f, f.placement().times(pp), op, h, tooling, stepover(op, tooling),
+                            axial, climb(op), tol,
+                            holes.choices().entry(), problems);
+                } else {
+                    local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                }
             }
             case ROUND_HOLE -> {
                 local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
@@ -357,7 +363,7 @@ public final class ToolpathPlanner {
 
     /** Refuses a feature with bosses: cutting it as if it had none would mill them away. */
     static void noBosses(Feature f) {
-        if (!f.bossIds().isEmpty()) {
+        if (!f.bosses().isEmpty()) {
             throw new UnsupportedOperationException(f.type() + " features with bosses (its_boss) are not supported yet");
         }
     }
