@@ -71,7 +71,8 @@ import org.fresa.stepnc.Tool;
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Steps, closed general outside profiles and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
- * depth; a feature with bosses is refused (its bosses would be milled away).
+ * depth; a step or open pocket with bosses is refused (its bosses would be milled away); a
+ * closed pocket leaves its bosses standing ({@link BossPockets}).
  * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
  * outside profiles and open pockets are reported and skipped.
  * </ul>
