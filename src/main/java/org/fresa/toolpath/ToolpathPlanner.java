@@ -71,7 +71,7 @@ import org.fresa.stepnc.Tool;
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Steps, closed general outside profiles and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
- * depth; a step or open pocket with bosses is refused (its bosses would be milled away); a
+ * depth; a step, open pocket or planar face with bosses is refused (its bosses would be milled away); a
  * closed pocket leaves its bosses standing ({@link BossPockets}).
  * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
  * outside profiles and open pockets are reported and skipped.
@@ -249,7 +249,10 @@ public final class ToolpathPlanner {
         }
         ToolpathSection local;
         switch (f.type()) {
-            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
+            case PLANAR_FACE -> {
+                noBosses(f);
+                local = face(label, f, op, h, tooling, problems);
+            }
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));

@@ -226,7 +226,14 @@ class StepsAndOutsideProfilesTest {
                         "#85= AXIS2_PLACEMENT_3D('OUTSIDE PROFILE',#101,#96,#97);\n"
                                 + "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#89,#88,(),$,#257,$,$,#235,$);\n"
                                 + "#89= AXIS2_PLACEMENT_3D('INSIDE',#135,#96,#97);\n#135= CARTESIAN_POINT('',(5.0,0.0,0.0));")
-                .replace("#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);", ""));
+                .replace("#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);", "")
+                // a planar face with the round boss
+                .replace("(#10,#11,#12,#13,#14,#15)", "(#10,#11,#12,#13,#14,#15,#400)")
+                .replace("#125= CUTTING_COMPONENT", "#400= MACHINING_WORKINGSTEP('WS FACE WITH BOSS',#62,#401,#310,$);\n"
+                        + "#401= PLANAR_FACE('FACE',#4,(#310),#85,#340,#402,#403,$,(#320));\n"
+                        + "#402= LINEAR_PATH($,120.000,#56);\n#403= LINEAR_PROFILE($,150.000);\n#125= CUTTING_COMPONENT"));
+        assertTrue(problemOf(p, "WS FACE WITH BOSS").endsWith("PLANAR_FACE features with bosses (its_boss) are not"
+                + " supported yet"), p.problems().toString());
         assertTrue(problemOf(p, "WS STEP ROUGH").endsWith("only a vertical wall (profile_angle 90 deg) is milled"),
                 p.problems().toString());
         assertTrue(problemOf(p, "WS STEP CLOSED START").endsWith("STEP features with bosses (its_boss) are not"
