@@ -315,6 +315,15 @@ public final class ToolpathPlanner {
                             + " are not supported yet");
                 }
                 Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "outside profile");
+                double reach = 0;
+                for (Curve2 c : stock.curves()) {
+                    reach = Math.max(reach, part.contour(tol).distanceTo(c.start()));
+                }
+                if (reach > tooling.diameterMm() + tol.linear()) {
+                    // one loop a layer, as a contour: what lies farther out stays (or falls away when the profile goes through)
+                    problems.add("workingstep '" + label + "': the stock reaches " + mm(reach) + " mm beyond the"
+                            + " outside profile; the contour cuts the " + mm(tooling.diameterMm()) + " mm next to it");
+                }
                 local = OpenSideMilling.outsideProfile(label, part.contour(tol), stock, h, tooling, axial,
                         isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
                         isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);

@@ -135,6 +135,9 @@ class StepsAndOutsideProfilesTest {
         long arcs = sec.moves().stream().filter(m -> m instanceof Move.Circular).count();
         // two layers of 3 mm, four rounded corners each: the offset corners stay arcs
         assertEquals(8, arcs);
+        // the block's far corner (120, 0) is sqrt(30^2 + 15^2) from the part's corner (90, 15)
+        assertTrue(plan.problems().contains("workingstep 'WS OUTSIDE PROFILE': the stock reaches 33.54102 mm beyond"
+                + " the outside profile; the contour cuts the 10 mm next to it"), plan.problems().toString());
     }
 
     // the open pocket: x 0..25 between y 60 and 100, and the half circle of radius 20 about (25, 80) beyond
