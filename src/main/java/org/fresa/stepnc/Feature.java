@@ -34,12 +34,14 @@ import org.fresa.geom.Vec3;
  * @param operationIds the instance names of its_operations, in file order
  * @param slotEnds a slot's end_conditions in file order (the path's start, then its end); empty
  *                 for other features and for a slot whose file gives none
+ * @param bosses its_boss (pockets, planar faces, steps) in file order: the material the feature
+ *               must leave standing, each a BOSS in the workpiece frame
  */
 public record Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
         OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
         Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
         OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds,
-        List<SlotEnd> slotEnds) {
+        List<SlotEnd> slotEnds, List<Feature> bosses) {
 
     public Feature {
         Objects.requireNonNull(type);
@@ -56,6 +58,17 @@ public record Feature(long instanceId, FeatureType type, String entity, String i
         Objects.requireNonNull(orthogonalRadiusMm);
         operationIds = List.copyOf(operationIds);
         slotEnds = List.copyOf(slotEnds);
+        bosses = List.copyOf(bosses);
+    }
+
+    /** A feature without bosses. */
+    public Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
+            OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
+            Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
+            OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds,
+            List<SlotEnd> slotEnds) {
+        this(instanceId, type, entity, id, placement, depthMm, depthPlane, profile, courseOfTravel, diameterMm,
+                bottomCondition, planarRadiusMm, orthogonalRadiusMm, operationIds, slotEnds, List.of());
     }
 
     /** A feature without slot ends. */

@@ -689,9 +689,21 @@ final class Iso14649Binder {
                     f.has("planar_radius") ? num(f, "planar_radius") : OptionalDouble.empty(),
                     f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
                     refList(f, "its_operations"), f.name().equals("SLOT") && f.has("end_conditions")
-                            ? slotEnds(f) : List.of());
+                            ? slotEnds(f) : List.of(), bosses(f));
         }
         features.put(id, out);
+        return out;
+    }
+
+    /** A feature's its_boss, each bound as a feature of its own. */
+    private List<Feature> bosses(E f) throws StepParseException {
+        if (!f.has("its_boss")) {
+            return List.of();
+        }
+        List<Feature> out = new ArrayList<>();
+        for (long id : refList(f, "its_boss")) {
+            out.add(feature(f, id));
+        }
         return out;
     }
 

@@ -69,8 +69,12 @@ import org.fresa.stepnc.Tool;
  * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
  * with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
- * <li>Features other than planar faces, closed pockets, round holes and those slots are
- * reported and skipped.
+ * <li>Steps, closed general outside profiles and open pockets bounded by an open general
+ * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
+ * depth; a step, open pocket or planar face with bosses is refused (its bosses would be milled away); a
+ * closed pocket leaves its bosses standing ({@link BossPockets}).
+ * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
+ * outside profiles and open pockets are reported and skipped.
  * </ul>
  */
 public final class ToolpathPlanner {
@@ -245,7 +249,10 @@ public final class ToolpathPlanner {
         }
         ToolpathSection local;
         switch (f.type()) {
-            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
+            case PLANAR_FACE -> {
+                noBosses(f);
+                local = face(label, f, op, h, tooling, problems);
+            }
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
@@ -258,7 +265,13 @@ public final class ToolpathPlanner {
                 }
                 place = place.times(pp);
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
-                local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                if (!f.bosses().isEmpty()) {
+                    local = BossPockets.section(label, p, f, f.placement().times(pp), op, h, tooling, stepover(op, tooling),
+                            axial, climb(op), tol,
+                            holes.choices().entry(), problems);
+                } else {
+                    local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                }
             }
             case ROUND_HOLE -> {
                 local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
@@ -274,11 +287,216 @@ public final class ToolpathPlanner {
                         (outline, layer) -> pocket(label, outline, op, layer, tooling, pp, tol,
                                 holes.choices().entry()));
             }
+            case STEP -> {
+                noBosses(f);
+                StepShape st = stepShape(f, holes.program(), tool, tol);
+                place = place.times(st.frame());
+                local = OpenSideMilling.step(label, st.lengthMm(), st.widthMm(), st.openStart(), st.openEnd(), h,
+                        tooling, stepover(op, tooling), axial, isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);
+            }
+            case GENERAL_OUTSIDE_PROFILE -> {
+                org.fresa.stepnc.Profile sp = f.profile()
+                        .orElseThrow(() -> new IllegalArgumentException("the outside profile has no feature boundary"));
+                if (f.depthMm().isEmpty()) {
+                    throw new IllegalArgumentException("the outside profile has no depth plane");
+                }
+                Transform3 pp = sp.placement();
+                place = place.times(pp);
+                Profile part;
+                if (sp instanceof org.fresa.stepnc.Profile.General g && !g.closed()) {
+                    throw new UnsupportedOperationException("open general outside profiles are not supported yet:"
+                            + " only closed ones are milled as a contour");
+                }
+                try {
+                    part = profile(sp, 0, tol);
+                } catch (UnsupportedOperationException e) {
+                    throw new UnsupportedOperationException("outside profiles bounded by " + sp.entity()
+                            + " are not supported yet");
+                }
+                Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "outside profile");
+                double reach = 0;
+                for (Curve2 c : stock.curves()) {
+                    reach = Math.max(reach, part.contour(tol).distanceTo(c.start()));
+                }
+                if (reach > tooling.diameterMm() + tol.linear()) {
+                    // one loop a layer, as a contour: what lies farther out stays (or falls away when the profile goes through)
+                    problems.add("workingstep '" + label + "': the stock reaches " + mm(reach) + " mm beyond the"
+                            + " outside profile; the contour cuts the " + mm(tooling.diameterMm()) + " mm next to it");
+                }
+                local = OpenSideMilling.outsideProfile(label, part.contour(tol), stock, h, tooling, axial,
+                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);
+            }
+            case OPEN_POCKET -> {
+                noBosses(f);
+                org.fresa.stepnc.Profile sp = f.profile()
+                        .orElseThrow(() -> new IllegalArgumentException("the open pocket has no open boundary"));
+                if (!(sp instanceof org.fresa.stepnc.Profile.General g) || g.closed() || g.segments().isEmpty()) {
+                    throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
+                            + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side");
+                }
+                if (isThrough(f) || f.depthMm().isEmpty()) {
+                    throw new UnsupportedOperationException("through open pockets are not supported yet");
+                }
+                double rho = f.planarRadiusMm().orElse(0);
+                double edge = tool.edgeRadiusMm().orElse(0);
+                if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
+                    throw new UnsupportedOperationException("the open pocket's floor meets its walls in a " + mm(rho)
+                            + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
+                }
+                if (f.orthogonalRadiusMm().orElse(0) > tooling.radiusMm() + tol.linear()) {
+                    throw new UnsupportedOperationException("the open pocket's corner radius "
+                            + mm(f.orthogonalRadiusMm().getAsDouble()) + " mm is larger than the tool's radius: the"
+                            + " corners would be cut sharper than drawn");
+                }
+                Transform3 pp = g.placement();
+                place = place.times(pp);
+                List<Curve2> walls = new ArrayList<>();
+                for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
+                    Vec2 a = new Vec2(seg.start().x(), seg.start().y());
+                    Vec2 b = new Vec2(seg.end().x(), seg.end().y());
+                    if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
+                        walls.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+                    } else if (a.distance(b) > tol.linear()) {
+                        walls.add(new Segment2(a, b));
+                    }
+                }
+                Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "open pocket");
+                local = OpenSideMilling.openPocket(label, walls, stock, h, tooling, stepover(op, tooling), axial,
+                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol, problems);
+            }
             default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
                     : f.type()) + " features are not supported yet");
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /** Refuses a feature with bosses: cutting it as if it had none would mill them away. */
+    static void noBosses(Feature f) {
+        if (!f.bosses().isEmpty()) {
+            throw new UnsupportedOperationException(f.type() + " features with bosses (its_boss) are not supported yet");
+        }
+    }
+
+    /**
+     * Climb milling unless the strategy's cutmode says conventional: with the spindle turning
+     * clockwise, the material being cut on the tool's right.
+     */
+    static boolean climb(Operation op) {
+        return !op.strategy().flatMap(org.fresa.stepnc.Strategy::cutmode)
+                .map(m -> m.equalsIgnoreCase("CONVENTIONAL")).orElse(false);
+    }
+
+    /**
+     * A step in its own frame (x along the open boundary from its start, z the feature axis, the
+     * material kept at +y) and how far the step reaches out to the stock's edge.
+     */
+    record StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {
+    }
+
+    /**
+     * The step's frame and extent: ISO 14649-10 keeps the material on the left of the open
+     * boundary as it runs; the step is what lies to its right, out to the workpiece's BLOCK, whose
+     * side there must be parallel to the boundary. An end of the boundary at or beyond the
+     * block's end is open.
+     */
+    static StepShape stepShape(Feature f, StepNcProgram program, Tool tool, Tolerance tol) {
+        org.fresa.stepnc.TravelPath path = f.courseOfTravel()
+                .orElseThrow(() -> new IllegalArgumentException("the step has no open boundary"));
+        if (!path.entity().equals("LINEAR_PATH")) {
+            throw new UnsupportedOperationException("steps along a " + path.entity() + " are not supported yet");
+        }
+        double length = path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the step's open boundary"
+                + " has no length"));
+        if (!(length > 0 && length <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("step length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+        }
+        org.fresa.stepnc.Profile wall = f.profile()
+                .orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
+        if (wall instanceof org.fresa.stepnc.Profile.Vee v) {
+            // GRIMA's writers put pi / 2 there in radians, also in files not otherwise known as
+            // theirs: a wall 1.57 deg from its floor is no step
+            boolean radiansRight = Math.abs(v.profileAngleDeg() - Math.PI / 2) < 1e-6;
+            if (!radiansRight && Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
+                throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
+                        + " deg to its floor: only a vertical wall (profile_angle 90 deg) is milled");
+            }
+            double rho = v.profileRadiusMm().orElse(0);
+            double edge = tool.edgeRadiusMm().orElse(0);
+            if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
+                throw new UnsupportedOperationException("the step's wall meets its floor in a " + mm(rho)
+                        + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
+            }
+        } else {
+            throw new UnsupportedOperationException("step walls given by " + wall.entity() + " are not supported yet");
+        }
+        Vec3 d3 = path.placement().applyToDirection(path.direction().orElse(Vec3.UNIT_X));
+        Vec2 along = new Vec2(d3.x(), d3.y());
+        if (along.norm() < 1e-9) {
+            throw new UnsupportedOperationException("the step's open boundary runs along the tool axis");
+        }
+        along = along.normalized();
+        Vec3 s3 = path.placement().applyToPoint(Vec3.ZERO);
+        Vec2 start = new Vec2(s3.x(), s3.y());
+        Vec2 right = new Vec2(along.y(), -along.x());
+        Contour stock = stockOutline(program, f, f.placement(), "step");
+        double width = Double.NEGATIVE_INFINITY;
+        double second = Double.NEGATIVE_INFINITY;
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (Curve2 c : stock.curves()) {
+            Vec2 p = c.start().minus(start);
+            double across = p.dot(right);
+            if (across > width) {
+                second = width;
+                width = across;
+            } else if (across > second) {
+                second = across;
+            }
+            lo = Math.min(lo, p.dot(along));
+            hi = Math.max(hi, p.dot(along));
+        }
+        if (!(width > tol.linear())) {
+            throw new IllegalArgumentException("the workpiece's block lies left of the step's open boundary: nothing"
+                    + " to remove on its right");
+        }
+        if (width - second > tol.linear()) {
+            throw new UnsupportedOperationException("the step's open boundary is not parallel to a side of the"
+                    + " workpiece's block");
+        }
+        Transform3 frame = Transform3.ofFrame(s3.minus(new Vec3(0, 0, s3.z())), Vec3.UNIT_Z,
+                new Vec3(along.x(), along.y(), 0));
+        return new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear());
+    }
+
+    /**
+     * The outline of the workpiece's BLOCK in a frame (its footprint on the frame's xy plane,
+     * counter-clockwise), for features that reach to the stock's edge; the block's sides must
+     * stand along the frame's z axis.
+     */
+    static Contour stockOutline(StepNcProgram program, Feature f, Transform3 frame, String what) {
+        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f).flatMap(org.fresa.stepnc.Workpiece::block)
+                .orElseThrow(() -> new IllegalArgumentException("the " + what + " reaches to the stock's edge and the"
+                        + " file gives no workpiece BLOCK"));
+        Transform3 toFrame = frame.inverse().times(b.placement());
+        Vec3 z = toFrame.applyToDirection(Vec3.UNIT_Z);
+        if (Math.abs(Math.abs(z.z()) - 1) > 1e-9) {
+            throw new UnsupportedOperationException("the " + what + "'s axis is not along the workpiece block's z axis");
+        }
+        Vec2[] corners = new Vec2[4];
+        double[][] xy = {{0, 0}, {b.xMm(), 0}, {b.xMm(), b.yMm()}, {0, b.yMm()}};
+        for (int i = 0; i < 4; i++) {
+            Vec3 p = toFrame.applyToPoint(new Vec3(xy[i][0], xy[i][1], 0));
+            corners[i] = new Vec2(p.x(), p.y());
+        }
+        List<Curve2> cs = new ArrayList<>();
+        for (int i = 0; i < 4; i++) {
+            cs.add(new Segment2(corners[i], corners[(i + 1) % 4]));
+        }
+        return Contour.of(cs, Tolerance.DRAWING).ccw();
     }
 
     static double slotLength(Feature f) {

@@ -1,0 +1,337 @@
+package org.fresa.toolpath;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
+import org.fresa.geom.Segment2;
+import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec2;
+import org.fresa.geom.Vec3;
+import org.fresa.model.ToolpathSection;
+
+/**
+ * Features open to the outside of the stock, milled with the tool coming in from the air at
+ * depth rather than ramping into the material: steps (ISO 14649-10 step) and general outside
+ * profiles. With the spindle turning clockwise (M3), climb milling keeps the material being cut
+ * on the right of the tool's travel.
+ */
+final class OpenSideMilling {
+
+    /** How far outside the stock the tool goes down and comes back up, beyond its radius (mm). */
+    static final double OUTSIDE_MM = 2.0;
+
+    private OpenSideMilling() {
+    }
+
+    /**
+     * A step in its frame: x along the open boundary from its start (0 to length), the wall at
+     * y 0 with the material kept at +y, the step's floor from the wall out to the stock's edge at
+     * y = -width, z the feature axis (top 0). Passes run parallel to the wall, the first one at
+     * the open side, each a stepover nearer the wall, the last one with the tool touching the
+     * wall (less the side allowance); each is entered from the air beyond the open side at its
+     * layer's depth. An end of the step where the stock ends lets the tool run past it; a closed
+     * end keeps the tool's edge within the path's length.
+     *
+     * @param climb with M3: passes run along -x (the step's material on the tool's right)
+     * @throws UnsupportedOperationException when the tool does not fit between closed ends
+     */
+    static ToolpathSection step(String label, double lengthMm, double widthMm, boolean openStart, boolean openEnd,
+            Heights h, Tooling t, double stepoverMm, double axialMm, double sideAllowanceMm,
+            double bottomAllowanceMm, boolean climb, Tolerance tol) {
+        double r = t.radiusMm();
+        double x0 = openStart ? -(r + OUTSIDE_MM) : r;
+        double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
+        if (x1 < x0 - tol.linear()) {
+            throw new UnsupportedOperationException("the tool (" + ToolpathPlanner.mm(t.diameterMm())
+                    + " mm) is longer than the step between its closed ends (" + ToolpathPlanner.mm(lengthMm) + " mm)");
+        }
+        x1 = Math.max(x1, x0);
+        double wallY = -(r + sideAllowanceMm);
+        double outY = -(widthMm + r + OUTSIDE_MM);
+        // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
+        List<Double> ys = new ArrayList<>();
+        double y = -widthMm - r + stepoverMm;
+        ToolpathPlanner.bounded("the step's width", widthMm, "the stepover", stepoverMm);
+        while (y < wallY - tol.linear()) {
+            ys.add(y);
+            y += stepoverMm;
+        }
+        ys.add(wallY);
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        double xa = climb ? x1 : x0;
+        double xb = climb ? x0 : x1;
+        MoveBuilder b = new MoveBuilder(new Vec3(xa, outY, h.clearanceZ()));
+        b.rapid(new Vec3(xa, outY, h.retractZ()));
+        for (double z : layers.layers(axialMm)) {
+            for (double py : ys) {
+                b.rapid(new Vec3(xa, outY, h.retractZ()));
+                // down in the air beyond the open side, then in at depth
+                b.feed(new Vec3(xa, outY, z), t.plungeFeedMmPerMin());
+                b.feed(new Vec3(xa, py, z), t.feedMmPerMin());
+                b.feed(new Vec3(xb, py, z), t.feedMmPerMin());
+                b.feed(new Vec3(xb, outY, z), t.feedMmPerMin());
+                b.rapid(new Vec3(xb, outY, h.retractZ()));
+            }
+        }
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
+                new Vec3(xa, outY, h.clearanceZ()), b.moves());
+    }
+
+    /**
+     * A closed outside profile: one loop per layer at the tool's radius (and the side allowance)
+     * outside the part's outline, entered and left along a straight line from the air beyond the
+     * stock, at the loop's point nearest to it.
+     *
+     * @param part the part's outline (the material kept), counter-clockwise, in the feature frame
+     * @param stock the stock's outline in the same frame, counter-clockwise
+     * @param climb with M3: the loop runs clockwise (the part on the tool's right)
+     * @throws UnsupportedOperationException when no straight lead-in from outside the stock clears the part
+     */
+    static ToolpathSection outsideProfile(String label, Contour part, Contour stock, Heights h, Tooling t,
+            double axialMm, double sideAllowanceMm, double bottomAllowanceMm, boolean climb, Tolerance tol) {
+        double r = t.radiusMm();
+        double off = r + sideAllowanceMm;
+        List<Contour> loops = org.fresa.pocket.LineArcOffsetter.offset(part, off, tol);
+        Contour loop = loops.stream().filter(Contour::isCcw).max(java.util.Comparator.comparingDouble(Contour::area))
+                .orElseThrow(() -> new UnsupportedOperationException("the profile has no outward offset by "
+                        + ToolpathPlanner.mm(off) + " mm"));
+        // where the loop comes nearest the stock's edge: there the lead-in crosses the least material
+        List<Curve2> cs = splitAtMiddles(loop.curves());
+        int best = -1;
+        double bestD = Double.POSITIVE_INFINITY;
+        Vec2 bestOut = null;
+        for (int i = 0; i < cs.size(); i++) {
+            Vec2 p = cs.get(i).start();
+            Vec2 q = outside(stock, p, r + OUTSIDE_MM);
+            if (q == null) {
+                continue;
+            }
+            double d = p.distance(q);
+            if (d < bestD && clears(part, p, q, off, tol)) {
+                best = i;
+                bestD = d;
+                bestOut = q;
+            }
+        }
+        if (best < 0) {
+            throw new UnsupportedOperationException("no straight lead-in from outside the stock reaches the profile"
+                    + " without cutting into the part");
+        }
+        List<Curve2> ring = new ArrayList<>(cs.subList(best, cs.size()));
+        ring.addAll(cs.subList(0, best));
+        if (climb) {
+            ring = reversed(ring);
+        }
+        Vec2 p = ring.get(0).start();
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        MoveBuilder b = new MoveBuilder(Vec3.of(bestOut, h.clearanceZ()));
+        b.rapid(Vec3.of(bestOut, h.retractZ()));
+        for (double z : layers.layers(axialMm)) {
+            b.rapid(Vec3.of(bestOut, h.retractZ()));
+            b.feed(Vec3.of(bestOut, z), t.plungeFeedMmPerMin());
+            b.feed(Vec3.of(p, z), t.feedMmPerMin());
+            b.curves(ring, z, t.feedMmPerMin());
+            b.feed(Vec3.of(bestOut, z), t.feedMmPerMin());
+            b.rapid(Vec3.of(bestOut, h.retractZ()));
+        }
+        b.rapid(Vec3.of(bestOut, h.clearanceZ()));
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
+                Vec3.of(bestOut, h.clearanceZ()), b.moves());
+    }
+
+    /**
+     * An open pocket: its walls (an open chain of lines and arcs, in the feature frame) closed by
+     * the straight open side from the chain's end back to its start, which must lie on the
+     * stock's edge. The region is carried past the open side by a cutter's diameter and the
+     * clearance, so that each layer is cut by passes square to the open side that start in the
+     * air beyond it at depth, run in to the far wall and come back out the same way, then by one
+     * loop along the walls entered at its point farthest out. No entry ramp is needed.
+     *
+     * @param walls the wall chain, start to end
+     * @param stock the stock's outline in the feature frame, counter-clockwise
+     * @param climb with M3: passes in order with the material on the tool's right, the loop
+     *     counter-clockwise
+     * @throws UnsupportedOperationException when the open side is not on the stock's edge or the
+     *     tool does not fit
+     */
+    static ToolpathSection openPocket(String label, List<Curve2> walls, Contour stock, Heights h, Tooling t,
+            double stepoverMm, double axialMm, double sideAllowanceMm, double bottomAllowanceMm, boolean climb,
+            Tolerance tol, List<String> problems) {
+        double r = t.radiusMm();
+        double off = r + sideAllowanceMm;
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        if (s.distance(e) < 2 * off + tol.linear()) {
+            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
+                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
+        }
+        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
+            if (stock.distanceTo(p) > tol.linear()) {
+                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to ("
+                        + xy(s) + "), is not on the edge of the workpiece's block");
+            }
+        }
+        List<Curve2> closed = new ArrayList<>(walls);
+        closed.add(new Segment2(e, s));
+        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
+        Vec2 chord = s.minus(e).normalized();
+        Vec2 out = chord.leftNormal();
+        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
+            out = out.negated();
+        }
+        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
+        double past = 2 * off + OUTSIDE_MM;
+        List<Curve2> grown = new ArrayList<>(walls);
+        Vec2 e2 = e.plus(out.times(past));
+        Vec2 s2 = s.plus(out.times(past));
+        grown.add(new Segment2(e, e2));
+        grown.add(new Segment2(e2, s2));
+        grown.add(new Segment2(s2, s));
+        Profile region = new Profile.General(Contour.of(grown, Tolerance.DRAWING), ContourOffsetter.EXACT);
+        List<Ring> rings = region.insetAll(off, tol);
+        if (rings.isEmpty()) {
+            throw new UnsupportedOperationException("the tool (" + ToolpathPlanner.mm(t.diameterMm()) + " mm) does not"
+                    + " fit in the open pocket");
+        }
+        Ring ring = rings.get(0);
+        if (rings.size() > 1) {
+            problems.add("workingstep '" + label + "': " + (rings.size() - 1) + " part(s) of the pocket the "
+                    + ToolpathPlanner.mm(t.diameterMm()) + " mm tool cannot reach from the open side are left");
+        }
+        double edge = s.dot(out);
+        List<Pass> passes = new ArrayList<>();
+        int skipped = 0;
+        for (Pass p : PlanarPasses.parallelSplit(ring, stepoverMm, out.negated(), false, tol)) {
+            // only passes that start in the air past the open side: the others would need an entry ramp
+            if (p.start().dot(out) >= edge + r + OUTSIDE_MM / 2) {
+                passes.add(p);
+            } else {
+                skipped++;
+            }
+        }
+        if (skipped > 0) {
+            problems.add("workingstep '" + label + "': " + skipped + " pass(es) behind the walls, which the tool"
+                    + " cannot reach straight from the open side, are left to the loop along the walls");
+        }
+        if (!climb) {
+            java.util.Collections.reverse(passes);
+        }
+        List<Curve2> loop = startFarthestOut(ring.curves(), out);
+        if (!climb) {
+            loop = reversed(loop);
+        }
+        Vec2 loopStart = loop.get(0).start();
+        Vec2 first = passes.isEmpty() ? loopStart : passes.get(0).start();
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
+        for (double z : layers.layers(axialMm)) {
+            for (Pass p : passes) {
+                b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+                b.rapid(Vec3.of(p.start(), h.retractZ()));
+                b.feed(Vec3.of(p.start(), z), t.plungeFeedMmPerMin());
+                b.curves(p.curves(), z, t.feedMmPerMin());
+                b.feed(Vec3.of(p.start(), z), t.feedMmPerMin());
+            }
+            b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+            b.rapid(Vec3.of(loopStart, h.retractZ()));
+            b.feed(Vec3.of(loopStart, z), t.plungeFeedMmPerMin());
+            b.curves(loop, z, t.feedMmPerMin());
+            b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+        }
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
+                Vec3.of(first, h.clearanceZ()), b.moves());
+    }
+
+    /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */
+    private static List<Curve2> startFarthestOut(List<Curve2> cs, Vec2 out) {
+        List<Curve2> split = splitAtMiddles(cs);
+        int best = 0;
+        for (int i = 1; i < split.size(); i++) {
+            if (split.get(i).start().dot(out) > split.get(best).start().dot(out) + 1e-9) {
+                best = i;
+            }
+        }
+        List<Curve2> ring = new ArrayList<>(split.subList(best, split.size()));
+        ring.addAll(split.subList(0, best));
+        return ring;
+    }
+
+    private static List<Curve2> reversed(List<Curve2> cs) {
+        List<Curve2> rev = new ArrayList<>();
+        for (int i = cs.size() - 1; i >= 0; i--) {
+            Curve2 c = cs.get(i);
+            rev.add(c instanceof Arc2 a ? a.reversed() : ((Segment2) c).reversed());
+        }
+        return rev;
+    }
+
+    private static String xy(Vec2 p) {
+        return ToolpathPlanner.mm(p.x()) + ", " + ToolpathPlanner.mm(p.y());
+    }
+
+    /** The curves with every straight segment split at its middle: more places to lead in. */
+    private static List<Curve2> splitAtMiddles(List<Curve2> cs) {
+        List<Curve2> out = new ArrayList<>();
+        for (Curve2 c : cs) {
+            if (c instanceof Segment2 s && s.start().distance(s.end()) > 1e-6) {
+                Vec2 m = s.start().interpolate(s.end(), 0.5);
+                out.add(new Segment2(s.start(), m));
+                out.add(new Segment2(m, s.end()));
+            } else {
+                out.add(c);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The point straight out from p past the nearest edge of the stock by the clearance, or null
+     * when p is not inside the stock (the loop is in the air there already).
+     */
+    private static Vec2 outside(Contour stock, Vec2 p, double clearance) {
+        Vec2 nearest = null;
+        double best = Double.POSITIVE_INFINITY;
+        for (Curve2 c : stock.curves()) {
+            if (c instanceof Segment2 s) {
+                Vec2 d = s.end().minus(s.start());
+                double len2 = d.dot(d);
+                double u = len2 > 0 ? Math.max(0, Math.min(1, p.minus(s.start()).dot(d) / len2)) : 0;
+                Vec2 q = s.start().plus(d.times(u));
+                if (q.distance(p) < best) {
+                    best = q.distance(p);
+                    nearest = q;
+                }
+            }
+        }
+        if (nearest == null) {
+            return null;
+        }
+        if (stock.windingNumber(p) == 0) {
+            return p;
+        }
+        Vec2 dir = best > 1e-9 ? nearest.minus(p).normalized() : null;
+        if (dir == null) {
+            return null;
+        }
+        return nearest.plus(dir.times(clearance));
+    }
+
+    /** Whether the tool along p..q stays the offset away from the part (sampled every 0.1 mm). */
+    private static boolean clears(Contour part, Vec2 p, Vec2 q, double off, Tolerance tol) {
+        int n = Math.max(2, (int) Math.ceil(p.distance(q) / 0.1));
+        for (int k = 0; k <= n; k++) {
+            Vec2 x = p.interpolate(q, (double) k / n);
+            if (part.windingNumber(x) != 0 || part.distanceTo(x) < off - tol.linear()) {
+                return false;
+            }
+        }
+        return true;
+    }
+}
