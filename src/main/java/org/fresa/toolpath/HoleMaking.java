@@ -192,7 +192,7 @@ public final class HoleMaking {
      * tolerance) is plunged in steps of the axial depth instead.
      *
      * @param axialDepthMm largest descent per turn; 0 or less for one turn
-     * @param clockwise turn clockwise seen from +Z (climb milling with an M3 spindle)
+     * @param clockwise turn clockwise seen from +Z (conventional milling of the wall with an M3 spindle)
      * @throws IllegalArgumentException when the tool is wider than the hole
      */
     public static ToolpathSection mill(String label, Vec2 center, double holeDiameterMm, Heights h, Tooling tool,

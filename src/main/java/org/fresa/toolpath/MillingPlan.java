@@ -14,7 +14,7 @@ import org.fresa.geom.Vec2;
  * @param bottomAllowanceMm material left on the floor, >= 0
  * @param feedDirection direction of parallel passes in the feature plane
  * @param clockwise loop sense seen from the tool (+Z of the feature): with an M3 spindle,
- *     clockwise loops climb-mill a pocket's walls
+ *     counter-clockwise loops climb-mill a pocket's walls, clockwise ones mill them conventionally
  * @param approach how each layer is entered
  * @param finishPass after roughing with allowances, run the pattern once more at full depth
  * @param entry the entry the user asks for ({@link PlanningChoices#entry()}), with the approach

@@ -27,7 +27,7 @@ public final class PlanarPasses {
 
     /**
      * @param feedDirection unit direction of parallel passes in the feature plane
-     * @param clockwise run loops clockwise (climb milling of a pocket with an M3 spindle)
+     * @param clockwise run loops clockwise (conventional milling of a pocket's walls with an M3 spindle)
      * @throws IllegalArgumentException when the tool does not fit in the profile
      */
     public static List<Pass> of(Strategy strategy, Profile profile, double wallOffsetMm, double stepoverMm,

@@ -54,7 +54,9 @@ import org.fresa.stepnc.Tool;
  * milling, mm/rev for drilling, times the spindle speed ({@link FeedRate}). Each such reading is
  * reported once per distinct value.
  * <li>Loops run clockwise when rotation_direction is CW, or, without it, when the cut mode is
- * climb (a pocket with an M3 spindle); counter-clockwise otherwise.
+ * conventional; counter-clockwise otherwise. With the spindle turning clockwise (M3) a tooth
+ * cuts its thickest chip first (climb) when the material is on the tool's right, and a pocket's
+ * or hole's walls, outside its loops, are on the right of a counter-clockwise loop.
  * <li>Rough operations keep the file's allowances; finish operations cut to size.
  * <li>Round holes: drilling-type operations drill along the axis with the drilling strategy's
  * reduced feeds over the start and end depths; the tip goes to cutting_depth when the file
@@ -885,7 +887,7 @@ public final class ToolpathPlanner {
         if (s.get().rotationDirection().isPresent()) {
             return s.get().rotationDirection().get().equalsIgnoreCase("CW");
         }
-        return s.get().cutmode().map(m -> m.equalsIgnoreCase("CLIMB")).orElse(false);
+        return s.get().cutmode().map(m -> m.equalsIgnoreCase("CONVENTIONAL")).orElse(false);
     }
 
     static Approach approach(Optional<ApproachRetract> a) {
