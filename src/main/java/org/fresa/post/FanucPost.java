@@ -1,7 +1,6 @@
 package org.fresa.post;
 
 import java.util.List;
-import java.util.Optional;
 
 /**
  * Fanuc 0i/30i-style milling: tape marks, an O program number with the name as comment
@@ -12,7 +11,7 @@ import java.util.Optional;
 final class FanucPost extends GcodePost {
 
     FanucPost(double chordToleranceMm) {
-        super(chordToleranceMm);
+        super(Dialect.FANUC, chordToleranceMm);
     }
 
     @Override
@@ -25,14 +24,10 @@ final class FanucPost extends GcodePost {
         return "Fanuc milling: O number, N blocks, G21 G90, T M06 G43 H, G02/G03 with I/J/K";
     }
 
-    @Override
-    boolean blockNumbers() {
-        return true;
-    }
-
+    /** Upper case: the character set of Fanuc's tape code has no lower-case letters. */
     @Override
     String comment(String text) {
-        return "(" + plain(text).toUpperCase(java.util.Locale.ROOT) + ")";
+        return dialect().comment(plain(text).toUpperCase(java.util.Locale.ROOT));
     }
 
     @Override
@@ -46,31 +41,6 @@ final class FanucPost extends GcodePost {
     }
 
     @Override
-    List<String> toolChange(int tool) {
-        return List.of("M05", "T" + tool + " M06", "G43 H" + tool);
-    }
-
-    @Override
-    List<String> spindleOn(long rpm, boolean clockwise) {
-        return List.of("S" + rpm + (clockwise ? " M03" : " M04"));
-    }
-
-    @Override
-    String spindleOff() {
-        return "M05";
-    }
-
-    /**
-     * X in seconds, always with a decimal point: Fanuc reads a dwell X without one in the least
-     * input increment (ms) and P only as integer milliseconds, so X with a point is the one form
-     * that means the same on every parameter setting.
-     */
-    @Override
-    String dwell(double s) {
-        return "G04 X" + seconds(s);
-    }
-
-    @Override
     List<String> safeEnd() {
         return List.of("M05", "G40 G49 G80", "M30");
     }
@@ -78,10 +48,5 @@ final class FanucPost extends GcodePost {
     @Override
     List<String> trailer() {
         return List.of("%");
-    }
-
-    @Override
-    Optional<String> turnsWord(int extraTurns) {
-        return Optional.empty();
     }
 }

@@ -14,7 +14,8 @@ import org.fresa.model.ToolpathSection;
 /**
  * The shared body of the word-address G-code posts (ISO 6983 family): a safe start block,
  * per section a comment, tool change and spindle start when they change, a rapid to the
- * section's start, its moves, then a safe end block. Subclasses give the dialect's words.
+ * section's start, its moves, then a safe end block. The {@link Dialect} gives the control's words
+ * (block numbers, comments, tool change, spindle, dwell, turns); subclasses the program's frame.
  *
  * <p>Conventions shared by every dialect here:
  * <ul>
@@ -31,7 +32,7 @@ import org.fresa.model.ToolpathSection;
  * <li>Dwells are the dialect's dwell block with the time in seconds ({@link #dwell}); spindle
  * stops and starts inside a section are M5 and S.. M3/M4 blocks, and a section whose spindle
  * was stopped starts it again even at an unchanged speed.
- * <li>Extra full turns use the dialect's turn word when it has one ({@link #turnsWord}),
+ * <li>Extra full turns use the dialect's turn word when it has one ({@link Dialect#turnsWord}),
  * otherwise each turn is written as its own full-circle block.
  * <li>The tool axis of a section is not used for motion: a 3-axis machine has its spindle along
  * +Z. A section whose axis is not +Z is written as is with a comment saying so.
@@ -42,9 +43,11 @@ abstract class GcodePost implements NcPost {
     /** Chord tolerance for arcs outside the three principal planes, in mm. */
     public static final double DEFAULT_CHORD_TOLERANCE_MM = 0.001;
 
+    private final Dialect dialect;
     private final double chordToleranceMm;
 
-    GcodePost(double chordToleranceMm) {
+    GcodePost(Dialect dialect, double chordToleranceMm) {
+        this.dialect = java.util.Objects.requireNonNull(dialect, "dialect");
         if (!(chordToleranceMm > 0)) {
             throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
         }
@@ -61,11 +64,15 @@ abstract class GcodePost implements NcPost {
         return 3;
     }
 
-    /** Whether blocks carry N numbers (N10, N20, ...). */
-    abstract boolean blockNumbers();
+    /** The dialect's words. */
+    public Dialect dialect() {
+        return dialect;
+    }
 
     /** A whole comment block in the dialect's syntax. */
-    abstract String comment(String text);
+    String comment(String text) {
+        return dialect.comment(plain(text));
+    }
 
     /** Lines before the first numbered block (tape start, program number), unnumbered. */
     abstract List<String> header(String programName);
@@ -73,21 +80,10 @@ abstract class GcodePost implements NcPost {
     /** The safe start block(s): units, absolute, plane, cancellations. */
     abstract List<String> safeStart();
 
-    /** Blocks that load tool {@code tool} and apply its length offset. */
-    abstract List<String> toolChange(int tool);
-
-    /** Blocks that start the spindle at the speed, clockwise (M3) or counter-clockwise (M4). */
-    List<String> spindleOn(long rpm, boolean clockwise) {
-        return List.of("S" + rpm + (clockwise ? " M3" : " M4"));
+    /** The block of a dwell of the given time, in seconds written with {@link #seconds(double)}. */
+    private String dwell(double seconds) {
+        return dialect.dwell(seconds(seconds));
     }
-
-    /** The block that stops the spindle. */
-    String spindleOff() {
-        return "M5";
-    }
-
-    /** The block of a dwell of the given time; seconds are written with {@link #seconds(double)}. */
-    abstract String dwell(double seconds);
 
     /** A time in seconds with three decimals (the controls' millisecond resolution), Locale.ROOT. */
     static String seconds(double s) {
@@ -102,12 +98,9 @@ abstract class GcodePost implements NcPost {
         return List.of();
     }
 
-    /** The word that asks for extra full turns on an arc block, when the dialect has one. */
-    abstract Optional<String> turnsWord(int extraTurns);
-
     @Override
     public void write(Toolpath path, String programName, Writer out) throws IOException {
-        Program p = new Program(blockNumbers());
+        Program p = new Program(dialect.numbered());
         for (String h : header(programName)) {
             p.raw(h);
         }
@@ -126,14 +119,14 @@ abstract class GcodePost implements NcPost {
                         + num(s.toolAxis().z()) + " is not +Z: needs the part turned or a spindle along this axis"));
             }
             if (s.toolNumber() != tool) {
-                toolChange(s.toolNumber()).forEach(p::block);
+                dialect.toolChange(s.toolNumber()).forEach(p::block);
                 tool = s.toolNumber();
                 rpm = -1;
                 feed = -1;
             }
             long sRpm = Math.round(s.spindleRpm());
             if (sRpm > 0 && (sRpm != rpm || !clockwise)) {
-                spindleOn(sRpm, true).forEach(p::block);
+                p.block(dialect.spindleOn(sRpm, true));
                 rpm = sRpm;
                 clockwise = true;
             }
@@ -151,12 +144,12 @@ abstract class GcodePost implements NcPost {
                 } else if (m instanceof Move.Dwell d) {
                     p.block(dwell(d.seconds()));
                 } else if (m instanceof Move.SpindleStop) {
-                    p.block(spindleOff());
+                    p.block(dialect.spindleOff());
                     rpm = -1;
                 } else if (m instanceof Move.SpindleStart on) {
                     rpm = Math.round(on.rpm());
                     clockwise = on.clockwise();
-                    spindleOn(rpm, clockwise).forEach(p::block);
+                    p.block(dialect.spindleOn(rpm, clockwise));
                 } else {
                     throw new IllegalStateException("no G-code for " + m);
                 }
@@ -189,7 +182,7 @@ abstract class GcodePost implements NcPost {
         String prefix = plane == current ? "" : plane.word + " ";
         Vec3 off = c.center().minus(start);
         String centre = plane.centreWords(off, this);
-        Optional<String> turns = c.turns() == 0 ? Optional.of("") : turnsWord(c.turns());
+        Optional<String> turns = c.turns() == 0 ? Optional.of("") : dialect.turnsWord(c.turns());
         if (turns.isPresent()) {
             String t = turns.get().isEmpty() ? "" : " " + turns.get();
             p.block(prefix + g + " " + xyz(c.end()) + " " + centre + t + feedWord(c.feedMmPerMin(), feed));

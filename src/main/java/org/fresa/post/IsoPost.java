@@ -1,7 +1,6 @@
 package org.fresa.post;
 
 import java.util.List;
-import java.util.Optional;
 
 /**
  * Plain ISO 6983-1 word addresses, the common subset most controls read: block numbers, G21 for
@@ -11,7 +10,7 @@ import java.util.Optional;
 final class IsoPost extends GcodePost {
 
     IsoPost(double chordToleranceMm) {
-        super(chordToleranceMm);
+        super(Dialect.ISO, chordToleranceMm);
     }
 
     @Override
@@ -25,16 +24,6 @@ final class IsoPost extends GcodePost {
     }
 
     @Override
-    boolean blockNumbers() {
-        return true;
-    }
-
-    @Override
-    String comment(String text) {
-        return "(" + plain(text) + ")";
-    }
-
-    @Override
     List<String> header(String programName) {
         return List.of("%");
     }
@@ -45,11 +34,6 @@ final class IsoPost extends GcodePost {
     }
 
     @Override
-    List<String> toolChange(int tool) {
-        return List.of("M5", "T" + tool + " M6");
-    }
-
-    @Override
     List<String> safeEnd() {
         return List.of("M5", "G40 G80", "M30");
     }
@@ -57,16 +41,5 @@ final class IsoPost extends GcodePost {
     @Override
     List<String> trailer() {
         return List.of("%");
-    }
-
-    /** G04 with X in seconds, the address the Fanuc-like majority of ISO controls reads. */
-    @Override
-    String dwell(double s) {
-        return "G04 X" + seconds(s);
-    }
-
-    @Override
-    Optional<String> turnsWord(int extraTurns) {
-        return Optional.empty();
     }
 }

@@ -1,7 +1,6 @@
 package org.fresa.post;
 
 import java.util.List;
-import java.util.Optional;
 
 /**
  * LinuxCNC's RS274/NGC: parenthesised comments, no block numbers, tool length offset G43 Hn after
@@ -10,7 +9,7 @@ import java.util.Optional;
 final class LinuxCncPost extends GcodePost {
 
     LinuxCncPost(double chordToleranceMm) {
-        super(chordToleranceMm);
+        super(Dialect.LINUXCNC, chordToleranceMm);
     }
 
     @Override
@@ -24,16 +23,6 @@ final class LinuxCncPost extends GcodePost {
     }
 
     @Override
-    boolean blockNumbers() {
-        return false;
-    }
-
-    @Override
-    String comment(String text) {
-        return "(" + plain(text) + ")";
-    }
-
-    @Override
     List<String> header(String programName) {
         return List.of("%");
     }
@@ -44,11 +33,6 @@ final class LinuxCncPost extends GcodePost {
     }
 
     @Override
-    List<String> toolChange(int tool) {
-        return List.of("M5", "T" + tool + " M6", "G43 H" + tool);
-    }
-
-    @Override
     List<String> safeEnd() {
         return List.of("M5", "G40 G49 G80", "M30");
     }
@@ -56,16 +40,5 @@ final class LinuxCncPost extends GcodePost {
     @Override
     List<String> trailer() {
         return List.of("%");
-    }
-
-    /** RS274/NGC: P in seconds, fractions allowed. */
-    @Override
-    String dwell(double s) {
-        return "G4 P" + seconds(s);
-    }
-
-    @Override
-    Optional<String> turnsWord(int extraTurns) {
-        return Optional.of("P" + (extraTurns + 1));
     }
 }

@@ -2,7 +2,6 @@ package org.fresa.post;
 
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 
 /**
  * Siemens Sinumerik 840D in Siemens mode: {@code ;} comments, block numbers, G71 for
@@ -12,7 +11,7 @@ import java.util.Optional;
 final class Sinumerik840dPost extends GcodePost {
 
     Sinumerik840dPost(double chordToleranceMm) {
-        super(chordToleranceMm);
+        super(Dialect.SIEMENS_840D, chordToleranceMm);
     }
 
     @Override
@@ -23,16 +22,6 @@ final class Sinumerik840dPost extends GcodePost {
     @Override
     public String description() {
         return "Siemens Sinumerik 840D: ; comments, N blocks, G71 G90, T D1 M6, plain G2/G3 with incremental I/J/K, TURN=";
-    }
-
-    @Override
-    boolean blockNumbers() {
-        return true;
-    }
-
-    @Override
-    String comment(String text) {
-        return "; " + plain(text);
     }
 
     @Override
@@ -50,23 +39,7 @@ final class Sinumerik840dPost extends GcodePost {
     }
 
     @Override
-    List<String> toolChange(int tool) {
-        return List.of("M5", "T" + tool + " D1", "M6");
-    }
-
-    @Override
     List<String> safeEnd() {
         return List.of("M5", "G40", "M30");
-    }
-
-    /** G4 with F in seconds in its own block (840D: F after G4 is a time, not a feed). */
-    @Override
-    String dwell(double s) {
-        return "G4 F" + seconds(s);
-    }
-
-    @Override
-    Optional<String> turnsWord(int extraTurns) {
-        return Optional.of("TURN=" + extraTurns);
     }
 }
