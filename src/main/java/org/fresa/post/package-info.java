@@ -4,6 +4,6 @@
  * control's words to the milling and sheet-cutting posts alike. The thesis's 7M post, which posts
  * the pocket module's passes rather than a toolpath, lives beside the thesis's arithmetic in
  * {@code pocket.compat}, so that no post needs the pocket module.
- * Dependencies: {@code model}, {@code kin}, {@code geom}.
+ * Dependencies: {@code model}, {@code geom}.
  */
 package org.fresa.post;
