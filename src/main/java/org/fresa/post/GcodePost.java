@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.Function;
 import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
@@ -15,7 +16,8 @@ import org.fresa.model.ToolpathSection;
  * The shared body of the word-address G-code posts (ISO 6983 family): a safe start block,
  * per section a comment, tool change and spindle start when they change, a rapid to the
  * section's start, its moves, then a safe end block. The {@link Dialect} gives the control's words
- * (block numbers, comments, tool change, spindle, dwell, turns); subclasses the program's frame.
+ * (block numbers, comments, tool change, spindle, dwell, turns), the {@link Frame} the program's
+ * start and end; {@link NcPosts} names the posts.
  *
  * <p>Conventions shared by every dialect here:
  * <ul>
@@ -38,20 +40,54 @@ import org.fresa.model.ToolpathSection;
  * +Z. A section whose axis is not +Z is written as is with a comment saying so.
  * </ul>
  */
-abstract class GcodePost implements NcPost {
+final class GcodePost implements NcPost {
+
+    /**
+     * What a program holds besides its moves, the same for every toolpath of a post.
+     *
+     * @param header lines before the first numbered block (tape start, program number), unnumbered,
+     *     of the program's name
+     * @param safeStart the safe start block(s): units, absolute, plane, cancellations
+     * @param safeEnd blocks of the safe end: stop the spindle, cancel modes, end the program
+     * @param trailer lines after the last numbered block (tape end), unnumbered
+     */
+    record Frame(Function<String, List<String>> header, List<String> safeStart, List<String> safeEnd,
+            List<String> trailer) {
+        Frame {
+            safeStart = List.copyOf(safeStart);
+            safeEnd = List.copyOf(safeEnd);
+            trailer = List.copyOf(trailer);
+        }
+    }
 
     /** Chord tolerance for arcs outside the three principal planes, in mm. */
     public static final double DEFAULT_CHORD_TOLERANCE_MM = 0.001;
 
+    private final String name;
+    private final String description;
     private final Dialect dialect;
+    private final Frame frame;
     private final double chordToleranceMm;
 
-    GcodePost(Dialect dialect, double chordToleranceMm) {
+    GcodePost(String name, String description, Dialect dialect, Frame frame, double chordToleranceMm) {
+        this.name = name;
+        this.description = description;
         this.dialect = java.util.Objects.requireNonNull(dialect, "dialect");
+        this.frame = java.util.Objects.requireNonNull(frame, "frame");
         if (!(chordToleranceMm > 0)) {
             throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
         }
         this.chordToleranceMm = chordToleranceMm;
+    }
+
+    @Override
+    public String name() {
+        return name;
+    }
+
+    @Override
+    public String description() {
+        return description;
     }
 
     /** Chord tolerance used for arcs outside the principal planes (mm). */
@@ -69,16 +105,14 @@ abstract class GcodePost implements NcPost {
         return dialect;
     }
 
-    /** A whole comment block in the dialect's syntax. */
+    /**
+     * A whole comment block in the dialect's syntax; upper case on a Fanuc, whose tape code has no
+     * lower-case letters.
+     */
     String comment(String text) {
-        return dialect.comment(plain(text));
+        String t = plain(text);
+        return dialect.comment(dialect == Dialect.FANUC ? t.toUpperCase(Locale.ROOT) : t);
     }
-
-    /** Lines before the first numbered block (tape start, program number), unnumbered. */
-    abstract List<String> header(String programName);
-
-    /** The safe start block(s): units, absolute, plane, cancellations. */
-    abstract List<String> safeStart();
 
     /** The block of a dwell of the given time, in seconds written with {@link #seconds(double)}. */
     private String dwell(double seconds) {
@@ -90,22 +124,15 @@ abstract class GcodePost implements NcPost {
         return String.format(Locale.ROOT, "%.3f", s);
     }
 
-    /** Blocks of the safe end: stop the spindle, cancel modes, end the program. */
-    abstract List<String> safeEnd();
-
-    /** Lines after the last numbered block (tape end), unnumbered. */
-    List<String> trailer() {
-        return List.of();
-    }
 
     @Override
     public void write(Toolpath path, String programName, Writer out) throws IOException {
         Program p = new Program(dialect.numbered());
-        for (String h : header(programName)) {
+        for (String h : frame.header().apply(programName)) {
             p.raw(h);
         }
         p.raw(comment(programName));
-        safeStart().forEach(p::block);
+        frame.safeStart().forEach(p::block);
         int tool = 0;
         // the spindle as the program has left it: -1 when stopped or unknown
         long rpm = -1;
@@ -159,8 +186,8 @@ abstract class GcodePost implements NcPost {
         if (plane != Plane.XY) {
             p.block("G17");
         }
-        safeEnd().forEach(p::block);
-        trailer().forEach(p::raw);
+        frame.safeEnd().forEach(p::block);
+        frame.trailer().forEach(p::raw);
         out.write(p.text());
         out.flush();
     }
