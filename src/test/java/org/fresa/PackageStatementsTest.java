@@ -46,6 +46,25 @@ class PackageStatementsTest {
         assertEquals(List.of(), differences);
     }
 
+    /** The list of arrows in docs/architecture.md names, per package, the packages of its rule. */
+    @Test
+    void theArchitectureDocumentListsTheArrowsOfTheRules() throws IOException {
+        Pattern arrow = Pattern.compile("^- `([a-z.]+)` -> (.*)$", Pattern.MULTILINE);
+        Matcher m = arrow.matcher(Files.readString(Path.of("docs/architecture.md")));
+        java.util.Map<String, Set<String>> listed = new java.util.TreeMap<>();
+        while (m.find()) {
+            Set<String> to = new TreeSet<>();
+            Matcher c = Pattern.compile("`([a-z.]+)`").matcher(m.group(2));
+            while (c.find()) {
+                to.add(c.group(1));
+            }
+            listed.put(m.group(1), to);
+        }
+        java.util.Map<String, Set<String>> rules = new java.util.TreeMap<>();
+        ArchitectureTest.STATED_DEPENDENCIES.forEach((pkg, deps) -> rules.put(pkg, new TreeSet<>(deps)));
+        assertEquals(rules, listed);
+    }
+
     @Test
     void everyRuleHasItsPackage() throws IOException {
         assertTrue(packages().containsAll(ArchitectureTest.STATED_DEPENDENCIES.keySet()),

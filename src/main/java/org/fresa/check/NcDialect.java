@@ -2,38 +2,36 @@ package org.fresa.check;
 
 import java.util.Locale;
 import java.util.Optional;
+import org.fresa.post.Dialect;
 
 /**
- * How the check reads the program text of one of Fresa's NC dialects: the length unit of the
- * coordinates, the word that asks a G02/G03 block for extra full turns, and the smallest step of
- * the coordinates as written (a rounding the entry-angle and floor rules must not count).
+ * How the check reads the program text of one of Fresa's NC dialects: the posts' own
+ * {@link Dialect} (its length unit and the word that asks a G02/G03 block for extra full turns),
+ * or APT / CL data, which is statements rather than address words; and the smallest step of the
+ * coordinates as written (a rounding the entry-angle and floor rules must not count).
  *
  * <p>What every dialect shares: parenthesised and {@code ;} comments, tape marks and
  * {@code %_N_} headers, an O program number, N block numbers, G04 blocks whose address words are
  * a time (X, P, and F on the 840D), G90/G91, G17/G18/G19, incremental I/J/K centres.
  */
 public enum NcDialect {
-    /** LinuxCNC RS274/NGC: P on G02/G03 is the number of turns (1 = no extra turn). */
-    LINUXCNC("linuxcnc", 1, "P"),
-    /** Plain ISO 6983: one block per extra helix turn. */
-    ISO("iso", 1, null),
-    /** Fanuc milling: one block per extra helix turn. */
-    FANUC("fanuc", 1, null),
-    /** Sinumerik 840D: {@code TURN=} extra turns. */
-    SINUMERIK_840D("840d", 1, "TURN"),
-    /** The thesis's Sinumerik 7M: integer micrometres; G54 with coordinates sets the zero. */
-    SINUMERIK_7M("7m", 0.001, null),
+    LINUXCNC(Dialect.LINUXCNC),
+    ISO(Dialect.ISO),
+    FANUC(Dialect.FANUC),
+    SINUMERIK_840D(Dialect.SIEMENS_840D),
+    /** G54 with coordinates sets the zero. */
+    SINUMERIK_7M(Dialect.SINUMERIK_7M),
     /** APT / CL data: statements, not address words; read by {@link AptStatements}. */
-    APT("apt", 1, null);
+    APT(null);
 
     private final String id;
     private final double mmPerUnit;
     private final String turnWord;
 
-    NcDialect(String id, double mmPerUnit, String turnWord) {
-        this.id = id;
-        this.mmPerUnit = mmPerUnit;
-        this.turnWord = turnWord;
+    NcDialect(Dialect gcode) {
+        this.id = gcode == null ? "apt" : gcode.id();
+        this.mmPerUnit = gcode == null ? 1 : gcode.mmPerUnit();
+        this.turnWord = gcode == null ? null : gcode.turnAddress().orElse(null);
     }
 
     public String id() {

@@ -3,6 +3,6 @@
  * into place, and refused at its first unsafe block (a cutting move with the spindle stopped, a
  * word out of the machine's range, an entry steeper than the tool allows, a move below the floor).
  * Pure: text and models in, a verdict out, no file I/O. Dependencies: {@code post} (the robot
- * program model), {@code model}, {@code geom}.
+ * program model and the NC dialects), {@code geom}.
  */
 package org.fresa.check;

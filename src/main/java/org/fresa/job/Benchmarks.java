@@ -298,7 +298,7 @@ public final class Benchmarks {
     private static int cutOnce(Path dxf) throws IOException, CamInputException {
         JobSettings.CuttingSettings s = new JobSettings.CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1,
                 org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         try {
             CuttingService.check(r, "squares.ngc");

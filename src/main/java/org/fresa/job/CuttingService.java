@@ -21,6 +21,7 @@ import org.fresa.dxf.DxfReadOptions;
 import org.fresa.dxf.DxfReader;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.post.CuttingPost;
 import org.fresa.post.SheetCuttingPost;
 
 /**
@@ -37,7 +38,7 @@ public final class CuttingService {
 
     /** The drawing, the plan and the program text of one run. */
     public record Result(DxfDrawing drawing, CutPlan plan, String program, CuttingOptions options,
-            SheetCuttingPost.Dialect dialect) {
+            CuttingPost dialect) {
     }
 
     /** Checks the settings and converts them to planner options (the gap tolerance still in drawing units). */
@@ -76,7 +77,7 @@ public final class CuttingService {
     public static Result compute(CuttingSettings s, boolean toleranceInDrawingUnits, ProgressMonitor progress)
             throws CamInputException, IOException {
         CuttingOptions o = options(s);
-        SheetCuttingPost.Dialect dialect = s.post();
+        CuttingPost dialect = s.post();
         progress.progress(0.05, "reading " + s.drawing().getFileName());
         DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(s.units().units()));
         progress.checkCancelled();
@@ -120,7 +121,7 @@ public final class CuttingService {
             throws CamInputException, IOException {
         Result r = compute(s, progress);
         out.create();
-        String file = r.dialect() == SheetCuttingPost.Dialect.SIEMENS_840D ? "program.mpf" : "program.ngc";
+        String file = r.dialect() == CuttingPost.SIEMENS_840D ? "program.mpf" : "program.ngc";
         try {
             check(r, file);
         } catch (ProgramChecks.RefusedProgram e) {

@@ -19,7 +19,7 @@ import org.fresa.model.Placement;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.post.MillingPost;
-import org.fresa.post.SheetCuttingPost;
+import org.fresa.post.CuttingPost;
 import org.fresa.sole.PatternKind;
 import org.fresa.sole.SizeRule;
 
@@ -225,7 +225,7 @@ public final class JobSettings {
      *     ({@link CutOrderOverride#NONE}: the automatic order)
      */
     public record CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
-            LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode, SheetCuttingPost.Dialect post,
+            LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode, CuttingPost post,
             KerfCompensation compensation, CutSense outerDirection, CutSense holeDirection, double overcutMm,
             boolean avoidCutParts, CutOrderOverride cutOrder) {
         /**
@@ -234,7 +234,7 @@ public final class JobSettings {
          */
         public static final CuttingSettings DEFAULTS = new CuttingSettings(Path.of(""), 2, CutProcess.PLASMA, 3, 1,
                 LeadShape.ARC, CuttingOptions.DEFAULT_GAP_MM, DrawingUnits.AUTO, false,
-                SheetCuttingPost.Dialect.LINUXCNC, KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0,
+                CuttingPost.LINUXCNC, KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0,
                 true);
 
         public CuttingSettings {
@@ -252,7 +252,7 @@ public final class JobSettings {
         /** The automatic cut order and start points. */
         public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
                 LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
-                SheetCuttingPost.Dialect post, KerfCompensation compensation, CutSense outerDirection,
+                CuttingPost post, KerfCompensation compensation, CutSense outerDirection,
                 CutSense holeDirection, double overcutMm, boolean avoidCutParts) {
             this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post, compensation,
                     outerDirection, holeDirection, overcutMm, avoidCutParts, CutOrderOverride.NONE);
@@ -267,7 +267,7 @@ public final class JobSettings {
         /** Software compensation, the process's directions, no overcut, rapids around cut parts. */
         public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
                 LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
-                SheetCuttingPost.Dialect post) {
+                CuttingPost post) {
             this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post,
                     KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0, true);
         }

@@ -33,7 +33,7 @@ import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
-import org.fresa.post.Sinumerik7MPost;
+import org.fresa.pocket.compat.Sinumerik7MPost;
 
 /**
  * The pocket module's service, shared by {@code fresa pocket} and {@code fresa run}: reads the

@@ -127,8 +127,8 @@ public final class SettingRanges {
                 org.fresa.cutting.LeadShape.class, org.fresa.cutting.LeadShape::word);
         public static final SettingChoice<org.fresa.dxf.DrawingUnits> UNITS = SettingChoice.of("--units", "units",
                 org.fresa.dxf.DrawingUnits.class, org.fresa.dxf.DrawingUnits::word, org.fresa.dxf.DrawingUnits::of);
-        public static final SettingChoice<org.fresa.post.SheetCuttingPost.Dialect> POST = SettingChoice.of("--post",
-                "post", org.fresa.post.SheetCuttingPost.Dialect.class, org.fresa.post.SheetCuttingPost.Dialect::id);
+        public static final SettingChoice<org.fresa.post.CuttingPost> POST = SettingChoice.of("--post",
+                "post", org.fresa.post.CuttingPost.class, org.fresa.post.CuttingPost::id);
         public static final SettingChoice<org.fresa.cutting.KerfCompensation> COMPENSATION = SettingChoice.of(
                 "--compensation", "compensation", org.fresa.cutting.KerfCompensation.class,
                 org.fresa.cutting.KerfCompensation::word);

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.Function;
 import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
@@ -14,7 +15,9 @@ import org.fresa.model.ToolpathSection;
 /**
  * The shared body of the word-address G-code posts (ISO 6983 family): a safe start block,
  * per section a comment, tool change and spindle start when they change, a rapid to the
- * section's start, its moves, then a safe end block. Subclasses give the dialect's words.
+ * section's start, its moves, then a safe end block. The {@link Dialect} gives the control's words
+ * (block numbers, comments, tool change, spindle, dwell, turns), the {@link Frame} the program's
+ * start and end; {@link NcPosts} names the posts.
  *
  * <p>Conventions shared by every dialect here:
  * <ul>
@@ -31,24 +34,60 @@ import org.fresa.model.ToolpathSection;
  * <li>Dwells are the dialect's dwell block with the time in seconds ({@link #dwell}); spindle
  * stops and starts inside a section are M5 and S.. M3/M4 blocks, and a section whose spindle
  * was stopped starts it again even at an unchanged speed.
- * <li>Extra full turns use the dialect's turn word when it has one ({@link #turnsWord}),
+ * <li>Extra full turns use the dialect's turn word when it has one ({@link Dialect#turnsWord}),
  * otherwise each turn is written as its own full-circle block.
  * <li>The tool axis of a section is not used for motion: a 3-axis machine has its spindle along
  * +Z. A section whose axis is not +Z is written as is with a comment saying so.
  * </ul>
  */
-abstract class GcodePost implements NcPost {
+final class GcodePost implements NcPost {
+
+    /**
+     * What a program holds besides its moves, the same for every toolpath of a post.
+     *
+     * @param header lines before the first numbered block (tape start, program number), unnumbered,
+     *     of the program's name
+     * @param safeStart the safe start block(s): units, absolute, plane, cancellations
+     * @param safeEnd blocks of the safe end: stop the spindle, cancel modes, end the program
+     * @param trailer lines after the last numbered block (tape end), unnumbered
+     */
+    record Frame(Function<String, List<String>> header, List<String> safeStart, List<String> safeEnd,
+            List<String> trailer) {
+        Frame {
+            safeStart = List.copyOf(safeStart);
+            safeEnd = List.copyOf(safeEnd);
+            trailer = List.copyOf(trailer);
+        }
+    }
 
     /** Chord tolerance for arcs outside the three principal planes, in mm. */
     public static final double DEFAULT_CHORD_TOLERANCE_MM = 0.001;
 
+    private final String name;
+    private final String description;
+    private final Dialect dialect;
+    private final Frame frame;
     private final double chordToleranceMm;
 
-    GcodePost(double chordToleranceMm) {
+    GcodePost(String name, String description, Dialect dialect, Frame frame, double chordToleranceMm) {
+        this.name = name;
+        this.description = description;
+        this.dialect = java.util.Objects.requireNonNull(dialect, "dialect");
+        this.frame = java.util.Objects.requireNonNull(frame, "frame");
         if (!(chordToleranceMm > 0)) {
             throw new IllegalArgumentException("chord tolerance must be > 0: " + chordToleranceMm);
         }
         this.chordToleranceMm = chordToleranceMm;
+    }
+
+    @Override
+    public String name() {
+        return name;
+    }
+
+    @Override
+    public String description() {
+        return description;
     }
 
     /** Chord tolerance used for arcs outside the principal planes (mm). */
@@ -61,58 +100,39 @@ abstract class GcodePost implements NcPost {
         return 3;
     }
 
-    /** Whether blocks carry N numbers (N10, N20, ...). */
-    abstract boolean blockNumbers();
-
-    /** A whole comment block in the dialect's syntax. */
-    abstract String comment(String text);
-
-    /** Lines before the first numbered block (tape start, program number), unnumbered. */
-    abstract List<String> header(String programName);
-
-    /** The safe start block(s): units, absolute, plane, cancellations. */
-    abstract List<String> safeStart();
-
-    /** Blocks that load tool {@code tool} and apply its length offset. */
-    abstract List<String> toolChange(int tool);
-
-    /** Blocks that start the spindle at the speed, clockwise (M3) or counter-clockwise (M4). */
-    List<String> spindleOn(long rpm, boolean clockwise) {
-        return List.of("S" + rpm + (clockwise ? " M3" : " M4"));
+    /** The dialect's words. */
+    public Dialect dialect() {
+        return dialect;
     }
 
-    /** The block that stops the spindle. */
-    String spindleOff() {
-        return "M5";
+    /**
+     * A whole comment block in the dialect's syntax; upper case on a Fanuc, whose tape code has no
+     * lower-case letters.
+     */
+    String comment(String text) {
+        String t = plain(text);
+        return dialect.comment(dialect == Dialect.FANUC ? t.toUpperCase(Locale.ROOT) : t);
     }
 
-    /** The block of a dwell of the given time; seconds are written with {@link #seconds(double)}. */
-    abstract String dwell(double seconds);
+    /** The block of a dwell of the given time, in seconds written with {@link #seconds(double)}. */
+    private String dwell(double seconds) {
+        return dialect.dwell(seconds(seconds));
+    }
 
     /** A time in seconds with three decimals (the controls' millisecond resolution), Locale.ROOT. */
     static String seconds(double s) {
         return String.format(Locale.ROOT, "%.3f", s);
     }
 
-    /** Blocks of the safe end: stop the spindle, cancel modes, end the program. */
-    abstract List<String> safeEnd();
-
-    /** Lines after the last numbered block (tape end), unnumbered. */
-    List<String> trailer() {
-        return List.of();
-    }
-
-    /** The word that asks for extra full turns on an arc block, when the dialect has one. */
-    abstract Optional<String> turnsWord(int extraTurns);
 
     @Override
     public void write(Toolpath path, String programName, Writer out) throws IOException {
-        Program p = new Program(blockNumbers());
-        for (String h : header(programName)) {
+        Program p = new Program(dialect.numbered());
+        for (String h : frame.header().apply(programName)) {
             p.raw(h);
         }
         p.raw(comment(programName));
-        safeStart().forEach(p::block);
+        frame.safeStart().forEach(p::block);
         int tool = 0;
         // the spindle as the program has left it: -1 when stopped or unknown
         long rpm = -1;
@@ -126,14 +146,14 @@ abstract class GcodePost implements NcPost {
                         + num(s.toolAxis().z()) + " is not +Z: needs the part turned or a spindle along this axis"));
             }
             if (s.toolNumber() != tool) {
-                toolChange(s.toolNumber()).forEach(p::block);
+                dialect.toolChange(s.toolNumber()).forEach(p::block);
                 tool = s.toolNumber();
                 rpm = -1;
                 feed = -1;
             }
             long sRpm = Math.round(s.spindleRpm());
             if (sRpm > 0 && (sRpm != rpm || !clockwise)) {
-                spindleOn(sRpm, true).forEach(p::block);
+                p.block(dialect.spindleOn(sRpm, true));
                 rpm = sRpm;
                 clockwise = true;
             }
@@ -151,12 +171,12 @@ abstract class GcodePost implements NcPost {
                 } else if (m instanceof Move.Dwell d) {
                     p.block(dwell(d.seconds()));
                 } else if (m instanceof Move.SpindleStop) {
-                    p.block(spindleOff());
+                    p.block(dialect.spindleOff());
                     rpm = -1;
                 } else if (m instanceof Move.SpindleStart on) {
                     rpm = Math.round(on.rpm());
                     clockwise = on.clockwise();
-                    spindleOn(rpm, clockwise).forEach(p::block);
+                    p.block(dialect.spindleOn(rpm, clockwise));
                 } else {
                     throw new IllegalStateException("no G-code for " + m);
                 }
@@ -166,8 +186,8 @@ abstract class GcodePost implements NcPost {
         if (plane != Plane.XY) {
             p.block("G17");
         }
-        safeEnd().forEach(p::block);
-        trailer().forEach(p::raw);
+        frame.safeEnd().forEach(p::block);
+        frame.trailer().forEach(p::raw);
         out.write(p.text());
         out.flush();
     }
@@ -189,7 +209,7 @@ abstract class GcodePost implements NcPost {
         String prefix = plane == current ? "" : plane.word + " ";
         Vec3 off = c.center().minus(start);
         String centre = plane.centreWords(off, this);
-        Optional<String> turns = c.turns() == 0 ? Optional.of("") : turnsWord(c.turns());
+        Optional<String> turns = c.turns() == 0 ? Optional.of("") : dialect.turnsWord(c.turns());
         if (turns.isPresent()) {
             String t = turns.get().isEmpty() ? "" : " " + turns.get();
             p.block(prefix + g + " " + xyz(c.end()) + " " + centre + t + feedWord(c.feedMmPerMin(), feed));

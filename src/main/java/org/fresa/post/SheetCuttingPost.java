@@ -6,7 +6,6 @@ import java.math.BigDecimal;
 import java.math.RoundingMode;
 import java.util.List;
 import java.util.Locale;
-import java.util.Optional;
 import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
@@ -25,35 +24,6 @@ import org.fresa.model.ToolpathSection;
  * (the lead-in, a straight line) and G40 off after its last.
  */
 public final class SheetCuttingPost {
-
-    /** A dialect with its jet codes and dwell word. */
-    public enum Dialect {
-        LINUXCNC("linuxcnc"), ISO("iso"), FANUC("fanuc"), SIEMENS_840D("840d");
-
-        private final String id;
-
-        Dialect(String id) {
-            this.id = id;
-        }
-
-        public String id() {
-            return id;
-        }
-
-        @Override
-        public String toString() {
-            return id;
-        }
-
-        public static Optional<Dialect> byName(String name) {
-            for (Dialect d : values()) {
-                if (d.id.equalsIgnoreCase(name)) {
-                    return Optional.of(d);
-                }
-            }
-            return Optional.empty();
-        }
-    }
 
     /**
      * What the program needs besides the moves.
@@ -77,8 +47,8 @@ public final class SheetCuttingPost {
     }
 
     /** Writes the whole program. */
-    public static void write(Toolpath path, String programName, Job job, Dialect dialect, Writer out) throws IOException {
-        new SheetCuttingPost(dialect).run(path, programName, job, out);
+    public static void write(Toolpath path, String programName, Job job, CuttingPost post, Writer out) throws IOException {
+        new SheetCuttingPost(post.dialect()).run(path, programName, job, out);
     }
 
     private void run(Toolpath path, String programName, Job job, Writer out) throws IOException {
@@ -174,6 +144,11 @@ public final class SheetCuttingPost {
         return jetWords(d, process);
     }
 
+    /** As {@link #jetWords(Dialect, String)} for the post's dialect. */
+    public static String[] jetWords(CuttingPost post, String process) {
+        return jetWords(post.dialect(), process);
+    }
+
     /**
      * The words that switch the process on and off in the dialect ({@code M07}/{@code M08}, or on
      * LinuxCNC {@code M3 S1}/{@code M5} for plasma and the digital outputs for laser and waterjet).
@@ -189,14 +164,12 @@ public final class SheetCuttingPost {
         };
     }
 
+    /**
+     * The dialect's dwell block; seconds with three decimals where the control needs the point
+     * (without it a Fanuc reads X2 as 2 ms), else in the program's own number format.
+     */
     private String dwell(double s) {
-        return switch (d) {
-            case LINUXCNC -> "G4 P" + num(s);
-            // X in seconds with the decimal point, as the milling posts write it: without the
-            // point a Fanuc reads X2 as 2 ms, and P is an integer count of milliseconds
-            case ISO, FANUC -> "G04 X" + String.format(java.util.Locale.ROOT, "%.3f", s);
-            case SIEMENS_840D -> "G4 F" + num(s);
-        };
+        return d.dwell(d.dwellNeedsPoint() ? String.format(Locale.ROOT, "%.3f", s) : num(s));
     }
 
     private static String feed(double f, double current) {
@@ -204,16 +177,11 @@ public final class SheetCuttingPost {
     }
 
     private void comment(Writer out, String text) throws IOException {
-        String t = text.replaceAll("[()\\r\\n;]", " ");
-        if (d == Dialect.SIEMENS_840D) {
-            line(out, "; " + t);
-        } else {
-            line(out, "(" + t + ")");
-        }
+        line(out, d.comment(text.replaceAll("[()\\r\\n;]", " ")));
     }
 
     private void line(Writer out, String text) throws IOException {
-        if (d == Dialect.LINUXCNC) {
+        if (!d.numbered()) {
             out.write(text);
         } else {
             n += 10;

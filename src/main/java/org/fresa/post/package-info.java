@@ -1,8 +1,9 @@
 /**
  * Post-processors: NC dialects for machine tools and robot program languages, written through a
- * {@link java.io.Writer} with {@code Locale.ROOT} numbers. Dependencies: {@code model},
- * {@code kin}, {@code geom}, and {@code pocket} as a stated exception for now:
- * {@link org.fresa.post.Sinumerik7MPost} posts the 1988 thesis's pocket passes and is to move
- * beside them.
+ * {@link java.io.Writer} with {@code Locale.ROOT} numbers; {@link org.fresa.post.Dialect} gives each
+ * control's words to the milling and sheet-cutting posts alike. The thesis's 7M post, which posts
+ * the pocket module's passes rather than a toolpath, lives beside the thesis's arithmetic in
+ * {@code pocket.compat}, so that no post needs the pocket module.
+ * Dependencies: {@code model}, {@code geom}.
  */
 package org.fresa.post;

@@ -28,7 +28,7 @@ import org.fresa.cutting.KerfCompensation;
 import org.fresa.cutting.LeadShape;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.SettingRanges.Cutting;
-import org.fresa.post.SheetCuttingPost;
+import org.fresa.post.CuttingPost;
 import org.fresa.model.CamInputException;
 
 /**
@@ -61,8 +61,8 @@ final class CuttingTab implements ModuleTab {
     private final JComboBox<CutSense> outerDir = new JComboBox<>(Cutting.OUTER_DIRECTION.values().toArray(new CutSense[0]));
     private final JComboBox<CutSense> holeDir = new JComboBox<>(Cutting.HOLE_DIRECTION.values().toArray(new CutSense[0]));
     private final JCheckBox avoid = new JCheckBox("Rapids around cut parts");
-    private final JComboBox<SheetCuttingPost.Dialect> post = new JComboBox<>(
-            Cutting.POST.values().toArray(new SheetCuttingPost.Dialect[0]));
+    private final JComboBox<CuttingPost> post = new JComboBox<>(
+            Cutting.POST.values().toArray(new CuttingPost[0]));
     private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
     private final JButton cut = new JButton("Cut");
     // the cut list: the order and starts of the last cut, which the planner edits
@@ -359,7 +359,7 @@ final class CuttingTab implements ModuleTab {
         vm.setOuterDirection((CutSense) outerDir.getSelectedItem());
         vm.setHoleDirection((CutSense) holeDir.getSelectedItem());
         vm.setAvoidCutParts(avoid.isSelected());
-        vm.setPost((SheetCuttingPost.Dialect) post.getSelectedItem());
+        vm.setPost((CuttingPost) post.getSelectedItem());
         vm.setPaperMode(paper.isSelected());
     }
 

@@ -21,7 +21,7 @@ import org.fresa.cutting.KerfCompensation;
 import org.fresa.cutting.LeadShape;
 import org.fresa.dxf.DrawingUnits;
 import org.fresa.job.JobSettings.CuttingSettings;
-import org.fresa.post.SheetCuttingPost;
+import org.fresa.post.CuttingPost;
 import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
@@ -49,7 +49,7 @@ public final class CuttingViewModel {
     private String leadOutMm = ExactDecimal.of(DEFAULTS.leadOutMm());
     private LeadShape lead = DEFAULTS.lead();
     private boolean paperMode = DEFAULTS.paperMode();
-    private SheetCuttingPost.Dialect post = DEFAULTS.post();
+    private CuttingPost post = DEFAULTS.post();
     private KerfCompensation compensation = DEFAULTS.compensation();
     private CutSense outerDirection = DEFAULTS.outerDirection();
     private CutSense holeDirection = DEFAULTS.holeDirection();
@@ -116,7 +116,7 @@ public final class CuttingViewModel {
         return paperMode;
     }
 
-    public SheetCuttingPost.Dialect post() {
+    public CuttingPost post() {
         return post;
     }
 
@@ -195,7 +195,7 @@ public final class CuttingViewModel {
         paperMode = v;
     }
 
-    public void setPost(SheetCuttingPost.Dialect v) {
+    public void setPost(CuttingPost v) {
         post = v;
     }
 

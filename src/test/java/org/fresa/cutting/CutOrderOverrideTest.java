@@ -156,7 +156,7 @@ class CutOrderOverrideTest {
                 new CutOrderOverride.Cut("part 2", Vec2.of(90, 12), Optional.of(Vec2.of(75, 40))),
                 new CutOrderOverride.Cut("part 1 hole 1", Vec2.of(28, 15), Optional.of(Vec2.of(20, 0)))));
         CuttingSettings s = new CuttingSettings(dxf, 2, CutProcess.PLASMA, 3, 1, LeadShape.ARC, 0.05,
-                org.fresa.dxf.DrawingUnits.MM, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC).withCutOrder(o);
+                org.fresa.dxf.DrawingUnits.MM, false, org.fresa.post.CuttingPost.LINUXCNC).withCutOrder(o);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(List.of("part 2 hole 1", "part 2", "part 1 hole 1", "part 1"), labels(r.plan()));
         CuttingService.check(r, "program.ngc");
@@ -177,7 +177,7 @@ class CutOrderOverrideTest {
         Path job = dir.resolve("job.xml");
         org.fresa.job.JobXml.write(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT).withCutting(new CuttingSettings(dxf,
                 2, CutProcess.PLASMA, 3, 1, LeadShape.ARC, 0.05, org.fresa.dxf.DrawingUnits.MM, false,
-                org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC).withCutOrder(new CutOrderOverride(List.of(
+                org.fresa.post.CuttingPost.LINUXCNC).withCutOrder(new CutOrderOverride(List.of(
                         at("part 1", 40, 15), at("part 1 hole 1", 10, 15))))), job);
         java.io.StringWriter err = new java.io.StringWriter();
         int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),

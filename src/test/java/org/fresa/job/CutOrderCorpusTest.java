@@ -57,7 +57,7 @@ class CutOrderCorpusTest {
     void theRapidTravelIsNoLongerThanANearestNeighbourTourAndShorterOnBigSheets(String file) throws Exception {
         Path dxf = Path.of(file);
         CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 0, 0, org.fresa.cutting.LeadShape.ARC, CuttingOptions.DEFAULT_GAP_MM, org.fresa.dxf.DrawingUnits.AUTO, false,
-                org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC, org.fresa.cutting.KerfCompensation.SOFTWARE, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, false);
+                org.fresa.post.CuttingPost.LINUXCNC, org.fresa.cutting.KerfCompensation.SOFTWARE, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, false);
         CutPlan plan;
         try {
             plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();

@@ -54,7 +54,7 @@ class CuttingAcceptanceTest {
     void aRealDrawingIsCutCleanlyWithATwoMillimetreKerf(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         CutPlan plan = r.plan();
         rs274Accepts(r.program(), name, 0);
@@ -84,7 +84,7 @@ class CuttingAcceptanceTest {
     void theInchPlatesPartsCloseAcrossTheirTinyGapsAndAreAllCut() throws Exception {
         Path dxf = CORPUS.resolve("dxf2gcode/Teile.dxf");
         CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
         CutPlan plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();
         List<String> gaps = plan.warnings().stream().filter(w -> w.startsWith("gap of ")).toList();
         org.junit.jupiter.api.Assertions.assertAll(
@@ -111,7 +111,7 @@ class CuttingAcceptanceTest {
         assertTrue(comp.stream().allMatch(c -> c == 41), comp.toString());
         java.io.StringWriter w = new java.io.StringWriter();
         org.fresa.post.SheetCuttingPost.write(plan.toolpath(), "plate", new org.fresa.post.SheetCuttingPost.Job("plasma",
-                0.5, comp, 2), org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC, w);
+                0.5, comp, 2), org.fresa.post.CuttingPost.LINUXCNC, w);
         assertTrue(w.toString().contains("G41 G1"), w.toString());
         rs274Accepts(w.toString(), "plate G41", 2);
     }
@@ -132,7 +132,7 @@ class CuttingAcceptanceTest {
     void everyCorpusDrawingIsCutInBothModesIntoAProgramLinuxCncAccepts(String name) throws Exception {
         for (boolean paper : new boolean[] {false, true}) {
             CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, paper,
-                    org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+                    org.fresa.post.CuttingPost.LINUXCNC);
             CuttingService.Result r;
             try {
                 r = CuttingService.compute(s, ProgressMonitor.NONE);
@@ -154,7 +154,7 @@ class CuttingAcceptanceTest {
     void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC,
+        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC,
                 org.fresa.cutting.KerfCompensation.CONTROLLER, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, true);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertTrue(r.program().contains("G41"), name);

@@ -38,7 +38,7 @@ class CuttingLowMemoryTest {
         assertTrue(Files.size(dxf) >= 12_500_000L, Files.size(dxf) + " bytes");
         Path out = dir.resolve("squares.ngc");
         CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC);
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
         long t0 = System.nanoTime();
         TaskOutcome o = CuttingService.run(s, out, false, ProgressMonitor.NONE);
         double seconds = (System.nanoTime() - t0) / 1e9;

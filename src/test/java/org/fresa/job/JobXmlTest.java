@@ -34,7 +34,7 @@ class JobXmlTest {
                         new Placement(0, 10, 0, -90, 0, 0), List.of("csv", "rapid")))
                 .withPocket(new PocketSettings(dir.resolve("cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, PocketPost.SINUMERIK_7M,
                         org.fresa.pocket.MillingDirection.CONVENTIONAL))
-                .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, org.fresa.cutting.CutProcess.LASER, 3, 1, org.fresa.cutting.LeadShape.LINE, 0.001, org.fresa.dxf.DrawingUnits.MM, true, org.fresa.post.SheetCuttingPost.Dialect.ISO,
+                .withCutting(new CuttingSettings(dir.resolve("sheet.dxf"), 2, org.fresa.cutting.CutProcess.LASER, 3, 1, org.fresa.cutting.LeadShape.LINE, 0.001, org.fresa.dxf.DrawingUnits.MM, true, org.fresa.post.CuttingPost.ISO,
                         org.fresa.cutting.KerfCompensation.CONTROLLER, org.fresa.cutting.CutSense.CCW, org.fresa.cutting.CutSense.CCW, 0.5, false))
                 .withGrading(new GradingSettings(dir.resolve("sole.contour"), 40, "36-44", true, org.fresa.grading.SizeSystem.PARIS,
                         OptionalDouble.of(6.67), OptionalDouble.empty(), Optional.of(Vec2.of(12.5, -3)), 0.015, org.fresa.grading.ShrinkageMode.ADDITIVE));

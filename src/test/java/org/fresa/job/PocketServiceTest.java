@@ -166,7 +166,7 @@ class PocketServiceTest {
                 // the example part's arcs are all convex: G02 conventional, G03 climb
                 () -> assertTrue(cb.contains("G02") && !cb.contains("G03"), cb),
                 () -> assertTrue(ca.contains("G03") && !ca.contains("G02"), ca),
-                () -> assertEquals(cb, new org.fresa.post.Sinumerik7MPost(org.fresa.post.Sinumerik7MPost.Mode.CORRECTED)
+                () -> assertEquals(cb, new org.fresa.pocket.compat.Sinumerik7MPost(org.fresa.pocket.compat.Sinumerik7MPost.Mode.CORRECTED)
                         .write(plan)),
                 () -> assertEquals(ca.lines().count(), cb.lines().count()),
                 // same start point of every pass: the rapid to the first pass is the same block

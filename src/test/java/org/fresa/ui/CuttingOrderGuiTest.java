@@ -66,7 +66,7 @@ class CuttingOrderGuiTest extends WindowGuiTest {
         Path drawing = Path.of("samples/cutting/plate.dxf").toAbsolutePath();
         GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.CUT).withCutting(new CuttingSettings(drawing, 2,
                 org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC))));
+                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC))));
         window.tabbedPane("tabs").selectTab("Cutting");
         window.button("cutting-cut").click();
         JTableFixture table = window.table("cutting-order");

@@ -143,7 +143,7 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     private void cut(Path drawing, String job) {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.CUT).withCutting(new CuttingSettings(
-                drawing.toAbsolutePath(), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.SheetCuttingPost.Dialect.LINUXCNC))));
+                drawing.toAbsolutePath(), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC))));
         window.tabbedPane("tabs").selectTab("Cutting");
         settle();
         record(job, () -> {

@@ -10,7 +10,7 @@ import org.fresa.dxf.DrawingUnits;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.SettingRanges.Cutting;
-import org.fresa.post.SheetCuttingPost;
+import org.fresa.post.CuttingPost;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -77,7 +77,7 @@ final class CutCommand implements Callable<Integer> {
     boolean straightRapids;
 
     @Option(names = "--post", paramLabel = "NAME", description = "post-processor; default ${DEFAULT-VALUE}")
-    SheetCuttingPost.Dialect post = DEFAULTS.post();
+    CuttingPost post = DEFAULTS.post();
 
     @Option(names = "--json", description = "print a JSON summary on stdout")
     boolean json;

@@ -1,4 +1,4 @@
-package org.fresa.post;
+package org.fresa.pocket.compat;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -14,9 +14,6 @@ import org.fresa.pocket.PocketPass;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.ToolTooLargeException;
-import org.fresa.pocket.compat.BasicNumbers;
-import org.fresa.pocket.compat.Mbf;
-import org.fresa.pocket.compat.ThesisPasses;
 
 /**
  * The 1988 thesis's post-processor for the Thyssen Hüller NBH-65 with a Siemens Sinumerik 7M
@@ -44,6 +41,9 @@ import org.fresa.pocket.compat.ThesisPasses;
  * ZBASE)/PROF} and {@code PROF = INT((ZSUP - ZBASE)/ZPASSE + .9999999)} (lines 3072-3080). Where
  * the single-precision junction does not exist (the thesis's program stops there), the passes
  * keep their exact junctions.
+ *
+ * <p>It lives beside the thesis's arithmetic rather than with the other posts because both modes
+ * post the pocket module's passes ({@link PocketPlan}) directly, not a {@code model} toolpath.
  */
 public final class Sinumerik7MPost {
 

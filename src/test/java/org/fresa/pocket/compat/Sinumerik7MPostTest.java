@@ -1,4 +1,4 @@
-package org.fresa.post;
+package org.fresa.pocket.compat;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
