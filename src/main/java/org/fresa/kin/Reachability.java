@@ -30,8 +30,7 @@ public final class Reachability {
 
     private final IkOptions options;
     private final boolean freeRotation;
-    private final Map<Robot, IkSolver> solvers = new IdentityHashMap<>();
-    private final Map<Robot, Optional<SphericalWristSeeds>> closedForms = new IdentityHashMap<>();
+    private final Map<Robot, Arm> arms = new IdentityHashMap<>();
     private final double[] pose = new double[Pose.SIZE];
 
     /**
@@ -65,20 +64,21 @@ public final class Reachability {
             }
             ToolTarget t = targets.get(k);
             Robot robot = robotOfLabel.apply(t.label());
-            IkSolver solver = solvers.computeIfAbsent(robot, r -> r.newSolver(options));
+            Arm arm = arm(robot);
+            IkSolver solver = arm.solver();
             double[] q = null;
             double at = phi;
             // an arm with a closed form gets its solutions directly, the one nearest the last polished:
             // cheaper than a warm solve, which spends up to its iteration limit on an unreachable target
-            if (prev != null && robot.dof() == prev.length && closedForm(robot).isEmpty()) {
+            if (prev != null && arm.dof() == prev.length && arm.closedForm().isEmpty()) {
                 IkResult r = solver.solve(t.pose(phi), prev);
                 if (r instanceof IkResult.Converged c) {
                     q = c.q();
                 }
             }
             if (q == null) {
-                for (double turn : turns(robot, phi)) {
-                    q = cold(robot, solver, t.pose(turn), prev);
+                for (double turn : turns(arm, phi)) {
+                    q = cold(robot, arm, t.pose(turn), prev);
                     if (q != null) {
                         at = turn;
                         break;
@@ -107,9 +107,27 @@ public final class Reachability {
                 System.nanoTime() - t0));
     }
 
+    /**
+     * What the check asks of a robot for every target, worked out once: a robot's joint list (and
+     * so its number of joints) is built anew at each call, which cost a sixth of the check.
+     */
+    private record Arm(IkSolver solver, int dof, boolean fullOrientation, Optional<SphericalWristSeeds> closedForm) {
+    }
+
+    private Arm arm(Robot robot) {
+        Arm a = arms.get(robot);
+        if (a == null) {
+            a = new Arm(robot.newSolver(options), robot.dof(), robot.controlsFullOrientation(),
+                    robot instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
+                            ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
+            arms.put(robot, a);
+        }
+        return a;
+    }
+
     /** The turns about the tool axis tried cold, as the trajectory solver's first ones. */
-    private List<Double> turns(Robot robot, double phi) {
-        if (!freeRotation || !robot.controlsFullOrientation()) {
+    private List<Double> turns(Arm arm, double phi) {
+        if (!freeRotation || !arm.fullOrientation()) {
             return List.of(phi);
         }
         return List.of(phi, wrap(phi + 180), wrap(phi + 90), wrap(phi - 90));
@@ -126,19 +144,14 @@ public final class Reachability {
         return p;
     }
 
-    private Optional<SphericalWristSeeds> closedForm(Robot robot) {
-        return closedForms.computeIfAbsent(robot,
-                r -> r instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
-                        ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
-    }
-
     /**
      * One cold solution (deg / mm), the nearest to prev when there are several; null when none. With
      * a closed form its solutions within the limits are polished (and so checked) nearest first
      * until one converges.
      */
-    private double[] cold(Robot robot, IkSolver solver, Transform3 target, double[] prev) {
-        Optional<SphericalWristSeeds> closed = closedForm(robot);
+    private double[] cold(Robot robot, Arm arm, Transform3 target, double[] prev) {
+        IkSolver solver = arm.solver();
+        Optional<SphericalWristSeeds> closed = arm.closedForm();
         if (closed.isEmpty()) {
             List<IkResult.Converged> all = solver.solveAll(target);
             return all.isEmpty() ? null : nearest(all.stream().map(IkResult.Converged::q).toList(), prev);

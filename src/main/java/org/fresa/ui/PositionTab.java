@@ -73,11 +73,15 @@ final class PositionTab implements ModuleTab {
     private boolean loading;
     private String drawnRobot = "";
     private final JLabel reach = new JLabel(" ");
-    private final transient LiveReachability live = new LiveReachability(this::showLive, this::liveFailed);
+    private final transient LiveReachability live = new LiveReachability(this::showLive, this::showLiveCharts,
+            this::liveFailed);
     // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
     private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
+    private final java.util.List<double[]> splitsMs = new java.util.ArrayList<>();
+    // when the last field was typed into and not yet asked about (System.nanoTime), or -1
+    private long changedNanos = -1;
     private long plotAskedNanos = -1;
     private transient LiveReachability.Inputs shownInputs;
 
@@ -198,6 +202,7 @@ final class PositionTab implements ModuleTab {
             l.setLabelFor(f);
             l.setToolTipText(title + " " + names[i] + " (Alt+" + KeyEvent.getKeyText(keys[i]) + ")");
             TextChanges.onChange(f, () -> {
+                changedNanos = System.nanoTime();
                 if (robot) {
                     vm.setRobotTable(index, f.getText());
                 } else {
@@ -350,24 +355,41 @@ final class PositionTab implements ModuleTab {
             }
             return;
         }
-        live.request(in.get());
+        long changed = changedNanos >= 0 ? changedNanos : System.nanoTime();
+        changedNanos = -1;
+        live.request(in.get(), changed);
     }
 
     /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
     private void showLive(LiveReachability.Answer a) {
+        long shown = System.nanoTime();
         long cpu0 = LiveReachability.cpuNanos();
-        vm.setLive(a.solved(), a.scene(), a.spindle());
+        vm.setLive(a.solved(), a.scene(), a.spindle(), a.errorRows());
         shownInputs = a.inputs();
         reach.setForeground(a.solved().result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
         reach.setText(vm.reachLine());
-        showCharts(a.charts(), a.joints(), a.errors());
         showResult();
-        // painted now, so that the time measured is until the view shows the new reach
+        long modelled = System.nanoTime();
+        // painted now, so that the time measured is until the view shows the new reach (the repaint
+        // showResult queued then copies the image this paint leaves)
         cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
-        viewLatenciesMs.add((System.nanoTime() - a.askedNanos()) / 1e6);
+        long painted = System.nanoTime();
+        viewLatenciesMs.add((painted - a.askedNanos()) / 1e6);
         cpuMs.add(cpu0 < 0 || a.cpuNanos() < 0 ? Double.NaN
                 : (a.cpuNanos() + LiveReachability.cpuNanos() - cpu0) / 1e6);
-        plotAskedNanos = a.askedNanos();
+        LiveReachability.Phases p = a.phases();
+        splitsMs.add(new double[] {(p.asked() - p.changed()) / 1e6, (p.started() - p.asked()) / 1e6,
+            (p.solved() - p.started()) / 1e6, (p.scened() - p.solved()) / 1e6, (shown - p.posted()) / 1e6,
+            (modelled - shown) / 1e6, (painted - modelled) / 1e6});
+    }
+
+    /** The plots of the live answer shown, made after it. */
+    private void showLiveCharts(LiveReachability.Charted c) {
+        if (!c.inputs().equals(shownInputs)) {
+            return;
+        }
+        showCharts(c.charts(), c.joints(), c.errors());
+        plotAskedNanos = c.changedNanos();
     }
 
     private void liveFailed(String message) {
@@ -407,6 +429,19 @@ final class PositionTab implements ModuleTab {
     java.util.List<Double> cpuMs() {
         return java.util.List.copyOf(cpuMs);
     }
+
+    /**
+     * Where the time of each answer shown went (ms): the event thread's handling of the change
+     * before asking, the wait for the worker, solving the targets, the scene and table rows, the
+     * wait for the event thread, showing the answer (model, labels, table) and painting the 3D view.
+     */
+    java.util.List<double[]> splitsMs() {
+        return java.util.List.copyOf(splitsMs);
+    }
+
+    /** The names of {@link #splitsMs()}'s figures, in order. */
+    static final java.util.List<String> SPLITS = java.util.List.of("fields", "queue", "reach", "scene", "to-edt",
+            "show", "paint");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {
