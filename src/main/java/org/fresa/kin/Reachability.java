@@ -68,24 +68,27 @@ public final class Reachability {
             IkSolver solver = arm.solver();
             double[] q = null;
             double at = phi;
+            // the target at the last target's turn, replaced by the turn at which it is reached
+            Transform3 target = t.pose(phi);
             // an arm with a closed form gets its solutions directly, the one nearest the last polished:
             // cheaper than a warm solve, which spends up to its iteration limit on an unreachable target
             if (prev != null && arm.dof() == prev.length && arm.closedForm().isEmpty()) {
-                IkResult r = solver.solve(t.pose(phi), prev);
+                IkResult r = solver.solve(target, prev);
                 if (r instanceof IkResult.Converged c) {
                     q = c.q();
                 }
             }
             if (q == null) {
                 for (double turn : turns(arm, phi)) {
-                    q = cold(robot, arm, t.pose(turn), prev);
+                    Transform3 pose = turn == phi ? target : t.pose(turn);
+                    q = cold(robot, arm, pose, prev);
                     if (q != null) {
                         at = turn;
+                        target = pose;
                         break;
                     }
                 }
             }
-            Transform3 target = t.pose(at);
             if (q == null) {
                 unreachable++;
                 points.add(new TrajectoryPoint(t.label(), target, TrajectoryPoint.Status.UNREACHABLE, new double[0],

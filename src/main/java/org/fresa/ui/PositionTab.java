@@ -307,6 +307,12 @@ final class PositionTab implements ModuleTab {
         mark(tablePiece, "position-tp-", problems);
         messages.setText(problems.isEmpty() ? " " : problems.size() == 1 ? problems.values().iterator().next()
                 : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
+        if (problems.isEmpty()) {
+            // asked before the job takes the placements: the other tabs' answers to the new job run
+            // on the event thread while the worker solves (the inputs are the same, the job's
+            // STEP-NC file and robot with the fields' placements; asked again below in case not)
+            requestLive();
+        }
         if (problems.isEmpty() && !loading && write) {
             loading = true;
             try {
@@ -320,6 +326,7 @@ final class PositionTab implements ModuleTab {
         if (problems.isEmpty()) {
             requestLive();
         }
+        changedNanos = -1;
         if (vm.result().isEmpty()) {
             // before any answer the view draws the table where the fields put it; after, the answer's
             cell.repaint();
@@ -355,9 +362,7 @@ final class PositionTab implements ModuleTab {
             }
             return;
         }
-        long changed = changedNanos >= 0 ? changedNanos : System.nanoTime();
-        changedNanos = -1;
-        live.request(in.get(), changed);
+        live.request(in.get(), changedNanos >= 0 ? changedNanos : System.nanoTime());
     }
 
     /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
@@ -375,12 +380,13 @@ final class PositionTab implements ModuleTab {
         cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
         long painted = System.nanoTime();
         viewLatenciesMs.add((painted - a.askedNanos()) / 1e6);
-        cpuMs.add(cpu0 < 0 || a.cpuNanos() < 0 ? Double.NaN
-                : (a.cpuNanos() + LiveReachability.cpuNanos() - cpu0) / 1e6);
+        double edtCpuMs = cpu0 < 0 ? Double.NaN : (LiveReachability.cpuNanos() - cpu0) / 1e6;
+        double workerCpuMs = a.cpuNanos() < 0 ? Double.NaN : a.cpuNanos() / 1e6;
+        cpuMs.add(workerCpuMs + edtCpuMs);
         LiveReachability.Phases p = a.phases();
         splitsMs.add(new double[] {(p.asked() - p.changed()) / 1e6, (p.started() - p.asked()) / 1e6,
             (p.solved() - p.started()) / 1e6, (p.scened() - p.solved()) / 1e6, (shown - p.posted()) / 1e6,
-            (modelled - shown) / 1e6, (painted - modelled) / 1e6});
+            (modelled - shown) / 1e6, (painted - modelled) / 1e6, workerCpuMs, edtCpuMs});
     }
 
     /** The plots of the live answer shown, made after it. */
@@ -433,7 +439,8 @@ final class PositionTab implements ModuleTab {
     /**
      * Where the time of each answer shown went (ms): the event thread's handling of the change
      * before asking, the wait for the worker, solving the targets, the scene and table rows, the
-     * wait for the event thread, showing the answer (model, labels, table) and painting the 3D view.
+     * wait for the event thread, showing the answer (model, labels, table) and painting the 3D view;
+     * then the CPU time of the worker's part and of the event thread's.
      */
     java.util.List<double[]> splitsMs() {
         return java.util.List.copyOf(splitsMs);
@@ -441,7 +448,7 @@ final class PositionTab implements ModuleTab {
 
     /** The names of {@link #splitsMs()}'s figures, in order. */
     static final java.util.List<String> SPLITS = java.util.List.of("fields", "queue", "reach", "scene", "to-edt",
-            "show", "paint");
+            "show", "paint", "worker-cpu", "edt-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {
