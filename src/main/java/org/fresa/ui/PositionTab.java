@@ -429,8 +429,9 @@ final class PositionTab implements ModuleTab {
     }
 
     /**
-     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene
-     * and charts) and the event thread's (showing and painting it), without the waits for a core.
+     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene;
+     * its charts are made after it) and the event thread's (showing and painting it), without the
+     * waits for a core.
      */
     java.util.List<Double> cpuMs() {
         return java.util.List.copyOf(cpuMs);
