@@ -16,7 +16,9 @@ import org.fresa.geom.Vec2;
  * are all done (a hash grid of pierce points, so n cuts take about n log n), then 2-opt
  * (reversing a stretch of the order) and Or-opt (moving one cut) moves between near
  * neighbours, each kept only when it shortens the travel and keeps every inner cut before its
- * outer one, until none helps or the time budget is spent. The travel from a cut to the next
+ * outer one, until none helps or the work budget is spent. The budget counts the moves looked
+ * at, not the time, so the same drawing gets the same order on a quiet machine and a loaded one:
+ * the program the Cutting tab shows is the one a run of the saved job writes. The travel from a cut to the next
  * is from its exit (end of the lead-out) to the next pierce. The result is never longer than
  * the nearest-neighbour tour.
  */
@@ -34,6 +36,8 @@ final class CutOrder {
     /** For each cut: the cuts that must come before it (the cuts inside its contour). */
     private final int[][] before;
     private final int n;
+    /** Moves looked at so far (a rapid compared each), the measure of the work budget. */
+    private long work;
 
     /**
      * @param pierce each cut's pierce point
@@ -143,9 +147,12 @@ final class CutOrder {
         return true;
     }
 
-    /** The tour improved by 2-opt and Or-opt moves within the budget; never longer than the input. */
-    int[] improve(int[] start, long budgetNanos) {
-        long deadline = System.nanoTime() + budgetNanos;
+    /**
+     * The tour improved by 2-opt and Or-opt moves until none helps or about {@code maxWork} moves
+     * were looked at; never longer than the input.
+     */
+    int[] improve(int[] start, long maxWork) {
+        long limit = work + maxWork;
         int[] seq = start.clone();
         int[] pos = new int[n];
         for (int k = 0; k < n; k++) {
@@ -153,15 +160,21 @@ final class CutOrder {
         }
         int[][] near = neighbours();
         boolean improved = true;
-        while (improved && System.nanoTime() < deadline) {
+        while (improved && work < limit) {
             improved = false;
-            for (int k = 0; k < n && System.nanoTime() < deadline; k++) {
+            for (int k = 0; k < n && work < limit; k++) {
+                work++;
                 if (twoOpt(seq, pos, k, near) || orOpt(seq, pos, seq[k], near)) {
                     improved = true;
                 }
             }
         }
         return travel(seq) <= travel(start) ? seq : start;
+    }
+
+    /** The moves looked at by this order's improvements so far. */
+    long work() {
+        return work;
     }
 
     private double d(int from, int to) {
@@ -188,6 +201,7 @@ final class CutOrder {
             if (j <= i || j - i > MAX_SPAN) {
                 continue;
             }
+            work += j - i;
             double delta = d(a, seq[j]) + d(seq[i], at(seq, j + 1)) - d(a, seq[i]) - d(seq[j], at(seq, j + 1));
             for (int k = i; k < j; k++) {
                 delta += d(seq[k + 1], seq[k]) - d(seq[k], seq[k + 1]);
@@ -238,6 +252,7 @@ final class CutOrder {
         for (int m : near[c]) {
             int q0 = pos[m];
             // insert between positions q and q + 1 (positions as they are before the move)
+            work++;
             for (int q : new int[] {q0 - 1, q0}) {
                 if (q == p || q == p - 1 || Math.abs(q - p) > MAX_SPAN || q < earliest || q + 1 > latest) {
                     continue;

@@ -42,7 +42,9 @@ final class NearestCutIndex {
     @SuppressWarnings("unchecked")
     NearestCutIndex(List<List<Curve2>> curves, List<Vec2> fixed) {
         int n = fixed.size();
-        this.curves = curves.toArray(new List[0]);
+        @SuppressWarnings("unchecked")
+        List<Curve2>[] byContour = (List<Curve2>[]) curves.toArray(new List<?>[0]);
+        this.curves = byContour;
         this.fixed = fixed.toArray(new Vec2[0]);
         this.open = new boolean[n];
         this.stamp = new int[n];

@@ -23,6 +23,7 @@ public final class JobRunner {
      * @throws FolderLock.FolderBusyException when another run writes into the folder
      * @throws IOException when an output cannot be written
      */
+    @SuppressWarnings("try") // the lock is held for the run, never read
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         try (FolderLock lock = FolderLock.acquire(out)) {

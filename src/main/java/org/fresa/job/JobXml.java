@@ -340,7 +340,7 @@ public final class JobXml {
         if (!elements && g.getCoordinationMm() == null) {
             return Optional.empty();
         }
-        int group = (int) Grading.HEEL_GROUP.require(g.getHeelGroup());
+        int group = Grading.HEEL_GROUP.require(g.getHeelGroup());
         // both given is refused when the plan is made, with the job's other grading settings
         return Optional.of(new JobSettings.HeelCoordination(group, g.getCoordinationMm() == null ? OptionalDouble.empty()
                 : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),

@@ -131,10 +131,19 @@ public final class PlacementSearch {
      * @param robotOfLabel the robot carrying each workingstep's tool frame
      */
     public PlacementSearch(Robot robot, Function<String, Robot> robotOfLabel, Bounds bounds) {
+        this(robot, robotOfLabel, bounds, ToolTurns.of(TrajectorySolver.Options.DEFAULT));
+    }
+
+    /**
+     * @param robot the robot (with the tool frame of workingsteps not in robotOfLabel)
+     * @param robotOfLabel the robot carrying each workingstep's tool frame
+     * @param turns the turns about the tool axis the trajectory will try (the search tries the same)
+     */
+    public PlacementSearch(Robot robot, Function<String, Robot> robotOfLabel, Bounds bounds, ToolTurns turns) {
         this.robot = Objects.requireNonNull(robot, "robot");
         this.robotOfLabel = Objects.requireNonNull(robotOfLabel, "robotOfLabel");
         this.bounds = Objects.requireNonNull(bounds, "bounds");
-        turnsDeg = robot.controlsFullOrientation() ? new double[] {0, 180, 90, -90} : new double[] {0};
+        turnsDeg = turns.firstDeg(robot, 0).stream().mapToDouble(Double::doubleValue).toArray();
     }
 
     /** The score of a placement on some targets: fewer failures first, then the larger margin. */

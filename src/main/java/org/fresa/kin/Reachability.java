@@ -29,17 +29,22 @@ import org.fresa.geom.Transform3;
 public final class Reachability {
 
     private final IkOptions options;
-    private final boolean freeRotation;
+    private final ToolTurns turns;
     private final Map<Robot, Arm> arms = new IdentityHashMap<>();
     private final double[] pose = new double[Pose.SIZE];
 
+    /** Checks with the IK method, tolerances and tool turns the trajectory will be solved with. */
+    public Reachability(TrajectorySolver.Options options) {
+        this(options.ik(), ToolTurns.of(options));
+    }
+
     /**
      * @param options the IK method and tolerances (as the trajectory will be solved)
-     * @param freeRotation whether the tool may be turned about its own axis (a spindle)
+     * @param turns the turns about the tool axis allowed (as the trajectory will use them)
      */
-    public Reachability(IkOptions options, boolean freeRotation) {
+    public Reachability(IkOptions options, ToolTurns turns) {
         this.options = Objects.requireNonNull(options, "options");
-        this.freeRotation = freeRotation;
+        this.turns = Objects.requireNonNull(turns, "turns");
     }
 
     /**
@@ -79,7 +84,7 @@ public final class Reachability {
                 }
             }
             if (q == null) {
-                for (double turn : turns(arm, phi)) {
+                for (double turn : turns.firstDeg(robot, phi)) {
                     Transform3 pose = turn == phi ? target : t.pose(turn);
                     q = cold(robot, arm, pose, prev);
                     if (q != null) {
@@ -114,37 +119,18 @@ public final class Reachability {
      * What the check asks of a robot for every target, worked out once: a robot's joint list (and
      * so its number of joints) is built anew at each call, which cost a sixth of the check.
      */
-    private record Arm(IkSolver solver, int dof, boolean fullOrientation, Optional<SphericalWristSeeds> closedForm) {
+    private record Arm(IkSolver solver, int dof, Optional<SphericalWristSeeds> closedForm) {
     }
 
     private Arm arm(Robot robot) {
         Arm a = arms.get(robot);
         if (a == null) {
-            a = new Arm(robot.newSolver(options), robot.dof(), robot.controlsFullOrientation(),
+            a = new Arm(robot.newSolver(options), robot.dof(),
                     robot instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
                             ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
             arms.put(robot, a);
         }
         return a;
-    }
-
-    /** The turns about the tool axis tried cold, as the trajectory solver's first ones. */
-    private List<Double> turns(Arm arm, double phi) {
-        if (!freeRotation || !arm.fullOrientation()) {
-            return List.of(phi);
-        }
-        return List.of(phi, wrap(phi + 180), wrap(phi + 90), wrap(phi - 90));
-    }
-
-    private static double wrap(double deg) {
-        double p = deg;
-        while (p > 180) {
-            p -= 360;
-        }
-        while (p < -180) {
-            p += 360;
-        }
-        return p;
     }
 
     /**

@@ -156,7 +156,7 @@ public final class SymbolicKinematics {
         }
         rules.append('}');
         IExpr v = evaluator().eval("N[(" + expression + ")/." + rules + "]");
-        return v.evalDouble();
+        return v.evalf();
     }
 
     private static String text(IExpr e) {

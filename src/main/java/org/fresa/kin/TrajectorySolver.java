@@ -90,6 +90,7 @@ public final class TrajectorySolver {
     }
 
     private final Options options;
+    private final ToolTurns turns;
     /** The robot with the TCP of the current tool, and its solver: a tool change changes both. */
     private Robot robot;
     private IkSolver solver;
@@ -105,6 +106,7 @@ public final class TrajectorySolver {
     public TrajectorySolver(Robot robot, Options options) {
         this.robot = Objects.requireNonNull(robot, "robot");
         this.options = Objects.requireNonNull(options, "options");
+        this.turns = ToolTurns.of(options);
         this.solver = robot.newSolver(options.ik());
         this.limits = robot.joints();
         solvers.put(robot, solver);
@@ -376,15 +378,10 @@ public final class TrajectorySolver {
     private Sol cold(ToolTarget t, double phi, double[] reference) {
         Sol[] fallback = new Sol[1];
         double[] fallbackScore = {Double.NEGATIVE_INFINITY};
-        List<Double> first = new ArrayList<>(List.of(phi));
-        if (options.freeRotation() && robot.controlsFullOrientation()) {
-            // a robot with fewer joints turns the tool with one joint: the turn does not decide reach
-            first.addAll(List.of(phi + 180, phi + 90, phi - 90));
-        }
         Sol nearest = null;
         double nearestDistance = Double.POSITIVE_INFINITY;
-        for (double p : first) {
-            for (Sol s : coldAt(t, wrap(p), fallback, fallbackScore)) {
+        for (double p : turns.firstDeg(robot, phi)) {
+            for (Sol s : coldAt(t, p, fallback, fallbackScore)) {
                 if (reference == null) {
                     return s;
                 }
@@ -402,7 +399,7 @@ public final class TrajectorySolver {
             int steps = (int) Math.floor(options.maxFreeRotationDeg() / 20);
             for (int i = 1; i <= 2 * steps; i++) {
                 double p = phi + (i % 2 == 1 ? 1 : -1) * ((i + 1) / 2) * 20.0;
-                List<Sol> s = coldAt(t, wrap(p), fallback, fallbackScore);
+                List<Sol> s = coldAt(t, turns.wrapDeg(p), fallback, fallbackScore);
                 if (!s.isEmpty()) {
                     return s.get(0);
                 }
@@ -420,17 +417,6 @@ public final class TrajectorySolver {
             m = Math.max(m, Math.abs(a[i] - b[i]) * scale);
         }
         return m;
-    }
-
-    private double wrap(double phiDeg) {
-        double p = phiDeg;
-        while (p > 180) {
-            p -= 360;
-        }
-        while (p < -180) {
-            p += 360;
-        }
-        return Math.max(-options.maxFreeRotationDeg(), Math.min(options.maxFreeRotationDeg(), p));
     }
 
     /** The comfortable cold solutions at turn p (remembering the best other one). */

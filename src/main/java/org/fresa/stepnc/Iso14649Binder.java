@@ -110,7 +110,7 @@ final class Iso14649Binder {
     private static final int KNOWN_CACHE = 2048;
     private final int[] knownIndex = new int[KNOWN_CACHE];
     @SuppressWarnings("unchecked")
-    private final Optional<E>[] knownAnswer = new Optional[KNOWN_CACHE];
+    private final Optional<E>[] knownAnswer = (Optional<E>[]) new Optional<?>[KNOWN_CACHE];
 
     /** The instance as a known, simple entity; empty when it is unknown or complex. */
     private Optional<E> known(long id) {

@@ -152,8 +152,7 @@ final class LiveReachability {
             if (!key.equals(plannedKey)) {
                 planned = PositionViewModel.plan(in.stepnc(), in.robot(), in.tool(), in.choices(),
                         ProgressMonitor.NONE);
-                reach = new Reachability(TrajectorySolver.Options.DEFAULT.ik(),
-                        TrajectorySolver.Options.DEFAULT.freeRotation());
+                reach = new Reachability(TrajectorySolver.Options.DEFAULT);
                 plannedKey = key;
             }
             Optional<RobotTrajectoryService.Solved> solved = PositionViewModel.reach(planned, in.robotTable(),

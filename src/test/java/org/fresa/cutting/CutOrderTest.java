@@ -86,7 +86,7 @@ class CutOrderTest {
         }
         CutOrder co = new CutOrder(pts, pts, before);
         int[] nn = co.nearestNeighbour();
-        int[] better = co.improve(nn, 2_000_000_000L);
+        int[] better = co.improve(nn, Long.MAX_VALUE / 2);
         int[] pos = new int[400];
         for (int k = 0; k < 400; k++) {
             pos[better[k]] = k;
@@ -98,5 +98,29 @@ class CutOrderTest {
         }
         assertTrue(co.travel(better) <= co.travel(nn));
         assertTrue(co.travel(better) < 0.95 * co.travel(nn), co.travel(better) + " vs " + co.travel(nn));
+    }
+
+    /**
+     * The budget counts moves looked at, not time: a short budget stops the improvement at the
+     * same order whatever the machine's load, so the tab's preview and a run of the saved job agree.
+     */
+    @Test
+    void theWorkBudgetNotTheClockEndsTheImprovement() {
+        Random r = new Random(11);
+        List<Vec2> pts = new ArrayList<>();
+        List<int[]> before = new ArrayList<>();
+        for (int i = 0; i < 2000; i++) {
+            pts.add(Vec2.of(r.nextDouble() * 1000, r.nextDouble() * 1000));
+            before.add(new int[0]);
+        }
+        int[] nn = new CutOrder(pts, pts, before).nearestNeighbour();
+        CutOrder first = new CutOrder(pts, pts, before);
+        int[] shortRun = first.improve(nn, 20_000);
+        assertTrue(first.work() < 20_000 + 2_000, "work " + first.work());
+        CutOrder second = new CutOrder(pts, pts, before);
+        assertTrue(java.util.Arrays.equals(shortRun, second.improve(nn, 20_000)));
+        CutOrder whole = new CutOrder(pts, pts, before);
+        int[] longRun = whole.improve(nn, Long.MAX_VALUE / 2);
+        assertTrue(whole.travel(longRun) < whole.travel(shortRun), "the short budget stopped the improvement early");
     }
 }

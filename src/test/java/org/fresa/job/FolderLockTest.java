@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** One run per output folder, within one JVM; {@code FolderLockProcessTest} has two processes. */
+@SuppressWarnings("try") // each lock is held for its block, never read
 class FolderLockTest {
 
     @TempDir

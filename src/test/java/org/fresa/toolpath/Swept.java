@@ -71,7 +71,7 @@ public final class Swept {
                 }
                 Geometry g = pts.size() == 2 && pts.get(0).equals2D(pts.get(1))
                         ? GF.createPoint(pts.get(0))
-                        : (LineString) GF.createLineString(pts.toArray(new Coordinate[0]));
+                        : GF.createLineString(pts.toArray(new Coordinate[0]));
                 parts.add(g.buffer(radius, QUADRANT_SEGMENTS));
             }
             at = m.end();

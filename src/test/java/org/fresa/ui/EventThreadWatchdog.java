@@ -72,7 +72,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     private record GcPause(long startMs, long endMs) {
     }
 
-    private final double thresholdMs;
+    private volatile double thresholdMs;
     private final long jvmStartNanos;
     private final List<GcPause> gcPauses = new CopyOnWriteArrayList<>();
     private final List<Finished> finished = new CopyOnWriteArrayList<>();
@@ -87,7 +87,6 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     private int waitCount;
     private volatile Segment inFlight;
     private volatile boolean recording;
-    private volatile boolean closed;
     private volatile double worstMs;
     private volatile String worstEvent = "none";
 
@@ -136,8 +135,22 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         sampler.start();
     }
 
-    /** Pushes a watchdog on the system event queue; it records nothing until {@link #record}. */
-    static EventThreadWatchdog install(double thresholdMs) throws Exception {
+    /*
+     * One watchdog per JVM, pushed once and never popped. AssertJ Swing's window monitor keeps
+     * every event queue it has seen a window on and waits for each of them to go idle; a popped
+     * queue has no thread dispatching it, so every later wait for idle ran into the robot's 10 s
+     * idle timeout (the responsiveness tests took 14 min instead of 2). When not recording, the
+     * watchdog only passes events through.
+     */
+    private static EventThreadWatchdog installed;
+
+    /** The watchdog on the system event queue (pushed on first use); it records nothing until {@link #record}. */
+    static synchronized EventThreadWatchdog install(double thresholdMs) throws Exception {
+        if (installed != null) {
+            installed.thresholdMs = thresholdMs;
+            installed.recording = false;
+            return installed;
+        }
         if (THREADS.isThreadContentionMonitoringSupported()) {
             THREADS.setThreadContentionMonitoringEnabled(true);
         }
@@ -146,6 +159,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         // the push may hand dispatching to a new thread: take the one that now dispatches for us
         EventQueue.invokeAndWait(() -> w.eventThread = Thread.currentThread());
         w.schedstat = schedstatOf(w.eventThread);
+        installed = w;
         return w;
     }
 
@@ -401,7 +415,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     }
 
     private void sample() {
-        while (!closed) {
+        while (!Thread.currentThread().isInterrupted()) {
             if (recording) {
                 sampleRunQueue();
             }
@@ -437,22 +451,9 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         gcPauses.add(new GcPause(gi.getStartTime(), gi.getEndTime()));
     }
 
+    /** Stops recording; the watchdog stays on the queue for the JVM's later tests (see {@link #install}). */
     @Override
-    public void close() throws Exception {
-        recording = false;
-        closed = true;
-        sampler.interrupt();
-        for (GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
-            if (gc instanceof NotificationEmitter e) {
-                try {
-                    e.removeNotificationListener(gcListener);
-                } catch (javax.management.ListenerNotFoundException ignored) {
-                    // never added to this bean
-                }
-            }
-        }
-        // on the event thread, which is dispatching from this queue: a pop from another thread
-        // races with the dispatch thread's hand-over to the previous queue
-        EventQueue.invokeAndWait(this::pop);
+    public void close() {
+        pause();
     }
 }

@@ -27,7 +27,7 @@ class LiveReachabilityTest {
     private static final Path EXAMPLE2 = Path.of("samples/stepnc/example2.stp");
 
     private static Reachability checker() {
-        return new Reachability(TrajectorySolver.Options.DEFAULT.ik(), TrajectorySolver.Options.DEFAULT.freeRotation());
+        return new Reachability(TrajectorySolver.Options.DEFAULT);
     }
 
     /** The workingsteps and counts of the targets (not the inserted points) a result leaves out of reach. */

@@ -145,7 +145,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
             double marked = GuiActionRunner.execute(() -> {
                 org.jfree.chart.ChartPanel p = (org.jfree.chart.ChartPanel) window.robot().finder().findByName(
                         "position-joints-chart");
-                var sub = (org.jfree.chart.plot.XYPlot) ((org.jfree.chart.plot.CombinedDomainXYPlot) p.getChart()
+                var sub = ((org.jfree.chart.plot.CombinedDomainXYPlot) p.getChart()
                         .getPlot()).getSubplots().get(0);
                 return ((org.jfree.chart.plot.ValueMarker) sub.getDomainMarkers(org.jfree.chart.ui.Layer.FOREGROUND)
                         .iterator().next()).getValue();
@@ -231,7 +231,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
     private void showTab(String title) {
         window.tabbedPane("tabs").selectTab(title);
         GuiActionRunner.execute(() -> {
-            javax.swing.JTabbedPane t = (javax.swing.JTabbedPane) window.tabbedPane("tabs").target();
+            javax.swing.JTabbedPane t = window.tabbedPane("tabs").target();
             t.setSelectedIndex(t.indexOfTab(title));
         });
         window.robot().waitForIdle();

@@ -146,7 +146,7 @@ class StepNcTabGuiTest extends WindowGuiTest {
     }
 
     private PlotScene plotScene() {
-        PlotPanel p = (PlotPanel) window.robot().finder().find(window.target(),
+        PlotPanel p = window.robot().finder().find(window.target(),
                 new GenericTypeMatcher<>(PlotPanel.class, true) {
                     @Override
                     protected boolean isMatching(PlotPanel c) {

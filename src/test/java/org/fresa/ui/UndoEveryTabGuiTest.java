@@ -171,7 +171,7 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
             }
         }
         waitUntilNoTaskRuns();
-        assertEquals(expected, model().job(), KeyEvent.getKeyModifiersText(modifiers) + "+"
+        assertEquals(expected, model().job(), (modifiers == (CTRL | SHIFT) ? "Ctrl+Shift" : modifiers == CTRL ? "Ctrl" : "Shift") + "+"
                 + KeyEvent.getKeyText(key));
     }
 

@@ -92,6 +92,7 @@ public final class CliSupport {
      * Runs a task into the {@code --out} folder, which it holds for the run: a path that is not a
      * folder is refused, and so is a folder another run writes into ({@link FolderLock}).
      */
+    @SuppressWarnings("try") // the lock is held for the task, never read
     static TaskOutcome intoFolder(Path out, FolderTask task) throws CamInputException, java.io.IOException {
         OutputFolder folder = OutputFolder.of(out, "--out");
         try (FolderLock lock = FolderLock.acquire(folder)) {
