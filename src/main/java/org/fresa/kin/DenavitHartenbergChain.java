@@ -162,8 +162,17 @@ public final class DenavitHartenbergChain {
      * q in internal units. No allocation.
      */
     void frames(double[] q, double[] f) {
+        frames(q, f, n);
+        Pose.mul(f, n * Pose.SIZE, tool12, 0, f, (n + 1) * Pose.SIZE);
+    }
+
+    /**
+     * Fills f with the base (slot 0) and the cumulative DH frames 1..upTo only, as {@link #frames}
+     * computes them: the closed form needs the arm's frame 3 for each of its candidates, not the wrist's.
+     */
+    void frames(double[] q, double[] f, int upTo) {
         System.arraycopy(base12, 0, f, 0, Pose.SIZE);
-        for (int i = 0; i < n; i++) {
+        for (int i = 0; i < upTo; i++) {
             double th = revolute[i] ? q[i] + theta[i] : theta[i];
             double di = revolute[i] ? d[i] : q[i] + d[i];
             double ct = Math.cos(th);
@@ -184,7 +193,6 @@ public final class DenavitHartenbergChain {
                 f[o + 4 * r + 3] = m0 * ai * ct + m1 * ai * st + m2 * di + f[p + 4 * r + 3];
             }
         }
-        Pose.mul(f, n * Pose.SIZE, tool12, 0, f, (n + 1) * Pose.SIZE);
     }
 
     /**

@@ -30,8 +30,7 @@ public final class Reachability {
 
     private final IkOptions options;
     private final ToolTurns turns;
-    private final Map<Robot, IkSolver> solvers = new IdentityHashMap<>();
-    private final Map<Robot, Optional<SphericalWristSeeds>> closedForms = new IdentityHashMap<>();
+    private final Map<Robot, Arm> arms = new IdentityHashMap<>();
     private final double[] pose = new double[Pose.SIZE];
 
     /** Checks with the IK method, tolerances and tool turns the trajectory will be solved with. */
@@ -70,27 +69,31 @@ public final class Reachability {
             }
             ToolTarget t = targets.get(k);
             Robot robot = robotOfLabel.apply(t.label());
-            IkSolver solver = solvers.computeIfAbsent(robot, r -> r.newSolver(options));
+            Arm arm = arm(robot);
+            IkSolver solver = arm.solver();
             double[] q = null;
             double at = phi;
+            // the target at the last target's turn, replaced by the turn at which it is reached
+            Transform3 target = t.pose(phi);
             // an arm with a closed form gets its solutions directly, the one nearest the last polished:
             // cheaper than a warm solve, which spends up to its iteration limit on an unreachable target
-            if (prev != null && robot.dof() == prev.length && closedForm(robot).isEmpty()) {
-                IkResult r = solver.solve(t.pose(phi), prev);
+            if (prev != null && arm.dof() == prev.length && arm.closedForm().isEmpty()) {
+                IkResult r = solver.solve(target, prev);
                 if (r instanceof IkResult.Converged c) {
                     q = c.q();
                 }
             }
             if (q == null) {
                 for (double turn : turns.firstDeg(robot, phi)) {
-                    q = cold(robot, solver, t.pose(turn), prev);
+                    Transform3 pose = turn == phi ? target : t.pose(turn);
+                    q = cold(robot, arm, pose, prev);
                     if (q != null) {
                         at = turn;
+                        target = pose;
                         break;
                     }
                 }
             }
-            Transform3 target = t.pose(at);
             if (q == null) {
                 unreachable++;
                 points.add(new TrajectoryPoint(t.label(), target, TrajectoryPoint.Status.UNREACHABLE, new double[0],
@@ -112,10 +115,22 @@ public final class Reachability {
                 System.nanoTime() - t0));
     }
 
-    private Optional<SphericalWristSeeds> closedForm(Robot robot) {
-        return closedForms.computeIfAbsent(robot,
-                r -> r instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
-                        ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
+    /**
+     * What the check asks of a robot for every target, worked out once: a robot's joint list (and
+     * so its number of joints) is built anew at each call, which cost a sixth of the check.
+     */
+    private record Arm(IkSolver solver, int dof, Optional<SphericalWristSeeds> closedForm) {
+    }
+
+    private Arm arm(Robot robot) {
+        Arm a = arms.get(robot);
+        if (a == null) {
+            a = new Arm(robot.newSolver(options), robot.dof(),
+                    robot instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
+                            ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
+            arms.put(robot, a);
+        }
+        return a;
     }
 
     /**
@@ -123,8 +138,9 @@ public final class Reachability {
      * a closed form its solutions within the limits are polished (and so checked) nearest first
      * until one converges.
      */
-    private double[] cold(Robot robot, IkSolver solver, Transform3 target, double[] prev) {
-        Optional<SphericalWristSeeds> closed = closedForm(robot);
+    private double[] cold(Robot robot, Arm arm, Transform3 target, double[] prev) {
+        IkSolver solver = arm.solver();
+        Optional<SphericalWristSeeds> closed = arm.closedForm();
         if (closed.isEmpty()) {
             List<IkResult.Converged> all = solver.solveAll(target);
             return all.isEmpty() ? null : nearest(all.stream().map(IkResult.Converged::q).toList(), prev);

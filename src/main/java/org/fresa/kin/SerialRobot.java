@@ -36,6 +36,12 @@ public record SerialRobot(String name, String description, DenavitHartenbergChai
         return List.copyOf(out);
     }
 
+    /** The chain's joint count, without building the named joint list (asked for every target). */
+    @Override
+    public int dof() {
+        return chain.dof();
+    }
+
     @Override
     public Transform3 forward(double... q) {
         return chain.forward(q);

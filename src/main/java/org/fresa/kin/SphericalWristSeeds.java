@@ -90,7 +90,7 @@ final class SphericalWristSeeds implements ClosedFormSeeds {
                 q[0] = t1 - chain.theta[0];
                 q[1] = t2 - chain.theta[1];
                 q[2] = t3 - chain.theta[2];
-                chain.frames(q, f);
+                chain.frames(q, f, 3);
                 // N = R3^T R_flange diag(1, -1, -1) = Rz(t4) Ry(-t5) Rz(-t6)
                 int o = 3 * Pose.SIZE;
                 double[] n = new double[9];

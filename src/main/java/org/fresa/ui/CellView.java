@@ -46,6 +46,10 @@ final class CellView extends JComponent {
     private final PositionViewModel vm;
     private final transient OrbitCamera camera = new OrbitCamera();
     private transient Object fittedTo;
+    // the last picture drawn, of this scene with this camera, size and text
+    private transient java.awt.image.BufferedImage picture;
+    private transient CellScene pictureScene;
+    private transient Object pictureKey;
     private int lastX;
     private int lastY;
 
@@ -115,29 +119,55 @@ final class CellView extends JComponent {
         });
     }
 
+    /**
+     * Copies the picture of the scene as it is now, drawn again only when the scene, the camera,
+     * the size or the robot's name has changed since: every other repaint (one queued behind the
+     * paint of a live answer, a tooltip, a dialog closed over the view) is a copy of one image,
+     * not thousands of antialiased shapes sent one by one to the display.
+     */
     @Override
     protected void paintComponent(Graphics g0) {
+        CellScene sc = vm.scene();
+        Object fit = vm.fitKey();
+        if (!Objects.equals(fit, fittedTo)) {
+            camera.fit(sc.points());
+            fittedTo = fit;
+        }
+        int w = getWidth();
+        int h = getHeight();
         Graphics2D g = (Graphics2D) g0.create();
         try {
-            paintScene(g, vm.scene());
+            double scale = Math.max(1, g.getTransform().getScaleX());
+            Font font = getFont() != null ? getFont() : new Font(Font.SANS_SERIF, Font.PLAIN, 12);
+            java.util.List<Object> key = java.util.List.of(camera.projection(w, h), vm.robot().name(), font, scale);
+            if (picture == null || pictureScene != sc && !sc.equals(pictureScene) || !key.equals(pictureKey)) {
+                int iw = Math.max(1, (int) Math.ceil(w * scale));
+                int ih = Math.max(1, (int) Math.ceil(h * scale));
+                if (picture == null || picture.getWidth() != iw || picture.getHeight() != ih) {
+                    picture = new java.awt.image.BufferedImage(iw, ih, java.awt.image.BufferedImage.TYPE_INT_RGB);
+                }
+                Graphics2D p = picture.createGraphics();
+                try {
+                    p.scale(scale, scale);
+                    p.setFont(font);
+                    paintScene(p, sc, w, h);
+                } finally {
+                    p.dispose();
+                }
+                pictureScene = sc;
+                pictureKey = key;
+            }
+            g.drawImage(picture, 0, 0, w, h, null);
         } finally {
             g.dispose();
         }
     }
 
-    private void paintScene(Graphics2D g, CellScene sc) {
-        int w = getWidth();
-        int h = getHeight();
-        g.setFont(getFont() != null ? getFont() : new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+    private void paintScene(Graphics2D g, CellScene sc, int w, int h) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         g.setColor(new Color(250, 251, 253));
         g.fillRect(0, 0, w, h);
-        Object key = vm.fitKey();
-        if (!Objects.equals(key, fittedTo)) {
-            camera.fit(sc.points());
-            fittedTo = key;
-        }
 
         g.setStroke(new BasicStroke(1f));
         g.setColor(new Color(222, 226, 232));

@@ -36,14 +36,35 @@ final class LiveReachability {
     }
 
     /**
-     * An answer ready to be shown, everything made off the event thread.
+     * An answer ready to be shown in the 3D view and the reach line, everything made off the event
+     * thread; its plots follow in a {@link Charted} of the same inputs.
      *
-     * @param askedNanos when the change that asked for it was made ({@link System#nanoTime})
+     * @param errorRows the error per axis table's rows ({@link PositionViewModel#errorRowsOf})
+     * @param phases when each step of its making ended
      * @param cpuNanos the CPU time the background thread spent on it (-1 where the JVM does not count it)
      */
     record Answer(Inputs inputs, RobotTrajectoryService.Solved solved, Transform3 spindle, CellScene scene,
-            TrajectoryCharts charts, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked errors, long askedNanos,
-            long cpuNanos) {
+            List<String[]> errorRows, Phases phases, long cpuNanos) {
+        /** When the change that asked for it was made ({@link System#nanoTime}). */
+        long askedNanos() {
+            return phases.changed();
+        }
+    }
+
+    /**
+     * The plots of an answer, made after the answer itself was handed over: the 3D view does not
+     * wait for them.
+     */
+    record Charted(Inputs inputs, TrajectoryCharts charts, TrajectoryCharts.Marked joints,
+            TrajectoryCharts.Marked errors, long changedNanos, long madeNanos) {
+    }
+
+    /**
+     * When (System.nanoTime) an answer's steps ended: the field change, the request (after the
+     * event thread's own handling of the change), the worker taking it up, the targets solved, the
+     * scene made and the answer handed to the event thread.
+     */
+    record Phases(long changed, long asked, long started, long solved, long scened, long posted) {
     }
 
     private static final java.lang.management.ThreadMXBean THREADS =
@@ -59,6 +80,7 @@ final class LiveReachability {
 
     private final AtomicLong generation = new AtomicLong();
     private final Consumer<Answer> show;
+    private final Consumer<Charted> showCharts;
     private final Consumer<String> failed;
     private Inputs last;
 
@@ -69,22 +91,32 @@ final class LiveReachability {
 
     /**
      * @param show runs on the event thread with each answer still wanted
+     * @param showCharts runs on the event thread with the plots of the answer shown last, if still wanted
      * @param failed runs on the event thread when the file or robot cannot be read or planned
      */
-    LiveReachability(Consumer<Answer> show, Consumer<String> failed) {
+    LiveReachability(Consumer<Answer> show, Consumer<Charted> showCharts, Consumer<String> failed) {
         this.show = show;
+        this.showCharts = showCharts;
         this.failed = failed;
     }
 
     /** Asks for the answer of these inputs (event thread); nothing when they are those last asked. */
     void request(Inputs in) {
+        request(in, System.nanoTime());
+    }
+
+    /**
+     * As above, for a change made at {@code changedNanos} ({@link System#nanoTime}): the time an
+     * answer takes is counted from there.
+     */
+    void request(Inputs in, long changedNanos) {
         if (in.equals(last)) {
             return;
         }
         last = in;
         long asked = System.nanoTime();
         long gen = generation.incrementAndGet();
-        WORKER.execute(() -> run(in, gen, asked));
+        WORKER.execute(() -> run(in, gen, changedNanos, asked));
     }
 
     /** Drops any answer being worked out; the same inputs asked again are worked out again. */
@@ -108,10 +140,11 @@ final class LiveReachability {
         return generation.get() != gen;
     }
 
-    private void run(Inputs in, long gen, long asked) {
+    private void run(Inputs in, long gen, long changed, long asked) {
         if (stale(gen)) {
             return;
         }
+        long started = System.nanoTime();
         long cpu0 = cpuNanos();
         try {
             List<Object> key = List.of(in.stepnc(), modified(in.stepnc()), in.choices(), in.robot(),
@@ -127,14 +160,28 @@ final class LiveReachability {
             if (solved.isEmpty() || stale(gen)) {
                 return;
             }
+            long reached = System.nanoTime();
             RobotTrajectoryService.Solved s = solved.get();
             CellScene scene = PositionViewModel.sceneOf(s, 0, Optional.of(planned.spindle()));
-            TrajectoryCharts c = TrajectoryCharts.of(s);
-            Answer a = new Answer(in, s, planned.spindle(), scene, c, c.joints(1), c.errors(1), asked,
+            List<String[]> rows = PositionViewModel.errorRowsOf(s.result());
+            long scened = System.nanoTime();
+            Answer a = new Answer(in, s, planned.spindle(), scene, rows,
+                    new Phases(changed, asked, started, reached, scened, System.nanoTime()),
                     cpu0 < 0 ? -1 : cpuNanos() - cpu0);
             SwingUtilities.invokeLater(() -> {
                 if (!stale(gen)) {
                     show.accept(a);
+                }
+            });
+            // the plots after the view: a newer change drops them unmade
+            if (stale(gen)) {
+                return;
+            }
+            TrajectoryCharts c = TrajectoryCharts.of(s);
+            Charted charted = new Charted(in, c, c.joints(1), c.errors(1), changed, System.nanoTime());
+            SwingUtilities.invokeLater(() -> {
+                if (!stale(gen)) {
+                    showCharts.accept(charted);
                 }
             });
         } catch (org.fresa.model.CamInputException | java.io.IOException | RuntimeException e) {

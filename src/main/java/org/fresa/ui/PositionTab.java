@@ -73,11 +73,15 @@ final class PositionTab implements ModuleTab {
     private boolean loading;
     private String drawnRobot = "";
     private final JLabel reach = new JLabel(" ");
-    private final transient LiveReachability live = new LiveReachability(this::showLive, this::liveFailed);
+    private final transient LiveReachability live = new LiveReachability(this::showLive, this::showLiveCharts,
+            this::liveFailed);
     // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
     private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
+    private final java.util.List<double[]> splitsMs = new java.util.ArrayList<>();
+    // when the last field was typed into and not yet asked about (System.nanoTime), or -1
+    private long changedNanos = -1;
     private long plotAskedNanos = -1;
     private transient LiveReachability.Inputs shownInputs;
 
@@ -198,6 +202,7 @@ final class PositionTab implements ModuleTab {
             l.setLabelFor(f);
             l.setToolTipText(title + " " + names[i] + " (Alt+" + KeyEvent.getKeyText(keys[i]) + ")");
             TextChanges.onChange(f, () -> {
+                changedNanos = System.nanoTime();
                 if (robot) {
                     vm.setRobotTable(index, f.getText());
                 } else {
@@ -302,6 +307,12 @@ final class PositionTab implements ModuleTab {
         mark(tablePiece, "position-tp-", problems);
         messages.setText(problems.isEmpty() ? " " : problems.size() == 1 ? problems.values().iterator().next()
                 : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
+        if (problems.isEmpty()) {
+            // asked before the job takes the placements: the other tabs' answers to the new job run
+            // on the event thread while the worker solves (the inputs are the same, the job's
+            // STEP-NC file and robot with the fields' placements; asked again below in case not)
+            requestLive();
+        }
         if (problems.isEmpty() && !loading && write) {
             loading = true;
             try {
@@ -315,6 +326,7 @@ final class PositionTab implements ModuleTab {
         if (problems.isEmpty()) {
             requestLive();
         }
+        changedNanos = -1;
         if (vm.result().isEmpty()) {
             // before any answer the view draws the table where the fields put it; after, the answer's
             cell.repaint();
@@ -350,24 +362,40 @@ final class PositionTab implements ModuleTab {
             }
             return;
         }
-        live.request(in.get());
+        live.request(in.get(), changedNanos >= 0 ? changedNanos : System.nanoTime());
     }
 
     /** A live answer: the 3D view, the plots, the summary and the out-of-reach line show it. */
     private void showLive(LiveReachability.Answer a) {
+        long shown = System.nanoTime();
         long cpu0 = LiveReachability.cpuNanos();
-        vm.setLive(a.solved(), a.scene(), a.spindle());
+        vm.setLive(a.solved(), a.scene(), a.spindle(), a.errorRows());
         shownInputs = a.inputs();
         reach.setForeground(a.solved().result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
         reach.setText(vm.reachLine());
-        showCharts(a.charts(), a.joints(), a.errors());
         showResult();
-        // painted now, so that the time measured is until the view shows the new reach
+        long modelled = System.nanoTime();
+        // painted now, so that the time measured is until the view shows the new reach (the repaint
+        // showResult queued then copies the image this paint leaves)
         cell.paintImmediately(0, 0, cell.getWidth(), cell.getHeight());
-        viewLatenciesMs.add((System.nanoTime() - a.askedNanos()) / 1e6);
-        cpuMs.add(cpu0 < 0 || a.cpuNanos() < 0 ? Double.NaN
-                : (a.cpuNanos() + LiveReachability.cpuNanos() - cpu0) / 1e6);
-        plotAskedNanos = a.askedNanos();
+        long painted = System.nanoTime();
+        viewLatenciesMs.add((painted - a.askedNanos()) / 1e6);
+        double edtCpuMs = cpu0 < 0 ? Double.NaN : (LiveReachability.cpuNanos() - cpu0) / 1e6;
+        double workerCpuMs = a.cpuNanos() < 0 ? Double.NaN : a.cpuNanos() / 1e6;
+        cpuMs.add(workerCpuMs + edtCpuMs);
+        LiveReachability.Phases p = a.phases();
+        splitsMs.add(new double[] {(p.asked() - p.changed()) / 1e6, (p.started() - p.asked()) / 1e6,
+            (p.solved() - p.started()) / 1e6, (p.scened() - p.solved()) / 1e6, (shown - p.posted()) / 1e6,
+            (modelled - shown) / 1e6, (painted - modelled) / 1e6, workerCpuMs, edtCpuMs});
+    }
+
+    /** The plots of the live answer shown, made after it. */
+    private void showLiveCharts(LiveReachability.Charted c) {
+        if (!c.inputs().equals(shownInputs)) {
+            return;
+        }
+        showCharts(c.charts(), c.joints(), c.errors());
+        plotAskedNanos = c.changedNanos();
     }
 
     private void liveFailed(String message) {
@@ -401,12 +429,27 @@ final class PositionTab implements ModuleTab {
     }
 
     /**
-     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene
-     * and charts) and the event thread's (showing and painting it), without the waits for a core.
+     * The CPU time (ms) each answer shown took: the background thread's (placing, solving, the scene;
+     * its charts are made after it) and the event thread's (showing and painting it), without the
+     * waits for a core.
      */
     java.util.List<Double> cpuMs() {
         return java.util.List.copyOf(cpuMs);
     }
+
+    /**
+     * Where the time of each answer shown went (ms): the event thread's handling of the change
+     * before asking, the wait for the worker, solving the targets, the scene and table rows, the
+     * wait for the event thread, showing the answer (model, labels, table) and painting the 3D view;
+     * then the CPU time of the worker's part and of the event thread's.
+     */
+    java.util.List<double[]> splitsMs() {
+        return java.util.List.copyOf(splitsMs);
+    }
+
+    /** The names of {@link #splitsMs()}'s figures, in order. */
+    static final java.util.List<String> SPLITS = java.util.List.of("fields", "queue", "reach", "scene", "to-edt",
+            "show", "paint", "worker-cpu", "edt-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {

@@ -248,6 +248,14 @@ final class PositionViewModel {
         live = true;
     }
 
+    /** As above, with the rows of its error per axis table ({@link #errorRowsOf}), made off the event thread. */
+    void setLive(RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult,
+            List<String[]> rows) {
+        setLive(s, atFirstPoint, spindleOfResult);
+        errorRows = List.copyOf(rows);
+        errorRowsResult = s;
+    }
+
     /** A Compute result with its spindle (drawn with the tool). */
     void setResult(RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult) {
         setResult(s, atFirstPoint);
@@ -379,8 +387,21 @@ final class PositionViewModel {
         if (solved.isEmpty()) {
             return List.of();
         }
+        if (errorRowsResult != solved.get()) {
+            errorRows = errorRowsOf(solved.get().result());
+            errorRowsResult = solved.get();
+        }
+        return errorRows;
+    }
+
+    // the rows of one result, kept: a live answer brings them made off the event thread
+    private List<String[]> errorRows = List.of();
+    private RobotTrajectoryService.Solved errorRowsResult;
+
+    /** The error per axis rows of a result (any thread): {@link #errorRows()} of a model showing it. */
+    static List<String[]> errorRowsOf(TrajectorySolver.Result result) {
         List<String[]> rows = new ArrayList<>();
-        for (org.fresa.job.ErrorStatistics.Axis a : org.fresa.job.ErrorStatistics.of(solved.get().result()).axes()) {
+        for (org.fresa.job.ErrorStatistics.Axis a : org.fresa.job.ErrorStatistics.of(result).axes()) {
             rows.add(new String[] {a.axis() + " (" + a.unit() + ")", String.format(Locale.ROOT, "%.3g", a.mean()),
                 String.format(Locale.ROOT, "%.3g", a.min()), String.format(Locale.ROOT, "%.3g", a.max())});
         }

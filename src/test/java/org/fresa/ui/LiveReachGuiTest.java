@@ -91,6 +91,7 @@ class LiveReachGuiTest extends WindowGuiTest {
         List<Double> view = new ArrayList<>();
         List<Double> plot = new ArrayList<>();
         List<Double> cpu = new ArrayList<>();
+        List<double[]> splits = new ArrayList<>();
         List<String> lines = new ArrayList<>();
         double load = loadAverage();
         int cores = Runtime.getRuntime().availableProcessors();
@@ -103,13 +104,15 @@ class LiveReachGuiTest extends WindowGuiTest {
             waitFor("the reach of " + c[0] + " = " + c[1] + " is shown", () -> tab.showsLiveAnswerOfFields());
             double v = GuiActionRunner.execute(() -> last(tab.viewLatenciesMs(), views));
             double u = GuiActionRunner.execute(() -> last(tab.cpuMs(), views));
+            double[] split = GuiActionRunner.execute(() -> tab.splitsMs().get(tab.splitsMs().size() - 1));
+            splits.add(split);
             waitFor("its plot is drawn", () -> tab.plotLatenciesMs().size() > plots);
             double p = GuiActionRunner.execute(() -> last(tab.plotLatenciesMs(), plots));
             view.add(v);
             plot.add(p);
             cpu.add(u);
-            lines.add(String.format(Locale.ROOT, "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s", c[0],
-                    c[1], v, u, p,
+            lines.add(String.format(Locale.ROOT, "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; %s", c[0],
+                    c[1], v, u, p, split(split),
                     GuiActionRunner.execute(() -> window.label("position-reach").target().getText())));
         }
         settle();
@@ -127,6 +130,12 @@ class LiveReachGuiTest extends WindowGuiTest {
                         + " event-thread task %.1f ms (%s); load average before %.2f on %d cores%n",
                 changes.length, median(view), max(view), median(cpu), max(cpu), median(plot), max(plot),
                 watchdog.worstMs(), watchdog.worstEvent(), load, cores));
+        double[] medians = new double[PositionTab.SPLITS.size()];
+        for (int i = 0; i < medians.length; i++) {
+            int k = i;
+            medians[i] = median(splits.stream().map(x -> x[k]).toList());
+        }
+        sb.append("  where the 3D view's time went, medians: ").append(split(medians)).append('\n');
         sb.append("  the first ").append(warmUp.length).append(" changes, not judged: ").append(String.join(", ", warm))
                 .append('\n');
         lines.forEach(l -> sb.append(l).append('\n'));
@@ -176,6 +185,16 @@ class LiveReachGuiTest extends WindowGuiTest {
         } catch (IOException | RuntimeException e) {
             return 0;
         }
+    }
+
+    /** A change's time split into its steps (ms), as the tab names them. */
+    private static String split(double[] ms) {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < ms.length; i++) {
+            sb.append(i == 0 ? "" : ", ").append(PositionTab.SPLITS.get(i))
+                    .append(String.format(Locale.ROOT, " %.1f", ms[i]));
+        }
+        return sb.toString();
     }
 
     private static double last(List<Double> values, int before) {
