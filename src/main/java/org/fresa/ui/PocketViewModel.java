@@ -282,7 +282,7 @@ public final class PocketViewModel {
                 ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true) : checked;
         try {
             String name = settings.contour().getFileName().toString();
-            if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
+            if (PocketService.mayHaveIslands(settings)) {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
@@ -444,6 +444,6 @@ public final class PocketViewModel {
     static PocketSettings withContour(PocketSettings s, Path contour) {
         return new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
                 s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin(),
-                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting());
+                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting(), s.elements());
     }
 }
