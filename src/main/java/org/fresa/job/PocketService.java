@@ -55,6 +55,11 @@ public final class PocketService {
      */
     public static PocketProfile readContour(PocketSettings s) throws CamInputException, IOException {
         if (s.elements().isPresent()) {
+            // the editor's check, so that a job edited by hand is refused as the tab refuses it
+            java.util.Optional<org.fresa.pocket.DadContour.Refusal> r = s.elements().get().refusal();
+            if (r.isPresent()) {
+                throw new CamInputException(s.contour().toString(), "the job's <elements>: " + r.get().message());
+            }
             return s.elements().get().profile(s.contour().toString());
         }
         return readContour(s.contour());

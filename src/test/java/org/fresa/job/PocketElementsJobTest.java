@@ -96,6 +96,30 @@ class PocketElementsJobTest {
         assertTrue(e.getMessage().contains("needs a contour file"), e.getMessage());
     }
 
+    @Test
+    void aContourThatCrossesItselfIsRefusedWithTheElementNamed() throws Exception {
+        Path file = dir.resolve("crossing.xml");
+        // a bow tie (0, 0), (40, 30), (40, 0), (0, 30)
+        Files.writeString(file, """
+                <?xml version="1.0"?>
+                <job xmlns="urn:fresa:job:1" version="1" task="pocket">
+                  <pocket toolDiameterMm="6">
+                    <elements>
+                      <line a="3" b="-4" dMm="0"/>
+                      <line a="1" b="0" dMm="40"/>
+                      <line a="3" b="4" dMm="120"/>
+                      <line a="1" b="0" dMm="0"/>
+                    </elements>
+                  </pocket>
+                </job>
+                """);
+        CamInputException e = assertThrows(CamInputException.class, () -> JobRunner.run(JobXml.read(file),
+                new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE));
+        assertTrue(e.getMessage().endsWith("the job's <elements>: Element 3 crosses element 1: the contour intersects itself."),
+                e.getMessage());
+        assertTrue(Files.notExists(dir.resolve("out").resolve("pocket.ngc")));
+    }
+
     /** Every thesis contour run from the job's elements writes what its .dad file writes, file for file. */
     @Test
     void runningTheElementsWritesWhatTheFileWrites() throws Exception {
