@@ -135,6 +135,13 @@ class PocketContourEditorTest {
         assertEquals("Element 3 crosses element 1: the contour intersects itself.", bow.refusal().orElseThrow());
         assertEquals(2, bow.refusedRow().orElseThrow());
 
+        // the left side as x + y = 100 turns the contour round: counter-clockwise, refused
+        PocketContourEditor ccw = new PocketContourEditor();
+        ccw.load(rectangleWithArc());
+        assertTrue(ccw.type(3, Column.B, "1"));
+        assertTrue(ccw.type(3, Column.D, "100"));
+        assertTrue(ccw.refusal().orElseThrow().startsWith("The contour runs counter-clockwise"), ccw.refusal().toString());
+
         PocketContourEditor one = new PocketContourEditor();
         one.add();
         assertEquals("A contour needs at least 2 elements.", one.refusal().orElseThrow());
