@@ -16,6 +16,7 @@ import org.fresa.geom.Vec2;
 import org.fresa.grading.ShrinkageMode;
 import org.fresa.grading.SizeSystem;
 import org.fresa.model.Placement;
+import org.fresa.pocket.DadContour;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.post.MillingPost;
@@ -143,11 +144,14 @@ public final class JobSettings {
      *     keeps the thesis's vertical plunge
      * @param entryAngleDeg steepest descent of a helix or ramp entry (deg)
      * @param centreCutting whether the cutter cuts at its centre (may plunge)
+     * @param elements the contour typed in the Pocket tab's editor, held in the job itself: when
+     *     present it is the contour planned, and {@code contour} only names it (the {@code .dad}
+     *     file it was opened from or is saved as); empty: the contour is read from the file
      */
     public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
             double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
             double finishFeedMmPerMin, PocketPost post, MillingDirection direction, EntryRule.Kind entry,
-            double entryAngleDeg, boolean centreCutting) {
+            double entryAngleDeg, boolean centreCutting, Optional<DadContour> elements) {
         /**
          * The pocket module's defaults, as {@code fresa pocket}, the Pocket tab of a new job and
          * {@code schemas/job.xsd} have them. The contour and the tool diameter have none (the
@@ -163,6 +167,17 @@ public final class JobSettings {
             Objects.requireNonNull(post, "post");
             Objects.requireNonNull(direction, "direction");
             Objects.requireNonNull(entry, "entry");
+            Objects.requireNonNull(elements, "elements");
+        }
+
+        /** Settings whose contour is read from its file. */
+        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
+                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
+                double finishFeedMmPerMin, PocketPost post, MillingDirection direction, EntryRule.Kind entry,
+                double entryAngleDeg, boolean centreCutting) {
+            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
+                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry, entryAngleDeg, centreCutting,
+                    Optional.empty());
         }
 
         /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
@@ -196,7 +211,23 @@ public final class JobSettings {
         public PocketSettings withEntry(EntryRule.Kind kind, double angleDeg, boolean centre) {
             return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
                     maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, kind, angleDeg,
-                    centre);
+                    centre, elements);
+        }
+
+        /**
+         * The same settings with the contour held in the job (typed in the editor); file names it.
+         */
+        public PocketSettings withElements(Path file, DadContour typed) {
+            return new PocketSettings(file, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
+                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry,
+                    entryAngleDeg, centreCutting, Optional.of(typed));
+        }
+
+        /** The same settings with the contour read from a file (no elements held in the job). */
+        public PocketSettings withContourFile(Path file) {
+            return new PocketSettings(file, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
+                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry,
+                    entryAngleDeg, centreCutting, Optional.empty());
         }
 
         /** Whether the passes are climb-milled. */
@@ -208,7 +239,7 @@ public final class JobSettings {
         public PocketSettings withDirection(MillingDirection d) {
             return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
                     maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d, entry, entryAngleDeg,
-                    centreCutting);
+                    centreCutting, elements);
         }
     }
 

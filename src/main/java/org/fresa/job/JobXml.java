@@ -238,6 +238,58 @@ public final class JobXml {
         return new org.fresa.pocket.EntryRule(kind, angle, s.isCentreCutting());
     }
 
+    /** The name a typed contour goes by when the job names no file for it. */
+    static final String TYPED_CONTOUR = "contour.dad";
+
+    /** The contour held in the job; the schema bounds every number (|value| <= 1e6 mm, radius >= 0). */
+    private static org.fresa.pocket.DadContour pocketElements(org.fresa.job.xml.PocketElementsType x) {
+        List<org.fresa.pocket.DadElement> out = new java.util.ArrayList<>();
+        for (Object o : x.getLineOrArc()) {
+            if (o instanceof org.fresa.job.xml.PocketLineType l) {
+                if (l.getA() == 0 && l.getB() == 0) {
+                    throw new BadEntry("<line> element " + (out.size() + 1) + ": a and b are both zero, which is no line",
+                            "a", "0");
+                }
+                out.add(new org.fresa.pocket.DadElement(false, l.getA(), l.getB(), l.getDMm(), selector(l.getSelector()),
+                        ' '));
+            } else {
+                org.fresa.job.xml.PocketArcType a = (org.fresa.job.xml.PocketArcType) o;
+                out.add(new org.fresa.pocket.DadElement(true, a.getXMm(), a.getYMm(), a.getRadiusMm(),
+                        selector(a.getSelector()), "concave".equals(a.getSense()) ? 'M' : 'F'));
+            }
+        }
+        return new org.fresa.pocket.DadContour(out);
+    }
+
+    private static char selector(org.fresa.job.xml.DadSelector s) {
+        return s == null ? ' ' : s.value().charAt(0);
+    }
+
+    private static org.fresa.job.xml.PocketElementsType pocketElements(org.fresa.pocket.DadContour c) {
+        org.fresa.job.xml.PocketElementsType x = new org.fresa.job.xml.PocketElementsType();
+        for (org.fresa.pocket.DadElement e : c.elements()) {
+            org.fresa.job.xml.DadSelector sel = e.selector() == ' ' ? null
+                    : org.fresa.job.xml.DadSelector.fromValue(String.valueOf(e.selector()));
+            if (e.arc()) {
+                org.fresa.job.xml.PocketArcType a = new org.fresa.job.xml.PocketArcType();
+                a.setXMm(e.a());
+                a.setYMm(e.b());
+                a.setRadiusMm(e.d());
+                a.setSelector(sel);
+                a.setSense(e.sense() == 'M' ? "concave" : "convex");
+                x.getLineOrArc().add(a);
+            } else {
+                org.fresa.job.xml.PocketLineType l = new org.fresa.job.xml.PocketLineType();
+                l.setA(e.a());
+                l.setB(e.b());
+                l.setDMm(e.d());
+                l.setSelector(sel);
+                x.getLineOrArc().add(l);
+            }
+        }
+        return x;
+    }
+
     private static Path resolve(Path base, String ref) {
         return base.resolve(ref).normalize();
     }
@@ -291,14 +343,19 @@ public final class JobXml {
         }
         PocketType p = x.getPocket();
         if (p != null) {
-            job = job.withPocket(new PocketSettings(resolve(base, p.getContour()),
+            if (p.getContour() == null && p.getElements() == null) {
+                throw new BadEntry("<pocket> needs a contour file (contour=\"...\") or its <elements>");
+            }
+            Optional<org.fresa.pocket.DadContour> elements = p.getElements() == null ? Optional.empty()
+                    : Optional.of(pocketElements(p.getElements()));
+            job = job.withPocket(new PocketSettings(resolve(base, p.getContour() == null ? TYPED_CONTOUR : p.getContour()),
                     Pocket.TOOL_DIAMETER.require(p.getToolDiameterMm()), Pocket.CUT.require(p.getCutFraction()),
                     Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
                     Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
                     Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
                     Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), Pocket.POST.require(p.getPost()),
                     Pocket.DIRECTION.require(p.getDirection()), Pocket.ENTRY.require(p.getEntry()),
-                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting()));
+                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting(), elements));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -553,6 +610,7 @@ public final class JobXml {
             t.setEntry(p.entry().word());
             t.setEntryAngleDeg(p.entryAngleDeg());
             t.setCentreCutting(p.centreCutting());
+            p.elements().ifPresent(c -> t.setElements(pocketElements(c)));
             x.setPocket(t);
         });
         job.cutting().ifPresent(c -> {

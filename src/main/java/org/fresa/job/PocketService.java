@@ -49,6 +49,30 @@ public final class PocketService {
     }
 
     /** Reads a contour file by its extension (the outer contour's elements; islands kept as contours). */
+    /**
+     * The contour of the settings: the elements the job holds (typed in the Pocket tab), else the
+     * contour file's.
+     */
+    public static PocketProfile readContour(PocketSettings s) throws CamInputException, IOException {
+        if (s.elements().isPresent()) {
+            // the editor's check, so that a job edited by hand is refused as the tab refuses it
+            java.util.Optional<org.fresa.pocket.DadContour.Refusal> r = s.elements().get().refusal();
+            if (r.isPresent()) {
+                throw new CamInputException(s.contour().toString(), "the job's <elements>: " + r.get().message());
+            }
+            return s.elements().get().profile(s.contour().toString());
+        }
+        return readContour(s.contour());
+    }
+
+    /**
+     * Whether the settings' contour may hold islands (a drawing or {@code .contour} file): a
+     * {@code .dad} file and the elements a job holds are one loop, planned by the thesis's tree.
+     */
+    public static boolean mayHaveIslands(PocketSettings s) {
+        return s.elements().isEmpty() && !s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad");
+    }
+
     public static PocketProfile readContour(Path file) throws CamInputException, IOException {
         String lower = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (lower.endsWith(".dad")) {
@@ -162,7 +186,7 @@ public final class PocketService {
     public static PocketPlan plan(PocketSettings s, boolean faithful)
             throws CamInputException, IOException, ToolTooLargeException {
         PocketTechnology tech = technology(s);
-        PocketProfile profile = readContour(s.contour());
+        PocketProfile profile = readContour(s);
         if (!profile.islands().isEmpty()) {
             throw new CamInputException(s.contour().toString(), "the thesis's recognition tree has no islands ("
                     + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
@@ -237,7 +261,7 @@ public final class PocketService {
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
-        if (!s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
+        if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
             if (contours.size() > 1) {
                 return runRegion(s, contours, outFile);

@@ -24,8 +24,41 @@ public final class DadReader {
 
     /** Parses the text of a {@code .dad} file; source names the file in messages. */
     public static PocketProfile read(String text, String source) throws CamInputException {
+        Parsed p = parse(text, source);
+        List<PocketElement> loop = new ArrayList<>();
+        for (int i = 0; i < p.loop().size(); i++) {
+            loop.add(p.loop().get(i).element(p.numbers().get(i)));
+        }
+        return profile(loop, source);
+    }
+
+    /**
+     * The records of a {@code .dad} file as they are typed in the Pocket tab's contour editor: in
+     * the order of travel from the element the closing element leads to, numbered from 1 there.
+     */
+    public static DadContour contour(String text, String source) throws CamInputException {
+        List<DadElement> loop = parse(text, source).loop();
+        if (loop.size() > DadContour.MAX_ELEMENTS) {
+            throw new CamInputException(source, "a contour has at most " + DadContour.MAX_ELEMENTS + " records");
+        }
+        return new DadContour(loop);
+    }
+
+    /** The profile of numbered elements in the order of travel: the thesis's COMPAR and the lines' k. */
+    static PocketProfile profile(List<PocketElement> loop, String source) throws CamInputException {
+        double compar = PocketProfile.comparOf(loop);
+        List<PocketElement> withK = PocketProfile.withLineDirections(loop, compar).orElseThrow(() ->
+                new CamInputException(source, "consecutive elements do not intersect"));
+        return new PocketProfile(withK, compar, List.of());
+    }
+
+    /** The records in the order of travel with their numbers in the file. */
+    private record Parsed(List<DadElement> loop, List<Integer> numbers) {
+    }
+
+    private static Parsed parse(String text, String source) throws CamInputException {
         String[] lines = text.split("\r?\n|\r", -1);
-        Map<Integer, PocketElement> byNumber = new HashMap<>();
+        Map<Integer, DadElement> byNumber = new HashMap<>();
         Map<Integer, Integer> next = new HashMap<>();
         Map<Integer, Integer> lineOf = new HashMap<>();
         List<Integer> order = new ArrayList<>();
@@ -52,7 +85,6 @@ public final class DadReader {
                 throw new CamInputException(source, lineNo, 70, "selector must be S, L or blank, found '" + sel + "'");
             }
             char sense = r.charAt(70);
-            int k;
             if (type == 'C') {
                 if (sense != 'F' && sense != 'M') {
                     throw new CamInputException(source, lineNo, 71, "arc sense must be F (convex) or M (concave), found '" + sense + "'");
@@ -60,7 +92,6 @@ public final class DadReader {
                 if (!(f3 >= 0)) {
                     throw new CamInputException(source, lineNo, 48, "radius must be >= 0");
                 }
-                k = sense == 'M' ? 1 : -1;
             } else {
                 if (sense != ' ') {
                     throw new CamInputException(source, lineNo, 71, "a line has no arc sense, found '" + sense + "'");
@@ -68,13 +99,12 @@ public final class DadReader {
                 if (f1 == 0 && f2 == 0) {
                     throw new CamInputException(source, lineNo, 4, "line coefficients A and B are both zero");
                 }
-                k = 1;
             }
             int nx = integer(r, 71, 73, source, lineNo, "next element number");
             if (byNumber.containsKey(number)) {
                 throw new CamInputException(source, lineNo, 1, "element " + number + " appears twice");
             }
-            byNumber.put(number, new PocketElement(number, type == 'C', f1, f2, f3, k, sel == 'L' ? 'L' : 'S'));
+            byNumber.put(number, new DadElement(type == 'C', f1, f2, f3, sel, sense));
             next.put(number, nx);
             lineOf.put(number, lineNo);
             order.add(number);
@@ -82,30 +112,28 @@ public final class DadReader {
         if (order.size() < 2) {
             throw new CamInputException(source, Math.max(1, lines.length), 1, "a contour needs at least 2 records");
         }
-        int first = order.size() > 1 ? order.get(1) : order.get(0);
+        int first = order.get(1);
         int closing = order.get(0);
         if (next.get(closing) != first) {
             throw new CamInputException(source, lineOf.get(closing), 72,
                     "the first record is the closing element, whose next element must be " + first);
         }
-        List<PocketElement> loop = new ArrayList<>();
+        List<DadElement> loop = new ArrayList<>();
+        List<Integer> numbers = new ArrayList<>();
         int cur = first;
         for (int i = 0; i < order.size(); i++) {
-            PocketElement e = byNumber.get(cur);
-            loop.add(e);
+            loop.add(byNumber.get(cur));
+            numbers.add(cur);
             int nx = next.get(cur);
             if (!byNumber.containsKey(nx)) {
                 throw new CamInputException(source, lineOf.get(cur), 72, "next element " + nx + " does not exist");
             }
             cur = nx;
         }
-        if (cur != first || loop.stream().map(PocketElement::number).distinct().count() != order.size()) {
+        if (cur != first || numbers.stream().distinct().count() != order.size()) {
             throw new CamInputException(source, lineOf.get(closing), 72, "the next-element numbers do not form one closed contour");
         }
-        double compar = PocketProfile.comparOf(loop);
-        List<PocketElement> withK = PocketProfile.withLineDirections(loop, compar).orElseThrow(() ->
-                new CamInputException(source, "consecutive elements do not intersect"));
-        return new PocketProfile(withK, compar, List.of());
+        return new Parsed(loop, numbers);
     }
 
     private static int integer(String r, int from, int to, String source, int line, String what) throws CamInputException {

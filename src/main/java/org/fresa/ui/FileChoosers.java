@@ -17,6 +17,7 @@ final class FileChoosers {
         JOB("Fresa jobs (*.xml)", "xml"),
         STEPNC("STEP-NC Part 21 (*.stp, *.step, *.p21)", "stp", "step", "p21"),
         POCKET_CONTOUR("Pocket contours (*.dad, *.contour)", "dad", "contour"),
+        DAD("Thesis pocket contours (*.dad)", "dad"),
         OUTLINE("Fresa contour (*.contour)", "contour"),
         DXF("DXF drawings (*.dxf)", "dxf"),
         ROBOT("Robot files (*.xml)", "xml"),

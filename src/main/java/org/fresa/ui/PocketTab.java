@@ -57,6 +57,9 @@ final class PocketTab implements ModuleTab {
     private final JTabbedPane texts = new JTabbedPane();
     private boolean filling;
     private final TypingPause typing = new TypingPause(this::commit);
+    private final PocketContourEditor editor = new PocketContourEditor();
+    private final ContourEditorPanel editorPanel = new ContourEditorPanel(editor, this::contourEdited,
+            () -> plot.show(editor.scene()), this::saveContour);
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
@@ -65,7 +68,10 @@ final class PocketTab implements ModuleTab {
         cl.setLabelFor(contour);
         cl.setDisplayedMnemonic('o');
         contour.setName(PocketViewModel.CONTOUR);
-        TextChanges.onChange(contour, () -> typed(contour.getName()));
+        TextChanges.onChange(contour, () -> {
+            contourFileChanged();
+            typed(contour.getName());
+        });
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
         file.add(contour, BorderLayout.CENTER);
@@ -135,6 +141,7 @@ final class PocketTab implements ModuleTab {
         report.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, 12));
         nc.setFont(report.getFont());
         texts.setName("pocket-texts");
+        texts.addTab("Contour elements", editorPanel.component());
         texts.addTab("Recognition tree", new JScrollPane(report));
         texts.addTab("NC program", new JScrollPane(nc));
         JPanel left = new JPanel(new BorderLayout());
@@ -176,8 +183,91 @@ final class PocketTab implements ModuleTab {
         }
         report.setText("");
         nc.setText("");
-        plot.show(PlotScene.empty(shown.isPresent() ? "Press Compute" : "Choose a contour"));
+        editor.load(model.editorContour());
+        editorPanel.rowsChanged();
+        plot.show(editor.rows() > 0 ? editor.scene()
+                : PlotScene.empty(shown.isPresent() ? "Press Compute" : "Choose a contour or type its elements"));
         fieldsChanged();
+    }
+
+    /**
+     * Another contour file named: the editor opens on its records, and the job reads the file
+     * again instead of the elements typed before.
+     */
+    private void contourFileChanged() {
+        if (filling) {
+            return;
+        }
+        model.setContourText(contour.getText());
+        try {
+            if (!java.nio.file.Files.isRegularFile(Path.of(contour.getText().trim()))) {
+                return;
+            }
+        } catch (java.nio.file.InvalidPathException e) {
+            return;
+        }
+        model.setElements(Optional.empty());
+        editor.load(model.editorContour());
+        editorPanel.rowsChanged();
+        plot.show(editor.scene());
+    }
+
+    /**
+     * The typed contour changed: the plot shows it as typed and, when it closes without crossing
+     * itself and every cell holds a value, the job holds it (each edit one undo step).
+     */
+    private void contourEdited() {
+        plot.show(editor.scene());
+        if (!editor.valid()) {
+            return;
+        }
+        typing.flush();
+        model.setElements(Optional.of(editor.contour()));
+        commit(null);
+    }
+
+    private void saveContour() {
+        Optional<String> problem = editor.refusal();
+        if (problem.isPresent()) {
+            say("The contour is not saved: " + problem.get(), true);
+            return;
+        }
+        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.DAD);
+        fc.setDialogTitle("Save contour as .dad");
+        if (fc.showSaveDialog(panel) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path f = FileChoosers.chosen(fc);
+        saveContourTo(f.getFileName().toString().contains(".") ? f : f.resolveSibling(f.getFileName() + ".dad"));
+    }
+
+    /**
+     * Writes the typed contour as the 1988 program's records (a temporary name, then renamed); the
+     * job keeps holding the elements, now under the file's name.
+     */
+    void saveContourTo(Path file) {
+        Optional<String> problem = editor.refusal();
+        if (problem.isPresent()) {
+            say("The contour is not saved: " + problem.get(), true);
+            return;
+        }
+        try {
+            org.fresa.job.AtomicFiles.writeString(file, editor.contour().toDad());
+        } catch (java.io.IOException e) {
+            say("Cannot save " + file + ": " + e.getMessage(), true);
+            return;
+        }
+        filling = true;
+        try {
+            contour.setText(file.toString());
+        } finally {
+            filling = false;
+        }
+        typing.flush();
+        model.setElements(Optional.of(editor.contour()));
+        fieldsChanged();
+        commit(null);
+        say("Saved " + file, false);
     }
 
     private void chooseContour() {
@@ -223,7 +313,7 @@ final class PocketTab implements ModuleTab {
             return;
         }
         PocketSettings s = typed.get();
-        if (!java.nio.file.Files.isRegularFile(s.contour())) {
+        if (s.elements().isEmpty() && !java.nio.file.Files.isRegularFile(s.contour())) {
             Optional<PocketSettings> job = ctx.model().job().pocket();
             if (job.isEmpty()) {
                 return;
@@ -368,7 +458,7 @@ final class PocketTab implements ModuleTab {
             if (r.get().refusal().isPresent()) {
                 org.fresa.check.Failure f = r.get().refusal().get();
                 // the program's text, with the failing block marked, in front
-                texts.setSelectedIndex(1);
+                texts.setSelectedIndex(texts.indexOfTab("NC program"));
                 ProgramHighlight.line(nc, f.line());
                 say("The program is refused and not written: " + f.message(), true);
                 ctx.tasks().failed("Pocket program check (" + f.rule().name() + ")");

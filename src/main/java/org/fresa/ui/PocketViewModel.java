@@ -89,6 +89,8 @@ public final class PocketViewModel {
     private String entry = PocketSettings.DEFAULTS.entry().word();
     private String entryAngle = ExactDecimal.of(PocketSettings.DEFAULTS.entryAngleDeg());
     private boolean centreCutting = PocketSettings.DEFAULTS.centreCutting();
+    // the contour typed in the editor, held in the job; empty: the contour file is read
+    private Optional<org.fresa.pocket.DadContour> elements = Optional.empty();
 
     public PocketViewModel() {
         showTechnology(PocketSettings.DEFAULTS);
@@ -112,6 +114,7 @@ public final class PocketViewModel {
         PocketSettings p = job.pocket().get();
         settings = p;
         contourText = p.contour().toString();
+        elements = p.elements();
         showTechnology(p);
         post = p.post();
         direction = p.direction();
@@ -126,6 +129,45 @@ public final class PocketViewModel {
 
     public void setContourText(String t) {
         contourText = t.trim();
+    }
+
+    /** The contour typed in the editor, which the job holds; empty when the contour file is read. */
+    public Optional<org.fresa.pocket.DadContour> elements() {
+        return elements;
+    }
+
+    /** Holds the typed contour in the job (present) or reads the contour file again (empty). */
+    public void setElements(Optional<org.fresa.pocket.DadContour> typed) {
+        elements = java.util.Objects.requireNonNull(typed, "elements");
+    }
+
+    /**
+     * The contour the editor opens on: the typed one the job holds, else the {@code .dad} file's
+     * records; none for another kind of file (the editor writes the thesis's records only) or a
+     * file that cannot be read.
+     */
+    public org.fresa.pocket.DadContour editorContour() {
+        if (elements.isPresent()) {
+            return elements.get();
+        }
+        if (contourText.toLowerCase(Locale.ROOT).endsWith(".dad")) {
+            try {
+                Path file = Path.of(contourText);
+                return org.fresa.pocket.DadReader.contour(
+                        java.nio.file.Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1), file.toString());
+            } catch (IOException | CamInputException | java.nio.file.InvalidPathException e) {
+                // the planner's message for the file comes with Compute
+            }
+        }
+        return new org.fresa.pocket.DadContour(List.of());
+    }
+
+    /**
+     * The name of the typed contour: the contour file named (it came from or is saved as it), else
+     * the one a job gives a typed contour with no file ({@code contour.dad}).
+     */
+    Path typedContourName() {
+        return Path.of(contourText.isEmpty() ? "contour.dad" : contourText).toAbsolutePath();
     }
 
     public String value(int i) {
@@ -185,8 +227,8 @@ public final class PocketViewModel {
      */
     public Map<String, String> problems() {
         Map<String, String> out = new LinkedHashMap<>();
-        if (contourText.isEmpty()) {
-            out.put(CONTOUR, "Choose the contour to pocket (.dad or .contour file).");
+        if (contourText.isEmpty() && elements.isEmpty()) {
+            out.put(CONTOUR, "Choose the contour to pocket (.dad or .contour file) or type its elements.");
         }
         for (int i = 0; i < values.length; i++) {
             String label = LABELS.get(i);
@@ -222,9 +264,10 @@ public final class PocketViewModel {
         for (int i = 0; i < v.length; i++) {
             v[i] = Double.parseDouble(values[i]);
         }
-        return Optional.of(new PocketSettings(Path.of(contourText).toAbsolutePath(), v[0], v[1], v[2], v[3], v[4],
+        PocketSettings s = new PocketSettings(typedContourName(), v[0], v[1], v[2], v[3], v[4],
                 v[5], v[6], v[7], v[8], post, direction).withEntry(org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry), Double.parseDouble(entryAngle),
-                centreCutting));
+                centreCutting);
+        return Optional.of(elements.isPresent() ? s.withElements(s.contour(), elements.get()) : s);
     }
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
@@ -282,7 +325,7 @@ public final class PocketViewModel {
                 ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true) : checked;
         try {
             String name = settings.contour().getFileName().toString();
-            if (!name.toLowerCase(Locale.ROOT).endsWith(".dad")) {
+            if (PocketService.mayHaveIslands(settings)) {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
@@ -444,6 +487,6 @@ public final class PocketViewModel {
     static PocketSettings withContour(PocketSettings s, Path contour) {
         return new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
                 s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin(),
-                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting());
+                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting(), s.elements());
     }
 }
