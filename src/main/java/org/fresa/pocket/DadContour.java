@@ -80,7 +80,7 @@ public record DadContour(List<DadElement> elements) {
                 }
             }
         }
-        List<Curve2> drawn = curves.stream().filter(java.util.Objects::nonNull).map(c -> (Curve2) c).toList();
+        List<Curve2> drawn = curves.stream().filter(java.util.Objects::nonNull).toList();
         if (drawn.isEmpty() || new org.fresa.geom.Contour(drawn).signedArea() >= 0) {
             return Optional.of(new Refusal(0, "The contour runs counter-clockwise (or encloses nothing): the"
                     + " thesis's contours run clockwise, the pocket on the right of each element; check the S/L"
