@@ -83,6 +83,100 @@ public final class ProgramCheck {
         return new Verdict(Optional.empty(), count + lines(program, start));
     }
 
+    /**
+     * Checks an NC program read from a stream, block by block as {@link #of(String, NcDialect, Limits)}
+     * does, with the same verdict: a written program file is checked without being held whole.
+     * Lines end at LF, CR or CR LF; the text after the last line end is a block of its own.
+     */
+    public static Verdict of(java.io.Reader program, NcDialect dialect, Limits limits) throws java.io.IOException {
+        if (dialect == NcDialect.APT) {
+            StringBuilder all = new StringBuilder();
+            char[] buf = new char[1 << 14];
+            for (int r; (r = program.read(buf)) > 0; ) {
+                all.append(buf, 0, r);
+            }
+            return AptStatements.check(all.toString(), limits);
+        }
+        Machine m = new Machine(dialect, limits);
+        Lines lines = new Lines(program);
+        int count = 0;
+        for (String text; (text = lines.next()) != null; ) {
+            Words.Block b = Words.block(++count, text);
+            m.readAxis(b.text());
+            Step step = m.execute(b);
+            for (Rule r : RULES) {
+                String why = r.broken(step, limits);
+                if (why != null) {
+                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)),
+                            count + lines.skipAll());
+                }
+            }
+            if (b.problem().isPresent()) {
+                break;
+            }
+        }
+        return new Verdict(Optional.empty(), count + lines.skipAll());
+    }
+
+    /** The lines of a stream, split as the text version splits them, read a buffer at a time. */
+    private static final class Lines {
+        private final java.io.Reader in;
+        private final char[] buf = new char[1 << 16];
+        private final StringBuilder line = new StringBuilder(128);
+        private int pos;
+        private int len;
+        private boolean done;
+
+        Lines(java.io.Reader in) {
+            this.in = in;
+        }
+
+        private boolean fill() throws java.io.IOException {
+            int r;
+            do {
+                r = in.read(buf, 0, buf.length);
+            } while (r == 0);
+            pos = 0;
+            len = Math.max(r, 0);
+            return r > 0;
+        }
+
+        /** The next line without its end, or null after the last one. */
+        String next() throws java.io.IOException {
+            if (done) {
+                return null;
+            }
+            line.setLength(0);
+            while (true) {
+                if (pos == len && !fill()) {
+                    done = true;
+                    return line.toString();
+                }
+                int start = pos;
+                while (pos < len && buf[pos] != '\n' && buf[pos] != '\r') {
+                    pos++;
+                }
+                line.append(buf, start, pos - start);
+                if (pos < len) {
+                    char c = buf[pos++];
+                    if (c == '\r' && (pos < len || fill()) && buf[pos] == '\n') {
+                        pos++;
+                    }
+                    return line.toString();
+                }
+            }
+        }
+
+        /** Reads the rest, returning how many lines it held. */
+        int skipAll() throws java.io.IOException {
+            int n = 0;
+            while (next() != null) {
+                n++;
+            }
+            return n;
+        }
+    }
+
     /** The lines from offset start to the end of the text (as Words.blocks counts them). */
     private static int lines(String program, int start) {
         int n = 0;

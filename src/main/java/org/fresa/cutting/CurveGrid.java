@@ -1,6 +1,5 @@
 package org.fresa.cutting;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -8,11 +7,15 @@ import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Vec2;
 
-/** Curves in a uniform grid of their boxes, for "is anything closer than d to p" questions. */
+/**
+ * Curves in a uniform grid of their boxes, for "is anything closer than d to p" questions. Each
+ * cell holds its curves' indices in an int array (slot 0 the count): a sheet of 180 000 parts
+ * files some two million of them, which as boxed lists would cost more than the curves.
+ */
 final class CurveGrid {
     private final List<Curve2> curves;
     private final double cell;
-    private final Map<Long, List<Integer>> cells = new HashMap<>();
+    private final Map<Long, int[]> cells = new HashMap<>();
     private final int[] stamp;
     private int query;
 
@@ -28,15 +31,27 @@ final class CurveGrid {
             long y1 = (long) Math.floor(b.maxY() / cell);
             if ((x1 - x0 + 1) * (y1 - y0 + 1) > 4096) {
                 // a huge curve: file it under a coarse key checked by every query
-                cells.computeIfAbsent(Long.MIN_VALUE, k -> new ArrayList<>()).add(i);
+                file(Long.MIN_VALUE, i);
                 continue;
             }
             for (long x = x0; x <= x1; x++) {
                 for (long y = y0; y <= y1; y++) {
-                    cells.computeIfAbsent(Chainer.pack(x, y), k -> new ArrayList<>()).add(i);
+                    file(Chainer.pack(x, y), i);
                 }
             }
         }
+    }
+
+    private void file(long key, int i) {
+        int[] l = cells.get(key);
+        if (l == null) {
+            l = new int[4];
+            cells.put(key, l);
+        } else if (l[0] + 1 == l.length) {
+            l = java.util.Arrays.copyOf(l, l.length * 2);
+            cells.put(key, l);
+        }
+        l[++l[0]] = i;
     }
 
     /** The distance from p to the nearest curve, if it is below limit; otherwise limit. */
@@ -47,7 +62,7 @@ final class CurveGrid {
         long x1 = (long) Math.floor((p.x() + limit) / cell);
         long y0 = (long) Math.floor((p.y() - limit) / cell);
         long y1 = (long) Math.floor((p.y() + limit) / cell);
-        List<Integer> big = cells.get(Long.MIN_VALUE);
+        int[] big = cells.get(Long.MIN_VALUE);
         if (big != null) {
             best = scan(big, p, best);
         }
@@ -59,7 +74,7 @@ final class CurveGrid {
         }
         for (long x = x0; x <= x1; x++) {
             for (long y = y0; y <= y1; y++) {
-                List<Integer> l = cells.get(Chainer.pack(x, y));
+                int[] l = cells.get(Chainer.pack(x, y));
                 if (l != null) {
                     best = scan(l, p, best);
                 }
@@ -68,8 +83,9 @@ final class CurveGrid {
         return best;
     }
 
-    private double scan(List<Integer> l, Vec2 p, double best) {
-        for (int i : l) {
+    private double scan(int[] l, Vec2 p, double best) {
+        for (int k = 1; k <= l[0]; k++) {
+            int i = l[k];
             if (stamp[i] == query) {
                 continue;
             }

@@ -13,10 +13,6 @@ import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
-import org.fresa.geom.Vec3;
-import org.fresa.model.Move;
-import org.fresa.model.Toolpath;
-import org.fresa.model.ToolpathSection;
 import org.fresa.pocket.LineArcOffsetter;
 
 /**
@@ -252,9 +248,8 @@ public final class CutPlanner {
         }
         progress.at(0.75, "routing the rapids around cut parts");
         List<List<Vec2>> rapids = rapids(order, o, warnings);
-        progress.at(0.95, "making the toolpath");
-        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, toolpath(order, rapids, o),
-                rapids, notCut);
+        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, rapids, notCut,
+                o.feedMmPerMin(), o.kerfMm());
     }
 
     /** The distance from end i to the nearest other end of an open chain (its own other end included). */
@@ -1128,35 +1123,5 @@ public final class CutPlanner {
             warnings.add(router.unavoidable() + " rapid moves pass over a part already cut (no way around it)");
         }
         return out;
-    }
-
-    // ------------------------------------------------------------------ toolpath
-
-    private static Toolpath toolpath(List<CutPath> cuts, List<List<Vec2>> rapids, CuttingOptions o) {
-        List<ToolpathSection> sections = new ArrayList<>();
-        Vec3 at = Vec3.ZERO;
-        double feed = o.feedMmPerMin();
-        for (int i = 0; i < cuts.size(); i++) {
-            CutPath c = cuts.get(i);
-            List<Move> moves = new ArrayList<>();
-            List<Vec2> rapid = rapids.get(i);
-            for (int k = 1; k < rapid.size(); k++) {
-                moves.add(new Move.Rapid(Vec3.of(rapid.get(k), 0)));
-            }
-            for (Curve2 cv : c.curves()) {
-                if (cv instanceof Segment2 s) {
-                    if (s.length() > 0) {
-                        moves.add(new Move.Linear(Vec3.of(s.end(), 0), feed));
-                    }
-                } else {
-                    Arc2 a = (Arc2) cv;
-                    moves.add(new Move.Circular(Vec3.of(a.end(), 0), Vec3.of(a.center(), 0), Vec3.UNIT_Z, a.ccw(), 0, feed));
-                }
-            }
-            sections.add(new ToolpathSection(c.label(),
-                    Vec3.UNIT_Z, Math.max(o.kerfMm(), 1e-3), 1, 0, at, moves));
-            at = moves.get(moves.size() - 1).end();
-        }
-        return new Toolpath(sections);
     }
 }

@@ -32,17 +32,12 @@ final class RapidRouter {
     private static final int MAX_ROUNDS = 12;
 
     /**
-     * A convex obstacle: the counter-clockwise hull of the cut path as x, y pairs (compact: a sheet
-     * may hold a hundred thousand parts), and the box of the hull grown by the clearance.
+     * A convex obstacle: the cut path whose counter-clockwise hull it is, and the box of the hull
+     * grown by the clearance. The hull is not kept but made again from the path when a rapid comes
+     * near the part (the plan holds the path anyway): a sheet of 180 000 parts would hold a hundred
+     * megabytes of hull points, when the rapids only ever meet a few thousand parts at a time.
      */
-    private record Obstacle(double[] hull, Box2 box) {
-        Vec2[] raw() {
-            Vec2[] v = new Vec2[hull.length / 2];
-            for (int k = 0; k < v.length; k++) {
-                v[k] = new Vec2(hull[2 * k], hull[2 * k + 1]);
-            }
-            return v;
-        }
+    private record Obstacle(Contour path, Box2 box) {
     }
 
     /** The raw and grown hulls of the obstacles used lately: rapids meet the same parts again and again. */
@@ -79,6 +74,19 @@ final class RapidRouter {
 
     /** Marks a part as cut free: its path becomes an obstacle for the following rapids. */
     void cutFree(Contour path) {
+        Vec2[] raw = rawHull(path);
+        if (raw.length < 3) {
+            return;
+        }
+        Vec2[] grown = clearanceMm > 0 ? hull(grownPoints(raw)) : raw;
+        Obstacle o = new Obstacle(path, box(grown));
+        obstacles.add(o);
+        grid.add(obstacles.size() - 1, o.box);
+        recent.put(obstacles.size() - 1, new Vec2[][] {raw, grown});
+    }
+
+    /** The counter-clockwise hull of a path, its arcs by circumscribed polygons of 10 degree steps. */
+    private static Vec2[] rawHull(Contour path) {
         List<Vec2> pts = new ArrayList<>();
         for (Curve2 c : path.curves()) {
             pts.add(c.start());
@@ -93,20 +101,7 @@ final class RapidRouter {
             }
             pts.add(c.end());
         }
-        Vec2[] raw = hull(pts);
-        if (raw.length < 3) {
-            return;
-        }
-        Vec2[] grown = clearanceMm > 0 ? hull(grownPoints(raw)) : raw;
-        double[] xy = new double[2 * raw.length];
-        for (int k = 0; k < raw.length; k++) {
-            xy[2 * k] = raw[k].x();
-            xy[2 * k + 1] = raw[k].y();
-        }
-        Obstacle o = new Obstacle(xy, box(grown));
-        obstacles.add(o);
-        grid.add(obstacles.size() - 1, o.box);
-        recent.put(obstacles.size() - 1, new Vec2[][] {raw, grown});
+        return hull(pts);
     }
 
     /** Each hull vertex moved by the clearance in eight directions: their hull holds the grown part. */
@@ -132,7 +127,7 @@ final class RapidRouter {
     private Vec2[][] hulls(int i) {
         Vec2[][] h = recent.get(i);
         if (h == null) {
-            Vec2[] raw = obstacles.get(i).raw();
+            Vec2[] raw = rawHull(obstacles.get(i).path());
             h = new Vec2[][] {raw, clearanceMm > 0 ? hull(grownPoints(raw)) : raw};
             recent.put(i, h);
         }

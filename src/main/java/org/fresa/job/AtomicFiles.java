@@ -62,6 +62,12 @@ public final class AtomicFiles {
         void writeTo(OutputStream out) throws IOException;
     }
 
+    /** Looks at a file written in full before it is renamed into place; throwing keeps it from being renamed. */
+    @FunctionalInterface
+    public interface Inspection<E extends Exception> {
+        void inspect(Path written) throws IOException, E;
+    }
+
     /**
      * Checks that a file may be written there: nothing is there yet, or a regular file that the
      * write replaces. A directory, a named pipe, a device or a socket is refused: the rename would
@@ -84,6 +90,15 @@ public final class AtomicFiles {
      * @throws IOException also when the target exists and is not a regular file (it is left as it is)
      */
     public static void write(Path target, Body body) throws IOException {
+        write(target, body, written -> { });
+    }
+
+    /**
+     * Writes the target atomically as {@link #write(Path, Body)}, inspecting the written temporary
+     * file before the rename: when the inspection throws, the temporary file is removed and the
+     * target left as it was.
+     */
+    public static <E extends Exception> void write(Path target, Body body, Inspection<E> before) throws IOException, E {
         Path abs = target.toAbsolutePath();
         if (Files.exists(abs) && !Files.isRegularFile(abs)) {
             throw new IOException(abs + " is " + FileChecks.kind(abs) + ", not a regular file: not replaced");
@@ -106,6 +121,7 @@ public final class AtomicFiles {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16)) {
                 body.writeTo(out);
             }
+            before.inspect(tmp);
             // temporary files are created private (0600); the result is an ordinary file (0644)
             if (Files.getFileStore(tmp).supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class)) {
                 Files.setPosixFilePermissions(tmp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));

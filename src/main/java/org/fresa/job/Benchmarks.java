@@ -299,13 +299,17 @@ public final class Benchmarks {
         JobSettings.CuttingSettings s = new JobSettings.CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1,
                 org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
                 org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
-        CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
+        // as fresa cut does it: the program posted to a file and checked there, never held as text
+        Path ngc = dxf.resolveSibling(dxf.getFileName() + ".ngc");
         try {
-            CuttingService.check(r, "squares.ngc");
-        } catch (ProgramChecks.RefusedProgram e) {
-            throw new IllegalStateException("the program of the square sheet was refused: " + e.getMessage(), e);
+            TaskOutcome o = CuttingService.run(s, ngc, false, ProgressMonitor.NONE);
+            if (o.summary().containsKey("program_refused")) {
+                throw new IllegalStateException("the program of the square sheet was refused: " + o.problems());
+            }
+            return ((Number) o.summary().get("outer")).intValue();
+        } finally {
+            Files.deleteIfExists(ngc);
         }
-        return r.plan().outers().size();
     }
 
     /** Recognition, passes and the 7M post of cavity 02 with the thesis's technology, in ms. */

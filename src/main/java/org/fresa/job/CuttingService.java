@@ -36,9 +36,36 @@ public final class CuttingService {
     private CuttingService() {
     }
 
-    /** The drawing, the plan and the program text of one run. */
-    public record Result(DxfDrawing drawing, CutPlan plan, String program, CuttingOptions options,
-            CuttingPost dialect) {
+    /**
+     * The drawing and the plan of one run, and what its program is written with. The program text
+     * is not held: {@link #writeProgram} posts it block by block (to the file, for a big sheet);
+     * {@link #program()} makes it whole, for the GUI's view of it and for tests.
+     *
+     * @param programName the drawing's file name, in the program's first comment
+     */
+    public record Result(DxfDrawing drawing, CutPlan plan, CuttingOptions options, CuttingPost dialect,
+            String programName) {
+
+        /** Posts the program to {@code out}, a cut at a time. */
+        public void writeProgram(Writer out) throws IOException {
+            List<Integer> comp = new ArrayList<>(plan.cuts().size());
+            for (CutPath c : plan.cuts()) {
+                comp.add(c.compensation());
+            }
+            SheetCuttingPost.write(plan.sections(), programName, new SheetCuttingPost.Job(options.process().id(),
+                    options.pierceDwellS(), comp, options.kerfMm()), dialect, out);
+        }
+
+        /** The whole program text. */
+        public String program() {
+            StringBuilderWriter w = new StringBuilderWriter();
+            try {
+                writeProgram(w);
+            } catch (IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+            return w.toString();
+        }
     }
 
     /** Checks the settings and converts them to planner options (the gap tolerance still in drawing units). */
@@ -91,28 +118,20 @@ public final class CuttingService {
             throw new CamInputException("cutOrder", e.getMessage());
         }
         progress.checkCancelled();
-        StringBuilderWriter w = new StringBuilderWriter();
-        List<Integer> comp = new ArrayList<>();
-        for (CutPath c : plan.cuts()) {
-            comp.add(c.compensation());
-        }
-        String name = s.drawing().getFileName().toString();
-        SheetCuttingPost.write(plan.toolpath(), name, new SheetCuttingPost.Job(o.process().id(), o.pierceDwellS(), comp,
-                o.kerfMm()), dialect, w);
-        progress.progress(0.9, "writing");
-        return new Result(d, plan, w.toString(), o, dialect);
+        return new Result(d, plan, o, dialect, s.drawing().getFileName().toString());
     }
 
     /** Runs the task and writes the program to the given file (atomically). */
     public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
             ProgressMonitor progress) throws CamInputException, IOException {
         Result r = compute(s, toleranceInDrawingUnits, progress);
+        progress.progress(0.9, "writing and checking the program");
+        String file = outFile.getFileName().toString();
         try {
-            check(r, outFile.getFileName().toString());
+            AtomicFiles.write(outFile, out -> write(r, out), written -> check(r, file, written));
         } catch (ProgramChecks.RefusedProgram e) {
             return refused(outcome(r, List.of()), e);
         }
-        AtomicFiles.writeString(outFile, r.program());
         return outcome(r, List.of(outFile.toAbsolutePath()));
     }
 
@@ -122,13 +141,14 @@ public final class CuttingService {
         Result r = compute(s, progress);
         out.create();
         String file = r.dialect() == CuttingPost.SIEMENS_840D ? "program.mpf" : "program.ngc";
+        progress.progress(0.9, "writing and checking the program");
+        Path p;
         try {
-            check(r, file);
+            p = out.write(file, o -> write(r, o), written -> check(r, file, written));
         } catch (ProgramChecks.RefusedProgram e) {
             Path j = out.writeString("summary.json", Json.write(summary(r)));
             return refused(outcome(r, List.of(j)), e);
         }
-        Path p = out.writeString(file, r.program());
         Path j = out.writeString("summary.json", Json.write(summary(r)));
         return outcome(r, List.of(p, j));
     }
@@ -139,6 +159,21 @@ public final class CuttingService {
      */
     public static void check(Result r, String file) throws ProgramChecks.RefusedProgram {
         ProgramChecks.require(file, r.program(), ProgramChecks.dialect(r.dialect().id()), limits(r));
+    }
+
+    /**
+     * Checks the written program file block by block, before it is renamed into place: the
+     * program of a big sheet is never held as text.
+     */
+    static void check(Result r, String file, Path written) throws ProgramChecks.RefusedProgram, IOException {
+        ProgramChecks.require(file, written, ProgramChecks.dialect(r.dialect().id()), limits(r));
+    }
+
+    /** Posts the program as UTF-8 (the post writes ASCII), a buffer at a time. */
+    private static void write(Result r, java.io.OutputStream out) throws IOException {
+        Writer w = new java.io.OutputStreamWriter(out, java.nio.charset.StandardCharsets.UTF_8);
+        r.writeProgram(w);
+        w.flush();
     }
 
     /** The limits of a sheet-cutting program: the process's on and off words instead of a spindle. */

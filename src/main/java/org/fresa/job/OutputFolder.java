@@ -158,6 +158,19 @@ public final class OutputFolder {
         }
     }
 
+    /**
+     * Writes one file in the folder atomically, inspected before it is renamed into place
+     * ({@link AtomicFiles#write(Path, AtomicFiles.Body, AtomicFiles.Inspection)}). Written at once,
+     * also between {@link #beginParallel} and {@link #finishParallel}: the inspection reads the file.
+     */
+    public synchronized <E extends Exception> Path write(String fileName, AtomicFiles.Body body,
+            AtomicFiles.Inspection<E> before) throws IOException, E {
+        Path target = resolve(fileName);
+        AtomicFiles.write(target, body, before);
+        written.add(target);
+        return target;
+    }
+
     public Path writeString(String fileName, String text) throws IOException {
         return write(fileName, out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
     }

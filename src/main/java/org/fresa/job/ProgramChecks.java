@@ -62,6 +62,21 @@ public final class ProgramChecks {
     }
 
     /**
+     * Checks a program file as written, block by block: the refusal names {@code file}, the name
+     * the program would have had (the written file is a temporary one, renamed only if it passes).
+     */
+    public static void require(String file, java.nio.file.Path written, NcDialect dialect, Limits limits)
+            throws RefusedProgram, java.io.IOException {
+        Optional<Failure> f;
+        try (java.io.Reader in = java.nio.file.Files.newBufferedReader(written, java.nio.charset.StandardCharsets.UTF_8)) {
+            f = ProgramCheck.of(in, dialect, limits).failure();
+        }
+        if (f.isPresent()) {
+            throw new RefusedProgram(file, f.get());
+        }
+    }
+
+    /**
      * The pocket module's limits. The stock below the pocket's top, the floor its bottom with no
      * breakthrough. The cutter as the settings say: the entry angle asked for, straight down only
      * for a centre-cutting cutter asked to plunge (or left to plunge where a helix and a ramp have

@@ -48,10 +48,19 @@ public final class SheetCuttingPost {
 
     /** Writes the whole program. */
     public static void write(Toolpath path, String programName, Job job, CuttingPost post, Writer out) throws IOException {
-        new SheetCuttingPost(post.dialect()).run(path, programName, job, out);
+        write(path.sections(), programName, job, post, out);
     }
 
-    private void run(Toolpath path, String programName, Job job, Writer out) throws IOException {
+    /**
+     * Writes the whole program block by block as the sections come: a section is needed only while
+     * its blocks are written, so a sheet of any size is posted without its toolpath held whole.
+     */
+    public static void write(Iterable<ToolpathSection> sections, String programName, Job job, CuttingPost post,
+            Writer out) throws IOException {
+        new SheetCuttingPost(post.dialect()).run(sections, programName, job, out);
+    }
+
+    private void run(Iterable<ToolpathSection> sections, String programName, Job job, Writer out) throws IOException {
         String[] jet = jetCodes(job.process());
         String name = programName.replaceAll("[^A-Za-z0-9 ._-]", "_");
         boolean anyComp = job.compensation().stream().anyMatch(c -> c != 0);
@@ -75,8 +84,9 @@ public final class SheetCuttingPost {
         }
         Vec3 at = Vec3.ZERO;
         double feed = -1;
-        for (int s = 0; s < path.sections().size(); s++) {
-            ToolpathSection sec = path.sections().get(s);
+        int s = -1;
+        for (ToolpathSection sec : sections) {
+            s++;
             int comp = s < job.compensation().size() ? job.compensation().get(s) : 0;
             comment(out, sec.label());
             boolean on = false;

@@ -15,9 +15,11 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A generated sheet of square parts ({@link SquareSheet}) is cut whole within a 512 MB heap:
  * read, chained, nested, offset, ordered, routed around the cut parts, posted and checked, every
- * part cut. The sheet is a quarter of the 50 MB drawing (45 000 parts, 13 MB): the whole one still
- * needs about 1 GB, since the plan, its toolpath and the program text are held whole at once
- * (see docs/cutting.md). Runs in the {@code low-memory} surefire execution ({@code -Xmx512m});
+ * part cut. The program is posted a cut at a time to the file and checked there, never held as
+ * text. The sheet is a quarter of the 50 MB drawing (45 000 parts, 13 MB): the whole one is cut in
+ * 512 MB too ({@code java -Xmx512m -jar fresa.jar cut}, docs/cutting.md), but with three times the
+ * CPU seconds a test may take, most of them the collector's near the heap's limit. Runs in the
+ * {@code low-memory} surefire execution ({@code -Xmx512m});
  * skipped in a larger heap, where it would prove nothing. The time is printed, not asserted: the
  * 60 s goal is the benchmark's ({@code cut_parts_per_s}).
  */
