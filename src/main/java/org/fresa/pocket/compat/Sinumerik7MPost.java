@@ -106,6 +106,7 @@ public final class Sinumerik7MPost {
         add(blocks, "G43 Z 5000 S" + str((long) Math.rint(t.spindleRpm())) + " M03");
         int passes = mode == Mode.COMPAT ? thesisDepthPasses(t) : t.depthPasses();
         long zp = mode == Mode.COMPAT ? thesisDepthStepUm(t) : um(t.depthStepMm());
+        Levels lv = new Levels(zp, passes, um(t.zTopMm()) - um(t.zBottomMm()));
         long feed = (long) Math.rint(t.feedMmPerMin());
         List<PocketPass> milled = milled(plan);
         if (milled.isEmpty()) {
@@ -117,10 +118,10 @@ public final class Sinumerik7MPost {
         if (mode == Mode.COMPAT) {
             add(blocks, "G01 G91 Z" + str(-(zp + 5000)) + "F" + str(feed));
         } else {
-            enter(blocks, milled.get(0), 1, zp, feed, t);
+            enter(blocks, milled.get(0), 1, lv, feed, t);
         }
         int firstCut = blocks.size();
-        emitContours(blocks, plan, 1, zp, feed);
+        emitContours(blocks, plan, 1, lv, feed);
         int lastCut = blocks.size();
         for (int j = 2; j <= passes; j++) {
             if (mode == Mode.COMPAT) {
@@ -132,14 +133,26 @@ public final class Sinumerik7MPost {
                     blocks.add(new Block(blocks.get(b).text(), b));
                 }
             } else {
-                add(blocks, "G00 G91 Z" + str((j - 1) * zp + 20000));
+                add(blocks, "G00 G91 Z" + str(lv.belowTopUm(j - 1) + 20000));
                 add(blocks, "G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
                 add(blocks, "G91 Z -15000");
-                enter(blocks, milled.get(0), j, zp, feed, t);
-                emitContours(blocks, plan, j, zp, feed);
+                enter(blocks, milled.get(0), j, lv, feed, t);
+                emitContours(blocks, plan, j, lv, feed);
             }
         }
         return finish(blocks);
+    }
+
+    /**
+     * The depth passes in micrometres below the top. The thesis's program steps by its rounded
+     * step ({@code stepUm}); the corrected post puts pass k at k/n of the whole depth rounded to
+     * the micrometre, so that the last pass lies on the floor: n rounded steps of 5/3 mm would
+     * end 1 um below it.
+     */
+    private record Levels(long stepUm, int passes, long depthUm) {
+        long belowTopUm(int pass) {
+            return pass >= passes ? depthUm : Math.round((double) pass * depthUm / passes);
+        }
     }
 
     /** The passes in milling order, each reversed for climb milling. */
@@ -153,10 +166,10 @@ public final class Sinumerik7MPost {
      * as incremental G01 X Y Z blocks between micrometre points (no drift), the roughing feed
      * on the first; the next contour block returns to G90.
      */
-    private void enter(List<Block> blocks, PocketPass pass, int depth, long zp, long feed, PocketTechnology t)
+    private void enter(List<Block> blocks, PocketPass pass, int depth, Levels lv, long feed, PocketTechnology t)
             throws ToolTooLargeException {
-        long top = -(depth - 1) * zp + 1000;
-        long bottom = -depth * zp;
+        long top = -lv.belowTopUm(depth - 1) + 1000;
+        long bottom = -lv.belowTopUm(depth);
         add(blocks, "G00 G91 Z" + str(top - 5000));
         EntryRule rule = entry.kind() == EntryRule.Kind.HELIX
                 ? new EntryRule(EntryRule.Kind.RAMP, entry.angleDeg(), entry.centreCutting()) : entry;
@@ -235,7 +248,7 @@ public final class Sinumerik7MPost {
         return out;
     }
 
-    private void emitContours(List<Block> blocks, PocketPlan plan, int depth, long zp, long feed)
+    private void emitContours(List<Block> blocks, PocketPlan plan, int depth, Levels lv, long feed)
             throws ToolTooLargeException {
         PocketTechnology t = plan.technology();
         List<PocketPass> milled = milled(plan);
@@ -248,14 +261,14 @@ public final class Sinumerik7MPost {
                 if (prev.linksOutwardTo(pass)) {
                     motion(blocks, modal, afterPlunge, "G01", xy(pass.start()), "");
                 } else {
-                    long up = mode == Mode.COMPAT ? zp + 20000 : depth * zp + 20000;
+                    long up = mode == Mode.COMPAT ? lv.stepUm() + 20000 : lv.belowTopUm(depth) + 20000;
                     add(blocks, "G00 G91 Z" + str(up));
                     add(blocks, "G90 X" + str(um(pass.start().x())) + " Y" + str(um(pass.start().y())));
                     add(blocks, "G91 Z -15000");
                     if (mode == Mode.COMPAT) {
-                        add(blocks, "G01 Z -" + (zp + 5000));
+                        add(blocks, "G01 Z -" + (lv.stepUm() + 5000));
                     } else {
-                        enter(blocks, pass, depth, zp, feed, t);
+                        enter(blocks, pass, depth, lv, feed, t);
                     }
                     modal[0] = "G01";
                     afterPlunge[0] = true;

@@ -198,6 +198,41 @@ class Sinumerik7MPostTest {
         assertFalse(nc.stream().anyMatch(l -> l.matches("N\\d{3}[A-Z].*")));
     }
 
+    /**
+     * Three passes of 5/3 mm: three steps rounded to 1667 um would end 1 um below the floor, which
+     * the program check refuses; the passes lie at 1667, 3333 and 5000 um.
+     */
+    @Test
+    void correctedPostEndsTheLastDepthPassOnTheFloorWhenTheStepIsNoWholeMicrometre() throws Exception {
+        PocketTechnology t = new PocketTechnology(6, 0.6, 0.15, 0, -5, 2, 3000, 300, 150);
+        var profile = DadReader.read(Files.readString(SAMPLES.resolve("examplepart.dad")), "examplepart.dad");
+        List<String> nc = lines(new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED).write(
+                PassPlanner.plan(Recognition.of(profile), t)));
+        assertEquals(3, t.depthPasses());
+        // from Z+5 above the top (incremental Z): the floor at -5 is Z-10000
+        assertEquals(-10000, deepestUm(nc));
+    }
+
+    private static long deepestUm(List<String> nc) {
+        long z = 0;
+        boolean incremental = false;
+        long deepest = 0;
+        for (String l : nc) {
+            if (l.contains("G91")) {
+                incremental = true;
+            }
+            if (l.contains("G90")) {
+                incremental = false;
+            }
+            Matcher m = Pattern.compile("Z ?(-?\\d+)").matcher(l);
+            if (incremental && m.find() && !l.contains("G53") && !l.contains("G43") && !l.contains("200000")) {
+                z += Long.parseLong(m.group(1));
+                deepest = Math.min(deepest, z);
+            }
+        }
+        return deepest;
+    }
+
     @Test
     void correctedPostRoundsNegativeNumbersSymmetrically() {
         Sinumerik7MPost compat = new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT);
