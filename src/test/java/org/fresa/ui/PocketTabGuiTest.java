@@ -88,7 +88,10 @@ class PocketTabGuiTest extends WindowGuiTest {
         assertTrue(refused.contains("entry angle") && refused.contains("(a plunge)")
                 && refused.contains("a cutter not cutting at its centre"), refused);
         // the failing block is marked in the program, which is in front
-        assertEquals(1, GuiActionRunner.execute(() -> window.tabbedPane("pocket-texts").target().getSelectedIndex()));
+        assertEquals("NC program", GuiActionRunner.execute(() -> {
+            javax.swing.JTabbedPane texts = window.tabbedPane("pocket-texts").target();
+            return texts.getTitleAt(texts.getSelectedIndex());
+        }));
         Highlighter.Highlight[] marked = GuiActionRunner.execute(
                 () -> window.textBox("pocket-nc").target().getHighlighter().getHighlights());
         assertEquals(1, marked.length);
