@@ -54,6 +54,9 @@ final class Tooltips {
         tip("Robot", "robot-dh", "Denavit-Hartenberg table, one row per joint: theta and alpha in degrees, d and a in"
                 + " mm, the joint type (R rotary, P prismatic) and its limits (deg or mm); cells take expressions");
         tip("Pocket", "pocket-contour", "The closed line/arc contour to mill (.dad, .contour file)");
+        tip("Pocket", "pocket-contour-table", "The contour's elements as the .dad file holds them, in order of travel:"
+                + " a line by A, B, D (A x + B y = D), an arc by its centre, radius and sense; Insert adds, Delete"
+                + " removes, Alt+Up/Down moves the selected element");
         tip("Pocket", "Tool diameter (mm)", "Diameter of the milling cutter (mm)");
         tip("Pocket", "Cut fraction", "Step-over between passes as a fraction of the tool diameter (0 to 1)");
         tip("Pocket", "Finish fraction", "Finishing allowance left for the last pass, as a fraction of the tool"

@@ -40,6 +40,10 @@ abstract class WindowGuiTest {
     void openWindow() {
         MainWindow w = GuiActionRunner.execute(() -> FresaApp.create(new RecentJobs(dir.resolve("recent.txt"))));
         window = new FrameFixture(w);
+        // wait for idle by one invokeAndWait on the system queue: AssertJ's own wait posts to every
+        // queue its window monitor has seen and waits up to 10 s for each, so one queue no thread
+        // pumps costs 10 s per robot action (seen after File > Open recent: 51 s for one test)
+        window.robot().settings().simpleWaitForIdle(true);
         if (windowSize() == null) {
             window.show();
         } else {
