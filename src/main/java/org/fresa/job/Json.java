@@ -27,6 +27,12 @@ public final class Json {
         return sb.append('\n').toString();
     }
 
+    private static Map<String, Object> byName(Map<?, ?> m) {
+        Map<String, Object> out = new java.util.HashMap<>();
+        m.forEach((k, v) -> out.put(String.valueOf(k), v));
+        return out;
+    }
+
     private static void append(StringBuilder sb, Object v, int indent, boolean pretty) {
         if (v == null) {
             sb.append("null");
@@ -39,7 +45,11 @@ public final class Json {
             sb.append(v);
         } else if (v instanceof Map<?, ?> m) {
             sb.append('{');
-            Iterator<? extends Map.Entry<?, ?>> it = m.entrySet().iterator();
+            // Map.of iterates in an order salted per JVM run: its keys are written sorted, so that
+            // two runs write the same file; ordered maps (LinkedHashMap, TreeMap) keep their order
+            Iterator<? extends Map.Entry<?, ?>> it = m.getClass().getName().startsWith("java.util.ImmutableCollections")
+                    ? new java.util.TreeMap<String, Object>(byName(m)).entrySet().iterator()
+                    : m.entrySet().iterator();
             boolean first = true;
             while (it.hasNext()) {
                 Map.Entry<?, ?> e = it.next();

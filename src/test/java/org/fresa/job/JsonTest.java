@@ -1,0 +1,27 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+class JsonTest {
+
+    /** Map.of's order is salted per JVM run; two runs must still write the same summary. */
+    @Test
+    void anImmutableMapIsWrittenWithItsKeysSorted() {
+        assertEquals("{\"a\":1,\"b\":2,\"c\":3,\"d\":4}", Json.write(Map.of("d", 4, "b", 2, "c", 3, "a", 1)));
+        assertEquals("[{\"id\":\"WS 1\",\"reason\":\"turning\"}]",
+                Json.write(java.util.List.of(Map.of("reason", "turning", "id", "WS 1"))));
+    }
+
+    @Test
+    void anOrderedMapKeepsItsOrder() {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("schema", "MACHINING_SCHEMA");
+        m.put("workingsteps", 4);
+        m.put("planned", 0);
+        assertEquals("{\"schema\":\"MACHINING_SCHEMA\",\"workingsteps\":4,\"planned\":0}", Json.write(m));
+    }
+}
