@@ -36,43 +36,80 @@ class ArchitectureTest {
     private static final String UI = "org.fresa.ui..";
 
     @ArchTest
-    static final ArchRule layersPointOneWay = layeredArchitecture().consideringOnlyDependenciesInLayers()
-            .layer("Geometry").definedBy(GEOM)
-            .layer("Core").definedBy("org.fresa.kin..", "org.fresa.model..")
-            .layer("Domain").definedBy("org.fresa.stepnc..", "org.fresa.dxf..", "org.fresa.pocket..",
-                    "org.fresa.toolpath..", "org.fresa.cutting..", "org.fresa.grading..", "org.fresa.sole..",
+    static final ArchRule layersPointOneWay = layeredArchitecture()
+            .consideringOnlyDependenciesInLayers()
+            .layer("Geometry")
+            .definedBy(GEOM)
+            .layer("Core")
+            .definedBy("org.fresa.kin..", "org.fresa.model..")
+            .layer("Domain")
+            .definedBy(
+                    "org.fresa.stepnc..",
+                    "org.fresa.dxf..",
+                    "org.fresa.pocket..",
+                    "org.fresa.toolpath..",
+                    "org.fresa.cutting..",
+                    "org.fresa.grading..",
+                    "org.fresa.sole..",
                     "org.fresa.post..")
-            .layer("Chart").definedBy("org.fresa.chart..")
-            .layer("Service").definedBy("org.fresa.job..")
-            .layer("Ui").definedBy(UI)
-            .layer("App").definedBy("org.fresa.app..")
-            .whereLayer("App").mayNotBeAccessedByAnyLayer()
-            .whereLayer("Ui").mayOnlyBeAccessedByLayers("App")
-            .whereLayer("Service").mayOnlyBeAccessedByLayers("Ui", "App")
-            .whereLayer("Chart").mayOnlyBeAccessedByLayers("Service", "Ui", "App")
-            .whereLayer("Domain").mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
-            .whereLayer("Core").mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .layer("Chart")
+            .definedBy("org.fresa.chart..")
+            .layer("Service")
+            .definedBy("org.fresa.job..")
+            .layer("Ui")
+            .definedBy(UI)
+            .layer("App")
+            .definedBy("org.fresa.app..")
+            .whereLayer("App")
+            .mayNotBeAccessedByAnyLayer()
+            .whereLayer("Ui")
+            .mayOnlyBeAccessedByLayers("App")
+            .whereLayer("Service")
+            .mayOnlyBeAccessedByLayers("Ui", "App")
+            .whereLayer("Chart")
+            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Domain")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .whereLayer("Core")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
-    static final ArchRule packagesAreFreeOfCycles = slices().matching("org.fresa.(*)..").should().beFreeOfCycles()
+    static final ArchRule packagesAreFreeOfCycles = slices().matching("org.fresa.(*)..")
+            .should()
+            .beFreeOfCycles()
             .because("a cycle between packages makes the layers meaningless");
 
     @ArchTest
-    static final ArchRule geometryDependsOnTheJdkOnly = classes().that().resideInAPackage(GEOM)
-            .should().onlyDependOnClassesThat().resideInAnyPackage(GEOM, "java.lang..", "java.util..")
+    static final ArchRule geometryDependsOnTheJdkOnly = classes()
+            .that()
+            .resideInAPackage(GEOM)
+            .should()
+            .onlyDependOnClassesThat()
+            .resideInAnyPackage(GEOM, "java.lang..", "java.util..")
             .because("geometry is pure value types with no I/O and no libraries");
 
     @ArchTest
-    static final ArchRule kinematicsDoesNotUseTheModel = noClasses().that().resideInAPackage("org.fresa.kin..")
-            .should().dependOnClassesThat().resideInAnyPackage("org.fresa.model..", "org.fresa.stepnc..")
+    static final ArchRule kinematicsDoesNotUseTheModel = noClasses()
+            .that()
+            .resideInAPackage("org.fresa.kin..")
+            .should()
+            .dependOnClassesThat()
+            .resideInAnyPackage("org.fresa.model..", "org.fresa.stepnc..")
             .because("kinematics is a service on geometry alone");
 
     @ArchTest
     static final ArchRule readersNeverPlanPaths = noClasses()
-            .that().resideInAnyPackage("org.fresa.stepnc..", "org.fresa.dxf..")
-            .should().dependOnClassesThat().resideInAnyPackage("org.fresa.pocket..", "org.fresa.toolpath..",
-                    "org.fresa.cutting..", "org.fresa.post..", "org.fresa.kin..")
+            .that()
+            .resideInAnyPackage("org.fresa.stepnc..", "org.fresa.dxf..")
+            .should()
+            .dependOnClassesThat()
+            .resideInAnyPackage(
+                    "org.fresa.pocket..",
+                    "org.fresa.toolpath..",
+                    "org.fresa.cutting..",
+                    "org.fresa.post..",
+                    "org.fresa.kin..")
             .because("readers turn files into models; planning is elsewhere");
 
     /**
@@ -94,16 +131,34 @@ class ArchitectureTest {
             entry("post", List.of("model", "geom")),
             entry("check", List.of("post", "geom")),
             entry("chart", List.of("model", "geom")),
-            entry("job", List.of("check", "chart", "stepnc", "dxf", "pocket", "toolpath", "cutting", "grading", "sole", "post",
-                    "kin", "model", "geom")));
+            entry(
+                    "job",
+                    List.of(
+                            "check",
+                            "chart",
+                            "stepnc",
+                            "dxf",
+                            "pocket",
+                            "toolpath",
+                            "cutting",
+                            "grading",
+                            "sole",
+                            "post",
+                            "kin",
+                            "model",
+                            "geom")));
 
     /** No class of the package uses a Fresa package that its package-info does not state. */
     static ArchRule usesOnlyStatedPackages(String pkg) {
         List<String> allowed = STATED_DEPENDENCIES.get(pkg);
-        String[] inside = Stream.concat(Stream.of(pkg), allowed.stream()).map(p -> "org.fresa." + p + "..")
+        String[] inside = Stream.concat(Stream.of(pkg), allowed.stream())
+                .map(p -> "org.fresa." + p + "..")
                 .toArray(String[]::new);
-        return noClasses().that().resideInAPackage("org.fresa." + pkg + "..")
-                .should().dependOnClassesThat(resideInAPackage("org.fresa..").and(not(resideInAnyPackage(inside))))
+        return noClasses()
+                .that()
+                .resideInAPackage("org.fresa." + pkg + "..")
+                .should()
+                .dependOnClassesThat(resideInAPackage("org.fresa..").and(not(resideInAnyPackage(inside))))
                 .because("the package-info of " + pkg + " states its dependencies: "
                         + (allowed.isEmpty() ? "none in Fresa" : String.join(", ", allowed)));
     }
@@ -123,7 +178,9 @@ class ArchitectureTest {
                 }
                 for (Dependency d : c.getDirectDependenciesFromSelf()) {
                     String target = d.getTargetClass().getPackageName();
-                    stated.stream().filter(s -> inside(target, s) && !inside(target, pkg)).forEach(used::add);
+                    stated.stream()
+                            .filter(s -> inside(target, s) && !inside(target, pkg))
+                            .forEach(used::add);
                 }
             }
             stated.stream().filter(s -> !used.contains(s)).forEach(s -> stale.add(pkg + " -> " + s));
@@ -138,8 +195,12 @@ class ArchitectureTest {
     }
 
     @ArchTest
-    static final ArchRule postDoesNotDependOnPocket = noClasses().that().resideInAPackage("org.fresa.post..")
-            .should().dependOnClassesThat().resideInAPackage("org.fresa.pocket..")
+    static final ArchRule postDoesNotDependOnPocket = noClasses()
+            .that()
+            .resideInAPackage("org.fresa.post..")
+            .should()
+            .dependOnClassesThat()
+            .resideInAPackage("org.fresa.pocket..")
             .because("a post writes a model toolpath in a control's dialect; the thesis's 7M post, which posts"
                     + " pocket passes, lives in pocket.compat");
 
@@ -189,41 +250,61 @@ class ArchitectureTest {
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");
 
     @ArchTest
-    static final ArchRule symjaOnlyInKinematics = noClasses().that().resideOutsideOfPackage("org.fresa.kin..")
-            .should().dependOnClassesThat().resideInAPackage("org.matheclipse..")
+    static final ArchRule symjaOnlyInKinematics = noClasses()
+            .that()
+            .resideOutsideOfPackage("org.fresa.kin..")
+            .should()
+            .dependOnClassesThat()
+            .resideInAPackage("org.matheclipse..")
             .because("kin's package-info names Symja as its dependency, for the symbolic forward kinematics only");
 
     @ArchTest
-    static final ArchRule swingOnlyInUi = noClasses().that().resideOutsideOfPackage(UI)
-            .should().dependOnClassesThat().resideInAPackage("javax.swing..")
+    static final ArchRule swingOnlyInUi = noClasses()
+            .that()
+            .resideOutsideOfPackage(UI)
+            .should()
+            .dependOnClassesThat()
+            .resideInAPackage("javax.swing..")
             .because("Swing lives in the ui package only; everything else runs headless");
 
     @ArchTest
     static final ArchRule awtOnlyInChartAndUi = noClasses()
-            .that().resideOutsideOfPackages("org.fresa.chart..", UI)
-            .and().areNotAnnotatedWith(org.fresa.app.AllowedToUseAwt.class)
-            .should().dependOnClassesThat().resideInAnyPackage("java.awt..", "org.jfree..")
+            .that()
+            .resideOutsideOfPackages("org.fresa.chart..", UI)
+            .and()
+            .areNotAnnotatedWith(org.fresa.app.AllowedToUseAwt.class)
+            .should()
+            .dependOnClassesThat()
+            .resideInAnyPackage("java.awt..", "org.jfree..")
             .because("drawing belongs to chart and ui; exceptions carry @AllowedToUseAwt with a reason");
 
     @ArchTest
-    static final ArchRule viewModelsAreSwingFree = noClasses().that().haveSimpleNameEndingWith("ViewModel")
-            .should().dependOnClassesThat().resideInAPackage("javax.swing..")
+    static final ArchRule viewModelsAreSwingFree = noClasses()
+            .that()
+            .haveSimpleNameEndingWith("ViewModel")
+            .should()
+            .dependOnClassesThat()
+            .resideInAPackage("javax.swing..")
             .because("view models hold state and validation and are tested without a screen");
 
     @ArchTest
-    static final ArchRule geometryIsImmutable = classes().that().resideInAPackage(GEOM)
-            .should().haveOnlyFinalFields()
+    static final ArchRule geometryIsImmutable = classes()
+            .that()
+            .resideInAPackage(GEOM)
+            .should()
+            .haveOnlyFinalFields()
             .because("geometry values are immutable");
 
     @ArchTest
     static final ArchRule standardStreamsOnlyInTheCommandLine = noClasses()
-            .that().resideOutsideOfPackage("org.fresa.app.cli..")
+            .that()
+            .resideOutsideOfPackage("org.fresa.app.cli..")
             .should(GeneralCodingRules.ACCESS_STANDARD_STREAMS)
             .because("only the command line talks to stdout and stderr");
 
     @ArchTest
-    static final ArchRule noGenericExceptions = GeneralCodingRules.NO_CLASSES_SHOULD_THROW_GENERIC_EXCEPTIONS
-            .because("throw a CamInputException for bad input, an IllegalArgumentException for misuse");
+    static final ArchRule noGenericExceptions = GeneralCodingRules.NO_CLASSES_SHOULD_THROW_GENERIC_EXCEPTIONS.because(
+            "throw a CamInputException for bad input, an IllegalArgumentException for misuse");
 
     /**
      * The planners and engines the module services call for {@code fresa run} (through
@@ -234,16 +315,22 @@ class ArchitectureTest {
     static final List<String> MODULE_PLANNERS = List.of(
             "org.fresa.stepnc.StepNcReader",
             "org.fresa.toolpath.ToolpathPlanner",
-            "org.fresa.pocket.RegionPocket", "org.fresa.pocket.PassPlanner", "org.fresa.pocket.Recognition",
+            "org.fresa.pocket.RegionPocket",
+            "org.fresa.pocket.PassPlanner",
+            "org.fresa.pocket.Recognition",
             "org.fresa.cutting.CutPlanner",
             "org.fresa.grading.Grader",
-            "org.fresa.sole.TreadProgram", "org.fresa.sole.MouldBlock",
+            "org.fresa.sole.TreadProgram",
+            "org.fresa.sole.MouldBlock",
             "org.fresa.kin.TrajectorySolver");
 
     /** The rule over the given classes' package (the ui's, or a test fixture's). */
     static ArchRule tabsComputeThroughTheModuleServices(String pkg) {
-        return noClasses().that().resideInAPackage(pkg)
-                .should().dependOnClassesThat(com.tngtech.archunit.base.DescribedPredicate.describe(
+        return noClasses()
+                .that()
+                .resideInAPackage(pkg)
+                .should()
+                .dependOnClassesThat(com.tngtech.archunit.base.DescribedPredicate.describe(
                         "are a module's planner or engine " + MODULE_PLANNERS,
                         (com.tngtech.archunit.core.domain.JavaClass c) -> MODULE_PLANNERS.contains(c.getName())))
                 .because("a tab shows what fresa run writes only if both compute through the module's service"

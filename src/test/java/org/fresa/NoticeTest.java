@@ -40,8 +40,10 @@ class NoticeTest {
 
     @Test
     void theNoticeNamesEveryBundledDependencyWithItsVersionAndNothingElse() throws IOException {
-        assertTrue(Files.isRegularFile(RESOLVED), RESOLVED + " is missing: run the tests through Maven (mvn verify), whose"
-                + " dependency plugin writes it");
+        assertTrue(
+                Files.isRegularFile(RESOLVED),
+                RESOLVED + " is missing: run the tests through Maven (mvn verify), whose"
+                        + " dependency plugin writes it");
         Map<String, String> resolved = resolved(Files.readAllLines(RESOLVED));
         Map<String, String> noticed = new TreeMap<>();
         Matcher m = ENTRY.matcher(Files.readString(Path.of("NOTICE")));
@@ -55,7 +57,8 @@ class NoticeTest {
                         + (noticed.containsKey(artifact) ? noticed.get(artifact) : "nothing"));
             }
         });
-        noticed.keySet().stream().filter(a -> !resolved.containsKey(a))
+        noticed.keySet().stream()
+                .filter(a -> !resolved.containsKey(a))
                 .forEach(a -> wrong.add("NOTICE names " + a + ", which the jar no longer bundles"));
         assertEquals(List.of(), wrong);
         assertTrue(resolved.size() > 50, "Symja alone brings more than 50: " + resolved.keySet());

@@ -26,8 +26,8 @@ class PackageStatementsTest {
     /** The top layers, whose arrows the layered rule states (docs/architecture.md). */
     static final Set<String> LAYERED_ONLY = Set.of("app", "app.cli", "ui");
 
-    private static final Pattern DEPENDENCIES = Pattern.compile("Dependencies:(.*?)(?:\\.\\s*(?:\\n|\\*/|<p>)|\\bnever\\b)",
-            Pattern.DOTALL);
+    private static final Pattern DEPENDENCIES =
+            Pattern.compile("Dependencies:(.*?)(?:\\.\\s*(?:\\n|\\*/|<p>)|\\bnever\\b)", Pattern.DOTALL);
     private static final Pattern CODE = Pattern.compile("\\{@code ([a-z.]+)\\}");
 
     @Test
@@ -37,7 +37,8 @@ class PackageStatementsTest {
             if (LAYERED_ONLY.contains(pkg)) {
                 continue;
             }
-            Set<String> rule = new TreeSet<>(ArchitectureTest.STATED_DEPENDENCIES.getOrDefault(pkg, List.of("(no rule)")));
+            Set<String> rule =
+                    new TreeSet<>(ArchitectureTest.STATED_DEPENDENCIES.getOrDefault(pkg, List.of("(no rule)")));
             Set<String> said = stated(pkg);
             if (!rule.equals(said)) {
                 differences.add(pkg + ": package-info says " + said + ", ArchitectureTest has " + rule);
@@ -67,7 +68,8 @@ class PackageStatementsTest {
 
     @Test
     void everyRuleHasItsPackage() throws IOException {
-        assertTrue(packages().containsAll(ArchitectureTest.STATED_DEPENDENCIES.keySet()),
+        assertTrue(
+                packages().containsAll(ArchitectureTest.STATED_DEPENDENCIES.keySet()),
                 ArchitectureTest.STATED_DEPENDENCIES.keySet() + " vs " + packages());
     }
 
@@ -94,7 +96,9 @@ class PackageStatementsTest {
     /** Every package of the main sources that holds classes, relative to org.fresa. */
     static Set<String> packages() throws IOException {
         try (Stream<Path> s = Files.walk(SOURCES)) {
-            return s.filter(p -> p.toString().endsWith(".java")).map(Path::getParent).distinct()
+            return s.filter(p -> p.toString().endsWith(".java"))
+                    .map(Path::getParent)
+                    .distinct()
                     .map(d -> SOURCES.relativize(d).toString().replace('/', '.'))
                     .filter(n -> !n.isEmpty())
                     .collect(java.util.stream.Collectors.toCollection(TreeSet::new));

@@ -19,7 +19,9 @@ class TabPlannerRuleTest {
         EvaluationResult r = ArchitectureTest.tabsComputeThroughTheModuleServices("org.fresa.fixture.tab..")
                 .evaluate(fixture);
         assertTrue(r.hasViolation());
-        assertTrue(r.getFailureReport().toString().contains("ToolpathPlanner.plan"), r.getFailureReport().toString());
+        assertTrue(
+                r.getFailureReport().toString().contains("ToolpathPlanner.plan"),
+                r.getFailureReport().toString());
     }
 
     @Test

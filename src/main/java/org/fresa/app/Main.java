@@ -4,8 +4,7 @@ import org.fresa.app.cli.FresaCommand;
 
 /** Starts Fresa: the desktop application without arguments, a command otherwise. */
 public final class Main {
-    private Main() {
-    }
+    private Main() {}
 
     public static void main(String[] args) {
         // only no arguments and "gui" open windows; the commands draw charts into images, and

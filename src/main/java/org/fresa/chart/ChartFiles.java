@@ -11,8 +11,7 @@ import org.jfree.svg.SVGGraphics2D;
 
 /** Charts as PNG or SVG bytes, for files written headless and for Export in the GUI. */
 public final class ChartFiles {
-    private ChartFiles() {
-    }
+    private ChartFiles() {}
 
     public static void writePng(JFreeChart chart, int widthPx, int heightPx, OutputStream out) throws IOException {
         BufferedImage img = new BufferedImage(widthPx, heightPx, BufferedImage.TYPE_INT_RGB);

@@ -23,8 +23,7 @@ public final class EqualScale {
     /** The margin around fitted data, as a fraction of the larger side of the data's box. */
     public static final double FIT_MARGIN = 0.05;
 
-    private EqualScale() {
-    }
+    private EqualScale() {}
 
     /**
      * The data area (pixels, in the chart's drawing space) that drawing the chart at this size

@@ -19,8 +19,7 @@ public final class GradingChart {
         }
     }
 
-    private GradingChart() {
-    }
+    private GradingChart() {}
 
     /**
      * The scene of the nested outlines.
@@ -46,8 +45,9 @@ public final class GradingChart {
     }
 
     /** The nested outlines as a PNG image at equal scale (via {@link ToolpathChart}), for headless runs. */
-    public static void writePng(String title, List<SizeOutline> sizes, Vec2 lengthAxis, int widthPx, int heightPx,
-            java.io.OutputStream out) throws java.io.IOException {
+    public static void writePng(
+            String title, List<SizeOutline> sizes, Vec2 lengthAxis, int widthPx, int heightPx, java.io.OutputStream out)
+            throws java.io.IOException {
         ToolpathChart.writePng(scene(title, sizes, lengthAxis), widthPx, heightPx, out);
     }
 

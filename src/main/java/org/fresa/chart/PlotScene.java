@@ -68,8 +68,7 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels, Ax
     }
 
     /** A text at a point (mm). */
-    public record Label(Vec2 at, String text) {
-    }
+    public record Label(Vec2 at, String text) {}
 
     public PlotScene {
         Objects.requireNonNull(title, "title");
@@ -107,9 +106,13 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels, Ax
      */
     public PlotScene withMarker(String name, Vec2 at, double radiusMm) {
         double r = Math.max(1e-3, radiusMm);
-        return with(new Layer(name, Style.WARNING, List.of(Arc2.circle(at, r, true),
-                Segment2.of(at.minus(new Vec2(2 * r, 0)), at.plus(new Vec2(2 * r, 0))),
-                Segment2.of(at.minus(new Vec2(0, 2 * r)), at.plus(new Vec2(0, 2 * r))))));
+        return with(new Layer(
+                name,
+                Style.WARNING,
+                List.of(
+                        Arc2.circle(at, r, true),
+                        Segment2.of(at.minus(new Vec2(2 * r, 0)), at.plus(new Vec2(2 * r, 0))),
+                        Segment2.of(at.minus(new Vec2(0, 2 * r)), at.plus(new Vec2(0, 2 * r))))));
     }
 
     /** The same scene under another title. */

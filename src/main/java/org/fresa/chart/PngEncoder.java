@@ -23,8 +23,7 @@ final class PngEncoder {
     /** zlib level 4, ImageIO's PNG default: files of the same size, faster than the default 6. */
     private static final int LEVEL = 4;
 
-    private PngEncoder() {
-    }
+    private PngEncoder() {}
 
     /** For {@link BufferedImage#TYPE_INT_RGB} images. */
     static void write(BufferedImage img, OutputStream out) throws IOException {
@@ -33,7 +32,8 @@ final class PngEncoder {
         }
         int w = img.getWidth();
         int h = img.getHeight();
-        java.awt.image.SinglePixelPackedSampleModel sm = (java.awt.image.SinglePixelPackedSampleModel) img.getSampleModel();
+        java.awt.image.SinglePixelPackedSampleModel sm =
+                (java.awt.image.SinglePixelPackedSampleModel) img.getSampleModel();
         DataBufferInt data = (DataBufferInt) img.getRaster().getDataBuffer();
         int[] px = data.getData();
         int offset = data.getOffset();

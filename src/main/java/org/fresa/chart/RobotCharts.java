@@ -21,8 +21,7 @@ public final class RobotCharts {
     private static final Color LIMIT = new Color(0xC62828);
     private static final Color[] SERIES = {new Color(0x1565C0), new Color(0x2E7D32), new Color(0xEF6C00)};
 
-    private RobotCharts() {
-    }
+    private RobotCharts() {}
 
     /**
      * One joint.

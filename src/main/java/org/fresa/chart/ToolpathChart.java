@@ -7,13 +7,13 @@ import java.awt.Paint;
 import java.awt.Stroke;
 import java.awt.geom.Arc2D;
 import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.awt.geom.Path2D;
-import java.awt.geom.Point2D;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
@@ -21,13 +21,13 @@ import org.fresa.geom.Segment2;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.LegendItem;
 import org.jfree.chart.LegendItemCollection;
-import org.jfree.chart.axis.AxisSpace;
-import org.jfree.chart.block.BlockBorder;
-import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.annotations.XYTextAnnotation;
+import org.jfree.chart.axis.AxisSpace;
 import org.jfree.chart.axis.NumberAxis;
+import org.jfree.chart.block.BlockBorder;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 
@@ -38,8 +38,7 @@ import org.jfree.data.xy.XYSeriesCollection;
  */
 public final class ToolpathChart {
 
-    private ToolpathChart() {
-    }
+    private ToolpathChart() {}
 
     /**
      * The chart of a scene: its title, axes named after the view, a legend of the layers' styles,
@@ -107,8 +106,11 @@ public final class ToolpathChart {
         plot.setFixedDomainAxisSpace(bottom);
         LegendItemCollection legend = legend(scene);
         plot.setFixedLegendItems(legend);
-        JFreeChart chart = new JFreeChart(scene.title().isEmpty() ? null : scene.title(),
-                new Font(Font.SANS_SERIF, Font.BOLD, 13), plot, legend.getItemCount() > 0);
+        JFreeChart chart = new JFreeChart(
+                scene.title().isEmpty() ? null : scene.title(),
+                new Font(Font.SANS_SERIF, Font.BOLD, 13),
+                plot,
+                legend.getItemCount() > 0);
         chart.setBackgroundPaint(Color.WHITE);
         if (chart.getLegend() != null) {
             chart.getLegend().setPosition(RectangleEdge.BOTTOM);
@@ -141,11 +143,10 @@ public final class ToolpathChart {
             Style s = style(e.getKey());
             LegendItem item;
             if (s.fill != null) {
-                item = new LegendItem(label, null, null, null, new Rectangle2D.Double(-6, -5, 12, 10), s.fill,
-                        s.stroke, s.outline);
+                item = new LegendItem(
+                        label, null, null, null, new Rectangle2D.Double(-6, -5, 12, 10), s.fill, s.stroke, s.outline);
             } else {
-                item = new LegendItem(label, null, null, null, new Line2D.Double(-10, 0, 10, 0), s.stroke,
-                        s.outline);
+                item = new LegendItem(label, null, null, null, new Line2D.Double(-10, 0, 10, 0), s.stroke, s.outline);
             }
             items.add(item);
         }
@@ -167,7 +168,9 @@ public final class ToolpathChart {
         Path2D.Double p = new Path2D.Double();
         Point2D last = null;
         for (Curve2 c : layer.curves()) {
-            boolean joined = last != null && last.getX() == c.start().x() && last.getY() == c.start().y();
+            boolean joined = last != null
+                    && last.getX() == c.start().x()
+                    && last.getY() == c.start().y();
             if (c instanceof Segment2 s) {
                 if (!joined) {
                     p.moveTo(s.start().x(), s.start().y());
@@ -184,8 +187,14 @@ public final class ToolpathChart {
                 } else {
                     // Java2D angles are clockwise-positive in a y-down space; the data space is y-up,
                     // so the plot's transform flips y and the arc's math angles map through unchanged
-                    Arc2D.Double arc = new Arc2D.Double(a.center().x() - r, a.center().y() - r, 2 * r, 2 * r,
-                            -Math.toDegrees(a.startAngleRad()), -Math.toDegrees(a.sweepRad()), Arc2D.OPEN);
+                    Arc2D.Double arc = new Arc2D.Double(
+                            a.center().x() - r,
+                            a.center().y() - r,
+                            2 * r,
+                            2 * r,
+                            -Math.toDegrees(a.startAngleRad()),
+                            -Math.toDegrees(a.sweepRad()),
+                            Arc2D.OPEN);
                     p.append(arc, joined);
                 }
             }
@@ -194,8 +203,7 @@ public final class ToolpathChart {
         return p;
     }
 
-    private record Style(Stroke stroke, Paint outline, Paint fill) {
-    }
+    private record Style(Stroke stroke, Paint outline, Paint fill) {}
 
     private static Style style(PlotScene.Style s) {
         switch (s) {
@@ -212,8 +220,11 @@ public final class ToolpathChart {
             case FINISH:
                 return new Style(new BasicStroke(1.4f), new Color(0x2E7D32), null);
             case RAPID:
-                return new Style(new BasicStroke(0.7f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
-                        new float[] {4f, 3f}, 0f), new Color(0xE53935), null);
+                return new Style(
+                        new BasicStroke(
+                                0.7f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 3f}, 0f),
+                        new Color(0xE53935),
+                        null);
             case WARNING:
                 return new Style(new BasicStroke(2.0f), new Color(0xFF8F00), null);
             case AUX:

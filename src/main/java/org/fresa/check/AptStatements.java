@@ -33,8 +33,7 @@ final class AptStatements {
     /** How far the end of an arc may lie off its circle: the written digits of both, mm. */
     private static final double ON_CIRCLE_MM = 0.002;
 
-    private AptStatements() {
-    }
+    private AptStatements() {}
 
     /** Checks the whole program against the limits, statement by statement. */
     static ProgramCheck.Verdict check(String program, Limits limits) {
@@ -46,8 +45,8 @@ final class AptStatements {
                 String why = r.broken(step, limits);
                 if (why != null) {
                     Words.Block b = step.block();
-                    return new ProgramCheck.Verdict(Optional.of(new Failure(b.line(), "line " + b.line(), b.text(), r,
-                            why)), lines.length);
+                    return new ProgramCheck.Verdict(
+                            Optional.of(new Failure(b.line(), "line " + b.line(), b.text(), r, why)), lines.length);
                 }
             }
             if (step.block().problem().isPresent()) {
@@ -58,8 +57,7 @@ final class AptStatements {
     }
 
     /** One statement: its major word, its arguments as written (numbers or minor words). */
-    record Statement(String word, List<String> args) {
-    }
+    record Statement(String word, List<String> args) {}
 
     /** The statement of a line, empty for a blank line or a comment. */
     static Optional<Statement> parse(String text) {
@@ -105,8 +103,7 @@ final class AptStatements {
             this.limits = limits;
         }
 
-        private record Circle(Vec3 centre, Vec3 axis, double radiusMm) {
-        }
+        private record Circle(Vec3 centre, Vec3 axis, double radiusMm) {}
 
         Step execute(int line, String text) {
             String t = text.strip();
@@ -125,8 +122,14 @@ final class AptStatements {
                 return idle(b, false);
             }
             if (circle != null && !st.word().equals("GOTO")) {
-                return idle(new Words.Block(line, text, words, Optional.of(
-                        "a CIRCLE/ must be followed by the GOTO/ of the arc's end, not " + st.word())), false);
+                return idle(
+                        new Words.Block(
+                                line,
+                                text,
+                                words,
+                                Optional.of(
+                                        "a CIRCLE/ must be followed by the GOTO/ of the arc's end, not " + st.word())),
+                        false);
             }
             switch (st.word()) {
                 case "GOTO", "GODLTA": {
@@ -139,8 +142,13 @@ final class AptStatements {
                     Circle c = circle;
                     circle = null;
                     if (c != null && rapid) {
-                        return idle(new Words.Block(line, text, words,
-                                Optional.of("the GOTO/ of a CIRCLE/ after RAPID: an arc is a feed motion")), false);
+                        return idle(
+                                new Words.Block(
+                                        line,
+                                        text,
+                                        words,
+                                        Optional.of("the GOTO/ of a CIRCLE/ after RAPID: an arc is a feed motion")),
+                                false);
                     }
                     List<Vec3> path = List.of();
                     boolean inPlane = false;
@@ -151,8 +159,15 @@ final class AptStatements {
                         Vec3 start = new Vec3(x, y, z);
                         Arc arc = arc(start, end, c);
                         if (arc == null) {
-                            return idle(new Words.Block(line, text, words, Optional.of("the arc's start and end are "
-                                    + "not on the CIRCLE/ before it (radius " + Num.of(c.radiusMm()) + " mm)")), false);
+                            return idle(
+                                    new Words.Block(
+                                            line,
+                                            text,
+                                            words,
+                                            Optional.of("the arc's start and end are "
+                                                    + "not on the CIRCLE/ before it (radius " + Num.of(c.radiusMm())
+                                                    + " mm)")),
+                                    false);
                         }
                         path = arc.points();
                         inPlane = Math.abs(c.axis().z()) > 1 - 1e-9;
@@ -165,15 +180,27 @@ final class AptStatements {
                     x = nx;
                     y = ny;
                     z = nz;
-                    Step s = new Step(b, NcDialect.APT, !rapid, path, inPlane, horizontal, on, rpm, feed, tool, false,
-                            axis, drilled);
+                    Step s = new Step(
+                            b,
+                            NcDialect.APT,
+                            !rapid,
+                            path,
+                            inPlane,
+                            horizontal,
+                            on,
+                            rpm,
+                            feed,
+                            tool,
+                            false,
+                            axis,
+                            drilled);
                     ProgramCheck.madeHole(s, limits, drilled);
                     return s;
                 }
                 case "CIRCLE": {
                     Vec3 n = new Vec3(value(st, 3), value(st, 4), value(st, 5));
-                    circle = new Circle(new Vec3(value(st, 0), value(st, 1), value(st, 2)), n.times(1 / n.norm()),
-                            value(st, 6));
+                    circle = new Circle(
+                            new Vec3(value(st, 0), value(st, 1), value(st, 2)), n.times(1 / n.norm()), value(st, 6));
                     return idle(b, false);
                 }
                 case "RAPID":
@@ -242,15 +269,19 @@ final class AptStatements {
                     if (why != null) {
                         return why;
                     }
-                    double n = Math.sqrt(Math.pow(words.get(3).value(), 2) + Math.pow(words.get(4).value(), 2)
+                    double n = Math.sqrt(Math.pow(words.get(3).value(), 2)
+                            + Math.pow(words.get(4).value(), 2)
                             + Math.pow(words.get(5).value(), 2));
                     if (Math.abs(n - 1) > 1e-4) {
-                        return "the CIRCLE/'s axis " + a.get(3) + "," + a.get(4) + "," + a.get(5) + " is not a unit vector";
+                        return "the CIRCLE/'s axis " + a.get(3) + "," + a.get(4) + "," + a.get(5)
+                                + " is not a unit vector";
                     }
                     return words.get(6).value() > 0 ? null : "the CIRCLE/'s radius must be > 0";
                 }
                 case "FEDRAT":
-                    if (a.isEmpty() || a.size() > 2 || (a.size() == 2 && !a.get(1).equals("MMPM"))) {
+                    if (a.isEmpty()
+                            || a.size() > 2
+                            || (a.size() == 2 && !a.get(1).equals("MMPM"))) {
                         return "FEDRAT/ takes f or f,MMPM";
                     }
                     return numbers(a.subList(0, 1), new String[] {"F"}, words);
@@ -258,7 +289,11 @@ final class AptStatements {
                     if (a.size() == 1 && (a.get(0).equals("OFF") || a.get(0).equals("ON"))) {
                         return null;
                     }
-                    if (a.isEmpty() || a.size() > 2 || (a.size() == 2 && !a.get(1).equals("CLW") && !a.get(1).equals("CCLW"))) {
+                    if (a.isEmpty()
+                            || a.size() > 2
+                            || (a.size() == 2
+                                    && !a.get(1).equals("CLW")
+                                    && !a.get(1).equals("CCLW"))) {
                         return "SPINDL/ takes rpm, rpm,CLW, rpm,CCLW, ON or OFF";
                     }
                     return numbers(a.subList(0, 1), new String[] {"S"}, words);
@@ -299,8 +334,7 @@ final class AptStatements {
             return Double.parseDouble(st.args().get(i));
         }
 
-        private record Arc(List<Vec3> points, double horizontalMm) {
-        }
+        private record Arc(List<Vec3> points, double horizontalMm) {}
 
         /**
          * The arc from start to end counter-clockwise about the circle's axis, sampled every
@@ -312,8 +346,7 @@ final class AptStatements {
             Vec3 e = inPlane(end.minus(c.centre()), n);
             double r0 = u.norm();
             double r1 = e.norm();
-            if (Math.abs(r0 - c.radiusMm()) > ON_CIRCLE_MM || Math.abs(r1 - c.radiusMm()) > ON_CIRCLE_MM
-                    || !(r0 > 0)) {
+            if (Math.abs(r0 - c.radiusMm()) > ON_CIRCLE_MM || Math.abs(r1 - c.radiusMm()) > ON_CIRCLE_MM || !(r0 > 0)) {
                 return null;
             }
             double angle = Math.atan2(u.cross(e).dot(n), u.dot(e));
@@ -328,7 +361,9 @@ final class AptStatements {
                 double f = (double) i / count;
                 double a = sweep * f;
                 double r = r0 + (r1 - r0) * f;
-                Vec3 p = base.plus(n.times(rise * f)).plus(uHat.times(r * Math.cos(a))).plus(v.times(r * Math.sin(a)));
+                Vec3 p = base.plus(n.times(rise * f))
+                        .plus(uHat.times(r * Math.cos(a)))
+                        .plus(v.times(r * Math.sin(a)));
                 pts.add(i == 0 ? start : i == count ? end : p);
             }
             return new Arc(pts, 0.5 * (r0 + r1) * sweep);

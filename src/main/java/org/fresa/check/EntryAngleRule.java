@@ -58,7 +58,8 @@ public record EntryAngleRule() implements Rule {
                 // straight down into a hole made before: its core that does not cut meets no material
                 return null;
             }
-            double side = helix ? s.horizontalMm() : d.minus(axis.times(d.dot(axis))).norm();
+            double side =
+                    helix ? s.horizontalMm() : d.minus(axis.times(d.dot(axis))).norm();
             angle = Math.toDegrees(Math.atan2(drop, side + q));
             if (angle <= tool.entryAngleDeg() + 1e-9) {
                 return null;

@@ -25,8 +25,16 @@ import java.util.Objects;
  *     when the job states none (the floor rule then has nothing to compare)
  * @param breakthroughMm how far below the floor a move may go (a drill's tip and breakthrough)
  */
-public record Limits(double spindleMinRpm, double spindleMaxRpm, double feedMinMmPerMin, double feedMaxMmPerMin,
-        Head head, Map<Integer, ToolLimits> tools, ToolLimits otherTools, Stock stock, double floorZMm,
+public record Limits(
+        double spindleMinRpm,
+        double spindleMaxRpm,
+        double feedMinMmPerMin,
+        double feedMaxMmPerMin,
+        Head head,
+        Map<Integer, ToolLimits> tools,
+        ToolLimits otherTools,
+        Stock stock,
+        double floorZMm,
         double breakthroughMm) {
 
     /** The spindle range of a machine that says nothing else, rpm. */
@@ -43,14 +51,15 @@ public record Limits(double spindleMinRpm, double spindleMaxRpm, double feedMinM
         tools = Map.copyOf(tools);
         Objects.requireNonNull(otherTools, "otherTools");
         if (!(spindleMinRpm > 0 && spindleMinRpm <= spindleMaxRpm && Double.isFinite(spindleMaxRpm))) {
-            throw new IllegalArgumentException("spindle range must be 0 < min <= max: " + spindleMinRpm + ".." + spindleMaxRpm);
+            throw new IllegalArgumentException(
+                    "spindle range must be 0 < min <= max: " + spindleMinRpm + ".." + spindleMaxRpm);
         }
         if (!(feedMinMmPerMin > 0 && feedMinMmPerMin <= feedMaxMmPerMin && Double.isFinite(feedMaxMmPerMin))) {
-            throw new IllegalArgumentException("feed range must be 0 < min <= max: " + feedMinMmPerMin + ".." + feedMaxMmPerMin);
+            throw new IllegalArgumentException(
+                    "feed range must be 0 < min <= max: " + feedMinMmPerMin + ".." + feedMaxMmPerMin);
         }
         Objects.requireNonNull(stock, "stock");
-        if (!(breakthroughMm >= 0) || Double.isInfinite(breakthroughMm)
-                || Double.isInfinite(floorZMm)) {
+        if (!(breakthroughMm >= 0) || Double.isInfinite(breakthroughMm) || Double.isInfinite(floorZMm)) {
             throw new IllegalArgumentException("floor and breakthrough must be numbers, breakthrough >= 0");
         }
     }
@@ -60,29 +69,64 @@ public record Limits(double spindleMinRpm, double spindleMaxRpm, double feedMinM
      * degrees), no material top or floor stated.
      */
     public static Limits milling() {
-        return new Limits(SPINDLE_MIN_RPM, SPINDLE_MAX_RPM, FEED_MIN_MM_PER_MIN, FEED_MAX_MM_PER_MIN, Head.SPINDLE,
-                Map.of(), ToolLimits.notCentreCutting(), Stock.UNKNOWN, Double.NaN, 0);
+        return new Limits(
+                SPINDLE_MIN_RPM,
+                SPINDLE_MAX_RPM,
+                FEED_MIN_MM_PER_MIN,
+                FEED_MAX_MM_PER_MIN,
+                Head.SPINDLE,
+                Map.of(),
+                ToolLimits.notCentreCutting(),
+                Stock.UNKNOWN,
+                Double.NaN,
+                0);
     }
 
     /** A sheet-cutting machine whose jet the words switch on and off (e.g. {@code M07}, {@code M08}). */
     public static Limits sheetCutting(String process, String onWords, String offWords) {
-        return new Limits(SPINDLE_MIN_RPM, SPINDLE_MAX_RPM, FEED_MIN_MM_PER_MIN, FEED_MAX_MM_PER_MIN,
-                new Head(process, Words.group(onWords), Words.group(offWords)), Map.of(),
-                ToolLimits.notCentreCutting(), Stock.UNKNOWN, Double.NaN, 0);
+        return new Limits(
+                SPINDLE_MIN_RPM,
+                SPINDLE_MAX_RPM,
+                FEED_MIN_MM_PER_MIN,
+                FEED_MAX_MM_PER_MIN,
+                new Head(process, Words.group(onWords), Words.group(offWords)),
+                Map.of(),
+                ToolLimits.notCentreCutting(),
+                Stock.UNKNOWN,
+                Double.NaN,
+                0);
     }
 
     /** These limits with tool {@code number} entering as {@code tool} says. */
     public Limits withTool(int number, ToolLimits tool) {
         Map<Integer, ToolLimits> m = new java.util.HashMap<>(tools);
         m.put(number, tool);
-        return new Limits(spindleMinRpm, spindleMaxRpm, feedMinMmPerMin, feedMaxMmPerMin, head, m, otherTools,
-                stock, floorZMm, breakthroughMm);
+        return new Limits(
+                spindleMinRpm,
+                spindleMaxRpm,
+                feedMinMmPerMin,
+                feedMaxMmPerMin,
+                head,
+                m,
+                otherTools,
+                stock,
+                floorZMm,
+                breakthroughMm);
     }
 
     /** These limits with every tool not listed entering as {@code tool} says. */
     public Limits withOtherTools(ToolLimits tool) {
-        return new Limits(spindleMinRpm, spindleMaxRpm, feedMinMmPerMin, feedMaxMmPerMin, head, tools, tool,
-                stock, floorZMm, breakthroughMm);
+        return new Limits(
+                spindleMinRpm,
+                spindleMaxRpm,
+                feedMinMmPerMin,
+                feedMaxMmPerMin,
+                head,
+                tools,
+                tool,
+                stock,
+                floorZMm,
+                breakthroughMm);
     }
 
     /**
@@ -95,20 +139,38 @@ public record Limits(double spindleMinRpm, double spindleMaxRpm, double feedMinM
 
     /** These limits with the stock. */
     public Limits withStock(Stock stock) {
-        return new Limits(spindleMinRpm, spindleMaxRpm, feedMinMmPerMin, feedMaxMmPerMin, head, tools, otherTools,
-                stock, floorZMm, breakthroughMm);
+        return new Limits(
+                spindleMinRpm,
+                spindleMaxRpm,
+                feedMinMmPerMin,
+                feedMaxMmPerMin,
+                head,
+                tools,
+                otherTools,
+                stock,
+                floorZMm,
+                breakthroughMm);
     }
 
     /** These limits with the floor and the breakthrough below it. */
     public Limits withFloor(double floorZMm, double breakthroughMm) {
-        return new Limits(spindleMinRpm, spindleMaxRpm, feedMinMmPerMin, feedMaxMmPerMin, head, tools, otherTools,
-                stock, floorZMm, breakthroughMm);
+        return new Limits(
+                spindleMinRpm,
+                spindleMaxRpm,
+                feedMinMmPerMin,
+                feedMaxMmPerMin,
+                head,
+                tools,
+                otherTools,
+                stock,
+                floorZMm,
+                breakthroughMm);
     }
 
     /** These limits with the machine's own spindle and feed ranges. */
     public Limits withRanges(double spindleMin, double spindleMax, double feedMin, double feedMax) {
-        return new Limits(spindleMin, spindleMax, feedMin, feedMax, head, tools, otherTools, stock,
-                floorZMm, breakthroughMm);
+        return new Limits(
+                spindleMin, spindleMax, feedMin, feedMax, head, tools, otherTools, stock, floorZMm, breakthroughMm);
     }
 
     /** How tool {@code number} may enter the material. */
@@ -122,26 +184,41 @@ public record Limits(double spindleMinRpm, double spindleMaxRpm, double feedMinM
      */
     public record Stock(double minXMm, double minYMm, double minZMm, double maxXMm, double maxYMm, double maxZMm) {
         /** Material everywhere: every descent counts as an entry. */
-        public static final Stock UNKNOWN = new Stock(Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
+        public static final Stock UNKNOWN = new Stock(
+                Double.NEGATIVE_INFINITY,
+                Double.NEGATIVE_INFINITY,
+                Double.NEGATIVE_INFINITY,
+                Double.POSITIVE_INFINITY,
+                Double.POSITIVE_INFINITY,
+                Double.POSITIVE_INFINITY);
 
         public Stock {
-            if (java.util.stream.DoubleStream.of(minXMm, minYMm, minZMm, maxXMm, maxYMm, maxZMm).anyMatch(Double::isNaN)) {
+            if (java.util.stream.DoubleStream.of(minXMm, minYMm, minZMm, maxXMm, maxYMm, maxZMm)
+                    .anyMatch(Double::isNaN)) {
                 throw new IllegalArgumentException("stock sides must be numbers");
             }
         }
 
         /** Material below the height, unbounded elsewhere. */
         public static Stock below(double topZMm) {
-            return new Stock(Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
-                    Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, topZMm);
+            return new Stock(
+                    Double.NEGATIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY,
+                    Double.POSITIVE_INFINITY,
+                    Double.POSITIVE_INFINITY,
+                    topZMm);
         }
 
         /** True when a tool of the radius at the point touches the stock by more than {@code clearMm}. */
         public boolean touches(org.fresa.geom.Vec3 p, double radiusMm, double clearMm) {
             double g = radiusMm - clearMm;
-            return p.x() > minXMm - g && p.x() < maxXMm + g && p.y() > minYMm - g && p.y() < maxYMm + g
-                    && p.z() > minZMm - g && p.z() < maxZMm - clearMm;
+            return p.x() > minXMm - g
+                    && p.x() < maxXMm + g
+                    && p.y() > minYMm - g
+                    && p.y() < maxYMm + g
+                    && p.z() > minZMm - g
+                    && p.z() < maxZMm - clearMm;
         }
     }
 

@@ -23,7 +23,9 @@ public record Pilot(Vec3 tipMm, Vec3 axis, double radiusMm) {
     public Pilot {
         java.util.Objects.requireNonNull(tipMm, "tipMm");
         java.util.Objects.requireNonNull(axis, "axis");
-        if (!(Double.isFinite(tipMm.x() + tipMm.y() + tipMm.z()) && radiusMm > 0 && Double.isFinite(radiusMm)
+        if (!(Double.isFinite(tipMm.x() + tipMm.y() + tipMm.z())
+                && radiusMm > 0
+                && Double.isFinite(radiusMm)
                 && Math.abs(axis.norm() - 1) < 1e-9)) {
             throw new IllegalArgumentException("a pilot hole needs a finite tip, a unit axis and a radius > 0");
         }

@@ -25,8 +25,8 @@ import org.fresa.geom.Vec3;
 public final class ProgramCheck {
 
     /** The rules, in the order each block is asked them. */
-    public static final List<Rule> RULES = List.of(new WordRule(), new SpindleRule(), new EntryAngleRule(),
-            new FloorRule());
+    public static final List<Rule> RULES =
+            List.of(new WordRule(), new SpindleRule(), new EntryAngleRule(), new FloorRule());
 
     private static final java.util.regex.Pattern AXIS_COMMENT = java.util.regex.Pattern.compile(
             "(?i)tool axis (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) is not \\+Z");
@@ -34,8 +34,7 @@ public final class ProgramCheck {
     /** Most points an arc is sampled into (a degree each), against absurd turn counts. */
     private static final int MAX_ARC_POINTS = 100_000;
 
-    private ProgramCheck() {
-    }
+    private ProgramCheck() {}
 
     /**
      * The outcome: the first failure, or none.
@@ -65,14 +64,16 @@ public final class ProgramCheck {
                 end++;
             }
             Words.Block b = Words.block(++count, program.substring(start, end));
-            start = end < n && program.charAt(end) == '\r' && end + 1 < n && program.charAt(end + 1) == '\n' ? end + 2 : end + 1;
+            start = end < n && program.charAt(end) == '\r' && end + 1 < n && program.charAt(end + 1) == '\n'
+                    ? end + 2
+                    : end + 1;
             m.readAxis(b.text());
             Step step = m.execute(b);
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
-                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)),
-                            lines(program, 0));
+                    return new Verdict(
+                            Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), lines(program, 0));
                 }
             }
             if (b.problem().isPresent()) {
@@ -107,8 +108,8 @@ public final class ProgramCheck {
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
-                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)),
-                            count + lines.skipAll());
+                    return new Verdict(
+                            Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), count + lines.skipAll());
                 }
             }
             if (b.problem().isPresent()) {
@@ -187,8 +188,12 @@ public final class ProgramCheck {
                 end++;
             }
             n++;
-            i = end < program.length() && program.charAt(end) == '\r' && end + 1 < program.length()
-                    && program.charAt(end + 1) == '\n' ? end + 2 : end + 1;
+            i = end < program.length()
+                            && program.charAt(end) == '\r'
+                            && end + 1 < program.length()
+                            && program.charAt(end + 1) == '\n'
+                    ? end + 2
+                    : end + 1;
         }
         return n;
     }
@@ -209,8 +214,8 @@ public final class ProgramCheck {
      * Checks a robot program as {@link #of(org.fresa.post.RobotProgram, Limits)} does, each
      * workingstep's motions made with the tool of that number ({@link Limits#tool}).
      */
-    public static Verdict of(org.fresa.post.RobotProgram program, Limits limits,
-            java.util.Map<String, Integer> toolByWorkingstep) {
+    public static Verdict of(
+            org.fresa.post.RobotProgram program, Limits limits, java.util.Map<String, Integer> toolByWorkingstep) {
         Vec3 prev = null;
         List<org.fresa.post.RobotProgram.Motion> motions = program.motions();
         for (org.fresa.post.RobotProgram.Motion m : motions) {
@@ -222,9 +227,17 @@ public final class ProgramCheck {
                 org.fresa.post.RobotProgram.Joint joint = program.joints().get(j);
                 double q = m.joint(j);
                 if (!Double.isFinite(q) || q < joint.minValue() - 1e-6 || q > joint.maxValue() + 1e-6) {
-                    return new Verdict(Optional.of(new Failure(m.index(), where, text, RULES.get(0), "joint "
-                            + joint.name() + " at " + Num.of(q) + " " + joint.type().unit() + ", outside its limits "
-                            + Num.of(joint.minValue()) + ".." + Num.of(joint.maxValue()))), motions.size());
+                    return new Verdict(
+                            Optional.of(new Failure(
+                                    m.index(),
+                                    where,
+                                    text,
+                                    RULES.get(0),
+                                    "joint "
+                                            + joint.name() + " at " + Num.of(q) + " "
+                                            + joint.type().unit() + ", outside its limits "
+                                            + Num.of(joint.minValue()) + ".." + Num.of(joint.maxValue()))),
+                            motions.size());
                 }
             }
             List<Words.Word> words = new ArrayList<>();
@@ -238,9 +251,19 @@ public final class ProgramCheck {
                     && m.role() == org.fresa.post.RobotProgram.PointRole.PART;
             Vec3 axis = m.target().zAxis().times(-1);
             List<Vec3> path = prev == null ? List.of(at) : List.of(prev, at);
-            Step step = new Step(b, NcDialect.LINUXCNC, cutting, path, false, 0, m.spindleRpm() > 0,
-                    m.spindleRpm() > 0 ? m.spindleRpm() : Double.NaN, feed,
-                    toolByWorkingstep.getOrDefault(m.workingstep(), 0), false, axis);
+            Step step = new Step(
+                    b,
+                    NcDialect.LINUXCNC,
+                    cutting,
+                    path,
+                    false,
+                    0,
+                    m.spindleRpm() > 0,
+                    m.spindleRpm() > 0 ? m.spindleRpm() : Double.NaN,
+                    feed,
+                    toolByWorkingstep.getOrDefault(m.workingstep(), 0),
+                    false,
+                    axis);
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
@@ -259,8 +282,8 @@ public final class ProgramCheck {
     static Vec3 axisOfComment(String comment) {
         java.util.regex.Matcher mt = AXIS_COMMENT.matcher(comment);
         if (mt.find()) {
-            Vec3 v = new Vec3(Double.parseDouble(mt.group(1)), Double.parseDouble(mt.group(2)),
-                    Double.parseDouble(mt.group(3)));
+            Vec3 v = new Vec3(
+                    Double.parseDouble(mt.group(1)), Double.parseDouble(mt.group(2)), Double.parseDouble(mt.group(3)));
             return v.norm() > 0.5 ? v.times(1 / v.norm()) : Vec3.UNIT_Z;
         }
         return Vec3.UNIT_Z;
@@ -278,7 +301,8 @@ public final class ProgramCheck {
         }
         Vec3 d = p.get(1).minus(p.get(0));
         double along = d.dot(s.axis());
-        if (along < 0 && d.minus(s.axis().times(along)).norm() <= s.dialect().quantumMm()
+        if (along < 0
+                && d.minus(s.axis().times(along)).norm() <= s.dialect().quantumMm()
                 && Double.isFinite(p.get(1).x() + p.get(1).y() + p.get(1).z())) {
             drilled.add(new Pilot(p.get(1), s.axis(), t.radiusMm()));
         }
@@ -349,7 +373,9 @@ public final class ProgramCheck {
             b.word("S").ifPresent(w -> rpm = w.value());
             b.word("T").ifPresent(w -> selected = (int) Math.max(0, Math.min(Integer.MAX_VALUE, w.value())));
             switchCutting(b);
-            boolean hasAxis = b.word("X").isPresent() || b.word("Y").isPresent() || b.word("Z").isPresent();
+            boolean hasAxis = b.word("X").isPresent()
+                    || b.word("Y").isPresent()
+                    || b.word("Z").isPresent();
             boolean moves = !dwell && motion >= 0 && hasAxis && !(zeroSetting && dialect == NcDialect.SINUMERIK_7M);
             boolean feedMove = moves && motion > 0;
             if (!dwell) {
@@ -386,8 +412,8 @@ public final class ProgramCheck {
                 y = ny;
                 z = nz;
             }
-            Step step = new Step(b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis,
-                    drilled);
+            Step step = new Step(
+                    b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis, drilled);
             madeHole(step, limits, drilled);
             // a tool change and the program's end stop the spindle after the block
             if (b.has("M", 6)) {
@@ -436,8 +462,7 @@ public final class ProgramCheck {
             return Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z);
         }
 
-        private record Arc(List<Vec3> points, double horizontalMm) {
-        }
+        private record Arc(List<Vec3> points, double horizontalMm) {}
 
         /** The arc (or helix) of a G02/G03 block, sampled every degree; I/J/K from the start point. */
         private Arc arc(Words.Block b, Vec3 start, Vec3 end) {

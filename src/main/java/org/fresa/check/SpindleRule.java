@@ -38,8 +38,11 @@ public record SpindleRule() implements Rule {
             return "cutting move with the spindle stopped: no M03/M04 with an S word before it, or M05 since";
         }
         if (s.cuttingOn() && !(s.spindleRpm() >= l.spindleMinRpm() && s.spindleRpm() <= l.spindleMaxRpm())) {
-            return "cutting move with the spindle at " + (Double.isNaN(s.spindleRpm()) ? "no stated speed"
-                    : String.format(Locale.ROOT, "S%s", Num.of(s.spindleRpm()))) + ": the machine turns "
+            return "cutting move with the spindle at "
+                    + (Double.isNaN(s.spindleRpm())
+                            ? "no stated speed"
+                            : String.format(Locale.ROOT, "S%s", Num.of(s.spindleRpm())))
+                    + ": the machine turns "
                     + Num.of(l.spindleMinRpm()) + ".." + Num.of(l.spindleMaxRpm()) + " rpm";
         }
         if (Double.isNaN(s.feedMmPerMin())) {

@@ -22,16 +22,49 @@ import org.fresa.geom.Vec3;
  * @param axis the tool axis, from the tip towards the spindle (+Z unless the post states another)
  * @param pilots the holes the program went straight down before this block ({@link Pilot})
  */
-public record Step(Words.Block block, NcDialect dialect, boolean feedMove, List<Vec3> path, boolean arcInPlane,
-        double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell, Vec3 axis,
+public record Step(
+        Words.Block block,
+        NcDialect dialect,
+        boolean feedMove,
+        List<Vec3> path,
+        boolean arcInPlane,
+        double horizontalMm,
+        boolean cuttingOn,
+        double spindleRpm,
+        double feedMmPerMin,
+        int tool,
+        boolean dwell,
+        Vec3 axis,
         List<Pilot> pilots) {
 
     /** A step with no holes made before it. */
-    public Step(Words.Block block, NcDialect dialect, boolean feedMove, List<Vec3> path, boolean arcInPlane,
-            double horizontalMm, boolean cuttingOn, double spindleRpm, double feedMmPerMin, int tool, boolean dwell,
+    public Step(
+            Words.Block block,
+            NcDialect dialect,
+            boolean feedMove,
+            List<Vec3> path,
+            boolean arcInPlane,
+            double horizontalMm,
+            boolean cuttingOn,
+            double spindleRpm,
+            double feedMmPerMin,
+            int tool,
+            boolean dwell,
             Vec3 axis) {
-        this(block, dialect, feedMove, path, arcInPlane, horizontalMm, cuttingOn, spindleRpm, feedMmPerMin, tool, dwell,
-                axis, List.of());
+        this(
+                block,
+                dialect,
+                feedMove,
+                path,
+                arcInPlane,
+                horizontalMm,
+                cuttingOn,
+                spindleRpm,
+                feedMmPerMin,
+                tool,
+                dwell,
+                axis,
+                List.of());
     }
 
     public Step {

@@ -49,7 +49,8 @@ public record WordRule() implements Rule {
                 if (s.dwell() && (w.address().equals("X"))) {
                     return time(v);
                 }
-                return Math.abs(v * s.dialect().mmPerUnit()) <= MAX_COORDINATE_MM ? null
+                return Math.abs(v * s.dialect().mmPerUnit()) <= MAX_COORDINATE_MM
+                        ? null
                         : "coordinates lie within " + Num.of(MAX_COORDINATE_MM) + " mm of the zero";
             case "A", "B", "C":
                 return Math.abs(v) <= MAX_ANGLE_DEG ? null : "rotary axes within " + Num.of(MAX_ANGLE_DEG) + " degrees";
@@ -57,10 +58,13 @@ public record WordRule() implements Rule {
                 if (s.dwell()) {
                     return time(v);
                 }
-                return v >= l.feedMinMmPerMin() && v <= l.feedMaxMmPerMin() ? null
-                        : "the feed rate is " + Num.of(l.feedMinMmPerMin()) + ".." + Num.of(l.feedMaxMmPerMin()) + " mm/min";
+                return v >= l.feedMinMmPerMin() && v <= l.feedMaxMmPerMin()
+                        ? null
+                        : "the feed rate is " + Num.of(l.feedMinMmPerMin()) + ".." + Num.of(l.feedMaxMmPerMin())
+                                + " mm/min";
             case "S":
-                return v >= l.spindleMinRpm() && v <= l.spindleMaxRpm() ? null
+                return v >= l.spindleMinRpm() && v <= l.spindleMaxRpm()
+                        ? null
                         : "the spindle turns " + Num.of(l.spindleMinRpm()) + ".." + Num.of(l.spindleMaxRpm()) + " rpm";
             case "P":
                 return s.dwell() ? time(v) : integer(v, 0, 99_999, "P (turns, output numbers)");
@@ -86,7 +90,8 @@ public record WordRule() implements Rule {
     }
 
     private static String integer(double v, double min, double max, String what) {
-        return v == Math.rint(v) && v >= min && v <= max ? null
+        return v == Math.rint(v) && v >= min && v <= max
+                ? null
                 : what + " are whole numbers " + Num.of(min) + ".." + Num.of(max);
     }
 }

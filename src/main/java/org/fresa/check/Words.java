@@ -16,8 +16,7 @@ public final class Words {
     /** Most characters of a number a control reads; longer ones are refused, whatever their value. */
     static final int MAX_NUMBER_CHARS = 16;
 
-    private Words() {
-    }
+    private Words() {}
 
     /**
      * One address word.
@@ -58,7 +57,9 @@ public final class Words {
 
         /** The block's N number as written, or "line L". */
         public String label() {
-            return word("N").map(w -> "block N" + w.text() + " (line " + line + ")").orElse("line " + line);
+            return word("N")
+                    .map(w -> "block N" + w.text() + " (line " + line + ")")
+                    .orElse("line " + line);
         }
     }
 
@@ -137,8 +138,13 @@ public final class Words {
                 return new Block(line, text, words, Optional.of("address " + address + " without a number"));
             }
             if (num.length() > MAX_NUMBER_CHARS) {
-                return new Block(line, text, words, Optional.of("word " + address + num + " has " + num.length()
-                        + " characters: no control reads a number that long (at most " + MAX_NUMBER_CHARS + ")"));
+                return new Block(
+                        line,
+                        text,
+                        words,
+                        Optional.of("word " + address + num + " has " + num.length()
+                                + " characters: no control reads a number that long (at most " + MAX_NUMBER_CHARS
+                                + ")"));
             }
             words.add(new Word(address, Double.parseDouble(num), num));
         }

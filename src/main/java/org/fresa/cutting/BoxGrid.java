@@ -20,6 +20,7 @@ final class BoxGrid {
     private int[] big = new int[0];
     /** Per id, the query that last returned it (so an id is returned once per query). */
     private int[] stamp = new int[64];
+
     private int query;
     private int[] found = new int[64];
     private int nFound;

@@ -39,7 +39,12 @@ public final class Chainer {
      * @param junctions nodes where more than two element ends meet
      * @param gaps the gaps closed between open chains (wider than the joint tolerance)
      */
-    public record Chains(List<Contour> closed, List<List<Curve2>> open, int duplicates, int zeroLength, int junctions,
+    public record Chains(
+            List<Contour> closed,
+            List<List<Curve2>> open,
+            int duplicates,
+            int zeroLength,
+            int junctions,
             List<Gap> gaps) {
         public Chains {
             closed = List.copyOf(closed);
@@ -54,11 +59,9 @@ public final class Chainer {
      * @param at the middle of the gap (mm)
      * @param widthMm the distance between the two ends joined
      */
-    public record Gap(Vec2 at, double widthMm) {
-    }
+    public record Gap(Vec2 at, double widthMm) {}
 
-    private Chainer() {
-    }
+    private Chainer() {}
 
     /**
      * Chains at one tolerance: ends within {@code tolMm} are joined, elements shorter than it
@@ -83,8 +86,10 @@ public final class Chainer {
         List<Curve2> work = new ArrayList<>(curves.size());
         int zero = 0;
         for (Curve2 c : curves) {
-            if (c instanceof Arc2 a && a.isFullCircle() ? a.radius() <= tol : c.start().distance(c.end()) <= tol
-                    && !(c instanceof Arc2 a2 && Math.abs(a2.sweepRad()) > Math.PI)) {
+            if (c instanceof Arc2 a && a.isFullCircle()
+                    ? a.radius() <= tol
+                    : c.start().distance(c.end()) <= tol
+                            && !(c instanceof Arc2 a2 && Math.abs(a2.sweepRad()) > Math.PI)) {
                 zero++;
             } else {
                 work.add(c);
@@ -141,8 +146,8 @@ public final class Chainer {
      * The second step: each open chain stands for a segment from its start to its end, and the
      * segments are chained as elements are, at the gap tolerance.
      */
-    private static List<List<Curve2>> joinAcrossGaps(List<List<Curve2>> open, double tol, double gap,
-            List<Contour> closed, List<Gap> gaps, int[] junctions) {
+    private static List<List<Curve2>> joinAcrossGaps(
+            List<List<Curve2>> open, double tol, double gap, List<Contour> closed, List<Gap> gaps, int[] junctions) {
         List<Curve2> proxies = new ArrayList<>(open.size());
         for (List<Curve2> o : open) {
             proxies.add(new Segment2(o.get(0).start(), o.get(o.size() - 1).end()));
@@ -177,8 +182,13 @@ public final class Chainer {
                     gapBetween(a, b, tol, found);
                 }
             }
-            if (g.closed || (g.links.size() == 1 && list.get(0).start().distance(list.get(list.size() - 1).end()) <= gap
-                    && list.size() > 1)) {
+            if (g.closed
+                    || (g.links.size() == 1
+                            && list.get(0)
+                                            .start()
+                                            .distance(list.get(list.size() - 1).end())
+                                    <= gap
+                            && list.size() > 1)) {
                 gapBetween(list.get(list.size() - 1).end(), list.get(0).start(), tol, found);
                 closed.add(new Contour(snap(list, true)));
                 gaps.addAll(found);
@@ -197,8 +207,7 @@ public final class Chainer {
     }
 
     /** A chain grown from one element: links are index * 2 + (1 when reversed), in travel order. */
-    private record Grown(Deque<Long> links, boolean closed) {
-    }
+    private record Grown(Deque<Long> links, boolean closed) {}
 
     /** Grows a chain from element i both ways, each step taking the nearest free end within tol. */
     private static Grown grow(int i, List<Curve2> work, boolean[] used, EndIndex index, double tol, int[] junctions) {
@@ -298,8 +307,8 @@ public final class Chainer {
     }
 
     private static boolean isClosedAlone(Curve2 c, double tol) {
-        return c instanceof Arc2 a && (a.isFullCircle() || (a.start().distance(a.end()) <= tol
-                && Math.abs(a.sweepRad()) > Math.PI));
+        return c instanceof Arc2 a
+                && (a.isFullCircle() || (a.start().distance(a.end()) <= tol && Math.abs(a.sweepRad()) > Math.PI));
     }
 
     private static Curve2 closeArc(Curve2 c) {
@@ -363,7 +372,8 @@ public final class Chainer {
         if (s.equals(e) || Math.abs(sweep) > 2 * Math.PI - 1e-6) {
             return new Arc2(a.center(), s, e, a.ccw());
         }
-        // the centre of the chord s-e seen under the same sweep: mid + left normal * L (1 - b^2) / (4 b), b = tan(sweep / 4)
+        // the centre of the chord s-e seen under the same sweep:
+        // mid + left normal * L (1 - b^2) / (4 b), b = tan(sweep / 4)
         double b = Math.tan(sweep / 4);
         Vec2 chord = e.minus(s);
         Vec2 centre = s.interpolate(e, 0.5).plus(chord.leftNormal().times((1 - b * b) / (4 * b)));
@@ -436,8 +446,10 @@ public final class Chainer {
         }
 
         void add(Vec2 p, int index, boolean isEnd) {
-            grid.computeIfAbsent(pack((long) Math.floor(p.x() / cell), (long) Math.floor(p.y() / cell)),
-                    k -> new ArrayList<>(2)).add(new long[] {index, isEnd ? 1 : 0});
+            grid.computeIfAbsent(
+                            pack((long) Math.floor(p.x() / cell), (long) Math.floor(p.y() / cell)),
+                            k -> new ArrayList<>(2))
+                    .add(new long[] {index, isEnd ? 1 : 0});
         }
 
         /**

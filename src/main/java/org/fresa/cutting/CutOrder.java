@@ -35,6 +35,7 @@ final class CutOrder {
     private final int[][] after;
     /** For each cut: the cuts that must come before it (the cuts inside its contour). */
     private final int[][] before;
+
     private final int n;
     /** Moves looked at so far (a rapid compared each), the measure of the work budget. */
     private long work;

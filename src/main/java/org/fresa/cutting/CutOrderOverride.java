@@ -44,7 +44,8 @@ public record CutOrderOverride(List<Cut> cuts) {
             Objects.requireNonNull(contour, "contour");
             Objects.requireNonNull(atMm, "atMm");
             Objects.requireNonNull(startMm, "startMm");
-            if (!Double.isFinite(atMm.x() + atMm.y()) || startMm.map(s -> !Double.isFinite(s.x() + s.y())).orElse(false)) {
+            if (!Double.isFinite(atMm.x() + atMm.y())
+                    || startMm.map(s -> !Double.isFinite(s.x() + s.y())).orElse(false)) {
                 throw new IllegalArgumentException("a cut's reference and start points must be finite");
             }
         }

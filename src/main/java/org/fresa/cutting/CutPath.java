@@ -18,7 +18,13 @@ import org.fresa.geom.Vec2;
  * @param tail overcut then lead-out, after the path is closed
  * @param compensation 0 none (path already offset), 41 controller keeps the tool left, 42 right
  */
-public record CutPath(String label, boolean outer, Contour part, Contour path, List<Curve2> leadIn, List<Curve2> tail,
+public record CutPath(
+        String label,
+        boolean outer,
+        Contour part,
+        Contour path,
+        List<Curve2> leadIn,
+        List<Curve2> tail,
         int compensation) {
 
     public CutPath {
@@ -34,7 +40,9 @@ public record CutPath(String label, boolean outer, Contour part, Contour path, L
 
     /** Where the jet is switched off. */
     public Vec2 exit() {
-        return tail.isEmpty() ? path.get(path.size() - 1).end() : tail.get(tail.size() - 1).end();
+        return tail.isEmpty()
+                ? path.get(path.size() - 1).end()
+                : tail.get(tail.size() - 1).end();
     }
 
     /** Every feed curve in order. */

@@ -1,12 +1,12 @@
 package org.fresa.cutting;
 
-import java.util.List;
-import org.fresa.geom.Contour;
-import org.fresa.geom.Curve2;
 import java.util.ArrayList;
 import java.util.Iterator;
+import java.util.List;
 import java.util.NoSuchElementException;
 import org.fresa.geom.Arc2;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
@@ -37,9 +37,20 @@ import org.fresa.model.ToolpathSection;
  * than the plan itself. {@link #sections()} makes it one pierce at a time as the post writes it;
  * {@link #toolpath()} makes it whole, for a drawing of the sheet or a test.
  */
-public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> holes, List<List<Curve2>> open,
-        List<Vec2> invalidVertices, List<String> warnings, List<Contour> uncut, int duplicates, int zeroLength,
-        List<List<Vec2>> rapids, List<NotCut> notCut, double feedMmPerMin, double kerfMm) {
+public record CutPlan(
+        List<CutPath> cuts,
+        List<Contour> outers,
+        List<Contour> holes,
+        List<List<Curve2>> open,
+        List<Vec2> invalidVertices,
+        List<String> warnings,
+        List<Contour> uncut,
+        int duplicates,
+        int zeroLength,
+        List<List<Vec2>> rapids,
+        List<NotCut> notCut,
+        double feedMmPerMin,
+        double kerfMm) {
 
     /**
      * A closed contour left uncut.
@@ -48,8 +59,7 @@ public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> ho
      * @param contour the drawn contour
      * @param reason why, in the planner's words ("is too small for a 2.000 mm kerf")
      */
-    public record NotCut(String label, Contour contour, String reason) {
-    }
+    public record NotCut(String label, Contour contour, String reason) {}
 
     public CutPlan {
         cuts = List.copyOf(cuts);
@@ -134,8 +144,8 @@ public record CutPlan(List<CutPath> cuts, List<Contour> outers, List<Contour> ho
                 }
             } else {
                 Arc2 a = (Arc2) cv;
-                moves.add(new Move.Circular(Vec3.of(a.end(), 0), Vec3.of(a.center(), 0), Vec3.UNIT_Z, a.ccw(), 0,
-                        feedMmPerMin));
+                moves.add(new Move.Circular(
+                        Vec3.of(a.end(), 0), Vec3.of(a.center(), 0), Vec3.UNIT_Z, a.ccw(), 0, feedMmPerMin));
             }
         }
         return new ToolpathSection(c.label(), Vec3.UNIT_Z, Math.max(kerfMm, 1e-3), 1, 0, at, moves);

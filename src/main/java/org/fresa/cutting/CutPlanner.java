@@ -42,8 +42,7 @@ public final class CutPlanner {
      */
     static final long ORDER_MAX_WORK = 45_000_000L;
 
-    private CutPlanner() {
-    }
+    private CutPlanner() {}
 
     /** A closed contour with its place in the containment tree. */
     private static final class Node {
@@ -68,7 +67,7 @@ public final class CutPlanner {
     }
 
     public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o) {
-        return plan(layers, o, (f, what) -> { });
+        return plan(layers, o, (f, what) -> {});
     }
 
     /** How far the planning is: a fraction from 0 to 1 and the step under way, in the planner's words. */
@@ -88,8 +87,8 @@ public final class CutPlanner {
      *
      * @throws CutOrderOverride.Refused when the override cuts a contour before one inside it
      */
-    public static CutPlan plan(Map<String, List<Curve2>> layers, CuttingOptions o, CutOrderOverride override,
-            Progress progress) {
+    public static CutPlan plan(
+            Map<String, List<Curve2>> layers, CuttingOptions o, CutOrderOverride override, Progress progress) {
         progress.at(0, "chaining the drawing into contours");
         List<String> warnings = new ArrayList<>();
         List<Contour> closed = new ArrayList<>();
@@ -100,7 +99,8 @@ public final class CutPlanner {
         List<Chainer.Gap> gaps = new ArrayList<>();
         double joint = Math.min(CuttingOptions.JOINT_MM, o.gapToleranceMm());
         for (Map.Entry<String, List<Curve2>> e : layers.entrySet()) {
-            Chainer.Chains ch = o.paperMode() ? Chainer.chainPaper(e.getValue(), 1e-4)
+            Chainer.Chains ch = o.paperMode()
+                    ? Chainer.chainPaper(e.getValue(), 1e-4)
                     : Chainer.chain(e.getValue(), joint, o.gapToleranceMm());
             closed.addAll(ch.closed());
             open.addAll(ch.open());
@@ -110,8 +110,12 @@ public final class CutPlanner {
             gaps.addAll(ch.gaps());
         }
         for (Chainer.Gap g : gaps) {
-            warnings.add(String.format(Locale.ROOT, "gap of %.4f mm between two ends closed at (%.3f, %.3f)",
-                    g.widthMm(), g.at().x(), g.at().y()));
+            warnings.add(String.format(
+                    Locale.ROOT,
+                    "gap of %.4f mm between two ends closed at (%.3f, %.3f)",
+                    g.widthMm(),
+                    g.at().x(),
+                    g.at().y()));
         }
         if (dups > 0) {
             warnings.add(dups + " duplicate elements removed");
@@ -135,11 +139,22 @@ public final class CutPlanner {
             if (ends.size() <= 4000) {
                 // the gap tolerance that would join both ends to something: the farther of their nearest other ends
                 double need = Math.max(nearestOther(ends, 2 * k), nearestOther(ends, 2 * k + 1));
-                why = String.format(Locale.ROOT, "its ends are %.4g mm from the nearest other end (a gap tolerance of"
-                        + " %.4g mm would join them)", need, need * 1.001);
+                why = String.format(
+                        Locale.ROOT,
+                        "its ends are %.4g mm from the nearest other end (a gap tolerance of"
+                                + " %.4g mm would join them)",
+                        need,
+                        need * 1.001);
             }
-            warnings.add(String.format(Locale.ROOT, "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
-                    chain.size(), a.x(), a.y(), b.x(), b.y(), why));
+            warnings.add(String.format(
+                    Locale.ROOT,
+                    "open chain of %d elements from (%.3f, %.3f) to (%.3f, %.3f) not cut: %s",
+                    chain.size(),
+                    a.x(),
+                    a.y(),
+                    b.x(),
+                    b.y(),
+                    why));
         }
         progress.at(0.1, "nesting " + closed.size() + " contours into parts and holes");
         List<Node> nodes = classify(closed, o.paperMode());
@@ -152,7 +167,8 @@ public final class CutPlanner {
         for (Curve2 c : all) {
             ext = ext == null ? c.bounds() : ext.union(c.bounds());
         }
-        double cell = ext == null ? 10 : Math.max(1, Math.sqrt(ext.width() * ext.height() / Math.max(1, all.size())) * 2);
+        double cell =
+                ext == null ? 10 : Math.max(1, Math.sqrt(ext.width() * ext.height() / Math.max(1, all.size())) * 2);
         CurveGrid grid = new CurveGrid(all, cell);
         List<Vec2> invalid = new ArrayList<>();
         List<Contour> uncut = new ArrayList<>();
@@ -168,30 +184,46 @@ public final class CutPlanner {
         int done = 0;
         for (Node n : nodes) {
             if (++done % 5000 == 0) {
-                progress.at(0.15 + 0.35 * done / nodes.size(), "offsetting by the kerf and placing leads: contour " + done
-                        + " of " + nodes.size());
+                progress.at(
+                        0.15 + 0.35 * done / nodes.size(),
+                        "offsetting by the kerf and placing leads: contour " + done + " of " + nodes.size());
             }
             boolean outer = n.outer();
             (outer ? outers : holes).add(n.contour);
-            String label = outer ? "part " + n.index : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
+            String label = outer
+                    ? "part " + n.index
+                    : "part " + n.parent.index + " hole " + (n.parent.children.indexOf(n) + 1);
             if (n.contour.size() > MAX_CONTOUR_ELEMENTS) {
                 // the offset compares every piece with every element: such a contour would not finish
-                notCut(label, n.contour, "has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
-                        + " a contour may have (simplify the drawing)", uncut, notCut, warnings);
+                notCut(
+                        label,
+                        n.contour,
+                        "has " + n.contour.size() + " elements, more than the " + MAX_CONTOUR_ELEMENTS
+                                + " a contour may have (simplify the drawing)",
+                        uncut,
+                        notCut,
+                        warnings);
                 continue;
             }
-            Contour oriented = o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
+            Contour oriented =
+                    o.paperMode() ? n.contour : orient(n.contour, outer ? o.outerClockwise() : o.holesClockwise());
             if (o.paperMode()) {
                 boolean toolLeft = outer ^ oriented.isCcw();
                 if (!outer) {
                     oriented = startNearCorner(oriented);
                 }
-                PaperCrc.Result r = half > 0 ? PaperCrc.offset(oriented, half, toolLeft)
+                PaperCrc.Result r = half > 0
+                        ? PaperCrc.offset(oriented, half, toolLeft)
                         : new PaperCrc.Result(java.util.Optional.of(oriented), List.of());
                 invalid.addAll(r.invalidVertices());
                 for (Vec2 v : r.invalidVertices()) {
-                    warnings.add(String.format(Locale.ROOT, "invalid vertex of %s at (%.3f, %.3f): a corner the kerf"
-                            + " cannot follow on the nozzle's side (round it with an arc in the drawing)", label, v.x(), v.y()));
+                    warnings.add(String.format(
+                            Locale.ROOT,
+                            "invalid vertex of %s at (%.3f, %.3f): a corner the kerf"
+                                    + " cannot follow on the nozzle's side (round it with an arc in the drawing)",
+                            label,
+                            v.x(),
+                            v.y()));
                 }
                 if (r.path().isEmpty()) {
                     notCut(label, n.contour, "collapses under the kerf", uncut, notCut, warnings);
@@ -201,17 +233,30 @@ public final class CutPlanner {
                 continue;
             }
             boolean scrapLeft = outer ? !oriented.isCcw() : oriented.isCcw();
-            List<Contour> loops = half > 0 ? LineArcOffsetter.offset(oriented, outer ? half : -half, TOL) : List.of(oriented);
+            List<Contour> loops =
+                    half > 0 ? LineArcOffsetter.offset(oriented, outer ? half : -half, TOL) : List.of(oriented);
             if (o.controllerCompensation() && !loops.isEmpty()) {
                 // G41/G42 on the drawn contour, when the controller can do it: no arc on the tool's
                 // side tighter than the kerf radius, and an entry move longer than that radius
-                CutPath cp = tighterArc(oriented, scrapLeft, half) ? null
-                        : withLeads(label, outer, n.contour, oriented, scrapLeft, o, half, grid, warnings, scrapLeft ? 41 : 42);
+                CutPath cp = tighterArc(oriented, scrapLeft, half)
+                        ? null
+                        : withLeads(
+                                label,
+                                outer,
+                                n.contour,
+                                oriented,
+                                scrapLeft,
+                                o,
+                                half,
+                                grid,
+                                warnings,
+                                scrapLeft ? 41 : 42);
                 if (cp != null && (!cp.leadIn().isEmpty() || half == 0)) {
                     n.cuts.add(cp);
                     continue;
                 }
-                warnings.add(label + place(n.contour) + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
+                warnings.add(label + place(n.contour)
+                        + ": cannot be cut under G41/G42 (an arc tighter than the kerf radius, or no room"
                         + " for an entry move longer than it); cut on the offset path instead");
             }
             List<Contour> same = new ArrayList<>();
@@ -221,12 +266,18 @@ public final class CutPlanner {
                 }
             }
             if (same.isEmpty()) {
-                notCut(label, n.contour, String.format(Locale.ROOT, "is too small for a %.3f mm kerf", o.kerfMm()), uncut,
-                        notCut, warnings);
+                notCut(
+                        label,
+                        n.contour,
+                        String.format(Locale.ROOT, "is too small for a %.3f mm kerf", o.kerfMm()),
+                        uncut,
+                        notCut,
+                        warnings);
                 continue;
             }
             if (outer && loops.size() > same.size()) {
-                warnings.add(label + place(n.contour) + " has a slot or gap narrower than the kerf: it closes up and is not cut");
+                warnings.add(label + place(n.contour)
+                        + " has a slot or gap narrower than the kerf: it closes up and is not cut");
             }
             if (!outer && same.size() > 1) {
                 warnings.add(label + place(n.contour) + " has a waist narrower than the kerf: cut as " + same.size()
@@ -248,8 +299,20 @@ public final class CutPlanner {
         }
         progress.at(0.75, "routing the rapids around cut parts");
         List<List<Vec2>> rapids = rapids(order, o, warnings);
-        return new CutPlan(order, outers, holes, open, invalid, warnings, uncut, dups, zero, rapids, notCut,
-                o.feedMmPerMin(), o.kerfMm());
+        return new CutPlan(
+                order,
+                outers,
+                holes,
+                open,
+                invalid,
+                warnings,
+                uncut,
+                dups,
+                zero,
+                rapids,
+                notCut,
+                o.feedMmPerMin(),
+                o.kerfMm());
     }
 
     /** The distance from end i to the nearest other end of an open chain (its own other end included). */
@@ -269,7 +332,12 @@ public final class CutPlanner {
         return String.format(Locale.ROOT, " (%.3f x %.3f mm at %.3f, %.3f)", b.width(), b.height(), b.minX(), b.minY());
     }
 
-    private static void notCut(String label, Contour c, String reason, List<Contour> uncut, List<CutPlan.NotCut> notCut,
+    private static void notCut(
+            String label,
+            Contour c,
+            String reason,
+            List<Contour> uncut,
+            List<CutPlan.NotCut> notCut,
             List<String> warnings) {
         uncut.add(c);
         notCut.add(new CutPlan.NotCut(label, c, reason));
@@ -308,14 +376,21 @@ public final class CutPlanner {
                     continue;
                 }
                 long key = Math.min(oi, oj) * 1_000_000L + Math.max(oi, oj);
-                if (reported.contains(key) || org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t).isEmpty()) {
+                if (reported.contains(key)
+                        || org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t)
+                                .isEmpty()) {
                     continue;
                 }
                 reported.add(key);
                 if (reported.size() <= 20) {
-                    Vec2 p = org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t).get(0);
-                    warnings.add(String.format(Locale.ROOT, "two drawn contours cross or touch at (%.3f, %.3f): "
-                            + "their cuts cannot keep the kerf off both", p.x(), p.y()));
+                    Vec2 p = org.fresa.geom.Intersections.of(curves.get(i), curves.get(j), t)
+                            .get(0);
+                    warnings.add(String.format(
+                            Locale.ROOT,
+                            "two drawn contours cross or touch at (%.3f, %.3f): "
+                                    + "their cuts cannot keep the kerf off both",
+                            p.x(),
+                            p.y()));
                 }
             }
         }
@@ -378,7 +453,9 @@ public final class CutPlanner {
     }
 
     private static boolean contains(Box2 a, Box2 b) {
-        return b.minX() >= a.minX() - 1e-9 && b.maxX() <= a.maxX() + 1e-9 && b.minY() >= a.minY() - 1e-9
+        return b.minX() >= a.minX() - 1e-9
+                && b.maxX() <= a.maxX() + 1e-9
+                && b.minY() >= a.minY() - 1e-9
                 && b.maxY() <= a.maxY() + 1e-9;
     }
 
@@ -444,8 +521,17 @@ public final class CutPlanner {
         return false;
     }
 
-    private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
-            CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp) {
+    private static CutPath withLeads(
+            String label,
+            boolean outer,
+            Contour part,
+            Contour path,
+            boolean scrapLeft,
+            CuttingOptions o,
+            double half,
+            CurveGrid grid,
+            List<String> warnings,
+            int comp) {
         return withLeads(label, outer, part, path, scrapLeft, o, half, grid, warnings, comp, null);
     }
 
@@ -453,8 +539,18 @@ public final class CutPlanner {
      * The cut with its leads at the first candidate (curve index, fraction) where they fit; with
      * {@code forced} candidates, null when no lead fits at any of them.
      */
-    private static CutPath withLeads(String label, boolean outer, Contour part, Contour path, boolean scrapLeft,
-            CuttingOptions o, double half, CurveGrid grid, List<String> warnings, int comp, List<double[]> forced) {
+    private static CutPath withLeads(
+            String label,
+            boolean outer,
+            Contour part,
+            Contour path,
+            boolean scrapLeft,
+            CuttingOptions o,
+            double half,
+            CurveGrid grid,
+            List<String> warnings,
+            int comp,
+            List<double[]> forced) {
         double leadIn = comp != 0 ? Math.max(o.leadInMm(), half * 1.5 + 0.1) : o.leadInMm();
         boolean arcs = o.arcLeads() && comp == 0;
         double clearance = Math.max(0, half - 1e-6);
@@ -476,7 +572,8 @@ public final class CutPlanner {
                 List<Curve2> in = leadIn <= 0 ? List.of() : List.of(lead(s, t, len, scrapLeft, arcs, true));
                 // under G41/G42 the programmed entry ends on the part; the tool centre ends half a kerf off it
                 Vec2 side = scrapLeft ? t.leftNormal() : t.leftNormal().negated();
-                List<Curve2> centre = comp == 0 || in.isEmpty() ? in
+                List<Curve2> centre = comp == 0 || in.isEmpty()
+                        ? in
                         : List.of(lead(s.plus(side.times(half)), t, len - half, scrapLeft, false, true));
                 if (!clear(centre, grid, clearance, part, outer)) {
                     continue;
@@ -492,8 +589,14 @@ public final class CutPlanner {
         if (leadIn > 0 && comp == 0) {
             warnings.add(label + ": no room for a lead-in; pierced on the contour");
         }
-        return new CutPath(label, outer, part, started, List.of(), tail(started, o, half, scrapLeft, arcs, grid, clearance,
-                part, outer), comp);
+        return new CutPath(
+                label,
+                outer,
+                part,
+                started,
+                List.of(),
+                tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer),
+                comp);
     }
 
     /**
@@ -524,7 +627,8 @@ public final class CutPlanner {
         for (int i = 0; i < path.size(); i++) {
             (path.get(i) instanceof Segment2 ? lines : arcs).add(i);
         }
-        Comparator<Integer> byLength = Comparator.comparingDouble(i -> -path.get(i).length());
+        Comparator<Integer> byLength =
+                Comparator.comparingDouble(i -> -path.get(i).length());
         lines.sort(byLength);
         arcs.sort(byLength);
         List<double[]> out = new ArrayList<>();
@@ -599,8 +703,16 @@ public final class CutPlanner {
         return true;
     }
 
-    private static List<Curve2> tail(Contour path, CuttingOptions o, double half, boolean scrapLeft, boolean arcs,
-            CurveGrid grid, double clearance, Contour part, boolean outer) {
+    private static List<Curve2> tail(
+            Contour path,
+            CuttingOptions o,
+            double half,
+            boolean scrapLeft,
+            boolean arcs,
+            CurveGrid grid,
+            double clearance,
+            Contour part,
+            boolean outer) {
         List<Curve2> tail = new ArrayList<>();
         double left = o.overcutMm();
         for (int k = 0; k < path.size() && left > 1e-9; k++) {
@@ -613,8 +725,12 @@ public final class CutPlanner {
                 left = 0;
             }
         }
-        Vec2 e = tail.isEmpty() ? path.get(path.size() - 1).end() : tail.get(tail.size() - 1).end();
-        Vec2 t = tail.isEmpty() ? path.get(path.size() - 1).endTangent() : tail.get(tail.size() - 1).endTangent();
+        Vec2 e = tail.isEmpty()
+                ? path.get(path.size() - 1).end()
+                : tail.get(tail.size() - 1).end();
+        Vec2 t = tail.isEmpty()
+                ? path.get(path.size() - 1).endTangent()
+                : tail.get(tail.size() - 1).endTangent();
         if (o.leadOutMm() > 0 && !o.paperMode()) {
             for (double scale : new double[] {1, 0.5, 0.25}) {
                 Curve2 out = lead(e, t, o.leadOutMm() * scale, scrapLeft, arcs, false);
@@ -639,7 +755,8 @@ public final class CutPlanner {
         while (!internal.isEmpty()) {
             Node best = null;
             for (Node n : internal) {
-                if (best == null || n.box.center().distance(at) < best.box.center().distance(at)) {
+                if (best == null
+                        || n.box.center().distance(at) < best.box.center().distance(at)) {
                     best = n;
                 }
             }
@@ -733,8 +850,7 @@ public final class CutPlanner {
         if (co.travel(nn) < co.travel(seq)) {
             seq = nn;
         }
-        return withStartPoints(cuts, seq, before, Math.min(ORDER_MAX_WORK, 15_000_000L + 1_000L * cuts.size()),
-                pinned);
+        return withStartPoints(cuts, seq, before, Math.min(ORDER_MAX_WORK, 15_000_000L + 1_000L * cuts.size()), pinned);
     }
 
     /**
@@ -745,14 +861,15 @@ public final class CutPlanner {
      * nearest point of the nearest cut whose inner cuts are done. So the travel is never longer
      * than that tour's.
      */
-    private static List<CutPath> withStartPoints(List<CutPath> cuts, int[] seq, List<int[]> before, long maxWork,
-            java.util.Set<String> pinned) {
+    private static List<CutPath> withStartPoints(
+            List<CutPath> cuts, int[] seq, List<int[]> before, long maxWork, java.util.Set<String> pinned) {
         int n = cuts.size();
         boolean[] free = new boolean[n];
         boolean any = false;
         for (int i = 0; i < n; i++) {
             CutPath c = cuts.get(i);
-            free[i] = c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0 && !pinned.contains(c.label());
+            free[i] =
+                    c.leadIn().isEmpty() && c.tail().isEmpty() && c.compensation() == 0 && !pinned.contains(c.label());
             any |= free[i];
         }
         if (!any) {
@@ -835,7 +952,13 @@ public final class CutPlanner {
     }
 
     private static CutPath restarted(CutPath c, PathPoints.OnPath at) {
-        return new CutPath(c.label(), c.outer(), c.part(), PathPoints.restart(c.path(), at), c.leadIn(), c.tail(),
+        return new CutPath(
+                c.label(),
+                c.outer(),
+                c.part(),
+                PathPoints.restart(c.path(), at),
+                c.leadIn(),
+                c.tail(),
                 c.compensation());
     }
 
@@ -886,8 +1009,7 @@ public final class CutPlanner {
     // ------------------------------------------------------------------ the planner's own order
 
     /** A cut of the override and the contour it names. */
-    private record Asked(CutOrderOverride.Cut cut, Node node) {
-    }
+    private record Asked(CutOrderOverride.Cut cut, Node node) {}
 
     /**
      * The contours the override names, in its order: each the contour whose drawn outline passes
@@ -939,8 +1061,8 @@ public final class CutPlanner {
      * stays and a warning says so. Returns the labels of the cuts so started, which the automatic
      * order must not move.
      */
-    private static java.util.Set<String> startsAsked(List<Asked> asked, CuttingOptions o, double half, CurveGrid grid,
-            List<String> warnings) {
+    private static java.util.Set<String> startsAsked(
+            List<Asked> asked, CuttingOptions o, double half, CurveGrid grid, List<String> warnings) {
         java.util.Set<String> pinned = new java.util.HashSet<>();
         for (Asked a : asked) {
             if (a.cut().startMm().isEmpty() || a.node().cuts.isEmpty()) {
@@ -951,8 +1073,9 @@ public final class CutPlanner {
             int k = 0;
             for (int i = 1; i < cuts.size(); i++) {
                 if (cuts.get(i).label().equals(a.cut().contour())
-                        || cuts.get(i).path().distanceTo(want) < cuts.get(k).path().distanceTo(want)
-                        && !cuts.get(k).label().equals(a.cut().contour())) {
+                        || cuts.get(i).path().distanceTo(want)
+                                        < cuts.get(k).path().distanceTo(want)
+                                && !cuts.get(k).label().equals(a.cut().contour())) {
                     k = i;
                 }
             }
@@ -962,8 +1085,13 @@ public final class CutPlanner {
             }
             CutPath s = startedAt(c, want, o, half, grid, warnings);
             if (s == null) {
-                warnings.add(String.format(Locale.ROOT, "cut order: no room for a lead at the start (%.3f, %.3f) asked for"
-                        + " %s: started where the planner chose", want.x(), want.y(), c.label()));
+                warnings.add(String.format(
+                        Locale.ROOT,
+                        "cut order: no room for a lead at the start (%.3f, %.3f) asked for"
+                                + " %s: started where the planner chose",
+                        want.x(),
+                        want.y(),
+                        c.label()));
                 continue;
             }
             cuts.set(k, s);
@@ -973,8 +1101,8 @@ public final class CutPlanner {
     }
 
     /** The cut started at the point of its path nearest p, its leads there; null when they do not fit. */
-    private static CutPath startedAt(CutPath c, Vec2 p, CuttingOptions o, double half, CurveGrid grid,
-            List<String> warnings) {
+    private static CutPath startedAt(
+            CutPath c, Vec2 p, CuttingOptions o, double half, CurveGrid grid, List<String> warnings) {
         PathPoints.OnPath at = PathPoints.nearest(c.path(), p);
         if (o.paperMode()) {
             return restarted(c, at);
@@ -987,7 +1115,17 @@ public final class CutPlanner {
             cand = new double[] {(at.index() + 1) % c.path().size(), 0};
         }
         boolean scrapLeft = c.outer() ? !c.path().isCcw() : c.path().isCcw();
-        return withLeads(c.label(), c.outer(), c.part(), c.path(), scrapLeft, o, half, grid, warnings, c.compensation(),
+        return withLeads(
+                c.label(),
+                c.outer(),
+                c.part(),
+                c.path(),
+                scrapLeft,
+                o,
+                half,
+                grid,
+                warnings,
+                c.compensation(),
                 List.<double[]>of(cand));
     }
 
@@ -996,8 +1134,13 @@ public final class CutPlanner {
      * each preceded by the cuts not named that lie inside it; the other cuts not named after them,
      * in the automatic order. Refused when a contour comes before one inside it.
      */
-    private static List<CutPath> overridden(List<CutPath> order, List<Asked> asked, List<Node> nodes, CuttingOptions o,
-            java.util.Set<String> pinned, List<String> warnings) {
+    private static List<CutPath> overridden(
+            List<CutPath> order,
+            List<Asked> asked,
+            List<Node> nodes,
+            CuttingOptions o,
+            java.util.Set<String> pinned,
+            List<String> warnings) {
         Map<String, CutPath> byLabel = new HashMap<>();
         for (CutPath c : order) {
             byLabel.put(c.label(), c);
@@ -1058,13 +1201,17 @@ public final class CutPlanner {
             out.add(byLabel.get(l));
         }
         refuseInnerAfterOuter(out, nodeOf);
-        // cuts without leads and without a start of the planner's own: started where the rapids of the new order are shortest
+        // cuts without leads and without a start of the planner's own: started where the rapids
+        // of the new order are shortest
         CutPath[] cs = out.toArray(new CutPath[0]);
         boolean[] free = new boolean[cs.length];
         int[] seq = new int[cs.length];
         for (int i = 0; i < cs.length; i++) {
             seq[i] = i;
-            free[i] = !o.paperMode() && cs[i].leadIn().isEmpty() && cs[i].tail().isEmpty() && cs[i].compensation() == 0
+            free[i] = !o.paperMode()
+                    && cs[i].leadIn().isEmpty()
+                    && cs[i].tail().isEmpty()
+                    && cs[i].compensation() == 0
                     && !pinned.contains(cs[i].label());
         }
         placeStarts(cs, seq, free);
@@ -1086,9 +1233,17 @@ public final class CutPlanner {
             if (outer != null && outer < i) {
                 CutPath o = order.get(outer);
                 CutPath c = order.get(i);
-                throw new CutOrderOverride.Refused(String.format(Locale.ROOT, "the cut order cuts %s%s (cut %d) before"
-                        + " %s%s (cut %d) inside it: whatever lies inside a contour is cut before it, so nothing falls"
-                        + " out uncut", o.label(), place(o.part()), outer + 1, c.label(), place(c.part()), i + 1));
+                throw new CutOrderOverride.Refused(String.format(
+                        Locale.ROOT,
+                        "the cut order cuts %s%s (cut %d) before"
+                                + " %s%s (cut %d) inside it: whatever lies inside a contour is cut before it, so nothing falls"
+                                + " out uncut",
+                        o.label(),
+                        place(o.part()),
+                        outer + 1,
+                        c.label(),
+                        place(c.part()),
+                        i + 1));
             }
         }
     }

@@ -7,7 +7,9 @@ import java.util.Locale;
  * {@link CutProcess}), clockwise or counter-clockwise.
  */
 public enum CutSense {
-    PROCESS, CW, CCW;
+    PROCESS,
+    CW,
+    CCW;
 
     /** The name as written: {@code process}, {@code cw}, {@code ccw}. */
     public String word() {

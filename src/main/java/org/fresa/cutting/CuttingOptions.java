@@ -25,9 +25,20 @@ import java.util.Objects;
  * @param pierceDwellS dwell after switching the jet on
  * @param avoidCutParts route rapid moves around parts already cut free ({@link RapidRouter})
  */
-public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm, double leadOutMm, boolean arcLeads,
-        double overcutMm, double gapToleranceMm, boolean paperMode, boolean controllerCompensation,
-        boolean outerClockwise, boolean holesClockwise, double feedMmPerMin, double pierceDwellS,
+public record CuttingOptions(
+        double kerfMm,
+        CutProcess process,
+        double leadInMm,
+        double leadOutMm,
+        boolean arcLeads,
+        double overcutMm,
+        double gapToleranceMm,
+        boolean paperMode,
+        boolean controllerCompensation,
+        boolean outerClockwise,
+        boolean holesClockwise,
+        double feedMmPerMin,
+        double pierceDwellS,
         boolean avoidCutParts) {
 
     /**
@@ -55,10 +66,11 @@ public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm,
         if (!(kerfMm >= 0) || !(leadInMm >= 0) || !(leadOutMm >= 0) || !(overcutMm >= 0) || !(gapToleranceMm >= 0)) {
             throw new IllegalArgumentException("kerf, leads, overcut and tolerance must be >= 0");
         }
-        if (!(kerfMm <= MAX_KERF_MM) || !(Math.max(leadInMm, Math.max(leadOutMm, overcutMm)) <= MAX_LEAD_MM)
+        if (!(kerfMm <= MAX_KERF_MM)
+                || !(Math.max(leadInMm, Math.max(leadOutMm, overcutMm)) <= MAX_LEAD_MM)
                 || !Double.isFinite(gapToleranceMm)) {
-            throw new IllegalArgumentException("the kerf may be at most " + MAX_KERF_MM + " mm, leads and overcut at most "
-                    + MAX_LEAD_MM + " mm");
+            throw new IllegalArgumentException(
+                    "the kerf may be at most " + MAX_KERF_MM + " mm, leads and overcut at most " + MAX_LEAD_MM + " mm");
         }
         if (!(feedMmPerMin > 0) || !(pierceDwellS >= 0)) {
             throw new IllegalArgumentException("feed must be > 0 and dwell >= 0");
@@ -67,40 +79,131 @@ public record CuttingOptions(double kerfMm, CutProcess process, double leadInMm,
 
     /** The defaults of a process with the given kerf and leads. */
     public static CuttingOptions of(CutProcess p, double kerfMm, double leadInMm, double leadOutMm, boolean arcLeads) {
-        return new CuttingOptions(kerfMm, p, leadInMm, leadOutMm, arcLeads, 0, DEFAULT_GAP_MM, false, false, p.outerClockwise(),
-                p.holesClockwise(), p.feedMmPerMin(), p.pierceDwellS(), true);
+        return new CuttingOptions(
+                kerfMm,
+                p,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                0,
+                DEFAULT_GAP_MM,
+                false,
+                false,
+                p.outerClockwise(),
+                p.holesClockwise(),
+                p.feedMmPerMin(),
+                p.pierceDwellS(),
+                true);
     }
 
     public CuttingOptions withGapTolerance(double mm) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, mm, paperMode,
-                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                overcutMm,
+                mm,
+                paperMode,
+                controllerCompensation,
+                outerClockwise,
+                holesClockwise,
+                feedMmPerMin,
+                pierceDwellS,
+                avoidCutParts);
     }
 
     public CuttingOptions withPaperMode(boolean on) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, on,
-                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                overcutMm,
+                gapToleranceMm,
+                on,
+                controllerCompensation,
+                outerClockwise,
+                holesClockwise,
+                feedMmPerMin,
+                pierceDwellS,
+                avoidCutParts);
     }
 
     /** Leaves the kerf to the controller: G41/G42 on the drawn contour instead of an offset path. */
     public CuttingOptions withControllerCompensation(boolean on) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
-                on, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                overcutMm,
+                gapToleranceMm,
+                paperMode,
+                on,
+                outerClockwise,
+                holesClockwise,
+                feedMmPerMin,
+                pierceDwellS,
+                avoidCutParts);
     }
 
     public CuttingOptions withOvercut(double mm) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, mm, gapToleranceMm, paperMode,
-                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, avoidCutParts);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                mm,
+                gapToleranceMm,
+                paperMode,
+                controllerCompensation,
+                outerClockwise,
+                holesClockwise,
+                feedMmPerMin,
+                pierceDwellS,
+                avoidCutParts);
     }
 
     /** The senses of outer contours and of holes (true: clockwise). */
     public CuttingOptions withDirections(boolean outerCw, boolean holesCw) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
-                controllerCompensation, outerCw, holesCw, feedMmPerMin, pierceDwellS, avoidCutParts);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                overcutMm,
+                gapToleranceMm,
+                paperMode,
+                controllerCompensation,
+                outerCw,
+                holesCw,
+                feedMmPerMin,
+                pierceDwellS,
+                avoidCutParts);
     }
 
     /** Whether rapids detour around parts already cut free. */
     public CuttingOptions withAvoidCutParts(boolean on) {
-        return new CuttingOptions(kerfMm, process, leadInMm, leadOutMm, arcLeads, overcutMm, gapToleranceMm, paperMode,
-                controllerCompensation, outerClockwise, holesClockwise, feedMmPerMin, pierceDwellS, on);
+        return new CuttingOptions(
+                kerfMm,
+                process,
+                leadInMm,
+                leadOutMm,
+                arcLeads,
+                overcutMm,
+                gapToleranceMm,
+                paperMode,
+                controllerCompensation,
+                outerClockwise,
+                holesClockwise,
+                feedMmPerMin,
+                pierceDwellS,
+                on);
     }
 }

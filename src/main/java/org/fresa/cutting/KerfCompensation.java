@@ -7,7 +7,8 @@ import java.util.Locale;
  * the kerf) or {@link #CONTROLLER} (the drawn contour with G41/G42, the kerf left to the controller).
  */
 public enum KerfCompensation {
-    SOFTWARE, CONTROLLER;
+    SOFTWARE,
+    CONTROLLER;
 
     /** The name as written: {@code software}, {@code controller}. */
     public String word() {

@@ -4,7 +4,8 @@ import java.util.Locale;
 
 /** The shape of the lead-in and lead-out: an arc (the default, a tangent entry) or a straight line. */
 public enum LeadShape {
-    ARC, LINE;
+    ARC,
+    LINE;
 
     /** The name as written: {@code arc}, {@code line}. */
     public String word() {

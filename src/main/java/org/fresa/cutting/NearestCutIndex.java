@@ -20,6 +20,7 @@ final class NearestCutIndex {
 
     /** The elements filed under one cut: curves, or none (then its fixed point). */
     private final List<Curve2>[] curves;
+
     private final Vec2[] fixed;
     private final boolean[] open;
     private final double cell;
@@ -29,9 +30,11 @@ final class NearestCutIndex {
     private final int rows;
     /** Cell key to the cuts filed there (an element's cut once per cell it covers). */
     private final Map<Long, int[]> cells = new HashMap<>();
+
     private final Map<Long, Integer> counts = new HashMap<>();
     /** Cuts too large for the grid, looked at by every query. */
     private final List<Integer> big = new ArrayList<>();
+
     private final int[] stamp;
     private int query;
 
@@ -168,7 +171,8 @@ final class NearestCutIndex {
         int px = (int) Math.max(-(1 << 29), Math.min(1 << 29, Math.floor((p.x() - minX) / cell)));
         int py = (int) Math.max(-(1 << 29), Math.min(1 << 29, Math.floor((p.y() - minY) / cell)));
         // rings beyond this one hold no cell of the grid
-        int maxRing = Math.max(Math.max(Math.abs(px), Math.abs(px - cols + 1)), Math.max(Math.abs(py), Math.abs(py - rows + 1)));
+        int maxRing = Math.max(
+                Math.max(Math.abs(px), Math.abs(px - cols + 1)), Math.max(Math.abs(py), Math.abs(py - rows + 1)));
         // a point off the grid (the machine origin, say) starts at the nearest ring that touches it
         int gx = px < 0 ? -px : px >= cols ? px - cols + 1 : 0;
         int gy = py < 0 ? -py : py >= rows ? py - rows + 1 : 0;

@@ -35,8 +35,7 @@ public final class PaperCrc {
 
     private static final Tolerance TOL = new Tolerance(1e-9, 1e-9);
 
-    private PaperCrc() {
-    }
+    private PaperCrc() {}
 
     /**
      * Eq. (1)-(5) corrected: the distance from the corner to the offset corner for edge vectors
@@ -174,7 +173,8 @@ public final class PaperCrc {
         if (a instanceof Segment2 s && b instanceof Segment2 t) {
             Vec2 na = s.direction().normalized().leftNormal().times(side);
             Vec2 nb = t.direction().normalized().leftNormal().times(side);
-            return Intersections.lineLine(s.start().plus(na), s.direction(), t.start().plus(nb), t.direction(), TOL);
+            return Intersections.lineLine(
+                    s.start().plus(na), s.direction(), t.start().plus(nb), t.direction(), TOL);
         }
         if (a instanceof Segment2 s && b instanceof Arc2 t) {
             Vec2 na = s.direction().normalized().leftNormal().times(side);

@@ -18,14 +18,13 @@ final class PathPoints {
 
     /** Shorter pieces than this (mm) are not split off an element: the start moves to its end. */
     private static final double MIN_PIECE_MM = 1e-4;
+
     private static final double GOLDEN = (Math.sqrt(5) - 1) / 2;
 
-    private PathPoints() {
-    }
+    private PathPoints() {}
 
     /** A point on a path: the element, the fraction along it, the point, and what it costs. */
-    record OnPath(int index, double fraction, Vec2 point, double cost) {
-    }
+    record OnPath(int index, double fraction, Vec2 point, double cost) {}
 
     /** The fraction along c of the point of c nearest p. */
     static double nearestFraction(Curve2 c, Vec2 p) {
@@ -38,7 +37,8 @@ final class PathPoints {
         Vec2 d = p.minus(a.center());
         if (d.norm() > 0 && a.radius() > 0 && a.containsAngle(d.angleRad())) {
             double sweep = a.sweepRad();
-            double off = sweep > 0 ? mod2pi(d.angleRad() - a.startAngleRad()) : mod2pi(a.startAngleRad() - d.angleRad());
+            double off =
+                    sweep > 0 ? mod2pi(d.angleRad() - a.startAngleRad()) : mod2pi(a.startAngleRad() - d.angleRad());
             return Math.max(0, Math.min(1, off / Math.abs(sweep)));
         }
         return p.distance(a.start()) <= p.distance(a.end()) ? 0 : 1;
@@ -195,8 +195,11 @@ final class PathPoints {
             if (Math.abs(dl.cross(df)) < 1e-9 && dl.dot(df) > 0) {
                 joined = new Segment2(l.start(), f.end());
             }
-        } else if (last instanceof Arc2 l && first instanceof Arc2 f && l.ccw() == f.ccw()
-                && l.center().distance(f.center()) < 1e-9 && Math.abs(l.radius() - f.radius()) < 1e-9
+        } else if (last instanceof Arc2 l
+                && first instanceof Arc2 f
+                && l.ccw() == f.ccw()
+                && l.center().distance(f.center()) < 1e-9
+                && Math.abs(l.radius() - f.radius()) < 1e-9
                 && Math.abs(l.sweepRad()) + Math.abs(f.sweepRad()) < 2 * Math.PI - 1e-6) {
             joined = new Arc2(l.center(), l.start(), f.end(), l.ccw());
         }

@@ -37,8 +37,7 @@ final class RapidRouter {
      * near the part (the plan holds the path anyway): a sheet of 180 000 parts would hold a hundred
      * megabytes of hull points, when the rapids only ever meet a few thousand parts at a time.
      */
-    private record Obstacle(Contour path, Box2 box) {
-    }
+    private record Obstacle(Contour path, Box2 box) {}
 
     /** The raw and grown hulls of the obstacles used lately: rapids meet the same parts again and again. */
     private final Map<Integer, Vec2[][]> recent = new java.util.LinkedHashMap<>(256, 0.75f, true) {
@@ -253,13 +252,15 @@ final class RapidRouter {
                     continue;
                 }
                 double d = dist[u] + nodes.get(u).distance(nodes.get(v));
-                if (d >= dist[v] || !supporting(nodes.get(u), nodes.get(v), before.get(u), after.get(u))
+                if (d >= dist[v]
+                        || !supporting(nodes.get(u), nodes.get(v), before.get(u), after.get(u))
                         || !supporting(nodes.get(v), nodes.get(u), before.get(v), after.get(v))) {
                     continue;
                 }
                 boolean free = true;
                 for (int i = 0; i < polys.size(); i++) {
-                    if (boxHit(boxes.get(i), nodes.get(u), nodes.get(v)) && crosses(polys.get(i), nodes.get(u), nodes.get(v))) {
+                    if (boxHit(boxes.get(i), nodes.get(u), nodes.get(v))
+                            && crosses(polys.get(i), nodes.get(u), nodes.get(v))) {
                         free = false;
                         break;
                     }
@@ -342,8 +343,10 @@ final class RapidRouter {
     }
 
     private static boolean boxHit(Box2 box, Vec2 a, Vec2 b) {
-        return Math.max(a.x(), b.x()) >= box.minX() && Math.min(a.x(), b.x()) <= box.maxX()
-                && Math.max(a.y(), b.y()) >= box.minY() && Math.min(a.y(), b.y()) <= box.maxY();
+        return Math.max(a.x(), b.x()) >= box.minX()
+                && Math.min(a.x(), b.x()) <= box.maxX()
+                && Math.max(a.y(), b.y()) >= box.minY()
+                && Math.min(a.y(), b.y()) <= box.maxY();
     }
 
     private static Box2 box(Vec2[] poly) {

@@ -8,7 +8,12 @@ import java.util.Optional;
  * or the units given (the command line also takes {@code in} and {@code ft}).
  */
 public enum DrawingUnits {
-    MM(DxfUnits.MM), INCH(DxfUnits.INCH), AUTO(null), CM(DxfUnits.CM), M(DxfUnits.M), FOOT(DxfUnits.FOOT);
+    MM(DxfUnits.MM),
+    INCH(DxfUnits.INCH),
+    AUTO(null),
+    CM(DxfUnits.CM),
+    M(DxfUnits.M),
+    FOOT(DxfUnits.FOOT);
 
     private final DxfUnits units;
 

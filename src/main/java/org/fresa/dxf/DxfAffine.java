@@ -32,8 +32,13 @@ record DxfAffine(double a, double b, double c, double d, double tx, double ty) {
 
     /** this after other: p -> this(other(p)). */
     DxfAffine times(DxfAffine o) {
-        return new DxfAffine(a * o.a + b * o.c, a * o.b + b * o.d, c * o.a + d * o.c, c * o.b + d * o.d,
-                a * o.tx + b * o.ty + tx, c * o.tx + d * o.ty + ty);
+        return new DxfAffine(
+                a * o.a + b * o.c,
+                a * o.b + b * o.d,
+                c * o.a + d * o.c,
+                c * o.b + d * o.d,
+                a * o.tx + b * o.ty + tx,
+                c * o.tx + d * o.ty + ty);
     }
 
     Vec2 apply(Vec2 p) {

@@ -37,11 +37,9 @@ final class DxfArcFitter {
     static final double SMOOTH_RAD = 1e-4;
 
     /** One piece of a curve: the point at each parameter in [u0, u1]. */
-    record Piece(DoubleFunction<Vec2> f, double u0, double u1) {
-    }
+    record Piece(DoubleFunction<Vec2> f, double u0, double u1) {}
 
-    private DxfArcFitter() {
-    }
+    private DxfArcFitter() {}
 
     /** Fits one piece (see {@link #fit(List, boolean, double, List)}). */
     static void fit(DoubleFunction<Vec2> f, double u0, double u1, double tolMm, List<Curve2> out) {
@@ -107,8 +105,17 @@ final class DxfArcFitter {
         return d.normalized();
     }
 
-    private static void fit(Piece p, double ua, Vec2 pa, Vec2 ta, double ub, Vec2 pb, Vec2 tb, double tol,
-            List<Curve2> out, int depth) {
+    private static void fit(
+            Piece p,
+            double ua,
+            Vec2 pa,
+            Vec2 ta,
+            double ub,
+            Vec2 pb,
+            Vec2 tb,
+            double tol,
+            List<Curve2> out,
+            int depth) {
         if (pa.equals(pb)) {
             // a closed piece is split; a vanishing one is left out
             if (depth >= MAX_DEPTH || ua == ub || p.f.apply(0.5 * (ua + ub)).distance(pa) <= tol * 1e-3) {

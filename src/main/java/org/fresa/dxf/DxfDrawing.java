@@ -19,8 +19,13 @@ import org.fresa.geom.Curve2;
  * @param warnings one sentence each: broken entities (by handle and line), unit guesses, limits
  * @param ignored how many entities of each non-geometric type (TEXT, HATCH, ...) were skipped
  */
-public record DxfDrawing(String source, DxfUnits units, double mmPerUnit, Map<String, List<Curve2>> layers,
-        List<String> warnings, Map<String, Integer> ignored) {
+public record DxfDrawing(
+        String source,
+        DxfUnits units,
+        double mmPerUnit,
+        Map<String, List<Curve2>> layers,
+        List<String> warnings,
+        Map<String, Integer> ignored) {
 
     public DxfDrawing {
         Objects.requireNonNull(source, "source");

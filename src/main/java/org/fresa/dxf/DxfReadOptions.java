@@ -12,8 +12,8 @@ import java.util.Optional;
  * @param maxInsertDepth block nesting deeper than this is reported and not expanded
  * @param maxCurves a drawing expanding to more curves is refused (nothing is cut short)
  */
-public record DxfReadOptions(Optional<DxfUnits> units, DxfUnits unitlessAs, double curveToleranceMm,
-        int maxInsertDepth, int maxCurves) {
+public record DxfReadOptions(
+        Optional<DxfUnits> units, DxfUnits unitlessAs, double curveToleranceMm, int maxInsertDepth, int maxCurves) {
 
     public static final DxfReadOptions DEFAULT =
             new DxfReadOptions(Optional.empty(), DxfUnits.MM, 0.001, 16, 2_000_000);

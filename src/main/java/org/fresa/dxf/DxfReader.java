@@ -1,7 +1,6 @@
 package org.fresa.dxf;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -67,17 +66,16 @@ public final class DxfReader {
     private int curveCount;
     /** Entities visited while expanding inserts: bounds the work of nested arrays of empty blocks. */
     private long visits;
+
     private int warningsLeftOut;
     private boolean truncated;
     private Integer insUnits;
     private Integer measurement;
 
     /** One entity: its tags are [first, end) of the tag list, after the (0, TYPE) tag. */
-    private record Entity(String type, int index, int first, int end, List<Entity> children) {
-    }
+    private record Entity(String type, int index, int first, int end, List<Entity> children) {}
 
-    private record Block(String name, Vec2 base, List<Entity> entities) {
-    }
+    private record Block(String name, Vec2 base, List<Entity> entities) {}
 
     private DxfReader(DxfTags tags, DxfReadOptions opt) {
         this.tags = tags;
@@ -96,7 +94,9 @@ public final class DxfReader {
      *     {@link #maxFileBytes()}
      */
     public static DxfDrawing read(Path file, DxfReadOptions opt) throws DxfException, IOException {
-        String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
+        String name = file.getFileName() == null
+                ? file.toString()
+                : file.getFileName().toString();
         try {
             FileChecks.requireInput(file, "a DXF drawing", maxFileBytes());
         } catch (DxfException e) {
@@ -146,8 +146,7 @@ public final class DxfReader {
                     case "TABLES" -> tables(j, end);
                     case "BLOCKS" -> blocks(j, end);
                     case "ENTITIES" -> entities.addAll(entityList(j, end));
-                    default -> {
-                    }
+                    default -> {}
                 }
                 i = end + 1;
             } else {
@@ -164,9 +163,12 @@ public final class DxfReader {
             convert(e, root, null, 0, new ArrayDeque<>());
         }
         if (truncated) {
-            throw new DxfException(tags.source, 0, "the drawing expands to more than " + opt.maxCurves()
-                    + " lines and arcs (the limit of one drawing; ellipses and splines count as the arcs replacing"
-                    + " them): refused rather than cut without the rest; split the drawing");
+            throw new DxfException(
+                    tags.source,
+                    0,
+                    "the drawing expands to more than " + opt.maxCurves()
+                            + " lines and arcs (the limit of one drawing; ellipses and splines count as the arcs replacing"
+                            + " them): refused rather than cut without the rest; split the drawing");
         }
         if (warningsLeftOut > 0) {
             warnings.add(warningsLeftOut + " more warnings like the ones above are left out");
@@ -227,8 +229,7 @@ public final class DxfReader {
                         case 2 -> name = tags.value(j);
                         case 70 -> flags = intOr(tags.value(j), 0);
                         case 62 -> color = intOr(tags.value(j), 7);
-                        default -> {
-                        }
+                        default -> {}
                     }
                 }
                 if (name != null && ((flags & 1) != 0 || color < 0)) {
@@ -257,8 +258,7 @@ public final class DxfReader {
                         case 2 -> name = tags.value(j);
                         case 10 -> bx = blockNumber(j, name);
                         case 20 -> by = blockNumber(j, name);
-                        default -> {
-                        }
+                        default -> {}
                     }
                 }
                 int end = j;
@@ -279,7 +279,9 @@ public final class DxfReader {
             return number(i);
         } catch (BadEntity ex) {
             String where = tags.binary ? tags.where(i) + ": " : "";
-            throw new DxfException(tags.source, tags.binary ? 0 : tags.line(i) + 1,
+            throw new DxfException(
+                    tags.source,
+                    tags.binary ? 0 : tags.line(i) + 1,
                     where + "BLOCK '" + block + "': " + ex.getMessage());
         }
     }
@@ -368,8 +370,10 @@ public final class DxfReader {
         }
         if (!Double.isFinite(d)) {
             String shown = v.length() > 40 ? v.substring(0, 40) + "..." : v;
-            throw new BadEntity("group " + tags.code(i) + " is '" + shown + "': expected " + meaning(tags.code(i))
-                    + " (a finite number)", i);
+            throw new BadEntity(
+                    "group " + tags.code(i) + " is '" + shown + "': expected " + meaning(tags.code(i))
+                            + " (a finite number)",
+                    i);
         }
         return d;
     }
@@ -443,7 +447,9 @@ public final class DxfReader {
     /** The drawing refused at a broken tag, with the line of the value (ASCII) or its byte (binary). */
     private DxfException refused(Entity e, BadEntity ex) {
         String h = str(e, 5, null);
-        String what = e.type + (h != null ? " " + h : "") + (ex.tag == e.index ? "" : " (from " + tags.whereValue(e.index) + ")");
+        String what = e.type
+                + (h != null ? " " + h : "")
+                + (ex.tag == e.index ? "" : " (from " + tags.whereValue(e.index) + ")");
         if (tags.binary) {
             return new DxfException(tags.source, 0, tags.where(ex.tag) + ": " + what + ": " + ex.getMessage());
         }
@@ -465,14 +471,19 @@ public final class DxfReader {
         }
     }
 
-    private void convert(Entity e, DxfAffine t, String insertLayer, int depth, Deque<String> stack) throws DxfException {
+    private void convert(Entity e, DxfAffine t, String insertLayer, int depth, Deque<String> stack)
+            throws DxfException {
         if (truncated) {
             return;
         }
         if (++visits > MAX_VISITS) {
-            throw new DxfException(tags.source, 0, "the drawing's inserts expand to more than " + MAX_VISITS
-                    + " entities (the limit of one drawing; reached at " + describe(e) + "): refused rather than cut"
-                    + " without the rest");
+            throw new DxfException(
+                    tags.source,
+                    0,
+                    "the drawing's inserts expand to more than " + MAX_VISITS
+                            + " entities (the limit of one drawing; reached at " + describe(e)
+                            + "): refused rather than cut"
+                            + " without the rest");
         }
         if (str(e, 67, "0").trim().equals("1")) {
             count("paper space", e);
@@ -515,7 +526,8 @@ public final class DxfReader {
                         sweep = 360;
                     }
                     Vec2 s = c.plus(unit(a0).times(r));
-                    Arc2 arc = sweep == 360 ? new Arc2(c, s, s, true)
+                    Arc2 arc = sweep == 360
+                            ? new Arc2(c, s, s, true)
                             : new Arc2(c, s, c.plus(unit(a0 + sweep).times(r)), true);
                     emitOcs(e, layer, t, arc);
                 }
@@ -626,8 +638,11 @@ public final class DxfReader {
         double a0 = a.startAngleRad();
         double sw = a.sweepRad();
         Vec2 ctr = a.center();
-        List<Curve2> out = DxfArcFitter.fit(List.of(new DxfArcFitter.Piece(
-                u -> t.apply(ctr.plus(Vec2.ofAngle(a0 + sw * u).times(r))), 0, 1)), a.isFullCircle(), opt.curveToleranceMm());
+        List<Curve2> out = DxfArcFitter.fit(
+                List.of(new DxfArcFitter.Piece(
+                        u -> t.apply(ctr.plus(Vec2.ofAngle(a0 + sw * u).times(r))), 0, 1)),
+                a.isFullCircle(),
+                opt.curveToleranceMm());
         for (Curve2 piece : out) {
             add(layer, piece);
         }
@@ -635,7 +650,9 @@ public final class DxfReader {
 
     private void add(String layer, Curve2 c) {
         Box2 b = c.bounds();
-        if (!(Math.max(Math.max(Math.abs(b.minX()), Math.abs(b.maxX())), Math.max(Math.abs(b.minY()), Math.abs(b.maxY())))
+        if (!(Math.max(
+                        Math.max(Math.abs(b.minX()), Math.abs(b.maxX())),
+                        Math.max(Math.abs(b.minY()), Math.abs(b.maxY())))
                 <= MAX_COORDINATE_MM)) {
             throw new IllegalArgumentException("coordinates beyond " + MAX_COORDINATE_MM + " mm");
         }
@@ -654,8 +671,7 @@ public final class DxfReader {
     }
 
     /** A vertex with the bulge of the segment that leaves it. */
-    private record Vertex(Vec2 p, double bulge) {
-    }
+    private record Vertex(Vec2 p, double bulge) {}
 
     private void lwpolyline(Entity e, String layer, DxfAffine t) throws BadEntity {
         List<Vertex> vs = new ArrayList<>();
@@ -743,9 +759,13 @@ public final class DxfReader {
         double u1 = num(e, 42, 2 * Math.PI);
         double nz = num(e, 230, 1);
         if (major.norm() == 0 || !(ratio > 0)) {
-            throw new BadEntity(String.format(Locale.ROOT,
+            throw new BadEntity(String.format(
+                    Locale.ROOT,
                     "major axis (%s, %s) and axis ratio %s do not describe an ellipse (the axis must not be zero, the"
-                    + " ratio must be > 0)", num(major.x()), num(major.y()), num(ratio)));
+                            + " ratio must be > 0)",
+                    num(major.x()),
+                    num(major.y()),
+                    num(ratio)));
         }
         // the minor axis is N x major: turned -90 degrees for an extrusion of (0, 0, -1)
         Vec2 minor = (nz >= 0 ? major.leftNormal() : major.leftNormal().negated()).times(ratio);
@@ -845,7 +865,9 @@ public final class DxfReader {
         double[] u = knots.stream().mapToDouble(Double::doubleValue).toArray();
         double[] px = xs.stream().mapToDouble(Double::doubleValue).toArray();
         double[] py = ys.stream().mapToDouble(Double::doubleValue).toArray();
-        double[] w = ws.isEmpty() ? null : ws.stream().mapToDouble(Double::doubleValue).toArray();
+        double[] w = ws.isEmpty()
+                ? null
+                : ws.stream().mapToDouble(Double::doubleValue).toArray();
         if (w != null) {
             for (double wi : w) {
                 if (!(wi > 0)) {
@@ -910,15 +932,24 @@ public final class DxfReader {
             if (p1.equals(p2)) {
                 continue;
             }
-            ps.add(new DxfArcFitter.Piece(s -> {
-                double s2 = s * s;
-                double s3 = s2 * s;
-                double x = 0.5 * (2 * p1.x() + (-p0.x() + p2.x()) * s + (2 * p0.x() - 5 * p1.x() + 4 * p2.x() - p3.x()) * s2
-                        + (-p0.x() + 3 * p1.x() - 3 * p2.x() + p3.x()) * s3);
-                double y = 0.5 * (2 * p1.y() + (-p0.y() + p2.y()) * s + (2 * p0.y() - 5 * p1.y() + 4 * p2.y() - p3.y()) * s2
-                        + (-p0.y() + 3 * p1.y() - 3 * p2.y() + p3.y()) * s3);
-                return t.apply(new Vec2(x, y));
-            }, 0, 1));
+            ps.add(new DxfArcFitter.Piece(
+                    s -> {
+                        double s2 = s * s;
+                        double s3 = s2 * s;
+                        double x = 0.5
+                                * (2 * p1.x()
+                                        + (-p0.x() + p2.x()) * s
+                                        + (2 * p0.x() - 5 * p1.x() + 4 * p2.x() - p3.x()) * s2
+                                        + (-p0.x() + 3 * p1.x() - 3 * p2.x() + p3.x()) * s3);
+                        double y = 0.5
+                                * (2 * p1.y()
+                                        + (-p0.y() + p2.y()) * s
+                                        + (2 * p0.y() - 5 * p1.y() + 4 * p2.y() - p3.y()) * s2
+                                        + (-p0.y() + 3 * p1.y() - 3 * p2.y() + p3.y()) * s3);
+                        return t.apply(new Vec2(x, y));
+                    },
+                    0,
+                    1));
         }
         if (!ps.isEmpty()) {
             emitPieces(layer, ps, false);
@@ -981,8 +1012,10 @@ public final class DxfReader {
             for (int row = 0; row < rows && done < 10_000; row++) {
                 for (int col = 0; col < cols && done < 10_000; col++, done++) {
                     Vec2 cell = r.apply(new Vec2(col * dx, row * dy));
-                    DxfAffine local = DxfAffine.translation(at.x() + cell.x(), at.y() + cell.y()).times(r)
-                            .times(DxfAffine.scale(sx, sy)).times(DxfAffine.translation(-b.base.x(), -b.base.y()));
+                    DxfAffine local = DxfAffine.translation(at.x() + cell.x(), at.y() + cell.y())
+                            .times(r)
+                            .times(DxfAffine.scale(sx, sy))
+                            .times(DxfAffine.translation(-b.base.x(), -b.base.y()));
                     DxfAffine whole = t.times(o).times(local);
                     for (Entity child : b.entities) {
                         convert(child, whole, layer, depth + 1, stack);

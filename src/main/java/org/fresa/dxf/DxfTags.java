@@ -21,9 +21,11 @@ final class DxfTags {
     int size;
     /** Group codes from 0 to 32767 (all DXF uses); others are kept in {@link #wideCodes}. */
     private short[] codes = new short[1024];
+
     private java.util.Map<Integer, Integer> wideCodes;
     /** The values' bytes one after another (UTF-8, or the ANSI code page of older drawings). */
     private byte[] bytes = new byte[16 * 1024];
+
     private int used;
     /** Where value i starts in {@link #bytes}; value i ends where value i + 1 starts. */
     private int[] starts = new int[1025];
@@ -53,8 +55,12 @@ final class DxfTags {
             return new String(bytes, a, b - a, StandardCharsets.ISO_8859_1);
         }
         try {
-            return StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes, a, b - a)).toString();
+            return StandardCharsets.UTF_8
+                    .newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT)
+                    .decode(ByteBuffer.wrap(bytes, a, b - a))
+                    .toString();
         } catch (CharacterCodingException e) {
             // pre-2007 drawings are in the ANSI code page; names only, geometry is unaffected
             return new String(bytes, a, b - a, StandardCharsets.ISO_8859_1);
@@ -144,8 +150,11 @@ final class DxfTags {
         if (size > 0 && code(size - 1) == 0 && valueIs(size - 1, "EOF")) {
             return;
         }
-        throw new DxfException(source, binary ? 0 : lastLine, (binary ? "byte " + lastLine + ": " : "")
-                + "the drawing ends without its closing group 0 EOF (the file is truncated)");
+        throw new DxfException(
+                source,
+                binary ? 0 : lastLine,
+                (binary ? "byte " + lastLine + ": " : "")
+                        + "the drawing ends without its closing group 0 EOF (the file is truncated)");
     }
 
     static DxfTags parse(byte[] data, String source) throws DxfException {
@@ -235,7 +244,8 @@ final class DxfTags {
         }
     }
 
-    private static DxfTags parseAscii(java.io.InputStream stream, String source) throws DxfException, java.io.IOException {
+    private static DxfTags parseAscii(java.io.InputStream stream, String source)
+            throws DxfException, java.io.IOException {
         DxfTags t = new DxfTags(source, false);
         Lines in = new Lines(stream);
         int line = 0;
@@ -292,11 +302,13 @@ final class DxfTags {
             return Integer.parseInt(codeText);
         } catch (NumberFormatException ex) {
             if (first) {
-                throw new DxfException(source, codeLine, "not a DXF file: expected a group code (an integer), found '"
-                        + abbreviate(codeText) + "'");
+                throw new DxfException(
+                        source,
+                        codeLine,
+                        "not a DXF file: expected a group code (an integer), found '" + abbreviate(codeText) + "'");
             }
-            throw new DxfException(source, codeLine, "expected a group code (an integer), found '"
-                    + abbreviate(codeText) + "'");
+            throw new DxfException(
+                    source, codeLine, "expected a group code (an integer), found '" + abbreviate(codeText) + "'");
         }
     }
 
@@ -349,7 +361,8 @@ final class DxfTags {
                             z++;
                         }
                         if (z >= data.length) {
-                            throw new DxfException(source, at, "binary DXF string of group " + code + " is not terminated");
+                            throw new DxfException(
+                                    source, at, "binary DXF string of group " + code + " is not terminated");
                         }
                         value = new String(data, pos, z - pos, StandardCharsets.UTF_8);
                         pos = z + 1;

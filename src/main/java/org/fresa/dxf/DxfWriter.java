@@ -23,8 +23,7 @@ import org.fresa.model.ExactDecimal;
  */
 public final class DxfWriter {
 
-    private DxfWriter() {
-    }
+    private DxfWriter() {}
 
     /**
      * The drawing of the contours.
@@ -155,6 +154,9 @@ public final class DxfWriter {
     }
 
     private static void group(StringBuilder sb, int code, String value) {
-        sb.append(String.format(Locale.ROOT, "%3d", code)).append("\r\n").append(value).append("\r\n");
+        sb.append(String.format(Locale.ROOT, "%3d", code))
+                .append("\r\n")
+                .append(value)
+                .append("\r\n");
     }
 }

@@ -2,8 +2,7 @@ package org.fresa.geom;
 
 /** Argument checks shared by the value types: every coordinate must be a finite number. */
 final class Checks {
-    private Checks() {
-    }
+    private Checks() {}
 
     static double finite(double value, String name) {
         if (!Double.isFinite(value)) {

@@ -13,8 +13,7 @@ import java.util.List;
  * concentric circles, give no point.
  */
 public final class Intersections {
-    private Intersections() {
-    }
+    private Intersections() {}
 
     /** The intersection of the lines through (p, p + u) and (q, q + v), empty when parallel. */
     public static List<Vec2> lineLine(Vec2 p, Vec2 u, Vec2 q, Vec2 v, Tolerance tol) {

@@ -57,9 +57,17 @@ public record Quaternion(double w, double x, double y, double z) {
         double yy = y * y;
         double zz = z * z;
         return new Transform3(
-                ww + xx - yy - zz, 2 * (x * y - w * z), 2 * (x * z + w * y),
-                2 * (x * y + w * z), ww - xx + yy - zz, 2 * (y * z - w * x),
-                2 * (x * z - w * y), 2 * (y * z + w * x), ww - xx - yy + zz,
-                0, 0, 0);
+                ww + xx - yy - zz,
+                2 * (x * y - w * z),
+                2 * (x * z + w * y),
+                2 * (x * y + w * z),
+                ww - xx + yy - zz,
+                2 * (y * z - w * x),
+                2 * (x * z - w * y),
+                2 * (y * z + w * x),
+                ww - xx - yy + zz,
+                0,
+                0,
+                0);
     }
 }

@@ -8,10 +8,18 @@ package org.fresa.geom;
  * command-line placements and of the 2016 thesis's eq. 1.
  */
 public record Transform3(
-        double r00, double r01, double r02,
-        double r10, double r11, double r12,
-        double r20, double r21, double r22,
-        double tx, double ty, double tz) {
+        double r00,
+        double r01,
+        double r02,
+        double r10,
+        double r11,
+        double r12,
+        double r20,
+        double r21,
+        double r22,
+        double tx,
+        double ty,
+        double tz) {
 
     public static final Transform3 IDENTITY = new Transform3(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0);
 
@@ -64,8 +72,8 @@ public record Transform3(
         }
         Vec3 x = xr.normalized();
         Vec3 y = z.cross(x);
-        return new Transform3(x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z(),
-                origin.x(), origin.y(), origin.z());
+        return new Transform3(
+                x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z(), origin.x(), origin.y(), origin.z());
     }
 
     // exact values at multiples of 90 degrees keep placements like RX = -90 free of 6e-17 noise
@@ -100,29 +108,46 @@ public record Transform3(
     /** This transform after the other: (this * o)(p) = this(o(p)). */
     public Transform3 times(Transform3 o) {
         return new Transform3(
-                r00 * o.r00 + r01 * o.r10 + r02 * o.r20, r00 * o.r01 + r01 * o.r11 + r02 * o.r21, r00 * o.r02 + r01 * o.r12 + r02 * o.r22,
-                r10 * o.r00 + r11 * o.r10 + r12 * o.r20, r10 * o.r01 + r11 * o.r11 + r12 * o.r21, r10 * o.r02 + r11 * o.r12 + r12 * o.r22,
-                r20 * o.r00 + r21 * o.r10 + r22 * o.r20, r20 * o.r01 + r21 * o.r11 + r22 * o.r21, r20 * o.r02 + r21 * o.r12 + r22 * o.r22,
+                r00 * o.r00 + r01 * o.r10 + r02 * o.r20,
+                r00 * o.r01 + r01 * o.r11 + r02 * o.r21,
+                r00 * o.r02 + r01 * o.r12 + r02 * o.r22,
+                r10 * o.r00 + r11 * o.r10 + r12 * o.r20,
+                r10 * o.r01 + r11 * o.r11 + r12 * o.r21,
+                r10 * o.r02 + r11 * o.r12 + r12 * o.r22,
+                r20 * o.r00 + r21 * o.r10 + r22 * o.r20,
+                r20 * o.r01 + r21 * o.r11 + r22 * o.r21,
+                r20 * o.r02 + r21 * o.r12 + r22 * o.r22,
                 r00 * o.tx + r01 * o.ty + r02 * o.tz + tx,
                 r10 * o.tx + r11 * o.ty + r12 * o.tz + ty,
                 r20 * o.tx + r21 * o.ty + r22 * o.tz + tz);
     }
 
     public Vec3 applyToPoint(Vec3 p) {
-        return new Vec3(r00 * p.x() + r01 * p.y() + r02 * p.z() + tx,
+        return new Vec3(
+                r00 * p.x() + r01 * p.y() + r02 * p.z() + tx,
                 r10 * p.x() + r11 * p.y() + r12 * p.z() + ty,
                 r20 * p.x() + r21 * p.y() + r22 * p.z() + tz);
     }
 
     public Vec3 applyToDirection(Vec3 v) {
-        return new Vec3(r00 * v.x() + r01 * v.y() + r02 * v.z(),
+        return new Vec3(
+                r00 * v.x() + r01 * v.y() + r02 * v.z(),
                 r10 * v.x() + r11 * v.y() + r12 * v.z(),
                 r20 * v.x() + r21 * v.y() + r22 * v.z());
     }
 
     public Transform3 inverse() {
         // R^T and -R^T t
-        return new Transform3(r00, r10, r20, r01, r11, r21, r02, r12, r22,
+        return new Transform3(
+                r00,
+                r10,
+                r20,
+                r01,
+                r11,
+                r21,
+                r02,
+                r12,
+                r22,
                 -(r00 * tx + r10 * ty + r20 * tz),
                 -(r01 * tx + r11 * ty + r21 * tz),
                 -(r02 * tx + r12 * ty + r22 * tz));
@@ -150,8 +175,8 @@ public record Transform3(
      * acos of the trace would lose half the digits).
      */
     public double rotationAngleTo(Transform3 o) {
-        Transform3 a = new Transform3(r00, r10, r20, r01, r11, r21, r02, r12, r22, 0, 0, 0).times(
-                new Transform3(o.r00, o.r01, o.r02, o.r10, o.r11, o.r12, o.r20, o.r21, o.r22, 0, 0, 0));
+        Transform3 a = new Transform3(r00, r10, r20, r01, r11, r21, r02, r12, r22, 0, 0, 0)
+                .times(new Transform3(o.r00, o.r01, o.r02, o.r10, o.r11, o.r12, o.r20, o.r21, o.r22, 0, 0, 0));
         double sx = a.r21 - a.r12;
         double sy = a.r02 - a.r20;
         double sz = a.r10 - a.r01;

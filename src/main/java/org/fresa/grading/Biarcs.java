@@ -22,8 +22,7 @@ public final class Biarcs {
     private static final int SAMPLES = 32;
     private static final int MAX_DEPTH = 24;
 
-    private Biarcs() {
-    }
+    private Biarcs() {}
 
     /**
      * Arcs (and, where the ellipse is locally straight, segments) within toleranceMm of the
@@ -48,8 +47,8 @@ public final class Biarcs {
         return out;
     }
 
-    private static void fit(EllipticArc e, double t0, double t1, Vec2 p0, Vec2 p1, double tol, int depth,
-            List<Curve2> out) {
+    private static void fit(
+            EllipticArc e, double t0, double t1, Vec2 p0, Vec2 p1, double tol, int depth, List<Curve2> out) {
         List<Curve2> b = biarc(p0, e.tangent(t0), p1, e.tangent(t1));
         if (depth >= MAX_DEPTH || deviation(e, t0, t1, b) <= tol) {
             out.addAll(b);

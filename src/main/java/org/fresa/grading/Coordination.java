@@ -73,8 +73,8 @@ public record Coordination(double boundaryMm, int groupSize, java.util.SortedSet
                     out.add(i);
                 }
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("heel elements: expected numbers from 1 or ranges like 1-4, found '"
-                        + tok + "'");
+                throw new IllegalArgumentException(
+                        "heel elements: expected numbers from 1 or ranges like 1-4, found '" + tok + "'");
             }
         }
         if (out.isEmpty()) {
@@ -98,8 +98,8 @@ public record Coordination(double boundaryMm, int groupSize, java.util.SortedSet
         }
         int n = p.elements().size();
         if (heelElements.last() > n) {
-            return java.util.Optional.of("heel element " + heelElements.last() + " does not exist: the outline has " + n
-                    + " elements");
+            return java.util.Optional.of(
+                    "heel element " + heelElements.last() + " does not exist: the outline has " + n + " elements");
         }
         if (heelElements.size() == n) {
             return java.util.Optional.of("every element is a heel element: designate the forepart's (upper) elements"

@@ -26,8 +26,14 @@ public record EllipticArc(Vec2 center, Vec2 u, Vec2 v, double startRad, double s
     /** The image of a circular arc under the map. */
     public static EllipticArc of(Arc2 arc, PantographMap map) {
         double r = arc.radius();
-        return new EllipticArc(map.apply(arc.center()), map.linear(new Vec2(r, 0)), map.linear(new Vec2(0, r)),
-                arc.startAngleRad(), arc.sweepRad(), map.apply(arc.start()), map.apply(arc.end()));
+        return new EllipticArc(
+                map.apply(arc.center()),
+                map.linear(new Vec2(r, 0)),
+                map.linear(new Vec2(0, r)),
+                arc.startAngleRad(),
+                arc.sweepRad(),
+                map.apply(arc.start()),
+                map.apply(arc.end()));
     }
 
     /** The point at parameter t (radians). */
@@ -93,8 +99,8 @@ public record EllipticArc(Vec2 center, Vec2 u, Vec2 v, double startRad, double s
 
     @Override
     public EllipticArc mapped(PantographMap map) {
-        return new EllipticArc(map.apply(center), map.linear(u), map.linear(v), startRad, sweepRad,
-                map.apply(start), map.apply(end));
+        return new EllipticArc(
+                map.apply(center), map.linear(u), map.linear(v), startRad, sweepRad, map.apply(start), map.apply(end));
     }
 
     /** The largest semi-axis length (mm). */

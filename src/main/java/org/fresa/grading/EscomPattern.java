@@ -33,17 +33,14 @@ public record EscomPattern(Map<String, Vec2> points, List<Element> elements) {
     }
 
     /** {@code LINE/from,to}. */
-    public record Line(String from, String to) implements Element {
-    }
+    public record Line(String from, String to) implements Element {}
 
     /** {@code CIRCLE/from,via,to}: the arc from, through via, to to. */
-    public record Circle3(String from, String via, String to) implements Element {
-    }
+    public record Circle3(String from, String via, String to) implements Element {}
 
     /** {@code CIRCLE/from,to,CHOICE,RADIUS,r}: the shorter arc; the radius is not graded. */
     public record CircleR(String from, String to, double radiusMm, ThreePointArcs.CenterChoice choice)
-            implements Element {
-    }
+            implements Element {}
 
     public EscomPattern {
         points = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(points));

@@ -7,8 +7,7 @@ import org.fresa.geom.Vec2;
 
 /** Exact extents of lines-and-arcs contours along any direction (the axis-free bounding box). */
 public final class Extents {
-    private Extents() {
-    }
+    private Extents() {}
 
     /** Smallest and largest p . dir over the curve; dir must be a unit vector. */
     public static double[] along(Curve2 c, Vec2 dir) {

@@ -95,8 +95,9 @@ public record GradedOutline(List<GradedCurve> curves) {
 
     /** True when a graded arc is still a circle (equal factors), so it stays one arc. */
     private static boolean isCircle(EllipticArc e) {
-        return Math.abs(e.u().norm() - e.v().norm()) <= 1e-12 * e.u().norm() && Math.abs(e.u().dot(e.v())) <= 1e-12
-                * e.u().dot(e.u()) && Math.abs(e.sweepRad()) < 2 * Math.PI;
+        return Math.abs(e.u().norm() - e.v().norm()) <= 1e-12 * e.u().norm()
+                && Math.abs(e.u().dot(e.v())) <= 1e-12 * e.u().dot(e.u())
+                && Math.abs(e.sweepRad()) < 2 * Math.PI;
     }
 
     /**

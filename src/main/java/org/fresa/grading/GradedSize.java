@@ -16,8 +16,14 @@ import org.fresa.geom.Contour;
  * @param maxDeviationMm how far the output departs from the exact outline (mm); empty under
  *     coordination, where there is no single exact image
  */
-public record GradedSize(ScaleFactors factors, OptionalDouble heelSize, List<GradedOutline> exact,
-        List<Contour> output, double lengthMm, double widthMm, OptionalDouble maxDeviationMm) {
+public record GradedSize(
+        ScaleFactors factors,
+        OptionalDouble heelSize,
+        List<GradedOutline> exact,
+        List<Contour> output,
+        double lengthMm,
+        double widthMm,
+        OptionalDouble maxDeviationMm) {
 
     public GradedSize {
         exact = List.copyOf(exact);

@@ -49,13 +49,18 @@ public final class Grader {
         }
         Contour outer = outlines.get(0);
         if (outer.size() > MAX_ELEMENTS) {
-            throw new CamInputException(source, "the outline has " + outer.size() + " elements; grading takes at most "
-                    + MAX_ELEMENTS + " (simplify the drawing)");
+            throw new CamInputException(
+                    source,
+                    "the outline has " + outer.size() + " elements; grading takes at most " + MAX_ELEMENTS
+                            + " (simplify the drawing)");
         }
         Box2 box = outer.bounds();
         if (Math.max(box.width(), box.height()) > MAX_OUTLINE_MM) {
-            throw new CamInputException(source, "the outline is " + ExactDecimal.of(Math.max(box.width(), box.height()))
-                    + " mm across; a sole outline is at most " + ExactDecimal.of(MAX_OUTLINE_MM) + " mm (wrong units?)");
+            throw new CamInputException(
+                    source,
+                    "the outline is " + ExactDecimal.of(Math.max(box.width(), box.height()))
+                            + " mm across; a sole outline is at most " + ExactDecimal.of(MAX_OUTLINE_MM)
+                            + " mm (wrong units?)");
         }
         if (plan.coordination().isPresent()) {
             java.util.Optional<String> misfit = plan.coordination().get().misfit(EscomPattern.ofContour(outer));
@@ -68,8 +73,15 @@ public final class Grader {
         double lp = Extents.sizeAlong(outer, frame.widthAxis());
         GradingRule rule;
         try {
-            rule = new GradingRule(plan.system(), plan.baseSize(), plan.lengthStepMm(), plan.widthStepMm(), cp, lp,
-                    plan.shrinkage(), plan.shrinkageMode());
+            rule = new GradingRule(
+                    plan.system(),
+                    plan.baseSize(),
+                    plan.lengthStepMm(),
+                    plan.widthStepMm(),
+                    cp,
+                    lp,
+                    plan.shrinkage(),
+                    plan.shrinkageMode());
             for (double s : plan.sizes()) {
                 rule.factors(s);
             }
@@ -119,7 +131,11 @@ public final class Grader {
                 EscomPattern p = EscomPattern.ofContour(outlines.get(k));
                 // designated elements are the outer outline's; an inner contour then grades with the size
                 boolean byLine = k == 0 || !co.byElements();
-                output.add(p.graded(n -> byLine && co.isHeelPoint(p, n, frame.toLocal(p.point(n)).y()) ? heelMap : map)
+                output.add(p.graded(n -> byLine
+                                        && co.isHeelPoint(
+                                                p, n, frame.toLocal(p.point(n)).y())
+                                ? heelMap
+                                : map)
                         .toContour());
             }
         } else if (plan.arcMode() == ArcMode.THREE_POINT) {

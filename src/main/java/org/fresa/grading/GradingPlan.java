@@ -23,9 +23,19 @@ import org.fresa.geom.Vec2;
  * @param arcToleranceMm largest distance of biarcs from the exact ellipse (mm)
  * @param coordination one heel per group of sizes, or empty
  */
-public record GradingPlan(SizeSystem system, double baseSize, List<Double> sizes, double lengthStepMm,
-        double widthStepMm, Optional<Vec2> origin, OptionalDouble lengthAxisDeg, double shrinkage,
-        ShrinkageMode shrinkageMode, ArcMode arcMode, double arcToleranceMm, Optional<Coordination> coordination) {
+public record GradingPlan(
+        SizeSystem system,
+        double baseSize,
+        List<Double> sizes,
+        double lengthStepMm,
+        double widthStepMm,
+        Optional<Vec2> origin,
+        OptionalDouble lengthAxisDeg,
+        double shrinkage,
+        ShrinkageMode shrinkageMode,
+        ArcMode arcMode,
+        double arcToleranceMm,
+        Optional<Coordination> coordination) {
 
     /** The biarc tolerance of NC and DXF output: 0.005 mm. */
     public static final double DEFAULT_ARC_TOLERANCE_MM = 0.005;
@@ -46,35 +56,90 @@ public record GradingPlan(SizeSystem system, double baseSize, List<Double> sizes
             system.checkSize(s, "size");
         }
         if (!(lengthStepMm > 0) || !(widthStepMm >= 0) || !Double.isFinite(lengthStepMm + widthStepMm)) {
-            throw new IllegalArgumentException("steps must be finite, the length step > 0 mm and the width step >= 0 mm: "
-                    + lengthStepMm + ", " + widthStepMm);
+            throw new IllegalArgumentException(
+                    "steps must be finite, the length step > 0 mm and the width step >= 0 mm: " + lengthStepMm + ", "
+                            + widthStepMm);
         }
     }
 
     /** A plan with the system's steps, the heel-centre origin, no shrinkage, biarcs. */
     public static GradingPlan of(SizeSystem system, double baseSize, List<Double> sizes) {
-        return new GradingPlan(system, baseSize, sizes, system.lengthStepMm(), system.widthStepMm(), Optional.empty(),
-                OptionalDouble.empty(), 0, ShrinkageMode.MULTIPLICATIVE, ArcMode.BIARC, DEFAULT_ARC_TOLERANCE_MM,
+        return new GradingPlan(
+                system,
+                baseSize,
+                sizes,
+                system.lengthStepMm(),
+                system.widthStepMm(),
+                Optional.empty(),
+                OptionalDouble.empty(),
+                0,
+                ShrinkageMode.MULTIPLICATIVE,
+                ArcMode.BIARC,
+                DEFAULT_ARC_TOLERANCE_MM,
                 Optional.empty());
     }
 
     public GradingPlan withShrinkage(double s, ShrinkageMode mode) {
-        return new GradingPlan(system, baseSize, sizes, lengthStepMm, widthStepMm, origin, lengthAxisDeg, s, mode,
-                arcMode, arcToleranceMm, coordination);
+        return new GradingPlan(
+                system,
+                baseSize,
+                sizes,
+                lengthStepMm,
+                widthStepMm,
+                origin,
+                lengthAxisDeg,
+                s,
+                mode,
+                arcMode,
+                arcToleranceMm,
+                coordination);
     }
 
     public GradingPlan withOrigin(Vec2 o) {
-        return new GradingPlan(system, baseSize, sizes, lengthStepMm, widthStepMm, Optional.of(o), lengthAxisDeg,
-                shrinkage, shrinkageMode, arcMode, arcToleranceMm, coordination);
+        return new GradingPlan(
+                system,
+                baseSize,
+                sizes,
+                lengthStepMm,
+                widthStepMm,
+                Optional.of(o),
+                lengthAxisDeg,
+                shrinkage,
+                shrinkageMode,
+                arcMode,
+                arcToleranceMm,
+                coordination);
     }
 
     public GradingPlan withArcMode(ArcMode m) {
-        return new GradingPlan(system, baseSize, sizes, lengthStepMm, widthStepMm, origin, lengthAxisDeg, shrinkage,
-                shrinkageMode, m, arcToleranceMm, coordination);
+        return new GradingPlan(
+                system,
+                baseSize,
+                sizes,
+                lengthStepMm,
+                widthStepMm,
+                origin,
+                lengthAxisDeg,
+                shrinkage,
+                shrinkageMode,
+                m,
+                arcToleranceMm,
+                coordination);
     }
 
     public GradingPlan withCoordination(Coordination c) {
-        return new GradingPlan(system, baseSize, sizes, lengthStepMm, widthStepMm, origin, lengthAxisDeg, shrinkage,
-                shrinkageMode, arcMode, arcToleranceMm, Optional.of(c));
+        return new GradingPlan(
+                system,
+                baseSize,
+                sizes,
+                lengthStepMm,
+                widthStepMm,
+                origin,
+                lengthAxisDeg,
+                shrinkage,
+                shrinkageMode,
+                arcMode,
+                arcToleranceMm,
+                Optional.of(c));
     }
 }

@@ -20,15 +20,22 @@ package org.fresa.grading;
  * @param shrinkage S, the material's shrinkage fraction (0.02 = 2 %), >= 0
  * @param mode how S enters the factors
  */
-public record GradingRule(SizeSystem system, double baseSize, double lengthStepMm, double widthStepMm,
-        double baseLengthMm, double baseWidthMm, double shrinkage, ShrinkageMode mode) {
+public record GradingRule(
+        SizeSystem system,
+        double baseSize,
+        double lengthStepMm,
+        double widthStepMm,
+        double baseLengthMm,
+        double baseWidthMm,
+        double shrinkage,
+        ShrinkageMode mode) {
 
     public GradingRule {
         java.util.Objects.requireNonNull(system, "system");
         java.util.Objects.requireNonNull(mode, "mode");
         if (!(baseLengthMm > 0) || !(baseWidthMm > 0)) {
-            throw new IllegalArgumentException("pattern length and width must be > 0: " + baseLengthMm + ", "
-                    + baseWidthMm);
+            throw new IllegalArgumentException(
+                    "pattern length and width must be > 0: " + baseLengthMm + ", " + baseWidthMm);
         }
         if (!(shrinkage >= 0) || !(shrinkage < 1)) {
             throw new IllegalArgumentException("shrinkage must be in [0, 1): " + shrinkage);

@@ -16,16 +16,17 @@ public final class LastGirths {
     public static final List<String> FITTINGS = List.of("A", "B", "C", "D", "E", "F", "G", "H");
     /** The smallest and largest French size of the table. */
     public static final int FIRST_FRENCH = 29;
+
     public static final int LAST_FRENCH = 42;
     /** What each fitting letter adds to the girth (mm). */
     public static final double FITTING_STEP_MM = 5.0;
 
     /** Fitting A's girth for French sizes 29 to 42 (mm); the others add 5 mm a letter. */
-    private static final double[] GIRTH_A_MM = {160.0, 163.5, 167.5, 171.0, 175.0, 178.5, 182.5, 186.5, 191.0, 195.0,
-        199.5, 203.5, 208.0, 212.0};
+    private static final double[] GIRTH_A_MM = {
+        160.0, 163.5, 167.5, 171.0, 175.0, 178.5, 182.5, 186.5, 191.0, 195.0, 199.5, 203.5, 208.0, 212.0
+    };
 
-    private LastGirths() {
-    }
+    private LastGirths() {}
 
     /** The girth of a French size and fitting (mm), or empty outside the table (whole sizes 29 to 42). */
     public static OptionalDouble girthMm(double frenchSize, String fitting) {

@@ -31,8 +31,7 @@ public final class OutlineFrames {
 
     private static final double SNAP_DEG = 10;
 
-    private OutlineFrames() {
-    }
+    private OutlineFrames() {}
 
     /**
      * The frame of the outline.
@@ -42,8 +41,9 @@ public final class OutlineFrames {
      *     toe), or empty to find it
      * @throws CamInputException when no origin is given and no arc lies at the heel end
      */
-    public static GradingFrame detect(Contour outline, Optional<Vec2> origin, OptionalDouble lengthAxisDeg,
-            String source) throws CamInputException {
+    public static GradingFrame detect(
+            Contour outline, Optional<Vec2> origin, OptionalDouble lengthAxisDeg, String source)
+            throws CamInputException {
         List<Vec2> pts = sample(outline, 0.5);
         Vec2 u;
         if (lengthAxisDeg.isPresent()) {
@@ -73,15 +73,18 @@ public final class OutlineFrames {
             if (c instanceof Arc2 a && a.radius() > 0) {
                 double lo = Extents.along(a, u)[0];
                 boolean convexBack = a.containsAngle(u.negated().angleRad());
-                if (Math.abs(lo - back) <= tol && convexBack
+                if (Math.abs(lo - back) <= tol
+                        && convexBack
                         && (best == null || Math.abs(a.sweepRad()) > Math.abs(best.sweepRad()))) {
                     best = a;
                 }
             }
         }
         if (best == null) {
-            throw new CamInputException(source, "no arc at the heel end of the outline to take the grading origin "
-                    + "from; give the origin (--origin X,Y)");
+            throw new CamInputException(
+                    source,
+                    "no arc at the heel end of the outline to take the grading origin "
+                            + "from; give the origin (--origin X,Y)");
         }
         return best.center();
     }

@@ -13,7 +13,8 @@ import java.util.Locale;
  * </ul>
  */
 public enum ShrinkageMode {
-    ADDITIVE, MULTIPLICATIVE;
+    ADDITIVE,
+    MULTIPLICATIVE;
 
     /** The factor with shrinkage, from the grading factor alone. */
     public double apply(double factor, double shrinkage) {

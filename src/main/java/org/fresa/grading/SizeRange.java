@@ -9,8 +9,7 @@ public final class SizeRange {
     /** The largest number of sizes in one run, against a typo such as 36-440. */
     public static final int MAX_SIZES = 400;
 
-    private SizeRange() {
-    }
+    private SizeRange() {}
 
     /**
      * Parses {@code A-B} (or a single size {@code A}); sizes run from A up to B in whole-size
@@ -43,8 +42,8 @@ public final class SizeRange {
         // counted in double: a range of 1e308 sizes would overflow a long
         double count = Math.floor((b - a) / step + 1e-9) + 1;
         if (!(count <= MAX_SIZES)) {
-            throw new IllegalArgumentException("too many sizes in '" + text + "': " + String.format(java.util.Locale.ROOT,
-                    "%.0f", count) + " (at most " + MAX_SIZES + ")");
+            throw new IllegalArgumentException("too many sizes in '" + text + "': "
+                    + String.format(java.util.Locale.ROOT, "%.0f", count) + " (at most " + MAX_SIZES + ")");
         }
         long n = (long) count;
         List<Double> out = new ArrayList<>();

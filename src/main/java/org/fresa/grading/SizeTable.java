@@ -11,9 +11,8 @@ import java.util.OptionalDouble;
 public final class SizeTable {
 
     /** One line of table 3.2. */
-    public record Row(OptionalDouble american, OptionalDouble english, OptionalDouble french,
-            OptionalDouble brazilian) {
-    }
+    public record Row(
+            OptionalDouble american, OptionalDouble english, OptionalDouble french, OptionalDouble brazilian) {}
 
     private static final double NONE = Double.NaN;
 
@@ -36,8 +35,7 @@ public final class SizeTable {
         {13, 11.5, NONE, NONE},
     };
 
-    private SizeTable() {
-    }
+    private SizeTable() {}
 
     /** The rows of table 3.2 in the thesis's order. */
     public static List<Row> thesisTable32() {

@@ -25,8 +25,7 @@ public final class ThreePointArcs {
         YSMALL
     }
 
-    private ThreePointArcs() {
-    }
+    private ThreePointArcs() {}
 
     /** The centre of the circle through three points; empty when they are collinear. */
     public static Optional<Vec2> circumcenter(Vec2 a, Vec2 b, Vec2 c) {
@@ -65,8 +64,8 @@ public final class ThreePointArcs {
     public static Vec2[] centers(Vec2 a, Vec2 b, double radiusMm) {
         double chord = a.distance(b);
         if (!(chord > 0) || chord > 2 * radiusMm) {
-            throw new IllegalArgumentException("no circle of radius " + radiusMm + " through points " + chord
-                    + " mm apart");
+            throw new IllegalArgumentException(
+                    "no circle of radius " + radiusMm + " through points " + chord + " mm apart");
         }
         Vec2 mid = a.interpolate(b, 0.5);
         double h = Math.sqrt(radiusMm * radiusMm - chord * chord / 4);

@@ -34,27 +34,30 @@ public final class AtomicFiles {
     private static final java.util.Set<Path> CLEANED = java.util.concurrent.ConcurrentHashMap.newKeySet();
     /** Guards the creation of temporary files against the shutdown hook. */
     private static final Object GATE = new Object();
+
     private static boolean ending;
 
     static {
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            // the run's threads go on while the hook runs: from here no new temporary file is made,
-            // so every one that exists is in IN_PROGRESS and removed below
-            synchronized (GATE) {
-                ending = true;
-            }
-            for (Path p : IN_PROGRESS) {
-                try {
-                    Files.deleteIfExists(p);
-                } catch (IOException e) {
-                    // the JVM is ending: nothing better to do than leave the hidden file
-                }
-            }
-        }, "fresa-temp-files"));
+        Runtime.getRuntime()
+                .addShutdownHook(new Thread(
+                        () -> {
+                            // the run's threads go on while the hook runs: from here no new temporary file is made,
+                            // so every one that exists is in IN_PROGRESS and removed below
+                            synchronized (GATE) {
+                                ending = true;
+                            }
+                            for (Path p : IN_PROGRESS) {
+                                try {
+                                    Files.deleteIfExists(p);
+                                } catch (IOException e) {
+                                    // the JVM is ending: nothing better to do than leave the hidden file
+                                }
+                            }
+                        },
+                        "fresa-temp-files"));
     }
 
-    private AtomicFiles() {
-    }
+    private AtomicFiles() {}
 
     /** Produces a file's content. */
     @FunctionalInterface
@@ -78,8 +81,10 @@ public final class AtomicFiles {
      */
     public static Path requireWritable(Path target, String option) throws CamInputException {
         if (Files.exists(target) && !Files.isRegularFile(target)) {
-            throw new CamInputException(option, target + " is " + FileChecks.kind(target)
-                    + ", not a file: Fresa writes a new file and renames it into place, which would replace it");
+            throw new CamInputException(
+                    option,
+                    target + " is " + FileChecks.kind(target)
+                            + ", not a file: Fresa writes a new file and renames it into place, which would replace it");
         }
         return target;
     }
@@ -90,7 +95,7 @@ public final class AtomicFiles {
      * @throws IOException also when the target exists and is not a regular file (it is left as it is)
      */
     public static void write(Path target, Body body) throws IOException {
-        write(target, body, written -> { });
+        write(target, body, written -> {});
     }
 
     /**
@@ -111,7 +116,8 @@ public final class AtomicFiles {
         Path tmp;
         synchronized (GATE) {
             if (ending) {
-                throw new java.io.InterruptedIOException("the program is ending: " + abs.getFileName() + " not written");
+                throw new java.io.InterruptedIOException(
+                        "the program is ending: " + abs.getFileName() + " not written");
             }
             tmp = createTemporary(dir);
             IN_PROGRESS.add(tmp);
@@ -123,8 +129,10 @@ public final class AtomicFiles {
             }
             before.inspect(tmp);
             // temporary files are created private (0600); the result is an ordinary file (0644)
-            if (Files.getFileStore(tmp).supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class)) {
-                Files.setPosixFilePermissions(tmp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
+            if (Files.getFileStore(tmp)
+                    .supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class)) {
+                Files.setPosixFilePermissions(
+                        tmp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
             }
             try {
                 Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
@@ -166,13 +174,15 @@ public final class AtomicFiles {
      * @return how many were removed
      */
     public static int removeStale(Path dir) throws IOException {
-        java.nio.file.attribute.FileTime limit = java.nio.file.attribute.FileTime.from(
-                java.time.Instant.now().minus(STALE));
+        java.nio.file.attribute.FileTime limit =
+                java.nio.file.attribute.FileTime.from(java.time.Instant.now().minus(STALE));
         int n = 0;
         try (java.nio.file.DirectoryStream<Path> ds = Files.newDirectoryStream(dir, TEMP_PREFIX + "*" + TEMP_SUFFIX)) {
             for (Path p : ds) {
                 try {
-                    if (Files.isRegularFile(p) && Files.getLastModifiedTime(p).compareTo(limit) < 0 && Files.deleteIfExists(p)) {
+                    if (Files.isRegularFile(p)
+                            && Files.getLastModifiedTime(p).compareTo(limit) < 0
+                            && Files.deleteIfExists(p)) {
                         n++;
                     }
                 } catch (IOException e) {

@@ -6,7 +6,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.fresa.geom.Tolerance;
 import org.fresa.geom.Transform3;
 import org.fresa.kin.PlacementSearch;
 import org.fresa.kin.Robot;
@@ -28,8 +27,7 @@ import org.fresa.toolpath.ToolpathPlanner;
  */
 public final class AutoPlacement {
 
-    private AutoPlacement() {
-    }
+    private AutoPlacement() {}
 
     /**
      * What the search gave.
@@ -51,25 +49,39 @@ public final class AutoPlacement {
         public String sentence() {
             PlacementSearch.Result r = result;
             if (found()) {
-                return String.format(Locale.ROOT, "placement found: --robot-table %s reaches all %d targets with a"
-                        + " joint-limit margin of %.1f %% (%d placements tried in %.1f s, %.1f s of CPU)", text(robotTable),
-                        r.targets(), 100 * r.minMargin(), r.placementsTried(), seconds, cpuSeconds);
+                return String.format(
+                        Locale.ROOT,
+                        "placement found: --robot-table %s reaches all %d targets with a"
+                                + " joint-limit margin of %.1f %% (%d placements tried in %.1f s, %.1f s of CPU)",
+                        text(robotTable),
+                        r.targets(),
+                        100 * r.minMargin(),
+                        r.placementsTried(),
+                        seconds,
+                        cpuSeconds);
             }
             StringBuilder sb = new StringBuilder("no table placement tried reaches every target");
             if (!r.outOfReachEverywhere().isEmpty()) {
-                sb.append("; out of reach from every placement tried: ").append(String.join(", ",
-                        r.outOfReachEverywhere()));
+                sb.append("; out of reach from every placement tried: ")
+                        .append(String.join(", ", r.outOfReachEverywhere()));
             }
             if (!r.notTogether().isEmpty()) {
-                sb.append("; reachable alone but not together with the rest: ").append(String.join(", ",
-                        r.notTogether()));
+                sb.append("; reachable alone but not together with the rest: ")
+                        .append(String.join(", ", r.notTogether()));
             }
             for (String n : r.notes()) {
                 sb.append("; ").append(n);
             }
-            sb.append(String.format(Locale.ROOT, " (the best placement tried, --robot-table %s, reaches %d of %d"
-                    + " targets; %d placements tried in %.1f s, %.1f s of CPU)", text(robotTable), r.reached(),
-                    r.targets(), r.placementsTried(), seconds, cpuSeconds));
+            sb.append(String.format(
+                    Locale.ROOT,
+                    " (the best placement tried, --robot-table %s, reaches %d of %d"
+                            + " targets; %d placements tried in %.1f s, %.1f s of CPU)",
+                    text(robotTable),
+                    r.reached(),
+                    r.targets(),
+                    r.placementsTried(),
+                    seconds,
+                    cpuSeconds));
             return sb.toString();
         }
 
@@ -110,8 +122,13 @@ public final class AutoPlacement {
      * @param names the name the result gives each section (a workingstep's id and entity, as
      *     workingsteps may share an id), one per section
      */
-    public static Outcome search(Toolpath toolpath, Robot robot, Placement tablePiece,
-            Map<String, Transform3> tcpByLabel, List<String> names, ProgressMonitor progress) {
+    public static Outcome search(
+            Toolpath toolpath,
+            Robot robot,
+            Placement tablePiece,
+            Map<String, Transform3> tcpByLabel,
+            List<String> names,
+            ProgressMonitor progress) {
         long t0 = System.nanoTime();
         java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
         long c0 = mx.getCurrentThreadCpuTime();
@@ -123,15 +140,22 @@ public final class AutoPlacement {
         Map<String, Transform3> tcps = new java.util.HashMap<>();
         for (int i = 0; i < names.size(); i++) {
             ToolpathSection sec = toolpath.sections().get(i);
-            named.add(new ToolpathSection(names.get(i), sec.toolAxis(), sec.toolDiameterMm(), sec.toolNumber(),
-                    sec.spindleRpm(), sec.start(), sec.moves()));
+            named.add(new ToolpathSection(
+                    names.get(i),
+                    sec.toolAxis(),
+                    sec.toolDiameterMm(),
+                    sec.toolNumber(),
+                    sec.spindleRpm(),
+                    sec.start(),
+                    sec.moves()));
             tcps.put(names.get(i), tcpByLabel.getOrDefault(sec.label(), robot.tool()));
         }
-        List<ToolTarget> inTable = RobotTrajectoryService.targets(new Toolpath(named), tablePiece.toTransform(),
-                NcPosts.CHORD_TOLERANCE_MM * 10);
+        List<ToolTarget> inTable = RobotTrajectoryService.targets(
+                new Toolpath(named), tablePiece.toTransform(), NcPosts.CHORD_TOLERANCE_MM * 10);
         Map<Transform3, Robot> byTcp = new java.util.HashMap<>();
         byTcp.put(robot.tool(), robot);
-        PlacementSearch search = new PlacementSearch(robot,
+        PlacementSearch search = new PlacementSearch(
+                robot,
                 label -> byTcp.computeIfAbsent(tcps.getOrDefault(label, robot.tool()), robot::withTool),
                 new PlacementSearch.Bounds(SettingRanges.CELL_SIZE_MM));
         PlacementSearch.Result r = search.search(inTable, (fraction, what) -> {
@@ -142,11 +166,20 @@ public final class AutoPlacement {
         Placement rounded = new Placement(round(p.xMm()), round(p.yMm()), round(p.zMm()), 0, 0, round(p.rzDeg()));
         if (r.found().isPresent()) {
             // the rounded placement is the one used: check it on every target
-            PlacementSearch.Result check = search.check(inTable, new PlacementSearch.TablePlacement(rounded.xMm(),
-                    rounded.yMm(), rounded.zMm(), rounded.rzDeg()));
+            PlacementSearch.Result check = search.check(
+                    inTable,
+                    new PlacementSearch.TablePlacement(rounded.xMm(), rounded.yMm(), rounded.zMm(), rounded.rzDeg()));
             if (check.found().isPresent()) {
-                r = new PlacementSearch.Result(check.found(), check.best(), r.targets(), r.reached(), check.minMargin(),
-                        List.of(), List.of(), r.placementsTried() + 1, r.notes());
+                r = new PlacementSearch.Result(
+                        check.found(),
+                        check.best(),
+                        r.targets(),
+                        r.reached(),
+                        check.minMargin(),
+                        List.of(),
+                        List.of(),
+                        r.placementsTried() + 1,
+                        r.notes());
             } else {
                 rounded = new Placement(p.xMm(), p.yMm(), p.zMm(), 0, 0, p.rzDeg());
             }
@@ -158,8 +191,14 @@ public final class AutoPlacement {
      * The search for a STEP-NC file as {@code fresa robot} plans it with the job's choices (the
      * Position tab's button): the toolpath placed is the one Compute solves.
      */
-    public static Outcome search(Path stepnc, PlanningChoices choices, String robotName, Placement tablePiece,
-            RobotTools.Choice tool, ProgressMonitor progress) throws CamInputException, java.io.IOException {
+    public static Outcome search(
+            Path stepnc,
+            PlanningChoices choices,
+            String robotName,
+            Placement tablePiece,
+            RobotTools.Choice tool,
+            ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
         ToolpathService.Planned planned = ToolpathService.compute(stepnc, choices, progress);
         var program = planned.program();

@@ -39,12 +39,12 @@ public final class Benchmarks {
 
     /** Where the inputs are in the jar (pom.xml's resources). */
     static final String INPUTS = "/org/fresa/bench/";
+
     static final String EXAMPLE2 = "stepnc/example2.stp";
     static final String CAVITY02 = "pocket/cavity02.dad";
     static final String DXF = "ezdxf/examples_edgeminer_3_us_main.dxf";
 
-    private Benchmarks() {
-    }
+    private Benchmarks() {}
 
     /** The bytes of one benchmark input. */
     static byte[] input(String name) throws IOException {
@@ -170,8 +170,7 @@ public final class Benchmarks {
      * A throughput, MB (10^6 bytes) per second: of wall-clock time, and of this thread's CPU time
      * (which a loaded machine disturbs less).
      */
-    record Rate(double wall, double cpu) {
-    }
+    record Rate(double wall, double cpu) {}
 
     private static final long WARM_UP_NS = 2_000_000_000L;
 
@@ -186,6 +185,7 @@ public final class Benchmarks {
 
     /** Warm-up windows of 200 ms, for at least {@link #WARM_UP_MIN_NS} and at most {@link #WARM_UP_MAX_NS}. */
     private static final long WINDOW_NS = 200_000_000L;
+
     private static final long WARM_UP_MIN_NS = 5_000_000_000L;
     private static final long WARM_UP_MAX_NS = 12_000_000_000L;
 
@@ -216,8 +216,12 @@ public final class Benchmarks {
             rates.add(bytes / Math.max(1.0, THREADS.getCurrentThreadCpuTime() - c0));
             int n = rates.size();
             if (System.nanoTime() - w0 >= effort.warmUpMinNs() && n >= 10) {
-                double last = median(rates.subList(n - 5, n).stream().mapToDouble(Double::doubleValue).toArray());
-                double before = median(rates.subList(n - 10, n - 5).stream().mapToDouble(Double::doubleValue).toArray());
+                double last = median(rates.subList(n - 5, n).stream()
+                        .mapToDouble(Double::doubleValue)
+                        .toArray());
+                double before = median(rates.subList(n - 10, n - 5).stream()
+                        .mapToDouble(Double::doubleValue)
+                        .toArray());
                 if (last <= before * 1.05) {
                     break;
                 }
@@ -250,10 +254,15 @@ public final class Benchmarks {
 
     /** Reads the 10 052-line corpus drawing and chains it, from memory, median of 7. */
     static Rate dxfMbPerS(byte[] data, Effort effort) throws IOException, CamInputException {
-        warmUp(() -> {
-            Chainer.chain(DxfReader.read(data, "bench", DxfReadOptions.DEFAULT).curves(), 0.001);
-            return data.length;
-        }, effort);
+        warmUp(
+                () -> {
+                    Chainer.chain(
+                            DxfReader.read(data, "bench", DxfReadOptions.DEFAULT)
+                                    .curves(),
+                            0.001);
+                    return data.length;
+                },
+                effort);
         double[] rates = new double[7];
         double[] cpuRates = new double[7];
         for (int r = 0; r < rates.length; r++) {
@@ -296,9 +305,17 @@ public final class Benchmarks {
     }
 
     private static int cutOnce(Path dxf) throws IOException, CamInputException {
-        JobSettings.CuttingSettings s = new JobSettings.CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1,
-                org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
+        JobSettings.CuttingSettings s = new JobSettings.CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.ARC,
+                org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC);
         // as fresa cut does it: the program posted to a file and checked there, never held as text
         Path ngc = dxf.resolveSibling(dxf.getFileName() + ".ngc");
         try {
@@ -316,7 +333,8 @@ public final class Benchmarks {
     static double pocketMs() throws IOException, CamInputException {
         Path dad = inputFile(CAVITY02);
         try {
-            return pocketMs(new JobSettings.PocketSettings(dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, PocketPost.LINUXCNC));
+            return pocketMs(new JobSettings.PocketSettings(
+                    dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, PocketPost.LINUXCNC));
         } finally {
             Files.deleteIfExists(dad);
         }
@@ -357,10 +375,22 @@ public final class Benchmarks {
         for (int r = 0; r < s.length; r++) {
             Path out = Files.createTempDirectory("fresa-bench");
             List<String> cmd = javaCommand(jar);
-            cmd.addAll(List.of("robot", example2.toString(),
-                    "--robot", "irb140", "--robot-table", "450,0,350", "--table-piece", "0,10,0", "--out", out.toString()));
+            cmd.addAll(List.of(
+                    "robot",
+                    example2.toString(),
+                    "--robot",
+                    "irb140",
+                    "--robot-table",
+                    "450,0,350",
+                    "--table-piece",
+                    "0,10,0",
+                    "--out",
+                    out.toString()));
             long t0 = System.nanoTime();
-            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            Process p = new ProcessBuilder(cmd)
+                    .redirectErrorStream(true)
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                    .start();
             int rc = p.waitFor();
             s[r] = (System.nanoTime() - t0) / 1e9;
             try (var files = Files.list(out)) {
@@ -418,8 +448,8 @@ public final class Benchmarks {
 
     /** The figures as an aligned table for people. */
     public static String table(Map<String, Object> figures) {
-        StringBuilder sb = new StringBuilder(String.format(java.util.Locale.ROOT, "%-34s %14s %10s  %s%n",
-                "figure", "measured", "goal", "met"));
+        StringBuilder sb = new StringBuilder(
+                String.format(java.util.Locale.ROOT, "%-34s %14s %10s  %s%n", "figure", "measured", "goal", "met"));
         @SuppressWarnings("unchecked")
         Map<String, Object> met = (Map<String, Object>) figures.get("met");
         for (Map.Entry<String, Object> e : figures.entrySet()) {
@@ -428,7 +458,10 @@ public final class Benchmarks {
             }
             Double goal = GOALS.get(e.getKey());
             Object m = met.get(e.getKey());
-            sb.append(String.format(java.util.Locale.ROOT, "%-34s %14s %10s  %s%n", e.getKey(),
+            sb.append(String.format(
+                    java.util.Locale.ROOT,
+                    "%-34s %14s %10s  %s%n",
+                    e.getKey(),
                     e.getValue() == null ? "n/a" : String.format(java.util.Locale.ROOT, "%.3f", (Double) e.getValue()),
                     goal == null ? "" : (e.getKey().endsWith("_per_s") ? ">= " : "<= ") + goal,
                     m == null ? "" : ((Boolean) m ? "yes" : "NO")));

@@ -33,8 +33,7 @@ public final class CuttingService {
     /** Rapid traverse assumed for the time estimate (mm/min). */
     static final double RAPID_MM_PER_MIN = 10_000;
 
-    private CuttingService() {
-    }
+    private CuttingService() {}
 
     /**
      * The drawing and the plan of one run, and what its program is written with. The program text
@@ -43,8 +42,8 @@ public final class CuttingService {
      *
      * @param programName the drawing's file name, in the program's first comment
      */
-    public record Result(DxfDrawing drawing, CutPlan plan, CuttingOptions options, CuttingPost dialect,
-            String programName) {
+    public record Result(
+            DxfDrawing drawing, CutPlan plan, CuttingOptions options, CuttingPost dialect, String programName) {
 
         /** Posts the program to {@code out}, a cut at a time. */
         public void writeProgram(Writer out) throws IOException {
@@ -52,8 +51,12 @@ public final class CuttingService {
             for (CutPath c : plan.cuts()) {
                 comp.add(c.compensation());
             }
-            SheetCuttingPost.write(plan.sections(), programName, new SheetCuttingPost.Job(options.process().id(),
-                    options.pierceDwellS(), comp, options.kerfMm()), dialect, out);
+            SheetCuttingPost.write(
+                    plan.sections(),
+                    programName,
+                    new SheetCuttingPost.Job(options.process().id(), options.pierceDwellS(), comp, options.kerfMm()),
+                    dialect,
+                    out);
         }
 
         /** The whole program text. */
@@ -71,7 +74,10 @@ public final class CuttingService {
     /** Checks the settings and converts them to planner options (the gap tolerance still in drawing units). */
     public static CuttingOptions options(CuttingSettings s) throws CamInputException {
         CutProcess p = s.process();
-        if (!(s.kerfMm() >= 0) || !(s.leadInMm() >= 0) || !(s.leadOutMm() >= 0) || !(s.toleranceMm() >= 0)
+        if (!(s.kerfMm() >= 0)
+                || !(s.leadInMm() >= 0)
+                || !(s.leadOutMm() >= 0)
+                || !(s.toleranceMm() >= 0)
                 || !Double.isFinite(s.kerfMm() + s.leadInMm() + s.leadOutMm() + s.toleranceMm())) {
             throw new CamInputException("options", "kerf, lead lengths and tolerance must be finite and >= 0");
         }
@@ -82,9 +88,12 @@ public final class CuttingService {
         boolean holesCw = s.holeDirection().clockwise(!outerCw);
         try {
             return CuttingOptions.of(p, s.kerfMm(), s.leadInMm(), s.leadOutMm(), s.lead() == LeadShape.ARC)
-                    .withGapTolerance(s.toleranceMm()).withPaperMode(s.paperMode())
+                    .withGapTolerance(s.toleranceMm())
+                    .withPaperMode(s.paperMode())
                     .withControllerCompensation(s.compensation() == KerfCompensation.CONTROLLER)
-                    .withOvercut(s.overcutMm()).withDirections(outerCw, holesCw).withAvoidCutParts(s.avoidCutParts());
+                    .withOvercut(s.overcutMm())
+                    .withDirections(outerCw, holesCw)
+                    .withAvoidCutParts(s.avoidCutParts());
         } catch (IllegalArgumentException e) {
             throw new CamInputException("options", e.getMessage());
         }
@@ -106,13 +115,16 @@ public final class CuttingService {
         CuttingOptions o = options(s);
         CuttingPost dialect = s.post();
         progress.progress(0.05, "reading " + s.drawing().getFileName());
-        DxfDrawing d = DxfReader.read(s.drawing(), DxfReadOptions.DEFAULT.withUnits(s.units().units()));
+        DxfDrawing d = DxfReader.read(
+                s.drawing(), DxfReadOptions.DEFAULT.withUnits(s.units().units()));
         progress.checkCancelled();
         progress.progress(0.3, "planning");
         CutPlan plan;
         try {
-            plan = CutPlanner.plan(d.layers(),
-                    o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)), s.cutOrder(),
+            plan = CutPlanner.plan(
+                    d.layers(),
+                    o.withGapTolerance(s.toleranceMm() * (toleranceInDrawingUnits ? d.mmPerUnit() : 1)),
+                    s.cutOrder(),
                     (f, step) -> progress.progress(0.3 + 0.55 * f, step));
         } catch (CutOrderOverride.Refused e) {
             throw new CamInputException("cutOrder", e.getMessage());
@@ -122,8 +134,9 @@ public final class CuttingService {
     }
 
     /** Runs the task and writes the program to the given file (atomically). */
-    public static TaskOutcome run(CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits,
-            ProgressMonitor progress) throws CamInputException, IOException {
+    public static TaskOutcome run(
+            CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits, ProgressMonitor progress)
+            throws CamInputException, IOException {
         Result r = compute(s, toleranceInDrawingUnits, progress);
         progress.progress(0.9, "writing and checking the program");
         String file = outFile.getFileName().toString();
@@ -158,7 +171,8 @@ public final class CuttingService {
      * every word in range.
      */
     public static void check(Result r, String file) throws ProgramChecks.RefusedProgram {
-        ProgramChecks.require(file, r.program(), ProgramChecks.dialect(r.dialect().id()), limits(r));
+        ProgramChecks.require(
+                file, r.program(), ProgramChecks.dialect(r.dialect().id()), limits(r));
     }
 
     /**
@@ -178,7 +192,8 @@ public final class CuttingService {
 
     /** The limits of a sheet-cutting program: the process's on and off words instead of a spindle. */
     public static org.fresa.check.Limits limits(Result r) {
-        String[] jet = SheetCuttingPost.jetWords(r.dialect(), r.options().process().id());
+        String[] jet =
+                SheetCuttingPost.jetWords(r.dialect(), r.options().process().id());
         return org.fresa.check.Limits.sheetCutting(r.options().process().id(), jet[0], jet[1]);
     }
 
@@ -201,7 +216,8 @@ public final class CuttingService {
         m.put("pierces", p.cuts().size());
         m.put("cut_length_mm", round(p.cutLengthMm()));
         m.put("rapid_length_mm", round(p.rapidLengthMm()));
-        double time = p.cutLengthMm() / r.options().feedMmPerMin() * 60 + p.rapidLengthMm() / RAPID_MM_PER_MIN * 60
+        double time = p.cutLengthMm() / r.options().feedMmPerMin() * 60
+                + p.rapidLengthMm() / RAPID_MM_PER_MIN * 60
                 + p.cuts().size() * r.options().pierceDwellS();
         m.put("estimated_time_s", round(time));
         m.put("not_cut", p.uncut().size());
@@ -288,12 +304,10 @@ public final class CuttingService {
         }
 
         @Override
-        public void flush() {
-        }
+        public void flush() {}
 
         @Override
-        public void close() {
-        }
+        public void close() {}
 
         @Override
         public String toString() {

@@ -18,8 +18,8 @@ import org.fresa.post.ArcGeometry;
  * @param rapidSeconds time spent in rapids
  * @param dwellSeconds time spent in dwells
  */
-public record CycleTime(double feedLengthMm, double rapidLengthMm, double feedSeconds, double rapidSeconds,
-        double dwellSeconds) {
+public record CycleTime(
+        double feedLengthMm, double rapidLengthMm, double feedSeconds, double rapidSeconds, double dwellSeconds) {
 
     public static final CycleTime ZERO = new CycleTime(0, 0, 0, 0, 0);
 
@@ -34,8 +34,12 @@ public record CycleTime(double feedLengthMm, double rapidLengthMm, double feedSe
     }
 
     public CycleTime plus(CycleTime o) {
-        return new CycleTime(feedLengthMm + o.feedLengthMm, rapidLengthMm + o.rapidLengthMm,
-                feedSeconds + o.feedSeconds, rapidSeconds + o.rapidSeconds, dwellSeconds + o.dwellSeconds);
+        return new CycleTime(
+                feedLengthMm + o.feedLengthMm,
+                rapidLengthMm + o.rapidLengthMm,
+                feedSeconds + o.feedSeconds,
+                rapidSeconds + o.rapidSeconds,
+                dwellSeconds + o.dwellSeconds);
     }
 
     /** The path length of one move starting at {@code from} (mm); 0 for dwells and spindle events. */

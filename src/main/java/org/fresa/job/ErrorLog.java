@@ -11,8 +11,7 @@ import java.time.Instant;
 
 /** Appends full stack traces of internal errors to {@code ~/.fresa/fresa.log}, never to the user's screen. */
 public final class ErrorLog {
-    private ErrorLog() {
-    }
+    private ErrorLog() {}
 
     /** The log file, or null when it cannot be written. */
     public static Path record(Throwable t) {
@@ -25,8 +24,8 @@ public final class ErrorLog {
                 pw.println(Instant.now() + " " + t);
                 t.printStackTrace(pw);
             }
-            Files.writeString(log, sw.toString(), StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                    StandardOpenOption.APPEND);
+            Files.writeString(
+                    log, sw.toString(), StandardCharsets.UTF_8, StandardOpenOption.CREATE, StandardOpenOption.APPEND);
             return log;
         } catch (IOException | SecurityException e) {
             return null;

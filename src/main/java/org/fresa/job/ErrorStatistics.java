@@ -34,7 +34,8 @@ public final class ErrorStatistics {
     public static ErrorStatistics of(org.fresa.kin.TrajectorySolver.Result r) {
         ErrorStatistics s = new ErrorStatistics();
         for (org.fresa.kin.TrajectoryPoint p : r.points()) {
-            if (p.status() != org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE && p.reached().isPresent()) {
+            if (p.status() != org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE
+                    && p.reached().isPresent()) {
                 s.add(p.target(), p.reached().get());
             }
         }
@@ -59,8 +60,13 @@ public final class ErrorStatistics {
         if (count == 0) {
             return "error " + n[axis];
         }
-        return String.format(java.util.Locale.ROOT, "error %s: mean %.3g, min %.3g, max %.3g um", n[axis],
-                sum[axis] / count * 1000, min[axis] * 1000, max[axis] * 1000);
+        return String.format(
+                java.util.Locale.ROOT,
+                "error %s: mean %.3g, min %.3g, max %.3g um",
+                n[axis],
+                sum[axis] / count * 1000,
+                min[axis] * 1000,
+                max[axis] * 1000);
     }
 
     /** One line on the orientation errors about x, y, z (urad), for under error.png's title. */
@@ -71,8 +77,14 @@ public final class ErrorStatistics {
         StringBuilder sb = new StringBuilder("orientation error (urad):");
         String[] n = {"rx", "ry", "rz"};
         for (int i = 3; i < 6; i++) {
-            sb.append(String.format(java.util.Locale.ROOT, " %s mean %.3g, min %.3g, max %.3g%s", n[i - 3],
-                    sum[i] / count * 1e6, min[i] * 1e6, max[i] * 1e6, i < 5 ? ";" : ""));
+            sb.append(String.format(
+                    java.util.Locale.ROOT,
+                    " %s mean %.3g, min %.3g, max %.3g%s",
+                    n[i - 3],
+                    sum[i] / count * 1e6,
+                    min[i] * 1e6,
+                    max[i] * 1e6,
+                    i < 5 ? ";" : ""));
         }
         return sb.toString();
     }

@@ -43,17 +43,21 @@ public final class FolderLock implements AutoCloseable {
     private static final Map<Path, Object> HELD = new ConcurrentHashMap<>();
     /** Marks a folder in HELD while its lock is being taken. */
     private static final Object RESERVED = new Object();
-    private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss", Locale.ROOT)
-            .withZone(ZoneId.systemDefault());
+
+    private static final DateTimeFormatter TIME =
+            DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss", Locale.ROOT).withZone(ZoneId.systemDefault());
 
     static {
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            for (Object l : HELD.values()) {
-                if (l instanceof FolderLock f) {
-                    f.removeFile();
-                }
-            }
-        }, "fresa-folder-locks"));
+        Runtime.getRuntime()
+                .addShutdownHook(new Thread(
+                        () -> {
+                            for (Object l : HELD.values()) {
+                                if (l instanceof FolderLock f) {
+                                    f.removeFile();
+                                }
+                            }
+                        },
+                        "fresa-folder-locks"));
     }
 
     private final Path dir;

@@ -67,8 +67,7 @@ public final class GradingService {
         public static final Options DEFAULT = new Options(ArcMode.BIARC, OptionalDouble.empty(), Optional.empty());
     }
 
-    private GradingService() {
-    }
+    private GradingService() {}
 
     /** Reads the settings' outline and grades it with the default options. */
     public static TaskOutcome run(GradingSettings s, OutputFolder out, ProgressMonitor progress)
@@ -92,8 +91,10 @@ public final class GradingService {
         if (name.toLowerCase(Locale.ROOT).endsWith(".dxf")) {
             List<Contour> closed = DrawingContours.read(file).closed();
             if (closed.isEmpty()) {
-                throw new CamInputException(name, "no closed outline in the drawing (expected lines, arcs or "
-                        + "polylines that form a closed contour)");
+                throw new CamInputException(
+                        name,
+                        "no closed outline in the drawing (expected lines, arcs or "
+                                + "polylines that form a closed contour)");
             }
             return closed;
         }
@@ -118,17 +119,30 @@ public final class GradingService {
                 throw new IllegalArgumentException("steps must be > 0 mm: length " + vc + ", width " + vl);
             }
             if (!(s.shrinkage() >= 0) || !(s.shrinkage() < 0.5)) {
-                throw new IllegalArgumentException("shrinkage must be a fraction in [0, 0.5), e.g. 0.02: " + s.shrinkage());
+                throw new IllegalArgumentException(
+                        "shrinkage must be a fraction in [0, 0.5), e.g. 0.02: " + s.shrinkage());
             }
             if (!Double.isFinite(s.baseSize())) {
                 throw new IllegalArgumentException("base size must be a number");
             }
             ShrinkageMode mode = s.shrinkageMode();
             // the command line's coordination before the job's
-            Optional<Coordination> co = o.coordination().isPresent() ? o.coordination()
+            Optional<Coordination> co = o.coordination().isPresent()
+                    ? o.coordination()
                     : s.coordination().map(GradingService::coordination);
-            return new GradingPlan(system, s.baseSize(), sizes, vc, vl, s.originMm(), o.lengthAxisDeg(), s.shrinkage(),
-                    mode, o.arcMode(), GradingPlan.DEFAULT_ARC_TOLERANCE_MM, co);
+            return new GradingPlan(
+                    system,
+                    s.baseSize(),
+                    sizes,
+                    vc,
+                    vl,
+                    s.originMm(),
+                    o.lengthAxisDeg(),
+                    s.shrinkage(),
+                    mode,
+                    o.arcMode(),
+                    GradingPlan.DEFAULT_ARC_TOLERANCE_MM,
+                    co);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(SETTINGS, e.getMessage());
         }
@@ -173,8 +187,9 @@ public final class GradingService {
             out.put("widthStep", "the width step must be at least 0 mm, found " + ExactDecimal.of(vl));
         }
         if (!(s.shrinkage() >= 0) || !(s.shrinkage() < 0.5)) {
-            out.put("shrinkage", "shrinkage must be a fraction in [0, 0.5), e.g. 0.02, found "
-                    + ExactDecimal.of(s.shrinkage()));
+            out.put(
+                    "shrinkage",
+                    "shrinkage must be a fraction in [0, 0.5), e.g. 0.02, found " + ExactDecimal.of(s.shrinkage()));
         }
         if (out.isEmpty()) {
             try {
@@ -193,8 +208,14 @@ public final class GradingService {
     }
 
     /** Grades the outline and writes the files. */
-    public static TaskOutcome write(List<Contour> outline, String source, GradingSettings s, Options o,
-            OutputFolder out, ProgressMonitor progress) throws CamInputException, IOException {
+    public static TaskOutcome write(
+            List<Contour> outline,
+            String source,
+            GradingSettings s,
+            Options o,
+            OutputFolder out,
+            ProgressMonitor progress)
+            throws CamInputException, IOException {
         GradingPlan plan = plan(s, o);
         Grader grader = Grader.of(outline, plan, source);
         out.create();
@@ -212,8 +233,15 @@ public final class GradingService {
         GradingResult result = new GradingResult(grader.frame(), grader.rule(), done);
         out.writeString("grading.csv", table(result));
         progress.progress((double) n / (n + 1), "plot");
-        out.write("grading.png", os -> GradingChart.writePng("Graded sizes, " + source, sizeOutlines(result),
-                result.frame().lengthAxis(), 1200, 1400, os));
+        out.write(
+                "grading.png",
+                os -> GradingChart.writePng(
+                        "Graded sizes, " + source,
+                        sizeOutlines(result),
+                        result.frame().lengthAxis(),
+                        1200,
+                        1400,
+                        os));
         return new TaskOutcome(0, List.of(), summary(result, source, plan), out.written());
     }
 
@@ -221,7 +249,8 @@ public final class GradingService {
     public static List<GradingChart.SizeOutline> sizeOutlines(GradingResult r) {
         List<GradingChart.SizeOutline> l = new ArrayList<>();
         for (GradedSize g : r.sizes()) {
-            l.add(new GradingChart.SizeOutline(g.name(), g.output(), g.size() == r.rule().baseSize()));
+            l.add(new GradingChart.SizeOutline(
+                    g.name(), g.output(), g.size() == r.rule().baseSize()));
         }
         return l;
     }
@@ -230,7 +259,10 @@ public final class GradingService {
     static String csv(GradedOutline outline) {
         StringBuilder sb = new StringBuilder("x,y\n");
         for (Vec2 p : outline.points(CSV_CHORD_MM)) {
-            sb.append(ExactDecimal.of(p.x() + 0.0)).append(',').append(ExactDecimal.of(p.y() + 0.0)).append('\n');
+            sb.append(ExactDecimal.of(p.x() + 0.0))
+                    .append(',')
+                    .append(ExactDecimal.of(p.y() + 0.0))
+                    .append('\n');
         }
         return sb.toString();
     }
@@ -240,13 +272,29 @@ public final class GradingService {
         StringBuilder sb = new StringBuilder(
                 "size,length_mm,width_mm,alfa,beta,length_factor,width_factor,heel_size,max_deviation_mm\n");
         for (GradedSize g : r.sizes()) {
-            sb.append(g.name()).append(',').append(ExactDecimal.of(g.lengthMm())).append(',')
-                    .append(ExactDecimal.of(g.widthMm())).append(',').append(ExactDecimal.of(g.factors().alfa()))
-                    .append(',').append(ExactDecimal.of(g.factors().beta())).append(',')
-                    .append(ExactDecimal.of(g.factors().length())).append(',')
-                    .append(ExactDecimal.of(g.factors().width())).append(',')
-                    .append(g.heelSize().isPresent() ? ExactDecimal.of(g.heelSize().getAsDouble()) : "").append(',')
-                    .append(g.maxDeviationMm().isPresent() ? ExactDecimal.of(g.maxDeviationMm().getAsDouble()) : "")
+            sb.append(g.name())
+                    .append(',')
+                    .append(ExactDecimal.of(g.lengthMm()))
+                    .append(',')
+                    .append(ExactDecimal.of(g.widthMm()))
+                    .append(',')
+                    .append(ExactDecimal.of(g.factors().alfa()))
+                    .append(',')
+                    .append(ExactDecimal.of(g.factors().beta()))
+                    .append(',')
+                    .append(ExactDecimal.of(g.factors().length()))
+                    .append(',')
+                    .append(ExactDecimal.of(g.factors().width()))
+                    .append(',')
+                    .append(
+                            g.heelSize().isPresent()
+                                    ? ExactDecimal.of(g.heelSize().getAsDouble())
+                                    : "")
+                    .append(',')
+                    .append(
+                            g.maxDeviationMm().isPresent()
+                                    ? ExactDecimal.of(g.maxDeviationMm().getAsDouble())
+                                    : "")
                     .append('\n');
         }
         return sb.toString();
@@ -265,7 +313,11 @@ public final class GradingService {
         m.put("length_axis_deg", r.frame().lengthAxisDeg());
         m.put("shrinkage", plan.shrinkage());
         m.put("shrinkage_mode", plan.shrinkageMode().id());
-        m.put("arc_mode", plan.coordination().isPresent() ? ArcMode.THREE_POINT.id() : plan.arcMode().id());
+        m.put(
+                "arc_mode",
+                plan.coordination().isPresent()
+                        ? ArcMode.THREE_POINT.id()
+                        : plan.arcMode().id());
         m.put("coordination", plan.coordination().isPresent());
         double worst = 0;
         List<Object> sizes = new ArrayList<>();

@@ -40,8 +40,7 @@ public final class IkService {
     /** The configuration keys a six-joint arm with a spherical wrist knows (ABB confdata, KUKA S and T). */
     public static final List<String> CONFIGURATION_KEYS = List.of("cf1", "cf4", "cf6", "cfx", "S", "T");
 
-    private IkService() {
-    }
+    private IkService() {}
 
     /**
      * What to run.
@@ -55,8 +54,14 @@ public final class IkService {
      * @param configuration wanted configuration values by key ({@link #CONFIGURATION_KEYS})
      * @param all every solution branch instead of one per row
      */
-    public record Settings(Path targets, String robot, RobotTools.Choice tool, IkOptions.Method method,
-            double toleranceMm, Map<String, Integer> configuration, boolean all) {
+    public record Settings(
+            Path targets,
+            String robot,
+            RobotTools.Choice tool,
+            IkOptions.Method method,
+            double toleranceMm,
+            Map<String, Integer> configuration,
+            boolean all) {
         public Settings {
             Objects.requireNonNull(targets, "targets");
             Objects.requireNonNull(robot, "robot");
@@ -68,8 +73,7 @@ public final class IkService {
     }
 
     /** One row of the targets: the pose and its seed joints (empty when none). */
-    record Target(int line, double[] pose, double[] seed) {
-    }
+    record Target(int line, double[] pose, double[] seed) {}
 
     /**
      * Reads {@code --configuration K=V[,K=V]}: cf1, cf4, cf6 (quarter turns, -8..7), cfx (0..7),
@@ -81,8 +85,10 @@ public final class IkService {
             String p = part.trim();
             int eq = p.indexOf('=');
             if (eq <= 0) {
-                throw new CamInputException("--configuration", "expected K=V[,K=V] with K one of "
-                        + String.join(", ", CONFIGURATION_KEYS) + ", got '" + p + "'");
+                throw new CamInputException(
+                        "--configuration",
+                        "expected K=V[,K=V] with K one of " + String.join(", ", CONFIGURATION_KEYS) + ", got '" + p
+                                + "'");
             }
             String key = p.substring(0, eq).trim();
             String value = p.substring(eq + 1).trim();
@@ -93,13 +99,15 @@ public final class IkService {
                 }
             }
             if (k == null) {
-                throw new CamInputException("--configuration", "unknown key '" + key + "': expected one of "
-                        + String.join(", ", CONFIGURATION_KEYS));
+                throw new CamInputException(
+                        "--configuration",
+                        "unknown key '" + key + "': expected one of " + String.join(", ", CONFIGURATION_KEYS));
             }
             int v;
             try {
                 String b = value.replace("'", "");
-                v = b.length() > 1 && (b.charAt(0) == 'B' || b.charAt(0) == 'b') ? Integer.parseInt(b.substring(1), 2)
+                v = b.length() > 1 && (b.charAt(0) == 'B' || b.charAt(0) == 'b')
+                        ? Integer.parseInt(b.substring(1), 2)
                         : Integer.parseInt(b);
             } catch (NumberFormatException e) {
                 throw new CamInputException("--configuration", key + ": expected an integer, got '" + value + "'");
@@ -107,8 +115,7 @@ public final class IkService {
             int min = k.startsWith("cf") && !k.equals("cfx") ? -8 : 0;
             int max = k.equals("T") ? 63 : 7;
             if (v < min || v > max) {
-                throw new CamInputException("--configuration", key + ": expected " + min + " to " + max + ", got "
-                        + v);
+                throw new CamInputException("--configuration", key + ": expected " + min + " to " + max + ", got " + v);
             }
             if (out.put(k, v) != null) {
                 throw new CamInputException("--configuration", key + " is given twice");
@@ -122,15 +129,18 @@ public final class IkService {
             throws CamInputException, IOException {
         Robot bare = RobotFiles.load(s.robot());
         if (!s.configuration().isEmpty() && !hasConfigurations(bare)) {
-            throw new CamInputException("--configuration", bare.name() + " has no arm configurations to choose (only"
-                    + " six-joint arms with a spherical wrist have cf1, cf4, cf6, cfx, S and T)");
+            throw new CamInputException(
+                    "--configuration",
+                    bare.name() + " has no arm configurations to choose (only"
+                            + " six-joint arms with a spherical wrist have cf1, cf4, cf6, cfx, S and T)");
         }
         List<String> problems = new ArrayList<>();
         Transform3 spindle = RobotTools.spindle(bare, s.tool(), problems);
-        Robot robot = bare.withTool(RobotTools.tcp(spindle, s.tool().toolLengthMm().orElse(0)));
+        Robot robot =
+                bare.withTool(RobotTools.tcp(spindle, s.tool().toolLengthMm().orElse(0)));
         List<Target> targets = read(s.targets(), robot.dof());
-        IkOptions options = new IkOptions(s.method(), s.toleranceMm(), s.toleranceMm() / 100,
-                IkOptions.DEFAULT.maxIterations());
+        IkOptions options =
+                new IkOptions(s.method(), s.toleranceMm(), s.toleranceMm() / 100, IkOptions.DEFAULT.maxIterations());
         IkSolver solver = robot.newSolver(options);
         RapidWriter.ArmGeometry arm = RobotPrograms.armGeometry(robot);
         int n = robot.dof();
@@ -194,7 +204,9 @@ public final class IkService {
         summary.put("method", s.method() == IkOptions.Method.THESIS_DLS ? "thesis-dls" : "default");
         summary.put("tolerance_mm", s.toleranceMm());
         summary.put("configuration", new LinkedHashMap<>(s.configuration()));
-        summary.put("tcp_mm", List.of(robot.tool().tx(), robot.tool().ty(), robot.tool().tz()));
+        summary.put(
+                "tcp_mm",
+                List.of(robot.tool().tx(), robot.tool().ty(), robot.tool().tz()));
         summary.put("max_pos_err_mm", stats.maxPosMm());
         summary.put("max_rot_err_rad", stats.maxRotRad());
         summary.putAll(stats.summary());
@@ -217,14 +229,15 @@ public final class IkService {
     }
 
     /** Every distinct solution: from every start, then warm from the seed and the previous row's. */
-    private static List<double[]> solutions(IkSolver solver, Transform3 pose, double[] seed, double[] previous,
-            Robot robot) {
+    private static List<double[]> solutions(
+            IkSolver solver, Transform3 pose, double[] seed, double[] previous, Robot robot) {
         List<double[]> out = new ArrayList<>();
         for (IkResult.Converged c : solver.solveAll(pose)) {
             addDistinct(out, c.q());
         }
         for (double[] start : new double[][] {seed, previous}) {
-            if (start != null && start.length == robot.dof()
+            if (start != null
+                    && start.length == robot.dof()
                     && solver.solve(pose, start) instanceof IkResult.Converged c) {
                 addDistinct(out, c.q());
             }
@@ -271,11 +284,22 @@ public final class IkService {
         for (double v : q) {
             values.add(v);
         }
-        RobotProgram.Motion m = new RobotProgram.Motion(0, "", RobotProgram.MotionType.LINEAR,
-                RobotProgram.PointRole.PART, values, pose, 1, 0);
+        RobotProgram.Motion m = new RobotProgram.Motion(
+                0, "", RobotProgram.MotionType.LINEAR, RobotProgram.PointRole.PART, values, pose, 1, 0);
         RapidWriter.Confdata cf = RapidWriter.confdata(m, arm);
-        Map<String, Integer> has = Map.of("cf1", cf.cf1(), "cf4", cf.cf4(), "cf6", cf.cf6(), "cfx", cf.cfx(), "S",
-                KrlWriter.status(m, arm), "T", KrlWriter.turn(m));
+        Map<String, Integer> has = Map.of(
+                "cf1",
+                cf.cf1(),
+                "cf4",
+                cf.cf4(),
+                "cf6",
+                cf.cf6(),
+                "cfx",
+                cf.cfx(),
+                "S",
+                KrlWriter.status(m, arm),
+                "T",
+                KrlWriter.turn(m));
         for (Map.Entry<String, Integer> e : wanted.entrySet()) {
             if (!has.get(e.getKey()).equals(e.getValue())) {
                 return false;
@@ -284,8 +308,8 @@ public final class IkService {
         return true;
     }
 
-    private static void row(StringBuilder sb, int index, double[] v, double[] q, Robot robot, Transform3 pose,
-            int branch) {
+    private static void row(
+            StringBuilder sb, int index, double[] v, double[] q, Robot robot, Transform3 pose, int branch) {
         int n = robot.dof();
         sb.append(index).append(',');
         for (double d : v) {
@@ -299,8 +323,13 @@ public final class IkService {
             }
             Transform3 reached = robot.forward(q);
             Transform3 flange = robot.flange(q);
-            for (double d : new double[] {reached.tx(), reached.ty(), reached.tz(),
-                reached.translationPart().distance(pose.translationPart()), pose.rotationAngleTo(reached)}) {
+            for (double d : new double[] {
+                reached.tx(),
+                reached.ty(),
+                reached.tz(),
+                reached.translationPart().distance(pose.translationPart()),
+                pose.rotationAngleTo(reached)
+            }) {
                 ExactDecimal.append(sb.append(','), d);
             }
             sb.append(",ok");
@@ -329,8 +358,11 @@ public final class IkService {
         try (BufferedReader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             String header = r.readLine();
             if (header == null) {
-                throw new CamInputException(name, 1, 1, "expected the header x,y,z,roll,pitch,yaw[,q1,...,q" + dof
-                        + "], the file is empty");
+                throw new CamInputException(
+                        name,
+                        1,
+                        1,
+                        "expected the header x,y,z,roll,pitch,yaw[,q1,...,q" + dof + "], the file is empty");
             }
             String[] h = header.replace("\uFEFF", "").split(",", -1);
             String[] want = {"x", "y", "z", "roll", "pitch", "yaw"};
@@ -341,8 +373,12 @@ public final class IkService {
                 ok = h[i].trim().equalsIgnoreCase(expected);
             }
             if (!ok) {
-                throw new CamInputException(name, 1, 1, "expected the header x,y,z,roll,pitch,yaw or"
-                        + " x,y,z,roll,pitch,yaw,q1,...,q" + dof + " (" + dof + " joints), got '" + header + "'");
+                throw new CamInputException(
+                        name,
+                        1,
+                        1,
+                        "expected the header x,y,z,roll,pitch,yaw or" + " x,y,z,roll,pitch,yaw,q1,...,q" + dof + " ("
+                                + dof + " joints), got '" + header + "'");
             }
             int columns = h.length;
             String line;
@@ -354,8 +390,12 @@ public final class IkService {
                 }
                 String[] c = line.split(",", -1);
                 if (c.length != columns) {
-                    throw new CamInputException(name, lineNo, 1, "expected " + columns + " comma-separated numbers ("
-                            + String.join(",", h).trim() + "), got " + c.length);
+                    throw new CamInputException(
+                            name,
+                            lineNo,
+                            1,
+                            "expected " + columns + " comma-separated numbers ("
+                                    + String.join(",", h).trim() + "), got " + c.length);
                 }
                 double[] v = new double[columns];
                 int col = 1;
@@ -394,9 +434,14 @@ public final class IkService {
         // positions within a robot cell, angles within two turns (a seed's prismatic joint in mm)
         double limit = index < 3 ? SettingRanges.CELL_SIZE_MM : index < 6 ? 720 : SettingRanges.CELL_SIZE_MM;
         if (!Double.isFinite(v) || Math.abs(v) > limit || text.isEmpty()) {
-            throw new CamInputException(file, line, column, what + ": expected a number from " + -limit + " to "
-                    + limit + (index < 3 || index >= 6 ? " (mm" + (index >= 6 ? " or deg" : "") + ")" : " (deg)")
-                    + ", got '" + text + "'");
+            throw new CamInputException(
+                    file,
+                    line,
+                    column,
+                    what + ": expected a number from " + -limit + " to "
+                            + limit
+                            + (index < 3 || index >= 6 ? " (mm" + (index >= 6 ? " or deg" : "") + ")" : " (deg)")
+                            + ", got '" + text + "'");
         }
         return v;
     }

@@ -21,7 +21,9 @@ import org.fresa.job.JobSettings.StepNcSettings;
  *
  * @param runs the tasks a run executes: at least one, each once, in {@link JobTask} order
  */
-public record Job(String name, List<JobTask> runs,
+public record Job(
+        String name,
+        List<JobTask> runs,
         Optional<StepNcSettings> stepnc,
         Optional<RobotSettings> robot,
         Optional<PocketSettings> pocket,
@@ -48,8 +50,16 @@ public record Job(String name, List<JobTask> runs,
 
     /** A new, empty job that runs the task. */
     public static Job empty(JobTask task) {
-        return new Job("untitled", List.of(task), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
-                Optional.empty(), Optional.empty(), OutputSettings.DEFAULT);
+        return new Job(
+                "untitled",
+                List.of(task),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                OutputSettings.DEFAULT);
     }
 
     public Job withName(String n) {

@@ -9,8 +9,7 @@ import org.fresa.model.CamInputException;
  * its options, so a job saved in the GUI and the equivalent command give the same files.
  */
 public final class JobRunner {
-    private JobRunner() {
-    }
+    private JobRunner() {}
 
     /**
      * Runs the job's tasks, writing their files into the folder, which it holds for the run
@@ -81,7 +80,7 @@ public final class JobRunner {
 
     /** The settings section the task needs, or a CamInputException naming what is missing. */
     static <T> T require(java.util.Optional<T> section, String element, Job job) throws CamInputException {
-        return section.orElseThrow(() -> new CamInputException(job.name(),
-                "the job's task is " + job.task().id() + " but it has no <" + element + "> settings"));
+        return section.orElseThrow(() -> new CamInputException(
+                job.name(), "the job's task is " + job.task().id() + " but it has no <" + element + "> settings"));
     }
 }

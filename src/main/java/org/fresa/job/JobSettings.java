@@ -19,8 +19,8 @@ import org.fresa.model.Placement;
 import org.fresa.pocket.DadContour;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
-import org.fresa.post.MillingPost;
 import org.fresa.post.CuttingPost;
+import org.fresa.post.MillingPost;
 import org.fresa.sole.PatternKind;
 import org.fresa.sole.SizeRule;
 
@@ -29,8 +29,7 @@ import org.fresa.sole.SizeRule;
  * Paths are absolute once a job is read; they are written relative to the job file.
  */
 public final class JobSettings {
-    private JobSettings() {
-    }
+    private JobSettings() {}
 
     /**
      * STEP-NC input, the machine-tool post used by {@code toolpath}, and the planner's choices
@@ -42,14 +41,23 @@ public final class JobSettings {
      *     {@code --entry-angle}, {@code --centre-cutting})
      * @param paths whose path conventions: Fresa's own or the 2016 robot thesis's
      */
-    public record StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm,
-            org.fresa.pocket.EntryRule entry, org.fresa.toolpath.PathConvention paths) {
+    public record StepNcSettings(
+            Path file,
+            MillingPost post,
+            boolean trustCuttingSpeed,
+            double breakthroughMm,
+            org.fresa.pocket.EntryRule entry,
+            org.fresa.toolpath.PathConvention paths) {
         /**
          * The STEP-NC module's defaults, as {@code fresa toolpath} and {@code fresa robot}, a new
          * job and {@code schemas/job.xsd} have them; the file has none.
          */
-        public static final StepNcSettings DEFAULTS = new StepNcSettings(Path.of(""), MillingPost.LINUXCNC, false,
-                org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM, org.fresa.pocket.EntryRule.DEFAULT,
+        public static final StepNcSettings DEFAULTS = new StepNcSettings(
+                Path.of(""),
+                MillingPost.LINUXCNC,
+                false,
+                org.fresa.toolpath.PlanningChoices.DEFAULT_BREAKTHROUGH_MM,
+                org.fresa.pocket.EntryRule.DEFAULT,
                 org.fresa.toolpath.PathConvention.FRESA);
 
         public StepNcSettings {
@@ -67,7 +75,11 @@ public final class JobSettings {
         }
 
         /** These entries and Fresa's own path conventions. */
-        public StepNcSettings(Path file, MillingPost post, boolean trustCuttingSpeed, double breakthroughMm,
+        public StepNcSettings(
+                Path file,
+                MillingPost post,
+                boolean trustCuttingSpeed,
+                double breakthroughMm,
                 org.fresa.pocket.EntryRule entry) {
             this(file, post, trustCuttingSpeed, breakthroughMm, entry, org.fresa.toolpath.PathConvention.FRESA);
         }
@@ -100,16 +112,22 @@ public final class JobSettings {
      * @param toolLengthMm the tool length from the spindle nose to the tip for every tool; empty:
      *     each STEP-NC tool's own
      */
-    public record RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
-            java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm, TablePlacing placing) {
+    public record RobotSettings(
+            String robot,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            java.util.Optional<Placement> spindle,
+            java.util.OptionalDouble toolLengthMm,
+            TablePlacing placing) {
         public static final List<String> DEFAULT_FORMATS = List.of("csv", "xml", "png");
         /**
          * The robot module's defaults, as {@code schemas/job.xsd}, {@code fresa robot}'s
          * {@code --formats} and a new job's Position tab have them: the IRB-140 with the table and the
          * workpiece at the robot's base, the robot file's tool frame and the STEP-NC tools' lengths.
          */
-        public static final RobotSettings DEFAULTS = new RobotSettings("irb140", Placement.ORIGIN, Placement.ORIGIN,
-                DEFAULT_FORMATS);
+        public static final RobotSettings DEFAULTS =
+                new RobotSettings("irb140", Placement.ORIGIN, Placement.ORIGIN, DEFAULT_FORMATS);
 
         public RobotSettings {
             Objects.requireNonNull(robot, "robot");
@@ -122,8 +140,13 @@ public final class JobSettings {
         }
 
         /** The robot -> table placement as given. */
-        public RobotSettings(String robot, Placement robotTable, Placement tablePiece, List<String> formats,
-                java.util.Optional<Placement> spindle, java.util.OptionalDouble toolLengthMm) {
+        public RobotSettings(
+                String robot,
+                Placement robotTable,
+                Placement tablePiece,
+                List<String> formats,
+                java.util.Optional<Placement> spindle,
+                java.util.OptionalDouble toolLengthMm) {
             this(robot, robotTable, tablePiece, formats, spindle, toolLengthMm, TablePlacing.GIVEN);
         }
 
@@ -148,19 +171,45 @@ public final class JobSettings {
      *     present it is the contour planned, and {@code contour} only names it (the {@code .dad}
      *     file it was opened from or is saved as); empty: the contour is read from the file
      */
-    public record PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
-            double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-            double finishFeedMmPerMin, PocketPost post, MillingDirection direction, EntryRule.Kind entry,
-            double entryAngleDeg, boolean centreCutting, Optional<DadContour> elements) {
+    public record PocketSettings(
+            Path contour,
+            double toolDiameterMm,
+            double cutFraction,
+            double finishFraction,
+            double zTopMm,
+            double zBottomMm,
+            double maxDepthPerPassMm,
+            double spindleRpm,
+            double feedMmPerMin,
+            double finishFeedMmPerMin,
+            PocketPost post,
+            MillingDirection direction,
+            EntryRule.Kind entry,
+            double entryAngleDeg,
+            boolean centreCutting,
+            Optional<DadContour> elements) {
         /**
          * The pocket module's defaults, as {@code fresa pocket}, the Pocket tab of a new job and
          * {@code schemas/job.xsd} have them. The contour and the tool diameter have none (the
          * command line and the job file must give them): a new job's tab starts with no contour and
          * this 6 mm cutter.
          */
-        public static final PocketSettings DEFAULTS = new PocketSettings(Path.of(""), 6, 0.6, 0.15, 0, -5, 2, 3000,
-                300, 100, PocketPost.LINUXCNC, MillingDirection.CLIMB, EntryRule.Kind.AUTO,
-                EntryRule.DEFAULT_ANGLE_DEG, false);
+        public static final PocketSettings DEFAULTS = new PocketSettings(
+                Path.of(""),
+                6,
+                0.6,
+                0.15,
+                0,
+                -5,
+                2,
+                3000,
+                300,
+                100,
+                PocketPost.LINUXCNC,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false);
 
         public PocketSettings {
             Objects.requireNonNull(contour, "contour");
@@ -171,30 +220,99 @@ public final class JobSettings {
         }
 
         /** Settings whose contour is read from its file. */
-        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
-                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-                double finishFeedMmPerMin, PocketPost post, MillingDirection direction, EntryRule.Kind entry,
-                double entryAngleDeg, boolean centreCutting) {
-            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
-                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry, entryAngleDeg, centreCutting,
+        public PocketSettings(
+                Path contour,
+                double toolDiameterMm,
+                double cutFraction,
+                double finishFraction,
+                double zTopMm,
+                double zBottomMm,
+                double maxDepthPerPassMm,
+                double spindleRpm,
+                double feedMmPerMin,
+                double finishFeedMmPerMin,
+                PocketPost post,
+                MillingDirection direction,
+                EntryRule.Kind entry,
+                double entryAngleDeg,
+                boolean centreCutting) {
+            this(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
                     Optional.empty());
         }
 
         /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
-        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
-                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-                double finishFeedMmPerMin, PocketPost post, MillingDirection direction) {
-            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
-                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, EntryRule.Kind.AUTO,
-                    EntryRule.DEFAULT_ANGLE_DEG, false);
+        public PocketSettings(
+                Path contour,
+                double toolDiameterMm,
+                double cutFraction,
+                double finishFraction,
+                double zTopMm,
+                double zBottomMm,
+                double maxDepthPerPassMm,
+                double spindleRpm,
+                double feedMmPerMin,
+                double finishFeedMmPerMin,
+                PocketPost post,
+                MillingDirection direction) {
+            this(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    EntryRule.Kind.AUTO,
+                    EntryRule.DEFAULT_ANGLE_DEG,
+                    false);
         }
 
         /** Climb-milled settings. */
-        public PocketSettings(Path contour, double toolDiameterMm, double cutFraction, double finishFraction,
-                double zTopMm, double zBottomMm, double maxDepthPerPassMm, double spindleRpm, double feedMmPerMin,
-                double finishFeedMmPerMin, PocketPost post) {
-            this(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthPerPassMm,
-                    spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, MillingDirection.CLIMB);
+        public PocketSettings(
+                Path contour,
+                double toolDiameterMm,
+                double cutFraction,
+                double finishFraction,
+                double zTopMm,
+                double zBottomMm,
+                double maxDepthPerPassMm,
+                double spindleRpm,
+                double feedMmPerMin,
+                double finishFeedMmPerMin,
+                PocketPost post) {
+            this(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    MillingDirection.CLIMB);
         }
 
         /**
@@ -209,25 +327,67 @@ public final class JobSettings {
 
         /** The same settings with other entries. */
         public PocketSettings withEntry(EntryRule.Kind kind, double angleDeg, boolean centre) {
-            return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
-                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, kind, angleDeg,
-                    centre, elements);
+            return new PocketSettings(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    kind,
+                    angleDeg,
+                    centre,
+                    elements);
         }
 
         /**
          * The same settings with the contour held in the job (typed in the editor); file names it.
          */
         public PocketSettings withElements(Path file, DadContour typed) {
-            return new PocketSettings(file, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
-                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry,
-                    entryAngleDeg, centreCutting, Optional.of(typed));
+            return new PocketSettings(
+                    file,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    Optional.of(typed));
         }
 
         /** The same settings with the contour read from a file (no elements held in the job). */
         public PocketSettings withContourFile(Path file) {
-            return new PocketSettings(file, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
-                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, direction, entry,
-                    entryAngleDeg, centreCutting, Optional.empty());
+            return new PocketSettings(
+                    file,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    Optional.empty());
         }
 
         /** Whether the passes are climb-milled. */
@@ -237,9 +397,23 @@ public final class JobSettings {
 
         /** The same settings milled in the given direction. */
         public PocketSettings withDirection(MillingDirection d) {
-            return new PocketSettings(contour, toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm,
-                    maxDepthPerPassMm, spindleRpm, feedMmPerMin, finishFeedMmPerMin, post, d, entry, entryAngleDeg,
-                    centreCutting, elements);
+            return new PocketSettings(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    d,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    elements);
         }
     }
 
@@ -255,17 +429,42 @@ public final class JobSettings {
      * @param cutOrder the planner's own cut order and start points over the automatic ones
      *     ({@link CutOrderOverride#NONE}: the automatic order)
      */
-    public record CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
-            LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode, CuttingPost post,
-            KerfCompensation compensation, CutSense outerDirection, CutSense holeDirection, double overcutMm,
-            boolean avoidCutParts, CutOrderOverride cutOrder) {
+    public record CuttingSettings(
+            Path drawing,
+            double kerfMm,
+            CutProcess process,
+            double leadInMm,
+            double leadOutMm,
+            LeadShape lead,
+            double toleranceMm,
+            DrawingUnits units,
+            boolean paperMode,
+            CuttingPost post,
+            KerfCompensation compensation,
+            CutSense outerDirection,
+            CutSense holeDirection,
+            double overcutMm,
+            boolean avoidCutParts,
+            CutOrderOverride cutOrder) {
         /**
          * The cutting module's defaults, as {@code fresa cut}, the Cutting tab of a new job and
          * {@code schemas/job.xsd} have them; the drawing has none.
          */
-        public static final CuttingSettings DEFAULTS = new CuttingSettings(Path.of(""), 2, CutProcess.PLASMA, 3, 1,
-                LeadShape.ARC, CuttingOptions.DEFAULT_GAP_MM, DrawingUnits.AUTO, false,
-                CuttingPost.LINUXCNC, KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0,
+        public static final CuttingSettings DEFAULTS = new CuttingSettings(
+                Path.of(""),
+                2,
+                CutProcess.PLASMA,
+                3,
+                1,
+                LeadShape.ARC,
+                CuttingOptions.DEFAULT_GAP_MM,
+                DrawingUnits.AUTO,
+                false,
+                CuttingPost.LINUXCNC,
+                KerfCompensation.SOFTWARE,
+                CutSense.PROCESS,
+                CutSense.PROCESS,
+                0,
                 true);
 
         public CuttingSettings {
@@ -281,41 +480,123 @@ public final class JobSettings {
         }
 
         /** The automatic cut order and start points. */
-        public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
-                LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
-                CuttingPost post, KerfCompensation compensation, CutSense outerDirection,
-                CutSense holeDirection, double overcutMm, boolean avoidCutParts) {
-            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post, compensation,
-                    outerDirection, holeDirection, overcutMm, avoidCutParts, CutOrderOverride.NONE);
+        public CuttingSettings(
+                Path drawing,
+                double kerfMm,
+                CutProcess process,
+                double leadInMm,
+                double leadOutMm,
+                LeadShape lead,
+                double toleranceMm,
+                DrawingUnits units,
+                boolean paperMode,
+                CuttingPost post,
+                KerfCompensation compensation,
+                CutSense outerDirection,
+                CutSense holeDirection,
+                double overcutMm,
+                boolean avoidCutParts) {
+            this(
+                    drawing,
+                    kerfMm,
+                    process,
+                    leadInMm,
+                    leadOutMm,
+                    lead,
+                    toleranceMm,
+                    units,
+                    paperMode,
+                    post,
+                    compensation,
+                    outerDirection,
+                    holeDirection,
+                    overcutMm,
+                    avoidCutParts,
+                    CutOrderOverride.NONE);
         }
 
         /** These settings with the planner's own cut order. */
         public CuttingSettings withCutOrder(CutOrderOverride o) {
-            return new CuttingSettings(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode,
-                    post, compensation, outerDirection, holeDirection, overcutMm, avoidCutParts, o);
+            return new CuttingSettings(
+                    drawing,
+                    kerfMm,
+                    process,
+                    leadInMm,
+                    leadOutMm,
+                    lead,
+                    toleranceMm,
+                    units,
+                    paperMode,
+                    post,
+                    compensation,
+                    outerDirection,
+                    holeDirection,
+                    overcutMm,
+                    avoidCutParts,
+                    o);
         }
 
         /** Software compensation, the process's directions, no overcut, rapids around cut parts. */
-        public CuttingSettings(Path drawing, double kerfMm, CutProcess process, double leadInMm, double leadOutMm,
-                LeadShape lead, double toleranceMm, DrawingUnits units, boolean paperMode,
+        public CuttingSettings(
+                Path drawing,
+                double kerfMm,
+                CutProcess process,
+                double leadInMm,
+                double leadOutMm,
+                LeadShape lead,
+                double toleranceMm,
+                DrawingUnits units,
+                boolean paperMode,
                 CuttingPost post) {
-            this(drawing, kerfMm, process, leadInMm, leadOutMm, lead, toleranceMm, units, paperMode, post,
-                    KerfCompensation.SOFTWARE, CutSense.PROCESS, CutSense.PROCESS, 0, true);
+            this(
+                    drawing,
+                    kerfMm,
+                    process,
+                    leadInMm,
+                    leadOutMm,
+                    lead,
+                    toleranceMm,
+                    units,
+                    paperMode,
+                    post,
+                    KerfCompensation.SOFTWARE,
+                    CutSense.PROCESS,
+                    CutSense.PROCESS,
+                    0,
+                    true);
         }
     }
 
     /** Grading options (spec/cli.md, {@code fresa grade}); empty steps mean the system's own. */
-    public record GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, SizeSystem system,
-            OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
-            double shrinkage, ShrinkageMode shrinkageMode, Optional<HeelCoordination> coordination) {
+    public record GradingSettings(
+            Path outline,
+            double baseSize,
+            String sizes,
+            boolean halfSizes,
+            SizeSystem system,
+            OptionalDouble lengthStepMm,
+            OptionalDouble widthStepMm,
+            Optional<Vec2> originMm,
+            double shrinkage,
+            ShrinkageMode shrinkageMode,
+            Optional<HeelCoordination> coordination) {
         /**
          * The grading module's defaults, as {@code fresa grade}, the Grading tab of a new job and
          * {@code schemas/job.xsd} have them; the outline has none, and the command line asks for
          * the base size, the sizes and the system.
          */
-        public static final GradingSettings DEFAULTS = new GradingSettings(Path.of(""), 40, "36-44", false,
-                SizeSystem.BR, OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0,
-                ShrinkageMode.MULTIPLICATIVE, Optional.empty());
+        public static final GradingSettings DEFAULTS = new GradingSettings(
+                Path.of(""),
+                40,
+                "36-44",
+                false,
+                SizeSystem.BR,
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                Optional.empty(),
+                0,
+                ShrinkageMode.MULTIPLICATIVE,
+                Optional.empty());
 
         public GradingSettings {
             Objects.requireNonNull(outline, "outline");
@@ -329,11 +610,29 @@ public final class JobSettings {
         }
 
         /** Grading without heel coordination. */
-        public GradingSettings(Path outline, double baseSize, String sizes, boolean halfSizes, SizeSystem system,
-                OptionalDouble lengthStepMm, OptionalDouble widthStepMm, Optional<Vec2> originMm,
-                double shrinkage, ShrinkageMode shrinkageMode) {
-            this(outline, baseSize, sizes, halfSizes, system, lengthStepMm, widthStepMm, originMm, shrinkage,
-                    shrinkageMode, Optional.empty());
+        public GradingSettings(
+                Path outline,
+                double baseSize,
+                String sizes,
+                boolean halfSizes,
+                SizeSystem system,
+                OptionalDouble lengthStepMm,
+                OptionalDouble widthStepMm,
+                Optional<Vec2> originMm,
+                double shrinkage,
+                ShrinkageMode shrinkageMode) {
+            this(
+                    outline,
+                    baseSize,
+                    sizes,
+                    halfSizes,
+                    system,
+                    lengthStepMm,
+                    widthStepMm,
+                    originMm,
+                    shrinkage,
+                    shrinkageMode,
+                    Optional.empty());
         }
     }
 
@@ -382,16 +681,43 @@ public final class JobSettings {
      * @param block the mould block that holds the pair, or empty: each foot's programs then stay
      *     in the outline's frame
      */
-    public record SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, MillingPost post,
-            SizeSystem system, Optional<Vec2> originMm, double shrinkage, ShrinkageMode shrinkageMode,
-            double treadDepthMm, double clearanceMm, double marginMm, List<SoleTool> tools, List<SoleDesign> designs,
-            String cavityTool, Optional<SoleBlock> block) {
+    public record SoleSettings(
+            Path outline,
+            double baseSize,
+            String sizes,
+            double cavityDepthMm,
+            MillingPost post,
+            SizeSystem system,
+            Optional<Vec2> originMm,
+            double shrinkage,
+            ShrinkageMode shrinkageMode,
+            double treadDepthMm,
+            double clearanceMm,
+            double marginMm,
+            List<SoleTool> tools,
+            List<SoleDesign> designs,
+            String cavityTool,
+            Optional<SoleBlock> block) {
         /**
          * The sole module's defaults, as {@code schemas/job.xsd} has them (the sole has no command-line
          * options: {@code fresa sole JOB}); the outline has none, and there are no tools, designs or block.
          */
-        public static final SoleSettings DEFAULTS = new SoleSettings(Path.of(""), 40, "40", 10, MillingPost.LINUXCNC,
-                SizeSystem.BR, Optional.empty(), 0, ShrinkageMode.MULTIPLICATIVE, 2, 5, 2, List.of(), List.of(), "",
+        public static final SoleSettings DEFAULTS = new SoleSettings(
+                Path.of(""),
+                40,
+                "40",
+                10,
+                MillingPost.LINUXCNC,
+                SizeSystem.BR,
+                Optional.empty(),
+                0,
+                ShrinkageMode.MULTIPLICATIVE,
+                2,
+                5,
+                2,
+                List.of(),
+                List.of(),
+                "",
                 Optional.empty());
 
         public SoleSettings {
@@ -408,30 +734,101 @@ public final class JobSettings {
         }
 
         /** A sole job without a mould block: each foot's programs in the outline's frame. */
-        public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, MillingPost post,
-                SizeSystem system, Optional<Vec2> originMm, double shrinkage, ShrinkageMode shrinkageMode,
-                double treadDepthMm, double clearanceMm, double marginMm, List<SoleTool> tools,
-                List<SoleDesign> designs, String cavityTool) {
-            this(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage, shrinkageMode,
-                    treadDepthMm, clearanceMm, marginMm, tools, designs, cavityTool, Optional.empty());
+        public SoleSettings(
+                Path outline,
+                double baseSize,
+                String sizes,
+                double cavityDepthMm,
+                MillingPost post,
+                SizeSystem system,
+                Optional<Vec2> originMm,
+                double shrinkage,
+                ShrinkageMode shrinkageMode,
+                double treadDepthMm,
+                double clearanceMm,
+                double marginMm,
+                List<SoleTool> tools,
+                List<SoleDesign> designs,
+                String cavityTool) {
+            this(
+                    outline,
+                    baseSize,
+                    sizes,
+                    cavityDepthMm,
+                    post,
+                    system,
+                    originMm,
+                    shrinkage,
+                    shrinkageMode,
+                    treadDepthMm,
+                    clearanceMm,
+                    marginMm,
+                    tools,
+                    designs,
+                    cavityTool,
+                    Optional.empty());
         }
 
         /** A sole job without tread designs, the defaults elsewhere. */
         public SoleSettings(Path outline, double baseSize, String sizes, double cavityDepthMm, MillingPost post) {
-            this(outline, baseSize, sizes, cavityDepthMm, post, SizeSystem.BR, Optional.empty(), 0,
-                    ShrinkageMode.MULTIPLICATIVE, 2, 5, 2, List.of(), List.of(), "");
+            this(
+                    outline,
+                    baseSize,
+                    sizes,
+                    cavityDepthMm,
+                    post,
+                    SizeSystem.BR,
+                    Optional.empty(),
+                    0,
+                    ShrinkageMode.MULTIPLICATIVE,
+                    2,
+                    5,
+                    2,
+                    List.of(),
+                    List.of(),
+                    "");
         }
 
         /** The same job with other tread designs. */
         public SoleSettings withDesigns(List<SoleDesign> ds) {
-            return new SoleSettings(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage,
-                    shrinkageMode, treadDepthMm, clearanceMm, marginMm, tools, ds, cavityTool, block);
+            return new SoleSettings(
+                    outline,
+                    baseSize,
+                    sizes,
+                    cavityDepthMm,
+                    post,
+                    system,
+                    originMm,
+                    shrinkage,
+                    shrinkageMode,
+                    treadDepthMm,
+                    clearanceMm,
+                    marginMm,
+                    tools,
+                    ds,
+                    cavityTool,
+                    block);
         }
 
         /** The same job with another mould block (empty: none). */
         public SoleSettings withBlock(Optional<SoleBlock> b) {
-            return new SoleSettings(outline, baseSize, sizes, cavityDepthMm, post, system, originMm, shrinkage,
-                    shrinkageMode, treadDepthMm, clearanceMm, marginMm, tools, designs, cavityTool, b);
+            return new SoleSettings(
+                    outline,
+                    baseSize,
+                    sizes,
+                    cavityDepthMm,
+                    post,
+                    system,
+                    originMm,
+                    shrinkage,
+                    shrinkageMode,
+                    treadDepthMm,
+                    clearanceMm,
+                    marginMm,
+                    tools,
+                    designs,
+                    cavityTool,
+                    b);
         }
     }
 
@@ -450,8 +847,15 @@ public final class JobSettings {
      * @param dpiMm DPI, from the part zero down to the pattern's lowest point, or empty to measure it
      * @param xtanpMm XTANP, from the part zero to the inner tangent parallel to y, or empty to measure it
      */
-    public record SoleBlock(double dMm, double dlmMm, double eMm, double sMm, double cmMm, OptionalDouble cpMm,
-            OptionalDouble dpiMm, OptionalDouble xtanpMm) {
+    public record SoleBlock(
+            double dMm,
+            double dlmMm,
+            double eMm,
+            double sMm,
+            double cmMm,
+            OptionalDouble cpMm,
+            OptionalDouble dpiMm,
+            OptionalDouble xtanpMm) {
         public SoleBlock {
             Objects.requireNonNull(cpMm, "cpMm");
             Objects.requireNonNull(dpiMm, "dpiMm");
@@ -460,7 +864,12 @@ public final class JobSettings {
     }
 
     /** A tread tool (the thesis's form bits). */
-    public record SoleTool(String id, int number, double diameterMm, double spindleRpm, double feedMmPerMin,
+    public record SoleTool(
+            String id,
+            int number,
+            double diameterMm,
+            double spindleRpm,
+            double feedMmPerMin,
             double plungeFeedMmPerMin) {
         public SoleTool {
             Objects.requireNonNull(id, "id");
@@ -486,8 +895,8 @@ public final class JobSettings {
     }
 
     /** An explicit copy: mirror (about x = mirrorXMm, y = mirrorYMm), rotate about the origin, translate. */
-    public record SoleCopy(double dxMm, double dyMm, OptionalDouble mirrorXMm, OptionalDouble mirrorYMm,
-            double rotateDeg) {
+    public record SoleCopy(
+            double dxMm, double dyMm, OptionalDouble mirrorXMm, OptionalDouble mirrorYMm, double rotateDeg) {
         public SoleCopy {
             Objects.requireNonNull(mirrorXMm, "mirrorXMm");
             Objects.requireNonNull(mirrorYMm, "mirrorYMm");
@@ -495,10 +904,23 @@ public final class JobSettings {
     }
 
     /** One tread design: figures repeated by a pattern (see schemas/job.xsd, element sole/design). */
-    public record SoleDesign(String name, String tool, SizeRule rule, boolean text, PatternKind pattern, int count,
+    public record SoleDesign(
+            String name,
+            String tool,
+            SizeRule rule,
+            boolean text,
+            PatternKind pattern,
+            int count,
             int rows,
-            double dxMm, double dyMm, double rowShiftMm, double stepDeg, double centerXMm, double centerYMm,
-            List<SoleFigure> lead, List<SoleFigure> figures, List<SoleCopy> copies) {
+            double dxMm,
+            double dyMm,
+            double rowShiftMm,
+            double stepDeg,
+            double centerXMm,
+            double centerYMm,
+            List<SoleFigure> lead,
+            List<SoleFigure> figures,
+            List<SoleCopy> copies) {
         public SoleDesign {
             Objects.requireNonNull(name, "name");
             Objects.requireNonNull(tool, "tool");

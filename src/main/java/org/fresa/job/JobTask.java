@@ -4,7 +4,13 @@ import java.util.Locale;
 
 /** What {@code fresa run} executes for a job: the command of the same name. */
 public enum JobTask {
-    STEPNC, TOOLPATH, ROBOT, POCKET, CUT, GRADE, SOLE;
+    STEPNC,
+    TOOLPATH,
+    ROBOT,
+    POCKET,
+    CUT,
+    GRADE,
+    SOLE;
 
     /** The name used in job files and on the command line. */
     public String id() {

@@ -4,8 +4,8 @@ import jakarta.xml.bind.JAXBContext;
 import jakarta.xml.bind.JAXBElement;
 import jakarta.xml.bind.JAXBException;
 import jakarta.xml.bind.Marshaller;
-import jakarta.xml.bind.Unmarshaller;
 import jakarta.xml.bind.UnmarshalException;
+import jakarta.xml.bind.Unmarshaller;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -59,8 +59,7 @@ public final class JobXml {
     private static final Schema SCHEMA = SafeXml.schema("/schemas/job.xsd");
     private static final JAXBContext CONTEXT = createContext();
 
-    private JobXml() {
-    }
+    private JobXml() {}
 
     private static JAXBContext createContext() {
         try {
@@ -93,20 +92,26 @@ public final class JobXml {
             throw new CamInputException(name, "not a valid job file: " + e.getMessage());
         }
         if (xml.getVersion() > VERSION) {
-            throw new CamInputException(name, "job file version " + xml.getVersion()
-                    + " is newer than this Fresa understands (" + VERSION + ")");
+            throw new CamInputException(
+                    name,
+                    "job file version " + xml.getVersion() + " is newer than this Fresa understands (" + VERSION + ")");
         }
         Path base = file.toAbsolutePath().getParent();
         try {
             return fromXml(xml, base);
         } catch (SettingRange.OutOfRange e) {
-            throw new CamInputException(name, lineOf(file, e.range().attribute(), e.value()), 0,
+            throw new CamInputException(
+                    name,
+                    lineOf(file, e.range().attribute(), e.value()),
+                    0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
         } catch (SettingChoice.Unknown e) {
             throw new CamInputException(name, lineOf(file, e.choice().attribute(), e.text()), 0, e.getMessage());
         } catch (BadEntry e) {
             int line = e.attribute == null ? 0 : lineOf(file, e.attribute, e.word);
-            throw line > 0 ? new CamInputException(name, line, 0, e.getMessage()) : new CamInputException(name, e.getMessage());
+            throw line > 0
+                    ? new CamInputException(name, line, 0, e.getMessage())
+                    : new CamInputException(name, e.getMessage());
         }
     }
 
@@ -119,7 +124,8 @@ public final class JobXml {
                 java.util.regex.Matcher m = p.matcher(lines.get(i));
                 while (m.find()) {
                     // the word alone, or one item of a comma list
-                    if (Arrays.stream(m.group(2).split(",")).anyMatch(w -> w.trim().equals(word.trim()))) {
+                    if (Arrays.stream(m.group(2).split(","))
+                            .anyMatch(w -> w.trim().equals(word.trim()))) {
                         return i + 1;
                     }
                 }
@@ -162,9 +168,11 @@ public final class JobXml {
             } else {
                 msg = "expected a job as schemas/job.xsd describes: " + msg;
             }
-            return new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()), msg, e);
+            return new CamInputException(
+                    name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()), msg, e);
         }
-        return new CamInputException(name, 0, 0, "not a valid job file: " + (c != null ? c.getMessage() : e.getMessage()), e);
+        return new CamInputException(
+                name, 0, 0, "not a valid job file: " + (c != null ? c.getMessage() : e.getMessage()), e);
     }
 
     /** Writes a job; file paths are stored relative to the job file's folder where possible. */
@@ -192,6 +200,7 @@ public final class JobXml {
 
         /** The attribute and its word that find the entry's line, or null. */
         final String attribute;
+
         final String word;
 
         BadEntry(String message) {
@@ -214,12 +223,16 @@ public final class JobXml {
         for (org.fresa.job.xml.OrderedCutType c : t.getCut()) {
             Vec2 at = Vec2.of(Cutting.CUT_X.require(c.getXMm()), Cutting.CUT_Y.require(c.getYMm()));
             if ((c.getStartXMm() == null) != (c.getStartYMm() == null)) {
-                throw new BadEntry("<cut contour=\"" + c.getContour() + "\"> has one of startXMm and startYMm: give"
-                        + " both (the start point) or neither (the automatic start)", "contour", c.getContour());
+                throw new BadEntry(
+                        "<cut contour=\"" + c.getContour() + "\"> has one of startXMm and startYMm: give"
+                                + " both (the start point) or neither (the automatic start)",
+                        "contour",
+                        c.getContour());
             }
-            Optional<Vec2> start = c.getStartXMm() == null ? Optional.empty()
-                    : Optional.of(Vec2.of(Cutting.START_X.require(c.getStartXMm()),
-                            Cutting.START_Y.require(c.getStartYMm())));
+            Optional<Vec2> start = c.getStartXMm() == null
+                    ? Optional.empty()
+                    : Optional.of(Vec2.of(
+                            Cutting.START_X.require(c.getStartXMm()), Cutting.START_Y.require(c.getStartYMm())));
             cuts.add(new org.fresa.cutting.CutOrderOverride.Cut(c.getContour(), at, start));
         }
         return new org.fresa.cutting.CutOrderOverride(cuts);
@@ -247,15 +260,22 @@ public final class JobXml {
         for (Object o : x.getLineOrArc()) {
             if (o instanceof org.fresa.job.xml.PocketLineType l) {
                 if (l.getA() == 0 && l.getB() == 0) {
-                    throw new BadEntry("<line> element " + (out.size() + 1) + ": a and b are both zero, which is no line",
-                            "a", "0");
+                    throw new BadEntry(
+                            "<line> element " + (out.size() + 1) + ": a and b are both zero, which is no line",
+                            "a",
+                            "0");
                 }
-                out.add(new org.fresa.pocket.DadElement(false, l.getA(), l.getB(), l.getDMm(), selector(l.getSelector()),
-                        ' '));
+                out.add(new org.fresa.pocket.DadElement(
+                        false, l.getA(), l.getB(), l.getDMm(), selector(l.getSelector()), ' '));
             } else {
                 org.fresa.job.xml.PocketArcType a = (org.fresa.job.xml.PocketArcType) o;
-                out.add(new org.fresa.pocket.DadElement(true, a.getXMm(), a.getYMm(), a.getRadiusMm(),
-                        selector(a.getSelector()), "concave".equals(a.getSense()) ? 'M' : 'F'));
+                out.add(new org.fresa.pocket.DadElement(
+                        true,
+                        a.getXMm(),
+                        a.getYMm(),
+                        a.getRadiusMm(),
+                        selector(a.getSelector()),
+                        "concave".equals(a.getSense()) ? 'M' : 'F'));
             }
         }
         return new org.fresa.pocket.DadContour(out);
@@ -268,8 +288,8 @@ public final class JobXml {
     private static org.fresa.job.xml.PocketElementsType pocketElements(org.fresa.pocket.DadContour c) {
         org.fresa.job.xml.PocketElementsType x = new org.fresa.job.xml.PocketElementsType();
         for (org.fresa.pocket.DadElement e : c.elements()) {
-            org.fresa.job.xml.DadSelector sel = e.selector() == ' ' ? null
-                    : org.fresa.job.xml.DadSelector.fromValue(String.valueOf(e.selector()));
+            org.fresa.job.xml.DadSelector sel =
+                    e.selector() == ' ' ? null : org.fresa.job.xml.DadSelector.fromValue(String.valueOf(e.selector()));
             if (e.arc()) {
                 org.fresa.job.xml.PocketArcType a = new org.fresa.job.xml.PocketArcType();
                 a.setXMm(e.a());
@@ -304,12 +324,17 @@ public final class JobXml {
     }
 
     private static List<String> splitList(String s) {
-        return Arrays.stream(s.split(",")).map(String::trim).filter(t -> !t.isEmpty()).toList();
+        return Arrays.stream(s.split(","))
+                .map(String::trim)
+                .filter(t -> !t.isEmpty())
+                .toList();
     }
 
     /** The robot's formats as written, each one checked (a typo is refused when the job is read). */
     private static List<String> robotFormats(String text) {
-        return splitList(text).stream().map(f -> SettingRanges.Robot.FORMAT.require(f).word()).toList();
+        return splitList(text).stream()
+                .map(f -> SettingRanges.Robot.FORMAT.require(f).word())
+                .toList();
     }
 
     static Job fromXml(JobType x, Path base) {
@@ -325,19 +350,28 @@ public final class JobXml {
         }
         StepNcType s = x.getStepnc();
         if (s != null) {
-            job = job.withStepnc(new StepNcSettings(resolve(base, s.getFile()),
-                    SettingRanges.StepNc.POST.require(s.getPost()), s.isTrustCuttingSpeed(),
-                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()), stepNcEntry(s),
-                    org.fresa.toolpath.PathConvention.byWord(s.getPaths()).orElseThrow(
-                            () -> new IllegalArgumentException("paths must be fresa or thesis: " + s.getPaths()))));
+            job = job.withStepnc(new StepNcSettings(
+                    resolve(base, s.getFile()),
+                    SettingRanges.StepNc.POST.require(s.getPost()),
+                    s.isTrustCuttingSpeed(),
+                    SettingRanges.StepNc.BREAKTHROUGH.require(s.getBreakthroughMm()),
+                    stepNcEntry(s),
+                    org.fresa.toolpath.PathConvention.byWord(s.getPaths())
+                            .orElseThrow(() ->
+                                    new IllegalArgumentException("paths must be fresa or thesis: " + s.getPaths()))));
         }
         RobotType r = x.getRobot();
         if (r != null) {
-            job = job.withRobot(new RobotSettings(r.getRobot(), placement(r.getRobotTable()),
-                    placement(r.getTablePiece()), robotFormats(r.getFormats()),
-                    r.getSpindle() == null ? java.util.Optional.empty()
+            job = job.withRobot(new RobotSettings(
+                    r.getRobot(),
+                    placement(r.getRobotTable()),
+                    placement(r.getTablePiece()),
+                    robotFormats(r.getFormats()),
+                    r.getSpindle() == null
+                            ? java.util.Optional.empty()
                             : java.util.Optional.of(SettingRanges.Robot.requireSpindle(placement(r.getSpindle()))),
-                    r.getToolLengthMm() == null ? OptionalDouble.empty()
+                    r.getToolLengthMm() == null
+                            ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.require(r.getToolLengthMm())),
                     "auto".equals(r.getPlace()) ? TablePlacing.AUTO : TablePlacing.GIVEN));
         }
@@ -346,39 +380,64 @@ public final class JobXml {
             if (p.getContour() == null && p.getElements() == null) {
                 throw new BadEntry("<pocket> needs a contour file (contour=\"...\") or its <elements>");
             }
-            Optional<org.fresa.pocket.DadContour> elements = p.getElements() == null ? Optional.empty()
-                    : Optional.of(pocketElements(p.getElements()));
-            job = job.withPocket(new PocketSettings(resolve(base, p.getContour() == null ? TYPED_CONTOUR : p.getContour()),
-                    Pocket.TOOL_DIAMETER.require(p.getToolDiameterMm()), Pocket.CUT.require(p.getCutFraction()),
-                    Pocket.FINISH.require(p.getFinishFraction()), Pocket.Z_TOP.require(p.getZTopMm()),
-                    Pocket.Z_BOTTOM.require(p.getZBottomMm()), Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
-                    Pocket.SPINDLE.require(p.getSpindleRpm()), Pocket.FEED.require(p.getFeedMmPerMin()),
-                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()), Pocket.POST.require(p.getPost()),
-                    Pocket.DIRECTION.require(p.getDirection()), Pocket.ENTRY.require(p.getEntry()),
-                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()), p.isCentreCutting(), elements));
+            Optional<org.fresa.pocket.DadContour> elements =
+                    p.getElements() == null ? Optional.empty() : Optional.of(pocketElements(p.getElements()));
+            job = job.withPocket(new PocketSettings(
+                    resolve(base, p.getContour() == null ? TYPED_CONTOUR : p.getContour()),
+                    Pocket.TOOL_DIAMETER.require(p.getToolDiameterMm()),
+                    Pocket.CUT.require(p.getCutFraction()),
+                    Pocket.FINISH.require(p.getFinishFraction()),
+                    Pocket.Z_TOP.require(p.getZTopMm()),
+                    Pocket.Z_BOTTOM.require(p.getZBottomMm()),
+                    Pocket.MAX_DEPTH.require(p.getMaxDepthPerPassMm()),
+                    Pocket.SPINDLE.require(p.getSpindleRpm()),
+                    Pocket.FEED.require(p.getFeedMmPerMin()),
+                    Pocket.FINISH_FEED.require(p.getFinishFeedMmPerMin()),
+                    Pocket.POST.require(p.getPost()),
+                    Pocket.DIRECTION.require(p.getDirection()),
+                    Pocket.ENTRY.require(p.getEntry()),
+                    Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()),
+                    p.isCentreCutting(),
+                    elements));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
-            job = job.withCutting(new CuttingSettings(resolve(base, c.getDrawing()), Cutting.KERF.require(c.getKerfMm()),
-                    Cutting.PROCESS.require(c.getProcess()), Cutting.LEAD_IN.require(c.getLeadInMm()),
-                    Cutting.LEAD_OUT.require(c.getLeadOutMm()), Cutting.LEAD.require(c.getLead()),
-                    Cutting.TOLERANCE.require(c.getToleranceMm()), Cutting.UNITS.require(c.getUnits()), c.isPaperMode(),
-                    Cutting.POST.require(c.getPost()), Cutting.COMPENSATION.require(c.getCompensation()),
+            job = job.withCutting(new CuttingSettings(
+                    resolve(base, c.getDrawing()),
+                    Cutting.KERF.require(c.getKerfMm()),
+                    Cutting.PROCESS.require(c.getProcess()),
+                    Cutting.LEAD_IN.require(c.getLeadInMm()),
+                    Cutting.LEAD_OUT.require(c.getLeadOutMm()),
+                    Cutting.LEAD.require(c.getLead()),
+                    Cutting.TOLERANCE.require(c.getToleranceMm()),
+                    Cutting.UNITS.require(c.getUnits()),
+                    c.isPaperMode(),
+                    Cutting.POST.require(c.getPost()),
+                    Cutting.COMPENSATION.require(c.getCompensation()),
                     Cutting.OUTER_DIRECTION.require(c.getOuterDirection()),
-                    Cutting.HOLE_DIRECTION.require(c.getHoleDirection()), Cutting.OVERCUT.require(c.getOvercutMm()),
-                    c.isAvoidCutParts(), cutOrder(c.getCutOrder())));
+                    Cutting.HOLE_DIRECTION.require(c.getHoleDirection()),
+                    Cutting.OVERCUT.require(c.getOvercutMm()),
+                    c.isAvoidCutParts(),
+                    cutOrder(c.getCutOrder())));
         }
         GradingType g = x.getGrading();
         if (g != null) {
             Optional<Vec2> origin = g.getOriginXMm() != null && g.getOriginYMm() != null
-                    ? Optional.of(Vec2.of(Grading.ORIGIN_X.require(g.getOriginXMm()),
-                            Grading.ORIGIN_Y.require(g.getOriginYMm()))) : Optional.empty();
-            job = job.withGrading(new GradingSettings(resolve(base, g.getOutline()),
-                    Grading.BASE_SIZE.require(g.getBaseSize()), g.getSizes(), g.isHalfSizes(),
+                    ? Optional.of(Vec2.of(
+                            Grading.ORIGIN_X.require(g.getOriginXMm()), Grading.ORIGIN_Y.require(g.getOriginYMm())))
+                    : Optional.empty();
+            job = job.withGrading(new GradingSettings(
+                    resolve(base, g.getOutline()),
+                    Grading.BASE_SIZE.require(g.getBaseSize()),
+                    g.getSizes(),
+                    g.isHalfSizes(),
                     Grading.SYSTEM.require(g.getSystem()),
-                    optional(Grading.LENGTH_STEP, g.getLengthStepMm()), optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
-                    origin, Grading.SHRINKAGE.require(g.getShrinkage()),
-                    Grading.SHRINKAGE_MODE.require(g.getShrinkageMode()), heel(g)));
+                    optional(Grading.LENGTH_STEP, g.getLengthStepMm()),
+                    optional(Grading.WIDTH_STEP, g.getWidthStepMm()),
+                    origin,
+                    Grading.SHRINKAGE.require(g.getShrinkage()),
+                    Grading.SHRINKAGE_MODE.require(g.getShrinkageMode()),
+                    heel(g)));
         }
         SoleType so = x.getSole();
         if (so != null) {
@@ -399,48 +458,94 @@ public final class JobXml {
         }
         int group = Grading.HEEL_GROUP.require(g.getHeelGroup());
         // both given is refused when the plan is made, with the job's other grading settings
-        return Optional.of(new JobSettings.HeelCoordination(group, g.getCoordinationMm() == null ? OptionalDouble.empty()
-                : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),
+        return Optional.of(new JobSettings.HeelCoordination(
+                group,
+                g.getCoordinationMm() == null
+                        ? OptionalDouble.empty()
+                        : OptionalDouble.of(Grading.COORDINATION.require(g.getCoordinationMm())),
                 elements ? g.getHeelElements().trim() : ""));
     }
 
     private static SoleSettings soleSettings(SoleType so, Path base) {
         Optional<Vec2> origin = so.getOriginXMm() != null && so.getOriginYMm() != null
-                ? Optional.of(Vec2.of(Sole.ORIGIN_X.require(so.getOriginXMm()), Sole.ORIGIN_Y.require(so.getOriginYMm())))
+                ? Optional.of(
+                        Vec2.of(Sole.ORIGIN_X.require(so.getOriginXMm()), Sole.ORIGIN_Y.require(so.getOriginYMm())))
                 : Optional.empty();
-        List<JobSettings.SoleTool> tools = so.getTool().stream().map(t -> new JobSettings.SoleTool(t.getId(),
-                Sole.TOOL_NUMBER.require(t.getNumber()), Sole.TOOL_DIAMETER.require(t.getDiameterMm()),
-                Sole.TOOL_SPINDLE.require(t.getSpindleRpm()), Sole.TOOL_FEED.require(t.getFeedMmPerMin()),
-                Sole.TOOL_PLUNGE_FEED.require(t.getPlungeFeedMmPerMin()))).toList();
-        List<JobSettings.SoleDesign> designs = so.getDesign().stream().map(d -> new JobSettings.SoleDesign(d.getName(),
-                d.getTool(), Sole.RULE.require(d.getRule()), d.isText(), Sole.PATTERN.require(d.getPattern()),
-                Sole.COUNT.require(d.getCount()),
-                Sole.ROWS.require(d.getRows()), Sole.DX.require(d.getDxMm()), Sole.DY.require(d.getDyMm()),
-                Sole.ROW_SHIFT.require(d.getRowShiftMm()), Sole.STEP.require(d.getStepDeg()),
-                Sole.CENTER_X.require(d.getCenterXMm()), Sole.CENTER_Y.require(d.getCenterYMm()),
-                d.getLead().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams())).toList(),
-                d.getFigure().stream().map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams(),
-                        f.getFile() == null || f.getFile().isBlank() ? Optional.<Path>empty()
-                                : Optional.of(resolve(base, f.getFile())))).toList(),
-                d.getCopy().stream().map(c -> new JobSettings.SoleCopy(Sole.DX.require(c.getDxMm()),
-                        Sole.DY.require(c.getDyMm()), optional(Sole.MIRROR_X, c.getMirrorXMm()),
-                        optional(Sole.MIRROR_Y, c.getMirrorYMm()), Sole.ROTATE.require(c.getRotateDeg()))).toList()))
+        List<JobSettings.SoleTool> tools = so.getTool().stream()
+                .map(t -> new JobSettings.SoleTool(
+                        t.getId(),
+                        Sole.TOOL_NUMBER.require(t.getNumber()),
+                        Sole.TOOL_DIAMETER.require(t.getDiameterMm()),
+                        Sole.TOOL_SPINDLE.require(t.getSpindleRpm()),
+                        Sole.TOOL_FEED.require(t.getFeedMmPerMin()),
+                        Sole.TOOL_PLUNGE_FEED.require(t.getPlungeFeedMmPerMin())))
                 .toList();
-        return new SoleSettings(resolve(base, so.getOutline()), Sole.BASE_SIZE.require(so.getBaseSize()), so.getSizes(),
-                Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()), Sole.POST.require(so.getPost()),
-                Sole.SYSTEM.require(so.getSystem()), origin, Sole.SHRINKAGE.require(so.getShrinkage()),
+        List<JobSettings.SoleDesign> designs = so.getDesign().stream()
+                .map(d -> new JobSettings.SoleDesign(
+                        d.getName(),
+                        d.getTool(),
+                        Sole.RULE.require(d.getRule()),
+                        d.isText(),
+                        Sole.PATTERN.require(d.getPattern()),
+                        Sole.COUNT.require(d.getCount()),
+                        Sole.ROWS.require(d.getRows()),
+                        Sole.DX.require(d.getDxMm()),
+                        Sole.DY.require(d.getDyMm()),
+                        Sole.ROW_SHIFT.require(d.getRowShiftMm()),
+                        Sole.STEP.require(d.getStepDeg()),
+                        Sole.CENTER_X.require(d.getCenterXMm()),
+                        Sole.CENTER_Y.require(d.getCenterYMm()),
+                        d.getLead().stream()
+                                .map(f -> new JobSettings.SoleFigure(f.getMacro(), f.getParams()))
+                                .toList(),
+                        d.getFigure().stream()
+                                .map(f -> new JobSettings.SoleFigure(
+                                        f.getMacro(),
+                                        f.getParams(),
+                                        f.getFile() == null || f.getFile().isBlank()
+                                                ? Optional.<Path>empty()
+                                                : Optional.of(resolve(base, f.getFile()))))
+                                .toList(),
+                        d.getCopy().stream()
+                                .map(c -> new JobSettings.SoleCopy(
+                                        Sole.DX.require(c.getDxMm()),
+                                        Sole.DY.require(c.getDyMm()),
+                                        optional(Sole.MIRROR_X, c.getMirrorXMm()),
+                                        optional(Sole.MIRROR_Y, c.getMirrorYMm()),
+                                        Sole.ROTATE.require(c.getRotateDeg())))
+                                .toList()))
+                .toList();
+        return new SoleSettings(
+                resolve(base, so.getOutline()),
+                Sole.BASE_SIZE.require(so.getBaseSize()),
+                so.getSizes(),
+                Sole.CAVITY_DEPTH.require(so.getCavityDepthMm()),
+                Sole.POST.require(so.getPost()),
+                Sole.SYSTEM.require(so.getSystem()),
+                origin,
+                Sole.SHRINKAGE.require(so.getShrinkage()),
                 Sole.SHRINKAGE_MODE.require(so.getShrinkageMode()),
-                Sole.TREAD_DEPTH.require(so.getTreadDepthMm()), Sole.CLEARANCE.require(so.getClearanceMm()),
-                Sole.MARGIN.require(so.getMarginMm()), tools, designs, so.getCavityTool(), block(so.getBlock()));
+                Sole.TREAD_DEPTH.require(so.getTreadDepthMm()),
+                Sole.CLEARANCE.require(so.getClearanceMm()),
+                Sole.MARGIN.require(so.getMarginMm()),
+                tools,
+                designs,
+                so.getCavityTool(),
+                block(so.getBlock()));
     }
 
     private static Optional<JobSettings.SoleBlock> block(SoleType.Block b) {
         if (b == null) {
             return Optional.empty();
         }
-        return Optional.of(new JobSettings.SoleBlock(Sole.BLOCK_D.require(b.getDMm()), Sole.BLOCK_DLM.require(b.getDlmMm()),
-                Sole.BLOCK_E.require(b.getEMm()), Sole.BLOCK_S.require(b.getSMm()), Sole.BLOCK_CM.require(b.getCmMm()),
-                optional(Sole.BLOCK_CP, b.getCpMm()), optional(Sole.BLOCK_DPI, b.getDpiMm()),
+        return Optional.of(new JobSettings.SoleBlock(
+                Sole.BLOCK_D.require(b.getDMm()),
+                Sole.BLOCK_DLM.require(b.getDlmMm()),
+                Sole.BLOCK_E.require(b.getEMm()),
+                Sole.BLOCK_S.require(b.getSMm()),
+                Sole.BLOCK_CM.require(b.getCmMm()),
+                optional(Sole.BLOCK_CP, b.getCpMm()),
+                optional(Sole.BLOCK_DPI, b.getDpiMm()),
                 optional(Sole.BLOCK_XTANP, b.getXtanpMm())));
     }
 
@@ -534,8 +639,8 @@ public final class JobXml {
         if (p == null) {
             return Placement.ORIGIN;
         }
-        return SettingRanges.Robot.require(new Placement(p.getXMm(), p.getYMm(), p.getZMm(), p.getRxDeg(),
-                p.getRyDeg(), p.getRzDeg()));
+        return SettingRanges.Robot.require(
+                new Placement(p.getXMm(), p.getYMm(), p.getZMm(), p.getRxDeg(), p.getRyDeg(), p.getRzDeg()));
     }
 
     private static PlacementType placement(Placement p) {

@@ -11,8 +11,7 @@ import org.fresa.model.ExactDecimal;
  * NaN and infinities, which JSON cannot hold, are written as null.
  */
 public final class Json {
-    private Json() {
-    }
+    private Json() {}
 
     public static String write(Object value) {
         StringBuilder sb = new StringBuilder();
@@ -48,7 +47,9 @@ public final class Json {
             // Map.of iterates in an order salted per JVM run: its keys are written sorted, so that
             // two runs write the same file; ordered maps (LinkedHashMap, TreeMap) keep their order
             Iterator<? extends Map.Entry<?, ?>> it = m.getClass().getName().startsWith("java.util.ImmutableCollections")
-                    ? new java.util.TreeMap<String, Object>(byName(m)).entrySet().iterator()
+                    ? new java.util.TreeMap<String, Object>(byName(m))
+                            .entrySet()
+                            .iterator()
                     : m.entrySet().iterator();
             boolean first = true;
             while (it.hasNext()) {

@@ -33,8 +33,7 @@ public final class OutputFolder {
     private ExecutorService renderer;
     private final List<Pending> pending = new ArrayList<>();
 
-    private record Pending(Path target, Future<byte[]> bytes) {
-    }
+    private record Pending(Path target, Future<byte[]> bytes) {}
 
     public OutputFolder(Path dir) {
         this.dir = dir.toAbsolutePath().normalize();
@@ -118,7 +117,8 @@ public final class OutputFolder {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 cancel(todo, i);
-                throw new java.io.InterruptedIOException("interrupted while rendering " + p.target().getFileName());
+                throw new java.io.InterruptedIOException(
+                        "interrupted while rendering " + p.target().getFileName());
             } catch (ExecutionException | CancellationException e) {
                 cancel(todo, i);
                 Throwable c = e.getCause() != null ? e.getCause() : e;
@@ -154,7 +154,9 @@ public final class OutputFolder {
             todo.get(i).bytes().cancel(true);
         }
         synchronized (this) {
-            written.removeAll(todo.subList(from, todo.size()).stream().map(Pending::target).toList());
+            written.removeAll(todo.subList(from, todo.size()).stream()
+                    .map(Pending::target)
+                    .toList());
         }
     }
 
@@ -163,8 +165,8 @@ public final class OutputFolder {
      * ({@link AtomicFiles#write(Path, AtomicFiles.Body, AtomicFiles.Inspection)}). Written at once,
      * also between {@link #beginParallel} and {@link #finishParallel}: the inspection reads the file.
      */
-    public synchronized <E extends Exception> Path write(String fileName, AtomicFiles.Body body,
-            AtomicFiles.Inspection<E> before) throws IOException, E {
+    public synchronized <E extends Exception> Path write(
+            String fileName, AtomicFiles.Body body, AtomicFiles.Inspection<E> before) throws IOException, E {
         Path target = resolve(fileName);
         AtomicFiles.write(target, body, before);
         written.add(target);
@@ -177,7 +179,9 @@ public final class OutputFolder {
 
     /** The path a file of that name will have; checks the name as {@link #write} does. */
     public Path resolve(String fileName) {
-        if (!SAFE_NAME.matcher(fileName).matches() || fileName.contains("..") || fileName.endsWith(".")
+        if (!SAFE_NAME.matcher(fileName).matches()
+                || fileName.contains("..")
+                || fileName.endsWith(".")
                 || WINDOWS_DEVICE.matcher(fileName).matches()) {
             throw new IllegalArgumentException("not a plain output file name: " + fileName);
         }
@@ -191,7 +195,9 @@ public final class OutputFolder {
     /** Turns any text (an id from an input file) into a safe file-name part. */
     public static String sanitize(String text) {
         String s = text.replaceAll("[^A-Za-z0-9._+-]", "_").replace("..", "_");
-        if (s.isEmpty() || !Character.isLetterOrDigit(s.charAt(0)) || WINDOWS_DEVICE.matcher(s).matches()) {
+        if (s.isEmpty()
+                || !Character.isLetterOrDigit(s.charAt(0))
+                || WINDOWS_DEVICE.matcher(s).matches()) {
             s = "x" + s;
         }
         s = s.length() > 100 ? s.substring(0, 100) : s;

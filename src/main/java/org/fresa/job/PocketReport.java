@@ -31,8 +31,7 @@ public final class PocketReport {
 
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9]{1," + MAX_THESIS_NAME_CHARS + "}");
 
-    private PocketReport() {
-    }
+    private PocketReport() {}
 
     /** The printout of the settings' technology. */
     public static String of(PocketSettings s) {
@@ -83,8 +82,10 @@ public final class PocketReport {
      */
     public static String thesisFileName(String name) throws CamInputException {
         if (name == null || !NAME.matcher(name).matches()) {
-            throw new CamInputException("--thesis-name", "'" + name + "': expected 1 to " + MAX_THESIS_NAME_CHARS
-                    + " letters or digits (N01 and the name make the thesis's 8-character DOS name)");
+            throw new CamInputException(
+                    "--thesis-name",
+                    "'" + name + "': expected 1 to " + MAX_THESIS_NAME_CHARS
+                            + " letters or digits (N01 and the name make the thesis's 8-character DOS name)");
         }
         return "N01" + name.toUpperCase(java.util.Locale.ROOT) + ".DAD";
     }

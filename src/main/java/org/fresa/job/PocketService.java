@@ -31,9 +31,9 @@ import org.fresa.pocket.Recognition;
 import org.fresa.pocket.RegionOffsetter;
 import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
+import org.fresa.pocket.compat.Sinumerik7MPost;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
-import org.fresa.pocket.compat.Sinumerik7MPost;
 
 /**
  * The pocket module's service, shared by {@code fresa pocket} and {@code fresa run}: reads the
@@ -45,8 +45,7 @@ public final class PocketService {
     /** Most elements a pocket contour may have: the recognition compares elements pairwise at each event. */
     public static final int MAX_ELEMENTS = 2000;
 
-    private PocketService() {
-    }
+    private PocketService() {}
 
     /** Reads a contour file by its extension (the outer contour's elements; islands kept as contours). */
     /**
@@ -56,9 +55,12 @@ public final class PocketService {
     public static PocketProfile readContour(PocketSettings s) throws CamInputException, IOException {
         if (s.elements().isPresent()) {
             // the editor's check, so that a job edited by hand is refused as the tab refuses it
-            java.util.Optional<org.fresa.pocket.DadContour.Refusal> r = s.elements().get().refusal();
+            java.util.Optional<org.fresa.pocket.DadContour.Refusal> r =
+                    s.elements().get().refusal();
             if (r.isPresent()) {
-                throw new CamInputException(s.contour().toString(), "the job's <elements>: " + r.get().message());
+                throw new CamInputException(
+                        s.contour().toString(),
+                        "the job's <elements>: " + r.get().message());
             }
             return s.elements().get().profile(s.contour().toString());
         }
@@ -70,7 +72,12 @@ public final class PocketService {
      * {@code .dad} file and the elements a job holds are one loop, planned by the thesis's tree.
      */
     public static boolean mayHaveIslands(PocketSettings s) {
-        return s.elements().isEmpty() && !s.contour().getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad");
+        return s.elements().isEmpty()
+                && !s.contour()
+                        .getFileName()
+                        .toString()
+                        .toLowerCase(Locale.ROOT)
+                        .endsWith(".dad");
     }
 
     public static PocketProfile readContour(Path file) throws CamInputException, IOException {
@@ -100,8 +107,9 @@ public final class PocketService {
         if (lower.endsWith(".dxf")) {
             DrawingContours drawing = DrawingContours.read(file);
             if (drawing.openChains() > 0) {
-                throw new CamInputException(file.toString(), drawing.openChains()
-                        + " open chain(s) in the drawing: a pocket needs closed contours");
+                throw new CamInputException(
+                        file.toString(),
+                        drawing.openChains() + " open chain(s) in the drawing: a pocket needs closed contours");
             }
             contours = drawing.closed();
         } else {
@@ -114,8 +122,10 @@ public final class PocketService {
         }
         int elements = contours.stream().mapToInt(Contour::size).sum();
         if (elements > MAX_ELEMENTS) {
-            throw new CamInputException(file.toString(), "the contours have " + elements
-                    + " elements; pocket milling takes at most " + MAX_ELEMENTS + " (simplify the drawing)");
+            throw new CamInputException(
+                    file.toString(),
+                    "the contours have " + elements + " elements; pocket milling takes at most " + MAX_ELEMENTS
+                            + " (simplify the drawing)");
         }
         return outerFirst(contours, file.toString());
     }
@@ -139,8 +149,10 @@ public final class PocketService {
             Contour c = contours.get(i);
             for (Curve2 k : c.curves()) {
                 if (!o.contains(k.start(), tol) || !o.contains(k.pointAt(0.5), tol)) {
-                    throw new CamInputException(source, "contour " + (i + 1)
-                            + " is not inside the outer contour: an island must lie wholly inside it");
+                    throw new CamInputException(
+                            source,
+                            "contour " + (i + 1)
+                                    + " is not inside the outer contour: an island must lie wholly inside it");
                 }
             }
             out.add(c.isCcw() ? c.reversed() : c);
@@ -148,8 +160,8 @@ public final class PocketService {
         for (int i = 1; i < out.size(); i++) {
             for (int j = i + 1; j < out.size(); j++) {
                 if (touch(out.get(i), out.get(j), tol)) {
-                    throw new CamInputException(source, "islands " + i + " and " + j
-                            + " touch or overlap: draw them as one contour");
+                    throw new CamInputException(
+                            source, "islands " + i + " and " + j + " touch or overlap: draw them as one contour");
                 }
             }
         }
@@ -164,14 +176,23 @@ public final class PocketService {
                 }
             }
         }
-        return b.windingNumber(a.get(0).start()) != 0 || a.windingNumber(b.get(0).start()) != 0;
+        return b.windingNumber(a.get(0).start()) != 0
+                || a.windingNumber(b.get(0).start()) != 0;
     }
 
     /** The technology of the settings. */
     static PocketTechnology technology(PocketSettings s) throws CamInputException {
         try {
-            return new PocketTechnology(s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
-                    s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin());
+            return new PocketTechnology(
+                    s.toolDiameterMm(),
+                    s.cutFraction(),
+                    s.finishFraction(),
+                    s.zTopMm(),
+                    s.zBottomMm(),
+                    s.maxDepthPerPassMm(),
+                    s.spindleRpm(),
+                    s.feedMmPerMin(),
+                    s.finishFeedMmPerMin());
         } catch (IllegalArgumentException e) {
             throw new CamInputException("technology", e.getMessage());
         }
@@ -188,9 +209,11 @@ public final class PocketService {
         PocketTechnology tech = technology(s);
         PocketProfile profile = readContour(s);
         if (!profile.islands().isEmpty()) {
-            throw new CamInputException(s.contour().toString(), "the thesis's recognition tree has no islands ("
-                    + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
-                    + "written by fresa pocket or Job > Run with a post other than 7m");
+            throw new CamInputException(
+                    s.contour().toString(),
+                    "the thesis's recognition tree has no islands ("
+                            + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
+                            + "written by fresa pocket or Job > Run with a post other than 7m");
         }
         Recognition.Result rec = Recognition.of(profile);
         return PassPlanner.plan(rec, tech, faithful);
@@ -218,8 +241,8 @@ public final class PocketService {
      *     {@code 7m-compat} keeps the thesis's vertical plunge
      * @throws ToolTooLargeException when an entry has no room and the tool may not plunge
      */
-    public static String program(PocketPlan plan, PocketPost post, String programName, boolean climb,
-            EntryRule entry) throws IOException, ToolTooLargeException {
+    public static String program(PocketPlan plan, PocketPost post, String programName, boolean climb, EntryRule entry)
+            throws IOException, ToolTooLargeException {
         switch (post) {
             case SINUMERIK_7M_COMPAT:
                 return new Sinumerik7MPost(Sinumerik7MPost.Mode.COMPAT).write(plan);
@@ -239,9 +262,14 @@ public final class PocketService {
      * program is written, the thesis's technology printout ({@link PocketReport}) to {@code report};
      * the summary names both ({@code out}, {@code report}).
      */
-    public static TaskOutcome run(PocketSettings s, Path outFile, java.util.Optional<Path> report,
-            ProgressMonitor progress) throws CamInputException, IOException {
-        if (report.isPresent() && report.get().toAbsolutePath().normalize().equals(outFile.toAbsolutePath().normalize())) {
+    public static TaskOutcome run(
+            PocketSettings s, Path outFile, java.util.Optional<Path> report, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        if (report.isPresent()
+                && report.get()
+                        .toAbsolutePath()
+                        .normalize()
+                        .equals(outFile.toAbsolutePath().normalize())) {
             throw new CamInputException("--report", report.get() + " is the program's own file (--out)");
         }
         TaskOutcome o = run(s, outFile, progress);
@@ -286,11 +314,17 @@ public final class PocketService {
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
         try {
-            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post().word()),
+            ProgramChecks.require(
+                    outFile.getFileName().toString(),
+                    nc,
+                    ProgramChecks.dialect(s.post().word()),
                     ProgramChecks.pocket(s));
         } catch (ProgramChecks.RefusedProgram e) {
-            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
-                    e.failure().message()), List.of());
+            return new TaskOutcome(
+                    1,
+                    List.of(e.getMessage()),
+                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
+                    List.of());
         }
         AtomicFiles.writeString(outFile, nc);
         Map<String, Object> summary = new LinkedHashMap<>();
@@ -303,7 +337,8 @@ public final class PocketService {
         // the thesis's passes as generated: clockwise, conventional with its clockwise (M3) spindle
         summary.put("direction", thesis ? "conventional" : s.direction().word());
         summary.put("passes", plan.milled().size());
-        summary.put("pass_offsets", plan.generated().stream().map(p -> p.offsetMm()).toList());
+        summary.put(
+                "pass_offsets", plan.generated().stream().map(p -> p.offsetMm()).toList());
         summary.put("depth_passes", plan.technology().depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
@@ -321,8 +356,12 @@ public final class PocketService {
             return s.entryRule();
         } catch (IllegalArgumentException e) {
             String option = e.getMessage().startsWith("a plunge") ? "--entry plunge" : "--entry";
-            throw new CamInputException(option, e.getMessage()
-                    + (option.equals("--entry plunge") ? ": say so with --centre-cutting, or choose auto, helix or ramp" : ""));
+            throw new CamInputException(
+                    option,
+                    e.getMessage()
+                            + (option.equals("--entry plunge")
+                                    ? ": say so with --centre-cutting, or choose auto, helix or ramp"
+                                    : ""));
         }
     }
 
@@ -336,17 +375,20 @@ public final class PocketService {
     public static RegionPocket.Plan regionPlan(PocketSettings s, List<Contour> contours)
             throws CamInputException, ToolTooLargeException {
         if (s.post().sevenM()) {
-            throw new CamInputException("--post", "the thesis's 7M posts know no islands (" + (contours.size() - 1)
-                    + " found): choose one of " + String.join(", ", NcPosts.names()));
+            throw new CamInputException(
+                    "--post",
+                    "the thesis's 7M posts know no islands (" + (contours.size() - 1) + " found): choose one of "
+                            + String.join(", ", NcPosts.names()));
         }
-        return RegionPocket.plan(contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb(),
-                entryRule(s));
+        return RegionPocket.plan(
+                contours.get(0), contours.subList(1, contours.size()), technology(s), s.climb(), entryRule(s));
     }
 
     /** The program text of a region plan for a G-code post. */
-    public static String regionProgram(RegionPocket.Plan plan, PocketPost post, String programName)
-            throws IOException {
-        NcPost p = post.gcode().orElseThrow(() -> new IllegalArgumentException(post.word())).ncPost();
+    public static String regionProgram(RegionPocket.Plan plan, PocketPost post, String programName) throws IOException {
+        NcPost p = post.gcode()
+                .orElseThrow(() -> new IllegalArgumentException(post.word()))
+                .ncPost();
         StringWriter w = new StringWriter();
         p.write(plan.toolpath(), programName, w);
         return w.toString();
@@ -365,15 +407,22 @@ public final class PocketService {
         String name = s.contour().getFileName().toString();
         String nc = regionProgram(plan, s.post(), name);
         try {
-            ProgramChecks.require(outFile.getFileName().toString(), nc, ProgramChecks.dialect(s.post().word()),
+            ProgramChecks.require(
+                    outFile.getFileName().toString(),
+                    nc,
+                    ProgramChecks.dialect(s.post().word()),
                     ProgramChecks.pocket(s));
         } catch (ProgramChecks.RefusedProgram e) {
-            return new TaskOutcome(1, List.of(e.getMessage()), Map.of("out", outFile.toString(), "refused",
-                    e.failure().message()), List.of());
+            return new TaskOutcome(
+                    1,
+                    List.of(e.getMessage()),
+                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
+                    List.of());
         }
         AtomicFiles.writeString(outFile, nc);
-        double inradius = RegionOffsetter.inradius(RegionOffsetter.oriented(contours.get(0),
-                contours.subList(1, contours.size())), new Tolerance(1e-4, 1e-9));
+        double inradius = RegionOffsetter.inradius(
+                RegionOffsetter.oriented(contours.get(0), contours.subList(1, contours.size())),
+                new Tolerance(1e-4, 1e-9));
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post().word());
@@ -381,7 +430,9 @@ public final class PocketService {
         summary.put("direction", s.direction().word());
         summary.put("max_hole_diameter", 2 * inradius);
         summary.put("passes", plan.order().size());
-        summary.put("pass_offsets", plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());
+        summary.put(
+                "pass_offsets",
+                plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());
         summary.put("depth_passes", tech.depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
         summary.put("out", outFile.toString());

@@ -29,13 +29,18 @@ import org.fresa.toolpath.ToolpathPlanner;
 public final class ProgramChecks {
 
     /** Operations whose tool goes straight down its axis: drills, reamers, taps, boring bars. */
-    static final Set<OperationType> AXIAL = EnumSet.of(OperationType.DRILLING, OperationType.CENTER_DRILLING,
-            OperationType.MULTISTEP_DRILLING, OperationType.COUNTER_SINKING, OperationType.REAMING,
-            OperationType.BORING, OperationType.BACK_BORING, OperationType.TAPPING, OperationType.THREAD_DRILLING);
+    static final Set<OperationType> AXIAL = EnumSet.of(
+            OperationType.DRILLING,
+            OperationType.CENTER_DRILLING,
+            OperationType.MULTISTEP_DRILLING,
+            OperationType.COUNTER_SINKING,
+            OperationType.REAMING,
+            OperationType.BORING,
+            OperationType.BACK_BORING,
+            OperationType.TAPPING,
+            OperationType.THREAD_DRILLING);
 
-
-    private ProgramChecks() {
-    }
+    private ProgramChecks() {}
 
     /** A program that failed the check and is not written. */
     public static final class RefusedProgram extends Exception {
@@ -68,7 +73,8 @@ public final class ProgramChecks {
     public static void require(String file, java.nio.file.Path written, NcDialect dialect, Limits limits)
             throws RefusedProgram, java.io.IOException {
         Optional<Failure> f;
-        try (java.io.Reader in = java.nio.file.Files.newBufferedReader(written, java.nio.charset.StandardCharsets.UTF_8)) {
+        try (java.io.Reader in =
+                java.nio.file.Files.newBufferedReader(written, java.nio.charset.StandardCharsets.UTF_8)) {
             f = ProgramCheck.of(in, dialect, limits).failure();
         }
         if (f.isPresent()) {
@@ -89,20 +95,26 @@ public final class ProgramChecks {
     public static Limits pocket(PocketSettings s) {
         double r = s.toolDiameterMm() / 2;
         boolean sevenM = s.post().sevenM();
-        Limits l = sevenM ? Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
+        Limits l = sevenM
+                ? Limits.milling().withHeights(0, s.zBottomMm() - s.zTopMm(), 0)
                 : Limits.milling().withHeights(s.zTopMm(), s.zBottomMm(), 0);
         ToolLimits tool;
         if (s.post().thesis()) {
             tool = ToolLimits.centreCuttingPlunge()
                     .withKind("the thesis's slot drill, declared centre-cutting: 7m-compat plunges as its programs do");
-        } else if (s.centreCutting() && (s.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
-                || s.entry() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
+        } else if (s.centreCutting()
+                && (s.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
+                        || s.entry() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
             tool = ToolLimits.centreCuttingPlunge();
         } else {
-            double angle = s.entryAngleDeg() > 0 && s.entryAngleDeg() <= 90 ? s.entryAngleDeg()
+            double angle = s.entryAngleDeg() > 0 && s.entryAngleDeg() <= 90
+                    ? s.entryAngleDeg()
                     : ToolLimits.DEFAULT_ENTRY_ANGLE_DEG;
-            tool = new ToolLimits(angle, false, s.centreCutting() ? "a centre-cutting cutter asked to ramp"
-                    : "a cutter not cutting at its centre", 0);
+            tool = new ToolLimits(
+                    angle,
+                    false,
+                    s.centreCutting() ? "a centre-cutting cutter asked to ramp" : "a cutter not cutting at its centre",
+                    0);
         }
         return l.withOtherTools(tool.withRadiusMm(r));
     }
@@ -113,8 +125,10 @@ public final class ProgramChecks {
      * down into the groove, taken as centre-cutting tools asked to plunge.
      */
     public static Limits soleTread(JobSettings.SoleSettings s) {
-        return Limits.milling().withHeights(0, -s.treadDepthMm(), 0)
-                .withOtherTools(ToolLimits.centreCuttingPlunge().withKind("a tread engraver, given a plunge feed by the job"));
+        return Limits.milling()
+                .withHeights(0, -s.treadDepthMm(), 0)
+                .withOtherTools(
+                        ToolLimits.centreCuttingPlunge().withKind("a tread engraver, given a plunge feed by the job"));
     }
 
     /**
@@ -136,27 +150,31 @@ public final class ProgramChecks {
      *
      * @return the first failure, or empty
      */
-    public static Optional<Failure> robot(org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path,
-            Limits limits) {
+    public static Optional<Failure> robot(
+            org.fresa.post.RobotProgram program, org.fresa.model.Toolpath path, Limits limits) {
         java.io.StringWriter nc = new java.io.StringWriter();
         try {
             org.fresa.post.NcPosts.byName("linuxcnc").orElseThrow().write(path, "robot", nc);
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
-        Optional<Failure> onPath = ProgramCheck.of(nc.toString(), NcDialect.LINUXCNC, limits).failure();
+        Optional<Failure> onPath =
+                ProgramCheck.of(nc.toString(), NcDialect.LINUXCNC, limits).failure();
         if (onPath.isPresent()) {
             Failure f = onPath.get();
-            return Optional.of(new Failure(f.line(), "the toolpath the robot follows, " + f.where(), f.text(), f.rule(),
-                    f.reason()));
+            return Optional.of(new Failure(
+                    f.line(), "the toolpath the robot follows, " + f.where(), f.text(), f.rule(), f.reason()));
         }
         // the entries were checked on the path: here each tool may go along its axis
         Map<String, Integer> tools = new HashMap<>();
         Limits onRobot = limits.withStock(Limits.Stock.UNKNOWN).withFloor(Double.NaN, 0);
         for (ToolpathSection s : path.sections()) {
             tools.putIfAbsent(s.label(), s.toolNumber());
-            onRobot = onRobot.withTool(s.toolNumber(), ToolLimits.centreCuttingPlunge()
-                    .withKind("entries checked on the toolpath").withRadiusMm(s.toolDiameterMm() / 2));
+            onRobot = onRobot.withTool(
+                    s.toolNumber(),
+                    ToolLimits.centreCuttingPlunge()
+                            .withKind("entries checked on the toolpath")
+                            .withRadiusMm(s.toolDiameterMm() / 2));
         }
         return ProgramCheck.of(program, onRobot, tools).failure();
     }
@@ -167,15 +185,19 @@ public final class ProgramChecks {
      * module's; otherwise the entry angle asked for (3 degrees by default).
      */
     static ToolLimits cutter(org.fresa.pocket.EntryRule e) {
-        if (e.centreCutting() && (e.kind() == org.fresa.pocket.EntryRule.Kind.PLUNGE
-                || e.kind() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
+        if (e.centreCutting()
+                && (e.kind() == org.fresa.pocket.EntryRule.Kind.PLUNGE
+                        || e.kind() == org.fresa.pocket.EntryRule.Kind.AUTO)) {
             return ToolLimits.centreCuttingPlunge();
         }
         if (e.equals(org.fresa.pocket.EntryRule.DEFAULT)) {
             return ToolLimits.notCentreCutting();
         }
-        return new ToolLimits(e.angleDeg(), false, e.centreCutting() ? "a centre-cutting cutter asked to ramp"
-                : "a cutter not cutting at its centre", 0);
+        return new ToolLimits(
+                e.angleDeg(),
+                false,
+                e.centreCutting() ? "a centre-cutting cutter asked to ramp" : "a cutter not cutting at its centre",
+                0);
     }
 
     /** The dialect of a post's name ({@code linuxcnc}, ..., {@code 7m-compat}). */
@@ -190,8 +212,8 @@ public final class ProgramChecks {
      * allowance of the planned tools below it: a drill's point or a cutter's edge radius, plus the
      * breakthrough the planner was given), otherwise unbounded with no floor.
      */
-    public static Limits stepnc(StepNcProgram program, ToolpathPlanner.Plan plan,
-            org.fresa.toolpath.PlanningChoices choices) {
+    public static Limits stepnc(
+            StepNcProgram program, ToolpathPlanner.Plan plan, org.fresa.toolpath.PlanningChoices choices) {
         Limits l = Limits.milling();
         Map<Long, MachiningWorkingstep> byId = new HashMap<>();
         for (MachiningWorkingstep w : program.workingsteps()) {
@@ -205,19 +227,23 @@ public final class ProgramChecks {
             boolean axial = w != null && AXIAL.contains(w.operation().type());
             // the thesis's paths go straight down into every layer (its robots were simulated, not
             // cutting): they can only be run with a cutter that cuts at its centre, declared so
-            ToolLimits t = axial ? ToolLimits.drill()
+            ToolLimits t = axial
+                    ? ToolLimits.drill()
                     : choices.paths() == org.fresa.toolpath.PathConvention.THESIS
-                            ? ToolLimits.centreCuttingPlunge().withKind(
-                                    "the thesis's paths' cutter, declared centre-cutting: they plunge into every layer")
+                            ? ToolLimits.centreCuttingPlunge()
+                                    .withKind(
+                                            "the thesis's paths' cutter, declared centre-cutting: they plunge into every layer")
                             : cutter(choices.entry());
             l = l.withTool(s.toolNumber(), t.withRadiusMm(s.toolDiameterMm() / 2));
             if (w != null) {
-                allowanceMm = Math.max(allowanceMm, ToolpathPlanner.throughAllowanceMm(w.operation(),
-                        s.toolDiameterMm(), choices.breakthroughMm()));
+                allowanceMm = Math.max(
+                        allowanceMm,
+                        ToolpathPlanner.throughAllowanceMm(
+                                w.operation(), s.toolDiameterMm(), choices.breakthroughMm()));
             }
         }
-        Optional<Workpiece.Block> block = program.workpieces().size() == 1 ? program.workpieces().get(0).block()
-                : Optional.empty();
+        Optional<Workpiece.Block> block =
+                program.workpieces().size() == 1 ? program.workpieces().get(0).block() : Optional.empty();
         if (block.isPresent()) {
             Limits.Stock stock = box(block.get());
             l = l.withStock(stock).withFloor(stock.minZMm(), allowanceMm);
@@ -235,8 +261,11 @@ public final class ProgramChecks {
      * boundary). A file with no planar face states no top: the stock is unknown and every descent
      * counts.
      */
-    static Limits.Stock statedStock(StepNcProgram program, List<ToolpathSection> sections,
-            List<ToolpathPlanner.PlannedStep> steps, Map<Long, MachiningWorkingstep> byId) {
+    static Limits.Stock statedStock(
+            StepNcProgram program,
+            List<ToolpathSection> sections,
+            List<ToolpathPlanner.PlannedStep> steps,
+            Map<Long, MachiningWorkingstep> byId) {
         double minX = Double.POSITIVE_INFINITY;
         double minY = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY;
@@ -257,8 +286,11 @@ public final class ProgramChecks {
                 return Limits.Stock.UNKNOWN;
             }
             face = true;
-            for (Vec3 c : List.of(new Vec3(b.minX(), b.minY(), 0), new Vec3(b.maxX(), b.minY(), 0),
-                    new Vec3(b.maxX(), b.maxY(), 0), new Vec3(b.minX(), b.maxY(), 0))) {
+            for (Vec3 c : List.of(
+                    new Vec3(b.minX(), b.minY(), 0),
+                    new Vec3(b.maxX(), b.minY(), 0),
+                    new Vec3(b.maxX(), b.maxY(), 0),
+                    new Vec3(b.minX(), b.maxY(), 0))) {
                 Vec3 p = place.applyToPoint(c);
                 minX = Math.min(minX, p.x());
                 minY = Math.min(minY, p.y());
@@ -276,7 +308,9 @@ public final class ProgramChecks {
             }
             for (org.fresa.model.Move m : sections.get(i).moves()) {
                 // an arc reaches at most its radius from its centre
-                double reach = m instanceof org.fresa.model.Move.Circular c ? c.end().minus(c.center()).norm() : 0;
+                double reach = m instanceof org.fresa.model.Move.Circular c
+                        ? c.end().minus(c.center()).norm()
+                        : 0;
                 Vec3 at = m instanceof org.fresa.model.Move.Circular c ? c.center() : m.end();
                 if (m instanceof org.fresa.model.Move.Linear || m instanceof org.fresa.model.Move.Circular) {
                     minX = Math.min(minX, at.x() - reach);

@@ -11,8 +11,7 @@ public interface ProgressMonitor {
     /** A monitor that shows nothing and never cancels. */
     ProgressMonitor NONE = new ProgressMonitor() {
         @Override
-        public void progress(double fraction, String what) {
-        }
+        public void progress(double fraction, String what) {}
 
         @Override
         public boolean isCancelled() {

@@ -48,8 +48,7 @@ public final class RobotFiles {
     /** The highest joint number a cell may name (the reader then checks it is the cell's own joint). */
     private static final int MAX_JOINT = 99;
 
-    private RobotFiles() {
-    }
+    private RobotFiles() {}
 
     /** A built-in robot name ({@code irb140}, {@code adept-one}, {@code tricept806}) or a robot file. */
     public static Robot load(String nameOrFile) throws CamInputException {
@@ -61,8 +60,8 @@ public final class RobotFiles {
         if (Files.exists(p)) {
             FileChecks.requireInput(p, "a robot file", FileChecks.MAX_TEXT_FILE_BYTES);
         } else {
-            throw new CamInputException(nameOrFile, "neither a built-in robot (irb140, adept-one, tricept806) nor a"
-                    + " robot file");
+            throw new CamInputException(
+                    nameOrFile, "neither a built-in robot (irb140, adept-one, tricept806) nor a" + " robot file");
         }
         return read(p);
     }
@@ -82,8 +81,12 @@ public final class RobotFiles {
         } catch (UnmarshalException e) {
             Throwable c = e.getLinkedException() != null ? e.getLinkedException() : e.getCause();
             if (c instanceof SAXParseException spe) {
-                throw new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()),
-                        "expected a robot as schemas/robot.xsd describes: " + spe.getMessage(), e);
+                throw new CamInputException(
+                        name,
+                        Math.max(0, spe.getLineNumber()),
+                        Math.max(0, spe.getColumnNumber()),
+                        "expected a robot as schemas/robot.xsd describes: " + spe.getMessage(),
+                        e);
             }
             throw new CamInputException(name, "not a valid robot file: " + e.getMessage());
         } catch (JAXBException | SAXException | ParserConfigurationException e) {
@@ -96,7 +99,10 @@ public final class RobotFiles {
             }
             return tricept(xml.getName(), description, xml.getTricept());
         } catch (SettingRange.OutOfRange e) {
-            throw new CamInputException(name, JobXml.lineOf(file, e.range().attribute(), e.value()), 0,
+            throw new CamInputException(
+                    name,
+                    JobXml.lineOf(file, e.range().attribute(), e.value()),
+                    0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
         } catch (IllegalArgumentException e) {
             throw new CamInputException(name, e.getMessage());
@@ -110,26 +116,31 @@ public final class RobotFiles {
         for (JointType j : s.getJoint()) {
             boolean rev = j.getType().equals("revolute");
             String variable = rev ? j.getTheta() : j.getD();
-            double offset = (rev ? RobotFile.THETA : RobotFile.D).require(variableOffset(file, i, rev ? "theta" : "d",
-                    variable));
+            double offset = (rev ? RobotFile.THETA : RobotFile.D)
+                    .require(variableOffset(file, i, rev ? "theta" : "d", variable));
             double a = RobotFile.A.require(number(file, i, "a", j.getA()));
             double alpha = RobotFile.ALPHA.require(number(file, i, "alpha", j.getAlpha()));
             double min = RobotFile.limit("min", rev).require(j.getMin());
             double max = RobotFile.limit("max", rev).require(j.getMax());
             if (rev) {
-                joints.add(DhJoint.revolute(a, alpha, RobotFile.D.require(number(file, i, "d", j.getD())), offset, min,
-                        max));
+                joints.add(DhJoint.revolute(
+                        a, alpha, RobotFile.D.require(number(file, i, "d", j.getD())), offset, min, max));
             } else {
-                joints.add(DhJoint.prismatic(a, alpha, offset, RobotFile.THETA.require(number(file, i, "theta",
-                        j.getTheta())), min, max));
+                joints.add(DhJoint.prismatic(
+                        a, alpha, offset, RobotFile.THETA.require(number(file, i, "theta", j.getTheta())), min, max));
             }
             i++;
         }
         FrameType t = s.getTool();
-        Transform3 tool = t == null ? Transform3.IDENTITY
-                : Transform3.ofXyzRpyDeg(RobotFile.tool(0).require(t.getX()), RobotFile.tool(1).require(t.getY()),
-                        RobotFile.tool(2).require(t.getZ()), RobotFile.tool(3).require(t.getRx()),
-                        RobotFile.tool(4).require(t.getRy()), RobotFile.tool(5).require(t.getRz()));
+        Transform3 tool = t == null
+                ? Transform3.IDENTITY
+                : Transform3.ofXyzRpyDeg(
+                        RobotFile.tool(0).require(t.getX()),
+                        RobotFile.tool(1).require(t.getY()),
+                        RobotFile.tool(2).require(t.getZ()),
+                        RobotFile.tool(3).require(t.getRx()),
+                        RobotFile.tool(4).require(t.getRy()),
+                        RobotFile.tool(5).require(t.getRz()));
         int wrist = s.getWristJoint() == 0 ? -1 : s.getWristJoint() - 1;
         return new SerialRobot(name, description, new DenavitHartenbergChain(joints, Transform3.IDENTITY, tool), wrist);
     }
@@ -139,17 +150,28 @@ public final class RobotFiles {
         List<JointLimit> wrist = new ArrayList<>();
         int i = 1;
         for (LimitType l : t.getLeg()) {
-            legs.add(new JointLimit("q" + i++, org.fresa.kin.JointType.PRISMATIC,
-                    RobotFile.limit("min", false).require(l.getMin()), RobotFile.limit("max", false).require(l.getMax())));
+            legs.add(new JointLimit(
+                    "q" + i++,
+                    org.fresa.kin.JointType.PRISMATIC,
+                    RobotFile.limit("min", false).require(l.getMin()),
+                    RobotFile.limit("max", false).require(l.getMax())));
         }
         for (LimitType l : t.getWrist()) {
-            wrist.add(new JointLimit("q" + i++, org.fresa.kin.JointType.REVOLUTE,
-                    RobotFile.limit("min", true).require(l.getMin()), RobotFile.limit("max", true).require(l.getMax())));
+            wrist.add(new JointLimit(
+                    "q" + i++,
+                    org.fresa.kin.JointType.REVOLUTE,
+                    RobotFile.limit("min", true).require(l.getMin()),
+                    RobotFile.limit("max", true).require(l.getMax())));
         }
-        return new TriceptRobot(name, description, RobotFile.BASE_RADIUS.require(t.getBaseRadius()),
+        return new TriceptRobot(
+                name,
+                description,
+                RobotFile.BASE_RADIUS.require(t.getBaseRadius()),
                 RobotFile.PLATFORM_RADIUS.require(t.getPlatformRadius()),
                 RobotFile.CENTRE_OFFSET.require(t.getCentreOffset()),
-                RobotFile.EFFECTOR_LENGTH.require(t.getEffectorLength()), legs, wrist);
+                RobotFile.EFFECTOR_LENGTH.require(t.getEffectorLength()),
+                legs,
+                wrist);
     }
 
     /**
@@ -162,8 +184,8 @@ public final class RobotFiles {
         try {
             e = DhExpression.parse(text, MAX_JOINT);
         } catch (IllegalArgumentException ex) {
-            throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "': "
-                    + ex.getMessage());
+            throw new CamInputException(
+                    file, "joint " + joint + ": " + expected + ", not '" + text + "': " + ex.getMessage());
         }
         if (e.coefficients().size() != 1 || e.coefficient(joint) != 1) {
             throw new CamInputException(file, "joint " + joint + ": " + expected + ", not '" + text + "'");
@@ -178,8 +200,8 @@ public final class RobotFiles {
                 return e.constant();
             }
         } catch (IllegalArgumentException e) {
-            throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text
-                    + "': " + e.getMessage());
+            throw new CamInputException(
+                    file, "joint " + joint + ": " + cell + " must be a number, not '" + text + "': " + e.getMessage());
         }
         throw new CamInputException(file, "joint " + joint + ": " + cell + " must be a number, not '" + text + "'");
     }

@@ -8,7 +8,11 @@ import java.util.Locale;
  * {@code png} (the joint and error plots).
  */
 public enum RobotFormat {
-    CSV, XML, RAPID, KRL, PNG;
+    CSV,
+    XML,
+    RAPID,
+    KRL,
+    PNG;
 
     /** The name as the command line and job files write it. */
     public String word() {

@@ -9,8 +9,8 @@ import jakarta.xml.bind.Unmarshaller;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.math.BigInteger;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -54,8 +54,7 @@ public final class RobotProgramXml {
         static final Schema SCHEMA = SafeXml.schema("/schemas/robot-program.xsd");
     }
 
-    private RobotProgramXml() {
-    }
+    private RobotProgramXml() {}
 
     /** The binding, set up when first needed (it takes a while in a fresh JVM). */
     private static final class Binding {
@@ -111,7 +110,9 @@ public final class RobotProgramXml {
      * binding, whose escaping is the reference.
      */
     static boolean plainStrings(RobotProgramType x) {
-        if (!plain(x.getName()) || !plain(x.getResource().getRobotName()) || !plain(x.getActivityList().getTask())) {
+        if (!plain(x.getName())
+                || !plain(x.getResource().getRobotName())
+                || !plain(x.getActivityList().getTask())) {
             return false;
         }
         for (JointDefinitionType d : x.getResource().getJointDefinition()) {
@@ -120,8 +121,11 @@ public final class RobotProgramXml {
             }
         }
         for (ActivityType a : x.getActivityList().getActivity()) {
-            if (!plain(a.getWorkingstep()) || !plain(a.getRole()) || !plain(a.getActivityName())
-                    || !plain(a.getMotionType()) || !plain(a.getCartesianTarget().getConfig())) {
+            if (!plain(a.getWorkingstep())
+                    || !plain(a.getRole())
+                    || !plain(a.getActivityName())
+                    || !plain(a.getMotionType())
+                    || !plain(a.getCartesianTarget().getConfig())) {
                 return false;
             }
             for (JointValueType v : a.getJointTarget().getJoint()) {
@@ -159,27 +163,58 @@ public final class RobotProgramXml {
         // its UTF-8 bytes: a builder's text goes out by array copies, without a charset encoder
         StringBuilder sb = new StringBuilder(1 << 16);
         sb.append("<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n");
-        sb.append("<RobotProgram xmlns=\"urn:fresa:robot-program:1\" version=\"").append(x.getVersion())
-                .append("\" name=\"").append(x.getName()).append("\">\n");
-        sb.append("    <Resource RobotName=\"").append(x.getResource().getRobotName()).append("\">\n");
+        sb.append("<RobotProgram xmlns=\"urn:fresa:robot-program:1\" version=\"")
+                .append(x.getVersion())
+                .append("\" name=\"")
+                .append(x.getName())
+                .append("\">\n");
+        sb.append("    <Resource RobotName=\"")
+                .append(x.getResource().getRobotName())
+                .append("\">\n");
         for (JointDefinitionType d : x.getResource().getJointDefinition()) {
-            sb.append("        <JointDefinition JointName=\"").append(d.getJointName()).append("\" JointType=\"")
-                    .append(d.getJointType().value()).append("\" Units=\"").append(d.getUnits().value())
-                    .append("\" DOFNumber=\"").append(d.getDOFNumber()).append("\" Min=\"").append(d.getMin())
-                    .append("\" Max=\"").append(d.getMax()).append("\"/>\n");
+            sb.append("        <JointDefinition JointName=\"")
+                    .append(d.getJointName())
+                    .append("\" JointType=\"")
+                    .append(d.getJointType().value())
+                    .append("\" Units=\"")
+                    .append(d.getUnits().value())
+                    .append("\" DOFNumber=\"")
+                    .append(d.getDOFNumber())
+                    .append("\" Min=\"")
+                    .append(d.getMin())
+                    .append("\" Max=\"")
+                    .append(d.getMax())
+                    .append("\"/>\n");
         }
         for (ToolFrameType t : x.getResource().getToolFrame()) {
-            sb.append("        <ToolFrame Number=\"").append(t.getNumber()).append("\" X=\"").append(t.getX())
-                    .append("\" Y=\"").append(t.getY()).append("\" Z=\"").append(t.getZ()).append("\" Q1=\"")
-                    .append(t.getQ1()).append("\" Q2=\"").append(t.getQ2()).append("\" Q3=\"").append(t.getQ3())
-                    .append("\" Q4=\"").append(t.getQ4()).append("\"/>\n");
+            sb.append("        <ToolFrame Number=\"")
+                    .append(t.getNumber())
+                    .append("\" X=\"")
+                    .append(t.getX())
+                    .append("\" Y=\"")
+                    .append(t.getY())
+                    .append("\" Z=\"")
+                    .append(t.getZ())
+                    .append("\" Q1=\"")
+                    .append(t.getQ1())
+                    .append("\" Q2=\"")
+                    .append(t.getQ2())
+                    .append("\" Q3=\"")
+                    .append(t.getQ3())
+                    .append("\" Q4=\"")
+                    .append(t.getQ4())
+                    .append("\"/>\n");
         }
         sb.append("    </Resource>\n");
         List<ActivityType> activities = x.getActivityList().getActivity();
         if (activities.isEmpty()) {
-            sb.append("    <ActivityList Task=\"").append(x.getActivityList().getTask()).append("\"/>\n");
+            sb.append("    <ActivityList Task=\"")
+                    .append(x.getActivityList().getTask())
+                    .append("\"/>\n");
         } else {
-            sb.append("    <ActivityList Task=\"").append(x.getActivityList().getTask()).append("\">\n");
+            sb.append("    <ActivityList Task=\"")
+                    .append(x.getActivityList().getTask())
+                    .append("\">\n");
             for (ActivityType a : activities) {
                 activity(a, sb);
                 if (sb.length() > (1 << 16) - 4096) {
@@ -194,46 +229,93 @@ public final class RobotProgramXml {
     }
 
     private static void activity(ActivityType a, StringBuilder sb) {
-        sb.append("        <Activity ActivityType=\"").append(a.getActivityType()).append("\" Index=\"")
-                .append(a.getIndex()).append("\" Workingstep=\"").append(a.getWorkingstep()).append("\" Role=\"")
-                .append(a.getRole()).append(a.getTool() == null ? "\">\n" : "\" Tool=\"" + a.getTool() + "\">\n");
+        sb.append("        <Activity ActivityType=\"")
+                .append(a.getActivityType())
+                .append("\" Index=\"")
+                .append(a.getIndex())
+                .append("\" Workingstep=\"")
+                .append(a.getWorkingstep())
+                .append("\" Role=\"")
+                .append(a.getRole())
+                .append(a.getTool() == null ? "\">\n" : "\" Tool=\"" + a.getTool() + "\">\n");
         sb.append("            <ActivityName>").append(a.getActivityName()).append("</ActivityName>\n");
         sb.append("            <MotionType>").append(a.getMotionType()).append("</MotionType>\n");
         sb.append("            <JointTarget>\n");
         for (JointValueType v : a.getJointTarget().getJoint()) {
-            sb.append("                <Joint JointName=\"").append(v.getJointName()).append("\" JointType=\"")
-                    .append(v.getJointType().value()).append("\" Units=\"").append(v.getUnits().value())
-                    .append("\" DOFNumber=\"").append(v.getDOFNumber()).append("\">\n");
-            sb.append("                    <JointValue>").append(v.getJointValue()).append("</JointValue>\n");
+            sb.append("                <Joint JointName=\"")
+                    .append(v.getJointName())
+                    .append("\" JointType=\"")
+                    .append(v.getJointType().value())
+                    .append("\" Units=\"")
+                    .append(v.getUnits().value())
+                    .append("\" DOFNumber=\"")
+                    .append(v.getDOFNumber())
+                    .append("\">\n");
+            sb.append("                    <JointValue>")
+                    .append(v.getJointValue())
+                    .append("</JointValue>\n");
             sb.append("                </Joint>\n");
         }
         sb.append("            </JointTarget>\n");
         CartesianTargetType c = a.getCartesianTarget();
         CartesianTargetType.Position pos = c.getPosition();
         sb.append("            <CartesianTarget>\n");
-        sb.append("                <Position X=\"").append(pos.getX()).append("\" Y=\"").append(pos.getY())
-                .append("\" Z=\"").append(pos.getZ()).append("\" Units=\"").append(pos.getUnits()).append("\"/>\n");
+        sb.append("                <Position X=\"")
+                .append(pos.getX())
+                .append("\" Y=\"")
+                .append(pos.getY())
+                .append("\" Z=\"")
+                .append(pos.getZ())
+                .append("\" Units=\"")
+                .append(pos.getUnits())
+                .append("\"/>\n");
         CartesianTargetType.Orientation o = c.getOrientation();
-        sb.append("                <Orientation Q1=\"").append(o.getQ1()).append("\" Q2=\"").append(o.getQ2())
-                .append("\" Q3=\"").append(o.getQ3()).append("\" Q4=\"").append(o.getQ4()).append("\" Roll=\"")
-                .append(o.getRoll()).append("\" Pitch=\"").append(o.getPitch()).append("\" Yaw=\"").append(o.getYaw())
-                .append("\" Units=\"").append(o.getUnits()).append("\"/>\n");
+        sb.append("                <Orientation Q1=\"")
+                .append(o.getQ1())
+                .append("\" Q2=\"")
+                .append(o.getQ2())
+                .append("\" Q3=\"")
+                .append(o.getQ3())
+                .append("\" Q4=\"")
+                .append(o.getQ4())
+                .append("\" Roll=\"")
+                .append(o.getRoll())
+                .append("\" Pitch=\"")
+                .append(o.getPitch())
+                .append("\" Yaw=\"")
+                .append(o.getYaw())
+                .append("\" Units=\"")
+                .append(o.getUnits())
+                .append("\"/>\n");
         sb.append("                <Config>").append(c.getConfig()).append("</Config>\n");
         sb.append("            </CartesianTarget>\n");
         MoveAttributesType mv = a.getMoveAttributes();
         sb.append("            <MoveAttributes>\n");
-        sb.append("                <MotionBasis Criterion=\"").append(mv.getMotionBasis().getCriterion())
-                .append("\" Units=\"").append(mv.getMotionBasis().getUnits()).append("\">")
-                .append(mv.getMotionBasis().getValue()).append("</MotionBasis>\n");
-        sb.append("                <Rounding Units=\"").append(mv.getRounding().getUnits()).append("\">")
-                .append(mv.getRounding().getValue()).append("</Rounding>\n");
+        sb.append("                <MotionBasis Criterion=\"")
+                .append(mv.getMotionBasis().getCriterion())
+                .append("\" Units=\"")
+                .append(mv.getMotionBasis().getUnits())
+                .append("\">")
+                .append(mv.getMotionBasis().getValue())
+                .append("</MotionBasis>\n");
+        sb.append("                <Rounding Units=\"")
+                .append(mv.getRounding().getUnits())
+                .append("\">")
+                .append(mv.getRounding().getValue())
+                .append("</Rounding>\n");
         if (mv.getDwell() != null) {
-            sb.append("                <Dwell Units=\"").append(mv.getDwell().getUnits()).append("\">")
-                    .append(mv.getDwell().getValue()).append("</Dwell>\n");
+            sb.append("                <Dwell Units=\"")
+                    .append(mv.getDwell().getUnits())
+                    .append("\">")
+                    .append(mv.getDwell().getValue())
+                    .append("</Dwell>\n");
         }
         if (mv.getSpindle() != null) {
-            sb.append("                <Spindle Units=\"").append(mv.getSpindle().getUnits()).append("\">")
-                    .append(mv.getSpindle().getValue()).append("</Spindle>\n");
+            sb.append("                <Spindle Units=\"")
+                    .append(mv.getSpindle().getUnits())
+                    .append("\">")
+                    .append(mv.getSpindle().getValue())
+                    .append("</Spindle>\n");
         }
         sb.append("            </MoveAttributes>\n");
         sb.append("        </Activity>\n");
@@ -261,7 +343,10 @@ public final class RobotProgramXml {
         } catch (UnmarshalException e) {
             Throwable c = e.getLinkedException() != null ? e.getLinkedException() : e.getCause();
             if (c instanceof SAXParseException spe) {
-                throw new CamInputException(name, Math.max(0, spe.getLineNumber()), Math.max(0, spe.getColumnNumber()),
+                throw new CamInputException(
+                        name,
+                        Math.max(0, spe.getLineNumber()),
+                        Math.max(0, spe.getColumnNumber()),
                         "expected a robot program as schemas/robot-program.xsd describes: " + spe.getMessage());
             }
             throw new CamInputException(name, "not a robot program: " + e.getMessage());
@@ -300,9 +385,21 @@ public final class RobotProgramXml {
             CartesianTargetType.Position pos = a.getCartesianTarget().getPosition();
             CartesianTargetType.Orientation o = a.getCartesianTarget().getOrientation();
             MoveAttributesType mv = a.getMoveAttributes();
-            double[] numbers = {pos.getX(), pos.getY(), pos.getZ(), o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4(),
-                o.getRoll(), o.getPitch(), o.getYaw(), mv.getMotionBasis().getValue(), mv.getRounding().getValue(),
-                mv.getDwell() == null ? 0 : mv.getDwell().getValue()};
+            double[] numbers = {
+                pos.getX(),
+                pos.getY(),
+                pos.getZ(),
+                o.getQ1(),
+                o.getQ2(),
+                o.getQ3(),
+                o.getQ4(),
+                o.getRoll(),
+                o.getPitch(),
+                o.getYaw(),
+                mv.getMotionBasis().getValue(),
+                mv.getRounding().getValue(),
+                mv.getDwell() == null ? 0 : mv.getDwell().getValue()
+            };
             for (double v : numbers) {
                 if (!finite(v)) {
                     return "motion " + a.getIndex() + " has the number " + v + " in its target or move attributes";
@@ -446,8 +543,13 @@ public final class RobotProgramXml {
     static RobotProgram fromXml(RobotProgramType x) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointDefinitionType d : x.getResource().getJointDefinition()) {
-            joints.add(new RobotProgram.Joint(d.getJointName(), d.getJointType() == JointTypeType.ROTATIONAL
-                    ? RobotProgram.JointType.REVOLUTE : RobotProgram.JointType.PRISMATIC, d.getMin(), d.getMax()));
+            joints.add(new RobotProgram.Joint(
+                    d.getJointName(),
+                    d.getJointType() == JointTypeType.ROTATIONAL
+                            ? RobotProgram.JointType.REVOLUTE
+                            : RobotProgram.JointType.PRISMATIC,
+                    d.getMin(),
+                    d.getMax()));
         }
         List<RobotProgram.Motion> motions = new ArrayList<>();
         for (ActivityType a : x.getActivityList().getActivity()) {
@@ -458,15 +560,34 @@ public final class RobotProgramXml {
             CartesianTargetType c = a.getCartesianTarget();
             CartesianTargetType.Orientation o = c.getOrientation();
             Transform3 r = new Quaternion(o.getQ1(), o.getQ2(), o.getQ3(), o.getQ4()).toTransform();
-            Transform3 target = new Transform3(r.r00(), r.r01(), r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(),
-                    r.r22(), c.getPosition().getX(), c.getPosition().getY(), c.getPosition().getZ());
-            motions.add(new RobotProgram.Motion(a.getIndex().intValueExact(), a.getWorkingstep(),
+            Transform3 target = new Transform3(
+                    r.r00(),
+                    r.r01(),
+                    r.r02(),
+                    r.r10(),
+                    r.r11(),
+                    r.r12(),
+                    r.r20(),
+                    r.r21(),
+                    r.r22(),
+                    c.getPosition().getX(),
+                    c.getPosition().getY(),
+                    c.getPosition().getZ());
+            motions.add(new RobotProgram.Motion(
+                    a.getIndex().intValueExact(),
+                    a.getWorkingstep(),
                     "Joint".equals(a.getMotionType()) ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
                     "part".equals(a.getRole()) ? RobotProgram.PointRole.PART : RobotProgram.PointRole.RELINK,
-                    values, target, a.getMoveAttributes().getMotionBasis().getValue(),
+                    values,
+                    target,
+                    a.getMoveAttributes().getMotionBasis().getValue(),
                     a.getMoveAttributes().getRounding().getValue(),
-                    a.getMoveAttributes().getDwell() == null ? 0 : a.getMoveAttributes().getDwell().getValue(),
-                    a.getMoveAttributes().getSpindle() == null ? 0 : a.getMoveAttributes().getSpindle().getValue()));
+                    a.getMoveAttributes().getDwell() == null
+                            ? 0
+                            : a.getMoveAttributes().getDwell().getValue(),
+                    a.getMoveAttributes().getSpindle() == null
+                            ? 0
+                            : a.getMoveAttributes().getSpindle().getValue()));
         }
         List<RobotProgram.ToolFrame> tools = new ArrayList<>();
         for (ToolFrameType t : x.getResource().getToolFrame()) {
@@ -477,8 +598,11 @@ public final class RobotProgramXml {
                 }
             }
             Transform3 r = new Quaternion(t.getQ1(), t.getQ2(), t.getQ3(), t.getQ4()).toTransform();
-            tools.add(new RobotProgram.ToolFrame(t.getNumber().intValueExact(), new Transform3(r.r00(), r.r01(),
-                    r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(), r.r22(), t.getX(), t.getY(), t.getZ()),
+            tools.add(new RobotProgram.ToolFrame(
+                    t.getNumber().intValueExact(),
+                    new Transform3(
+                            r.r00(), r.r01(), r.r02(), r.r10(), r.r11(), r.r12(), r.r20(), r.r21(), r.r22(), t.getX(),
+                            t.getY(), t.getZ()),
                     steps));
         }
         if (tools.isEmpty()) {

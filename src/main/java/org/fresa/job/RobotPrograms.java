@@ -47,8 +47,7 @@ public final class RobotPrograms {
      */
     public static final double ZONE_MM = 1;
 
-    private RobotPrograms() {
-    }
+    private RobotPrograms() {}
 
     /** The program of a trajectory whose every workingstep uses the robot's own tool frame. */
     public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points) {
@@ -63,12 +62,22 @@ public final class RobotPrograms {
      * @param dwellAfterTarget the wait at each target (s), in the order of the trajectory's targets
      *     (its rows not inserted by the solver); missing entries are no wait
      */
-    public static RobotProgram of(String programName, Robot robot, Toolpath path, List<TrajectoryPoint> points,
-            java.util.function.Function<String, Transform3> tcpOfLabel, List<Double> dwellAfterTarget) {
+    public static RobotProgram of(
+            String programName,
+            Robot robot,
+            Toolpath path,
+            List<TrajectoryPoint> points,
+            java.util.function.Function<String, Transform3> tcpOfLabel,
+            List<Double> dwellAfterTarget) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointLimit j : robot.joints()) {
-            joints.add(new RobotProgram.Joint(j.name(), j.type() == JointType.PRISMATIC
-                    ? RobotProgram.JointType.PRISMATIC : RobotProgram.JointType.REVOLUTE, j.min(), j.max()));
+            joints.add(new RobotProgram.Joint(
+                    j.name(),
+                    j.type() == JointType.PRISMATIC
+                            ? RobotProgram.JointType.PRISMATIC
+                            : RobotProgram.JointType.REVOLUTE,
+                    j.min(),
+                    j.max()));
         }
         Map<String, Double> feed = feedsByWorkingstep(path);
         Map<String, Double> spindle = new HashMap<>();
@@ -98,10 +107,17 @@ public final class RobotPrograms {
             double speed = joint ? JOINT_SPEED_MM_PER_S : feed.getOrDefault(p.label(), 60.0) / 60.0;
             Transform3 pose = p.reached().orElse(p.target());
             boolean stop = joint || dwell > 0 || stopsAfter(points, i);
-            motions.add(new RobotProgram.Motion(i, p.label(),
+            motions.add(new RobotProgram.Motion(
+                    i,
+                    p.label(),
                     joint ? RobotProgram.MotionType.JOINT : RobotProgram.MotionType.LINEAR,
-                    relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART, q, pose, speed,
-                    stop ? 0 : ZONE_MM, dwell, spindle.getOrDefault(p.label(), 0.0)));
+                    relink ? RobotProgram.PointRole.RELINK : RobotProgram.PointRole.PART,
+                    q,
+                    pose,
+                    speed,
+                    stop ? 0 : ZONE_MM,
+                    dwell,
+                    spindle.getOrDefault(p.label(), 0.0)));
         }
         return new RobotProgram(programName, robot.name(), joints, motions, tools(path, points, tcpOfLabel));
     }
@@ -115,12 +131,13 @@ public final class RobotPrograms {
             return true;
         }
         TrajectoryPoint next = points.get(i + 1);
-        return next.status() != TrajectoryPoint.Status.OK || !next.label().equals(points.get(i).label());
+        return next.status() != TrajectoryPoint.Status.OK
+                || !next.label().equals(points.get(i).label());
     }
 
     /** One tool frame per tool number and TCP, numbered as the toolpath numbers its tools. */
-    private static List<RobotProgram.ToolFrame> tools(Toolpath path, List<TrajectoryPoint> points,
-            java.util.function.Function<String, Transform3> tcpOfLabel) {
+    private static List<RobotProgram.ToolFrame> tools(
+            Toolpath path, List<TrajectoryPoint> points, java.util.function.Function<String, Transform3> tcpOfLabel) {
         Map<Integer, Transform3> tcpOf = new java.util.TreeMap<>();
         Map<Integer, List<String>> steps = new HashMap<>();
         int next = 1;
@@ -154,7 +171,8 @@ public final class RobotPrograms {
         Map<String, Double> m = new HashMap<>();
         for (ToolpathSection s : path.sections()) {
             for (Move mv : s.moves()) {
-                double f = mv instanceof Move.Linear l ? l.feedMmPerMin()
+                double f = mv instanceof Move.Linear l
+                        ? l.feedMmPerMin()
                         : mv instanceof Move.Circular c ? c.feedMmPerMin() : 0;
                 if (f > 0) {
                     m.merge(s.label(), f, Math::max);

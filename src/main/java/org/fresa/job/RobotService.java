@@ -12,7 +12,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import org.fresa.geom.Tolerance;
 import org.fresa.kin.Robot;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
@@ -32,10 +31,10 @@ public final class RobotService {
     /** The formats {@code --formats} accepts. */
     public static final Set<String> FORMATS = Set.of("csv", "xml", "rapid", "krl", "png");
 
-    private static final java.util.concurrent.atomic.AtomicInteger THREADS = new java.util.concurrent.atomic.AtomicInteger();
+    private static final java.util.concurrent.atomic.AtomicInteger THREADS =
+            new java.util.concurrent.atomic.AtomicInteger();
 
-    private RobotService() {
-    }
+    private RobotService() {}
 
     /**
      * What the planner asked for.
@@ -44,8 +43,15 @@ public final class RobotService {
      * @param tool the spindle and tool length asked for, else the robot file's and the STEP-NC tools'
      * @param placing whether robotTable is used as given or searched ({@code --place auto})
      */
-    public record Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-            List<String> formats, PlanningChoices choices, RobotTools.Choice tool, TablePlacing placing) {
+    public record Settings(
+            Path stepnc,
+            String robot,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            PlanningChoices choices,
+            RobotTools.Choice tool,
+            TablePlacing placing) {
         /** @throws IllegalArgumentException for a format not in {@link #FORMATS}: parse with parseFormats */
         public Settings {
             java.util.Objects.requireNonNull(choices, "choices");
@@ -60,8 +66,14 @@ public final class RobotService {
         }
 
         /** The robot -> table placement as given. */
-        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece,
-                List<String> formats, PlanningChoices choices, RobotTools.Choice tool) {
+        public Settings(
+                Path stepnc,
+                String robot,
+                Placement robotTable,
+                Placement tablePiece,
+                List<String> formats,
+                PlanningChoices choices,
+                RobotTools.Choice tool) {
             this(stepnc, robot, robotTable, tablePiece, formats, choices, tool, TablePlacing.GIVEN);
         }
 
@@ -74,13 +86,23 @@ public final class RobotService {
         }
 
         /** The planner's choices; the robot file's tool frame and the STEP-NC tools' lengths. */
-        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+        public Settings(
+                Path stepnc,
+                String robot,
+                Placement robotTable,
+                Placement tablePiece,
+                List<String> formats,
                 PlanningChoices choices) {
             this(stepnc, robot, robotTable, tablePiece, formats, choices, RobotTools.Choice.NONE);
         }
 
         /** The planner's default choices with the spindle and tool length asked for. */
-        public Settings(Path stepnc, String robot, Placement robotTable, Placement tablePiece, List<String> formats,
+        public Settings(
+                Path stepnc,
+                String robot,
+                Placement robotTable,
+                Placement tablePiece,
+                List<String> formats,
                 RobotTools.Choice tool) {
             this(stepnc, robot, robotTable, tablePiece, formats, PlanningChoices.DEFAULT, tool);
         }
@@ -95,8 +117,9 @@ public final class RobotService {
                 continue;
             }
             if (!FORMATS.contains(t)) {
-                throw new CamInputException("--formats", "unknown format '" + f.trim()
-                        + "': expected a comma list of csv, xml, rapid, krl, png");
+                throw new CamInputException(
+                        "--formats",
+                        "unknown format '" + f.trim() + "': expected a comma list of csv, xml, rapid, krl, png");
             }
             out.add(t);
         }
@@ -109,8 +132,8 @@ public final class RobotService {
      */
     public static TaskOutcome run(Settings s, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
-        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(4,
-                Runtime.getRuntime().availableProcessors())), r -> {
+        ExecutorService pool = Executors.newFixedThreadPool(
+                Math.max(1, Math.min(4, Runtime.getRuntime().availableProcessors())), r -> {
                     Thread t = new Thread(r, "fresa-output-" + THREADS.incrementAndGet());
                     t.setDaemon(true);
                     return t;
@@ -140,12 +163,13 @@ public final class RobotService {
             return ToolpathService.nothingToMachine(program, plan.problems(), out);
         }
         Toolpath path = plan.toolpath();
-        RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
+        RobotTools.Frames tools =
+                RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
         Placement robotTable = s.robotTable();
         java.util.Optional<AutoPlacement.Outcome> placed = java.util.Optional.empty();
         if (s.placing() == TablePlacing.AUTO) {
-            AutoPlacement.Outcome a = AutoPlacement.search(tools.toolpath(), robot, s.tablePiece(), tools.tcpByLabel(),
-                    AutoPlacement.names(plan), progress);
+            AutoPlacement.Outcome a = AutoPlacement.search(
+                    tools.toolpath(), robot, s.tablePiece(), tools.tcpByLabel(), AutoPlacement.names(plan), progress);
             Timing.mark("placement searched");
             if (!a.found()) {
                 // never a partial placement: the planner learns which workingsteps are out of reach
@@ -164,9 +188,15 @@ public final class RobotService {
             placed = java.util.Optional.of(a);
             robotTable = a.robotTable();
         }
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot, robotTable,
-                s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
-                org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel());
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(
+                tools.toolpath(),
+                robot,
+                robotTable,
+                s.tablePiece(),
+                NcPosts.CHORD_TOLERANCE_MM * 10,
+                s.formats(),
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT,
+                tools.tcpByLabel());
         out.create();
         TaskOutcome o;
         RobotTrajectoryService.Solved solved;
@@ -183,7 +213,11 @@ public final class RobotService {
             // the inverse kinematics is done; the charts and programs take a while yet
             progress.progress(-1, "writing the files");
             String name = s.stepnc().getFileName().toString().replaceFirst("\\.[^.]*$", "");
-            o = RobotTrajectoryService.write(solved, name, out, ProgramChecks.stepnc(program, plan, s.choices()),
+            o = RobotTrajectoryService.write(
+                    solved,
+                    name,
+                    out,
+                    ProgramChecks.stepnc(program, plan, s.choices()),
                     placed.isPresent() ? Map.of("placement_search", placed.get().summary()) : Map.of());
             Timing.mark("files asked for");
             out.finishParallel();
@@ -219,13 +253,20 @@ public final class RobotService {
         }
         ToolpathPlanner.Plan plan = ToolpathService.plan(program, s.choices(), progress);
         if (plan.planned() == 0) {
-            throw new CamInputException(s.stepnc().toString(), "no workingstep could be planned: "
-                    + String.join("; ", plan.problems()));
+            throw new CamInputException(
+                    s.stepnc().toString(), "no workingstep could be planned: " + String.join("; ", plan.problems()));
         }
-        RobotTools.Frames tools = RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(tools.toolpath(), robot,
-                s.robotTable(), s.tablePiece(), NcPosts.CHORD_TOLERANCE_MM * 10, s.formats(),
-                org.fresa.kin.TrajectorySolver.Options.DEFAULT, tools.tcpByLabel(),
+        RobotTools.Frames tools =
+                RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(
+                tools.toolpath(),
+                robot,
+                s.robotTable(),
+                s.tablePiece(),
+                NcPosts.CHORD_TOLERANCE_MM * 10,
+                s.formats(),
+                org.fresa.kin.TrajectorySolver.Options.DEFAULT,
+                tools.tcpByLabel(),
                 ProgramChecks.stepnc(program, plan, s.choices()));
         return RobotTrajectoryService.solve(req, progress);
     }
@@ -236,7 +277,17 @@ public final class RobotService {
         JobSettings.StepNcSettings st = JobRunner.require(job.stepnc(), "stepnc", job);
         JobSettings.RobotSettings r = JobRunner.require(job.robot(), "robot", job);
         List<String> formats = parseFormats(String.join(",", r.formats()));
-        return run(new Settings(st.file(), r.robot(), r.robotTable(), r.tablePiece(), formats, st.choices(),
-                new RobotTools.Choice(r.spindle(), r.toolLengthMm()), r.placing()), out, progress);
+        return run(
+                new Settings(
+                        st.file(),
+                        r.robot(),
+                        r.robotTable(),
+                        r.tablePiece(),
+                        formats,
+                        st.choices(),
+                        new RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                        r.placing()),
+                out,
+                progress);
     }
 }

@@ -26,8 +26,7 @@ import org.fresa.toolpath.ToolpathPlanner;
  */
 public final class RobotTools {
 
-    private RobotTools() {
-    }
+    private RobotTools() {}
 
     /**
      * The TCPs.
@@ -38,7 +37,10 @@ public final class RobotTools {
      * @param toolpath the plan's toolpath, a section relabelled {@code "id [Tn]"} where workingsteps
      *     sharing an id use tools of different lengths, so that each label has one TCP
      */
-    public record Frames(Transform3 spindle, Map<String, Transform3> tcpByLabel, List<String> warnings,
+    public record Frames(
+            Transform3 spindle,
+            Map<String, Transform3> tcpByLabel,
+            List<String> warnings,
             org.fresa.model.Toolpath toolpath) {
         public Frames {
             tcpByLabel = Map.copyOf(tcpByLabel);
@@ -82,8 +84,8 @@ public final class RobotTools {
      *
      * @throws org.fresa.model.CamInputException when a tool has no length and none is given
      */
-    public static Frames of(Robot robot, Choice choice, StepNcProgram program, ToolpathPlanner.Plan plan,
-            String source) throws org.fresa.model.CamInputException {
+    public static Frames of(Robot robot, Choice choice, StepNcProgram program, ToolpathPlanner.Plan plan, String source)
+            throws org.fresa.model.CamInputException {
         List<String> warnings = new ArrayList<>();
         Transform3 spindle = spindle(robot, choice, warnings);
         Map<Long, MachiningWorkingstep> byId = new LinkedHashMap<>();
@@ -97,12 +99,16 @@ public final class RobotTools {
                 length = choice.toolLengthMm().getAsDouble();
             } else {
                 MachiningWorkingstep ws = byId.get(step.workingstepInstanceId());
-                Optional<Tool> tool = ws == null ? Optional.empty() : ws.operation().tool();
+                Optional<Tool> tool =
+                        ws == null ? Optional.empty() : ws.operation().tool();
                 OptionalDouble l = tool.isPresent() ? length(tool.get()) : OptionalDouble.empty();
                 if (l.isEmpty()) {
-                    throw new org.fresa.model.CamInputException(source, "workingstep '" + step.label() + "': its tool"
-                            + tool.map(t -> " '" + t.id() + "'").orElse("") + " has no overall_assembly_length or"
-                            + " tool_offset_length, so its tip cannot be put on the part: give --tool-length");
+                    throw new org.fresa.model.CamInputException(
+                            source,
+                            "workingstep '" + step.label() + "': its tool"
+                                    + tool.map(t -> " '" + t.id() + "'").orElse("")
+                                    + " has no overall_assembly_length or"
+                                    + " tool_offset_length, so its tip cannot be put on the part: give --tool-length");
                 }
                 length = l.getAsDouble();
             }
@@ -112,11 +118,16 @@ public final class RobotTools {
     }
 
     /** The frames of sections with their TCPs, a shared label split by tool where the TCPs differ. */
-    static Frames labelled(Transform3 spindle, List<org.fresa.model.ToolpathSection> sections,
-            List<Transform3> tcpOfSection, List<String> warnings) {
+    static Frames labelled(
+            Transform3 spindle,
+            List<org.fresa.model.ToolpathSection> sections,
+            List<Transform3> tcpOfSection,
+            List<String> warnings) {
         Map<String, java.util.Set<Transform3>> tcpsOfLabel = new LinkedHashMap<>();
         for (int i = 0; i < sections.size(); i++) {
-            tcpsOfLabel.computeIfAbsent(sections.get(i).label(), k -> new java.util.HashSet<>()).add(tcpOfSection.get(i));
+            tcpsOfLabel
+                    .computeIfAbsent(sections.get(i).label(), k -> new java.util.HashSet<>())
+                    .add(tcpOfSection.get(i));
         }
         Map<String, Transform3> tcp = new LinkedHashMap<>();
         List<org.fresa.model.ToolpathSection> relabelled = new ArrayList<>();
@@ -128,16 +139,22 @@ public final class RobotTools {
                 label = label + " [T" + sec.toolNumber() + "]";
             }
             tcp.put(label, tcpOfSection.get(i));
-            relabelled.add(new org.fresa.model.ToolpathSection(label, sec.toolAxis(), sec.toolDiameterMm(),
-                    sec.toolNumber(), sec.spindleRpm(), sec.start(), sec.moves()));
+            relabelled.add(new org.fresa.model.ToolpathSection(
+                    label,
+                    sec.toolAxis(),
+                    sec.toolDiameterMm(),
+                    sec.toolNumber(),
+                    sec.spindleRpm(),
+                    sec.start(),
+                    sec.moves()));
         }
         return new Frames(spindle, tcp, warnings, new org.fresa.model.Toolpath(relabelled));
     }
 
     /** The tool's length from the spindle nose to the tip, when the file gives it (and it is sane). */
     static OptionalDouble length(Tool t) {
-        OptionalDouble l = t.overallAssemblyLengthMm().isPresent() ? t.overallAssemblyLengthMm()
-                : t.toolOffsetLengthMm();
+        OptionalDouble l =
+                t.overallAssemblyLengthMm().isPresent() ? t.overallAssemblyLengthMm() : t.toolOffsetLengthMm();
         if (l.isPresent() && SettingRanges.Robot.TOOL_LENGTH.contains(l.getAsDouble())) {
             return l;
         }

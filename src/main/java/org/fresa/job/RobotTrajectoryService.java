@@ -1,9 +1,9 @@
 package org.fresa.job;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -37,8 +37,7 @@ import org.fresa.post.RobotProgram;
  */
 public final class RobotTrajectoryService {
 
-    private RobotTrajectoryService() {
-    }
+    private RobotTrajectoryService() {}
 
     /**
      * What to run.
@@ -53,9 +52,16 @@ public final class RobotTrajectoryService {
      * @param tcpByLabel the tool frame (TCP) in the flange frame of each workingstep (its label);
      *     a workingstep not in it (or an empty map) uses the robot's own tool frame
      */
-    public record Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
-            double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
-            Map<String, Transform3> tcpByLabel, org.fresa.check.Limits checkLimits) {
+    public record Request(
+            Toolpath toolpath,
+            Robot robot,
+            Placement robotTable,
+            Placement tablePiece,
+            double chordToleranceMm,
+            List<String> formats,
+            TrajectorySolver.Options options,
+            Map<String, Transform3> tcpByLabel,
+            org.fresa.check.Limits checkLimits) {
         public Request {
             Objects.requireNonNull(checkLimits, "checkLimits");
             Objects.requireNonNull(toolpath, "toolpath");
@@ -74,16 +80,36 @@ public final class RobotTrajectoryService {
          * Without the part's limits: every tool a milling cutter that does not cut at its centre
          * and no stock known, the strictest reading of the program check.
          */
-        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
-                double chordToleranceMm, List<String> formats, TrajectorySolver.Options options,
+        public Request(
+                Toolpath toolpath,
+                Robot robot,
+                Placement robotTable,
+                Placement tablePiece,
+                double chordToleranceMm,
+                List<String> formats,
+                TrajectorySolver.Options options,
                 Map<String, Transform3> tcpByLabel) {
-            this(toolpath, robot, robotTable, tablePiece, chordToleranceMm, formats, options, tcpByLabel,
+            this(
+                    toolpath,
+                    robot,
+                    robotTable,
+                    tablePiece,
+                    chordToleranceMm,
+                    formats,
+                    options,
+                    tcpByLabel,
                     org.fresa.check.Limits.milling());
         }
 
         /** Every workingstep with the robot's own tool frame. */
-        public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece,
-                double chordToleranceMm, List<String> formats, TrajectorySolver.Options options) {
+        public Request(
+                Toolpath toolpath,
+                Robot robot,
+                Placement robotTable,
+                Placement tablePiece,
+                double chordToleranceMm,
+                List<String> formats,
+                TrajectorySolver.Options options) {
             this(toolpath, robot, robotTable, tablePiece, chordToleranceMm, formats, options, Map.of());
         }
 
@@ -100,7 +126,14 @@ public final class RobotTrajectoryService {
         }
 
         public Request(Toolpath toolpath, Robot robot, Placement robotTable, Placement tablePiece) {
-            this(toolpath, robot, robotTable, tablePiece, 0.01, List.of("csv", "png"), TrajectorySolver.Options.DEFAULT);
+            this(
+                    toolpath,
+                    robot,
+                    robotTable,
+                    tablePiece,
+                    0.01,
+                    List.of("csv", "png"),
+                    TrajectorySolver.Options.DEFAULT);
         }
     }
 
@@ -121,8 +154,8 @@ public final class RobotTrajectoryService {
      */
     public static Placement parseTablePiece(String text) throws org.fresa.model.CamInputException {
         double[] v = numbers("--table-piece", text, 3, 6);
-        return new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0,
-                v.length > 5 ? v[5] : 0);
+        return new Placement(
+                v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0);
     }
 
     /**
@@ -133,16 +166,18 @@ public final class RobotTrajectoryService {
      */
     public static Placement parseSpindle(String text) throws org.fresa.model.CamInputException {
         double[] v = numbers("--spindle", text, 3, 6);
-        return SettingRanges.Robot.checkSpindle("--spindle", new Placement(v[0], v[1], v[2], v.length > 3 ? v[3] : 0,
-                v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0));
+        return SettingRanges.Robot.checkSpindle(
+                "--spindle",
+                new Placement(
+                        v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0));
     }
 
     private static double[] numbers(String option, String text, int min, int max)
             throws org.fresa.model.CamInputException {
         String[] parts = text.split(",", -1);
         if (parts.length < min || parts.length > max) {
-            throw new org.fresa.model.CamInputException(option, "expected " + min + " to " + max
-                    + " comma-separated numbers, got '" + text + "'");
+            throw new org.fresa.model.CamInputException(
+                    option, "expected " + min + " to " + max + " comma-separated numbers, got '" + text + "'");
         }
         double[] v = new double[parts.length];
         for (int i = 0; i < parts.length; i++) {
@@ -152,16 +187,15 @@ public final class RobotTrajectoryService {
                 v[i] = Double.NaN;
             }
             if (!Double.isFinite(v[i])) {
-                throw new org.fresa.model.CamInputException(option, "value " + (i + 1) + " is not a number: '"
-                        + parts[i].trim() + "'");
+                throw new org.fresa.model.CamInputException(
+                        option, "value " + (i + 1) + " is not a number: '" + parts[i].trim() + "'");
             }
         }
         return v;
     }
 
     /** A solved trajectory with what it was solved for. */
-    public record Solved(Request request, List<ToolTarget> targets, TrajectorySolver.Result result) {
-    }
+    public record Solved(Request request, List<ToolTarget> targets, TrajectorySolver.Result result) {}
 
     /** Solves and writes the files; exit status 1 (with the reason) when points are unreachable. */
     public static TaskOutcome run(Request req, OutputFolder out, ProgressMonitor progress) throws IOException {
@@ -173,17 +207,18 @@ public final class RobotTrajectoryService {
 
     /** Places the toolpath in the cell and solves the inverse kinematics of every point. */
     public static Solved solve(Request req, ProgressMonitor progress) {
-        Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
+        Transform3 robotToPiece =
+                req.robotTable().toTransform().times(req.tablePiece().toTransform());
         List<ToolTarget> targets = targets(req.toolpath(), robotToPiece, req.chordToleranceMm());
         progress.progress(0, "inverse kinematics");
         java.util.function.Function<String, Robot> robots = req.tcpByLabel().isEmpty() ? null : req.robotOfLabel();
-        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options()).solve(targets, robots,
-                (done, total) -> {
-            progress.checkCancelled();
-            if ((done & 255) == 0 || done == total) {
-                progress.progress((double) done / total, "inverse kinematics");
-            }
-        });
+        TrajectorySolver.Result r = new TrajectorySolver(req.robot(), req.options())
+                .solve(targets, robots, (done, total) -> {
+                    progress.checkCancelled();
+                    if ((done & 255) == 0 || done == total) {
+                        progress.progress((double) done / total, "inverse kinematics");
+                    }
+                });
         return new Solved(req, targets, r);
     }
 
@@ -209,8 +244,13 @@ public final class RobotTrajectoryService {
     }
 
     /** As above, with more entries for summary.json (the placement search's). */
-    public static TaskOutcome write(Solved solved, String programName, OutputFolder out, org.fresa.check.Limits limits,
-            Map<String, Object> moreSummary) throws IOException {
+    public static TaskOutcome write(
+            Solved solved,
+            String programName,
+            OutputFolder out,
+            org.fresa.check.Limits limits,
+            Map<String, Object> moreSummary)
+            throws IOException {
         Request req = solved.request();
         TrajectorySolver.Result r = solved.result();
         out.create();
@@ -223,8 +263,8 @@ public final class RobotTrajectoryService {
         if (fmts.contains("csv")) {
             out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotProgram program = RobotPrograms.of(programName, req.robot(), req.toolpath(), r.points(), req::tcp,
-                dwellsAfterTargets(req));
+        RobotProgram program = RobotPrograms.of(
+                programName, req.robot(), req.toolpath(), r.points(), req::tcp, dwellsAfterTargets(req));
         java.util.Optional<org.fresa.check.Failure> refused = ProgramChecks.robot(program, req.toolpath(), limits);
         if (refused.isEmpty()) {
             RobotPrograms.write(program, req.robot(), fmts, out);
@@ -237,13 +277,20 @@ public final class RobotTrajectoryService {
         int exit = 0;
         if (refused.isPresent() && fmts.stream().anyMatch(RobotPrograms.FORMATS::contains)) {
             exit = 1;
-            problems.add("robot programs (" + String.join(", ", fmts.stream().filter(RobotPrograms.FORMATS::contains)
-                    .toList()) + ") not written: the program fails the program check at " + refused.get().message());
+            problems.add("robot programs ("
+                    + String.join(
+                            ", ",
+                            fmts.stream()
+                                    .filter(RobotPrograms.FORMATS::contains)
+                                    .toList()) + ") not written: the program fails the program check at "
+                    + refused.get().message());
         }
         if (r.unreachable() > 0) {
             exit = 1;
-            problems.add(0, r.unreachable() + " of " + r.points().size() + " points are unreachable for "
-                    + req.robot().name() + " in this placement (status unreachable in trajectory.csv)");
+            problems.add(
+                    0,
+                    r.unreachable() + " of " + r.points().size() + " points are unreachable for "
+                            + req.robot().name() + " in this placement (status unreachable in trajectory.csv)");
         }
         return new TaskOutcome(exit, problems, summary, out.written());
     }
@@ -260,13 +307,18 @@ public final class RobotTrajectoryService {
      * has arrived (s): the dwells of the toolpath that follow it (a drilling's dwell at the bottom).
      */
     public static List<Double> dwellsAfterTargets(Request req) {
-        Transform3 robotToPiece = req.robotTable().toTransform().times(req.tablePiece().toTransform());
+        Transform3 robotToPiece =
+                req.robotTable().toTransform().times(req.tablePiece().toTransform());
         List<Double> dwells = new ArrayList<>();
         walk(req.toolpath(), robotToPiece, req.chordToleranceMm(), new ArrayList<>(), dwells);
         return dwells;
     }
 
-    private static void walk(Toolpath path, Transform3 robotToPiece, double chordToleranceMm, List<ToolTarget> out,
+    private static void walk(
+            Toolpath path,
+            Transform3 robotToPiece,
+            double chordToleranceMm,
+            List<ToolTarget> out,
             List<Double> dwells) {
         for (ToolpathSection s : path.sections()) {
             Vec3 axis = robotToPiece.applyToDirection(s.toolAxis()).negated().normalized();
@@ -274,7 +326,8 @@ public final class RobotTrajectoryService {
             Vec3 at = s.start();
             // the start is a point of its own unless the previous section ended there with this axis
             ToolTarget last = out.isEmpty() ? null : out.get(out.size() - 1);
-            if (last == null || !last.positionMm().eq(robotToPiece.applyToPoint(at), org.fresa.geom.Tolerance.DEFAULT)
+            if (last == null
+                    || !last.positionMm().eq(robotToPiece.applyToPoint(at), org.fresa.geom.Tolerance.DEFAULT)
                     || last.toolAxis().distance(axis) > 1e-12) {
                 out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(at), axis, x));
                 dwells.add(0.0);
@@ -335,7 +388,9 @@ public final class RobotTrajectoryService {
             double f = (double) i / pieces;
             double a = sweep * f;
             double rad = ru + (rv - ru) * f;
-            Vec3 p = c.center().plus(uh.times(rad * Math.cos(a))).plus(wh.times(rad * Math.sin(a)))
+            Vec3 p = c.center()
+                    .plus(uh.times(rad * Math.cos(a)))
+                    .plus(wh.times(rad * Math.sin(a)))
                     .plus(n.times(hu + (hv - hu) * f));
             out.add(p);
         }
@@ -355,8 +410,8 @@ public final class RobotTrajectoryService {
      * The rows of trajectory.csv, with the flange position (the reached pose without the TCP of
      * the row's workingstep) after the spec's columns.
      */
-    static String trajectoryCsv(Robot robot, TrajectorySolver.Result r,
-            java.util.function.Function<String, Transform3> tcpOfLabel) {
+    static String trajectoryCsv(
+            Robot robot, TrajectorySolver.Result r, java.util.function.Function<String, Transform3> tcpOfLabel) {
         int n = robot.dof();
         StringBuilder sb = new StringBuilder(r.points().size() * 200);
         sb.append("index,workingstep,x,y,z,roll,pitch,yaw");
@@ -381,7 +436,9 @@ public final class RobotTrajectoryService {
             if (p.status() == TrajectoryPoint.Status.UNREACHABLE) {
                 sb.append(",,,");
             } else {
-                Transform3 flange = p.reached().orElseThrow().times(tcpOfLabel.apply(p.label()).inverse());
+                Transform3 flange = p.reached()
+                        .orElseThrow()
+                        .times(tcpOfLabel.apply(p.label()).inverse());
                 appendNumbers(sb, flange.tx(), flange.ty(), flange.tz());
             }
             sb.append('\n');
@@ -446,11 +503,18 @@ public final class RobotTrajectoryService {
         free.put("rotated_points", r.rotatedPoints());
         free.put("changes", r.rotationChanges());
         free.put("max_abs_deg", r.maxFreeRotationDeg());
-        free.put("what", r.rotatedPoints() == 0
-                ? "the tool kept its preferred x direction at every point"
-                : String.format(Locale.ROOT, "the tool was turned about its axis (up to %.0f deg) at %d points, in %d"
-                        + " steps, to stay clear of joint limits and the wrist singularity or to avoid a"
-                        + " reconfiguration", r.maxFreeRotationDeg(), r.rotatedPoints(), r.rotationChanges()));
+        free.put(
+                "what",
+                r.rotatedPoints() == 0
+                        ? "the tool kept its preferred x direction at every point"
+                        : String.format(
+                                Locale.ROOT,
+                                "the tool was turned about its axis (up to %.0f deg) at %d points, in %d"
+                                        + " steps, to stay clear of joint limits and the wrist singularity or to avoid a"
+                                        + " reconfiguration",
+                                r.maxFreeRotationDeg(),
+                                r.rotatedPoints(),
+                                r.rotationChanges()));
         m.put("free_rotation", free);
         m.put("notes", r.notes());
         return m;
@@ -460,14 +524,24 @@ public final class RobotTrajectoryService {
         int n = robot.dof();
         List<RobotCharts.JointSeries> series = jointSeries(robot, r);
         double[][] err = positionErrorsMm(r);
-        out.write("joints.png", o -> ChartFiles.writePng(RobotCharts.joints("Joint values, " + robot.name(), series),
-                1000, 160 * n + 80, o));
+        out.write(
+                "joints.png",
+                o -> ChartFiles.writePng(
+                        RobotCharts.joints("Joint values, " + robot.name(), series), 1000, 160 * n + 80, o));
         // each curve's legend with its mean, least and largest error, the orientation's under the
         // title: the figures of the thesis's Table 5.3
         ErrorStatistics stats = ErrorStatistics.of(r);
-        out.write("error.png", o -> ChartFiles.writePng(RobotCharts.positionErrors("Position error per axis, "
-                + robot.name(), err, List.of(stats.positionLegend(0), stats.positionLegend(1),
-                        stats.positionLegend(2)), stats.orientationLine()), 1000, 500, o));
+        out.write(
+                "error.png",
+                o -> ChartFiles.writePng(
+                        RobotCharts.positionErrors(
+                                "Position error per axis, " + robot.name(),
+                                err,
+                                List.of(stats.positionLegend(0), stats.positionLegend(1), stats.positionLegend(2)),
+                                stats.orientationLine()),
+                        1000,
+                        500,
+                        o));
     }
 
     /** Each joint's values along the trajectory with its limits (NaN at unreachable points), for joints.png. */

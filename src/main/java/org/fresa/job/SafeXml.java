@@ -18,8 +18,7 @@ import org.xml.sax.SAXException;
  * cannot happen whatever the file says.
  */
 final class SafeXml {
-    private SafeXml() {
-    }
+    private SafeXml() {}
 
     /** A schema from the class path, e.g. {@code /schemas/job.xsd}. */
     static Schema schema(String resource) {

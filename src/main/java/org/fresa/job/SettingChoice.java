@@ -23,8 +23,12 @@ import org.fresa.model.CamInputException;
  *     for the written words only
  * @param <E> the enumeration
  */
-public record SettingChoice<E extends Enum<E>>(String option, String attribute, Class<E> type,
-        Function<E, String> word, Function<String, Optional<E>> reader) {
+public record SettingChoice<E extends Enum<E>>(
+        String option,
+        String attribute,
+        Class<E> type,
+        Function<E, String> word,
+        Function<String, Optional<E>> reader) {
 
     public SettingChoice {
         Objects.requireNonNull(option, "option");
@@ -34,14 +38,18 @@ public record SettingChoice<E extends Enum<E>>(String option, String attribute, 
     }
 
     /** A choice among every value of the enumeration, in their declared order. */
-    public static <E extends Enum<E>> SettingChoice<E> of(String option, String attribute, Class<E> type,
-            Function<E, String> word) {
+    public static <E extends Enum<E>> SettingChoice<E> of(
+            String option, String attribute, Class<E> type, Function<E, String> word) {
         return new SettingChoice<>(option, attribute, type, word, null);
     }
 
     /** A choice that also reads other spellings than the written words (the command line's aliases). */
-    public static <E extends Enum<E>> SettingChoice<E> of(String option, String attribute, Class<E> type,
-            Function<E, String> word, Function<String, Optional<E>> reader) {
+    public static <E extends Enum<E>> SettingChoice<E> of(
+            String option,
+            String attribute,
+            Class<E> type,
+            Function<E, String> word,
+            Function<String, Optional<E>> reader) {
         return new SettingChoice<>(option, attribute, type, word, reader);
     }
 
@@ -69,7 +77,9 @@ public record SettingChoice<E extends Enum<E>>(String option, String attribute, 
             return reader.apply(text);
         }
         String t = text.trim().toLowerCase(Locale.ROOT);
-        return values().stream().filter(v -> word.apply(v).toLowerCase(Locale.ROOT).equals(t)).findFirst();
+        return values().stream()
+                .filter(v -> word.apply(v).toLowerCase(Locale.ROOT).equals(t))
+                .findFirst();
     }
 
     /** The problem with a word that is no value, one sentence without the setting's name. */
@@ -83,8 +93,8 @@ public record SettingChoice<E extends Enum<E>>(String option, String attribute, 
      * @throws CamInputException naming the command-line option, for a word that is no value
      */
     public E check(String text) throws CamInputException {
-        return find(text).orElseThrow(() -> new CamInputException(option.isEmpty() ? attribute : option,
-                problem(text)));
+        return find(text)
+                .orElseThrow(() -> new CamInputException(option.isEmpty() ? attribute : option, problem(text)));
     }
 
     /**

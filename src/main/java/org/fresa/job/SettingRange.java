@@ -20,8 +20,15 @@ import org.fresa.model.ExactDecimal;
  *     pure number
  * @param whole whether only whole numbers are allowed (counts, tool numbers)
  */
-public record SettingRange(String option, String attribute, double min, boolean minIncluded, double max,
-        boolean maxIncluded, String unit, boolean whole) {
+public record SettingRange(
+        String option,
+        String attribute,
+        double min,
+        boolean minIncluded,
+        double max,
+        boolean maxIncluded,
+        String unit,
+        boolean whole) {
 
     public SettingRange {
         Objects.requireNonNull(option, "option");
@@ -66,8 +73,13 @@ public record SettingRange(String option, String attribute, double min, boolean 
         if (minIncluded && maxIncluded) {
             return what + " from " + text(min) + " to " + text(max) + u;
         }
-        return what + (minIncluded ? " of at least " : " above ") + text(min) + u
-                + (maxIncluded ? " and at most " : " and below ") + text(max) + u;
+        return what
+                + (minIncluded ? " of at least " : " above ")
+                + text(min)
+                + u
+                + (maxIncluded ? " and at most " : " and below ")
+                + text(max)
+                + u;
     }
 
     /** The problem with a value outside the range, one sentence without the name. */

@@ -55,13 +55,16 @@ public final class SoleService {
     /** Most copies of a design's figures a pattern may make. */
     private static final int MAX_FIGURES = 10_000;
 
-    private SoleService() {
-    }
+    private SoleService() {}
 
     /** The whole plan of a sole job, read and checked. */
-    public record SolePlan(Grader grader, SoleTread tread, Map<String, TreadTool> tools, NcPost post,
-            JobSettings.SoleSettings settings, java.util.Optional<MouldBlock> block) {
-    }
+    public record SolePlan(
+            Grader grader,
+            SoleTread tread,
+            Map<String, TreadTool> tools,
+            NcPost post,
+            JobSettings.SoleSettings settings,
+            java.util.Optional<MouldBlock> block) {}
 
     /**
      * Reads the outline, grades it and builds the tread.
@@ -88,15 +91,24 @@ public final class SoleService {
         Grader grader = Grader.of(outline, gp, s.outline().toString());
         Vec2 axis = grader.frame().lengthAxis();
         if (Math.abs(axis.x()) > 1e-9 || axis.y() <= 0) {
-            throw new CamInputException(s.outline().toString(), "the sole's length must run along +y (heel at the bottom),"
-                    + " as tread figures are placed in that frame; found a length axis at "
-                    + ExactDecimal.of(grader.frame().lengthAxisDeg()) + " degrees");
+            throw new CamInputException(
+                    s.outline().toString(),
+                    "the sole's length must run along +y (heel at the bottom),"
+                            + " as tread figures are placed in that frame; found a length axis at "
+                            + ExactDecimal.of(grader.frame().lengthAxisDeg()) + " degrees");
         }
         Map<String, TreadTool> tools = new LinkedHashMap<>();
         for (JobSettings.SoleTool t : s.tools()) {
             try {
-                tools.put(t.id(), new TreadTool(t.id(), t.number(), t.diameterMm(), t.spindleRpm(), t.feedMmPerMin(),
-                        t.plungeFeedMmPerMin()));
+                tools.put(
+                        t.id(),
+                        new TreadTool(
+                                t.id(),
+                                t.number(),
+                                t.diameterMm(),
+                                t.spindleRpm(),
+                                t.feedMmPerMin(),
+                                t.plungeFeedMmPerMin()));
             } catch (IllegalArgumentException e) {
                 throw new CamInputException(source, e.getMessage());
             }
@@ -106,7 +118,8 @@ public final class SoleService {
             items.add(item(d, tools, source));
         }
         NcPost post = s.post().ncPost();
-        SolePlan p = new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s, java.util.Optional.empty());
+        SolePlan p =
+                new SolePlan(grader, new SoleTread(items, s.marginMm()), tools, post, s, java.util.Optional.empty());
         if (s.block().isEmpty()) {
             return p;
         }
@@ -128,8 +141,10 @@ public final class SoleService {
             throws CamInputException {
         MouldBlock.Pattern m = MouldBlock.Pattern.measured(outline.bounds(), zero);
         try {
-            MouldBlock.Pattern pattern = new MouldBlock.Pattern(b.cpMm().orElse(m.lengthMm()),
-                    b.dpiMm().orElse(m.heelOverhangMm()), b.xtanpMm().orElse(m.innerReachMm()));
+            MouldBlock.Pattern pattern = new MouldBlock.Pattern(
+                    b.cpMm().orElse(m.lengthMm()),
+                    b.dpiMm().orElse(m.heelOverhangMm()),
+                    b.xtanpMm().orElse(m.innerReachMm()));
             return new MouldBlock(b.dMm(), b.dlmMm(), b.eMm(), b.sMm(), b.cmMm(), pattern);
         } catch (IllegalArgumentException e) {
             throw new CamInputException(source, "mould block: " + e.getMessage());
@@ -146,26 +161,36 @@ public final class SoleService {
      * equations put that foot's part zero; unchanged without a block.
      */
     public static Toolpath placed(SolePlan p, GradedSize g, Foot foot, Toolpath partFrame) {
-        return partZero(p, g, foot).map(z -> z.placed(partFrame, p.grader().origin())).orElse(partFrame);
+        return partZero(p, g, foot)
+                .map(z -> z.placed(partFrame, p.grader().origin()))
+                .orElse(partFrame);
     }
 
     /** The outline of a size and foot (the left one mirrored), placed in the block when there is one. */
     public static Contour outline(SolePlan p, GradedSize g, Foot foot) {
         Contour right = g.output().get(0);
-        Contour c = foot == Foot.RIGHT ? right : SoleTread.mirrored(right, p.grader().origin().x());
+        Contour c = foot == Foot.RIGHT
+                ? right
+                : SoleTread.mirrored(right, p.grader().origin().x());
         return partZero(p, g, foot).map(z -> z.placed(c, p.grader().origin())).orElse(c);
     }
 
     /** The block's edges y = S and S + CM across the pair (10 mm beyond it) and the mirror line x = DLM + E. */
     private static PlotScene.Layer blockLayer(MouldBlock b, SolePlan p, GradedSize g) {
-        org.fresa.geom.Box2 span = outline(p, g, Foot.RIGHT).bounds().union(outline(p, g, Foot.LEFT).bounds());
+        org.fresa.geom.Box2 span = outline(p, g, Foot.RIGHT)
+                .bounds()
+                .union(outline(p, g, Foot.LEFT).bounds());
         double x0 = span.minX() - 10;
         double x1 = span.maxX() + 10;
         double y0 = b.blockEdgeMm();
         double y1 = b.blockEdgeMm() + b.blockLengthMm();
         double m = b.mirrorLineMachineXMm();
-        return new PlotScene.Layer("block edges y = S, S + CM; mirror line x = DLM + E", PlotScene.Style.AUX,
-                List.of(org.fresa.geom.Segment2.of(x0, y0, x1, y0), org.fresa.geom.Segment2.of(x0, y1, x1, y1),
+        return new PlotScene.Layer(
+                "block edges y = S, S + CM; mirror line x = DLM + E",
+                PlotScene.Style.AUX,
+                List.of(
+                        org.fresa.geom.Segment2.of(x0, y0, x1, y0),
+                        org.fresa.geom.Segment2.of(x0, y1, x1, y1),
                         org.fresa.geom.Segment2.of(m, y0, m, y1)));
     }
 
@@ -181,9 +206,14 @@ public final class SoleService {
         MouldBlock b = p.block().get();
         MouldBlock.PartZero right = partZero(p, g, Foot.RIGHT).orElseThrow();
         MouldBlock.PartZero left = partZero(p, g, Foot.LEFT).orElseThrow();
-        PlotScene scene = PlotScene.empty(String.format(Locale.ROOT,
-                "Size %s in the mould block: right ZP (%.3f, %.3f), left ZP (%.3f, %.3f)", g.name(),
-                right.machineMm().x(), right.machineMm().y(), left.machineMm().x(), left.machineMm().y()));
+        PlotScene scene = PlotScene.empty(String.format(
+                Locale.ROOT,
+                "Size %s in the mould block: right ZP (%.3f, %.3f), left ZP (%.3f, %.3f)",
+                g.name(),
+                right.machineMm().x(),
+                right.machineMm().y(),
+                left.machineMm().x(),
+                left.machineMm().y()));
         scene = scene.with(blockLayer(b, p, g));
         for (Foot foot : Foot.values()) {
             java.util.Optional<Toolpath> cavity;
@@ -193,11 +223,15 @@ public final class SoleService {
                 cavity = java.util.Optional.empty();
             }
             if (cavity.isPresent()) {
-                scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
+                scene = scene.with(new PlotScene.Layer(
+                        foot.id() + " cavity",
+                        PlotScene.Style.FINISH,
                         feeds(placed(p, g, foot, cavity.get()), Vec2.ZERO)));
             }
             scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline(p, g, foot))
-                    .with(new PlotScene.Layer(foot.id() + " tread", PlotScene.Style.FEED,
+                    .with(new PlotScene.Layer(
+                            foot.id() + " tread",
+                            PlotScene.Style.FEED,
                             feeds(placed(p, g, foot, treadProgram(p, g, foot)), Vec2.ZERO)));
         }
         return java.util.Optional.of(scene);
@@ -220,7 +254,8 @@ public final class SoleService {
             throws CamInputException {
         String where = source + ", design '" + d.name() + "'";
         if (!tools.containsKey(d.tool())) {
-            throw new CamInputException(where, "unknown tool '" + d.tool() + "', the job's tools are " + tools.keySet());
+            throw new CamInputException(
+                    where, "unknown tool '" + d.tool() + "', the job's tools are " + tools.keySet());
         }
         List<TreadFigure> lead = new ArrayList<>();
         for (JobSettings.SoleFigure f : d.lead()) {
@@ -228,10 +263,12 @@ public final class SoleService {
         }
         List<TreadFigure> figs = new ArrayList<>();
         for (JobSettings.SoleFigure f : d.figures()) {
-            List<List<Curve2>> drawing = f.drawing().isPresent() ? drawing(f.drawing().get()) : List.of();
+            List<List<Curve2>> drawing =
+                    f.drawing().isPresent() ? drawing(f.drawing().get()) : List.of();
             if (TreadFigures.needsDrawing(f.macro()) && f.drawing().isEmpty()) {
-                throw new CamInputException(where, f.macro() + ": name the DXF drawing of its outlines in the figure's"
-                        + " file attribute");
+                throw new CamInputException(
+                        where,
+                        f.macro() + ": name the DXF drawing of its outlines in the figure's" + " file attribute");
             }
             figs.add(TreadFigures.of(f.macro(), TreadFigures.parseParams(f.params(), where), drawing, where));
         }
@@ -239,13 +276,15 @@ public final class SoleService {
             TreadPattern pattern = switch (d.pattern()) {
                 case SINGLE -> TreadPattern.single();
                 case LINEAR -> TreadPattern.linear(d.dxMm(), d.dyMm(), positive(d.count(), "count"));
-                case GRID -> TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"),
-                        gridRows(d), d.rowShiftMm());
-                case POLAR -> TreadPattern.polar(Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(),
-                        positive(d.count(), "count"));
+                case GRID ->
+                    TreadPattern.grid(d.dxMm(), d.dyMm(), positive(d.count(), "count"), gridRows(d), d.rowShiftMm());
+                case POLAR ->
+                    TreadPattern.polar(
+                            Vec2.of(d.centerXMm(), d.centerYMm()), d.stepDeg(), positive(d.count(), "count"));
                 case COPIES -> copies(d.copies());
-                case FILL -> throw new IllegalArgumentException("pattern 'fill' is not supported here yet"
-                        + " (use grid: the outline clips it)");
+                case FILL ->
+                    throw new IllegalArgumentException(
+                            "pattern 'fill' is not supported here yet" + " (use grid: the outline clips it)");
             };
             TreadItem item = new TreadItem(d.name(), lead, figs, pattern, d.rule(), d.text(), d.tool());
             item.strokes(TOL);
@@ -276,8 +315,8 @@ public final class SoleService {
     private static int gridRows(JobSettings.SoleDesign d) {
         long all = (long) positive(d.count(), "count") * positive(d.rows(), "rows");
         if (all > MAX_FIGURES) {
-            throw new IllegalArgumentException("a grid of " + d.count() + " x " + d.rows() + " = " + all
-                    + " copies: at most " + MAX_FIGURES);
+            throw new IllegalArgumentException(
+                    "a grid of " + d.count() + " x " + d.rows() + " = " + all + " copies: at most " + MAX_FIGURES);
         }
         return d.rows();
     }
@@ -302,7 +341,8 @@ public final class SoleService {
             if (c.mirrorYMm().isPresent()) {
                 t = t.then(Similarity2.mirrorY(c.mirrorYMm().getAsDouble()));
             }
-            t = t.then(Similarity2.rotation(Vec2.ZERO, c.rotateDeg())).then(Similarity2.translation(c.dxMm(), c.dyMm()));
+            t = t.then(Similarity2.rotation(Vec2.ZERO, c.rotateDeg()))
+                    .then(Similarity2.translation(c.dxMm(), c.dyMm()));
             l.add(t);
         }
         return new TreadPattern.Copies(l);
@@ -325,16 +365,21 @@ public final class SoleService {
 
     /** The scale of one graded size as the tread needs it. */
     public static SizeScale scale(SolePlan p, GradedSize g) {
-        return new SizeScale(g.name(), p.grader().origin(), g.factors().width(), g.factors().length(),
+        return new SizeScale(
+                g.name(),
+                p.grader().origin(),
+                g.factors().width(),
+                g.factors().length(),
                 1 + p.settings().shrinkage());
     }
 
     /** The tread program of a size and foot. */
     public static Toolpath treadProgram(SolePlan p, GradedSize g, Foot foot) {
         SizeScale sc = scale(p, g);
-        List<SoleTread.ToolGrooves> grooves = p.tread().grooves(sc, foot, g.output().get(0),
-                id -> p.tools().get(id).diameterMm() / 2, TOL);
-        return TreadProgram.toolpath(grooves, p.tools(), p.settings().treadDepthMm(), p.settings().clearanceMm());
+        List<SoleTread.ToolGrooves> grooves = p.tread()
+                .grooves(sc, foot, g.output().get(0), id -> p.tools().get(id).diameterMm() / 2, TOL);
+        return TreadProgram.toolpath(
+                grooves, p.tools(), p.settings().treadDepthMm(), p.settings().clearanceMm());
     }
 
     /**
@@ -356,26 +401,39 @@ public final class SoleService {
         }
         TreadTool t = p.tools().get(s.cavityTool());
         if (t == null) {
-            throw new CamInputException("sole", "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
-                    + p.tools().keySet());
+            throw new CamInputException(
+                    "sole",
+                    "unknown cavity tool '" + s.cavityTool() + "', the job's tools are "
+                            + p.tools().keySet());
         }
         java.util.Optional<org.fresa.sole.CavityToolRule.Violation> tight =
                 org.fresa.sole.CavityToolRule.check(g.output().get(0), t.diameterMm());
         if (tight.isPresent()) {
-            throw new CamInputException("sole", "size " + g.name() + ": " + tight.get().sentence());
+            throw new CamInputException(
+                    "sole", "size " + g.name() + ": " + tight.get().sentence());
         }
-        Contour outline = foot == Foot.RIGHT ? g.output().get(0)
+        Contour outline = foot == Foot.RIGHT
+                ? g.output().get(0)
                 : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
         try {
-            org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(t.diameterMm(), 0.6,
-                    Math.min(0.5, 0.5 / t.diameterMm()), 0, -s.cavityDepthMm(), s.cavityDepthMm(), t.spindleRpm(),
-                    t.feedMmPerMin(), t.feedMmPerMin());
+            org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(
+                    t.diameterMm(),
+                    0.6,
+                    Math.min(0.5, 0.5 / t.diameterMm()),
+                    0,
+                    -s.cavityDepthMm(),
+                    s.cavityDepthMm(),
+                    t.spindleRpm(),
+                    t.feedMmPerMin(),
+                    t.feedMmPerMin());
             // the region engine: the same offsets whatever the outline's element count, climb by
             // orientation (outline counter-clockwise), so the mirrored left foot is climb-milled too
-            org.fresa.pocket.RegionPocket.Plan plan = org.fresa.pocket.RegionPocket.plan(outline, List.of(), tech, true);
+            org.fresa.pocket.RegionPocket.Plan plan =
+                    org.fresa.pocket.RegionPocket.plan(outline, List.of(), tech, true);
             return java.util.Optional.of(plan.toolpath());
         } catch (org.fresa.pocket.ToolTooLargeException e) {
-            throw new CamInputException("sole", "size " + g.name() + ": the cavity tool is too large: " + e.getMessage());
+            throw new CamInputException(
+                    "sole", "size " + g.name() + ": the cavity tool is too large: " + e.getMessage());
         } catch (IllegalArgumentException e) {
             throw new CamInputException("sole", "cavity: " + e.getMessage());
         }
@@ -403,15 +461,19 @@ public final class SoleService {
             m.put("length_factor", g.factors().length());
             m.put("length_mm", g.lengthMm());
             m.put("width_mm", g.widthMm());
-            PlotScene scene = PlotScene.empty("Sole " + g.name() + (p.block().isPresent()
-                    ? " (left, right) in the mould block" : " (right, left)"));
+            PlotScene scene = PlotScene.empty("Sole " + g.name()
+                    + (p.block().isPresent() ? " (left, right) in the mould block" : " (right, left)"));
             Contour right = g.output().get(0);
             double shift = right.bounds().width() + 30;
             for (Foot foot : Foot.values()) {
                 Toolpath tp = placed(p, g, foot, treadProgram(p, g, foot));
                 java.util.Optional<MouldBlock.PartZero> zp = partZero(p, g, foot);
                 if (zp.isPresent()) {
-                    m.put(foot.id() + "_part_zero_mm", List.of(zp.get().machineMm().x(), zp.get().machineMm().y()));
+                    m.put(
+                            foot.id() + "_part_zero_mm",
+                            List.of(
+                                    zp.get().machineMm().x(),
+                                    zp.get().machineMm().y()));
                 }
                 String name = "tread-" + g.name() + "-" + foot.id();
                 String ext = "." + p.post().fileExtension();
@@ -435,7 +497,9 @@ public final class SoleService {
                 // without a block the left foot is drawn beside the right one; with one, where it is cut
                 Vec2 dx = Vec2.of(foot == Foot.RIGHT || p.block().isPresent() ? 0 : shift, 0);
                 if (cavity.isPresent()) {
-                    scene = scene.with(new PlotScene.Layer(foot.id() + " cavity", PlotScene.Style.FINISH,
+                    scene = scene.with(new PlotScene.Layer(
+                            foot.id() + " cavity",
+                            PlotScene.Style.FINISH,
                             feeds(placed(p, g, foot, cavity.get()), dx)));
                 }
                 scene = scene.withContour(foot.id() + " outline", PlotScene.Style.OUTLINE, outline.translated(dx))
@@ -451,7 +515,8 @@ public final class SoleService {
         }
         progress.progress(1, "done");
         Map<String, Object> summary = new LinkedHashMap<>();
-        summary.put("origin", List.of(p.grader().origin().x(), p.grader().origin().y()));
+        summary.put(
+                "origin", List.of(p.grader().origin().x(), p.grader().origin().y()));
         summary.put("post", p.post().name());
         p.block().ifPresent(b -> {
             Map<String, Object> bm = new LinkedHashMap<>();
@@ -479,12 +544,19 @@ public final class SoleService {
     }
 
     /** Writes the program when it passes the program check; otherwise says why it is not written. */
-    private static void writeChecked(OutputFolder out, String file, Toolpath tp, SolePlan p,
-            org.fresa.check.Limits limits, List<String> problems) throws IOException {
+    private static void writeChecked(
+            OutputFolder out,
+            String file,
+            Toolpath tp,
+            SolePlan p,
+            org.fresa.check.Limits limits,
+            List<String> problems)
+            throws IOException {
         java.io.StringWriter w = new java.io.StringWriter();
         p.post().write(tp, file.replaceFirst("\\.[a-z]+$", ""), w);
         try {
-            ProgramChecks.require(file, w.toString(), ProgramChecks.dialect(p.post().name()), limits);
+            ProgramChecks.require(
+                    file, w.toString(), ProgramChecks.dialect(p.post().name()), limits);
             out.writeString(file, w.toString());
         } catch (ProgramChecks.RefusedProgram e) {
             problems.add(e.getMessage());
@@ -507,7 +579,10 @@ public final class SoleService {
     private static String csv(GradedSize g) {
         StringBuilder sb = new StringBuilder("x,y\n");
         for (Vec2 v : g.exact().get(0).points(0.5)) {
-            sb.append(ExactDecimal.of(v.x())).append(',').append(ExactDecimal.of(v.y())).append('\n');
+            sb.append(ExactDecimal.of(v.x()))
+                    .append(',')
+                    .append(ExactDecimal.of(v.y()))
+                    .append('\n');
         }
         return sb.toString();
     }

@@ -25,8 +25,7 @@ public final class SquareSheet {
     /** The squares of the 50 MB drawing. */
     public static final int FIFTY_MB_SQUARES = 181_750;
 
-    private SquareSheet() {
-    }
+    private SquareSheet() {}
 
     /** Writes {@code squares} squares to {@code out} (overwritten). */
     public static void write(Path out, int squares) throws IOException {
@@ -41,8 +40,13 @@ public final class SquareSheet {
                 for (int k = 0; k < 4; k++) {
                     double[] a = c[k];
                     double[] b = c[(k + 1) % 4];
-                    sb.append(String.format(Locale.ROOT, "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n21\n%.3f\n31\n0.0\n",
-                            a[0], a[1], b[0], b[1]));
+                    sb.append(String.format(
+                            Locale.ROOT,
+                            "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n21\n%.3f\n31\n0.0\n",
+                            a[0],
+                            a[1],
+                            b[0],
+                            b[1]));
                 }
                 w.write(sb.toString());
             }

@@ -28,8 +28,7 @@ import org.fresa.stepnc.Workplan;
  */
 public final class StepNcService {
 
-    private StepNcService() {
-    }
+    private StepNcService() {}
 
     /** Reads and binds the file. */
     public static StepNcProgram read(Path file, ProgressMonitor progress) throws CamInputException, IOException {
@@ -45,23 +44,22 @@ public final class StepNcService {
     }
 
     /** A workingstep the planner leaves out, and its reason in the planner's words. */
-    public record NotPlanned(long instanceId, String id, String reason) {
-    }
+    public record NotPlanned(long instanceId, String id, String reason) {}
 
     /**
      * The workingsteps the planner (default choices) leaves out, in program order, each with the
      * reason it gives: what {@code fresa toolpath} would refuse.
      */
     public static List<NotPlanned> notPlanned(StepNcProgram p) {
-        org.fresa.toolpath.ToolpathPlanner.Plan plan = org.fresa.toolpath.ToolpathPlanner.plan(p,
-                org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT);
+        org.fresa.toolpath.ToolpathPlanner.Plan plan = org.fresa.toolpath.ToolpathPlanner.plan(
+                p, org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT);
         java.util.Set<Long> planned = new java.util.HashSet<>();
         plan.steps().forEach(s -> planned.add(s.workingstepInstanceId()));
         List<NotPlanned> out = new ArrayList<>();
         for (MachiningWorkingstep w : p.workingsteps()) {
             if (!planned.contains(w.instanceId())) {
-                out.add(new NotPlanned(w.instanceId(), w.id(),
-                        plan.refusals().getOrDefault(w.instanceId(), "not planned")));
+                out.add(new NotPlanned(
+                        w.instanceId(), w.id(), plan.refusals().getOrDefault(w.instanceId(), "not planned")));
             }
         }
         return out;
@@ -88,10 +86,16 @@ public final class StepNcService {
             return "";
         }
         StringBuilder sb = new StringBuilder();
-        sb.append(notPlanned.size()).append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
+        sb.append(notPlanned.size())
+                .append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
                 .append(" not planned:\n");
         for (NotPlanned n : notPlanned) {
-            sb.append("  #").append(n.instanceId()).append(" '").append(n.id()).append("': ").append(n.reason())
+            sb.append("  #")
+                    .append(n.instanceId())
+                    .append(" '")
+                    .append(n.id())
+                    .append("': ")
+                    .append(n.reason())
                     .append('\n');
         }
         return sb.toString();
@@ -207,7 +211,11 @@ public final class StepNcService {
         om.put("id", o.id());
         om.put("instance", o.instanceId());
         o.strategy().ifPresent(s -> {
-            om.put("strategy", s.type() == org.fresa.stepnc.Strategy.StrategyType.OTHER ? s.entity() : s.type().name());
+            om.put(
+                    "strategy",
+                    s.type() == org.fresa.stepnc.Strategy.StrategyType.OTHER
+                            ? s.entity()
+                            : s.type().name());
             om.put("strategy_entity", s.entity());
             putIf(om, "overlap", s.overlap());
             putIf(om, "overlap_fraction", s.overlapFraction());
@@ -304,20 +312,32 @@ public final class StepNcService {
     /** A description for people: the {@code fresa stepnc} output without {@code --json}. */
     public static String prose(StepNcProgram p) {
         StringBuilder sb = new StringBuilder();
-        sb.append(p.source()).append(": ").append(p.schema().isEmpty() ? "no schema" : p.schema())
-                .append(", ").append(p.instanceCount()).append(" instances (")
-                .append(switch (p.dialect()) {
-                    case ISO_14649 -> "ISO 14649 units";
-                    case STEP_MODELER -> "STEP Modeler units";
-                    case AP238_AIM -> "AP238 AIM; every value converted from its own unit to mm, mm/min, rpm";
-                })
+        sb.append(p.source())
+                .append(": ")
+                .append(p.schema().isEmpty() ? "no schema" : p.schema())
+                .append(", ")
+                .append(p.instanceCount())
+                .append(" instances (")
+                .append(
+                        switch (p.dialect()) {
+                            case ISO_14649 -> "ISO 14649 units";
+                            case STEP_MODELER -> "STEP Modeler units";
+                            case AP238_AIM -> "AP238 AIM; every value converted from its own unit to mm, mm/min, rpm";
+                        })
                 .append(")\n");
         sb.append("project '").append(p.projectId()).append("'\n");
         for (Workpiece w : p.workpieces()) {
             sb.append("workpiece '").append(w.id()).append('\'');
             w.material().ifPresent(mat -> sb.append(", material ").append(mat));
-            w.block().ifPresent(b -> sb.append(", block ").append(n(b.xMm())).append(" x ").append(n(b.yMm()))
-                    .append(" x ").append(n(b.zMm())).append(" mm at ").append(v(b.placement().translationPart())));
+            w.block()
+                    .ifPresent(b -> sb.append(", block ")
+                            .append(n(b.xMm()))
+                            .append(" x ")
+                            .append(n(b.yMm()))
+                            .append(" x ")
+                            .append(n(b.zMm()))
+                            .append(" mm at ")
+                            .append(v(b.placement().translationPart())));
             sb.append('\n');
         }
         int[] counter = {0};
@@ -325,7 +345,12 @@ public final class StepNcService {
         if (!p.skipped().isEmpty()) {
             sb.append(p.skipped().size()).append(" workingsteps skipped:\n");
             for (StepNcProgram.Skipped s : p.skipped()) {
-                sb.append("  #").append(s.instanceId()).append(" '").append(s.id()).append("': ").append(s.reason())
+                sb.append("  #")
+                        .append(s.instanceId())
+                        .append(" '")
+                        .append(s.id())
+                        .append("': ")
+                        .append(s.reason())
                         .append('\n');
             }
         }
@@ -353,9 +378,18 @@ public final class StepNcService {
                 workplanProse(sb, sub, indent + "  ", counter);
             } else if (e instanceof MachiningWorkingstep ws) {
                 counter[0]++;
-                sb.append(indent).append("  ").append(counter[0]).append(". ").append(line(ws)).append('\n');
+                sb.append(indent)
+                        .append("  ")
+                        .append(counter[0])
+                        .append(". ")
+                        .append(line(ws))
+                        .append('\n');
             } else if (e instanceof Executable.Other o) {
-                sb.append(indent).append("  - #").append(o.instanceId()).append(' ').append(o.entity())
+                sb.append(indent)
+                        .append("  - #")
+                        .append(o.instanceId())
+                        .append(' ')
+                        .append(o.entity())
                         .append(" (not interpreted)\n");
             }
         }
@@ -365,15 +399,30 @@ public final class StepNcService {
         Feature f = ws.feature();
         Operation o = ws.operation();
         StringBuilder sb = new StringBuilder();
-        sb.append('#').append(ws.instanceId()).append(" '").append(ws.id()).append("': ").append(o.entity());
+        sb.append('#')
+                .append(ws.instanceId())
+                .append(" '")
+                .append(ws.id())
+                .append("': ")
+                .append(o.entity());
         o.strategy().ifPresent(s -> sb.append(" (").append(s.entity()).append(')'));
-        sb.append(" on ").append(f.entity()).append(" '").append(f.id()).append("' at ").append(v(f.location()))
-                .append(" axis ").append(v(f.axis()));
+        sb.append(" on ")
+                .append(f.entity())
+                .append(" '")
+                .append(f.id())
+                .append("' at ")
+                .append(v(f.location()))
+                .append(" axis ")
+                .append(v(f.axis()));
         f.depthMm().ifPresent(d -> sb.append(", depth ").append(n(d)).append(" mm"));
         f.diameterMm().ifPresent(d -> sb.append(", diameter ").append(n(d)).append(" mm"));
         f.profile().ifPresent(pr -> {
             if (pr instanceof Profile.Rectangular r) {
-                sb.append(", ").append(n(r.lengthMm())).append(" x ").append(n(r.widthMm())).append(" mm");
+                sb.append(", ")
+                        .append(n(r.lengthMm()))
+                        .append(" x ")
+                        .append(n(r.widthMm()))
+                        .append(" mm");
             }
         });
         o.tool().ifPresent(t -> {
@@ -381,8 +430,11 @@ public final class StepNcService {
             t.diameterMm().ifPresent(d -> sb.append(" D").append(n(d)).append(" mm"));
         });
         var tech = o.technology();
-        tech.feedrate().ifPresent(fd -> sb.append("; feed ").append(n(fd)).append(' ')
-                .append(tech.feedrateUnit().equals("unstated") ? "(unit not stated)" : tech.feedrateUnit()));
+        tech.feedrate()
+                .ifPresent(fd -> sb.append("; feed ")
+                        .append(n(fd))
+                        .append(' ')
+                        .append(tech.feedrateUnit().equals("unstated") ? "(unit not stated)" : tech.feedrateUnit()));
         tech.spindleRpm().ifPresent(s -> sb.append(", spindle ").append(n(s)).append(" rpm"));
         return sb.toString();
     }

@@ -22,7 +22,8 @@ public record TaskOutcome(int exitStatus, List<String> problems, Map<String, Obj
             throw new IllegalArgumentException("exit status must be 0 or 1: " + exitStatus);
         }
         problems = List.copyOf(problems);
-        summary = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(Objects.requireNonNull(summary, "summary")));
+        summary =
+                java.util.Collections.unmodifiableMap(new LinkedHashMap<>(Objects.requireNonNull(summary, "summary")));
         files = List.copyOf(files);
     }
 }

@@ -14,8 +14,7 @@ import java.time.Instant;
 final class Timing {
     static final boolean ON = Boolean.getBoolean("fresa.timing");
 
-    private Timing() {
-    }
+    private Timing() {}
 
     /** The phase that just ended on this thread. */
     static void mark(String phase) {
@@ -26,15 +25,23 @@ final class Timing {
 
     /** Loaded only when timing is on: the management classes cost start-up time. */
     private static final class Print {
-        private static final Instant START = ProcessHandle.current().info().startInstant().orElse(Instant.now());
+        private static final Instant START =
+                ProcessHandle.current().info().startInstant().orElse(Instant.now());
         private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
         private static final System.Logger LOG = System.getLogger("fresa.timing");
 
         static synchronized void mark(String phase) {
             long wall = Duration.between(START, Instant.now()).toMillis();
             long cpu = THREADS.getCurrentThreadCpuTime() / 1_000_000;
-            LOG.log(System.Logger.Level.INFO, String.format(java.util.Locale.ROOT, "%6d ms  %-28s %s, thread CPU %d ms",
-                    wall, phase, Thread.currentThread().getName(), cpu));
+            LOG.log(
+                    System.Logger.Level.INFO,
+                    String.format(
+                            java.util.Locale.ROOT,
+                            "%6d ms  %-28s %s, thread CPU %d ms",
+                            wall,
+                            phase,
+                            Thread.currentThread().getName(),
+                            cpu));
         }
     }
 }

@@ -41,8 +41,7 @@ public final class ToolpathCsv {
 
     public static final String HEADER = "index,workingstep,move,x,y,z,i,j,k,feed";
 
-    private ToolpathCsv() {
-    }
+    private ToolpathCsv() {}
 
     /**
      * One row.
@@ -50,8 +49,7 @@ public final class ToolpathCsv {
      * @param move {@code rapid}, {@code feed}, {@code arc-cw}, {@code arc-ccw} or {@code dwell}
      * @param feedMmPerMin 0 for rapids; for a dwell, its time in seconds
      */
-    public record Row(int index, String workingstep, String move, Vec3 point, Vec3 toolAxis, double feedMmPerMin) {
-    }
+    public record Row(int index, String workingstep, String move, Vec3 point, Vec3 toolAxis, double feedMmPerMin) {}
 
     /** The rows of a toolpath, arcs split at the chord tolerance (mm, > 0). */
     public static List<Row> rows(Toolpath path, double chordToleranceMm) {
@@ -99,9 +97,20 @@ public final class ToolpathCsv {
         StringBuilder sb = new StringBuilder(128);
         for (Row r : rows(path, chordToleranceMm)) {
             sb.setLength(0);
-            sb.append(r.index()).append(',').append(quote(r.workingstep())).append(',').append(r.move());
-            for (double d : new double[] {r.point().x(), r.point().y(), r.point().z(),
-                r.toolAxis().x(), r.toolAxis().y(), r.toolAxis().z(), r.feedMmPerMin()}) {
+            sb.append(r.index())
+                    .append(',')
+                    .append(quote(r.workingstep()))
+                    .append(',')
+                    .append(r.move());
+            for (double d : new double[] {
+                r.point().x(),
+                r.point().y(),
+                r.point().z(),
+                r.toolAxis().x(),
+                r.toolAxis().y(),
+                r.toolAxis().z(),
+                r.feedMmPerMin()
+            }) {
                 ExactDecimal.append(sb.append(','), d);
             }
             out.write(sb.append('\n').toString());
@@ -151,9 +160,18 @@ public final class ToolpathCsv {
                 throw new CamInputException(source, n, 1, "expected 10 fields, found " + f.size());
             }
             try {
-                rows.add(new Row(Integer.parseInt(f.get(0)), f.get(1), f.get(2),
-                        new Vec3(Double.parseDouble(f.get(3)), Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5))),
-                        new Vec3(Double.parseDouble(f.get(6)), Double.parseDouble(f.get(7)), Double.parseDouble(f.get(8))),
+                rows.add(new Row(
+                        Integer.parseInt(f.get(0)),
+                        f.get(1),
+                        f.get(2),
+                        new Vec3(
+                                Double.parseDouble(f.get(3)),
+                                Double.parseDouble(f.get(4)),
+                                Double.parseDouble(f.get(5))),
+                        new Vec3(
+                                Double.parseDouble(f.get(6)),
+                                Double.parseDouble(f.get(7)),
+                                Double.parseDouble(f.get(8))),
                         Double.parseDouble(f.get(9))));
             } catch (IllegalArgumentException e) {
                 throw new CamInputException(source, n, 1, "not a number: " + e.getMessage());

@@ -13,8 +13,8 @@ import org.fresa.geom.Tolerance;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.NcPost;
 import org.fresa.post.MillingPost;
+import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.PlanningChoices;
@@ -33,9 +33,7 @@ public final class ToolpathService {
     /** Rapid traverse rate assumed for the cycle-time estimate (mm/min). */
     public static final double RAPID_MM_PER_MIN = 10000;
 
-    private ToolpathService() {
-    }
-
+    private ToolpathService() {}
 
     /** Plans and writes the three files into the folder, with the planner's default choices. */
     public static TaskOutcome run(Path file, MillingPost postName, OutputFolder out, ProgressMonitor progress)
@@ -44,8 +42,7 @@ public final class ToolpathService {
     }
 
     /** A STEP-NC program read and its toolpaths planned: what the STEP-NC tab shows. */
-    public record Planned(StepNcProgram program, ToolpathPlanner.Plan plan) {
-    }
+    public record Planned(StepNcProgram program, ToolpathPlanner.Plan plan) {}
 
     /**
      * Reads the STEP-NC file and plans its toolpaths with the job's choices, as {@code fresa
@@ -64,8 +61,9 @@ public final class ToolpathService {
     }
 
     /** Plans with these choices and writes the three files into the folder. */
-    public static TaskOutcome run(Path file, MillingPost postName, PlanningChoices choices, OutputFolder out,
-            ProgressMonitor progress) throws CamInputException, IOException {
+    public static TaskOutcome run(
+            Path file, MillingPost postName, PlanningChoices choices, OutputFolder out, ProgressMonitor progress)
+            throws CamInputException, IOException {
         NcPost post = postName.ncPost();
         StepNcProgram program = StepNcService.read(file, progress);
         java.util.Optional<String> nothing = program.whyNothingToMachine();
@@ -92,7 +90,10 @@ public final class ToolpathService {
         boolean refused = false;
         try {
             String programFile = "program." + post.fileExtension();
-            ProgramChecks.require(programFile, nc.toString(), ProgramChecks.dialect(post.name()),
+            ProgramChecks.require(
+                    programFile,
+                    nc.toString(),
+                    ProgramChecks.dialect(post.name()),
                     ProgramChecks.stepnc(program, plan, choices));
             out.writeString(programFile, nc.toString());
         } catch (ProgramChecks.RefusedProgram e) {
@@ -110,8 +111,7 @@ public final class ToolpathService {
      * A file with nothing to machine writes no program, since an empty one would look like a
      * finished job: only {@code summary.json}, with the reasons.
      */
-    static TaskOutcome nothingToMachine(StepNcProgram program, List<String> why, OutputFolder out)
-            throws IOException {
+    static TaskOutcome nothingToMachine(StepNcProgram program, List<String> why, OutputFolder out) throws IOException {
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("schema", program.schema());
         summary.put("workingsteps", program.workingsteps().size());

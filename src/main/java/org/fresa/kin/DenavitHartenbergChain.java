@@ -30,6 +30,7 @@ public final class DenavitHartenbergChain {
     final double[] theta;
     /** Limits in internal units (rad, mm). */
     final double[] qMin;
+
     final double[] qMax;
     final double[] base12 = new double[Pose.SIZE];
     final double[] tool12 = new double[Pose.SIZE];

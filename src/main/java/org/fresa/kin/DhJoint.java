@@ -17,7 +17,8 @@ import java.util.Objects;
  * @param qMin lower joint limit in the joint's unit (deg or mm)
  * @param qMax upper joint limit, > qMin
  */
-public record DhJoint(JointType type, double aMm, double alphaDeg, double dMm, double thetaDeg, double qMin, double qMax) {
+public record DhJoint(
+        JointType type, double aMm, double alphaDeg, double dMm, double thetaDeg, double qMin, double qMax) {
 
     public DhJoint {
         Objects.requireNonNull(type, "type");
@@ -32,11 +33,13 @@ public record DhJoint(JointType type, double aMm, double alphaDeg, double dMm, d
         }
     }
 
-    public static DhJoint revolute(double aMm, double alphaDeg, double dMm, double offsetDeg, double minDeg, double maxDeg) {
+    public static DhJoint revolute(
+            double aMm, double alphaDeg, double dMm, double offsetDeg, double minDeg, double maxDeg) {
         return new DhJoint(JointType.REVOLUTE, aMm, alphaDeg, dMm, offsetDeg, minDeg, maxDeg);
     }
 
-    public static DhJoint prismatic(double aMm, double alphaDeg, double offsetMm, double thetaDeg, double minMm, double maxMm) {
+    public static DhJoint prismatic(
+            double aMm, double alphaDeg, double offsetMm, double thetaDeg, double minMm, double maxMm) {
         return new DhJoint(JointType.PRISMATIC, aMm, alphaDeg, offsetMm, thetaDeg, minMm, maxMm);
     }
 

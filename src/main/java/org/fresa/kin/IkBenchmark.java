@@ -14,8 +14,7 @@ import org.fresa.geom.Vec3;
  */
 public final class IkBenchmark {
 
-    private IkBenchmark() {
-    }
+    private IkBenchmark() {}
 
     /**
      * @param usPerPoint median wall-clock microseconds per point
@@ -27,9 +26,14 @@ public final class IkBenchmark {
      * @param maxRotErrRad largest orientation residual of the last round
      * @param meanIterations mean solver iterations per point (last round)
      */
-    public record Figure(double usPerPoint, double cpuUsPerPoint, int points, int failures, double maxPosErrMm, double maxRotErrRad,
-            double meanIterations) {
-    }
+    public record Figure(
+            double usPerPoint,
+            double cpuUsPerPoint,
+            int points,
+            int failures,
+            double maxPosErrMm,
+            double maxRotErrRad,
+            double meanIterations) {}
 
     /** The zig-zag path: rows 2 mm apart along y, 0.1 mm point spacing along x, in a plane. */
     public static List<Transform3> zigZag(Vec3 corner) {
@@ -139,6 +143,13 @@ public final class IkBenchmark {
         }
         Arrays.sort(times);
         Arrays.sort(cpu);
-        return new Figure(times[rounds / 2], cpu[rounds / 2], path.size(), failures, maxPos, maxRot, (double) iterations / path.size());
+        return new Figure(
+                times[rounds / 2],
+                cpu[rounds / 2],
+                path.size(),
+                failures,
+                maxPos,
+                maxRot,
+                (double) iterations / path.size());
     }
 }

@@ -32,6 +32,5 @@ public sealed interface IkResult permits IkResult.Converged, IkResult.Unreachabl
      * @param rotErrRad best orientation residual reached (rad)
      * @param iterations solver iterations spent
      */
-    record Unreachable(String reason, double posErrMm, double rotErrRad, int iterations) implements IkResult {
-    }
+    record Unreachable(String reason, double posErrMm, double rotErrRad, int iterations) implements IkResult {}
 }

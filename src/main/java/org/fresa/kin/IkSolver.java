@@ -36,8 +36,8 @@ public interface IkSolver {
     default IkResult solveCold(Transform3 target) {
         List<IkResult.Converged> all = solveAll(target);
         if (all.isEmpty()) {
-            return new IkResult.Unreachable("no start configuration converges within the joint limits", Double.NaN,
-                    Double.NaN, 0);
+            return new IkResult.Unreachable(
+                    "no start configuration converges within the joint limits", Double.NaN, Double.NaN, 0);
         }
         return all.get(0);
     }

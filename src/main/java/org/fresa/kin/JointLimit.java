@@ -18,8 +18,8 @@ public record JointLimit(String name, JointType type, double min, double max) {
         java.util.Objects.requireNonNull(name, "name");
         java.util.Objects.requireNonNull(type, "type");
         if (!Double.isFinite(min) || !Double.isFinite(max) || !(max > min)) {
-            throw new IllegalArgumentException("joint " + name + ": limits must have max > min, found " + min + " .. "
-                    + max + " " + type.unit());
+            throw new IllegalArgumentException(
+                    "joint " + name + ": limits must have max > min, found " + min + " .. " + max + " " + type.unit());
         }
     }
 

@@ -4,8 +4,7 @@ import org.fresa.geom.Transform3;
 
 /** Orientation angles of the thesis's eq. 1 and of trajectory.csv. */
 public final class Orientation {
-    private Orientation() {
-    }
+    private Orientation() {}
 
     /**
      * {roll, pitch, yaw} in degrees with R = Rz(roll) Ry(pitch) Rx(yaw), pitch in [-90, 90]. At

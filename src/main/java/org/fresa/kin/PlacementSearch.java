@@ -48,6 +48,7 @@ public final class PlacementSearch {
     private static final int GRID_STEPS = 7;
     /** Where the pattern search stops refining. */
     private static final double FINEST_MM = 5;
+
     private static final double FINEST_DEG = 2;
     /** How many grid placements the pattern search starts from. */
     private static final int REFINED = 3;
@@ -86,8 +87,16 @@ public final class PlacementSearch {
      * @param placementsTried placements whose targets (or a sample of them) were solved
      * @param notes why, in a sentence each (a robot whose tool axis cannot turn)
      */
-    public record Result(Optional<TablePlacement> found, TablePlacement best, int targets, int reached, double minMargin,
-            List<String> outOfReachEverywhere, List<String> notTogether, int placementsTried, List<String> notes) {
+    public record Result(
+            Optional<TablePlacement> found,
+            TablePlacement best,
+            int targets,
+            int reached,
+            double minMargin,
+            List<String> outOfReachEverywhere,
+            List<String> notTogether,
+            int placementsTried,
+            List<String> notes) {
         public Result {
             Objects.requireNonNull(found, "found");
             Objects.requireNonNull(best, "best");
@@ -121,7 +130,8 @@ public final class PlacementSearch {
     private final double[] turnsDeg;
     private int tried;
     /** Told again now and then while a long step runs, so that it may be cancelled. */
-    private Progress progress = (f, w) -> { };
+    private Progress progress = (f, w) -> {};
+
     private double fraction;
     private String what = "";
     private int ticks;
@@ -143,7 +153,9 @@ public final class PlacementSearch {
         this.robot = Objects.requireNonNull(robot, "robot");
         this.robotOfLabel = Objects.requireNonNull(robotOfLabel, "robotOfLabel");
         this.bounds = Objects.requireNonNull(bounds, "bounds");
-        turnsDeg = turns.firstDeg(robot, 0).stream().mapToDouble(Double::doubleValue).toArray();
+        turnsDeg = turns.firstDeg(robot, 0).stream()
+                .mapToDouble(Double::doubleValue)
+                .toArray();
     }
 
     /** The score of a placement on some targets: fewer failures first, then the larger margin. */
@@ -153,8 +165,7 @@ public final class PlacementSearch {
         }
     }
 
-    private record Candidate(TablePlacement placement, Score score) {
-    }
+    private record Candidate(TablePlacement placement, Score score) {}
 
     /** One target in the table frame with its solver, for placing again and again. */
     private final class Target {
@@ -171,8 +182,11 @@ public final class PlacementSearch {
 
         /** The best margin of a solution from this placement, or NaN when out of reach. */
         double margin(Transform3 table) {
-            ToolTarget placed = new ToolTarget(inTable.label(), table.applyToPoint(inTable.positionMm()),
-                    table.applyToDirection(inTable.toolAxis()), table.applyToDirection(inTable.preferredX()));
+            ToolTarget placed = new ToolTarget(
+                    inTable.label(),
+                    table.applyToPoint(inTable.positionMm()),
+                    table.applyToDirection(inTable.toolAxis()),
+                    table.applyToDirection(inTable.preferredX()));
             double best = Double.NaN;
             for (double turn : turnsDeg) {
                 List<IkResult.Converged> all = solver.solveAllQuickly(placed.pose(turn));
@@ -237,14 +251,28 @@ public final class PlacementSearch {
         List<String> notes = new ArrayList<>();
         if (!wrongAxis.isEmpty()) {
             Vec3 a = ws.axes.get(0);
-            notes.add(String.format(java.util.Locale.ROOT, "the tool axis of %s is always (%.3g, %.3g, %.3g)%s: %d"
-                    + " workingsteps need another", robot.name(), a.x(), a.y(), a.z(), ws.axes.size() > 1 ? " or the"
-                            + " opposite" : "", wrongAxis.size()));
+            notes.add(String.format(
+                    java.util.Locale.ROOT,
+                    "the tool axis of %s is always (%.3g, %.3g, %.3g)%s: %d" + " workingsteps need another",
+                    robot.name(),
+                    a.x(),
+                    a.y(),
+                    a.z(),
+                    ws.axes.size() > 1 ? " or the" + " opposite" : "",
+                    wrongAxis.size()));
         }
         if (all.isEmpty()) {
             TablePlacement origin = new TablePlacement(0, 0, 0, 0);
-            return new Result(Optional.empty(), origin, inTable.size(), 0, Double.NaN, List.copyOf(wrongAxis), List.of(),
-                    0, notes);
+            return new Result(
+                    Optional.empty(),
+                    origin,
+                    inTable.size(),
+                    0,
+                    Double.NaN,
+                    List.copyOf(wrongAxis),
+                    List.of(),
+                    0,
+                    notes);
         }
         Ordered sample = new Ordered(sample(all));
         double[][] box = ws.box;
@@ -256,7 +284,8 @@ public final class PlacementSearch {
             if ((k & 63) == 0) {
                 progress.at(0.6 * k / grid.size(), "placement search: " + k + " of " + grid.size() + " placements");
             }
-            Score bound = kept.size() < REFINED ? null : kept.get(kept.size() - 1).score();
+            Score bound =
+                    kept.size() < REFINED ? null : kept.get(kept.size() - 1).score();
             Score s = evaluate(grid.get(k), sample, bound);
             if (s.complete() && (bound == null || s.betterThan(bound))) {
                 kept.add(new Candidate(grid.get(k), s));
@@ -291,8 +320,16 @@ public final class PlacementSearch {
             best = new Candidate(origin, evaluate(origin, every, null));
         }
         if (best.score().failures() == 0 && wrongAxis.isEmpty()) {
-            return new Result(Optional.of(best.placement()), best.placement(), all.size(), all.size(),
-                    best.score().margin(), List.of(), List.of(), tried, notes);
+            return new Result(
+                    Optional.of(best.placement()),
+                    best.placement(),
+                    all.size(),
+                    all.size(),
+                    best.score().margin(),
+                    List.of(),
+                    List.of(),
+                    tried,
+                    notes);
         }
         // the workingsteps left out at the best placement, each searched alone
         progress.at(0.9, "placement search: the workingsteps out of reach");
@@ -331,8 +368,16 @@ public final class PlacementSearch {
                 order.add(t.label());
             }
         }
-        return new Result(Optional.empty(), best.placement(), inTable.size(), all.size() - best.score().failures(),
-                best.score().margin(), order, alone, tried, notes);
+        return new Result(
+                Optional.empty(),
+                best.placement(),
+                inTable.size(),
+                all.size() - best.score().failures(),
+                best.score().margin(),
+                order,
+                alone,
+                tried,
+                notes);
     }
 
     /** Every target solved from one placement: found when all are reached. */
@@ -342,8 +387,16 @@ public final class PlacementSearch {
             all.add(new Target(t));
         }
         Score s = evaluate(p, new Ordered(all), null);
-        return new Result(s.failures() == 0 ? Optional.of(p) : Optional.empty(), p, all.size(),
-                all.size() - s.failures(), s.margin(), List.of(), List.of(), 1, List.of());
+        return new Result(
+                s.failures() == 0 ? Optional.of(p) : Optional.empty(),
+                p,
+                all.size(),
+                all.size() - s.failures(),
+                s.margin(),
+                List.of(),
+                List.of(),
+                1,
+                List.of());
     }
 
     private static int compare(Score a, Score b) {
@@ -385,8 +438,8 @@ public final class PlacementSearch {
             } else {
                 continue;
             }
-            if (bound != null && (failures > bound.failures()
-                    || failures == bound.failures() && margin <= bound.margin())) {
+            if (bound != null
+                    && (failures > bound.failures() || failures == bound.failures() && margin <= bound.margin())) {
                 targets.first(i);
                 return new Score(failures, margin, false);
             }
@@ -409,8 +462,11 @@ public final class PlacementSearch {
                     if (dm == 0 && dd == 0) {
                         continue;
                     }
-                    TablePlacement q = new TablePlacement(p.xMm() + (axis == 0 ? dm : 0), p.yMm() + (axis == 1 ? dm : 0),
-                            p.zMm() + (axis == 2 ? dm : 0), halfTurn(p.rzDeg() + dd));
+                    TablePlacement q = new TablePlacement(
+                            p.xMm() + (axis == 0 ? dm : 0),
+                            p.yMm() + (axis == 1 ? dm : 0),
+                            p.zMm() + (axis == 2 ? dm : 0),
+                            halfTurn(p.rzDeg() + dd));
                     if (!inCell(q)) {
                         continue;
                     }
@@ -525,7 +581,8 @@ public final class PlacementSearch {
         boolean fixed = true;
         for (int k = 0; k < WORKSPACE_SAMPLES; k++) {
             for (int i = 0; i < q.length; i++) {
-                q[i] = js.get(i).min() + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
+                q[i] = js.get(i).min()
+                        + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
             }
             Transform3 pose;
             try {
@@ -566,8 +623,8 @@ public final class PlacementSearch {
                         for (int i = 0; i < 3; i++) {
                             w[i] = box[0][i] + (box[1][i] - box[0][i]) * idx[i] / (GRID_STEPS - 1);
                         }
-                        TablePlacement p = new TablePlacement(w[0] - c.x(), w[1] - c.y(), w[2] - c.z(),
-                                rz > 180 ? rz - 360 : rz);
+                        TablePlacement p =
+                                new TablePlacement(w[0] - c.x(), w[1] - c.y(), w[2] - c.z(), rz > 180 ? rz - 360 : rz);
                         if (inCell(p)) {
                             out.add(p);
                         }

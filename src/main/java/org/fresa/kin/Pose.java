@@ -7,8 +7,7 @@ import org.fresa.geom.Transform3;
  * of {@link Transform3}. Package-private: the public API speaks Transform3.
  */
 final class Pose {
-    private Pose() {
-    }
+    private Pose() {}
 
     static final int SIZE = 12;
 
@@ -35,8 +34,9 @@ final class Pose {
     }
 
     static Transform3 toTransform(double[] m, int o) {
-        return new Transform3(m[o], m[o + 1], m[o + 2], m[o + 4], m[o + 5], m[o + 6], m[o + 8], m[o + 9], m[o + 10],
-                m[o + 3], m[o + 7], m[o + 11]);
+        return new Transform3(
+                m[o], m[o + 1], m[o + 2], m[o + 4], m[o + 5], m[o + 6], m[o + 8], m[o + 9], m[o + 10], m[o + 3],
+                m[o + 7], m[o + 11]);
     }
 
     /** c = a * b; c may not alias a or b. */

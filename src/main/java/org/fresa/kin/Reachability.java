@@ -54,8 +54,8 @@ public final class Reachability {
      * @param robotOfLabel the robot carrying each label's TCP (the same instance for the same tool)
      * @param stale asked between targets: true stops the check, which then returns empty
      */
-    public Optional<TrajectorySolver.Result> check(List<ToolTarget> targets, Function<String, Robot> robotOfLabel,
-            BooleanSupplier stale) {
+    public Optional<TrajectorySolver.Result> check(
+            List<ToolTarget> targets, Function<String, Robot> robotOfLabel, BooleanSupplier stale) {
         long t0 = System.nanoTime();
         List<TrajectoryPoint> points = new ArrayList<>(targets.size());
         double[] prev = null;
@@ -96,14 +96,29 @@ public final class Reachability {
             }
             if (q == null) {
                 unreachable++;
-                points.add(new TrajectoryPoint(t.label(), target, TrajectoryPoint.Status.UNREACHABLE, new double[0],
-                        Optional.empty(), Double.NaN, Double.NaN, at, false));
+                points.add(new TrajectoryPoint(
+                        t.label(),
+                        target,
+                        TrajectoryPoint.Status.UNREACHABLE,
+                        new double[0],
+                        Optional.empty(),
+                        Double.NaN,
+                        Double.NaN,
+                        at,
+                        false));
                 continue;
             }
             Transform3 reached = robot.forward(q);
-            points.add(new TrajectoryPoint(t.label(), target, TrajectoryPoint.Status.OK, q, Optional.of(reached),
-                    reached.translationPart().distance(target.translationPart()), target.rotationAngleTo(reached),
-                    at, false));
+            points.add(new TrajectoryPoint(
+                    t.label(),
+                    target,
+                    TrajectoryPoint.Status.OK,
+                    q,
+                    Optional.of(reached),
+                    reached.translationPart().distance(target.translationPart()),
+                    target.rotationAngleTo(reached),
+                    at,
+                    false));
             if (Math.abs(at) > 1e-12) {
                 rotated++;
                 maxRot = Math.max(maxRot, Math.abs(at));
@@ -111,23 +126,25 @@ public final class Reachability {
             prev = q;
             phi = at;
         }
-        return Optional.of(new TrajectorySolver.Result(points, unreachable, 0, 0, rotated, 0, maxRot, List.of(),
-                System.nanoTime() - t0));
+        return Optional.of(new TrajectorySolver.Result(
+                points, unreachable, 0, 0, rotated, 0, maxRot, List.of(), System.nanoTime() - t0));
     }
 
     /**
      * What the check asks of a robot for every target, worked out once: a robot's joint list (and
      * so its number of joints) is built anew at each call, which cost a sixth of the check.
      */
-    private record Arm(IkSolver solver, int dof, Optional<SphericalWristSeeds> closedForm) {
-    }
+    private record Arm(IkSolver solver, int dof, Optional<SphericalWristSeeds> closedForm) {}
 
     private Arm arm(Robot robot) {
         Arm a = arms.get(robot);
         if (a == null) {
-            a = new Arm(robot.newSolver(options), robot.dof(),
+            a = new Arm(
+                    robot.newSolver(options),
+                    robot.dof(),
                     robot instanceof SerialRobot s && options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
-                            ? SphericalWristSeeds.of(s.chain()) : Optional.empty());
+                            ? SphericalWristSeeds.of(s.chain())
+                            : Optional.empty());
             arms.put(robot, a);
         }
         return a;
@@ -143,7 +160,9 @@ public final class Reachability {
         Optional<SphericalWristSeeds> closed = arm.closedForm();
         if (closed.isEmpty()) {
             List<IkResult.Converged> all = solver.solveAll(target);
-            return all.isEmpty() ? null : nearest(all.stream().map(IkResult.Converged::q).toList(), prev);
+            return all.isEmpty()
+                    ? null
+                    : nearest(all.stream().map(IkResult.Converged::q).toList(), prev);
         }
         DenavitHartenbergChain chain = ((SerialRobot) robot).chain();
         Pose.fromTransform(target, pose, 0);

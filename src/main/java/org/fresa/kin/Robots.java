@@ -6,12 +6,13 @@ import java.util.Optional;
 
 /** The built-in robots, exactly as spec/robots.md defines them. */
 public final class Robots {
-    private Robots() {
-    }
+    private Robots() {}
 
     /** ABB IRB-140 (6R), d1 = 352 mm; at q = 0 the flange is at (515, 0, 712) with z_e = +x. */
     public static SerialRobot irb140() {
-        return new SerialRobot("irb140", "ABB IRB-140, 6R anthropomorphic arm (thesis table 4.3, d1 = 352 mm)",
+        return new SerialRobot(
+                "irb140",
+                "ABB IRB-140, 6R anthropomorphic arm (thesis table 4.3, d1 = 352 mm)",
                 new DenavitHartenbergChain(List.of(
                         DhJoint.revolute(70, -90, 352, 0, -180, 180),
                         DhJoint.revolute(360, 0, 0, -90, -90, 110),
@@ -24,7 +25,9 @@ public final class Robots {
 
     /** Adept One SCARA (RRPR); the tool tip height is 1060.45 - q3 - 183.642 mm. */
     public static SerialRobot adeptOne() {
-        return new SerialRobot("adept-one", "Adept One SCARA, RRPR (thesis table 4.2); tool axis always vertical",
+        return new SerialRobot(
+                "adept-one",
+                "Adept One SCARA, RRPR (thesis table 4.2); tool axis always vertical",
                 new DenavitHartenbergChain(List.of(
                         DhJoint.revolute(424.942, 0, 1060.45, 0, -150, 150),
                         DhJoint.revolute(374.904, 180, 0, 0, -147, 147),
@@ -35,13 +38,19 @@ public final class Robots {
 
     /** COMAU Tricept 806 with the project's dimensions (r_b 500, r_p 200, d_eff 400, e_ffl 250). */
     public static TriceptRobot tricept806() {
-        return new TriceptRobot("tricept806",
+        return new TriceptRobot(
+                "tricept806",
                 "COMAU Tricept 806, 3 prismatic legs + spherical wrist (thesis eqs. 27-40, table 4.4)",
-                500, 200, 400, 250,
-                List.of(new JointLimit("q1", JointType.PRISMATIC, 900, 1800),
+                500,
+                200,
+                400,
+                250,
+                List.of(
+                        new JointLimit("q1", JointType.PRISMATIC, 900, 1800),
                         new JointLimit("q2", JointType.PRISMATIC, 900, 1800),
                         new JointLimit("q3", JointType.PRISMATIC, 900, 1800)),
-                List.of(new JointLimit("q4", JointType.REVOLUTE, -180, 180),
+                List.of(
+                        new JointLimit("q4", JointType.REVOLUTE, -180, 180),
                         new JointLimit("q5", JointType.REVOLUTE, -120, 120),
                         new JointLimit("q6", JointType.REVOLUTE, -360, 360)));
     }

@@ -27,8 +27,12 @@ final class ScaraSeeds implements ClosedFormSeeds {
 
     /** The seeds for this chain, when it has the structure. */
     static java.util.Optional<ScaraSeeds> of(DenavitHartenbergChain c) {
-        if (c.n != 4 || !c.base().equals(org.fresa.geom.Transform3.IDENTITY)
-                || !c.revolute[0] || !c.revolute[1] || c.revolute[2] || !c.revolute[3]) {
+        if (c.n != 4
+                || !c.base().equals(org.fresa.geom.Transform3.IDENTITY)
+                || !c.revolute[0]
+                || !c.revolute[1]
+                || c.revolute[2]
+                || !c.revolute[3]) {
             return java.util.Optional.empty();
         }
         double[] alphaCos = {1, -1, 1, 1};

@@ -24,6 +24,7 @@ final class SerialIkSolver implements IkSolver {
     private final int n;
     /** Orientation rows are scaled by this length so that mm and rad weigh alike. */
     private final double rotWeight;
+
     private final double[][] starts;
     /** Closed-form start configurations for arms built like the IRB-140. */
     private final java.util.Optional<ClosedFormSeeds> closedForm;
@@ -62,7 +63,8 @@ final class SerialIkSolver implements IkSolver {
         q = new double[n];
         qt = new double[n];
         starts = startConfigurations();
-        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT ? ClosedFormSeeds.of(chain)
+        closedForm = options.method() == IkOptions.Method.LEVENBERG_MARQUARDT
+                ? ClosedFormSeeds.of(chain)
                 : java.util.Optional.empty();
     }
 
@@ -134,8 +136,8 @@ final class SerialIkSolver implements IkSolver {
         if (ok) {
             return new IkResult.Converged(chain.toUser(q), lastPos, lastRot, iterations);
         }
-        return new IkResult.Unreachable("did not converge within the joint limits from the start configuration",
-                lastPos, lastRot, iterations);
+        return new IkResult.Unreachable(
+                "did not converge within the joint limits from the start configuration", lastPos, lastRot, iterations);
     }
 
     /**

@@ -43,8 +43,15 @@ final class SphericalWristSeeds implements ClosedFormSeeds {
                 return java.util.Optional.empty();
             }
         }
-        if (c.a[2] != 0 || c.a[3] != 0 || c.a[4] != 0 || c.a[5] != 0 || c.d[1] != 0 || c.d[2] != 0 || c.d[4] != 0
-                || !(c.a[1] > 0) || !(c.d[3] > 0)) {
+        if (c.a[2] != 0
+                || c.a[3] != 0
+                || c.a[4] != 0
+                || c.a[5] != 0
+                || c.d[1] != 0
+                || c.d[2] != 0
+                || c.d[4] != 0
+                || !(c.a[1] > 0)
+                || !(c.d[3] > 0)) {
             return java.util.Optional.empty();
         }
         return java.util.Optional.of(new SphericalWristSeeds(c));

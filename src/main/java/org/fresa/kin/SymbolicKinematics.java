@@ -17,8 +17,7 @@ import org.matheclipse.core.interfaces.IExpr;
  */
 public final class SymbolicKinematics {
 
-    private SymbolicKinematics() {
-    }
+    private SymbolicKinematics() {}
 
     /**
      * One DH row as expressions.
@@ -125,8 +124,8 @@ public final class SymbolicKinematics {
                 String z = "fresaT" + i + "[[1;;3,3]]";
                 String o = "fresaT" + i + "[[1;;3,4]]";
                 boolean revolute = rows.get(i).thetaDeg().contains("q" + (i + 1));
-                String col = revolute ? "Join[Cross[" + z + "," + on + "-" + o + "]," + z + "]"
-                        : "Join[" + z + ",{0,0,0}]";
+                String col =
+                        revolute ? "Join[Cross[" + z + "," + on + "-" + o + "]," + z + "]" : "Join[" + z + ",{0,0,0}]";
                 IExpr v = e.eval(col);
                 List<String> entries = new ArrayList<>();
                 for (int r = 1; r <= 6; r++) {

@@ -17,12 +17,22 @@ import org.fresa.geom.Transform3;
  * @param freeRotationDeg the turn about the tool axis from the preferred x direction
  * @param inserted true for points the solver added (subdivision of a long move, relinks)
  */
-public record TrajectoryPoint(String label, Transform3 target, Status status, double[] q, Optional<Transform3> reached,
-        double posErrMm, double rotErrRad, double freeRotationDeg, boolean inserted) {
+public record TrajectoryPoint(
+        String label,
+        Transform3 target,
+        Status status,
+        double[] q,
+        Optional<Transform3> reached,
+        double posErrMm,
+        double rotErrRad,
+        double freeRotationDeg,
+        boolean inserted) {
 
     /** What happened at a point. */
     public enum Status {
-        OK, UNREACHABLE, RELINK;
+        OK,
+        UNREACHABLE,
+        RELINK;
 
         /** As written in trajectory.csv. */
         public String csv() {

@@ -40,25 +40,48 @@ public final class TrajectorySolver {
      * @param limitMargin fraction of a joint's range kept free at each end when possible
      * @param wristMin the least |sin| of the wrist angle kept when possible
      */
-    public record Options(IkOptions ik, double maxJointStepDeg, double maxPrismaticStepMm, double liftMm,
-            boolean freeRotation, double freeRotationStepDeg, double maxFreeRotationDeg, double limitMargin,
+    public record Options(
+            IkOptions ik,
+            double maxJointStepDeg,
+            double maxPrismaticStepMm,
+            double liftMm,
+            boolean freeRotation,
+            double freeRotationStepDeg,
+            double maxFreeRotationDeg,
+            double limitMargin,
             double wristMin) {
 
-        public static final Options DEFAULT = new Options(IkOptions.DEFAULT, 20, 50, 50, true, 5, 180, 0.02,
-                Math.sin(Math.toRadians(2)));
+        public static final Options DEFAULT =
+                new Options(IkOptions.DEFAULT, 20, 50, 50, true, 5, 180, 0.02, Math.sin(Math.toRadians(2)));
 
         public Options {
             Objects.requireNonNull(ik, "ik");
         }
 
         public Options withIk(IkOptions o) {
-            return new Options(o, maxJointStepDeg, maxPrismaticStepMm, liftMm, freeRotation, freeRotationStepDeg,
-                    maxFreeRotationDeg, limitMargin, wristMin);
+            return new Options(
+                    o,
+                    maxJointStepDeg,
+                    maxPrismaticStepMm,
+                    liftMm,
+                    freeRotation,
+                    freeRotationStepDeg,
+                    maxFreeRotationDeg,
+                    limitMargin,
+                    wristMin);
         }
 
         public Options withFreeRotation(boolean on) {
-            return new Options(ik, maxJointStepDeg, maxPrismaticStepMm, liftMm, on, freeRotationStepDeg,
-                    maxFreeRotationDeg, limitMargin, wristMin);
+            return new Options(
+                    ik,
+                    maxJointStepDeg,
+                    maxPrismaticStepMm,
+                    liftMm,
+                    on,
+                    freeRotationStepDeg,
+                    maxFreeRotationDeg,
+                    limitMargin,
+                    wristMin);
         }
     }
 
@@ -75,8 +98,16 @@ public final class TrajectorySolver {
      * @param notes one sentence each, for the planner
      * @param ikNanos time spent in inverse kinematics
      */
-    public record Result(List<TrajectoryPoint> points, int unreachable, int relinks, int subdividedMoves,
-            int rotatedPoints, int rotationChanges, double maxFreeRotationDeg, List<String> notes, long ikNanos) {
+    public record Result(
+            List<TrajectoryPoint> points,
+            int unreachable,
+            int relinks,
+            int subdividedMoves,
+            int rotatedPoints,
+            int rotationChanges,
+            double maxFreeRotationDeg,
+            List<String> notes,
+            long ikNanos) {
         public Result {
             points = List.copyOf(points);
             notes = List.copyOf(notes);
@@ -93,6 +124,7 @@ public final class TrajectorySolver {
     private final ToolTurns turns;
     /** The robot with the TCP of the current tool, and its solver: a tool change changes both. */
     private Robot robot;
+
     private IkSolver solver;
     private final List<JointLimit> limits;
     private final java.util.Map<Robot, IkSolver> solvers = new java.util.IdentityHashMap<>();
@@ -114,16 +146,15 @@ public final class TrajectorySolver {
 
     private void use(Robot r) {
         if (r.dof() != limits.size()) {
-            throw new IllegalArgumentException("a tool change cannot change the robot: " + r.dof() + " joints for "
-                    + limits.size());
+            throw new IllegalArgumentException(
+                    "a tool change cannot change the robot: " + r.dof() + " joints for " + limits.size());
         }
         robot = r;
         solver = solvers.computeIfAbsent(r, x -> x.newSolver(options.ik()));
     }
 
     /** A solved pose: joints and the free rotation used. */
-    private record Sol(double[] q, double phi) {
-    }
+    private record Sol(double[] q, double phi) {}
 
     public Result solve(List<ToolTarget> targets, Listener listener) {
         return solve(targets, null, listener);
@@ -138,8 +169,8 @@ public final class TrajectorySolver {
      * @param robotOfLabel the robot carrying the TCP of each label's tool; null keeps the
      *     constructor's robot; must return the same instance for the same tool
      */
-    public Result solve(List<ToolTarget> targets, java.util.function.Function<String, Robot> robotOfLabel,
-            Listener listener) {
+    public Result solve(
+            List<ToolTarget> targets, java.util.function.Function<String, Robot> robotOfLabel, Listener listener) {
         rows.clear();
         notes.clear();
         ikNanos = 0;
@@ -183,8 +214,16 @@ public final class TrajectorySolver {
                 }
             }
             if (s == null) {
-                rows.add(new TrajectoryPoint(t.label(), t.pose(phi), TrajectoryPoint.Status.UNREACHABLE, new double[0],
-                        Optional.empty(), Double.NaN, Double.NaN, phi, false));
+                rows.add(new TrajectoryPoint(
+                        t.label(),
+                        t.pose(phi),
+                        TrajectoryPoint.Status.UNREACHABLE,
+                        new double[0],
+                        Optional.empty(),
+                        Double.NaN,
+                        Double.NaN,
+                        phi,
+                        false));
                 lastOk = false;
             } else {
                 add(t, s, TrajectoryPoint.Status.OK, false);
@@ -222,9 +261,16 @@ public final class TrajectorySolver {
     private void add(ToolTarget t, Sol s, TrajectoryPoint.Status status, boolean inserted) {
         Transform3 target = t.pose(s.phi);
         Transform3 reached = robot.forward(s.q);
-        rows.add(new TrajectoryPoint(t.label(), target, status, s.q, Optional.of(reached),
-                reached.translationPart().distance(target.translationPart()), target.rotationAngleTo(reached),
-                s.phi, inserted));
+        rows.add(new TrajectoryPoint(
+                t.label(),
+                target,
+                status,
+                s.q,
+                Optional.of(reached),
+                reached.translationPart().distance(target.translationPart()),
+                target.rotationAngleTo(reached),
+                s.phi,
+                inserted));
     }
 
     /** The next point warm from prev, or null when it needs a reconfiguration (or is unreachable). */
@@ -260,8 +306,7 @@ public final class TrajectorySolver {
     }
 
     /** A solved target of a subdivided move. */
-    private record Piece(ToolTarget target, Sol sol) {
-    }
+    private record Piece(ToolTarget target, Sol sol) {}
 
     /** Subdivides the move and adds the inserted points; the end's solution, or null. */
     private Sol subdivide(ToolTarget a, Sol sa, ToolTarget b) {
@@ -412,7 +457,8 @@ public final class TrajectorySolver {
     private double distance(double[] a, double[] b) {
         double m = 0;
         for (int i = 0; i < a.length; i++) {
-            double scale = limits.get(i).type() == JointType.REVOLUTE ? 1
+            double scale = limits.get(i).type() == JointType.REVOLUTE
+                    ? 1
                     : options.maxJointStepDeg() / options.maxPrismaticStepMm();
             m = Math.max(m, Math.abs(a[i] - b[i]) * scale);
         }
@@ -448,7 +494,8 @@ public final class TrajectorySolver {
 
     private boolean smooth(double[] a, double[] b) {
         for (int i = 0; i < a.length; i++) {
-            double max = limits.get(i).type() == JointType.REVOLUTE ? options.maxJointStepDeg()
+            double max = limits.get(i).type() == JointType.REVOLUTE
+                    ? options.maxJointStepDeg()
                     : options.maxPrismaticStepMm();
             if (Math.abs(a[i] - b[i]) > max) {
                 return false;

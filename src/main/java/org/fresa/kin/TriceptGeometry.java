@@ -16,6 +16,7 @@ final class TriceptGeometry {
     private final double[] ay = new double[3];
     /** The wrist frame from the last {@link #legs} call: rows of R_w (x, y, z columns). */
     final double[] rw = new double[9];
+
     private final double[] lt = new double[3];
     private final double[] wt = new double[3];
     private final double[] jm = new double[9];
@@ -129,7 +130,8 @@ final class TriceptGeometry {
                 }
             }
             // w -= J^-1 f (Cramer)
-            double det = jm[0] * (jm[4] * jm[8] - jm[5] * jm[7]) - jm[1] * (jm[3] * jm[8] - jm[5] * jm[6])
+            double det = jm[0] * (jm[4] * jm[8] - jm[5] * jm[7])
+                    - jm[1] * (jm[3] * jm[8] - jm[5] * jm[6])
                     + jm[2] * (jm[3] * jm[7] - jm[4] * jm[6]);
             if (Math.abs(det) < 1e-12) {
                 return false;
@@ -140,7 +142,8 @@ final class TriceptGeometry {
                 for (int r = 0; r < 3; r++) {
                     m[r * 3 + c] = fv[r];
                 }
-                double dc = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6])
+                double dc = m[0] * (m[4] * m[8] - m[5] * m[7])
+                        - m[1] * (m[3] * m[8] - m[5] * m[6])
                         + m[2] * (m[3] * m[7] - m[4] * m[6]);
                 wt[c] = dc / det;
             }

@@ -25,6 +25,7 @@ final class TriceptIkSolver implements IkSolver {
     private final double[] max = new double[6];
     /** The flange target: the TCP target times the inverse tool frame. */
     private final double[] target = new double[Pose.SIZE];
+
     private final double[] tcpTarget = new double[Pose.SIZE];
     private final double[] tool = new double[Pose.SIZE];
     private final double[] toolInverse = new double[Pose.SIZE];
@@ -139,13 +140,19 @@ final class TriceptIkSolver implements IkSolver {
         }
         for (int k = 0; k < 3; k++) {
             if (legs[k] < min[k] || legs[k] > max[k]) {
-                failure = String.format(java.util.Locale.ROOT, "leg %d would be %.3f mm, outside %.0f..%.0f mm",
-                        k + 1, legs[k], min[k], max[k]);
+                failure = String.format(
+                        java.util.Locale.ROOT,
+                        "leg %d would be %.3f mm, outside %.0f..%.0f mm",
+                        k + 1,
+                        legs[k],
+                        min[k],
+                        max[k]);
                 return false;
             }
         }
         System.arraycopy(geo.rw, 0, rwSaved, 0, 9);
-        boolean found = options.method() == IkOptions.Method.THESIS_DLS ? wristNumerical() : wristClosedForm(branchFromSeed);
+        boolean found =
+                options.method() == IkOptions.Method.THESIS_DLS ? wristNumerical() : wristClosedForm(branchFromSeed);
         if (!found) {
             failure = "the wrist cannot reach the orientation within its limits";
             return false;
@@ -231,13 +238,24 @@ final class TriceptIkSolver implements IkSolver {
     }
 
     private boolean wristNumerical() {
-        Transform3 frame = new Transform3(rwSaved[0], rwSaved[1], rwSaved[2], rwSaved[3], rwSaved[4], rwSaved[5],
-                rwSaved[6], rwSaved[7], rwSaved[8], w[0], w[1], w[2]);
+        Transform3 frame = new Transform3(
+                rwSaved[0],
+                rwSaved[1],
+                rwSaved[2],
+                rwSaved[3],
+                rwSaved[4],
+                rwSaved[5],
+                rwSaved[6],
+                rwSaved[7],
+                rwSaved[8],
+                w[0],
+                w[1],
+                w[2]);
         DenavitHartenbergChain wrist = robot.wristChain(frame);
         SerialIkSolver s = new SerialIkSolver(wrist, options);
         Transform3 t = Pose.toTransform(target, 0);
-        IkResult r = s.solve(t, new double[] {Math.toDegrees(seedI[3]), Math.toDegrees(seedI[4]),
-            Math.toDegrees(seedI[5])});
+        IkResult r =
+                s.solve(t, new double[] {Math.toDegrees(seedI[3]), Math.toDegrees(seedI[4]), Math.toDegrees(seedI[5])});
         if (!(r instanceof IkResult.Converged c)) {
             return false;
         }

@@ -27,9 +27,17 @@ import org.fresa.geom.Vec3;
  * @param wrist the three wrist limits (deg)
  * @param tool the tool frame (TCP) in the flange frame, the flange being e_ffl beyond W
  */
-public record TriceptRobot(String name, String description, double baseRadiusMm, double platformRadiusMm,
-        double centreOffsetMm, double effectorLengthMm, List<JointLimit> legs, List<JointLimit> wrist,
-        Transform3 tool) implements Robot {
+public record TriceptRobot(
+        String name,
+        String description,
+        double baseRadiusMm,
+        double platformRadiusMm,
+        double centreOffsetMm,
+        double effectorLengthMm,
+        List<JointLimit> legs,
+        List<JointLimit> wrist,
+        Transform3 tool)
+        implements Robot {
 
     public TriceptRobot {
         Objects.requireNonNull(name, "name");
@@ -46,16 +54,39 @@ public record TriceptRobot(String name, String description, double baseRadiusMm,
     }
 
     /** A Tricept whose TCP is its flange. */
-    public TriceptRobot(String name, String description, double baseRadiusMm, double platformRadiusMm,
-            double centreOffsetMm, double effectorLengthMm, List<JointLimit> legs, List<JointLimit> wrist) {
-        this(name, description, baseRadiusMm, platformRadiusMm, centreOffsetMm, effectorLengthMm, legs, wrist,
+    public TriceptRobot(
+            String name,
+            String description,
+            double baseRadiusMm,
+            double platformRadiusMm,
+            double centreOffsetMm,
+            double effectorLengthMm,
+            List<JointLimit> legs,
+            List<JointLimit> wrist) {
+        this(
+                name,
+                description,
+                baseRadiusMm,
+                platformRadiusMm,
+                centreOffsetMm,
+                effectorLengthMm,
+                legs,
+                wrist,
                 Transform3.IDENTITY);
     }
 
     @Override
     public TriceptRobot withTool(Transform3 newTool) {
-        return new TriceptRobot(name, description, baseRadiusMm, platformRadiusMm, centreOffsetMm, effectorLengthMm,
-                legs, wrist, newTool);
+        return new TriceptRobot(
+                name,
+                description,
+                baseRadiusMm,
+                platformRadiusMm,
+                centreOffsetMm,
+                effectorLengthMm,
+                legs,
+                wrist,
+                newTool);
     }
 
     @Override
@@ -71,11 +102,21 @@ public record TriceptRobot(String name, String description, double baseRadiusMm,
 
     /** The wrist as a DH chain whose base is the wrist frame at W (identity: frame at origin). */
     public DenavitHartenbergChain wristChain(Transform3 wristFrame) {
-        return new DenavitHartenbergChain(List.of(
-                DhJoint.revolute(0, -90, 0, 90, wrist.get(0).min(), wrist.get(0).max()),
-                DhJoint.revolute(0, 90, 0, -90, wrist.get(1).min(), wrist.get(1).max()),
-                DhJoint.revolute(0, 0, effectorLengthMm, 180, wrist.get(2).min(), wrist.get(2).max())),
-                wristFrame, Transform3.IDENTITY);
+        return new DenavitHartenbergChain(
+                List.of(
+                        DhJoint.revolute(
+                                0, -90, 0, 90, wrist.get(0).min(), wrist.get(0).max()),
+                        DhJoint.revolute(
+                                0, 90, 0, -90, wrist.get(1).min(), wrist.get(1).max()),
+                        DhJoint.revolute(
+                                0,
+                                0,
+                                effectorLengthMm,
+                                180,
+                                wrist.get(2).min(),
+                                wrist.get(2).max())),
+                wristFrame,
+                Transform3.IDENTITY);
     }
 
     @Override

@@ -31,8 +31,7 @@ public final class ContourFile {
 
     private static final Tolerance TOL = Tolerance.DEFAULT;
 
-    private ContourFile() {
-    }
+    private ContourFile() {}
 
     /**
      * Reads every contour of the text.
@@ -71,7 +70,8 @@ public final class ContourFile {
                     case "move" -> {
                         expectContour(curves, source, lineNo);
                         if (first != null) {
-                            throw new CamInputException(source, lineNo, 1, "a contour has one 'move'; start a new 'contour' first");
+                            throw new CamInputException(
+                                    source, lineNo, 1, "a contour has one 'move'; start a new 'contour' first");
                         }
                         first = point(w, 1, source, lineNo, "move X Y");
                         at = first;
@@ -99,14 +99,22 @@ public final class ContourFile {
                         double r1 = c.distance(at);
                         double r2 = c.distance(to);
                         if (!(r1 > TOL.linear()) || !TOL.eq(r1, r2)) {
-                            throw new CamInputException(source, lineNo, 0, String.format(Locale.ROOT,
-                                    "arc radius at start %.6f and at end %.6f differ (or are zero)", r1, r2));
+                            throw new CamInputException(
+                                    source,
+                                    lineNo,
+                                    0,
+                                    String.format(
+                                            Locale.ROOT,
+                                            "arc radius at start %.6f and at end %.6f differ (or are zero)",
+                                            r1,
+                                            r2));
                         }
                         curves.add(new Arc2(c, at, to.eq(at, TOL) ? at : to, sense.equals("ccw")));
                         at = to.eq(at, TOL) ? at : to;
                     }
-                    default -> throw new CamInputException(source, lineNo, 1,
-                            "expected contour, move, line or arc, found '" + w[0] + "'");
+                    default ->
+                        throw new CamInputException(
+                                source, lineNo, 1, "expected contour, move, line or arc, found '" + w[0] + "'");
                 }
             }
         } catch (IOException e) {
@@ -127,9 +135,17 @@ public final class ContourFile {
             throw new CamInputException(source, line, 0, "empty contour (expected move, then line or arc)");
         }
         if (!at.eq(first, TOL)) {
-            throw new CamInputException(source, line, 0, String.format(Locale.ROOT,
-                    "contour does not close: it ends at (%s, %s), expected its start (%s, %s)",
-                    ExactDecimal.of(at.x()), ExactDecimal.of(at.y()), ExactDecimal.of(first.x()), ExactDecimal.of(first.y())));
+            throw new CamInputException(
+                    source,
+                    line,
+                    0,
+                    String.format(
+                            Locale.ROOT,
+                            "contour does not close: it ends at (%s, %s), expected its start (%s, %s)",
+                            ExactDecimal.of(at.x()),
+                            ExactDecimal.of(at.y()),
+                            ExactDecimal.of(first.x()),
+                            ExactDecimal.of(first.y())));
         }
         return new Contour(curves);
     }
@@ -178,17 +194,30 @@ public final class ContourFile {
         for (Contour c : contours) {
             sb.append("contour\n");
             Vec2 s = c.get(0).start();
-            sb.append("move ").append(ExactDecimal.of(s.x())).append(' ').append(ExactDecimal.of(s.y())).append('\n');
+            sb.append("move ")
+                    .append(ExactDecimal.of(s.x()))
+                    .append(' ')
+                    .append(ExactDecimal.of(s.y()))
+                    .append('\n');
             for (Curve2 k : c.curves()) {
                 if (k instanceof Segment2 seg) {
-                    sb.append("line ").append(ExactDecimal.of(seg.end().x())).append(' ')
-                            .append(ExactDecimal.of(seg.end().y())).append('\n');
+                    sb.append("line ")
+                            .append(ExactDecimal.of(seg.end().x()))
+                            .append(' ')
+                            .append(ExactDecimal.of(seg.end().y()))
+                            .append('\n');
                 } else {
                     Arc2 a = (Arc2) k;
-                    sb.append("arc ").append(ExactDecimal.of(a.center().x())).append(' ')
-                            .append(ExactDecimal.of(a.center().y())).append(' ')
-                            .append(ExactDecimal.of(a.end().x())).append(' ').append(ExactDecimal.of(a.end().y()))
-                            .append(a.ccw() ? " ccw" : " cw").append('\n');
+                    sb.append("arc ")
+                            .append(ExactDecimal.of(a.center().x()))
+                            .append(' ')
+                            .append(ExactDecimal.of(a.center().y()))
+                            .append(' ')
+                            .append(ExactDecimal.of(a.end().x()))
+                            .append(' ')
+                            .append(ExactDecimal.of(a.end().y()))
+                            .append(a.ccw() ? " ccw" : " cw")
+                            .append('\n');
                 }
             }
         }

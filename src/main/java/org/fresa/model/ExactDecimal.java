@@ -24,8 +24,7 @@ import java.util.Arrays;
  * writers of a robot trajectory more than the rest of their work.
  */
 public final class ExactDecimal {
-    private ExactDecimal() {
-    }
+    private ExactDecimal() {}
 
     /**
      * @throws IllegalArgumentException for NaN and infinities, which have no decimal form
@@ -54,8 +53,7 @@ public final class ExactDecimal {
     }
 
     /** digits 10^exponent, digits without trailing zeros. */
-    record Shortest(long digits, int exponent) {
-    }
+    record Shortest(long digits, int exponent) {}
 
     private static final long HIDDEN = 0x0010_0000_0000_0000L;
     private static final long[] POW10 = new long[19];
@@ -97,8 +95,7 @@ public final class ExactDecimal {
     }
 
     /** floor(q 2^b 10^j) when it is below 2^63 (otherwise -1), and whether it is exact. */
-    record Scaled(long floor, boolean exact) {
-    }
+    record Scaled(long floor, boolean exact) {}
 
     static Scaled scaled(long q, int b, int j) {
         int[] n = of(q);
@@ -224,6 +221,7 @@ public final class ExactDecimal {
 
     /** 5^13, the largest power of five below 2^31. */
     private static final long POW5_13 = 1_220_703_125L;
+
     private static final long[] POW5 = new long[14];
 
     static {
@@ -265,8 +263,7 @@ public final class ExactDecimal {
     }
 
     /** floor(a / 5^n), and whether nothing was cut off. */
-    record Division(int[] quotient, boolean exact) {
-    }
+    record Division(int[] quotient, boolean exact) {}
 
     static Division divPow5(int[] a, int n) {
         int[] r = a.clone();

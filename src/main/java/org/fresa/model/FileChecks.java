@@ -28,8 +28,7 @@ public final class FileChecks {
     private static final int S_IFBLK = 0060000;
     private static final int S_IFSOCK = 0140000;
 
-    private FileChecks() {
-    }
+    private FileChecks() {}
 
     /**
      * Checks that an input is a regular file of at most {@code maxBytes}.
@@ -52,15 +51,18 @@ public final class FileChecks {
             throw new CamInputException(file.toString(), "is " + kind(file) + ", not " + what);
         }
         if (a.size() > maxBytes) {
-            throw new CamInputException(file.toString(), "is " + megabytes(a.size()) + "; " + what
-                    + " may have at most " + megabytes(maxBytes) + tooLargeAdvice(maxBytes));
+            throw new CamInputException(
+                    file.toString(),
+                    "is " + megabytes(a.size()) + "; " + what + " may have at most " + megabytes(maxBytes)
+                            + tooLargeAdvice(maxBytes));
         }
         return a.size();
     }
 
     private static String tooLargeAdvice(long maxBytes) {
         return maxBytes < Runtime.getRuntime().maxMemory() / 2
-                ? " here, a share of the Java heap (give Java more memory, e.g. FRESA_JAVA_OPTS=-Xmx4g)" : "";
+                ? " here, a share of the Java heap (give Java more memory, e.g. FRESA_JAVA_OPTS=-Xmx4g)"
+                : "";
     }
 
     /**

@@ -9,8 +9,8 @@ package org.fresa.model;
  * They are moves rather than a side channel because their place in the sequence is what matters
  * (a dwell at the bottom of a hole, the spindle stopped before a boring bar leaves it).
  */
-public sealed interface Move permits Move.Rapid, Move.Linear, Move.Circular, Move.Dwell, Move.SpindleStop,
-        Move.SpindleStart {
+public sealed interface Move
+        permits Move.Rapid, Move.Linear, Move.Circular, Move.Dwell, Move.SpindleStop, Move.SpindleStart {
 
     org.fresa.geom.Vec3 end();
 
@@ -49,8 +49,14 @@ public sealed interface Move permits Move.Rapid, Move.Linear, Move.Circular, Mov
      * @param turns extra full turns before the end (0 for an ordinary arc)
      * @param feedMmPerMin feed rate, > 0
      */
-    record Circular(org.fresa.geom.Vec3 end, org.fresa.geom.Vec3 center, org.fresa.geom.Vec3 normal,
-            boolean ccw, int turns, double feedMmPerMin) implements Move {
+    record Circular(
+            org.fresa.geom.Vec3 end,
+            org.fresa.geom.Vec3 center,
+            org.fresa.geom.Vec3 normal,
+            boolean ccw,
+            int turns,
+            double feedMmPerMin)
+            implements Move {
         public Circular {
             java.util.Objects.requireNonNull(end, "end");
             java.util.Objects.requireNonNull(center, "center");

@@ -15,8 +15,14 @@ import org.fresa.geom.Vec3;
  * @param start where the tool is before the first move (mm)
  * @param moves the moves in order
  */
-public record ToolpathSection(String label, Vec3 toolAxis, double toolDiameterMm, int toolNumber,
-        double spindleRpm, Vec3 start, List<Move> moves) {
+public record ToolpathSection(
+        String label,
+        Vec3 toolAxis,
+        double toolDiameterMm,
+        int toolNumber,
+        double spindleRpm,
+        Vec3 start,
+        List<Move> moves) {
 
     public ToolpathSection {
         Objects.requireNonNull(label, "label");

@@ -258,7 +258,8 @@ public final class Coverage {
                     Vec2 a2 = a.plus(n.times(side * r));
                     Vec2 b2 = b.plus(n.times(side * r));
                     if ((a2.y() <= y) != (b2.y() <= y) || Math.abs(a2.y() - y) < 1e-15) {
-                        double x = Math.abs(b2.y() - a2.y()) < 1e-15 ? a2.x()
+                        double x = Math.abs(b2.y() - a2.y()) < 1e-15
+                                ? a2.x()
                                 : a2.x() + (y - a2.y()) / (b2.y() - a2.y()) * (b2.x() - a2.x());
                         lo = Math.min(lo, x);
                         hi = Math.max(hi, x);
@@ -308,8 +309,13 @@ public final class Coverage {
                 double a0 = a.startAngleRad();
                 Vec2 prev = a.start();
                 for (int k = 1; k <= n; k++) {
-                    Vec2 q = k == n ? a.end() : a.center().plus(new Vec2(Math.cos(a0 + sign * sweep * k / n),
-                            Math.sin(a0 + sign * sweep * k / n)).times(a.radius()));
+                    Vec2 q = k == n
+                            ? a.end()
+                            : a.center()
+                                    .plus(new Vec2(
+                                                    Math.cos(a0 + sign * sweep * k / n),
+                                                    Math.sin(a0 + sign * sweep * k / n))
+                                            .times(a.radius()));
                     out.add(new Vec2[] {prev, q});
                     prev = q;
                 }

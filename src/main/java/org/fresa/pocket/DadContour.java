@@ -27,6 +27,7 @@ public record DadContour(List<DadElement> elements) {
     public static final int MIN_ELEMENTS = 2;
     /** At most 99 elements: the record has two columns for the element number. */
     public static final int MAX_ELEMENTS = 99;
+
     private static final int FIELD = 22;
     // two elements that meet closer than this to a third's extent cross it (drawing tolerance)
     private static final Tolerance CROSSING = Tolerance.ofLinear(1e-6);
@@ -44,8 +45,7 @@ public record DadContour(List<DadElement> elements) {
      * @param element the element number the problem is at (1 to n), 0 for the contour as a whole
      * @param message the reason in the planner's words
      */
-    public record Refusal(int element, String message) {
-    }
+    public record Refusal(int element, String message) {}
 
     /**
      * The first reason the contour is refused: fewer than two elements, two consecutive elements
@@ -63,8 +63,10 @@ public record DadContour(List<DadElement> elements) {
             int p = (i + n - 1) % n;
             Optional<Vec2> j = ElementGeometry.junction(els.get(p), els.get(i), 0, compar);
             if (j.isEmpty()) {
-                return Optional.of(new Refusal(i + 1, "Element " + (i + 1) + " does not meet element " + (p + 1)
-                        + ": the contour does not close there."));
+                return Optional.of(new Refusal(
+                        i + 1,
+                        "Element " + (i + 1) + " does not meet element " + (p + 1)
+                                + ": the contour does not close there."));
             }
             v.add(j.get());
         }
@@ -75,16 +77,19 @@ public record DadContour(List<DadElement> elements) {
                     continue;
                 }
                 if (!Intersections.of(curves.get(i), curves.get(j), CROSSING).isEmpty()) {
-                    return Optional.of(new Refusal(j + 1, "Element " + (j + 1) + " crosses element " + (i + 1)
-                            + ": the contour intersects itself."));
+                    return Optional.of(new Refusal(
+                            j + 1,
+                            "Element " + (j + 1) + " crosses element " + (i + 1) + ": the contour intersects itself."));
                 }
             }
         }
         List<Curve2> drawn = curves.stream().filter(java.util.Objects::nonNull).toList();
         if (drawn.isEmpty() || new org.fresa.geom.Contour(drawn).signedArea() >= 0) {
-            return Optional.of(new Refusal(0, "The contour runs counter-clockwise (or encloses nothing): the"
-                    + " thesis's contours run clockwise, the pocket on the right of each element; check the S/L"
-                    + " selectors and the order of the elements."));
+            return Optional.of(new Refusal(
+                    0,
+                    "The contour runs counter-clockwise (or encloses nothing): the"
+                            + " thesis's contours run clockwise, the pocket on the right of each element; check the S/L"
+                            + " selectors and the order of the elements."));
         }
         return Optional.empty();
     }
@@ -118,7 +123,9 @@ public record DadContour(List<DadElement> elements) {
             Vec2 b = v.get((i + 1) % n);
             if (a.distance(b) < 1e-9) {
                 out.add(null);
-            } else if (e.arc() && e.d() > 0 && Math.abs(a.distance(e.center()) - b.distance(e.center())) < 1e-6 * (1 + e.d())) {
+            } else if (e.arc()
+                    && e.d() > 0
+                    && Math.abs(a.distance(e.center()) - b.distance(e.center())) < 1e-6 * (1 + e.d())) {
                 // concave arcs turn counter-clockwise in the thesis's clockwise contour
                 out.add(new Arc2(e.center(), a, b, e.k() == 1));
             } else {
@@ -158,8 +165,17 @@ public record DadContour(List<DadElement> elements) {
         for (int r = 0; r < n; r++) {
             int i = (r + n - 1) % n;
             DadElement e = elements.get(i);
-            sb.append(String.format(Locale.ROOT, "%2d%c%22s%22s%22s%c%c%2d\r\n", i + 1, e.arc() ? 'C' : 'R',
-                    basic(e.a()), basic(e.b()), basic(e.d()), e.selector(), e.sense(), (i + 1) % n + 1));
+            sb.append(String.format(
+                    Locale.ROOT,
+                    "%2d%c%22s%22s%22s%c%c%2d\r\n",
+                    i + 1,
+                    e.arc() ? 'C' : 'R',
+                    basic(e.a()),
+                    basic(e.b()),
+                    basic(e.d()),
+                    e.selector(),
+                    e.sense(),
+                    (i + 1) % n + 1));
         }
         return sb.toString();
     }

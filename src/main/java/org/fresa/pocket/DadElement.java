@@ -21,15 +21,16 @@ public record DadElement(boolean arc, double a, double b, double d, char selecto
 
     public DadElement {
         if (!finite(a) || !finite(b) || !finite(d)) {
-            throw new IllegalArgumentException((arc ? "centre and radius" : "A, B and D")
-                    + " must be finite with |value| <= 1e6 mm");
+            throw new IllegalArgumentException(
+                    (arc ? "centre and radius" : "A, B and D") + " must be finite with |value| <= 1e6 mm");
         }
         if (selector != ' ' && selector != 'S' && selector != 'L') {
             throw new IllegalArgumentException("selector must be S, L or blank, found '" + selector + "'");
         }
         if (arc) {
             if (sense != 'F' && sense != 'M') {
-                throw new IllegalArgumentException("arc sense must be F (convex) or M (concave), found '" + sense + "'");
+                throw new IllegalArgumentException(
+                        "arc sense must be F (convex) or M (concave), found '" + sense + "'");
             }
             if (!(d >= 0)) {
                 throw new IllegalArgumentException("radius must be >= 0");
@@ -60,7 +61,8 @@ public record DadElement(boolean arc, double a, double b, double d, char selecto
 
     /** The thesis element with its number; a line's k is set from the contour by {@link DadContour#profile}. */
     PocketElement element(int number) {
-        return new PocketElement(number, arc, a, b, d, arc && sense == 'M' ? 1 : arc ? -1 : 1, selector == 'L' ? 'L' : 'S');
+        return new PocketElement(
+                number, arc, a, b, d, arc && sense == 'M' ? 1 : arc ? -1 : 1, selector == 'L' ? 'L' : 'S');
     }
 
     /** The same element changed in one field (the others kept). */
@@ -68,7 +70,8 @@ public record DadElement(boolean arc, double a, double b, double d, char selecto
         if (isArc == arc) {
             return this;
         }
-        return isArc ? new DadElement(true, a, b, Math.abs(d), selector, 'F')
+        return isArc
+                ? new DadElement(true, a, b, Math.abs(d), selector, 'F')
                 : new DadElement(false, a == 0 && b == 0 ? 1 : a, b, d, selector, ' ');
     }
 

@@ -19,8 +19,7 @@ public final class DadReader {
 
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([EeDd][+-]?\\d+)?");
 
-    private DadReader() {
-    }
+    private DadReader() {}
 
     /** Parses the text of a {@code .dad} file; source names the file in messages. */
     public static PocketProfile read(String text, String source) throws CamInputException {
@@ -47,14 +46,13 @@ public final class DadReader {
     /** The profile of numbered elements in the order of travel: the thesis's COMPAR and the lines' k. */
     static PocketProfile profile(List<PocketElement> loop, String source) throws CamInputException {
         double compar = PocketProfile.comparOf(loop);
-        List<PocketElement> withK = PocketProfile.withLineDirections(loop, compar).orElseThrow(() ->
-                new CamInputException(source, "consecutive elements do not intersect"));
+        List<PocketElement> withK = PocketProfile.withLineDirections(loop, compar)
+                .orElseThrow(() -> new CamInputException(source, "consecutive elements do not intersect"));
         return new PocketProfile(withK, compar, List.of());
     }
 
     /** The records in the order of travel with their numbers in the file. */
-    private record Parsed(List<DadElement> loop, List<Integer> numbers) {
-    }
+    private record Parsed(List<DadElement> loop, List<Integer> numbers) {}
 
     private static Parsed parse(String text, String source) throws CamInputException {
         String[] lines = text.split("\r?\n|\r", -1);
@@ -75,7 +73,8 @@ public final class DadReader {
             int number = integer(r, 0, 2, source, lineNo, "element number");
             char type = r.charAt(2);
             if (type != 'R' && type != 'C') {
-                throw new CamInputException(source, lineNo, 3, "element type must be R (line) or C (circle), found '" + type + "'");
+                throw new CamInputException(
+                        source, lineNo, 3, "element type must be R (line) or C (circle), found '" + type + "'");
             }
             double f1 = number(r, 3, 25, source, lineNo, type == 'R' ? "A = sin(k)" : "centre x");
             double f2 = number(r, 25, 47, source, lineNo, type == 'R' ? "B = cos(k)" : "centre y");
@@ -87,7 +86,8 @@ public final class DadReader {
             char sense = r.charAt(70);
             if (type == 'C') {
                 if (sense != 'F' && sense != 'M') {
-                    throw new CamInputException(source, lineNo, 71, "arc sense must be F (convex) or M (concave), found '" + sense + "'");
+                    throw new CamInputException(
+                            source, lineNo, 71, "arc sense must be F (convex) or M (concave), found '" + sense + "'");
                 }
                 if (!(f3 >= 0)) {
                     throw new CamInputException(source, lineNo, 48, "radius must be >= 0");
@@ -115,7 +115,10 @@ public final class DadReader {
         int first = order.get(1);
         int closing = order.get(0);
         if (next.get(closing) != first) {
-            throw new CamInputException(source, lineOf.get(closing), 72,
+            throw new CamInputException(
+                    source,
+                    lineOf.get(closing),
+                    72,
                     "the first record is the closing element, whose next element must be " + first);
         }
         List<DadElement> loop = new ArrayList<>();
@@ -131,23 +134,34 @@ public final class DadReader {
             cur = nx;
         }
         if (cur != first || numbers.stream().distinct().count() != order.size()) {
-            throw new CamInputException(source, lineOf.get(closing), 72, "the next-element numbers do not form one closed contour");
+            throw new CamInputException(
+                    source, lineOf.get(closing), 72, "the next-element numbers do not form one closed contour");
         }
         return new Parsed(loop, numbers);
     }
 
-    private static int integer(String r, int from, int to, String source, int line, String what) throws CamInputException {
+    private static int integer(String r, int from, int to, String source, int line, String what)
+            throws CamInputException {
         String s = r.substring(from, to).trim();
         if (!s.matches("\\d+")) {
-            throw new CamInputException(source, line, from + 1, what + " expected in columns " + (from + 1) + "-" + to + ", found '" + s + "'");
+            throw new CamInputException(
+                    source,
+                    line,
+                    from + 1,
+                    what + " expected in columns " + (from + 1) + "-" + to + ", found '" + s + "'");
         }
         return Integer.parseInt(s);
     }
 
-    private static double number(String r, int from, int to, String source, int line, String what) throws CamInputException {
+    private static double number(String r, int from, int to, String source, int line, String what)
+            throws CamInputException {
         String s = r.substring(from, to).trim();
         if (!NUMBER.matcher(s).matches()) {
-            throw new CamInputException(source, line, from + 1, what + " expected in columns " + (from + 1) + "-" + to + ", found '" + s + "'");
+            throw new CamInputException(
+                    source,
+                    line,
+                    from + 1,
+                    what + " expected in columns " + (from + 1) + "-" + to + ", found '" + s + "'");
         }
         double v = Double.parseDouble(s.replace('D', 'E').replace('d', 'e'));
         // a pocket is smaller than a kilometre; larger values overflow the squares of the geometry

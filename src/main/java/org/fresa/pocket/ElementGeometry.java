@@ -11,8 +11,7 @@ import org.fresa.geom.Vec2;
  * thesis's snap; the arc's radius at that point then differs from its nominal radius by the gap).
  */
 public final class ElementGeometry {
-    private ElementGeometry() {
-    }
+    private ElementGeometry() {}
 
     /** The one or two intersection points of the two elements' carriers at offset t, S first. */
     public static List<Vec2> candidates(PocketElement p, PocketElement q, double t, double compar) {

@@ -32,8 +32,7 @@ public final class Entries {
 
     private static final double[] HELIX_RADII = {1, 0.75, 0.5};
 
-    private Entries() {
-    }
+    private Entries() {}
 
     /** Whether a circle of tool-centre positions lies where the tool may cut (inside the region to clear). */
     @FunctionalInterface
@@ -61,8 +60,8 @@ public final class Entries {
      * @return the entry, or empty when the rule allows none here (no room for a helix or a ramp
      *     and a tool that does not cut at its centre)
      */
-    public static Optional<Entry> choose(EntryRule rule, Vec2 start, List<Curve2> cut, boolean ccw, Room room,
-            double toolRadiusMm, double depthMm) {
+    public static Optional<Entry> choose(
+            EntryRule rule, Vec2 start, List<Curve2> cut, boolean ccw, Room room, double toolRadiusMm, double depthMm) {
         if (rule.kind() == EntryRule.Kind.PLUNGE) {
             return Optional.of(new Entry.Plunge(start));
         }
@@ -71,7 +70,8 @@ public final class Entries {
             // a vertical entry is what the rule allows (90 deg), or there is no depth to go down
             return Optional.of(new Entry.Plunge(start));
         }
-        Optional<Entry> helix = rule.kind() == EntryRule.Kind.RAMP ? Optional.empty()
+        Optional<Entry> helix = rule.kind() == EntryRule.Kind.RAMP
+                ? Optional.empty()
                 : helix(start, cut, ccw, room, toolRadiusMm, rule.angleDeg(), depthMm);
         if (helix.isPresent()) {
             return helix;
@@ -89,8 +89,14 @@ public final class Entries {
         return rule.centreCutting() ? Optional.of(new Entry.Plunge(start)) : Optional.empty();
     }
 
-    private static Optional<Entry> helix(Vec2 start, List<Curve2> cut, boolean ccw, Room room, double toolRadiusMm,
-            double angleDeg, double depthMm) {
+    private static Optional<Entry> helix(
+            Vec2 start,
+            List<Curve2> cut,
+            boolean ccw,
+            Room room,
+            double toolRadiusMm,
+            double angleDeg,
+            double depthMm) {
         Vec2 t = tangent(cut);
         Vec2 side = ccw ? t.leftNormal() : t.leftNormal().negated();
         List<Vec2> directions = new ArrayList<>();

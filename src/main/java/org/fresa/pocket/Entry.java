@@ -50,8 +50,8 @@ public sealed interface Entry permits Entry.Helix, Entry.Ramp, Entry.Plunge {
             Objects.requireNonNull(start, "start");
             Objects.requireNonNull(centre, "centre");
             if (!(radiusMm > 0) || !(angleDeg > 0 && angleDeg < 90) || start.distance(centre) > radiusMm * (1 + 1e-9)) {
-                throw new IllegalArgumentException("bad helix: radius " + radiusMm + ", angle " + angleDeg
-                        + ", start " + start.distance(centre) + " from the centre");
+                throw new IllegalArgumentException("bad helix: radius " + radiusMm + ", angle " + angleDeg + ", start "
+                        + start.distance(centre) + " from the centre");
             }
         }
 

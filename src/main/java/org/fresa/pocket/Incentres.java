@@ -11,8 +11,7 @@ import org.fresa.geom.Vec2;
  * the system reduces to one quadratic in one unknown (the thesis's CRR reduction).
  */
 public final class Incentres {
-    private Incentres() {
-    }
+    private Incentres() {}
 
     /**
      * A solution: the offset t and the point.
@@ -20,8 +19,7 @@ public final class Incentres {
      * @param t absolute offset (mm)
      * @param point the incentre
      */
-    public record Solution(double t, Vec2 point) {
-    }
+    public record Solution(double t, Vec2 point) {}
 
     /** Every real solution (0, 1 or 2; more only in degenerate cases), in increasing t. */
     public static List<Solution> of(PocketElement e1, PocketElement e2, PocketElement e3) {
@@ -38,9 +36,14 @@ public final class Incentres {
             if (!e.arc()) {
                 rows.add(new double[] {e.a(), e.b(), -e.k(), e.d()});
             } else if (e != c0) {
-                rows.add(new double[] {-2 * (e.a() - c0.a()), -2 * (e.b() - c0.b()),
+                rows.add(new double[] {
+                    -2 * (e.a() - c0.a()),
+                    -2 * (e.b() - c0.b()),
                     -2 * (e.d() * e.k() - c0.d() * c0.k()),
-                    -(e.a() * e.a() + e.b() * e.b() - c0.a() * c0.a() - c0.b() * c0.b()) + e.d() * e.d() - c0.d() * c0.d()});
+                    -(e.a() * e.a() + e.b() * e.b() - c0.a() * c0.a() - c0.b() * c0.b())
+                            + e.d() * e.d()
+                            - c0.d() * c0.d()
+                });
             }
         }
         List<Solution> out = new ArrayList<>();
@@ -116,7 +119,8 @@ public final class Incentres {
         return out;
     }
 
-    private static double det3(double a, double b, double c, double d, double e, double f, double g, double h, double i) {
+    private static double det3(
+            double a, double b, double c, double d, double e, double f, double g, double h, double i) {
         return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
     }
 }

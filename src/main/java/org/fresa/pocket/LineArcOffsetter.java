@@ -33,8 +33,7 @@ public final class LineArcOffsetter {
 
     private static final Tolerance EXACT = new Tolerance(1e-10, 1e-13);
 
-    private LineArcOffsetter() {
-    }
+    private LineArcOffsetter() {}
 
     /**
      * Offsets a closed contour.
@@ -57,8 +56,12 @@ public final class LineArcOffsetter {
         }
         double dist = Math.abs(outwardMm);
         Box2 box = contour.bounds();
-        double scale = Math.max(1, Math.max(Math.max(Math.abs(box.minX()), Math.abs(box.maxX())),
-                Math.max(Math.abs(box.minY()), Math.abs(box.maxY()))) + dist);
+        double scale = Math.max(
+                1,
+                Math.max(
+                                Math.max(Math.abs(box.minX()), Math.abs(box.maxX())),
+                                Math.max(Math.abs(box.minY()), Math.abs(box.maxY())))
+                        + dist);
         double eps = 1e-9 * scale;
         List<Curve2> raw = rawOffset(src, left, eps);
         List<Curve2> pieces = split(raw, eps);

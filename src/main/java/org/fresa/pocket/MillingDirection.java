@@ -7,7 +7,8 @@ import java.util.Locale;
  * a clockwise spindle, the chip thick at entry and thin at exit) or {@link #CONVENTIONAL}.
  */
 public enum MillingDirection {
-    CLIMB, CONVENTIONAL;
+    CLIMB,
+    CONVENTIONAL;
 
     /** The name as written: {@code climb}, {@code conventional}. */
     public String word() {

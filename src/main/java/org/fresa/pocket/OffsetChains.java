@@ -17,8 +17,7 @@ import org.fresa.geom.Vec2;
  * dropped. Each loop's joints are snapped so a piece starts exactly where the previous ends.
  */
 final class OffsetChains {
-    private OffsetChains() {
-    }
+    private OffsetChains() {}
 
     /**
      * The closed loops of an offset's kept pieces, without the loops of negligible area, largest
@@ -70,7 +69,9 @@ final class OffsetChains {
                 chain.add(next);
                 at = pieces.get(next).end();
                 closed = at.distance(start) <= tol;
-                if (!closed && chain.size() > 1 && at.distance(start) <= tol * 100
+                if (!closed
+                        && chain.size() > 1
+                        && at.distance(start) <= tol * 100
                         && nearestStart(at, byStart, pieces, used, cell, tol) < 0) {
                     closed = true;
                 }
@@ -82,8 +83,8 @@ final class OffsetChains {
         return out;
     }
 
-    private static int nearestStart(Vec2 p, Map<Long, List<Integer>> byStart, List<Curve2> pieces, boolean[] used,
-            double cell, double tol) {
+    private static int nearestStart(
+            Vec2 p, Map<Long, List<Integer>> byStart, List<Curve2> pieces, boolean[] used, double cell, double tol) {
         long cx = (long) Math.floor(p.x() / cell);
         long cy = (long) Math.floor(p.y() / cell);
         int best = -1;

@@ -9,8 +9,7 @@ import org.fresa.geom.Vec2;
 
 /** Splitting a line or arc at points that lie on it, for {@link LineArcOffsetter}. */
 final class OffsetSplit {
-    private OffsetSplit() {
-    }
+    private OffsetSplit() {}
 
     /** The fraction (0 at start, 1 at end) of the point of c nearest p. */
     static double param(Curve2 c, Vec2 p) {

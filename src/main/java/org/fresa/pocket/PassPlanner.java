@@ -64,7 +64,8 @@ public final class PassPlanner {
         Collections.reverse(milled);
         // each piece once cut and once ramped down, some arcs joined by short lines, and a link or
         // rapids and a plunge per pass (the thesis's pockets have 1.4 moves per piece and layer)
-        tech.checkMoves(milled.stream().mapToLong(x -> 3L * x.pieces().size() + 4).sum());
+        tech.checkMoves(
+                milled.stream().mapToLong(x -> 3L * x.pieces().size() + 4).sum());
         return new PocketPlan(rec, tech, p.generated, milled);
     }
 
@@ -144,7 +145,9 @@ public final class PassPlanner {
                         // between two passes is R, as dist(x, pass d) = w(x) - d for w(x) > d
                         boolean changes = next >= barrier - eps;
                         for (RecognitionNode.Event e : node.events()) {
-                            changes |= e.t() > d + eps && e.t() <= next + r && !e.kind().equals("leaf");
+                            changes |= e.t() > d + eps
+                                    && e.t() <= next + r
+                                    && !e.kind().equals("leaf");
                         }
                         if (changes) {
                             next = Math.min(next, d + r);

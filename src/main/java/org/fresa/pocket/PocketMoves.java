@@ -66,8 +66,13 @@ final class PocketMoves {
                 // repeat word for word the helix's last block on a post that writes each turn alone
                 Vec2 ctr = new Vec2(c.center().x(), c.center().y());
                 Vec2 opposite = ctr.times(2).minus(a);
-                moves.add(new Move.Circular(new Vec3(opposite.x(), opposite.y(), at.z()), c.center(), c.normal(),
-                        c.ccw(), 0, c.feedMmPerMin()));
+                moves.add(new Move.Circular(
+                        new Vec3(opposite.x(), opposite.y(), at.z()),
+                        c.center(),
+                        c.normal(),
+                        c.ccw(),
+                        0,
+                        c.feedMmPerMin()));
                 moves.add(c);
                 return;
             }

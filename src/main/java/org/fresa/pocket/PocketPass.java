@@ -42,7 +42,8 @@ public record PocketPass(List<Integer> nodePath, double offsetMm, boolean finish
 
     /** True when the other pass's node is this pass's node or one of its ancestors. */
     public boolean linksOutwardTo(PocketPass other) {
-        return nodePath.containsAll(other.nodePath) && other.nodePath.size() <= nodePath.size()
+        return nodePath.containsAll(other.nodePath)
+                && other.nodePath.size() <= nodePath.size()
                 && nodePath.subList(0, other.nodePath.size()).equals(other.nodePath);
     }
 }

@@ -11,7 +11,10 @@ import java.util.List;
  * @param generated passes in generation order (finishing pass first)
  * @param milled passes in machining order (the reverse)
  */
-public record PocketPlan(Recognition.Result recognition, PocketTechnology technology, List<PocketPass> generated,
+public record PocketPlan(
+        Recognition.Result recognition,
+        PocketTechnology technology,
+        List<PocketPass> generated,
         List<PocketPass> milled) {
 
     public PocketPlan {

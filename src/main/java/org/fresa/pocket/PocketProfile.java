@@ -98,7 +98,9 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
                 Curve2 a = list.get(i);
                 Curve2 b = list.get(j);
                 Curve2 joined = null;
-                if (a instanceof Arc2 x && b instanceof Arc2 y && x.ccw() == y.ccw()
+                if (a instanceof Arc2 x
+                        && b instanceof Arc2 y
+                        && x.ccw() == y.ccw()
                         && x.center().distance(y.center()) <= 1e-9 * Math.max(1, x.radius())
                         && Math.abs(x.radius() - y.radius()) <= 1e-9 * Math.max(1, x.radius())
                         && Math.abs(x.sweepRad() + y.sweepRad()) < 2 * Math.PI - 1e-9) {
@@ -150,8 +152,8 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
                 raw.add(new PocketElement(number, false, a, b, d, 1, 'S'));
             } else {
                 Arc2 arc = (Arc2) c;
-                raw.add(new PocketElement(number, true, arc.center().x(), arc.center().y(), arc.radius(),
-                        arc.ccw() ? 1 : -1, 'S'));
+                raw.add(new PocketElement(
+                        number, true, arc.center().x(), arc.center().y(), arc.radius(), arc.ccw() ? 1 : -1, 'S'));
             }
         }
         List<PocketElement> sel = new ArrayList<>();

@@ -13,8 +13,16 @@ package org.fresa.pocket;
  * @param feedMmPerMin roughing feed (mm/min)
  * @param finishFeedMmPerMin finishing feed (mm/min)
  */
-public record PocketTechnology(double toolDiameterMm, double cutFraction, double finishFraction, double zTopMm,
-        double zBottomMm, double maxDepthMm, double spindleRpm, double feedMmPerMin, double finishFeedMmPerMin) {
+public record PocketTechnology(
+        double toolDiameterMm,
+        double cutFraction,
+        double finishFraction,
+        double zTopMm,
+        double zBottomMm,
+        double maxDepthMm,
+        double spindleRpm,
+        double feedMmPerMin,
+        double finishFeedMmPerMin) {
 
     /** Most depth passes (layers) a pocket may have. */
     public static final int MAX_DEPTH_PASSES = 1_000_000;
@@ -22,8 +30,17 @@ public record PocketTechnology(double toolDiameterMm, double cutFraction, double
     public static final long MAX_MOVES = 1_000_000;
 
     public PocketTechnology {
-        double[] all = {toolDiameterMm, cutFraction, finishFraction, zTopMm, zBottomMm, maxDepthMm, spindleRpm,
-            feedMmPerMin, finishFeedMmPerMin};
+        double[] all = {
+            toolDiameterMm,
+            cutFraction,
+            finishFraction,
+            zTopMm,
+            zBottomMm,
+            maxDepthMm,
+            spindleRpm,
+            feedMmPerMin,
+            finishFeedMmPerMin
+        };
         for (double v : all) {
             if (!Double.isFinite(v)) {
                 throw new IllegalArgumentException("technology values must be finite numbers: " + v);
@@ -45,8 +62,9 @@ public record PocketTechnology(double toolDiameterMm, double cutFraction, double
             throw new IllegalArgumentException("max depth per pass must be > 0: " + maxDepthMm);
         }
         if ((zTopMm - zBottomMm) / maxDepthMm > MAX_DEPTH_PASSES) {
-            throw new IllegalArgumentException("a max depth per pass of " + maxDepthMm + " mm over " + (zTopMm - zBottomMm)
-                    + " mm makes more than " + MAX_DEPTH_PASSES + " depth passes: give a larger depth per pass");
+            throw new IllegalArgumentException("a max depth per pass of " + maxDepthMm + " mm over "
+                    + (zTopMm - zBottomMm) + " mm makes more than " + MAX_DEPTH_PASSES
+                    + " depth passes: give a larger depth per pass");
         }
         if (!(spindleRpm > 0)) {
             throw new IllegalArgumentException("spindle speed must be > 0 rpm: " + spindleRpm);

@@ -27,8 +27,7 @@ public final class PocketToolpath {
     private static final Vec3 Z = new Vec3(0, 0, 1);
     private static final double CLEARANCE_MM = 5;
 
-    private PocketToolpath() {
-    }
+    private PocketToolpath() {}
 
     /** The moves of the plan with the default entries ({@link EntryRule#DEFAULT}); climb reverses the passes' direction. */
     public static Toolpath of(PocketPlan plan, boolean climb) throws ToolTooLargeException {
@@ -50,7 +49,9 @@ public final class PocketToolpath {
         for (PocketPass p : plan.milled()) {
             passes.add(climb ? p.reversed().pieces() : p.pieces());
         }
-        Vec2 s0 = plan.milled().isEmpty() || passes.get(0).isEmpty() ? Vec2.ZERO : passes.get(0).get(0).start();
+        Vec2 s0 = plan.milled().isEmpty() || passes.get(0).isEmpty()
+                ? Vec2.ZERO
+                : passes.get(0).get(0).start();
         PocketMoves moves = new PocketMoves(new Vec3(s0.x(), s0.y(), safe));
         List<PocketPass> milled = plan.milled();
         Entries.Room room = room(milled, t.finishFraction() * t.toolDiameterMm());
@@ -77,9 +78,12 @@ public final class PocketToolpath {
                     moves.add(new Move.Rapid(at(s, above)));
                     // no straight feed down at all: a helix or a zig-zag ramp within the entry angle
                     Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), above - z)
-                            .orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
+                            .orElseThrow(() -> new ToolTooLargeException(String.format(
+                                    java.util.Locale.ROOT,
                                     "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
-                                            + " tool (--centre-cutting) may plunge there", s.x(), s.y())));
+                                            + " tool (--centre-cutting) may plunge there",
+                                    s.x(),
+                                    s.y())));
                     moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
                 for (PassPiece pc : pieces) {
@@ -94,8 +98,8 @@ public final class PocketToolpath {
         if (moves.size() > 0) {
             moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
         }
-        ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
-                new Vec3(s0.x(), s0.y(), safe), moves.list());
+        ToolpathSection section = new ToolpathSection(
+                "pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(), new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
     }
 
@@ -207,8 +211,11 @@ public final class PocketToolpath {
             Vec3 cur = s.start();
             for (Move m : s.moves()) {
                 if (m instanceof Move.Circular c) {
-                    Vec2 a = new Vec2(cur.x() - c.center().x(), cur.y() - c.center().y());
-                    Vec2 b = new Vec2(c.end().x() - c.center().x(), c.end().y() - c.center().y());
+                    Vec2 a = new Vec2(
+                            cur.x() - c.center().x(), cur.y() - c.center().y());
+                    Vec2 b = new Vec2(
+                            c.end().x() - c.center().x(),
+                            c.end().y() - c.center().y());
                     double sweep = Math.atan2(a.cross(b), a.dot(b));
                     if (c.ccw() && sweep < 0) {
                         sweep += 2 * Math.PI;

@@ -28,9 +28,13 @@ public final class Recognition {
      * @param wallToolDiameterMm DIAMETRO p/ SUPERF: 2 × the root's first event offset
      * @param leafOffsets every leaf's offset, in tree order (mm)
      */
-    public record Result(RecognitionNode root, LoopState reference, double maxHoleDiameterMm, double maxToolDiameterMm,
-            double wallToolDiameterMm, List<Double> leafOffsets) {
-    }
+    public record Result(
+            RecognitionNode root,
+            LoopState reference,
+            double maxHoleDiameterMm,
+            double maxToolDiameterMm,
+            double wallToolDiameterMm,
+            List<Double> leafOffsets) {}
 
     private final double compar;
     private final java.util.Map<Integer, Vec2> origin = new java.util.HashMap<>();
@@ -46,7 +50,8 @@ public final class Recognition {
         LoopState ref = referenceContour(profile);
         for (int i = 0; i < ref.size(); i++) {
             PocketElement e = ref.get(i);
-            r.origin.put(e.number(), e.zeroRadius() ? e.center() : ref.start(i, 0).orElse(e.center()));
+            r.origin.put(
+                    e.number(), e.zeroRadius() ? e.center() : ref.start(i, 0).orElse(e.center()));
         }
         RecognitionNode root = r.build(ref);
         List<Double> leaves = new ArrayList<>();
@@ -93,7 +98,8 @@ public final class Recognition {
             PocketElement e = els.get(i);
             double angle = ElementGeometry.interiorAngleDeg(prev, e, v.get(i));
             if (angle > 180.3) {
-                out.add(new PocketElement(++created, true, v.get(i).x(), v.get(i).y(), 0, 1, 'S'));
+                out.add(new PocketElement(
+                        ++created, true, v.get(i).x(), v.get(i).y(), 0, 1, 'S'));
                 e = e.withSelector('S');
             }
             out.add(e);
@@ -104,11 +110,9 @@ public final class Recognition {
         return new LoopState(0, out, pointer, compar);
     }
 
-    private record Cancel(double t, Vec2 point) {
-    }
+    private record Cancel(double t, Vec2 point) {}
 
-    private record Division(double t, int a, int b, Vec2 point, int na, int nb) {
-    }
+    private record Division(double t, int a, int b, Vec2 point, int na, int nb) {}
 
     private RecognitionNode build(LoopState s0) throws CamInputException {
         int id = nextId++;
@@ -135,9 +139,14 @@ public final class Recognition {
             double te = Math.min(ttm, tdm);
             if (Double.isInfinite(te)) {
                 String els = s.elements().toString();
-                throw new CamInputException("contour", "recognition found no event at t = " + t + " in "
-                        + (els.length() > 200 ? els.substring(0, 200) + "... (" + s.elements().size() + " elements)" : els)
-                        + " (is the contour clockwise and closed?)");
+                throw new CamInputException(
+                        "contour",
+                        "recognition found no event at t = " + t + " in "
+                                + (els.length() > 200
+                                        ? els.substring(0, 200) + "... ("
+                                                + s.elements().size() + " elements)"
+                                        : els)
+                                + " (is the contour clockwise and closed?)");
             }
             Set<Integer> gone = new HashSet<>();
             for (int i = 0; i < n; i++) {
@@ -154,7 +163,8 @@ public final class Recognition {
                 events.add(new RecognitionNode.Event(te, "cancel", numbers));
                 if (n - gone.size() <= 1) {
                     Vec2 p = cancels[gone.iterator().next()].point();
-                    return new RecognitionNode(id, states, withLeaf(events, te), List.of(), Double.NaN, te, Optional.of(p));
+                    return new RecognitionNode(
+                            id, states, withLeaf(events, te), List.of(), Double.NaN, te, Optional.of(p));
                 }
                 List<PocketElement> kept = new ArrayList<>();
                 int ptr = s.pointer();
@@ -198,8 +208,10 @@ public final class Recognition {
                 }
                 divisions = carried;
             }
-            List<Division> now = divisions.stream().filter(d -> d.t() <= te + compar)
-                    .sorted((p, q) -> Double.compare(p.t(), q.t())).toList();
+            List<Division> now = divisions.stream()
+                    .filter(d -> d.t() <= te + compar)
+                    .sorted((p, q) -> Double.compare(p.t(), q.t()))
+                    .toList();
             if (!now.isEmpty()) {
                 List<LoopState> loops = divide(s, now, te);
                 List<Integer> numbers = new ArrayList<>();
@@ -208,7 +220,13 @@ public final class Recognition {
                     numbers.add(d.nb());
                 }
                 if (loops.isEmpty()) {
-                    return new RecognitionNode(id, states, withLeaf(events, te), List.of(), Double.NaN, te,
+                    return new RecognitionNode(
+                            id,
+                            states,
+                            withLeaf(events, te),
+                            List.of(),
+                            Double.NaN,
+                            te,
                             Optional.of(now.get(0).point()));
                 }
                 if (loops.size() == 1) {
@@ -236,7 +254,8 @@ public final class Recognition {
     }
 
     /** The two-element final (Fig. 4.5): half the remaining lens width. */
-    private RecognitionNode leaf(int id, List<LoopState> states, List<RecognitionNode.Event> events, LoopState s, double t) {
+    private RecognitionNode leaf(
+            int id, List<LoopState> states, List<RecognitionNode.Event> events, LoopState s, double t) {
         double leafT = t;
         Optional<Vec2> point = Optional.empty();
         if (s.size() == 2) {
@@ -302,7 +321,9 @@ public final class Recognition {
             Optional<Vec2> j1 = ElementGeometry.junction(e1, e2, ts, compar);
             Optional<Vec2> j2 = ElementGeometry.junction(e2, e3, ts, compar);
             double tolV = 100 * compar;
-            if (j1.isPresent() && j2.isPresent() && j1.get().distance(sol.point()) <= tolV
+            if (j1.isPresent()
+                    && j2.isPresent()
+                    && j1.get().distance(sol.point()) <= tolV
                     && j2.get().distance(sol.point()) <= tolV) {
                 return Optional.of(new Cancel(Math.min(ts, Math.max(limit, t + 10 * compar)), sol.point()));
             }
@@ -380,7 +401,8 @@ public final class Recognition {
             Vec2 w = new Vec2(e.a(), e.b()).times(1 / n);
             double h = (e.a() * p.x() + e.b() * p.y() - e.at(t)) / n;
             Vec2 foot = p.minus(w.times(h));
-            double excess = vs.get().distance(foot) + foot.distance(ve.get()) - vs.get().distance(ve.get());
+            double excess =
+                    vs.get().distance(foot) + foot.distance(ve.get()) - vs.get().distance(ve.get());
             return excess <= 10 * compar;
         }
         double r = Math.max(e.at(tv), compar);

@@ -16,8 +16,14 @@ import org.fresa.geom.Vec2;
  * @param leafT offset of the leaf (NaN when the node divides)
  * @param leafPoint the innermost point (empty when the node divides)
  */
-public record RecognitionNode(int id, List<LoopState> states, List<Event> events, List<RecognitionNode> children,
-        double splitT, double leafT, Optional<Vec2> leafPoint) {
+public record RecognitionNode(
+        int id,
+        List<LoopState> states,
+        List<Event> events,
+        List<RecognitionNode> children,
+        double splitT,
+        double leafT,
+        Optional<Vec2> leafPoint) {
 
     public RecognitionNode {
         states = List.copyOf(states);
@@ -32,8 +38,7 @@ public record RecognitionNode(int id, List<LoopState> states, List<Event> events
      * @param kind "cancel", "divide", "leaf"
      * @param elements the element numbers involved
      */
-    public record Event(double t, String kind, List<Integer> elements) {
-    }
+    public record Event(double t, String kind, List<Integer> elements) {}
 
     public double tStart() {
         return states.get(0).tFrom();

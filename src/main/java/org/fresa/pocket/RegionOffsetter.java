@@ -25,8 +25,7 @@ import org.fresa.geom.Vec2;
  */
 public final class RegionOffsetter {
 
-    private RegionOffsetter() {
-    }
+    private RegionOffsetter() {}
 
     /**
      * The region's boundary with the region on the left: the outer counter-clockwise, the islands
@@ -59,8 +58,12 @@ public final class RegionOffsetter {
         for (Contour c : boundary) {
             box = box.union(c.bounds());
         }
-        double scale = Math.max(1, Math.max(Math.max(Math.abs(box.minX()), Math.abs(box.maxX())),
-                Math.max(Math.abs(box.minY()), Math.abs(box.maxY()))) + d);
+        double scale = Math.max(
+                1,
+                Math.max(
+                                Math.max(Math.abs(box.minX()), Math.abs(box.maxX())),
+                                Math.max(Math.abs(box.minY()), Math.abs(box.maxY())))
+                        + d);
         double eps = 1e-9 * scale;
         for (Contour c : boundary) {
             List<Curve2> p = LineArcOffsetter.prepared(c, tol);

@@ -55,8 +55,7 @@ public final class RegionPocket {
     }
 
     /** A loop in cutting order, with its level index (0 = finishing). */
-    public record Cut(int level, Contour loop) {
-    }
+    public record Cut(int level, Contour loop) {}
 
     /** The plan: the levels outside in, the loops in cutting order, and the toolpath. */
     public record Plan(List<Level> levels, List<Cut> order, Toolpath toolpath) {
@@ -66,11 +65,9 @@ public final class RegionPocket {
         }
     }
 
-    private record Face(int level, Contour outer, List<Contour> holes, List<Face> children) {
-    }
+    private record Face(int level, Contour outer, List<Contour> holes, List<Face> children) {}
 
-    private RegionPocket() {
-    }
+    private RegionPocket() {}
 
     /**
      * Plans the pocket.
@@ -101,8 +98,14 @@ public final class RegionPocket {
     }
 
     /** As {@link #plan(Contour, List, PocketTechnology, boolean, EntryRule)}; cleanUp false leaves the remaining material. */
-    static Plan plan(Contour outer, List<Contour> islands, PocketTechnology tech, boolean climb, EntryRule entry,
-            boolean cleanUp) throws ToolTooLargeException {
+    static Plan plan(
+            Contour outer,
+            List<Contour> islands,
+            PocketTechnology tech,
+            boolean climb,
+            EntryRule entry,
+            boolean cleanUp)
+            throws ToolTooLargeException {
         List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
         List<Level> levels = levels(boundary, tech);
         List<Face> roots = faces(levels);
@@ -123,7 +126,8 @@ public final class RegionPocket {
         }
         // each element once cut and once ramped down, some arcs joined by short lines, and a link
         // or rapids and a plunge per loop
-        tech.checkMoves(directed.stream().mapToLong(c -> 3L * c.loop().size() + 4).sum());
+        tech.checkMoves(
+                directed.stream().mapToLong(c -> 3L * c.loop().size() + 4).sum());
         Toolpath path = toolpath(directed, levels.get(0), tech, entry);
         return new Plan(levels, directed, path);
     }
@@ -179,8 +183,7 @@ public final class RegionPocket {
 
     /** Adds a straight spur out to the spot and back on the nearest loop that reaches it inside the faces. */
     private static boolean spur(List<Cut> cuts, Vec2 spot, Coverage cov) {
-        record Candidate(int cut, int curve, Vec2 at, double distance) {
-        }
+        record Candidate(int cut, int curve, Vec2 at, double distance) {}
         List<Candidate> candidates = new ArrayList<>();
         for (int k = 0; k < cuts.size(); k++) {
             Contour loop = cuts.get(k).loop();
@@ -481,8 +484,9 @@ public final class RegionPocket {
                 Contour loop = cut.loop();
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
-                if (cursor != null && (feedLink(cursor, s, finishing, t.toolDiameterMm())
-                        || cleared.clearedAlong(cursor, s, loop.curves()))) {
+                if (cursor != null
+                        && (feedLink(cursor, s, finishing, t.toolDiameterMm())
+                                || cleared.clearedAlong(cursor, s, loop.curves()))) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
@@ -508,8 +512,8 @@ public final class RegionPocket {
             }
         }
         moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
-        ToolpathSection section = new ToolpathSection("pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(),
-                new Vec3(s0.x(), s0.y(), safe), moves.list());
+        ToolpathSection section = new ToolpathSection(
+                "pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(), new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
     }
 
@@ -519,9 +523,14 @@ public final class RegionPocket {
         double len = loop.length();
         double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
         if (!(len >= 1e-3) || !(need <= Entries.MAX_STEPS)) {
-            throw new ToolTooLargeException(String.format(java.util.Locale.ROOT, "a loop of %.4f mm at X%.3f Y%.3f"
-                    + " leaves no room for a ramp no steeper than %.1f deg: a centre-cutting tool (--centre-cutting)"
-                    + " may plunge there (--entry plunge)", len, loop.get(0).start().x(), loop.get(0).start().y(),
+            throw new ToolTooLargeException(String.format(
+                    java.util.Locale.ROOT,
+                    "a loop of %.4f mm at X%.3f Y%.3f"
+                            + " leaves no room for a ramp no steeper than %.1f deg: a centre-cutting tool (--centre-cutting)"
+                            + " may plunge there (--entry plunge)",
+                    len,
+                    loop.get(0).start().x(),
+                    loop.get(0).start().y(),
                     angleDeg));
         }
         int rounds = Math.max(1, (int) need);

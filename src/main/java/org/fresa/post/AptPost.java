@@ -61,8 +61,9 @@ final class AptPost implements NcPost {
         for (ToolpathSection s : path.sections()) {
             lines.add("$$ " + plain(s.label()) + " tool " + s.toolNumber() + " D" + num(s.toolDiameterMm()));
             if (s.toolAxis().distance(Vec3.UNIT_Z) > 1e-9) {
-                lines.add("$$ tool axis " + num(s.toolAxis().x()) + " " + num(s.toolAxis().y()) + " "
-                        + num(s.toolAxis().z()) + " is not +Z: needs the part turned or a spindle along this axis");
+                lines.add("$$ tool axis " + num(s.toolAxis().x()) + " "
+                        + num(s.toolAxis().y()) + " " + num(s.toolAxis().z())
+                        + " is not +Z: needs the part turned or a spindle along this axis");
             }
             if (s.toolNumber() != tool) {
                 lines.add("SPINDL/OFF");
@@ -157,8 +158,8 @@ final class AptPost implements NcPost {
         Vec3 s = new Vec3(round(from.x()), round(from.y()), round(from.z()));
         Vec3 radial = s.minus(c);
         radial = radial.minus(planeNormal.times(radial.dot(planeNormal)));
-        return "CIRCLE/" + num(cx) + "," + num(cy) + "," + num(cz) + "," + unit(axis.x()) + "," + unit(axis.y())
-                + "," + unit(axis.z()) + "," + num(radial.norm());
+        return "CIRCLE/" + num(cx) + "," + num(cy) + "," + num(cz) + "," + unit(axis.x()) + "," + unit(axis.y()) + ","
+                + unit(axis.z()) + "," + num(radial.norm());
     }
 
     private static double round(double v) {

@@ -8,7 +8,10 @@ import java.util.Optional;
  * the thesis's 7M is a milling control only.
  */
 public enum CuttingPost {
-    LINUXCNC(Dialect.LINUXCNC), ISO(Dialect.ISO), FANUC(Dialect.FANUC), SIEMENS_840D(Dialect.SIEMENS_840D);
+    LINUXCNC(Dialect.LINUXCNC),
+    ISO(Dialect.ISO),
+    FANUC(Dialect.FANUC),
+    SIEMENS_840D(Dialect.SIEMENS_840D);
 
     private final Dialect dialect;
 

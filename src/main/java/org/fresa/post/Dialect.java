@@ -37,7 +37,12 @@ public enum Dialect {
     private final String turnAddress;
     private final double mmPerUnit;
 
-    Dialect(String id, boolean numbered, String dwellWord, boolean dwellNeedsPoint, String turnAddress,
+    Dialect(
+            String id,
+            boolean numbered,
+            String dwellWord,
+            boolean dwellNeedsPoint,
+            String turnAddress,
             double mmPerUnit) {
         this.id = id;
         this.numbered = numbered;

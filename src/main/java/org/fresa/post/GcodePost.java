@@ -51,8 +51,8 @@ final class GcodePost implements NcPost {
      * @param safeEnd blocks of the safe end: stop the spindle, cancel modes, end the program
      * @param trailer lines after the last numbered block (tape end), unnumbered
      */
-    record Frame(Function<String, List<String>> header, List<String> safeStart, List<String> safeEnd,
-            List<String> trailer) {
+    record Frame(
+            Function<String, List<String>> header, List<String> safeStart, List<String> safeEnd, List<String> trailer) {
         Frame {
             safeStart = List.copyOf(safeStart);
             safeEnd = List.copyOf(safeEnd);
@@ -124,7 +124,6 @@ final class GcodePost implements NcPost {
         return String.format(Locale.ROOT, "%.3f", s);
     }
 
-
     @Override
     public void write(Toolpath path, String programName, Writer out) throws IOException {
         Program p = new Program(dialect.numbered());
@@ -142,8 +141,9 @@ final class GcodePost implements NcPost {
         for (ToolpathSection s : path.sections()) {
             p.raw(comment(s.label() + " tool " + s.toolNumber() + " D" + num(s.toolDiameterMm())));
             if (s.toolAxis().distance(Vec3.UNIT_Z) > 1e-9) {
-                p.raw(comment("tool axis " + num(s.toolAxis().x()) + " " + num(s.toolAxis().y()) + " "
-                        + num(s.toolAxis().z()) + " is not +Z: needs the part turned or a spindle along this axis"));
+                p.raw(comment("tool axis " + num(s.toolAxis().x()) + " "
+                        + num(s.toolAxis().y()) + " " + num(s.toolAxis().z())
+                        + " is not +Z: needs the part turned or a spindle along this axis"));
             }
             if (s.toolNumber() != tool) {
                 dialect.toolChange(s.toolNumber()).forEach(p::block);
@@ -270,7 +270,9 @@ final class GcodePost implements NcPost {
 
     /** The principal planes: their G word and the centre words of an arc in them. */
     enum Plane {
-        XY("G17", Vec3.UNIT_Z), XZ("G18", Vec3.UNIT_Y), YZ("G19", Vec3.UNIT_X);
+        XY("G17", Vec3.UNIT_Z),
+        XZ("G18", Vec3.UNIT_Y),
+        YZ("G19", Vec3.UNIT_X);
 
         final String word;
         final Vec3 axis;

@@ -42,16 +42,31 @@ public final class KrlWriter implements RobotProgramWriter {
         sb.append("&ACCESS RVP\n&REL 1\n&PARAM TEMPLATE = C:\\KRC\\Roboter\\Template\\vorgabe\n&PARAM EDITMASK = *\n");
         sb.append("DEF ").append(name).append("( )\n");
         sb.append(";FOLD INI\n  BAS (#INITMOV,0 )\n;ENDFOLD (INI)\n");
-        sb.append("; Fresa robot program for ").append(p.robotName()).append(": ").append(p.motions().size())
+        sb.append("; Fresa robot program for ")
+                .append(p.robotName())
+                .append(": ")
+                .append(p.motions().size())
                 .append(" motions, base frame 0 (the robot base frame), TOOL_DATA[n] the TCP of tool n in the flange"
                         + " frame\n");
         sb.append("$BASE = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
         for (RobotProgram.ToolFrame t : p.tools()) {
             Vec3 at = t.tcp().translationPart();
             Vec3 abc = t.tcp().zyxAnglesDeg();
-            sb.append("TOOL_DATA[").append(t.number()).append("] = {X ").append(f(at.x(), 3)).append(",Y ")
-                    .append(f(at.y(), 3)).append(",Z ").append(f(at.z(), 3)).append(",A ").append(f(abc.x(), 6))
-                    .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6)).append("}\n");
+            sb.append("TOOL_DATA[")
+                    .append(t.number())
+                    .append("] = {X ")
+                    .append(f(at.x(), 3))
+                    .append(",Y ")
+                    .append(f(at.y(), 3))
+                    .append(",Z ")
+                    .append(f(at.z(), 3))
+                    .append(",A ")
+                    .append(f(abc.x(), 6))
+                    .append(",B ")
+                    .append(f(abc.y(), 6))
+                    .append(",C ")
+                    .append(f(abc.z(), 6))
+                    .append("}\n");
         }
         int tool = -1;
         double apo = 0;
@@ -80,7 +95,11 @@ public final class KrlWriter implements RobotProgramWriter {
             if (m.type() == RobotProgram.MotionType.JOINT) {
                 sb.append("PTP {AXIS: ");
                 for (int i = 0; i < m.jointValues().size(); i++) {
-                    sb.append(i > 0 ? "," : "").append('A').append(i + 1).append(' ').append(f(m.joint(i), 6));
+                    sb.append(i > 0 ? "," : "")
+                            .append('A')
+                            .append(i + 1)
+                            .append(' ')
+                            .append(f(m.joint(i), 6));
                 }
                 sb.append("}");
             } else {
@@ -91,10 +110,22 @@ public final class KrlWriter implements RobotProgramWriter {
                 }
                 Vec3 pos = m.target().translationPart();
                 Vec3 abc = m.target().zyxAnglesDeg();
-                sb.append("LIN {E6POS: X ").append(f(pos.x(), 3)).append(",Y ").append(f(pos.y(), 3))
-                        .append(",Z ").append(f(pos.z(), 3)).append(",A ").append(f(abc.x(), 6))
-                        .append(",B ").append(f(abc.y(), 6)).append(",C ").append(f(abc.z(), 6))
-                        .append(",S 'B").append(bits(status(m), 3)).append("',T 'B").append(bits(turn(m), 6))
+                sb.append("LIN {E6POS: X ")
+                        .append(f(pos.x(), 3))
+                        .append(",Y ")
+                        .append(f(pos.y(), 3))
+                        .append(",Z ")
+                        .append(f(pos.z(), 3))
+                        .append(",A ")
+                        .append(f(abc.x(), 6))
+                        .append(",B ")
+                        .append(f(abc.y(), 6))
+                        .append(",C ")
+                        .append(f(abc.z(), 6))
+                        .append(",S 'B")
+                        .append(bits(status(m), 3))
+                        .append("',T 'B")
+                        .append(bits(turn(m), 6))
                         .append("'}");
                 if (m.zoneMm() > 0) {
                     sb.append(" C_DIS");
@@ -125,7 +156,10 @@ public final class KrlWriter implements RobotProgramWriter {
     private static void spindle(StringBuilder sb, double rpm) {
         if (rpm > 0) {
             sb.append("; spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
-            sb.append(SPINDLE_SPEED).append(" = ").append(f(rpm / SPINDLE_FULL_SCALE_RPM, 6)).append('\n');
+            sb.append(SPINDLE_SPEED)
+                    .append(" = ")
+                    .append(f(rpm / SPINDLE_FULL_SCALE_RPM, 6))
+                    .append('\n');
             sb.append(SPINDLE_ON).append(" = TRUE\n");
             sb.append("WAIT SEC ").append(f(RapidWriter.SPINDLE_RUN_UP_S, 1)).append('\n');
         } else {
@@ -181,5 +215,4 @@ public final class KrlWriter implements RobotProgramWriter {
     static String f(double v, int decimals) {
         return RapidWriter.f(v, decimals);
     }
-
 }

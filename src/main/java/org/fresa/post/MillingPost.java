@@ -7,7 +7,11 @@ import java.util.Locale;
  * {@code iso}, {@code fanuc}, {@code 840d}, and the APT / CL-data post {@code apt}.
  */
 public enum MillingPost {
-    LINUXCNC("linuxcnc"), ISO("iso"), FANUC("fanuc"), SIEMENS_840D("840d"), APT("apt");
+    LINUXCNC("linuxcnc"),
+    ISO("iso"),
+    FANUC("fanuc"),
+    SIEMENS_840D("840d"),
+    APT("apt");
 
     private final String word;
 

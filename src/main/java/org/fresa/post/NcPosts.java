@@ -23,27 +23,51 @@ public final class NcPosts {
     private static final List<NcPost> ALL = List.of(
             // LinuxCNC's RS274/NGC: no block numbers, tool length offset G43 Hn after the tool change,
             // extra helix turns as the P word (P = turns + 1)
-            new GcodePost("linuxcnc", "LinuxCNC RS274/NGC (default): G21 G90, G02/G03 in G17/G18/G19, helix turns as P,"
-                    + " T M6 G43", Dialect.LINUXCNC, new GcodePost.Frame(name -> TAPE,
-                    List.of("G21 G90 G94 G17 G40 G49 G80 G54 G91.1"), List.of("M5", "G40 G49 G80", "M30"), TAPE),
+            new GcodePost(
+                    "linuxcnc",
+                    "LinuxCNC RS274/NGC (default): G21 G90, G02/G03 in G17/G18/G19, helix turns as P," + " T M6 G43",
+                    Dialect.LINUXCNC,
+                    new GcodePost.Frame(
+                            name -> TAPE,
+                            List.of("G21 G90 G94 G17 G40 G49 G80 G54 G91.1"),
+                            List.of("M5", "G40 G49 G80", "M30"),
+                            TAPE),
                     CHORD_TOLERANCE_MM),
             // plain ISO 6983-1, the common subset most controls read: G21 for millimetres (the de facto
             // code; ISO 6983 itself reserves G71), no tool length offset word (the control's tool data
             // applies it), no turn word: multi-turn helices are one block per turn
-            new GcodePost("iso", "plain ISO 6983: N-numbered blocks, G21 G90, G02/G03 with I/J/K, one block per helix turn",
-                    Dialect.ISO, new GcodePost.Frame(name -> TAPE, List.of("G21 G90 G94 G17 G40 G80"),
-                    List.of("M5", "G40 G80", "M30"), TAPE), CHORD_TOLERANCE_MM),
+            new GcodePost(
+                    "iso",
+                    "plain ISO 6983: N-numbered blocks, G21 G90, G02/G03 with I/J/K, one block per helix turn",
+                    Dialect.ISO,
+                    new GcodePost.Frame(
+                            name -> TAPE, List.of("G21 G90 G94 G17 G40 G80"), List.of("M5", "G40 G80", "M30"), TAPE),
+                    CHORD_TOLERANCE_MM),
             // Fanuc 0i/30i-style milling: tape marks, an O program number, every coordinate with a
             // decimal point, no turn word (one block per helix turn)
-            new GcodePost("fanuc", "Fanuc milling: O number, N blocks, G21 G90, T M06 G43 H, G02/G03 with I/J/K",
-                    Dialect.FANUC, new GcodePost.Frame(name -> List.of("%", "O1000"),
-                    List.of("G21 G90 G94 G17 G40 G49 G80"), List.of("M05", "G40 G49 G80", "M30"), TAPE),
+            new GcodePost(
+                    "fanuc",
+                    "Fanuc milling: O number, N blocks, G21 G90, T M06 G43 H, G02/G03 with I/J/K",
+                    Dialect.FANUC,
+                    new GcodePost.Frame(
+                            name -> List.of("%", "O1000"),
+                            List.of("G21 G90 G94 G17 G40 G49 G80"),
+                            List.of("M05", "G40 G49 G80", "M30"),
+                            TAPE),
                     CHORD_TOLERANCE_MM),
             // Siemens Sinumerik 840D in Siemens mode: G71 for millimetres, plain G0/G1/G2/G3 moves without
             // cycles, centre words I/J/K incremental from the start point (the 840D default)
-            new GcodePost("840d", "Siemens Sinumerik 840D: ; comments, N blocks, G71 G90, T D1 M6, plain G2/G3 with"
-                    + " incremental I/J/K, TURN=", Dialect.SIEMENS_840D, new GcodePost.Frame(NcPosts::siemensHeader,
-                    List.of("G71 G90 G94 G17 G40 G60"), List.of("M5", "G40", "M30"), List.of()), CHORD_TOLERANCE_MM),
+            new GcodePost(
+                    "840d",
+                    "Siemens Sinumerik 840D: ; comments, N blocks, G71 G90, T D1 M6, plain G2/G3 with"
+                            + " incremental I/J/K, TURN=",
+                    Dialect.SIEMENS_840D,
+                    new GcodePost.Frame(
+                            NcPosts::siemensHeader,
+                            List.of("G71 G90 G94 G17 G40 G60"),
+                            List.of("M5", "G40", "M30"),
+                            List.of()),
+                    CHORD_TOLERANCE_MM),
             new AptPost());
 
     /** The 840D's file header: the part program's name in upper case, starting with a letter. */
@@ -55,8 +79,7 @@ public final class NcPosts {
         return List.of("%_N_" + name + "_MPF", ";$PATH=/_N_MPF_DIR");
     }
 
-    private NcPosts() {
-    }
+    private NcPosts() {}
 
     /** The post with this name (case-insensitive), or empty. */
     public static Optional<NcPost> byName(String name) {

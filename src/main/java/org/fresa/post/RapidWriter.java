@@ -57,14 +57,30 @@ public final class RapidWriter implements RobotProgramWriter {
         String module = RobotProgramWriter.identifier(p.programName(), 32);
         StringBuilder sb = new StringBuilder(64 * (p.motions().size() + 20));
         sb.append("MODULE ").append(module).append('\n');
-        sb.append("  ! Fresa robot program for ").append(p.robotName()).append(": ")
-                .append(p.motions().size()).append(" motions\n");
+        sb.append("  ! Fresa robot program for ")
+                .append(p.robotName())
+                .append(": ")
+                .append(p.motions().size())
+                .append(" motions\n");
         for (RobotProgram.ToolFrame t : p.tools()) {
             Vec3 at = t.tcp().translationPart();
             Quaternion q = Quaternion.of(t.tcp());
-            sb.append("  PERS tooldata ").append(toolName(t)).append(" := [TRUE,[[").append(f(at.x(), 3)).append(',')
-                    .append(f(at.y(), 3)).append(',').append(f(at.z(), 3)).append("],[").append(f(q.w(), 8))
-                    .append(',').append(f(q.x(), 8)).append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8))
+            sb.append("  PERS tooldata ")
+                    .append(toolName(t))
+                    .append(" := [TRUE,[[")
+                    .append(f(at.x(), 3))
+                    .append(',')
+                    .append(f(at.y(), 3))
+                    .append(',')
+                    .append(f(at.z(), 3))
+                    .append("],[")
+                    .append(f(q.w(), 8))
+                    .append(',')
+                    .append(f(q.x(), 8))
+                    .append(',')
+                    .append(f(q.y(), 8))
+                    .append(',')
+                    .append(f(q.z(), 8))
                     .append("]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
         }
         sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
@@ -95,17 +111,39 @@ public final class RapidWriter implements RobotProgramWriter {
                     }
                     sb.append(i < m.jointValues().size() ? f(m.joint(i), 6) : "0");
                 }
-                sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
+                sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],")
+                        .append(speed)
+                        .append(',')
+                        .append(zone)
+                        .append(',')
+                        .append(toolName(p.toolOf(m.workingstep())))
+                        .append("\\WObj:=wFresa;");
             } else {
                 Vec3 pos = m.target().translationPart();
                 Quaternion q = Quaternion.of(m.target());
-                sb.append("    MoveL [[").append(f(pos.x(), 3)).append(',').append(f(pos.y(), 3)).append(',')
-                        .append(f(pos.z(), 3)).append("],[").append(f(q.w(), 8)).append(',').append(f(q.x(), 8))
-                        .append(',').append(f(q.y(), 8)).append(',').append(f(q.z(), 8)).append("],[")
+                sb.append("    MoveL [[")
+                        .append(f(pos.x(), 3))
+                        .append(',')
+                        .append(f(pos.y(), 3))
+                        .append(',')
+                        .append(f(pos.z(), 3))
+                        .append("],[")
+                        .append(f(q.w(), 8))
+                        .append(',')
+                        .append(f(q.x(), 8))
+                        .append(',')
+                        .append(f(q.y(), 8))
+                        .append(',')
+                        .append(f(q.z(), 8))
+                        .append("],[")
                         .append(confdata(m, arm))
-                        .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],").append(speed).append(',').append(zone)
-                        .append(',').append(toolName(p.toolOf(m.workingstep()))).append("\\WObj:=wFresa;");
+                        .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],")
+                        .append(speed)
+                        .append(',')
+                        .append(zone)
+                        .append(',')
+                        .append(toolName(p.toolOf(m.workingstep())))
+                        .append("\\WObj:=wFresa;");
                 // the joints the trajectory found for this robtarget, so a reader can check them
                 sb.append(" ! j=[");
                 for (int i = 0; i < 6; i++) {
@@ -134,7 +172,11 @@ public final class RapidWriter implements RobotProgramWriter {
     private static void spindle(StringBuilder sb, double rpm) {
         if (rpm > 0) {
             sb.append("    ! spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
-            sb.append("    SetAO ").append(SPINDLE_RPM).append(", ").append(f(rpm, 0)).append(";\n");
+            sb.append("    SetAO ")
+                    .append(SPINDLE_RPM)
+                    .append(", ")
+                    .append(f(rpm, 0))
+                    .append(";\n");
             sb.append("    SetDO ").append(SPINDLE_ON).append(", 1;\n");
             sb.append("    WaitTime ").append(f(SPINDLE_RUN_UP_S, 1)).append(";\n");
         } else {
@@ -207,7 +249,8 @@ public final class RapidWriter implements RobotProgramWriter {
                 return z == 0.3 ? "z0" : "z" + (int) z;
             }
         }
-        return "[FALSE," + f(mm, 3) + "," + f(1.5 * mm, 3) + "," + f(1.5 * mm, 3) + ",0.15," + f(1.5 * mm, 3) + ",0.15]";
+        return "[FALSE," + f(mm, 3) + "," + f(1.5 * mm, 3) + "," + f(1.5 * mm, 3) + ",0.15," + f(1.5 * mm, 3)
+                + ",0.15]";
     }
 
     static String f(double v, int decimals) {

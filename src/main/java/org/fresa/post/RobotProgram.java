@@ -15,8 +15,8 @@ import org.fresa.geom.Transform3;
  * @param motions the motions in order
  * @param tools the tool frames, at least one; each motion uses the one of its workingstep
  */
-public record RobotProgram(String programName, String robotName, List<Joint> joints, List<Motion> motions,
-        List<ToolFrame> tools) {
+public record RobotProgram(
+        String programName, String robotName, List<Joint> joints, List<Motion> motions, List<ToolFrame> tools) {
 
     public RobotProgram {
         Objects.requireNonNull(programName, "programName");
@@ -29,8 +29,8 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
         }
         for (Motion m : motions) {
             if (m.jointValues().size() != joints.size()) {
-                throw new IllegalArgumentException("motion " + m.index() + " has " + m.jointValues().size()
-                        + " joint values for " + joints.size() + " joints");
+                throw new IllegalArgumentException("motion " + m.index() + " has "
+                        + m.jointValues().size() + " joint values for " + joints.size() + " joints");
             }
         }
     }
@@ -70,7 +70,8 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
 
     /** Revolute joints move in degrees, prismatic ones in millimetres. */
     public enum JointType {
-        REVOLUTE("deg"), PRISMATIC("mm");
+        REVOLUTE("deg"),
+        PRISMATIC("mm");
 
         private final String unit;
 
@@ -93,12 +94,14 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
 
     /** How the robot moves to a point: interpolated in joints, or on a straight line of the tool tip. */
     public enum MotionType {
-        JOINT, LINEAR
+        JOINT,
+        LINEAR
     }
 
     /** What the point is for: on the part, or a relink point lifted off the part. */
     public enum PointRole {
-        PART, RELINK
+        PART,
+        RELINK
     }
 
     /**
@@ -116,12 +119,28 @@ public record RobotProgram(String programName, String robotName, List<Joint> joi
      *     dwell is a fine point
      * @param spindleRpm the spindle speed while the robot makes the motion, rpm; 0 with the spindle stopped
      */
-    public record Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
-            Transform3 target, double speedMmPerS, double zoneMm, double dwellS, double spindleRpm) {
+    public record Motion(
+            int index,
+            String workingstep,
+            MotionType type,
+            PointRole role,
+            List<Double> jointValues,
+            Transform3 target,
+            double speedMmPerS,
+            double zoneMm,
+            double dwellS,
+            double spindleRpm) {
 
         /** A motion without a dwell, with the spindle stopped. */
-        public Motion(int index, String workingstep, MotionType type, PointRole role, List<Double> jointValues,
-                Transform3 target, double speedMmPerS, double zoneMm) {
+        public Motion(
+                int index,
+                String workingstep,
+                MotionType type,
+                PointRole role,
+                List<Double> jointValues,
+                Transform3 target,
+                double speedMmPerS,
+                double zoneMm) {
             this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0, 0);
         }
 

@@ -47,7 +47,8 @@ public final class SheetCuttingPost {
     }
 
     /** Writes the whole program. */
-    public static void write(Toolpath path, String programName, Job job, CuttingPost post, Writer out) throws IOException {
+    public static void write(Toolpath path, String programName, Job job, CuttingPost post, Writer out)
+            throws IOException {
         write(path.sections(), programName, job, post, out);
     }
 
@@ -55,8 +56,9 @@ public final class SheetCuttingPost {
      * Writes the whole program block by block as the sections come: a section is needed only while
      * its blocks are written, so a sheet of any size is posted without its toolpath held whole.
      */
-    public static void write(Iterable<ToolpathSection> sections, String programName, Job job, CuttingPost post,
-            Writer out) throws IOException {
+    public static void write(
+            Iterable<ToolpathSection> sections, String programName, Job job, CuttingPost post, Writer out)
+            throws IOException {
         new SheetCuttingPost(post.dialect()).run(sections, programName, job, out);
     }
 
@@ -119,14 +121,21 @@ public final class SheetCuttingPost {
                         }
                     }
                     if (m instanceof Move.Linear l) {
-                        line(out, pre + "G1 X" + num(l.end().x()) + " Y" + num(l.end().y()) + feed(l.feedMmPerMin(), feed));
+                        line(
+                                out,
+                                pre + "G1 X" + num(l.end().x()) + " Y"
+                                        + num(l.end().y()) + feed(l.feedMmPerMin(), feed));
                         feed = l.feedMmPerMin();
                     } else {
                         Move.Circular c = (Move.Circular) m;
                         boolean ccw = c.ccw() == (c.normal().z() > 0);
-                        line(out, pre + (ccw ? "G3" : "G2") + " X" + num(c.end().x()) + " Y" + num(c.end().y())
-                                + " I" + num(c.center().x() - at.x()) + " J" + num(c.center().y() - at.y())
-                                + feed(c.feedMmPerMin(), feed));
+                        line(
+                                out,
+                                pre + (ccw ? "G3" : "G2") + " X" + num(c.end().x()) + " Y"
+                                        + num(c.end().y())
+                                        + " I" + num(c.center().x() - at.x()) + " J"
+                                        + num(c.center().y() - at.y())
+                                        + feed(c.feedMmPerMin(), feed));
                         feed = c.feedMmPerMin();
                     }
                     if (k == lastFeed) {

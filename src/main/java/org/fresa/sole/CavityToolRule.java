@@ -20,8 +20,7 @@ import org.fresa.geom.Curve2;
  */
 public final class CavityToolRule {
 
-    private CavityToolRule() {
-    }
+    private CavityToolRule() {}
 
     /**
      * The tightest inward arc that the tool cannot follow.
@@ -35,11 +34,17 @@ public final class CavityToolRule {
 
         /** The refusal in the planner's words. */
         public String sentence() {
-            return String.format(Locale.ROOT,
+            return String.format(
+                    Locale.ROOT,
                     "the %.3f mm cavity tool is not smaller than the outline's arc %d (centre %.3f, %.3f; diameter %.3f mm):"
                             + " its centre cannot follow that arc; choose a tool below %.3f mm",
-                    toolDiameterMm, elementIndex, arc.center().x(), arc.center().y(), 2 * arc.radius(),
-                    toolDiameterMm, 2 * arc.radius());
+                    toolDiameterMm,
+                    elementIndex,
+                    arc.center().x(),
+                    arc.center().y(),
+                    2 * arc.radius(),
+                    toolDiameterMm,
+                    2 * arc.radius());
         }
     }
 

@@ -12,8 +12,7 @@ import org.fresa.geom.Vec2;
  * ahead of the tool), and which way the tool turns onto the next circle.
  */
 final class CircleWalk {
-    private CircleWalk() {
-    }
+    private CircleWalk() {}
 
     /** The angle travelled from a to b about c in the given sense, in (0, 2 pi]. */
     static double sweep(Vec2 c, Vec2 a, Vec2 b, boolean ccw) {

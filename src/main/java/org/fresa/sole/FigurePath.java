@@ -27,6 +27,7 @@ public record FigurePath(boolean joinsPrevious, List<Stroke> strokes, boolean st
     }
 
     public FigurePath mapped(Similarity2 t) {
-        return new FigurePath(joinsPrevious, strokes.stream().map(s -> s.mapped(t)).toList(), staysDown);
+        return new FigurePath(
+                joinsPrevious, strokes.stream().map(s -> s.mapped(t)).toList(), staysDown);
     }
 }

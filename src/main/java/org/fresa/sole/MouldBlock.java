@@ -34,8 +34,13 @@ import org.fresa.model.ToolpathSection;
  * @param blockLengthMm CM, the block's length along y
  * @param pattern the base size's extents about its part zero
  */
-public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirrorOffsetMm, double blockEdgeMm,
-        double blockLengthMm, Pattern pattern) {
+public record MouldBlock(
+        double pairGapMm,
+        double mirrorStationMm,
+        double mirrorOffsetMm,
+        double blockEdgeMm,
+        double blockLengthMm,
+        Pattern pattern) {
 
     public MouldBlock {
         atLeastZero(pairGapMm, "pairGapMm");
@@ -63,7 +68,9 @@ public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirror
 
         /** The extents measured on the right sole's outline, whose part zero is {@code zero}. */
         public static Pattern measured(Box2 outlineBounds, Vec2 zero) {
-            return new Pattern(outlineBounds.maxY() - outlineBounds.minY(), zero.y() - outlineBounds.minY(),
+            return new Pattern(
+                    outlineBounds.maxY() - outlineBounds.minY(),
+                    zero.y() - outlineBounds.minY(),
                     zero.x() - outlineBounds.minX());
         }
     }
@@ -92,10 +99,21 @@ public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirror
                 for (Move m : s.moves()) {
                     moves.add(shifted(m, by));
                 }
-                String label = String.format(java.util.Locale.ROOT, "%s foot, part zero X%.3f Y%.3f: %s", foot.id(),
-                        machineMm.x(), machineMm.y(), s.label());
-                out.add(new ToolpathSection(label, s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(),
-                        s.start().plus(by), moves));
+                String label = String.format(
+                        java.util.Locale.ROOT,
+                        "%s foot, part zero X%.3f Y%.3f: %s",
+                        foot.id(),
+                        machineMm.x(),
+                        machineMm.y(),
+                        s.label());
+                out.add(new ToolpathSection(
+                        label,
+                        s.toolAxis(),
+                        s.toolDiameterMm(),
+                        s.toolNumber(),
+                        s.spindleRpm(),
+                        s.start().plus(by),
+                        moves));
             }
             return new Toolpath(out);
         }
@@ -111,8 +129,8 @@ public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirror
             } else if (m instanceof Move.Linear l) {
                 return new Move.Linear(l.end().plus(by), l.feedMmPerMin());
             } else if (m instanceof Move.Circular c) {
-                return new Move.Circular(c.end().plus(by), c.center().plus(by), c.normal(), c.ccw(), c.turns(),
-                        c.feedMmPerMin());
+                return new Move.Circular(
+                        c.end().plus(by), c.center().plus(by), c.normal(), c.ccw(), c.turns(), c.feedMmPerMin());
             } else if (m instanceof Move.Dwell d) {
                 return new Move.Dwell(d.end().plus(by), d.seconds());
             } else if (m instanceof Move.SpindleStop st) {
@@ -147,8 +165,11 @@ public record MouldBlock(double pairGapMm, double mirrorStationMm, double mirror
     public Optional<String> misfit(SizeScale s) {
         double cp = pattern.lengthMm() * s.lengthFactor();
         if (cp > blockLengthMm) {
-            return Optional.of(String.format(java.util.Locale.ROOT,
-                    "size %s: the pattern is %.3f mm long, the mould block only %.3f mm", s.label(), cp,
+            return Optional.of(String.format(
+                    java.util.Locale.ROOT,
+                    "size %s: the pattern is %.3f mm long, the mould block only %.3f mm",
+                    s.label(),
+                    cp,
                     blockLengthMm));
         }
         return Optional.empty();

@@ -7,7 +7,12 @@ import java.util.Locale;
  * grid, round a centre, filling the sole, or at explicit copies.
  */
 public enum PatternKind {
-    SINGLE, LINEAR, GRID, POLAR, FILL, COPIES;
+    SINGLE,
+    LINEAR,
+    GRID,
+    POLAR,
+    FILL,
+    COPIES;
 
     /** The name as written: {@code single}, {@code linear}, ... */
     public String word() {

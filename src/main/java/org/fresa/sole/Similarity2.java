@@ -91,8 +91,7 @@ public record Similarity2(double a, double b, double c, double d, Vec2 t) {
 
     /** First this, then next. */
     public Similarity2 then(Similarity2 n) {
-        return new Similarity2(n.a * a + n.b * c, n.a * b + n.b * d, n.c * a + n.d * c, n.c * b + n.d * d,
-                n.apply(t));
+        return new Similarity2(n.a * a + n.b * c, n.a * b + n.b * d, n.c * a + n.d * c, n.c * b + n.d * d, n.apply(t));
     }
 
     public Similarity2 inverse() {

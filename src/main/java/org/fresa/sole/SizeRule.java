@@ -22,7 +22,9 @@ import java.util.Locale;
  * </ul>
  */
 public enum SizeRule {
-    HELD, POSITION, SCALED;
+    HELD,
+    POSITION,
+    SCALED;
 
     public String id() {
         return name().toLowerCase(Locale.ROOT);

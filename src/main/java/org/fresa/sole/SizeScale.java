@@ -32,6 +32,7 @@ public record SizeScale(String label, Vec2 origin, double widthFactor, double le
 
     /** The pantograph image of a point. */
     public Vec2 graded(Vec2 p) {
-        return Vec2.of(origin.x() + widthFactor * (p.x() - origin.x()), origin.y() + lengthFactor * (p.y() - origin.y()));
+        return Vec2.of(
+                origin.x() + widthFactor * (p.x() - origin.x()), origin.y() + lengthFactor * (p.y() - origin.y()));
     }
 }

@@ -79,14 +79,20 @@ public record SoleTread(List<TreadItem> items, double marginMm) {
      *
      * @param toolRadiusMm the radius of each tool id
      */
-    public List<ToolGrooves> grooves(SizeScale size, Foot foot, Contour rightOutline,
-            java.util.function.ToDoubleFunction<String> toolRadiusMm, Tolerance tol) {
-        Contour outline = foot == Foot.RIGHT ? rightOutline : mirrored(rightOutline, size.origin().x());
+    public List<ToolGrooves> grooves(
+            SizeScale size,
+            Foot foot,
+            Contour rightOutline,
+            java.util.function.ToDoubleFunction<String> toolRadiusMm,
+            Tolerance tol) {
+        Contour outline = foot == Foot.RIGHT
+                ? rightOutline
+                : mirrored(rightOutline, size.origin().x());
         java.util.Map<String, TreadClipper> clippers = new java.util.HashMap<>();
         List<ToolGrooves> out = new ArrayList<>();
         for (TreadItem item : items) {
-            TreadClipper clipper = clippers.computeIfAbsent(item.toolId(),
-                    id -> TreadClipper.of(outline, marginMm + toolRadiusMm.applyAsDouble(id), tol));
+            TreadClipper clipper = clippers.computeIfAbsent(
+                    item.toolId(), id -> TreadClipper.of(outline, marginMm + toolRadiusMm.applyAsDouble(id), tol));
             List<Stroke> kept = clipper.clip(placed(item, size, foot, tol));
             if (!out.isEmpty() && out.get(out.size() - 1).toolId().equals(item.toolId())) {
                 List<Stroke> all = new ArrayList<>(out.get(out.size() - 1).strokes());
@@ -149,7 +155,8 @@ public record SoleTread(List<TreadItem> items, double marginMm) {
         double a2 = a.dot(a);
         double b2 = b.dot(b);
         double c2 = c.dot(c);
-        return Vec2.of((a2 * (b.y() - c.y()) + b2 * (c.y() - a.y()) + c2 * (a.y() - b.y())) / d,
+        return Vec2.of(
+                (a2 * (b.y() - c.y()) + b2 * (c.y() - a.y()) + c2 * (a.y() - b.y())) / d,
                 (a2 * (c.x() - b.x()) + b2 * (a.x() - c.x()) + c2 * (b.x() - a.x())) / d);
     }
 }

@@ -27,8 +27,7 @@ public final class SpecialDesigns {
     /** The macro names of the special designs, groups F to J. */
     public static final List<String> MACROS = List.of("PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO");
 
-    private SpecialDesigns() {
-    }
+    private SpecialDesigns() {}
 
     /** The group of Table 5.2 a special design's macro makes, with the thesis's description. */
     public static String group(String macro) {
@@ -136,7 +135,8 @@ public final class SpecialDesigns {
         }
 
         public FigurePath path(Vec2 at, Tolerance tol) {
-            return field(lattice(Vec2.of(xo, yo), dir(angDeg).times(p), dir(angDeg + 90).times(p), n1, n2));
+            return field(lattice(
+                    Vec2.of(xo, yo), dir(angDeg).times(p), dir(angDeg + 90).times(p), n1, n2));
         }
     }
 
@@ -309,7 +309,8 @@ public final class SpecialDesigns {
 
         public FigurePath path(Vec2 at, Tolerance tol) {
             Box2 b = extents(chains);
-            Similarity2 t = Similarity2.translation(-b.minX(), -b.minY()).then(Similarity2.scale(Vec2.ZERO, h / b.height()))
+            Similarity2 t = Similarity2.translation(-b.minX(), -b.minY())
+                    .then(Similarity2.scale(Vec2.ZERO, h / b.height()))
                     .then(Similarity2.translation(x, y));
             List<Stroke> out = new ArrayList<>();
             for (List<Curve2> c : chains) {

@@ -41,8 +41,7 @@ public sealed interface TreadFigure {
      * The special designs of Table 5.2 (groups F to J), which the thesis's library does not
      * cover: {@link SpecialDesigns}.
      */
-    non-sealed interface Special extends TreadFigure {
-    }
+    non-sealed interface Special extends TreadFigure {}
 
     /** The thesis's macro name, e.g. {@code SUB1A}. */
     String macro();
@@ -110,8 +109,8 @@ public sealed interface TreadFigure {
         }
 
         public FigurePath path(Vec2 at, Tolerance tol) {
-            return new FigurePath(false, List.of(new Stroke(List.of(Vec2.of(xf1, yf1)), Vec2.of(xf2, yf2), List.of())),
-                    true);
+            return new FigurePath(
+                    false, List.of(new Stroke(List.of(Vec2.of(xf1, yf1)), Vec2.of(xf2, yf2), List.of())), true);
         }
     }
 
@@ -125,7 +124,8 @@ public sealed interface TreadFigure {
         }
 
         public FigurePath path(Vec2 at, Tolerance tol) {
-            return discontinuous(Stroke.of(Vec2.of(xa1, ya1), List.of(Segment2.of(xa1, ya1, xb1, ya1))),
+            return discontinuous(
+                    Stroke.of(Vec2.of(xa1, ya1), List.of(Segment2.of(xa1, ya1, xb1, ya1))),
                     Stroke.of(Vec2.of(xc1, yc1), List.of(Segment2.of(xc1, yc1, xd1, yc1))));
         }
     }
@@ -140,7 +140,8 @@ public sealed interface TreadFigure {
         }
 
         public FigurePath path(Vec2 at, Tolerance tol) {
-            return discontinuous(Stroke.of(Vec2.of(xa1, ya1), List.of(Segment2.of(xa1, ya1, xa1, yb1))),
+            return discontinuous(
+                    Stroke.of(Vec2.of(xa1, ya1), List.of(Segment2.of(xa1, ya1, xa1, yb1))),
                     Stroke.of(Vec2.of(xc1, yc1), List.of(Segment2.of(xc1, yc1, xc1, yd1))));
         }
     }
@@ -277,8 +278,9 @@ public sealed interface TreadFigure {
      *
      * @param ccw the sense on circle 1 (thesis: clockwise)
      */
-    record Sub5a(double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5, double xb5,
-            boolean ccw) implements TreadFigure {
+    record Sub5a(
+            double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5, double xb5, boolean ccw)
+            implements TreadFigure {
         public String macro() {
             return "SUB5A";
         }
@@ -290,8 +292,9 @@ public sealed interface TreadFigure {
     }
 
     /** SUB5B: SUB5A as a continuous groove (a straight cut from the tool's position first). */
-    record Sub5b(double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5, double xb5,
-            boolean ccw) implements TreadFigure {
+    record Sub5b(
+            double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5, double xb5, boolean ccw)
+            implements TreadFigure {
         public String macro() {
             return "SUB5B";
         }
@@ -308,8 +311,19 @@ public sealed interface TreadFigure {
      * SUB5E: successive waves: the SUB5A pair and N pairs shifted by I * AFAS in x (N >= 1), cut
      * forward through every circle, ending at x = XB5 + N * AFAS.
      */
-    record Sub5e(double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5, double xb5,
-            double afas, int n, boolean ccw) implements TreadFigure {
+    record Sub5e(
+            double xc1,
+            double yc1,
+            double xc2,
+            double yc2,
+            double xt,
+            double yt,
+            double xa5,
+            double xb5,
+            double afas,
+            int n,
+            boolean ccw)
+            implements TreadFigure {
         public Sub5e {
             if (n < 1) {
                 throw new IllegalArgumentException("SUB5E needs N >= 1 (the macro's loop runs at least once): " + n);
@@ -374,8 +388,18 @@ public sealed interface TreadFigure {
     }
 
     /** SUB9A: from (XA9, YA9) four relative cuts B, C, D, E; closes on itself for parallelograms (group F). */
-    record Sub9a(double xa9, double ya9, double xb9, double yb9, double xc9, double yc9, double xd9, double yd9,
-            double xe9, double ye9) implements TreadFigure {
+    record Sub9a(
+            double xa9,
+            double ya9,
+            double xb9,
+            double yb9,
+            double xc9,
+            double yc9,
+            double xd9,
+            double yd9,
+            double xe9,
+            double ye9)
+            implements TreadFigure {
         public String macro() {
             return "SUB9A";
         }
@@ -394,8 +418,8 @@ public sealed interface TreadFigure {
         }
 
         public FigurePath path(Vec2 at, Tolerance tol) {
-            return new FigurePath(true,
-                    List.of(Stroke.of(at, relative(at, xb9, yb9, xc9, yc9, xd9, yd9, xe9, ye9))), true);
+            return new FigurePath(
+                    true, List.of(Stroke.of(at, relative(at, xb9, yb9, xc9, yc9, xd9, yd9, xe9, ye9))), true);
         }
     }
 }

@@ -25,9 +25,9 @@ public final class TreadFigures {
      * Every macro name: the thesis's, in its order, then the special designs of its Table 5.2
      * (groups F to J, {@link SpecialDesigns}).
      */
-    public static final List<String> MACROS = List.of("PRIM", "NOVO", "SUB1A", "SUB1B", "SUB2", "SUB3A", "SUB3B",
-            "SUB3E", "SUB4", "SUB5A", "SUB5B", "SUB5E", "SUB7A", "SUB7B", "SUB8A", "SUB8B", "SUB9A", "SUB9B",
-            "PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO");
+    public static final List<String> MACROS = List.of(
+            "PRIM", "NOVO", "SUB1A", "SUB1B", "SUB2", "SUB3A", "SUB3B", "SUB3E", "SUB4", "SUB5A", "SUB5B", "SUB5E",
+            "SUB7A", "SUB7B", "SUB8A", "SUB8B", "SUB9A", "SUB9B", "PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO");
 
     private static final Map<String, List<String>> PARAMS = new LinkedHashMap<>();
 
@@ -86,8 +86,7 @@ public final class TreadFigures {
 
     private static final Set<String> IGNORED = Set.of("I", "PROF", "AVAN");
 
-    private TreadFigures() {
-    }
+    private TreadFigures() {}
 
     /** The thesis's parameter names of a macro, in its order (without CTM, PROF, AVAN, I). */
     public static List<String> parameters(String macro) {
@@ -150,8 +149,8 @@ public final class TreadFigures {
                     throw new CamInputException(source, "figure parameter " + k + " given twice");
                 }
             } catch (NumberFormatException e) {
-                throw new CamInputException(source, "figure parameter " + k + ": expected a number, found '"
-                        + tok.substring(eq + 1) + "'");
+                throw new CamInputException(
+                        source, "figure parameter " + k + ": expected a number, found '" + tok.substring(eq + 1) + "'");
             }
         }
         return out;
@@ -173,8 +172,9 @@ public final class TreadFigures {
      *
      * @param drawing the drawing's chains of lines and arcs, in its frame
      */
-    public static TreadFigure of(String macro, Map<String, Double> params, List<List<org.fresa.geom.Curve2>> drawing,
-            String source) throws CamInputException {
+    public static TreadFigure of(
+            String macro, Map<String, Double> params, List<List<org.fresa.geom.Curve2>> drawing, String source)
+            throws CamInputException {
         String m = macro.trim().toUpperCase(Locale.ROOT);
         List<String> names = PARAMS.get(m);
         if (names == null) {
@@ -202,7 +202,8 @@ public final class TreadFigures {
         boolean ccw = p.getOrDefault("CCW", 0.0) != 0.0;
         TreadFigure f;
         try {
-            f = m.equals("LOGO") ? new SpecialDesigns.Logo(p.get("X"), p.get("Y"), p.get("H"), drawing)
+            f = m.equals("LOGO")
+                    ? new SpecialDesigns.Logo(p.get("X"), p.get("Y"), p.get("H"), drawing)
                     : build(m, p, ccw);
             f.path(Vec2.ZERO, Tolerance.DEFAULT);
         } catch (IllegalArgumentException e) {
@@ -214,57 +215,187 @@ public final class TreadFigures {
     private static TreadFigure build(String m, Map<String, Double> p, boolean ccw) {
         java.util.function.ToDoubleFunction<String> g = p::get;
         return switch (m) {
-            case "PRIM" -> new TreadFigure.Prim(g.applyAsDouble("XI"), g.applyAsDouble("YI"), g.applyAsDouble("XA1"),
-                    g.applyAsDouble("YA1"));
-            case "NOVO" -> new TreadFigure.Novo(g.applyAsDouble("XF1"), g.applyAsDouble("YF1"), g.applyAsDouble("XF2"),
-                    g.applyAsDouble("YF2"));
-            case "SUB1A" -> new TreadFigure.Sub1a(g.applyAsDouble("XA1"), g.applyAsDouble("YA1"),
-                    g.applyAsDouble("XB1"), g.applyAsDouble("YC1"), g.applyAsDouble("XC1"), g.applyAsDouble("XD1"));
-            case "SUB1B" -> new TreadFigure.Sub1b(g.applyAsDouble("XA1"), g.applyAsDouble("YA1"),
-                    g.applyAsDouble("YB1"), g.applyAsDouble("YC1"), g.applyAsDouble("XC1"), g.applyAsDouble("YD1"));
-            case "SUB2" -> new TreadFigure.Sub2(g.applyAsDouble("XA2"), g.applyAsDouble("YA2"), g.applyAsDouble("XB2"),
-                    g.applyAsDouble("YB2"));
-            case "SUB3A" -> new TreadFigure.Sub3a(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
-                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), ccw);
-            case "SUB3B" -> new TreadFigure.Sub3b(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
-                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), ccw);
-            case "SUB3E" -> new TreadFigure.Sub3e(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
-                    g.applyAsDouble("XA3"), g.applyAsDouble("XB3"), g.applyAsDouble("AFAS"), count(g, "N"), ccw);
-            case "SUB4" -> new TreadFigure.Sub4(g.applyAsDouble("XC"), g.applyAsDouble("YC"), positive(g, "RA"),
-                    g.applyAsDouble("XA4"), g.applyAsDouble("YA4"), g.applyAsDouble("XB4"), g.applyAsDouble("YB4"), ccw);
-            case "SUB5A" -> new TreadFigure.Sub5a(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
-                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
-                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), ccw);
-            case "SUB5B" -> new TreadFigure.Sub5b(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
-                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
-                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), ccw);
-            case "SUB5E" -> new TreadFigure.Sub5e(g.applyAsDouble("XC1"), g.applyAsDouble("YC1"),
-                    g.applyAsDouble("XC2"), g.applyAsDouble("YC2"), g.applyAsDouble("XT"), g.applyAsDouble("YT"),
-                    g.applyAsDouble("XA5"), g.applyAsDouble("XB5"), g.applyAsDouble("AFAS"), count(g, "N"), ccw);
-            case "SUB7A" -> new TreadFigure.Sub7a(g.applyAsDouble("XA7"), g.applyAsDouble("YA7"),
-                    g.applyAsDouble("XB7"), g.applyAsDouble("YB7"), g.applyAsDouble("XC7"), g.applyAsDouble("YC7"));
-            case "SUB7B" -> new TreadFigure.Sub7b(g.applyAsDouble("XB7"), g.applyAsDouble("YB7"),
-                    g.applyAsDouble("XC7"), g.applyAsDouble("YC7"));
-            case "SUB8A" -> new TreadFigure.Sub8a(g.applyAsDouble("XA8"), g.applyAsDouble("YA8"),
-                    g.applyAsDouble("XB8"), g.applyAsDouble("YB8"), g.applyAsDouble("XC8"), g.applyAsDouble("YC8"),
-                    g.applyAsDouble("XD8"), g.applyAsDouble("YD8"));
-            case "SUB8B" -> new TreadFigure.Sub8b(g.applyAsDouble("XB8"), g.applyAsDouble("YB8"),
-                    g.applyAsDouble("XC8"), g.applyAsDouble("YC8"), g.applyAsDouble("XD8"), g.applyAsDouble("YD8"));
-            case "SUB9A" -> new TreadFigure.Sub9a(g.applyAsDouble("XA9"), g.applyAsDouble("YA9"),
-                    g.applyAsDouble("XB9"), g.applyAsDouble("YB9"), g.applyAsDouble("XC9"), g.applyAsDouble("YC9"),
-                    g.applyAsDouble("XD9"), g.applyAsDouble("YD9"), g.applyAsDouble("XE9"), g.applyAsDouble("YE9"));
-            case "SUB9B" -> new TreadFigure.Sub9b(g.applyAsDouble("XB9"), g.applyAsDouble("YB9"),
-                    g.applyAsDouble("XC9"), g.applyAsDouble("YC9"), g.applyAsDouble("XD9"), g.applyAsDouble("YD9"),
-                    g.applyAsDouble("XE9"), g.applyAsDouble("YE9"));
-            case "PARAL" -> new SpecialDesigns.Parallelograms(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
-                    g.applyAsDouble("A"), g.applyAsDouble("B"), g.applyAsDouble("ANG"), count(g, "NA"), count(g, "NB"));
-            case "COLMEIA" -> new SpecialDesigns.Honeycomb(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
-                    g.applyAsDouble("S"), count(g, "NX"), count(g, "NY"));
-            case "PIRAM" -> new SpecialDesigns.InvertedPyramids(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
-                    g.applyAsDouble("P"), g.applyAsDouble("ANG"), count(g, "N1"), count(g, "N2"));
-            case "TEXTURA" -> new SpecialDesigns.TextureLines(g.applyAsDouble("XO"), g.applyAsDouble("YO"),
-                    g.applyAsDouble("L"), g.applyAsDouble("P"), g.applyAsDouble("ANG"), count(g, "N"),
-                    g.applyAsDouble("DASH"), g.applyAsDouble("GAP"));
+            case "PRIM" ->
+                new TreadFigure.Prim(
+                        g.applyAsDouble("XI"), g.applyAsDouble("YI"), g.applyAsDouble("XA1"), g.applyAsDouble("YA1"));
+            case "NOVO" ->
+                new TreadFigure.Novo(
+                        g.applyAsDouble("XF1"), g.applyAsDouble("YF1"), g.applyAsDouble("XF2"), g.applyAsDouble("YF2"));
+            case "SUB1A" ->
+                new TreadFigure.Sub1a(
+                        g.applyAsDouble("XA1"),
+                        g.applyAsDouble("YA1"),
+                        g.applyAsDouble("XB1"),
+                        g.applyAsDouble("YC1"),
+                        g.applyAsDouble("XC1"),
+                        g.applyAsDouble("XD1"));
+            case "SUB1B" ->
+                new TreadFigure.Sub1b(
+                        g.applyAsDouble("XA1"),
+                        g.applyAsDouble("YA1"),
+                        g.applyAsDouble("YB1"),
+                        g.applyAsDouble("YC1"),
+                        g.applyAsDouble("XC1"),
+                        g.applyAsDouble("YD1"));
+            case "SUB2" ->
+                new TreadFigure.Sub2(
+                        g.applyAsDouble("XA2"), g.applyAsDouble("YA2"), g.applyAsDouble("XB2"), g.applyAsDouble("YB2"));
+            case "SUB3A" ->
+                new TreadFigure.Sub3a(
+                        g.applyAsDouble("XC"),
+                        g.applyAsDouble("YC"),
+                        positive(g, "RA"),
+                        g.applyAsDouble("XA3"),
+                        g.applyAsDouble("XB3"),
+                        ccw);
+            case "SUB3B" ->
+                new TreadFigure.Sub3b(
+                        g.applyAsDouble("XC"),
+                        g.applyAsDouble("YC"),
+                        positive(g, "RA"),
+                        g.applyAsDouble("XA3"),
+                        g.applyAsDouble("XB3"),
+                        ccw);
+            case "SUB3E" ->
+                new TreadFigure.Sub3e(
+                        g.applyAsDouble("XC"),
+                        g.applyAsDouble("YC"),
+                        positive(g, "RA"),
+                        g.applyAsDouble("XA3"),
+                        g.applyAsDouble("XB3"),
+                        g.applyAsDouble("AFAS"),
+                        count(g, "N"),
+                        ccw);
+            case "SUB4" ->
+                new TreadFigure.Sub4(
+                        g.applyAsDouble("XC"),
+                        g.applyAsDouble("YC"),
+                        positive(g, "RA"),
+                        g.applyAsDouble("XA4"),
+                        g.applyAsDouble("YA4"),
+                        g.applyAsDouble("XB4"),
+                        g.applyAsDouble("YB4"),
+                        ccw);
+            case "SUB5A" ->
+                new TreadFigure.Sub5a(
+                        g.applyAsDouble("XC1"),
+                        g.applyAsDouble("YC1"),
+                        g.applyAsDouble("XC2"),
+                        g.applyAsDouble("YC2"),
+                        g.applyAsDouble("XT"),
+                        g.applyAsDouble("YT"),
+                        g.applyAsDouble("XA5"),
+                        g.applyAsDouble("XB5"),
+                        ccw);
+            case "SUB5B" ->
+                new TreadFigure.Sub5b(
+                        g.applyAsDouble("XC1"),
+                        g.applyAsDouble("YC1"),
+                        g.applyAsDouble("XC2"),
+                        g.applyAsDouble("YC2"),
+                        g.applyAsDouble("XT"),
+                        g.applyAsDouble("YT"),
+                        g.applyAsDouble("XA5"),
+                        g.applyAsDouble("XB5"),
+                        ccw);
+            case "SUB5E" ->
+                new TreadFigure.Sub5e(
+                        g.applyAsDouble("XC1"),
+                        g.applyAsDouble("YC1"),
+                        g.applyAsDouble("XC2"),
+                        g.applyAsDouble("YC2"),
+                        g.applyAsDouble("XT"),
+                        g.applyAsDouble("YT"),
+                        g.applyAsDouble("XA5"),
+                        g.applyAsDouble("XB5"),
+                        g.applyAsDouble("AFAS"),
+                        count(g, "N"),
+                        ccw);
+            case "SUB7A" ->
+                new TreadFigure.Sub7a(
+                        g.applyAsDouble("XA7"),
+                        g.applyAsDouble("YA7"),
+                        g.applyAsDouble("XB7"),
+                        g.applyAsDouble("YB7"),
+                        g.applyAsDouble("XC7"),
+                        g.applyAsDouble("YC7"));
+            case "SUB7B" ->
+                new TreadFigure.Sub7b(
+                        g.applyAsDouble("XB7"), g.applyAsDouble("YB7"), g.applyAsDouble("XC7"), g.applyAsDouble("YC7"));
+            case "SUB8A" ->
+                new TreadFigure.Sub8a(
+                        g.applyAsDouble("XA8"),
+                        g.applyAsDouble("YA8"),
+                        g.applyAsDouble("XB8"),
+                        g.applyAsDouble("YB8"),
+                        g.applyAsDouble("XC8"),
+                        g.applyAsDouble("YC8"),
+                        g.applyAsDouble("XD8"),
+                        g.applyAsDouble("YD8"));
+            case "SUB8B" ->
+                new TreadFigure.Sub8b(
+                        g.applyAsDouble("XB8"),
+                        g.applyAsDouble("YB8"),
+                        g.applyAsDouble("XC8"),
+                        g.applyAsDouble("YC8"),
+                        g.applyAsDouble("XD8"),
+                        g.applyAsDouble("YD8"));
+            case "SUB9A" ->
+                new TreadFigure.Sub9a(
+                        g.applyAsDouble("XA9"),
+                        g.applyAsDouble("YA9"),
+                        g.applyAsDouble("XB9"),
+                        g.applyAsDouble("YB9"),
+                        g.applyAsDouble("XC9"),
+                        g.applyAsDouble("YC9"),
+                        g.applyAsDouble("XD9"),
+                        g.applyAsDouble("YD9"),
+                        g.applyAsDouble("XE9"),
+                        g.applyAsDouble("YE9"));
+            case "SUB9B" ->
+                new TreadFigure.Sub9b(
+                        g.applyAsDouble("XB9"),
+                        g.applyAsDouble("YB9"),
+                        g.applyAsDouble("XC9"),
+                        g.applyAsDouble("YC9"),
+                        g.applyAsDouble("XD9"),
+                        g.applyAsDouble("YD9"),
+                        g.applyAsDouble("XE9"),
+                        g.applyAsDouble("YE9"));
+            case "PARAL" ->
+                new SpecialDesigns.Parallelograms(
+                        g.applyAsDouble("XO"),
+                        g.applyAsDouble("YO"),
+                        g.applyAsDouble("A"),
+                        g.applyAsDouble("B"),
+                        g.applyAsDouble("ANG"),
+                        count(g, "NA"),
+                        count(g, "NB"));
+            case "COLMEIA" ->
+                new SpecialDesigns.Honeycomb(
+                        g.applyAsDouble("XO"),
+                        g.applyAsDouble("YO"),
+                        g.applyAsDouble("S"),
+                        count(g, "NX"),
+                        count(g, "NY"));
+            case "PIRAM" ->
+                new SpecialDesigns.InvertedPyramids(
+                        g.applyAsDouble("XO"),
+                        g.applyAsDouble("YO"),
+                        g.applyAsDouble("P"),
+                        g.applyAsDouble("ANG"),
+                        count(g, "N1"),
+                        count(g, "N2"));
+            case "TEXTURA" ->
+                new SpecialDesigns.TextureLines(
+                        g.applyAsDouble("XO"),
+                        g.applyAsDouble("YO"),
+                        g.applyAsDouble("L"),
+                        g.applyAsDouble("P"),
+                        g.applyAsDouble("ANG"),
+                        count(g, "N"),
+                        g.applyAsDouble("DASH"),
+                        g.applyAsDouble("GAP"));
             default -> throw new IllegalArgumentException("unknown macro " + m);
         };
     }

@@ -22,8 +22,14 @@ import org.fresa.geom.Vec2;
  *     mirrored place but is not mirrored itself
  * @param toolId the tool that cuts it (an id of the tread's tools)
  */
-public record TreadItem(String name, List<TreadFigure> lead, List<TreadFigure> figures, TreadPattern pattern,
-        SizeRule rule, boolean text, String toolId) {
+public record TreadItem(
+        String name,
+        List<TreadFigure> lead,
+        List<TreadFigure> figures,
+        TreadPattern pattern,
+        SizeRule rule,
+        boolean text,
+        String toolId) {
 
     public TreadItem {
         Objects.requireNonNull(name, "name");

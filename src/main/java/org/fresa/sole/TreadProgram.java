@@ -19,8 +19,7 @@ import org.fresa.model.ToolpathSection;
  * move back to its start.
  */
 public final class TreadProgram {
-    private TreadProgram() {
-    }
+    private TreadProgram() {}
 
     /**
      * @param grooves the tread's grooves for one size and foot, by tool
@@ -29,8 +28,8 @@ public final class TreadProgram {
      * @param clearanceMm height of rapid travel above the top face, > 0
      * @throws IllegalArgumentException when a groove names an unknown tool
      */
-    public static Toolpath toolpath(List<SoleTread.ToolGrooves> grooves, Map<String, TreadTool> tools, double depthMm,
-            double clearanceMm) {
+    public static Toolpath toolpath(
+            List<SoleTread.ToolGrooves> grooves, Map<String, TreadTool> tools, double depthMm, double clearanceMm) {
         if (!(depthMm > 0) || !(clearanceMm > 0)) {
             throw new IllegalArgumentException("depth and clearance must be > 0");
         }
@@ -57,8 +56,8 @@ public final class TreadProgram {
                 Vec2 e = s.end();
                 moves.add(new Move.Rapid(Vec3.of(e.x(), e.y(), clearanceMm)));
             }
-            sections.add(new ToolpathSection("tread " + t.id(), Vec3.of(0, 0, 1), t.diameterMm(), t.number(),
-                    t.spindleRpm(), home, moves));
+            sections.add(new ToolpathSection(
+                    "tread " + t.id(), Vec3.of(0, 0, 1), t.diameterMm(), t.number(), t.spindleRpm(), home, moves));
         }
         return new Toolpath(sections);
     }

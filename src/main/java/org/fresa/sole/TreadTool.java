@@ -13,8 +13,8 @@ import java.util.Objects;
  * @param feedMmPerMin feed along the groove, > 0
  * @param plungeFeedMmPerMin feed of the plunge, > 0
  */
-public record TreadTool(String id, int number, double diameterMm, double spindleRpm, double feedMmPerMin,
-        double plungeFeedMmPerMin) {
+public record TreadTool(
+        String id, int number, double diameterMm, double spindleRpm, double feedMmPerMin, double plungeFeedMmPerMin) {
 
     public TreadTool {
         Objects.requireNonNull(id, "id");

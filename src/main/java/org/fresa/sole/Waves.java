@@ -9,8 +9,7 @@ import org.fresa.geom.Vec2;
 
 /** The two-circle waves of SUB5A/B/E. */
 final class Waves {
-    private Waves() {
-    }
+    private Waves() {}
 
     /**
      * Circle 1 (centre PC1 through PTAN) from x = XA5 to PTAN, circle 2 forward; with n copies
@@ -18,8 +17,20 @@ final class Waves {
      * line x = XB5 + I afas when that is where they meet), and the last circle 2 ends at
      * x = XB5 + n afas.
      */
-    static List<Curve2> wave(double xc1, double yc1, double xc2, double yc2, double xt, double yt, double xa5,
-            double xb5, double afas, int n, boolean ccw, Tolerance tol, String macro) {
+    static List<Curve2> wave(
+            double xc1,
+            double yc1,
+            double xc2,
+            double yc2,
+            double xt,
+            double yt,
+            double xa5,
+            double xb5,
+            double afas,
+            int n,
+            boolean ccw,
+            Tolerance tol,
+            String macro) {
         List<Curve2> out = new ArrayList<>();
         Vec2 pc1 = Vec2.of(xc1, yc1);
         Vec2 pt = Vec2.of(xt, yt);

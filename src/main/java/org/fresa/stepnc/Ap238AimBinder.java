@@ -51,8 +51,13 @@ final class Ap238AimBinder {
 
     /** Feeds below this (mm/min) are reported as doubtful: no cutting feed is that slow. */
     static final double SLOWEST_PLAUSIBLE_FEED = 10;
-    private static final Set<String> FEATURE_NOISE = Set.of("CHARACTERIZED_OBJECT", "FEATURE_DEFINITION",
-            "INSTANCED_FEATURE", "SHAPE_ASPECT", "SHAPE_FEATURE_DEFINITION");
+
+    private static final Set<String> FEATURE_NOISE = Set.of(
+            "CHARACTERIZED_OBJECT",
+            "FEATURE_DEFINITION",
+            "INSTANCED_FEATURE",
+            "SHAPE_ASPECT",
+            "SHAPE_FEATURE_DEFINITION");
 
     private final StepFile file;
     private final Iso14649Binder geometry;
@@ -64,6 +69,7 @@ final class Ap238AimBinder {
     private final Map<Long, MachiningWorkingstep> workingsteps = new HashMap<>();
     /** Millimetres per unit of the file's global length unit. */
     private double lengthScale = 1;
+
     private String lengthUnitName = "mm";
 
     Ap238AimBinder(StepFile file) {
@@ -73,7 +79,8 @@ final class Ap238AimBinder {
 
     /** The FILE_SCHEMA names that mark the integrated form. */
     static boolean isIntegrated(List<String> schemas) {
-        return schemas.stream().map(s -> s.toUpperCase(Locale.ROOT))
+        return schemas.stream()
+                .map(s -> s.toUpperCase(Locale.ROOT))
                 .anyMatch(s -> s.startsWith("MODEL_BASED_INTEGRATED_MANUFACTURING_SCHEMA")
                         || s.startsWith("INTEGRATED_CNC_SCHEMA"));
     }
@@ -153,8 +160,7 @@ final class Ap238AimBinder {
     // ---- units ----
 
     /** What a unit measures and how many model units (mm, s, deg, 1) one of it is. */
-    private record Unit(double factor, String label) {
-    }
+    private record Unit(double factor, String label) {}
 
     private Unit unit(long id, int depth) {
         if (depth > 8 || inst(id) == null) {
@@ -199,7 +205,8 @@ final class Ap238AimBinder {
                 Unit u = ref(el.get().param(0)).map(x -> unit(x, depth + 1)).orElse(new Unit(1, ""));
                 f *= Math.pow(u.factor(), exp);
                 String l = u.label() + (Math.abs(exp) == 1 ? "" : "^" + num(Math.abs(exp)));
-                (exp < 0 ? den : num).append(exp < 0 ? (den.length() > 0 ? "*" : "") : (num.length() > 0 ? "*" : ""))
+                (exp < 0 ? den : num)
+                        .append(exp < 0 ? (den.length() > 0 ? "*" : "") : (num.length() > 0 ? "*" : ""))
                         .append(l);
             }
             String label = (num.length() == 0 ? "1" : num) + (den.length() == 0 ? "" : "/" + den);
@@ -305,8 +312,8 @@ final class Ap238AimBinder {
             }
         }
         if (seen.size() > 1) {
-            warnings.add("the file's representation contexts give several length units " + seen + "; coordinates read in "
-                    + lengthUnitName);
+            warnings.add("the file's representation contexts give several length units " + seen
+                    + "; coordinates read in " + lengthUnitName);
         }
         if (lengthScale != 1) {
             spellings.add("lengths in " + lengthUnitName + " (" + num(lengthScale) + " mm), converted to mm");
@@ -316,28 +323,32 @@ final class Ap238AimBinder {
     // ---- values of representations ----
 
     /** One value of a representation item: a number in model units, a text, or a reference. */
-    private record Item(long id, String name, OptionalDouble value, String text, String kind) {
-    }
+    private record Item(long id, String name, OptionalDouble value, String text, String kind) {}
 
     private Item item(long id) {
         StepInstance i = inst(id);
         if (i == null) {
             return new Item(id, "", OptionalDouble.empty(), "", "?");
         }
-        String name = i.part("REPRESENTATION_ITEM").map(r -> text(r.param(0)))
+        String name = i.part("REPRESENTATION_ITEM")
+                .map(r -> text(r.param(0)))
                 .orElse(i.isComplex() ? "" : text(i.record().param(0)));
         Optional<StepRecord> mwu = i.part("MEASURE_WITH_UNIT");
         if (mwu.isPresent()) {
             OptionalDouble v = number(mwu.get().param(0));
             Unit u = ref(mwu.get().param(1)).map(x -> unit(x, 0)).orElse(new Unit(1, ""));
-            return new Item(id, name, v.isPresent() ? OptionalDouble.of(v.getAsDouble() * u.factor()) : v, "",
-                    "measure");
+            return new Item(
+                    id, name, v.isPresent() ? OptionalDouble.of(v.getAsDouble() * u.factor()) : v, "", "measure");
         }
         Optional<StepRecord> mri = i.part("MEASURE_REPRESENTATION_ITEM");
         if (mri.isPresent() && !i.isComplex()) {
             OptionalDouble v = number(mri.get().param(1));
             Unit u = ref(mri.get().param(2)).map(x -> unit(x, 0)).orElse(new Unit(1, ""));
-            return new Item(id, name, v.isPresent() ? OptionalDouble.of(v.getAsDouble() * u.factor()) : v, u.label(),
+            return new Item(
+                    id,
+                    name,
+                    v.isPresent() ? OptionalDouble.of(v.getAsDouble() * u.factor()) : v,
+                    u.label(),
                     "measure");
         }
         Optional<StepRecord> d = i.part("DESCRIPTIVE_REPRESENTATION_ITEM");
@@ -357,17 +368,19 @@ final class Ap238AimBinder {
     }
 
     /** A property of an action (ACTION_PROPERTY name) with its representation's name and items. */
-    private record Property(String name, String representationName, List<Long> items) {
-    }
+    private record Property(String name, String representationName, List<Long> items) {}
 
     private List<Property> actionProperties(long action) {
         List<Property> out = new ArrayList<>();
         for (long ap : usersOf(action, "ACTION_PROPERTY", 2)) {
-            String name = text(rec(ap, "ACTION_PROPERTY").orElseThrow().param(0)).toLowerCase(Locale.ROOT);
+            String name =
+                    text(rec(ap, "ACTION_PROPERTY").orElseThrow().param(0)).toLowerCase(Locale.ROOT);
             for (long apr : usersOf(ap, "ACTION_PROPERTY_REPRESENTATION", 2)) {
                 StepRecord r = rec(apr, "ACTION_PROPERTY_REPRESENTATION").orElseThrow();
                 Optional<Long> rep = ref(r.param(3));
-                out.add(new Property(name, text(r.param(0)).toLowerCase(Locale.ROOT),
+                out.add(new Property(
+                        name,
+                        text(r.param(0)).toLowerCase(Locale.ROOT),
                         rep.map(this::items).orElse(List.of())));
             }
         }
@@ -379,7 +392,8 @@ final class Ap238AimBinder {
     }
 
     private Optional<Property> property(List<Property> ps, String name, String representation) {
-        return ps.stream().filter(p -> p.name().equals(name) && p.representationName().equals(representation))
+        return ps.stream()
+                .filter(p -> p.name().equals(name) && p.representationName().equals(representation))
                 .findFirst();
     }
 
@@ -425,10 +439,12 @@ final class Ap238AimBinder {
     private List<Long> representationsOf(long definition) {
         List<Long> out = new ArrayList<>();
         for (long sdr : usersOf(definition, "SHAPE_DEFINITION_REPRESENTATION", 0)) {
-            ref(rec(sdr, "SHAPE_DEFINITION_REPRESENTATION").orElseThrow().param(1)).ifPresent(out::add);
+            ref(rec(sdr, "SHAPE_DEFINITION_REPRESENTATION").orElseThrow().param(1))
+                    .ifPresent(out::add);
         }
         for (long pdr : usersOf(definition, "PROPERTY_DEFINITION_REPRESENTATION", 0)) {
-            ref(rec(pdr, "PROPERTY_DEFINITION_REPRESENTATION").orElseThrow().param(1)).ifPresent(out::add);
+            ref(rec(pdr, "PROPERTY_DEFINITION_REPRESENTATION").orElseThrow().param(1))
+                    .ifPresent(out::add);
         }
         return out;
     }
@@ -468,8 +484,19 @@ final class Ap238AimBinder {
         if (lengthScale == 1) {
             return t;
         }
-        return new Transform3(t.r00(), t.r01(), t.r02(), t.r10(), t.r11(), t.r12(), t.r20(), t.r21(), t.r22(),
-                t.tx() * lengthScale, t.ty() * lengthScale, t.tz() * lengthScale);
+        return new Transform3(
+                t.r00(),
+                t.r01(),
+                t.r02(),
+                t.r10(),
+                t.r11(),
+                t.r12(),
+                t.r20(),
+                t.r21(),
+                t.r22(),
+                t.tx() * lengthScale,
+                t.ty() * lengthScale,
+                t.tz() * lengthScale);
     }
 
     private Vec3 mm(Vec3 v) {
@@ -492,7 +519,8 @@ final class Ap238AimBinder {
         List<Profile.Segment> segs = new ArrayList<>();
         for (Profile.Segment s : g.segments()) {
             if (s instanceof Profile.Arc a) {
-                segs.add(new Profile.Arc(mm(a.start()), mm(a.end()), mm(a.center()), a.radiusMm() * lengthScale, a.ccw()));
+                segs.add(new Profile.Arc(
+                        mm(a.start()), mm(a.end()), mm(a.center()), a.radiusMm() * lengthScale, a.ccw()));
             } else {
                 segs.add(new Profile.Line(mm(s.start()), mm(s.end())));
             }
@@ -529,9 +557,9 @@ final class Ap238AimBinder {
                 case "MACHINING_WORKPLAN" -> allWorkplans.add(i.id());
                 case "MACHINING_WORKINGSTEP" -> allWorkingsteps.add(i.id());
                 case "MACHINING_PROJECT" -> projects.add(i.id());
-                case "MACHINING_PROCESS_SEQUENCE_RELATIONSHIP" -> ref(i.record().param(3)).ifPresent(sequenced::add);
-                default -> {
-                }
+                case "MACHINING_PROCESS_SEQUENCE_RELATIONSHIP" ->
+                    ref(i.record().param(3)).ifPresent(sequenced::add);
+                default -> {}
             }
             kinds.merge(t, 1, Integer::sum);
         }
@@ -541,13 +569,16 @@ final class Ap238AimBinder {
         if (!projects.isEmpty()) {
             long project = projects.get(0);
             if (projects.size() > 1) {
-                warnings.add("the file has " + projects.size() + " MACHINING_PROJECT instances; #" + project + " is used");
+                warnings.add(
+                        "the file has " + projects.size() + " MACHINING_PROJECT instances; #" + project + " is used");
             }
             projectId = text(rec(project, "MACHINING_PROJECT").orElseThrow().param(0));
             for (long pdf : usersOf(project, "PRODUCT_DEFINITION_FORMATION", 2)) {
                 for (long pd : usersOf(pdf, "PRODUCT_DEFINITION", 2)) {
                     for (long ppa : usersOf(pd, "PROCESS_PRODUCT_ASSOCIATION", 2)) {
-                        Optional<Long> pdp = ref(rec(ppa, "PROCESS_PRODUCT_ASSOCIATION").orElseThrow().param(3));
+                        Optional<Long> pdp = ref(rec(ppa, "PROCESS_PRODUCT_ASSOCIATION")
+                                .orElseThrow()
+                                .param(3));
                         Optional<Long> wp = pdp.flatMap(x -> rec(x, "PRODUCT_DEFINITION_PROCESS"))
                                 .flatMap(r -> ref(r.param(2)));
                         if (wp.isPresent() && isA(wp.get(), "MACHINING_WORKPLAN") && mainId.isEmpty()) {
@@ -555,7 +586,9 @@ final class Ap238AimBinder {
                         }
                     }
                     for (long r : usersOf(pd, "MACHINING_PROJECT_WORKPIECE_RELATIONSHIP", 3)) {
-                        ref(rec(r, "MACHINING_PROJECT_WORKPIECE_RELATIONSHIP").orElseThrow().param(4))
+                        ref(rec(r, "MACHINING_PROJECT_WORKPIECE_RELATIONSHIP")
+                                        .orElseThrow()
+                                        .param(4))
                                 .ifPresent(w -> workpieces.add(workpiece(w)));
                     }
                 }
@@ -586,7 +619,8 @@ final class Ap238AimBinder {
                 continue;
             }
             String id = text(rec(wsId, "MACHINING_WORKINGSTEP").orElseThrow().param(0));
-            String reason = sequenced.contains(wsId) ? "in a workplan that the main workplan does not run"
+            String reason = sequenced.contains(wsId)
+                    ? "in a workplan that the main workplan does not run"
                     : "in no workplan's sequence (no MACHINING_PROCESS_SEQUENCE_RELATIONSHIP relates it)";
             skipped.add(new StepNcProgram.Skipped(wsId, id, reason, Optional.empty()));
         }
@@ -596,8 +630,20 @@ final class Ap238AimBinder {
         // the entity types the binding walked through are the AIM's generic resources: none is unknown in
         // the sense of the ARM binding, so only the kinds of the file are reported
         Map<String, Integer> unknown = new TreeMap<>();
-        return new StepNcProgram(file.source(), file.schemas(), Dialect.AP238_AIM, file.size(), projectId, main,
-                workpieces, executed, skipped, unknown, new ArrayList<>(spellings), allWarnings, file);
+        return new StepNcProgram(
+                file.source(),
+                file.schemas(),
+                Dialect.AP238_AIM,
+                file.size(),
+                projectId,
+                main,
+                workpieces,
+                executed,
+                skipped,
+                unknown,
+                new ArrayList<>(spellings),
+                allWarnings,
+                file);
     }
 
     private final List<StepNcProgram.Skipped> skipped = new ArrayList<>();
@@ -606,10 +652,12 @@ final class Ap238AimBinder {
         String id = rec(pd, "PRODUCT_DEFINITION").map(r -> text(r.param(0))).orElse("");
         Optional<String> material = Optional.empty();
         for (long mfu : usersOf(pd, "MAKE_FROM_USAGE_OPTION", 3)) {
-            Optional<Long> other = ref(rec(mfu, "MAKE_FROM_USAGE_OPTION").orElseThrow().param(4));
+            Optional<Long> other =
+                    ref(rec(mfu, "MAKE_FROM_USAGE_OPTION").orElseThrow().param(4));
             if (other.isPresent()) {
                 for (long md : usersOf(other.get(), "MATERIAL_DESIGNATION", 1)) {
-                    material = Optional.of(text(rec(md, "MATERIAL_DESIGNATION").orElseThrow().param(0)));
+                    material = Optional.of(
+                            text(rec(md, "MATERIAL_DESIGNATION").orElseThrow().param(0)));
                 }
             }
         }
@@ -632,7 +680,8 @@ final class Ap238AimBinder {
     private Optional<Setup> setupOf(long workplan) throws StepParseException {
         for (long pdp : usersOf(workplan, "PRODUCT_DEFINITION_PROCESS", 2)) {
             for (long ppa : usersOf(pdp, "PROCESS_PRODUCT_ASSOCIATION", 3)) {
-                Optional<Long> pd = ref(rec(ppa, "PROCESS_PRODUCT_ASSOCIATION").orElseThrow().param(2));
+                Optional<Long> pd = ref(
+                        rec(ppa, "PROCESS_PRODUCT_ASSOCIATION").orElseThrow().param(2));
                 if (pd.isPresent() && isSetup(pd.get())) {
                     return Optional.of(setup(pd.get()));
                 }
@@ -643,14 +692,18 @@ final class Ap238AimBinder {
 
     private boolean isSetup(long pd) {
         Optional<Long> pdf = rec(pd, "PRODUCT_DEFINITION").flatMap(r -> ref(r.param(2)));
-        Optional<Long> product = pdf.flatMap(x -> rec(x, "PRODUCT_DEFINITION_FORMATION")).flatMap(r -> ref(r.param(2)));
+        Optional<Long> product =
+                pdf.flatMap(x -> rec(x, "PRODUCT_DEFINITION_FORMATION")).flatMap(r -> ref(r.param(2)));
         return product.isPresent() && isA(product.get(), "MACHINING_SETUP");
     }
 
     private Setup setup(long pd) throws StepParseException {
         Optional<Long> pdf = rec(pd, "PRODUCT_DEFINITION").flatMap(r -> ref(r.param(2)));
-        String id = pdf.flatMap(x -> rec(x, "PRODUCT_DEFINITION_FORMATION")).flatMap(r -> ref(r.param(2)))
-                .flatMap(x -> rec(x, "MACHINING_SETUP")).map(r -> text(r.param(0))).orElse("");
+        String id = pdf.flatMap(x -> rec(x, "PRODUCT_DEFINITION_FORMATION"))
+                .flatMap(r -> ref(r.param(2)))
+                .flatMap(x -> rec(x, "MACHINING_SETUP"))
+                .map(r -> text(r.param(0)))
+                .orElse("");
         Transform3 origin = Transform3.IDENTITY;
         Optional<Transform3> secplane = Optional.empty();
         for (long pds : usersOf(pd, "PRODUCT_DEFINITION_SHAPE", 2)) {
@@ -675,11 +728,16 @@ final class Ap238AimBinder {
         }
         List<Setup.WorkpieceSetup> wps = new ArrayList<>();
         for (long msw : usersOf(pd, "MACHINING_SETUP_WORKPIECE_RELATIONSHIP", 3)) {
-            long wp = ref(rec(msw, "MACHINING_SETUP_WORKPIECE_RELATIONSHIP").orElseThrow().param(4)).orElse(0L);
+            long wp = ref(rec(msw, "MACHINING_SETUP_WORKPIECE_RELATIONSHIP")
+                            .orElseThrow()
+                            .param(4))
+                    .orElse(0L);
             Transform3 o = Transform3.IDENTITY;
             for (long pds : usersOf(msw, "PRODUCT_DEFINITION_SHAPE", 2)) {
                 for (long cdsr : usersOf(pds, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION", 1)) {
-                    Optional<Long> rr = ref(rec(cdsr, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION").orElseThrow().param(0));
+                    Optional<Long> rr = ref(rec(cdsr, "CONTEXT_DEPENDENT_SHAPE_REPRESENTATION")
+                            .orElseThrow()
+                            .param(0));
                     Optional<Long> idt = rr.flatMap(x -> rec(x, "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION"))
                             .flatMap(r -> ref(r.param(0)));
                     Optional<Long> to = idt.flatMap(x -> rec(x, "ITEM_DEFINED_TRANSFORMATION"))
@@ -749,16 +807,20 @@ final class Ap238AimBinder {
         }
         String id = text(rec(ws, "MACHINING_WORKINGSTEP").orElseThrow().param(0));
         Optional<Long> op = firstUser(ws, "MACHINING_OPERATION_RELATIONSHIP", 2)
-                .flatMap(r -> ref(rec(r, "MACHINING_OPERATION_RELATIONSHIP").orElseThrow().param(3)));
+                .flatMap(r -> ref(
+                        rec(r, "MACHINING_OPERATION_RELATIONSHIP").orElseThrow().param(3)));
         Optional<Long> feature = Optional.empty();
         for (long mfr : usersOf(ws, "MACHINING_FEATURE_RELATIONSHIP", 2)) {
-            Optional<Long> process = ref(rec(mfr, "MACHINING_FEATURE_RELATIONSHIP").orElseThrow().param(3));
+            Optional<Long> process =
+                    ref(rec(mfr, "MACHINING_FEATURE_RELATIONSHIP").orElseThrow().param(3));
             if (process.isEmpty()) {
                 continue;
             }
             for (long pp : usersOf(process.get(), "PROPERTY_PROCESS", 2)) {
                 for (long ppa : usersOf(pp, "PROCESS_PROPERTY_ASSOCIATION", 2)) {
-                    Optional<Long> f = ref(rec(ppa, "PROCESS_PROPERTY_ASSOCIATION").orElseThrow().param(3));
+                    Optional<Long> f = ref(rec(ppa, "PROCESS_PROPERTY_ASSOCIATION")
+                            .orElseThrow()
+                            .param(3));
                     if (f.isPresent() && feature.isEmpty()) {
                         feature = f;
                     }
@@ -766,9 +828,13 @@ final class Ap238AimBinder {
             }
         }
         if (op.isEmpty() || feature.isEmpty()) {
-            skipped.add(new StepNcProgram.Skipped(ws, id, "the workingstep has no "
-                    + (op.isEmpty() ? "operation (MACHINING_OPERATION_RELATIONSHIP)"
-                            : "feature (MACHINING_FEATURE_RELATIONSHIP to a PROCESS_PROPERTY_ASSOCIATION)"),
+            skipped.add(new StepNcProgram.Skipped(
+                    ws,
+                    id,
+                    "the workingstep has no "
+                            + (op.isEmpty()
+                                    ? "operation (MACHINING_OPERATION_RELATIONSHIP)"
+                                    : "feature (MACHINING_FEATURE_RELATIONSHIP to a PROCESS_PROPERTY_ASSOCIATION)"),
                     Optional.empty()));
             return Optional.empty();
         }
@@ -782,8 +848,11 @@ final class Ap238AimBinder {
         Operation o = operation(op.get());
         Transform3 wpToSetup = Transform3.IDENTITY;
         if (setup.isPresent()) {
-            long wp = rec(feature.get(), "SHAPE_ASPECT").flatMap(r -> ref(r.param(2)))
-                    .flatMap(pds -> rec(pds, "PRODUCT_DEFINITION_SHAPE")).flatMap(r -> ref(r.param(2))).orElse(0L);
+            long wp = rec(feature.get(), "SHAPE_ASPECT")
+                    .flatMap(r -> ref(r.param(2)))
+                    .flatMap(pds -> rec(pds, "PRODUCT_DEFINITION_SHAPE"))
+                    .flatMap(r -> ref(r.param(2)))
+                    .orElse(0L);
             for (Setup.WorkpieceSetup w : setup.get().workpieceSetups()) {
                 if (wp == 0 || wp == w.workpieceInstanceId()) {
                     wpToSetup = w.origin();
@@ -815,7 +884,10 @@ final class Ap238AimBinder {
             featureId = fi.part("SHAPE_ASPECT").map(r -> text(r.param(0))).orElse("");
             if (!fi.isComplex() && fi.record().type().equals("INSTANCED_FEATURE")) {
                 // a feature of no shape, e.g. the toolpath feature of explicit toolpaths (description 'toolpath')
-                String kind = text(fi.record().param(1)).trim().toUpperCase(Locale.ROOT).replace(' ', '_');
+                String kind = text(fi.record().param(1))
+                        .trim()
+                        .toUpperCase(Locale.ROOT)
+                        .replace(' ', '_');
                 entity = kind.isEmpty() ? "INSTANCED_FEATURE" : kind + "_FEATURE";
                 featureId = text(fi.record().param(0));
             }
@@ -841,17 +913,29 @@ final class Ap238AimBinder {
                 }
             }
             for (long aspect : usersOf(pds.get(), "SHAPE_ASPECT", 2)) {
-                String occurrence = text(rec(aspect, "SHAPE_ASPECT").orElseThrow().param(1)).toLowerCase(Locale.ROOT)
-                        .replace(" occurrence", "").trim();
+                String occurrence = text(rec(aspect, "SHAPE_ASPECT")
+                                .orElseThrow()
+                                .param(1))
+                        .toLowerCase(Locale.ROOT)
+                        .replace(" occurrence", "")
+                        .trim();
                 for (String relType : List.of("SHAPE_DEFINING_RELATIONSHIP", "FEATURE_COMPONENT_RELATIONSHIP")) {
                     for (long rel : usersOf(aspect, relType, 3)) {
-                        ref(rec(rel, relType).orElseThrow().param(2)).ifPresent(c -> components.putIfAbsent(occurrence, c));
+                        ref(rec(rel, relType).orElseThrow().param(2))
+                                .ifPresent(c -> components.putIfAbsent(occurrence, c));
                     }
                 }
             }
         }
-        Optional<Long> boundary = first(components, "removal boundary", "boundary", "feature boundary",
-                "swept shape", "wall boundary", "its boundary", "open boundary");
+        Optional<Long> boundary = first(
+                components,
+                "removal boundary",
+                "boundary",
+                "feature boundary",
+                "swept shape",
+                "wall boundary",
+                "its boundary",
+                "open boundary");
         Optional<Profile> profile = Optional.empty();
         if (boundary.isPresent()) {
             profile = Optional.of(profile(boundary.get(), placementId));
@@ -859,25 +943,30 @@ final class Ap238AimBinder {
         Feature.FeatureType type = switch (entity) {
             case "FLAT_FACE", "PLANAR_FACE" -> Feature.FeatureType.PLANAR_FACE;
             case "ROUND_HOLE" -> Feature.FeatureType.ROUND_HOLE;
-            case "POCKET", "CLOSED_POCKET" -> profile.isPresent() && isOpen(profile.get())
-                    ? Feature.FeatureType.OPEN_POCKET : Feature.FeatureType.CLOSED_POCKET;
+            case "POCKET", "CLOSED_POCKET" ->
+                profile.isPresent() && isOpen(profile.get())
+                        ? Feature.FeatureType.OPEN_POCKET
+                        : Feature.FeatureType.CLOSED_POCKET;
             case "SLOT" -> Feature.FeatureType.SLOT;
             case "STEP" -> Feature.FeatureType.STEP;
             case "BOSS" -> Feature.FeatureType.BOSS;
             case "OUTSIDE_PROFILE", "GENERAL_OUTSIDE_PROFILE" -> Feature.FeatureType.GENERAL_OUTSIDE_PROFILE;
             default -> Feature.FeatureType.OTHER;
         };
-        if (securityPlane.isPresent() && type != Feature.FeatureType.OTHER
+        if (securityPlane.isPresent()
+                && type != Feature.FeatureType.OTHER
                 && placement.zAxis().dot(securityPlane.get().zAxis()) < -0.999) {
             // ISO 14649-10: the feature's z axis points out of the material, towards the tool; a
             // feature reached from a security plane facing the other way has its axis written
             // upside down (Annex J.6 gives the pocket the direction of its depth path, the ARM
             // example +z): the axis is reversed, the reference direction kept
-            placement = Transform3.ofFrame(placement.translationPart(), placement.zAxis().times(-1), placement.xAxis());
+            placement = Transform3.ofFrame(
+                    placement.translationPart(), placement.zAxis().times(-1), placement.xAxis());
             warnings.add("#" + id + " " + entity + " '" + featureId + "': its placement's axis points away from its"
                     + " workingstep's security plane (into the material); read reversed");
         }
-        Optional<TravelPath> travel = first(components, "course of travel", "path").map(this::travel);
+        Optional<TravelPath> travel =
+                first(components, "course of travel", "path").map(this::travel);
         OptionalDouble diameter = OptionalDouble.empty();
         Optional<Long> dia = first(components, "diameter");
         if (dia.isPresent()) {
@@ -891,7 +980,8 @@ final class Ap238AimBinder {
         }
         Optional<String> bottom = first(components, "bottom condition").map(this::bottomCondition);
         OptionalDouble depth = depthPlane.isPresent()
-                ? OptionalDouble.of(-depthPlane.get().translationPart().z() + 0.0) : OptionalDouble.empty();
+                ? OptionalDouble.of(-depthPlane.get().translationPart().z() + 0.0)
+                : OptionalDouble.empty();
         if (depth.isEmpty()) {
             // a depth given as the feature's path (hole depth, pocket depth) when there is no depth plane
             Optional<Long> path = first(components, "hole depth", "pocket depth", "depth");
@@ -901,8 +991,21 @@ final class Ap238AimBinder {
         }
         OptionalDouble planar = lengthOf(namedMeasure(measures, "fillet radius", "planar radius", "base radius"));
         OptionalDouble orthogonal = lengthOf(namedMeasure(measures, "orthogonal fillet radius", "orthogonal radius"));
-        Feature out = new Feature(id, type, entity, featureId, placement, depth, depthPlane, profile, travel, diameter,
-                bottom, planar, orthogonal, List.of());
+        Feature out = new Feature(
+                id,
+                type,
+                entity,
+                featureId,
+                placement,
+                depth,
+                depthPlane,
+                profile,
+                travel,
+                diameter,
+                bottom,
+                planar,
+                orthogonal,
+                List.of());
         features.put(id, out);
         return out;
     }
@@ -928,10 +1031,11 @@ final class Ap238AimBinder {
         }
         String kind = text(i.record().param(1)).trim().toUpperCase(Locale.ROOT).replace(' ', '_');
         return switch (i.record().type()) {
-            case "HOLE_BOTTOM" -> switch (kind) {
-                case "THROUGH" -> "THROUGH_BOTTOM_CONDITION";
-                default -> kind + "_HOLE_BOTTOM";
-            };
+            case "HOLE_BOTTOM" ->
+                switch (kind) {
+                    case "THROUGH" -> "THROUGH_BOTTOM_CONDITION";
+                    default -> kind + "_HOLE_BOTTOM";
+                };
             case "POCKET_BOTTOM" -> kind + "_POCKET_BOTTOM_CONDITION";
             default -> i.record().type();
         };
@@ -939,7 +1043,9 @@ final class Ap238AimBinder {
 
     /** A PATH_FEATURE_COMPONENT as a course of travel in the feature frame. */
     private TravelPath travel(long id) {
-        String kind = rec(id, "PATH_FEATURE_COMPONENT").map(r -> text(r.param(1)).toLowerCase(Locale.ROOT)).orElse("");
+        String kind = rec(id, "PATH_FEATURE_COMPONENT")
+                .map(r -> text(r.param(1)).toLowerCase(Locale.ROOT))
+                .orElse("");
         List<Long> items = shapeItems(id);
         Optional<Vec3> dir = Optional.empty();
         for (long i : items) {
@@ -952,10 +1058,16 @@ final class Ap238AimBinder {
             }
         }
         // the writer places the path in the feature's own placement (the same instance): read as the feature frame
-        String entity = kind.equals("linear") ? "LINEAR_PATH" : kind.equals("circular") ? "CIRCULAR_PATH"
-                : "PATH_FEATURE_COMPONENT '" + kind + "'";
-        return new TravelPath(entity, Transform3.IDENTITY, lengthOf(namedMeasure(items, "distance")), dir,
-                lengthOf(namedMeasure(items, "radius")), lengthOf(namedMeasure(items, "sweep angle")));
+        String entity = kind.equals("linear")
+                ? "LINEAR_PATH"
+                : kind.equals("circular") ? "CIRCULAR_PATH" : "PATH_FEATURE_COMPONENT '" + kind + "'";
+        return new TravelPath(
+                entity,
+                Transform3.IDENTITY,
+                lengthOf(namedMeasure(items, "distance")),
+                dir,
+                lengthOf(namedMeasure(items, "radius")),
+                lengthOf(namedMeasure(items, "sweep angle")));
     }
 
     /** A profile component (LINEAR_PROFILE, CIRCULAR_CLOSED_PROFILE, CLOSED_PATH_PROFILE, ...). */
@@ -973,19 +1085,37 @@ final class Ap238AimBinder {
             }
         }
         return switch (entity) {
-            case "LINEAR_PROFILE" -> new Profile.Linear(entity, pl,
-                    lengthOf(namedMeasure(items, "profile length", "length")).orElse(0));
-            case "CIRCULAR_CLOSED_PROFILE" -> new Profile.Circular(entity, pl,
-                    lengthOf(namedMeasure(items, "diameter")).orElse(0));
-            case "RECTANGULAR_CLOSED_PROFILE" -> new Profile.Rectangular(entity, pl,
-                    lengthOf(namedMeasure(items, "profile width", "width")).orElse(0),
-                    lengthOf(namedMeasure(items, "profile length", "length")).orElse(0));
-            case "SQUARE_U_PROFILE" -> new Profile.U(entity, pl, lengthOf(namedMeasure(items, "width")).orElse(0),
-                    lengthOf(namedMeasure(items, "first radius")), lengthOf(namedMeasure(items, "first angle")),
-                    lengthOf(namedMeasure(items, "second radius")), lengthOf(namedMeasure(items, "second angle")));
+            case "LINEAR_PROFILE" ->
+                new Profile.Linear(
+                        entity,
+                        pl,
+                        lengthOf(namedMeasure(items, "profile length", "length"))
+                                .orElse(0));
+            case "CIRCULAR_CLOSED_PROFILE" ->
+                new Profile.Circular(
+                        entity, pl, lengthOf(namedMeasure(items, "diameter")).orElse(0));
+            case "RECTANGULAR_CLOSED_PROFILE" ->
+                new Profile.Rectangular(
+                        entity,
+                        pl,
+                        lengthOf(namedMeasure(items, "profile width", "width")).orElse(0),
+                        lengthOf(namedMeasure(items, "profile length", "length"))
+                                .orElse(0));
+            case "SQUARE_U_PROFILE" ->
+                new Profile.U(
+                        entity,
+                        pl,
+                        lengthOf(namedMeasure(items, "width")).orElse(0),
+                        lengthOf(namedMeasure(items, "first radius")),
+                        lengthOf(namedMeasure(items, "first angle")),
+                        lengthOf(namedMeasure(items, "second radius")),
+                        lengthOf(namedMeasure(items, "second angle")));
             case "CLOSED_PATH_PROFILE", "OPEN_PATH_PROFILE" -> {
-                Profile p = mm(geometry.curveProfile(entity.equals("CLOSED_PATH_PROFILE") ? "GENERAL_CLOSED_PROFILE"
-                        : "GENERAL_PROFILE", id, pl, curve));
+                Profile p = mm(geometry.curveProfile(
+                        entity.equals("CLOSED_PATH_PROFILE") ? "GENERAL_CLOSED_PROFILE" : "GENERAL_PROFILE",
+                        id,
+                        pl,
+                        curve));
                 yield p;
             }
             default -> new Profile.Other(entity, pl, id);
@@ -997,7 +1127,9 @@ final class Ap238AimBinder {
     private Operation operation(long id) throws StepParseException {
         StepInstance i = inst(id);
         String entity = i == null ? "?" : i.type();
-        String kind = i == null || i.isComplex() ? "" : text(i.record().param(1)).trim().toLowerCase(Locale.ROOT);
+        String kind = i == null || i.isComplex()
+                ? ""
+                : text(i.record().param(1)).trim().toLowerCase(Locale.ROOT);
         String opId = i == null || i.isComplex() ? "" : text(i.record().param(0));
         Operation.OperationType type = operationType(entity, kind);
         List<Property> props = actionProperties(id);
@@ -1011,7 +1143,9 @@ final class Ap238AimBinder {
         }
         Technology tech = Technology.NONE;
         Optional<Long> techId = firstUser(id, "MACHINING_TECHNOLOGY_RELATIONSHIP", 2)
-                .flatMap(r -> ref(rec(r, "MACHINING_TECHNOLOGY_RELATIONSHIP").orElseThrow().param(3)));
+                .flatMap(r -> ref(rec(r, "MACHINING_TECHNOLOGY_RELATIONSHIP")
+                        .orElseThrow()
+                        .param(3)));
         if (techId.isPresent()) {
             tech = technology(techId.get());
         }
@@ -1043,29 +1177,50 @@ final class Ap238AimBinder {
                 feedOnRetract = OptionalDouble.of(feedOnRetract.getAsDouble() / 100);
             }
             Optional<String> stop = description(property(props, "spindle stop at bottom"));
-            drilling = Optional.of(new DrillingParameters(measure(property(props, "dwell time bottom")), feedOnRetract,
-                    measure(property(props, "retract distance")), measure(property(props, "first depth")),
-                    measure(property(props, "depth of step")), measure(property(props, "dwell time step")),
-                    stop.map(x -> !x.toLowerCase(Locale.ROOT).contains("not") && !x.toLowerCase(Locale.ROOT)
-                            .contains("no "))));
+            drilling = Optional.of(new DrillingParameters(
+                    measure(property(props, "dwell time bottom")),
+                    feedOnRetract,
+                    measure(property(props, "retract distance")),
+                    measure(property(props, "first depth")),
+                    measure(property(props, "depth of step")),
+                    measure(property(props, "dwell time step")),
+                    stop.map(x -> !x.toLowerCase(Locale.ROOT).contains("not")
+                            && !x.toLowerCase(Locale.ROOT).contains("no "))));
         }
         List<ExplicitToolpath> toolpaths = toolpaths(id);
         if (!(tech.feedMmPerMin().orElse(0) > 0)) {
             // the feed is the cutting toolpaths' when the operation's own technology gives none
             // (Annex J.4: 0 at the operation, 250 mm/min on every cutting toolpath)
-            Optional<Technology> cutting = toolpaths.stream().filter(t -> !t.rapid())
-                    .map(ExplicitToolpath::technology).flatMap(Optional::stream)
-                    .filter(t -> t.feedMmPerMin().orElse(0) > 0).findFirst();
+            Optional<Technology> cutting = toolpaths.stream()
+                    .filter(t -> !t.rapid())
+                    .map(ExplicitToolpath::technology)
+                    .flatMap(Optional::stream)
+                    .filter(t -> t.feedMmPerMin().orElse(0) > 0)
+                    .findFirst();
             if (cutting.isPresent()) {
                 spellings.add("an operation without a feed of its own takes its first cutting toolpath's technology");
                 tech = cutting.get();
             }
         }
-        return new Operation(id, type, kind.isEmpty() ? entity : entity + " '" + kind + "'", opId,
-                measure(property(props, "retract plane")), start, tool, tech, strategy, approach, retract,
-                measure(property(props, "axial cutting depth")), measure(property(props, "radial cutting depth")),
-                measure(property(props, "allowance side")), measure(property(props, "allowance bottom")),
-                measure(property(props, "cutting depth")), measure(property(props, "overcut length")), drilling,
+        return new Operation(
+                id,
+                type,
+                kind.isEmpty() ? entity : entity + " '" + kind + "'",
+                opId,
+                measure(property(props, "retract plane")),
+                start,
+                tool,
+                tech,
+                strategy,
+                approach,
+                retract,
+                measure(property(props, "axial cutting depth")),
+                measure(property(props, "radial cutting depth")),
+                measure(property(props, "allowance side")),
+                measure(property(props, "allowance bottom")),
+                measure(property(props, "cutting depth")),
+                measure(property(props, "overcut length")),
+                drilling,
                 toolpaths);
     }
 
@@ -1096,10 +1251,13 @@ final class Ap238AimBinder {
                 continue;
             }
             List<Property> props = actionProperties(tp);
-            boolean rapid = description(property(props, "speed profile")).map(x -> x.equalsIgnoreCase("rapid"))
+            boolean rapid = description(property(props, "speed profile"))
+                    .map(x -> x.equalsIgnoreCase("rapid"))
                     .orElse(false);
             Optional<Technology> tech = firstUser(tp, "MACHINING_TECHNOLOGY_RELATIONSHIP", 2)
-                    .flatMap(r -> ref(rec(r, "MACHINING_TECHNOLOGY_RELATIONSHIP").orElseThrow().param(3)))
+                    .flatMap(r -> ref(rec(r, "MACHINING_TECHNOLOGY_RELATIONSHIP")
+                            .orElseThrow()
+                            .param(3)))
                     .map(this::technology);
             Optional<Property> basic = property(props, "basic curve");
             List<Profile.Segment> curve = new ArrayList<>();
@@ -1109,10 +1267,12 @@ final class Ap238AimBinder {
                 }
             }
             if (property(props, "tool axis").isPresent()) {
-                warnings.add("#" + tp + " MACHINING_TOOLPATH '" + text(t.record().param(0)) + "': its tool axis curve is"
-                        + " not read; the tool stays along the feature's z axis");
+                warnings.add(
+                        "#" + tp + " MACHINING_TOOLPATH '" + text(t.record().param(0)) + "': its tool axis curve is"
+                                + " not read; the tool stays along the feature's z axis");
             }
-            out.add(new ExplicitToolpath(tp, text(t.record().param(0)), text(t.record().param(1)), rapid, tech, curve));
+            out.add(new ExplicitToolpath(
+                    tp, text(t.record().param(0)), text(t.record().param(1)), rapid, tech, curve));
         }
         return out;
     }
@@ -1143,10 +1303,15 @@ final class Ap238AimBinder {
         if (isA(id, "COMPOSITE_CURVE")) {
             for (long seg : refs(rec(id, "COMPOSITE_CURVE").orElseThrow().param(1))) {
                 StepRecord s = rec(seg, "COMPOSITE_CURVE_SEGMENT")
-                        .orElseThrow(() -> error(seg, "a composite curve's segment should be a COMPOSITE_CURVE_SEGMENT"));
-                boolean same = !(s.param(1) instanceof StepValue.Enumeration e && e.name().equals("F"));
-                List<Profile.Segment> part = curve(ref(s.param(2)).orElseThrow(
-                        () -> error(seg, "COMPOSITE_CURVE_SEGMENT.parent_curve should be a reference")), depth + 1);
+                        .orElseThrow(
+                                () -> error(seg, "a composite curve's segment should be a COMPOSITE_CURVE_SEGMENT"));
+                boolean same = !(s.param(1) instanceof StepValue.Enumeration e
+                        && e.name().equals("F"));
+                List<Profile.Segment> part = curve(
+                        ref(s.param(2))
+                                .orElseThrow(
+                                        () -> error(seg, "COMPOSITE_CURVE_SEGMENT.parent_curve should be a reference")),
+                        depth + 1);
                 if (!same) {
                     part = reversed(part);
                 }
@@ -1161,8 +1326,10 @@ final class Ap238AimBinder {
             if (p1.isEmpty() || p2.isEmpty()) {
                 throw error(id, "TRIMMED_CURVE trimmed by parameters only: trim it by CARTESIAN_POINTs");
             }
-            boolean sense = !(t.param(4) instanceof StepValue.Enumeration e && e.name().equals("F"));
-            long basis = ref(t.param(1)).orElseThrow(() -> error(id, "TRIMMED_CURVE.basis_curve should be a reference"));
+            boolean sense =
+                    !(t.param(4) instanceof StepValue.Enumeration e && e.name().equals("F"));
+            long basis =
+                    ref(t.param(1)).orElseThrow(() -> error(id, "TRIMMED_CURVE.basis_curve should be a reference"));
             if (isA(basis, "CIRCLE")) {
                 StepRecord c = rec(basis, "CIRCLE").orElseThrow();
                 Transform3 frame = placement(ref(c.param(1)).orElseThrow(() -> error(basis, "CIRCLE has no position")));
@@ -1197,8 +1364,10 @@ final class Ap238AimBinder {
         List<Profile.Segment> out = new ArrayList<>();
         for (int i = in.size() - 1; i >= 0; i--) {
             Profile.Segment s = in.get(i);
-            out.add(s instanceof Profile.Arc a ? new Profile.Arc(a.end(), a.start(), a.center(), a.radiusMm(), !a.ccw())
-                    : new Profile.Line(s.end(), s.start()));
+            out.add(
+                    s instanceof Profile.Arc a
+                            ? new Profile.Arc(a.end(), a.start(), a.center(), a.radiusMm(), !a.ccw())
+                            : new Profile.Line(s.end(), s.start()));
         }
         return out;
     }
@@ -1207,20 +1376,23 @@ final class Ap238AimBinder {
     static Operation.OperationType operationType(String entity, String kind) {
         boolean rough = kind.contains("rough");
         return switch (entity) {
-            case "PLANE_MILLING_OPERATION" -> rough ? Operation.OperationType.PLANE_ROUGH_MILLING
-                    : Operation.OperationType.PLANE_FINISH_MILLING;
-            case "SIDE_MILLING_OPERATION" -> rough ? Operation.OperationType.SIDE_ROUGH_MILLING
-                    : Operation.OperationType.SIDE_FINISH_MILLING;
-            case "BOTTOM_AND_SIDE_MILLING_OPERATION" -> rough ? Operation.OperationType.BOTTOM_AND_SIDE_ROUGH_MILLING
-                    : Operation.OperationType.BOTTOM_AND_SIDE_FINISH_MILLING;
-            case "DRILLING_OPERATION" -> switch (kind) {
-                case "center drilling" -> Operation.OperationType.CENTER_DRILLING;
-                case "counter sinking", "countersinking" -> Operation.OperationType.COUNTER_SINKING;
-                case "multistep drilling" -> Operation.OperationType.MULTISTEP_DRILLING;
-                default -> Operation.OperationType.DRILLING;
-            };
-            case "BORING_OPERATION" -> kind.contains("ream") ? Operation.OperationType.REAMING
-                    : Operation.OperationType.BORING;
+            case "PLANE_MILLING_OPERATION" ->
+                rough ? Operation.OperationType.PLANE_ROUGH_MILLING : Operation.OperationType.PLANE_FINISH_MILLING;
+            case "SIDE_MILLING_OPERATION" ->
+                rough ? Operation.OperationType.SIDE_ROUGH_MILLING : Operation.OperationType.SIDE_FINISH_MILLING;
+            case "BOTTOM_AND_SIDE_MILLING_OPERATION" ->
+                rough
+                        ? Operation.OperationType.BOTTOM_AND_SIDE_ROUGH_MILLING
+                        : Operation.OperationType.BOTTOM_AND_SIDE_FINISH_MILLING;
+            case "DRILLING_OPERATION" ->
+                switch (kind) {
+                    case "center drilling" -> Operation.OperationType.CENTER_DRILLING;
+                    case "counter sinking", "countersinking" -> Operation.OperationType.COUNTER_SINKING;
+                    case "multistep drilling" -> Operation.OperationType.MULTISTEP_DRILLING;
+                    default -> Operation.OperationType.DRILLING;
+                };
+            case "BORING_OPERATION" ->
+                kind.contains("ream") ? Operation.OperationType.REAMING : Operation.OperationType.BORING;
             case "BACK_BORING_OPERATION" -> Operation.OperationType.BACK_BORING;
             case "TAPPING_OPERATION" -> Operation.OperationType.TAPPING;
             case "THREAD_DRILLING_OPERATION" -> Operation.OperationType.THREAD_DRILLING;
@@ -1236,7 +1408,10 @@ final class Ap238AimBinder {
         List<Property> props = actionProperties(id);
         if (entity.equals("DRILLING_TYPE_STRATEGY")) {
             OptionalDouble[] ratios = new OptionalDouble[4];
-            List<String> names = List.of("reduced cut at start", "reduced feedrate at start", "reduced cut at end",
+            List<String> names = List.of(
+                    "reduced cut at start",
+                    "reduced feedrate at start",
+                    "reduced cut at end",
                     "reduced feedrate at end");
             for (int k = 0; k < ratios.length; k++) {
                 OptionalDouble v = measure(property(props, names.get(k)));
@@ -1246,16 +1421,37 @@ final class Ap238AimBinder {
                 }
                 ratios[k] = v;
             }
-            DrillingStrategy d = new DrillingStrategy(ratios[0], ratios[1], measure(property(props, "depth of start")),
-                    ratios[2], ratios[3], measure(property(props, "depth of end")));
-            return new Strategy(id, Strategy.StrategyType.DRILLING_TYPE_STRATEGY, entity, OptionalDouble.empty(),
-                    OptionalDouble.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
-                    Optional.empty(), Optional.empty(), Optional.of(d));
+            DrillingStrategy d = new DrillingStrategy(
+                    ratios[0],
+                    ratios[1],
+                    measure(property(props, "depth of start")),
+                    ratios[2],
+                    ratios[3],
+                    measure(property(props, "depth of end")));
+            return new Strategy(
+                    id,
+                    Strategy.StrategyType.DRILLING_TYPE_STRATEGY,
+                    entity,
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.of(d));
         }
         String arm = kind.toUpperCase(Locale.ROOT).replace(' ', '_');
         Strategy.StrategyType type = switch (arm) {
-            case "UNIDIRECTIONAL", "BIDIRECTIONAL", "CONTOUR_PARALLEL", "CONTOUR_SPIRAL", "BIDIRECTIONAL_CONTOUR",
-                    "CONTOUR_BIDIRECTIONAL", "CENTER_MILLING", "EXPLICIT" -> Strategy.StrategyType.valueOf(arm);
+            case "UNIDIRECTIONAL",
+                    "BIDIRECTIONAL",
+                    "CONTOUR_PARALLEL",
+                    "CONTOUR_SPIRAL",
+                    "BIDIRECTIONAL_CONTOUR",
+                    "CONTOUR_BIDIRECTIONAL",
+                    "CENTER_MILLING",
+                    "EXPLICIT" -> Strategy.StrategyType.valueOf(arm);
             default -> Strategy.StrategyType.OTHER;
         };
         OptionalDouble overlap = measure(property(props, "overlap ratio"));
@@ -1286,19 +1482,34 @@ final class Ap238AimBinder {
         if (fd.isPresent()) {
             feedDirection = Optional.of(geometry.directionOf(fd.get()));
         }
-        Optional<String> stepover = description(property(props, "stepover direction")).map(x -> x.toUpperCase(Locale.ROOT));
-        Optional<String> rotation = description(property(props, "rotation direction")).map(x -> {
-            String l = x.toLowerCase(Locale.ROOT);
-            return l.contains("counter") || l.equals("ccw") ? "CCW" : "CW";
-        });
+        Optional<String> stepover =
+                description(property(props, "stepover direction")).map(x -> x.toUpperCase(Locale.ROOT));
+        Optional<String> rotation = description(property(props, "rotation direction"))
+                .map(x -> {
+                    String l = x.toLowerCase(Locale.ROOT);
+                    return l.contains("counter") || l.equals("ccw") ? "CCW" : "CW";
+                });
         Optional<String> cutmode = description(property(props, "cutmode")).map(x -> x.toUpperCase(Locale.ROOT));
-        return new Strategy(id, type, type == Strategy.StrategyType.OTHER ? entity + " '" + kind + "'" : arm, overlap,
-                fraction, how, multiple, feedDirection, stepover, rotation, cutmode, Optional.empty());
+        return new Strategy(
+                id,
+                type,
+                type == Strategy.StrategyType.OTHER ? entity + " '" + kind + "'" : arm,
+                overlap,
+                fraction,
+                how,
+                multiple,
+                feedDirection,
+                stepover,
+                rotation,
+                cutmode,
+                Optional.empty());
     }
 
     private ApproachRetract approachRetract(long id) throws StepParseException {
         StepInstance i = inst(id);
-        String kind = i == null ? "" : text(i.record().param(1)).trim().toUpperCase(Locale.ROOT).replace(' ', '_');
+        String kind = i == null
+                ? ""
+                : text(i.record().param(1)).trim().toUpperCase(Locale.ROOT).replace(' ', '_');
         ApproachRetract.Kind k;
         try {
             k = ApproachRetract.Kind.valueOf(kind);
@@ -1315,8 +1526,14 @@ final class Ap238AimBinder {
         if (angle.isEmpty()) {
             angle = measure(property(props, "angle"));
         }
-        return new ApproachRetract(id, k, k == ApproachRetract.Kind.OTHER ? typeOf(id) + " '" + kind + "'" : kind,
-                orientation, angle, measure(property(props, "radius")), measure(property(props, "width")));
+        return new ApproachRetract(
+                id,
+                k,
+                k == ApproachRetract.Kind.OTHER ? typeOf(id) + " '" + kind + "'" : kind,
+                orientation,
+                angle,
+                measure(property(props, "radius")),
+                measure(property(props, "width")));
     }
 
     private Tool tool(long id) {
@@ -1333,7 +1550,9 @@ final class Ap238AimBinder {
                 continue;
             }
             for (long rpr : usersOf(rp, "RESOURCE_PROPERTY_REPRESENTATION", 2)) {
-                Optional<Long> rep = ref(rec(rpr, "RESOURCE_PROPERTY_REPRESENTATION").orElseThrow().param(3));
+                Optional<Long> rep = ref(rec(rpr, "RESOURCE_PROPERTY_REPRESENTATION")
+                        .orElseThrow()
+                        .param(3));
                 if (rep.isPresent()) {
                     bodyItems.addAll(items(rep.get()));
                     String name = text(inst(rep.get()).record().param(0));
@@ -1345,11 +1564,14 @@ final class Ap238AimBinder {
         }
         OptionalDouble offset = OptionalDouble.empty();
         for (long arr : usersOf(id, "ACTION_RESOURCE_RELATIONSHIP", 2)) {
-            Optional<Long> cc = ref(rec(arr, "ACTION_RESOURCE_RELATIONSHIP").orElseThrow().param(3));
+            Optional<Long> cc =
+                    ref(rec(arr, "ACTION_RESOURCE_RELATIONSHIP").orElseThrow().param(3));
             if (cc.isPresent() && offset.isEmpty()) {
                 for (long rp : usersOf(cc.get(), "RESOURCE_PROPERTY", 2)) {
                     for (long rpr : usersOf(rp, "RESOURCE_PROPERTY_REPRESENTATION", 2)) {
-                        Optional<Long> rep = ref(rec(rpr, "RESOURCE_PROPERTY_REPRESENTATION").orElseThrow().param(3));
+                        Optional<Long> rep = ref(rec(rpr, "RESOURCE_PROPERTY_REPRESENTATION")
+                                .orElseThrow()
+                                .param(3));
                         if (rep.isPresent()) {
                             for (long it : items(rep.get())) {
                                 Item x = item(it);
@@ -1364,7 +1586,8 @@ final class Ap238AimBinder {
         }
         OptionalDouble teethValue = lengthOf(namedMeasure(bodyItems, "number of effective teeth", "number of teeth"));
         OptionalInt teeth = teethValue.isPresent() && teethValue.getAsDouble() >= 1 && teethValue.getAsDouble() < 1e6
-                ? OptionalInt.of((int) Math.round(teethValue.getAsDouble())) : OptionalInt.empty();
+                ? OptionalInt.of((int) Math.round(teethValue.getAsDouble()))
+                : OptionalInt.empty();
         Optional<String> hand = Optional.empty();
         for (long it : bodyItems) {
             Item x = item(it);
@@ -1372,7 +1595,11 @@ final class Ap238AimBinder {
                 hand = Optional.of(x.text().toUpperCase(Locale.ROOT));
             }
         }
-        Tool out = new Tool(id, text(t.param(0)), body, "MACHINING_TOOL_BODY_REPRESENTATION",
+        Tool out = new Tool(
+                id,
+                text(t.param(0)),
+                body,
+                "MACHINING_TOOL_BODY_REPRESENTATION",
                 lengthOf(namedMeasure(bodyItems, "effective cutting diameter", "diameter")),
                 lengthOf(namedMeasure(bodyItems, "point angle", "tool top angle")),
                 lengthOf(namedMeasure(bodyItems, "tool circumference angle")),
@@ -1380,8 +1607,12 @@ final class Ap238AimBinder {
                 lengthOf(namedMeasure(bodyItems, "edge radius")),
                 lengthOf(namedMeasure(bodyItems, "edge center vertical")),
                 lengthOf(namedMeasure(bodyItems, "edge center horizontal")),
-                lengthOf(namedMeasure(bodyItems, "overall assembly length")), offset, teeth, hand,
-                OptionalDouble.empty(), "deg");
+                lengthOf(namedMeasure(bodyItems, "overall assembly length")),
+                offset,
+                teeth,
+                hand,
+                OptionalDouble.empty(),
+                "deg");
         tools.put(id, out);
         return out;
     }
@@ -1399,26 +1630,39 @@ final class Ap238AimBinder {
         // the model's feed is mm/min and its spindle rpm: each value was converted by its own unit
         // (mm/s, in/min, 1/s ...) into mm/s and 1/s, so one factor of 60 remains
         OptionalDouble feedMmMin = f.converted().isPresent()
-                ? OptionalDouble.of(f.converted().getAsDouble() * 60) : OptionalDouble.empty();
+                ? OptionalDouble.of(f.converted().getAsDouble() * 60)
+                : OptionalDouble.empty();
         OptionalDouble rpm = s.converted().isPresent()
-                ? OptionalDouble.of(Math.abs(s.converted().getAsDouble()) * 60) : OptionalDouble.empty();
+                ? OptionalDouble.of(Math.abs(s.converted().getAsDouble()) * 60)
+                : OptionalDouble.empty();
         boolean cw = s.converted().isPresent() && s.converted().getAsDouble() < 0;
         if (feedMmMin.isPresent() && feedMmMin.getAsDouble() > 0 && feedMmMin.getAsDouble() < SLOWEST_PLAUSIBLE_FEED) {
             // kept as written (a slow feed endangers nothing), but told: Annex J.6 writes the ARM's
             // 0.04 (m/s there) as 0.04 mm/s, a thousandth of the part's feed
-            warnings.add("#" + id + " MACHINING_TECHNOLOGY: feed " + num(f.written().getAsDouble()) + " " + f.unit()
+            warnings.add("#" + id + " MACHINING_TECHNOLOGY: feed "
+                    + num(f.written().getAsDouble()) + " " + f.unit()
                     + " is " + num(Math.round(feedMmMin.getAsDouble() * 1e4) / 1e4) + " mm/min, too slow to cut;"
                     + " kept as written (is the unit right? ISO 14649's ARM writes feeds in m/s)");
         }
         Optional<String> reference = description(property(props, "feedrate reference"))
                 .map(x -> x.toLowerCase(Locale.ROOT).contains("contact") ? "CCP" : "TCP");
-        return new Technology(id, f.written(), f.unit(), reference, c.written(), c.unit(), s.written(), s.unit(),
-                z.converted(), feedMmMin, rpm, cw);
+        return new Technology(
+                id,
+                f.written(),
+                f.unit(),
+                reference,
+                c.written(),
+                c.unit(),
+                s.written(),
+                s.unit(),
+                z.converted(),
+                feedMmMin,
+                rpm,
+                cw);
     }
 
     /** A measure as written, with its unit's name, and converted into model units (mm, s). */
-    private record Quantity(OptionalDouble written, String unit, OptionalDouble converted) {
-    }
+    private record Quantity(OptionalDouble written, String unit, OptionalDouble converted) {}
 
     private Quantity quantity(Optional<Property> p) {
         if (p.isPresent()) {
@@ -1427,17 +1671,23 @@ final class Ap238AimBinder {
                 if (x == null) {
                     continue;
                 }
-                StepRecord r = x.part("MEASURE_WITH_UNIT").orElse(x.part("MEASURE_REPRESENTATION_ITEM").orElse(null));
+                StepRecord r = x.part("MEASURE_WITH_UNIT")
+                        .orElse(x.part("MEASURE_REPRESENTATION_ITEM").orElse(null));
                 if (r == null) {
                     continue;
                 }
                 int valueAt = r.type().equals("MEASURE_WITH_UNIT") ? 0 : 1;
                 OptionalDouble v = number(r.param(valueAt));
                 Unit u = ref(r.param(valueAt + 1)).map(id -> unit(id, 0)).orElse(new Unit(1, "unstated"));
-                String label = ref(r.param(valueAt + 1)).flatMap(id -> firstUser(id, "NAME_ATTRIBUTE", 1))
-                        .flatMap(n -> rec(n, "NAME_ATTRIBUTE")).map(n -> text(n.param(0))).filter(n -> !n.isEmpty())
+                String label = ref(r.param(valueAt + 1))
+                        .flatMap(id -> firstUser(id, "NAME_ATTRIBUTE", 1))
+                        .flatMap(n -> rec(n, "NAME_ATTRIBUTE"))
+                        .map(n -> text(n.param(0)))
+                        .filter(n -> !n.isEmpty())
                         .orElse(u.label());
-                return new Quantity(v, label.isEmpty() ? "unstated" : label,
+                return new Quantity(
+                        v,
+                        label.isEmpty() ? "unstated" : label,
                         v.isPresent() ? OptionalDouble.of(v.getAsDouble() * u.factor()) : v);
             }
         }

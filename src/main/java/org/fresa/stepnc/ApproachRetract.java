@@ -14,8 +14,14 @@ import org.fresa.geom.Vec3;
  * @param radiusMm helix radius
  * @param widthMm zigzag width
  */
-public record ApproachRetract(long instanceId, Kind kind, String entity, Optional<Vec3> toolOrientation,
-        OptionalDouble angle, OptionalDouble radiusMm, OptionalDouble widthMm) {
+public record ApproachRetract(
+        long instanceId,
+        Kind kind,
+        String entity,
+        Optional<Vec3> toolOrientation,
+        OptionalDouble angle,
+        OptionalDouble radiusMm,
+        OptionalDouble widthMm) {
     public ApproachRetract {
         Objects.requireNonNull(kind);
         Objects.requireNonNull(entity);
@@ -26,6 +32,10 @@ public record ApproachRetract(long instanceId, Kind kind, String entity, Optiona
     }
 
     public enum Kind {
-        PLUNGE_TOOLAXIS, PLUNGE_RAMP, PLUNGE_HELIX, PLUNGE_ZIGZAG, OTHER
+        PLUNGE_TOOLAXIS,
+        PLUNGE_RAMP,
+        PLUNGE_HELIX,
+        PLUNGE_ZIGZAG,
+        OTHER
     }
 }

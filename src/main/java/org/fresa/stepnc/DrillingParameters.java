@@ -18,14 +18,24 @@ import java.util.OptionalDouble;
  * @param dwellTimeStepS multistep_drilling.dwell_time_step
  * @param spindleStopAtBottom boring_operation.spindle_stop_at_bottom
  */
-public record DrillingParameters(OptionalDouble dwellTimeBottomS, OptionalDouble feedOnRetract,
-        OptionalDouble retractDistanceMm, OptionalDouble firstDepthMm, OptionalDouble depthOfStepMm,
-        OptionalDouble dwellTimeStepS, Optional<Boolean> spindleStopAtBottom) {
+public record DrillingParameters(
+        OptionalDouble dwellTimeBottomS,
+        OptionalDouble feedOnRetract,
+        OptionalDouble retractDistanceMm,
+        OptionalDouble firstDepthMm,
+        OptionalDouble depthOfStepMm,
+        OptionalDouble dwellTimeStepS,
+        Optional<Boolean> spindleStopAtBottom) {
 
     /** No attributes set. */
-    public static final DrillingParameters NONE = new DrillingParameters(OptionalDouble.empty(),
-            OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
-            OptionalDouble.empty(), Optional.empty());
+    public static final DrillingParameters NONE = new DrillingParameters(
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            Optional.empty());
 
     public DrillingParameters {
         Objects.requireNonNull(dwellTimeBottomS, "dwellTimeBottomS");

@@ -16,13 +16,22 @@ import java.util.OptionalDouble;
  * @param reducedFeedAtEnd reduced_feed_at_end: feed ratio over the end depth
  * @param depthOfEndMm depth_of_end: the last part of the travel cut with the end reductions
  */
-public record DrillingStrategy(OptionalDouble reducedCutAtStart, OptionalDouble reducedFeedAtStart,
-        OptionalDouble depthOfStartMm, OptionalDouble reducedCutAtEnd, OptionalDouble reducedFeedAtEnd,
+public record DrillingStrategy(
+        OptionalDouble reducedCutAtStart,
+        OptionalDouble reducedFeedAtStart,
+        OptionalDouble depthOfStartMm,
+        OptionalDouble reducedCutAtEnd,
+        OptionalDouble reducedFeedAtEnd,
         OptionalDouble depthOfEndMm) {
 
     /** A strategy with no reductions. */
-    public static final DrillingStrategy NONE = new DrillingStrategy(OptionalDouble.empty(), OptionalDouble.empty(),
-            OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
+    public static final DrillingStrategy NONE = new DrillingStrategy(
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty());
 
     public DrillingStrategy {
         Objects.requireNonNull(reducedCutAtStart, "reducedCutAtStart");

@@ -12,6 +12,5 @@ public sealed interface Executable permits MachiningWorkingstep, Workplan, Execu
     String id();
 
     /** An executable the binding does not interpret, e.g. RAPID_MOVEMENT or DISPLAY_MESSAGE. */
-    record Other(long instanceId, String id, String entity) implements Executable {
-    }
+    record Other(long instanceId, String id, String entity) implements Executable {}
 }

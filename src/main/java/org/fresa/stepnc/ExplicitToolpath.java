@@ -16,7 +16,12 @@ import java.util.Optional;
  * @param technology its own technology (feed, spindle), when it has one
  * @param curve the basic curve: lines and arcs, each starting where the one before ends
  */
-public record ExplicitToolpath(long instanceId, String id, String kind, boolean rapid, Optional<Technology> technology,
+public record ExplicitToolpath(
+        long instanceId,
+        String id,
+        String kind,
+        boolean rapid,
+        Optional<Technology> technology,
         List<Profile.Segment> curve) {
     public ExplicitToolpath {
         Objects.requireNonNull(id);

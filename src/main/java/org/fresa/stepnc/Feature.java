@@ -37,11 +37,23 @@ import org.fresa.geom.Vec3;
  * @param bosses its_boss (pockets, planar faces, steps) in file order: the material the feature
  *               must leave standing, each a BOSS in the workpiece frame
  */
-public record Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
-        OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
-        Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
-        OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds,
-        List<SlotEnd> slotEnds, List<Feature> bosses) {
+public record Feature(
+        long instanceId,
+        FeatureType type,
+        String entity,
+        String id,
+        Transform3 placement,
+        OptionalDouble depthMm,
+        Optional<Transform3> depthPlane,
+        Optional<Profile> profile,
+        Optional<TravelPath> courseOfTravel,
+        OptionalDouble diameterMm,
+        Optional<String> bottomCondition,
+        OptionalDouble planarRadiusMm,
+        OptionalDouble orthogonalRadiusMm,
+        List<Long> operationIds,
+        List<SlotEnd> slotEnds,
+        List<Feature> bosses) {
 
     public Feature {
         Objects.requireNonNull(type);
@@ -62,22 +74,73 @@ public record Feature(long instanceId, FeatureType type, String entity, String i
     }
 
     /** A feature without bosses. */
-    public Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
-            OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
-            Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
-            OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds,
+    public Feature(
+            long instanceId,
+            FeatureType type,
+            String entity,
+            String id,
+            Transform3 placement,
+            OptionalDouble depthMm,
+            Optional<Transform3> depthPlane,
+            Optional<Profile> profile,
+            Optional<TravelPath> courseOfTravel,
+            OptionalDouble diameterMm,
+            Optional<String> bottomCondition,
+            OptionalDouble planarRadiusMm,
+            OptionalDouble orthogonalRadiusMm,
+            List<Long> operationIds,
             List<SlotEnd> slotEnds) {
-        this(instanceId, type, entity, id, placement, depthMm, depthPlane, profile, courseOfTravel, diameterMm,
-                bottomCondition, planarRadiusMm, orthogonalRadiusMm, operationIds, slotEnds, List.of());
+        this(
+                instanceId,
+                type,
+                entity,
+                id,
+                placement,
+                depthMm,
+                depthPlane,
+                profile,
+                courseOfTravel,
+                diameterMm,
+                bottomCondition,
+                planarRadiusMm,
+                orthogonalRadiusMm,
+                operationIds,
+                slotEnds,
+                List.of());
     }
 
     /** A feature without slot ends. */
-    public Feature(long instanceId, FeatureType type, String entity, String id, Transform3 placement,
-            OptionalDouble depthMm, Optional<Transform3> depthPlane, Optional<Profile> profile,
-            Optional<TravelPath> courseOfTravel, OptionalDouble diameterMm, Optional<String> bottomCondition,
-            OptionalDouble planarRadiusMm, OptionalDouble orthogonalRadiusMm, List<Long> operationIds) {
-        this(instanceId, type, entity, id, placement, depthMm, depthPlane, profile, courseOfTravel, diameterMm,
-                bottomCondition, planarRadiusMm, orthogonalRadiusMm, operationIds, List.of());
+    public Feature(
+            long instanceId,
+            FeatureType type,
+            String entity,
+            String id,
+            Transform3 placement,
+            OptionalDouble depthMm,
+            Optional<Transform3> depthPlane,
+            Optional<Profile> profile,
+            Optional<TravelPath> courseOfTravel,
+            OptionalDouble diameterMm,
+            Optional<String> bottomCondition,
+            OptionalDouble planarRadiusMm,
+            OptionalDouble orthogonalRadiusMm,
+            List<Long> operationIds) {
+        this(
+                instanceId,
+                type,
+                entity,
+                id,
+                placement,
+                depthMm,
+                depthPlane,
+                profile,
+                courseOfTravel,
+                diameterMm,
+                bottomCondition,
+                planarRadiusMm,
+                orthogonalRadiusMm,
+                operationIds,
+                List.of());
     }
 
     /**
@@ -125,7 +188,14 @@ public record Feature(long instanceId, FeatureType type, String entity, String i
 
     /** The kinds of feature the binding knows. */
     public enum FeatureType {
-        PLANAR_FACE, CLOSED_POCKET, OPEN_POCKET, ROUND_HOLE, SLOT, STEP, BOSS, GENERAL_OUTSIDE_PROFILE,
+        PLANAR_FACE,
+        CLOSED_POCKET,
+        OPEN_POCKET,
+        ROUND_HOLE,
+        SLOT,
+        STEP,
+        BOSS,
+        GENERAL_OUTSIDE_PROFILE,
         /** a feature entity the binding does not interpret; see the entity name */
         OTHER
     }

@@ -325,8 +325,8 @@ final class InstanceStore {
             case 7 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6]);
             case 8 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7]);
             case 9 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8]);
-            case 10 -> List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8],
-                    a[f + 9]);
+            case 10 ->
+                List.of(a[f], a[f + 1], a[f + 2], a[f + 3], a[f + 4], a[f + 5], a[f + 6], a[f + 7], a[f + 8], a[f + 9]);
             default -> List.of(Arrays.copyOfRange(a, f, f + n));
         };
     }

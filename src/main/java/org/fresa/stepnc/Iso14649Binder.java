@@ -32,6 +32,7 @@ final class Iso14649Binder {
     static final int MAX_WORKPLAN_NESTING = 100;
     /** Points further than this (mm) are refused: their squares and products would overflow. */
     static final double MAX_COORDINATE_MM = 1e9;
+
     private static final org.fresa.geom.Tolerance SAME_FRAME = org.fresa.geom.Tolerance.DEFAULT;
 
     private final StepFile file;
@@ -109,6 +110,7 @@ final class Iso14649Binder {
     // it took a read of example 2 from 1.16-1.48 ms to 0.93-1.24 ms of thread CPU
     private static final int KNOWN_CACHE = 2048;
     private final int[] knownIndex = new int[KNOWN_CACHE];
+
     @SuppressWarnings("unchecked")
     private final Optional<E>[] knownAnswer = (Optional<E>[]) new Optional<?>[KNOWN_CACHE];
 
@@ -200,8 +202,11 @@ final class Iso14649Binder {
                 return t;
             }
         }
-        throw error(e, e.name() + "." + attr + " should be " + String.join(" or ", kinds).toLowerCase(Locale.ROOT)
-                + ", found #" + id.get() + " " + typeOf(id.get()));
+        throw error(
+                e,
+                e.name() + "." + attr + " should be "
+                        + String.join(" or ", kinds).toLowerCase(Locale.ROOT) + ", found #" + id.get() + " "
+                        + typeOf(id.get()));
     }
 
     private List<Long> refList(E e, String attr) throws StepParseException {
@@ -324,7 +329,9 @@ final class Iso14649Binder {
         }
         for (double x : c) {
             if (!(Math.abs(x) <= MAX_COORDINATE_MM)) {
-                throw error(p, "coordinate " + x + " is out of range (at most " + MAX_COORDINATE_MM + " mm from the origin)");
+                throw error(
+                        p,
+                        "coordinate " + x + " is out of range (at most " + MAX_COORDINATE_MM + " mm from the origin)");
             }
         }
         return new Vec3(c[0], c.length > 1 ? c[1] : 0, c.length > 2 ? c[2] : 0);
@@ -340,8 +347,10 @@ final class Iso14649Binder {
         }
         Vec3 v = new Vec3(c[0], c[1], c.length > 2 ? c[2] : 0);
         if (v.norm() == 0 || !Double.isFinite(v.norm())) {
-            throw error(d, "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no usable length"
-                    + " (zero, too small or too large to normalise)");
+            throw error(
+                    d,
+                    "the direction (" + v.x() + ", " + v.y() + ", " + v.z() + ") has no usable length"
+                            + " (zero, too small or too large to normalise)");
         }
         return v.normalized();
     }
@@ -383,7 +392,8 @@ final class Iso14649Binder {
         } catch (IllegalArgumentException ex) {
             // ISO 10303-42 build_axes would reject it; GRIMA's files have such placements, so
             // the default reference direction is used and the file is told about
-            warnings.add("#" + a.id() + " AXIS2_PLACEMENT_3D: ref_direction parallel to the axis; the default x direction is used");
+            warnings.add("#" + a.id()
+                    + " AXIS2_PLACEMENT_3D: ref_direction parallel to the axis; the default x direction is used");
             return Transform3.ofFrame(origin, z, Math.abs(z.x()) > 0.9 ? Vec3.UNIT_Y : Vec3.UNIT_X);
         }
     }
@@ -406,8 +416,12 @@ final class Iso14649Binder {
         if (e.isEmpty() || !e.get().def.isA(kind)) {
             int i = file.indexOf(id);
             StepInstance inst = i < 0 ? null : file.instanceAt(i);
-            throw new StepParseException(file.source(), inst == null ? 0 : inst.line(), inst == null ? 0 : inst.column(),
-                    id, "expected a " + kind + ", found #" + id + " " + typeOf(id));
+            throw new StepParseException(
+                    file.source(),
+                    inst == null ? 0 : inst.line(),
+                    inst == null ? 0 : inst.column(),
+                    id,
+                    "expected a " + kind + ", found #" + id + " " + typeOf(id));
         }
         return e.get();
     }
@@ -461,8 +475,7 @@ final class Iso14649Binder {
                     referencedByWorkplan.addAll(refList(w, "its_elements"));
                 }
                 case "MACHINING_WORKINGSTEP" -> allWorkingsteps.add(instId);
-                default -> {
-                }
+                default -> {}
             }
         }
         String projectId = "";
@@ -523,8 +536,20 @@ final class Iso14649Binder {
             }
             skipped.add(new StepNcProgram.Skipped(wsId, id, reason, bound));
         }
-        return new StepNcProgram(file.source(), file.schemas(), dialect, file.size(), projectId, main,
-                workpieces, executed, skipped, unknown, new ArrayList<>(spellings), warnings, file);
+        return new StepNcProgram(
+                file.source(),
+                file.schemas(),
+                dialect,
+                file.size(),
+                projectId,
+                main,
+                workpieces,
+                executed,
+                skipped,
+                unknown,
+                new ArrayList<>(spellings),
+                warnings,
+                file);
     }
 
     private Workpiece workpiece(E w) throws StepParseException {
@@ -539,8 +564,11 @@ final class Iso14649Binder {
             Optional<E> b = known(bg.get());
             if (b.isPresent() && b.get().def.isA("BLOCK")) {
                 E blk = b.get();
-                block = Optional.of(new Workpiece.Block(placementAttr(blk, "position").orElse(Transform3.IDENTITY),
-                        required(blk, "x"), required(blk, "y"), required(blk, "z")));
+                block = Optional.of(new Workpiece.Block(
+                        placementAttr(blk, "position").orElse(Transform3.IDENTITY),
+                        required(blk, "x"),
+                        required(blk, "y"),
+                        required(blk, "z")));
             }
         }
         return new Workpiece(w.id(), text(w, "its_id"), material, num(w, "global_tolerance"), block);
@@ -555,12 +583,17 @@ final class Iso14649Binder {
         for (long id : refList(s, "its_workpiece_setup")) {
             Optional<E> ws = known(id);
             if (ws.isPresent() && ws.get().def.isA("WORKPIECE_SETUP")) {
-                wps.add(new Setup.WorkpieceSetup(refId(ws.get(), "its_workpiece").orElse(0L),
+                wps.add(new Setup.WorkpieceSetup(
+                        refId(ws.get(), "its_workpiece").orElse(0L),
                         placementAttr(ws.get(), "its_origin").orElse(Transform3.IDENTITY)));
             }
         }
-        Setup out = new Setup(s.id(), text(s, "its_id"),
-                placementAttr(s, "its_origin").orElse(Transform3.IDENTITY), planeAttr(s, "its_secplane"), wps);
+        Setup out = new Setup(
+                s.id(),
+                text(s, "its_id"),
+                placementAttr(s, "its_origin").orElse(Transform3.IDENTITY),
+                planeAttr(s, "its_secplane"),
+                wps);
         setups.put(s.id(), out);
         return out;
     }
@@ -574,7 +607,10 @@ final class Iso14649Binder {
                     break;
                 }
             }
-            throw error(w, "workplan contains itself (through " + (loop.size() > 10 ? loop.subList(0, 10) + "..." : loop) + ")");
+            throw error(
+                    w,
+                    "workplan contains itself (through " + (loop.size() > 10 ? loop.subList(0, 10) + "..." : loop)
+                            + ")");
         }
         if (stack.size() >= MAX_WORKPLAN_NESTING) {
             throw error(w, "workplans are nested more than " + MAX_WORKPLAN_NESTING + " deep");
@@ -596,7 +632,8 @@ final class Iso14649Binder {
             } else if (x.get().def.isA("MACHINING_WORKINGSTEP")) {
                 elements.add(workingstep(x.get(), effective));
             } else if (x.get().def.isA("EXECUTABLE")) {
-                elements.add(new Executable.Other(id, text(x.get(), "its_id"), x.get().name()));
+                elements.add(new Executable.Other(
+                        id, text(x.get(), "its_id"), x.get().name()));
             } else {
                 throw error(w, "WORKPLAN.its_elements should list executables, found #" + id + " " + typeOf(id));
             }
@@ -634,8 +671,8 @@ final class Iso14649Binder {
                 }
             }
         }
-        MachiningWorkingstep out = new MachiningWorkingstep(ws.id(), text(ws, "its_id"), planeAttr(ws, "its_secplane"),
-                f, op, setup, wpToSetup);
+        MachiningWorkingstep out = new MachiningWorkingstep(
+                ws.id(), text(ws, "its_id"), planeAttr(ws, "its_secplane"), f, op, setup, wpToSetup);
         workingsteps.put(ws.id(), out);
         return out;
     }
@@ -650,9 +687,21 @@ final class Iso14649Binder {
         Optional<E> k = known(id);
         Feature out;
         if (k.isEmpty()) {
-            out = new Feature(id, Feature.FeatureType.OTHER, typeOf(id), "", Transform3.IDENTITY, OptionalDouble.empty(),
-                    Optional.empty(), Optional.empty(), Optional.empty(), OptionalDouble.empty(), Optional.empty(),
-                    OptionalDouble.empty(), OptionalDouble.empty(), List.of());
+            out = new Feature(
+                    id,
+                    Feature.FeatureType.OTHER,
+                    typeOf(id),
+                    "",
+                    Transform3.IDENTITY,
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    List.of());
         } else {
             E f = k.get();
             if (!f.def.isA("MANUFACTURING_FEATURE")) {
@@ -684,12 +733,23 @@ final class Iso14649Binder {
             if (f.has("bottom_condition")) {
                 bottom = refId(f, "bottom_condition").map(this::typeOf);
             }
-            out = new Feature(id, type, f.name(), text(f, "its_id"), placement, depth, depthPlane, profile, travel,
-                    f.has("diameter") ? num(f, "diameter") : OptionalDouble.empty(), bottom,
+            out = new Feature(
+                    id,
+                    type,
+                    f.name(),
+                    text(f, "its_id"),
+                    placement,
+                    depth,
+                    depthPlane,
+                    profile,
+                    travel,
+                    f.has("diameter") ? num(f, "diameter") : OptionalDouble.empty(),
+                    bottom,
                     f.has("planar_radius") ? num(f, "planar_radius") : OptionalDouble.empty(),
                     f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
-                    refList(f, "its_operations"), f.name().equals("SLOT") && f.has("end_conditions")
-                            ? slotEnds(f) : List.of(), bosses(f));
+                    refList(f, "its_operations"),
+                    f.name().equals("SLOT") && f.has("end_conditions") ? slotEnds(f) : List.of(),
+                    bosses(f));
         }
         features.put(id, out);
         return out;
@@ -714,17 +774,27 @@ final class Iso14649Binder {
         }
         Optional<E> k = known(id.get());
         if (k.isEmpty() || !(k.get().def.isA("LINEAR_PATH") || k.get().def.isA("CIRCULAR_PATH"))) {
-            return Optional.of(new TravelPath(typeOf(id.get()), Transform3.IDENTITY, OptionalDouble.empty(),
-                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty()));
+            return Optional.of(new TravelPath(
+                    typeOf(id.get()),
+                    Transform3.IDENTITY,
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty()));
         }
         E p = k.get();
         Transform3 pl = placementAttr(p, "placement").orElse(Transform3.IDENTITY);
         if (p.def.isA("LINEAR_PATH")) {
-            return Optional.of(new TravelPath(p.name(), pl, num(p, "distance"), directionAttr(p, "its_direction"),
-                    OptionalDouble.empty(), OptionalDouble.empty()));
+            return Optional.of(new TravelPath(
+                    p.name(),
+                    pl,
+                    num(p, "distance"),
+                    directionAttr(p, "its_direction"),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty()));
         }
-        return Optional.of(new TravelPath(p.name(), pl, OptionalDouble.empty(), Optional.empty(), num(p, "radius"),
-                num(p, "sweep_angle")));
+        return Optional.of(new TravelPath(
+                p.name(), pl, OptionalDouble.empty(), Optional.empty(), num(p, "radius"), num(p, "sweep_angle")));
     }
 
     private Optional<Profile> profile(E f, String attr, Transform3 featurePlacement) throws StepParseException {
@@ -756,21 +826,51 @@ final class Iso14649Binder {
                 if (n.isEmpty() || n.getAsInt() < 3) {
                     throw error(p, "NGON_PROFILE.number_of_sides must be at least 3");
                 }
-                yield new Profile.Ngon(p.name(), pl, required(p, "diameter"), n.getAsInt(),
+                yield new Profile.Ngon(
+                        p.name(),
+                        pl,
+                        required(p, "diameter"),
+                        n.getAsInt(),
                         bool(p, "circumscribed_or_across_flats").orElse(false));
             }
             case "LINEAR_PROFILE" -> new Profile.Linear(p.name(), pl, required(p, "profile_length"));
-            case "SQUARE_U_PROFILE" -> new Profile.U(p.name(), pl, required(p, "width"), num(p, "first_radius"),
-                    num(p, "first_angle"), num(p, "second_radius"), num(p, "second_angle"));
-            case "ROUNDED_U_PROFILE" -> new Profile.U(p.name(), pl, required(p, "width"), OptionalDouble.empty(),
-                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty());
-            case "VEE_PROFILE" -> new Profile.Vee(p.name(), pl, num(p, "profile_radius"),
-                    degrees(required(p, "profile_angle")), degrees(required(p, "tilt_angle")));
-            case "TEE_PROFILE" -> new Profile.Tee(p.name(), pl, required(p, "width"), required(p, "cross_bar_width"),
-                    required(p, "cross_bar_depth"), num(p, "radius"), degrees(required(p, "first_angle")),
-                    degrees(required(p, "second_angle")));
-            case "GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE" -> general(p, pl,
-                    p.name().equals("GENERAL_PROFILE") ? "its_profile" : "closed_profile_shape");
+            case "SQUARE_U_PROFILE" ->
+                new Profile.U(
+                        p.name(),
+                        pl,
+                        required(p, "width"),
+                        num(p, "first_radius"),
+                        num(p, "first_angle"),
+                        num(p, "second_radius"),
+                        num(p, "second_angle"));
+            case "ROUNDED_U_PROFILE" ->
+                new Profile.U(
+                        p.name(),
+                        pl,
+                        required(p, "width"),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty());
+            case "VEE_PROFILE" ->
+                new Profile.Vee(
+                        p.name(),
+                        pl,
+                        num(p, "profile_radius"),
+                        degrees(required(p, "profile_angle")),
+                        degrees(required(p, "tilt_angle")));
+            case "TEE_PROFILE" ->
+                new Profile.Tee(
+                        p.name(),
+                        pl,
+                        required(p, "width"),
+                        required(p, "cross_bar_width"),
+                        required(p, "cross_bar_depth"),
+                        num(p, "radius"),
+                        degrees(required(p, "first_angle")),
+                        degrees(required(p, "second_angle")));
+            case "GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE" ->
+                general(p, pl, p.name().equals("GENERAL_PROFILE") ? "its_profile" : "closed_profile_shape");
             default -> new Profile.Other(p.name(), pl, p.id());
         };
         return Optional.of(out);
@@ -827,7 +927,8 @@ final class Iso14649Binder {
             for (long id : refList(c.get(), "points")) {
                 Optional<E> pt = known(id);
                 if (pt.isEmpty()) {
-                    throw error(c.get(), "POLYLINE.points should list CARTESIAN_POINTs, found #" + id + " " + typeOf(id));
+                    throw error(
+                            c.get(), "POLYLINE.points should list CARTESIAN_POINTs, found #" + id + " " + typeOf(id));
                 }
                 pts.add(point(pt.get()));
             }
@@ -916,10 +1017,25 @@ final class Iso14649Binder {
     private Operation operation(E owner, long id) throws StepParseException {
         Optional<E> k = known(id);
         if (k.isEmpty()) {
-            return new Operation(id, Operation.OperationType.OTHER, typeOf(id), "", OptionalDouble.empty(),
-                    Optional.empty(), Optional.empty(), Technology.NONE, Optional.empty(), Optional.empty(),
-                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
-                    OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty());
+            return new Operation(
+                    id,
+                    Operation.OperationType.OTHER,
+                    typeOf(id),
+                    "",
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Technology.NONE,
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    Optional.empty());
         }
         E o = k.get();
         if (!o.def.isA("MACHINING_OPERATION")) {
@@ -949,10 +1065,24 @@ final class Iso14649Binder {
                 strategy = Optional.of(strategy(o, sid.get(), diameter));
             }
         }
-        return new Operation(id, type, o.name(), text(o, "its_id"), num(o, "retract_plane"),
-                pointAttr(o, "start_point"), tool, tech, strategy, approach(o, "approach"), approach(o, "retract"),
-                num(o, "axial_cutting_depth"), num(o, "radial_cutting_depth"), num(o, "allowance_side"),
-                num(o, "allowance_bottom"), num(o, "cutting_depth"), num(o, "overcut_length"),
+        return new Operation(
+                id,
+                type,
+                o.name(),
+                text(o, "its_id"),
+                num(o, "retract_plane"),
+                pointAttr(o, "start_point"),
+                tool,
+                tech,
+                strategy,
+                approach(o, "approach"),
+                approach(o, "retract"),
+                num(o, "axial_cutting_depth"),
+                num(o, "radial_cutting_depth"),
+                num(o, "allowance_side"),
+                num(o, "allowance_bottom"),
+                num(o, "cutting_depth"),
+                num(o, "overcut_length"),
                 o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty());
     }
 
@@ -962,8 +1092,13 @@ final class Iso14649Binder {
         if (feedOnRetract.isPresent() && feedOnRetract.getAsDouble() > 1) {
             feedOnRetract = OptionalDouble.of(feedOnRetract.getAsDouble() / 100);
         }
-        return new DrillingParameters(num(o, "dwell_time_bottom"), feedOnRetract, num(o, "retract_distance"),
-                num(o, "first_depth"), num(o, "depth_of_step"), num(o, "dwell_time_step"),
+        return new DrillingParameters(
+                num(o, "dwell_time_bottom"),
+                feedOnRetract,
+                num(o, "retract_distance"),
+                num(o, "first_depth"),
+                num(o, "depth_of_step"),
+                num(o, "dwell_time_step"),
                 bool(o, "spindle_stop_at_bottom"));
     }
 
@@ -977,8 +1112,14 @@ final class Iso14649Binder {
         }
         Optional<E> k = known(id.get());
         if (k.isEmpty() || !k.get().def.isA("APPROACH_RETRACT_STRATEGY")) {
-            return Optional.of(new ApproachRetract(id.get(), ApproachRetract.Kind.OTHER, typeOf(id.get()),
-                    Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty()));
+            return Optional.of(new ApproachRetract(
+                    id.get(),
+                    ApproachRetract.Kind.OTHER,
+                    typeOf(id.get()),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty()));
         }
         E a = k.get();
         ApproachRetract.Kind kind;
@@ -987,31 +1128,51 @@ final class Iso14649Binder {
         } catch (IllegalArgumentException ex) {
             kind = ApproachRetract.Kind.OTHER;
         }
-        return Optional.of(new ApproachRetract(a.id(), kind, a.name(), directionAttr(a, "tool_orientation"),
-                num(a, "angle"), num(a, "radius"), num(a, "width")));
+        return Optional.of(new ApproachRetract(
+                a.id(),
+                kind,
+                a.name(),
+                directionAttr(a, "tool_orientation"),
+                num(a, "angle"),
+                num(a, "radius"),
+                num(a, "width")));
     }
 
     private Strategy strategy(E owner, long id, OptionalDouble toolDiameter) throws StepParseException {
         Optional<E> k = known(id);
         if (k.isEmpty()) {
-            return new Strategy(id, Strategy.StrategyType.OTHER, typeOf(id), OptionalDouble.empty(),
-                    OptionalDouble.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
-                    Optional.empty(), Optional.empty(), Optional.empty());
+            return new Strategy(
+                    id,
+                    Strategy.StrategyType.OTHER,
+                    typeOf(id),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty());
         }
         E s = k.get();
         Strategy.StrategyType type = switch (s.name()) {
             case "UNIDIRECTIONAL_MILLING" -> Strategy.StrategyType.UNIDIRECTIONAL;
             case "BIDIRECTIONAL_MILLING" -> Strategy.StrategyType.BIDIRECTIONAL;
             case "EXPLICIT_STRATEGY" -> Strategy.StrategyType.EXPLICIT;
-            case "CONTOUR_PARALLEL", "CONTOUR_SPIRAL", "BIDIRECTIONAL_CONTOUR", "CONTOUR_BIDIRECTIONAL",
-                    "CENTER_MILLING", "DRILLING_TYPE_STRATEGY" -> Strategy.StrategyType.valueOf(s.name());
+            case "CONTOUR_PARALLEL",
+                    "CONTOUR_SPIRAL",
+                    "BIDIRECTIONAL_CONTOUR",
+                    "CONTOUR_BIDIRECTIONAL",
+                    "CENTER_MILLING",
+                    "DRILLING_TYPE_STRATEGY" -> Strategy.StrategyType.valueOf(s.name());
             default -> throw error(owner, "its_machining_strategy should be a strategy, found #" + id + " " + s.name());
         };
         String spelling = s.inst.record().type();
         if (type == Strategy.StrategyType.DRILLING_TYPE_STRATEGY) {
             OptionalDouble[] ratios = new OptionalDouble[4];
-            List<String> names = List.of("reduced_cut_at_start", "reduced_feed_at_start", "reduced_cut_at_end",
-                    "reduced_feed_at_end");
+            List<String> names = List.of(
+                    "reduced_cut_at_start", "reduced_feed_at_start", "reduced_cut_at_end", "reduced_feed_at_end");
             for (int i = 0; i < ratios.length; i++) {
                 OptionalDouble v = num(s, names.get(i));
                 if (v.isPresent() && v.getAsDouble() > 1) {
@@ -1022,10 +1183,20 @@ final class Iso14649Binder {
                 }
                 ratios[i] = v;
             }
-            DrillingStrategy d = new DrillingStrategy(ratios[0], ratios[1], num(s, "depth_of_start"), ratios[2],
-                    ratios[3], num(s, "depth_of_end"));
-            return new Strategy(id, type, spelling, OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(),
-                    Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
+            DrillingStrategy d = new DrillingStrategy(
+                    ratios[0], ratios[1], num(s, "depth_of_start"), ratios[2], ratios[3], num(s, "depth_of_end"));
+            return new Strategy(
+                    id,
+                    type,
+                    spelling,
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
+                    Optional.empty(),
                     Optional.of(d));
         }
         OptionalDouble overlap = num(s, "overlap");
@@ -1036,7 +1207,9 @@ final class Iso14649Binder {
             if (v >= 0 && v <= 1) {
                 fraction = OptionalDouble.of(v);
                 how = Optional.of("fraction");
-            } else if (dialect == Dialect.STEP_MODELER && toolDiameter.isPresent() && v > 0
+            } else if (dialect == Dialect.STEP_MODELER
+                    && toolDiameter.isPresent()
+                    && v > 0
                     && v < toolDiameter.getAsDouble()) {
                 fraction = OptionalDouble.of(v / toolDiameter.getAsDouble());
                 how = Optional.of("length");
@@ -1047,15 +1220,24 @@ final class Iso14649Binder {
                 warnings.add("#" + id + " " + spelling + ": overlap " + v + " is neither a fraction nor a percentage");
                 how = Optional.of("unreadable");
             }
-            spellings.add(switch (how.get()) {
-                case "fraction" -> "strategy overlap written as a fraction of the tool diameter (0-1)";
-                case "percent" -> "strategy overlap written as a percentage of the tool diameter (0-100)";
-                case "length" -> "strategy overlap written as a length in mm (STEP Modeler)";
-                default -> "strategy overlap out of range";
-            });
+            spellings.add(
+                    switch (how.get()) {
+                        case "fraction" -> "strategy overlap written as a fraction of the tool diameter (0-1)";
+                        case "percent" -> "strategy overlap written as a percentage of the tool diameter (0-100)";
+                        case "length" -> "strategy overlap written as a length in mm (STEP Modeler)";
+                        default -> "strategy overlap out of range";
+                    });
         }
-        return new Strategy(id, type, spelling, overlap, fraction, how, bool(s, "allow_multiple_passes"),
-                directionAttr(s, "feed_direction"), enumeration(s, "stepover_direction"),
+        return new Strategy(
+                id,
+                type,
+                spelling,
+                overlap,
+                fraction,
+                how,
+                bool(s, "allow_multiple_passes"),
+                directionAttr(s, "feed_direction"),
+                enumeration(s, "stepover_direction"),
                 enumeration(s, "rotation_direction"),
                 s.has("spiral_cutmode") ? enumeration(s, "spiral_cutmode") : enumeration(s, "cutmode"),
                 Optional.empty());
@@ -1093,14 +1275,24 @@ final class Iso14649Binder {
                 Optional<E> d = ref(tb, "dimension", "MILLING_TOOL_DIMENSION");
                 if (d.isPresent()) {
                     dimEntity = d.get().inst.record().type();
-                    String[] names = {"diameter", "tool_top_angle", "tool_circumference_angle", "cutting_edge_length",
-                        "edge_radius", "edge_center_vertical", "edge_center_horizontal"};
+                    String[] names = {
+                        "diameter",
+                        "tool_top_angle",
+                        "tool_circumference_angle",
+                        "cutting_edge_length",
+                        "edge_radius",
+                        "edge_center_vertical",
+                        "edge_center_horizontal"
+                    };
                     for (int i = 0; i < names.length; i++) {
                         dims[i] = num(d.get(), names[i]);
                     }
                 }
             } else if (b.isPresent()) {
-                throw error(t, "its_tool_body should be a tool body, found #" + bodyId.get() + " " + b.get().name());
+                throw error(
+                        t,
+                        "its_tool_body should be a tool body, found #" + bodyId.get() + " "
+                                + b.get().name());
             }
         }
         OptionalDouble offset = OptionalDouble.empty();
@@ -1113,8 +1305,23 @@ final class Iso14649Binder {
                 }
             }
         }
-        Tool out = new Tool(id, text(t, "its_id"), body, dimEntity, dims[0], dims[1], dims[2], dims[3], dims[4],
-                dims[5], dims[6], num(t, "overall_assembly_length"), offset, teeth, hand, pilot,
+        Tool out = new Tool(
+                id,
+                text(t, "its_id"),
+                body,
+                dimEntity,
+                dims[0],
+                dims[1],
+                dims[2],
+                dims[3],
+                dims[4],
+                dims[5],
+                dims[6],
+                num(t, "overall_assembly_length"),
+                offset,
+                teeth,
+                hand,
+                pilot,
                 dialect == Dialect.STEP_MODELER ? "rad" : "deg");
         tools.put(id, out);
         return Optional.of(out);
@@ -1125,19 +1332,33 @@ final class Iso14649Binder {
         OptionalDouble cut = num(t, "cutspeed");
         OptionalDouble spindle = num(t, "spindle");
         boolean iso = dialect == Dialect.ISO_14649;
-        OptionalDouble feedMmMin = iso && feed.isPresent()
-                ? OptionalDouble.of(feed.getAsDouble() * 60000) : OptionalDouble.empty();
+        OptionalDouble feedMmMin =
+                iso && feed.isPresent() ? OptionalDouble.of(feed.getAsDouble() * 60000) : OptionalDouble.empty();
         OptionalDouble rpm = spindle.isPresent()
-                ? OptionalDouble.of(Math.abs(spindle.getAsDouble()) * (iso ? 60 : 1)) : OptionalDouble.empty();
+                ? OptionalDouble.of(Math.abs(spindle.getAsDouble()) * (iso ? 60 : 1))
+                : OptionalDouble.empty();
         boolean cw = spindle.isPresent() && spindle.getAsDouble() < 0;
-        return new Technology(t.id(), feed, iso ? "m/s" : "unstated", enumeration(t, "feedrate_reference"), cut,
-                iso ? "m/s" : "m/min", spindle, iso ? "1/s" : "rpm", num(t, "feed_per_tooth"), feedMmMin, rpm, cw);
+        return new Technology(
+                t.id(),
+                feed,
+                iso ? "m/s" : "unstated",
+                enumeration(t, "feedrate_reference"),
+                cut,
+                iso ? "m/s" : "m/min",
+                spindle,
+                iso ? "1/s" : "rpm",
+                num(t, "feed_per_tooth"),
+                feedMmMin,
+                rpm,
+                cw);
     }
 
     /** Unknown entity types by count, for reports (kept for the GUI). */
     static Map<String, Integer> sortedByCount(Map<String, Integer> m) {
         Map<String, Integer> out = new LinkedHashMap<>();
-        m.entrySet().stream().sorted((a, b) -> b.getValue() - a.getValue()).forEach(e -> out.put(e.getKey(), e.getValue()));
+        m.entrySet().stream()
+                .sorted((a, b) -> b.getValue() - a.getValue())
+                .forEach(e -> out.put(e.getKey(), e.getValue()));
         return out;
     }
 }

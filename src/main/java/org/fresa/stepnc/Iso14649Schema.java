@@ -26,8 +26,8 @@ public final class Iso14649Schema {
     /** The resource the schema is read from. */
     public static final String RESOURCE = "/schemas/iso14649-subset.exp";
 
-    private static final Pattern ENTITY = Pattern.compile(
-            "ENTITY\\s+(\\w+)([^;]*);(.*?)END_ENTITY\\s*;([ \\t]*--@alias\\s+(\\w+))?", Pattern.DOTALL);
+    private static final Pattern ENTITY =
+            Pattern.compile("ENTITY\\s+(\\w+)([^;]*);(.*?)END_ENTITY\\s*;([ \\t]*--@alias\\s+(\\w+))?", Pattern.DOTALL);
     private static final Pattern SUBTYPE = Pattern.compile("SUBTYPE\\s+OF\\s*\\(\\s*(\\w+)\\s*\\)");
     private static final Pattern ATTRIBUTE = Pattern.compile("(\\w+)\\s*:[^;]*;");
 

@@ -13,8 +13,15 @@ import org.fresa.geom.Transform3;
  * @param workpieceToSetup the workpiece frame in the setup frame: setup origin, then the
  *                         workpiece setup's origin (identity when absent)
  */
-public record MachiningWorkingstep(long instanceId, String id, Optional<Transform3> securityPlane, Feature feature,
-        Operation operation, Optional<Setup> setup, Transform3 workpieceToSetup) implements Executable {
+public record MachiningWorkingstep(
+        long instanceId,
+        String id,
+        Optional<Transform3> securityPlane,
+        Feature feature,
+        Operation operation,
+        Optional<Setup> setup,
+        Transform3 workpieceToSetup)
+        implements Executable {
     public MachiningWorkingstep {
         Objects.requireNonNull(id);
         Objects.requireNonNull(securityPlane);

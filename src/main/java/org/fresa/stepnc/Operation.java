@@ -29,23 +29,67 @@ import org.fresa.geom.Vec3;
  * @param drilling drilling-type operations: dwell, retract feed, steps, spindle stop
  * @param toolpaths its explicit toolpaths (its_toolpath), in order; empty when the planner makes them
  */
-public record Operation(long instanceId, OperationType type, String entity, String id,
-        OptionalDouble retractPlaneMm, Optional<Vec3> startPoint, Optional<Tool> tool, Technology technology,
-        Optional<Strategy> strategy, Optional<ApproachRetract> approach, Optional<ApproachRetract> retract,
-        OptionalDouble axialCuttingDepthMm, OptionalDouble radialCuttingDepthMm, OptionalDouble allowanceSideMm,
-        OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm,
-        Optional<DrillingParameters> drilling, List<ExplicitToolpath> toolpaths) {
+public record Operation(
+        long instanceId,
+        OperationType type,
+        String entity,
+        String id,
+        OptionalDouble retractPlaneMm,
+        Optional<Vec3> startPoint,
+        Optional<Tool> tool,
+        Technology technology,
+        Optional<Strategy> strategy,
+        Optional<ApproachRetract> approach,
+        Optional<ApproachRetract> retract,
+        OptionalDouble axialCuttingDepthMm,
+        OptionalDouble radialCuttingDepthMm,
+        OptionalDouble allowanceSideMm,
+        OptionalDouble allowanceBottomMm,
+        OptionalDouble cuttingDepthMm,
+        OptionalDouble overcutLengthMm,
+        Optional<DrillingParameters> drilling,
+        List<ExplicitToolpath> toolpaths) {
 
     /** An operation without explicit toolpaths. */
-    public Operation(long instanceId, OperationType type, String entity, String id,
-            OptionalDouble retractPlaneMm, Optional<Vec3> startPoint, Optional<Tool> tool, Technology technology,
-            Optional<Strategy> strategy, Optional<ApproachRetract> approach, Optional<ApproachRetract> retract,
-            OptionalDouble axialCuttingDepthMm, OptionalDouble radialCuttingDepthMm, OptionalDouble allowanceSideMm,
-            OptionalDouble allowanceBottomMm, OptionalDouble cuttingDepthMm, OptionalDouble overcutLengthMm,
+    public Operation(
+            long instanceId,
+            OperationType type,
+            String entity,
+            String id,
+            OptionalDouble retractPlaneMm,
+            Optional<Vec3> startPoint,
+            Optional<Tool> tool,
+            Technology technology,
+            Optional<Strategy> strategy,
+            Optional<ApproachRetract> approach,
+            Optional<ApproachRetract> retract,
+            OptionalDouble axialCuttingDepthMm,
+            OptionalDouble radialCuttingDepthMm,
+            OptionalDouble allowanceSideMm,
+            OptionalDouble allowanceBottomMm,
+            OptionalDouble cuttingDepthMm,
+            OptionalDouble overcutLengthMm,
             Optional<DrillingParameters> drilling) {
-        this(instanceId, type, entity, id, retractPlaneMm, startPoint, tool, technology, strategy, approach, retract,
-                axialCuttingDepthMm, radialCuttingDepthMm, allowanceSideMm, allowanceBottomMm, cuttingDepthMm,
-                overcutLengthMm, drilling, List.of());
+        this(
+                instanceId,
+                type,
+                entity,
+                id,
+                retractPlaneMm,
+                startPoint,
+                tool,
+                technology,
+                strategy,
+                approach,
+                retract,
+                axialCuttingDepthMm,
+                radialCuttingDepthMm,
+                allowanceSideMm,
+                allowanceBottomMm,
+                cuttingDepthMm,
+                overcutLengthMm,
+                drilling,
+                List.of());
     }
 
     public Operation {
@@ -70,9 +114,21 @@ public record Operation(long instanceId, OperationType type, String entity, Stri
     }
 
     public enum OperationType {
-        PLANE_ROUGH_MILLING, PLANE_FINISH_MILLING, SIDE_ROUGH_MILLING, SIDE_FINISH_MILLING,
-        BOTTOM_AND_SIDE_ROUGH_MILLING, BOTTOM_AND_SIDE_FINISH_MILLING, DRILLING, CENTER_DRILLING,
-        MULTISTEP_DRILLING, COUNTER_SINKING, REAMING, BORING, BACK_BORING, TAPPING, THREAD_DRILLING,
+        PLANE_ROUGH_MILLING,
+        PLANE_FINISH_MILLING,
+        SIDE_ROUGH_MILLING,
+        SIDE_FINISH_MILLING,
+        BOTTOM_AND_SIDE_ROUGH_MILLING,
+        BOTTOM_AND_SIDE_FINISH_MILLING,
+        DRILLING,
+        CENTER_DRILLING,
+        MULTISTEP_DRILLING,
+        COUNTER_SINKING,
+        REAMING,
+        BORING,
+        BACK_BORING,
+        TAPPING,
+        THREAD_DRILLING,
         FREEFORM_OPERATION,
         /** an operation entity the binding does not know */
         OTHER;

@@ -18,8 +18,21 @@ import java.util.Locale;
 final class Part21Lexer {
 
     enum Tok {
-        KEYWORD, INSTANCE, INTEGER, REAL, STRING, ENUMERATION, BINARY, DOLLAR, STAR,
-        LPAREN, RPAREN, COMMA, EQUALS, SEMICOLON, EOF
+        KEYWORD,
+        INSTANCE,
+        INTEGER,
+        REAL,
+        STRING,
+        ENUMERATION,
+        BINARY,
+        DOLLAR,
+        STAR,
+        LPAREN,
+        RPAREN,
+        COMMA,
+        EQUALS,
+        SEMICOLON,
+        EOF
     }
 
     private static final int EOF_CHAR = -1;

@@ -11,7 +11,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Map;
 import org.fresa.model.CamInputException;
 import org.fresa.model.FileChecks;
 import org.fresa.stepnc.Part21Lexer.Tok;
@@ -59,7 +58,11 @@ public final class Part21Reader {
             throw new StepParseException(e.source(), 0, 0, 0, e.problem());
         }
         try (InputStream in = Files.newInputStream(file)) {
-            return read(in, file.getFileName() == null ? file.toString() : file.getFileName().toString());
+            return read(
+                    in,
+                    file.getFileName() == null
+                            ? file.toString()
+                            : file.getFileName().toString());
         }
     }
 
@@ -72,7 +75,8 @@ public final class Part21Reader {
     }
 
     public static StepFile read(InputStream in, String source) throws IOException, StepParseException {
-        var decoder = StandardCharsets.UTF_8.newDecoder()
+        var decoder = StandardCharsets.UTF_8
+                .newDecoder()
                 .onMalformedInput(CodingErrorAction.REPLACE)
                 .onUnmappableCharacter(CodingErrorAction.REPLACE);
         return read(new InputStreamReader(in, decoder), source);
@@ -143,7 +147,8 @@ public final class Part21Reader {
                 expect(Tok.SEMICOLON, "';' after ENDSEC");
                 return;
             } else if (lx.tok == Tok.EOF) {
-                throw lx.errorHere("the file ends inside the DATA section (truncated? ENDSEC; and END-ISO-10303-21; are missing)");
+                throw lx.errorHere(
+                        "the file ends inside the DATA section (truncated? ENDSEC; and END-ISO-10303-21; are missing)");
             } else {
                 throw unexpected("an instance (#n = ...;) or ENDSEC");
             }
@@ -173,7 +178,11 @@ public final class Part21Reader {
         expect(Tok.EQUALS, "'=' after the instance name");
         int earlier = store.indexOf(id);
         if (earlier >= 0) {
-            throw new StepParseException(source, line, col, id,
+            throw new StepParseException(
+                    source,
+                    line,
+                    col,
+                    id,
                     "instance name #" + id + " is defined twice (first at line " + store.lineAt(earlier) + ")");
         }
         if (lx.tok == Tok.KEYWORD) {
@@ -421,7 +430,11 @@ public final class Part21Reader {
         void check() throws StepParseException {
             for (int i = 0; i < n; i++) {
                 if (store.indexOf(target[i]) < 0) {
-                    throw new StepParseException(source, lines[i], cols[i], from[i],
+                    throw new StepParseException(
+                            source,
+                            lines[i],
+                            cols[i],
+                            from[i],
                             "refers to #" + target[i] + ", which is not defined in the file");
                 }
             }

@@ -79,8 +79,14 @@ public sealed interface Profile {
      * SQUARE_U_PROFILE and ROUNDED_U_PROFILE (radii and angles empty for the rounded form, whose
      * bottom is a half circle of the width).
      */
-    record U(String entity, Transform3 placement, double widthMm, OptionalDouble firstRadiusMm,
-            OptionalDouble firstAngleRad, OptionalDouble secondRadiusMm, OptionalDouble secondAngleRad)
+    record U(
+            String entity,
+            Transform3 placement,
+            double widthMm,
+            OptionalDouble firstRadiusMm,
+            OptionalDouble firstAngleRad,
+            OptionalDouble secondRadiusMm,
+            OptionalDouble secondAngleRad)
             implements Profile {
         public U {
             Objects.requireNonNull(entity);
@@ -94,8 +100,13 @@ public sealed interface Profile {
      * x axis (across the slot), so an upright V has tilt 90 - angle / 2. Angles in degrees,
      * converted from radians where the file's writer uses them.
      */
-    record Vee(String entity, Transform3 placement, OptionalDouble profileRadiusMm, double profileAngleDeg,
-            double tiltAngleDeg) implements Profile {
+    record Vee(
+            String entity,
+            Transform3 placement,
+            OptionalDouble profileRadiusMm,
+            double profileAngleDeg,
+            double tiltAngleDeg)
+            implements Profile {
         public Vee {
             Objects.requireNonNull(entity);
             Objects.requireNonNull(placement);
@@ -108,8 +119,16 @@ public sealed interface Profile {
      * cross_bar_depth at the bottom of the feature (the T upside down, as a T-slot is cut); the
      * angles are those of the stem's walls with the cross bar (90 for a straight stem), in degrees.
      */
-    record Tee(String entity, Transform3 placement, double widthMm, double crossBarWidthMm, double crossBarDepthMm,
-            OptionalDouble radiusMm, double firstAngleDeg, double secondAngleDeg) implements Profile {
+    record Tee(
+            String entity,
+            Transform3 placement,
+            double widthMm,
+            double crossBarWidthMm,
+            double crossBarDepthMm,
+            OptionalDouble radiusMm,
+            double firstAngleDeg,
+            double secondAngleDeg)
+            implements Profile {
         public Tee {
             Objects.requireNonNull(entity);
             Objects.requireNonNull(placement);
@@ -132,10 +151,8 @@ public sealed interface Profile {
         Vec3 end();
     }
 
-    record Line(Vec3 start, Vec3 end) implements Segment {
-    }
+    record Line(Vec3 start, Vec3 end) implements Segment {}
 
     /** A circular arc about the profile's z axis. */
-    record Arc(Vec3 start, Vec3 end, Vec3 center, double radiusMm, boolean ccw) implements Segment {
-    }
+    record Arc(Vec3 start, Vec3 end, Vec3 center, double radiusMm, boolean ccw) implements Segment {}
 }

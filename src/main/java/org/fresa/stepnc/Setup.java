@@ -12,7 +12,11 @@ import org.fresa.geom.Transform3;
  * @param securityPlane the security plane frame in the setup frame (the plane is its z = 0)
  * @param workpieceSetups one per workpiece
  */
-public record Setup(long instanceId, String id, Transform3 origin, Optional<Transform3> securityPlane,
+public record Setup(
+        long instanceId,
+        String id,
+        Transform3 origin,
+        Optional<Transform3> securityPlane,
         List<WorkpieceSetup> workpieceSetups) {
     public Setup {
         Objects.requireNonNull(id);

@@ -23,10 +23,20 @@ import java.util.Optional;
  * @param warnings things read but doubtful
  * @param file the raw instance graph, for anything the binding does not cover
  */
-public record StepNcProgram(String source, List<String> schemas, Dialect dialect, long instanceCount,
-        String projectId, Optional<Workplan> mainWorkplan, List<Workpiece> workpieces,
-        List<MachiningWorkingstep> workingsteps, List<Skipped> skipped, Map<String, Integer> unknownEntities,
-        List<String> spellings, List<String> warnings, StepFile file) {
+public record StepNcProgram(
+        String source,
+        List<String> schemas,
+        Dialect dialect,
+        long instanceCount,
+        String projectId,
+        Optional<Workplan> mainWorkplan,
+        List<Workpiece> workpieces,
+        List<MachiningWorkingstep> workingsteps,
+        List<Skipped> skipped,
+        Map<String, Integer> unknownEntities,
+        List<String> spellings,
+        List<String> warnings,
+        StepFile file) {
 
     public StepNcProgram {
         Objects.requireNonNull(source);
@@ -70,12 +80,18 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
             why.append(" (").append(skipped.size()).append(" skipped: ");
             for (int i = 0; i < Math.min(3, skipped.size()); i++) {
                 Skipped s = skipped.get(i);
-                why.append(i > 0 ? "; " : "").append('#').append(s.instanceId()).append(" '").append(s.id())
-                        .append("' ").append(s.reason());
+                why.append(i > 0 ? "; " : "")
+                        .append('#')
+                        .append(s.instanceId())
+                        .append(" '")
+                        .append(s.id())
+                        .append("' ")
+                        .append(s.reason());
             }
             why.append(skipped.size() > 3 ? "; ...)" : ")");
         }
-        return Optional.of(why.append(": nothing to machine, no program written").toString());
+        return Optional.of(
+                why.append(": nothing to machine, no program written").toString());
     }
 
     /**
@@ -86,8 +102,10 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
         Optional<StepInstance> inst = file.instance(f.instanceId());
         if (inst.isPresent() && !inst.get().isComplex()) {
             // ISO 14649-10 manufacturing_feature: its_id, its_workpiece, its_operations, ...
-            int i = Iso14649Schema.get().find(inst.get().record().type())
-                    .map(l -> l.def().indexOf("its_workpiece")).orElse(-1);
+            int i = Iso14649Schema.get()
+                    .find(inst.get().record().type())
+                    .map(l -> l.def().indexOf("its_workpiece"))
+                    .orElse(-1);
             if (i >= 0 && inst.get().record().param(i) instanceof StepValue.Ref r) {
                 for (Workpiece w : workpieces) {
                     if (w.instanceId() == r.id()) {
@@ -109,8 +127,7 @@ public record StepNcProgram(String source, List<String> schemas, Dialect dialect
      *
      * @param workingstep bound when it could be; empty when its feature or operation is unusable
      */
-    public record Skipped(long instanceId, String id, String reason, Optional<MachiningWorkingstep> workingstep) {
-    }
+    public record Skipped(long instanceId, String id, String reason, Optional<MachiningWorkingstep> workingstep) {}
 
     /** Whose conventions the file follows, for units and the meaning of overlap. */
     public enum Dialect {

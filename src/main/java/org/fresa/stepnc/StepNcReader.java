@@ -11,8 +11,7 @@ import java.nio.file.Path;
  * integrated form (AIM), {@link Ap238AimBinder}.
  */
 public final class StepNcReader {
-    private StepNcReader() {
-    }
+    private StepNcReader() {}
 
     /**
      * @throws StepParseException for a file that is not valid Part 21 or whose workingsteps

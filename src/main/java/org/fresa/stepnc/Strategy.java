@@ -25,10 +25,19 @@ import org.fresa.geom.Vec3;
  * @param cutmode CLIMB or CONVENTIONAL
  * @param drilling the reductions of a DRILLING_TYPE_STRATEGY (empty for milling strategies)
  */
-public record Strategy(long instanceId, StrategyType type, String entity, OptionalDouble overlap,
-        OptionalDouble overlapFraction, Optional<String> overlapInterpretation, Optional<Boolean> allowMultiplePasses,
-        Optional<Vec3> feedDirection, Optional<String> stepoverDirection, Optional<String> rotationDirection,
-        Optional<String> cutmode, Optional<DrillingStrategy> drilling) {
+public record Strategy(
+        long instanceId,
+        StrategyType type,
+        String entity,
+        OptionalDouble overlap,
+        OptionalDouble overlapFraction,
+        Optional<String> overlapInterpretation,
+        Optional<Boolean> allowMultiplePasses,
+        Optional<Vec3> feedDirection,
+        Optional<String> stepoverDirection,
+        Optional<String> rotationDirection,
+        Optional<String> cutmode,
+        Optional<DrillingStrategy> drilling) {
     public Strategy {
         Objects.requireNonNull(type);
         Objects.requireNonNull(entity);
@@ -44,8 +53,15 @@ public record Strategy(long instanceId, StrategyType type, String entity, Option
     }
 
     public enum StrategyType {
-        UNIDIRECTIONAL, BIDIRECTIONAL, CONTOUR_PARALLEL, CONTOUR_SPIRAL, BIDIRECTIONAL_CONTOUR,
-        CONTOUR_BIDIRECTIONAL, CENTER_MILLING, EXPLICIT, DRILLING_TYPE_STRATEGY,
+        UNIDIRECTIONAL,
+        BIDIRECTIONAL,
+        CONTOUR_PARALLEL,
+        CONTOUR_SPIRAL,
+        BIDIRECTIONAL_CONTOUR,
+        CONTOUR_BIDIRECTIONAL,
+        CENTER_MILLING,
+        EXPLICIT,
+        DRILLING_TYPE_STRATEGY,
         /** a strategy entity the binding does not know (e.g. GRIMA's trochoidal strategies) */
         OTHER
     }

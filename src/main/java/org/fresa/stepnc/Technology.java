@@ -23,9 +23,18 @@ import java.util.OptionalDouble;
  * @param spindleRpm |spindle| in rpm when the unit is known
  * @param spindleClockwise true when the file marks clockwise rotation (a negative spindle, as NIST and GRIMA write it)
  */
-public record Technology(long instanceId, OptionalDouble feedrate, String feedrateUnit,
-        Optional<String> feedrateReference, OptionalDouble cutSpeed, String cutSpeedUnit, OptionalDouble spindle,
-        String spindleUnit, OptionalDouble feedPerTooth, OptionalDouble feedMmPerMin, OptionalDouble spindleRpm,
+public record Technology(
+        long instanceId,
+        OptionalDouble feedrate,
+        String feedrateUnit,
+        Optional<String> feedrateReference,
+        OptionalDouble cutSpeed,
+        String cutSpeedUnit,
+        OptionalDouble spindle,
+        String spindleUnit,
+        OptionalDouble feedPerTooth,
+        OptionalDouble feedMmPerMin,
+        OptionalDouble spindleRpm,
         boolean spindleClockwise) {
     public Technology {
         Objects.requireNonNull(feedrate);
@@ -40,7 +49,17 @@ public record Technology(long instanceId, OptionalDouble feedrate, String feedra
         Objects.requireNonNull(spindleRpm);
     }
 
-    public static final Technology NONE = new Technology(0, OptionalDouble.empty(), "unstated", Optional.empty(),
-            OptionalDouble.empty(), "unstated", OptionalDouble.empty(), "unstated", OptionalDouble.empty(),
-            OptionalDouble.empty(), OptionalDouble.empty(), false);
+    public static final Technology NONE = new Technology(
+            0,
+            OptionalDouble.empty(),
+            "unstated",
+            Optional.empty(),
+            OptionalDouble.empty(),
+            "unstated",
+            OptionalDouble.empty(),
+            "unstated",
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            OptionalDouble.empty(),
+            false);
 }

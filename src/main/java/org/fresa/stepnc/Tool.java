@@ -28,11 +28,24 @@ import java.util.OptionalInt;
  * @param pilotLengthMm the body's last common attribute (pilot_length)
  * @param angleUnit "deg" or "rad"
  */
-public record Tool(long instanceId, String id, String body, String dimensionEntity, OptionalDouble diameterMm,
-        OptionalDouble topAngle, OptionalDouble circumferenceAngle, OptionalDouble cuttingEdgeLengthMm,
-        OptionalDouble edgeRadiusMm, OptionalDouble edgeCenterVerticalMm, OptionalDouble edgeCenterHorizontalMm,
-        OptionalDouble overallAssemblyLengthMm, OptionalDouble toolOffsetLengthMm, OptionalInt teeth,
-        Optional<String> handOfCut, OptionalDouble pilotLengthMm, String angleUnit) {
+public record Tool(
+        long instanceId,
+        String id,
+        String body,
+        String dimensionEntity,
+        OptionalDouble diameterMm,
+        OptionalDouble topAngle,
+        OptionalDouble circumferenceAngle,
+        OptionalDouble cuttingEdgeLengthMm,
+        OptionalDouble edgeRadiusMm,
+        OptionalDouble edgeCenterVerticalMm,
+        OptionalDouble edgeCenterHorizontalMm,
+        OptionalDouble overallAssemblyLengthMm,
+        OptionalDouble toolOffsetLengthMm,
+        OptionalInt teeth,
+        Optional<String> handOfCut,
+        OptionalDouble pilotLengthMm,
+        String angleUnit) {
     public Tool {
         Objects.requireNonNull(id);
         Objects.requireNonNull(body);

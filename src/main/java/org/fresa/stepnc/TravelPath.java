@@ -17,8 +17,13 @@ import org.fresa.geom.Vec3;
  * @param radiusMm CIRCULAR_PATH's radius
  * @param sweepAngle CIRCULAR_PATH's sweep, as written (radians in ISO 14649)
  */
-public record TravelPath(String entity, Transform3 placement, OptionalDouble distanceMm, Optional<Vec3> direction,
-        OptionalDouble radiusMm, OptionalDouble sweepAngle) {
+public record TravelPath(
+        String entity,
+        Transform3 placement,
+        OptionalDouble distanceMm,
+        Optional<Vec3> direction,
+        OptionalDouble radiusMm,
+        OptionalDouble sweepAngle) {
     public TravelPath {
         Objects.requireNonNull(entity);
         Objects.requireNonNull(placement);

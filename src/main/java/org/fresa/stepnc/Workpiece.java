@@ -12,8 +12,8 @@ import org.fresa.geom.Transform3;
  * @param globalTolerance as written (mm in ISO 14649-10)
  * @param block its_bounding_geometry when it is a BLOCK
  */
-public record Workpiece(long instanceId, String id, Optional<String> material, OptionalDouble globalTolerance,
-        Optional<Block> block) {
+public record Workpiece(
+        long instanceId, String id, Optional<String> material, OptionalDouble globalTolerance, Optional<Block> block) {
     public Workpiece {
         Objects.requireNonNull(id);
         Objects.requireNonNull(material);

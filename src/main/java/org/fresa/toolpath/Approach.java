@@ -7,8 +7,7 @@ package org.fresa.toolpath;
 public sealed interface Approach permits Approach.Plunge, Approach.Ramp, Approach.Helix {
 
     /** Straight down along the tool axis at the plunge feed. */
-    record Plunge() implements Approach {
-    }
+    record Plunge() implements Approach {}
 
     /**
      * Down a zig-zag ramp along the pass's first straight element, at most {@code angleDeg} from

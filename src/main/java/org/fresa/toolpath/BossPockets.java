@@ -26,15 +26,25 @@ import org.fresa.stepnc.Operation;
  */
 final class BossPockets {
 
-    private BossPockets() {
-    }
+    private BossPockets() {}
 
     /**
      * @param pocketFrame the pocket's profile frame in the workpiece frame
      * @throws UnsupportedOperationException for a boss the planner cannot leave standing
      */
-    static ToolpathSection section(String label, Profile pocket, Feature f, Transform3 pocketFrame, Operation op,
-            Heights h, Tooling t, double stepoverMm, double axialMm, boolean climb, Tolerance tol, EntryRule entry,
+    static ToolpathSection section(
+            String label,
+            Profile pocket,
+            Feature f,
+            Transform3 pocketFrame,
+            Operation op,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            boolean climb,
+            Tolerance tol,
+            EntryRule entry,
             List<String> problems) {
         List<Contour> islands = new ArrayList<>();
         Transform3 toPocket = pocketFrame.inverse();
@@ -46,11 +56,14 @@ final class BossPockets {
                     .orElseThrow(() -> new IllegalArgumentException("boss '" + boss.id() + "' has no boundary"));
             Transform3 bossFrame = toPocket.times(boss.placement()).times(bp.placement());
             if (bossFrame.zAxis().minus(Vec3.UNIT_Z).norm() > 1e-9) {
-                throw new UnsupportedOperationException("boss '" + boss.id() + "' does not stand along the pocket's axis");
+                throw new UnsupportedOperationException(
+                        "boss '" + boss.id() + "' does not stand along the pocket's axis");
             }
             if (bossFrame.translationPart().z() < h.topZ() - tol.linear()) {
-                throw new UnsupportedOperationException("boss '" + boss.id() + "' ends " + ToolpathPlanner.mm(
-                        h.topZ() - bossFrame.translationPart().z()) + " mm below the pocket's top: only bosses as"
+                throw new UnsupportedOperationException("boss '" + boss.id() + "' ends "
+                        + ToolpathPlanner.mm(
+                                h.topZ() - bossFrame.translationPart().z())
+                        + " mm below the pocket's top: only bosses as"
                         + " high as the pocket are left standing");
             }
             Profile outline;
@@ -74,17 +87,26 @@ final class BossPockets {
                     + " left");
         }
         double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
-        PocketTechnology tech = new PocketTechnology(t.diameterMm(), fraction, 0, h.topZ(), h.bottomZ(),
-                axialMm > 0 ? axialMm : depth, Math.max(t.spindleRpm(), 1), t.feedMmPerMin(), t.feedMmPerMin());
+        PocketTechnology tech = new PocketTechnology(
+                t.diameterMm(),
+                fraction,
+                0,
+                h.topZ(),
+                h.bottomZ(),
+                axialMm > 0 ? axialMm : depth,
+                Math.max(t.spindleRpm(), 1),
+                t.feedMmPerMin(),
+                t.feedMmPerMin());
         Toolpath path;
         try {
-            path = RegionPocket.plan(pocket.contour(tol), islands, tech, climb, entry).toolpath();
+            path = RegionPocket.plan(pocket.contour(tol), islands, tech, climb, entry)
+                    .toolpath();
         } catch (ToolTooLargeException e) {
             throw new UnsupportedOperationException(e.getMessage());
         }
         ToolpathSection s = path.sections().get(0);
-        return new ToolpathSection(label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), s.start(),
-                s.moves());
+        return new ToolpathSection(
+                label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), s.start(), s.moves());
     }
 
     /** A line or arc of a frame whose z axis is the pocket's, in the pocket's xy plane. */

@@ -19,8 +19,7 @@ public interface ContourOffsetter {
 
     /** The pocket module's exact line/arc offsetter, largest loop first. */
     ContourOffsetter EXACT = (c, d, tol) -> {
-        java.util.List<Contour> loops = new java.util.ArrayList<>(
-                org.fresa.pocket.LineArcOffsetter.offset(c, -d, tol));
+        java.util.List<Contour> loops = new java.util.ArrayList<>(org.fresa.pocket.LineArcOffsetter.offset(c, -d, tol));
         loops.removeIf(l -> l.isCcw() != c.isCcw());
         loops.sort(java.util.Comparator.comparingDouble(Contour::area).reversed());
         return loops;

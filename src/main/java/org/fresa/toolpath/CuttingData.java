@@ -67,15 +67,20 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
     public static CuttingData of(Operation op, double toolDiameterMm, boolean trustCuttingSpeed) {
         Technology t = op.technology();
         List<String> notes = new ArrayList<>();
-        double spindle = t.spindleRpm().isPresent() && t.spindleRpm().getAsDouble() > 0
-                && Double.isFinite(t.spindleRpm().getAsDouble()) ? t.spindleRpm().getAsDouble() : Double.NaN;
+        double spindle = t.spindleRpm().isPresent()
+                        && t.spindleRpm().getAsDouble() > 0
+                        && Double.isFinite(t.spindleRpm().getAsDouble())
+                ? t.spindleRpm().getAsDouble()
+                : Double.NaN;
         double fromV = cuttingSpeedRpm(t, toolDiameterMm);
         double rpm;
         boolean fromCuttingSpeed;
         if (Double.isNaN(spindle) && Double.isNaN(fromV)) {
             throw new IllegalArgumentException("no spindle speed and no cutting speed in the file ("
-                    + (t.instanceId() == 0 ? "the operation has no MILLING_TECHNOLOGY"
-                            : "MILLING_TECHNOLOGY #" + t.instanceId()) + "): the tool would cut with the spindle stopped");
+                    + (t.instanceId() == 0
+                            ? "the operation has no MILLING_TECHNOLOGY"
+                            : "MILLING_TECHNOLOGY #" + t.instanceId())
+                    + "): the tool would cut with the spindle stopped");
         } else if (Double.isNaN(spindle)) {
             rpm = fromV;
             fromCuttingSpeed = true;
@@ -97,8 +102,9 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
             fromCuttingSpeed = false;
         }
         if (!(rpm >= MIN_SPINDLE_RPM && rpm <= MAX_SPINDLE_RPM)) {
-            throw new IllegalArgumentException("spindle speed " + n(rpm) + " rpm" + (fromCuttingSpeed
-                    ? " (from the cutting speed " + cutSpeed(t) + ")" : "") + " is outside " + n(MIN_SPINDLE_RPM)
+            throw new IllegalArgumentException("spindle speed " + n(rpm) + " rpm"
+                    + (fromCuttingSpeed ? " (from the cutting speed " + cutSpeed(t) + ")" : "") + " is outside "
+                    + n(MIN_SPINDLE_RPM)
                     + " to " + n(MAX_SPINDLE_RPM) + " rpm");
         }
         FeedRate feed = FeedRate.of(op, rpm);
@@ -121,7 +127,9 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
      * writes m/s, STEP Modeler m/min).
      */
     static double cuttingSpeedRpm(Technology t, double toolDiameterMm) {
-        if (t.cutSpeed().isEmpty() || !(t.cutSpeed().getAsDouble() > 0) || !Double.isFinite(t.cutSpeed().getAsDouble())
+        if (t.cutSpeed().isEmpty()
+                || !(t.cutSpeed().getAsDouble() > 0)
+                || !Double.isFinite(t.cutSpeed().getAsDouble())
                 || !(toolDiameterMm > 0)) {
             return Double.NaN;
         }

@@ -31,9 +31,20 @@ package org.fresa.toolpath;
  *     of the section's, > 0
  * @param endSpeedFactor reduced_cut_at_end: spindle speed over the end zone, > 0
  */
-public record DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
-        double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor,
-        double dwellBottomS, double dwellStepS, boolean spindleStopAtBottom, double startSpeedFactor,
+public record DrillCycle(
+        double tipLength,
+        double startDepth,
+        double startFeedFactor,
+        double endDepth,
+        double endFeedFactor,
+        double firstPeck,
+        double peck,
+        double retractDistance,
+        double retractFeedFactor,
+        double dwellBottomS,
+        double dwellStepS,
+        boolean spindleStopAtBottom,
+        double startSpeedFactor,
         double endSpeedFactor) {
 
     /** One descent at the full feed, out at rapid. */
@@ -41,25 +52,54 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
 
     public DrillCycle {
         if (!(tipLength >= 0 && startDepth >= 0 && endDepth >= 0 && startFeedFactor > 0 && endFeedFactor > 0)
-                || !Double.isFinite(tipLength + startDepth + endDepth + startFeedFactor + endFeedFactor + firstPeck
-                        + peck + retractDistance + retractFeedFactor)) {
+                || !Double.isFinite(tipLength
+                        + startDepth
+                        + endDepth
+                        + startFeedFactor
+                        + endFeedFactor
+                        + firstPeck
+                        + peck
+                        + retractDistance
+                        + retractFeedFactor)) {
             throw new IllegalArgumentException("bad drill cycle: tip " + tipLength + ", start " + startDepth + " x"
                     + startFeedFactor + ", end " + endDepth + " x" + endFeedFactor);
         }
         if (!(dwellBottomS >= 0 && dwellStepS >= 0) || !Double.isFinite(dwellBottomS + dwellStepS)) {
-            throw new IllegalArgumentException("dwells must be >= 0 s: bottom " + dwellBottomS + ", step " + dwellStepS);
+            throw new IllegalArgumentException(
+                    "dwells must be >= 0 s: bottom " + dwellBottomS + ", step " + dwellStepS);
         }
         if (!(startSpeedFactor > 0 && endSpeedFactor > 0) || !Double.isFinite(startSpeedFactor + endSpeedFactor)) {
-            throw new IllegalArgumentException("spindle speed factors must be > 0: start " + startSpeedFactor
-                    + ", end " + endSpeedFactor);
+            throw new IllegalArgumentException(
+                    "spindle speed factors must be > 0: start " + startSpeedFactor + ", end " + endSpeedFactor);
         }
     }
 
     /** A cycle without dwells and with the spindle running throughout. */
-    public DrillCycle(double tipLength, double startDepth, double startFeedFactor, double endDepth,
-            double endFeedFactor, double firstPeck, double peck, double retractDistance, double retractFeedFactor) {
-        this(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck, retractDistance,
-                retractFeedFactor, 0, 0, false, 1, 1);
+    public DrillCycle(
+            double tipLength,
+            double startDepth,
+            double startFeedFactor,
+            double endDepth,
+            double endFeedFactor,
+            double firstPeck,
+            double peck,
+            double retractDistance,
+            double retractFeedFactor) {
+        this(
+                tipLength,
+                startDepth,
+                startFeedFactor,
+                endDepth,
+                endFeedFactor,
+                firstPeck,
+                peck,
+                retractDistance,
+                retractFeedFactor,
+                0,
+                0,
+                false,
+                1,
+                1);
     }
 
     /** Pecks of {@code peck} from the top, back to the retract height after each. */
@@ -69,26 +109,78 @@ public record DrillCycle(double tipLength, double startDepth, double startFeedFa
 
     /** The same cycle leaving at the given fraction of the feed. */
     public DrillCycle withRetractFeed(double factor) {
-        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, factor, dwellBottomS, dwellStepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
+        return new DrillCycle(
+                tipLength,
+                startDepth,
+                startFeedFactor,
+                endDepth,
+                endFeedFactor,
+                firstPeck,
+                peck,
+                retractDistance,
+                factor,
+                dwellBottomS,
+                dwellStepS,
+                spindleStopAtBottom,
+                startSpeedFactor,
+                endSpeedFactor);
     }
 
     /** The same cycle with these dwells (s) at the bottom and at each step. */
     public DrillCycle withDwells(double bottomS, double stepS) {
-        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, retractFeedFactor, bottomS, stepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
+        return new DrillCycle(
+                tipLength,
+                startDepth,
+                startFeedFactor,
+                endDepth,
+                endFeedFactor,
+                firstPeck,
+                peck,
+                retractDistance,
+                retractFeedFactor,
+                bottomS,
+                stepS,
+                spindleStopAtBottom,
+                startSpeedFactor,
+                endSpeedFactor);
     }
 
     /** The same cycle stopping the spindle at the bottom, or not. */
     public DrillCycle withSpindleStopAtBottom(boolean stop) {
-        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, retractFeedFactor, dwellBottomS, dwellStepS, stop, startSpeedFactor, endSpeedFactor);
+        return new DrillCycle(
+                tipLength,
+                startDepth,
+                startFeedFactor,
+                endDepth,
+                endFeedFactor,
+                firstPeck,
+                peck,
+                retractDistance,
+                retractFeedFactor,
+                dwellBottomS,
+                dwellStepS,
+                stop,
+                startSpeedFactor,
+                endSpeedFactor);
     }
 
     /** The same cycle with these spindle speed fractions over the start and end zones. */
     public DrillCycle withSpeedFactors(double start, double end) {
-        return new DrillCycle(tipLength, startDepth, startFeedFactor, endDepth, endFeedFactor, firstPeck, peck,
-                retractDistance, retractFeedFactor, dwellBottomS, dwellStepS, spindleStopAtBottom, start, end);
+        return new DrillCycle(
+                tipLength,
+                startDepth,
+                startFeedFactor,
+                endDepth,
+                endFeedFactor,
+                firstPeck,
+                peck,
+                retractDistance,
+                retractFeedFactor,
+                dwellBottomS,
+                dwellStepS,
+                spindleStopAtBottom,
+                start,
+                end);
     }
 
     boolean pecks() {

@@ -23,22 +23,22 @@ final class ExplicitPaths {
     /** Trajectory ends closer than this (mm) are the same point. */
     static final double JOIN_MM = 1e-6;
 
-    private ExplicitPaths() {
-    }
+    private ExplicitPaths() {}
 
     static ToolpathSection section(String label, Operation op, Tooling t, List<String> problems) {
         List<ExplicitToolpath> paths = op.toolpaths();
         ExplicitToolpath first = paths.get(0);
         if (first.curve().isEmpty()) {
-            throw new IllegalArgumentException("toolpath '" + first.id() + "' (#" + first.instanceId() + ") has no curve");
+            throw new IllegalArgumentException(
+                    "toolpath '" + first.id() + "' (#" + first.instanceId() + ") has no curve");
         }
         Vec3 start = first.curve().get(0).start();
         MoveBuilder mb = new MoveBuilder(start);
         for (ExplicitToolpath p : paths) {
             String name = "toolpath '" + p.id() + "' (#" + p.instanceId() + ")";
             if (!p.cutterLocation()) {
-                throw new UnsupportedOperationException(name + " is a " + p.kind()
-                        + ": only cutter-location trajectories are followed");
+                throw new UnsupportedOperationException(
+                        name + " is a " + p.kind() + ": only cutter-location trajectories are followed");
             }
             if (p.curve().isEmpty()) {
                 continue;
@@ -60,8 +60,9 @@ final class ExplicitPaths {
             }
             Vec3 from = p.curve().get(0).start();
             if (mb.at().distance(from) > JOIN_MM) {
-                problems.add("workingstep '" + label + "': " + name + " starts " + String.format(java.util.Locale.ROOT,
-                        "%.4f", mb.at().distance(from)) + " mm from where the one before ended; joined by a straight move");
+                problems.add("workingstep '" + label + "': " + name + " starts "
+                        + String.format(java.util.Locale.ROOT, "%.4f", mb.at().distance(from))
+                        + " mm from where the one before ended; joined by a straight move");
                 move(mb, from, p.rapid(), feed);
             }
             for (Profile.Segment s : p.curve()) {
@@ -75,8 +76,8 @@ final class ExplicitPaths {
                 }
             }
         }
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), start,
-                mb.moves());
+        return new ToolpathSection(
+                label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), start, mb.moves());
     }
 
     private static String n(double d) {

@@ -18,23 +18,35 @@ import org.fresa.model.ToolpathSection;
  * outside the boundary, unidirectional ones by a lift to the retract height.
  */
 public final class FaceMilling {
-    private FaceMilling() {
-    }
+    private FaceMilling() {}
 
     /**
      * @param boundary the removal boundary's extent in the feature plane (mm)
      * @param courseOfTravel the pass direction (unit or not)
      */
-    public static ToolpathSection section(String label, Box2 boundary, Vec2 courseOfTravel, Heights h, Tooling tool,
-            double stepoverMm, double axialDepthMm, double overcutMm, boolean bidirectional, boolean stepLeft) {
+    public static ToolpathSection section(
+            String label,
+            Box2 boundary,
+            Vec2 courseOfTravel,
+            Heights h,
+            Tooling tool,
+            double stepoverMm,
+            double axialDepthMm,
+            double overcutMm,
+            boolean bidirectional,
+            boolean stepLeft) {
         Vec2 u = courseOfTravel.normalized();
         Vec2 n = u.leftNormal();
         double umin = Double.POSITIVE_INFINITY;
         double umax = Double.NEGATIVE_INFINITY;
         double nmin = Double.POSITIVE_INFINITY;
         double nmax = Double.NEGATIVE_INFINITY;
-        for (Vec2 p : new Vec2[] {new Vec2(boundary.minX(), boundary.minY()), new Vec2(boundary.maxX(), boundary.minY()),
-            new Vec2(boundary.maxX(), boundary.maxY()), new Vec2(boundary.minX(), boundary.maxY())}) {
+        for (Vec2 p : new Vec2[] {
+            new Vec2(boundary.minX(), boundary.minY()),
+            new Vec2(boundary.maxX(), boundary.minY()),
+            new Vec2(boundary.maxX(), boundary.maxY()),
+            new Vec2(boundary.minX(), boundary.maxY())
+        }) {
             umin = Math.min(umin, p.dot(u));
             umax = Math.max(umax, p.dot(u));
             nmin = Math.min(nmin, p.dot(n));
@@ -70,7 +82,13 @@ public final class FaceMilling {
             mb.rapid(new Vec3(mb.at().x(), mb.at().y(), h.retractZ()));
         }
         mb.rapid(new Vec3(mb.at().x(), mb.at().y(), h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()), mb.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                tool.diameterMm(),
+                tool.toolNumber(),
+                tool.spindleRpm(),
+                Vec3.of(first, h.clearanceZ()),
+                mb.moves());
     }
 }

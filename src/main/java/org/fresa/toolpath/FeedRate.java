@@ -30,8 +30,8 @@ import org.fresa.stepnc.Technology;
  * @param teeth the tooth count used for mm/tooth
  * @param spindleRpm the spindle speed used for mm/tooth and mm/rev
  */
-public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble written, OptionalInt teeth,
-        OptionalDouble spindleRpm) {
+public record FeedRate(
+        double feedMmPerMin, String readAs, OptionalDouble written, OptionalInt teeth, OptionalDouble spindleRpm) {
 
     /** Feed when the file gives none that can be converted (mm/min). */
     public static final double DEFAULT_MM_PER_MIN = 1000;
@@ -62,16 +62,25 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
     public static FeedRate of(Operation op, double spindleRpm) {
         Technology t = op.technology();
         if (t.feedMmPerMin().isPresent() && t.feedMmPerMin().getAsDouble() > 0) {
-            return new FeedRate(t.feedMmPerMin().getAsDouble(), t.feedrateUnit(), t.feedrate(), OptionalInt.empty(),
+            return new FeedRate(
+                    t.feedMmPerMin().getAsDouble(),
+                    t.feedrateUnit(),
+                    t.feedrate(),
+                    OptionalInt.empty(),
                     OptionalDouble.empty());
         }
-        OptionalDouble rpm = spindleRpm > 0 && Double.isFinite(spindleRpm) ? OptionalDouble.of(spindleRpm)
-                : OptionalDouble.empty();
-        OptionalInt teeth = op.tool().map(tool -> tool.teeth()).filter(k -> k.isPresent() && k.getAsInt() > 0)
+        OptionalDouble rpm =
+                spindleRpm > 0 && Double.isFinite(spindleRpm) ? OptionalDouble.of(spindleRpm) : OptionalDouble.empty();
+        OptionalInt teeth = op.tool()
+                .map(tool -> tool.teeth())
+                .filter(k -> k.isPresent() && k.getAsInt() > 0)
                 .orElse(OptionalInt.empty());
-        OptionalDouble perTooth = t.feedPerTooth().isPresent() && t.feedPerTooth().getAsDouble() > 0
-                ? t.feedPerTooth() : OptionalDouble.empty();
-        boolean unitless = t.feedrate().isPresent() && t.feedrate().getAsDouble() > 0
+        OptionalDouble perTooth =
+                t.feedPerTooth().isPresent() && t.feedPerTooth().getAsDouble() > 0
+                        ? t.feedPerTooth()
+                        : OptionalDouble.empty();
+        boolean unitless = t.feedrate().isPresent()
+                && t.feedrate().getAsDouble() > 0
                 && t.feedrateUnit().equals("unstated");
         if (rpm.isPresent() && unitless) {
             double f = t.feedrate().getAsDouble();
@@ -82,8 +91,8 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
             return new FeedRate(f * n, "mm/rev", t.feedrate(), OptionalInt.empty(), rpm);
         }
         if (rpm.isPresent() && perTooth.isPresent() && teeth.isPresent()) {
-            return new FeedRate(perTooth.getAsDouble() * teeth.getAsInt() * rpm.getAsDouble(), "mm/tooth", perTooth,
-                    teeth, rpm);
+            return new FeedRate(
+                    perTooth.getAsDouble() * teeth.getAsInt() * rpm.getAsDouble(), "mm/tooth", perTooth, teeth, rpm);
         }
         return new FeedRate(DEFAULT_MM_PER_MIN, "default", t.feedrate(), OptionalInt.empty(), OptionalDouble.empty());
     }
@@ -100,13 +109,16 @@ public record FeedRate(double feedMmPerMin, String readAs, OptionalDouble writte
     public String note() {
         String w = written.isPresent() ? n(written.getAsDouble()) : "none";
         return switch (readAs) {
-            case "mm/tooth" -> "feed " + w + " (no unit in the file) read as mm/tooth: " + w + " x "
-                    + teeth.getAsInt() + " teeth x " + n(spindleRpm.getAsDouble()) + " rpm = " + n(feedMmPerMin)
-                    + " mm/min";
-            case "mm/rev" -> "feed " + w + " (no unit in the file) read as mm/rev: " + w + " x "
-                    + n(spindleRpm.getAsDouble()) + " rpm = " + n(feedMmPerMin) + " mm/min";
-            case "default" -> "no usable feed in the file (feed " + w + ", no spindle speed to convert it): "
-                    + n(feedMmPerMin) + " mm/min used";
+            case "mm/tooth" ->
+                "feed " + w + " (no unit in the file) read as mm/tooth: " + w + " x "
+                        + teeth.getAsInt() + " teeth x " + n(spindleRpm.getAsDouble()) + " rpm = " + n(feedMmPerMin)
+                        + " mm/min";
+            case "mm/rev" ->
+                "feed " + w + " (no unit in the file) read as mm/rev: " + w + " x " + n(spindleRpm.getAsDouble())
+                        + " rpm = " + n(feedMmPerMin) + " mm/min";
+            case "default" ->
+                "no usable feed in the file (feed " + w + ", no spindle speed to convert it): " + n(feedMmPerMin)
+                        + " mm/min used";
             default -> "feed " + w + " " + readAs + " = " + n(feedMmPerMin) + " mm/min";
         };
     }

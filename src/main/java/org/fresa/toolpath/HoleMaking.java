@@ -31,8 +31,7 @@ import org.fresa.pocket.EntryRule;
  */
 public final class HoleMaking {
 
-    private HoleMaking() {
-    }
+    private HoleMaking() {}
 
     /**
      * Drills with one descent or pecks of {@code peckMm}, out at rapid or, if {@code feedOut}, at
@@ -41,8 +40,8 @@ public final class HoleMaking {
      * @param peckMm depth of each peck, 0 or less for one feed to the bottom
      * @param feedOut leave at the cutting feed (reaming, boring)
      */
-    public static ToolpathSection drill(String label, Vec2 center, Heights h, Tooling tool, double peckMm,
-            boolean feedOut) {
+    public static ToolpathSection drill(
+            String label, Vec2 center, Heights h, Tooling tool, double peckMm, boolean feedOut) {
         DrillCycle c = peckMm > 0 ? DrillCycle.pecking(peckMm) : DrillCycle.PLAIN;
         return drill(label, center, h, tool, feedOut ? c.withRetractFeed(1) : c);
     }
@@ -71,16 +70,19 @@ public final class HoleMaking {
         DrillCycle zc = c.withSpeedFactors(startSpeed, endSpeed);
         // ISO 14649-11 drilling_type_strategy: the start zone ends when the full diameter is depth_of_start
         // deep; a zone without a reduction is no zone (NaN: no split, no reduction)
-        double startEnd = c.startFeedFactor() == 1 && startSpeed == 1 ? Double.NaN
+        double startEnd = c.startFeedFactor() == 1 && startSpeed == 1
+                ? Double.NaN
                 : Math.max(h.bottomZ(), h.topZ() - c.startDepth() - c.tipLength());
-        double endStart = c.endFeedFactor() == 1 && endSpeed == 1 ? Double.NaN
+        double endStart = c.endFeedFactor() == 1 && endSpeed == 1
+                ? Double.NaN
                 : Math.min(h.retractZ(), h.bottomZ() + c.endDepth());
         if (c.pecks() && h.topZ() - h.bottomZ() > c.firstPeck()) {
             double depth = h.topZ() - c.firstPeck();
             while (depth > h.bottomZ() + 1e-9) {
                 descend(b, center, depth, f, rpm, zc, startEnd, endStart);
                 dwell(b, c.dwellStepS());
-                double up = c.retractDistance() > 0 ? Math.min(h.retractZ(), depth + c.retractDistance()) : h.retractZ();
+                double up =
+                        c.retractDistance() > 0 ? Math.min(h.retractZ(), depth + c.retractDistance()) : h.retractZ();
                 leave(b, center, up, f, c);
                 b.rapid(Vec3.of(center, Math.min(up, depth + 1)));
                 depth -= c.peck();
@@ -98,19 +100,35 @@ public final class HoleMaking {
             b.spindleStart(tool.spindleRpm(), true);
         }
         b.rapid(Vec3.of(center, h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
-                Vec3.of(center, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                tool.diameterMm(),
+                tool.toolNumber(),
+                tool.spindleRpm(),
+                Vec3.of(center, h.clearanceZ()),
+                b.moves());
     }
 
     /**
      * Feeds down to z, split where the feed or the spindle speed of the cycle changes; a speed
      * change is a spindle start at the new speed where the zone begins.
      */
-    private static void descend(MoveBuilder b, Vec2 center, double z, double f, double rpm, DrillCycle c,
-            double startEnd, double endStart) {
+    private static void descend(
+            MoveBuilder b,
+            Vec2 center,
+            double z,
+            double f,
+            double rpm,
+            DrillCycle c,
+            double startEnd,
+            double endStart) {
         double from = b.at().z();
-        double[] ends = {Double.isNaN(endStart) || startEnd > endStart ? startEnd : endStart,
-            Double.isNaN(endStart) || startEnd > endStart ? endStart : startEnd, z};
+        double[] ends = {
+            Double.isNaN(endStart) || startEnd > endStart ? startEnd : endStart,
+            Double.isNaN(endStart) || startEnd > endStart ? endStart : startEnd,
+            z
+        };
         // pieces of constant (feed, speed) factors, top down, neighbours with equal factors merged
         List<double[]> pieces = new ArrayList<>();
         double lastEnd = from;
@@ -195,8 +213,15 @@ public final class HoleMaking {
      * @param clockwise turn clockwise seen from +Z (conventional milling of the wall with an M3 spindle)
      * @throws IllegalArgumentException when the tool is wider than the hole
      */
-    public static ToolpathSection mill(String label, Vec2 center, double holeDiameterMm, Heights h, Tooling tool,
-            double axialDepthMm, boolean clockwise, Tolerance tol) {
+    public static ToolpathSection mill(
+            String label,
+            Vec2 center,
+            double holeDiameterMm,
+            Heights h,
+            Tooling tool,
+            double axialDepthMm,
+            boolean clockwise,
+            Tolerance tol) {
         return mill(label, center, holeDiameterMm, h, tool, axialDepthMm, clockwise, EntryRule.DEFAULT_ANGLE_DEG, tol);
     }
 
@@ -206,15 +231,23 @@ public final class HoleMaking {
      *
      * @param entryAngleDeg steepest descent of the helix (deg, in (0, 90])
      */
-    public static ToolpathSection mill(String label, Vec2 center, double holeDiameterMm, Heights h, Tooling tool,
-            double axialDepthMm, boolean clockwise, double entryAngleDeg, Tolerance tol) {
+    public static ToolpathSection mill(
+            String label,
+            Vec2 center,
+            double holeDiameterMm,
+            Heights h,
+            Tooling tool,
+            double axialDepthMm,
+            boolean clockwise,
+            double entryAngleDeg,
+            Tolerance tol) {
         if (!(entryAngleDeg > 0 && entryAngleDeg <= 90)) {
             throw new IllegalArgumentException("entry angle must be in (0, 90] deg: " + entryAngleDeg);
         }
         double rp = (holeDiameterMm - tool.diameterMm()) / 2;
         if (rp < -tol.linear()) {
-            throw new IllegalArgumentException("the tool (D" + tool.diameterMm() + ") is wider than the hole (D"
-                    + holeDiameterMm + ")");
+            throw new IllegalArgumentException(
+                    "the tool (D" + tool.diameterMm() + ") is wider than the hole (D" + holeDiameterMm + ")");
         }
         if (rp <= tol.linear()) {
             return drill(label, center, h, tool, axialDepthMm, false);
@@ -229,8 +262,8 @@ public final class HoleMaking {
         // a milling cutter is not taken to cut at its centre: the helix no steeper than the entry angle
         double byAngle = Math.ceil(dz / (2 * Math.PI * rp * Math.tan(Math.toRadians(entryAngleDeg))) - 1e-9);
         if (!(byAngle <= Entries.MAX_STEPS)) {
-            throw new IllegalArgumentException("the hole (D" + holeDiameterMm + ") leaves the tool (D" + tool.diameterMm()
-                    + ") no helix within " + entryAngleDeg + " deg");
+            throw new IllegalArgumentException("the hole (D" + holeDiameterMm + ") leaves the tool (D"
+                    + tool.diameterMm() + ") no helix within " + entryAngleDeg + " deg");
         }
         turns = Math.max(turns, (int) byAngle);
         b.arc(Vec3.of(p0, h.bottomZ()), Vec3.of(center, start), !clockwise, turns - 1, tool.feedMmPerMin());
@@ -238,7 +271,13 @@ public final class HoleMaking {
         b.feed(Vec3.of(center, h.bottomZ()), tool.feedMmPerMin());
         b.rapid(Vec3.of(center, h.retractZ()));
         b.rapid(Vec3.of(center, h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
-                Vec3.of(p0, h.clearanceZ()), List.copyOf(b.moves()));
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                tool.diameterMm(),
+                tool.toolNumber(),
+                tool.spindleRpm(),
+                Vec3.of(p0, h.clearanceZ()),
+                List.copyOf(b.moves()));
     }
 }

@@ -21,15 +21,40 @@ import org.fresa.geom.Vec2;
  *     giving the kind where it is {@code auto} ({@link PocketMilling#rule})
  *     without allowances
  */
-public record MillingPlan(Strategy strategy, double stepoverMm, double axialDepthMm, double sideAllowanceMm,
-        double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass,
+public record MillingPlan(
+        Strategy strategy,
+        double stepoverMm,
+        double axialDepthMm,
+        double sideAllowanceMm,
+        double bottomAllowanceMm,
+        Vec2 feedDirection,
+        boolean clockwise,
+        Approach approach,
+        boolean finishPass,
         org.fresa.pocket.EntryRule entry) {
 
     /** A plan entered as the file's approach allows, at the default entry angle ({@link org.fresa.pocket.EntryRule#DEFAULT}). */
-    public MillingPlan(Strategy strategy, double stepoverMm, double axialDepthMm, double sideAllowanceMm,
-            double bottomAllowanceMm, Vec2 feedDirection, boolean clockwise, Approach approach, boolean finishPass) {
-        this(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection, clockwise, approach,
-                finishPass, org.fresa.pocket.EntryRule.DEFAULT);
+    public MillingPlan(
+            Strategy strategy,
+            double stepoverMm,
+            double axialDepthMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            Vec2 feedDirection,
+            boolean clockwise,
+            Approach approach,
+            boolean finishPass) {
+        this(
+                strategy,
+                stepoverMm,
+                axialDepthMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                feedDirection,
+                clockwise,
+                approach,
+                finishPass,
+                org.fresa.pocket.EntryRule.DEFAULT);
     }
 
     public MillingPlan {
@@ -38,34 +63,62 @@ public record MillingPlan(Strategy strategy, double stepoverMm, double axialDept
         Objects.requireNonNull(feedDirection, "feedDirection");
         Objects.requireNonNull(approach, "approach");
         if (!(stepoverMm > 0) || sideAllowanceMm < 0 || bottomAllowanceMm < 0) {
-            throw new IllegalArgumentException("bad plan: stepover " + stepoverMm + ", allowances "
-                    + sideAllowanceMm + "/" + bottomAllowanceMm);
+            throw new IllegalArgumentException(
+                    "bad plan: stepover " + stepoverMm + ", allowances " + sideAllowanceMm + "/" + bottomAllowanceMm);
         }
     }
 
     /** A plan with plunges, no allowances, passes along +x, counter-clockwise loops. */
     public static MillingPlan simple(Strategy strategy, double stepoverMm, double axialDepthMm) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, 0, 0, Vec2.UNIT_X, false, new Approach.Plunge(), false);
+        return new MillingPlan(
+                strategy, stepoverMm, axialDepthMm, 0, 0, Vec2.UNIT_X, false, new Approach.Plunge(), false);
     }
 
     public MillingPlan withApproach(Approach a) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection,
-                clockwise, a, finishPass, entry);
-    }
-
-    public MillingPlan withAllowances(double side, double bottom, boolean finish) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, side, bottom, feedDirection, clockwise, approach, finish,
+        return new MillingPlan(
+                strategy,
+                stepoverMm,
+                axialDepthMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                feedDirection,
+                clockwise,
+                a,
+                finishPass,
                 entry);
     }
 
+    public MillingPlan withAllowances(double side, double bottom, boolean finish) {
+        return new MillingPlan(
+                strategy, stepoverMm, axialDepthMm, side, bottom, feedDirection, clockwise, approach, finish, entry);
+    }
+
     public MillingPlan withDirection(Vec2 feed, boolean cw) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feed, cw,
-                approach, finishPass, entry);
+        return new MillingPlan(
+                strategy,
+                stepoverMm,
+                axialDepthMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                feed,
+                cw,
+                approach,
+                finishPass,
+                entry);
     }
 
     /** The same plan entered as the user asks ({@link PlanningChoices#entry()}). */
     public MillingPlan withEntry(org.fresa.pocket.EntryRule e) {
-        return new MillingPlan(strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feedDirection,
-                clockwise, approach, finishPass, e);
+        return new MillingPlan(
+                strategy,
+                stepoverMm,
+                axialDepthMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                feedDirection,
+                clockwise,
+                approach,
+                finishPass,
+                e);
     }
 }

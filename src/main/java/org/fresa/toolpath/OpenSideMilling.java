@@ -22,8 +22,7 @@ final class OpenSideMilling {
     /** How far outside the stock the tool goes down and comes back up, beyond its radius (mm). */
     static final double OUTSIDE_MM = 2.0;
 
-    private OpenSideMilling() {
-    }
+    private OpenSideMilling() {}
 
     /**
      * A step in its frame: x along the open boundary from its start (0 to length), the wall at
@@ -37,9 +36,20 @@ final class OpenSideMilling {
      * @param climb with M3: passes run along -x (the step's material on the tool's right)
      * @throws UnsupportedOperationException when the tool does not fit between closed ends
      */
-    static ToolpathSection step(String label, double lengthMm, double widthMm, boolean openStart, boolean openEnd,
-            Heights h, Tooling t, double stepoverMm, double axialMm, double sideAllowanceMm,
-            double bottomAllowanceMm, boolean climb, Tolerance tol) {
+    static ToolpathSection step(
+            String label,
+            double lengthMm,
+            double widthMm,
+            boolean openStart,
+            boolean openEnd,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol) {
         double r = t.radiusMm();
         double x0 = openStart ? -(r + OUTSIDE_MM) : r;
         double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
@@ -77,8 +87,14 @@ final class OpenSideMilling {
             }
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
-                new Vec3(xa, outY, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                t.diameterMm(),
+                t.toolNumber(),
+                t.spindleRpm(),
+                new Vec3(xa, outY, h.clearanceZ()),
+                b.moves());
     }
 
     /**
@@ -91,14 +107,25 @@ final class OpenSideMilling {
      * @param climb with M3: the loop runs clockwise (the part on the tool's right)
      * @throws UnsupportedOperationException when no straight lead-in from outside the stock clears the part
      */
-    static ToolpathSection outsideProfile(String label, Contour part, Contour stock, Heights h, Tooling t,
-            double axialMm, double sideAllowanceMm, double bottomAllowanceMm, boolean climb, Tolerance tol) {
+    static ToolpathSection outsideProfile(
+            String label,
+            Contour part,
+            Contour stock,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         List<Contour> loops = org.fresa.pocket.LineArcOffsetter.offset(part, off, tol);
-        Contour loop = loops.stream().filter(Contour::isCcw).max(java.util.Comparator.comparingDouble(Contour::area))
-                .orElseThrow(() -> new UnsupportedOperationException("the profile has no outward offset by "
-                        + ToolpathPlanner.mm(off) + " mm"));
+        Contour loop = loops.stream()
+                .filter(Contour::isCcw)
+                .max(java.util.Comparator.comparingDouble(Contour::area))
+                .orElseThrow(() -> new UnsupportedOperationException(
+                        "the profile has no outward offset by " + ToolpathPlanner.mm(off) + " mm"));
         // where the loop comes nearest the stock's edge: there the lead-in crosses the least material
         List<Curve2> cs = splitAtMiddles(loop.curves());
         int best = -1;
@@ -140,8 +167,14 @@ final class OpenSideMilling {
             b.rapid(Vec3.of(bestOut, h.retractZ()));
         }
         b.rapid(Vec3.of(bestOut, h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
-                Vec3.of(bestOut, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                t.diameterMm(),
+                t.toolNumber(),
+                t.spindleRpm(),
+                Vec3.of(bestOut, h.clearanceZ()),
+                b.moves());
     }
 
     /**
@@ -159,9 +192,19 @@ final class OpenSideMilling {
      * @throws UnsupportedOperationException when the open side is not on the stock's edge or the
      *     tool does not fit
      */
-    static ToolpathSection openPocket(String label, List<Curve2> walls, Contour stock, Heights h, Tooling t,
-            double stepoverMm, double axialMm, double sideAllowanceMm, double bottomAllowanceMm, boolean climb,
-            Tolerance tol, List<String> problems) {
+    static ToolpathSection openPocket(
+            String label,
+            List<Curve2> walls,
+            Contour stock,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol,
+            List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         Vec2 s = walls.get(0).start();
@@ -172,8 +215,8 @@ final class OpenSideMilling {
         }
         for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
             if (stock.distanceTo(p) > tol.linear()) {
-                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to ("
-                        + xy(s) + "), is not on the edge of the workpiece's block");
+                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to (" + xy(s)
+                        + "), is not on the edge of the workpiece's block");
             }
         }
         List<Curve2> closed = new ArrayList<>(walls);
@@ -195,8 +238,8 @@ final class OpenSideMilling {
         Profile region = new Profile.General(Contour.of(grown, Tolerance.DRAWING), ContourOffsetter.EXACT);
         List<Ring> rings = region.insetAll(off, tol);
         if (rings.isEmpty()) {
-            throw new UnsupportedOperationException("the tool (" + ToolpathPlanner.mm(t.diameterMm()) + " mm) does not"
-                    + " fit in the open pocket");
+            throw new UnsupportedOperationException(
+                    "the tool (" + ToolpathPlanner.mm(t.diameterMm()) + " mm) does not" + " fit in the open pocket");
         }
         Ring ring = rings.get(0);
         if (rings.size() > 1) {
@@ -245,8 +288,14 @@ final class OpenSideMilling {
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                t.diameterMm(),
+                t.toolNumber(),
+                t.spindleRpm(),
+                Vec3.of(first, h.clearanceZ()),
+                b.moves());
     }
 
     /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */

@@ -14,16 +14,21 @@ import org.fresa.model.ToolpathSection;
  * is a principal axis.
  */
 public final class Placing {
-    private Placing() {
-    }
+    private Placing() {}
 
     public static ToolpathSection place(ToolpathSection s, Transform3 featureToWorkpiece) {
         List<Move> moves = new ArrayList<>(s.moves().size());
         for (Move m : s.moves()) {
             moves.add(place(m, featureToWorkpiece));
         }
-        return new ToolpathSection(s.label(), unit(featureToWorkpiece.applyToDirection(s.toolAxis())),
-                s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), featureToWorkpiece.applyToPoint(s.start()), moves);
+        return new ToolpathSection(
+                s.label(),
+                unit(featureToWorkpiece.applyToDirection(s.toolAxis())),
+                s.toolDiameterMm(),
+                s.toolNumber(),
+                s.spindleRpm(),
+                featureToWorkpiece.applyToPoint(s.start()),
+                moves);
     }
 
     static Move place(Move m, Transform3 t) {
@@ -34,8 +39,13 @@ public final class Placing {
             return new Move.Linear(t.applyToPoint(l.end()), l.feedMmPerMin());
         }
         if (m instanceof Move.Circular c) {
-            return new Move.Circular(t.applyToPoint(c.end()), t.applyToPoint(c.center()),
-                    unit(t.applyToDirection(c.normal())), c.ccw(), c.turns(), c.feedMmPerMin());
+            return new Move.Circular(
+                    t.applyToPoint(c.end()),
+                    t.applyToPoint(c.center()),
+                    unit(t.applyToDirection(c.normal())),
+                    c.ccw(),
+                    c.turns(),
+                    c.feedMmPerMin());
         }
         if (m instanceof Move.Dwell d) {
             return new Move.Dwell(t.applyToPoint(d.end()), d.seconds());

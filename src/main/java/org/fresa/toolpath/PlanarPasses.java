@@ -22,16 +22,21 @@ import org.fresa.geom.Vec2;
  * here is convex, so a straight link between two points of the region stays inside it.
  */
 public final class PlanarPasses {
-    private PlanarPasses() {
-    }
+    private PlanarPasses() {}
 
     /**
      * @param feedDirection unit direction of parallel passes in the feature plane
      * @param clockwise run loops clockwise (conventional milling of a pocket's walls with an M3 spindle)
      * @throws IllegalArgumentException when the tool does not fit in the profile
      */
-    public static List<Pass> of(Strategy strategy, Profile profile, double wallOffsetMm, double stepoverMm,
-            Vec2 feedDirection, boolean clockwise, Tolerance tol) {
+    public static List<Pass> of(
+            Strategy strategy,
+            Profile profile,
+            double wallOffsetMm,
+            double stepoverMm,
+            Vec2 feedDirection,
+            boolean clockwise,
+            Tolerance tol) {
         Ring wall = profile.inset(wallOffsetMm, tol)
                 .orElseThrow(() -> new IllegalArgumentException("the tool does not fit in the profile"));
         if (!profile.convex()) {
@@ -73,12 +78,19 @@ public final class PlanarPasses {
      * A non-convex profile: a straight link may leave the region, so every pass is entered from
      * above; parallel passes are split where they leave the region; a spiral becomes nested loops.
      */
-    private static List<Pass> nonConvex(Strategy strategy, Profile profile, Ring wall, double wallOffsetMm,
-            double stepoverMm, Vec2 feedDirection, boolean clockwise, Tolerance tol) {
+    private static List<Pass> nonConvex(
+            Strategy strategy,
+            Profile profile,
+            Ring wall,
+            double wallOffsetMm,
+            double stepoverMm,
+            Vec2 feedDirection,
+            boolean clockwise,
+            Tolerance tol) {
         List<Pass> out = new ArrayList<>();
         switch (strategy) {
-            case UNIDIRECTIONAL, BIDIRECTIONAL -> out.addAll(parallelSplit(wall, stepoverMm, feedDirection,
-                    strategy == Strategy.BIDIRECTIONAL, tol));
+            case UNIDIRECTIONAL, BIDIRECTIONAL ->
+                out.addAll(parallelSplit(wall, stepoverMm, feedDirection, strategy == Strategy.BIDIRECTIONAL, tol));
             case BIDIRECTIONAL_CONTOUR -> {
                 out.addAll(parallelSplit(wall, stepoverMm, feedDirection, true, tol));
                 out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
@@ -88,7 +100,8 @@ public final class PlanarPasses {
                 profile.inset(wallOffsetMm + stepoverMm / 2, tol)
                         .ifPresent(r -> out.addAll(parallelSplit(r, stepoverMm, feedDirection, true, tol)));
             }
-            case CENTER_MILLING -> out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
+            case CENTER_MILLING ->
+                out.add(new Pass(wall.start(), oriented(wall, clockwise).curves(), false));
             default -> out.addAll(loops(profile, wallOffsetMm, stepoverMm, clockwise, tol));
         }
         List<Pass> entered = new ArrayList<>();
@@ -112,7 +125,8 @@ public final class PlanarPasses {
                 hi = Math.max(hi, p.dot(n));
             }
         }
-        double reach = 4 * (Math.abs(box.minX()) + Math.abs(box.maxX()) + Math.abs(box.minY()) + Math.abs(box.maxY()) + 1);
+        double reach =
+                4 * (Math.abs(box.minX()) + Math.abs(box.maxX()) + Math.abs(box.minY()) + Math.abs(box.maxY()) + 1);
         int m = (int) Math.ceil((hi - lo) / stepoverMm - 1e-9);
         List<Pass> out = new ArrayList<>();
         for (int k = m; k >= 0; k--) {

@@ -15,8 +15,7 @@ import org.fresa.pocket.EntryRule;
  *     helix keeps its kind, any other kind replaces the file's; no entry is steeper than the angle
  * @param paths whose path conventions: Fresa's own, or the 2016 robot thesis's ({@link ThesisPaths})
  */
-public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm, EntryRule entry,
-        PathConvention paths) {
+public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm, EntryRule entry, PathConvention paths) {
 
     /** Breakthrough of through holes when none is asked (mm). */
     public static final double DEFAULT_BREAKTHROUGH_MM = 1;
@@ -40,8 +39,8 @@ public record PlanningChoices(boolean trustCuttingSpeed, double breakthroughMm, 
         java.util.Objects.requireNonNull(entry, "entry");
         java.util.Objects.requireNonNull(paths, "paths");
         if (!(breakthroughMm >= 0 && breakthroughMm <= MAX_BREAKTHROUGH_MM)) {
-            throw new IllegalArgumentException("breakthrough must be 0 to " + MAX_BREAKTHROUGH_MM + " mm: "
-                    + breakthroughMm);
+            throw new IllegalArgumentException(
+                    "breakthrough must be 0 to " + MAX_BREAKTHROUGH_MM + " mm: " + breakthroughMm);
         }
     }
 

@@ -27,8 +27,7 @@ public final class PocketMilling {
     /** Height above the last cut layer where the tool may traverse within the pocket (mm). */
     static final double LIFT_MM = 1.0;
 
-    private PocketMilling() {
-    }
+    private PocketMilling() {}
 
     /** The stepover used between loops: the nominal one limited by D and the corner rule. */
     public static double loopStepover(Profile profile, Tooling tool, MillingPlan plan) {
@@ -39,8 +38,8 @@ public final class PocketMilling {
     /**
      * @throws IllegalArgumentException when the tool does not fit in the profile
      */
-    public static ToolpathSection section(String label, Profile profile, Heights h, Tooling tool, MillingPlan plan,
-            Tolerance tol) {
+    public static ToolpathSection section(
+            String label, Profile profile, Heights h, Tooling tool, MillingPlan plan, Tolerance tol) {
         double r = tool.radiusMm();
         double d = switch (plan.strategy()) {
             case UNIDIRECTIONAL, BIDIRECTIONAL -> Math.min(plan.stepoverMm(), tool.diameterMm());
@@ -48,7 +47,8 @@ public final class PocketMilling {
         };
         double wall = r + plan.sideAllowanceMm();
         double floor = h.bottomZ() + plan.bottomAllowanceMm();
-        List<Pass> passes = PlanarPasses.of(plan.strategy(), profile, wall, d, plan.feedDirection(), plan.clockwise(), tol);
+        List<Pass> passes =
+                PlanarPasses.of(plan.strategy(), profile, wall, d, plan.feedDirection(), plan.clockwise(), tol);
         Ring region = profile.inset(wall, tol).orElseThrow();
         Vec2 first = passes.get(0).start();
         MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
@@ -64,18 +64,33 @@ public final class PocketMilling {
                 case UNIDIRECTIONAL, BIDIRECTIONAL -> Math.min(plan.stepoverMm(), tool.diameterMm());
                 default -> Stepover.forLoops(plan.stepoverMm(), tool.diameterMm(), profile.sharpCornerAngleRad(r));
             };
-            List<Pass> fin = PlanarPasses.of(plan.strategy(), profile, r, df, plan.feedDirection(), plan.clockwise(), tol);
+            List<Pass> fin =
+                    PlanarPasses.of(plan.strategy(), profile, r, df, plan.feedDirection(), plan.clockwise(), tol);
             Ring finRegion = profile.inset(r, tol).orElseThrow();
             layer(b, fin, finRegion, h.bottomZ(), prev, h, tool, plan, tol);
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, tool.diameterMm(), tool.toolNumber(), tool.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                tool.diameterMm(),
+                tool.toolNumber(),
+                tool.spindleRpm(),
+                Vec3.of(first, h.clearanceZ()),
+                b.moves());
     }
 
-    static void layer(MoveBuilder b, List<Pass> passes, Ring region, double z, double prevZ, Heights h, Tooling tool,
-            MillingPlan plan, Tolerance tol) {
+    static void layer(
+            MoveBuilder b,
+            List<Pass> passes,
+            Ring region,
+            double z,
+            double prevZ,
+            Heights h,
+            Tooling tool,
+            MillingPlan plan,
+            Tolerance tol) {
         double lift = Math.min(h.retractZ(), prevZ + LIFT_MM);
         for (int i = 0; i < passes.size(); i++) {
             Pass p = passes.get(i);
@@ -98,8 +113,15 @@ public final class PocketMilling {
      * @param ahead the path the tool follows at depth from the pass start ({@link #ahead})
      * @throws IllegalArgumentException when there is room for neither (the workingstep is refused)
      */
-    static void enter(MoveBuilder b, Pass p, List<Curve2> ahead, Ring region, double z, Tooling tool,
-            MillingPlan plan, Tolerance tol) {
+    static void enter(
+            MoveBuilder b,
+            Pass p,
+            List<Curve2> ahead,
+            Ring region,
+            double z,
+            Tooling tool,
+            MillingPlan plan,
+            Tolerance tol) {
         Vec3 bottom = Vec3.of(p.start(), z);
         // from the lift height just above the material: no straight feed down, even through the air
         double top = b.at().z();
@@ -109,14 +131,18 @@ public final class PocketMilling {
         }
         EntryRule rule = rule(plan.approach(), plan.entry());
         Contour boundary = new Contour(region.curves());
-        Entries.Room room = (centre, r) -> boundary.distanceTo(centre) >= r - tol.linear()
-                && boundary.windingNumber(centre) != 0;
+        Entries.Room room =
+                (centre, r) -> boundary.distanceTo(centre) >= r - tol.linear() && boundary.windingNumber(centre) != 0;
         Entry entry = Entries.choose(rule, p.start(), ahead, !plan.clockwise(), room, tool.radiusMm(), top - z)
                 .orElse(null);
         if (entry == null) {
-            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+            throw new IllegalArgumentException(String.format(
+                    java.util.Locale.ROOT,
                     "no room for a helix or a ramp no steeper than %.1f deg to enter at X%.3f Y%.3f, and a milling"
-                            + " cutter is not taken to cut at its centre", rule.angleDeg(), p.start().x(), p.start().y()));
+                            + " cutter is not taken to cut at its centre",
+                    rule.angleDeg(),
+                    p.start().x(),
+                    p.start().y()));
         }
         b.append(entry.moves(top, z, tool.plungeFeedMmPerMin()));
     }

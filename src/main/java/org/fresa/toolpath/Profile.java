@@ -21,8 +21,8 @@ import org.fresa.geom.Vec2;
  * keeps its centre; a regular polygon keeps its angles and loses d of apothem. A general contour
  * is offset by a {@link ContourOffsetter}.
  */
-public sealed interface Profile permits Profile.RoundedRectangle, Profile.Circle, Profile.RegularPolygon,
-        Profile.General {
+public sealed interface Profile
+        permits Profile.RoundedRectangle, Profile.Circle, Profile.RegularPolygon, Profile.General {
 
     /** The outline itself, counter-clockwise. */
     Contour contour(Tolerance tol);
@@ -67,9 +67,12 @@ public sealed interface Profile permits Profile.RoundedRectangle, Profile.Circle
      */
     record RoundedRectangle(Vec2 center, double xLengthMm, double yLengthMm, double cornerRadiusMm) implements Profile {
         public RoundedRectangle {
-            if (!(xLengthMm > 0) || !(yLengthMm > 0) || cornerRadiusMm < 0
+            if (!(xLengthMm > 0)
+                    || !(yLengthMm > 0)
+                    || cornerRadiusMm < 0
                     || cornerRadiusMm > Math.min(xLengthMm, yLengthMm) / 2 + 1e-9) {
-                throw new IllegalArgumentException("bad rectangle: " + xLengthMm + " x " + yLengthMm + " r " + cornerRadiusMm);
+                throw new IllegalArgumentException(
+                        "bad rectangle: " + xLengthMm + " x " + yLengthMm + " r " + cornerRadiusMm);
             }
         }
 

@@ -58,8 +58,7 @@ final class SlotMilling {
         ToolpathSection cut(Profile outline, Heights heights);
     }
 
-    private SlotMilling() {
-    }
+    private SlotMilling() {}
 
     /**
      * The moves of a slot in its frame.
@@ -68,29 +67,42 @@ final class SlotMilling {
      * @param pocket mills an outline as a pocket with the operation's strategy and entry rules
      * @throws UnsupportedOperationException with the reason when the slot cannot be machined with this tool
      */
-    static ToolpathSection section(String label, Feature f, Tool tool, Tooling t, Heights h, double lengthMm,
-            double axialMm, Tolerance tol, List<String> problems, PocketCutter pocket) {
-        org.fresa.stepnc.Profile shape = f.profile()
-                .orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
+    static ToolpathSection section(
+            String label,
+            Feature f,
+            Tool tool,
+            Tooling t,
+            Heights h,
+            double lengthMm,
+            double axialMm,
+            Tolerance tol,
+            List<String> problems,
+            PocketCutter pocket) {
+        org.fresa.stepnc.Profile shape =
+                f.profile().orElseThrow(() -> new IllegalArgumentException("the slot has no swept shape"));
         List<SlotEnd> ends = f.slotEnds();
         for (SlotEnd e : ends) {
             switch (e.type()) {
-                case WOODRUFF -> throw new UnsupportedOperationException("woodruff slot ends are not machined: the end"
-                        + " rises to the top as an arc along the path, which a cutter along the feature axis cannot follow");
-                case LOOP -> throw new UnsupportedOperationException("loop slot ends are not machined: a loop needs a"
-                        + " closed course of travel, and the path is " + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
+                case WOODRUFF ->
+                    throw new UnsupportedOperationException(
+                            "woodruff slot ends are not machined: the end"
+                                    + " rises to the top as an arc along the path, which a cutter along the feature axis cannot follow");
+                case LOOP ->
+                    throw new UnsupportedOperationException("loop slot ends are not machined: a loop needs a"
+                            + " closed course of travel, and the path is "
+                            + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
                 case OTHER -> throw new UnsupportedOperationException("slot end " + e.entity() + " is not known");
-                default -> {
-                }
+                default -> {}
             }
         }
         double depth = -h.bottomZ();
         double r = t.radiusMm();
         double d = t.diameterMm();
         if (shape.entity().contains("DOVETAIL")) {
-            throw new UnsupportedOperationException(tool.body().contains("DOVETAIL")
-                    ? "dovetail slots are not machined: ISO 14649-10 gives the dovetail no profile the planner can read"
-                    : "a dovetail slot needs a DOVETAIL_MILL; the tool is a " + tool.body());
+            throw new UnsupportedOperationException(
+                    tool.body().contains("DOVETAIL")
+                            ? "dovetail slots are not machined: ISO 14649-10 gives the dovetail no profile the planner can read"
+                            : "a dovetail slot needs a DOVETAIL_MILL; the tool is a " + tool.body());
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
             double w = checkedWidth(u.widthMm(), d, tol);
@@ -108,11 +120,12 @@ final class SlotMilling {
             double re = Math.max(big - e, 0);
             double ce = Math.max(r - e, 0);
             double floor = Math.max(zc - e - Math.sqrt(Math.max(re * re - ce * ce, 0)), -depth);
-            DoubleUnaryOperator reach = z -> z + e >= zc ? big - r
-                    : Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
+            DoubleUnaryOperator reach =
+                    z -> z + e >= zc ? big - r : Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
             if (floor > -depth + tol.linear()) {
                 problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter reaches " + mm(-floor)
-                        + " mm of the rounded-U's " + mm(depth) + " mm; a ball end mill as wide as the slot reaches the bottom");
+                        + " mm of the rounded-U's " + mm(depth)
+                        + " mm; a ball end mill as wide as the slot reaches the bottom");
             }
             return shaped(label, lengthMm, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
         }
@@ -125,16 +138,17 @@ final class SlotMilling {
             // V stands upright when its bisector is square to it (GRIMA's 90 deg vee has 45)
             double lean = v.tiltAngleDeg() + angle / 2 - 90;
             if (Math.abs(lean) > SQUARE_TOLERANCE_DEG) {
-                throw new UnsupportedOperationException("the vee leans by " + mm(lean) + " deg (tilt_angle "
-                        + mm(v.tiltAngleDeg()) + " deg for a " + mm(angle) + " deg vee): the layers follow upright vees only");
+                throw new UnsupportedOperationException(
+                        "the vee leans by " + mm(lean) + " deg (tilt_angle " + mm(v.tiltAngleDeg()) + " deg for a "
+                                + mm(angle) + " deg vee): the layers follow upright vees only");
             }
             double a = Math.toRadians(angle / 2);
             double rho = Math.max(v.profileRadiusMm().orElse(0), 0);
             double zc = -depth + rho;
             double zApex = zc - rho / Math.sin(a);
             double zTangent = zc - rho * Math.sin(a);
-            DoubleUnaryOperator half = z -> z >= zTangent ? (z - zApex) * Math.tan(a)
-                    : Math.sqrt(Math.max(rho * rho - (z - zc) * (z - zc), 0));
+            DoubleUnaryOperator half = z ->
+                    z >= zTangent ? (z - zApex) * Math.tan(a) : Math.sqrt(Math.max(rho * rho - (z - zc) * (z - zc), 0));
             if (half.applyAsDouble(0) < r - tol.linear()) {
                 throw new UnsupportedOperationException("the tool (" + mm(d) + " mm) is wider than the vee at its top ("
                         + mm(2 * half.applyAsDouble(0)) + " mm)");
@@ -143,16 +157,19 @@ final class SlotMilling {
             floor = Math.max(floor, -depth);
             problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter follows the vee in "
                     + mm(SHAPED_LAYER_MM) + " mm steps down to " + mm(-floor) + " mm of its " + mm(depth) + " mm");
-            return shaped(label, lengthMm, 0, floor, z -> half.applyAsDouble(z) - r, r, ends, h, t, axialMm, tol,
-                    pocket);
+            return shaped(
+                    label, lengthMm, 0, floor, z -> half.applyAsDouble(z) - r, r, ends, h, t, axialMm, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.Tee tee) {
             if (Math.abs(tee.firstAngleDeg() - 90) > SQUARE_TOLERANCE_DEG
                     || Math.abs(tee.secondAngleDeg() - 90) > SQUARE_TOLERANCE_DEG) {
-                throw new UnsupportedOperationException("the tee's stem walls meet the cross bar at " + mm(tee.firstAngleDeg())
-                        + " and " + mm(tee.secondAngleDeg()) + " deg: only a square stem is machined");
+                throw new UnsupportedOperationException(
+                        "the tee's stem walls meet the cross bar at " + mm(tee.firstAngleDeg()) + " and "
+                                + mm(tee.secondAngleDeg()) + " deg: only a square stem is machined");
             }
-            if (!(tee.crossBarDepthMm() > 0 && tee.crossBarDepthMm() < depth && tee.crossBarWidthMm() > tee.widthMm())) {
+            if (!(tee.crossBarDepthMm() > 0
+                    && tee.crossBarDepthMm() < depth
+                    && tee.crossBarWidthMm() > tee.widthMm())) {
                 throw new IllegalArgumentException("the tee's cross bar (" + mm(tee.crossBarWidthMm()) + " by "
                         + mm(tee.crossBarDepthMm()) + " mm) does not fit under its " + mm(tee.widthMm())
                         + " mm stem in the slot's depth " + mm(depth) + " mm");
@@ -170,12 +187,12 @@ final class SlotMilling {
 
     private static double checkedWidth(double widthMm, double d, Tolerance tol) {
         if (!(widthMm > 0 && widthMm <= ToolpathPlanner.MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("slot width " + widthMm + " mm is outside 0 to "
-                    + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+            throw new IllegalArgumentException(
+                    "slot width " + widthMm + " mm is outside 0 to " + ToolpathPlanner.MAX_LENGTH_MM + " mm");
         }
         if (d > widthMm + tol.linear()) {
-            throw new UnsupportedOperationException("the tool (" + mm(d) + " mm) is wider than the slot ("
-                    + mm(widthMm) + " mm)");
+            throw new UnsupportedOperationException(
+                    "the tool (" + mm(d) + " mm) is wider than the slot (" + mm(widthMm) + " mm)");
         }
         return widthMm;
     }
@@ -189,8 +206,15 @@ final class SlotMilling {
         return e > 0 ? Math.min(e, r) : 0;
     }
 
-    private static ToolpathSection straight(String label, double length, double halfWidth, List<SlotEnd> ends,
-            Heights h, Tooling t, Tolerance tol, PocketCutter pocket) {
+    private static ToolpathSection straight(
+            String label,
+            double length,
+            double halfWidth,
+            List<SlotEnd> ends,
+            Heights h,
+            Tooling t,
+            Tolerance tol,
+            PocketCutter pocket) {
         return join(label, List.of(pocket.cut(outline(length, halfWidth, t.radiusMm(), ends, tol), h)));
     }
 
@@ -200,14 +224,25 @@ final class SlotMilling {
      *
      * @param reach how far the cutter's centre may go from the middle with its tip at z (mm)
      */
-    private static ToolpathSection shaped(String label, double length, double zStraight, double floor,
-            DoubleUnaryOperator reach, double r, List<SlotEnd> ends, Heights h, Tooling t, double axialMm,
-            Tolerance tol, PocketCutter pocket) {
+    private static ToolpathSection shaped(
+            String label,
+            double length,
+            double zStraight,
+            double floor,
+            DoubleUnaryOperator reach,
+            double r,
+            List<SlotEnd> ends,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            Tolerance tol,
+            PocketCutter pocket) {
         List<ToolpathSection> parts = new ArrayList<>();
         double top = h.topZ();
         if (zStraight < top - tol.linear()) {
             double z = Math.max(zStraight, floor);
-            parts.add(pocket.cut(outline(length, Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
+            parts.add(pocket.cut(
+                    outline(length, Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
                     new Heights(h.clearanceZ(), h.retractZ(), top, z)));
             top = z;
         }
@@ -218,7 +253,8 @@ final class SlotMilling {
             for (int i = 1; i <= n; i++) {
                 double z = i == n ? floor : top - (top - floor) * i / n;
                 double half = Math.max(reach.applyAsDouble(z), 0) + r;
-                parts.add(pocket.cut(outline(length, half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+                parts.add(pocket.cut(
+                        outline(length, half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
                 prev = z;
             }
         }
@@ -247,8 +283,14 @@ final class SlotMilling {
                 at = m.end();
             }
         }
-        return new ToolpathSection(label, first.toolAxis(), first.toolDiameterMm(), first.toolNumber(),
-                first.spindleRpm(), first.start(), moves);
+        return new ToolpathSection(
+                label,
+                first.toolAxis(),
+                first.toolDiameterMm(),
+                first.toolNumber(),
+                first.spindleRpm(),
+                first.start(),
+                moves);
     }
 
     /**
@@ -272,8 +314,8 @@ final class SlotMilling {
             // the radius), which the cutter's disc sweeps without leaving the outline
             double x0 = isRadiused(start) ? -half : -half + toolRadius;
             double x1 = isRadiused(end) ? half : half - toolRadius;
-            return new Profile.RoundedRectangle(new Vec2((x0 + x1) / 2, 0), x1 - x0 + 2 * toolRadius,
-                    2 * toolRadius, 0);
+            return new Profile.RoundedRectangle(
+                    new Vec2((x0 + x1) / 2, 0), x1 - x0 + 2 * toolRadius, 2 * toolRadius, 0);
         }
         List<Curve2> cs = new ArrayList<>();
         Vec2 at = new Vec2(-half, -halfWidth);
@@ -288,8 +330,11 @@ final class SlotMilling {
     }
 
     private static boolean isSquare(SlotEnd e) {
-        return e == null || e.type() == EndType.OPEN
-                || e.type() == EndType.FLAT && !(e.firstRadiusMm().orElse(0) > 0) && !(e.secondRadiusMm().orElse(0) > 0);
+        return e == null
+                || e.type() == EndType.OPEN
+                || e.type() == EndType.FLAT
+                        && !(e.firstRadiusMm().orElse(0) > 0)
+                        && !(e.secondRadiusMm().orElse(0) > 0);
     }
 
     private static boolean isRadiused(SlotEnd e) {
@@ -314,10 +359,24 @@ final class SlotMilling {
             return left;
         }
         // outward along the path, the right-hand corner is the path's left side when coming back: radius 2 then 1
-        double rRight = isSquare(e) ? 0 : Math.min(Math.max(u.x() > 0 ? e.secondRadiusMm().orElse(0)
-                : e.firstRadiusMm().orElse(0), 0), hw);
-        double rLeft = isSquare(e) ? 0 : Math.min(Math.max(u.x() > 0 ? e.firstRadiusMm().orElse(0)
-                : e.secondRadiusMm().orElse(0), 0), hw);
+        double rRight = isSquare(e)
+                ? 0
+                : Math.min(
+                        Math.max(
+                                u.x() > 0
+                                        ? e.secondRadiusMm().orElse(0)
+                                        : e.firstRadiusMm().orElse(0),
+                                0),
+                        hw);
+        double rLeft = isSquare(e)
+                ? 0
+                : Math.min(
+                        Math.max(
+                                u.x() > 0
+                                        ? e.firstRadiusMm().orElse(0)
+                                        : e.secondRadiusMm().orElse(0),
+                                0),
+                        hw);
         Vec2 a = right.minus(u.times(rRight));
         if (from.distance(a) > 1e-12) {
             cs.add(new Segment2(from, a));
@@ -342,8 +401,15 @@ final class SlotMilling {
      * along the middle at the floor to the other end (past it when open, the cutter's radius short
      * of a flat end, to a radiused end's centre), and back out the same way.
      */
-    private static ToolpathSection crossBar(String label, double length, org.fresa.stepnc.Profile.Tee tee,
-            List<SlotEnd> ends, Tool tool, Heights h, Tooling t, Tolerance tol) {
+    private static ToolpathSection crossBar(
+            String label,
+            double length,
+            org.fresa.stepnc.Profile.Tee tee,
+            List<SlotEnd> ends,
+            Tool tool,
+            Heights h,
+            Tooling t,
+            Tolerance tol) {
         double r = t.radiusMm();
         if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
             throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
@@ -363,8 +429,8 @@ final class SlotMilling {
         boolean startOpen = start != null && start.type() == EndType.OPEN;
         boolean endOpen = end != null && end.type() == EndType.OPEN;
         if (!startOpen && !endOpen) {
-            throw new UnsupportedOperationException("a T_SLOT_MILL enters the cross bar from an open end; the slot has"
-                    + " none");
+            throw new UnsupportedOperationException(
+                    "a T_SLOT_MILL enters the cross bar from an open end; the slot has" + " none");
         }
         double sign = startOpen ? -1 : 1; // the side the cutter enters from
         SlotEnd far = startOpen ? end : start;
@@ -386,8 +452,14 @@ final class SlotMilling {
         b.feed(new Vec3(outside, 0, z), t.feedMmPerMin());
         b.rapid(new Vec3(outside, 0, h.retractZ()));
         b.rapid(new Vec3(outside, 0, h.clearanceZ()));
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(),
-                new Vec3(outside, 0, h.clearanceZ()), b.moves());
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                t.diameterMm(),
+                t.toolNumber(),
+                t.spindleRpm(),
+                new Vec3(outside, 0, h.clearanceZ()),
+                b.moves());
     }
 
     private static String mm(double v) {

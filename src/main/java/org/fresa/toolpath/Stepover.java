@@ -11,8 +11,7 @@ package org.fresa.toolpath;
  * corner.
  */
 public final class Stepover {
-    private Stepover() {
-    }
+    private Stepover() {}
 
     /**
      * @param overlapFraction overlap as a fraction of D in [0, 1)

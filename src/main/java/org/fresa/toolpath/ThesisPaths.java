@@ -58,17 +58,17 @@ public final class ThesisPaths {
     /** Lengths below this are nothing (mm). */
     static final double EPS_MM = 1e-9;
 
-    private ThesisPaths() {
-    }
+    private ThesisPaths() {}
 
     /** What a point of the thesis's list is for: how the move to it is written. */
     enum Kind {
-        RAPID, FEED, PLUNGE
+        RAPID,
+        FEED,
+        PLUNGE
     }
 
     /** One point of the thesis's list, in the feature frame. */
-    record Point(Vec3 at, Kind kind) {
-    }
+    record Point(Vec3 at, Kind kind) {}
 
     /** Plans every workingstep by the thesis's conventions; what they do not cover is reported. */
     public static ToolpathPlanner.Plan plan(StepNcProgram program, PlanningChoices choices) {
@@ -96,14 +96,14 @@ public final class ThesisPaths {
                 refusals.put(ws.instanceId(), e.getMessage());
             }
         }
-        feedNotes.forEach((note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ")
-                + note));
-        return new ToolpathPlanner.Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned,
-                steps, refusals);
+        feedNotes.forEach(
+                (note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ") + note));
+        return new ToolpathPlanner.Plan(
+                new Toolpath(sections), problems, program.workingsteps().size(), planned, steps, refusals);
     }
 
-    static ToolpathSection section(MachiningWorkingstep ws, String label, Map<String, Integer> toolNumbers,
-            CuttingData cutting) {
+    static ToolpathSection section(
+            MachiningWorkingstep ws, String label, Map<String, Integer> toolNumbers, CuttingData cutting) {
         Feature f = ws.feature();
         Operation op = ws.operation();
         if (!op.toolpaths().isEmpty()) {
@@ -115,15 +115,20 @@ public final class ThesisPaths {
             throw new IllegalArgumentException("tool diameter " + dia + " mm is outside " + ToolpathPlanner.MIN_TOOL_MM
                     + " to " + ToolpathPlanner.MAX_LENGTH_MM + " mm");
         }
-        int number = toolNumbers.computeIfAbsent(tool.id() + "|" + tool.body() + "|" + dia, k -> toolNumbers.size() + 1);
-        Vec3 security = ws.securityPlane().orElseThrow(() -> new IllegalArgumentException(
-                "the thesis goes to the security plane's origin between workingsteps: this workingstep has none"))
+        int number =
+                toolNumbers.computeIfAbsent(tool.id() + "|" + tool.body() + "|" + dia, k -> toolNumbers.size() + 1);
+        Vec3 security = ws.securityPlane()
+                .orElseThrow(
+                        () -> new IllegalArgumentException(
+                                "the thesis goes to the security plane's origin between workingsteps: this workingstep has none"))
                 .translationPart();
         double retract = op.retractPlaneMm().orElse(ToolpathPlanner.DEFAULT_RETRACT_MM);
         double depth = f.depthMm().orElseThrow(() -> new IllegalArgumentException("the feature has no depth"));
-        if (!(depth >= 0 && depth <= ToolpathPlanner.MAX_LENGTH_MM && Math.abs(retract) <= ToolpathPlanner.MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("depth " + depth + " mm or retract plane " + retract + " mm is outside 0 to "
-                    + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+        if (!(depth >= 0
+                && depth <= ToolpathPlanner.MAX_LENGTH_MM
+                && Math.abs(retract) <= ToolpathPlanner.MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("depth " + depth + " mm or retract plane " + retract
+                    + " mm is outside 0 to " + ToolpathPlanner.MAX_LENGTH_MM + " mm");
         }
         Transform3 place = f.placement();
         List<Point> local;
@@ -136,9 +141,12 @@ public final class ThesisPaths {
             double stepover = stepover(op, dia);
             List<Vec2> path;
             switch (f.type()) {
-                case ROUND_HOLE -> path = circleContours(
-                        f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter")) / 2,
-                        dia, stepover);
+                case ROUND_HOLE ->
+                    path = circleContours(
+                            f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"))
+                                    / 2,
+                            dia,
+                            stepover);
                 case CLOSED_POCKET -> {
                     org.fresa.stepnc.Profile sp = f.profile()
                             .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
@@ -159,12 +167,13 @@ public final class ThesisPaths {
                 }
                 case PLANAR_FACE -> {
                     Box2 box = ToolpathPlanner.faceBoundary(f);
-                    Vec3 course = f.courseOfTravel().flatMap(c -> c.direction().map(d -> c.placement().applyToDirection(d)))
+                    Vec3 course = f.courseOfTravel()
+                            .flatMap(c -> c.direction().map(d -> c.placement().applyToDirection(d)))
                             .orElse(Vec3.UNIT_X);
                     path = facePasses(box, Math.abs(course.y()) > Math.abs(course.x()), dia, stepover);
                 }
-                default -> throw new UnsupportedOperationException("the thesis's conventions do not cover a "
-                        + f.entity());
+                default ->
+                    throw new UnsupportedOperationException("the thesis's conventions do not cover a " + f.entity());
             }
             double axial = op.axialCuttingDepthMm().orElse(depth);
             local = milled(path, layers(depth, axial), retract);
@@ -176,11 +185,12 @@ public final class ThesisPaths {
         List<Move> moves = new ArrayList<>();
         for (Point p : local) {
             Vec3 at = place.applyToPoint(p.at());
-            moves.add(switch (p.kind()) {
-                case RAPID -> new Move.Rapid(at);
-                case FEED -> new Move.Linear(at, feed);
-                case PLUNGE -> new Move.Linear(at, plunge);
-            });
+            moves.add(
+                    switch (p.kind()) {
+                        case RAPID -> new Move.Rapid(at);
+                        case FEED -> new Move.Linear(at, feed);
+                        case PLUNGE -> new Move.Linear(at, plunge);
+                    });
         }
         moves.add(new Move.Rapid(security));
         Vec3 axis = place.applyToDirection(Vec3.UNIT_Z).normalized();
@@ -189,8 +199,9 @@ public final class ThesisPaths {
 
     /** The thesis's stepover: the diameter less the overlap read as a length. */
     static double stepover(Operation op, double diameterMm) {
-        double overlap = op.strategy().flatMap(s -> s.overlap().isPresent()
-                ? Optional.of(s.overlap().getAsDouble()) : Optional.empty()).orElse(0.0);
+        double overlap = op.strategy()
+                .flatMap(s -> s.overlap().isPresent() ? Optional.of(s.overlap().getAsDouble()) : Optional.empty())
+                .orElse(0.0);
         double d = diameterMm - overlap;
         if (!(d > EPS_MM)) {
             throw new IllegalArgumentException("an overlap of " + overlap + " mm read as a length leaves no stepover"
@@ -202,9 +213,13 @@ public final class ThesisPaths {
     /** The drilling cycle, in the hole's frame. */
     static List<Point> drilling(double depthMm, double retractMm) {
         Vec3 above = new Vec3(0, 0, retractMm);
-        return List.of(new Point(above, Kind.RAPID), new Point(Vec3.ZERO, Kind.PLUNGE),
-                new Point(new Vec3(0, 0, -depthMm), Kind.PLUNGE), new Point(Vec3.ZERO, Kind.PLUNGE),
-                new Point(above, Kind.RAPID), new Point(above, Kind.RAPID));
+        return List.of(
+                new Point(above, Kind.RAPID),
+                new Point(Vec3.ZERO, Kind.PLUNGE),
+                new Point(new Vec3(0, 0, -depthMm), Kind.PLUNGE),
+                new Point(Vec3.ZERO, Kind.PLUNGE),
+                new Point(above, Kind.RAPID),
+                new Point(above, Kind.RAPID));
     }
 
     /** The layer depths: the face (0), then every axial depth, the remainder last. */
@@ -265,7 +280,8 @@ public final class ThesisPaths {
     }
 
     /** The corners of a rectangle about its centre, counter-clockwise from the bottom-left. */
-    static final List<Vec2> BOTTOM_LEFT_CCW = List.of(new Vec2(-1, -1), new Vec2(1, -1), new Vec2(1, 1), new Vec2(-1, 1));
+    static final List<Vec2> BOTTOM_LEFT_CCW =
+            List.of(new Vec2(-1, -1), new Vec2(1, -1), new Vec2(1, 1), new Vec2(-1, 1));
 
     /**
      * Contour-parallel rectangles about the origin, counter-clockwise from the bottom-left
@@ -280,12 +296,13 @@ public final class ThesisPaths {
      * 14649-11 example 1's): its rectangles start at the corner of the polyline's first point and
      * run in the polyline's order.
      */
-    static List<Vec2> polylineRectangleContours(org.fresa.stepnc.Profile.General g, double diameterMm,
-            double stepoverMm) {
+    static List<Vec2> polylineRectangleContours(
+            org.fresa.stepnc.Profile.General g, double diameterMm, double stepoverMm) {
         List<Vec2> corners = new ArrayList<>();
         for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
             if (!(seg instanceof org.fresa.stepnc.Profile.Line line)) {
-                throw new UnsupportedOperationException("the thesis's conventions are known for straight outlines only");
+                throw new UnsupportedOperationException(
+                        "the thesis's conventions are known for straight outlines only");
             }
             corners.add(new Vec2(line.start().x(), line.start().y()));
         }
@@ -297,14 +314,14 @@ public final class ThesisPaths {
             double sy = Math.signum(c.y() - centre.y());
             if (Math.abs(Math.abs(c.x() - centre.x()) - box.width() / 2) > 1e-6
                     || Math.abs(Math.abs(c.y() - centre.y()) - box.height() / 2) > 1e-6) {
-                throw new UnsupportedOperationException("the thesis's conventions are known for rectangular outlines"
-                        + " only");
+                throw new UnsupportedOperationException(
+                        "the thesis's conventions are known for rectangular outlines" + " only");
             }
             signs.add(new Vec2(sx, sy));
         }
         if (!g.closed() || signs.size() != 4) {
-            throw new UnsupportedOperationException("the thesis's conventions are known for closed rectangular"
-                    + " outlines only");
+            throw new UnsupportedOperationException(
+                    "the thesis's conventions are known for closed rectangular" + " outlines only");
         }
         return rectangleContours(centre, box.width() / 2, box.height() / 2, signs, diameterMm, stepoverMm);
     }
@@ -313,8 +330,8 @@ public final class ThesisPaths {
      * Contour-parallel rectangles about a centre, each through the given corners in order (signs
      * of the half-sizes) and back, while both half-sizes stay at or above zero.
      */
-    static List<Vec2> rectangleContours(Vec2 centre, double halfXMm, double halfYMm, List<Vec2> cornerSigns,
-            double diameterMm, double stepoverMm) {
+    static List<Vec2> rectangleContours(
+            Vec2 centre, double halfXMm, double halfYMm, List<Vec2> cornerSigns, double diameterMm, double stepoverMm) {
         List<Vec2> out = new ArrayList<>();
         double ax = halfXMm - diameterMm / 2;
         double ay = halfYMm - diameterMm / 2;

@@ -9,8 +9,8 @@ package org.fresa.toolpath;
  * @param feedMmPerMin cutting feed, > 0
  * @param plungeFeedMmPerMin feed along the tool axis (plunges, ramps, drilling), > 0
  */
-public record Tooling(int toolNumber, double diameterMm, double spindleRpm, double feedMmPerMin,
-        double plungeFeedMmPerMin) {
+public record Tooling(
+        int toolNumber, double diameterMm, double spindleRpm, double feedMmPerMin, double plungeFeedMmPerMin) {
 
     public Tooling {
         if (toolNumber < 1 || !(diameterMm > 0) || spindleRpm < 0 || !(feedMmPerMin > 0) || !(plungeFeedMmPerMin > 0)) {

@@ -93,8 +93,7 @@ public final class ToolpathPlanner {
     /** Most passes (radial or axial) one workingstep may need; more is a unit or typing mistake. */
     static final int MAX_STEPS = 100_000;
 
-    private ToolpathPlanner() {
-    }
+    private ToolpathPlanner() {}
 
     /** Refuses a span that a step would divide into more than {@link #MAX_STEPS} passes. */
     static void bounded(String spanName, double spanMm, String stepName, double stepMm) {
@@ -113,8 +112,13 @@ public final class ToolpathPlanner {
      * @param steps the planned workingsteps, one per section of the toolpath, in the same order
      * @param refusals the reason each workingstep refused outright was left out, by its instance id
      */
-    public record Plan(Toolpath toolpath, List<String> problems, int workingsteps, int planned,
-            List<PlannedStep> steps, Map<Long, String> refusals) {
+    public record Plan(
+            Toolpath toolpath,
+            List<String> problems,
+            int workingsteps,
+            int planned,
+            List<PlannedStep> steps,
+            Map<Long, String> refusals) {
         public Plan {
             problems = List.copyOf(problems);
             steps = List.copyOf(steps);
@@ -173,12 +177,13 @@ public final class ToolpathPlanner {
         for (MachiningWorkingstep ws : program.workingsteps()) {
             try {
                 CuttingData cutting = cuttingData(ws.operation(), choices);
-                Optional<ToolpathSection> s = section(ws, toolNumbers, problems, tol, cutting,
-                        new HoleContext(program, choices));
+                Optional<ToolpathSection> s =
+                        section(ws, toolNumbers, problems, tol, cutting, new HoleContext(program, choices));
                 if (s.isPresent()) {
                     sections.add(s.get());
                     FeedRate feed = cutting.feed();
-                    cutting.notes().forEach(n -> problems.add("workingstep '" + s.get().label() + "': " + n));
+                    cutting.notes()
+                            .forEach(n -> problems.add("workingstep '" + s.get().label() + "': " + n));
                     steps.add(new PlannedStep(ws.instanceId(), s.get().label(), feed));
                     if (feed.inferred()) {
                         feedNotes.merge(feed.note(), 1, Integer::sum);
@@ -190,8 +195,8 @@ public final class ToolpathPlanner {
                 refusals.put(ws.instanceId(), e.getMessage());
             }
         }
-        feedNotes.forEach((note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ")
-                + note));
+        feedNotes.forEach(
+                (note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ") + note));
         return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps, refusals);
     }
 
@@ -203,11 +208,15 @@ public final class ToolpathPlanner {
     }
 
     /** What hole depths need beyond the workingstep: the workpiece's block, the breakthrough asked for. */
-    record HoleContext(StepNcProgram program, PlanningChoices choices) {
-    }
+    record HoleContext(StepNcProgram program, PlanningChoices choices) {}
 
-    static Optional<ToolpathSection> section(MachiningWorkingstep ws, Map<String, Integer> toolNumbers,
-            List<String> problems, Tolerance tol, CuttingData cutting, HoleContext holes) {
+    static Optional<ToolpathSection> section(
+            MachiningWorkingstep ws,
+            Map<String, Integer> toolNumbers,
+            List<String> problems,
+            Tolerance tol,
+            CuttingData cutting,
+            HoleContext holes) {
         Feature f = ws.feature();
         Operation op = ws.operation();
         String label = ws.id().isEmpty() ? "#" + ws.instanceId() : ws.id();
@@ -221,22 +230,27 @@ public final class ToolpathPlanner {
         Tooling tooling = new Tooling(number, dia, cutting.spindleRpm(), feed, drillingTool ? feed : feed / 2);
         double retract = op.retractPlaneMm().orElse(DEFAULT_RETRACT_MM);
         double depth = f.depthMm().orElse(0);
-        if (f.type() == Feature.FeatureType.ROUND_HOLE && isThrough(f) && f.depthMm().isEmpty()) {
+        if (f.type() == Feature.FeatureType.ROUND_HOLE
+                && isThrough(f)
+                && f.depthMm().isEmpty()) {
             depth = stockDepth(holes.program(), f, tol);
             problems.add("workingstep '" + label + "': the through hole has no depth: " + mm(depth)
                     + " mm to the bottom of the workpiece's block");
         }
         if (!(dia >= MIN_TOOL_MM && dia <= MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("tool diameter " + dia + " mm is outside " + MIN_TOOL_MM + " to "
-                    + MAX_LENGTH_MM + " mm");
+            throw new IllegalArgumentException(
+                    "tool diameter " + dia + " mm is outside " + MIN_TOOL_MM + " to " + MAX_LENGTH_MM + " mm");
         }
         if (!(Math.abs(depth) <= MAX_LENGTH_MM && Math.abs(retract) <= MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("depth " + depth + " mm or retract plane " + retract + " mm is beyond "
-                    + MAX_LENGTH_MM + " mm");
+            throw new IllegalArgumentException(
+                    "depth " + depth + " mm or retract plane " + retract + " mm is beyond " + MAX_LENGTH_MM + " mm");
         }
         double axial = op.axialCuttingDepthMm().orElse(0);
         if (axial > 0) {
-            bounded("depth", Math.max(Math.abs(depth), Math.abs(op.cuttingDepthMm().orElse(0))), "axial cutting depth",
+            bounded(
+                    "depth",
+                    Math.max(Math.abs(depth), Math.abs(op.cuttingDepthMm().orElse(0))),
+                    "axial cutting depth",
                     axial);
         }
         Heights h = new Heights(retract, retract, 0, -depth);
@@ -246,8 +260,8 @@ public final class ToolpathPlanner {
         }
         if (!op.toolpaths().isEmpty()) {
             // the file gives the path itself (AP238 CC1): followed as written, in the feature frame
-            return Optional.of(viaSecurityPlane(Placing.place(ExplicitPaths.section(label, op, tooling, problems),
-                    place), ws.securityPlane()));
+            return Optional.of(viaSecurityPlane(
+                    Placing.place(ExplicitPaths.section(label, op, tooling, problems), place), ws.securityPlane()));
         }
         ToolpathSection local;
         switch (f.type()) {
@@ -268,34 +282,74 @@ public final class ToolpathPlanner {
                 place = place.times(pp);
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
                 if (!f.bosses().isEmpty()) {
-                    local = BossPockets.section(label, p, f, f.placement().times(pp), op, h, tooling, stepover(op, tooling),
-                            axial, climb(op), tol,
-                            holes.choices().entry(), problems);
+                    local = BossPockets.section(
+                            label,
+                            p,
+                            f,
+                            f.placement().times(pp),
+                            op,
+                            h,
+                            tooling,
+                            stepover(op, tooling),
+                            axial,
+                            climb(op),
+                            tol,
+                            holes.choices().entry(),
+                            problems);
                 } else {
-                    local = pocket(label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                    local = pocket(
+                            label, p, op, h, tooling, pp, tol, holes.choices().entry());
                 }
             }
             case ROUND_HOLE -> {
                 local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
                 List<String> unmoved = notInTheMoves(op, tooling.spindleRpm());
                 if (!unmoved.isEmpty()) {
-                    problems.add("workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
+                    problems.add(
+                            "workingstep '" + label + "': read but not in the moves: " + String.join(", ", unmoved));
                 }
             }
             case SLOT -> {
                 Transform3 pp = slotFrame(f);
                 place = place.times(pp);
-                local = SlotMilling.section(label, f, tool, tooling, h, slotLength(f), axial, tol, problems,
-                        (outline, layer) -> pocket(label, outline, op, layer, tooling, pp, tol,
+                local = SlotMilling.section(
+                        label,
+                        f,
+                        tool,
+                        tooling,
+                        h,
+                        slotLength(f),
+                        axial,
+                        tol,
+                        problems,
+                        (outline, layer) -> pocket(
+                                label,
+                                outline,
+                                op,
+                                layer,
+                                tooling,
+                                pp,
+                                tol,
                                 holes.choices().entry()));
             }
             case STEP -> {
                 noBosses(f);
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
-                local = OpenSideMilling.step(label, st.lengthMm(), st.widthMm(), st.openStart(), st.openEnd(), h,
-                        tooling, stepover(op, tooling), axial, isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);
+                local = OpenSideMilling.step(
+                        label,
+                        st.lengthMm(),
+                        st.widthMm(),
+                        st.openStart(),
+                        st.openEnd(),
+                        h,
+                        tooling,
+                        stepover(op, tooling),
+                        axial,
+                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        climb(op),
+                        tol);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -313,8 +367,8 @@ public final class ToolpathPlanner {
                 try {
                     part = profile(sp, 0, tol);
                 } catch (UnsupportedOperationException e) {
-                    throw new UnsupportedOperationException("outside profiles bounded by " + sp.entity()
-                            + " are not supported yet");
+                    throw new UnsupportedOperationException(
+                            "outside profiles bounded by " + sp.entity() + " are not supported yet");
                 }
                 Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "outside profile");
                 double reach = 0;
@@ -322,19 +376,30 @@ public final class ToolpathPlanner {
                     reach = Math.max(reach, part.contour(tol).distanceTo(c.start()));
                 }
                 if (reach > tooling.diameterMm() + tol.linear()) {
-                    // one loop a layer, as a contour: what lies farther out stays (or falls away when the profile goes through)
+                    // one loop a layer, as a contour: what lies farther out stays
+                    // (or falls away when the profile goes through)
                     problems.add("workingstep '" + label + "': the stock reaches " + mm(reach) + " mm beyond the"
                             + " outside profile; the contour cuts the " + mm(tooling.diameterMm()) + " mm next to it");
                 }
-                local = OpenSideMilling.outsideProfile(label, part.contour(tol), stock, h, tooling, axial,
+                local = OpenSideMilling.outsideProfile(
+                        label,
+                        part.contour(tol),
+                        stock,
+                        h,
+                        tooling,
+                        axial,
                         isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol);
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        climb(op),
+                        tol);
             }
             case OPEN_POCKET -> {
                 noBosses(f);
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the open pocket has no open boundary"));
-                if (!(sp instanceof org.fresa.stepnc.Profile.General g) || g.closed() || g.segments().isEmpty()) {
+                if (!(sp instanceof org.fresa.stepnc.Profile.General g)
+                        || g.closed()
+                        || g.segments().isEmpty()) {
                     throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
                             + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side");
                 }
@@ -359,18 +424,30 @@ public final class ToolpathPlanner {
                     Vec2 a = new Vec2(seg.start().x(), seg.start().y());
                     Vec2 b = new Vec2(seg.end().x(), seg.end().y());
                     if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
-                        walls.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+                        walls.add(
+                                new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
                     } else if (a.distance(b) > tol.linear()) {
                         walls.add(new Segment2(a, b));
                     }
                 }
                 Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "open pocket");
-                local = OpenSideMilling.openPocket(label, walls, stock, h, tooling, stepover(op, tooling), axial,
+                local = OpenSideMilling.openPocket(
+                        label,
+                        walls,
+                        stock,
+                        h,
+                        tooling,
+                        stepover(op, tooling),
+                        axial,
                         isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0, climb(op), tol, problems);
+                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        climb(op),
+                        tol,
+                        problems);
             }
-            default -> throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity()
-                    : f.type()) + " features are not supported yet");
+            default ->
+                throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
+                        + " features are not supported yet");
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
@@ -379,7 +456,8 @@ public final class ToolpathPlanner {
     /** Refuses a feature with bosses: cutting it as if it had none would mill them away. */
     static void noBosses(Feature f) {
         if (!f.bosses().isEmpty()) {
-            throw new UnsupportedOperationException(f.type() + " features with bosses (its_boss) are not supported yet");
+            throw new UnsupportedOperationException(
+                    f.type() + " features with bosses (its_boss) are not supported yet");
         }
     }
 
@@ -388,16 +466,17 @@ public final class ToolpathPlanner {
      * clockwise, the material being cut on the tool's right.
      */
     static boolean climb(Operation op) {
-        return !op.strategy().flatMap(org.fresa.stepnc.Strategy::cutmode)
-                .map(m -> m.equalsIgnoreCase("CONVENTIONAL")).orElse(false);
+        return !op.strategy()
+                .flatMap(org.fresa.stepnc.Strategy::cutmode)
+                .map(m -> m.equalsIgnoreCase("CONVENTIONAL"))
+                .orElse(false);
     }
 
     /**
      * A step in its own frame (x along the open boundary from its start, z the feature axis, the
      * material kept at +y) and how far the step reaches out to the stock's edge.
      */
-    record StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {
-    }
+    record StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {}
 
     /**
      * The step's frame and extent: ISO 14649-10 keeps the material on the left of the open
@@ -406,18 +485,19 @@ public final class ToolpathPlanner {
      * block's end is open.
      */
     static StepShape stepShape(Feature f, StepNcProgram program, Tool tool, Tolerance tol) {
-        org.fresa.stepnc.TravelPath path = f.courseOfTravel()
-                .orElseThrow(() -> new IllegalArgumentException("the step has no open boundary"));
+        org.fresa.stepnc.TravelPath path =
+                f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the step has no open boundary"));
         if (!path.entity().equals("LINEAR_PATH")) {
             throw new UnsupportedOperationException("steps along a " + path.entity() + " are not supported yet");
         }
-        double length = path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the step's open boundary"
-                + " has no length"));
+        double length = path.distanceMm()
+                .orElseThrow(() -> new IllegalArgumentException("the step's open boundary" + " has no length"));
         if (!(length > 0 && length <= MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("step length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+            throw new IllegalArgumentException(
+                    "step length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
         }
-        org.fresa.stepnc.Profile wall = f.profile()
-                .orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
+        org.fresa.stepnc.Profile wall =
+                f.profile().orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
         if (wall instanceof org.fresa.stepnc.Profile.Vee v) {
             // GRIMA's writers put pi / 2 there in radians, also in files not otherwise known as
             // theirs: a wall 1.57 deg from its floor is no step
@@ -462,15 +542,15 @@ public final class ToolpathPlanner {
             hi = Math.max(hi, p.dot(along));
         }
         if (!(width > tol.linear())) {
-            throw new IllegalArgumentException("the workpiece's block lies left of the step's open boundary: nothing"
-                    + " to remove on its right");
+            throw new IllegalArgumentException(
+                    "the workpiece's block lies left of the step's open boundary: nothing" + " to remove on its right");
         }
         if (width - second > tol.linear()) {
-            throw new UnsupportedOperationException("the step's open boundary is not parallel to a side of the"
-                    + " workpiece's block");
+            throw new UnsupportedOperationException(
+                    "the step's open boundary is not parallel to a side of the" + " workpiece's block");
         }
-        Transform3 frame = Transform3.ofFrame(s3.minus(new Vec3(0, 0, s3.z())), Vec3.UNIT_Z,
-                new Vec3(along.x(), along.y(), 0));
+        Transform3 frame =
+                Transform3.ofFrame(s3.minus(new Vec3(0, 0, s3.z())), Vec3.UNIT_Z, new Vec3(along.x(), along.y(), 0));
         return new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear());
     }
 
@@ -480,13 +560,15 @@ public final class ToolpathPlanner {
      * stand along the frame's z axis.
      */
     static Contour stockOutline(StepNcProgram program, Feature f, Transform3 frame, String what) {
-        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f).flatMap(org.fresa.stepnc.Workpiece::block)
-                .orElseThrow(() -> new IllegalArgumentException("the " + what + " reaches to the stock's edge and the"
-                        + " file gives no workpiece BLOCK"));
+        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f)
+                .flatMap(org.fresa.stepnc.Workpiece::block)
+                .orElseThrow(() -> new IllegalArgumentException(
+                        "the " + what + " reaches to the stock's edge and the" + " file gives no workpiece BLOCK"));
         Transform3 toFrame = frame.inverse().times(b.placement());
         Vec3 z = toFrame.applyToDirection(Vec3.UNIT_Z);
         if (Math.abs(Math.abs(z.z()) - 1) > 1e-9) {
-            throw new UnsupportedOperationException("the " + what + "'s axis is not along the workpiece block's z axis");
+            throw new UnsupportedOperationException(
+                    "the " + what + "'s axis is not along the workpiece block's z axis");
         }
         Vec2[] corners = new Vec2[4];
         double[][] xy = {{0, 0}, {b.xMm(), 0}, {b.xMm(), b.yMm()}, {0, b.yMm()}};
@@ -502,14 +584,16 @@ public final class ToolpathPlanner {
     }
 
     static double slotLength(Feature f) {
-        org.fresa.stepnc.TravelPath path = f.courseOfTravel()
-                .orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
+        org.fresa.stepnc.TravelPath path =
+                f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
         if (!path.entity().equals("LINEAR_PATH")) {
             throw new UnsupportedOperationException("slots along a " + path.entity() + " are not supported yet");
         }
-        double length = path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
+        double length =
+                path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
         if (!(length > 0 && length <= MAX_LENGTH_MM)) {
-            throw new IllegalArgumentException("slot length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+            throw new IllegalArgumentException(
+                    "slot length " + length + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
         }
         return length;
     }
@@ -528,11 +612,13 @@ public final class ToolpathPlanner {
         return Transform3.ofFrame(new Vec3(middle.x(), middle.y(), 0), Vec3.UNIT_Z, along);
     }
 
-    private static ToolpathSection face(String label, Feature f, Operation op, Heights h, Tooling t,
-            List<String> problems) {
+    private static ToolpathSection face(
+            String label, Feature f, Operation op, Heights h, Tooling t, List<String> problems) {
         double d = stepover(op, t);
-        Vec2 course = f.courseOfTravel().flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
-                .map(v -> new Vec2(v.x(), v.y())).orElse(Vec2.UNIT_X);
+        Vec2 course = f.courseOfTravel()
+                .flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
+                .map(v -> new Vec2(v.x(), v.y()))
+                .orElse(Vec2.UNIT_X);
         Box2 box = faceBoundary(f);
         bounded("the face", Math.max(box.width(), box.height()), "the stepover", d);
         boolean bidirectional = true;
@@ -545,10 +631,12 @@ public final class ToolpathPlanner {
         double overcut = op.overcutLengthMm().orElse(0.25 * t.diameterMm());
         double bottom = h.bottomZ() + (isRough(op) ? op.allowanceBottomMm().orElse(0) : 0);
         Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), bottom);
-        boolean left = !op.strategy().flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
-                .map(x -> x.equalsIgnoreCase("RIGHT")).orElse(false);
-        return FaceMilling.section(label, box, course, hh, t, d, op.axialCuttingDepthMm().orElse(0), overcut,
-                bidirectional, left);
+        boolean left = !op.strategy()
+                .flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
+                .map(x -> x.equalsIgnoreCase("RIGHT"))
+                .orElse(false);
+        return FaceMilling.section(
+                label, box, course, hh, t, d, op.axialCuttingDepthMm().orElse(0), overcut, bidirectional, left);
     }
 
     /**
@@ -556,25 +644,34 @@ public final class ToolpathPlanner {
      * linear profile swept along the course of travel.
      */
     public static Box2 faceBoundary(Feature f) {
-        Vec2 course = f.courseOfTravel().flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
-                .map(v -> new Vec2(v.x(), v.y())).orElse(Vec2.UNIT_X);
-        double along = f.courseOfTravel().flatMap(c -> c.distanceMm().isPresent()
-                ? Optional.of(c.distanceMm().getAsDouble()) : Optional.empty()).orElse(0.0);
+        Vec2 course = f.courseOfTravel()
+                .flatMap(c -> c.direction().map(dir -> c.placement().applyToDirection(dir)))
+                .map(v -> new Vec2(v.x(), v.y()))
+                .orElse(Vec2.UNIT_X);
+        double along = f.courseOfTravel()
+                .flatMap(c ->
+                        c.distanceMm().isPresent() ? Optional.of(c.distanceMm().getAsDouble()) : Optional.empty())
+                .orElse(0.0);
         Box2 box;
-        org.fresa.stepnc.Profile sp = f.profile().orElseThrow(
-                () -> new IllegalArgumentException("the planar face has no removal boundary"));
+        org.fresa.stepnc.Profile sp =
+                f.profile().orElseThrow(() -> new IllegalArgumentException("the planar face has no removal boundary"));
         Vec3 o = sp.placement().applyToPoint(Vec3.ZERO);
         if (sp instanceof org.fresa.stepnc.Profile.Linear lin) {
             Vec3 x = sp.placement().applyToDirection(Vec3.UNIT_X).times(lin.lengthMm());
             Vec2 p0 = new Vec2(o.x(), o.y());
             Vec2 a = new Vec2(x.x(), x.y());
             Vec2 b = course.normalized().times(along);
-            box = Box2.of(p0, p0.plus(a)).including(p0.plus(b)).including(p0.plus(a).plus(b));
+            box = Box2.of(p0, p0.plus(a))
+                    .including(p0.plus(b))
+                    .including(p0.plus(a).plus(b));
         } else if (sp instanceof org.fresa.stepnc.Profile.Rectangular r) {
             Vec2 c = new Vec2(o.x(), o.y());
-            box = Box2.of(c.minus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)), c.plus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)));
+            box = Box2.of(
+                    c.minus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)),
+                    c.plus(new Vec2(r.lengthMm() / 2, r.widthMm() / 2)));
         } else {
-            throw new UnsupportedOperationException("planar faces bounded by " + sp.entity() + " are not supported yet");
+            throw new UnsupportedOperationException(
+                    "planar faces bounded by " + sp.entity() + " are not supported yet");
         }
         return box;
     }
@@ -590,8 +687,10 @@ public final class ToolpathPlanner {
         if (op.radialCuttingDepthMm().isPresent() && op.radialCuttingDepthMm().getAsDouble() > 0) {
             return op.radialCuttingDepthMm().getAsDouble();
         }
-        var overlap = op.strategy().flatMap(s -> s.overlapFraction().isPresent()
-                ? Optional.of(s.overlapFraction().getAsDouble()) : Optional.empty());
+        var overlap = op.strategy()
+                .flatMap(s -> s.overlapFraction().isPresent()
+                        ? Optional.of(s.overlapFraction().getAsDouble())
+                        : Optional.empty());
         if (overlap.isPresent() && overlap.get() >= 0 && overlap.get() < 1) {
             return Stepover.nominal(t.diameterMm(), overlap.get());
         }
@@ -625,18 +724,36 @@ public final class ToolpathPlanner {
         throw new UnsupportedOperationException("pocket profile " + sp.entity() + " is not supported");
     }
 
-    private static ToolpathSection pocket(String label, Profile p, Operation op, Heights h, Tooling t,
-            Transform3 profilePlacement, Tolerance tol, org.fresa.pocket.EntryRule entry) {
+    private static ToolpathSection pocket(
+            String label,
+            Profile p,
+            Operation op,
+            Heights h,
+            Tooling t,
+            Transform3 profilePlacement,
+            Tolerance tol,
+            org.fresa.pocket.EntryRule entry) {
         Strategy s = strategy(op).orElse(Strategy.CONTOUR_PARALLEL);
-        Vec2 feedDir = op.strategy().flatMap(org.fresa.stepnc.Strategy::feedDirection)
-                .map(v -> profilePlacement.inverse().applyToDirection(v)).map(v -> new Vec2(v.x(), v.y()))
-                .filter(v -> v.norm() > 1e-9).orElse(Vec2.UNIT_X);
+        Vec2 feedDir = op.strategy()
+                .flatMap(org.fresa.stepnc.Strategy::feedDirection)
+                .map(v -> profilePlacement.inverse().applyToDirection(v))
+                .map(v -> new Vec2(v.x(), v.y()))
+                .filter(v -> v.norm() > 1e-9)
+                .orElse(Vec2.UNIT_X);
         boolean rough = isRough(op);
         Box2 extent = p.contour(tol).bounds();
         bounded("the pocket", Math.max(extent.width(), extent.height()), "the stepover", stepover(op, t));
-        MillingPlan plan = new MillingPlan(s, stepover(op, t), op.axialCuttingDepthMm().orElse(0),
-                rough ? op.allowanceSideMm().orElse(0) : 0, rough ? op.allowanceBottomMm().orElse(0) : 0,
-                feedDir, clockwise(op), approach(op.approach()), false, entry);
+        MillingPlan plan = new MillingPlan(
+                s,
+                stepover(op, t),
+                op.axialCuttingDepthMm().orElse(0),
+                rough ? op.allowanceSideMm().orElse(0) : 0,
+                rough ? op.allowanceBottomMm().orElse(0) : 0,
+                feedDir,
+                clockwise(op),
+                approach(op.approach()),
+                false,
+                entry);
         return PocketMilling.section(label, p, h, t, plan, tol);
     }
 
@@ -664,15 +781,19 @@ public final class ToolpathPlanner {
         if (op.type().isDrillingType()) {
             return tipLength(op, new Tooling(1, toolDiameterMm, 0, 1, 1)) + breakthroughMm;
         }
-        double edge = op.tool().flatMap(x -> x.edgeRadiusMm().isPresent()
-                ? Optional.of(x.edgeRadiusMm().getAsDouble()) : Optional.empty())
-                .filter(r -> r > 0 && r <= toolDiameterMm / 2).orElse(0.0);
+        double edge = op.tool()
+                .flatMap(x -> x.edgeRadiusMm().isPresent()
+                        ? Optional.of(x.edgeRadiusMm().getAsDouble())
+                        : Optional.empty())
+                .filter(r -> r > 0 && r <= toolDiameterMm / 2)
+                .orElse(0.0);
         return edge + breakthroughMm;
     }
 
     static double tipLength(Operation op, Tooling t) {
         Operation.OperationType k = op.type();
-        if (k != Operation.OperationType.DRILLING && k != Operation.OperationType.MULTISTEP_DRILLING
+        if (k != Operation.OperationType.DRILLING
+                && k != Operation.OperationType.MULTISTEP_DRILLING
                 && k != Operation.OperationType.CENTER_DRILLING) {
             return 0;
         }
@@ -699,18 +820,29 @@ public final class ToolpathPlanner {
      * strategy's spindle speed reductions.
      */
     static DrillCycle drillCycle(Operation op, Tooling t, double tipLength) {
-        DrillingStrategy s = op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
+        DrillingStrategy s =
+                op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).orElse(DrillingStrategy.NONE);
         DrillingParameters p = op.drilling().orElse(DrillingParameters.NONE);
         boolean multistep = op.type() == Operation.OperationType.MULTISTEP_DRILLING;
         double step = multistep ? positive(p.depthOfStepMm(), t.diameterMm()) : 0;
         double first = multistep ? positive(p.firstDepthMm(), step) : 0;
         boolean feedOut = op.type() == Operation.OperationType.REAMING || op.type() == Operation.OperationType.BORING;
         double retractFeed = positive(p.feedOnRetract(), feedOut ? 1 : 0);
-        return new DrillCycle(tipLength, positive(s.depthOfStartMm(), 0), positive(s.reducedFeedAtStart(), 1),
-                positive(s.depthOfEndMm(), 0), positive(s.reducedFeedAtEnd(), 1), first, step,
-                positive(p.retractDistanceMm(), 0), retractFeed, positive(p.dwellTimeBottomS(), 0),
-                multistep ? positive(p.dwellTimeStepS(), 0) : 0, p.spindleStopAtBottom().orElse(false),
-                positive(s.reducedCutAtStart(), 1), positive(s.reducedCutAtEnd(), 1));
+        return new DrillCycle(
+                tipLength,
+                positive(s.depthOfStartMm(), 0),
+                positive(s.reducedFeedAtStart(), 1),
+                positive(s.depthOfEndMm(), 0),
+                positive(s.reducedFeedAtEnd(), 1),
+                first,
+                step,
+                positive(p.retractDistanceMm(), 0),
+                retractFeed,
+                positive(p.dwellTimeBottomS(), 0),
+                multistep ? positive(p.dwellTimeStepS(), 0) : 0,
+                p.spindleStopAtBottom().orElse(false),
+                positive(s.reducedCutAtStart(), 1),
+                positive(s.reducedCutAtEnd(), 1));
     }
 
     /**
@@ -729,15 +861,20 @@ public final class ToolpathPlanner {
         List<String> out = new ArrayList<>();
         boolean noSpeed = !(spindleRpm > 0);
         op.strategy().flatMap(org.fresa.stepnc.Strategy::drilling).ifPresent(d -> {
-            if (noSpeed && d.reducedCutAtStart().isPresent() && d.reducedCutAtStart().getAsDouble() != 1) {
+            if (noSpeed
+                    && d.reducedCutAtStart().isPresent()
+                    && d.reducedCutAtStart().getAsDouble() != 1) {
                 out.add("reduced_cut_at_start " + d.reducedCutAtStart().getAsDouble() + " (no spindle speed)");
             }
-            if (noSpeed && d.reducedCutAtEnd().isPresent() && d.reducedCutAtEnd().getAsDouble() != 1) {
+            if (noSpeed
+                    && d.reducedCutAtEnd().isPresent()
+                    && d.reducedCutAtEnd().getAsDouble() != 1) {
                 out.add("reduced_cut_at_end " + d.reducedCutAtEnd().getAsDouble() + " (no spindle speed)");
             }
         });
         op.drilling().ifPresent(p -> {
-            if (p.dwellTimeStepS().isPresent() && p.dwellTimeStepS().getAsDouble() > 0
+            if (p.dwellTimeStepS().isPresent()
+                    && p.dwellTimeStepS().getAsDouble() > 0
                     && op.type() != Operation.OperationType.MULTISTEP_DRILLING) {
                 out.add("dwell_time_step " + p.dwellTimeStepS().getAsDouble() + " s (no steps)");
             }
@@ -765,7 +902,8 @@ public final class ToolpathPlanner {
      *     the axis does not pass through it
      */
     static double stockDepth(StepNcProgram program, Feature f, Tolerance tol) {
-        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f).flatMap(org.fresa.stepnc.Workpiece::block)
+        org.fresa.stepnc.Workpiece.Block b = program.workpieceOf(f)
+                .flatMap(org.fresa.stepnc.Workpiece::block)
                 .orElseThrow(() -> new IllegalArgumentException("the through hole has no depth and the file gives"
                         + " no workpiece BLOCK to find the bottom of the stock"));
         Transform3 toBlock = b.placement().inverse();
@@ -809,8 +947,15 @@ public final class ToolpathPlanner {
      * hole's depth, and through a through hole to its depth plus the breakthrough plus the
      * cutter's edge radius, so that no skin is left at the exit.
      */
-    private static ToolpathSection hole(String label, Feature f, Operation op, Heights h, Tooling t, Tolerance tol,
-            PlanningChoices choices, List<String> problems) {
+    private static ToolpathSection hole(
+            String label,
+            Feature f,
+            Operation op,
+            Heights h,
+            Tooling t,
+            Tolerance tol,
+            PlanningChoices choices,
+            List<String> problems) {
         double breakthroughMm = choices.breakthroughMm();
         double holeD = f.diameterMm().orElseThrow(() -> new IllegalArgumentException("the hole has no diameter"));
         boolean through = isThrough(f);
@@ -832,8 +977,8 @@ public final class ToolpathPlanner {
                 depth = holeDepth + (through ? tip + breakthroughMm : 0);
             }
             if (!(depth > 0 && depth <= MAX_LENGTH_MM)) {
-                throw new IllegalArgumentException("drilling depth " + mm(depth) + " mm is not between 0 and "
-                        + MAX_LENGTH_MM + " mm");
+                throw new IllegalArgumentException(
+                        "drilling depth " + mm(depth) + " mm is not between 0 and " + MAX_LENGTH_MM + " mm");
             }
             Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - depth);
             DrillCycle cycle = drillCycle(op, t, tip);
@@ -848,21 +993,42 @@ public final class ToolpathPlanner {
         Heights hm = h;
         if (through) {
             // a corner radius leaves a fillet of its height at the exit: the cutter goes that much further
-            double edge = op.tool().flatMap(x -> x.edgeRadiusMm().isPresent()
-                    ? Optional.of(x.edgeRadiusMm().getAsDouble()) : Optional.empty())
-                    .filter(r -> r > 0 && r <= t.radiusMm()).orElse(0.0);
+            double edge = op.tool()
+                    .flatMap(x -> x.edgeRadiusMm().isPresent()
+                            ? Optional.of(x.edgeRadiusMm().getAsDouble())
+                            : Optional.empty())
+                    .filter(r -> r > 0 && r <= t.radiusMm())
+                    .orElse(0.0);
             hm = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.bottomZ() - breakthroughMm - edge);
         }
         double ap = op.axialCuttingDepthMm().orElse(0);
         if (HoleMaking.helicalClears(holeD, t.diameterMm())) {
-            return HoleMaking.mill(label, Vec2.ZERO, holeD, hm, t, ap, clockwise(op), choices.entry().angleDeg(), tol);
+            return HoleMaking.mill(
+                    label,
+                    Vec2.ZERO,
+                    holeD,
+                    hm,
+                    t,
+                    ap,
+                    clockwise(op),
+                    choices.entry().angleDeg(),
+                    tol);
         }
         bounded("the hole", holeD, "the stepover", stepover(op, t));
         Profile circle = new Profile.Circle(Vec2.ZERO, holeD / 2);
         double room = holeD / 2 - t.radiusMm();
         Approach a = new Approach.Helix(Math.max(room / 2, 0.1), 5);
-        MillingPlan plan = new MillingPlan(strategy(op).orElse(Strategy.CONTOUR_PARALLEL), stepover(op, t), ap,
-                0, 0, Vec2.UNIT_X, clockwise(op), a, false, choices.entry());
+        MillingPlan plan = new MillingPlan(
+                strategy(op).orElse(Strategy.CONTOUR_PARALLEL),
+                stepover(op, t),
+                ap,
+                0,
+                0,
+                Vec2.UNIT_X,
+                clockwise(op),
+                a,
+                false,
+                choices.entry());
         return PocketMilling.section(label, circle, hm, t, plan, tol);
     }
 
@@ -897,9 +1063,12 @@ public final class ToolpathPlanner {
         ApproachRetract ar = a.get();
         double angle = ar.angle().orElse(0);
         return switch (ar.kind()) {
-            case PLUNGE_RAMP, PLUNGE_ZIGZAG -> angle > 0 && angle <= 90 ? new Approach.Ramp(angle) : new Approach.Plunge();
-            case PLUNGE_HELIX -> ar.radiusMm().isPresent() && ar.radiusMm().getAsDouble() > 0 && angle > 0 && angle < 90
-                    ? new Approach.Helix(ar.radiusMm().getAsDouble(), angle) : new Approach.Plunge();
+            case PLUNGE_RAMP, PLUNGE_ZIGZAG ->
+                angle > 0 && angle <= 90 ? new Approach.Ramp(angle) : new Approach.Plunge();
+            case PLUNGE_HELIX ->
+                ar.radiusMm().isPresent() && ar.radiusMm().getAsDouble() > 0 && angle > 0 && angle < 90
+                        ? new Approach.Helix(ar.radiusMm().getAsDouble(), angle)
+                        : new Approach.Plunge();
             default -> new Approach.Plunge();
         };
     }
@@ -915,13 +1084,16 @@ public final class ToolpathPlanner {
         Vec3 o = plane.get().translationPart();
         Vec3 n = plane.get().zAxis();
         Vec3 first = s.start();
-        Vec3 last = s.moves().isEmpty() ? first : s.moves().get(s.moves().size() - 1).end();
+        Vec3 last = s.moves().isEmpty()
+                ? first
+                : s.moves().get(s.moves().size() - 1).end();
         Vec3 in = first.plus(n.times(o.minus(first).dot(n)));
         Vec3 out = last.plus(n.times(o.minus(last).dot(n)));
         List<Move> moves = new ArrayList<>();
         moves.add(new Move.Rapid(first));
         moves.addAll(s.moves());
         moves.add(new Move.Rapid(out));
-        return new ToolpathSection(s.label(), s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), in, moves);
+        return new ToolpathSection(
+                s.label(), s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), in, moves);
     }
 }

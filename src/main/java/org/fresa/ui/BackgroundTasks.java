@@ -124,8 +124,11 @@ final class BackgroundTasks {
                     } else {
                         bar.message.setText(title + ": failed");
                         java.nio.file.Path log = ErrorLog.record(c);
-                        Dialogs.error(owner, title, "Something went wrong inside Fresa: " + c
-                                + (log != null ? "\n\nDetails are in " + log : ""));
+                        Dialogs.error(
+                                owner,
+                                title,
+                                "Something went wrong inside Fresa: " + c
+                                        + (log != null ? "\n\nDetails are in " + log : ""));
                     }
                 }
             }

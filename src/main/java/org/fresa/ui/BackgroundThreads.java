@@ -16,8 +16,7 @@ import java.util.concurrent.atomic.AtomicInteger;
  */
 final class BackgroundThreads {
 
-    private BackgroundThreads() {
-    }
+    private BackgroundThreads() {}
 
     /** A factory of low-priority daemon threads named prefix-1, prefix-2, ... */
     static ThreadFactory lowPriority(String prefix) {

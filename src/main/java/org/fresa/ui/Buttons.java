@@ -4,8 +4,7 @@ import javax.swing.JButton;
 
 /** The tabs' buttons: a name for the GUI tests, a mnemonic for the keyboard, one action. */
 final class Buttons {
-    private Buttons() {
-    }
+    private Buttons() {}
 
     /**
      * @param name the component name, or null for none

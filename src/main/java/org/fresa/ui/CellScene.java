@@ -31,12 +31,26 @@ import org.fresa.model.ToolpathSection;
  * @param selected the replayed point, if any
  * @param tool the spindle and cutter at the flange, when known
  */
-record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> workpiece, List<PathSegment> path,
-        List<List<Vec3>> links, List<Vec3> joints, List<Frame> frames, Optional<PathPoint> selected,
+record CellScene(
+        List<List<Vec3>> floor,
+        List<Vec3> table,
+        List<List<Vec3>> workpiece,
+        List<PathSegment> path,
+        List<List<Vec3>> links,
+        List<Vec3> joints,
+        List<Frame> frames,
+        Optional<PathPoint> selected,
         Optional<ToolShape> tool) {
 
-    CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> workpiece, List<PathSegment> path,
-            List<List<Vec3>> links, List<Vec3> joints, List<Frame> frames, Optional<PathPoint> selected) {
+    CellScene(
+            List<List<Vec3>> floor,
+            List<Vec3> table,
+            List<List<Vec3>> workpiece,
+            List<PathSegment> path,
+            List<List<Vec3>> links,
+            List<Vec3> joints,
+            List<Frame> frames,
+            Optional<PathPoint> selected) {
         this(floor, table, workpiece, path, links, joints, frames, selected, Optional.empty());
     }
 
@@ -80,16 +94,13 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
     }
 
     /** A piece of the toolpath, coloured by the status of the point it ends at. */
-    record PathSegment(Vec3 from, Vec3 to, TrajectoryPoint.Status status) {
-    }
+    record PathSegment(Vec3 from, Vec3 to, TrajectoryPoint.Status status) {}
 
     /** A trajectory point. */
-    record PathPoint(Vec3 at, TrajectoryPoint.Status status) {
-    }
+    record PathPoint(Vec3 at, TrajectoryPoint.Status status) {}
 
     /** A frame drawn as x (red), y (green), z (blue) axes of the given length. */
-    record Frame(String name, Transform3 pose, double axisMm) {
-    }
+    record Frame(String name, Transform3 pose, double axisMm) {}
 
     /** Every point drawn, to fit the camera. */
     List<Vec3> points() {
@@ -118,8 +129,14 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
      * @param points the trajectory (targets in the robot base frame)
      * @param selected the replayed point's index, or -1
      */
-    static CellScene of(Robot robot, double[] q, Transform3 robotTable, Transform3 robotPiece,
-            Optional<Toolpath> toolpath, List<TrajectoryPoint> points, int selected) {
+    static CellScene of(
+            Robot robot,
+            double[] q,
+            Transform3 robotTable,
+            Transform3 robotPiece,
+            Optional<Toolpath> toolpath,
+            List<TrajectoryPoint> points,
+            int selected) {
         List<List<Vec3>> links = new ArrayList<>();
         List<Vec3> joints = new ArrayList<>();
         Optional<Transform3> tool = robotLinks(robot, q, links, joints);
@@ -127,11 +144,14 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
         List<List<Vec3>> box = toolpath.map(t -> workpieceEdges(t, robotPiece)).orElse(List.of());
         List<PathSegment> path = new ArrayList<>();
         for (int i = 1; i < points.size(); i++) {
-            path.add(new PathSegment(points.get(i - 1).target().translationPart(),
-                    points.get(i).target().translationPart(), points.get(i).status()));
+            path.add(new PathSegment(
+                    points.get(i - 1).target().translationPart(),
+                    points.get(i).target().translationPart(),
+                    points.get(i).status()));
         }
         Optional<PathPoint> sel = selected >= 0 && selected < points.size()
-                ? Optional.of(new PathPoint(points.get(selected).target().translationPart(),
+                ? Optional.of(new PathPoint(
+                        points.get(selected).target().translationPart(),
                         points.get(selected).status()))
                 : Optional.empty();
 
@@ -186,7 +206,9 @@ record CellScene(List<List<Vec3>> floor, List<Vec3> table, List<List<Vec3>> work
                     // A_i = Rz(theta) Tz(d) Tx(a) Rx(alpha): first along z_(i-1) by d, then along x_i by a
                     org.fresa.kin.DhJoint j = s.chain().joints().get(i - 1);
                     double d = j.type() == JointType.PRISMATIC ? q[i - 1] + j.dMm() : j.dMm();
-                    addPoint(arm, previous.translationPart().plus(previous.zAxis().times(d)));
+                    addPoint(
+                            arm,
+                            previous.translationPart().plus(previous.zAxis().times(d)));
                     Transform3 f = s.chain().frame(i, q);
                     addPoint(arm, f.translationPart());
                     if (i < s.chain().dof()) {

@@ -139,7 +139,8 @@ final class CellView extends JComponent {
         try {
             double scale = Math.max(1, g.getTransform().getScaleX());
             Font font = getFont() != null ? getFont() : new Font(Font.SANS_SERIF, Font.PLAIN, 12);
-            java.util.List<Object> key = java.util.List.of(camera.projection(w, h), vm.robot().name(), font, scale);
+            java.util.List<Object> key =
+                    java.util.List.of(camera.projection(w, h), vm.robot().name(), font, scale);
             if (picture == null || pictureScene != sc && !sc.equals(pictureScene) || !key.equals(pictureKey)) {
                 int iw = Math.max(1, (int) Math.ceil(w * scale));
                 int ih = Math.max(1, (int) Math.ceil(h * scale));
@@ -226,9 +227,13 @@ final class CellView extends JComponent {
         });
         g.setFont(g.getFont().deriveFont(Font.PLAIN, 11f));
         g.setColor(new Color(90, 90, 90));
-        String hint = String.format(java.util.Locale.ROOT,
+        String hint = String.format(
+                java.util.Locale.ROOT,
                 "%s; view az %.0f deg, el %.0f deg, zoom %.2f. Drag or arrows: turn; wheel or +/-: zoom; Home: reset",
-                vm.robot().name(), camera.azimuthDeg(), camera.elevationDeg(), camera.zoom());
+                vm.robot().name(),
+                camera.azimuthDeg(),
+                camera.elevationDeg(),
+                camera.zoom());
         g.drawString(hint, 8, h - 8);
         int y = 16;
         g.setColor(OK);
@@ -241,8 +246,7 @@ final class CellView extends JComponent {
 
     /** Links far from the camera first, so that nearer ones are drawn over them. */
     private void paintRobot(Graphics2D g, CellScene sc, int w, int h) {
-        record Piece(Vec3 a, Vec3 b, double depth) {
-        }
+        record Piece(Vec3 a, Vec3 b, double depth) {}
         List<Piece> pieces = new ArrayList<>();
         for (List<Vec3> line : sc.links()) {
             for (int i = 1; i < line.size(); i++) {
@@ -282,13 +286,13 @@ final class CellView extends JComponent {
     private void paintTool(Graphics2D g, CellScene.ToolShape t, int w, int h) {
         double pxPerMm = camera.scale(w, h);
         if (t.flange().distance(t.nose()) > 1e-6) {
-            g.setStroke(new BasicStroke((float) Math.max(8, 60 * pxPerMm), BasicStroke.CAP_BUTT,
-                    BasicStroke.JOIN_ROUND));
+            g.setStroke(
+                    new BasicStroke((float) Math.max(8, 60 * pxPerMm), BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND));
             g.setColor(SPINDLE);
             draw(g, t.flange(), t.nose(), w, h);
         }
-        g.setStroke(new BasicStroke((float) Math.max(3, t.diameterMm() * pxPerMm), BasicStroke.CAP_BUTT,
-                BasicStroke.JOIN_ROUND));
+        g.setStroke(new BasicStroke(
+                (float) Math.max(3, t.diameterMm() * pxPerMm), BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND));
         g.setColor(CUTTER);
         draw(g, t.nose(), t.tip(), w, h);
     }
@@ -308,8 +312,8 @@ final class CellView extends JComponent {
         double[] s = camera.project(o, w, h);
         // frames often share a place (table and workpiece): their names are stacked, not overprinted
         java.awt.FontMetrics fm = g.getFontMetrics();
-        java.awt.Rectangle r = new java.awt.Rectangle((int) s[0] + 6, (int) s[1] + 4, fm.stringWidth(f.name()),
-                fm.getHeight());
+        java.awt.Rectangle r =
+                new java.awt.Rectangle((int) s[0] + 6, (int) s[1] + 4, fm.stringWidth(f.name()), fm.getHeight());
         while (labels.stream().anyMatch(r::intersects)) {
             r.translate(0, fm.getHeight());
         }

@@ -68,23 +68,42 @@ final class ContourEditorPanel {
             }
         });
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
-        buttons.add(button("pocket-element-add", "Add", "Add an element after the selected one (Insert)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, 0), () -> {
+        buttons.add(button(
+                "pocket-element-add",
+                "Add",
+                "Add an element after the selected one (Insert)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, 0),
+                () -> {
                     editor.add();
                     return true;
                 }));
-        buttons.add(button("pocket-element-insert", "Insert before",
+        buttons.add(button(
+                "pocket-element-insert",
+                "Insert before",
                 "Insert an element before the selected one (Shift+Insert)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, InputEvent.SHIFT_DOWN_MASK), () -> {
+                KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, InputEvent.SHIFT_DOWN_MASK),
+                () -> {
                     editor.insert();
                     return true;
                 }));
-        buttons.add(button("pocket-element-delete", "Delete", "Delete the selected element (Delete)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_DELETE, 0), editor::delete));
-        buttons.add(button("pocket-element-up", "Up", "Move the selected element one place earlier (Alt+Up)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_UP, InputEvent.ALT_DOWN_MASK), editor::moveUp));
-        buttons.add(button("pocket-element-down", "Down", "Move the selected element one place later (Alt+Down)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_DOWN, InputEvent.ALT_DOWN_MASK), editor::moveDown));
+        buttons.add(button(
+                "pocket-element-delete",
+                "Delete",
+                "Delete the selected element (Delete)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_DELETE, 0),
+                editor::delete));
+        buttons.add(button(
+                "pocket-element-up",
+                "Up",
+                "Move the selected element one place earlier (Alt+Up)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_UP, InputEvent.ALT_DOWN_MASK),
+                editor::moveUp));
+        buttons.add(button(
+                "pocket-element-down",
+                "Down",
+                "Move the selected element one place later (Alt+Down)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_DOWN, InputEvent.ALT_DOWN_MASK),
+                editor::moveDown));
         JButton saveDad = new JButton("Save contour as .dad...");
         saveDad.setName("pocket-save-contour");
         saveDad.setToolTipText("Write the typed contour in the 1988 program's .dad records");
@@ -197,11 +216,11 @@ final class ContourEditorPanel {
         private static final long serialVersionUID = 1L;
 
         @Override
-        public Component getTableCellRendererComponent(JTable t, Object value, boolean isSelected, boolean hasFocus,
-                int row, int column) {
+        public Component getTableCellRendererComponent(
+                JTable t, Object value, boolean isSelected, boolean hasFocus, int row, int column) {
             Component c = super.getTableCellRendererComponent(t, value, isSelected, hasFocus, row, column);
-            Optional<String> problem = column == 0 ? Optional.empty()
-                    : editor.problem(row, Column.values()[column - 1]);
+            Optional<String> problem =
+                    column == 0 ? Optional.empty() : editor.problem(row, Column.values()[column - 1]);
             boolean refused = column == 0 && editor.refusedRow().orElse(-1) == row;
             if (problem.isPresent() || refused) {
                 c.setBackground(BAD);

@@ -21,15 +21,15 @@ import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import org.fresa.chart.PlotScene;
-import org.fresa.job.CuttingService;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CutSense;
 import org.fresa.cutting.KerfCompensation;
 import org.fresa.cutting.LeadShape;
+import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.SettingRanges.Cutting;
-import org.fresa.post.CuttingPost;
 import org.fresa.model.CamInputException;
+import org.fresa.post.CuttingPost;
 
 /**
  * Sheet cutting: open a DXF, set kerf, process, leads, compensation and directions, cut, see the
@@ -51,30 +51,34 @@ final class CuttingTab implements ModuleTab {
     private final JTextArea totals = new JTextArea("No drawing cut yet.");
     private final JLabel file = new JLabel("(none)");
     private final JTextField kerf = new JTextField(6);
-    private final JComboBox<CutProcess> process = new JComboBox<>(Cutting.PROCESS.values().toArray(new CutProcess[0]));
+    private final JComboBox<CutProcess> process =
+            new JComboBox<>(Cutting.PROCESS.values().toArray(new CutProcess[0]));
     private final JTextField leadIn = new JTextField(6);
     private final JTextField leadOut = new JTextField(6);
-    private final JComboBox<LeadShape> lead = new JComboBox<>(Cutting.LEAD.values().toArray(new LeadShape[0]));
+    private final JComboBox<LeadShape> lead =
+            new JComboBox<>(Cutting.LEAD.values().toArray(new LeadShape[0]));
     private final JTextField overcut = new JTextField(6);
-    private final JComboBox<KerfCompensation> compensation = new JComboBox<>(
-            Cutting.COMPENSATION.values().toArray(new KerfCompensation[0]));
-    private final JComboBox<CutSense> outerDir = new JComboBox<>(Cutting.OUTER_DIRECTION.values().toArray(new CutSense[0]));
-    private final JComboBox<CutSense> holeDir = new JComboBox<>(Cutting.HOLE_DIRECTION.values().toArray(new CutSense[0]));
+    private final JComboBox<KerfCompensation> compensation =
+            new JComboBox<>(Cutting.COMPENSATION.values().toArray(new KerfCompensation[0]));
+    private final JComboBox<CutSense> outerDir =
+            new JComboBox<>(Cutting.OUTER_DIRECTION.values().toArray(new CutSense[0]));
+    private final JComboBox<CutSense> holeDir =
+            new JComboBox<>(Cutting.HOLE_DIRECTION.values().toArray(new CutSense[0]));
     private final JCheckBox avoid = new JCheckBox("Rapids around cut parts");
-    private final JComboBox<CuttingPost> post = new JComboBox<>(
-            Cutting.POST.values().toArray(new CuttingPost[0]));
+    private final JComboBox<CuttingPost> post =
+            new JComboBox<>(Cutting.POST.values().toArray(new CuttingPost[0]));
     private final JCheckBox paper = new JCheckBox("Paper mode (2010)");
     private final JButton cut = new JButton("Cut");
     // the cut list: the order and starts of the last cut, which the planner edits
-    private final javax.swing.table.DefaultTableModel orderRows = new javax.swing.table.DefaultTableModel(
-            new Object[] {"#", "Contour", "Start (mm)"}, 0) {
-        private static final long serialVersionUID = 1L;
+    private final javax.swing.table.DefaultTableModel orderRows =
+            new javax.swing.table.DefaultTableModel(new Object[] {"#", "Contour", "Start (mm)"}, 0) {
+                private static final long serialVersionUID = 1L;
 
-        @Override
-        public boolean isCellEditable(int row, int column) {
-            return false;
-        }
-    };
+                @Override
+                public boolean isCellEditable(int row, int column) {
+                    return false;
+                }
+            };
     private final javax.swing.JTable order = new javax.swing.JTable(orderRows);
     private final JTextField start = new JTextField(12);
     private final JButton setStart = new JButton("Set");
@@ -287,18 +291,27 @@ final class CuttingTab implements ModuleTab {
             f.setToolTipText(p != null ? p : Tooltips.meaning("Cutting", f));
         }
         cut.setEnabled(problems.isEmpty());
-        cut.setToolTipText(problems.isEmpty() ? "Plan the cut and show its path, totals and program"
-                : problems.containsKey(CuttingViewModel.DRAWING) && problems.size() == 1
-                        ? "Open a DXF drawing first" : "Correct the marked field first");
-        say(problems.isEmpty() ? " " : problems.values().iterator().next()
-                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        cut.setToolTipText(
+                problems.isEmpty()
+                        ? "Plan the cut and show its path, totals and program"
+                        : problems.containsKey(CuttingViewModel.DRAWING) && problems.size() == 1
+                                ? "Open a DXF drawing first"
+                                : "Correct the marked field first");
+        say(
+                problems.isEmpty()
+                        ? " "
+                        : problems.values().iterator().next()
+                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
         return problems;
     }
 
     /** The line under Cut; a long reason wraps within the form's width and stays whole in the tooltip. */
     private void say(String text) {
-        status.setText(text.length() <= 36 ? text : "<html><div style='width:170px'>"
-                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setText(
+                text.length() <= 36
+                        ? text
+                        : "<html><div style='width:170px'>"
+                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
         status.setToolTipText(text.isBlank() ? null : text);
     }
 
@@ -391,35 +404,42 @@ final class CuttingTab implements ModuleTab {
         CuttingViewModel cutting = vm;
         int generation = ctx.model().generation();
         say("cutting");
-        ctx.tasks().start("Cutting", progress -> {
-            CuttingService.Result r;
-            try {
-                r = CuttingService.compute(s, progress);
-            } catch (CamInputException | java.io.IOException e) {
-                return new Shown(null, null, e.getMessage(), null);
-            }
-            progress.progress(-1, "preparing the plot and the program text");
-            return new Shown(r, CuttingViewModel.sceneOf(r), CuttingViewModel.totalsOf(r),
-                    TextDocuments.of(r.program()));
-        }, shown -> {
-            if (cutting != vm || generation != ctx.model().generation()) {
-                return;
-            }
-            if (shown.result() == null) {
-                ctx.tasks().failed("Cutting");
-                say(shown.totals());
-                return;
-            }
-            say(" ");
-            listed = s.cutOrder();
-            vm.setResult(shown.result());
-            plot.show(shown.scene());
-            program.setDocument(shown.program());
-            program.setCaretPosition(0);
-            totals.setText(shown.totals());
-            warnings.show(vm.warnings());
-            showOrder();
-        });
+        ctx.tasks()
+                .start(
+                        "Cutting",
+                        progress -> {
+                            CuttingService.Result r;
+                            try {
+                                r = CuttingService.compute(s, progress);
+                            } catch (CamInputException | java.io.IOException e) {
+                                return new Shown(null, null, e.getMessage(), null);
+                            }
+                            progress.progress(-1, "preparing the plot and the program text");
+                            return new Shown(
+                                    r,
+                                    CuttingViewModel.sceneOf(r),
+                                    CuttingViewModel.totalsOf(r),
+                                    TextDocuments.of(r.program()));
+                        },
+                        shown -> {
+                            if (cutting != vm || generation != ctx.model().generation()) {
+                                return;
+                            }
+                            if (shown.result() == null) {
+                                ctx.tasks().failed("Cutting");
+                                say(shown.totals());
+                                return;
+                            }
+                            say(" ");
+                            listed = s.cutOrder();
+                            vm.setResult(shown.result());
+                            plot.show(shown.scene());
+                            program.setDocument(shown.program());
+                            program.setCaretPosition(0);
+                            totals.setText(shown.totals());
+                            warnings.show(vm.warnings());
+                            showOrder();
+                        });
     }
 
     // ------------------------------------------------------------------ the cut list
@@ -626,9 +646,11 @@ final class CuttingTab implements ModuleTab {
     }
 
     /** A result with what the tab shows of it, prepared off the event thread; no result: totals says why. */
-    private record Shown(CuttingService.Result result, org.fresa.chart.PlotScene scene, String totals,
-            javax.swing.text.Document program) {
-    }
+    private record Shown(
+            CuttingService.Result result,
+            org.fresa.chart.PlotScene scene,
+            String totals,
+            javax.swing.text.Document program) {}
 
     @Override
     public String title() {

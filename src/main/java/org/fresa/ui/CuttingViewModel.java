@@ -8,6 +8,11 @@ import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.cutting.CutPath;
 import org.fresa.cutting.CutPlan;
+import org.fresa.cutting.CutProcess;
+import org.fresa.cutting.CutSense;
+import org.fresa.cutting.KerfCompensation;
+import org.fresa.cutting.LeadShape;
+import org.fresa.dxf.DrawingUnits;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
@@ -15,16 +20,11 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.CuttingService;
 import org.fresa.job.Job;
-import org.fresa.cutting.CutProcess;
-import org.fresa.cutting.CutSense;
-import org.fresa.cutting.KerfCompensation;
-import org.fresa.cutting.LeadShape;
-import org.fresa.dxf.DrawingUnits;
 import org.fresa.job.JobSettings.CuttingSettings;
-import org.fresa.post.CuttingPost;
 import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
+import org.fresa.post.CuttingPost;
 
 /**
  * The Cutting tab's state without Swing: the drawing and the settings the planner types in, the
@@ -34,6 +34,7 @@ public final class CuttingViewModel {
 
     /** The keys of {@link #problems()}: the names of the tab's fields. */
     public static final String DRAWING = "cutting-drawing";
+
     public static final String KERF = "cutting-kerf";
     public static final String LEAD_IN = "cutting-lead-in";
     public static final String LEAD_OUT = "cutting-lead-out";
@@ -209,10 +210,12 @@ public final class CuttingViewModel {
             out.put(DRAWING, "Open the DXF drawing to cut.");
         }
         FieldProblems.number("Kerf (mm)", kerfMm, SettingRanges.Cutting.KERF).ifPresent(m -> out.put(KERF, m));
-        FieldProblems.number("Lead-in (mm)", leadInMm, SettingRanges.Cutting.LEAD_IN).ifPresent(m -> out.put(LEAD_IN, m));
+        FieldProblems.number("Lead-in (mm)", leadInMm, SettingRanges.Cutting.LEAD_IN)
+                .ifPresent(m -> out.put(LEAD_IN, m));
         FieldProblems.number("Lead-out (mm)", leadOutMm, SettingRanges.Cutting.LEAD_OUT)
                 .ifPresent(m -> out.put(LEAD_OUT, m));
-        FieldProblems.number("Overcut (mm)", overcutMm, SettingRanges.Cutting.OVERCUT).ifPresent(m -> out.put(OVERCUT, m));
+        FieldProblems.number("Overcut (mm)", overcutMm, SettingRanges.Cutting.OVERCUT)
+                .ifPresent(m -> out.put(OVERCUT, m));
         return out;
     }
 
@@ -221,9 +224,23 @@ public final class CuttingViewModel {
         if (!problems().isEmpty()) {
             return Optional.empty();
         }
-        return Optional.of(new CuttingSettings(drawing, Double.parseDouble(kerfMm), process,
-                Double.parseDouble(leadInMm), Double.parseDouble(leadOutMm), lead, toleranceMm, units, paperMode, post,
-                compensation, outerDirection, holeDirection, Double.parseDouble(overcutMm), avoidCutParts, cutOrder));
+        return Optional.of(new CuttingSettings(
+                drawing,
+                Double.parseDouble(kerfMm),
+                process,
+                Double.parseDouble(leadInMm),
+                Double.parseDouble(leadOutMm),
+                lead,
+                toleranceMm,
+                units,
+                paperMode,
+                post,
+                compensation,
+                outerDirection,
+                holeDirection,
+                Double.parseDouble(overcutMm),
+                avoidCutParts,
+                cutOrder));
     }
 
     /**
@@ -271,8 +288,15 @@ public final class CuttingViewModel {
             return Optional.empty();
         }
         org.fresa.geom.Box2 b = best.contour().bounds();
-        return Optional.of(String.format(java.util.Locale.ROOT, "%s (%.3f x %.3f mm at %.3f, %.3f) %s: not cut", best.label(),
-                b.width(), b.height(), b.minX(), b.minY(), best.reason()));
+        return Optional.of(String.format(
+                java.util.Locale.ROOT,
+                "%s (%.3f x %.3f mm at %.3f, %.3f) %s: not cut",
+                best.label(),
+                b.width(),
+                b.height(),
+                b.minX(),
+                b.minY(),
+                best.reason()));
     }
 
     /** Parts filled, holes, open chains in the warning style, cuts, leads, rapids and order numbers. */
@@ -357,11 +381,21 @@ public final class CuttingViewModel {
     public static String totalsOf(CuttingService.Result result) {
         var m = CuttingService.summary(result);
         List<?> warnings = (List<?>) m.get("warnings");
-        StringBuilder b = new StringBuilder(String.format(Locale.ROOT,
+        StringBuilder b = new StringBuilder(String.format(
+                Locale.ROOT,
                 "%d contours (%d outer, %d holes, %d open), %d pierces, cut %.1f mm, rapid %.1f mm (%d detours),"
-                + " about %.0f s; %d not cut, %d warnings", m.get("contours"), m.get("outer"), m.get("inner"),
-                m.get("open"), m.get("pierces"), (Double) m.get("cut_length_mm"), (Double) m.get("rapid_length_mm"),
-                (Long) m.get("rapid_detours"), (Double) m.get("estimated_time_s"), m.get("not_cut"), warnings.size()));
+                        + " about %.0f s; %d not cut, %d warnings",
+                m.get("contours"),
+                m.get("outer"),
+                m.get("inner"),
+                m.get("open"),
+                m.get("pierces"),
+                (Double) m.get("cut_length_mm"),
+                (Double) m.get("rapid_length_mm"),
+                (Long) m.get("rapid_detours"),
+                (Double) m.get("estimated_time_s"),
+                m.get("not_cut"),
+                warnings.size()));
         if (!warnings.isEmpty()) {
             b.append(" (listed under the plot)");
         }
@@ -418,7 +452,8 @@ public final class CuttingViewModel {
             c.startMm().ifPresent(p -> starts.put(c.contour(), p));
         }
         List<org.fresa.cutting.CutOrderOverride.Cut> l = new ArrayList<>();
-        for (org.fresa.cutting.CutOrderOverride.Cut c : org.fresa.cutting.CutOrderOverride.of(result.plan().cuts()).cuts()) {
+        for (org.fresa.cutting.CutOrderOverride.Cut c :
+                org.fresa.cutting.CutOrderOverride.of(result.plan().cuts()).cuts()) {
             l.add(c.withStart(Optional.ofNullable(starts.get(c.contour()))));
         }
         return Optional.of(new org.fresa.cutting.CutOrderOverride(l));
@@ -482,8 +517,9 @@ public final class CuttingViewModel {
             return Optional.of("Cut the drawing first, then choose where a cut starts.");
         }
         if (!SettingRanges.Cutting.START_X.contains(p.x()) || !SettingRanges.Cutting.START_Y.contains(p.y())) {
-            return Optional.of("Start: " + SettingRanges.Cutting.START_X.problem(
-                    SettingRanges.Cutting.START_X.contains(p.x()) ? p.y() : p.x()));
+            return Optional.of("Start: "
+                    + SettingRanges.Cutting.START_X.problem(
+                            SettingRanges.Cutting.START_X.contains(p.x()) ? p.y() : p.x()));
         }
         cutOrder = now.get().withStart(index, Optional.of(p));
         return Optional.empty();

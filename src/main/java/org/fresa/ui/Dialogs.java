@@ -5,8 +5,7 @@ import javax.swing.JOptionPane;
 
 /** Message dialogs: the message for the planner, never a stack trace. */
 final class Dialogs {
-    private Dialogs() {
-    }
+    private Dialogs() {}
 
     static void error(Component owner, String title, String message) {
         JOptionPane.showMessageDialog(owner, wrap(message), title, JOptionPane.ERROR_MESSAGE);

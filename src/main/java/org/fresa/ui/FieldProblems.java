@@ -9,8 +9,7 @@ import org.fresa.job.SettingRange;
  */
 final class FieldProblems {
 
-    private FieldProblems() {
-    }
+    private FieldProblems() {}
 
     /** The problem with the typed text as a number of the range; empty when it is one. */
     static Optional<String> number(String label, String text, SettingRange range) {
@@ -29,7 +28,12 @@ final class FieldProblems {
 
     /** "Kerf (mm): '6,5' is not a number (decimals take a point: 6.5)." */
     static String notANumber(String label, String text) {
-        return label + ": " + (text.isEmpty() ? "a number is needed." : "'" + text + "' is not a number"
-                + (text.contains(",") ? " (decimals take a point: " + text.replace(',', '.') + ")." : "."));
+        return label + ": "
+                + (text.isEmpty()
+                        ? "a number is needed."
+                        : "'" + text + "' is not a number"
+                                + (text.contains(",")
+                                        ? " (decimals take a point: " + text.replace(',', '.') + ")."
+                                        : "."));
     }
 }

@@ -37,8 +37,7 @@ final class FileChoosers {
 
     private static File folder = Path.of("").toAbsolutePath().toFile();
 
-    private FileChoosers() {
-    }
+    private FileChoosers() {}
 
     /** A chooser of this kind in the remembered folder. Call on the event thread. */
     static JFileChooser chooser(Kind kind) {

@@ -1,15 +1,14 @@
 package org.fresa.ui;
 
+import com.formdev.flatlaf.FlatLightLaf;
 import java.nio.file.Path;
 import java.util.Optional;
 import javax.swing.SwingUtilities;
-import com.formdev.flatlaf.FlatLightLaf;
 import org.fresa.job.RecentJobs;
 
 /** Starts the desktop application. */
 public final class FresaApp {
-    private FresaApp() {
-    }
+    private FresaApp() {}
 
     /** Whether a screen is there to show the window on. */
     public static boolean hasDisplay() {
@@ -18,8 +17,7 @@ public final class FresaApp {
 
     /** Opens the main window on the event thread, with the job when one is given. */
     public static void launch(Optional<Path> job) {
-        launch(job, w -> {
-        });
+        launch(job, w -> {});
     }
 
     /**

@@ -23,7 +23,6 @@ import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.JToggleButton;
 import javax.swing.table.DefaultTableModel;
-import org.fresa.geom.Vec2;
 import org.fresa.grading.GradingResult;
 import org.fresa.grading.ShrinkageMode;
 import org.fresa.grading.SizeSystem;
@@ -62,13 +61,15 @@ final class GradingTab implements ModuleTab {
     private final JTextField lengthStep = new JTextField(6);
     private final JTextField widthStep = new JTextField(6);
     private final JTextField shrinkage = new JTextField(6);
-    private final JComboBox<ShrinkageMode> shrinkageMode = new JComboBox<>(
-            GradingViewModel.SHRINKAGE_MODES.toArray(new ShrinkageMode[0]));
+    private final JComboBox<ShrinkageMode> shrinkageMode =
+            new JComboBox<>(GradingViewModel.SHRINKAGE_MODES.toArray(new ShrinkageMode[0]));
     /** The heel's elements for coordination, and the sizes per heel. */
     private final javax.swing.JTextField heelElements = new javax.swing.JTextField(10);
+
     private final javax.swing.JTextField heelGroup = new javax.swing.JTextField(4);
     /** Table 3.1's width fitting whose last girths the table shows. */
     private final JComboBox<String> fitting = new JComboBox<>(GradingViewModel.FITTINGS.toArray(new String[0]));
+
     private final JButton grade = new JButton("Grade");
     private final JLabel status = new JLabel(" ");
     // set while the fields are filled from the job, so their listeners do not write it back
@@ -242,25 +243,34 @@ final class GradingTab implements ModuleTab {
     /** Marks the bad fields, says the first problem beside Grade and why Grade is disabled. */
     private java.util.Map<String, String> check() {
         java.util.Map<String, String> problems = vm.problems();
-        for (JComponent f : new JComponent[] {origin, baseSize, sizes, lengthStep, widthStep, shrinkage, system,
-            shrinkageMode}) {
+        for (JComponent f :
+                new JComponent[] {origin, baseSize, sizes, lengthStep, widthStep, shrinkage, system, shrinkageMode}) {
             String p = problems.get(f.getName());
             f.setBackground(p == null ? (f instanceof JTextField ? java.awt.Color.WHITE : null) : BAD);
             f.setToolTipText(p != null ? p : Tooltips.meaning("Grading", f));
         }
         grade.setEnabled(problems.isEmpty());
-        grade.setToolTipText(problems.isEmpty() ? "Grade the outline into every size of the range"
-                : problems.size() == 1 && problems.containsKey(GradingViewModel.OUTLINE)
-                        ? "Open a base outline first" : "Correct the marked field first");
-        say(problems.isEmpty() ? " " : problems.values().iterator().next()
-                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        grade.setToolTipText(
+                problems.isEmpty()
+                        ? "Grade the outline into every size of the range"
+                        : problems.size() == 1 && problems.containsKey(GradingViewModel.OUTLINE)
+                                ? "Open a base outline first"
+                                : "Correct the marked field first");
+        say(
+                problems.isEmpty()
+                        ? " "
+                        : problems.values().iterator().next()
+                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
         return problems;
     }
 
     /** The line under Grade; a long reason wraps within the form's width and stays whole in the tooltip. */
     private void say(String text) {
-        status.setText(text.length() <= 36 ? text : "<html><div style='width:190px'>"
-                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setText(
+                text.length() <= 36
+                        ? text
+                        : "<html><div style='width:190px'>"
+                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
         status.setToolTipText(text.isBlank() ? null : text);
     }
 
@@ -312,7 +322,8 @@ final class GradingTab implements ModuleTab {
     }
 
     private void fillFields() {
-        outlineName.setText(vm.outlineFile().map(p -> p.getFileName().toString()).orElse("(none)"));
+        outlineName.setText(
+                vm.outlineFile().map(p -> p.getFileName().toString()).orElse("(none)"));
         origin.setText(vm.origin());
         system.setSelectedItem(vm.system());
         baseSize.setText(vm.baseSize());
@@ -372,24 +383,28 @@ final class GradingTab implements ModuleTab {
         GradingViewModel graded = vm;
         int generation = ctx.model().generation();
         say("grading");
-        ctx.tasks().start("Grading", progress -> {
-            try {
-                return (Object) graded.grade(s);
-            } catch (CamInputException e) {
-                return e.getMessage();
-            }
-        }, r -> {
-            if (graded != vm || generation != ctx.model().generation()) {
-                return;
-            }
-            if (r instanceof GradingResult g) {
-                say(" ");
-                showResult(g);
-            } else {
-                ctx.tasks().failed("Grading");
-                say(String.valueOf(r));
-            }
-        });
+        ctx.tasks()
+                .start(
+                        "Grading",
+                        progress -> {
+                            try {
+                                return (Object) graded.grade(s);
+                            } catch (CamInputException e) {
+                                return e.getMessage();
+                            }
+                        },
+                        r -> {
+                            if (graded != vm || generation != ctx.model().generation()) {
+                                return;
+                            }
+                            if (r instanceof GradingResult g) {
+                                say(" ");
+                                showResult(g);
+                            } else {
+                                ctx.tasks().failed("Grading");
+                                say(String.valueOf(r));
+                            }
+                        });
     }
 
     private void showResult(GradingResult r) {
@@ -409,8 +424,14 @@ final class GradingTab implements ModuleTab {
             return;
         }
         Path dir = FileChoosers.chosen(fc);
-        ctx.tasks().start("Export grading", progress -> vm.export(dir, progress), (TaskOutcome o) ->
-                Dialogs.info(ctx.owner(), "Export grading", "Wrote " + o.files().size() + " files in " + dir));
+        ctx.tasks()
+                .start(
+                        "Export grading",
+                        progress -> vm.export(dir, progress),
+                        (TaskOutcome o) -> Dialogs.info(
+                                ctx.owner(),
+                                "Export grading",
+                                "Wrote " + o.files().size() + " files in " + dir));
     }
 
     private void refreshPlot() {

@@ -21,8 +21,8 @@ import org.fresa.job.Job;
 import org.fresa.job.JobSettings;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.OutputFolder;
-import org.fresa.job.SettingRanges;
 import org.fresa.job.ProgressMonitor;
+import org.fresa.job.SettingRanges;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
@@ -38,11 +38,19 @@ public final class GradingViewModel {
     /** The size systems offered. */
     public static final List<SizeSystem> SYSTEMS = SettingRanges.Grading.SYSTEM.values();
     /** The shrinkage modes offered. */
-    public static final List<ShrinkageMode> SHRINKAGE_MODES = List.of(ShrinkageMode.MULTIPLICATIVE,
-            ShrinkageMode.ADDITIVE);
+    public static final List<ShrinkageMode> SHRINKAGE_MODES =
+            List.of(ShrinkageMode.MULTIPLICATIVE, ShrinkageMode.ADDITIVE);
     /** The grading table's column titles. */
-    public static final List<String> COLUMNS = List.of("Size", "Length (mm)", "Width (mm)", "ALFA", "BETA",
-            "Length factor", "Width factor", "Max deviation (mm)", "Last girth (mm)");
+    public static final List<String> COLUMNS = List.of(
+            "Size",
+            "Length (mm)",
+            "Width (mm)",
+            "ALFA",
+            "BETA",
+            "Length factor",
+            "Width factor",
+            "Max deviation (mm)",
+            "Last girth (mm)");
     /** The width fittings offered for the last girth column (table 3.1), "" for none. */
     public static final List<String> FITTINGS;
 
@@ -68,6 +76,7 @@ public final class GradingViewModel {
     private String heelGroup = Integer.toString(JobSettings.HeelCoordination.DEFAULT_GROUP_SIZE);
     /** A job's boundary-line coordination, kept while no heel elements are designated. */
     private OptionalDouble heelBoundaryMm = OptionalDouble.empty();
+
     private Optional<GradingResult> result = Optional.empty();
 
     /** Reads the base outline (a .contour file) and forgets the last result. */
@@ -93,14 +102,25 @@ public final class GradingViewModel {
             baseSize = ExactDecimal.of(g.baseSize());
             sizes = g.sizes();
             halfSizes = g.halfSizes();
-            lengthStep = g.lengthStepMm().isPresent() ? ExactDecimal.of(g.lengthStepMm().getAsDouble()) : "";
-            widthStep = g.widthStepMm().isPresent() ? ExactDecimal.of(g.widthStepMm().getAsDouble()) : "";
-            origin = g.originMm().map(o -> ExactDecimal.of(o.x()) + "," + ExactDecimal.of(o.y())).orElse("");
+            lengthStep = g.lengthStepMm().isPresent()
+                    ? ExactDecimal.of(g.lengthStepMm().getAsDouble())
+                    : "";
+            widthStep = g.widthStepMm().isPresent()
+                    ? ExactDecimal.of(g.widthStepMm().getAsDouble())
+                    : "";
+            origin = g.originMm()
+                    .map(o -> ExactDecimal.of(o.x()) + "," + ExactDecimal.of(o.y()))
+                    .orElse("");
             shrinkage = ExactDecimal.of(g.shrinkage());
             shrinkageMode = g.shrinkageMode();
-            heelElements = g.coordination().map(JobSettings.HeelCoordination::heelElements).orElse("");
-            heelGroup = g.coordination().map(h -> Integer.toString(h.groupSize())).orElse("3");
-            heelBoundaryMm = g.coordination().map(JobSettings.HeelCoordination::boundaryMm).orElse(OptionalDouble.empty());
+            heelElements = g.coordination()
+                    .map(JobSettings.HeelCoordination::heelElements)
+                    .orElse("");
+            heelGroup =
+                    g.coordination().map(h -> Integer.toString(h.groupSize())).orElse("3");
+            heelBoundaryMm = g.coordination()
+                    .map(JobSettings.HeelCoordination::boundaryMm)
+                    .orElse(OptionalDouble.empty());
             if (outlineFile.isEmpty() || !outlineFile.get().equals(g.outline())) {
                 try {
                     openOutline(g.outline());
@@ -121,9 +141,18 @@ public final class GradingViewModel {
         if (outlineFile.isEmpty()) {
             throw new CamInputException("Outline", "open a base outline first");
         }
-        return new GradingSettings(outlineFile.get(), number("Base size", baseSize), sizes.trim(), halfSizes, system,
-                optional("Length step", lengthStep), optional("Width step", widthStep), parsedOrigin(),
-                number("Shrinkage", shrinkage), shrinkageMode, heel());
+        return new GradingSettings(
+                outlineFile.get(),
+                number("Base size", baseSize),
+                sizes.trim(),
+                halfSizes,
+                system,
+                optional("Length step", lengthStep),
+                optional("Width step", widthStep),
+                parsedOrigin(),
+                number("Shrinkage", shrinkage),
+                shrinkageMode,
+                heel());
     }
 
     /** The heel coordination of the fields: the designated elements, else a job's boundary, else none. */
@@ -133,8 +162,8 @@ public final class GradingViewModel {
         }
         double g = number("Heel group", heelGroup);
         if (g != Math.rint(g) || g < 1 || g > 400) {
-            throw new CamInputException("Heel group", "expected a whole number of sizes from 1 to 400, found '"
-                    + heelGroup + "'");
+            throw new CamInputException(
+                    "Heel group", "expected a whole number of sizes from 1 to 400, found '" + heelGroup + "'");
         }
         if (!heelElements.isBlank()) {
             try {
@@ -170,6 +199,7 @@ public final class GradingViewModel {
 
     /** The keys of {@link #problems()}: the names of the tab's fields. */
     public static final String OUTLINE = "grading-outline";
+
     public static final String ORIGIN = "grading-origin";
     public static final String SYSTEM = "grading-system";
     public static final String BASE_SIZE = "grading-base-size";
@@ -181,13 +211,22 @@ public final class GradingViewModel {
 
     /** The field of each setting the grading names in {@code GradingService.refusals}, with its label. */
     private static final java.util.Map<String, String[]> FIELDS = java.util.Map.of(
-            "system", new String[] {SYSTEM, "System"}, "sizes", new String[] {SIZES, "Sizes"},
-            "baseSize", new String[] {BASE_SIZE, "Base size"},
-            "lengthStep", new String[] {LENGTH_STEP, "Length step (mm)"},
-            "widthStep", new String[] {WIDTH_STEP, "Width step (mm)"},
-            "shrinkage", new String[] {SHRINKAGE, "Shrinkage"},
-            "shrinkageMode", new String[] {SHRINKAGE_MODE, "Shrinkage mode"},
-            "settings", new String[] {SIZES, "Grading"});
+            "system",
+            new String[] {SYSTEM, "System"},
+            "sizes",
+            new String[] {SIZES, "Sizes"},
+            "baseSize",
+            new String[] {BASE_SIZE, "Base size"},
+            "lengthStep",
+            new String[] {LENGTH_STEP, "Length step (mm)"},
+            "widthStep",
+            new String[] {WIDTH_STEP, "Width step (mm)"},
+            "shrinkage",
+            new String[] {SHRINKAGE, "Shrinkage"},
+            "shrinkageMode",
+            new String[] {SHRINKAGE_MODE, "Shrinkage mode"},
+            "settings",
+            new String[] {SIZES, "Grading"});
 
     /**
      * What is wrong with the typed fields, by field name (the constants above), in the planner's
@@ -208,8 +247,9 @@ public final class GradingViewModel {
         try {
             parsedOrigin();
         } catch (CamInputException e) {
-            out.put(ORIGIN, "Origin X,Y: expected X,Y in mm (or empty for the heel centre), found '" + origin.trim()
-                    + "'.");
+            out.put(
+                    ORIGIN,
+                    "Origin X,Y: expected X,Y in mm (or empty for the heel centre), found '" + origin.trim() + "'.");
         }
         if (sizes.trim().isEmpty()) {
             out.put(SIZES, "Sizes: a range A-B is needed (e.g. 36-44).");
@@ -218,9 +258,17 @@ public final class GradingViewModel {
             return out;
         }
         try {
-            GradingSettings s = new GradingSettings(outlineFile.orElse(Path.of("")), number("Base size", baseSize),
-                    sizes.trim(), halfSizes, system, optional("Length step", lengthStep),
-                    optional("Width step", widthStep), parsedOrigin(), number("Shrinkage", shrinkage), shrinkageMode);
+            GradingSettings s = new GradingSettings(
+                    outlineFile.orElse(Path.of("")),
+                    number("Base size", baseSize),
+                    sizes.trim(),
+                    halfSizes,
+                    system,
+                    optional("Length step", lengthStep),
+                    optional("Width step", widthStep),
+                    parsedOrigin(),
+                    number("Shrinkage", shrinkage),
+                    shrinkageMode);
             GradingService.refusals(s, GradingService.Options.DEFAULT).forEach((k, m) -> {
                 String[] f = FIELDS.getOrDefault(k, new String[] {SIZES, "Grading"});
                 out.putIfAbsent(f[0], f[1] + ": " + m + (m.endsWith(".") ? "" : "."));
@@ -232,8 +280,8 @@ public final class GradingViewModel {
         return out;
     }
 
-    private static void readable(java.util.Map<String, String> out, String key, String label, String text,
-            boolean mayBeEmpty) {
+    private static void readable(
+            java.util.Map<String, String> out, String key, String label, String text, boolean mayBeEmpty) {
         String t = text.trim();
         if (t.isEmpty() && mayBeEmpty) {
             return;
@@ -305,8 +353,8 @@ public final class GradingViewModel {
             throw new CamInputException("Outline", "open a base outline first");
         }
         String name = outlineFile.map(p -> p.getFileName().toString()).orElse("outline");
-        return GradingService.write(outline, name, settings(), GradingService.Options.DEFAULT, new OutputFolder(dir),
-                progress);
+        return GradingService.write(
+                outline, name, settings(), GradingService.Options.DEFAULT, new OutputFolder(dir), progress);
     }
 
     /** The origin picked on the plot (mm, kept to 0.001); the last result no longer applies. */
@@ -324,8 +372,14 @@ public final class GradingViewModel {
         List<List<String>> rows = new ArrayList<>();
         result.ifPresent(r -> {
             for (GradedSize g : r.sizes()) {
-                rows.add(List.of(g.name(), fmt(g.lengthMm(), 3), fmt(g.widthMm(), 3), fmt(g.factors().alfa(), 6),
-                        fmt(g.factors().beta(), 6), fmt(g.factors().length(), 6), fmt(g.factors().width(), 6),
+                rows.add(List.of(
+                        g.name(),
+                        fmt(g.lengthMm(), 3),
+                        fmt(g.widthMm(), 3),
+                        fmt(g.factors().alfa(), 6),
+                        fmt(g.factors().beta(), 6),
+                        fmt(g.factors().length(), 6),
+                        fmt(g.factors().width(), 6),
                         g.maxDeviationMm().isPresent() ? fmt(g.maxDeviationMm().getAsDouble(), 4) : "",
                         girth(g.factors().size())));
             }
@@ -375,7 +429,8 @@ public final class GradingViewModel {
         Optional<Vec2> o;
         if (result.isPresent()) {
             GradingResult r = result.get();
-            s = GradingChart.scene("Graded sizes", GradingService.sizeOutlines(r), r.frame().lengthAxis());
+            s = GradingChart.scene(
+                    "Graded sizes", GradingService.sizeOutlines(r), r.frame().lengthAxis());
             o = Optional.of(r.frame().origin());
         } else {
             s = PlotScene.empty(outline.isEmpty() ? "Open a base outline" : "Base outline");
@@ -387,10 +442,14 @@ public final class GradingViewModel {
         }
         if (o.isPresent()) {
             Vec2 c = o.get();
-            s = s.with(new PlotScene.Layer("origin", PlotScene.Style.WARNING, List.of(
-                    new org.fresa.geom.Segment2(c.plus(new Vec2(-4, 0)), c.plus(new Vec2(4, 0))),
-                    new org.fresa.geom.Segment2(c.plus(new Vec2(0, -4)), c.plus(new Vec2(0, 4))),
-                    Arc2.circle(c, 2, true)))).withLabel(c.plus(new Vec2(5, 5)), "origin");
+            s = s.with(new PlotScene.Layer(
+                            "origin",
+                            PlotScene.Style.WARNING,
+                            List.of(
+                                    new org.fresa.geom.Segment2(c.plus(new Vec2(-4, 0)), c.plus(new Vec2(4, 0))),
+                                    new org.fresa.geom.Segment2(c.plus(new Vec2(0, -4)), c.plus(new Vec2(0, 4))),
+                                    Arc2.circle(c, 2, true))))
+                    .withLabel(c.plus(new Vec2(5, 5)), "origin");
         }
         return s;
     }
@@ -441,7 +500,8 @@ public final class GradingViewModel {
                 // reported below
             }
         }
-        throw new CamInputException("Origin", "expected X,Y in mm (or empty for the heel centre), found '" + origin + "'");
+        throw new CamInputException(
+                "Origin", "expected X,Y in mm (or empty for the heel centre), found '" + origin + "'");
     }
 
     private static double number(String field, String text) throws CamInputException {

@@ -14,8 +14,7 @@ import javax.swing.WindowConstants;
 /** The Help menu: the user guide (F1) in a window of its own beside the main window. */
 final class HelpMenu {
 
-    private HelpMenu() {
-    }
+    private HelpMenu() {}
 
     static JMenu create(Window owner) {
         JMenu help = new JMenu("Help");
@@ -46,8 +45,11 @@ final class HelpMenu {
         text.setEditable(false);
         text.setCaretPosition(0);
         d.getContentPane().add(new JScrollPane(text), BorderLayout.CENTER);
-        d.getRootPane().registerKeyboardAction(e -> d.setVisible(false), KeyStroke.getKeyStroke("ESCAPE"),
-                javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW);
+        d.getRootPane()
+                .registerKeyboardAction(
+                        e -> d.setVisible(false),
+                        KeyStroke.getKeyStroke("ESCAPE"),
+                        javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW);
         d.setPreferredSize(new Dimension(720, 760));
         d.pack();
         d.setLocationRelativeTo(owner);

@@ -28,8 +28,14 @@ import org.fresa.model.Placement;
 final class LiveReachability {
 
     /** What the answer depends on. */
-    record Inputs(Path stepnc, org.fresa.toolpath.PlanningChoices choices, String robot, RobotTools.Choice tool,
-            Placement robotTable, Placement tablePiece, List<String> formats) {
+    record Inputs(
+            Path stepnc,
+            org.fresa.toolpath.PlanningChoices choices,
+            String robot,
+            RobotTools.Choice tool,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats) {
         Inputs {
             formats = List.copyOf(formats);
         }
@@ -43,8 +49,14 @@ final class LiveReachability {
      * @param phases when each step of its making ended
      * @param cpuNanos the CPU time the background thread spent on it (-1 where the JVM does not count it)
      */
-    record Answer(Inputs inputs, RobotTrajectoryService.Solved solved, Transform3 spindle, CellScene scene,
-            List<String[]> errorRows, Phases phases, long cpuNanos) {
+    record Answer(
+            Inputs inputs,
+            RobotTrajectoryService.Solved solved,
+            Transform3 spindle,
+            CellScene scene,
+            List<String[]> errorRows,
+            Phases phases,
+            long cpuNanos) {
         /** When the change that asked for it was made ({@link System#nanoTime}). */
         long askedNanos() {
             return phases.changed();
@@ -55,17 +67,20 @@ final class LiveReachability {
      * The plots of an answer, made after the answer itself was handed over: the 3D view does not
      * wait for them.
      */
-    record Charted(Inputs inputs, TrajectoryCharts charts, TrajectoryCharts.Marked joints,
-            TrajectoryCharts.Marked errors, long changedNanos, long madeNanos) {
-    }
+    record Charted(
+            Inputs inputs,
+            TrajectoryCharts charts,
+            TrajectoryCharts.Marked joints,
+            TrajectoryCharts.Marked errors,
+            long changedNanos,
+            long madeNanos) {}
 
     /**
      * When (System.nanoTime) an answer's steps ended: the field change, the request (after the
      * event thread's own handling of the change), the worker taking it up, the targets solved, the
      * scene made and the answer handed to the event thread.
      */
-    record Phases(long changed, long asked, long started, long solved, long scened, long posted) {
-    }
+    record Phases(long changed, long asked, long started, long solved, long scened, long posted) {}
 
     private static final java.lang.management.ThreadMXBean THREADS =
             java.lang.management.ManagementFactory.getThreadMXBean();
@@ -147,16 +162,16 @@ final class LiveReachability {
         long started = System.nanoTime();
         long cpu0 = cpuNanos();
         try {
-            List<Object> key = List.of(in.stepnc(), modified(in.stepnc()), in.choices(), in.robot(),
-                    modified(in.robot()), in.tool());
+            List<Object> key = List.of(
+                    in.stepnc(), modified(in.stepnc()), in.choices(), in.robot(), modified(in.robot()), in.tool());
             if (!key.equals(plannedKey)) {
-                planned = PositionViewModel.plan(in.stepnc(), in.robot(), in.tool(), in.choices(),
-                        ProgressMonitor.NONE);
+                planned =
+                        PositionViewModel.plan(in.stepnc(), in.robot(), in.tool(), in.choices(), ProgressMonitor.NONE);
                 reach = new Reachability(TrajectorySolver.Options.DEFAULT);
                 plannedKey = key;
             }
-            Optional<RobotTrajectoryService.Solved> solved = PositionViewModel.reach(planned, in.robotTable(),
-                    in.tablePiece(), in.formats(), reach, () -> stale(gen));
+            Optional<RobotTrajectoryService.Solved> solved = PositionViewModel.reach(
+                    planned, in.robotTable(), in.tablePiece(), in.formats(), reach, () -> stale(gen));
             if (solved.isEmpty() || stale(gen)) {
                 return;
             }
@@ -165,7 +180,12 @@ final class LiveReachability {
             CellScene scene = PositionViewModel.sceneOf(s, 0, Optional.of(planned.spindle()));
             List<String[]> rows = PositionViewModel.errorRowsOf(s.result());
             long scened = System.nanoTime();
-            Answer a = new Answer(in, s, planned.spindle(), scene, rows,
+            Answer a = new Answer(
+                    in,
+                    s,
+                    planned.spindle(),
+                    scene,
+                    rows,
                     new Phases(changed, asked, started, reached, scened, System.nanoTime()),
                     cpu0 < 0 ? -1 : cpuNanos() - cpu0);
             SwingUtilities.invokeLater(() -> {

@@ -84,16 +84,30 @@ public final class MainWindow extends JFrame {
     }
 
     private void updateTitle() {
-        setTitle(model.file().isEmpty() && !model.isDirty() && "untitled".equals(model.job().name())
-                ? "Fresa" : model.title());
+        setTitle(
+                model.file().isEmpty()
+                                && !model.isDirty()
+                                && "untitled".equals(model.job().name())
+                        ? "Fresa"
+                        : model.title());
     }
 
     /** What each task's tick in the Job menu says. */
     private static final java.util.Map<JobTask, String> RUN_LABELS = new java.util.EnumMap<>(java.util.Map.of(
-            JobTask.STEPNC, "STEP-NC description (stepnc)", JobTask.TOOLPATH, "Toolpaths and NC program (toolpath)",
-            JobTask.ROBOT, "Robot trajectory and programs (robot)", JobTask.POCKET, "Pocket program (pocket)",
-            JobTask.CUT, "Sheet cutting program (cut)", JobTask.GRADE, "Graded sizes (grade)",
-            JobTask.SOLE, "Sole mould programs (sole)"));
+            JobTask.STEPNC,
+            "STEP-NC description (stepnc)",
+            JobTask.TOOLPATH,
+            "Toolpaths and NC program (toolpath)",
+            JobTask.ROBOT,
+            "Robot trajectory and programs (robot)",
+            JobTask.POCKET,
+            "Pocket program (pocket)",
+            JobTask.CUT,
+            "Sheet cutting program (cut)",
+            JobTask.GRADE,
+            "Graded sizes (grade)",
+            JobTask.SOLE,
+            "Sole mould programs (sole)"));
 
     private final transient java.util.Map<JobTask, javax.swing.JCheckBoxMenuItem> runTicks =
             new java.util.EnumMap<>(JobTask.class);
@@ -182,12 +196,10 @@ public final class MainWindow extends JFrame {
             }
 
             @Override
-            public void menuDeselected(javax.swing.event.MenuEvent e) {
-            }
+            public void menuDeselected(javax.swing.event.MenuEvent e) {}
 
             @Override
-            public void menuCanceled(javax.swing.event.MenuEvent e) {
-            }
+            public void menuCanceled(javax.swing.event.MenuEvent e) {}
         });
         file.addSeparator();
         file.add(item("Export plot (PNG/SVG)...", 'E', KeyStroke.getKeyStroke("ctrl E"), this::exportPlot));
@@ -199,8 +211,9 @@ public final class MainWindow extends JFrame {
         edit.add(undoItem);
         edit.add(redoItem);
         // Ctrl+Shift+Z redoes too, as in most editors
-        getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW).put(
-                KeyStroke.getKeyStroke("ctrl shift Z"), "fresa-redo");
+        getRootPane()
+                .getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW)
+                .put(KeyStroke.getKeyStroke("ctrl shift Z"), "fresa-redo");
         getRootPane().getActionMap().put("fresa-redo", new javax.swing.AbstractAction() {
             private static final long serialVersionUID = 1L;
 
@@ -232,12 +245,10 @@ public final class MainWindow extends JFrame {
             }
 
             @Override
-            public void menuDeselected(javax.swing.event.MenuEvent e) {
-            }
+            public void menuDeselected(javax.swing.event.MenuEvent e) {}
 
             @Override
-            public void menuCanceled(javax.swing.event.MenuEvent e) {
-            }
+            public void menuCanceled(javax.swing.event.MenuEvent e) {}
         });
         bar.add(job);
         bar.add(HelpMenu.create(this));
@@ -288,7 +299,11 @@ public final class MainWindow extends JFrame {
 
     /** The module tab of a class (the GUI tests read the Position tab's measurements). */
     <T extends ModuleTab> T moduleTab(Class<T> type) {
-        return moduleTabs.stream().filter(type::isInstance).map(type::cast).findFirst().orElseThrow();
+        return moduleTabs.stream()
+                .filter(type::isInstance)
+                .map(type::cast)
+                .findFirst()
+                .orElseThrow();
     }
 
     public int tabCount() {
@@ -299,8 +314,12 @@ public final class MainWindow extends JFrame {
         if (!model.isDirty()) {
             return true;
         }
-        int a = JOptionPane.showConfirmDialog(this, "The job has unsaved changes. Save them first?", "Fresa",
-                JOptionPane.YES_NO_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE);
+        int a = JOptionPane.showConfirmDialog(
+                this,
+                "The job has unsaved changes. Save them first?",
+                "Fresa",
+                JOptionPane.YES_NO_CANCEL_OPTION,
+                JOptionPane.WARNING_MESSAGE);
         if (a == JOptionPane.YES_OPTION) {
             return save();
         }
@@ -335,7 +354,8 @@ public final class MainWindow extends JFrame {
     }
 
     private JFileChooser jobChooser() {
-        JFileChooser fc = new JFileChooser(model.file().map(Path::getParent).map(Path::toFile).orElse(null));
+        JFileChooser fc = new JFileChooser(
+                model.file().map(Path::getParent).map(Path::toFile).orElse(null));
         fc.setFileFilter(new FileNameExtensionFilter("Fresa jobs (*.xml)", "xml"));
         return fc;
     }
@@ -408,9 +428,13 @@ public final class MainWindow extends JFrame {
         String what = String.join(", ", job.runs().stream().map(JobTask::id).toList());
         tasks.start("Run " + what, pm -> JobRunner.run(job, new OutputFolder(dir), pm), o -> {
             // the programs of this run are the job's, unless another job was opened meanwhile
-            if (generation == model.generation() && job.runs().contains(JobTask.ROBOT) && job.robot().isPresent()) {
+            if (generation == model.generation()
+                    && job.runs().contains(JobTask.ROBOT)
+                    && job.robot().isPresent()) {
                 Path folder = job.runs().size() == 1 ? dir : dir.resolve(JobTask.ROBOT.id());
-                runs.setWritten(new RobotRunModel.Written(job.robot().get().robot(), folder,
+                runs.setWritten(new RobotRunModel.Written(
+                        job.robot().get().robot(),
+                        folder,
                         o.files().stream().filter(f -> f.startsWith(folder)).toList()));
             }
             showOutcome(o);

@@ -1,9 +1,9 @@
 package org.fresa.ui;
 
 import java.awt.Color;
+import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
-import java.awt.Dimension;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
@@ -59,8 +59,7 @@ final class OffThreadChartPanel extends ChartPanel {
     private transient volatile Object pendingKey;
     // the frame ChartPanel copies to the screen, when the last image has another size than the panel
     private transient BufferedImage frame;
-    private transient Runnable onDrawn = () -> {
-    };
+    private transient Runnable onDrawn = () -> {};
     private String placeholder;
 
     /** picture is asked on the event thread at every paint; null means nothing to draw. */
@@ -86,8 +85,8 @@ final class OffThreadChartPanel extends ChartPanel {
      * the last image drawn. ChartPanel copies it to the screen and draws the zoom rectangle on it.
      */
     @Override
-    protected BufferedImage paintChartToBuffer(Graphics2D g2, Dimension bufferSize, Dimension chartSize,
-            Point2D anchor, ChartRenderingInfo info) {
+    protected BufferedImage paintChartToBuffer(
+            Graphics2D g2, Dimension bufferSize, Dimension chartSize, Point2D anchor, ChartRenderingInfo info) {
         int w = chartSize.width;
         int h = chartSize.height;
         double scale = g2.getTransform().getScaleX();
@@ -105,8 +104,8 @@ final class OffThreadChartPanel extends ChartPanel {
         // an older image of another size is shown cropped or padded, copied 1:1, until the new one
         // is drawn: a scaled copy of a large image took 95 ms on the event thread (Xvfb)
         if (frame == null || frame.getWidth() != bufferSize.width || frame.getHeight() != bufferSize.height) {
-            frame = new BufferedImage(Math.max(1, bufferSize.width), Math.max(1, bufferSize.height),
-                    BufferedImage.TYPE_INT_RGB);
+            frame = new BufferedImage(
+                    Math.max(1, bufferSize.width), Math.max(1, bufferSize.height), BufferedImage.TYPE_INT_RGB);
         }
         Graphics2D f = frame.createGraphics();
         f.setColor(Color.WHITE);
@@ -174,7 +173,7 @@ final class OffThreadChartPanel extends ChartPanel {
     /** Whether the image on screen is the picture the panel shows now (tests wait for it). */
     boolean isUpToDate() {
         Picture p = getChart() == null ? null : picture.get();
-        return p == null || image != null && imageKey instanceof List<?> k && k.get(0).equals(p.key())
-                && pendingKey == null;
+        return p == null
+                || image != null && imageKey instanceof List<?> k && k.get(0).equals(p.key()) && pendingKey == null;
     }
 }

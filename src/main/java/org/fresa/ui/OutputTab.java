@@ -123,7 +123,8 @@ final class OutputTab implements ModuleTab {
         panel.add(south, BorderLayout.SOUTH);
         runs.addListener(this::runsChanged);
         panel.addHierarchyListener(e -> {
-            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0
+                    && panel.isShowing()
                     && stale) {
                 preview();
             }
@@ -151,9 +152,20 @@ final class OutputTab implements ModuleTab {
     }
 
     private void writeFormatsToJob() {
-        ctx.model().job().robot().ifPresent(rs -> ctx.model().setJob(ctx.model().job().withRobot(
-                new JobSettings.RobotSettings(rs.robot(), rs.robotTable(), rs.tablePiece(), vm.checkedFormats(),
-                        rs.spindle(), rs.toolLengthMm(), rs.placing()))));
+        ctx.model()
+                .job()
+                .robot()
+                .ifPresent(rs -> ctx.model()
+                        .setJob(ctx.model()
+                                .job()
+                                .withRobot(new JobSettings.RobotSettings(
+                                        rs.robot(),
+                                        rs.robotTable(),
+                                        rs.tablePiece(),
+                                        vm.checkedFormats(),
+                                        rs.spindle(),
+                                        rs.toolLengthMm(),
+                                        rs.placing()))));
     }
 
     /** New programs (or none): the status says which, the preview follows when the tab is shown. */
@@ -161,7 +173,8 @@ final class OutputTab implements ModuleTab {
         showProblems(List.of());
         if (runs.last().isPresent()) {
             RobotRunModel.Run r = runs.last().get();
-            status.setText("Trajectory of " + r.programName() + " on " + r.solved().request().robot().name() + ": "
+            status.setText("Trajectory of " + r.programName() + " on "
+                    + r.solved().request().robot().name() + ": "
                     + r.solved().result().points().size() + " points");
         } else if (runs.written().isPresent()) {
             RobotRunModel.Written w = runs.written().get();
@@ -192,53 +205,66 @@ final class OutputTab implements ModuleTab {
         RobotRunModel.Run run = runs.last().orElse(null);
         RobotRunModel.Written written = runs.written().orElse(null);
         String format = vm.previewed();
-        ctx.tasks().start("Preview " + format, progress -> {
-            if (written != null) {
-                Path f = written.file(OutputViewModel.fileOf(format)).orElse(null);
-                if (f == null || !Files.isRegularFile(f)) {
-                    return (Object) new Previewed("The run wrote no " + OutputViewModel.fileOf(format)
-                            + ": tick the format in this tab and run the job again.", 0, "");
-                }
-                return shown(f, format);
-            }
-            Path scratch = Files.createTempDirectory("fresa-preview");
-            try {
-                Path f = OutputViewModel.previewFile(run, format, scratch);
-                if (format.equals("png")) {
-                    return (Object) ImageIO.read(f.toFile());
-                }
-                String s = Files.readString(f, StandardCharsets.UTF_8);
-                // a preview of a long program shows its beginning; Save writes all of it
-                String shownText = s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s;
-                java.util.Optional<org.fresa.check.Failure> refusal = org.fresa.job.RobotPrograms.FORMATS.contains(format)
-                        ? OutputViewModel.refusal(run) : java.util.Optional.empty();
-                return (Object) new Previewed(shownText, refusal.map(x -> OutputViewModel.lineOfMotion(shownText, x.line()))
-                        .orElse(0), refusal.map(org.fresa.check.Failure::message).orElse(""));
-            } finally {
-                deleteTree(scratch);
-            }
-        }, shown -> {
-            stale = false;
-            CardLayout cards = (CardLayout) previewCards.getLayout();
-            if (shown instanceof java.awt.image.BufferedImage img) {
-                image.setIcon(new ImageIcon(img));
-                cards.show(previewCards, "image");
-            } else {
-                Previewed p = (Previewed) shown;
-                showText(p.text());
-                text.getHighlighter().removeAllHighlights();
-                if (!p.refusal().isEmpty()) {
-                    ProgramHighlight.line(text, p.line());
-                    status.setText("program refused, cannot be saved: " + p.refusal());
-                }
-                cards.show(previewCards, "text");
-            }
-        });
+        ctx.tasks()
+                .start(
+                        "Preview " + format,
+                        progress -> {
+                            if (written != null) {
+                                Path f = written.file(OutputViewModel.fileOf(format))
+                                        .orElse(null);
+                                if (f == null || !Files.isRegularFile(f)) {
+                                    return (Object) new Previewed(
+                                            "The run wrote no " + OutputViewModel.fileOf(format)
+                                                    + ": tick the format in this tab and run the job again.",
+                                            0,
+                                            "");
+                                }
+                                return shown(f, format);
+                            }
+                            Path scratch = Files.createTempDirectory("fresa-preview");
+                            try {
+                                Path f = OutputViewModel.previewFile(run, format, scratch);
+                                if (format.equals("png")) {
+                                    return (Object) ImageIO.read(f.toFile());
+                                }
+                                String s = Files.readString(f, StandardCharsets.UTF_8);
+                                // a preview of a long program shows its beginning; Save writes all of it
+                                String shownText = s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s;
+                                java.util.Optional<org.fresa.check.Failure> refusal =
+                                        org.fresa.job.RobotPrograms.FORMATS.contains(format)
+                                                ? OutputViewModel.refusal(run)
+                                                : java.util.Optional.empty();
+                                return (Object) new Previewed(
+                                        shownText,
+                                        refusal.map(x -> OutputViewModel.lineOfMotion(shownText, x.line()))
+                                                .orElse(0),
+                                        refusal.map(org.fresa.check.Failure::message)
+                                                .orElse(""));
+                            } finally {
+                                deleteTree(scratch);
+                            }
+                        },
+                        shown -> {
+                            stale = false;
+                            CardLayout cards = (CardLayout) previewCards.getLayout();
+                            if (shown instanceof java.awt.image.BufferedImage img) {
+                                image.setIcon(new ImageIcon(img));
+                                cards.show(previewCards, "image");
+                            } else {
+                                Previewed p = (Previewed) shown;
+                                showText(p.text());
+                                text.getHighlighter().removeAllHighlights();
+                                if (!p.refusal().isEmpty()) {
+                                    ProgramHighlight.line(text, p.line());
+                                    status.setText("program refused, cannot be saved: " + p.refusal());
+                                }
+                                cards.show(previewCards, "text");
+                            }
+                        });
     }
 
     /** A program preview: its text, and the line of the motion that fails the program check (0: none). */
-    private record Previewed(String text, int line, String refusal) {
-    }
+    private record Previewed(String text, int line, String refusal) {}
 
     /** The picture or the text of a file to preview. */
     private static Object shown(Path f, String format) throws IOException {
@@ -281,10 +307,14 @@ final class OutputTab implements ModuleTab {
         }
         if (vm.checkedFormats().stream().anyMatch(org.fresa.job.RobotPrograms.FORMATS::contains)) {
             java.util.Optional<org.fresa.check.Failure> refusal = runs.last().isPresent()
-                    ? OutputViewModel.refusal(runs.last().get()) : java.util.Optional.empty();
+                    ? OutputViewModel.refusal(runs.last().get())
+                    : java.util.Optional.empty();
             if (refusal.isPresent()) {
-                Dialogs.error(ctx.owner(), "Save", "The robot program fails the program check and cannot be saved: "
-                        + refusal.get().message());
+                Dialogs.error(
+                        ctx.owner(),
+                        "Save",
+                        "The robot program fails the program check and cannot be saved: "
+                                + refusal.get().message());
                 return;
             }
         }
@@ -299,13 +329,19 @@ final class OutputTab implements ModuleTab {
     void saveInto(Path dir) {
         RobotRunModel.Run run = runs.last().orElseThrow();
         List<String> formats = vm.checkedFormats();
-        ctx.tasks().start("Saving robot programs", progress -> OutputViewModel.write(run, formats,
-                new OutputFolder(dir)), (TaskOutcome o) -> {
-                    status.setText("Saved " + o.files().size() + " files into " + dir + (o.problems().isEmpty() ? ""
-                            : "; " + o.problems().size() + (o.problems().size() == 1 ? " problem" : " problems")
-                                    + ", listed below"));
-                    showProblems(o.problems());
-                });
+        ctx.tasks()
+                .start(
+                        "Saving robot programs",
+                        progress -> OutputViewModel.write(run, formats, new OutputFolder(dir)),
+                        (TaskOutcome o) -> {
+                            status.setText("Saved " + o.files().size() + " files into " + dir
+                                    + (o.problems().isEmpty()
+                                            ? ""
+                                            : "; " + o.problems().size()
+                                                    + (o.problems().size() == 1 ? " problem" : " problems")
+                                                    + ", listed below"));
+                            showProblems(o.problems());
+                        });
     }
 
     /** Lists every problem, or hides the list when there is none. */

@@ -111,10 +111,21 @@ final class OutputViewModel {
     /** Writes the given formats of a run into a folder (plus summary.json). */
     static TaskOutcome write(RobotRunModel.Run run, List<String> formats, OutputFolder out) throws IOException {
         RobotTrajectoryService.Request r = run.solved().request();
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(r.toolpath(), r.robot(), r.robotTable(),
-                r.tablePiece(), r.chordToleranceMm(), formats, r.options(), r.tcpByLabel(), r.checkLimits());
-        return RobotTrajectoryService.write(new RobotTrajectoryService.Solved(req, run.solved().targets(),
-                run.solved().result()), run.programName(), out);
+        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(
+                r.toolpath(),
+                r.robot(),
+                r.robotTable(),
+                r.tablePiece(),
+                r.chordToleranceMm(),
+                formats,
+                r.options(),
+                r.tcpByLabel(),
+                r.checkLimits());
+        return RobotTrajectoryService.write(
+                new RobotTrajectoryService.Solved(
+                        req, run.solved().targets(), run.solved().result()),
+                run.programName(),
+                out);
     }
 
     /**
@@ -126,7 +137,8 @@ final class OutputViewModel {
         write(run, List.of(format), out);
         if (org.fresa.job.RobotPrograms.FORMATS.contains(format) && refusal(run).isPresent()) {
             // refused programs are not saved; the preview shows the program so that its failing motion can be marked
-            org.fresa.job.RobotPrograms.write(program(run), run.solved().request().robot(), List.of(format), out);
+            org.fresa.job.RobotPrograms.write(
+                    program(run), run.solved().request().robot(), List.of(format), out);
         }
         Path f = scratch.resolve(fileOf(format));
         if (!Files.exists(f)) {
@@ -138,12 +150,18 @@ final class OutputViewModel {
     /** The robot program of a run, as the writers take it. */
     static org.fresa.post.RobotProgram program(RobotRunModel.Run run) {
         RobotTrajectoryService.Request r = run.solved().request();
-        return org.fresa.job.RobotPrograms.of(run.programName(), r.robot(), r.toolpath(), run.solved().result().points());
+        return org.fresa.job.RobotPrograms.of(
+                run.programName(),
+                r.robot(),
+                r.toolpath(),
+                run.solved().result().points());
     }
 
     /** The program check's first failure of a run's robot program (as Save would check it), or empty. */
     static java.util.Optional<org.fresa.check.Failure> refusal(RobotRunModel.Run run) {
-        return org.fresa.job.ProgramChecks.robot(program(run), run.solved().request().toolpath(),
+        return org.fresa.job.ProgramChecks.robot(
+                program(run),
+                run.solved().request().toolpath(),
                 run.solved().request().checkLimits());
     }
 

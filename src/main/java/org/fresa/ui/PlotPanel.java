@@ -3,11 +3,11 @@ package org.fresa.ui;
 import java.awt.BorderLayout;
 import java.awt.FlowLayout;
 import java.awt.Insets;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.geom.Rectangle2D;
-import java.awt.event.ComponentAdapter;
-import java.awt.event.ComponentEvent;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Files;
@@ -104,7 +104,8 @@ public final class PlotPanel extends JPanel {
         java.awt.geom.Point2D j = chartPanel.translateScreenToJava2D(p);
         Rectangle2D area = chartPanel.getChartRenderingInfo().getPlotInfo().getDataArea();
         XYPlot xy = chart.getXYPlot();
-        return org.fresa.geom.Vec2.of(xy.getDomainAxis().java2DToValue(j.getX(), area, xy.getDomainAxisEdge()),
+        return org.fresa.geom.Vec2.of(
+                xy.getDomainAxis().java2DToValue(j.getX(), area, xy.getDomainAxisEdge()),
                 xy.getRangeAxis().java2DToValue(j.getY(), area, xy.getRangeAxisEdge()));
     }
 
@@ -249,7 +250,8 @@ public final class PlotPanel extends JPanel {
             measured = EqualScale.dataArea(chart, w, h);
             measuredKey = key;
         }
-        return measured.getWidth() > 1 && measured.getHeight() > 1 ? java.util.Optional.of(measured)
+        return measured.getWidth() > 1 && measured.getHeight() > 1
+                ? java.util.Optional.of(measured)
                 : java.util.Optional.empty();
     }
 
@@ -261,7 +263,8 @@ public final class PlotPanel extends JPanel {
         int w = Math.max(800, chartPanel.getWidth());
         int h = Math.max(600, chartPanel.getHeight());
         XYPlot xy = chart.getXYPlot();
-        JFreeChart full = chartOf(scene, xy.getDomainAxis().getRange(), xy.getRangeAxis().getRange());
+        JFreeChart full =
+                chartOf(scene, xy.getDomainAxis().getRange(), xy.getRangeAxis().getRange());
         EqualScale.prepare(full, java.util.Optional.empty(), w, h);
         try (OutputStream out = Files.newOutputStream(file)) {
             if (file.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".svg")) {

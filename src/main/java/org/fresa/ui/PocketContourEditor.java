@@ -25,7 +25,12 @@ public final class PocketContourEditor {
 
     /** The columns, in the order shown. */
     public enum Column {
-        TYPE("Type"), A("A / centre x"), B("B / centre y"), D("D / radius"), SELECTOR("S/L"), SENSE("Sense");
+        TYPE("Type"),
+        A("A / centre x"),
+        B("B / centre y"),
+        D("D / radius"),
+        SELECTOR("S/L"),
+        SENSE("Sense");
 
         private final String title;
 
@@ -39,16 +44,17 @@ public final class PocketContourEditor {
     }
 
     /** A cell: the row (element number - 1) and the column. */
-    public record Cell(int row, Column column) {
-    }
+    public record Cell(int row, Column column) {}
 
     /** The words the Type and Sense columns show and take (the file's letters are taken too). */
     public static final String LINE = "line";
+
     public static final String ARC = "arc";
     public static final String CONVEX = "convex";
     public static final String CONCAVE = "concave";
     /** What a new row holds until typed over: the line y = 0. */
     public static final DadElement NEW_ELEMENT = DadElement.line(0, 1, 0);
+
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([EeDd][+-]?\\d+)?");
 
     private final List<DadElement> elements = new ArrayList<>();
@@ -190,8 +196,8 @@ public final class PocketContourEditor {
         if (w.isEmpty() || w.equals("S") || w.equals("L")) {
             return w.isEmpty() ? ' ' : w.charAt(0);
         }
-        throw new IllegalArgumentException("S (the junction with the smaller x), L (the larger x) or blank, found '"
-                + t + "'");
+        throw new IllegalArgumentException(
+                "S (the junction with the smaller x), L (the larger x) or blank, found '" + t + "'");
     }
 
     private static char senseOf(DadElement e, String t) {
@@ -277,7 +283,9 @@ public final class PocketContourEditor {
     /** The first reason the contour is not taken: a bad cell first, then the contour as a whole. */
     public Optional<String> refusal() {
         Optional<Cell> first = problems.keySet().stream()
-                .min((x, y) -> x.row() != y.row() ? Integer.compare(x.row(), y.row()) : x.column().compareTo(y.column()));
+                .min((x, y) -> x.row() != y.row()
+                        ? Integer.compare(x.row(), y.row())
+                        : x.column().compareTo(y.column()));
         if (first.isPresent()) {
             return Optional.of(problems.get(first.get()));
         }
@@ -297,8 +305,10 @@ public final class PocketContourEditor {
     public PlotScene scene() {
         Optional<List<Curve2>> curves = contour().curves();
         if (curves.isEmpty()) {
-            return PlotScene.empty(elements.size() < DadContour.MIN_ELEMENTS ? "Type the contour's elements"
-                    : "The contour does not close");
+            return PlotScene.empty(
+                    elements.size() < DadContour.MIN_ELEMENTS
+                            ? "Type the contour's elements"
+                            : "The contour does not close");
         }
         List<Curve2> all = new ArrayList<>();
         PlotScene scene = PlotScene.empty("contour as typed");
@@ -311,7 +321,9 @@ public final class PocketContourEditor {
         }
         scene = scene.with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, all));
         if (selected >= 0 && curves.get().get(selected) != null) {
-            scene = scene.with(new PlotScene.Layer("selected element", PlotScene.Style.WARNING,
+            scene = scene.with(new PlotScene.Layer(
+                    "selected element",
+                    PlotScene.Style.WARNING,
                     List.of(curves.get().get(selected))));
         }
         return scene;

@@ -17,7 +17,6 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketPost;
@@ -45,8 +44,8 @@ final class PocketTab implements ModuleTab {
     private final JTextField contour = new JTextField(24);
     private final JTextField[] tech = new JTextField[PocketViewModel.LABELS.size()];
     private final JComboBox<PocketPost> post = new JComboBox<>(PocketViewModel.POSTS.toArray(new PocketPost[0]));
-    private final JComboBox<MillingDirection> direction = new JComboBox<>(
-            PocketViewModel.DIRECTIONS.toArray(new MillingDirection[0]));
+    private final JComboBox<MillingDirection> direction =
+            new JComboBox<>(PocketViewModel.DIRECTIONS.toArray(new MillingDirection[0]));
     private final JComboBox<String> entry = new JComboBox<>(PocketViewModel.ENTRIES.toArray(new String[0]));
     private final JTextField entryAngle = new JTextField(8);
     private final javax.swing.JCheckBox centreCutting = new javax.swing.JCheckBox("Centre-cutting cutter");
@@ -58,8 +57,8 @@ final class PocketTab implements ModuleTab {
     private boolean filling;
     private final TypingPause typing = new TypingPause(this::commit);
     private final PocketContourEditor editor = new PocketContourEditor();
-    private final ContourEditorPanel editorPanel = new ContourEditorPanel(editor, this::contourEdited,
-            () -> plot.show(editor.scene()), this::saveContour);
+    private final ContourEditorPanel editorPanel =
+            new ContourEditorPanel(editor, this::contourEdited, () -> plot.show(editor.scene()), this::saveContour);
 
     PocketTab(AppContext ctx) {
         this.ctx = ctx;
@@ -128,8 +127,8 @@ final class PocketTab implements ModuleTab {
         form.add(run);
         saveProgram.setName("pocket-save-program");
         saveProgram.setMnemonic('S');
-        saveProgram.setToolTipText("Write the computed NC program to a file (a program that fails the check is not"
-                + " written)");
+        saveProgram.setToolTipText(
+                "Write the computed NC program to a file (a program that fails the check is not" + " written)");
         saveProgram.addActionListener(e -> saveProgram());
         form.add(saveProgram);
         // the reason under the form, as wide as it: a long one wraps instead of being cut off
@@ -154,7 +153,7 @@ final class PocketTab implements ModuleTab {
         ctx.model().addListener(e -> {
             if (MainViewModel.DOCUMENT.equals(e.getPropertyName())
                     || MainViewModel.JOB.equals(e.getPropertyName())
-                    && !ctx.model().job().pocket().equals(shown)) {
+                            && !ctx.model().job().pocket().equals(shown)) {
                 showJob();
             }
         });
@@ -185,8 +184,11 @@ final class PocketTab implements ModuleTab {
         nc.setText("");
         editor.load(model.editorContour());
         editorPanel.rowsChanged();
-        plot.show(editor.rows() > 0 ? editor.scene()
-                : PlotScene.empty(shown.isPresent() ? "Press Compute" : "Choose a contour or type its elements"));
+        plot.show(
+                editor.rows() > 0
+                        ? editor.scene()
+                        : PlotScene.empty(
+                                shown.isPresent() ? "Press Compute" : "Choose a contour or type its elements"));
         fieldsChanged();
     }
 
@@ -345,10 +347,16 @@ final class PocketTab implements ModuleTab {
         }
         mark(entryAngle, problems);
         run.setEnabled(problems.isEmpty());
-        run.setToolTipText(problems.isEmpty() ? "Plan the pocket and show its passes and program"
-                : "Correct the marked field first");
-        say(problems.isEmpty() ? " " : problems.values().iterator().next()
-                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""), !problems.isEmpty());
+        run.setToolTipText(
+                problems.isEmpty()
+                        ? "Plan the pocket and show its passes and program"
+                        : "Correct the marked field first");
+        say(
+                problems.isEmpty()
+                        ? " "
+                        : problems.values().iterator().next()
+                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""),
+                !problems.isEmpty());
         return problems;
     }
 
@@ -360,8 +368,11 @@ final class PocketTab implements ModuleTab {
         status.setForeground(problem ? new Color(180, 0, 0) : Color.BLACK);
         // Swing's HTML takes CSS pixels as points (4/3 of a screen pixel at 96 dpi)
         int width = Math.max(180, (form.getWidth() - 12) * 3 / 4);
-        status.setText(text.length() <= 40 ? text : "<html><div style='width:" + width + "px'>"
-                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
+        status.setText(
+                text.length() <= 40
+                        ? text
+                        : "<html><div style='width:" + width + "px'>"
+                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
         status.setToolTipText(text.isBlank() ? null : text);
     }
 
@@ -405,8 +416,11 @@ final class PocketTab implements ModuleTab {
         PocketSettings s = model.settings();
         String text = model.result().orElseThrow().nc();
         try {
-            org.fresa.job.ProgramChecks.require(file.getFileName().toString(), text,
-                    org.fresa.job.ProgramChecks.dialect(s.post().word()), org.fresa.job.ProgramChecks.pocket(s));
+            org.fresa.job.ProgramChecks.require(
+                    file.getFileName().toString(),
+                    text,
+                    org.fresa.job.ProgramChecks.dialect(s.post().word()),
+                    org.fresa.job.ProgramChecks.pocket(s));
             org.fresa.job.AtomicFiles.writeString(file, text);
             say("Saved " + file, false);
         } catch (org.fresa.job.ProgramChecks.RefusedProgram e) {
@@ -426,21 +440,30 @@ final class PocketTab implements ModuleTab {
         PocketViewModel computing = model;
         int generation = ctx.model().generation();
         say("computing", false);
-        ctx.tasks().start("Pocket", progress -> {
-            PocketViewModel.Outcome o = PocketViewModel.outcome(settings);
-            return new Shown(o, o.result().map(r -> TextDocuments.of(r.report())).orElse(null),
-                    o.result().map(r -> TextDocuments.of(r.nc())).orElse(null));
-        }, shown -> {
-            if (computing == model && generation == ctx.model().generation()) {
-                show(settings, shown);
-            }
-        });
+        ctx.tasks()
+                .start(
+                        "Pocket",
+                        progress -> {
+                            PocketViewModel.Outcome o = PocketViewModel.outcome(settings);
+                            return new Shown(
+                                    o,
+                                    o.result()
+                                            .map(r -> TextDocuments.of(r.report()))
+                                            .orElse(null),
+                                    o.result()
+                                            .map(r -> TextDocuments.of(r.nc()))
+                                            .orElse(null));
+                        },
+                        shown -> {
+                            if (computing == model && generation == ctx.model().generation()) {
+                                show(settings, shown);
+                            }
+                        });
     }
 
     /** An outcome with its texts as documents, filled off the event thread. */
-    private record Shown(PocketViewModel.Outcome outcome, javax.swing.text.Document report,
-            javax.swing.text.Document nc) {
-    }
+    private record Shown(
+            PocketViewModel.Outcome outcome, javax.swing.text.Document report, javax.swing.text.Document nc) {}
 
     private void show(PocketSettings settings, Shown result) {
         model.show(result.outcome());

@@ -17,13 +17,13 @@ import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketPost;
-import org.fresa.pocket.MillingDirection;
+import org.fresa.job.PocketService;
 import org.fresa.job.SettingRange;
 import org.fresa.job.SettingRanges.Pocket;
-import org.fresa.model.ExactDecimal;
-import org.fresa.job.PocketService;
 import org.fresa.model.CamInputException;
+import org.fresa.model.ExactDecimal;
 import org.fresa.pocket.LoopState;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketElement;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketToolpath;
@@ -50,9 +50,16 @@ public final class PocketViewModel {
 
         /** A result whose program is checked against the settings' limits. */
         static Result checked(PlotScene scene, String report, String nc, PocketSettings settings) {
-            return new Result(scene, report, nc, org.fresa.check.ProgramCheck.of(nc,
-                    org.fresa.job.ProgramChecks.dialect(settings.post().word()), org.fresa.job.ProgramChecks.pocket(settings))
-                    .failure());
+            return new Result(
+                    scene,
+                    report,
+                    nc,
+                    org.fresa.check.ProgramCheck.of(
+                                    nc,
+                                    org.fresa.job.ProgramChecks.dialect(
+                                            settings.post().word()),
+                                    org.fresa.job.ProgramChecks.pocket(settings))
+                            .failure());
         }
     }
 
@@ -61,18 +68,43 @@ public final class PocketViewModel {
     /** The milling directions, the default first. */
     public static final List<MillingDirection> DIRECTIONS = Pocket.DIRECTION.values();
     /** The technology fields, in the order shown, with their units. */
-    public static final List<String> LABELS = List.of("Tool diameter (mm)", "Cut fraction", "Finish fraction",
-            "Z top (mm)", "Z bottom (mm)", "Max depth per pass (mm)", "Spindle (rpm)", "Feed (mm/min)",
+    public static final List<String> LABELS = List.of(
+            "Tool diameter (mm)",
+            "Cut fraction",
+            "Finish fraction",
+            "Z top (mm)",
+            "Z bottom (mm)",
+            "Max depth per pass (mm)",
+            "Spindle (rpm)",
+            "Feed (mm/min)",
             "Finish feed (mm/min)");
     /** The field names of the technology fields (for tests and accessibility). */
-    public static final List<String> NAMES = List.of("pocket-tool", "pocket-cut", "pocket-finish", "pocket-z-top",
-            "pocket-z-bottom", "pocket-max-depth", "pocket-spindle", "pocket-feed", "pocket-finish-feed");
-    private static final List<SettingRange> RANGES = List.of(Pocket.TOOL_DIAMETER, Pocket.CUT, Pocket.FINISH,
-            Pocket.Z_TOP, Pocket.Z_BOTTOM, Pocket.MAX_DEPTH, Pocket.SPINDLE, Pocket.FEED, Pocket.FINISH_FEED);
+    public static final List<String> NAMES = List.of(
+            "pocket-tool",
+            "pocket-cut",
+            "pocket-finish",
+            "pocket-z-top",
+            "pocket-z-bottom",
+            "pocket-max-depth",
+            "pocket-spindle",
+            "pocket-feed",
+            "pocket-finish-feed");
+
+    private static final List<SettingRange> RANGES = List.of(
+            Pocket.TOOL_DIAMETER,
+            Pocket.CUT,
+            Pocket.FINISH,
+            Pocket.Z_TOP,
+            Pocket.Z_BOTTOM,
+            Pocket.MAX_DEPTH,
+            Pocket.SPINDLE,
+            Pocket.FEED,
+            Pocket.FINISH_FEED);
     /** The key of the contour field in {@link #problems()}. */
     public static final String CONTOUR = "pocket-contour";
     /** The names of the entry fields: the kind, the angle (a key of {@link #problems()}) and centre-cutting. */
     public static final String ENTRY = "pocket-entry";
+
     public static final String ENTRY_ANGLE = "pocket-entry-angle";
     public static final String CENTRE_CUTTING = "pocket-centre-cutting";
     /** The entry field's label. */
@@ -97,8 +129,17 @@ public final class PocketViewModel {
     }
 
     private void showTechnology(PocketSettings p) {
-        double[] v = {p.toolDiameterMm(), p.cutFraction(), p.finishFraction(), p.zTopMm(), p.zBottomMm(),
-            p.maxDepthPerPassMm(), p.spindleRpm(), p.feedMmPerMin(), p.finishFeedMmPerMin()};
+        double[] v = {
+            p.toolDiameterMm(),
+            p.cutFraction(),
+            p.finishFraction(),
+            p.zTopMm(),
+            p.zBottomMm(),
+            p.maxDepthPerPassMm(),
+            p.spindleRpm(),
+            p.feedMmPerMin(),
+            p.finishFeedMmPerMin()
+        };
         for (int i = 0; i < v.length; i++) {
             values[i] = ExactDecimal.of(v[i]);
         }
@@ -154,7 +195,8 @@ public final class PocketViewModel {
             try {
                 Path file = Path.of(contourText);
                 return org.fresa.pocket.DadReader.contour(
-                        java.nio.file.Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1), file.toString());
+                        java.nio.file.Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1),
+                        file.toString());
             } catch (IOException | CamInputException | java.nio.file.InvalidPathException e) {
                 // the planner's message for the file comes with Compute
             }
@@ -238,9 +280,12 @@ public final class PocketViewModel {
                     out.put(NAMES.get(i), label + ": " + RANGES.get(i).problem(v) + ".");
                 }
             } catch (NumberFormatException e) {
-                out.put(NAMES.get(i), label + ": '" + values[i] + "' is not a number"
-                        + (values[i].contains(",") ? " (decimals take a point: " + values[i].replace(',', '.') + ")."
-                                : "."));
+                out.put(
+                        NAMES.get(i),
+                        label + ": '" + values[i] + "' is not a number"
+                                + (values[i].contains(",")
+                                        ? " (decimals take a point: " + values[i].replace(',', '.') + ")."
+                                        : "."));
             }
         }
         try {
@@ -249,8 +294,12 @@ public final class PocketViewModel {
                 out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": " + Pocket.ENTRY_ANGLE.problem(a) + ".");
             }
         } catch (NumberFormatException e) {
-            out.put(ENTRY_ANGLE, ENTRY_ANGLE_LABEL + ": '" + entryAngle + "' is not a number"
-                    + (entryAngle.contains(",") ? " (decimals take a point: " + entryAngle.replace(',', '.') + ")." : "."));
+            out.put(
+                    ENTRY_ANGLE,
+                    ENTRY_ANGLE_LABEL + ": '" + entryAngle + "' is not a number"
+                            + (entryAngle.contains(",")
+                                    ? " (decimals take a point: " + entryAngle.replace(',', '.') + ")."
+                                    : "."));
         }
         return out;
     }
@@ -264,11 +313,15 @@ public final class PocketViewModel {
         for (int i = 0; i < v.length; i++) {
             v[i] = Double.parseDouble(values[i]);
         }
-        PocketSettings s = new PocketSettings(typedContourName(), v[0], v[1], v[2], v[3], v[4],
-                v[5], v[6], v[7], v[8], post, direction).withEntry(org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry), Double.parseDouble(entryAngle),
-                centreCutting);
+        PocketSettings s = new PocketSettings(
+                        typedContourName(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post, direction)
+                .withEntry(
+                        org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry),
+                        Double.parseDouble(entryAngle),
+                        centreCutting);
         return Optional.of(elements.isPresent() ? s.withElements(s.contour(), elements.get()) : s);
     }
+
     private Optional<Result> result = Optional.empty();
     private Optional<String> error = Optional.empty();
 
@@ -289,8 +342,7 @@ public final class PocketViewModel {
     }
 
     /** The outcome of one computation: a result or the reason there is none. */
-    public record Outcome(Optional<Result> result, Optional<String> error) {
-    }
+    public record Outcome(Optional<Result> result, Optional<String> error) {}
 
     /** Computes with the current settings (the tab does it in the background with {@link #outcome}). */
     public void compute() {
@@ -311,8 +363,9 @@ public final class PocketViewModel {
         if (result.isEmpty()) {
             return Optional.of("There is no program to save: press Compute first.");
         }
-        return result.get().refusal().map(f -> "The program is not saved: it fails the program check at "
-                + f.message());
+        return result.get()
+                .refusal()
+                .map(f -> "The program is not saved: it fails the program check at " + f.message());
     }
 
     /**
@@ -322,22 +375,32 @@ public final class PocketViewModel {
      */
     public static Outcome outcome(PocketSettings checked) {
         PocketSettings settings = checked.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE && !checked.centreCutting()
-                ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true) : checked;
+                ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true)
+                : checked;
         try {
             String name = settings.contour().getFileName().toString();
             if (PocketService.mayHaveIslands(settings)) {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
                     RegionPocket.Plan rp = PocketService.regionPlan(settings, contours);
-                    return new Outcome(Optional.of(Result.checked(regionScene(contours, rp), regionReport(contours, rp),
-                            PocketService.regionProgram(rp, settings.post(), name), checked)), Optional.empty());
+                    return new Outcome(
+                            Optional.of(Result.checked(
+                                    regionScene(contours, rp),
+                                    regionReport(contours, rp),
+                                    PocketService.regionProgram(rp, settings.post(), name),
+                                    checked)),
+                            Optional.empty());
                 }
             }
             PocketPlan plan = PocketService.plan(settings);
-            String nc = PocketService.program(plan, settings.post(), settings.contour().getFileName().toString(),
-                    settings.climb(), settings.entryRule());
-            return new Outcome(Optional.of(Result.checked(scene(plan, settings), report(plan), nc, checked)),
-                    Optional.empty());
+            String nc = PocketService.program(
+                    plan,
+                    settings.post(),
+                    settings.contour().getFileName().toString(),
+                    settings.climb(),
+                    settings.entryRule());
+            return new Outcome(
+                    Optional.of(Result.checked(scene(plan, settings), report(plan), nc, checked)), Optional.empty());
         } catch (CamInputException e) {
             return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));
         } catch (java.nio.file.NoSuchFileException e) {
@@ -389,11 +452,17 @@ public final class PocketViewModel {
 
     private static String regionReport(List<Contour> contours, RegionPocket.Plan plan) {
         StringBuilder sb = new StringBuilder();
-        sb.append(String.format(Locale.ROOT, "%d island(s): Fresa's region engine (the thesis's tree has none)%n",
+        sb.append(String.format(
+                Locale.ROOT,
+                "%d island(s): Fresa's region engine (the thesis's tree has none)%n",
                 contours.size() - 1));
         for (RegionPocket.Level l : plan.levels()) {
             long faces = l.loops().stream().filter(Contour::isCcw).count();
-            sb.append(String.format(Locale.ROOT, "offset %8.3f  %d sub-area(s), %d loop(s)%n", l.offsetMm(), faces,
+            sb.append(String.format(
+                    Locale.ROOT,
+                    "offset %8.3f  %d sub-area(s), %d loop(s)%n",
+                    l.offsetMm(),
+                    faces,
                     l.loops().size()));
         }
         return sb.toString();
@@ -424,8 +493,8 @@ public final class PocketViewModel {
 
     private static PlotScene scene(PocketPlan plan, PocketSettings settings) throws ToolTooLargeException {
         LoopState ref = plan.recognition().reference();
-        PlotScene scene = PlotScene.empty("pocket")
-                .with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, curves(ref, 0)));
+        PlotScene scene =
+                PlotScene.empty("pocket").with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, curves(ref, 0)));
         List<Curve2> sub = new ArrayList<>();
         collectSubcontours(plan.recognition().root(), sub);
         scene = scene.with(new PlotScene.Layer("subcontours", PlotScene.Style.AUX, sub));
@@ -469,7 +538,10 @@ public final class PocketViewModel {
 
     private static void tree(RecognitionNode n, String indent, StringBuilder sb) {
         for (LoopState s : n.states()) {
-            sb.append(indent).append("SC").append(n.id()).append(' ')
+            sb.append(indent)
+                    .append("SC")
+                    .append(n.id())
+                    .append(' ')
                     .append(s.elements().stream().map(PocketElement::toString).toList())
                     .append(String.format(Locale.ROOT, "  t = %.6f%n", s.tFrom()));
         }
@@ -485,8 +557,22 @@ public final class PocketViewModel {
 
     /** The same settings with another contour file. */
     static PocketSettings withContour(PocketSettings s, Path contour) {
-        return new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(), s.finishFraction(), s.zTopMm(),
-                s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(), s.finishFeedMmPerMin(),
-                s.post(), s.direction(), s.entry(), s.entryAngleDeg(), s.centreCutting(), s.elements());
+        return new PocketSettings(
+                contour,
+                s.toolDiameterMm(),
+                s.cutFraction(),
+                s.finishFraction(),
+                s.zTopMm(),
+                s.zBottomMm(),
+                s.maxDepthPerPassMm(),
+                s.spindleRpm(),
+                s.feedMmPerMin(),
+                s.finishFeedMmPerMin(),
+                s.post(),
+                s.direction(),
+                s.entry(),
+                s.entryAngleDeg(),
+                s.centreCutting(),
+                s.elements());
     }
 }

@@ -24,7 +24,6 @@ import org.fresa.job.JobSettings;
 import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.CamInputException;
-import org.jfree.chart.JFreeChart;
 import org.jfree.chart.plot.ValueMarker;
 
 /**
@@ -37,8 +36,9 @@ import org.jfree.chart.plot.ValueMarker;
 final class PositionTab implements ModuleTab {
 
     private static final int[] RT_KEYS = {KeyEvent.VK_X, KeyEvent.VK_Y, KeyEvent.VK_Z, KeyEvent.VK_T};
-    private static final int[] TP_KEYS = {KeyEvent.VK_A, KeyEvent.VK_B, KeyEvent.VK_E, KeyEvent.VK_I, KeyEvent.VK_G,
-        KeyEvent.VK_N};
+    private static final int[] TP_KEYS = {
+        KeyEvent.VK_A, KeyEvent.VK_B, KeyEvent.VK_E, KeyEvent.VK_I, KeyEvent.VK_G, KeyEvent.VK_N
+    };
 
     private final AppContext ctx;
     private final RobotRunModel runs;
@@ -54,15 +54,15 @@ final class PositionTab implements ModuleTab {
     private final JTextArea summary = new JTextArea(8, 26);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
-    private final javax.swing.table.DefaultTableModel errorAxesModel = new javax.swing.table.DefaultTableModel(
-            PositionViewModel.ERROR_COLUMNS, 0) {
-        private static final long serialVersionUID = 1L;
+    private final javax.swing.table.DefaultTableModel errorAxesModel =
+            new javax.swing.table.DefaultTableModel(PositionViewModel.ERROR_COLUMNS, 0) {
+                private static final long serialVersionUID = 1L;
 
-        @Override
-        public boolean isCellEditable(int row, int column) {
-            return false;
-        }
-    };
+                @Override
+                public boolean isCellEditable(int row, int column) {
+                    return false;
+                }
+            };
     private final javax.swing.JTable errorAxes = new javax.swing.JTable(errorAxesModel);
     // the charts of the last result; the panels draw new ones off the event thread
     private transient TrajectoryCharts charts;
@@ -73,8 +73,8 @@ final class PositionTab implements ModuleTab {
     private boolean loading;
     private String drawnRobot = "";
     private final JLabel reach = new JLabel(" ");
-    private final transient LiveReachability live = new LiveReachability(this::showLive, this::showLiveCharts,
-            this::liveFailed);
+    private final transient LiveReachability live =
+            new LiveReachability(this::showLive, this::showLiveCharts, this::liveFailed);
     // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
     private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
@@ -89,9 +89,14 @@ final class PositionTab implements ModuleTab {
         this.ctx = ctx;
         this.runs = runs;
         JPanel fields = new JPanel(new GridLayout(2, 1));
-        fields.add(row("Robot -> table (mm, deg):", "position-rt-", PositionViewModel.ROBOT_TABLE, robotTable, RT_KEYS,
-                true));
-        fields.add(row("Table -> piece (mm, deg):", "position-tp-", PositionViewModel.TABLE_PIECE, tablePiece, TP_KEYS,
+        fields.add(row(
+                "Robot -> table (mm, deg):", "position-rt-", PositionViewModel.ROBOT_TABLE, robotTable, RT_KEYS, true));
+        fields.add(row(
+                "Table -> piece (mm, deg):",
+                "position-tp-",
+                PositionViewModel.TABLE_PIECE,
+                tablePiece,
+                TP_KEYS,
                 false));
         compute.setName("position-compute");
         compute.setMnemonic(KeyEvent.VK_C);
@@ -179,7 +184,8 @@ final class PositionTab implements ModuleTab {
             }
         });
         panel.addHierarchyListener(e -> {
-            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && panel.isShowing()
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0
+                    && panel.isShowing()
                     && vm.problems().isEmpty()) {
                 requestLive();
             }
@@ -191,7 +197,8 @@ final class PositionTab implements ModuleTab {
     private JPanel row(String title, String prefix, String[] names, JTextField[] out, int[] keys, boolean robot) {
         JPanel p = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
         JLabel t = new JLabel(title);
-        t.setPreferredSize(new java.awt.Dimension(Math.max(190, t.getPreferredSize().width), t.getPreferredSize().height));
+        t.setPreferredSize(
+                new java.awt.Dimension(Math.max(190, t.getPreferredSize().width), t.getPreferredSize().height));
         p.add(t);
         for (int i = 0; i < names.length; i++) {
             int index = i;
@@ -278,7 +285,8 @@ final class PositionTab implements ModuleTab {
     private static String robotKey(String nameOrFile) {
         try {
             Path p = Path.of(nameOrFile);
-            return java.nio.file.Files.isRegularFile(p) ? nameOrFile + "@" + java.nio.file.Files.getLastModifiedTime(p)
+            return java.nio.file.Files.isRegularFile(p)
+                    ? nameOrFile + "@" + java.nio.file.Files.getLastModifiedTime(p)
                     : nameOrFile;
         } catch (java.io.IOException | java.nio.file.InvalidPathException e) {
             return nameOrFile;
@@ -305,8 +313,12 @@ final class PositionTab implements ModuleTab {
         Map<String, String> problems = vm.problems();
         mark(robotTable, "position-rt-", problems);
         mark(tablePiece, "position-tp-", problems);
-        messages.setText(problems.isEmpty() ? " " : problems.size() == 1 ? problems.values().iterator().next()
-                : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
+        messages.setText(
+                problems.isEmpty()
+                        ? " "
+                        : problems.size() == 1
+                                ? problems.values().iterator().next()
+                                : problems.values().iterator().next() + " (and " + (problems.size() - 1) + " more)");
         if (problems.isEmpty()) {
             // asked before the job takes the placements: the other tabs' answers to the new job run
             // on the event thread while the worker solves (the inputs are the same, the job's
@@ -340,12 +352,22 @@ final class PositionTab implements ModuleTab {
         if (stepnc.isEmpty() || !vm.problems().isEmpty()) {
             return java.util.Optional.empty();
         }
-        JobSettings.RobotSettings r = ctx.model().job().robot().orElse(new JobSettings.RobotSettings("irb140",
-                org.fresa.model.Placement.ORIGIN, org.fresa.model.Placement.ORIGIN,
-                JobSettings.RobotSettings.DEFAULT_FORMATS));
-        return java.util.Optional.of(new LiveReachability.Inputs(stepnc.get().file(), stepnc.get().choices(), r.robot(),
-                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), vm.robotTablePlacement(),
-                vm.tablePiecePlacement(), r.formats()));
+        JobSettings.RobotSettings r = ctx.model()
+                .job()
+                .robot()
+                .orElse(new JobSettings.RobotSettings(
+                        "irb140",
+                        org.fresa.model.Placement.ORIGIN,
+                        org.fresa.model.Placement.ORIGIN,
+                        JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return java.util.Optional.of(new LiveReachability.Inputs(
+                stepnc.get().file(),
+                stepnc.get().choices(),
+                r.robot(),
+                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                vm.robotTablePlacement(),
+                vm.tablePiecePlacement(),
+                r.formats()));
     }
 
     /** Asks which targets are reached at the placements shown (worked out in the background). */
@@ -384,9 +406,17 @@ final class PositionTab implements ModuleTab {
         double workerCpuMs = a.cpuNanos() < 0 ? Double.NaN : a.cpuNanos() / 1e6;
         cpuMs.add(workerCpuMs + edtCpuMs);
         LiveReachability.Phases p = a.phases();
-        splitsMs.add(new double[] {(p.asked() - p.changed()) / 1e6, (p.started() - p.asked()) / 1e6,
-            (p.solved() - p.started()) / 1e6, (p.scened() - p.solved()) / 1e6, (shown - p.posted()) / 1e6,
-            (modelled - shown) / 1e6, (painted - modelled) / 1e6, workerCpuMs, edtCpuMs});
+        splitsMs.add(new double[] {
+            (p.asked() - p.changed()) / 1e6,
+            (p.started() - p.asked()) / 1e6,
+            (p.solved() - p.started()) / 1e6,
+            (p.scened() - p.solved()) / 1e6,
+            (shown - p.posted()) / 1e6,
+            (modelled - shown) / 1e6,
+            (painted - modelled) / 1e6,
+            workerCpuMs,
+            edtCpuMs
+        });
     }
 
     /** The plots of the live answer shown, made after it. */
@@ -405,7 +435,8 @@ final class PositionTab implements ModuleTab {
 
     /** A plot image arrived: the first one up to date after a live answer ends its measurement. */
     private void plotDrawn() {
-        OffThreadChartPanel shown = results.getSelectedComponent() == jointsChart ? jointsChart
+        OffThreadChartPanel shown = results.getSelectedComponent() == jointsChart
+                ? jointsChart
                 : results.getSelectedComponent() == errorChart ? errorChart : null;
         if (plotAskedNanos >= 0 && shown != null && shown.isUpToDate()) {
             plotLatenciesMs.add((System.nanoTime() - plotAskedNanos) / 1e6);
@@ -448,8 +479,8 @@ final class PositionTab implements ModuleTab {
     }
 
     /** The names of {@link #splitsMs()}'s figures, in order. */
-    static final java.util.List<String> SPLITS = java.util.List.of("fields", "queue", "reach", "scene", "to-edt",
-            "show", "paint", "worker-cpu", "edt-cpu");
+    static final java.util.List<String> SPLITS =
+            java.util.List.of("fields", "queue", "reach", "scene", "to-edt", "show", "paint", "worker-cpu", "edt-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {
@@ -486,34 +517,46 @@ final class PositionTab implements ModuleTab {
         // Compute answers for these fields: a live answer still on its way would only hide it
         var asked = liveInputs();
         asked.ifPresent(live::answeredBy);
-        ctx.tasks().start("Computing the trajectory on " + r.robot(), progress -> {
-            PositionViewModel.Planned planned = PositionViewModel.plan(file, r.robot(),
-                    new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), stepnc.get().choices(), progress);
-            RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
-                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
-            progress.progress(-1, "preparing the plots");
-            TrajectoryCharts c = TrajectoryCharts.of(solved);
-            return new Charted(solved, c, c.joints(1), c.errors(1),
-                    PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
-                    planned.spindle());
-        }, charted -> {
-                    if (generation != ctx.model().generation()) {
-                        return;
-                    }
-                    RobotTrajectoryService.Solved solved = charted.solved();
-                    String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-                    if (!live.lastAsked().equals(asked)) {
-                        // the fields changed while it ran: the live view of the new ones stays
-                        runs.set(new RobotRunModel.Run(solved, name));
-                        return;
-                    }
-                    vm.setResult(solved, charted.scene(), charted.spindle());
-                    reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
-                    reach.setText(vm.reachLine());
-                    runs.set(new RobotRunModel.Run(solved, name));
-                    showCharts(charted.charts(), charted.joints(), charted.error());
-                    showResult();
-                });
+        ctx.tasks()
+                .start(
+                        "Computing the trajectory on " + r.robot(),
+                        progress -> {
+                            PositionViewModel.Planned planned = PositionViewModel.plan(
+                                    file,
+                                    r.robot(),
+                                    new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                    stepnc.get().choices(),
+                                    progress);
+                            RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
+                                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
+                            progress.progress(-1, "preparing the plots");
+                            TrajectoryCharts c = TrajectoryCharts.of(solved);
+                            return new Charted(
+                                    solved,
+                                    c,
+                                    c.joints(1),
+                                    c.errors(1),
+                                    PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
+                                    planned.spindle());
+                        },
+                        charted -> {
+                            if (generation != ctx.model().generation()) {
+                                return;
+                            }
+                            RobotTrajectoryService.Solved solved = charted.solved();
+                            String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+                            if (!live.lastAsked().equals(asked)) {
+                                // the fields changed while it ran: the live view of the new ones stays
+                                runs.set(new RobotRunModel.Run(solved, name));
+                                return;
+                            }
+                            vm.setResult(solved, charted.scene(), charted.spindle());
+                            reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
+                            reach.setText(vm.reachLine());
+                            runs.set(new RobotRunModel.Run(solved, name));
+                            showCharts(charted.charts(), charted.joints(), charted.error());
+                            showResult();
+                        });
     }
 
     /**
@@ -534,29 +577,41 @@ final class PositionTab implements ModuleTab {
         ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
-        ctx.tasks().start("Searching the table placement for " + r.robot(),
-                progress -> org.fresa.job.AutoPlacement.search(file, stepnc.get().choices(), r.robot(), r.tablePiece(),
-                        new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()), progress),
-                outcome -> {
-                    if (generation != ctx.model().generation()) {
-                        return;
-                    }
-                    if (outcome.found()) {
-                        // the fields follow the job (its listener loads them)
-                        ctx.model().setJob(PositionViewModel.withRobotTable(ctx.model().job(), outcome.robotTable()));
-                        messages.setText(" ");
-                        summary.setText(outcome.sentence());
-                    } else {
-                        Dialogs.info(ctx.owner(), "Place automatically", outcome.sentence());
-                    }
-                });
+        ctx.tasks()
+                .start(
+                        "Searching the table placement for " + r.robot(),
+                        progress -> org.fresa.job.AutoPlacement.search(
+                                file,
+                                stepnc.get().choices(),
+                                r.robot(),
+                                r.tablePiece(),
+                                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                progress),
+                        outcome -> {
+                            if (generation != ctx.model().generation()) {
+                                return;
+                            }
+                            if (outcome.found()) {
+                                // the fields follow the job (its listener loads them)
+                                ctx.model()
+                                        .setJob(PositionViewModel.withRobotTable(
+                                                ctx.model().job(), outcome.robotTable()));
+                                messages.setText(" ");
+                                summary.setText(outcome.sentence());
+                            } else {
+                                Dialogs.info(ctx.owner(), "Place automatically", outcome.sentence());
+                            }
+                        });
     }
 
     /** A solved trajectory with its charts, made off the event thread. */
-    private record Charted(RobotTrajectoryService.Solved solved, TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error, CellScene scene,
-            org.fresa.geom.Transform3 spindle) {
-    }
+    private record Charted(
+            RobotTrajectoryService.Solved solved,
+            TrajectoryCharts charts,
+            TrajectoryCharts.Marked joints,
+            TrajectoryCharts.Marked error,
+            CellScene scene,
+            org.fresa.geom.Transform3 spindle) {}
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
         OffThreadChartPanel p = new OffThreadChartPanel(null, picture);

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import org.fresa.geom.Tolerance;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.job.Job;
@@ -15,7 +14,6 @@ import org.fresa.job.JobSettings;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
-import org.fresa.job.StepNcService;
 import org.fresa.kin.Robot;
 import org.fresa.kin.SerialRobot;
 import org.fresa.kin.TrajectoryPoint;
@@ -136,41 +134,78 @@ final class PositionViewModel {
     /** The job with these placements (robot and formats kept, irb140 when it had none). */
     Job applyTo(Job job) {
         JobSettings.RobotSettings old = job.robot().orElse(JobSettings.RobotSettings.DEFAULTS);
-        return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTablePlacement(), tablePiecePlacement(),
-                old.formats(), old.spindle(), old.toolLengthMm(), old.placing()));
+        return job.withRobot(new JobSettings.RobotSettings(
+                old.robot(),
+                robotTablePlacement(),
+                tablePiecePlacement(),
+                old.formats(),
+                old.spindle(),
+                old.toolLengthMm(),
+                old.placing()));
     }
 
     /** The job with this robot -> table placement (the placement search's), all else kept. */
     static Job withRobotTable(Job job, Placement robotTable) {
-        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings("irb140", Placement.ORIGIN,
-                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
-        return job.withRobot(new JobSettings.RobotSettings(old.robot(), robotTable, old.tablePiece(), old.formats(),
-                old.spindle(), old.toolLengthMm(), old.placing()));
+        JobSettings.RobotSettings old = job.robot()
+                .orElse(new JobSettings.RobotSettings(
+                        "irb140", Placement.ORIGIN, Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(
+                old.robot(),
+                robotTable,
+                old.tablePiece(),
+                old.formats(),
+                old.spindle(),
+                old.toolLengthMm(),
+                old.placing()));
     }
 
     /**
      * What {@code fresa robot} does before writing: reads the STEP-NC file, plans its toolpaths,
      * places them in the cell and solves every point. Long: run it in the background.
      */
-    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
-            Placement tablePiece, List<String> formats, ProgressMonitor progress) throws CamInputException,
-            java.io.IOException {
-        return compute(stepnc, robotName, robotTable, tablePiece, formats, org.fresa.job.RobotTools.Choice.NONE,
-                progress);
+    static RobotTrajectoryService.Solved compute(
+            Path stepnc,
+            String robotName,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            ProgressMonitor progress)
+            throws CamInputException, java.io.IOException {
+        return compute(
+                stepnc, robotName, robotTable, tablePiece, formats, org.fresa.job.RobotTools.Choice.NONE, progress);
     }
 
     /** As above, with the job's spindle and tool length: each workingstep's TCP as {@code fresa robot} makes it. */
-    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
-            Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool, ProgressMonitor progress)
+    static RobotTrajectoryService.Solved compute(
+            Path stepnc,
+            String robotName,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            org.fresa.job.RobotTools.Choice tool,
+            ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
-        return compute(stepnc, robotName, robotTable, tablePiece, formats, tool,
-                org.fresa.toolpath.PlanningChoices.DEFAULT, progress);
+        return compute(
+                stepnc,
+                robotName,
+                robotTable,
+                tablePiece,
+                formats,
+                tool,
+                org.fresa.toolpath.PlanningChoices.DEFAULT,
+                progress);
     }
 
     /** As above, with the job's planning choices: the trajectory {@code fresa run} solves. */
-    static RobotTrajectoryService.Solved compute(Path stepnc, String robotName, Placement robotTable,
-            Placement tablePiece, List<String> formats, org.fresa.job.RobotTools.Choice tool,
-            org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
+    static RobotTrajectoryService.Solved compute(
+            Path stepnc,
+            String robotName,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            org.fresa.job.RobotTools.Choice tool,
+            org.fresa.toolpath.PlanningChoices choices,
+            ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
         Planned planned = plan(stepnc, robotName, tool, choices, progress);
         return RobotTrajectoryService.solve(planned.request(robotTable, tablePiece, formats), progress);
@@ -184,14 +219,25 @@ final class PositionViewModel {
      * @param spindle the spindle nose in the flange frame (drawn with the tool)
      * @param robots the robot carrying each workingstep's TCP, one instance per TCP
      */
-    record Planned(Robot robot, org.fresa.model.Toolpath toolpath, Map<String, Transform3> tcpByLabel,
-            org.fresa.check.Limits checkLimits, Transform3 spindle,
+    record Planned(
+            Robot robot,
+            org.fresa.model.Toolpath toolpath,
+            Map<String, Transform3> tcpByLabel,
+            org.fresa.check.Limits checkLimits,
+            Transform3 spindle,
             java.util.function.Function<String, Robot> robots) {
 
         /** The request {@code fresa robot} makes of this plan at these placements. */
         RobotTrajectoryService.Request request(Placement robotTable, Placement tablePiece, List<String> formats) {
-            return new RobotTrajectoryService.Request(toolpath, robot, robotTable, tablePiece,
-                    NcPosts.CHORD_TOLERANCE_MM * 10, formats, TrajectorySolver.Options.DEFAULT, tcpByLabel,
+            return new RobotTrajectoryService.Request(
+                    toolpath,
+                    robot,
+                    robotTable,
+                    tablePiece,
+                    NcPosts.CHORD_TOLERANCE_MM * 10,
+                    formats,
+                    TrajectorySolver.Options.DEFAULT,
+                    tcpByLabel,
                     checkLimits);
         }
     }
@@ -200,19 +246,31 @@ final class PositionViewModel {
      * Reads the STEP-NC file, plans its toolpaths with the job's choices and gives each workingstep
      * its TCP. Long: in the background.
      */
-    static Planned plan(Path stepnc, String robotName, org.fresa.job.RobotTools.Choice tool,
-            org.fresa.toolpath.PlanningChoices choices, ProgressMonitor progress)
+    static Planned plan(
+            Path stepnc,
+            String robotName,
+            org.fresa.job.RobotTools.Choice tool,
+            org.fresa.toolpath.PlanningChoices choices,
+            ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
         Robot robot = RobotFiles.load(robotName);
-        org.fresa.job.ToolpathService.Planned planned = org.fresa.job.ToolpathService.compute(stepnc, choices, progress);
+        org.fresa.job.ToolpathService.Planned planned =
+                org.fresa.job.ToolpathService.compute(stepnc, choices, progress);
         var program = planned.program();
         ToolpathPlanner.Plan plan = planned.plan();
-        org.fresa.job.RobotTools.Frames tools = org.fresa.job.RobotTools.of(robot, tool, program, plan,
-                stepnc.toString());
+        org.fresa.job.RobotTools.Frames tools =
+                org.fresa.job.RobotTools.of(robot, tool, program, plan, stepnc.toString());
         org.fresa.check.Limits limits = org.fresa.job.ProgramChecks.stepnc(program, plan, choices);
-        RobotTrajectoryService.Request any = new RobotTrajectoryService.Request(tools.toolpath(), robot,
-                Placement.ORIGIN, Placement.ORIGIN, NcPosts.CHORD_TOLERANCE_MM * 10, List.of(),
-                TrajectorySolver.Options.DEFAULT, tools.tcpByLabel(), limits);
+        RobotTrajectoryService.Request any = new RobotTrajectoryService.Request(
+                tools.toolpath(),
+                robot,
+                Placement.ORIGIN,
+                Placement.ORIGIN,
+                NcPosts.CHORD_TOLERANCE_MM * 10,
+                List.of(),
+                TrajectorySolver.Options.DEFAULT,
+                tools.tcpByLabel(),
+                limits);
         return new Planned(robot, tools.toolpath(), tools.tcpByLabel(), limits, tools.spindle(), any.robotOfLabel());
     }
 
@@ -223,11 +281,16 @@ final class PositionViewModel {
      *
      * @param reach the checker of the thread that runs this (it keeps a solver per tool)
      */
-    static Optional<RobotTrajectoryService.Solved> reach(Planned planned, Placement robotTable, Placement tablePiece,
-            List<String> formats, org.fresa.kin.Reachability reach, java.util.function.BooleanSupplier stale) {
+    static Optional<RobotTrajectoryService.Solved> reach(
+            Planned planned,
+            Placement robotTable,
+            Placement tablePiece,
+            List<String> formats,
+            org.fresa.kin.Reachability reach,
+            java.util.function.BooleanSupplier stale) {
         RobotTrajectoryService.Request req = planned.request(robotTable, tablePiece, formats);
-        List<org.fresa.kin.ToolTarget> targets = RobotTrajectoryService.targets(req.toolpath(),
-                robotTable.toTransform().times(tablePiece.toTransform()), req.chordToleranceMm());
+        List<org.fresa.kin.ToolTarget> targets = RobotTrajectoryService.targets(
+                req.toolpath(), robotTable.toTransform().times(tablePiece.toTransform()), req.chordToleranceMm());
         return reach.check(targets, planned.robots(), stale)
                 .map(r -> new RobotTrajectoryService.Solved(req, targets, r));
     }
@@ -249,8 +312,8 @@ final class PositionViewModel {
     }
 
     /** As above, with the rows of its error per axis table ({@link #errorRowsOf}), made off the event thread. */
-    void setLive(RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult,
-            List<String[]> rows) {
+    void setLive(
+            RobotTrajectoryService.Solved s, CellScene atFirstPoint, Transform3 spindleOfResult, List<String[]> rows) {
         setLive(s, atFirstPoint, spindleOfResult);
         errorRows = List.copyOf(rows);
         errorRowsResult = s;
@@ -295,10 +358,19 @@ final class PositionViewModel {
         List<Map.Entry<String, Integer>> worst = new ArrayList<>(out.entrySet());
         worst.sort((a, b) -> b.getValue() - a.getValue());
         StringBuilder sb = new StringBuilder();
-        sb.append(total).append(" of ").append(targets).append(" targets out of reach of ").append(robotName)
-                .append(", in ").append(out.size()).append(out.size() == 1 ? " workingstep: " : " workingsteps: ");
+        sb.append(total)
+                .append(" of ")
+                .append(targets)
+                .append(" targets out of reach of ")
+                .append(robotName)
+                .append(", in ")
+                .append(out.size())
+                .append(out.size() == 1 ? " workingstep: " : " workingsteps: ");
         for (int i = 0; i < Math.min(4, worst.size()); i++) {
-            sb.append(i == 0 ? "" : ", ").append(worst.get(i).getKey()).append(" (").append(worst.get(i).getValue())
+            sb.append(i == 0 ? "" : ", ")
+                    .append(worst.get(i).getKey())
+                    .append(" (")
+                    .append(worst.get(i).getValue())
                     .append(')');
         }
         if (worst.size() > 4) {
@@ -401,9 +473,14 @@ final class PositionViewModel {
     /** The error per axis rows of a result (any thread): {@link #errorRows()} of a model showing it. */
     static List<String[]> errorRowsOf(TrajectorySolver.Result result) {
         List<String[]> rows = new ArrayList<>();
-        for (org.fresa.job.ErrorStatistics.Axis a : org.fresa.job.ErrorStatistics.of(result).axes()) {
-            rows.add(new String[] {a.axis() + " (" + a.unit() + ")", String.format(Locale.ROOT, "%.3g", a.mean()),
-                String.format(Locale.ROOT, "%.3g", a.min()), String.format(Locale.ROOT, "%.3g", a.max())});
+        for (org.fresa.job.ErrorStatistics.Axis a :
+                org.fresa.job.ErrorStatistics.of(result).axes()) {
+            rows.add(new String[] {
+                a.axis() + " (" + a.unit() + ")",
+                String.format(Locale.ROOT, "%.3g", a.mean()),
+                String.format(Locale.ROOT, "%.3g", a.min()),
+                String.format(Locale.ROOT, "%.3g", a.max())
+            });
         }
         return rows;
     }
@@ -415,8 +492,14 @@ final class PositionViewModel {
         }
         TrajectoryPoint p = solved.get().result().points().get(selected);
         StringBuilder sb = new StringBuilder();
-        sb.append("Point ").append(selected + 1).append(" of ").append(pointCount()).append(": ").append(p.label())
-                .append(", ").append(p.status().csv());
+        sb.append("Point ")
+                .append(selected + 1)
+                .append(" of ")
+                .append(pointCount())
+                .append(": ")
+                .append(p.label())
+                .append(", ")
+                .append(p.status().csv());
         double[] q = p.q();
         if (p.status() != TrajectoryPoint.Status.UNREACHABLE) {
             sb.append(", q =");
@@ -435,13 +518,16 @@ final class PositionViewModel {
     CellScene scene() {
         if (solved.isEmpty()) {
             Transform3 table = problems().isEmpty() ? robotTablePlacement().toTransform() : Transform3.IDENTITY;
-            Transform3 piece = problems().isEmpty() ? table.times(tablePiecePlacement().toTransform()) : table;
+            Transform3 piece =
+                    problems().isEmpty() ? table.times(tablePiecePlacement().toTransform()) : table;
             return CellScene.of(robot, CellScene.homePose(robot), table, piece, Optional.empty(), List.of(), -1);
         }
         RobotTrajectoryService.Solved s = solved.get();
         // every repaint asks: the scene of a long trajectory is worth keeping until the point changes
         List<Object> key = List.of(s, selected);
-        if (sceneCache != null && sceneCacheKey.get(0) == s && sceneCacheKey.get(1).equals(selected)) {
+        if (sceneCache != null
+                && sceneCacheKey.get(0) == s
+                && sceneCacheKey.get(1).equals(selected)) {
             return sceneCache;
         }
         sceneCache = solvedScene(s);
@@ -491,12 +577,18 @@ final class PositionViewModel {
             return CellScene.of(robot, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
         }
         Robot bare = robot.withTool(Transform3.IDENTITY);
-        CellScene scene = CellScene.of(bare, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
+        CellScene scene =
+                CellScene.of(bare, q, table, piece, Optional.of(s.request().toolpath()), pts, selected);
         Transform3 flange = bare.forward(q);
         Transform3 tip = robot.forward(q);
         Vec3 nose = flange.times(spindle.get()).translationPart();
-        return scene.withTool(new CellScene.ToolShape(flange.translationPart(), nose, tip.translationPart(),
-                diameterOf(s.request().toolpath(), label)), tip);
+        return scene.withTool(
+                new CellScene.ToolShape(
+                        flange.translationPart(),
+                        nose,
+                        tip.translationPart(),
+                        diameterOf(s.request().toolpath(), label)),
+                tip);
     }
 
     /** The diameter of the tool of a workingstep (its label), 0 when unknown. */
@@ -518,13 +610,15 @@ final class PositionViewModel {
             // the live answers follow the fields as they are typed: the view stays where the planner put it
             return List.of("live", System.identityHashCode(robot()));
         }
-        return List.of(solved.map(System::identityHashCode).orElse(0), String.join(",", robotTable),
-                String.join(",", tablePiece), System.identityHashCode(robot()));
+        return List.of(
+                solved.map(System::identityHashCode).orElse(0),
+                String.join(",", robotTable),
+                String.join(",", tablePiece),
+                System.identityHashCode(robot()));
     }
 
     /** Points of the toolpath in the robot base frame, with their status. */
-    record CellPoint(Vec3 at, TrajectoryPoint.Status status) {
-    }
+    record CellPoint(Vec3 at, TrajectoryPoint.Status status) {}
 
     List<CellPoint> cellPoints() {
         List<CellPoint> out = new ArrayList<>();
@@ -539,14 +633,19 @@ final class PositionViewModel {
     /** The table origin in the robot base frame. */
     Vec3 tableOrigin() {
         return solved.map(s -> s.request().robotTable().toTransform().translationPart())
-                .orElseGet(() -> problems().isEmpty() ? robotTablePlacement().toTransform().translationPart()
+                .orElseGet(() -> problems().isEmpty()
+                        ? robotTablePlacement().toTransform().translationPart()
                         : Vec3.ZERO);
     }
 
     /** The workpiece origin in the robot base frame. */
     Vec3 pieceOrigin() {
-        return solved.map(s -> s.request().robotTable().toTransform().times(s.request().tablePiece().toTransform())
-                .translationPart()).orElse(tableOrigin());
+        return solved.map(s -> s.request()
+                        .robotTable()
+                        .toTransform()
+                        .times(s.request().tablePiece().toTransform())
+                        .translationPart())
+                .orElse(tableOrigin());
     }
 
     /**
@@ -563,7 +662,8 @@ final class PositionViewModel {
             return List.of();
         }
         double[] q = p.q();
-        Robot robot = solved.get().request().robot().withTool(solved.get().request().tcp(p.label()));
+        Robot robot =
+                solved.get().request().robot().withTool(solved.get().request().tcp(p.label()));
         List<List<Vec3>> out = new ArrayList<>();
         if (robot instanceof SerialRobot s) {
             List<Vec3> arm = new ArrayList<>();

@@ -15,8 +15,7 @@ final class ProgramHighlight {
     /** The colour of the failing block. */
     static final Color REFUSED = new Color(255, 190, 190);
 
-    private ProgramHighlight() {
-    }
+    private ProgramHighlight() {}
 
     /**
      * Highlights a line of the text.
@@ -31,8 +30,11 @@ final class ProgramHighlight {
         }
         Element e = root.getElement(line - 1);
         try {
-            text.getHighlighter().addHighlight(e.getStartOffset(), e.getEndOffset(),
-                    new DefaultHighlighter.DefaultHighlightPainter(REFUSED));
+            text.getHighlighter()
+                    .addHighlight(
+                            e.getStartOffset(),
+                            e.getEndOffset(),
+                            new DefaultHighlighter.DefaultHighlightPainter(REFUSED));
         } catch (BadLocationException ex) {
             return false;
         }

@@ -15,8 +15,7 @@ import org.fresa.job.RobotTrajectoryService;
 final class RobotRunModel {
 
     /** A solved trajectory and the name robot programs get (the STEP-NC file's name). */
-    record Run(RobotTrajectoryService.Solved solved, String programName) {
-    }
+    record Run(RobotTrajectoryService.Solved solved, String programName) {}
 
     /**
      * The files a run of the job wrote into a folder.
@@ -33,7 +32,9 @@ final class RobotRunModel {
 
         /** The file of this name the run wrote, if it wrote one. */
         Optional<Path> file(String name) {
-            return files.stream().filter(f -> f.getFileName().toString().equals(name)).findFirst();
+            return files.stream()
+                    .filter(f -> f.getFileName().toString().equals(name))
+                    .findFirst();
         }
     }
 

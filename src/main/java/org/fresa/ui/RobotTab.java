@@ -49,7 +49,8 @@ final class RobotTab implements ModuleTab {
     private final AppContext ctx;
     private final RobotViewModel vm = new RobotViewModel();
     private final JPanel panel = new JPanel(new BorderLayout());
-    private final JComboBox<String> robots = new JComboBox<>(RobotViewModel.builtIns().toArray(String[]::new));
+    private final JComboBox<String> robots =
+            new JComboBox<>(RobotViewModel.builtIns().toArray(String[]::new));
     private final DhModel table = new DhModel();
     private final JTable dh = new JTable(table) {
         private static final long serialVersionUID = 1L;
@@ -313,8 +314,8 @@ final class RobotTab implements ModuleTab {
         private static final long serialVersionUID = 1L;
 
         @Override
-        public Component getTableCellRendererComponent(JTable t, Object value, boolean selected, boolean focus,
-                int row, int col) {
+        public Component getTableCellRendererComponent(
+                JTable t, Object value, boolean selected, boolean focus, int row, int col) {
             Component c = super.getTableCellRendererComponent(t, value, selected, focus, row, col);
             var problem = vm.problem(row, col);
             setToolTipText(problem.orElse(vm.isEditable(row, col) ? "Edit: type, then Enter" : null));
@@ -358,7 +359,10 @@ final class RobotTab implements ModuleTab {
 
     private void saveFile() {
         if (vm.edited().isEmpty()) {
-            Dialogs.error(ctx.owner(), "Save robot", "Correct the table first: " + vm.messages().get(0));
+            Dialogs.error(
+                    ctx.owner(),
+                    "Save robot",
+                    "Correct the table first: " + vm.messages().get(0));
             return;
         }
         JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.ROBOT);
@@ -383,7 +387,10 @@ final class RobotTab implements ModuleTab {
 
     private void exportSymbolic() {
         if (vm.edited().isEmpty()) {
-            Dialogs.error(ctx.owner(), "Export symbolic FK", "Correct the table first: " + vm.messages().get(0));
+            Dialogs.error(
+                    ctx.owner(),
+                    "Export symbolic FK",
+                    "Correct the table first: " + vm.messages().get(0));
             return;
         }
         JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.TEXT);
@@ -396,10 +403,14 @@ final class RobotTab implements ModuleTab {
     /** Writes the symbolic FK and Jacobian of the table's robot into a text file, in the background. */
     void exportSymbolicTo(Path file) {
         Robot r = vm.edited().orElseThrow();
-        ctx.tasks().start("Symbolic kinematics of " + r.name(), progress -> {
-            org.fresa.job.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
-            return file;
-        }, f -> uses.setText("Wrote the symbolic kinematics of " + r.name() + " to " + f));
+        ctx.tasks()
+                .start(
+                        "Symbolic kinematics of " + r.name(),
+                        progress -> {
+                            org.fresa.job.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
+                            return file;
+                        },
+                        f -> uses.setText("Wrote the symbolic kinematics of " + r.name() + " to " + f));
     }
 
     /** After an edit: show the problems now, write the robot into the job once typing pauses. */
@@ -492,11 +503,13 @@ final class RobotTab implements ModuleTab {
         for (int i = 0; i < paramFields.length; i++) {
             var p = vm.parameterProblem(i);
             paramFields[i].setBackground(p.isPresent() ? BAD : Color.WHITE);
-            paramFields[i].setToolTipText(p.orElse(Tooltips.robotParameter(vm.parameterNames().get(i))));
+            paramFields[i].setToolTipText(
+                    p.orElse(Tooltips.robotParameter(vm.parameterNames().get(i))));
         }
         String c = vm.choice();
         boolean builtIn = RobotViewModel.builtIns().contains(c);
-        String state = vm.edited().isEmpty() ? " (the table has problems: the job keeps the last valid robot)"
+        String state = vm.edited().isEmpty()
+                ? " (the table has problems: the job keeps the last valid robot)"
                 : vm.isModified() ? " (edited, being kept...)" : "";
         uses.setText("The job uses " + (builtIn ? "the built-in " + c : c) + state);
         params.setText(String.join("\n", vm.parameters()));
@@ -533,7 +546,8 @@ final class RobotTab implements ModuleTab {
                     symbolic.setText(get());
                     symbolicOf = r;
                 } catch (ExecutionException ex) {
-                    symbolic.setText("The symbolic forward kinematics failed: " + ex.getCause().getMessage());
+                    symbolic.setText("The symbolic forward kinematics failed: "
+                            + ex.getCause().getMessage());
                 } catch (InterruptedException ex) {
                     Thread.currentThread().interrupt();
                 }

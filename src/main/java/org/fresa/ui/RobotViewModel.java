@@ -46,8 +46,9 @@ import org.fresa.model.Placement;
  */
 final class RobotViewModel {
 
-    static final String[] COLUMNS = {"Joint", "Type", "theta (deg)", "d (mm)", "a (mm)", "alpha (deg)",
-        "Min (deg | mm)", "Max (deg | mm)"};
+    static final String[] COLUMNS = {
+        "Joint", "Type", "theta (deg)", "d (mm)", "a (mm)", "alpha (deg)", "Min (deg | mm)", "Max (deg | mm)"
+    };
     static final int TYPE = 1;
     static final int THETA = 2;
     static final int D = 3;
@@ -57,10 +58,14 @@ final class RobotViewModel {
     static final int MAX = 7;
     private static final String[] CELL_NAMES = {"joint", "type", "theta", "d", "a", "alpha", "min", "max"};
 
-    private static final List<String> SERIAL_PARAMS = List.of("Name", "Tool X (mm)", "Tool Y (mm)", "Tool Z (mm)",
-            "Tool RX (deg)", "Tool RY (deg)", "Tool RZ (deg)");
-    private static final List<String> TRICEPT_PARAMS = List.of("Name", "Base radius r_b (mm)",
-            "Platform radius r_p (mm)", "Platform to wrist centre d_eff (mm)", "Wrist centre to tool tip e_ffl (mm)");
+    private static final List<String> SERIAL_PARAMS = List.of(
+            "Name", "Tool X (mm)", "Tool Y (mm)", "Tool Z (mm)", "Tool RX (deg)", "Tool RY (deg)", "Tool RZ (deg)");
+    private static final List<String> TRICEPT_PARAMS = List.of(
+            "Name",
+            "Base radius r_b (mm)",
+            "Platform radius r_p (mm)",
+            "Platform to wrist centre d_eff (mm)",
+            "Wrist centre to tool tip e_ffl (mm)");
 
     private Robot robot = Robots.irb140();
     private String choice = JobSettings.RobotSettings.DEFAULTS.robot();
@@ -117,29 +122,62 @@ final class RobotViewModel {
                 DhJoint d = js.get(i);
                 boolean rev = d.type() == JointType.REVOLUTE;
                 String q = "q" + (i + 1);
-                cells.add(new String[] {q, rev ? "R" : "P", rev ? q + offset(d.thetaDeg()) : exact(d.thetaDeg()),
-                    rev ? exact(d.dMm()) : q + offset(d.dMm()), exact(d.aMm()), exact(d.alphaDeg()), exact(d.qMin()),
-                    exact(d.qMax())});
+                cells.add(new String[] {
+                    q,
+                    rev ? "R" : "P",
+                    rev ? q + offset(d.thetaDeg()) : exact(d.thetaDeg()),
+                    rev ? exact(d.dMm()) : q + offset(d.dMm()),
+                    exact(d.aMm()),
+                    exact(d.alphaDeg()),
+                    exact(d.qMin()),
+                    exact(d.qMax())
+                });
             }
             Transform3 tool = s.chain().tool();
             Vec3 zyx = tool.zyxAnglesDeg();
-            params.addAll(List.of(robot.name(), exact(tool.tx()), exact(tool.ty()), exact(tool.tz()), exact(zyx.z()),
-                    exact(zyx.y()), exact(zyx.x())));
+            params.addAll(List.of(
+                    robot.name(),
+                    exact(tool.tx()),
+                    exact(tool.ty()),
+                    exact(tool.tz()),
+                    exact(zyx.z()),
+                    exact(zyx.y()),
+                    exact(zyx.x())));
         } else if (robot instanceof TriceptRobot t) {
             List<DhJoint> wrist = t.wristChain(Transform3.IDENTITY).joints();
             for (int i = 0; i < limits.size(); i++) {
                 JointLimit l = limits.get(i);
                 if (i < 3) {
-                    cells.add(new String[] {l.name(), "P (leg)", "", "|B" + (i + 1) + " - A" + (i + 1) + "|", "", "",
-                        exact(l.min()), exact(l.max())});
+                    cells.add(new String[] {
+                        l.name(),
+                        "P (leg)",
+                        "",
+                        "|B" + (i + 1) + " - A" + (i + 1) + "|",
+                        "",
+                        "",
+                        exact(l.min()),
+                        exact(l.max())
+                    });
                 } else {
                     DhJoint d = wrist.get(i - 3);
-                    cells.add(new String[] {l.name(), "R (wrist)", "q" + (i + 1) + offset(d.thetaDeg()), exact(d.dMm()),
-                        exact(d.aMm()), exact(d.alphaDeg()), exact(l.min()), exact(l.max())});
+                    cells.add(new String[] {
+                        l.name(),
+                        "R (wrist)",
+                        "q" + (i + 1) + offset(d.thetaDeg()),
+                        exact(d.dMm()),
+                        exact(d.aMm()),
+                        exact(d.alphaDeg()),
+                        exact(l.min()),
+                        exact(l.max())
+                    });
                 }
             }
-            params.addAll(List.of(robot.name(), exact(t.baseRadiusMm()), exact(t.platformRadiusMm()),
-                    exact(t.centreOffsetMm()), exact(t.effectorLengthMm())));
+            params.addAll(List.of(
+                    robot.name(),
+                    exact(t.baseRadiusMm()),
+                    exact(t.platformRadiusMm()),
+                    exact(t.centreOffsetMm()),
+                    exact(t.effectorLengthMm())));
         }
         rebuild();
     }
@@ -303,8 +341,10 @@ final class RobotViewModel {
             Double alpha = dhCell(i, ALPHA, varCol, j, n, p);
             double[] lim = limits(i, rev ? JointType.REVOLUTE : JointType.PRISMATIC, p);
             if (theta != null && d != null && a != null && alpha != null && lim != null) {
-                joints.add(rev ? DhJoint.revolute(a, alpha, d, theta, lim[0], lim[1])
-                        : DhJoint.prismatic(a, alpha, d, theta, lim[0], lim[1]));
+                joints.add(
+                        rev
+                                ? DhJoint.revolute(a, alpha, d, theta, lim[0], lim[1])
+                                : DhJoint.prismatic(a, alpha, d, theta, lim[0], lim[1]));
             }
         }
         String name = name(p);
@@ -317,8 +357,11 @@ final class RobotViewModel {
             return Optional.empty();
         }
         Transform3 toolFrame = Transform3.ofXyzRpyDeg(tool[0], tool[1], tool[2], tool[3], tool[4], tool[5]);
-        SerialRobot r = new SerialRobot(name, description(original),
-                new DenavitHartenbergChain(joints, original.chain().base(), toolFrame), original.wristJoint());
+        SerialRobot r = new SerialRobot(
+                name,
+                description(original),
+                new DenavitHartenbergChain(joints, original.chain().base(), toolFrame),
+                original.wristJoint());
         return Optional.of(r);
     }
 
@@ -388,26 +431,34 @@ final class RobotViewModel {
         }
         for (int other : e.coefficients().keySet()) {
             if (other != joint) {
-                p.put(key, where + ": q" + other + " is joint " + other + "'s variable; joint " + joint
-                        + " may use only q" + joint);
+                p.put(
+                        key,
+                        where + ": q" + other + " is joint " + other + "'s variable; joint " + joint + " may use only q"
+                                + joint);
                 return null;
             }
         }
         boolean rev = varCol == THETA;
         if (col == varCol) {
             if (e.isConstant()) {
-                p.put(key, where + ": the " + (rev ? "revolute" : "prismatic") + " joint's variable belongs here: write q"
-                        + joint + (rev ? " - 90" : " + 100") + " or q" + joint);
+                p.put(
+                        key,
+                        where + ": the " + (rev ? "revolute" : "prismatic") + " joint's variable belongs here: write q"
+                                + joint + (rev ? " - 90" : " + 100") + " or q" + joint);
                 return null;
             }
             if (e.coefficient(joint) != 1) {
-                p.put(key, where + ": q" + joint + " must appear with factor 1 (" + CELL_NAMES[col] + " = q" + joint
-                        + " + offset)");
+                p.put(
+                        key,
+                        where + ": q" + joint + " must appear with factor 1 (" + CELL_NAMES[col] + " = q" + joint
+                                + " + offset)");
                 return null;
             }
         } else if (!e.isConstant()) {
-            p.put(key, where + ": a constant for a " + (rev ? "revolute" : "prismatic") + " joint; q" + joint
-                    + " belongs in " + CELL_NAMES[varCol]);
+            p.put(
+                    key,
+                    where + ": a constant for a " + (rev ? "revolute" : "prismatic") + " joint; q" + joint
+                            + " belongs in " + CELL_NAMES[varCol]);
             return null;
         }
         return e.constant();
@@ -421,8 +472,9 @@ final class RobotViewModel {
             return null;
         }
         if (!(max > min)) {
-            p.put("cell." + row + "." + MAX, "Joint " + (row + 1) + ", max: must be more than min (" + num(min) + " "
-                    + type.unit() + ")");
+            p.put(
+                    "cell." + row + "." + MAX,
+                    "Joint " + (row + 1) + ", max: must be more than min (" + num(min) + " " + type.unit() + ")");
             return null;
         }
         return new double[] {min, max};
@@ -454,12 +506,16 @@ final class RobotViewModel {
             return false;
         }
         if (a instanceof SerialRobot s && b instanceof SerialRobot t) {
-            return s.chain().joints().equals(t.chain().joints()) && s.chain().tool().eq(t.chain().tool(), Tolerance.DEFAULT);
+            return s.chain().joints().equals(t.chain().joints())
+                    && s.chain().tool().eq(t.chain().tool(), Tolerance.DEFAULT);
         }
         if (a instanceof TriceptRobot s && b instanceof TriceptRobot t) {
-            return s.baseRadiusMm() == t.baseRadiusMm() && s.platformRadiusMm() == t.platformRadiusMm()
-                    && s.centreOffsetMm() == t.centreOffsetMm() && s.effectorLengthMm() == t.effectorLengthMm()
-                    && s.legs().equals(t.legs()) && s.wrist().equals(t.wrist());
+            return s.baseRadiusMm() == t.baseRadiusMm()
+                    && s.platformRadiusMm() == t.platformRadiusMm()
+                    && s.centreOffsetMm() == t.centreOffsetMm()
+                    && s.effectorLengthMm() == t.effectorLengthMm()
+                    && s.legs().equals(t.legs())
+                    && s.wrist().equals(t.wrist());
         }
         return false;
     }
@@ -510,7 +566,8 @@ final class RobotViewModel {
 
     private static String sha1(String s) {
         try {
-            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-1").digest(s.getBytes(StandardCharsets.UTF_8)));
+            return HexFormat.of()
+                    .formatHex(MessageDigest.getInstance("SHA-1").digest(s.getBytes(StandardCharsets.UTF_8)));
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-1 is part of every JDK", e);
         }
@@ -563,13 +620,19 @@ final class RobotViewModel {
         }
         SymbolicKinematics.Result res = SymbolicKinematics.of(SymbolicKinematics.rowsOf(chain), true);
         StringBuilder sb = new StringBuilder(symbolic(r));
-        sb.append("Geometric Jacobian at the ").append(r instanceof TriceptRobot ? "wrist's tool tip" : "flange")
+        sb.append("Geometric Jacobian at the ")
+                .append(r instanceof TriceptRobot ? "wrist's tool tip" : "flange")
                 .append(" (rows vx, vy, vz in mm, then wx, wy, wz; column i per rad or mm of q_i):\n");
         String[] rows = {"vx", "vy", "vz", "wx", "wy", "wz"};
         List<List<String>> j = res.jacobian();
         for (int row = 0; row < j.size(); row++) {
             for (int col = 0; col < j.get(row).size(); col++) {
-                sb.append("J_").append(rows[row]).append("_q").append(col + 1).append(" = ").append(j.get(row).get(col))
+                sb.append("J_")
+                        .append(rows[row])
+                        .append("_q")
+                        .append(col + 1)
+                        .append(" = ")
+                        .append(j.get(row).get(col))
                         .append('\n');
             }
             sb.append('\n');
@@ -612,7 +675,8 @@ final class RobotViewModel {
     void setToolLength(String text) {
         toolLengthText = text.trim();
         if (toolLengthProblem().isEmpty()) {
-            toolLengthMm = toolLengthText.isEmpty() ? java.util.OptionalDouble.empty()
+            toolLengthMm = toolLengthText.isEmpty()
+                    ? java.util.OptionalDouble.empty()
                     : java.util.OptionalDouble.of(Double.parseDouble(toolLengthText));
         }
     }
@@ -668,8 +732,8 @@ final class RobotViewModel {
     /** Shows the spindle and tool length a job holds; true when they differ from those shown. */
     boolean loadTool(Job job) {
         Optional<Placement> s = job.robot().flatMap(JobSettings.RobotSettings::spindle);
-        java.util.OptionalDouble l = job.robot().map(JobSettings.RobotSettings::toolLengthMm)
-                .orElse(java.util.OptionalDouble.empty());
+        java.util.OptionalDouble l =
+                job.robot().map(JobSettings.RobotSettings::toolLengthMm).orElse(java.util.OptionalDouble.empty());
         if (s.equals(spindle) && l.equals(toolLengthMm)) {
             return false;
         }
@@ -683,24 +747,33 @@ final class RobotViewModel {
     /** A spindle as {@code --spindle} writes it: the rotations only when there are any. */
     static String spindleText(Placement p) {
         String xyz = num(p.xMm()) + "," + num(p.yMm()) + "," + num(p.zMm());
-        return p.rxDeg() == 0 && p.ryDeg() == 0 && p.rzDeg() == 0 ? xyz
+        return p.rxDeg() == 0 && p.ryDeg() == 0 && p.rzDeg() == 0
+                ? xyz
                 : xyz + "," + num(p.rxDeg()) + "," + num(p.ryDeg()) + "," + num(p.rzDeg());
     }
 
     /** The job with the last valid spindle and tool length (robot, placements and formats kept). */
     Job applyToolTo(Job job) {
-        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
-                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
-        return job.withRobot(new JobSettings.RobotSettings(old.robot(), old.robotTable(), old.tablePiece(),
-                old.formats(), spindle, toolLengthMm));
+        JobSettings.RobotSettings old = job.robot()
+                .orElse(new JobSettings.RobotSettings(
+                        choice, Placement.ORIGIN, Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(
+                old.robot(), old.robotTable(), old.tablePiece(), old.formats(), spindle, toolLengthMm));
     }
 
     /** The job with this robot in its RobotSettings (placements and formats kept). */
     Job applyTo(Job job) {
-        JobSettings.RobotSettings old = job.robot().orElse(new JobSettings.RobotSettings(choice, Placement.ORIGIN,
-                Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
-        return job.withRobot(new JobSettings.RobotSettings(choice, old.robotTable(), old.tablePiece(), old.formats(),
-                old.spindle(), old.toolLengthMm(), old.placing()));
+        JobSettings.RobotSettings old = job.robot()
+                .orElse(new JobSettings.RobotSettings(
+                        choice, Placement.ORIGIN, Placement.ORIGIN, JobSettings.RobotSettings.DEFAULT_FORMATS));
+        return job.withRobot(new JobSettings.RobotSettings(
+                choice,
+                old.robotTable(),
+                old.tablePiece(),
+                old.formats(),
+                old.spindle(),
+                old.toolLengthMm(),
+                old.placing()));
     }
 
     /** The robot a job names, if it differs from the one shown. */

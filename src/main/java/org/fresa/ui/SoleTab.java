@@ -56,7 +56,8 @@ final class SoleTab implements ModuleTab {
     private final JComboBox<Foot> feet = new JComboBox<>(Foot.values());
     private final JComboBox<String> placed = new JComboBox<>();
     private final ParameterTable parameters = new ParameterTable();
-    private final JTextField outFolder = new JTextField(Path.of("sole-out").toAbsolutePath().toString(), 22);
+    private final JTextField outFolder =
+            new JTextField(Path.of("sole-out").toAbsolutePath().toString(), 22);
     private final JLabel status = new JLabel(" ");
     private boolean updatingPlaced;
     private Vec2 dragFrom;
@@ -163,7 +164,8 @@ final class SoleTab implements ModuleTab {
         panel.add(new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right), BorderLayout.CENTER);
         installPlotEditing();
         ctx.model().addListener(e -> {
-            if (MainViewModel.JOB.equals(e.getPropertyName()) && !vm.job().equals(Optional.of(ctx.model().job()))) {
+            if (MainViewModel.JOB.equals(e.getPropertyName())
+                    && !vm.job().equals(Optional.of(ctx.model().job()))) {
                 // another job was opened or edited elsewhere: never edit the old one on top of it
                 jobReplaced(ctx.model().job());
             }
@@ -307,8 +309,12 @@ final class SoleTab implements ModuleTab {
         parameters.reload();
         if (vm.selected() >= 0) {
             Vec2 at = vm.position(vm.selected());
-            status.setText(String.format(java.util.Locale.ROOT, "%s at x %.1f mm, y %.1f mm (job frame)",
-                    vm.designs().get(vm.selected()).name(), at.x(), at.y()));
+            status.setText(String.format(
+                    java.util.Locale.ROOT,
+                    "%s at x %.1f mm, y %.1f mm (job frame)",
+                    vm.designs().get(vm.selected()).name(),
+                    at.x(),
+                    at.y()));
         }
         if (!vm.sizes().isEmpty()) {
             plot.update(vm.scene());
@@ -333,23 +339,27 @@ final class SoleTab implements ModuleTab {
     }
 
     private void loadJob() {
-        ctx.tasks().start("Planning the sole", pm -> {
-            vm.load(ctx.model().job());
-            return vm.sizes();
-        }, list -> {
-            sizes.removeAllItems();
-            list.forEach(sizes::addItem);
-            if (!list.isEmpty()) {
-                sizes.setSelectedItem(vm.size());
-            }
-            status.setText(vm.problem().isEmpty() ? list.size() + " sizes" : vm.problem());
-            refresh(true);
-            if (vm.problem().isEmpty()) {
-                showSole();
-            } else {
-                plot.show(PlotScene.empty(vm.problem()));
-            }
-        });
+        ctx.tasks()
+                .start(
+                        "Planning the sole",
+                        pm -> {
+                            vm.load(ctx.model().job());
+                            return vm.sizes();
+                        },
+                        list -> {
+                            sizes.removeAllItems();
+                            list.forEach(sizes::addItem);
+                            if (!list.isEmpty()) {
+                                sizes.setSelectedItem(vm.size());
+                            }
+                            status.setText(vm.problem().isEmpty() ? list.size() + " sizes" : vm.problem());
+                            refresh(true);
+                            if (vm.problem().isEmpty()) {
+                                showSole();
+                            } else {
+                                plot.show(PlotScene.empty(vm.problem()));
+                            }
+                        });
     }
 
     private void showSole() {
@@ -388,7 +398,9 @@ final class SoleTab implements ModuleTab {
         Path folder = Path.of(f);
         ctx.tasks().start("Generating the sole programs", pm -> vm.generate(folder, pm), outcome -> {
             status.setText(outcome.files().size() + " files written to " + folder
-                    + (outcome.problems().isEmpty() ? "" : "; " + outcome.problems().size() + " problems listed below"));
+                    + (outcome.problems().isEmpty()
+                            ? ""
+                            : "; " + outcome.problems().size() + " problems listed below"));
             problems.show(WarningList.of(outcome.problems()));
         });
     }

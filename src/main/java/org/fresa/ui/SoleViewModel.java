@@ -18,8 +18,8 @@ import org.fresa.job.Job;
 import org.fresa.job.JobSettings;
 import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
 import org.fresa.job.SoleService;
+import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Toolpath;
@@ -77,7 +77,9 @@ public final class SoleViewModel {
             sb.append("continuous: carries on the groove in progress\n");
         }
         if (TreadFigures.isSpecial(macro)) {
-            sb.append("special design, group ").append(org.fresa.sole.SpecialDesigns.group(macro)).append('\n');
+            sb.append("special design, group ")
+                    .append(org.fresa.sole.SpecialDesigns.group(macro))
+                    .append('\n');
         }
         if (TreadFigures.needsDrawing(macro)) {
             sb.append("outlines from a DXF drawing: the figure's file in the job\n");
@@ -88,8 +90,8 @@ public final class SoleViewModel {
     /** The selected macro's tool-centre path for its thesis call (continuous ones from PRIM's point). */
     public PlotScene preview() {
         try {
-            TreadFigure f = TreadFigures.of(macro, TreadFigures.parseParams(TreadFigures.thesisExample(macro), macro),
-                    macro);
+            TreadFigure f =
+                    TreadFigures.of(macro, TreadFigures.parseParams(TreadFigures.thesisExample(macro), macro), macro);
             Vec2 at = TreadFigures.isContinuous(macro) ? Vec2.of(-40, -40) : Vec2.ZERO;
             FigurePath p = f.path(at, TOL);
             List<Curve2> cs = new ArrayList<>();
@@ -160,17 +162,19 @@ public final class SoleViewModel {
         SoleService.SolePlan p = plan.get();
         GradedSize g = SoleService.graded(p, Double.parseDouble(size));
         Toolpath tp = SoleService.treadProgram(p, g, foot);
-        var outline = foot == Foot.RIGHT ? g.output().get(0)
+        var outline = foot == Foot.RIGHT
+                ? g.output().get(0)
                 : SoleTread.mirrored(g.output().get(0), SoleService.origin(p).x());
         PlotScene scene = PlotScene.empty("Sole " + g.name() + ", " + foot.id() + " foot")
-                .withContour("outline", PlotScene.Style.OUTLINE, outline).withToolpath(tp);
+                .withContour("outline", PlotScene.Style.OUTLINE, outline)
+                .withToolpath(tp);
         if (selected >= 0) {
             List<Curve2> cs = new ArrayList<>();
             for (Stroke st : SoleTread.placed(p.tread().items().get(selected), SoleService.scale(p, g), foot, TOL)) {
                 cs.addAll(st.curves());
             }
-            scene = scene.with(new PlotScene.Layer("selected: " + designs().get(selected).name(),
-                    PlotScene.Style.WARNING, cs));
+            scene = scene.with(
+                    new PlotScene.Layer("selected: " + designs().get(selected).name(), PlotScene.Style.WARNING, cs));
         }
         return scene;
     }
@@ -185,8 +189,9 @@ public final class SoleViewModel {
             return PlotScene.empty(problem.isEmpty() ? "No sole plan" : problem);
         }
         SoleService.SolePlan p = plan.get();
-        return SoleService.pairScene(p, SoleService.graded(p, Double.parseDouble(size))).orElseGet(() -> PlotScene.empty(
-                "The job has no mould block: each foot's programs stay in the outline's frame"));
+        return SoleService.pairScene(p, SoleService.graded(p, Double.parseDouble(size)))
+                .orElseGet(() -> PlotScene.empty(
+                        "The job has no mould block: each foot's programs stay in the outline's frame"));
     }
 
     /** The edited job: the loaded one with the placed, moved and edited figures (empty before a load). */
@@ -231,7 +236,11 @@ public final class SoleViewModel {
             if (b.isEmpty()) {
                 continue;
             }
-            Box2 g = new Box2(b.get().minX() - 3, b.get().minY() - 3, b.get().maxX() + 3, b.get().maxY() + 3);
+            Box2 g = new Box2(
+                    b.get().minX() - 3,
+                    b.get().minY() - 3,
+                    b.get().maxX() + 3,
+                    b.get().maxY() + 3);
             double area = g.width() * g.height();
             if (g.contains(p) && area < best) {
                 best = area;
@@ -246,7 +255,8 @@ public final class SoleViewModel {
      * (mm, job frame).
      */
     public Vec2 position(int index) {
-        return bounds(plan.orElseThrow().tread().items().get(index).strokes(TOL)).map(Box2::center)
+        return bounds(plan.orElseThrow().tread().items().get(index).strokes(TOL))
+                .map(Box2::center)
                 .orElse(Vec2.ZERO);
     }
 
@@ -287,7 +297,9 @@ public final class SoleViewModel {
                     + " (file attribute)");
         }
         JobSettings.SoleSettings s = job.get().sole().orElseThrow();
-        Optional<String> tool = s.tools().stream().map(JobSettings.SoleTool::id).filter(t -> !t.equals(s.cavityTool()))
+        Optional<String> tool = s.tools().stream()
+                .map(JobSettings.SoleTool::id)
+                .filter(t -> !t.equals(s.cavityTool()))
                 .findFirst();
         if (tool.isEmpty()) {
             return Optional.of("The job has no tread tool: add one to the job first");
@@ -295,15 +307,30 @@ public final class SoleViewModel {
         String params = TreadFigures.thesisExample(macro);
         Vec2 centre;
         try {
-            centre = bounds(figurePath(macro, params).strokes()).map(Box2::center).orElse(Vec2.ZERO);
+            centre = bounds(figurePath(macro, params).strokes())
+                    .map(Box2::center)
+                    .orElse(Vec2.ZERO);
         } catch (CamInputException e) {
             return Optional.of(e.getMessage());
         }
         Vec2 d = toJobFrame(plotMm).minus(centre);
         String name = uniqueName(macro);
-        JobSettings.SoleDesign design = new JobSettings.SoleDesign(name, tool.get(), SizeRule.POSITION, false,
-                PatternKind.COPIES, 1, 1,
-                0, 0, 0, 0, 0, 0, List.of(), List.of(new JobSettings.SoleFigure(macro, params)),
+        JobSettings.SoleDesign design = new JobSettings.SoleDesign(
+                name,
+                tool.get(),
+                SizeRule.POSITION,
+                false,
+                PatternKind.COPIES,
+                1,
+                1,
+                0,
+                0,
+                0,
+                0,
+                0,
+                0,
+                List.of(),
+                List.of(new JobSettings.SoleFigure(macro, params)),
                 List.of(copy(d.x(), d.y())));
         List<JobSettings.SoleDesign> ds = new ArrayList<>(s.designs());
         ds.add(design);
@@ -330,14 +357,30 @@ public final class SoleViewModel {
         if (d.pattern() == PatternKind.SINGLE) {
             copies = List.of(copy(dxMm, dyMm));
         } else if (d.pattern() == PatternKind.COPIES) {
-            copies = d.copies().stream().map(c -> new JobSettings.SoleCopy(c.dxMm() + dxMm, c.dyMm() + dyMm,
-                    c.mirrorXMm(), c.mirrorYMm(), c.rotateDeg())).toList();
+            copies = d.copies().stream()
+                    .map(c -> new JobSettings.SoleCopy(
+                            c.dxMm() + dxMm, c.dyMm() + dyMm, c.mirrorXMm(), c.mirrorYMm(), c.rotateDeg()))
+                    .toList();
         } else {
             return Optional.of("'" + d.name() + "' is a " + d.pattern() + " pattern: move it by its parameters");
         }
-        JobSettings.SoleDesign moved = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), PatternKind.COPIES,
-                d.count(), d.rows(), d.dxMm(), d.dyMm(), d.rowShiftMm(), d.stepDeg(), d.centerXMm(), d.centerYMm(),
-                d.lead(), d.figures(), copies);
+        JobSettings.SoleDesign moved = new JobSettings.SoleDesign(
+                d.name(),
+                d.tool(),
+                d.rule(),
+                d.text(),
+                PatternKind.COPIES,
+                d.count(),
+                d.rows(),
+                d.dxMm(),
+                d.dyMm(),
+                d.rowShiftMm(),
+                d.stepDeg(),
+                d.centerXMm(),
+                d.centerYMm(),
+                d.lead(),
+                d.figures(),
+                copies);
         List<JobSettings.SoleDesign> ds = new ArrayList<>(designs());
         ds.set(selected, moved);
         return apply(ds);
@@ -369,8 +412,7 @@ public final class SoleViewModel {
     }
 
     /** One parameter of a figure: its thesis name, unit and value as text. */
-    public record Parameter(String name, String unit, String value) {
-    }
+    public record Parameter(String name, String unit, String value) {}
 
     /** The parameters of the selected design's first figure (empty when none is selected). */
     public List<Parameter> parameters() {
@@ -420,7 +462,8 @@ public final class SoleViewModel {
             return Optional.of(k + ": expected a number in " + unit(k) + ", found '" + text.trim() + "'");
         }
         if (!Double.isFinite(v) || Math.abs(v) > 1e6) {
-            return Optional.of(k + ": expected a number of at most 1000000 " + unit(k) + ", found '" + text.trim() + "'");
+            return Optional.of(
+                    k + ": expected a number of at most 1000000 " + unit(k) + ", found '" + text.trim() + "'");
         }
         Map<String, Double> vals;
         try {
@@ -430,7 +473,8 @@ public final class SoleViewModel {
         }
         vals.put(k, v);
         StringBuilder sb = new StringBuilder();
-        vals.forEach((n, x) -> sb.append(sb.length() == 0 ? "" : ",").append(n).append('=').append(ExactDecimal.of(x)));
+        vals.forEach((n, x) ->
+                sb.append(sb.length() == 0 ? "" : ",").append(n).append('=').append(ExactDecimal.of(x)));
         try {
             TreadFigures.of(f.macro(), vals, d.name());
         } catch (CamInputException e) {
@@ -438,9 +482,23 @@ public final class SoleViewModel {
         }
         List<JobSettings.SoleFigure> figs = new ArrayList<>(d.figures());
         figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString(), f.drawing()));
-        JobSettings.SoleDesign edited = new JobSettings.SoleDesign(d.name(), d.tool(), d.rule(), d.text(), d.pattern(),
-                d.count(), d.rows(), d.dxMm(), d.dyMm(), d.rowShiftMm(), d.stepDeg(), d.centerXMm(), d.centerYMm(),
-                d.lead(), figs, d.copies());
+        JobSettings.SoleDesign edited = new JobSettings.SoleDesign(
+                d.name(),
+                d.tool(),
+                d.rule(),
+                d.text(),
+                d.pattern(),
+                d.count(),
+                d.rows(),
+                d.dxMm(),
+                d.dyMm(),
+                d.rowShiftMm(),
+                d.stepDeg(),
+                d.centerXMm(),
+                d.centerYMm(),
+                d.lead(),
+                figs,
+                d.copies());
         List<JobSettings.SoleDesign> ds = new ArrayList<>(designs());
         ds.set(selected, edited);
         return apply(ds);
@@ -472,7 +530,8 @@ public final class SoleViewModel {
     }
 
     private String uniqueName(String base) {
-        List<String> names = designs().stream().map(JobSettings.SoleDesign::name).toList();
+        List<String> names =
+                designs().stream().map(JobSettings.SoleDesign::name).toList();
         int k = 1;
         while (names.contains(base + " " + k)) {
             k++;

@@ -19,8 +19,9 @@ final class StatusBar extends JPanel {
 
     StatusBar() {
         super(new BorderLayout());
-        setBorder(BorderFactory.createCompoundBorder(BorderFactory.createMatteBorder(1, 0, 0, 0,
-                javax.swing.UIManager.getColor("Separator.foreground")), BorderFactory.createEmptyBorder(3, 8, 3, 8)));
+        setBorder(BorderFactory.createCompoundBorder(
+                BorderFactory.createMatteBorder(1, 0, 0, 0, javax.swing.UIManager.getColor("Separator.foreground")),
+                BorderFactory.createEmptyBorder(3, 8, 3, 8)));
         message.setName("status");
         progress.setName("progress");
         cancel.setName("cancel");
@@ -45,8 +46,11 @@ final class StatusBar extends JPanel {
     public java.awt.Dimension getPreferredSize() {
         java.awt.Dimension d = super.getPreferredSize();
         java.awt.Insets in = getInsets();
-        int h = Math.max(message.getPreferredSize().height,
-                Math.max(progress.getPreferredSize().height, cancel.getPreferredSize().height)) + in.top + in.bottom;
+        int h = Math.max(
+                        message.getPreferredSize().height,
+                        Math.max(progress.getPreferredSize().height, cancel.getPreferredSize().height))
+                + in.top
+                + in.bottom;
         return new java.awt.Dimension(d.width, Math.max(d.height, h));
     }
 }

@@ -264,7 +264,9 @@ final class StepNcTab implements ModuleTab {
             paths.setSelectedIndex(StepNcViewModel.PATHS.indexOf(settings.get().paths()));
             updating = false;
         }
-        if (settings.isPresent() && settings.get().file().equals(loadedFile) && settings.get().paths() != loadedPaths) {
+        if (settings.isPresent()
+                && settings.get().file().equals(loadedFile)
+                && settings.get().paths() != loadedPaths) {
             // the same file with other path conventions: planned again
             Path f = loadedFile;
             clear();
@@ -300,48 +302,65 @@ final class StepNcTab implements ModuleTab {
     }
 
     /** A program and its toolpaths, read and planned in one background task. */
-    private record Loaded(StepNcProgram program, ToolpathPlanner.Plan plan, org.fresa.job.CycleTime time,
-            DefaultTreeModel tree, org.fresa.chart.PlotScene firstPlot, List<String> firstDetails) {
-    }
+    private record Loaded(
+            StepNcProgram program,
+            ToolpathPlanner.Plan plan,
+            org.fresa.job.CycleTime time,
+            DefaultTreeModel tree,
+            org.fresa.chart.PlotScene firstPlot,
+            List<String> firstDetails) {}
 
     void open(Path file) {
         requestedFile = file;
         int generation = ctx.model().generation();
-        JobSettings.StepNcSettings settings = StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
-        ctx.tasks().start("Reading and planning " + file.getFileName(), progress -> {
-            // planned as fresa run plans it: with the job's choices where it holds this file
-            ToolpathService.Planned planned = ToolpathService.compute(file, settings.choices(), progress);
-            StepNcProgram p = planned.program();
-            ToolpathPlanner.Plan plan = planned.plan();
-            // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
-            org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
-            // the first workingstep's plot, from a view model of this thread in the tab's first state
-            StepNcViewModel first = new StepNcViewModel();
-            first.load(p);
-            first.planned(plan, time);
-            return new Loaded(p, plan, time, new DefaultTreeModel(toSwing(StepNcViewModel.treeOf(p))), first.plot(),
-                    first.details());
-        }, loaded -> {
-            if (generation != ctx.model().generation() || !file.equals(requestedFile)) {
-                // another document (or file) was asked for while this one was read
-                return;
-            }
-            StepNcProgram program = loaded.program();
-            vm.load(program);
-            vm.planned(loaded.plan(), loaded.time());
-            problems.show(vm.problems());
-            preparedPlot = loaded.firstPlot();
-            preparedDetails = loaded.firstDetails();
-            loadedFile = file;
-            loadedPaths = settings.paths();
-            if (!ctx.model().job().stepnc().equals(Optional.of(settings))) {
-                ctx.model().setJob(ctx.model().job().withStepnc(settings));
-            }
-            fileLabel.setText(file.getFileName() + ": " + program.workingsteps().size() + " workingsteps, "
-                    + program.skipped().size() + " skipped, " + program.unknownEntities().size()
-                    + " entity types not interpreted");
-            refresh(loaded.tree());
-        });
+        JobSettings.StepNcSettings settings =
+                StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
+        ctx.tasks()
+                .start(
+                        "Reading and planning " + file.getFileName(),
+                        progress -> {
+                            // planned as fresa run plans it: with the job's choices where it holds this file
+                            ToolpathService.Planned planned =
+                                    ToolpathService.compute(file, settings.choices(), progress);
+                            StepNcProgram p = planned.program();
+                            ToolpathPlanner.Plan plan = planned.plan();
+                            // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
+                            org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
+                            // the first workingstep's plot, from a view model of this thread in the tab's first state
+                            StepNcViewModel first = new StepNcViewModel();
+                            first.load(p);
+                            first.planned(plan, time);
+                            return new Loaded(
+                                    p,
+                                    plan,
+                                    time,
+                                    new DefaultTreeModel(toSwing(StepNcViewModel.treeOf(p))),
+                                    first.plot(),
+                                    first.details());
+                        },
+                        loaded -> {
+                            if (generation != ctx.model().generation() || !file.equals(requestedFile)) {
+                                // another document (or file) was asked for while this one was read
+                                return;
+                            }
+                            StepNcProgram program = loaded.program();
+                            vm.load(program);
+                            vm.planned(loaded.plan(), loaded.time());
+                            problems.show(vm.problems());
+                            preparedPlot = loaded.firstPlot();
+                            preparedDetails = loaded.firstDetails();
+                            loadedFile = file;
+                            loadedPaths = settings.paths();
+                            if (!ctx.model().job().stepnc().equals(Optional.of(settings))) {
+                                ctx.model().setJob(ctx.model().job().withStepnc(settings));
+                            }
+                            fileLabel.setText(file.getFileName() + ": "
+                                    + program.workingsteps().size() + " workingsteps, "
+                                    + program.skipped().size() + " skipped, "
+                                    + program.unknownEntities().size()
+                                    + " entity types not interpreted");
+                            refresh(loaded.tree());
+                        });
     }
 
     private void refresh(DefaultTreeModel model) {
@@ -369,10 +388,11 @@ final class StepNcTab implements ModuleTab {
     /** Selects the workingstep a planning problem names, so that its details and plot show. */
     private void showProblem(WarningList.Warning w) {
         vm.workingstepNamedIn(w.text()).ifPresent(ws -> {
-            java.util.Enumeration<javax.swing.tree.TreeNode> all = ((DefaultMutableTreeNode) tree.getModel().getRoot())
-                    .breadthFirstEnumeration();
+            java.util.Enumeration<javax.swing.tree.TreeNode> all =
+                    ((DefaultMutableTreeNode) tree.getModel().getRoot()).breadthFirstEnumeration();
             while (all.hasMoreElements()) {
-                if (all.nextElement() instanceof DefaultMutableTreeNode d && d.getUserObject() instanceof StepNcViewModel.Node n
+                if (all.nextElement() instanceof DefaultMutableTreeNode d
+                        && d.getUserObject() instanceof StepNcViewModel.Node n
                         && n.workingstep().equals(Optional.of(ws))) {
                     TreePath path = new TreePath(d.getPath());
                     tree.setSelectionPath(path);
@@ -385,7 +405,8 @@ final class StepNcTab implements ModuleTab {
 
     private void selectionChanged() {
         TreePath path = tree.getSelectionPath();
-        if (path != null && path.getLastPathComponent() instanceof DefaultMutableTreeNode d
+        if (path != null
+                && path.getLastPathComponent() instanceof DefaultMutableTreeNode d
                 && d.getUserObject() instanceof StepNcViewModel.Node n) {
             vm.select(n.workingstep());
             showSelection();

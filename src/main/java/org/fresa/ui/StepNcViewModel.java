@@ -82,8 +82,7 @@ final class StepNcViewModel {
      * A depth layer of a section: in-plane feed moves at {@code depthMm} below the feature's top,
      * measured along the feature axis.
      */
-    record Layer(int number, double depthMm) {
-    }
+    record Layer(int number, double depthMm) {}
 
     /** Moves run from {@code start}. */
     record Shown(Vec3 start, List<Move> moves) {
@@ -102,14 +101,14 @@ final class StepNcViewModel {
      * @param totalS time of all shown moves
      * @param fraction how far into the move (0..1)
      */
-    record ReplayPoint(Vec3 position, int moveIndex, double timeS, double totalS, double fraction) {
-    }
+    record ReplayPoint(Vec3 position, int moveIndex, double timeS, double totalS, double fraction) {}
 
     private Optional<StepNcProgram> program = Optional.empty();
     private Optional<MachiningWorkingstep> selected = Optional.empty();
     private Optional<ToolpathPlanner.Plan> plan = Optional.empty();
     /** 0 all layers, else the layer number (1-based) */
     private int layer;
+
     private int replay = REPLAY_STEPS;
 
     Optional<StepNcProgram> program() {
@@ -119,7 +118,9 @@ final class StepNcViewModel {
     void load(StepNcProgram p) {
         program = Optional.of(p);
         plan = Optional.empty();
-        selected = p.workingsteps().isEmpty() ? Optional.empty() : Optional.of(p.workingsteps().get(0));
+        selected = p.workingsteps().isEmpty()
+                ? Optional.empty()
+                : Optional.of(p.workingsteps().get(0));
         layer = 0;
         replay = REPLAY_STEPS;
     }
@@ -146,8 +147,10 @@ final class StepNcViewModel {
         }
         List<MachiningWorkingstep> all = program.get().workingsteps();
         Optional<MachiningWorkingstep> byInstance = all.stream()
-                .filter(ws -> text.contains("(#" + ws.instanceId() + ")")).findFirst();
-        return byInstance.isPresent() ? byInstance
+                .filter(ws -> text.contains("(#" + ws.instanceId() + ")"))
+                .findFirst();
+        return byInstance.isPresent()
+                ? byInstance
                 : all.stream().filter(ws -> text.contains("'" + ws.id() + "'")).findFirst();
     }
 
@@ -362,8 +365,11 @@ final class StepNcViewModel {
             return out;
         }
         ToolpathPlanner.Plan p = plan.get();
-        workingstepTime().ifPresentOrElse(t -> out.add("Cycle time of this workingstep: " + timeText(t)),
-                () -> out.add(selected.isPresent() ? "This workingstep was not planned" : "No workingstep selected"));
+        workingstepTime()
+                .ifPresentOrElse(
+                        t -> out.add("Cycle time of this workingstep: " + timeText(t)),
+                        () -> out.add(
+                                selected.isPresent() ? "This workingstep was not planned" : "No workingstep selected"));
         out.add("Cycle time of the program (" + p.planned() + " of " + p.workingsteps() + " workingsteps): "
                 + timeText(programTime().orElseThrow()));
         out.add("Feeds at their feed rate, rapids at " + n(RAPID_MM_PER_MIN) + " mm/min, no acceleration");
@@ -376,8 +382,8 @@ final class StepNcViewModel {
             return program.isPresent() ? "Planning toolpaths..." : " ";
         }
         String ws = workingstepTime().map(t -> seconds(t.seconds())).orElse("not planned");
-        return "Cycle time: this workingstep " + ws + ", program " + seconds(programTime().orElseThrow().seconds())
-                + " (rapids at " + n(RAPID_MM_PER_MIN) + " mm/min)";
+        return "Cycle time: this workingstep " + ws + ", program "
+                + seconds(programTime().orElseThrow().seconds()) + " (rapids at " + n(RAPID_MM_PER_MIN) + " mm/min)";
     }
 
     private static String timeText(CycleTime t) {
@@ -401,7 +407,8 @@ final class StepNcViewModel {
     }
 
     private static boolean inPlane(Vec3 from, Move m, Feature f) {
-        return !(m instanceof Move.Rapid) && Math.abs(depthOf(from, f) - depthOf(m.end(), f)) < LAYER_TOLERANCE_MM
+        return !(m instanceof Move.Rapid)
+                && Math.abs(depthOf(from, f) - depthOf(m.end(), f)) < LAYER_TOLERANCE_MM
                 && CycleTime.lengthMm(from, m) > LAYER_TOLERANCE_MM;
     }
 
@@ -550,16 +557,16 @@ final class StepNcViewModel {
         if (!p.skipped().isEmpty()) {
             List<Node> sk = new ArrayList<>();
             for (StepNcProgram.Skipped s : p.skipped()) {
-                sk.add(new Node("#" + s.instanceId() + " " + s.id() + " (" + s.reason() + ")", List.of(),
-                        s.workingstep()));
+                sk.add(new Node(
+                        "#" + s.instanceId() + " " + s.id() + " (" + s.reason() + ")", List.of(), s.workingstep()));
             }
             top.add(new Node("Skipped workingsteps (" + p.skipped().size() + ")", sk, Optional.empty()));
         }
         if (!p.unknownEntities().isEmpty()) {
             List<Node> un = new ArrayList<>();
             p.unknownEntities().forEach((k, c) -> un.add(Node.leaf(k + " x" + c)));
-            top.add(new Node("Entities not interpreted (" + p.unknownEntities().size() + " types)", un,
-                    Optional.empty()));
+            top.add(new Node(
+                    "Entities not interpreted (" + p.unknownEntities().size() + " types)", un, Optional.empty()));
         }
         if (!p.spellings().isEmpty() || !p.warnings().isEmpty()) {
             List<Node> notes = new ArrayList<>();
@@ -567,8 +574,10 @@ final class StepNcViewModel {
             p.warnings().forEach(s -> notes.add(Node.leaf("warning: " + s)));
             top.add(new Node("Notes (" + notes.size() + ")", notes, Optional.empty()));
         }
-        return new Node("Project '" + p.projectId() + "' (" + p.source() + ", " + p.instanceCount()
-                + " instances)", top, Optional.empty());
+        return new Node(
+                "Project '" + p.projectId() + "' (" + p.source() + ", " + p.instanceCount() + " instances)",
+                top,
+                Optional.empty());
     }
 
     private static Node workplanNode(Workplan w, int[] counter) {
@@ -578,8 +587,11 @@ final class StepNcViewModel {
                 children.add(workplanNode(sub, counter));
             } else if (e instanceof MachiningWorkingstep ws) {
                 counter[0]++;
-                children.add(new Node(counter[0] + ". " + ws.id() + ": " + ws.operation().entity() + " on "
-                        + ws.feature().entity(), List.of(), Optional.of(ws)));
+                children.add(new Node(
+                        counter[0] + ". " + ws.id() + ": " + ws.operation().entity() + " on "
+                                + ws.feature().entity(),
+                        List.of(),
+                        Optional.of(ws)));
             } else if (e instanceof Executable.Other o) {
                 children.add(Node.leaf("#" + o.instanceId() + " " + o.entity() + " (not interpreted)"));
             }
@@ -593,12 +605,14 @@ final class StepNcViewModel {
         List<String> out = new ArrayList<>();
         if (selected.isEmpty()) {
             program.ifPresent(p -> {
-                out.add(p.source() + ": " + p.workingsteps().size() + " workingsteps, " + p.skipped().size()
-                        + " skipped");
+                out.add(p.source() + ": " + p.workingsteps().size() + " workingsteps, "
+                        + p.skipped().size() + " skipped");
                 for (Workpiece w : p.workpieces()) {
-                    out.add("Workpiece '" + w.id() + "'" + w.material().map(m -> ", " + m).orElse("")
-                            + w.block().map(b -> ", block " + n(b.xMm()) + " x " + n(b.yMm()) + " x " + n(b.zMm())
-                                    + " mm").orElse(""));
+                    out.add("Workpiece '" + w.id() + "'"
+                            + w.material().map(m -> ", " + m).orElse("")
+                            + w.block()
+                                    .map(b -> ", block " + n(b.xMm()) + " x " + n(b.yMm()) + " x " + n(b.zMm()) + " mm")
+                                    .orElse(""));
                 }
             });
             return out;
@@ -618,9 +632,11 @@ final class StepNcViewModel {
         o.strategy().ifPresent(s -> {
             String overlap = s.overlapFraction().isPresent()
                     ? ", overlap " + n(s.overlapFraction().getAsDouble() * 100) + " % of the tool diameter (written as "
-                    + s.overlapInterpretation().orElse("?") + " " + n(s.overlap().orElse(0)) + ")"
+                            + s.overlapInterpretation().orElse("?") + " "
+                            + n(s.overlap().orElse(0)) + ")"
                     : "";
-            out.add("  strategy " + s.entity() + overlap + s.rotationDirection().map(r -> ", " + r).orElse("")
+            out.add("  strategy " + s.entity() + overlap
+                    + s.rotationDirection().map(r -> ", " + r).orElse("")
                     + s.cutmode().map(c -> ", " + c).orElse(""));
         });
         mm(out, "  axial cutting depth", o.axialCuttingDepthMm());
@@ -634,12 +650,20 @@ final class StepNcViewModel {
         o.tool().ifPresent(t -> toolText(out, t));
         Technology t = o.technology();
         out.add("Technology:");
-        t.feedrate().ifPresent(fd -> out.add("  feed " + n(fd) + " " + unit(t.feedrateUnit())
-                + t.feedMmPerMin().stream().mapToObj(x -> " = " + n(x) + " mm/min").findFirst().orElse("")));
+        t.feedrate()
+                .ifPresent(fd -> out.add("  feed " + n(fd) + " " + unit(t.feedrateUnit())
+                        + t.feedMmPerMin().stream()
+                                .mapToObj(x -> " = " + n(x) + " mm/min")
+                                .findFirst()
+                                .orElse("")));
         t.cutSpeed().ifPresent(c -> out.add("  cutting speed " + n(c) + " " + t.cutSpeedUnit()));
-        t.spindle().ifPresent(s -> out.add("  spindle " + n(s) + " " + t.spindleUnit()
-                + t.spindleRpm().stream().mapToObj(x -> " = " + n(x) + " rpm").findFirst().orElse("")
-                + (t.spindleClockwise() ? ", clockwise" : "")));
+        t.spindle()
+                .ifPresent(s -> out.add("  spindle " + n(s) + " " + t.spindleUnit()
+                        + t.spindleRpm().stream()
+                                .mapToObj(x -> " = " + n(x) + " rpm")
+                                .findFirst()
+                                .orElse("")
+                        + (t.spindleClockwise() ? ", clockwise" : "")));
         toolpathText(out, ws);
         return out;
     }
@@ -650,7 +674,8 @@ final class StepNcViewModel {
             return;
         }
         Optional<ToolpathPlanner.PlannedStep> step = plan.get().steps().stream()
-                .filter(s -> s.workingstepInstanceId() == ws.instanceId()).findFirst();
+                .filter(s -> s.workingstepInstanceId() == ws.instanceId())
+                .findFirst();
         Optional<ToolpathSection> sec = section();
         if (step.isEmpty() || sec.isEmpty()) {
             out.add("Toolpath: not planned");
@@ -707,27 +732,28 @@ final class StepNcViewModel {
         if (program.isEmpty()) {
             return PlotScene.empty("STEP-NC");
         }
-        ViewPlane drop = selected.map(ws -> ViewPlane.along(ws.feature().axis())).orElse(ViewPlane.TOP_XY);
+        ViewPlane drop =
+                selected.map(ws -> ViewPlane.along(ws.feature().axis())).orElse(ViewPlane.TOP_XY);
         PlotScene scene = PlotScene.empty(drop.title()).withAxes(drop.axes());
         for (Workpiece w : program.get().workpieces()) {
             if (w.block().isPresent()) {
                 Workpiece.Block b = w.block().get();
                 List<Vec2> pts = new ArrayList<>();
                 for (int i = 0; i < 8; i++) {
-                    Vec3 c = b.placement().applyToPoint(new Vec3((i & 1) * b.xMm(), ((i >> 1) & 1) * b.yMm(),
-                            ((i >> 2) & 1) * b.zMm()));
+                    Vec3 c = b.placement()
+                            .applyToPoint(
+                                    new Vec3((i & 1) * b.xMm(), ((i >> 1) & 1) * b.yMm(), ((i >> 2) & 1) * b.zMm()));
                     pts.add(drop.project(c));
                 }
-                scene = scene.with(new PlotScene.Layer("block '" + w.id() + "'", PlotScene.Style.AUX,
-                        box(pts)));
+                scene = scene.with(new PlotScene.Layer("block '" + w.id() + "'", PlotScene.Style.AUX, box(pts)));
             }
         }
         if (selected.isPresent()) {
             Feature f = selected.get().feature();
             List<Curve2> outline = outline(f, drop);
             if (!outline.isEmpty()) {
-                scene = scene.with(new PlotScene.Layer(f.entity() + " '" + f.id() + "'", PlotScene.Style.OUTLINE,
-                        outline));
+                scene = scene.with(
+                        new PlotScene.Layer(f.entity() + " '" + f.id() + "'", PlotScene.Style.OUTLINE, outline));
             }
             scene = withToolpath(scene, drop);
             scene = scene.withLabel(drop.project(f.location()), f.id());
@@ -754,8 +780,8 @@ final class StepNcViewModel {
             }
             at = m.end();
         }
-        String title = scene.title() + ": " + selected.get().id() + (layer == 0 ? "" : ", layer " + layer + " of "
-                + layers().size());
+        String title = scene.title() + ": " + selected.get().id()
+                + (layer == 0 ? "" : ", layer " + layer + " of " + layers().size());
         PlotScene out = scene.withTitle(title)
                 .with(new PlotScene.Layer("rapid", PlotScene.Style.RAPID, rapids))
                 .with(new PlotScene.Layer("feed", PlotScene.Style.FEED, feeds))
@@ -792,7 +818,9 @@ final class StepNcViewModel {
             TravelPath c = f.courseOfTravel().get();
             Vec3 p0 = p.placement().applyToPoint(Vec3.ZERO);
             Vec3 a = p.placement().applyToDirection(Vec3.UNIT_X).times(lin.lengthMm());
-            Vec3 b = c.direction().map(d -> c.placement().applyToDirection(d).normalized()).orElse(Vec3.UNIT_Y)
+            Vec3 b = c.direction()
+                    .map(d -> c.placement().applyToDirection(d).normalized())
+                    .orElse(Vec3.UNIT_Y)
                     .times(c.distanceMm().orElse(0));
             List<Vec3> corners = List.of(p0, p0.plus(a), p0.plus(a).plus(b), p0.plus(b), p0);
             for (int i = 0; i + 1 < corners.size(); i++) {
@@ -805,10 +833,12 @@ final class StepNcViewModel {
             return out;
         }
         if (p instanceof Profile.Rectangular r) {
-            double rc = Math.min(Math.max(f.orthogonalRadiusMm().orElse(0), 0), Math.min(r.lengthMm(), r.widthMm()) / 2);
+            double rc =
+                    Math.min(Math.max(f.orthogonalRadiusMm().orElse(0), 0), Math.min(r.lengthMm(), r.widthMm()) / 2);
             // ISO 14649: the pocket's orthogonal_radius rounds the rectangle's corners
             for (Curve2 c : new org.fresa.toolpath.Profile.RoundedRectangle(Vec2.ZERO, r.lengthMm(), r.widthMm(), rc)
-                    .contour(org.fresa.geom.Tolerance.DEFAULT).curves()) {
+                    .contour(org.fresa.geom.Tolerance.DEFAULT)
+                    .curves()) {
                 out.addAll(placed(c, t, drop));
             }
             return out;
@@ -852,14 +882,17 @@ final class StepNcViewModel {
             double along = t.zAxis().dot(drop.viewAxis());
             if (Math.abs(Math.abs(along) - 1) < 1e-9) {
                 boolean keep = (along > 0) == drop.keepsSense();
-                out.add(new Arc2(drop.project(t.applyToPoint(Vec3.of(a.center(), 0))),
+                out.add(new Arc2(
+                        drop.project(t.applyToPoint(Vec3.of(a.center(), 0))),
                         drop.project(t.applyToPoint(Vec3.of(a.start(), 0))),
-                        drop.project(t.applyToPoint(Vec3.of(a.end(), 0))), keep == a.ccw()));
+                        drop.project(t.applyToPoint(Vec3.of(a.end(), 0))),
+                        keep == a.ccw()));
                 return out;
             }
             int n = 16;
             for (int i = 0; i < n; i++) {
-                out.add(Segment2.of(drop.project(t.applyToPoint(Vec3.of(a.pointAt((double) i / n), 0))),
+                out.add(Segment2.of(
+                        drop.project(t.applyToPoint(Vec3.of(a.pointAt((double) i / n), 0))),
                         drop.project(t.applyToPoint(Vec3.of(a.pointAt((double) (i + 1) / n), 0)))));
             }
             return out;
@@ -878,7 +911,10 @@ final class StepNcViewModel {
         double y0 = b.minY();
         double x1 = b.maxX();
         double y1 = b.maxY();
-        return List.of(Segment2.of(x0, y0, x1, y0), Segment2.of(x1, y0, x1, y1), Segment2.of(x1, y1, x0, y1),
+        return List.of(
+                Segment2.of(x0, y0, x1, y0),
+                Segment2.of(x1, y0, x1, y1),
+                Segment2.of(x1, y1, x0, y1),
                 Segment2.of(x0, y1, x0, y0));
     }
 
@@ -891,8 +927,8 @@ final class StepNcViewModel {
     }
 
     /** The path conventions the tab offers, in its list's order: Fresa's, then the thesis's. */
-    static final List<org.fresa.toolpath.PathConvention> PATHS = List.of(org.fresa.toolpath.PathConvention.FRESA,
-            org.fresa.toolpath.PathConvention.THESIS);
+    static final List<org.fresa.toolpath.PathConvention> PATHS =
+            List.of(org.fresa.toolpath.PathConvention.FRESA, org.fresa.toolpath.PathConvention.THESIS);
 
     /** How the tab's list names a path convention. */
     static String pathsLabel(org.fresa.toolpath.PathConvention p) {
@@ -904,11 +940,14 @@ final class StepNcViewModel {
      * names the file (its post and choices kept), else the file with the default post and choices;
      * in both cases with the path conventions the tab shows.
      */
-    static org.fresa.job.JobSettings.StepNcSettings settingsFor(org.fresa.job.Job job, java.nio.file.Path file,
-            org.fresa.toolpath.PathConvention paths) {
-        return job.stepnc().filter(s -> s.file().equals(file))
-                .orElseGet(() -> new org.fresa.job.JobSettings.StepNcSettings(file,
-                        job.stepnc().map(org.fresa.job.JobSettings.StepNcSettings::post)
+    static org.fresa.job.JobSettings.StepNcSettings settingsFor(
+            org.fresa.job.Job job, java.nio.file.Path file, org.fresa.toolpath.PathConvention paths) {
+        return job.stepnc()
+                .filter(s -> s.file().equals(file))
+                .orElseGet(() -> new org.fresa.job.JobSettings.StepNcSettings(
+                        file,
+                        job.stepnc()
+                                .map(org.fresa.job.JobSettings.StepNcSettings::post)
                                 .orElse(org.fresa.job.JobSettings.StepNcSettings.DEFAULTS.post())))
                 .withPaths(paths);
     }

@@ -4,8 +4,7 @@ import java.util.List;
 
 /** The eight tabs of the main window, in order. */
 final class Tabs {
-    private Tabs() {
-    }
+    private Tabs() {}
 
     static List<ModuleTab> create(AppContext ctx) {
         RobotRunModel runs = ctx.runs();

@@ -7,8 +7,7 @@ import javax.swing.text.JTextComponent;
 /** Runs an action on every change of a text component's document: insert, remove or attribute change. */
 final class TextChanges {
 
-    private TextChanges() {
-    }
+    private TextChanges() {}
 
     /** Adds a listener to the field's current document that runs the action on each of its events. */
     static void onChange(JTextComponent field, Runnable action) {

@@ -10,8 +10,7 @@ import javax.swing.text.PlainDocument;
  * shows yet belongs to no thread; the event thread then only swaps it in.
  */
 final class TextDocuments {
-    private TextDocuments() {
-    }
+    private TextDocuments() {}
 
     static Document of(String text) {
         PlainDocument d = new PlainDocument();

@@ -18,15 +18,17 @@ import org.jfree.chart.plot.XYPlot;
 final class TrajectoryCharts {
 
     /** A chart and the marker of the replayed point in it (point numbers count from 1). */
-    record Marked(JFreeChart chart, ValueMarker marker) {
-    }
+    record Marked(JFreeChart chart, ValueMarker marker) {}
 
     private final String robot;
     private final List<RobotCharts.JointSeries> joints;
     private final double[][] errorsMm;
     private final org.fresa.job.ErrorStatistics stats;
 
-    private TrajectoryCharts(String robot, List<RobotCharts.JointSeries> joints, double[][] errorsMm,
+    private TrajectoryCharts(
+            String robot,
+            List<RobotCharts.JointSeries> joints,
+            double[][] errorsMm,
             org.fresa.job.ErrorStatistics stats) {
         this.robot = robot;
         this.joints = joints;
@@ -35,9 +37,11 @@ final class TrajectoryCharts {
     }
 
     static TrajectoryCharts of(RobotTrajectoryService.Solved s) {
-        return new TrajectoryCharts(s.request().robot().name(),
+        return new TrajectoryCharts(
+                s.request().robot().name(),
                 RobotTrajectoryService.jointSeries(s.request().robot(), s.result()),
-                RobotTrajectoryService.positionErrorsMm(s.result()), org.fresa.job.ErrorStatistics.of(s.result()));
+                RobotTrajectoryService.positionErrorsMm(s.result()),
+                org.fresa.job.ErrorStatistics.of(s.result()));
     }
 
     Marked joints(double point) {
@@ -52,7 +56,9 @@ final class TrajectoryCharts {
     }
 
     Marked errors(double point) {
-        JFreeChart c = RobotCharts.positionErrors("Position error per axis, " + robot, errorsMm,
+        JFreeChart c = RobotCharts.positionErrors(
+                "Position error per axis, " + robot,
+                errorsMm,
                 List.of(stats.positionLegend(0), stats.positionLegend(1), stats.positionLegend(2)),
                 stats.orientationLine());
         ValueMarker m = marker(point);

@@ -17,8 +17,7 @@ final class UserGuide {
     /** Where the build puts the guide in the jar. */
     static final String RESOURCE = "/org/fresa/ui/help/user-guide.md";
 
-    private UserGuide() {
-    }
+    private UserGuide() {}
 
     /** The guide's Markdown text from the jar. */
     static String markdown() {
@@ -64,8 +63,13 @@ final class UserGuide {
             }
             if (line.startsWith("#")) {
                 int level = (int) line.chars().takeWhile(c -> c == '#').count();
-                out.append("<h").append(level).append('>').append(inline(line.substring(level).strip()))
-                        .append("</h").append(level).append(">\n");
+                out.append("<h")
+                        .append(level)
+                        .append('>')
+                        .append(inline(line.substring(level).strip()))
+                        .append("</h")
+                        .append(level)
+                        .append(">\n");
             } else if (item) {
                 out.append(list ? "</li><li>" : "<ul><li>").append(inline(line.substring(2)));
                 list = true;
@@ -74,10 +78,16 @@ final class UserGuide {
                     continue;
                 }
                 String cell = table ? "td" : "th";
-                out.append(table ? "" : "<table border='1' cellpadding='3' cellspacing='0'>\n").append("<tr>");
+                out.append(table ? "" : "<table border='1' cellpadding='3' cellspacing='0'>\n")
+                        .append("<tr>");
                 String[] cells = line.substring(1, line.length() - 1).split("\\|");
                 for (String c : cells) {
-                    out.append('<').append(cell).append('>').append(inline(c.strip())).append("</").append(cell)
+                    out.append('<')
+                            .append(cell)
+                            .append('>')
+                            .append(inline(c.strip()))
+                            .append("</")
+                            .append(cell)
                             .append('>');
                 }
                 out.append("</tr>\n");

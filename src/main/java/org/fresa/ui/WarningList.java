@@ -30,8 +30,7 @@ final class WarningList {
     }
 
     // the modules write a place as "(x, y)" or "at x, y" in millimetres, Locale.ROOT
-    private static final Pattern PLACE = Pattern.compile(
-            "(?:\\(|\\bat )(-?\\d+(?:\\.\\d+)?), (-?\\d+(?:\\.\\d+)?)\\b");
+    private static final Pattern PLACE = Pattern.compile("(?:\\(|\\bat )(-?\\d+(?:\\.\\d+)?), (-?\\d+(?:\\.\\d+)?)\\b");
 
     private final List<Warning> warnings;
 
@@ -75,7 +74,11 @@ final class WarningList {
             return "No warnings";
         }
         long placed = warnings.stream().filter(w -> w.place().isPresent()).count();
-        return String.format(Locale.ROOT, "%d warning%s%s", warnings.size(), warnings.size() == 1 ? "" : "s",
+        return String.format(
+                Locale.ROOT,
+                "%d warning%s%s",
+                warnings.size(),
+                warnings.size() == 1 ? "" : "s",
                 placed == 0 ? "" : " (click one with a place to see it in the plot)");
     }
 }

@@ -21,8 +21,7 @@ final class WarningsPanel extends JPanel {
     private final DefaultListModel<WarningList.Warning> items = new DefaultListModel<>();
     private final JList<WarningList.Warning> list = new JList<>(items);
     private final JLabel heading = new JLabel("No warnings");
-    private transient Consumer<WarningList.Warning> onSelect = w -> {
-    };
+    private transient Consumer<WarningList.Warning> onSelect = w -> {};
 
     /** name: the list's component name (tests find it), e.g. "cutting-warnings". */
     WarningsPanel(String name, int visibleRows) {
@@ -41,8 +40,8 @@ final class WarningsPanel extends JPanel {
             private static final long serialVersionUID = 1L;
 
             @Override
-            public java.awt.Component getListCellRendererComponent(JList<?> l, Object value, int index,
-                    boolean selected, boolean focus) {
+            public java.awt.Component getListCellRendererComponent(
+                    JList<?> l, Object value, int index, boolean selected, boolean focus) {
                 java.awt.Component c = super.getListCellRendererComponent(l, value, index, selected, focus);
                 if (value instanceof WarningList.Warning w) {
                     setText((w.place().isPresent() ? "\u25CE " : "") + w.text());

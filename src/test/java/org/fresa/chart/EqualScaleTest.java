@@ -25,10 +25,17 @@ class EqualScaleTest {
 
     /** A disc of radius 10 filled in the material colour, in a long thin outline: a wide scene. */
     static PlotScene discInAStrip() {
-        return PlotScene.empty("disc").with(new PlotScene.Layer("disc", PlotScene.Style.PART,
-                List.of(Arc2.circle(Vec2.of(20, 10), 10, true))))
-                .with(new PlotScene.Layer("strip", PlotScene.Style.OUTLINE, List.of(Segment2.of(0, 0, 200, 0),
-                        Segment2.of(200, 0, 200, 20), Segment2.of(200, 20, 0, 20), Segment2.of(0, 20, 0, 0))));
+        return PlotScene.empty("disc")
+                .with(new PlotScene.Layer(
+                        "disc", PlotScene.Style.PART, List.of(Arc2.circle(Vec2.of(20, 10), 10, true))))
+                .with(new PlotScene.Layer(
+                        "strip",
+                        PlotScene.Style.OUTLINE,
+                        List.of(
+                                Segment2.of(0, 0, 200, 0),
+                                Segment2.of(200, 0, 200, 20),
+                                Segment2.of(200, 20, 0, 20),
+                                Segment2.of(0, 20, 0, 0))));
     }
 
     static double discRoundness(BufferedImage img) {
@@ -101,8 +108,8 @@ class EqualScaleTest {
 
     @Test
     void theLegendNamesEachStyleDrawnAfterItsLayers() {
-        PlotScene s = discInAStrip().with(new PlotScene.Layer("size 36", PlotScene.Style.FEED,
-                List.of(Segment2.of(0, 0, 1, 1))));
+        PlotScene s = discInAStrip()
+                .with(new PlotScene.Layer("size 36", PlotScene.Style.FEED, List.of(Segment2.of(0, 0, 1, 1))));
         for (int size = 37; size <= 40; size++) {
             s = s.with(new PlotScene.Layer("size " + size, PlotScene.Style.FEED, List.of(Segment2.of(0, 0, 1, 1))));
         }

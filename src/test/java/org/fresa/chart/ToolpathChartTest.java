@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.geom.PathIterator;
 import java.awt.geom.Path2D;
+import java.awt.geom.PathIterator;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -25,8 +25,8 @@ class ToolpathChartTest {
 
     @Test
     void arcsBecomeCurvesNotPolylines() {
-        PlotScene.Layer layer = new PlotScene.Layer("arc", PlotScene.Style.FEED,
-                List.of(Arc2.ofAngles(Vec2.ZERO, 10, 0, Math.PI / 2)));
+        PlotScene.Layer layer =
+                new PlotScene.Layer("arc", PlotScene.Style.FEED, List.of(Arc2.ofAngles(Vec2.ZERO, 10, 0, Math.PI / 2)));
         Path2D p = ToolpathChart.toPath(layer);
         int cubic = 0;
         for (PathIterator it = p.getPathIterator(null); !it.isDone(); it.next()) {
@@ -44,10 +44,17 @@ class ToolpathChartTest {
 
     @Test
     void toolpathScenesSeparateRapidsFromFeedsAndKeepArcs() {
-        ToolpathSection s = new ToolpathSection("WS1", Vec3.UNIT_Z, 10, 1, 1000, Vec3.of(0, 0, 10), List.of(
-                new Move.Rapid(Vec3.of(10, 0, 10)),
-                new Move.Linear(Vec3.of(10, 0, -1), 100),
-                new Move.Circular(Vec3.of(0, 10, -1), Vec3.of(0, 0, -1), Vec3.UNIT_Z, true, 0, 200)));
+        ToolpathSection s = new ToolpathSection(
+                "WS1",
+                Vec3.UNIT_Z,
+                10,
+                1,
+                1000,
+                Vec3.of(0, 0, 10),
+                List.of(
+                        new Move.Rapid(Vec3.of(10, 0, 10)),
+                        new Move.Linear(Vec3.of(10, 0, -1), 100),
+                        new Move.Circular(Vec3.of(0, 10, -1), Vec3.of(0, 0, -1), Vec3.UNIT_Z, true, 0, 200)));
         PlotScene scene = PlotScene.empty("t").withToolpath(new Toolpath(List.of(s)));
         PlotScene.Layer rapid = scene.layers().get(0);
         PlotScene.Layer feed = scene.layers().get(1);
@@ -59,8 +66,9 @@ class ToolpathChartTest {
     @Test
     void aVerticalLineIsDrawnToo() throws Exception {
         // JFreeChart's own shape annotation divides by the bounding-box width and drops such lines
-        PlotScene scene = PlotScene.empty("").with(new PlotScene.Layer("v", PlotScene.Style.OUTLINE,
-                List.of(Segment2.of(0, 0, 0, 100)))).withLabel(Vec2.of(50, 50), "");
+        PlotScene scene = PlotScene.empty("")
+                .with(new PlotScene.Layer("v", PlotScene.Style.OUTLINE, List.of(Segment2.of(0, 0, 0, 100))))
+                .withLabel(Vec2.of(50, 50), "");
         BufferedImage with = image(ToolpathChart.create(scene));
         // the same frame (axes, legend) without the line's shape
         BufferedImage without = image(ToolpathChart.frame(scene));

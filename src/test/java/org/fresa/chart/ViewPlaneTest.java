@@ -17,8 +17,8 @@ class ViewPlaneTest {
             1,    0.5, 0, SIDE_YZ,  2, 3, y (mm), z (mm)
             0.5,  0.5, 0.5, TOP_XY, 1, 2, x (mm), y (mm)
             """)
-    void aViewLooksAlongTheAxisMostlyFollowedAndNamesItsAxes(double ax, double ay, double az, ViewPlane view,
-            double h, double v, String horizontal, String vertical) {
+    void aViewLooksAlongTheAxisMostlyFollowedAndNamesItsAxes(
+            double ax, double ay, double az, ViewPlane view, double h, double v, String horizontal, String vertical) {
         ViewPlane p = ViewPlane.along(Vec3.of(ax, ay, az));
         assertAll(
                 () -> assertEquals(view, p),

@@ -87,14 +87,16 @@ class AptProgramCheckTest {
     @Test
     void entryAngleRuleRefusesAHelixSteeperThanThreeDegrees() {
         // a full turn of radius 5 dropping 2 mm: atan(2 / 31.4) = 3.6 degrees
-        String p = GOOD.replace("GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
+        String p = GOOD.replace(
+                "GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
                 "CIRCLE/5.000,0.000,0.000,0,0,1,5.000\nGOTO/0.000,0.000,-2.000\n");
         Failure f = fails(p);
         assertEquals("entry angle", f.rule().name());
         assertEquals(13, f.line());
         assertTrue(f.message().contains("3.6"), f.message());
         // two turns of the same helix, 1.8 degrees, pass
-        String two = GOOD.replace("GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
+        String two = GOOD.replace(
+                "GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
                 "CIRCLE/5.000,0.000,0.000,0,0,1,5.000\nGOTO/0.000,0.000,-1.000\n"
                         + "CIRCLE/5.000,0.000,-1.000,0,0,1,5.000\nGOTO/0.000,0.000,-2.000\n");
         ProgramCheck.Verdict v = ProgramCheck.of(two, NcDialect.APT, MILL);
@@ -103,7 +105,8 @@ class AptProgramCheckTest {
 
     @Test
     void floorRuleRefusesAMoveBelowTheFloor() {
-        Failure f = fails(GOOD.replace("GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
+        Failure f = fails(GOOD.replace(
+                "GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.000\n",
                 "GOTO/57.272,0.000,-2.000\nGOTO/0.000,0.000,-2.500\n"));
         assertEquals("floor", f.rule().name());
         assertEquals(13, f.line());
@@ -113,8 +116,9 @@ class AptProgramCheckTest {
     void floorRuleSeesTheLowestPointOfAnArcInAVerticalPlane() {
         // a half circle about -Y from (0,0,-2) to (10,0,-2) through (5,0,-7): counter-clockwise about -Y dips
         // (with a cutter that may plunge, so that only the floor is in question)
-        Failure f = fails(GOOD.replace("CIRCLE/5.000,0.000,-2.000,0,0,-1,5.000",
-                "CIRCLE/5.000,0.000,-2.000,0,-1,0,5.000"), MILL.withOtherTools(ToolLimits.centreCuttingPlunge()));
+        Failure f = fails(
+                GOOD.replace("CIRCLE/5.000,0.000,-2.000,0,0,-1,5.000", "CIRCLE/5.000,0.000,-2.000,0,-1,0,5.000"),
+                MILL.withOtherTools(ToolLimits.centreCuttingPlunge()));
         assertEquals("floor", f.rule().name());
         assertEquals(15, f.line());
         assertTrue(f.message().contains("Z -7"), f.message());
@@ -139,14 +143,19 @@ class AptProgramCheckTest {
     @Test
     void statementsThatCannotBeReadAreRefused() {
         assertTrue(fails(GOOD.replace("UNITS/MM", "UNITS/INCHES")).message().contains("only UNITS/MM"));
-        assertTrue(fails(GOOD.replace("GOTO/0.000,0.000,5.000", "GOTO/0.000,0.000")).message().contains("x,y,z"));
-        assertTrue(fails(GOOD.replace("GOTO/0.000,0.000,5.000", "GOTO/0.000,abc,5")).message().contains("'ABC'"));
+        assertTrue(fails(GOOD.replace("GOTO/0.000,0.000,5.000", "GOTO/0.000,0.000"))
+                .message()
+                .contains("x,y,z"));
+        assertTrue(fails(GOOD.replace("GOTO/0.000,0.000,5.000", "GOTO/0.000,abc,5"))
+                .message()
+                .contains("'ABC'"));
         assertTrue(fails(GOOD.replace("COOLNT/OFF", "TLON")).message().contains("'TLON'"));
         assertTrue(fails(GOOD.replace("CUTTER/6.000", "CUTTER/0")).message().contains("diameter"));
         assertTrue(fails(GOOD.replace("0,0,-1,5.000", "0,0,-2,5.000")).message().contains("unit vector"));
         assertTrue(fails(GOOD.replace("0,0,-1,5.000", "0,0,-1,4.000")).message().contains("not on the CIRCLE"));
         assertTrue(fails(GOOD.replace("GOTO/10.000,0.000,-2.000\nDELAY", "DELAY/1\nGOTO/10.000,0.000,-2.000\nDELAY"))
-                .message().contains("followed by the GOTO"));
+                .message()
+                .contains("followed by the GOTO"));
         Failure f = fails(GOOD.replace("FEDRAT/300.0,MMPM", "FEDRAT/300.0,IPM"));
         assertEquals("words", f.rule().name());
         assertEquals(10, f.line());

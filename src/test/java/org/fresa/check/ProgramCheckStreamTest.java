@@ -21,10 +21,22 @@ class ProgramCheckStreamTest {
 
     private static List<String> programs() {
         String good = ProgramCheckTest.GOOD;
-        String cut = "(sheet)\nG21 G90 G17 G40 G94\n(part 1)\nG0 X1 Y1\nM3 S1\nG1 X5 Y1 F2000\nG3 X5 Y3 I0 J1\nM5\nM2\n";
-        List<String> base = List.of(good, good.replace("S3000 M3\n", ""), good.replace("G1 X57.272", "G1 XNaN X57.272"),
-                good.replace("F300.0", "F0.0"), cut, cut.replace("M3 S1\n", ""), cut.replace("X5 Y3", "X5 YQ"),
-                "", "\n", "\r", "\r\n", "M2", cut.substring(0, cut.length() - 1));
+        String cut =
+                "(sheet)\nG21 G90 G17 G40 G94\n(part 1)\nG0 X1 Y1\nM3 S1\nG1 X5 Y1 F2000\nG3 X5 Y3 I0 J1\nM5\nM2\n";
+        List<String> base = List.of(
+                good,
+                good.replace("S3000 M3\n", ""),
+                good.replace("G1 X57.272", "G1 XNaN X57.272"),
+                good.replace("F300.0", "F0.0"),
+                cut,
+                cut.replace("M3 S1\n", ""),
+                cut.replace("X5 Y3", "X5 YQ"),
+                "",
+                "\n",
+                "\r",
+                "\r\n",
+                "M2",
+                cut.substring(0, cut.length() - 1));
         List<String> all = new ArrayList<>();
         for (String p : base) {
             all.add(p);
@@ -53,15 +65,15 @@ class ProgramCheckStreamTest {
             }
 
             @Override
-            public void close() {
-            }
+            public void close() {}
         };
     }
 
     private static String verdict(ProgramCheck.Verdict v) {
         Optional<Failure> f = v.failure();
-        return v.blocks() + " blocks, " + f.map(x -> "line " + x.line() + " " + x.rule().name() + ": " + x.message())
-                .orElse("passes");
+        return v.blocks() + " blocks, "
+                + f.map(x -> "line " + x.line() + " " + x.rule().name() + ": " + x.message())
+                        .orElse("passes");
     }
 
     @Test

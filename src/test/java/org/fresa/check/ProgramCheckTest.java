@@ -88,9 +88,21 @@ class ProgramCheckTest {
 
     @Test
     void wordRuleRefusesASpindleSpeedOfZeroAndAFeedBelowTheRange() {
-        assertEquals("words", fails(GOOD.replace("S3000", "S0"), NcDialect.LINUXCNC, MILL).rule().name());
-        assertEquals("words", fails(GOOD.replace("F300.0", "F0.0"), NcDialect.LINUXCNC, MILL).rule().name());
-        assertEquals("words", fails(GOOD.replace("Z5.000", "Z50000.000"), NcDialect.LINUXCNC, MILL).rule().name());
+        assertEquals(
+                "words",
+                fails(GOOD.replace("S3000", "S0"), NcDialect.LINUXCNC, MILL)
+                        .rule()
+                        .name());
+        assertEquals(
+                "words",
+                fails(GOOD.replace("F300.0", "F0.0"), NcDialect.LINUXCNC, MILL)
+                        .rule()
+                        .name());
+        assertEquals(
+                "words",
+                fails(GOOD.replace("Z5.000", "Z50000.000"), NcDialect.LINUXCNC, MILL)
+                        .rule()
+                        .name());
     }
 
     @Test
@@ -113,8 +125,10 @@ class ProgramCheckTest {
     void entryAngleRuleLetsADrillOrAPlungingCentreCutterGoStraightDown() {
         String p = GOOD.replace("G1 X57.272 Y0.000 Z-2.000", "G1 X0.000 Y0.000 Z-2.000");
         assertEquals("entry angle", fails(p, NcDialect.LINUXCNC, MILL).rule().name());
-        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, MILL.withTool(1, ToolLimits.drill())).ok());
-        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, MILL.withTool(1, ToolLimits.centreCuttingPlunge())).ok());
+        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, MILL.withTool(1, ToolLimits.drill()))
+                .ok());
+        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, MILL.withTool(1, ToolLimits.centreCuttingPlunge()))
+                .ok());
     }
 
     @Test
@@ -125,17 +139,24 @@ class ProgramCheckTest {
         assertEquals("entry angle", f.rule().name());
         assertTrue(f.reason().contains("3.6 degrees"), f.reason());
         // two turns (P2) halve it: 1.8 degrees
-        assertTrue(ProgramCheck.of(helix.replace("J0.000", "J0.000 P2"), NcDialect.LINUXCNC, MILL).ok());
-        assertTrue(ProgramCheck.of(helix.replace("J0.000", "J0.000 TURN=1"), NcDialect.SINUMERIK_840D, MILL).ok());
+        assertTrue(ProgramCheck.of(helix.replace("J0.000", "J0.000 P2"), NcDialect.LINUXCNC, MILL)
+                .ok());
+        assertTrue(ProgramCheck.of(helix.replace("J0.000", "J0.000 TURN=1"), NcDialect.SINUMERIK_840D, MILL)
+                .ok());
     }
 
     @Test
     void entryAngleRuleLeavesDescentsInTheAirAlone() {
         String p = GOOD.replace("G1 X0.000 Y0.000 Z0.000 F300.0", "G1 X0.000 Y0.000 Z0.000 F300.0\nG1 Z0.000");
         assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, MILL).ok());
-        String air = GOOD.replace("G0 X0.000 Y0.000 Z5.000\nG1 X0.000 Y0.000 Z0.000", "G0 X0.000 Y0.000 Z9.000\nG1 X0.000 Y0.000 Z0.000");
+        String air = GOOD.replace(
+                "G0 X0.000 Y0.000 Z5.000\nG1 X0.000 Y0.000 Z0.000", "G0 X0.000 Y0.000 Z9.000\nG1 X0.000 Y0.000 Z0.000");
         assertTrue(ProgramCheck.of(air, NcDialect.LINUXCNC, MILL).ok());
-        assertEquals("entry angle", fails(air, NcDialect.LINUXCNC, MILL.withHeights(-1e-6 + 1, -2, 0)).rule().name());
+        assertEquals(
+                "entry angle",
+                fails(air, NcDialect.LINUXCNC, MILL.withHeights(-1e-6 + 1, -2, 0))
+                        .rule()
+                        .name());
     }
 
     @Test
@@ -145,7 +166,8 @@ class ProgramCheckTest {
         assertEquals("floor", f.rule().name());
         assertEquals(10, f.line());
         assertTrue(f.reason().contains("0.5 mm below the floor Z -1.5 mm"), f.reason());
-        assertTrue(ProgramCheck.of(GOOD, NcDialect.LINUXCNC, MILL.withHeights(0, -1.5, 0.5)).ok());
+        assertTrue(ProgramCheck.of(GOOD, NcDialect.LINUXCNC, MILL.withHeights(0, -1.5, 0.5))
+                .ok());
     }
 
     @Test
@@ -193,8 +215,15 @@ class ProgramCheckTest {
         Limits.Stock block = new Limits.Stock(10, -50, -20, 100, 50, 0);
         Limits mill = Limits.milling().withStock(block);
         // the cutter of radius 4 at X0 stands 6 mm clear of the block's side: it plunges in the air
-        assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(4))).ok());
-        Failure f = fails(p, NcDialect.LINUXCNC, mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(12)));
+        assertTrue(ProgramCheck.of(
+                        p,
+                        NcDialect.LINUXCNC,
+                        mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(4)))
+                .ok());
+        Failure f = fails(
+                p,
+                NcDialect.LINUXCNC,
+                mill.withTool(1, ToolLimits.notCentreCutting().withRadiusMm(12)));
         assertEquals("entry angle", f.rule().name());
     }
 
@@ -205,23 +234,41 @@ class ProgramCheckTest {
         Limits l = MILL.withHeights(0, -10, 0).withTool(1, ToolLimits.drill().withRadiusMm(5));
         Limits wide = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(10));
         // a 10 mm pilot under a 20 mm cutter: its core is over the void down to the drill's tip
-        assertTrue(ProgramCheck.of(drill + mill.formatted("-10"), NcDialect.LINUXCNC, wide).ok());
+        assertTrue(ProgramCheck.of(drill + mill.formatted("-10"), NcDialect.LINUXCNC, wide)
+                .ok());
         // deeper than the drill went, before the drill, a pilot narrower than half the cutter, off its axis
-        assertEquals("entry angle", fails(drill + mill.formatted("-10.5"), NcDialect.LINUXCNC, wide).rule().name());
-        assertEquals("entry angle", fails(mill.formatted("-10").replace("M2\n", "") + drill + "M2\n",
-                NcDialect.LINUXCNC, wide).rule().name());
+        assertEquals(
+                "entry angle",
+                fails(drill + mill.formatted("-10.5"), NcDialect.LINUXCNC, wide)
+                        .rule()
+                        .name());
+        assertEquals(
+                "entry angle",
+                fails(mill.formatted("-10").replace("M2\n", "") + drill + "M2\n", NcDialect.LINUXCNC, wide)
+                        .rule()
+                        .name());
         Limits huge = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(10.5));
-        assertEquals("entry angle", fails(drill + mill.formatted("-10"), NcDialect.LINUXCNC, huge).rule().name());
+        assertEquals(
+                "entry angle",
+                fails(drill + mill.formatted("-10"), NcDialect.LINUXCNC, huge)
+                        .rule()
+                        .name());
         Limits small = l.withTool(2, ToolLimits.notCentreCutting().withRadiusMm(6));
-        assertTrue(ProgramCheck.of(drill + mill.formatted("-10").replace("X20 Y20", "X22 Y20"), NcDialect.LINUXCNC,
-                small).ok());
-        assertEquals("entry angle", fails(drill + mill.formatted("-10").replace("X20 Y20", "X22.1 Y20"),
-                NcDialect.LINUXCNC, small).rule().name());
+        assertTrue(
+                ProgramCheck.of(drill + mill.formatted("-10").replace("X20 Y20", "X22 Y20"), NcDialect.LINUXCNC, small)
+                        .ok());
+        assertEquals(
+                "entry angle",
+                fails(drill + mill.formatted("-10").replace("X20 Y20", "X22.1 Y20"), NcDialect.LINUXCNC, small)
+                        .rule()
+                        .name());
     }
 
     @Test
     void entryAngleRuleFollowsTheToolAxisThePostStates() {
-        String p = GOOD.replace("(slot)", "(slot tool 1 D8.000)\n(tool axis 0.000 -1.000 0.000 is not +Z: needs the part turned)")
+        String p = GOOD.replace(
+                        "(slot)",
+                        "(slot tool 1 D8.000)\n(tool axis 0.000 -1.000 0.000 is not +Z: needs the part turned)")
                 .replace("G1 X57.272 Y0.000 Z-2.000", "G1 X0.000 Y2.000 Z0.000");
         // along -Y the move to Y2 goes against the axis: a plunge; the descent to Z0 is sideways
         Failure f = fails(p, NcDialect.LINUXCNC, Limits.milling());

@@ -40,7 +40,7 @@ class CutOrderOverrideTest {
     }
 
     static CutPlan plan(CutOrderOverride o, CuttingOptions opts) {
-        return CutPlanner.plan(Map.of("0", drawing()), opts, o, (f, s) -> { });
+        return CutPlanner.plan(Map.of("0", drawing()), opts, o, (f, s) -> {});
     }
 
     static CutPlan plan(CutOrderOverride o) {
@@ -80,13 +80,14 @@ class CutOrderOverrideTest {
     @Test
     void aStartPointMovesOntoTheNearestPointOfTheToolPathOnALine() {
         // above part 2's top edge: the tool path runs a half kerf above it, at y = 31
-        CutOrderOverride o = new CutOrderOverride(List.of(
-                new CutOrderOverride.Cut("part 2", Vec2.of(90, 12), Optional.of(Vec2.of(75, 40)))));
+        CutOrderOverride o = new CutOrderOverride(
+                List.of(new CutOrderOverride.Cut("part 2", Vec2.of(90, 12), Optional.of(Vec2.of(75, 40)))));
         CutPath c = cut(plan(o), "part 2");
         assertEquals(75, c.path().get(0).start().x(), 1e-9);
         assertEquals(31, c.path().get(0).start().y(), 1e-9);
         assertTrue(!c.leadIn().isEmpty(), "the lead-in placed at the new start");
-        assertEquals(c.path().get(0).start(), c.leadIn().get(c.leadIn().size() - 1).end());
+        assertEquals(
+                c.path().get(0).start(), c.leadIn().get(c.leadIn().size() - 1).end());
         assertNotEquals(c.pierce(), cut(plan(CutOrderOverride.NONE), "part 2").pierce());
     }
 
@@ -94,29 +95,36 @@ class CutOrderOverrideTest {
     void aStartPointMovesOntoTheNearestPointOfTheToolPathOnAnArc() {
         // the round hole's tool path has a radius of 7 mm; asked at 45 deg, 20 mm out
         Vec2 ask = HOLE_CENTRE.plus(Vec2.of(1, 1).normalized().times(20));
-        CutOrderOverride o = new CutOrderOverride(List.of(
-                new CutOrderOverride.Cut("part 1 hole 1", Vec2.of(28, 15), Optional.of(ask))));
+        CutOrderOverride o = new CutOrderOverride(
+                List.of(new CutOrderOverride.Cut("part 1 hole 1", Vec2.of(28, 15), Optional.of(ask))));
         CutPath c = cut(plan(o), "part 1 hole 1");
         Vec2 want = HOLE_CENTRE.plus(Vec2.of(1, 1).normalized().times(7));
-        assertEquals(0, c.path().get(0).start().distance(want), 1e-6, () -> c.path().get(0).start().toString());
+        assertEquals(
+                0,
+                c.path().get(0).start().distance(want),
+                1e-6,
+                () -> c.path().get(0).start().toString());
         assertTrue(c.path().curves().stream().allMatch(k -> k instanceof Arc2), "the hole is still cut in arcs");
     }
 
     @Test
     void aStartPointOnACutWithoutLeadsStaysWhereAsked() {
         CuttingOptions noLeads = CuttingOptions.of(CutProcess.PLASMA, 2, 0, 0, false);
-        CutOrderOverride o = new CutOrderOverride(List.of(
-                new CutOrderOverride.Cut("part 1", Vec2.of(0, 10), Optional.of(Vec2.of(-5, 20)))));
+        CutOrderOverride o = new CutOrderOverride(
+                List.of(new CutOrderOverride.Cut("part 1", Vec2.of(0, 10), Optional.of(Vec2.of(-5, 20)))));
         CutPath c = cut(plan(o, noLeads), "part 1");
-        assertEquals(0, c.pierce().distance(Vec2.of(-1, 20)), 1e-9, () -> c.pierce().toString());
+        assertEquals(
+                0, c.pierce().distance(Vec2.of(-1, 20)), 1e-9, () -> c.pierce().toString());
     }
 
     @Test
     void aPartBeforeItsHoleIsRefusedNamingBoth() {
         CutOrderOverride o = new CutOrderOverride(List.of(at("part 1", 0, 10), at("part 1 hole 1", 28, 15)));
         CutOrderOverride.Refused e = assertThrows(CutOrderOverride.Refused.class, () -> plan(o));
-        assertTrue(e.getMessage().contains("part 1 (40.000 x 30.000 mm at 0.000, 0.000) (cut 1)")
-                && e.getMessage().contains("part 1 hole 1 (16.000 x 16.000 mm at 12.000, 7.000) (cut 2)"), e.getMessage());
+        assertTrue(
+                e.getMessage().contains("part 1 (40.000 x 30.000 mm at 0.000, 0.000) (cut 1)")
+                        && e.getMessage().contains("part 1 hole 1 (16.000 x 16.000 mm at 12.000, 7.000) (cut 2)"),
+                e.getMessage());
     }
 
     @Test
@@ -128,35 +136,60 @@ class CutOrderOverrideTest {
         Map<String, List<Curve2>> d = Map.of("0", l);
         CuttingOptions o = CutPlannerTest.plasma(2);
         assertEquals(List.of("part 2", "part 1 hole 1", "part 1"), labels(CutPlanner.plan(d, o)));
-        CutOrderOverride.Refused e = assertThrows(CutOrderOverride.Refused.class, () -> CutPlanner.plan(d, o,
-                new CutOrderOverride(List.of(at("part 1 hole 1", 20, 50), at("part 2", 40, 50))), (f, s) -> { }));
-        assertTrue(e.getMessage().startsWith("the cut order cuts part 1 hole 1 (60.000 x 60.000 mm at 20.000, 20.000)"
-                + " (cut 1) before part 2"), e.getMessage());
+        CutOrderOverride.Refused e = assertThrows(
+                CutOrderOverride.Refused.class,
+                () -> CutPlanner.plan(
+                        d,
+                        o,
+                        new CutOrderOverride(List.of(at("part 1 hole 1", 20, 50), at("part 2", 40, 50))),
+                        (f, s) -> {}));
+        assertTrue(
+                e.getMessage()
+                        .startsWith("the cut order cuts part 1 hole 1 (60.000 x 60.000 mm at 20.000, 20.000)"
+                                + " (cut 1) before part 2"),
+                e.getMessage());
         // only the frame named: the window and the plate in it still come first, plate before window
-        assertEquals(List.of("part 2", "part 1 hole 1", "part 1"), labels(CutPlanner.plan(d, o,
-                new CutOrderOverride(List.of(at("part 1", 100, 50))), (f, s) -> { })));
+        assertEquals(
+                List.of("part 2", "part 1 hole 1", "part 1"),
+                labels(CutPlanner.plan(d, o, new CutOrderOverride(List.of(at("part 1", 100, 50))), (f, s) -> {})));
     }
 
     @Test
     void aContourNotInTheDrawingIsWarnedAboutAndIgnored() {
         CutPlan p = plan(new CutOrderOverride(List.of(at("part 9", 500, 500), at("part 2", 90, 12))));
         assertEquals(List.of("part 2 hole 1", "part 2", "part 1 hole 1", "part 1"), labels(p));
-        assertTrue(p.warnings().contains("cut order: no contour of the drawing passes through part 9 at (500.000, 500.000):"
-                + " ignored"), p.warnings()::toString);
+        assertTrue(
+                p.warnings()
+                        .contains("cut order: no contour of the drawing passes through part 9 at (500.000, 500.000):"
+                                + " ignored"),
+                p.warnings()::toString);
     }
 
     @Test
     void theProgramOfAnOverriddenOrderPassesTheProgramCheck(@TempDir Path dir) throws Exception {
-        List<Contour> contours = List.of(new Contour(CutPlannerTest.rect(0, 0, 40, 30)),
-                new Contour(List.of(drawing().get(4), drawing().get(5))), new Contour(CutPlannerTest.rect(60, 0, 30, 30)),
+        List<Contour> contours = List.of(
+                new Contour(CutPlannerTest.rect(0, 0, 40, 30)),
+                new Contour(List.of(drawing().get(4), drawing().get(5))),
+                new Contour(CutPlannerTest.rect(60, 0, 30, 30)),
                 new Contour(CutPlannerTest.rect(70, 10, 10, 10)));
         Path dxf = dir.resolve("plates.dxf");
         Files.writeString(dxf, org.fresa.dxf.DxfWriter.write(contours, "0"));
-        CutOrderOverride o = new CutOrderOverride(List.of(at("part 2 hole 1", 70, 15),
+        CutOrderOverride o = new CutOrderOverride(List.of(
+                at("part 2 hole 1", 70, 15),
                 new CutOrderOverride.Cut("part 2", Vec2.of(90, 12), Optional.of(Vec2.of(75, 40))),
                 new CutOrderOverride.Cut("part 1 hole 1", Vec2.of(28, 15), Optional.of(Vec2.of(20, 0)))));
-        CuttingSettings s = new CuttingSettings(dxf, 2, CutProcess.PLASMA, 3, 1, LeadShape.ARC, 0.05,
-                org.fresa.dxf.DrawingUnits.MM, false, org.fresa.post.CuttingPost.LINUXCNC).withCutOrder(o);
+        CuttingSettings s = new CuttingSettings(
+                        dxf,
+                        2,
+                        CutProcess.PLASMA,
+                        3,
+                        1,
+                        LeadShape.ARC,
+                        0.05,
+                        org.fresa.dxf.DrawingUnits.MM,
+                        false,
+                        org.fresa.post.CuttingPost.LINUXCNC)
+                .withCutOrder(o);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(List.of("part 2 hole 1", "part 2", "part 1 hole 1", "part 1"), labels(r.plan()));
         CuttingService.check(r, "program.ngc");
@@ -172,23 +205,50 @@ class CutOrderOverrideTest {
     @Test
     void aJobWhoseOrderCutsAPartBeforeItsHoleExitsTwoNamingBoth(@TempDir Path dir) throws Exception {
         Path dxf = dir.resolve("plate.dxf");
-        Files.writeString(dxf, org.fresa.dxf.DxfWriter.write(List.of(new Contour(CutPlannerTest.rect(0, 0, 40, 30)),
-                new Contour(CutPlannerTest.rect(10, 10, 10, 10))), "0"));
+        Files.writeString(
+                dxf,
+                org.fresa.dxf.DxfWriter.write(
+                        List.of(
+                                new Contour(CutPlannerTest.rect(0, 0, 40, 30)),
+                                new Contour(CutPlannerTest.rect(10, 10, 10, 10))),
+                        "0"));
         Path job = dir.resolve("job.xml");
-        org.fresa.job.JobXml.write(org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT).withCutting(new CuttingSettings(dxf,
-                2, CutProcess.PLASMA, 3, 1, LeadShape.ARC, 0.05, org.fresa.dxf.DrawingUnits.MM, false,
-                org.fresa.post.CuttingPost.LINUXCNC).withCutOrder(new CutOrderOverride(List.of(
-                        at("part 1", 40, 15), at("part 1 hole 1", 10, 15))))), job);
+        org.fresa.job.JobXml.write(
+                org.fresa.job.Job.empty(org.fresa.job.JobTask.CUT)
+                        .withCutting(new CuttingSettings(
+                                        dxf,
+                                        2,
+                                        CutProcess.PLASMA,
+                                        3,
+                                        1,
+                                        LeadShape.ARC,
+                                        0.05,
+                                        org.fresa.dxf.DrawingUnits.MM,
+                                        false,
+                                        org.fresa.post.CuttingPost.LINUXCNC)
+                                .withCutOrder(new CutOrderOverride(
+                                        List.of(at("part 1", 40, 15), at("part 1 hole 1", 10, 15))))),
+                job);
         java.io.StringWriter err = new java.io.StringWriter();
-        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
-                new java.io.PrintWriter(err, true), "run", job.toString(), "--out", dir.resolve("out").toString());
+        int status = org.fresa.app.cli.FresaCommand.execute(
+                new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true),
+                "run",
+                job.toString(),
+                "--out",
+                dir.resolve("out").toString());
         assertEquals(2, status, err.toString());
-        assertTrue(err.toString().contains("cuts part 1 (40.000 x 30.000 mm at 0.000, 0.000) (cut 1) before part 1 hole 1")
-                && !err.toString().contains("\tat "), err.toString());
+        assertTrue(
+                err.toString().contains("cuts part 1 (40.000 x 30.000 mm at 0.000, 0.000) (cut 1) before part 1 hole 1")
+                        && !err.toString().contains("\tat "),
+                err.toString());
         assertTrue(!Files.exists(dir.resolve("out").resolve("program.ngc")), "no program written");
     }
 
     static CutPath cut(CutPlan p, String label) {
-        return p.cuts().stream().filter(c -> c.label().equals(label)).findFirst().orElseThrow();
+        return p.cuts().stream()
+                .filter(c -> c.label().equals(label))
+                .findFirst()
+                .orElseThrow();
     }
 }

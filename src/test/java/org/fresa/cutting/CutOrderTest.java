@@ -40,7 +40,8 @@ class CutOrderTest {
         while (!left.isEmpty()) {
             CutPath best = null;
             for (CutPath c : left) {
-                if (c.outer() && left.stream().anyMatch(h -> !h.outer() && h.label().startsWith(c.label() + " hole"))) {
+                if (c.outer()
+                        && left.stream().anyMatch(h -> !h.outer() && h.label().startsWith(c.label() + " hole"))) {
                     continue;
                 }
                 if (best == null || c.pierce().distance(at) < best.pierce().distance(at)) {
@@ -69,8 +70,12 @@ class CutOrderTest {
         double nn = nearestNeighbourTravel(p);
         double got = p.rapidLengthMm();
         // the measured figure: 0.8x or better of the plain tour on this sheet
-        System.out.printf(java.util.Locale.ROOT, "CutOrderTest: rapid %.1f mm, nearest-neighbour tour %.1f mm (%.3f)%n",
-                got, nn, got / nn);
+        System.out.printf(
+                java.util.Locale.ROOT,
+                "CutOrderTest: rapid %.1f mm, nearest-neighbour tour %.1f mm (%.3f)%n",
+                got,
+                nn,
+                got / nn);
         assertTrue(got <= nn * 0.9, got + " mm of rapids, the nearest-neighbour tour " + nn + " mm");
     }
 

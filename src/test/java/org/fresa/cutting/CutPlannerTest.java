@@ -63,13 +63,23 @@ class CutPlannerTest {
     void anOutlineWithGapsOfAHundredthAtItsArcsClosesAndIsOffset() {
         // a 100 x 100 square with round corners of radius 10, each line stopping 0.01 mm short of its arc
         double g = 0.01;
-        List<Curve2> l = List.of(Segment2.of(10, 0, 90 - g, 0), new Arc2(Vec2.of(90, 10), Vec2.of(90, 0), Vec2.of(100, 10), true),
-                Segment2.of(100, 10 + g, 100, 90), new Arc2(Vec2.of(90, 90), Vec2.of(100, 90), Vec2.of(90, 100), true),
-                Segment2.of(90 - g, 100, 10, 100), new Arc2(Vec2.of(10, 90), Vec2.of(10, 100), Vec2.of(0, 90), true),
-                Segment2.of(0, 90 - g, 0, 10), new Arc2(Vec2.of(10, 10), Vec2.of(0, 10), Vec2.of(10, 0), true));
+        List<Curve2> l = List.of(
+                Segment2.of(10, 0, 90 - g, 0),
+                new Arc2(Vec2.of(90, 10), Vec2.of(90, 0), Vec2.of(100, 10), true),
+                Segment2.of(100, 10 + g, 100, 90),
+                new Arc2(Vec2.of(90, 90), Vec2.of(100, 90), Vec2.of(90, 100), true),
+                Segment2.of(90 - g, 100, 10, 100),
+                new Arc2(Vec2.of(10, 90), Vec2.of(10, 100), Vec2.of(0, 90), true),
+                Segment2.of(0, 90 - g, 0, 10),
+                new Arc2(Vec2.of(10, 10), Vec2.of(0, 10), Vec2.of(10, 0), true));
         CutPlan p = CutPlanner.plan(Map.of("0", l), plasma(2));
         assertEquals(1, p.cuts().size(), p.warnings()::toString);
-        assertEquals(4, p.warnings().stream().filter(w -> w.startsWith("gap of 0.0100 mm")).count(), p.warnings()::toString);
+        assertEquals(
+                4,
+                p.warnings().stream()
+                        .filter(w -> w.startsWith("gap of 0.0100 mm"))
+                        .count(),
+                p.warnings()::toString);
         for (Curve2 c : p.outers().get(0).curves()) {
             if (c instanceof Arc2 a) {
                 assertEquals(a.radius(), a.center().distance(a.end()), 1e-9, "both ends of an arc on its circle");
@@ -80,7 +90,12 @@ class CutPlannerTest {
     @Test
     void chainingIgnoresOrderAndDirectionAndRemovesRepeats() {
         List<Curve2> r = rect(0, 0, 10, 10);
-        List<Curve2> l = List.of(r.get(2).reversed(), r.get(0), r.get(3), r.get(1).reversed(), r.get(0).reversed(),
+        List<Curve2> l = List.of(
+                r.get(2).reversed(),
+                r.get(0),
+                r.get(3),
+                r.get(1).reversed(),
+                r.get(0).reversed(),
                 Segment2.of(5, 5, 5, 5));
         Chainer.Chains c = Chainer.chain(l, 0.001);
         assertEquals(1, c.closed().size());
@@ -128,7 +143,8 @@ class CutPlannerTest {
         List<Curve2> all = new ArrayList<>(outer);
         all.addAll(hole.curves());
         CutPlan paper = CutPlanner.plan(Map.of("0", all), plasma(0).withPaperMode(true));
-        assertEquals(47.5, ((Arc2) paper.outers().get(0).get(0)).radius(), 1e-9, "the paper takes the hole for the outside");
+        assertEquals(
+                47.5, ((Arc2) paper.outers().get(0).get(0)).radius(), 1e-9, "the paper takes the hole for the outside");
         CutPlan exact = CutPlanner.plan(Map.of("0", all), plasma(0));
         assertEquals(1, exact.outers().size());
         assertEquals(Math.PI * 2500, exact.outers().get(0).area(), 1e-6);
@@ -151,8 +167,10 @@ class CutPlannerTest {
         List<Vec2> tri = List.of(Vec2.ZERO, Vec2.of(100, 0), Vec2.of(100 * v.x(), 100 * v.y()));
         Contour c = Contour.polygon(tri).ccw();
         PaperCrc.Result r = PaperCrc.offset(c, 1, true); // CCW, tool on the left: inside
-        Vec2 corner = r.path().get().curves().stream().map(Curve2::start).min(
-                (p, q) -> Double.compare(p.norm(), q.norm())).get();
+        Vec2 corner = r.path().get().curves().stream()
+                .map(Curve2::start)
+                .min((p, q) -> Double.compare(p.norm(), q.norm()))
+                .get();
         assertEquals(correct, corner.norm(), 1e-4);
     }
 
@@ -172,7 +190,9 @@ class CutPlannerTest {
         CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2));
         assertEquals(1, p.uncut().size());
         assertEquals(1, p.cuts().size());
-        assertTrue(p.warnings().stream().anyMatch(w -> w.contains("too small")), p.warnings().toString());
+        assertTrue(
+                p.warnings().stream().anyMatch(w -> w.contains("too small")),
+                p.warnings().toString());
     }
 
     @Test
@@ -188,7 +208,10 @@ class CutPlannerTest {
         for (int i = 0; i < 6; i++) {
             assertFalse(p.cuts().get(i).outer());
             assertTrue(p.cuts().get(i).path().isCcw(), "holes counter-clockwise");
-            assertEquals(Math.PI * Math.pow(5 + 2 * indexOfRadius(p.cuts().get(i)) - 1, 2), p.cuts().get(i).path().area(), 1e-6);
+            assertEquals(
+                    Math.PI * Math.pow(5 + 2 * indexOfRadius(p.cuts().get(i)) - 1, 2),
+                    p.cuts().get(i).path().area(),
+                    1e-6);
         }
         CutPath outer = p.cuts().get(6);
         assertTrue(outer.outer());
@@ -213,7 +236,11 @@ class CutPlannerTest {
         for (CutPath c : p.cuts()) {
             assertEquals(c.outer() ? !outerCw : !holesCw, c.path().isCcw(), c.label());
             // the path stays in the scrap whatever the sense: outside the part, inside the holes
-            assertEquals(c.outer() ? 102 * 62 - (4 - Math.PI) : Math.PI * 81, c.path().area(), 1e-6, c.label());
+            assertEquals(
+                    c.outer() ? 102 * 62 - (4 - Math.PI) : Math.PI * 81,
+                    c.path().area(),
+                    1e-6,
+                    c.label());
         }
     }
 
@@ -222,8 +249,8 @@ class CutPlannerTest {
         List<Curve2> all = new ArrayList<>(rect(0, 0, 100, 60));
         all.add(Arc2.circle(Vec2.of(30, 30), 10, true));
         for (boolean outerCw : new boolean[] {true, false}) {
-            CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withControllerCompensation(true)
-                    .withDirections(outerCw, !outerCw));
+            CutPlan p = CutPlanner.plan(
+                    Map.of("0", all), plasma(2).withControllerCompensation(true).withDirections(outerCw, !outerCw));
             for (CutPath c : p.cuts()) {
                 assertEquals(Math.abs(c.part().area()), Math.abs(c.path().area()), 1e-9, "the drawn contour");
                 // clockwise outer: the scrap is on the left (G41); counter-clockwise: on the right (G42)
@@ -245,7 +272,9 @@ class CutPlannerTest {
         CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(1));
         assertEquals(2, p.outers().size());
         assertEquals(1, p.holes().size());
-        assertEquals(List.of(true, false, true), p.cuts().stream().map(CutPath::outer).toList());
+        assertEquals(
+                List.of(true, false, true),
+                p.cuts().stream().map(CutPath::outer).toList());
         assertEquals(400 + 4 * 20 * 0.5 + Math.PI * 0.25, p.cuts().get(0).path().area(), 1e-6);
     }
 
@@ -281,8 +310,11 @@ class CutPlannerTest {
         java.util.Random rnd = new java.util.Random(42);
         List<Curve2> all = new ArrayList<>();
         for (int i = 0; i < 30; i++) {
-            all.addAll(rect(Math.floor(rnd.nextDouble() * 20) * 25, Math.floor(rnd.nextDouble() * 20) * 25 + (i % 2) * 500,
-                    10, 10));
+            all.addAll(rect(
+                    Math.floor(rnd.nextDouble() * 20) * 25,
+                    Math.floor(rnd.nextDouble() * 20) * 25 + (i % 2) * 500,
+                    10,
+                    10));
         }
         CutPlan p = CutPlanner.plan(Map.of("0", all), plasma(2).withAvoidCutParts(false));
         List<Vec2> at = new ArrayList<>();
@@ -292,9 +324,13 @@ class CutPlannerTest {
         assertTrue(n > 20, n + " pierces");
         for (int i = 0; i < n - 2; i++) {
             for (int j = i + 2; j < n; j++) {
-                double before = at.get(i).distance(at.get(i + 1)) + (j + 1 < n ? at.get(j).distance(at.get(j + 1)) : 0);
-                double after = at.get(i).distance(at.get(j)) + (j + 1 < n ? at.get(i + 1).distance(at.get(j + 1)) : 0);
-                assertTrue(after >= before - 1e-6, "reversing " + (i + 1) + ".." + j + " saves " + (before - after) + " mm");
+                double before = at.get(i).distance(at.get(i + 1))
+                        + (j + 1 < n ? at.get(j).distance(at.get(j + 1)) : 0);
+                double after = at.get(i).distance(at.get(j))
+                        + (j + 1 < n ? at.get(i + 1).distance(at.get(j + 1)) : 0);
+                assertTrue(
+                        after >= before - 1e-6,
+                        "reversing " + (i + 1) + ".." + j + " saves " + (before - after) + " mm");
             }
         }
     }

@@ -62,8 +62,9 @@ class DxfChainingLowMemoryTest {
 
     private static void assumeLowMemory() {
         long maxHeap = Runtime.getRuntime().maxMemory();
-        assumeTrue(maxHeap <= 520 * MIB, "needs -Xmx512m (the low-memory surefire execution), has "
-                + maxHeap / MIB + " MiB");
+        assumeTrue(
+                maxHeap <= 520 * MIB,
+                "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB + " MiB");
     }
 
     /** Unit squares 2 mm apart on a grid, four LINEs each, until the file passes minBytes. */
@@ -79,8 +80,13 @@ class DxfChainingLowMemoryTest {
                 for (int k = 0; k < 4; k++) {
                     double[] a = c[k];
                     double[] b = c[(k + 1) % 4];
-                    String line = String.format(Locale.ROOT, "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n21\n%.3f\n31\n0.0\n",
-                            a[0], a[1], b[0], b[1]);
+                    String line = String.format(
+                            Locale.ROOT,
+                            "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n21\n%.3f\n31\n0.0\n",
+                            a[0],
+                            a[1],
+                            b[0],
+                            b[1]);
                     w.write(line);
                     written += line.length();
                 }

@@ -61,7 +61,8 @@ class RapidRouterTest {
         r.cutFree(square(0, 0, 10));
         List<Vec2> route = r.route(new Vec2(-5, 4), new Vec2(15, 4));
         // around a corner of the square grown by the clearance: longer than straight, shorter than a lap
-        assertAll(() -> assertTrue(route.size() > 2, route.toString()),
+        assertAll(
+                () -> assertTrue(route.size() > 2, route.toString()),
                 () -> assertEquals(new Vec2(-5, 4), route.get(0)),
                 () -> assertEquals(new Vec2(15, 4), route.get(route.size() - 1)),
                 () -> assertTrue(length(route) > 20 && length(route) < 20 + 2 * 6, length(route) + " mm"),
@@ -94,7 +95,8 @@ class RapidRouterTest {
 
     @Test
     void theConvexHullHoldsTheWholeArcOfACircle() {
-        Vec2[] h = RapidRouter.hull(List.of(new Vec2(0, 0), new Vec2(2, 0), new Vec2(1, 1), new Vec2(1, 0.5), new Vec2(0, 2)));
+        Vec2[] h = RapidRouter.hull(
+                List.of(new Vec2(0, 0), new Vec2(2, 0), new Vec2(1, 1), new Vec2(1, 0.5), new Vec2(0, 2)));
         assertEquals(3, h.length); // (1, 1) lies on the edge, (1, 0.5) inside
         RapidRouter r = new RapidRouter(0);
         r.cutFree(new Contour(List.of(Arc2.circle(Vec2.ZERO, 10, true))));
@@ -157,12 +159,14 @@ class RapidRouterTest {
         return new int[] {before, after, plan.cuts().size()};
     }
 
-    private static int count(List<Vec2> route, List<PreparedGeometry> parts, List<org.locationtech.jts.geom.Envelope> env) {
+    private static int count(
+            List<Vec2> route, List<PreparedGeometry> parts, List<org.locationtech.jts.geom.Envelope> env) {
         int n = 0;
         for (int k = 0; k + 1 < route.size(); k++) {
             LineString s = segment(route.get(k), route.get(k + 1));
             for (int j = 0; j < parts.size(); j++) {
-                if (env.get(j).intersects(s.getEnvelopeInternal()) && parts.get(j).intersects(s)
+                if (env.get(j).intersects(s.getEnvelopeInternal())
+                        && parts.get(j).intersects(s)
                         && !parts.get(j).getGeometry().touches(s)) {
                     n++;
                     break;
@@ -184,14 +188,26 @@ class RapidRouterTest {
         List<Path> files;
         if (Boolean.getBoolean("fresa.corpus.all")) {
             try (Stream<Path> s = Files.walk(CORPUS)) {
-                files = s.filter(p -> p.toString().toLowerCase(Locale.ROOT).endsWith(".dxf")).sorted().toList();
+                files = s.filter(p -> p.toString().toLowerCase(Locale.ROOT).endsWith(".dxf"))
+                        .sorted()
+                        .toList();
             }
         } else {
-            files = Stream.of("dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Schlüssel_Andi.dxf",
-                    "dxf2gcode/AFluegel_Rippen_b2_0201.dxf", "dxf2gcode/Teile.dxf", "dxf2gcode/american-flag.dxf",
-                    "dxf2gcode/celic-knot.dxf", "ezdxf/examples_addons_optimize_forms.dxf",
-                    "dxf2gcode/2-test-layers-nested.dxf", "dxf2gcode/1-poly-with-reflex.dxf", "dxf2gcode/liu-8f.dxf",
-                    "dxf2gcode/lwpoly-bulge.dxf").map(CORPUS::resolve).toList();
+            files = Stream.of(
+                            "dxf2gcode/132_2000.dxf",
+                            "dxf2gcode/pumpenteile.dxf",
+                            "dxf2gcode/Schlüssel_Andi.dxf",
+                            "dxf2gcode/AFluegel_Rippen_b2_0201.dxf",
+                            "dxf2gcode/Teile.dxf",
+                            "dxf2gcode/american-flag.dxf",
+                            "dxf2gcode/celic-knot.dxf",
+                            "ezdxf/examples_addons_optimize_forms.dxf",
+                            "dxf2gcode/2-test-layers-nested.dxf",
+                            "dxf2gcode/1-poly-with-reflex.dxf",
+                            "dxf2gcode/liu-8f.dxf",
+                            "dxf2gcode/lwpoly-bulge.dxf")
+                    .map(CORPUS::resolve)
+                    .toList();
         }
         StringBuilder report = new StringBuilder("drawing,rapids,crossing_straight,crossing_routed\n");
         int before = 0;
@@ -206,8 +222,14 @@ class RapidRouterTest {
             Map<String, List<Curve2>> layers = d.layers();
             CutPlan plan = CutPlanner.plan(layers, CuttingOptions.of(CutProcess.PLASMA, 2, 3, 1, true));
             int[] c = crossingCounts(plan);
-            report.append(CORPUS.relativize(f)).append(',').append(c[2]).append(',').append(c[0]).append(',')
-                    .append(c[1]).append('\n');
+            report.append(CORPUS.relativize(f))
+                    .append(',')
+                    .append(c[2])
+                    .append(',')
+                    .append(c[0])
+                    .append(',')
+                    .append(c[1])
+                    .append('\n');
             assertTrue(c[1] <= c[0], f + ": routed " + c[1] + " > straight " + c[0]);
             before += c[0];
             after += c[1];

@@ -74,8 +74,10 @@ class DxfArcFitterTest {
             Curve2 a = arcs.get(i);
             Curve2 b = arcs.get((i + 1) % arcs.size());
             int at = i;
-            assertAll(() -> assertEquals(a.end(), b.start(), "joint " + at + " is not exact"),
-                    () -> assertTrue(turn(a.endTangent(), b.startTangent()) < G1_RAD,
+            assertAll(
+                    () -> assertEquals(a.end(), b.start(), "joint " + at + " is not exact"),
+                    () -> assertTrue(
+                            turn(a.endTangent(), b.startTangent()) < G1_RAD,
                             "joint " + at + " turns " + turn(a.endTangent(), b.startTangent()) + " rad"));
         }
     }
@@ -99,9 +101,12 @@ class DxfArcFitterTest {
             List<Curve2> arcs = DxfArcFitter.fit(pieces, false, tol);
             double dev = deviation(pieces, arcs);
             int t = trial;
-            assertAll(() -> assertTrue(dev <= tol * (1 + 1e-6), "trial " + t + ": deviation " + dev),
+            assertAll(
+                    () -> assertTrue(dev <= tol * (1 + 1e-6), "trial " + t + ": deviation " + dev),
                     () -> assertEquals(pieces.get(0).f().apply(u0), arcs.get(0).start()),
-                    () -> assertEquals(pieces.get(0).f().apply(u1), arcs.get(arcs.size() - 1).end()));
+                    () -> assertEquals(
+                            pieces.get(0).f().apply(u1),
+                            arcs.get(arcs.size() - 1).end()));
             checkG1AndJoints(arcs, false);
         }
     }
@@ -162,13 +167,19 @@ class DxfArcFitterTest {
             DxfArcFitter.Piece first = pieces.get(0);
             DxfArcFitter.Piece last = pieces.get(pieces.size() - 1);
             int t = trial;
-            assertAll(() -> assertTrue(dev <= tol * (1 + 1e-6), "trial " + t + ": deviation " + dev),
+            assertAll(
+                    () -> assertTrue(dev <= tol * (1 + 1e-6), "trial " + t + ": deviation " + dev),
                     () -> assertEquals(first.f().apply(first.u0()), arcs.get(0).start()),
-                    () -> assertEquals(last.f().apply(last.u1()), arcs.get(arcs.size() - 1).end()));
+                    () -> assertEquals(
+                            last.f().apply(last.u1()), arcs.get(arcs.size() - 1).end()));
             checkG1AndJoints(arcs, false);
         }
-        System.out.printf(Locale.ROOT, "biarc spline deviation (rational %b): max %.6f mm at tolerance %.3f%n",
-                rational, worst, tol);
+        System.out.printf(
+                Locale.ROOT,
+                "biarc spline deviation (rational %b): max %.6f mm at tolerance %.3f%n",
+                rational,
+                worst,
+                tol);
     }
 
     @Test
@@ -204,6 +215,8 @@ class DxfArcFitterTest {
         double[] py = {0, 40, -40, 0};
         DxfArcFitter.Piece exact = new DxfArcFitter.Piece(s -> DxfReader.deBoor(3, s, 3, u, px, py, null), 0, 1);
         double dev = deviation(List.of(exact), c);
-        assertTrue(dev <= DxfReadOptions.DEFAULT.curveToleranceMm() * (1 + 1e-6), dev + " mm from " + c.size() + " curves");
+        assertTrue(
+                dev <= DxfReadOptions.DEFAULT.curveToleranceMm() * (1 + 1e-6),
+                dev + " mm from " + c.size() + " curves");
     }
 }

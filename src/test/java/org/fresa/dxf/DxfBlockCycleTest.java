@@ -20,9 +20,12 @@ class DxfBlockCycleTest {
     void aCycleOfThreeBlocksIsNamedInTheOrderTheyInsertEachOther() throws Exception {
         String blocks = block("A", "B") + block("B", "C") + block("C", "A");
         DxfDrawing d = DxfReaderTest.read(DxfReaderTest.dxf("", blocks, "0\nINSERT\n8\n0\n2\nA\n10\n0\n20\n0\n"));
-        assertAll(() -> assertEquals(3, d.curves().size()),
-                () -> assertTrue(d.warnings().stream().anyMatch(w -> w.contains(
-                        "blocks insert each other in a cycle: A -> B -> C -> A")), d.warnings().toString()));
+        assertAll(
+                () -> assertEquals(3, d.curves().size()),
+                () -> assertTrue(
+                        d.warnings().stream()
+                                .anyMatch(w -> w.contains("blocks insert each other in a cycle: A -> B -> C -> A")),
+                        d.warnings().toString()));
     }
 
     @Test
@@ -31,7 +34,8 @@ class DxfBlockCycleTest {
         stack.push("OUTER");
         stack.push("A");
         stack.push("B");
-        assertAll(() -> assertEquals("blocks insert each other in a cycle: A -> B -> A", DxfReader.cycle(stack, "A")),
+        assertAll(
+                () -> assertEquals("blocks insert each other in a cycle: A -> B -> A", DxfReader.cycle(stack, "A")),
                 () -> assertEquals("block 'B' inserts itself", DxfReader.cycle(stack, "B")));
     }
 }

@@ -20,7 +20,9 @@ class DxfCorpusTest {
     static List<Path> corpusFiles() throws IOException {
         Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
         try (Stream<Path> s = Files.walk(CORPUS)) {
-            return s.filter(p -> p.toString().toLowerCase().endsWith(".dxf")).sorted().toList();
+            return s.filter(p -> p.toString().toLowerCase().endsWith(".dxf"))
+                    .sorted()
+                    .toList();
         }
     }
 
@@ -32,8 +34,12 @@ class DxfCorpusTest {
             DxfDrawing d = DxfReader.read(p);
             {
                 report.append(p.getFileName() + " units=" + d.units() + " curves=" + d.curveCount() + " layers="
-                        + d.layers().size() + " ignored=" + d.ignored() + " warnings=" + d.warnings().size()
-                        + (d.warnings().isEmpty() ? "" : " first: " + d.warnings().get(0))).append('\n');
+                                + d.layers().size() + " ignored=" + d.ignored() + " warnings="
+                                + d.warnings().size()
+                                + (d.warnings().isEmpty()
+                                        ? ""
+                                        : " first: " + d.warnings().get(0)))
+                        .append('\n');
             }
         }
         Files.createDirectories(Path.of("target"));
@@ -47,7 +53,9 @@ class DxfCorpusTest {
         Assumptions.assumeTrue(Files.exists(p));
         DxfDrawing d = DxfReader.read(p);
         assertFalse(d.curves().isEmpty());
-        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("SPLINE") && w.contains("line 6")), d.warnings().toString());
+        assertTrue(
+                d.warnings().stream().anyMatch(w -> w.contains("SPLINE") && w.contains("line 6")),
+                d.warnings().toString());
     }
 
     @Test
@@ -56,8 +64,12 @@ class DxfCorpusTest {
         Path p = CORPUS.resolve("ezdxf/examples_dxf_circle_radius_le_0.dxf");
         Assumptions.assumeTrue(Files.exists(p));
         DxfDrawing d = DxfReader.read(p);
-        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2D") && w.contains("line 2002")), d.warnings().toString());
-        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2E")), d.warnings().toString());
+        assertTrue(
+                d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2D") && w.contains("line 2002")),
+                d.warnings().toString());
+        assertTrue(
+                d.warnings().stream().anyMatch(w -> w.contains("CIRCLE 2E")),
+                d.warnings().toString());
     }
 
     /** Every DXF version in the corpus (R12 AC1009 to R2018 AC1032, and older) gives curves from some file. */
@@ -67,7 +79,8 @@ class DxfCorpusTest {
         java.util.Map<String, Integer> curvesByVersion = new java.util.TreeMap<>();
         for (Path p : corpusFiles()) {
             String text = new String(Files.readAllBytes(p), java.nio.charset.StandardCharsets.ISO_8859_1);
-            java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\$ACADVER\\s+1\\s+(AC\\d{4})").matcher(text);
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\$ACADVER\\s+1\\s+(AC\\d{4})")
+                    .matcher(text);
             String v = m.find() ? m.group(1) : text.startsWith("AutoCAD Binary DXF") ? "binary" : "none";
             curvesByVersion.merge(v, DxfReader.read(p).curveCount(), Integer::sum);
         }
@@ -76,7 +89,12 @@ class DxfCorpusTest {
                 assertTrue(curvesByVersion.get(v) > 0, v + ": " + curvesByVersion);
             }
         }
-        assertTrue(curvesByVersion.keySet().stream().filter(k -> k.startsWith("AC")).count() >= 3, curvesByVersion.toString());
+        assertTrue(
+                curvesByVersion.keySet().stream()
+                                .filter(k -> k.startsWith("AC"))
+                                .count()
+                        >= 3,
+                curvesByVersion.toString());
         Files.createDirectories(Path.of("target"));
         Files.writeString(Path.of("target/dxf-versions.txt"), curvesByVersion.toString());
     }

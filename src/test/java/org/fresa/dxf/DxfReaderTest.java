@@ -119,10 +119,13 @@ class DxfReaderTest {
 
     @Test
     void aBlockThatInsertsItselfIsReportedAndDoesNotLoop() throws Exception {
-        String blocks = "0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nINSERT\n5\nAB\n2\nB\n10\n5\n20\n0\n0\nENDBLK\n";
+        String blocks =
+                "0\nBLOCK\n2\nB\n10\n0\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nINSERT\n5\nAB\n2\nB\n10\n5\n20\n0\n0\nENDBLK\n";
         DxfDrawing d = read(dxf("", blocks, "0\nINSERT\n2\nB\n10\n0\n20\n0\n"));
         assertEquals(1, d.curveCount());
-        assertTrue(d.warnings().stream().anyMatch(w -> w.contains("inserts itself")), d.warnings().toString());
+        assertTrue(
+                d.warnings().stream().anyMatch(w -> w.contains("inserts itself")),
+                d.warnings().toString());
     }
 
     @Test
@@ -133,11 +136,15 @@ class DxfReaderTest {
         assertEquals(25.4, inch.curves().get(0).length(), 1e-12);
         DxfDrawing cm = read(dxf("9\n$INSUNITS\n70\n5\n", "", line));
         assertEquals(10, cm.curves().get(0).length(), 1e-12);
-        DxfDrawing none = DxfReader.read(dxf("", "", line).getBytes(StandardCharsets.UTF_8), "t",
+        DxfDrawing none = DxfReader.read(
+                dxf("", "", line).getBytes(StandardCharsets.UTF_8),
+                "t",
                 new DxfReadOptions(Optional.empty(), DxfUnits.INCH, 0.001, 16, 1000));
         assertEquals(25.4, none.curves().get(0).length(), 1e-12);
         assertFalse(none.warnings().isEmpty());
-        DxfDrawing forced = DxfReader.read(dxf("9\n$INSUNITS\n70\n1\n", "", line).getBytes(StandardCharsets.UTF_8), "t",
+        DxfDrawing forced = DxfReader.read(
+                dxf("9\n$INSUNITS\n70\n1\n", "", line).getBytes(StandardCharsets.UTF_8),
+                "t",
                 DxfReadOptions.DEFAULT.withUnits(Optional.of(DxfUnits.MM)));
         assertEquals(1, forced.curves().get(0).length(), 1e-12);
     }
@@ -192,8 +199,12 @@ class DxfReaderTest {
     void aDegenerateEllipseIsNamedWithItsNumbersNotARecord() throws Exception {
         String e = "0\nELLIPSE\n5\n2F\n10\n0\n20\n0\n11\n0\n21\n5\n40\n0\n";
         DxfDrawing d = read(dxf("", "", e));
-        String w = d.warnings().stream().filter(x -> x.startsWith("ELLIPSE 2F")).findFirst().orElseThrow();
-        assertAll(() -> assertTrue(w.contains("major axis (0, 5) and axis ratio 0"), w),
+        String w = d.warnings().stream()
+                .filter(x -> x.startsWith("ELLIPSE 2F"))
+                .findFirst()
+                .orElseThrow();
+        assertAll(
+                () -> assertTrue(w.contains("major axis (0, 5) and axis ratio 0"), w),
                 () -> assertFalse(w.contains("Vec2"), w));
     }
 
@@ -201,8 +212,11 @@ class DxfReaderTest {
     void everyKindOfEntityLeftOutIsNamedWithItsFirstPlace() throws Exception {
         String e = "0\nTEXT\n5\n1A\n1\nhi\n0\nTEXT\n5\n1B\n1\nho\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
         DxfDrawing d = read(dxf("", "", e));
-        assertTrue(d.warnings().contains("2 TEXT entities left out (not a line, arc or curve to cut), the first: TEXT 1A"
-                + " at line 6"), d.warnings().toString());
+        assertTrue(
+                d.warnings()
+                        .contains("2 TEXT entities left out (not a line, arc or curve to cut), the first: TEXT 1A"
+                                + " at line 6"),
+                d.warnings().toString());
     }
 
     @Test
@@ -211,7 +225,8 @@ class DxfReaderTest {
         DxfDrawing d = read(dxf("", "", e));
         assertEquals(1, d.curveCount());
         assertEquals(1, d.ignored().get("TEXT"));
-        assertTrue(d.warnings().contains("CIRCLE A1 at line 6: radius 0.0 is not > 0; the circle is left out"),
+        assertTrue(
+                d.warnings().contains("CIRCLE A1 at line 6: radius 0.0 is not > 0; the circle is left out"),
                 d.warnings().toString());
     }
 
@@ -219,7 +234,8 @@ class DxfReaderTest {
     void aCoordinateThatIsNotANumberRefusesTheDrawingAtItsLine() {
         String e = "0\nLINE\n5\nA1\n10\n0\n20\n0\n11\nabc\n21\n0\n";
         DxfException ex = assertThrows(DxfException.class, () -> read(dxf("", "", e)));
-        assertEquals("t.dxf: line 14: LINE A1 (from line 6): group 11 is 'abc': expected an x coordinate (a finite number)",
+        assertEquals(
+                "t.dxf: line 14: LINE A1 (from line 6): group 11 is 'abc': expected an x coordinate (a finite number)",
                 ex.getMessage());
     }
 
@@ -227,15 +243,20 @@ class DxfReaderTest {
     void aDrawingPastTheCurveLimitIsRefusedNotCutShort() {
         String line = "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n";
         DxfReadOptions three = new DxfReadOptions(Optional.empty(), DxfUnits.MM, 0.001, 16, 3);
-        DxfException ex = assertThrows(DxfException.class, () -> DxfReader.read(
-                dxf("", "", line.repeat(4)).getBytes(StandardCharsets.UTF_8), "t.dxf", three));
-        assertTrue(ex.getMessage().startsWith("t.dxf: the drawing expands to more than 3 lines and arcs"), ex.getMessage());
+        DxfException ex = assertThrows(
+                DxfException.class,
+                () -> DxfReader.read(dxf("", "", line.repeat(4)).getBytes(StandardCharsets.UTF_8), "t.dxf", three));
+        assertTrue(
+                ex.getMessage().startsWith("t.dxf: the drawing expands to more than 3 lines and arcs"),
+                ex.getMessage());
     }
 
     @Test
     void aFileThatIsNotDxfIsRejectedWithItsLine() {
-        DxfException ex = assertThrows(DxfException.class,
-                () -> DxfReader.read("hello\nworld\n".getBytes(StandardCharsets.UTF_8), "x.dxf", DxfReadOptions.DEFAULT));
+        DxfException ex = assertThrows(
+                DxfException.class,
+                () -> DxfReader.read(
+                        "hello\nworld\n".getBytes(StandardCharsets.UTF_8), "x.dxf", DxfReadOptions.DEFAULT));
         assertTrue(ex.getMessage().contains("x.dxf: line 1"), ex.getMessage());
     }
 
@@ -257,7 +278,8 @@ class DxfReaderTest {
                 + "0\nHATCH\n8\nCUT\n0\nDIMENSION\n8\nCUT\n0\nMTEXT\n8\nCUT\n";
         String text = tables + dxf("", "", entities);
         DxfDrawing d = read(text);
-        assertAll(() -> assertEquals(List.of("CUT"), List.copyOf(d.layers().keySet())),
+        assertAll(
+                () -> assertEquals(List.of("CUT"), List.copyOf(d.layers().keySet())),
                 () -> assertEquals(1, d.curveCount()),
                 () -> assertEquals(2, d.ignored().get("on frozen or off layers")),
                 () -> assertEquals(1, d.ignored().get("paper space")),
@@ -274,7 +296,8 @@ class DxfReaderTest {
         // R12 binary: three LINEs; R2000 binary: one TEXT and nothing to cut
         DxfDrawing r12 = DxfReader.read(dir.resolve("integration_tests_data_bin_dxf_r12.dxf"));
         DxfDrawing r2000 = DxfReader.read(dir.resolve("integration_tests_data_bin_dxf_r2000.dxf"));
-        assertAll(() -> assertEquals(3, r12.curveCount()),
+        assertAll(
+                () -> assertEquals(3, r12.curveCount()),
                 () -> assertTrue(r12.curves().stream().allMatch(c -> c instanceof org.fresa.geom.Segment2)),
                 () -> assertEquals(0, r2000.curveCount()),
                 () -> assertEquals(1, r2000.ignored().get("TEXT")),

@@ -19,15 +19,17 @@ class ContourTest {
         double w = 100;
         double h = 60;
         double r = 10;
-        return Contour.of(List.of(
-                Segment2.of(r, 0, w - r, 0),
-                Arc2.ccw(Vec2.of(w - r, r), Vec2.of(w - r, 0), Vec2.of(w, r), TOL),
-                Segment2.of(w, r, w, h - r),
-                Arc2.ccw(Vec2.of(w - r, h - r), Vec2.of(w, h - r), Vec2.of(w - r, h), TOL),
-                Segment2.of(w - r, h, r, h),
-                Arc2.ccw(Vec2.of(r, h - r), Vec2.of(r, h), Vec2.of(0, h - r), TOL),
-                Segment2.of(0, h - r, 0, r),
-                Arc2.ccw(Vec2.of(r, r), Vec2.of(0, r), Vec2.of(r, 0), TOL)), TOL);
+        return Contour.of(
+                List.of(
+                        Segment2.of(r, 0, w - r, 0),
+                        Arc2.ccw(Vec2.of(w - r, r), Vec2.of(w - r, 0), Vec2.of(w, r), TOL),
+                        Segment2.of(w, r, w, h - r),
+                        Arc2.ccw(Vec2.of(w - r, h - r), Vec2.of(w, h - r), Vec2.of(w - r, h), TOL),
+                        Segment2.of(w - r, h, r, h),
+                        Arc2.ccw(Vec2.of(r, h - r), Vec2.of(r, h), Vec2.of(0, h - r), TOL),
+                        Segment2.of(0, h - r, 0, r),
+                        Arc2.ccw(Vec2.of(r, r), Vec2.of(0, r), Vec2.of(r, 0), TOL)),
+                TOL);
     }
 
     @Test
@@ -74,8 +76,11 @@ class ContourTest {
 
     @Test
     void openChainIsRefusedWithTheGap() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Contour.of(List.of(
-                Segment2.of(0, 0, 10, 0), Segment2.of(10, 0, 10, 10), Segment2.of(10, 10, 0, 0.5)), TOL));
+        IllegalArgumentException e = assertThrows(
+                IllegalArgumentException.class,
+                () -> Contour.of(
+                        List.of(Segment2.of(0, 0, 10, 0), Segment2.of(10, 0, 10, 10), Segment2.of(10, 10, 0, 0.5)),
+                        TOL));
         assertTrue(e.getMessage().contains("gap 0.5"), e.getMessage());
     }
 

@@ -13,10 +13,7 @@ class Transform3Test {
     void rpyComposesRzRyRx() {
         Transform3 t = Transform3.ofXyzRpyDeg(1, 2, 3, 0, 0, 90);
         Vec3 p = t.applyToPoint(Vec3.UNIT_X);
-        assertAll(
-                () -> assertEquals(1, p.x(), 0),
-                () -> assertEquals(3, p.y(), 0),
-                () -> assertEquals(3, p.z(), 0));
+        assertAll(() -> assertEquals(1, p.x(), 0), () -> assertEquals(3, p.y(), 0), () -> assertEquals(3, p.z(), 0));
     }
 
     @Test
@@ -29,8 +26,13 @@ class Transform3Test {
     void inverseUndoesTheTransform() {
         Random rnd = new Random(7);
         for (int i = 0; i < 100; i++) {
-            Transform3 t = Transform3.ofXyzRpyDeg(rnd.nextDouble() * 1000, rnd.nextDouble() * 1000, rnd.nextDouble(),
-                    rnd.nextDouble() * 360, rnd.nextDouble() * 180 - 90, rnd.nextDouble() * 360);
+            Transform3 t = Transform3.ofXyzRpyDeg(
+                    rnd.nextDouble() * 1000,
+                    rnd.nextDouble() * 1000,
+                    rnd.nextDouble(),
+                    rnd.nextDouble() * 360,
+                    rnd.nextDouble() * 180 - 90,
+                    rnd.nextDouble() * 360);
             Vec3 p = Vec3.of(rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble());
             assertTrue(t.inverse().applyToPoint(t.applyToPoint(p)).distance(p) < 1e-12);
             assertTrue(t.times(t.inverse()).rotationAngleTo(Transform3.IDENTITY) < 1e-14);

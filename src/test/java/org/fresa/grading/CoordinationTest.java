@@ -41,9 +41,13 @@ class CoordinationTest {
         ScaleFactors heel = MOUTH.factors(BALL_LINE.heelSize(37, 35, SizeSystem.BR));
         Vec2 heelPoint = PantographMap.of(THESIS, heel).apply(new Vec2(10, 100));
         Vec2 forePoint = PantographMap.of(THESIS, fore).apply(new Vec2(10, 100));
-        assertAll(() -> assertEquals(1.034583333, fore.alfa(), 1e-9), () -> assertEquals(1.051428571, fore.beta(), 1e-9),
-                () -> assertEquals(1.051875, heel.alfa(), 1e-9), () -> assertEquals(1.077142857, heel.beta(), 1e-9),
-                () -> assertEquals(10.51875, heelPoint.x(), 1e-7), () -> assertEquals(107.7142857, heelPoint.y(), 1e-7),
+        assertAll(
+                () -> assertEquals(1.034583333, fore.alfa(), 1e-9),
+                () -> assertEquals(1.051428571, fore.beta(), 1e-9),
+                () -> assertEquals(1.051875, heel.alfa(), 1e-9),
+                () -> assertEquals(1.077142857, heel.beta(), 1e-9),
+                () -> assertEquals(10.51875, heelPoint.x(), 1e-7),
+                () -> assertEquals(107.7142857, heelPoint.y(), 1e-7),
                 () -> assertEquals(10.3458333, forePoint.x(), 1e-7),
                 () -> assertEquals(105.1428571, forePoint.y(), 1e-7));
     }
@@ -67,7 +71,8 @@ class CoordinationTest {
             });
             org.fresa.geom.Contour c = g.toContour();
             for (int i = 0; i < c.size(); i++) {
-                assertEquals(0, c.get(i).end().distance(c.get((i + 1) % c.size()).start()), 1e-9);
+                assertEquals(
+                        0, c.get(i).end().distance(c.get((i + 1) % c.size()).start()), 1e-9);
             }
         }
     }
@@ -104,14 +109,19 @@ class CoordinationTest {
     @Test
     void heelElementsTheOutlineDoesNotHaveOrNoForepartAreRefused() {
         EscomPattern base = ThesisPatterns.mouldMouth35();
-        assertEquals("heel element 21 does not exist: the outline has 20 elements",
-                Coordination.ofHeelElements(java.util.List.of(1, 21), 3).misfit(base).orElseThrow());
+        assertEquals(
+                "heel element 21 does not exist: the outline has 20 elements",
+                Coordination.ofHeelElements(java.util.List.of(1, 21), 3)
+                        .misfit(base)
+                        .orElseThrow());
         java.util.List<Integer> all = new java.util.ArrayList<>();
         for (int i = 1; i <= 20; i++) {
             all.add(i);
         }
-        assertEquals(true, Coordination.ofHeelElements(all, 3).misfit(base).orElseThrow().contains("every element"));
-        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
-                () -> Coordination.ofHeelElements(java.util.List.of(), 3));
+        assertEquals(
+                true,
+                Coordination.ofHeelElements(all, 3).misfit(base).orElseThrow().contains("every element"));
+        org.junit.jupiter.api.Assertions.assertThrows(
+                IllegalArgumentException.class, () -> Coordination.ofHeelElements(java.util.List.of(), 3));
     }
 }

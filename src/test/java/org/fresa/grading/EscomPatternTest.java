@@ -67,8 +67,11 @@ class EscomPatternTest {
         Vec2 plain = mouth40(0).point("P" + n);
         Vec2 shrunk = mouth40(0.02).point("P" + n);
         // the seed rounds to 4 decimals
-        assertAll(() -> assertEquals(x0, plain.x(), 6e-5), () -> assertEquals(y0, plain.y(), 6e-5),
-                () -> assertEquals(x2, shrunk.x(), 6e-5), () -> assertEquals(y2, shrunk.y(), 6e-5));
+        assertAll(
+                () -> assertEquals(x0, plain.x(), 6e-5),
+                () -> assertEquals(y0, plain.y(), 6e-5),
+                () -> assertEquals(x2, shrunk.x(), 6e-5),
+                () -> assertEquals(y2, shrunk.y(), 6e-5));
     }
 
     @ParameterizedTest(name = "C{0}")
@@ -85,13 +88,25 @@ class EscomPatternTest {
             10, 17, -467.480, 61.886, 431.182, -475.494, 62.983, 438.528, false
             11, 19, 9.047, 1.442, 47.715, 9.156, 1.468, 48.536, true
             """)
-    void theMouldMouthsThreePointCirclesAtSize40MatchTheSeed(int circle, int element, double cx0, double cy0,
-            double r0, double cx2, double cy2, double r2, boolean ccw) {
+    void theMouldMouthsThreePointCirclesAtSize40MatchTheSeed(
+            int circle,
+            int element,
+            double cx0,
+            double cy0,
+            double r0,
+            double cx2,
+            double cy2,
+            double r2,
+            boolean ccw) {
         Arc2 plain = (Arc2) mouth40(0).toContour().get(element);
         Arc2 shrunk = (Arc2) mouth40(0.02).toContour().get(element);
-        assertAll(() -> assertEquals(cx0, plain.center().x(), MM), () -> assertEquals(cy0, plain.center().y(), MM),
-                () -> assertEquals(r0, plain.radius(), MM), () -> assertEquals(cx2, shrunk.center().x(), MM),
-                () -> assertEquals(cy2, shrunk.center().y(), MM), () -> assertEquals(r2, shrunk.radius(), MM),
+        assertAll(
+                () -> assertEquals(cx0, plain.center().x(), MM),
+                () -> assertEquals(cy0, plain.center().y(), MM),
+                () -> assertEquals(r0, plain.radius(), MM),
+                () -> assertEquals(cx2, shrunk.center().x(), MM),
+                () -> assertEquals(cy2, shrunk.center().y(), MM),
+                () -> assertEquals(r2, shrunk.radius(), MM),
                 () -> assertEquals(ccw, plain.ccw()));
     }
 
@@ -101,9 +116,13 @@ class EscomPatternTest {
         Contour shrunk = mouth40(0.02).toContour();
         Arc2 c12 = (Arc2) plain.get(9);
         Arc2 c13 = (Arc2) plain.get(13);
-        assertAll(() -> assertEquals(72.836, c12.center().x(), MM), () -> assertEquals(244.772, c12.center().y(), MM),
-                () -> assertEquals(-8.752, c13.center().x(), MM), () -> assertEquals(258.294, c13.center().y(), MM),
-                () -> assertEquals(25, c12.radius(), 1e-9), () -> assertEquals(25, c13.radius(), 1e-9),
+        assertAll(
+                () -> assertEquals(72.836, c12.center().x(), MM),
+                () -> assertEquals(244.772, c12.center().y(), MM),
+                () -> assertEquals(-8.752, c13.center().x(), MM),
+                () -> assertEquals(258.294, c13.center().y(), MM),
+                () -> assertEquals(25, c12.radius(), 1e-9),
+                () -> assertEquals(25, c13.radius(), 1e-9),
                 () -> assertEquals(5.568, c12.start().distance(c12.end()), MM),
                 () -> assertEquals(5.509, c13.start().distance(c13.end()), MM),
                 () -> assertEquals(73.797, ((Arc2) shrunk.get(9)).center().x(), MM),
@@ -115,8 +134,11 @@ class EscomPatternTest {
     @Test
     void theMouldMouthPatternIsAbout259LongAsTheThesisSays() {
         Box2 b = ThesisPatterns.mouldMouth35().toContour().bounds();
-        assertAll(() -> assertEquals(-36.809, b.minX(), MM), () -> assertEquals(62.000, b.maxX(), MM),
-                () -> assertEquals(-36.001, b.minY(), MM), () -> assertEquals(222.924, b.maxY(), MM),
+        assertAll(
+                () -> assertEquals(-36.809, b.minX(), MM),
+                () -> assertEquals(62.000, b.maxX(), MM),
+                () -> assertEquals(-36.001, b.minY(), MM),
+                () -> assertEquals(222.924, b.maxY(), MM),
                 () -> assertTrue(ThesisPatterns.mouldMouth35().toContour().isCcw()));
     }
 
@@ -137,14 +159,18 @@ class EscomPatternTest {
             26, -19.3800, 85.6800, -20.0809, 89.8240, -18.6791, 81.5360
             28, -29.5800, -7.1400, -30.6498, -7.4853, -28.5102, -6.7947
             """)
-    void theRealSolesPointsGradeToSizes40And42And38AsInTheSeed(int n, double x40, double y40, double x42, double y42,
-            double x38, double y38) {
+    void theRealSolesPointsGradeToSizes40And42And38AsInTheSeed(
+            int n, double x40, double y40, double x42, double y42, double x38, double y38) {
         Vec2 p40 = sole(40, 0.02).point("P" + n);
         Vec2 p42 = sole(42, 0.02).point("P" + n);
         Vec2 p38 = sole(38, 0.02).point("P" + n);
-        assertAll(() -> assertEquals(x40, p40.x(), 6e-5), () -> assertEquals(y40, p40.y(), 6e-5),
-                () -> assertEquals(x42, p42.x(), 6e-5), () -> assertEquals(y42, p42.y(), 6e-5),
-                () -> assertEquals(x38, p38.x(), 6e-5), () -> assertEquals(y38, p38.y(), 6e-5));
+        assertAll(
+                () -> assertEquals(x40, p40.x(), 6e-5),
+                () -> assertEquals(y40, p40.y(), 6e-5),
+                () -> assertEquals(x42, p42.x(), 6e-5),
+                () -> assertEquals(y42, p42.y(), 6e-5),
+                () -> assertEquals(x38, p38.x(), 6e-5),
+                () -> assertEquals(y38, p38.y(), 6e-5));
     }
 
     @ParameterizedTest(name = "C{0}")
@@ -162,9 +188,22 @@ class EscomPatternTest {
             11, 13, 18.250, 24.205, 50.851, 18.615, 24.689, 51.868, 20.500, 25.885, 54.956, 16.745, 23.492, 48.795, true
             12, 15, 12.307, 9.054, 44.317, 12.553, 9.235, 45.204, 13.900, 9.651, 47.731, 11.218, 8.820, 42.687, true
             """)
-    void theRealSolesCirclesAtSizes38To42MatchTheSeed(int circle, int element, double cx, double cy, double r,
-            double cx40, double cy40, double r40, double cx42, double cy42, double r42, double cx38, double cy38,
-            double r38, boolean ccw) {
+    void theRealSolesCirclesAtSizes38To42MatchTheSeed(
+            int circle,
+            int element,
+            double cx,
+            double cy,
+            double r,
+            double cx40,
+            double cy40,
+            double r40,
+            double cx42,
+            double cy42,
+            double r42,
+            double cx38,
+            double cy38,
+            double r38,
+            boolean ccw) {
         Arc2 base = (Arc2) sole(40, 0).toContour().get(element);
         Arc2 a40 = (Arc2) sole(40, 0.02).toContour().get(element);
         Arc2 a42 = (Arc2) sole(42, 0.02).toContour().get(element);
@@ -172,12 +211,19 @@ class EscomPatternTest {
         // centres far from their arcs (C3, R 750) move by 1e-3 for a 1e-6 change of a point, so
         // the seed's 3-decimal centres are compared at 2e-3 there
         double tol = r > 500 ? 2e-3 : MM;
-        assertAll(() -> assertEquals(cx, base.center().x(), tol), () -> assertEquals(cy, base.center().y(), tol),
-                () -> assertEquals(r, base.radius(), tol), () -> assertEquals(cx40, a40.center().x(), tol),
-                () -> assertEquals(cy40, a40.center().y(), tol), () -> assertEquals(r40, a40.radius(), tol),
-                () -> assertEquals(cx42, a42.center().x(), tol), () -> assertEquals(cy42, a42.center().y(), tol),
-                () -> assertEquals(r42, a42.radius(), tol), () -> assertEquals(cx38, a38.center().x(), tol),
-                () -> assertEquals(cy38, a38.center().y(), tol), () -> assertEquals(r38, a38.radius(), tol),
+        assertAll(
+                () -> assertEquals(cx, base.center().x(), tol),
+                () -> assertEquals(cy, base.center().y(), tol),
+                () -> assertEquals(r, base.radius(), tol),
+                () -> assertEquals(cx40, a40.center().x(), tol),
+                () -> assertEquals(cy40, a40.center().y(), tol),
+                () -> assertEquals(r40, a40.radius(), tol),
+                () -> assertEquals(cx42, a42.center().x(), tol),
+                () -> assertEquals(cy42, a42.center().y(), tol),
+                () -> assertEquals(r42, a42.radius(), tol),
+                () -> assertEquals(cx38, a38.center().x(), tol),
+                () -> assertEquals(cy38, a38.center().y(), tol),
+                () -> assertEquals(r38, a38.radius(), tol),
                 () -> assertEquals(ccw, base.ccw()));
     }
 
@@ -190,8 +236,11 @@ class EscomPatternTest {
             """)
     void theRealSolesExtentsMatchTheSeed(double nd, double ctm, double minX, double maxX, double minY, double maxY) {
         Box2 b = sole(nd, ctm).toContour().bounds();
-        assertAll(() -> assertEquals(minX, b.minX(), MM), () -> assertEquals(maxX, b.maxX(), MM),
-                () -> assertEquals(minY, b.minY(), MM), () -> assertEquals(maxY, b.maxY(), MM));
+        assertAll(
+                () -> assertEquals(minX, b.minX(), MM),
+                () -> assertEquals(maxX, b.maxX(), MM),
+                () -> assertEquals(minY, b.minY(), MM),
+                () -> assertEquals(maxY, b.maxY(), MM));
     }
 
     /**
@@ -223,8 +272,8 @@ class EscomPatternTest {
         Contour c = sole(40, 0).toContour();
         Curve2 a = c.get(element);
         Curve2 b = c.get((element + 1) % c.size());
-        double kink = Math.toDegrees(Math.atan2(a.endTangent().cross(b.startTangent()),
-                a.endTangent().dot(b.startTangent())));
+        double kink = Math.toDegrees(Math.atan2(
+                a.endTangent().cross(b.startTangent()), a.endTangent().dot(b.startTangent())));
         assertEquals(kinkDeg, kink, 0.05);
     }
 }

@@ -36,7 +36,9 @@ class GraderTest {
     @Test
     void theSampleSoleIs270LongAnd90WideWithItsOriginAtTheHeelCentre() throws Exception {
         Grader g = Grader.of(List.of(sole40()), GradingPlan.of(SizeSystem.BR, 40, sizes36To44()), "sole");
-        assertAll(() -> assertEquals(270, g.rule().baseLengthMm(), 1e-9), () -> assertEquals(90, g.rule().baseWidthMm(), 1e-9),
+        assertAll(
+                () -> assertEquals(270, g.rule().baseLengthMm(), 1e-9),
+                () -> assertEquals(90, g.rule().baseWidthMm(), 1e-9),
                 () -> assertEquals(0, g.origin().distance(Vec2.ZERO), 1e-12),
                 () -> assertEquals(Vec2.UNIT_Y, g.frame().lengthAxis()));
     }
@@ -51,7 +53,8 @@ class GraderTest {
             double n = s.size() - 40;
             Contour out = s.output().get(0);
             double worst = worstDistanceToExactImage(base, out, PantographMap.of(g.frame(), s.factors()));
-            assertAll("size " + s.name(),
+            assertAll(
+                    "size " + s.name(),
                     () -> assertEquals(270 + n * 6.66, s.lengthMm(), 1e-9),
                     () -> assertEquals(90 + n * 1.66, s.widthMm(), 1e-9),
                     () -> assertEquals(270 + n * 6.66, org.fresa.grading.Extents.sizeAlong(out, Vec2.UNIT_Y), 0.005),
@@ -124,7 +127,8 @@ class GraderTest {
     void anOutlineDrawnAt30DegreesGradesInItsOwnFrame() throws Exception {
         Contour base = rotated(sole40(), Math.toRadians(30), new Vec2(100, 50));
         Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, sizes36To44()), "sole");
-        assertAll(() -> assertEquals(120, g.frame().lengthAxisDeg(), 0.5),
+        assertAll(
+                () -> assertEquals(120, g.frame().lengthAxisDeg(), 0.5),
                 () -> assertEquals(0, g.origin().distance(new Vec2(100, 50)), 1e-9),
                 () -> assertEquals(270, g.rule().baseLengthMm(), 0.2));
         GradedSize s = g.grade(44);
@@ -136,7 +140,8 @@ class GraderTest {
     void aHeelDrawnAtTheTopIsFoundThere() throws Exception {
         Contour base = rotated(sole40(), Math.PI, Vec2.ZERO);
         Grader g = Grader.of(List.of(base), GradingPlan.of(SizeSystem.BR, 40, sizes36To44()), "sole");
-        assertAll(() -> assertEquals(Vec2.UNIT_Y.negated(), g.frame().lengthAxis()),
+        assertAll(
+                () -> assertEquals(Vec2.UNIT_Y.negated(), g.frame().lengthAxis()),
                 () -> assertEquals(0, g.origin().norm(), 1e-9));
     }
 
@@ -150,7 +155,8 @@ class GraderTest {
     void theThesisSoleIsGradedAboutItsHeelCircleCentre() throws Exception {
         Contour sole = ThesisPatterns.sole40().toContour();
         Grader g = Grader.of(List.of(sole), GradingPlan.of(SizeSystem.BR, 40, List.of(42.0)), "thesis sole");
-        assertAll(() -> assertEquals(0, g.origin().distance(new Vec2(0, 0.2)), 1e-3),
+        assertAll(
+                () -> assertEquals(0, g.origin().distance(new Vec2(0, 0.2)), 1e-3),
                 () -> assertEquals(Vec2.UNIT_Y, g.frame().lengthAxis()),
                 () -> assertEquals(269.227, g.rule().baseLengthMm(), 1e-3),
                 () -> assertEquals(92.950, g.rule().baseWidthMm(), 1e-3));
@@ -159,7 +165,8 @@ class GraderTest {
     @Test
     void anOutlineWithoutAHeelArcNeedsAnOrigin() {
         Contour box = Contour.polygon(List.of(new Vec2(0, 0), new Vec2(90, 0), new Vec2(90, 270), new Vec2(0, 270)));
-        assertThrows(CamInputException.class,
+        assertThrows(
+                CamInputException.class,
                 () -> Grader.of(List.of(box), GradingPlan.of(SizeSystem.BR, 40, List.of(41.0)), "box"));
     }
 
@@ -185,7 +192,8 @@ class GraderTest {
         GradedSize s40 = r.sizes().get(4);
         assertEquals(40, s39.heelSize().getAsDouble());
         // the back of the heel is a heel point: the same in sizes 39, 40 and 41
-        assertEquals(s40.output().get(0).get(0).start(), s39.output().get(0).get(0).start());
+        assertEquals(
+                s40.output().get(0).get(0).start(), s39.output().get(0).get(0).start());
         // size 41 keeps the heel of 40 behind the origin and grades the rest as 41
         assertEquals(29.2 + 240.8 * (1 + 6.66 / 270), r.sizes().get(5).lengthMm(), 1e-9);
     }
@@ -198,14 +206,32 @@ class GraderTest {
             double up = 40 + (rnd.nextBoolean() ? 1 : -1) * (1 + rnd.nextInt(6) + (rnd.nextBoolean() ? 0.5 : 0));
             double vc = 4 + 6 * rnd.nextDouble();
             double vl = 1 + 2 * rnd.nextDouble();
-            GradingPlan plan = new GradingPlan(SizeSystem.BR, 40, List.of(up), vc, vl, java.util.Optional.empty(),
-                    java.util.OptionalDouble.empty(), 0, ShrinkageMode.MULTIPLICATIVE, ArcMode.BIARC, 0.005,
+            GradingPlan plan = new GradingPlan(
+                    SizeSystem.BR,
+                    40,
+                    List.of(up),
+                    vc,
+                    vl,
+                    java.util.Optional.empty(),
+                    java.util.OptionalDouble.empty(),
+                    0,
+                    ShrinkageMode.MULTIPLICATIVE,
+                    ArcMode.BIARC,
+                    0.005,
                     java.util.Optional.empty());
             Grader g = Grader.of(List.of(base), plan, "sole");
-            GradedOutline graded = GradedOutline.of(base, PantographMap.of(g.frame(), g.rule().factors(up)));
+            GradedOutline graded =
+                    GradedOutline.of(base, PantographMap.of(g.frame(), g.rule().factors(up)));
             // grade the new size back to 40, measuring its own length and width as the pattern's
-            GradingRule down = new GradingRule(SizeSystem.BR, up, vc, vl, graded.sizeAlong(g.frame().lengthAxis()),
-                    graded.sizeAlong(g.frame().widthAxis()), 0, ShrinkageMode.MULTIPLICATIVE);
+            GradingRule down = new GradingRule(
+                    SizeSystem.BR,
+                    up,
+                    vc,
+                    vl,
+                    graded.sizeAlong(g.frame().lengthAxis()),
+                    graded.sizeAlong(g.frame().widthAxis()),
+                    0,
+                    ShrinkageMode.MULTIPLICATIVE);
             GradedOutline back = graded.mapped(PantographMap.of(g.frame(), down.factors(40)));
             for (GradedCurve c : back.curves()) {
                 for (int i = 0; i <= 50; i++) {
@@ -219,11 +245,16 @@ class GraderTest {
         List<Curve2> out = new ArrayList<>();
         for (Curve2 k : c.curves()) {
             if (k instanceof Segment2 s) {
-                out.add(new Segment2(s.start().rotated(angleRad).plus(shift), s.end().rotated(angleRad).plus(shift)));
+                out.add(new Segment2(
+                        s.start().rotated(angleRad).plus(shift),
+                        s.end().rotated(angleRad).plus(shift)));
             } else {
                 Arc2 a = (Arc2) k;
-                out.add(new Arc2(a.center().rotated(angleRad).plus(shift), a.start().rotated(angleRad).plus(shift),
-                        a.end().rotated(angleRad).plus(shift), a.ccw()));
+                out.add(new Arc2(
+                        a.center().rotated(angleRad).plus(shift),
+                        a.start().rotated(angleRad).plus(shift),
+                        a.end().rotated(angleRad).plus(shift),
+                        a.ccw()));
             }
         }
         return new Contour(out);

@@ -35,15 +35,19 @@ class GradingRuleTest {
             """)
     void mouldMouthFactorsMatchTheSeedTable(double nd, double alfa, double beta, double width, double length) {
         ScaleFactors f = mouth(0).factors(nd);
-        assertAll(() -> assertEquals(alfa, f.alfa(), FACTOR), () -> assertEquals(beta, f.beta(), FACTOR),
-                () -> assertEquals(width, 96 * f.width(), 1e-3), () -> assertEquals(length, 259 * f.length(), 1e-3));
+        assertAll(
+                () -> assertEquals(alfa, f.alfa(), FACTOR),
+                () -> assertEquals(beta, f.beta(), FACTOR),
+                () -> assertEquals(width, 96 * f.width(), 1e-3),
+                () -> assertEquals(length, 259 * f.length(), 1e-3));
     }
 
     @Test
     void theThesisCaseSize40FromPattern35HasTheStatedFactorsWithAndWithoutShrinkage() {
         ScaleFactors plain = mouth(0).factors(40);
         ScaleFactors shrunk = mouth(0.02).factors(40);
-        assertAll(() -> assertEquals(1.086458333, plain.alfa(), 1e-9),
+        assertAll(
+                () -> assertEquals(1.086458333, plain.alfa(), 1e-9),
                 () -> assertEquals(1.128571429, plain.beta(), 1e-9),
                 () -> assertEquals(1.106458333, shrunk.width(), 1e-9),
                 () -> assertEquals(1.148571429, shrunk.length(), 1e-9));
@@ -61,20 +65,27 @@ class GradingRuleTest {
             43, 1.055333, 1.074000, 1.075333, 1.094000, 295.380
             44, 1.073778, 1.098667, 1.093778, 1.118667, 302.040
             """)
-    void realSoleFactorsWithAdditiveShrinkageMatchTheSeedTable(double nd, double alfa, double beta, double alfaCtm,
-            double betaCtm, double cp) {
+    void realSoleFactorsWithAdditiveShrinkageMatchTheSeedTable(
+            double nd, double alfa, double beta, double alfaCtm, double betaCtm, double cp) {
         ScaleFactors f = sole(0.02, ShrinkageMode.ADDITIVE).factors(nd);
-        assertAll(() -> assertEquals(alfa, f.alfa(), FACTOR), () -> assertEquals(beta, f.beta(), FACTOR),
-                () -> assertEquals(alfaCtm, f.width(), FACTOR), () -> assertEquals(betaCtm, f.length(), FACTOR),
+        assertAll(
+                () -> assertEquals(alfa, f.alfa(), FACTOR),
+                () -> assertEquals(beta, f.beta(), FACTOR),
+                () -> assertEquals(alfaCtm, f.width(), FACTOR),
+                () -> assertEquals(betaCtm, f.length(), FACTOR),
                 () -> assertEquals(cp, 270 * f.length(), 1e-3));
     }
 
     @Test
     void additiveAndMultiplicativeShrinkageDifferAwayFromThePatternSize() {
-        assertAll(() -> assertEquals(302.040, sole(0.02, ShrinkageMode.ADDITIVE).lengthMm(44), 1e-3),
-                () -> assertEquals(302.573, sole(0.02, ShrinkageMode.MULTIPLICATIVE).lengthMm(44), 1e-3),
-                () -> assertEquals(sole(0.02, ShrinkageMode.ADDITIVE).lengthMm(40),
-                        sole(0.02, ShrinkageMode.MULTIPLICATIVE).lengthMm(40), 1e-12));
+        assertAll(
+                () -> assertEquals(302.040, sole(0.02, ShrinkageMode.ADDITIVE).lengthMm(44), 1e-3),
+                () -> assertEquals(
+                        302.573, sole(0.02, ShrinkageMode.MULTIPLICATIVE).lengthMm(44), 1e-3),
+                () -> assertEquals(
+                        sole(0.02, ShrinkageMode.ADDITIVE).lengthMm(40),
+                        sole(0.02, ShrinkageMode.MULTIPLICATIVE).lengthMm(40),
+                        1e-12));
     }
 
     @Test
@@ -89,7 +100,9 @@ class GradingRuleTest {
     @Test
     void mondopointCountsWholeSizesInTensOfMillimetres() {
         GradingRule r = new GradingRule(SizeSystem.MONDOPOINT, 270, 10, 2.5, 270, 90, 0, ShrinkageMode.MULTIPLICATIVE);
-        assertAll(() -> assertEquals(280, r.lengthMm(280), 1e-9), () -> assertEquals(265, r.lengthMm(265), 1e-9),
+        assertAll(
+                () -> assertEquals(280, r.lengthMm(280), 1e-9),
+                () -> assertEquals(265, r.lengthMm(265), 1e-9),
                 () -> assertEquals(92.5, r.widthMm(280), 1e-9));
     }
 }

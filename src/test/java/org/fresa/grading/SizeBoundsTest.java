@@ -25,24 +25,26 @@ class SizeBoundsTest {
             """)
     void theLargestSizeIsALastOfOneMetre(String system, double max) {
         SizeSystem s = SizeSystem.ofId(system);
-        assertAll(() -> assertEquals(max, s.maxSize(), 1e-6),
+        assertAll(
+                () -> assertEquals(max, s.maxSize(), 1e-6),
                 () -> assertEquals(SizeSystem.MAX_LAST_LENGTH_MM, s.lastLengthMm(s.maxSize()), TOL));
     }
 
     @Test
     void sizeZeroAndNegativeSizesAreRefused() {
-        IllegalArgumentException zero = assertThrows(IllegalArgumentException.class,
-                () -> SizeRange.parse("0-1", SizeSystem.BR, false));
-        IllegalArgumentException base = assertThrows(IllegalArgumentException.class,
-                () -> GradingPlan.of(SizeSystem.BR, -40, List.of(39.0, 40.0)));
-        assertAll(() -> assertTrue(zero.getMessage().contains("size 0 is not a Brazilian size"), zero.getMessage()),
+        IllegalArgumentException zero =
+                assertThrows(IllegalArgumentException.class, () -> SizeRange.parse("0-1", SizeSystem.BR, false));
+        IllegalArgumentException base = assertThrows(
+                IllegalArgumentException.class, () -> GradingPlan.of(SizeSystem.BR, -40, List.of(39.0, 40.0)));
+        assertAll(
+                () -> assertTrue(zero.getMessage().contains("size 0 is not a Brazilian size"), zero.getMessage()),
                 () -> assertTrue(base.getMessage().contains("base size -40"), base.getMessage()));
     }
 
     @Test
     void aRangeReachingAnAbsurdSizeIsRefusedNotWrappedToNoSizes() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> SizeRange.parse("1-1e308", SizeSystem.MONDOPOINT, false));
+        IllegalArgumentException e = assertThrows(
+                IllegalArgumentException.class, () -> SizeRange.parse("1-1e308", SizeSystem.MONDOPOINT, false));
         assertTrue(e.getMessage().contains("size 1.0E308 is not a Mondopoint size"), e.getMessage());
     }
 

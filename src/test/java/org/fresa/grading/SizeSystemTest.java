@@ -19,11 +19,15 @@ class SizeSystemTest {
         for (SizeTable.Row r : rows) {
             if (r.french().isPresent()) {
                 assertEquals(r.french().getAsDouble() - 2, r.brazilian().getAsDouble(), 0);
-                assertEquals(r.brazilian().getAsDouble(), SizeSystem.PARIS.convert(r.french().getAsDouble(), SizeSystem.BR));
+                assertEquals(
+                        r.brazilian().getAsDouble(),
+                        SizeSystem.PARIS.convert(r.french().getAsDouble(), SizeSystem.BR));
             }
             if (r.english().isPresent()) {
                 assertEquals(r.english().getAsDouble() + 1.5, r.american().getAsDouble(), 0);
-                assertEquals(r.american().getAsDouble(), SizeSystem.UK.convert(r.english().getAsDouble(), SizeSystem.US));
+                assertEquals(
+                        r.american().getAsDouble(),
+                        SizeSystem.UK.convert(r.english().getAsDouble(), SizeSystem.US));
             }
             if (r.french().isPresent() && r.english().isPresent()) {
                 both++;
@@ -47,21 +51,26 @@ class SizeSystemTest {
             45, 43, 10.5, 12
             """)
     void theSeedsConversionOraclesAreRowsOfTheTable(double fr, double br, double en, double us) {
-        assertTrue(SizeTable.thesisTable32().stream().anyMatch(r -> r.french().orElse(-1) == fr
-                && r.brazilian().orElse(-1) == br && r.english().orElse(-1) == en && r.american().orElse(-1) == us));
+        assertTrue(SizeTable.thesisTable32().stream()
+                .anyMatch(r -> r.french().orElse(-1) == fr
+                        && r.brazilian().orElse(-1) == br
+                        && r.english().orElse(-1) == en
+                        && r.american().orElse(-1) == us));
     }
 
     @Test
     void frenchSizes40To44HaveNoEnglishEquivalentInTheTable() {
         for (double fr : new double[] {40, 42, 44}) {
             assertTrue(SizeTable.thesisTable32().stream()
-                    .filter(r -> r.french().orElse(-1) == fr).allMatch(r -> r.english().isEmpty()));
+                    .filter(r -> r.french().orElse(-1) == fr)
+                    .allMatch(r -> r.english().isEmpty()));
         }
     }
 
     @Test
     void stepsAreThoseOfTheSystems() {
-        assertAll(() -> assertEquals(6.66, SizeSystem.BR.lengthStepMm()),
+        assertAll(
+                () -> assertEquals(6.66, SizeSystem.BR.lengthStepMm()),
                 () -> assertEquals(1.66, SizeSystem.BR.widthStepMm()),
                 () -> assertEquals(6.67, SizeSystem.PARIS.lengthStepMm(), 0.005),
                 () -> assertEquals(8.47, SizeSystem.UK.lengthStepMm(), 0.005),
@@ -73,9 +82,11 @@ class SizeSystemTest {
 
     @Test
     void rangesListWholeOrHalfSizes() {
-        assertAll(() -> assertEquals(List.of(36.0, 37.0, 38.0), SizeRange.parse("36-38", SizeSystem.BR, false)),
+        assertAll(
+                () -> assertEquals(List.of(36.0, 37.0, 38.0), SizeRange.parse("36-38", SizeSystem.BR, false)),
                 () -> assertEquals(List.of(36.0, 36.5, 37.0), SizeRange.parse("36-37", SizeSystem.BR, true)),
-                () -> assertEquals(List.of(260.0, 265.0, 270.0), SizeRange.parse("260-270", SizeSystem.MONDOPOINT, true)),
+                () -> assertEquals(
+                        List.of(260.0, 265.0, 270.0), SizeRange.parse("260-270", SizeSystem.MONDOPOINT, true)),
                 () -> assertEquals(List.of(7.5), SizeRange.parse("7.5", SizeSystem.UK, false)));
     }
 }

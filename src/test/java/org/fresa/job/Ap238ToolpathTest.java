@@ -54,7 +54,8 @@ class Ap238ToolpathTest {
         ToolpathPlanner.Plan arm = ToolpathPlanner.plan(StepNcReader.read(FDIS_EXAMPLE1), Tolerance.DEFAULT);
         assertEquals(5, aim.workingsteps());
         // the same workingsteps planned (and refused, if the planner refuses any) from both forms
-        assertEquals(arm.steps().stream().map(ToolpathPlanner.PlannedStep::label).toList(),
+        assertEquals(
+                arm.steps().stream().map(ToolpathPlanner.PlannedStep::label).toList(),
                 aim.steps().stream().map(ToolpathPlanner.PlannedStep::label).toList());
         assertTrue(aim.planned() > 0, aim.problems().toString());
         List<ToolpathCsv.Row> a = ToolpathCsv.rows(aim.toolpath(), NcPosts.CHORD_TOLERANCE_MM);
@@ -68,7 +69,8 @@ class Ap238ToolpathTest {
             ToolpathCsv.Row y = a.get(i);
             assertEquals(x.workingstep() + " " + x.move(), y.workingstep() + " " + y.move(), "row " + i);
             assertTrue(x.toolAxis().distance(y.toolAxis()) <= 1e-6, "row " + i);
-            boolean drillFeed = x.workingstep().equals("WS DRILL HOLE1") && x.move().equals("feed");
+            boolean drillFeed =
+                    x.workingstep().equals("WS DRILL HOLE1") && x.move().equals("feed");
             double dz = Math.abs(x.point().z() - y.point().z());
             if (drillFeed && dz > 1e-6) {
                 drillPoints++;
@@ -76,11 +78,17 @@ class Ap238ToolpathTest {
                 // hole is drilled 30 deep plus its point (its 59 read as the half angle) and the 1 mm breakthrough
                 // (the pecks before it are spread over the two depths)
                 deepestDz = Math.max(deepestDz, dz);
-                assertTrue(Math.hypot(x.point().x() - y.point().x(), x.point().y() - y.point().y()) <= 1e-6);
+                assertTrue(Math.hypot(
+                                x.point().x() - y.point().x(),
+                                x.point().y() - y.point().y())
+                        <= 1e-6);
             } else if (x.workingstep().equals("WS REAM HOLE1") && x.move().equals("feed") && dz > 1e-6) {
                 // the AIM's reamer stops at its cutting_depth 30, the ARM's passes the exit by the breakthrough
                 assertEquals(1, dz, 1e-9, "row " + i);
-                assertTrue(Math.hypot(x.point().x() - y.point().x(), x.point().y() - y.point().y()) <= 1e-6);
+                assertTrue(Math.hypot(
+                                x.point().x() - y.point().x(),
+                                x.point().y() - y.point().y())
+                        <= 1e-6);
             } else {
                 assertTrue(x.point().distance(y.point()) <= 1e-6, "row " + i + ": " + x + " vs " + y);
             }
@@ -95,7 +103,8 @@ class Ap238ToolpathTest {
         }
         assertTrue(slowFeeds > 0);
         StepNcProgram p = StepNcReader.read(J6);
-        assertTrue(p.warnings().stream().anyMatch(w -> w.contains("#4800 POCKET 'POCKET1'") && w.contains("reversed")),
+        assertTrue(
+                p.warnings().stream().anyMatch(w -> w.contains("#4800 POCKET 'POCKET1'") && w.contains("reversed")),
                 p.warnings().toString());
         assertFalse(StepNcService.prose(p).contains("ISO 14649 units"));
     }
@@ -108,9 +117,15 @@ class Ap238ToolpathTest {
         // the pockets' MILLING_TECHNOLOGY gives no feed: refused (no feed is guessed), the rest written;
         // the drill and the reamer stop at cutting_depth 30, short of a breakthrough, with a warning
         List<String> problems = interpreted(J6, dir, 1);
-        assertEquals(2, problems.stream().filter(x -> x.contains("no feed is guessed")).count(), problems.toString());
-        assertTrue(problems.stream().anyMatch(x -> x.startsWith("workingstep 'WS DRILL HOLE1': cutting_depth 30 mm")
-                && x.contains("less than the breakthrough 1 mm")), problems.toString());
+        assertEquals(
+                2,
+                problems.stream().filter(x -> x.contains("no feed is guessed")).count(),
+                problems.toString());
+        assertTrue(
+                problems.stream()
+                        .anyMatch(x -> x.startsWith("workingstep 'WS DRILL HOLE1': cutting_depth 30 mm")
+                                && x.contains("less than the breakthrough 1 mm")),
+                problems.toString());
     }
 
     @Test
@@ -120,7 +135,9 @@ class Ap238ToolpathTest {
         interpreted(INCH, dir);
         // the hole at (1, 2) inch, 0.5 inch deep, drilled at 5 inch/minute
         String[] drill = rows(dir.resolve("toolpath.csv")).stream()
-                .filter(x -> x[1].equals("WS DRILL HOLE1") && x[2].equals("feed")).findFirst().orElseThrow();
+                .filter(x -> x[1].equals("WS DRILL HOLE1") && x[2].equals("feed"))
+                .findFirst()
+                .orElseThrow();
         double[] expected = {25.4, 50.8, -12.7, 0, 0, 1, 127};
         for (int k = 0; k < expected.length; k++) {
             assertEquals(expected[k], Double.parseDouble(drill[k + 3]), 1e-9, String.join(",", drill));
@@ -133,7 +150,8 @@ class Ap238ToolpathTest {
 
     /** Runs the toolpath task, expects its exit status, interprets its program; returns its problems. */
     private static List<String> interpreted(Path input, Path dir, int exitStatus) throws Exception {
-        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(exitStatus, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
@@ -152,12 +170,18 @@ class Ap238ToolpathTest {
         ToolpathPlanner.Plan plan = ToolpathPlanner.plan(StepNcReader.read(CC1), Tolerance.DEFAULT);
         assertEquals(1, plan.planned(), plan.problems().toString());
         List<org.fresa.model.Move> moves = plan.toolpath().sections().get(0).moves();
-        List<org.fresa.model.Move.Circular> arcs = moves.stream().filter(m -> m instanceof org.fresa.model.Move.Circular)
-                .map(m -> (org.fresa.model.Move.Circular) m).toList();
+        List<org.fresa.model.Move.Circular> arcs = moves.stream()
+                .filter(m -> m instanceof org.fresa.model.Move.Circular)
+                .map(m -> (org.fresa.model.Move.Circular) m)
+                .toList();
         assertEquals(2, arcs.size());
         assertTrue(arcs.get(0).ccw());
         assertFalse(arcs.get(1).ccw());
-        assertEquals(3, moves.stream().filter(m -> m instanceof org.fresa.model.Move.Rapid).count());
+        assertEquals(
+                3,
+                moves.stream()
+                        .filter(m -> m instanceof org.fresa.model.Move.Rapid)
+                        .count());
         assumeTrue(Rs274.available(), Rs274.whyNot());
         interpreted(CC1, dir);
     }
@@ -169,11 +193,14 @@ class Ap238ToolpathTest {
         StepNcProgram p = StepNcReader.read(J4);
         assertEquals(1, p.workingsteps().size());
         assertEquals(12, p.workingsteps().get(0).operation().toolpaths().size());
-        TaskOutcome o = ToolpathService.run(J4, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                J4, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
         assertTrue(o.problems().get(0).contains("spindle"), o.problems().toString());
         // no program: only summary.json, with the reasons
-        assertTrue(o.files().stream().allMatch(f -> f.getFileName().toString().equals("summary.json")), o.files().toString());
+        assertTrue(
+                o.files().stream().allMatch(f -> f.getFileName().toString().equals("summary.json")),
+                o.files().toString());
         assertFalse(Files.exists(dir.resolve("program.ngc")));
     }
 
@@ -186,7 +213,8 @@ class Ap238ToolpathTest {
     @CorpusCheck
     void annexJ4WithASpindleSpeedIsFollowedOnItsCurvesAndItsPlungeRefused(@TempDir Path dir) throws Exception {
         assumeTrue(Files.isRegularFile(J4), TestInputs.sharedCorpusAbsent(AP238));
-        String text = Files.readString(J4).replace("NUMERIC_MEASURE(0.),\n#483)", "NUMERIC_MEASURE(1000.),\n#483)")
+        String text = Files.readString(J4)
+                .replace("NUMERIC_MEASURE(0.),\n#483)", "NUMERIC_MEASURE(1000.),\n#483)")
                 .replace("NUMERIC_MEASURE(0.),\r\n#483)", "NUMERIC_MEASURE(1000.),\r\n#483)");
         Path input = dir.resolve("j4-spindle.stp");
         Files.writeString(input, text);
@@ -195,22 +223,33 @@ class Ap238ToolpathTest {
         assertEquals(1, plan.planned(), plan.problems().toString());
         List<org.fresa.stepnc.Profile.Segment> curves = new ArrayList<>();
         p.workingsteps().get(0).operation().toolpaths().forEach(t -> curves.addAll(t.curve()));
-        long arcs = curves.stream().filter(c -> c instanceof org.fresa.stepnc.Profile.Arc).count();
-        assertEquals(arcs, plan.toolpath().sections().get(0).moves().stream()
-                .filter(m -> m instanceof org.fresa.model.Move.Circular).count());
+        long arcs = curves.stream()
+                .filter(c -> c instanceof org.fresa.stepnc.Profile.Arc)
+                .count();
+        assertEquals(
+                arcs,
+                plan.toolpath().sections().get(0).moves().stream()
+                        .filter(m -> m instanceof org.fresa.model.Move.Circular)
+                        .count());
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         // the file's own path goes straight down 3 mm onto its contour; the file states no stock (no
         // block, no face), so the descent counts as into material and the program is refused, the
         // toolpath written
         assertEquals(1, o.exitStatus(), o.problems().toString());
-        assertTrue(o.problems().stream().anyMatch(x -> x.startsWith("program.ngc not written")
-                && x.contains("line 12") && x.contains("entry angle") && x.contains("(a plunge)")), o.problems().toString());
+        assertTrue(
+                o.problems().stream()
+                        .anyMatch(x -> x.startsWith("program.ngc not written")
+                                && x.contains("line 12")
+                                && x.contains("entry angle")
+                                && x.contains("(a plunge)")),
+                o.problems().toString());
         assertFalse(Files.exists(out.resolve("program.ngc")));
         List<String[]> rows = rows(out.resolve("toolpath.csv"));
         for (String[] r : rows.subList(1, rows.size())) {
-            org.fresa.geom.Vec3 q = new org.fresa.geom.Vec3(Double.parseDouble(r[3]), Double.parseDouble(r[4]),
-                    Double.parseDouble(r[5]));
+            org.fresa.geom.Vec3 q = new org.fresa.geom.Vec3(
+                    Double.parseDouble(r[3]), Double.parseDouble(r[4]), Double.parseDouble(r[5]));
             double best = Double.POSITIVE_INFINITY;
             for (org.fresa.stepnc.Profile.Segment c : curves) {
                 best = Math.min(best, distance(q, c));
@@ -228,11 +267,14 @@ class Ap238ToolpathTest {
             // (rounded to 0.1 um in the annex), say where the arc runs
             double dx = q.x() - a.center().x();
             double dy = q.y() - a.center().y();
-            double r0 = Math.hypot(a.start().x() - a.center().x(), a.start().y() - a.center().y());
-            double r1 = Math.hypot(a.end().x() - a.center().x(), a.end().y() - a.center().y());
+            double r0 = Math.hypot(
+                    a.start().x() - a.center().x(), a.start().y() - a.center().y());
+            double r1 = Math.hypot(
+                    a.end().x() - a.center().x(), a.end().y() - a.center().y());
             double r = Math.hypot(dx, dy);
-            return r >= Math.min(r0, r1) - 1e-9 && r <= Math.max(r0, r1) + 1e-9 ? 0 : Math.min(Math.abs(r - r0),
-                    Math.abs(r - r1));
+            return r >= Math.min(r0, r1) - 1e-9 && r <= Math.max(r0, r1) + 1e-9
+                    ? 0
+                    : Math.min(Math.abs(r - r0), Math.abs(r - r1));
         }
         org.fresa.geom.Vec3 d = c.end().minus(c.start());
         double len2 = d.dot(d);
@@ -250,19 +292,27 @@ class Ap238ToolpathTest {
     @Test
     void turningIsRefusedByNameWithExitOne(@TempDir Path dir) throws Exception {
         String text = Files.readString(INCH)
-                .replace("#420=DRILLING_OPERATION('DRILL HOLE1','drilling','','');",
+                .replace(
+                        "#420=DRILLING_OPERATION('DRILL HOLE1','drilling','','');",
                         "#420=FACING_TURNING_OPERATION('FACE','roughing','','');")
-                .replace("#520=BOTTOM_AND_SIDE_MILLING_OPERATION('ROUGH POCKET1','roughing','','');",
+                .replace(
+                        "#520=BOTTOM_AND_SIDE_MILLING_OPERATION('ROUGH POCKET1','roughing','','');",
                         "#520=CONTOURING_TURNING_OPERATION('CONTOUR','roughing','','');");
         Path input = dir.resolve("turning.stp");
         Files.writeString(input, text);
-        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")),
-                ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
-        assertEquals(2, o.problems().stream().filter(x -> x.contains("turning is not supported")).count(),
+        assertEquals(
+                2,
+                o.problems().stream()
+                        .filter(x -> x.contains("turning is not supported"))
+                        .count(),
                 o.problems().toString());
         // no program: only summary.json, with the reasons
-        assertTrue(o.files().stream().allMatch(f -> f.getFileName().toString().equals("summary.json")), o.files().toString());
+        assertTrue(
+                o.files().stream().allMatch(f -> f.getFileName().toString().equals("summary.json")),
+                o.files().toString());
         assertFalse(Files.exists(dir.resolve("out/program.ngc")));
     }
 

@@ -31,8 +31,7 @@ class AptPostAcceptanceTest {
     private static final double TOL_MM = 1e-6;
 
     /** One motion of an APT program as this test reads it. */
-    record AptMotion(String kind, Vec3 end, Vec3 centre, Vec3 axis, double seconds) {
-    }
+    record AptMotion(String kind, Vec3 end, Vec3 centre, Vec3 axis, double seconds) {}
 
     /** Reads GOTO, RAPID, CIRCLE + GOTO and DELAY; the other statements move nothing. */
     static List<AptMotion> read(String program) {
@@ -45,7 +44,8 @@ class AptPostAcceptanceTest {
                 continue;
             }
             String word = line.contains("/") ? line.substring(0, line.indexOf('/')) : line;
-            String[] args = line.contains("/") ? line.substring(line.indexOf('/') + 1).split(",") : new String[0];
+            String[] args =
+                    line.contains("/") ? line.substring(line.indexOf('/') + 1).split(",") : new String[0];
             switch (word) {
                 case "UNITS" -> assertEquals("MM", args[0], line);
                 case "RAPID" -> rapid = true;
@@ -56,12 +56,16 @@ class AptPostAcceptanceTest {
                     }
                 }
                 case "GOTO" -> {
-                    Vec3 end = new Vec3(Double.parseDouble(args[0]), Double.parseDouble(args[1]),
-                            Double.parseDouble(args[2]));
+                    Vec3 end = new Vec3(
+                            Double.parseDouble(args[0]), Double.parseDouble(args[1]), Double.parseDouble(args[2]));
                     if (circle != null) {
                         assertTrue(!rapid, "an arc after RAPID: " + line);
-                        out.add(new AptMotion("arc", end, new Vec3(circle[0], circle[1], circle[2]),
-                                new Vec3(circle[3], circle[4], circle[5]), 0));
+                        out.add(new AptMotion(
+                                "arc",
+                                end,
+                                new Vec3(circle[0], circle[1], circle[2]),
+                                new Vec3(circle[3], circle[4], circle[5]),
+                                0));
                     } else {
                         out.add(new AptMotion(rapid ? "rapid" : "feed", end, null, null, 0));
                     }
@@ -69,8 +73,7 @@ class AptPostAcceptanceTest {
                     circle = null;
                 }
                 case "DELAY" -> out.add(new AptMotion("dwell", null, null, null, Double.parseDouble(args[0])));
-                case "FEDRAT", "SPINDL", "LOADTL", "CUTTER", "COOLNT", "FINI" -> {
-                }
+                case "FEDRAT", "SPINDL", "LOADTL", "CUTTER", "COOLNT", "FINI" -> {}
                 default -> throw new AssertionError("statement not expected from the post: " + line);
             }
         }
@@ -131,7 +134,8 @@ class AptPostAcceptanceTest {
     }
 
     private static void near(Vec3 expected, Vec3 actual, String where) {
-        assertTrue(expected.distance(actual) <= TOL_MM, where + ": expected " + expected + " but the APT has " + actual);
+        assertTrue(
+                expected.distance(actual) <= TOL_MM, where + ": expected " + expected + " but the APT has " + actual);
     }
 
     private static Counts compareFiles(String what, Path ngc, Path apt, double toolDiameterMm) throws Exception {
@@ -180,8 +184,10 @@ class AptPostAcceptanceTest {
         Path contour = Path.of("samples/pocket/cavity01.dad").toAbsolutePath();
         assertTrue(xml.contains("contour=\"../pocket/cavity01.dad\"") && xml.contains("post=\"7m-compat\""));
         Path job = dir.resolve("cavity01-apt.xml");
-        Files.writeString(job, xml.replace("contour=\"../pocket/cavity01.dad\"", "contour=\"" + contour + "\"")
-                .replace("post=\"7m-compat\"", "post=\"apt\""));
+        Files.writeString(
+                job,
+                xml.replace("contour=\"../pocket/cavity01.dad\"", "contour=\"" + contour + "\"")
+                        .replace("post=\"7m-compat\"", "post=\"apt\""));
         Path out = dir.resolve("out");
         TaskOutcome o = JobRunner.run(JobXml.read(job), new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
@@ -197,10 +203,10 @@ class AptPostAcceptanceTest {
         JobSettings.SoleSettings s = job.sole().orElseThrow();
         Path a = dir.resolve("apt");
         Path g = dir.resolve("ngc");
-        TaskOutcome oa = JobRunner.run(job.withSole(withPost(s, MillingPost.APT)), new OutputFolder(a),
-                ProgressMonitor.NONE);
-        TaskOutcome og = JobRunner.run(job.withSole(withPost(s, MillingPost.LINUXCNC)), new OutputFolder(g),
-                ProgressMonitor.NONE);
+        TaskOutcome oa =
+                JobRunner.run(job.withSole(withPost(s, MillingPost.APT)), new OutputFolder(a), ProgressMonitor.NONE);
+        TaskOutcome og = JobRunner.run(
+                job.withSole(withPost(s, MillingPost.LINUXCNC)), new OutputFolder(g), ProgressMonitor.NONE);
         assertEquals(0, oa.exitStatus(), oa.problems().toString());
         assertEquals(0, og.exitStatus(), og.problems().toString());
         Counts all = new Counts(0, 0);
@@ -211,8 +217,22 @@ class AptPostAcceptanceTest {
     }
 
     private static JobSettings.SoleSettings withPost(JobSettings.SoleSettings s, MillingPost post) {
-        return new JobSettings.SoleSettings(s.outline(), s.baseSize(), "40", s.cavityDepthMm(), post, s.system(),
-                s.originMm(), s.shrinkage(), s.shrinkageMode(), s.treadDepthMm(), s.clearanceMm(), s.marginMm(),
-                s.tools(), s.designs(), s.cavityTool(), s.block());
+        return new JobSettings.SoleSettings(
+                s.outline(),
+                s.baseSize(),
+                "40",
+                s.cavityDepthMm(),
+                post,
+                s.system(),
+                s.originMm(),
+                s.shrinkage(),
+                s.shrinkageMode(),
+                s.treadDepthMm(),
+                s.clearanceMm(),
+                s.marginMm(),
+                s.tools(),
+                s.designs(),
+                s.cavityTool(),
+                s.block());
     }
 }

@@ -29,7 +29,9 @@ class AtomicFilesTest {
             assertEquals(4, s.count());
         }
         for (long i = next; i < next + 3; i++) {
-            assertEquals("left", Files.readString(dir.resolve(AtomicFiles.TEMP_PREFIX + pid + "-" + i + AtomicFiles.TEMP_SUFFIX)));
+            assertEquals(
+                    "left",
+                    Files.readString(dir.resolve(AtomicFiles.TEMP_PREFIX + pid + "-" + i + AtomicFiles.TEMP_SUFFIX)));
         }
     }
 
@@ -38,7 +40,8 @@ class AtomicFilesTest {
         Path out = dir.resolve("a.csv");
         AtomicFiles.writeString(out, "x");
         if (Files.getFileStore(out).supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class)) {
-            assertTrue(Files.getPosixFilePermissions(out).contains(java.nio.file.attribute.PosixFilePermission.OTHERS_READ));
+            assertTrue(Files.getPosixFilePermissions(out)
+                    .contains(java.nio.file.attribute.PosixFilePermission.OTHERS_READ));
         }
     }
 }

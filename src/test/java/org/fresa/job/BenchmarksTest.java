@@ -24,13 +24,17 @@ class BenchmarksTest {
     @Test
     void theInputsComeFromTheJarNotFromTheProjectFolder() throws Exception {
         // the same files as the checkout's, so that figures from an installed app compare with them
-        assertArrayEquals(java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/stepnc/example2.stp")),
+        assertArrayEquals(
+                java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/stepnc/example2.stp")),
                 Benchmarks.input(Benchmarks.EXAMPLE2));
-        assertArrayEquals(java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/pocket/cavity02.dad")),
+        assertArrayEquals(
+                java.nio.file.Files.readAllBytes(java.nio.file.Path.of("samples/pocket/cavity02.dad")),
                 Benchmarks.input(Benchmarks.CAVITY02));
         assertEquals(1_809_590, Benchmarks.input(Benchmarks.DXF).length);
-        assertTrue(new String(Benchmarks.input("ezdxf/LICENSE.txt"), java.nio.charset.StandardCharsets.UTF_8)
-                .startsWith("Copyright (c) 2011-2018, Manfred Moitzi"), "the drawing's licence beside it");
+        assertTrue(
+                new String(Benchmarks.input("ezdxf/LICENSE.txt"), java.nio.charset.StandardCharsets.UTF_8)
+                        .startsWith("Copyright (c) 2011-2018, Manfred Moitzi"),
+                "the drawing's licence beside it");
     }
 
     @Test

@@ -44,7 +44,9 @@ class CutOrderCorpusTest {
                 continue;
             }
             try (Stream<Path> s = Files.walk(root)) {
-                s.filter(p -> p.toString().toLowerCase(Locale.ROOT).endsWith(".dxf")).map(Path::toString).sorted()
+                s.filter(p -> p.toString().toLowerCase(Locale.ROOT).endsWith(".dxf"))
+                        .map(Path::toString)
+                        .sorted()
                         .forEach(out::add);
             }
         }
@@ -56,8 +58,22 @@ class CutOrderCorpusTest {
     @MethodSource("drawings")
     void theRapidTravelIsNoLongerThanANearestNeighbourTourAndShorterOnBigSheets(String file) throws Exception {
         Path dxf = Path.of(file);
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 0, 0, org.fresa.cutting.LeadShape.ARC, CuttingOptions.DEFAULT_GAP_MM, org.fresa.dxf.DrawingUnits.AUTO, false,
-                org.fresa.post.CuttingPost.LINUXCNC, org.fresa.cutting.KerfCompensation.SOFTWARE, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, false);
+        CuttingSettings s = new CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                0,
+                0,
+                org.fresa.cutting.LeadShape.ARC,
+                CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC,
+                org.fresa.cutting.KerfCompensation.SOFTWARE,
+                org.fresa.cutting.CutSense.PROCESS,
+                org.fresa.cutting.CutSense.PROCESS,
+                0,
+                false);
         CutPlan plan;
         try {
             plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();
@@ -69,14 +85,24 @@ class CutOrderCorpusTest {
         double nn = nearestNeighbourTour(plan.cuts());
         double ours = plan.rapidLengthMm();
         int pierces = plan.cuts().size();
-        System.out.printf(Locale.ROOT, "cut order | %s | %d pierces | nearest-neighbour %.1f mm | ours %.1f mm | %.3f%n",
-                dxf.getFileName(), pierces, nn, ours, nn > 0 ? ours / nn : 1.0);
+        System.out.printf(
+                Locale.ROOT,
+                "cut order | %s | %d pierces | nearest-neighbour %.1f mm | ours %.1f mm | %.3f%n",
+                dxf.getFileName(),
+                pierces,
+                nn,
+                ours,
+                nn > 0 ? ours / nn : 1.0);
         // within a micrometre a pierce, a program's resolution: celic-knot-simple's cut paths hold
         // arcs of radius 5e12 mm (near-straight lines), whose points are known only to about that
-        assertTrue(ours <= nn + 1e-3 * pierces, dxf + ": rapids " + ours + " mm, the nearest-neighbour tour " + nn + " mm");
+        assertTrue(
+                ours <= nn + 1e-3 * pierces,
+                dxf + ": rapids " + ours + " mm, the nearest-neighbour tour " + nn + " mm");
         if (pierces > 50) {
-            assertTrue(ours <= 0.9 * nn, dxf + ": " + pierces + " pierces, rapids " + ours
-                    + " mm, not 10 % below the nearest-neighbour tour's " + nn + " mm");
+            assertTrue(
+                    ours <= 0.9 * nn,
+                    dxf + ": " + pierces + " pierces, rapids " + ours
+                            + " mm, not 10 % below the nearest-neighbour tour's " + nn + " mm");
         }
     }
 
@@ -144,7 +170,9 @@ class CutOrderCorpusTest {
     }
 
     private static boolean within(Box2 a, Box2 b) {
-        return a.minX() >= b.minX() - 1e-9 && a.maxX() <= b.maxX() + 1e-9 && a.minY() >= b.minY() - 1e-9
+        return a.minX() >= b.minX() - 1e-9
+                && a.maxX() <= b.maxX() + 1e-9
+                && a.minY() >= b.minY() - 1e-9
                 && a.maxY() <= b.maxY() + 1e-9;
     }
 

@@ -45,16 +45,37 @@ class CuttingAcceptanceTest {
     static final GeometryFactory GF = new GeometryFactory();
 
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Schlüssel_Andi.dxf",
-        "dxf2gcode/AFluegel_Rippen_b2_0201.dxf", "dxf2gcode/Teile.dxf", "dxf2gcode/american-flag.dxf",
-        "dxf2gcode/celic-knot.dxf", "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf",
-        "dxf2gcode/1-poly-with-reflex.dxf", "dxf2gcode/liu-8f.dxf", "dxf2gcode/lwpoly-bulge.dxf"})
+    @ValueSource(
+            strings = {
+                "dxf2gcode/132_2000.dxf",
+                "dxf2gcode/pumpenteile.dxf",
+                "dxf2gcode/Schlüssel_Andi.dxf",
+                "dxf2gcode/AFluegel_Rippen_b2_0201.dxf",
+                "dxf2gcode/Teile.dxf",
+                "dxf2gcode/american-flag.dxf",
+                "dxf2gcode/celic-knot.dxf",
+                "ezdxf/examples_addons_optimize_forms.dxf",
+                "dxf2gcode/2-test-layers-nested.dxf",
+                "dxf2gcode/1-poly-with-reflex.dxf",
+                "dxf2gcode/liu-8f.dxf",
+                "dxf2gcode/lwpoly-bulge.dxf"
+            })
     @InterpreterCheck
     @CorpusCheck
     void aRealDrawingIsCutCleanlyWithATwoMillimetreKerf(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
+        CuttingSettings s = new CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.ARC,
+                0.001,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         CutPlan plan = r.plan();
         rs274Accepts(r.program(), name, 0);
@@ -68,7 +89,8 @@ class CuttingAcceptanceTest {
         } else {
             // a node where three or more ends meet can be followed several ways: the planner
             // closes at least the loops free of such nodes, and at most one more per such node
-            assertTrue(found >= independent[0] && found <= independent[0] + independent[1],
+            assertTrue(
+                    found >= independent[0] && found <= independent[0] + independent[1],
                     name + ": " + found + " closed contours, independent count " + independent[0] + " + up to "
                             + independent[1] + " through junctions");
         }
@@ -83,19 +105,34 @@ class CuttingAcceptanceTest {
     @CorpusCheck
     void theInchPlatesPartsCloseAcrossTheirTinyGapsAndAreAllCut() throws Exception {
         Path dxf = CORPUS.resolve("dxf2gcode/Teile.dxf");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
+        CuttingSettings s = new CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.ARC,
+                org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC);
         CutPlan plan = CuttingService.compute(s, ProgressMonitor.NONE).plan();
-        List<String> gaps = plan.warnings().stream().filter(w -> w.startsWith("gap of ")).toList();
+        List<String> gaps =
+                plan.warnings().stream().filter(w -> w.startsWith("gap of ")).toList();
         org.junit.jupiter.api.Assertions.assertAll(
                 () -> assertEquals(20, plan.outers().size() + plan.holes().size()),
                 () -> assertEquals(0, plan.open().size(), plan.warnings()::toString),
                 () -> assertEquals(List.of(), plan.uncut(), plan.warnings()::toString),
                 () -> assertEquals(20, plan.cuts().size()),
-                () -> assertEquals(4, plan.outers().stream().filter(c -> c.bounds().width() > 1049
-                        && c.bounds().height() > 1863).count()),
+                () -> assertEquals(
+                        4,
+                        plan.outers().stream()
+                                .filter(c ->
+                                        c.bounds().width() > 1049 && c.bounds().height() > 1863)
+                                .count()),
                 () -> assertEquals(16, gaps.size(), gaps::toString),
-                () -> assertTrue(gaps.contains("gap of 0.0084 mm between two ends closed at (445.423, 289.217)"),
+                () -> assertTrue(
+                        gaps.contains("gap of 0.0084 mm between two ends closed at (445.423, 289.217)"),
                         gaps::toString));
     }
 
@@ -104,14 +141,19 @@ class CuttingAcceptanceTest {
     void controllerCompensationProgramsPassLinuxCncsGougeChecks() throws Exception {
         Path dxf = Path.of("samples/cutting/plate.dxf");
         org.fresa.dxf.DxfDrawing d = org.fresa.dxf.DxfReader.read(dxf);
-        org.fresa.cutting.CuttingOptions o = org.fresa.cutting.CuttingOptions.of(org.fresa.cutting.CutProcess.PLASMA, 2, 3, 1,
-                true).withControllerCompensation(true);
+        org.fresa.cutting.CuttingOptions o = org.fresa.cutting.CuttingOptions.of(
+                        org.fresa.cutting.CutProcess.PLASMA, 2, 3, 1, true)
+                .withControllerCompensation(true);
         CutPlan plan = org.fresa.cutting.CutPlanner.plan(d.layers(), o);
         List<Integer> comp = plan.cuts().stream().map(CutPath::compensation).toList();
         assertTrue(comp.stream().allMatch(c -> c == 41), comp.toString());
         java.io.StringWriter w = new java.io.StringWriter();
-        org.fresa.post.SheetCuttingPost.write(plan.toolpath(), "plate", new org.fresa.post.SheetCuttingPost.Job("plasma",
-                0.5, comp, 2), org.fresa.post.CuttingPost.LINUXCNC, w);
+        org.fresa.post.SheetCuttingPost.write(
+                plan.toolpath(),
+                "plate",
+                new org.fresa.post.SheetCuttingPost.Job("plasma", 0.5, comp, 2),
+                org.fresa.post.CuttingPost.LINUXCNC,
+                w);
         assertTrue(w.toString().contains("G41 G1"), w.toString());
         rs274Accepts(w.toString(), "plate G41", 2);
     }
@@ -119,8 +161,12 @@ class CuttingAcceptanceTest {
     static java.util.stream.Stream<String> corpus() throws IOException {
         Assumptions.assumeTrue(Files.isDirectory(CORPUS), "corpus absent");
         try (java.util.stream.Stream<Path> s = Files.walk(CORPUS)) {
-            return s.filter(p -> p.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".dxf"))
-                    .map(p -> CORPUS.relativize(p).toString()).sorted().toList().stream();
+            return s
+                    .filter(p -> p.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".dxf"))
+                    .map(p -> CORPUS.relativize(p).toString())
+                    .sorted()
+                    .toList()
+                    .stream();
         }
     }
 
@@ -131,7 +177,16 @@ class CuttingAcceptanceTest {
     @CorpusCheck
     void everyCorpusDrawingIsCutInBothModesIntoAProgramLinuxCncAccepts(String name) throws Exception {
         for (boolean paper : new boolean[] {false, true}) {
-            CuttingSettings s = new CuttingSettings(CORPUS.resolve(name), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, paper,
+            CuttingSettings s = new CuttingSettings(
+                    CORPUS.resolve(name),
+                    2,
+                    org.fresa.cutting.CutProcess.PLASMA,
+                    3,
+                    1,
+                    org.fresa.cutting.LeadShape.ARC,
+                    0.001,
+                    org.fresa.dxf.DrawingUnits.AUTO,
+                    paper,
                     org.fresa.post.CuttingPost.LINUXCNC);
             CuttingService.Result r;
             try {
@@ -146,16 +201,38 @@ class CuttingAcceptanceTest {
 
     /** G41/G42 left to the controller (D = the 2 mm kerf): LinuxCNC's cutter-compensation checks pass. */
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"dxf2gcode/132_2000.dxf", "dxf2gcode/pumpenteile.dxf", "dxf2gcode/Teile.dxf",
-        "ezdxf/examples_addons_optimize_forms.dxf", "dxf2gcode/2-test-layers-nested.dxf", "dxf2gcode/lwpoly-bulge.dxf",
-        "dxf2gcode/american-flag.dxf", "dxf2gcode/Schlüssel_Andi.dxf"})
+    @ValueSource(
+            strings = {
+                "dxf2gcode/132_2000.dxf",
+                "dxf2gcode/pumpenteile.dxf",
+                "dxf2gcode/Teile.dxf",
+                "ezdxf/examples_addons_optimize_forms.dxf",
+                "dxf2gcode/2-test-layers-nested.dxf",
+                "dxf2gcode/lwpoly-bulge.dxf",
+                "dxf2gcode/american-flag.dxf",
+                "dxf2gcode/Schlüssel_Andi.dxf"
+            })
     @InterpreterCheck
     @CorpusCheck
     void controllerCompensationOnRealDrawingsPassesLinuxCnc(String name) throws Exception {
         Path dxf = CORPUS.resolve(name);
         Assumptions.assumeTrue(Files.exists(dxf), "corpus absent");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC,
-                org.fresa.cutting.KerfCompensation.CONTROLLER, org.fresa.cutting.CutSense.PROCESS, org.fresa.cutting.CutSense.PROCESS, 0, true);
+        CuttingSettings s = new CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.ARC,
+                0.001,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC,
+                org.fresa.cutting.KerfCompensation.CONTROLLER,
+                org.fresa.cutting.CutSense.PROCESS,
+                org.fresa.cutting.CutSense.PROCESS,
+                0,
+                true);
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertTrue(r.program().contains("G41"), name);
         rs274Accepts(r.program(), name + " G41/G42", 2);
@@ -165,8 +242,17 @@ class CuttingAcceptanceTest {
     @ValueSource(strings = {"linuxcnc", "iso"})
     @InterpreterCheck
     void theSamplePlateIsAcceptedByLinuxCncInEveryRs274Dialect(String post) throws Exception {
-        CuttingSettings s = new CuttingSettings(Path.of("samples/cutting/plate.dxf"), 2, org.fresa.cutting.CutProcess.LASER, 3, 1, org.fresa.cutting.LeadShape.LINE, 0.001,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.job.SettingRanges.Cutting.POST.require(post));
+        CuttingSettings s = new CuttingSettings(
+                Path.of("samples/cutting/plate.dxf"),
+                2,
+                org.fresa.cutting.CutProcess.LASER,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.LINE,
+                0.001,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.job.SettingRanges.Cutting.POST.require(post));
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(10, r.plan().cuts().size());
         // iso dwells are G04 X seconds (Fanuc-like controls); LinuxCNC's word for the same is P,
@@ -178,7 +264,8 @@ class CuttingAcceptanceTest {
         rs274Accepts(program, post, 0);
     }
 
-    static void rs274Accepts(String program, String name, double toolDiameter) throws IOException, InterruptedException {
+    static void rs274Accepts(String program, String name, double toolDiameter)
+            throws IOException, InterruptedException {
         Assumptions.assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
         Path f = Files.createTempFile("cut", ".ngc");
         Files.writeString(f, program);
@@ -244,8 +331,10 @@ class CuttingAcceptanceTest {
                     Vec2 p = cv.pointAt((double) k / n);
                     Point pt = GF.createPoint(new Coordinate(p.x(), p.y()));
                     double d = boundary.distance(pt);
-                    assertTrue(d > half - 2e-3 && !inside.contains(pt),
-                            name + ": the kerf of " + c.label() + " at " + p + " reaches a part (" + d + " mm from its edge)");
+                    assertTrue(
+                            d > half - 2e-3 && !inside.contains(pt),
+                            name + ": the kerf of " + c.label() + " at " + p + " reaches a part (" + d
+                                    + " mm from its edge)");
                 }
             }
         }
@@ -263,7 +352,10 @@ class CuttingAcceptanceTest {
         Geometry region = GF.createPolygon();
         for (int i = 0; i < all.size(); i++) {
             for (int j = 0; j < all.size(); j++) {
-                if (i != j && rings.get(i).getEnvelopeInternal().intersects(rings.get(j).getEnvelopeInternal())
+                if (i != j
+                        && rings.get(i)
+                                .getEnvelopeInternal()
+                                .intersects(rings.get(j).getEnvelopeInternal())
                         && rings.get(i).intersects(rings.get(j))) {
                     out.add(all.get(i));
                     region = region.union(polygon(all.get(i)));
@@ -310,7 +402,8 @@ class CuttingAcceptanceTest {
             paths.addAll(c.path().curves());
         }
         if (paths.isEmpty()) {
-            assertTrue(plan.outers().size() + plan.holes().size() == plan.uncut().size(), name);
+            assertTrue(
+                    plan.outers().size() + plan.holes().size() == plan.uncut().size(), name);
             return;
         }
         IndexedFacetDistance drawnIndex = new IndexedFacetDistance(lines(drawn(plan), 1e-6));
@@ -334,8 +427,14 @@ class CuttingAcceptanceTest {
                 Vec2 m = e.pointAt(0.5);
                 Vec2 t;
                 try {
-                    t = e instanceof Arc2 a ? (a.ccw() ? m.minus(a.center()).normalized().leftNormal()
-                            : m.minus(a.center()).normalized().leftNormal().negated()) : e.startTangent();
+                    t = e instanceof Arc2 a
+                            ? (a.ccw()
+                                    ? m.minus(a.center()).normalized().leftNormal()
+                                    : m.minus(a.center())
+                                            .normalized()
+                                            .leftNormal()
+                                            .negated())
+                            : e.startTangent();
                 } catch (IllegalArgumentException ex) {
                     continue;
                 }
@@ -393,8 +492,8 @@ class CuttingAcceptanceTest {
         int circles = 0;
         for (Curve2 c : curves) {
             if (c instanceof Arc2 a && a.isFullCircle()) {
-                String key = "c" + Math.round(a.center().x() / tol) + "," + Math.round(a.center().y() / tol) + ","
-                        + Math.round(a.radius() / tol);
+                String key = "c" + Math.round(a.center().x() / tol) + ","
+                        + Math.round(a.center().y() / tol) + "," + Math.round(a.radius() / tol);
                 if (seen.putIfAbsent(key, 1) == null) {
                     circles++;
                 }
@@ -429,7 +528,8 @@ class CuttingAcceptanceTest {
         for (int i = 0; i < n; i++) {
             idx[i] = i;
         }
-        java.util.Arrays.sort(idx, (a, b) -> Double.compare(pts.get(a).x(), pts.get(b).x()));
+        java.util.Arrays.sort(
+                idx, (a, b) -> Double.compare(pts.get(a).x(), pts.get(b).x()));
         for (int i = 0; i < n; i++) {
             for (int j = i + 1; j < n && pts.get(idx[j]).x() - pts.get(idx[i]).x() <= tol; j++) {
                 if (pts.get(idx[i]).distance(pts.get(idx[j])) <= tol) {

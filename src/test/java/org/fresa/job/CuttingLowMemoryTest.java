@@ -33,20 +33,37 @@ class CuttingLowMemoryTest {
     @Test
     void aQuarterOfTheFiftyMegabyteSheetIsCutIn512Megabytes() throws Exception {
         long maxHeap = Runtime.getRuntime().maxMemory();
-        assumeTrue(maxHeap <= 520 * MIB, "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB + " MiB");
+        assumeTrue(
+                maxHeap <= 520 * MIB,
+                "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB + " MiB");
         Path dxf = dir.resolve("squares.dxf");
         int parts = SquareSheet.FIFTY_MB_SQUARES / 4 / SquareSheet.PER_ROW * SquareSheet.PER_ROW;
         SquareSheet.write(dxf, parts);
         assertTrue(Files.size(dxf) >= 12_500_000L, Files.size(dxf) + " bytes");
         Path out = dir.resolve("squares.ngc");
-        CuttingSettings s = new CuttingSettings(dxf, 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
-                org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC);
+        CuttingSettings s = new CuttingSettings(
+                dxf,
+                2,
+                org.fresa.cutting.CutProcess.PLASMA,
+                3,
+                1,
+                org.fresa.cutting.LeadShape.ARC,
+                org.fresa.cutting.CuttingOptions.DEFAULT_GAP_MM,
+                org.fresa.dxf.DrawingUnits.AUTO,
+                false,
+                org.fresa.post.CuttingPost.LINUXCNC);
         long t0 = System.nanoTime();
         TaskOutcome o = CuttingService.run(s, out, false, ProgressMonitor.NONE);
         double seconds = (System.nanoTime() - t0) / 1e9;
-        System.out.printf(Locale.ROOT, "CuttingLowMemoryTest: %d parts of a %.1f MB drawing cut in %.1f s (%.0f parts/s)%n",
-                parts, Files.size(dxf) / 1e6, seconds, parts / seconds);
-        assertAll(o.problems().toString(),
+        System.out.printf(
+                Locale.ROOT,
+                "CuttingLowMemoryTest: %d parts of a %.1f MB drawing cut in %.1f s (%.0f parts/s)%n",
+                parts,
+                Files.size(dxf) / 1e6,
+                seconds,
+                parts / seconds);
+        assertAll(
+                o.problems().toString(),
                 () -> assertEquals(0, o.exitStatus()),
                 () -> assertEquals(parts, ((Number) o.summary().get("pierces")).intValue()),
                 () -> assertEquals(0, ((Number) o.summary().get("not_cut")).intValue()),

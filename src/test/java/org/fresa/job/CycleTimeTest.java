@@ -15,8 +15,12 @@ class CycleTimeTest {
     /** 30 mm at 600 mm/min (3 s), 2.5 s dwell, spindle events (no time), 30 mm rapid at 1800 (1 s). */
     @Test
     void dwellsAddTheirTimeAndSpindleEventsNone() {
-        List<Move> moves = List.of(new Move.Linear(BOTTOM, 600), new Move.Dwell(BOTTOM, 2.5),
-                new Move.SpindleStop(BOTTOM), new Move.Rapid(TOP), new Move.SpindleStart(TOP, 1000, true));
+        List<Move> moves = List.of(
+                new Move.Linear(BOTTOM, 600),
+                new Move.Dwell(BOTTOM, 2.5),
+                new Move.SpindleStop(BOTTOM),
+                new Move.Rapid(TOP),
+                new Move.SpindleStart(TOP, 1000, true));
         CycleTime t = CycleTime.of(TOP, moves, 1800);
         assertEquals(30, t.feedLengthMm(), 1e-12);
         assertEquals(30, t.rapidLengthMm(), 1e-12);

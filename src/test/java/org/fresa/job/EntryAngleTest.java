@@ -50,7 +50,9 @@ class EntryAngleTest {
     static final double TOLERANCE_DEG = 0.1;
 
     @ParameterizedTest
-    @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"})
+    @ValueSource(
+            strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"
+            })
     @InterpreterCheck
     void thesisPocketsEnterWithinTheEntryAngle(String name, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
@@ -75,27 +77,41 @@ class EntryAngleTest {
      * material</em>, which no program may have.
      */
     @ParameterizedTest
-    @CsvSource(delimiter = ';', value = {"iso14649-11-example1.stp; 0; ''",
-        // example 2's eight holes as wide as their cutter, each after its own 10 mm drill: the 20 mm
-        // cutter in 5 steps of 2 mm (4 holes), the 10 mm cutter in 10 steps of 1 mm (4 holes)
-        "example2.stp; 60; 74 124 174 224 529 579 680 730"})
+    @CsvSource(
+            delimiter = ';',
+            value = {
+                "iso14649-11-example1.stp; 0; ''",
+                // example 2's eight holes as wide as their cutter, each after its own 10 mm drill: the 20 mm
+                // cutter in 5 steps of 2 mm (4 holes), the 10 mm cutter in 10 steps of 1 mm (4 holes)
+                "example2.stp; 60; 74 124 174 224 529 579 680 730"
+            })
     @InterpreterCheck
-    void stepNcPocketsFacesAndMilledHolesEnterWithinTheEntryAngle(String file, int pilotDescents, String throughPilots,
-            @TempDir Path dir) throws Exception {
+    void stepNcPocketsFacesAndMilledHolesEnterWithinTheEntryAngle(
+            String file, int pilotDescents, String throughPilots, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
         Measured m = measure(file, PlanningChoices.DEFAULT, dir);
         assertTrue(m.measured() > 0, file);
         assertEquals(List.of(), m.intoMaterial(), file);
-        assertTrue(m.steepestDeg() <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + m.steepestDeg() + " deg");
+        assertTrue(
+                m.steepestDeg() <= EntryRule.DEFAULT_ANGLE_DEG + TOLERANCE_DEG, file + ": " + m.steepestDeg() + " deg");
         assertEquals(pilotDescents, m.intoPilots().size(), file + ": " + m.intoPilots());
-        assertEquals(throughPilots.strip(), m.enteredThroughPilots().stream().map(String::valueOf)
-                .collect(java.util.stream.Collectors.joining(" ")), file);
+        assertEquals(
+                throughPilots.strip(),
+                m.enteredThroughPilots().stream()
+                        .map(String::valueOf)
+                        .collect(java.util.stream.Collectors.joining(" ")),
+                file);
     }
 
     /** {@code --entry-angle} and {@code --entry} of the STEP-NC commands: no entry into material steeper than asked. */
     @ParameterizedTest
-    @CsvSource({"iso14649-11-example1.stp, auto, 1.5", "iso14649-11-example1.stp, ramp, 2",
-        "iso14649-11-example1.stp, helix, 5", "example2.stp, auto, 1.5", "example2.stp, ramp, 2"})
+    @CsvSource({
+        "iso14649-11-example1.stp, auto, 1.5",
+        "iso14649-11-example1.stp, ramp, 2",
+        "iso14649-11-example1.stp, helix, 5",
+        "example2.stp, auto, 1.5",
+        "example2.stp, ramp, 2"
+    })
     @InterpreterCheck
     void stepNcEntriesKeepTheAngleAsked(String file, String kind, double angleDeg, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
@@ -103,14 +119,18 @@ class EntryAngleTest {
         Measured m = measure(file, new PlanningChoices(false, PlanningChoices.DEFAULT_BREAKTHROUGH_MM, asked), dir);
         assertTrue(m.measured() > 0, file);
         assertEquals(List.of(), m.intoMaterial(), file);
-        assertTrue(m.steepestDeg() <= angleDeg + TOLERANCE_DEG, file + " " + kind + " " + angleDeg + ": "
-                + m.steepestDeg() + " deg");
+        assertTrue(
+                m.steepestDeg() <= angleDeg + TOLERANCE_DEG,
+                file + " " + kind + " " + angleDeg + ": " + m.steepestDeg() + " deg");
     }
 
     /** What the measure finds in a STEP-NC file's programs. */
-    record Measured(int measured, double steepestDeg, List<String> intoMaterial, List<String> intoPilots,
-            java.util.SortedSet<Long> enteredThroughPilots) {
-    }
+    record Measured(
+            int measured,
+            double steepestDeg,
+            List<String> intoMaterial,
+            List<String> intoPilots,
+            java.util.SortedSet<Long> enteredThroughPilots) {}
 
     static Measured measure(String file, PlanningChoices choices, Path dir) throws Exception {
         StepNcProgram program = StepNcReader.read(Path.of("samples/stepnc", file));
@@ -153,10 +173,12 @@ class EntryAngleTest {
                     a = Math.max(a, d.deg());
                     continue;
                 }
-                Optional<String> pilot = drilled.stream().map(h -> h.admits(d, axis, radius)).flatMap(Optional::stream)
+                Optional<String> pilot = drilled.stream()
+                        .map(h -> h.admits(d, axis, radius))
+                        .flatMap(Optional::stream)
                         .findFirst();
-                String what = String.format(Locale.ROOT, "%s %s: %.2f deg from %s to %s", file, label, d.deg(),
-                        d.from(), d.to());
+                String what = String.format(
+                        Locale.ROOT, "%s %s: %.2f deg from %s to %s", file, label, d.deg(), d.from(), d.to());
                 if (pilot.isPresent()) {
                     intoPilots.add(what + " into " + pilot.get());
                     enteredThroughPilots.add(ws.instanceId());
@@ -166,15 +188,29 @@ class EntryAngleTest {
                     a = Math.max(a, d.deg());
                 }
             }
-            System.out.printf(Locale.ROOT, "[entries] %s %s (%s): steepest descent into material %.2f deg, %d into a pilot%n",
-                    file, section.label(), ws.feature().type(), a, pilots);
+            System.out.printf(
+                    Locale.ROOT,
+                    "[entries] %s %s (%s): steepest descent into material %.2f deg, %d into a pilot%n",
+                    file,
+                    section.label(),
+                    ws.feature().type(),
+                    a,
+                    pilots);
             steepest = Math.max(steepest, a);
             measured++;
         }
         intoPilots.forEach(s -> System.out.println("[entries] into a pilot: " + s));
         intoMaterial.forEach(s -> System.out.println("[entries] INTO MATERIAL: " + s));
-        System.out.printf(Locale.ROOT, "[entries] %s (%s %.1f deg): %d workingsteps measured, steepest into material %.2f deg, "
-                + "%d steep descents into material, %d into pilot holes%n", file, choices.entry().kind().word(), limit, measured, steepest, intoMaterial.size(),
+        System.out.printf(
+                Locale.ROOT,
+                "[entries] %s (%s %.1f deg): %d workingsteps measured, steepest into material %.2f deg, "
+                        + "%d steep descents into material, %d into pilot holes%n",
+                file,
+                choices.entry().kind().word(),
+                limit,
+                measured,
+                steepest,
+                intoMaterial.size(),
                 intoPilots.size());
         return new Measured(measured, steepest, intoMaterial, intoPilots, enteredThroughPilots);
     }
@@ -200,8 +236,7 @@ class EntryAngleTest {
     }
 
     /** A steep descent into material: where it starts and ends (program frame) and its slope. */
-    record Descent(Vec3 from, Vec3 to, double deg) {
-    }
+    record Descent(Vec3 from, Vec3 to, double deg) {}
 
     /**
      * A hole a drill made going straight down its axis: the conditions under which a cutter that
@@ -216,18 +251,26 @@ class EntryAngleTest {
         Optional<String> admits(Descent d, Vec3 cutterAxis, double cutterRadiusMm) {
             Vec3 move = d.to().minus(d.from());
             double along = move.dot(axis);
-            boolean straightDown = along < 0 && move.minus(axis.times(along)).norm() <= CLEAR_MM
-                    && cutterAxis.dot(axis) > 1 - 1e-9;
+            boolean straightDown =
+                    along < 0 && move.minus(axis.times(along)).norm() <= CLEAR_MM && cutterAxis.dot(axis) > 1 - 1e-9;
             boolean wideEnough = 2 * radiusMm >= cutterRadiusMm - 1e-9; // the hole at least half the cutter's diameter
-            double reach = radiusMm - cutterRadiusMm / 2 + CLEAR_MM; // hole's radius less a quarter of the cutter's diameter
+            double reach =
+                    radiusMm - cutterRadiusMm / 2 + CLEAR_MM; // hole's radius less a quarter of the cutter's diameter
             double off = Math.max(off(d.from()), off(d.to()));
             double belowTip = -d.to().minus(tip).dot(axis);
             if (!(straightDown && wideEnough && off <= reach && belowTip <= CLEAR_MM)) {
                 return Optional.empty();
             }
-            return Optional.of(String.format(Locale.ROOT,
+            return Optional.of(String.format(
+                    Locale.ROOT,
                     "the %.1f mm hole %s drilled to %s (cutter %.1f mm, %.3f mm off its axis of %.3f allowed, %.3f mm above its tip)",
-                    2 * radiusMm, by, tip, 2 * cutterRadiusMm, off, reach - CLEAR_MM, -belowTip));
+                    2 * radiusMm,
+                    by,
+                    tip,
+                    2 * cutterRadiusMm,
+                    off,
+                    reach - CLEAR_MM,
+                    -belowTip));
         }
 
         private double off(Vec3 p) {
@@ -258,7 +301,8 @@ class EntryAngleTest {
 
     @Test
     void theMeasureSeesAPlungeIntoMaterial() {
-        List<Rs274.Canon> moves = List.of(new Rs274.Canon("rapid", new Vec3(0, 0, 5), null, null, 0),
+        List<Rs274.Canon> moves = List.of(
+                new Rs274.Canon("rapid", new Vec3(0, 0, 5), null, null, 0),
                 new Rs274.Canon("feed", new Vec3(0, 0, -3), null, null, 0),
                 new Rs274.Canon("feed", new Vec3(10, 0, -3), null, null, 0),
                 new Rs274.Canon("feed", new Vec3(20, 0, -4), null, null, 0));
@@ -269,7 +313,8 @@ class EntryAngleTest {
     @Test
     void theMeasureIgnoresDescentsThroughTheAirAndCountsHelixTurns() {
         // down through the air to the top, then 2 turns of radius 5 over 1 mm: atan(1 / (4 pi 5))
-        List<Rs274.Canon> moves = List.of(new Rs274.Canon("rapid", new Vec3(5, 0, 5), null, null, 0),
+        List<Rs274.Canon> moves = List.of(
+                new Rs274.Canon("rapid", new Vec3(5, 0, 5), null, null, 0),
                 new Rs274.Canon("feed", new Vec3(5, 0, 0), null, null, 0),
                 new Rs274.Canon("arc", new Vec3(5, 0, -1), new Vec3(0, 0, 0), Vec3.UNIT_Z, 2));
         double a = steepestDeg(moves, Transform3.IDENTITY, p -> true, 0, 3);
@@ -279,13 +324,19 @@ class EntryAngleTest {
 
     /** The stock of a sample: the file's BLOCK, else ISO 14649-11 example 1's 100 x 120 mm block (its face's boundary). */
     private static Predicate<Vec3> stock(StepNcProgram program) {
-        Optional<Workpiece.Block> block = program.workpieces().stream().flatMap(w -> w.block().stream()).findFirst();
+        Optional<Workpiece.Block> block =
+                program.workpieces().stream().flatMap(w -> w.block().stream()).findFirst();
         if (block.isPresent()) {
             Workpiece.Block b = block.get();
             Transform3 inv = b.placement().inverse();
             return p -> {
                 Vec3 q = inv.applyToPoint(p);
-                return q.x() >= 0 && q.x() <= b.xMm() && q.y() >= 0 && q.y() <= b.yMm() && q.z() >= 0 && q.z() <= b.zMm();
+                return q.x() >= 0
+                        && q.x() <= b.xMm()
+                        && q.y() >= 0
+                        && q.y() <= b.yMm()
+                        && q.z() >= 0
+                        && q.z() <= b.zMm();
             };
         }
         return p -> p.x() >= 0 && p.x() <= 100 && p.y() >= 0 && p.y() <= 120;
@@ -297,15 +348,17 @@ class EntryAngleTest {
      * @param toLocal from the program's frame to the frame whose +Z is the tool axis
      * @param material where material stands (local XY) up to topZ before any cut
      */
-    static double steepestDeg(List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ,
-            double toolRadiusMm) {
-        return descents(motions, toLocal, material, topZ, toolRadiusMm).stream().mapToDouble(Descent::deg).max()
+    static double steepestDeg(
+            List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ, double toolRadiusMm) {
+        return descents(motions, toLocal, material, topZ, toolRadiusMm).stream()
+                .mapToDouble(Descent::deg)
+                .max()
                 .orElse(0);
     }
 
     /** Every descending feed move into material, with its slope (deg). */
-    static List<Descent> descents(List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ,
-            double toolRadiusMm) {
+    static List<Descent> descents(
+            List<Rs274.Canon> motions, Transform3 toLocal, Predicate<Vec2> material, double topZ, double toolRadiusMm) {
         List<Descent> out = new ArrayList<>();
         double res = Math.max(0.1, toolRadiusMm / 8);
         Map<Long, Double> cut = new HashMap<>();
@@ -324,7 +377,9 @@ class EntryAngleTest {
             }
             double across = 0;
             for (int k = 1; k < pts.size(); k++) {
-                across += Math.hypot(pts.get(k).x() - pts.get(k - 1).x(), pts.get(k).y() - pts.get(k - 1).y());
+                across += Math.hypot(
+                        pts.get(k).x() - pts.get(k - 1).x(),
+                        pts.get(k).y() - pts.get(k - 1).y());
             }
             double drop = pts.get(0).z() - pts.get(pts.size() - 1).z();
             boolean intoMaterial = false;
@@ -341,7 +396,8 @@ class EntryAngleTest {
                             continue;
                         }
                         long key = ((long) i << 32) ^ (j & 0xffffffffL);
-                        double h = cut.getOrDefault(key, material.test(new Vec2(x, y)) ? topZ : Double.NEGATIVE_INFINITY);
+                        double h =
+                                cut.getOrDefault(key, material.test(new Vec2(x, y)) ? topZ : Double.NEGATIVE_INFINITY);
                         if (h > p.z() + 1e-3) {
                             intoMaterial = true;
                             cut.put(key, p.z());
@@ -377,7 +433,8 @@ class EntryAngleTest {
             for (int k = 0; k <= steps; k++) {
                 double t = total * k / steps;
                 double th = sense * t;
-                Vec3 p = centre.plus(u.times(Math.cos(th))).plus(n.cross(u).times(Math.sin(th)))
+                Vec3 p = centre.plus(u.times(Math.cos(th)))
+                        .plus(n.cross(u).times(Math.sin(th)))
                         .plus(n.times(rise * k / steps));
                 out.add(p);
             }

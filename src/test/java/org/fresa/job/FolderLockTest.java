@@ -22,9 +22,11 @@ class FolderLockTest {
     void aSecondRunIntoTheSameFolderIsRefusedWhileTheFirstHoldsIt() throws Exception {
         OutputFolder folder = new OutputFolder(dir.resolve("out"));
         try (FolderLock first = FolderLock.acquire(folder)) {
-            FolderLock.FolderBusyException e = assertThrows(FolderLock.FolderBusyException.class,
+            FolderLock.FolderBusyException e = assertThrows(
+                    FolderLock.FolderBusyException.class,
                     () -> FolderLock.acquire(new OutputFolder(dir.resolve("out/../out"))));
-            assertAll(() -> assertTrue(e.getMessage().contains("another Fresa run"), e.getMessage()),
+            assertAll(
+                    () -> assertTrue(e.getMessage().contains("another Fresa run"), e.getMessage()),
                     () -> assertTrue(Files.exists(folder.dir().resolve(FolderLock.FILE_NAME))));
         }
         try (FolderLock again = FolderLock.acquire(folder)) {
@@ -36,10 +38,12 @@ class FolderLockTest {
     void theLockFileGoesWithTheRunAndAFolderItMadeEmptyToo() throws Exception {
         OutputFolder made = new OutputFolder(dir.resolve("new"));
         Path existing = Files.createDirectory(dir.resolve("existing"));
-        try (FolderLock a = FolderLock.acquire(made); FolderLock b = FolderLock.acquire(new OutputFolder(existing))) {
+        try (FolderLock a = FolderLock.acquire(made);
+                FolderLock b = FolderLock.acquire(new OutputFolder(existing))) {
             assertTrue(Files.isDirectory(made.dir()));
         }
-        assertAll(() -> assertFalse(Files.exists(made.dir()), "an empty folder the run made is removed"),
+        assertAll(
+                () -> assertFalse(Files.exists(made.dir()), "an empty folder the run made is removed"),
                 () -> assertTrue(Files.isDirectory(existing), "a folder that was there stays"),
                 () -> assertFalse(Files.exists(existing.resolve(FolderLock.FILE_NAME))));
     }
@@ -51,7 +55,9 @@ class FolderLockTest {
             made.writeString("summary.json", "{}\n");
         }
         try (var s = Files.list(made.dir())) {
-            assertEquals(java.util.List.of("summary.json"), s.map(p -> p.getFileName().toString()).toList());
+            assertEquals(
+                    java.util.List.of("summary.json"),
+                    s.map(p -> p.getFileName().toString()).toList());
         }
     }
 

@@ -25,8 +25,10 @@ class GradingHeelElementsTest {
 
     private static Path job(Path dir, String attributes) throws Exception {
         String xml = Files.readString(Path.of("samples/jobs/grade-sole40.xml"))
-                .replace("outline=\"../grading/sole-40.contour\"", "outline=\""
-                        + Path.of("samples/grading/sole-40.contour").toAbsolutePath() + "\" " + attributes);
+                .replace(
+                        "outline=\"../grading/sole-40.contour\"",
+                        "outline=\""
+                                + Path.of("samples/grading/sole-40.contour").toAbsolutePath() + "\" " + attributes);
         Path p = dir.resolve("grade.xml");
         Files.writeString(p, xml);
         return p;
@@ -37,8 +39,8 @@ class GradingHeelElementsTest {
         Job j = JobXml.read(job(dir, "heelElements=\"1\" heelGroup=\"3\""));
         JobSettings.GradingSettings s = j.grading().orElseThrow();
         assertEquals("1", s.coordination().orElseThrow().heelElements());
-        GradingResult r = GradingService.grade(GradingService.readOutline(s.outline()), "sole-40", s,
-                GradingService.Options.DEFAULT);
+        GradingResult r = GradingService.grade(
+                GradingService.readOutline(s.outline()), "sole-40", s, GradingService.Options.DEFAULT);
         // base 40, groups of 3: 42, 43 and 44 take the heel of 43
         GradedSize g42 = size(r, 42);
         GradedSize g43 = size(r, 43);
@@ -49,7 +51,8 @@ class GradingHeelElementsTest {
         Curve2 heel44 = g44.output().get(0).get(0);
         for (double t : new double[] {0, 0.5, 1}) {
             assertEquals(0, heel42.pointAt(t).distance(heel44.pointAt(t)), 1e-9, "the same heel arc");
-            assertEquals(0, heel42.pointAt(t).distance(g43.output().get(0).get(0).pointAt(t)), 1e-9);
+            assertEquals(
+                    0, heel42.pointAt(t).distance(g43.output().get(0).get(0).pointAt(t)), 1e-9);
         }
         // the toe grows with every size
         assertNotEquals(0, toe(g42).pointAt(0.5).distance(toe(g44).pointAt(0.5)), 1e-3);
@@ -62,25 +65,34 @@ class GradingHeelElementsTest {
 
     @Test
     void elementsTheOutlineLacksOrBothKindsOfHeelAreRefused(@TempDir Path dir) throws Exception {
-        JobSettings.GradingSettings s = JobXml.read(job(dir, "heelElements=\"1,9\"")).grading().orElseThrow();
+        JobSettings.GradingSettings s =
+                JobXml.read(job(dir, "heelElements=\"1,9\"")).grading().orElseThrow();
         List<Contour> outline = GradingService.readOutline(s.outline());
-        CamInputException e = assertThrows(CamInputException.class,
+        CamInputException e = assertThrows(
+                CamInputException.class,
                 () -> GradingService.grade(outline, "sole-40", s, GradingService.Options.DEFAULT));
-        assertTrue(e.getMessage().contains("heel element 9 does not exist: the outline has 5 elements"),
-                e.getMessage());
+        assertTrue(
+                e.getMessage().contains("heel element 9 does not exist: the outline has 5 elements"), e.getMessage());
         JobSettings.GradingSettings both = JobXml.read(job(dir, "heelElements=\"1\" coordinationMm=\"60\""))
-                .grading().orElseThrow();
-        e = assertThrows(CamInputException.class,
+                .grading()
+                .orElseThrow();
+        e = assertThrows(
+                CamInputException.class,
                 () -> GradingService.grade(outline, "sole-40", both, GradingService.Options.DEFAULT));
         assertTrue(e.getMessage().contains("not both"), e.getMessage());
-        JobSettings.GradingSettings bad = JobXml.read(job(dir, "heelElements=\"1-x\"")).grading().orElseThrow();
-        e = assertThrows(CamInputException.class,
+        JobSettings.GradingSettings bad =
+                JobXml.read(job(dir, "heelElements=\"1-x\"")).grading().orElseThrow();
+        e = assertThrows(
+                CamInputException.class,
                 () -> GradingService.grade(outline, "sole-40", bad, GradingService.Options.DEFAULT));
         assertTrue(e.getMessage().contains("'1-x'"), e.getMessage());
     }
 
     private static GradedSize size(GradingResult r, double n) {
-        return r.sizes().stream().filter(g -> g.factors().size() == n).findFirst().orElseThrow();
+        return r.sizes().stream()
+                .filter(g -> g.factors().size() == n)
+                .findFirst()
+                .orElseThrow();
     }
 
     private static Curve2 toe(GradedSize g) {

@@ -32,13 +32,15 @@ class GradingServiceTest {
             assertTrue(Files.size(dir.resolve("size-" + n + ".csv")) > 100);
         }
         List<String> table = Files.readAllLines(dir.resolve("grading.csv"));
-        assertEquals("size,length_mm,width_mm,alfa,beta,length_factor,width_factor,heel_size,max_deviation_mm",
+        assertEquals(
+                "size,length_mm,width_mm,alfa,beta,length_factor,width_factor,heel_size,max_deviation_mm",
                 table.get(0));
         assertEquals(10, table.size());
         for (int i = 1; i < table.size(); i++) {
             String[] f = table.get(i).split(",", -1);
             double n = Double.parseDouble(f[0]) - 40;
-            assertAll(() -> assertEquals(270 + n * 6.66, Double.parseDouble(f[1]), 1e-9),
+            assertAll(
+                    () -> assertEquals(270 + n * 6.66, Double.parseDouble(f[1]), 1e-9),
                     () -> assertEquals(90 + n * 1.66, Double.parseDouble(f[2]), 1e-9),
                     () -> assertTrue(Double.parseDouble(f[8]) <= 0.005));
         }
@@ -74,12 +76,22 @@ class GradingServiceTest {
     @Test
     void anUnknownSystemIsBadInput() {
         CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Grading.SYSTEM.check("zz"));
-        assertTrue(e.getMessage().contains("--system") && e.getMessage().contains("br, paris, uk, us, mondopoint"),
+        assertTrue(
+                e.getMessage().contains("--system") && e.getMessage().contains("br, paris, uk, us, mondopoint"),
                 e.getMessage());
     }
 
     private static GradingSettings settings(String sizes, boolean half) {
-        return new GradingSettings(Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, org.fresa.grading.SizeSystem.BR,
-                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, org.fresa.grading.ShrinkageMode.MULTIPLICATIVE);
+        return new GradingSettings(
+                Path.of("samples/grading/sole-40.contour").toAbsolutePath(),
+                40,
+                sizes,
+                half,
+                org.fresa.grading.SizeSystem.BR,
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                Optional.empty(),
+                0,
+                org.fresa.grading.ShrinkageMode.MULTIPLICATIVE);
     }
 }

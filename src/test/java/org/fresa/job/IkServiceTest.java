@@ -69,8 +69,16 @@ class IkServiceTest {
 
     List<double[]> solve(Path targets, Map<String, Integer> configuration, String out) throws Exception {
         Path o = dir.resolve(out);
-        TaskOutcome r = IkService.run(new IkService.Settings(targets, "irb140", RobotTools.Choice.NONE,
-                IkOptions.Method.LEVENBERG_MARQUARDT, 1e-7, configuration, false), new OutputFolder(o),
+        TaskOutcome r = IkService.run(
+                new IkService.Settings(
+                        targets,
+                        "irb140",
+                        RobotTools.Choice.NONE,
+                        IkOptions.Method.LEVENBERG_MARQUARDT,
+                        1e-7,
+                        configuration,
+                        false),
+                new OutputFolder(o),
                 ProgressMonitor.NONE);
         assertEquals(0, r.exitStatus(), () -> String.join("; ", r.problems()));
         List<String> rows = Files.readAllLines(o.resolve("ik.csv"));
@@ -84,8 +92,13 @@ class IkServiceTest {
                 q[i] = Double.parseDouble(c[h.indexOf("q1") + i]);
                 assertTrue(q[i] >= MIN[i] && q[i] <= MAX[i], line);
             }
-            double[][] asked = SpecKinematics.pose(num(c, h, "x"), num(c, h, "y"), num(c, h, "z"), num(c, h, "roll"),
-                    num(c, h, "pitch"), num(c, h, "yaw"));
+            double[][] asked = SpecKinematics.pose(
+                    num(c, h, "x"),
+                    num(c, h, "y"),
+                    num(c, h, "z"),
+                    num(c, h, "roll"),
+                    num(c, h, "pitch"),
+                    num(c, h, "yaw"));
             double[][] reached = SpecKinematics.irb140(q);
             assertTrue(SpecKinematics.positionError(asked, reached) <= 1e-6, line);
             assertTrue(SpecKinematics.rotationError(asked, reached) <= 1e-8, line);
@@ -129,27 +142,27 @@ class IkServiceTest {
     void aBadCellIsNamedWithItsFileAndLine() throws IOException {
         Path f = dir.resolve("bad.csv");
         Files.writeString(f, "x,y,z,roll,pitch,yaw\n1,2,3,0,0,0\n1,2,three,0,0,0\n");
-        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
-                () -> IkService.read(f, 6));
+        CamInputException e =
+                org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class, () -> IkService.read(f, 6));
         assertEquals(3, e.line().getAsInt());
-        assertTrue(e.getMessage().contains("bad.csv") && e.getMessage().contains("z: expected a number"),
-                e.getMessage());
+        assertTrue(
+                e.getMessage().contains("bad.csv") && e.getMessage().contains("z: expected a number"), e.getMessage());
     }
 
     @Test
     void aHeaderWithoutThePoseColumnsIsRefused() throws IOException {
         Path f = dir.resolve("bad.csv");
         Files.writeString(f, "a,b,c\n1,2,3\n");
-        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
-                () -> IkService.read(f, 6));
+        CamInputException e =
+                org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class, () -> IkService.read(f, 6));
         assertEquals(1, e.line().getAsInt());
         assertTrue(e.getMessage().contains("expected the header x,y,z,roll,pitch,yaw"), e.getMessage());
     }
 
     @Test
     void anUnknownConfigurationKeyIsRefused() {
-        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
-                () -> IkService.parseConfiguration("elbow=up"));
+        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+                CamInputException.class, () -> IkService.parseConfiguration("elbow=up"));
         assertTrue(e.getMessage().contains("--configuration"), e.getMessage());
     }
 
@@ -158,8 +171,18 @@ class IkServiceTest {
         for (double d : q) {
             v.add(d);
         }
-        return RapidWriter.confdata(new RobotProgram.Motion(0, "", RobotProgram.MotionType.LINEAR,
-                RobotProgram.PointRole.PART, v, Transform3.IDENTITY, 1, 0), arm).cfx();
+        return RapidWriter.confdata(
+                        new RobotProgram.Motion(
+                                0,
+                                "",
+                                RobotProgram.MotionType.LINEAR,
+                                RobotProgram.PointRole.PART,
+                                v,
+                                Transform3.IDENTITY,
+                                1,
+                                0),
+                        arm)
+                .cfx();
     }
 
     private static double num(String[] c, List<String> h, String column) {

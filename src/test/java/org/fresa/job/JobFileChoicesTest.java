@@ -32,11 +32,14 @@ class JobFileChoicesTest {
     void aMistypedPocketPostIsRefusedWhenTheJobIsRead() throws Exception {
         Path job = sampleWith("pocket-cavity01.xml", "post=\"7m-compat\"", "post=\"7m-compta\"");
         CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(job));
-        assertAll(e.getMessage(),
+        assertAll(
+                e.getMessage(),
                 () -> assertEquals(job.toString(), e.source()),
                 () -> assertEquals(7, e.line().getAsInt()),
-                () -> assertEquals("post: unknown value '7m-compta': expected one of 7m-compat, 7m, linuxcnc, iso, "
-                        + "fanuc, 840d, apt", e.problem()));
+                () -> assertEquals(
+                        "post: unknown value '7m-compta': expected one of 7m-compat, 7m, linuxcnc, iso, "
+                                + "fanuc, 840d, apt",
+                        e.problem()));
     }
 
     @Test
@@ -53,19 +56,21 @@ class JobFileChoicesTest {
     void aMistypedCuttingPostIsRefusedWhenTheJobIsRead() throws Exception {
         Path job = sampleWith("cut-plate.xml", "post=\"linuxcnc\"", "post=\"fanuk\"");
         CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(job));
-        assertAll(e.getMessage(),
+        assertAll(
+                e.getMessage(),
                 () -> assertEquals(5, e.line().getAsInt()),
-                () -> assertEquals("post: unknown value 'fanuk': expected one of linuxcnc, iso, fanuc, 840d",
-                        e.problem()));
+                () -> assertEquals(
+                        "post: unknown value 'fanuk': expected one of linuxcnc, iso, fanuc, 840d", e.problem()));
     }
 
     @Test
     void aMistypedRobotFormatIsRefusedWhenTheJobIsRead() throws Exception {
         Path job = sampleWith("example2-irb140.xml", "formats=\"", "formats=\"rapdi,");
         CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(job));
-        assertAll(e.getMessage(),
+        assertAll(
+                e.getMessage(),
                 () -> assertTrue(e.line().isPresent()),
-                () -> assertEquals("formats: unknown value 'rapdi': expected one of csv, xml, rapid, krl, png",
-                        e.problem()));
+                () -> assertEquals(
+                        "formats: unknown value 'rapdi': expected one of csv, xml, rapid, krl, png", e.problem()));
     }
 }

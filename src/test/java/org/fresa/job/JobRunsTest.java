@@ -34,10 +34,12 @@ class JobRunsTest {
 
     @Test
     void aRunSetIsKeptInTaskOrderAndReadBack() throws Exception {
-        Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml")).withStepnc(new JobSettings.StepNcSettings(
-                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC));
+        Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml"))
+                .withStepnc(new JobSettings.StepNcSettings(
+                        Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC));
         Job both = job.withRuns(List.of(JobTask.GRADE, JobTask.STEPNC));
-        assertAll(() -> assertEquals(List.of(JobTask.STEPNC, JobTask.GRADE), both.runs()),
+        assertAll(
+                () -> assertEquals(List.of(JobTask.STEPNC, JobTask.GRADE), both.runs()),
                 () -> assertEquals(JobTask.STEPNC, both.task()));
         Path file = dir.resolve("both.xml");
         JobXml.write(both, file);
@@ -53,18 +55,30 @@ class JobRunsTest {
 
     @Test
     void eachTaskOfARunSetWritesIntoItsOwnFolderAndOnlyTheTicked() throws Exception {
-        Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml")).withStepnc(new JobSettings.StepNcSettings(
-                Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC))
+        Job job = JobXml.read(Path.of("samples/jobs/grade-sole40.xml"))
+                .withStepnc(new JobSettings.StepNcSettings(
+                        Path.of("samples/stepnc/example2.stp").toAbsolutePath(), org.fresa.post.MillingPost.LINUXCNC))
                 .withRuns(List.of(JobTask.STEPNC, JobTask.GRADE));
         TaskOutcome o = JobRunner.run(job, new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         try (Stream<Path> s = Files.list(dir.resolve("out"))) {
-            assertEquals(List.of("grade", "stepnc"), s.filter(Files::isDirectory)
-                    .map(p -> p.getFileName().toString()).sorted().toList());
+            assertEquals(
+                    List.of("grade", "stepnc"),
+                    s.filter(Files::isDirectory)
+                            .map(p -> p.getFileName().toString())
+                            .sorted()
+                            .toList());
         }
-        assertTrue(o.files().stream().allMatch(f -> f.startsWith(dir.resolve("out/grade"))
-                || f.startsWith(dir.resolve("out/stepnc"))), o.files().toString());
-        assertTrue(o.files().stream().anyMatch(f -> f.startsWith(dir.resolve("out/grade"))), o.files().toString());
-        assertTrue(o.files().stream().anyMatch(f -> f.startsWith(dir.resolve("out/stepnc"))), o.files().toString());
+        assertTrue(
+                o.files().stream()
+                        .allMatch(
+                                f -> f.startsWith(dir.resolve("out/grade")) || f.startsWith(dir.resolve("out/stepnc"))),
+                o.files().toString());
+        assertTrue(
+                o.files().stream().anyMatch(f -> f.startsWith(dir.resolve("out/grade"))),
+                o.files().toString());
+        assertTrue(
+                o.files().stream().anyMatch(f -> f.startsWith(dir.resolve("out/stepnc"))),
+                o.files().toString());
     }
 }

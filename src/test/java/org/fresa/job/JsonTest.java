@@ -12,7 +12,8 @@ class JsonTest {
     @Test
     void anImmutableMapIsWrittenWithItsKeysSorted() {
         assertEquals("{\"a\":1,\"b\":2,\"c\":3,\"d\":4}", Json.write(Map.of("d", 4, "b", 2, "c", 3, "a", 1)));
-        assertEquals("[{\"id\":\"WS 1\",\"reason\":\"turning\"}]",
+        assertEquals(
+                "[{\"id\":\"WS 1\",\"reason\":\"turning\"}]",
                 Json.write(java.util.List.of(Map.of("reason", "turning", "id", "WS 1"))));
     }
 

@@ -23,10 +23,12 @@ class OutputFolderTest {
     @Test
     void aFailedWriteLeavesNeitherFileNorTemporary() throws IOException {
         OutputFolder out = new OutputFolder(dir);
-        assertThrows(IOException.class, () -> out.write("program.ngc", o -> {
-            o.write("G0 X1\n".getBytes());
-            throw new IOException("disk full");
-        }));
+        assertThrows(
+                IOException.class,
+                () -> out.write("program.ngc", o -> {
+                    o.write("G0 X1\n".getBytes());
+                    throw new IOException("disk full");
+                }));
         try (Stream<Path> s = Files.list(dir)) {
             assertEquals(List.of(), s.toList());
         }
@@ -100,24 +102,66 @@ class OutputFolderTest {
     }
 
     @org.junit.jupiter.params.ParameterizedTest
-    @org.junit.jupiter.params.provider.ValueSource(strings = {"../x.ngc", "..", ".", "", "a/../../b.csv", "/tmp/x.csv",
-        "C:\\Windows\\x.ngc", "C:x.ngc", "c:/x.ngc", "\\\\server\\share\\x", "..\\x.ngc", "x\u0000.ngc",
-        "x.ngc\u0000../../etc", "NUL", "nul.ngc", "CON.csv", "com1.txt", "LPT9.dxf", "x.", ".fresa-tmp-1.part",
-        "-rf", " x.ngc", "x y.ngc"})
+    @org.junit.jupiter.params.provider.ValueSource(
+            strings = {
+                "../x.ngc",
+                "..",
+                ".",
+                "",
+                "a/../../b.csv",
+                "/tmp/x.csv",
+                "C:\\Windows\\x.ngc",
+                "C:x.ngc",
+                "c:/x.ngc",
+                "\\\\server\\share\\x",
+                "..\\x.ngc",
+                "x\u0000.ngc",
+                "x.ngc\u0000../../etc",
+                "NUL",
+                "nul.ngc",
+                "CON.csv",
+                "com1.txt",
+                "LPT9.dxf",
+                "x.",
+                ".fresa-tmp-1.part",
+                "-rf",
+                " x.ngc",
+                "x y.ngc"
+            })
     void hostileNamesAreRefused(String name) {
         OutputFolder out = new OutputFolder(dir);
         assertThrows(IllegalArgumentException.class, () -> out.resolve(name), name);
     }
 
     @org.junit.jupiter.params.ParameterizedTest
-    @org.junit.jupiter.params.provider.ValueSource(strings = {"../x.ngc", "..", ".", "", "a/../../b.csv", "/tmp/x.csv",
-        "C:\\Windows\\x.ngc", "C:x.ngc", "\\\\server\\share\\x", "x\u0000.ngc", "NUL", "nul.ngc", "CON",
-        "com1", "x.", "...", ".fresa-tmp-1.part", "layer/../../0", "\u00e9t\u00e9 1"})
+    @org.junit.jupiter.params.provider.ValueSource(
+            strings = {
+                "../x.ngc",
+                "..",
+                ".",
+                "",
+                "a/../../b.csv",
+                "/tmp/x.csv",
+                "C:\\Windows\\x.ngc",
+                "C:x.ngc",
+                "\\\\server\\share\\x",
+                "x\u0000.ngc",
+                "NUL",
+                "nul.ngc",
+                "CON",
+                "com1",
+                "x.",
+                "...",
+                ".fresa-tmp-1.part",
+                "layer/../../0",
+                "\u00e9t\u00e9 1"
+            })
     void sanitizedNamesStayInTheFolder(String name) throws IOException {
         OutputFolder out = new OutputFolder(dir);
         String safe = OutputFolder.sanitize(name);
         Path p = out.write(safe + ".txt", os -> os.write(1));
-        org.junit.jupiter.api.Assertions.assertAll(name,
+        org.junit.jupiter.api.Assertions.assertAll(
+                name,
                 () -> assertEquals(dir.toAbsolutePath().normalize(), p.getParent()),
                 () -> assertFalse(safe.startsWith(".")),
                 () -> assertEquals(List.of(p), out.written()));
@@ -127,12 +171,14 @@ class OutputFolderTest {
     void staleTemporaryFilesOfAKilledRunAreRemovedByTheNextWrite() throws IOException {
         Path old = Files.createFile(dir.resolve(AtomicFiles.TEMP_PREFIX + "123" + AtomicFiles.TEMP_SUFFIX));
         Path young = Files.createFile(dir.resolve(AtomicFiles.TEMP_PREFIX + "456" + AtomicFiles.TEMP_SUFFIX));
-        Files.setLastModifiedTime(old, java.nio.file.attribute.FileTime.from(
-                java.time.Instant.now().minus(AtomicFiles.STALE).minusSeconds(60)));
+        Files.setLastModifiedTime(
+                old,
+                java.nio.file.attribute.FileTime.from(
+                        java.time.Instant.now().minus(AtomicFiles.STALE).minusSeconds(60)));
         new OutputFolder(dir).writeString("a.txt", "a");
         org.junit.jupiter.api.Assertions.assertAll(
                 () -> assertFalse(Files.exists(old), "a leftover older than " + AtomicFiles.STALE + " is removed"),
-                () -> org.junit.jupiter.api.Assertions.assertTrue(Files.exists(young),
-                        "a young one may be another run's and stays"));
+                () -> org.junit.jupiter.api.Assertions.assertTrue(
+                        Files.exists(young), "a young one may be another run's and stays"));
     }
 }

@@ -22,10 +22,18 @@ class PlacementSearchAcceptanceTest {
     Path dir;
 
     TaskOutcome run(String robot) throws Exception {
-        return RobotService.run(new RobotService.Settings(Path.of("samples/stepnc/example2.stp"), robot,
-                Placement.ORIGIN, new Placement(0, 10, 0, 0, 0, 0), List.of("csv"),
-                org.fresa.toolpath.PlanningChoices.DEFAULT, RobotTools.Choice.NONE, TablePlacing.AUTO),
-                new OutputFolder(dir), ProgressMonitor.NONE);
+        return RobotService.run(
+                new RobotService.Settings(
+                        Path.of("samples/stepnc/example2.stp"),
+                        robot,
+                        Placement.ORIGIN,
+                        new Placement(0, 10, 0, 0, 0, 0),
+                        List.of("csv"),
+                        org.fresa.toolpath.PlanningChoices.DEFAULT,
+                        RobotTools.Choice.NONE,
+                        TablePlacing.AUTO),
+                new OutputFolder(dir),
+                ProgressMonitor.NONE);
     }
 
     @Test

@@ -25,8 +25,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  */
 class PocketBlocksTest {
 
-    static final List<String> THESIS = List.of("examplepart", "cavity01", "cavity02", "cavity03", "cavity04",
-            "cavity05", "cavity06", "cavity07");
+    static final List<String> THESIS =
+            List.of("examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07");
     static final List<String> SAMPLES = List.of("clover", "rooms", "rooms-islands", "slot-ccw");
 
     private static final Pattern WORD = Pattern.compile("([A-Z])\\s*(-?[0-9.]+)");
@@ -36,8 +36,18 @@ class PocketBlocksTest {
         if (THESIS.contains(name)) {
             return PocketServiceTest.settings(name, post);
         }
-        return new PocketSettings(Path.of("samples/pocket", name + ".contour"), 6, 0.6, 0.15, 0, -6, 3, 3000, 300,
-                100, SettingRanges.Pocket.POST.require(post));
+        return new PocketSettings(
+                Path.of("samples/pocket", name + ".contour"),
+                6,
+                0.6,
+                0.15,
+                0,
+                -6,
+                3,
+                3000,
+                300,
+                100,
+                SettingRanges.Pocket.POST.require(post));
     }
 
     /** What is wrong with the program's blocks, empty when nothing. */
@@ -79,7 +89,8 @@ class PocketBlocksTest {
                 continue;
             }
             if (at != null && mode <= 1) {
-                double d = Math.sqrt(Math.pow(to[0] - at[0], 2) + Math.pow(to[1] - at[1], 2) + Math.pow(to[2] - at[2], 2));
+                double d =
+                        Math.sqrt(Math.pow(to[0] - at[0], 2) + Math.pow(to[1] - at[1], 2) + Math.pow(to[2] - at[2], 2));
                 if (d < 1e-3) {
                     out.add(String.format(Locale.ROOT, "line %d moves %.4f mm: %s", n, d, b));
                 }
@@ -99,22 +110,39 @@ class PocketBlocksTest {
     }
 
     /** An entry from entryZ whose feeds reach down to deepest: it starts just above that layer's material. */
-    private static void air(List<String> out, double entryZ, int line, double deepest, double zTopMm,
-            double depthStepMm) {
+    private static void air(
+            List<String> out, double entryZ, int line, double deepest, double zTopMm, double depthStepMm) {
         if (Double.isNaN(entryZ) || deepest == Double.POSITIVE_INFINITY) {
             return;
         }
         double material = Math.min(zTopMm, deepest + depthStepMm);
         double allowed = material + (material >= zTopMm - 1e-6 ? 1 : 0.2);
         if (entryZ > allowed + 1e-6) {
-            out.add(String.format(Locale.ROOT, "line %d: the entry starts %.3f mm above the material at Z%.3f",
-                    line, entryZ - material, material));
+            out.add(String.format(
+                    Locale.ROOT,
+                    "line %d: the entry starts %.3f mm above the material at Z%.3f",
+                    line,
+                    entryZ - material,
+                    material));
         }
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06",
-            "cavity07", "clover", "rooms", "rooms-islands", "slot-ccw"})
+    @ValueSource(
+            strings = {
+                "examplepart",
+                "cavity01",
+                "cavity02",
+                "cavity03",
+                "cavity04",
+                "cavity05",
+                "cavity06",
+                "cavity07",
+                "clover",
+                "rooms",
+                "rooms-islands",
+                "slot-ccw"
+            })
     void noRepeatedBlockNoMicroMoveNoEntryThroughAir(String name, @TempDir Path dir) throws Exception {
         for (String post : List.of("linuxcnc", "iso", "fanuc", "840d")) {
             PocketSettings s = settings(name, post);
@@ -129,9 +157,20 @@ class PocketBlocksTest {
 
     @org.junit.jupiter.api.Test
     void theCheckFindsWhatItLooksFor() {
-        // a repeated rapid (also a move of nothing), a 0.4 um feed, and an entry into the second layer 1 mm above its material
-        String program = String.join("\n", "G0 X1 Y1 Z5", "G0 X1 Y1 Z5", "G0 X1 Y1 Z1", "G1 X1 Y1 Z-1 F100",
-                "G1 X1.0004 Y1 Z-1", "G1 X5 Y1 Z-1", "G0 X5 Y1 Z5", "G0 X1 Y1 Z0", "G1 X1 Y1 Z-2", "G1 X5 Y1 Z-2",
+        // a repeated rapid (also a move of nothing), a 0.4 um feed, and an entry into the
+        // second layer 1 mm above its material
+        String program = String.join(
+                "\n",
+                "G0 X1 Y1 Z5",
+                "G0 X1 Y1 Z5",
+                "G0 X1 Y1 Z1",
+                "G1 X1 Y1 Z-1 F100",
+                "G1 X1.0004 Y1 Z-1",
+                "G1 X5 Y1 Z-1",
+                "G0 X5 Y1 Z5",
+                "G0 X1 Y1 Z0",
+                "G1 X1 Y1 Z-2",
+                "G1 X5 Y1 Z-2",
                 "G0 X5 Y1 Z5");
         List<String> bad = degenerate(program, 0, 1);
         assertEquals(4, bad.size(), bad.toString());

@@ -33,8 +33,8 @@ class PocketElementsJobTest {
     @Test
     void theElementsAreWrittenAndReadBackExactly() throws Exception {
         for (String name : List.of("cavity02.dad", "cavity05.dad", "cavity07.dad", "examplepart.dad")) {
-            Job job = Job.empty(JobTask.POCKET).withPocket(cavity05(dir.resolve(name)).withElements(dir.resolve(name),
-                    contourOf(name)));
+            Job job = Job.empty(JobTask.POCKET)
+                    .withPocket(cavity05(dir.resolve(name)).withElements(dir.resolve(name), contourOf(name)));
             Path file = dir.resolve("job.xml");
             JobXml.write(job, file);
             assertEquals(job, JobXml.read(file), name);
@@ -78,9 +78,11 @@ class PocketElementsJobTest {
         };
         for (String[] c : cases) {
             Path file = dir.resolve("bad.xml");
-            Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">\n"
-                    + "  <pocket toolDiameterMm=\"6\">\n    <elements>\n      <line a=\"1\" b=\"0\" dMm=\"0\"/>\n      "
-                    + c[0] + "\n    </elements>\n  </pocket>\n</job>\n");
+            Files.writeString(
+                    file,
+                    "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">\n"
+                            + "  <pocket toolDiameterMm=\"6\">\n    <elements>\n      <line a=\"1\" b=\"0\" dMm=\"0\"/>\n      "
+                            + c[0] + "\n    </elements>\n  </pocket>\n</job>\n");
             CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(file), c[0]);
             assertEquals(6, e.line().orElse(0), e.getMessage());
             assertTrue(e.getMessage().contains(c[1]), e.getMessage());
@@ -90,8 +92,10 @@ class PocketElementsJobTest {
     @Test
     void aPocketWithNeitherFileNorElementsIsRefused() throws Exception {
         Path file = dir.resolve("none.xml");
-        Files.writeString(file, "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"
-                + "<pocket toolDiameterMm=\"6\"/></job>\n");
+        Files.writeString(
+                file,
+                "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"
+                        + "<pocket toolDiameterMm=\"6\"/></job>\n");
         CamInputException e = assertThrows(CamInputException.class, () -> JobXml.read(file));
         assertTrue(e.getMessage().contains("needs a contour file"), e.getMessage());
     }
@@ -113,9 +117,12 @@ class PocketElementsJobTest {
                   </pocket>
                 </job>
                 """);
-        CamInputException e = assertThrows(CamInputException.class, () -> JobRunner.run(JobXml.read(file),
-                new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE));
-        assertTrue(e.getMessage().endsWith("the job's <elements>: Element 3 crosses element 1: the contour intersects itself."),
+        CamInputException e = assertThrows(
+                CamInputException.class,
+                () -> JobRunner.run(JobXml.read(file), new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE));
+        assertTrue(
+                e.getMessage()
+                        .endsWith("the job's <elements>: Element 3 crosses element 1: the contour intersects itself."),
                 e.getMessage());
         assertTrue(Files.notExists(dir.resolve("out").resolve("pocket.ngc")));
     }
@@ -126,22 +133,27 @@ class PocketElementsJobTest {
         for (String name : List.of("cavity01.dad", "cavity05.dad", "examplepart.dad")) {
             Path dad = Path.of("samples/pocket", name).toAbsolutePath();
             // the typed contour goes by the file's name, which is not there: only the elements are read
-            Job typed = Job.empty(JobTask.POCKET).withPocket(cavity05(dir.resolve(name)).withElements(
-                    dir.resolve("absent").resolve(name), contourOf(name)));
+            Job typed = Job.empty(JobTask.POCKET)
+                    .withPocket(cavity05(dir.resolve(name))
+                            .withElements(dir.resolve("absent").resolve(name), contourOf(name)));
             Path typedJob = dir.resolve("typed-" + name + ".xml");
             JobXml.write(typed, typedJob);
-            TaskOutcome a = JobRunner.run(JobXml.read(typedJob), new OutputFolder(dir.resolve("typed-" + name)),
+            TaskOutcome a = JobRunner.run(
+                    JobXml.read(typedJob), new OutputFolder(dir.resolve("typed-" + name)), ProgressMonitor.NONE);
+            TaskOutcome b = JobRunner.run(
+                    Job.empty(JobTask.POCKET).withPocket(cavity05(dad)),
+                    new OutputFolder(dir.resolve("file-" + name)),
                     ProgressMonitor.NONE);
-            TaskOutcome b = JobRunner.run(Job.empty(JobTask.POCKET).withPocket(cavity05(dad)),
-                    new OutputFolder(dir.resolve("file-" + name)), ProgressMonitor.NONE);
             assertEquals(0, a.exitStatus(), a.problems().toString());
             assertEquals(b.exitStatus(), a.exitStatus());
             assertEquals(b.files().size(), a.files().size());
             List<String> differ = new ArrayList<>();
             for (int i = 0; i < a.files().size(); i++) {
                 assertEquals(b.files().get(i).getFileName(), a.files().get(i).getFileName());
-                if (!Files.readString(a.files().get(i)).replace(dir.resolve("absent").toString(), "")
-                        .equals(Files.readString(b.files().get(i)).replace(dad.getParent().toString(), ""))) {
+                if (!Files.readString(a.files().get(i))
+                        .replace(dir.resolve("absent").toString(), "")
+                        .equals(Files.readString(b.files().get(i))
+                                .replace(dad.getParent().toString(), ""))) {
                     differ.add(a.files().get(i).getFileName().toString());
                 }
             }

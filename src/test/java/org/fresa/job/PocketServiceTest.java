@@ -1,15 +1,14 @@
 package org.fresa.job;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.MillingDirection;
@@ -29,7 +28,17 @@ class PocketServiceTest {
                 for (int i = 0; i < 9; i++) {
                     v[i] = Double.parseDouble(f[i + 1]);
                 }
-                return new PocketSettings(Path.of("samples/pocket", f[0]), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8],
+                return new PocketSettings(
+                        Path.of("samples/pocket", f[0]),
+                        v[0],
+                        v[1],
+                        v[2],
+                        v[3],
+                        v[4],
+                        v[5],
+                        v[6],
+                        v[7],
+                        v[8],
                         SettingRanges.Pocket.POST.require(post));
             }
         }
@@ -37,7 +46,9 @@ class PocketServiceTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"})
+    @ValueSource(
+            strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"
+            })
     @InterpreterCheck
     void linuxCncAcceptsTheDefaultProgram(String name, @TempDir Path dir) throws Exception {
         assumeTrue(org.fresa.post.Rs274.available(), org.fresa.post.Rs274.whyNot());
@@ -51,8 +62,10 @@ class PocketServiceTest {
 
     @Test
     void theSummaryCarriesTheThesisSizes(@TempDir Path dir) throws Exception {
-        TaskOutcome o = PocketService.run(settings("cavity06", "7m-compat"), dir.resolve("c6.nc"), ProgressMonitor.NONE);
-        assertEquals(List.of(17.750278396781758, 30.0).size(), ((List<?>) o.summary().get("leaf_offsets")).size());
+        TaskOutcome o =
+                PocketService.run(settings("cavity06", "7m-compat"), dir.resolve("c6.nc"), ProgressMonitor.NONE);
+        assertEquals(
+                List.of(17.750278396781758, 30.0).size(), ((List<?>) o.summary().get("leaf_offsets")).size());
         assertEquals(60.0, (double) o.summary().get("max_hole_diameter"), 1e-6);
         assertEquals(30.0, (double) o.summary().get("max_tool_diameter"), 1e-6);
         assertEquals(14.17, (double) o.summary().get("wall_tool_diameter"), 0.01);
@@ -64,7 +77,8 @@ class PocketServiceTest {
         Path bad = dir.resolve("bad.dad");
         Files.writeString(bad, " 1R                   1.2.3\r\n");
         PocketSettings s = new PocketSettings(bad, 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, PocketPost.SINUMERIK_7M);
-        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(s, dir.resolve("x.nc"), ProgressMonitor.NONE));
+        CamInputException e = assertThrows(
+                CamInputException.class, () -> PocketService.run(s, dir.resolve("x.nc"), ProgressMonitor.NONE));
         assertEquals(1, e.line().orElseThrow());
         assertFalse(Files.exists(dir.resolve("x.nc")));
     }
@@ -72,14 +86,18 @@ class PocketServiceTest {
     @Test
     void everyGenericPostWritesTheProgram(@TempDir Path dir) throws Exception {
         for (String post : List.of("iso", "fanuc", "840d", "linuxcnc")) {
-            TaskOutcome o = PocketService.run(settings("cavity01", post), dir.resolve(post + ".nc"), ProgressMonitor.NONE);
+            TaskOutcome o =
+                    PocketService.run(settings("cavity01", post), dir.resolve(post + ".nc"), ProgressMonitor.NONE);
             assertEquals(0, o.exitStatus(), post + ": " + o.problems());
             assertTrue(Files.readString(dir.resolve(post + ".nc")).contains(" X"), post);
         }
     }
 
     private static long words(String nc, String word) {
-        return java.util.regex.Pattern.compile("\\b" + word + "\\b").matcher(nc).results().count();
+        return java.util.regex.Pattern.compile("\\b" + word + "\\b")
+                .matcher(nc)
+                .results()
+                .count();
     }
 
     /** Signed area of the feed moves' XY endpoints at the floor (positive: counter-clockwise). */
@@ -87,14 +105,16 @@ class PocketServiceTest {
         List<org.fresa.geom.Vec3> pts = new java.util.ArrayList<>();
         for (org.fresa.model.ToolpathSection sec : path.sections()) {
             for (org.fresa.model.Move m : sec.moves()) {
-                if (!(m instanceof org.fresa.model.Move.Rapid) && Math.abs(m.end().z() - floorZ) < 1e-9) {
+                if (!(m instanceof org.fresa.model.Move.Rapid)
+                        && Math.abs(m.end().z() - floorZ) < 1e-9) {
                     pts.add(m.end());
                 }
             }
         }
         double a = 0;
         for (int i = 1; i < pts.size(); i++) {
-            a += pts.get(i - 1).x() * pts.get(i).y() - pts.get(i).x() * pts.get(i - 1).y();
+            a += pts.get(i - 1).x() * pts.get(i).y()
+                    - pts.get(i).x() * pts.get(i - 1).y();
         }
         return a / 2;
     }
@@ -123,7 +143,9 @@ class PocketServiceTest {
                 () -> assertTrue(climbArea > 0, "climb loops counter-clockwise: " + climbArea),
                 () -> assertTrue(convArea < 0, "conventional loops clockwise: " + convArea),
                 // a move shorter than a micrometre is left out of the program, which of them depends on the direction
-                () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
+                () -> assertEquals(
+                        (double) a.summary().get("path_length_mm"),
+                        (double) b.summary().get("path_length_mm"),
                         1e-3));
     }
 
@@ -134,8 +156,12 @@ class PocketServiceTest {
         List<org.fresa.geom.Contour> c = PocketService.readContours(rooms);
         double floor = climb.zBottomMm();
         double climbArea = floorArea(PocketService.regionPlan(climb, c).toolpath(), floor);
-        double convArea = floorArea(PocketService.regionPlan(climb.withDirection(MillingDirection.CONVENTIONAL), c).toolpath(), floor);
-        TaskOutcome o = PocketService.run(climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("r.ngc"), ProgressMonitor.NONE);
+        double convArea = floorArea(
+                PocketService.regionPlan(climb.withDirection(MillingDirection.CONVENTIONAL), c)
+                        .toolpath(),
+                floor);
+        TaskOutcome o = PocketService.run(
+                climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("r.ngc"), ProgressMonitor.NONE);
         assertEquals("conventional", o.summary().get("direction"));
         assertTrue(climbArea > 0 && convArea < 0, climbArea + " " + convArea);
     }
@@ -144,7 +170,8 @@ class PocketServiceTest {
     void theSevenMPostsKeepTheThesisDirection(@TempDir Path dir) throws Exception {
         PocketSettings s = settings("cavity01", "7m-compat");
         TaskOutcome a = PocketService.run(s, dir.resolve("a.nc"), ProgressMonitor.NONE);
-        TaskOutcome b = PocketService.run(s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("b.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(
+                s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("b.nc"), ProgressMonitor.NONE);
         assertEquals("conventional", a.summary().get("direction"));
         assertEquals(Files.readString(dir.resolve("a.nc")), Files.readString(dir.resolve("b.nc")));
         assertEquals(0, b.exitStatus());
@@ -156,7 +183,8 @@ class PocketServiceTest {
         // the G-code posts; conventional gives the thesis's clockwise passes
         PocketSettings climb = settings("examplepart", "7m");
         TaskOutcome a = PocketService.run(climb, dir.resolve("climb.nc"), ProgressMonitor.NONE);
-        TaskOutcome b = PocketService.run(climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("conv.nc"), ProgressMonitor.NONE);
+        TaskOutcome b = PocketService.run(
+                climb.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("conv.nc"), ProgressMonitor.NONE);
         String ca = Files.readString(dir.resolve("climb.nc"));
         String cb = Files.readString(dir.resolve("conv.nc"));
         org.fresa.pocket.PocketPlan plan = PocketService.plan(climb);
@@ -166,21 +194,28 @@ class PocketServiceTest {
                 // the example part's arcs are all convex: G02 conventional, G03 climb
                 () -> assertTrue(cb.contains("G02") && !cb.contains("G03"), cb),
                 () -> assertTrue(ca.contains("G03") && !ca.contains("G02"), ca),
-                () -> assertEquals(cb, new org.fresa.pocket.compat.Sinumerik7MPost(org.fresa.pocket.compat.Sinumerik7MPost.Mode.CORRECTED)
-                        .write(plan)),
+                () -> assertEquals(
+                        cb,
+                        new org.fresa.pocket.compat.Sinumerik7MPost(
+                                        org.fresa.pocket.compat.Sinumerik7MPost.Mode.CORRECTED)
+                                .write(plan)),
                 () -> assertEquals(ca.lines().count(), cb.lines().count()),
                 // same start point of every pass: the rapid to the first pass is the same block
-                () -> assertEquals(ca.lines().filter(l -> l.startsWith("N40 ")).toList(),
+                () -> assertEquals(
+                        ca.lines().filter(l -> l.startsWith("N40 ")).toList(),
                         cb.lines().filter(l -> l.startsWith("N40 ")).toList()),
                 // a move shorter than a micrometre is left out of the program, which of them depends on the direction
-                () -> assertEquals((double) a.summary().get("path_length_mm"), (double) b.summary().get("path_length_mm"),
+                () -> assertEquals(
+                        (double) a.summary().get("path_length_mm"),
+                        (double) b.summary().get("path_length_mm"),
                         1e-3));
     }
 
     @Test
     void anUnknownDirectionIsBadUsage() {
         CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Pocket.DIRECTION.check("down"));
-        assertTrue(e.getMessage().contains("--direction") && e.getMessage().contains("climb, conventional"),
+        assertTrue(
+                e.getMessage().contains("--direction") && e.getMessage().contains("climb, conventional"),
                 e.getMessage());
     }
 
@@ -189,9 +224,20 @@ class PocketServiceTest {
         Path contour = dir.resolve("cavity01.dad");
         Files.copy(Path.of("samples/pocket/cavity01.dad"), contour);
         PocketSettings s = settings("cavity01", "linuxcnc");
-        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(contour, s.toolDiameterMm(), s.cutFraction(),
-                s.finishFraction(), s.zTopMm(), s.zBottomMm(), s.maxDepthPerPassMm(), s.spindleRpm(), s.feedMmPerMin(),
-                s.finishFeedMmPerMin(), PocketPost.LINUXCNC, MillingDirection.CONVENTIONAL));
+        Job job = Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        contour,
+                        s.toolDiameterMm(),
+                        s.cutFraction(),
+                        s.finishFraction(),
+                        s.zTopMm(),
+                        s.zBottomMm(),
+                        s.maxDepthPerPassMm(),
+                        s.spindleRpm(),
+                        s.feedMmPerMin(),
+                        s.finishFeedMmPerMin(),
+                        PocketPost.LINUXCNC,
+                        MillingDirection.CONVENTIONAL));
         Path file = dir.resolve("job.xml");
         JobXml.write(job, file);
         assertTrue(Files.readString(file).contains("direction=\"conventional\""));
@@ -201,26 +247,29 @@ class PocketServiceTest {
         TaskOutcome o = JobRunner.run(read, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         assertEquals("conventional", o.summary().get("direction"));
-        PocketService.run(s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("direct.ngc"), ProgressMonitor.NONE);
+        PocketService.run(
+                s.withDirection(MillingDirection.CONVENTIONAL), dir.resolve("direct.ngc"), ProgressMonitor.NONE);
         assertEquals(Files.readString(dir.resolve("direct.ngc")), Files.readString(out.resolve("pocket.ngc")));
     }
 
     @Test
     void anUnknownPostIsBadUsage() {
-        CamInputException e = assertThrows(CamInputException.class, () -> SettingRanges.Pocket.POST.check("heidenhain"));
+        CamInputException e =
+                assertThrows(CamInputException.class, () -> SettingRanges.Pocket.POST.check("heidenhain"));
         assertTrue(e.getMessage().contains("7m-compat, 7m, linuxcnc, iso, fanuc, 840d, apt"), e.getMessage());
     }
 
     static PocketSettings islandSettings(Path contour, String post) {
-        return new PocketSettings(contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, SettingRanges.Pocket.POST.require(post));
+        return new PocketSettings(
+                contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, SettingRanges.Pocket.POST.require(post));
     }
 
     @Test
     @InterpreterCheck
     void aContourFileWithTwoIslandsIsMilledAroundThemAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
         Path out = dir.resolve("rooms.ngc");
-        TaskOutcome o = PocketService.run(islandSettings(Path.of("samples/pocket/rooms-islands.contour"), "linuxcnc"),
-                out, ProgressMonitor.NONE);
+        TaskOutcome o = PocketService.run(
+                islandSettings(Path.of("samples/pocket/rooms-islands.contour"), "linuxcnc"), out, ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         assertEquals(2, o.summary().get("islands"));
         // the largest circle: in the middle room, 40 x 40 without an island
@@ -247,13 +296,17 @@ class PocketServiceTest {
     @Test
     void theSevenMPostsRefuseIslandsAndAnIslandOutsideIsBadInput(@TempDir Path dir) throws Exception {
         Path rooms = Path.of("samples/pocket/rooms-islands.contour");
-        assertThrows(CamInputException.class, () -> PocketService.run(islandSettings(rooms, "7m-compat"),
-                dir.resolve("a.nc"), ProgressMonitor.NONE));
+        assertThrows(
+                CamInputException.class,
+                () -> PocketService.run(islandSettings(rooms, "7m-compat"), dir.resolve("a.nc"), ProgressMonitor.NONE));
         Path bad = dir.resolve("bad.contour");
-        Files.writeString(bad, "contour\nmove 0 0\nline 10 0\nline 10 10\nline 0 10\nline 0 0\n"
-                + "contour\nmove 8 8\nline 20 8\nline 20 9\nline 8 9\nline 8 8\n");
-        CamInputException e = assertThrows(CamInputException.class, () -> PocketService.run(islandSettings(bad, "linuxcnc"),
-                dir.resolve("b.nc"), ProgressMonitor.NONE));
+        Files.writeString(
+                bad,
+                "contour\nmove 0 0\nline 10 0\nline 10 10\nline 0 10\nline 0 0\n"
+                        + "contour\nmove 8 8\nline 20 8\nline 20 9\nline 8 9\nline 8 8\n");
+        CamInputException e = assertThrows(
+                CamInputException.class,
+                () -> PocketService.run(islandSettings(bad, "linuxcnc"), dir.resolve("b.nc"), ProgressMonitor.NONE));
         assertTrue(e.getMessage().contains("not inside"), e.getMessage());
         assertFalse(Files.exists(dir.resolve("b.nc")));
     }

@@ -27,15 +27,24 @@ class ProgramChecksTest {
             }
             String[] f = line.split(",");
             for (String post : List.of("7m-compat", "7m")) {
-                PocketSettings s = new PocketSettings(Path.of("samples/pocket/" + f[0]), Double.parseDouble(f[1]),
-                        Double.parseDouble(f[2]), Double.parseDouble(f[3]), Double.parseDouble(f[4]),
-                        Double.parseDouble(f[5]), Double.parseDouble(f[6]), Double.parseDouble(f[7]),
-                        Double.parseDouble(f[8]), Double.parseDouble(f[9]), SettingRanges.Pocket.POST.require(post));
+                PocketSettings s = new PocketSettings(
+                        Path.of("samples/pocket/" + f[0]),
+                        Double.parseDouble(f[1]),
+                        Double.parseDouble(f[2]),
+                        Double.parseDouble(f[3]),
+                        Double.parseDouble(f[4]),
+                        Double.parseDouble(f[5]),
+                        Double.parseDouble(f[6]),
+                        Double.parseDouble(f[7]),
+                        Double.parseDouble(f[8]),
+                        Double.parseDouble(f[9]),
+                        SettingRanges.Pocket.POST.require(post));
                 Path out = dir.resolve(f[0] + "-" + post + ".nc");
                 TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
                 assertEquals(0, o.exitStatus(), f[0] + " " + post + ": " + o.problems());
                 assertTrue(Files.exists(out));
-                assertTrue(ProgramCheck.of(Files.readString(out), ProgramChecks.dialect(post), ProgramChecks.pocket(s)).ok());
+                assertTrue(ProgramCheck.of(Files.readString(out), ProgramChecks.dialect(post), ProgramChecks.pocket(s))
+                        .ok());
             }
         }
     }
@@ -52,17 +61,23 @@ class ProgramChecksTest {
         Path file = dir.resolve("no-spindle.stp");
         Files.writeString(file, text);
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(file, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                file, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus(), o.problems().toString());
         assertTrue(Files.exists(out.resolve("summary.json")));
         Path ngc = out.resolve("program.ngc");
         if (Files.exists(ngc)) {
             // a planner that refuses such workingsteps may leave a program of the others: it must pass
-            assertTrue(ProgramCheck.of(Files.readString(ngc), org.fresa.check.NcDialect.LINUXCNC,
-                    org.fresa.check.Limits.milling().withOtherTools(org.fresa.check.ToolLimits.drill())).ok());
+            assertTrue(ProgramCheck.of(
+                            Files.readString(ngc),
+                            org.fresa.check.NcDialect.LINUXCNC,
+                            org.fresa.check.Limits.milling().withOtherTools(org.fresa.check.ToolLimits.drill()))
+                    .ok());
         } else {
             // refused by the program check, or earlier by the planner: either way the spindle is named
-            assertTrue(o.problems().stream().anyMatch(p -> p.contains("spindle")), o.problems().toString());
+            assertTrue(
+                    o.problems().stream().anyMatch(p -> p.contains("spindle")),
+                    o.problems().toString());
         }
         assertFalse(Files.list(out).anyMatch(p -> p.getFileName().toString().startsWith(AtomicFiles.TEMP_PREFIX)));
     }
@@ -77,9 +92,12 @@ class ProgramChecksTest {
     void everyPostsGoldenProgramsPassTheCheck() throws Exception {
         int checked = 0;
         try (var files = Files.list(Path.of("src/test/resources/org/fresa/post"))) {
-            for (Path f : files.filter(p -> p.toString().endsWith(".nc")).sorted().toList()) {
+            for (Path f :
+                    files.filter(p -> p.toString().endsWith(".nc")).sorted().toList()) {
                 String post = f.getFileName().toString().replaceAll("^[a-z]+\\.|\\.nc$", "");
-                var result = ProgramCheck.of(Files.readString(f), ProgramChecks.dialect(post),
+                var result = ProgramCheck.of(
+                        Files.readString(f),
+                        ProgramChecks.dialect(post),
                         org.fresa.check.Limits.milling().withOtherTools(org.fresa.check.ToolLimits.drill()));
                 assertTrue(result.ok(), f + ": " + result.failure());
                 checked++;

@@ -68,15 +68,16 @@ class RobotFilesTest {
             q1*q1
             """)
     void aVariableCellThatIsNotQPlusAConstantIsRefused(String text) {
-        CamInputException e = assertThrows(CamInputException.class, () -> RobotFiles.variableOffset("f", 1, "theta",
-                text));
+        CamInputException e =
+                assertThrows(CamInputException.class, () -> RobotFiles.variableOffset("f", 1, "theta", text));
         assertTrue(e.getMessage().contains("joint 1: theta must be q1 plus a constant"), e.getMessage());
     }
 
     @Test
     void aWrongCellIsReportedWithTheJoint() throws IOException {
         Path f = dir.resolve("bad.xml");
-        Files.writeString(f, Files.readString(Path.of("samples/robot/irb140.xml")).replace("q2 - 90", "q3 - 90"));
+        Files.writeString(
+                f, Files.readString(Path.of("samples/robot/irb140.xml")).replace("q2 - 90", "q3 - 90"));
         CamInputException e = assertThrows(CamInputException.class, () -> RobotFiles.load(f.toString()));
         assertTrue(e.getMessage().contains("joint 2"), e.getMessage());
     }
@@ -84,7 +85,8 @@ class RobotFilesTest {
     @Test
     void aFileAgainstTheSchemaIsReportedWithItsLine() throws IOException {
         Path f = dir.resolve("bad.xml");
-        Files.writeString(f, Files.readString(Path.of("samples/robot/irb140.xml")).replace("min=\"-90\"", "minimum=\"-90\""));
+        Files.writeString(
+                f, Files.readString(Path.of("samples/robot/irb140.xml")).replace("min=\"-90\"", "minimum=\"-90\""));
         CamInputException e = assertThrows(CamInputException.class, () -> RobotFiles.load(f.toString()));
         assertTrue(e.line().isPresent(), e.getMessage());
     }
@@ -125,8 +127,9 @@ class RobotFilesTest {
         Path f = dir.resolve("tool.xml");
         RobotFiles.write(r, f);
         SerialRobot back = (SerialRobot) RobotFiles.read(f);
-        assertTrue(back.chain().tool().eq(tool, new org.fresa.geom.Tolerance(1e-12, 1e-14)), back.chain().tool()
-                .toString());
+        assertTrue(
+                back.chain().tool().eq(tool, new org.fresa.geom.Tolerance(1e-12, 1e-14)),
+                back.chain().tool().toString());
         assertEquals(r.wristJoint(), back.wristJoint());
     }
 }

@@ -20,11 +20,20 @@ class RobotPlacementsAcceptanceTest {
 
     /** The thesis placed its parts for a TCP at the flange: a tool length of 0 mm does the same. */
     static List<String[]> run(Path dir, String part, String robot, double x, double y, double z) throws Exception {
-        RobotService.run(new RobotService.Settings(Path.of("samples/stepnc/" + part), robot,
-                new Placement(x, y, z, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0), List.of("csv"),
-                new RobotTools.Choice(java.util.Optional.empty(), java.util.OptionalDouble.of(0))),
-                new OutputFolder(dir), ProgressMonitor.NONE);
-        return Files.readAllLines(dir.resolve("trajectory.csv")).stream().skip(1).map(r -> r.split(",", -1)).toList();
+        RobotService.run(
+                new RobotService.Settings(
+                        Path.of("samples/stepnc/" + part),
+                        robot,
+                        new Placement(x, y, z, 0, 0, 0),
+                        new Placement(0, 10, 0, 0, 0, 0),
+                        List.of("csv"),
+                        new RobotTools.Choice(java.util.Optional.empty(), java.util.OptionalDouble.of(0))),
+                new OutputFolder(dir),
+                ProgressMonitor.NONE);
+        return Files.readAllLines(dir.resolve("trajectory.csv")).stream()
+                .skip(1)
+                .map(r -> r.split(",", -1))
+                .toList();
     }
 
     @ParameterizedTest
@@ -37,7 +46,8 @@ class RobotPlacementsAcceptanceTest {
     void everyPointIsReachedExactlyWithoutJointJumps(String part, String robot, double x, double y, double z)
             throws Exception {
         List<String[]> rows = run(dir, part, robot, x, y, z);
-        String[] header = Files.readAllLines(dir.resolve("trajectory.csv")).get(0).split(",");
+        String[] header =
+                Files.readAllLines(dir.resolve("trajectory.csv")).get(0).split(",");
         List<String> h = List.of(header);
         int n = h.indexOf("reached_x") - h.indexOf("q1");
         double worst = 0;
@@ -65,7 +75,8 @@ class RobotPlacementsAcceptanceTest {
     void theAdeptOneReachesTheTopOfExample2AndNotItsSideFaces() throws Exception {
         // the thesis's part-2 top placement (300, 300, 650); the tool axis of a SCARA stays vertical
         List<String[]> rows = run(dir, "example2.stp", "adept-one", 300, 300, 650);
-        List<String> h = List.of(Files.readAllLines(dir.resolve("trajectory.csv")).get(0).split(","));
+        List<String> h =
+                List.of(Files.readAllLines(dir.resolve("trajectory.csv")).get(0).split(","));
         int top = 0;
         int side = 0;
         for (String[] c : rows) {

@@ -54,8 +54,19 @@ class RobotProgramXmlTest {
         java.util.List<RobotProgram.Motion> motions = new java.util.ArrayList<>(p.motions());
         for (int i = 0; i < motions.size(); i++) {
             RobotProgram.Motion m = motions.get(i);
-            motions.set(i, new RobotProgram.Motion(m.index(), m.workingstep(), m.type(), m.role(), m.jointValues(),
-                    m.target(), m.speedMmPerS(), i == 1 ? 0 : m.zoneMm(), i == 1 ? 1.5 : 0, 3000));
+            motions.set(
+                    i,
+                    new RobotProgram.Motion(
+                            m.index(),
+                            m.workingstep(),
+                            m.type(),
+                            m.role(),
+                            m.jointValues(),
+                            m.target(),
+                            m.speedMmPerS(),
+                            i == 1 ? 0 : m.zoneMm(),
+                            i == 1 ? 1.5 : 0,
+                            3000));
         }
         RobotProgram q = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
         Path f = dir.resolve("dwell.xml");
@@ -74,8 +85,14 @@ class RobotProgramXmlTest {
     void theFileValidatesWithXmllint() throws Exception {
         Path xmllint = Path.of("/usr/bin/xmllint");
         Assumptions.assumeTrue(Files.isExecutable(xmllint), "xmllint not installed");
-        Process p = new ProcessBuilder(xmllint.toString(), "--noout", "--schema", "schemas/robot-program.xsd",
-                writeSample().toString()).redirectErrorStream(true).start();
+        Process p = new ProcessBuilder(
+                        xmllint.toString(),
+                        "--noout",
+                        "--schema",
+                        "schemas/robot-program.xsd",
+                        writeSample().toString())
+                .redirectErrorStream(true)
+                .start();
         String out = new String(p.getInputStream().readAllBytes());
         assertEquals(0, p.waitFor(), out);
         assertTrue(out.contains("validates"), out);
@@ -84,7 +101,8 @@ class RobotProgramXmlTest {
     @Test
     void anInvalidFileIsRefusedWithItsLine() throws Exception {
         Path f = writeSample();
-        String xml = Files.readString(f).replaceFirst("<MotionType>Linear</MotionType>", "<MotionType>Circular</MotionType>");
+        String xml = Files.readString(f)
+                .replaceFirst("<MotionType>Linear</MotionType>", "<MotionType>Circular</MotionType>");
         Files.writeString(f, xml);
         CamInputException e = assertThrows(CamInputException.class, () -> RobotProgramXml.read(f));
         assertTrue(e.line().isPresent(), e.getMessage());
@@ -93,7 +111,8 @@ class RobotProgramXmlTest {
     @Test
     void aSchemaValidFileWithMoreJointValuesThanJointsIsRefused() throws Exception {
         // found by the CI fuzzer: the schema cannot tie the joint count to the values per motion
-        Path f = Path.of("src/test/resources/org/fresa/fuzz/ReaderFuzzTestInputs/robotProgramXmlReaderAcceptsOrRefuses/two-joints-six-values.xml");
+        Path f = Path.of(
+                "src/test/resources/org/fresa/fuzz/ReaderFuzzTestInputs/robotProgramXmlReaderAcceptsOrRefuses/two-joints-six-values.xml");
         CamInputException e = assertThrows(CamInputException.class, () -> RobotProgramXml.read(f));
         assertTrue(e.getMessage().contains("6 joint values for 2 joints"), e.getMessage());
         assertTrue(e.getMessage().contains("two-joints-six-values.xml"), e.getMessage());
@@ -102,7 +121,8 @@ class RobotProgramXmlTest {
     @Test
     void theWrittenFileIsValidAgainstTheSchema() throws Exception {
         // write() no longer validates as it goes: the file must still be valid
-        javax.xml.validation.Validator v = SafeXml.schema("/schemas/robot-program.xsd").newValidator();
+        javax.xml.validation.Validator v =
+                SafeXml.schema("/schemas/robot-program.xsd").newValidator();
         v.validate(new javax.xml.transform.stream.StreamSource(writeSample().toFile()));
     }
 
@@ -113,12 +133,21 @@ class RobotProgramXmlTest {
         RobotProgram.Motion m = motions.get(1);
         java.util.List<Double> joints = new java.util.ArrayList<>(m.jointValues());
         joints.set(2, Double.NaN);
-        motions.set(1, new RobotProgram.Motion(m.index(), m.workingstep(), m.type(), m.role(), joints, m.target(),
-                m.speedMmPerS(), m.zoneMm()));
+        motions.set(
+                1,
+                new RobotProgram.Motion(
+                        m.index(),
+                        m.workingstep(),
+                        m.type(),
+                        m.role(),
+                        joints,
+                        m.target(),
+                        m.speedMmPerS(),
+                        m.zoneMm()));
         RobotProgram bad = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
-        java.io.IOException e = assertThrows(java.io.IOException.class,
-                () -> RobotProgramXml.write(bad, RobotProgramsForTest.FRONT_UPPER, out));
+        java.io.IOException e = assertThrows(
+                java.io.IOException.class, () -> RobotProgramXml.write(bad, RobotProgramsForTest.FRONT_UPPER, out));
         assertTrue(e.getMessage().contains("NaN"), e.getMessage());
         assertEquals(0, out.size());
     }
@@ -126,14 +155,16 @@ class RobotProgramXmlTest {
     @Test
     void theDirectWriterWritesTheBindingsBytes() throws Exception {
         RobotProgram p = RobotProgramsForTest.sample();
-        for (RobotProgram q : java.util.List.of(p, new RobotProgram("empty", p.robotName(), p.joints(), java.util.List.of()))) {
+        for (RobotProgram q :
+                java.util.List.of(p, new RobotProgram("empty", p.robotName(), p.joints(), java.util.List.of()))) {
             var x = RobotProgramXml.toXml(q, RobotProgramsForTest.FRONT_UPPER);
             assertTrue(RobotProgramXml.plainStrings(x));
             java.io.ByteArrayOutputStream byBinding = new java.io.ByteArrayOutputStream();
             RobotProgramXml.marshal(x, byBinding);
             java.io.ByteArrayOutputStream direct = new java.io.ByteArrayOutputStream();
             RobotProgramXml.write(q, RobotProgramsForTest.FRONT_UPPER, direct);
-            assertEquals(byBinding.toString(java.nio.charset.StandardCharsets.UTF_8),
+            assertEquals(
+                    byBinding.toString(java.nio.charset.StandardCharsets.UTF_8),
                     direct.toString(java.nio.charset.StandardCharsets.UTF_8));
         }
     }

@@ -15,17 +15,22 @@ import org.junit.jupiter.api.Test;
 class RobotProgramsTest {
 
     static RobotProgram.Motion at(double... q) {
-        return new RobotProgram.Motion(0, "ws", RobotProgram.MotionType.LINEAR, RobotProgram.PointRole.PART,
-                java.util.Arrays.stream(q).boxed().toList(), Transform3.IDENTITY, 1, 0);
+        return new RobotProgram.Motion(
+                0,
+                "ws",
+                RobotProgram.MotionType.LINEAR,
+                RobotProgram.PointRole.PART,
+                java.util.Arrays.stream(q).boxed().toList(),
+                Transform3.IDENTITY,
+                1,
+                0);
     }
 
     @Test
     void irb140HomeIsFrontAndUpperArm() {
         RapidWriter.ArmGeometry arm = RobotPrograms.armGeometry(Robots.irb140());
         RobotProgram.Motion home = at(0, 0, 0, 0, 0, 0);
-        assertAll(
-                () -> assertFalse(arm.rear(home)),
-                () -> assertFalse(arm.lowerArm(home)));
+        assertAll(() -> assertFalse(arm.rear(home)), () -> assertFalse(arm.lowerArm(home)));
     }
 
     @Test
@@ -56,17 +61,52 @@ class RobotProgramsTest {
         var irb = Robots.irb140();
         Transform3 pose = irb.forward(0, 10, 20, 0, 30, 0);
         List<org.fresa.kin.TrajectoryPoint> points = List.of(
-                new org.fresa.kin.TrajectoryPoint("A", pose, org.fresa.kin.TrajectoryPoint.Status.OK,
-                        new double[] {0, 10, 20, 0, 30, 0}, java.util.Optional.of(pose), 0, 0, 0, false),
-                new org.fresa.kin.TrajectoryPoint("A", pose, org.fresa.kin.TrajectoryPoint.Status.OK,
-                        new double[] {0, 10, 20, 0, 30, 0}, java.util.Optional.of(pose), 0, 0, 0, false),
-                new org.fresa.kin.TrajectoryPoint("A", pose, org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE,
-                        new double[0], java.util.Optional.empty(), Double.NaN, Double.NaN, 0, false),
-                new org.fresa.kin.TrajectoryPoint("A", pose, org.fresa.kin.TrajectoryPoint.Status.RELINK,
-                        new double[] {0, 10, 20, 0, 30, 0}, java.util.Optional.of(pose), 0, 0, 0, true));
+                new org.fresa.kin.TrajectoryPoint(
+                        "A",
+                        pose,
+                        org.fresa.kin.TrajectoryPoint.Status.OK,
+                        new double[] {0, 10, 20, 0, 30, 0},
+                        java.util.Optional.of(pose),
+                        0,
+                        0,
+                        0,
+                        false),
+                new org.fresa.kin.TrajectoryPoint(
+                        "A",
+                        pose,
+                        org.fresa.kin.TrajectoryPoint.Status.OK,
+                        new double[] {0, 10, 20, 0, 30, 0},
+                        java.util.Optional.of(pose),
+                        0,
+                        0,
+                        0,
+                        false),
+                new org.fresa.kin.TrajectoryPoint(
+                        "A",
+                        pose,
+                        org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE,
+                        new double[0],
+                        java.util.Optional.empty(),
+                        Double.NaN,
+                        Double.NaN,
+                        0,
+                        false),
+                new org.fresa.kin.TrajectoryPoint(
+                        "A",
+                        pose,
+                        org.fresa.kin.TrajectoryPoint.Status.RELINK,
+                        new double[] {0, 10, 20, 0, 30, 0},
+                        java.util.Optional.of(pose),
+                        0,
+                        0,
+                        0,
+                        true));
         RobotProgram p = RobotPrograms.of("t", irb, new org.fresa.model.Toolpath(List.of()), points);
-        assertEquals(List.of(RobotProgram.MotionType.JOINT, RobotProgram.MotionType.LINEAR,
-                RobotProgram.MotionType.JOINT), p.motions().stream().map(RobotProgram.Motion::type).toList());
-        assertEquals(List.of(0, 1, 3), p.motions().stream().map(RobotProgram.Motion::index).toList());
+        assertEquals(
+                List.of(RobotProgram.MotionType.JOINT, RobotProgram.MotionType.LINEAR, RobotProgram.MotionType.JOINT),
+                p.motions().stream().map(RobotProgram.Motion::type).toList());
+        assertEquals(
+                List.of(0, 1, 3),
+                p.motions().stream().map(RobotProgram.Motion::index).toList());
     }
 }

@@ -25,9 +25,15 @@ class RobotServiceTest {
 
     @BeforeAll
     static void runExample2() throws Exception {
-        outcome = RobotService.run(new RobotService.Settings(Path.of("samples/stepnc/example2.stp"), "irb140",
-                new Placement(450, 0, 350, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0),
-                List.of("csv", "xml", "rapid", "krl", "png")), new OutputFolder(dir), ProgressMonitor.NONE);
+        outcome = RobotService.run(
+                new RobotService.Settings(
+                        Path.of("samples/stepnc/example2.stp"),
+                        "irb140",
+                        new Placement(450, 0, 350, 0, 0, 0),
+                        new Placement(0, 10, 0, 0, 0, 0),
+                        List.of("csv", "xml", "rapid", "krl", "png")),
+                new OutputFolder(dir),
+                ProgressMonitor.NONE);
         List<String> rows = Files.readAllLines(dir.resolve("trajectory.csv"));
         String[] header = rows.get(0).split(",");
         int q1 = List.of(header).indexOf("q1");
@@ -47,8 +53,15 @@ class RobotServiceTest {
 
     @Test
     void everyFileIsWritten() {
-        for (String f : List.of("toolpath.csv", "trajectory.csv", "summary.json", "program.xml", "program.mod",
-                "program.src", "joints.png", "error.png")) {
+        for (String f : List.of(
+                "toolpath.csv",
+                "trajectory.csv",
+                "summary.json",
+                "program.xml",
+                "program.mod",
+                "program.src",
+                "joints.png",
+                "error.png")) {
             assertTrue(Files.isRegularFile(dir.resolve(f)), f);
         }
         assertTrue(okRows > 1000, "rows: " + okRows);
@@ -105,7 +118,8 @@ class RobotServiceTest {
     @Test
     void rapidAndKrlHaveOneMovePerPointWithTheTrajectoryJoints() throws Exception {
         for (String f : List.of("program.mod", "program.src")) {
-            List<double[]> moves = org.fresa.post.RobotProgramWritersTestAccess.jointsIn(Files.readString(dir.resolve(f)));
+            List<double[]> moves =
+                    org.fresa.post.RobotProgramWritersTestAccess.jointsIn(Files.readString(dir.resolve(f)));
             assertEquals(okRows, moves.size(), f);
             for (int i = 0; i < okRows; i++) {
                 for (int j = 0; j < 6; j++) {
@@ -116,8 +130,7 @@ class RobotServiceTest {
     }
 
     /** One RAPID move: its workingstep, instruction, zone, confdata and joints (from its comment). */
-    record RapidMove(String workingstep, String instruction, String zone, String confdata, double[] joints) {
-    }
+    record RapidMove(String workingstep, String instruction, String zone, String confdata, double[] joints) {}
 
     static List<RapidMove> rapidMoves() throws Exception {
         List<RapidMove> out = new ArrayList<>();
@@ -135,7 +148,9 @@ class RobotServiceTest {
                 java.util.regex.Matcher j = joints.matcher(l);
                 double[] q = null;
                 if (j.find()) {
-                    q = java.util.Arrays.stream(j.group(1).split(",")).mapToDouble(Double::parseDouble).toArray();
+                    q = java.util.Arrays.stream(j.group(1).split(","))
+                            .mapToDouble(Double::parseDouble)
+                            .toArray();
                 }
                 out.add(new RapidMove(ws, l.substring(0, l.indexOf(' ')), zone, c.find() ? c.group(1) : null, q));
                 assertTrue(parts.length > 1);
@@ -151,7 +166,8 @@ class RobotServiceTest {
         for (int i = 0; i + 1 < moves.size(); i++) {
             RapidMove a = moves.get(i);
             RapidMove b = moves.get(i + 1);
-            boolean insideAWorkingstep = a.instruction().equals("MoveL") && b.instruction().equals("MoveL")
+            boolean insideAWorkingstep = a.instruction().equals("MoveL")
+                    && b.instruction().equals("MoveL")
                     && a.workingstep().equals(b.workingstep());
             if (insideAWorkingstep) {
                 assertEquals("z1", a.zone(), "move " + i + " of " + a.workingstep());

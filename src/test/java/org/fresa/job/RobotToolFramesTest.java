@@ -27,10 +27,16 @@ class RobotToolFramesTest {
 
     @BeforeAll
     static void runExample2() throws Exception {
-        outcome = RobotService.run(new RobotService.Settings(Path.of("samples/stepnc/example2.stp"), "irb140",
-                new Placement(450, 0, 350, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0), List.of("csv", "rapid", "krl",
-                        "xml"), new RobotTools.Choice(Optional.of(new Placement(0, 0, 150, 0, 0, 0)),
-                                OptionalDouble.of(50))), new OutputFolder(dir), ProgressMonitor.NONE);
+        outcome = RobotService.run(
+                new RobotService.Settings(
+                        Path.of("samples/stepnc/example2.stp"),
+                        "irb140",
+                        new Placement(450, 0, 350, 0, 0, 0),
+                        new Placement(0, 10, 0, 0, 0, 0),
+                        List.of("csv", "rapid", "krl", "xml"),
+                        new RobotTools.Choice(Optional.of(new Placement(0, 0, 150, 0, 0, 0)), OptionalDouble.of(50))),
+                new OutputFolder(dir),
+                ProgressMonitor.NONE);
     }
 
     @Test
@@ -50,8 +56,13 @@ class RobotToolFramesTest {
             }
             double[][] flange = SpecKinematics.irb140(q);
             double[][] tip = SpecKinematics.times(flange, SpecKinematics.tz(200));
-            double[][] target = SpecKinematics.pose(num(c, h, "x"), num(c, h, "y"), num(c, h, "z"), num(c, h, "roll"),
-                    num(c, h, "pitch"), num(c, h, "yaw"));
+            double[][] target = SpecKinematics.pose(
+                    num(c, h, "x"),
+                    num(c, h, "y"),
+                    num(c, h, "z"),
+                    num(c, h, "roll"),
+                    num(c, h, "pitch"),
+                    num(c, h, "yaw"));
             worst = Math.max(worst, SpecKinematics.positionError(tip, target));
             assertTrue(SpecKinematics.rotationError(tip, target) <= 1e-8, r);
             assertEquals(flange[0][3], num(c, h, "flange_x"), 1e-6, r);
@@ -66,8 +77,9 @@ class RobotToolFramesTest {
     @Test
     void theRapidToolDataHoldTheSpindleAndTheTool() throws Exception {
         String mod = Files.readString(dir.resolve("program.mod"));
-        assertTrue(mod.contains("PERS tooldata tFresa1 := [TRUE,[[0.000,0.000,200.000],[1.00000000,"), mod.substring(0,
-                400));
+        assertTrue(
+                mod.contains("PERS tooldata tFresa1 := [TRUE,[[0.000,0.000,200.000],[1.00000000,"),
+                mod.substring(0, 400));
         assertTrue(mod.contains(",tFresa1\\WObj:=wFresa;"));
         String src = Files.readString(dir.resolve("program.src"));
         assertTrue(src.contains("TOOL_DATA[1] = {X 0.000,Y 0.000,Z 200.000,A 0.000000,B 0.000000,C 0.000000}"));
@@ -92,7 +104,8 @@ class RobotToolFramesTest {
     @Test
     void theSummaryGivesTheErrorPerAxisAsTheThesisTable() {
         @SuppressWarnings("unchecked")
-        java.util.Map<String, Object> axes = (java.util.Map<String, Object>) outcome.summary().get("error_per_axis");
+        java.util.Map<String, Object> axes =
+                (java.util.Map<String, Object>) outcome.summary().get("error_per_axis");
         assertEquals(List.of("x_mm", "y_mm", "z_mm", "rx_rad", "ry_rad", "rz_rad"), List.copyOf(axes.keySet()));
         for (String a : axes.keySet()) {
             @SuppressWarnings("unchecked")

@@ -75,9 +75,14 @@ class SolePairLayoutTest {
             String tread = Files.readString(dir.resolve("tread-" + size + "-" + foot.id() + ".ngc"));
             assertShifted(write(p, SoleService.treadProgram(p, g, foot)), tread, xz, yz, foot + " tread " + size);
             String cavity = Files.readString(dir.resolve("cavity-" + size + "-" + foot.id() + ".ngc"));
-            assertShifted(write(p, SoleService.cavityProgram(p, g, foot).orElseThrow()), cavity, xz, yz,
+            assertShifted(
+                    write(p, SoleService.cavityProgram(p, g, foot).orElseThrow()),
+                    cavity,
+                    xz,
+                    yz,
                     foot + " cavity " + size);
-            assertTrue(tread.contains(String.format(Locale.ROOT, "(%s foot, part zero X%.3f Y%.3f: ", foot.id(), xz, yz)),
+            assertTrue(
+                    tread.contains(String.format(Locale.ROOT, "(%s foot, part zero X%.3f Y%.3f: ", foot.id(), xz, yz)),
                     "the program names its part zero");
         }
     }
@@ -93,15 +98,23 @@ class SolePairLayoutTest {
     @Test
     void aBlockShorterThanAGradedPatternIsRefusedWithTheSizeAndLength(@TempDir Path tmp) throws Exception {
         Path job = tmp.resolve("short.xml");
-        Files.writeString(job, Files.readString(SAMPLE).replace("cmMm=\"350\"", "cmMm=\"280\"")
-                .replace("outline=\"../sole/men40.contour\"", "outline=\"" + Path.of("samples/sole/men40.contour")
-                        .toAbsolutePath() + "\""));
+        Files.writeString(
+                job,
+                Files.readString(SAMPLE)
+                        .replace("cmMm=\"350\"", "cmMm=\"280\"")
+                        .replace(
+                                "outline=\"../sole/men40.contour\"",
+                                "outline=\""
+                                        + Path.of("samples/sole/men40.contour").toAbsolutePath() + "\""));
         Job j = JobXml.read(job);
-        CamInputException e = assertThrows(CamInputException.class, () -> SoleService.plan(j.sole().orElseThrow(),
-                j.name()));
+        CamInputException e = assertThrows(
+                CamInputException.class, () -> SoleService.plan(j.sole().orElseThrow(), j.name()));
         // CP(41) = 270 (BETA(41) + 0.02) = 282.08 mm (282.06 with the thesis's BETA): 38-40 fit, 41 does not
-        assertTrue(e.getMessage().contains("size 41") && e.getMessage().contains("282.0")
-                && e.getMessage().contains("280.000"), e.getMessage());
+        assertTrue(
+                e.getMessage().contains("size 41")
+                        && e.getMessage().contains("282.0")
+                        && e.getMessage().contains("280.000"),
+                e.getMessage());
         Path out = tmp.resolve("out");
         assertThrows(CamInputException.class, () -> JobRunner.run(j, new OutputFolder(out), ProgressMonitor.NONE));
         assertFalse(Files.exists(out.resolve("tread-38-right.ngc")), "nothing written");

@@ -47,8 +47,10 @@ class SoleServiceTest {
         for (double size : p.grader().plan().sizes()) {
             GradedSize g = p.grader().grade(size);
             for (Foot foot : Foot.values()) {
-                Contour outline = foot == Foot.RIGHT ? g.output().get(0)
-                        : SoleTread.mirrored(g.output().get(0), p.grader().origin().x());
+                Contour outline = foot == Foot.RIGHT
+                        ? g.output().get(0)
+                        : SoleTread.mirrored(
+                                g.output().get(0), p.grader().origin().x());
                 Toolpath tp = SoleService.treadProgram(p, g, foot);
                 int cuts = 0;
                 for (ToolpathSection sec : tp.sections()) {
@@ -58,10 +60,13 @@ class SoleServiceTest {
                             Vec2 q = m.end().xy();
                             Vec2 a = at.xy();
                             for (int k = 0; k <= 4; k++) {
-                                Vec2 pt = m instanceof Move.Circular c ? arcPoint(c, a, k / 4.0) : a.interpolate(q, k / 4.0);
+                                Vec2 pt = m instanceof Move.Circular c
+                                        ? arcPoint(c, a, k / 4.0)
+                                        : a.interpolate(q, k / 4.0);
                                 double d = outline.distanceTo(pt);
-                                assertTrue(outline.contains(pt, Tolerance.DEFAULT)
-                                        && d >= 2 + sec.toolDiameterMm() / 2 - 1e-6,
+                                assertTrue(
+                                        outline.contains(pt, Tolerance.DEFAULT)
+                                                && d >= 2 + sec.toolDiameterMm() / 2 - 1e-6,
                                         "size " + g.name() + " " + foot + ": groove edge leaves the outline at " + pt);
                             }
                             cuts++;
@@ -75,7 +80,8 @@ class SoleServiceTest {
     }
 
     private static Vec2 arcPoint(Move.Circular c, Vec2 from, double t) {
-        org.fresa.geom.Arc2 a = new org.fresa.geom.Arc2(c.center().xy(), from, c.end().xy(), c.ccw());
+        org.fresa.geom.Arc2 a =
+                new org.fresa.geom.Arc2(c.center().xy(), from, c.end().xy(), c.ccw());
         if (from.distance(c.end().xy()) < 1e-12) {
             a = new org.fresa.geom.Arc2(c.center().xy(), from, from, c.ccw());
         }
@@ -84,13 +90,17 @@ class SoleServiceTest {
 
     @Test
     @InterpreterCheck
-    void theSampleJobWritesEveryProgramAndLinuxCncAcceptsThem(@TempDir Path dir)
-            throws Exception {
+    void theSampleJobWritesEveryProgramAndLinuxCncAcceptsThem(@TempDir Path dir) throws Exception {
         TaskOutcome t = JobRunner.run(JobXml.read(SAMPLE), new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, t.exitStatus(), t.problems().toString());
         for (String size : List.of("38", "39", "40", "41", "42")) {
-            for (String f : List.of("tread-" + size + "-right.ngc", "tread-" + size + "-left.ngc", "size-" + size + ".csv",
-                    "sole-" + size + ".png", "cavity-" + size + "-right.ngc", "cavity-" + size + "-left.ngc")) {
+            for (String f : List.of(
+                    "tread-" + size + "-right.ngc",
+                    "tread-" + size + "-left.ngc",
+                    "size-" + size + ".csv",
+                    "sole-" + size + ".png",
+                    "cavity-" + size + "-right.ngc",
+                    "cavity-" + size + "-left.ngc")) {
                 assertTrue(Files.size(dir.resolve(f)) > 0, f);
             }
         }
@@ -109,7 +119,9 @@ class SoleServiceTest {
         for (ToolpathSection sec : tp.sections()) {
             Vec3 at = sec.start();
             for (Move m : sec.moves()) {
-                if (!(m instanceof Move.Rapid) && Math.abs(at.z() - z) < 1e-9 && Math.abs(m.end().z() - z) < 1e-9) {
+                if (!(m instanceof Move.Rapid)
+                        && Math.abs(at.z() - z) < 1e-9
+                        && Math.abs(m.end().z() - z) < 1e-9) {
                     sum += at.x() * m.end().y() - m.end().x() * at.y();
                 }
                 at = m.end();
@@ -130,9 +142,15 @@ class SoleServiceTest {
             org.locationtech.jts.geom.Geometry wall = org.fresa.pocket.RegionPocketTestAccess.polygon(outline);
             double r = right.sections().get(0).toolDiameterMm() / 2;
             org.locationtech.jts.geom.Geometry swept = org.fresa.pocket.RegionPocketTestAccess.swept(right, -4, r);
-            double uncut = wall.buffer(-r, 64).buffer(r - 0.01, 64).difference(swept).getArea();
+            double uncut =
+                    wall.buffer(-r, 64).buffer(r - 0.01, 64).difference(swept).getArea();
             double outside = swept.difference(wall.buffer(0.01, 64)).getArea();
-            System.out.printf(java.util.Locale.ROOT, "sole cavity %s: uncut %.5f mm2, outside %.5f mm2%n", g.name(), uncut, outside);
+            System.out.printf(
+                    java.util.Locale.ROOT,
+                    "sole cavity %s: uncut %.5f mm2, outside %.5f mm2%n",
+                    g.name(),
+                    uncut,
+                    outside);
             assertTrue(uncut < 1e-3, g.name() + " uncut " + uncut);
             assertTrue(outside < 1e-3, g.name() + " beyond the outline " + outside);
             // the left foot cuts the mirror image of the right one
@@ -153,9 +171,22 @@ class SoleServiceTest {
         JobSettings.SoleSettings s = job.sole().orElseThrow();
         List<JobSettings.SoleTool> tools = new java.util.ArrayList<>(s.tools());
         tools.add(new JobSettings.SoleTool("em60", 9, 60, 1500, 200, 80));
-        JobSettings.SoleSettings big = new JobSettings.SoleSettings(s.outline(), s.baseSize(), s.sizes(),
-                s.cavityDepthMm(), s.post(), s.system(), s.originMm(), s.shrinkage(), s.shrinkageMode(),
-                s.treadDepthMm(), s.clearanceMm(), s.marginMm(), tools, s.designs(), "em60");
+        JobSettings.SoleSettings big = new JobSettings.SoleSettings(
+                s.outline(),
+                s.baseSize(),
+                s.sizes(),
+                s.cavityDepthMm(),
+                s.post(),
+                s.system(),
+                s.originMm(),
+                s.shrinkage(),
+                s.shrinkageMode(),
+                s.treadDepthMm(),
+                s.clearanceMm(),
+                s.marginMm(),
+                tools,
+                s.designs(),
+                "em60");
         SoleService.SolePlan p = SoleService.plan(big, "sample");
         GradedSize g = p.grader().grade(40);
         org.fresa.model.CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(

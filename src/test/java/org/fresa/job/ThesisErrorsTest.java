@@ -96,18 +96,38 @@ class ThesisErrorsTest {
             tricept806, 1, 50, 50, -1900,    0.000, 0.101, -0.099,  0.001, 0.102, -0.104, 0.001, 0.060, -0.060
             tricept806, 2, 200, 300, -1900,  0.001, 0.107, -0.101, -0.001, 0.115, -0.135, -0.001, 0.158, -0.153
             """)
-    void ourErrorsPerAxisLieWithinTheThesissTable53(String robotName, int part, double tx, double ty, double tz,
-            double xMean, double xUp, double xLo, double yMean, double yUp, double yLo, double zMean, double zUp,
-            double zLo) throws Exception {
+    void ourErrorsPerAxisLieWithinTheThesissTable53(
+            String robotName,
+            int part,
+            double tx,
+            double ty,
+            double tz,
+            double xMean,
+            double xUp,
+            double xLo,
+            double yMean,
+            double yUp,
+            double yLo,
+            double zMean,
+            double zUp,
+            double zLo)
+            throws Exception {
         Robot robot = Robots.byName(robotName).orElseThrow();
-        ToolpathPlanner.Plan plan = ThesisPathsTest.thesis(part == 1 ? ThesisPathsTest.EXAMPLE1 : ThesisPathsTest.EXAMPLE2);
+        ToolpathPlanner.Plan plan =
+                ThesisPathsTest.thesis(part == 1 ? ThesisPathsTest.EXAMPLE1 : ThesisPathsTest.EXAMPLE2);
         Placement piece = new Placement(0, 10, 0, 0, 0, 0);
         List<TrajectorySolver.Result> results = new ArrayList<>();
         if (robotName.equals("adept-one") && part == 2) {
             results.add(solve(robot, face(plan.toolpath(), 0, 0, 1), new Placement(tx, ty, tz, 0, 0, 0), piece));
-            results.add(solve(robot, face(plan.toolpath(), 0, -1, 0), new Placement(300, 300, 745, 0, 0, 0),
+            results.add(solve(
+                    robot,
+                    face(plan.toolpath(), 0, -1, 0),
+                    new Placement(300, 300, 745, 0, 0, 0),
                     new Placement(0, 10, 0, -90, 0, 0)));
-            results.add(solve(robot, face(plan.toolpath(), -1, 0, 0), new Placement(300, 300, 745, 0, 0, 0),
+            results.add(solve(
+                    robot,
+                    face(plan.toolpath(), -1, 0, 0),
+                    new Placement(300, 300, 745, 0, 0, 0),
                     new Placement(0, 10, 0, 0, 90, 0)));
         } else {
             results.add(solve(robot, plan.toolpath(), new Placement(tx, ty, tz, 0, 0, 0), piece));
@@ -116,15 +136,26 @@ class ThesisErrorsTest {
         double[][] thesis = {{xMean, xUp, xLo}, {yMean, yUp, yLo}, {zMean, zUp, zLo}};
         String[] axes = {"X", "Y", "Z"};
         for (int a = 0; a < 3; a++) {
-            System.out.printf(Locale.ROOT, "Table 5.3 %s part %d %s: thesis %.3f %.3f %.3f | ours %s (%d points)%n",
-                    robotName, part, axes[a], thesis[a][0], thesis[a][1], thesis[a][2], ours.row(a), ours.points());
+            System.out.printf(
+                    Locale.ROOT,
+                    "Table 5.3 %s part %d %s: thesis %.3f %.3f %.3f | ours %s (%d points)%n",
+                    robotName,
+                    part,
+                    axes[a],
+                    thesis[a][0],
+                    thesis[a][1],
+                    thesis[a][2],
+                    ours.row(a),
+                    ours.points());
             double[] o = ours.um()[a];
             int axis = a;
-            assertTrue(o[1] <= thesis[a][1] / 10 && o[2] >= thesis[a][2] / 10,
+            assertTrue(
+                    o[1] <= thesis[a][1] / 10 && o[2] >= thesis[a][2] / 10,
                     () -> axes[axis] + ": ours " + ours.row(axis) + " against the thesis's " + thesis[axis][1] + " / "
                             + thesis[axis][2]);
-            assertTrue(Math.abs(o[0]) <= Math.max(Math.abs(thesis[a][0]), 0.001), () -> axes[axis] + " mean "
-                    + ours.row(axis));
+            assertTrue(
+                    Math.abs(o[0]) <= Math.max(Math.abs(thesis[a][0]), 0.001),
+                    () -> axes[axis] + " mean " + ours.row(axis));
         }
     }
 }

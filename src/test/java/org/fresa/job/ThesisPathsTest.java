@@ -32,8 +32,8 @@ class ThesisPathsTest {
     static final double MATCH_MM = 0.01;
 
     static ToolpathPlanner.Plan thesis(Path file) throws Exception {
-        ToolpathPlanner.Plan p = ToolpathPlanner.plan(StepNcReader.read(file), Tolerance.DEFAULT,
-                PlanningChoices.DEFAULT.withPaths(PathConvention.THESIS));
+        ToolpathPlanner.Plan p = ToolpathPlanner.plan(
+                StepNcReader.read(file), Tolerance.DEFAULT, PlanningChoices.DEFAULT.withPaths(PathConvention.THESIS));
         assertEquals(p.workingsteps(), p.planned(), p.problems().toString());
         return p;
     }
@@ -78,7 +78,8 @@ class ThesisPathsTest {
     @Test
     void theOriginalExample1GivesTheThesissFirstAndLastPointsAndLacksItsRoughingStrategy() throws Exception {
         ToolpathPlanner.Plan p = thesis(EXAMPLE1_ORIGINAL);
-        List<Integer> perStep = p.toolpath().sections().stream().map(x -> 1 + x.moves().size()).toList();
+        List<Integer> perStep =
+                p.toolpath().sections().stream().map(x -> 1 + x.moves().size()).toList();
         // face 3 layers x 44 + 3; drill and ream 8 each; finishing 16 layers x 19 + 3; roughing as
         // contour-parallel in the file's 6.5 mm layers: 6 x 15 + 3, where the thesis's 842 leave 400 points
         // to its drilling, reaming and contour-bidirectional roughing in 2.5 mm layers (docs/thesis-paths.md)
@@ -98,20 +99,25 @@ class ThesisPathsTest {
             // in order a few roughing samples (at -20 mm) are also met by the finishing pass's corners
             int inOrder = find(samples(table), ours).inOrder();
             assertTrue(inOrder >= 19, table + " " + inOrder);
-            System.out.printf(java.util.Locale.ROOT, "%s (original example 1): %d at their numbers, %d in order%n",
-                    table, matched, inOrder);
+            System.out.printf(
+                    java.util.Locale.ROOT,
+                    "%s (original example 1): %d at their numbers, %d in order%n",
+                    table,
+                    matched,
+                    inOrder);
         }
     }
 
     @Test
     void defaultPathsAreUnchanged() throws Exception {
         ToolpathPlanner.Plan p = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE2), Tolerance.DEFAULT);
-        assertEquals(19028, ToolpathCsv.rows(p.toolpath(), NcPosts.CHORD_TOLERANCE_MM).size());
+        assertEquals(
+                19028,
+                ToolpathCsv.rows(p.toolpath(), NcPosts.CHORD_TOLERANCE_MM).size());
     }
 
     /** One Appendix C row: the thesis's point number and the target in the workpiece frame. */
-    record Sample(String table, int point, Vec3 piece) {
-    }
+    record Sample(String table, int point, Vec3 piece) {}
 
     /**
      * The samples of a table in the workpiece frame. Where the thesis printed a target rounded
@@ -144,8 +150,7 @@ class ThesisPathsTest {
     }
 
     /** How the samples of a table are found: in order, and at the thesis's own point numbers. */
-    record Found(int inOrder, int atTheirNumber, double worstMm, List<Integer> missing) {
-    }
+    record Found(int inOrder, int atTheirNumber, double worstMm, List<Integer> missing) {}
 
     static Found find(List<Sample> samples, List<Vec3> ours) {
         int from = 0;
@@ -181,8 +186,12 @@ class ThesisPathsTest {
         ToolpathPlanner.Plan plan = thesis(EXAMPLE2);
         List<Vec3> ours = points(plan);
         // the robot's targets (workpiece frame): the same points less the repeated security points
-        List<Vec3> targets = RobotTrajectoryService.targets(plan.toolpath(), org.fresa.geom.Transform3.IDENTITY,
-                NcPosts.CHORD_TOLERANCE_MM * 10).stream().map(t -> t.positionMm()).toList();
+        List<Vec3> targets =
+                RobotTrajectoryService.targets(
+                                plan.toolpath(), org.fresa.geom.Transform3.IDENTITY, NcPosts.CHORD_TOLERANCE_MM * 10)
+                        .stream()
+                        .map(t -> t.positionMm())
+                        .toList();
         assertEquals(3106 - 23, targets.size());
         for (String table : List.of("C.0.4 ex2 Adept One", "C.0.5 ex2 ABB IRB-140", "C.0.6 ex2 Tricept 806")) {
             List<Sample> s = samples(table);
@@ -192,8 +201,13 @@ class ThesisPathsTest {
             assertEquals(39, f.atTheirNumber(), table);
             assertEquals(39, find(s, targets).inOrder(), table);
             assertTrue(f.worstMm() <= MATCH_MM, table + " worst " + f.worstMm());
-            System.out.printf(java.util.Locale.ROOT, "%s: %d of 39 in order, %d at their numbers, worst %.6f mm%n",
-                    table, f.inOrder(), f.atTheirNumber(), f.worstMm());
+            System.out.printf(
+                    java.util.Locale.ROOT,
+                    "%s: %d of 39 in order, %d at their numbers, worst %.6f mm%n",
+                    table,
+                    f.inOrder(),
+                    f.atTheirNumber(),
+                    f.worstMm());
         }
     }
 
@@ -205,8 +219,14 @@ class ThesisPathsTest {
             // our example 1 is NIST's edit of the file the thesis ran (docs/thesis-paths.md): only the
             // security point (0, 0, 30) is common
             assertEquals(1, f.inOrder(), table);
-            System.out.printf(java.util.Locale.ROOT, "%s: %d of 39 in order, %d at their numbers, worst %.6f mm, missing %s%n", table,
-                    f.inOrder(), f.atTheirNumber(), f.worstMm(), f.missing());
+            System.out.printf(
+                    java.util.Locale.ROOT,
+                    "%s: %d of 39 in order, %d at their numbers, worst %.6f mm, missing %s%n",
+                    table,
+                    f.inOrder(),
+                    f.atTheirNumber(),
+                    f.worstMm(),
+                    f.missing());
         }
     }
 }

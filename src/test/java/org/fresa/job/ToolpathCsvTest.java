@@ -17,9 +17,11 @@ class ToolpathCsvTest {
         List<Move> moves = List.of(
                 new Move.Rapid(new Vec3(10, 0, 1)),
                 new Move.Linear(new Vec3(10, 0, -0.1), 300),
-                new Move.Circular(new Vec3(0, 10, -0.1), Vec3.ZERO.plus(new Vec3(0, 0, -0.1)), Vec3.UNIT_Z, true, 0, 600),
+                new Move.Circular(
+                        new Vec3(0, 10, -0.1), Vec3.ZERO.plus(new Vec3(0, 0, -0.1)), Vec3.UNIT_Z, true, 0, 600),
                 new Move.Circular(new Vec3(10, 0, -0.1), new Vec3(0, 0, -0.1), Vec3.UNIT_Z.negated(), true, 0, 600));
-        return new Toolpath(List.of(new ToolpathSection("WS, \"one\"", Vec3.UNIT_Z, 6, 1, 1000, new Vec3(0, 0, 50), moves)));
+        return new Toolpath(
+                List.of(new ToolpathSection("WS, \"one\"", Vec3.UNIT_Z, 6, 1, 1000, new Vec3(0, 0, 50), moves)));
     }
 
     @Test
@@ -56,14 +58,27 @@ class ToolpathCsvTest {
     @Test
     void aDwellIsADwellRowWithItsSecondsAndSpindleEventsHaveNoRow() throws Exception {
         Vec3 bottom = new Vec3(5, 5, -12);
-        List<Move> moves = List.of(new Move.Rapid(new Vec3(5, 5, 2)), new Move.Linear(bottom, 100),
-                new Move.Dwell(bottom, 1.5), new Move.SpindleStop(bottom), new Move.Linear(new Vec3(5, 5, 2), 100),
-                new Move.SpindleStart(new Vec3(5, 5, 2), 900, true), new Move.Rapid(new Vec3(5, 5, 20)));
-        Toolpath p = new Toolpath(List.of(new ToolpathSection("bore", Vec3.UNIT_Z, 10, 2, 900, new Vec3(5, 5, 20), moves)));
+        List<Move> moves = List.of(
+                new Move.Rapid(new Vec3(5, 5, 2)),
+                new Move.Linear(bottom, 100),
+                new Move.Dwell(bottom, 1.5),
+                new Move.SpindleStop(bottom),
+                new Move.Linear(new Vec3(5, 5, 2), 100),
+                new Move.SpindleStart(new Vec3(5, 5, 2), 900, true),
+                new Move.Rapid(new Vec3(5, 5, 20)));
+        Toolpath p =
+                new Toolpath(List.of(new ToolpathSection("bore", Vec3.UNIT_Z, 10, 2, 900, new Vec3(5, 5, 20), moves)));
         List<String> lines = ToolpathCsv.toText(p, 0.01).lines().toList();
-        assertEquals(List.of("index,workingstep,move,x,y,z,i,j,k,feed", "0,bore,rapid,5,5,20,0,0,1,0",
-                "1,bore,rapid,5,5,2,0,0,1,0", "2,bore,feed,5,5,-12,0,0,1,100", "3,bore,dwell,5,5,-12,0,0,1,1.5",
-                "4,bore,feed,5,5,2,0,0,1,100", "5,bore,rapid,5,5,20,0,0,1,0"), lines);
+        assertEquals(
+                List.of(
+                        "index,workingstep,move,x,y,z,i,j,k,feed",
+                        "0,bore,rapid,5,5,20,0,0,1,0",
+                        "1,bore,rapid,5,5,2,0,0,1,0",
+                        "2,bore,feed,5,5,-12,0,0,1,100",
+                        "3,bore,dwell,5,5,-12,0,0,1,1.5",
+                        "4,bore,feed,5,5,2,0,0,1,100",
+                        "5,bore,rapid,5,5,20,0,0,1,0"),
+                lines);
         List<ToolpathCsv.Row> rows = ToolpathCsv.read(new StringReader(String.join("\n", lines)), "t");
         assertEquals("dwell", rows.get(3).move());
         assertEquals(1.5, rows.get(3).feedMmPerMin());

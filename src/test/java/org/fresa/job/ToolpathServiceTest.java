@@ -48,7 +48,8 @@ class ToolpathServiceTest {
     @InterpreterCheck
     void theProgramIsAcceptedByLinuxCncAndItsMotionsAreTheCsvsMoves(String input, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        TaskOutcome o = ToolpathService.run(Path.of(input), org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                Path.of(input), org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
@@ -67,19 +68,24 @@ class ToolpathServiceTest {
     @InterpreterCheck
     void aProgramWithDwellsIsAcceptedByLinuxCncAndItsDwellsAreTheCsvsDwells(@TempDir Path dir) throws Exception {
         String text = Files.readString(EXAMPLE1)
-                .replace("#20= DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,$,$,#46);",
+                .replace(
+                        "#20= DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,$,$,#46);",
                         "#20= MULTISTEP_DRILLING($,$,'DRILL HOLE1',10.000,$,#44,#45,#41,$,$,$,1.5,$,#46,2.0,12.0,6.0,0.5);")
-                .replace("#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,$,$,#49,.T.,$,$);",
+                .replace(
+                        "#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,$,$,#49,.T.,$,$);",
                         "#21= REAMING($,$,'REAM HOLE1',10.000,$,#47,#48,#41,$,$,$,0.75,$,#49,.T.,$,$);");
         Path input = dir.resolve("dwells.stp");
         Files.writeString(input, text);
         Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         Toolpath path = plan(input);
         List<Double> dwells = new ArrayList<>();
         for (ToolpathSection s : path.sections()) {
-            s.moves().stream().filter(m -> m instanceof Move.Dwell).forEach(m -> dwells.add(((Move.Dwell) m).seconds()));
+            s.moves().stream()
+                    .filter(m -> m instanceof Move.Dwell)
+                    .forEach(m -> dwells.add(((Move.Dwell) m).seconds()));
         }
         // steps to 12, 18, 24, 30, 36 mm deep, then the through bottom at 30 + the point (36.0086); then the ream
         assertEquals(List.of(0.5, 0.5, 0.5, 0.5, 0.5, 1.5, 0.75), dwells);
@@ -88,19 +94,24 @@ class ToolpathServiceTest {
         for (ToolpathSection s : path.sections()) {
             total = total.plus(CycleTime.of(s, ToolpathService.RAPID_MM_PER_MIN));
         }
-        assertEquals(total.feedSeconds() + total.rapidSeconds() + 4.75, (double) o.summary().get("cycle_time_s"), 1e-9);
+        assertEquals(
+                total.feedSeconds() + total.rapidSeconds() + 4.75,
+                (double) o.summary().get("cycle_time_s"),
+                1e-9);
         assumeTrue(Rs274.available(), Rs274.whyNot());
         Rs274.Result r = Rs274.run(out.resolve("program.ngc"), 18);
         assertEquals(0, r.exitStatus(), r.stderr());
         List<Rs274.Canon> expected = ExpectedMotions.of(path, false, NcPosts.CHORD_TOLERANCE_MM);
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
-        assertEquals(7, r.motions().stream().filter(c -> c.kind().equals("dwell")).count());
+        assertEquals(
+                7, r.motions().stream().filter(c -> c.kind().equals("dwell")).count());
         assertCsvHoldsTheMotions(out, r);
     }
 
     /** toolpath.csv holds the interpreter's motions: straight rows and dwells one to one, each arc as points on it. */
     static void assertCsvHoldsTheMotions(Path dir, Rs274.Result r) throws Exception {
-        List<ToolpathCsv.Row> rows = ToolpathCsv.read(new StringReader(Files.readString(dir.resolve("toolpath.csv"))), "csv");
+        List<ToolpathCsv.Row> rows =
+                ToolpathCsv.read(new StringReader(Files.readString(dir.resolve("toolpath.csv"))), "csv");
         int i = 0;
         for (Rs274.Canon c : r.motions()) {
             if (!c.kind().equals("arc")) {
@@ -129,7 +140,10 @@ class ToolpathServiceTest {
     }
 
     static ToolpathSection section(Toolpath p, String label) {
-        return p.sections().stream().filter(s -> s.label().equals(label)).findFirst().orElseThrow();
+        return p.sections().stream()
+                .filter(s -> s.label().equals(label))
+                .findFirst()
+                .orElseThrow();
     }
 
     /**
@@ -149,26 +163,35 @@ class ToolpathServiceTest {
     void exampleOnesFaceIsClearedAtZeroWithPassesLikeNists() throws Exception {
         Toolpath p = plan(EXAMPLE1);
         ToolpathSection face = section(p, "WS FINISH PLANAR FACE1");
-        Geometry box = Swept.polygon(new Profile.RoundedRectangle(new Vec2(50, 60), 100, 120, 0).contour(Tolerance.DEFAULT));
+        Geometry box =
+                Swept.polygon(new Profile.RoundedRectangle(new Vec2(50, 60), 100, 120, 0).contour(Tolerance.DEFAULT));
         Geometry cut = Swept.sweep(face, 9, 1e-9);
-        assertTrue(box.difference(cut).getArea() < 1e-6, "uncut " + box.difference(cut).getArea());
+        assertTrue(
+                box.difference(cut).getArea() < 1e-6,
+                "uncut " + box.difference(cut).getArea());
         List<Double> xs = new ArrayList<>();
         Vec3 at = face.start();
         for (Move m : face.moves()) {
-            if (m instanceof Move.Linear && at.z() == 0 && m.end().z() == 0 && at.x() == m.end().x()) {
+            if (m instanceof Move.Linear
+                    && at.z() == 0
+                    && m.end().z() == 0
+                    && at.x() == m.end().x()) {
                 xs.add(m.end().x());
                 assertEquals(-13.5, Math.min(at.y(), m.end().y()), 1e-9);
                 assertEquals(133.5, Math.max(at.y(), m.end().y()), 1e-9);
             }
             at = m.end();
         }
-        assertEquals(List.of(91.0, 74.6, 58.2, 41.8, 25.4, 9.0), xs.stream().map(x -> Math.round(x * 1e6) / 1e6).toList());
+        assertEquals(
+                List.of(91.0, 74.6, 58.2, 41.8, 25.4, 9.0),
+                xs.stream().map(x -> Math.round(x * 1e6) / 1e6).toList());
     }
 
     @Test
     void exampleOnesPocketFloorIsClearedAndItsWallsAreNeverCutBeyond() throws Exception {
         Toolpath p = plan(EXAMPLE1);
-        Geometry pocket = Swept.polygon(new Profile.RoundedRectangle(new Vec2(70, 70), 50, 80, 10).contour(Tolerance.DEFAULT));
+        Geometry pocket =
+                Swept.polygon(new Profile.RoundedRectangle(new Vec2(70, 70), 50, 80, 10).contour(Tolerance.DEFAULT));
         for (String ws : List.of("WS ROUGH POCKET1", "WS FINISH POCKET1")) {
             ToolpathSection s = section(p, ws);
             Geometry below = Swept.sweep(s, 9, -1e-9);
@@ -179,7 +202,9 @@ class ToolpathServiceTest {
         // corner radius 10 > tool radius 9: nothing is unavoidable, all the floor must go; the 0.005 mm
         // margin absorbs JTS's polygonal discs (64 segments a quadrant fall 0.0007 mm short of R 9)
         Geometry inner = pocket.buffer(-0.005, Swept.QUADRANT_SEGMENTS);
-        assertTrue(inner.difference(floor).getArea() < 1e-6, "uncut floor " + inner.difference(floor).getArea());
+        assertTrue(
+                inner.difference(floor).getArea() < 1e-6,
+                "uncut floor " + inner.difference(floor).getArea());
     }
 
     /**
@@ -225,7 +250,8 @@ class ToolpathServiceTest {
             }
         }
         assertEquals(3, feeds.size());
-        assertAll(() -> assertEquals(-(2 + tip), feeds.get(0)[0], 1e-9),
+        assertAll(
+                () -> assertEquals(-(2 + tip), feeds.get(0)[0], 1e-9),
                 () -> assertEquals(900, feeds.get(0)[1], 1e-9),
                 () -> assertEquals(-(30 + tip + breakthrough) + 8, feeds.get(1)[0], 1e-9),
                 () -> assertEquals(1800, feeds.get(1)[1], 1e-9),
@@ -238,10 +264,16 @@ class ToolpathServiceTest {
         // the reamer (no point, no strategy) stops the breakthrough below the exit at -30 and leaves
         // at its feed, as NIST's does
         ToolpathSection ream = section(p, "WS REAM HOLE1");
-        assertEquals(-31, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
-        assertEquals(List.of(-31.0, 10.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
-                .map(m -> m.end().z()).toList());
-        List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT).problems();
+        assertEquals(
+                -31, ream.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow(), 1e-9);
+        assertEquals(
+                List.of(-31.0, 10.0),
+                ream.moves().stream()
+                        .filter(m -> m instanceof Move.Linear)
+                        .map(m -> m.end().z())
+                        .toList());
+        List<String> problems = ToolpathPlanner.plan(StepNcReader.read(EXAMPLE1), Tolerance.DEFAULT)
+                .problems();
         assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS DRILL HOLE1'")), problems.toString());
         // reduced_cut_at_start/end 0.75, 0.5 of 960 rpm: NIST's 720, 960 (after the start zone), 480 (end zone)
         List<double[]> speeds = new ArrayList<>();
@@ -252,16 +284,23 @@ class ToolpathServiceTest {
         }
         assertEquals(960, drill.spindleRpm(), 1e-9);
         assertEquals(3, speeds.size());
-        assertAll(() -> assertEquals(10, speeds.get(0)[0], 1e-9), () -> assertEquals(720, speeds.get(0)[1], 1e-9),
-                () -> assertEquals(-(2 + tip), speeds.get(1)[0], 1e-9), () -> assertEquals(960, speeds.get(1)[1], 1e-9),
+        assertAll(
+                () -> assertEquals(10, speeds.get(0)[0], 1e-9),
+                () -> assertEquals(720, speeds.get(0)[1], 1e-9),
+                () -> assertEquals(-(2 + tip), speeds.get(1)[0], 1e-9),
+                () -> assertEquals(960, speeds.get(1)[1], 1e-9),
                 () -> assertEquals(-(30 + tip + breakthrough) + 8, speeds.get(2)[0], 1e-9),
                 () -> assertEquals(480, speeds.get(2)[1], 1e-9));
         // the reamer's spindle_stop_at_bottom: M5 at -31, out at feed, M3 again at the retract height
         assertTrue(problems.stream().noneMatch(q -> q.startsWith("workingstep 'WS REAM HOLE1'")), problems.toString());
         List<Move> rm = ream.moves();
-        int stop = rm.indexOf(rm.stream().filter(m -> m instanceof Move.SpindleStop).findFirst().orElseThrow());
+        int stop = rm.indexOf(rm.stream()
+                .filter(m -> m instanceof Move.SpindleStop)
+                .findFirst()
+                .orElseThrow());
         assertEquals(-31, rm.get(stop).end().z(), 1e-9);
-        assertTrue(rm.get(stop + 1) instanceof Move.Linear && rm.get(stop + 2) instanceof Move.SpindleStart,
+        assertTrue(
+                rm.get(stop + 1) instanceof Move.Linear && rm.get(stop + 2) instanceof Move.SpindleStart,
                 rm.toString());
         assertEquals(10, rm.get(stop + 2).end().z(), 1e-9);
         assertEquals(ream.spindleRpm(), ((Move.SpindleStart) rm.get(stop + 2)).rpm());
@@ -270,14 +309,16 @@ class ToolpathServiceTest {
     /** Example 2's unitless feeds are chip loads, converted with the spindle speed and said so. */
     @Test
     void summaryJsonSaysHowEachUnitlessFeedWasRead(@TempDir Path dir) throws Exception {
-        TaskOutcome o = ToolpathService.run(EXAMPLE2, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                EXAMPLE2, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(0, o.exitStatus(), o.problems().toString());
         String json = Files.readString(dir.resolve("summary.json"));
         assertTrue(json.contains("\"rapid_mm_per_min\": 10000"), json);
         assertTrue(json.contains("\"feed_read_as\": \"mm/tooth\""), json);
         assertTrue(json.contains("\"feed_read_as\": \"mm/rev\""), json);
         assertTrue(json.contains("read as mm/tooth: 0.0505 x 4 teeth x 2884.6833 rpm = 582.706 mm/min"), json);
-        assertTrue(o.problems().stream().anyMatch(p -> p.contains("0.0505 (no unit in the file) read as mm/tooth")),
+        assertTrue(
+                o.problems().stream().anyMatch(p -> p.contains("0.0505 (no unit in the file) read as mm/tooth")),
                 o.problems().toString());
         assertFalse(json.contains("1000 mm/min used"), json);
     }
@@ -288,9 +329,11 @@ class ToolpathServiceTest {
         // the workingstep is in the main workplan's sequence but has no operation: that is the reason given,
         // never "not referenced by any workplan"
         Path aim = Path.of("src/test/resources/stepnc/aim-header-only.stp");
-        TaskOutcome o = ToolpathService.run(aim, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                aim, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
-        assertTrue(o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
+        assertTrue(
+                o.problems().get(0).contains("#20 'WS FINISH PLANAR FACE' the workingstep has no operation"),
                 o.problems().toString());
         assertFalse(o.problems().get(0).contains("not referenced"), o.problems().toString());
         assertEquals(List.of(dir.resolve("summary.json")), o.files());

@@ -60,14 +60,14 @@ class AppendixCTest {
             C.0.4 ex2 Adept One,    adept-one,  THESIS_DLS
             C.0.6 ex2 Tricept 806,  tricept806, THESIS_DLS
             """)
-    void everyAppendixCTargetIsReachedWithinTheLimitsToANanometre(String table, String robotName,
-            IkOptions.Method method) throws IOException {
+    void everyAppendixCTargetIsReachedWithinTheLimitsToANanometre(
+            String table, String robotName, IkOptions.Method method) throws IOException {
         Robot robot = Robots.byName(robotName).orElseThrow();
         List<ToolTarget> targets = targets(table, robot.controlsFullOrientation());
         assertEquals(39, targets.size());
         IkOptions ik = method == IkOptions.Method.THESIS_DLS ? IkOptions.THESIS : IkOptions.DEFAULT;
-        TrajectorySolver.Result r = new TrajectorySolver(robot, TrajectorySolver.Options.DEFAULT.withIk(ik))
-                .solve(targets, null);
+        TrajectorySolver.Result r =
+                new TrajectorySolver(robot, TrajectorySolver.Options.DEFAULT.withIk(ik)).solve(targets, null);
         assertEquals(0, r.unreachable(), () -> table + " " + r.notes());
         TrajectoryPoint previousOk = null;
         for (TrajectoryPoint p : r.points()) {
@@ -82,16 +82,21 @@ class AppendixCTest {
                 default -> SpecKinematics.tricept(q);
             };
             Transform3 t = p.target();
-            double pos = Math.sqrt(Math.pow(m[0][3] - t.tx(), 2) + Math.pow(m[1][3] - t.ty(), 2)
-                    + Math.pow(m[2][3] - t.tz(), 2));
-            Transform3 reached = new Transform3(m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1],
-                    m[2][2], m[0][3], m[1][3], m[2][3]);
+            double pos = Math.sqrt(
+                    Math.pow(m[0][3] - t.tx(), 2) + Math.pow(m[1][3] - t.ty(), 2) + Math.pow(m[2][3] - t.tz(), 2));
+            Transform3 reached = new Transform3(
+                    m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2], m[0][3], m[1][3],
+                    m[2][3]);
             assertTrue(pos <= 1e-6, () -> p.label() + " position error " + pos);
-            assertTrue(t.rotationAngleTo(reached) <= 1e-8, () -> p.label() + " rotation error " + t.rotationAngleTo(reached));
+            assertTrue(
+                    t.rotationAngleTo(reached) <= 1e-8,
+                    () -> p.label() + " rotation error " + t.rotationAngleTo(reached));
             assertTrue(p.posErrMm() <= 1e-6 && p.rotErrRad() <= 1e-8);
             // continuity is the default solver's promise; the thesis's method falls back to its five
             // guesses when the warm start fails and may land in another configuration
-            if (ik == IkOptions.DEFAULT && p.status() == TrajectoryPoint.Status.OK && previousOk != null
+            if (ik == IkOptions.DEFAULT
+                    && p.status() == TrajectoryPoint.Status.OK
+                    && previousOk != null
                     && robot instanceof SerialRobot) {
                 for (int i = 0; i < q.length; i++) {
                     if (robot.joints().get(i).type() == JointType.REVOLUTE) {

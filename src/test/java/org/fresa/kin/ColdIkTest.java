@@ -21,7 +21,8 @@ class ColdIkTest {
         for (int k = 0; k < count; k++) {
             double[] q = new double[6];
             for (int i = 0; i < 6; i++) {
-                q[i] = js.get(i).min() + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
+                q[i] = js.get(i).min()
+                        + rnd.nextDouble() * (js.get(i).max() - js.get(i).min());
             }
             out.add(r.forward(q));
         }
@@ -67,7 +68,10 @@ class ColdIkTest {
                 }
             }
             for (int k = 1; k < fast.size(); k++) {
-                assertTrue(margin(irb, fast.get(k - 1).q()) >= margin(irb, fast.get(k).q()), "best margin first");
+                assertTrue(
+                        margin(irb, fast.get(k - 1).q())
+                                >= margin(irb, fast.get(k).q()),
+                        "best margin first");
             }
             solutions += fast.size();
         }
@@ -107,7 +111,8 @@ class ColdIkTest {
         for (Transform3 t : randomPoses(irb, 100, 7L)) {
             assertEquals(solver.solveAll(t).size(), solver.solveAllQuickly(t).size());
         }
-        assertEquals(0, solver.solveAllQuickly(Transform3.translation(2000, 0, 0)).size());
+        assertEquals(
+                0, solver.solveAllQuickly(Transform3.translation(2000, 0, 0)).size());
     }
 
     static double margin(SerialRobot r, double[] q) {

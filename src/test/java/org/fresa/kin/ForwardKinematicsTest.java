@@ -54,8 +54,11 @@ class ForwardKinematicsTest {
     @Test
     void irb140AtZeroHasTheFlangeAt515_0_712PointingAlongX() {
         Transform3 t = Robots.irb140().forward(0, 0, 0, 0, 0, 0);
-        assertAll(() -> assertEquals(515, t.tx(), 1e-12), () -> assertEquals(0, t.ty(), 1e-12),
-                () -> assertEquals(712, t.tz(), 1e-12), () -> assertEquals(1, t.r02(), 1e-15));
+        assertAll(
+                () -> assertEquals(515, t.tx(), 1e-12),
+                () -> assertEquals(0, t.ty(), 1e-12),
+                () -> assertEquals(712, t.tz(), 1e-12),
+                () -> assertEquals(1, t.r02(), 1e-15));
     }
 
     @Test
@@ -67,18 +70,21 @@ class ForwardKinematicsTest {
             double[] qt = new double[6];
             List<JointLimit> li = Robots.irb140().joints();
             for (int i = 0; i < 6; i++) {
-                qi[i] = li.get(i).min() + rnd.nextDouble() * (li.get(i).max() - li.get(i).min());
+                qi[i] = li.get(i).min()
+                        + rnd.nextDouble() * (li.get(i).max() - li.get(i).min());
             }
             List<JointLimit> la = Robots.adeptOne().joints();
             for (int i = 0; i < 4; i++) {
-                qa[i] = la.get(i).min() + rnd.nextDouble() * (la.get(i).max() - la.get(i).min());
+                qa[i] = la.get(i).min()
+                        + rnd.nextDouble() * (la.get(i).max() - la.get(i).min());
             }
             qt[0] = 1400 + rnd.nextDouble() * 200;
             qt[1] = 1400 + rnd.nextDouble() * 200;
             qt[2] = 1400 + rnd.nextDouble() * 200;
             List<JointLimit> lt = Robots.tricept806().joints();
             for (int i = 3; i < 6; i++) {
-                qt[i] = lt.get(i).min() + rnd.nextDouble() * (lt.get(i).max() - lt.get(i).min());
+                qt[i] = lt.get(i).min()
+                        + rnd.nextDouble() * (lt.get(i).max() - lt.get(i).min());
             }
             assertSame(SpecKinematics.irb140(qi), Robots.irb140().forward(qi), 1e-9);
             assertSame(SpecKinematics.adeptOne(qa), Robots.adeptOne().forward(qa), 1e-9);
@@ -92,11 +98,15 @@ class ForwardKinematicsTest {
 
     static void assertSame(double[][] m, Transform3 t, double tolMm, double tolR) {
         assertAll(
-                () -> assertEquals(m[0][3], t.tx(), tolMm), () -> assertEquals(m[1][3], t.ty(), tolMm),
+                () -> assertEquals(m[0][3], t.tx(), tolMm),
+                () -> assertEquals(m[1][3], t.ty(), tolMm),
                 () -> assertEquals(m[2][3], t.tz(), tolMm),
-                () -> assertEquals(m[0][0], t.r00(), tolR), () -> assertEquals(m[1][1], t.r11(), tolR),
-                () -> assertEquals(m[0][2], t.r02(), tolR), () -> assertEquals(m[1][2], t.r12(), tolR),
-                () -> assertEquals(m[2][2], t.r22(), tolR), () -> assertEquals(m[2][0], t.r20(), tolR));
+                () -> assertEquals(m[0][0], t.r00(), tolR),
+                () -> assertEquals(m[1][1], t.r11(), tolR),
+                () -> assertEquals(m[0][2], t.r02(), tolR),
+                () -> assertEquals(m[1][2], t.r12(), tolR),
+                () -> assertEquals(m[2][2], t.r22(), tolR),
+                () -> assertEquals(m[2][0], t.r20(), tolR));
     }
 
     @Test

@@ -5,8 +5,7 @@ package org.fresa.kin;
  * {@code java -cp target/classes:target/test-classes:$(cat cp.txt) org.fresa.kin.IkBenchmarkMain}.
  */
 public final class IkBenchmarkMain {
-    private IkBenchmarkMain() {
-    }
+    private IkBenchmarkMain() {}
 
     public static void main(String[] args) {
         int rounds = args.length > 0 ? Integer.parseInt(args[0]) : 15;

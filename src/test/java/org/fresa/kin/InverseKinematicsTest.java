@@ -33,7 +33,8 @@ class InverseKinematicsTest {
             double[] q = {r[0], r[1], r[2], r[3], r[4], r[5]};
             Transform3 target = robot.forward(q);
             IkResult res = solver.solve(target, tenDegreesAway(q, robot.joints()));
-            IkResult.Converged c = assertInstanceOf(IkResult.Converged.class, res, () -> "pose " + java.util.Arrays.toString(q));
+            IkResult.Converged c =
+                    assertInstanceOf(IkResult.Converged.class, res, () -> "pose " + java.util.Arrays.toString(q));
             assertTrue(c.posErrMm() <= 1e-7 && c.rotErrRad() <= 1e-9, c::toString);
             // at q5 = 0 the wrist is singular and only q4 + q6 is defined
             boolean singular = Math.abs(q[4]) < 1e-9;
@@ -87,8 +88,14 @@ class InverseKinematicsTest {
         IkSolver thesis = robot.newSolver(IkOptions.THESIS);
         SplittableRandom rnd = new SplittableRandom(11);
         for (int k = 0; k < 100; k++) {
-            double[] q = {1300 + rnd.nextDouble() * 300, 1300 + rnd.nextDouble() * 300, 1300 + rnd.nextDouble() * 300,
-                -150 + rnd.nextDouble() * 300, -100 + rnd.nextDouble() * 200, -300 + rnd.nextDouble() * 600};
+            double[] q = {
+                1300 + rnd.nextDouble() * 300,
+                1300 + rnd.nextDouble() * 300,
+                1300 + rnd.nextDouble() * 300,
+                -150 + rnd.nextDouble() * 300,
+                -100 + rnd.nextDouble() * 200,
+                -300 + rnd.nextDouble() * 600
+            };
             Transform3 target = robot.forward(q);
             double[] seed = q.clone();
             for (int i = 3; i < 6; i++) {
@@ -112,8 +119,8 @@ class InverseKinematicsTest {
         Transform3 down = new Transform3(1, 0, 0, 0, -1, 0, 0, 0, -1, 400, 310, 800);
         IkResult.Converged c = assertInstanceOf(IkResult.Converged.class, solver.solveCold(down));
         ForwardKinematicsTest.assertSame(SpecKinematics.adeptOne(c.q()), down, 1e-6);
-        Transform3 sideways = Transform3.ofFrame(new org.fresa.geom.Vec3(400, 310, 800), org.fresa.geom.Vec3.UNIT_Y,
-                org.fresa.geom.Vec3.UNIT_X);
+        Transform3 sideways = Transform3.ofFrame(
+                new org.fresa.geom.Vec3(400, 310, 800), org.fresa.geom.Vec3.UNIT_Y, org.fresa.geom.Vec3.UNIT_X);
         assertInstanceOf(IkResult.Unreachable.class, solver.solveCold(sideways));
     }
 

@@ -17,8 +17,8 @@ class JointLimitTest {
             900,  Infinity
             """)
     void limitsThatAreNotFiniteOrNotIncreasingAreRefusedLikeADhJoints(double min, double max) {
-        IllegalArgumentException leg = assertThrows(IllegalArgumentException.class,
-                () -> new JointLimit("q1", JointType.PRISMATIC, min, max));
+        IllegalArgumentException leg =
+                assertThrows(IllegalArgumentException.class, () -> new JointLimit("q1", JointType.PRISMATIC, min, max));
         assertThrows(IllegalArgumentException.class, () -> DhJoint.prismatic(0, 0, 0, 0, min, max));
         assertTrue(leg.getMessage().contains("joint q1: limits must have max > min"), leg.getMessage());
     }

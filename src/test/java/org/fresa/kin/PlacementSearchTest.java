@@ -45,7 +45,10 @@ class PlacementSearchTest {
         Transform3 t = p.toTransform();
         int n = 0;
         for (ToolTarget x : ts) {
-            ToolTarget placed = new ToolTarget(x.label(), t.applyToPoint(x.positionMm()), t.applyToDirection(x.toolAxis()),
+            ToolTarget placed = new ToolTarget(
+                    x.label(),
+                    t.applyToPoint(x.positionMm()),
+                    t.applyToDirection(x.toolAxis()),
                     t.applyToDirection(x.preferredX()));
             boolean any = false;
             for (double turn : new double[] {0, 180, 90, -90}) {
@@ -66,7 +69,7 @@ class PlacementSearchTest {
         part.addAll(side("side", 2020, 0, -10));
         // at the origin the part is 2 m away: nothing is reached
         assertEquals(0, reached(irb, part, new PlacementSearch.TablePlacement(0, 0, 0, 0)));
-        PlacementSearch.Result r = search(irb).search(part, (f, w) -> { });
+        PlacementSearch.Result r = search(irb).search(part, (f, w) -> {});
         assertTrue(r.found().isPresent(), r::toString);
         assertEquals(part.size(), r.reached());
         assertEquals(part.size(), reached(irb, part, r.found().get()));
@@ -81,7 +84,7 @@ class PlacementSearchTest {
         Robot tri = Robots.tricept806();
         List<ToolTarget> part = top("top", 0, 0, 0, 300, 200);
         assertEquals(0, reached(tri, part, new PlacementSearch.TablePlacement(0, 0, 0, 0)));
-        PlacementSearch.Result r = search(tri).search(part, (f, w) -> { });
+        PlacementSearch.Result r = search(tri).search(part, (f, w) -> {});
         assertTrue(r.found().isPresent(), r::toString);
         assertEquals(part.size(), reached(tri, part, r.found().get()));
         assertTrue(r.found().get().zMm() < -1000, r::toString);
@@ -92,7 +95,7 @@ class PlacementSearchTest {
         Robot adept = Robots.adeptOne();
         List<ToolTarget> part = new ArrayList<>(top("top", 0, 0, 0, 200, 100));
         part.addAll(side("side", 20, 0, -10));
-        PlacementSearch.Result r = search(adept).search(part, (f, w) -> { });
+        PlacementSearch.Result r = search(adept).search(part, (f, w) -> {});
         assertTrue(r.found().isEmpty(), "never a partial placement");
         assertEquals(List.of("side"), r.outOfReachEverywhere());
         assertEquals(List.of(), r.notTogether());
@@ -107,7 +110,7 @@ class PlacementSearchTest {
         Robot irb = Robots.irb140();
         List<ToolTarget> part = new ArrayList<>(top("near", 0, 0, 0, 100, 100));
         part.addAll(top("far", 3000, 0, 0, 100, 100));
-        PlacementSearch.Result r = search(irb).search(part, (f, w) -> { });
+        PlacementSearch.Result r = search(irb).search(part, (f, w) -> {});
         assertTrue(r.found().isEmpty());
         assertEquals(List.of(), r.outOfReachEverywhere());
         assertEquals(1, r.notTogether().size(), r::toString);
@@ -118,7 +121,8 @@ class PlacementSearchTest {
     void cancellingStopsTheSearch() {
         Robot irb = Robots.irb140();
         List<ToolTarget> part = top("top", 0, 0, 0, 200, 100);
-        org.junit.jupiter.api.Assertions.assertThrows(java.util.concurrent.CancellationException.class,
+        org.junit.jupiter.api.Assertions.assertThrows(
+                java.util.concurrent.CancellationException.class,
                 () -> search(irb).search(part, (f, w) -> {
                     if (f > 0.1) {
                         throw new java.util.concurrent.CancellationException("cancelled");

@@ -33,13 +33,15 @@ class ReachabilityTest {
     @Test
     void everyTargetMadeByTheForwardKinematicsIsReachedWithinTheTolerances() {
         List<ToolTarget> targets = reachableTargets(IRB140, 300);
-        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(false, 180)).check(targets, l -> IRB140,
-                () -> false).orElseThrow();
+        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(false, 180))
+                .check(targets, l -> IRB140, () -> false)
+                .orElseThrow();
         assertEquals(0, r.unreachable());
         assertEquals(targets.size(), r.points().size());
         for (TrajectoryPoint p : r.points()) {
             assertTrue(p.posErrMm() <= 1e-7 && p.rotErrRad() <= 1e-9, p.toString());
-            assertTrue(IRB140.forward(p.q()).translationPart().distance(p.target().translationPart()) <= 1e-7);
+            assertTrue(
+                    IRB140.forward(p.q()).translationPart().distance(p.target().translationPart()) <= 1e-7);
         }
     }
 
@@ -48,8 +50,9 @@ class ReachabilityTest {
         List<ToolTarget> targets = new ArrayList<>(reachableTargets(IRB140, 20));
         targets.add(10, ToolTarget.of("far", new Vec3(3000, 0, 500), new Vec3(0, 0, -1)));
         targets.add(ToolTarget.of("far", new Vec3(0, 4000, 0), new Vec3(0, 0, -1)));
-        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(true, 180)).check(targets, l -> IRB140,
-                () -> false).orElseThrow();
+        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(true, 180))
+                .check(targets, l -> IRB140, () -> false)
+                .orElseThrow();
         assertEquals(2, r.unreachable());
         assertEquals(TrajectoryPoint.Status.UNREACHABLE, r.points().get(10).status());
         assertEquals(TrajectoryPoint.Status.OK, r.points().get(11).status());
@@ -59,14 +62,16 @@ class ReachabilityTest {
     void theTriceptWithoutAClosedFormIsCheckedByItsSolver() {
         Robot t = Robots.tricept806();
         List<ToolTarget> targets = reachableTargets(t, 30);
-        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(false, 180)).check(targets, l -> t, () -> false)
+        TrajectorySolver.Result r = new Reachability(IkOptions.DEFAULT, new ToolTurns(false, 180))
+                .check(targets, l -> t, () -> false)
                 .orElseThrow();
         assertEquals(0, r.unreachable());
     }
 
     @Test
     void aStaleCheckGivesNoAnswer() {
-        assertTrue(new Reachability(IkOptions.DEFAULT, new ToolTurns(true, 180)).check(reachableTargets(IRB140, 10), l -> IRB140,
-                () -> true).isEmpty());
+        assertTrue(new Reachability(IkOptions.DEFAULT, new ToolTurns(true, 180))
+                .check(reachableTargets(IRB140, 10), l -> IRB140, () -> true)
+                .isEmpty());
     }
 }

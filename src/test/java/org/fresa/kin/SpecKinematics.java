@@ -5,8 +5,7 @@ package org.fresa.kin;
  * sharing no code with the main package: the oracle of the acceptance tests.
  */
 final class SpecKinematics {
-    private SpecKinematics() {
-    }
+    private SpecKinematics() {}
 
     static double[][] dh(double thetaDeg, double d, double a, double alphaDeg) {
         double t = Math.toRadians(thetaDeg);
@@ -19,7 +18,8 @@ final class SpecKinematics {
             {ct, -st * ca, st * sa, a * ct},
             {st, ct * ca, -ct * sa, a * st},
             {0, sa, ca, d},
-            {0, 0, 0, 1}};
+            {0, 0, 0, 1}
+        };
     }
 
     static double[][] mul(double[][] x, double[][] y) {
@@ -121,7 +121,8 @@ final class SpecKinematics {
     }
 
     private static double det3(double[][] m) {
-        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+                - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
                 + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     }
 }

@@ -16,8 +16,14 @@ class SphericalWristSeedsTest {
         SphericalWristSeeds seeds = SphericalWristSeeds.of(c).orElseThrow();
         SplittableRandom rnd = new SplittableRandom(3);
         for (int k = 0; k < 100; k++) {
-            double[] qDeg = {-170 + 340 * rnd.nextDouble(), -80 + 180 * rnd.nextDouble(), -220 + 260 * rnd.nextDouble(),
-                -190 + 380 * rnd.nextDouble(), -110 + 220 * rnd.nextDouble(), -390 + 780 * rnd.nextDouble()};
+            double[] qDeg = {
+                -170 + 340 * rnd.nextDouble(),
+                -80 + 180 * rnd.nextDouble(),
+                -220 + 260 * rnd.nextDouble(),
+                -190 + 380 * rnd.nextDouble(),
+                -110 + 220 * rnd.nextDouble(),
+                -390 + 780 * rnd.nextDouble()
+            };
             Transform3 t = c.forward(qDeg);
             double[] target = new double[Pose.SIZE];
             Pose.fromTransform(t, target, 0);

@@ -19,9 +19,14 @@ class ToolFrameTest {
         double[] q = {1300, 1350, 1250, 20, -40, 30};
         Transform3 expected = bare.forward(q).times(TOOL);
         Transform3 tcp = tooled.forward(q);
-        assertAll(() -> assertEquals(expected.tx(), tcp.tx(), 1e-9),
+        assertAll(
+                () -> assertEquals(expected.tx(), tcp.tx(), 1e-9),
                 () -> assertEquals(expected.tz(), tcp.tz(), 1e-9),
-                () -> assertEquals(0, tooled.flange(q).translationPart().distance(bare.forward(q).translationPart()),
+                () -> assertEquals(
+                        0,
+                        tooled.flange(q)
+                                .translationPart()
+                                .distance(bare.forward(q).translationPart()),
                         1e-9));
     }
 

@@ -30,10 +30,17 @@ class TrajectorySolverTest {
 
     @Test
     void aConfigurationChangeIsMadeAwayFromThePartThroughThreeRelinkPoints() {
-        TrajectorySolver.Result r = new TrajectorySolver(frontOnly(), TrajectorySolver.Options.DEFAULT
-                .withFreeRotation(false)).solve(acrossTheBack(), null);
+        TrajectorySolver.Result r = new TrajectorySolver(
+                        frontOnly(), TrajectorySolver.Options.DEFAULT.withFreeRotation(false))
+                .solve(acrossTheBack(), null);
         assertEquals(0, r.unreachable());
-        assertEquals(3, r.relinks(), () -> r.points().stream().map(x -> x.status() + java.util.Arrays.toString(x.q())).toList().toString());
+        assertEquals(
+                3,
+                r.relinks(),
+                () -> r.points().stream()
+                        .map(x -> x.status() + java.util.Arrays.toString(x.q()))
+                        .toList()
+                        .toString());
         List<TrajectoryPoint> p = r.points();
         int first = -1;
         for (int i = 0; i < p.size(); i++) {
@@ -73,8 +80,10 @@ class TrajectorySolverTest {
                 ToolTarget.of("a", new Vec3(500, 0, 300), new Vec3(0, 0, -1)),
                 ToolTarget.of("far", new Vec3(1500, 0, 300), new Vec3(0, 0, -1)),
                 ToolTarget.of("b", new Vec3(505, 0, 300), new Vec3(0, 0, -1))));
-        TrajectorySolver.Result r = new TrajectorySolver(Robots.irb140(), TrajectorySolver.Options.DEFAULT).solve(t, null);
-        assertEquals(List.of(TrajectoryPoint.Status.OK, TrajectoryPoint.Status.UNREACHABLE, TrajectoryPoint.Status.OK),
+        TrajectorySolver.Result r =
+                new TrajectorySolver(Robots.irb140(), TrajectorySolver.Options.DEFAULT).solve(t, null);
+        assertEquals(
+                List.of(TrajectoryPoint.Status.OK, TrajectoryPoint.Status.UNREACHABLE, TrajectoryPoint.Status.OK),
                 r.points().stream().map(TrajectoryPoint::status).toList());
         assertEquals(0, r.points().get(1).q().length);
         assertTrue(r.points().get(1).reached().isEmpty());

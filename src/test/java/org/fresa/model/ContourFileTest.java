@@ -42,23 +42,27 @@ class ContourFileTest {
 
     @Test
     void anOpenContourNamesItsLine() {
-        CamInputException e = assertThrows(CamInputException.class, () -> ContourFile.read(
-                new StringReader("contour\nmove 0 0\nline 10 0\nline 10 10\n"), "open.contour"));
+        CamInputException e = assertThrows(
+                CamInputException.class,
+                () -> ContourFile.read(new StringReader("contour\nmove 0 0\nline 10 0\nline 10 10\n"), "open.contour"));
         assertTrue(e.getMessage().startsWith("open.contour: line 1"), e.getMessage());
         assertTrue(e.getMessage().contains("does not close"), e.getMessage());
     }
 
     @Test
     void aBadNumberNamesLineAndText() {
-        CamInputException e = assertThrows(CamInputException.class, () -> ContourFile.read(
-                new StringReader("contour\nmove 0 0\nline 1O 0\n"), "typo.contour"));
+        CamInputException e = assertThrows(
+                CamInputException.class,
+                () -> ContourFile.read(new StringReader("contour\nmove 0 0\nline 1O 0\n"), "typo.contour"));
         assertEquals("typo.contour: line 3: expected a number, found '1O'", e.getMessage());
     }
 
     @Test
     void anArcWhoseRadiiDifferIsRefused() {
-        CamInputException e = assertThrows(CamInputException.class, () -> ContourFile.read(
-                new StringReader("contour\nmove 0 0\narc 5 0 10 1 ccw\nline 0 0\n"), "arc.contour"));
+        CamInputException e = assertThrows(
+                CamInputException.class,
+                () -> ContourFile.read(
+                        new StringReader("contour\nmove 0 0\narc 5 0 10 1 ccw\nline 0 0\n"), "arc.contour"));
         assertTrue(e.getMessage().contains("line 3"), e.getMessage());
     }
 }

@@ -73,10 +73,13 @@ class ExactDecimalTest {
                 case 2 -> (rnd.nextDouble() * 2 - 1) * 1000;
                 case 3 -> Math.copySign(Math.pow(10, rnd.nextDouble() * 40 - 20), rnd.nextDouble() - 0.5);
                 case 4 -> Math.toDegrees(Math.atan2(rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5));
-                case 5 -> Double.longBitsToDouble(Double.doubleToRawLongBits(Math.scalb(1.0, rnd.nextInt(-60, 60)))
-                        + rnd.nextInt(-2, 3));
-                case 6 -> Double.longBitsToDouble(Double.doubleToRawLongBits(
-                        rnd.nextInt(1, 1_000_000) * Math.pow(10, rnd.nextInt(-30, 30))) + rnd.nextInt(-3, 4));
+                case 5 ->
+                    Double.longBitsToDouble(
+                            Double.doubleToRawLongBits(Math.scalb(1.0, rnd.nextInt(-60, 60))) + rnd.nextInt(-2, 3));
+                case 6 ->
+                    Double.longBitsToDouble(
+                            Double.doubleToRawLongBits(rnd.nextInt(1, 1_000_000) * Math.pow(10, rnd.nextInt(-30, 30)))
+                                    + rnd.nextInt(-3, 4));
                 case 7 -> Math.round(rnd.nextDouble() * 1e9) / Math.pow(10, rnd.nextInt(16));
                 case 8 -> Double.longBitsToDouble(rnd.nextLong(1, 0x0020_0000_0000_0000L));
                 case 9 -> Math.copySign(Math.pow(10, rnd.nextDouble() * 600 - 300), rnd.nextDouble() - 0.5);
@@ -87,7 +90,9 @@ class ExactDecimalTest {
                 checked++;
                 String expected = bySearch(d);
                 assertEquals(expected, ExactDecimal.of(d), () -> "for " + d);
-                assertEquals("a," + expected, ExactDecimal.append(new StringBuilder("a,"), d).toString());
+                assertEquals(
+                        "a," + expected,
+                        ExactDecimal.append(new StringBuilder("a,"), d).toString());
             }
         }
         assertTrue(checked > 100_000, "checked " + checked);
@@ -95,20 +100,64 @@ class ExactDecimalTest {
 
     @Test
     void writesWhatTheSearchWritesAtTheEdges() {
-        double[] edges = {Double.MIN_VALUE, -Double.MIN_VALUE, 2 * Double.MIN_VALUE, Double.MIN_NORMAL,
-            Math.nextDown(Double.MIN_NORMAL), Math.nextUp(Double.MIN_NORMAL), 2 * Double.MIN_NORMAL,
-            Math.nextDown(2 * Double.MIN_NORMAL), Double.MAX_VALUE, -Double.MAX_VALUE, Math.nextDown(Double.MAX_VALUE),
-            1e-7, Math.nextDown(1e-7), Math.nextUp(1e-7), 1e15, Math.nextDown(1e15), Math.nextUp(1e15), 1e16,
-            Math.nextDown(1e16), Math.nextUp(1e16), 1e18, Math.nextUp(1e18), 1e23, 9007199254740993.0,
-            12345678901234566.0, 2.2934200000000004E25, 0.1, 0.2, 0.3, 1.0 / 3, 2.0 / 3, 5e-324, 4.9e-324, 1.7976931348623157E308,
-            Math.PI, Math.E, 123456.789, 0.1234567, 1.2345678901234567E-7, 9.5e-8, 1.0181791354279307E-17};
+        double[] edges = {
+            Double.MIN_VALUE,
+            -Double.MIN_VALUE,
+            2 * Double.MIN_VALUE,
+            Double.MIN_NORMAL,
+            Math.nextDown(Double.MIN_NORMAL),
+            Math.nextUp(Double.MIN_NORMAL),
+            2 * Double.MIN_NORMAL,
+            Math.nextDown(2 * Double.MIN_NORMAL),
+            Double.MAX_VALUE,
+            -Double.MAX_VALUE,
+            Math.nextDown(Double.MAX_VALUE),
+            1e-7,
+            Math.nextDown(1e-7),
+            Math.nextUp(1e-7),
+            1e15,
+            Math.nextDown(1e15),
+            Math.nextUp(1e15),
+            1e16,
+            Math.nextDown(1e16),
+            Math.nextUp(1e16),
+            1e18,
+            Math.nextUp(1e18),
+            1e23,
+            9007199254740993.0,
+            12345678901234566.0,
+            2.2934200000000004E25,
+            0.1,
+            0.2,
+            0.3,
+            1.0 / 3,
+            2.0 / 3,
+            5e-324,
+            4.9e-324,
+            1.7976931348623157E308,
+            Math.PI,
+            Math.E,
+            123456.789,
+            0.1234567,
+            1.2345678901234567E-7,
+            9.5e-8,
+            1.0181791354279307E-17
+        };
         for (double d : edges) {
             assertEquals(bySearch(d), ExactDecimal.of(d), () -> "for " + d);
             assertEquals(d, Double.parseDouble(ExactDecimal.of(d)));
         }
         for (int i = 1; i < 1000; i++) {
-            for (double d : new double[] {i / 1000.0, i * 0.001, i / 7.0, i * 1e-9, i * 1e20, Math.scalb(1.0, i - 500),
-                Math.scalb(1.0, i - 1075), Math.nextDown(Math.scalb(1.0, i + 24))}) {
+            for (double d : new double[] {
+                i / 1000.0,
+                i * 0.001,
+                i / 7.0,
+                i * 1e-9,
+                i * 1e20,
+                Math.scalb(1.0, i - 500),
+                Math.scalb(1.0, i - 1075),
+                Math.nextDown(Math.scalb(1.0, i + 24))
+            }) {
                 assertEquals(bySearch(d), ExactDecimal.of(d), () -> "for " + d);
             }
         }
@@ -120,7 +169,8 @@ class ExactDecimalTest {
     @Test
     void multiWordArithmeticIsExact() {
         int[] p = ExactDecimal.mulPow5(ExactDecimal.of(3), 40);
-        java.math.BigInteger expected = java.math.BigInteger.valueOf(5).pow(40).multiply(java.math.BigInteger.valueOf(3));
+        java.math.BigInteger expected =
+                java.math.BigInteger.valueOf(5).pow(40).multiply(java.math.BigInteger.valueOf(3));
         assertEquals(expected.shiftRight(40).longValueExact(), ExactDecimal.bitsFrom(p, 40));
         assertEquals(expected.getLowestSetBit() < 40, ExactDecimal.anyBitBelow(p, 40));
         assertEquals(-1, ExactDecimal.bitsFrom(p, 0));

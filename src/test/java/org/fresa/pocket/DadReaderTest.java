@@ -18,7 +18,9 @@ class DadReaderTest {
         assertEquals(0.7, l4.a(), 0);
         assertEquals(-0.75, l4.b(), 0);
         // K from the direction of travel (seed §5.4): 6 +1, 1 +1, 2 -1, 3 -1, 4 -1, 5 +1
-        assertEquals(java.util.List.of(1, -1, -1, -1, 1, 1), p.elements().stream().map(PocketElement::k).toList());
+        assertEquals(
+                java.util.List.of(1, -1, -1, -1, 1, 1),
+                p.elements().stream().map(PocketElement::k).toList());
     }
 
     @Test

@@ -32,7 +32,9 @@ class EntriesTest {
                 Vec2 a = at.xy().minus(c.center().xy());
                 Vec2 b = m.end().xy().minus(c.center().xy());
                 double sweep = Math.atan2(a.cross(b), a.dot(b));
-                sweep = c.ccw() ? (sweep <= 1e-12 ? sweep + 2 * Math.PI : sweep) : (sweep >= -1e-12 ? -sweep + 2 * Math.PI : -sweep);
+                sweep = c.ccw()
+                        ? (sweep <= 1e-12 ? sweep + 2 * Math.PI : sweep)
+                        : (sweep >= -1e-12 ? -sweep + 2 * Math.PI : -sweep);
                 run = a.norm() * (sweep + 2 * Math.PI * c.turns());
             } else {
                 run = at.xy().distance(m.end().xy());
@@ -47,7 +49,8 @@ class EntriesTest {
 
     @Test
     void aHelixOfTheToolRadiusIsTakenWhereItHasRoom() {
-        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, EVERYWHERE, 5, 3).orElseThrow();
+        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, EVERYWHERE, 5, 3)
+                .orElseThrow();
         Entry.Helix h = assertInstanceOf(Entry.Helix.class, e);
         List<Move> moves = h.moves(0, -3, 300);
         assertAll(
@@ -55,26 +58,30 @@ class EntriesTest {
                 // 3 mm at most 3 deg on a radius of 5: 2 pi 5 tan(3 deg) = 1.646 mm a turn, 2 turns
                 () -> assertEquals(2, h.turns(3)),
                 () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
-                () -> assertEquals(Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
+                () -> assertEquals(
+                        Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
     }
 
     @Test
     void withoutRoomForAHelixTheRampTurnsBackAndForthAlongTheShortCut() {
-        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3).orElseThrow();
+        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
+                .orElseThrow();
         Entry.Ramp r = assertInstanceOf(Entry.Ramp.class, e);
         List<Move> moves = r.moves(0, -3, 300);
         // 3 / tan(3 deg) = 57.2 mm of travel along a cut of 2.7 mm: 22 legs
         assertAll(
                 () -> assertEquals(22, r.legs()),
                 () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
-                () -> assertEquals(Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
+                () -> assertEquals(
+                        Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
     }
 
     @Test
     void aRampOverAnArcStaysAnArc() {
         List<Curve2> cut = List.of(new Arc2(Vec2.ZERO, new Vec2(10, 0), new Vec2(10, 0), true));
-        Entry e = Entries.choose(new EntryRule(EntryRule.Kind.RAMP, 3, false), new Vec2(10, 0), cut, true,
-                EVERYWHERE, 5, 2).orElseThrow();
+        Entry e = Entries.choose(
+                        new EntryRule(EntryRule.Kind.RAMP, 3, false), new Vec2(10, 0), cut, true, EVERYWHERE, 5, 2)
+                .orElseThrow();
         List<Move> moves = e.moves(0, -2, 300);
         assertTrue(moves.stream().allMatch(m -> m instanceof Move.Circular));
         assertTrue(steepestDeg(new Vec2(10, 0), 0, moves) <= 3 + 1e-9);
@@ -83,17 +90,20 @@ class EntriesTest {
     @Test
     void aToolThatDoesNotCutAtItsCentreGetsNoEntryWithoutRoom() {
         List<Curve2> point = List.of();
-        assertFalse(Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, point, true, Entries.Room.NONE, 5, 3).isPresent());
-        Entry e = Entries.choose(new EntryRule(EntryRule.Kind.AUTO, 3, true), Vec2.ZERO, point, true,
-                Entries.Room.NONE, 5, 3).orElseThrow();
+        assertFalse(Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, point, true, Entries.Room.NONE, 5, 3)
+                .isPresent());
+        Entry e = Entries.choose(
+                        new EntryRule(EntryRule.Kind.AUTO, 3, true), Vec2.ZERO, point, true, Entries.Room.NONE, 5, 3)
+                .orElseThrow();
         assertInstanceOf(Entry.Plunge.class, e);
     }
 
     @Test
     void aPlungeIsOnlyForACentreCuttingTool() {
         assertThrows(IllegalArgumentException.class, () -> new EntryRule(EntryRule.Kind.PLUNGE, 3, false));
-        Entry e = Entries.choose(new EntryRule(EntryRule.Kind.PLUNGE, 3, true), Vec2.ZERO, SHORT_CUT, true,
-                EVERYWHERE, 5, 3).orElseThrow();
+        Entry e = Entries.choose(
+                        new EntryRule(EntryRule.Kind.PLUNGE, 3, true), Vec2.ZERO, SHORT_CUT, true, EVERYWHERE, 5, 3)
+                .orElseThrow();
         assertEquals(90, steepestDeg(Vec2.ZERO, 0, e.moves(0, -3, 300)), 1e-9);
     }
 
@@ -101,12 +111,15 @@ class EntriesTest {
     void aHelixTurnsAboutAPointNearerTheStartWhenNoneThroughItFits() {
         // only circles centred within 1 mm of the start fit
         Entries.Room near = (c, r) -> c.norm() <= 1;
-        Entry.Helix h = assertInstanceOf(Entry.Helix.class,
-                Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, near, 5, 3).orElseThrow());
+        Entry.Helix h = assertInstanceOf(
+                Entry.Helix.class,
+                Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, near, 5, 3)
+                        .orElseThrow());
         List<Move> moves = h.moves(0, -3, 300);
         assertAll(
                 () -> assertEquals(Vec2.ZERO, h.centre()),
                 () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
-                () -> assertEquals(Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
+                () -> assertEquals(
+                        Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
     }
 }

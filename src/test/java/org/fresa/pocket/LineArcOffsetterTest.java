@@ -12,9 +12,9 @@ import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.junit.jupiter.api.Test;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
@@ -87,9 +87,19 @@ class LineArcOffsetterTest {
     @Test
     void aDumbbellShrunkBeyondItsWaistSplitsInTwo() {
         // two 20x20 squares joined by a 20 x 2 bridge
-        Contour c = Contour.polygon(List.of(Vec2.of(0, 0), Vec2.of(20, 0), Vec2.of(20, 9), Vec2.of(40, 9),
-                Vec2.of(40, 0), Vec2.of(60, 0), Vec2.of(60, 20), Vec2.of(40, 20), Vec2.of(40, 11), Vec2.of(20, 11),
-                Vec2.of(20, 20), Vec2.of(0, 20)));
+        Contour c = Contour.polygon(List.of(
+                Vec2.of(0, 0),
+                Vec2.of(20, 0),
+                Vec2.of(20, 9),
+                Vec2.of(40, 9),
+                Vec2.of(40, 0),
+                Vec2.of(60, 0),
+                Vec2.of(60, 20),
+                Vec2.of(40, 20),
+                Vec2.of(40, 11),
+                Vec2.of(20, 11),
+                Vec2.of(20, 20),
+                Vec2.of(0, 20)));
         List<Contour> r = LineArcOffsetter.offset(c, -2, TOL);
         assertEquals(2, r.size());
         // each half is the 16 x 16 square plus the sliver the mouth's rounded corners leave
@@ -134,8 +144,11 @@ class LineArcOffsetterTest {
                     area += x.isCcw() == c.isCcw() ? x.area() : -x.area();
                 }
                 double fa = area;
-                assertEquals(g.getArea(), area, 2e-4 * g.getArea(), () -> "trial " + trial + " t " + t + " loops " + r.size()
-                        + " " + c + " got " + fa);
+                assertEquals(
+                        g.getArea(),
+                        area,
+                        2e-4 * g.getArea(),
+                        () -> "trial " + trial + " t " + t + " loops " + r.size() + " " + c + " got " + fa);
             }
         }
     }

@@ -17,7 +17,8 @@ class MultiWaySplitTest {
     @Test
     void theCloverSplitsIntoThreeLobesAndItsHubAtOnceAndIsMilledCompletely() throws Exception {
         String text = Files.readString(Path.of("samples/pocket/clover.contour"));
-        Recognition.Result r = Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "clover")));
+        Recognition.Result r =
+                Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "clover")));
         // the saddles between the hub and each lobe: half the distance of two reflex corners
         assertEquals(28.8097, r.root().splitT(), 1e-4);
         assertEquals(4, r.root().children().size());
@@ -38,7 +39,8 @@ class MultiWaySplitTest {
     @Test
     void twoCollapsingNecksLeaveThreeRoomsAndAllAreMilled() throws Exception {
         String text = Files.readString(Path.of("samples/pocket/rooms.contour"));
-        Recognition.Result r = Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "rooms")));
+        Recognition.Result r =
+                Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "rooms")));
         assertEquals(5, r.root().splitT(), 1e-9);
         assertEquals(3, r.root().children().size());
         for (RecognitionNode c : r.root().children()) {

@@ -32,8 +32,11 @@ class PassPlannerTest {
         assertOffsets(List.of(3.0, 3.78, 7.5, 11.22, 14.94, 17.15267), offsets(p));
         PocketPass inner = p.milled().get(0);
         List<Vec2> v = inner.pieces().stream().map(PassPiece::start).toList();
-        assertEquals(List.of(new Vec2(34.979, 46.847), new Vec2(49.458, 46.847), new Vec2(50.578, 43.325)),
-                v.stream().map(q -> new Vec2(Math.rint(q.x() * 1000) / 1000, Math.rint(q.y() * 1000) / 1000)).toList());
+        assertEquals(
+                List.of(new Vec2(34.979, 46.847), new Vec2(49.458, 46.847), new Vec2(50.578, 43.325)),
+                v.stream()
+                        .map(q -> new Vec2(Math.rint(q.x() * 1000) / 1000, Math.rint(q.y() * 1000) / 1000))
+                        .toList());
         PocketPass outer = p.generated().get(0);
         assertEquals(6, outer.pieces().size());
         assertEquals(17.0, outer.start().x(), 1e-3);
@@ -50,7 +53,10 @@ class PassPlannerTest {
         assertEquals(170.544, inner.pieces().get(1).start().x(), 1e-3);
         assertEquals(139.535, inner.pieces().get(1).start().y(), 1e-3);
         assertEquals(316, inner.pieces().get(1).center().x(), 1e-9);
-        assertEquals(196.062, inner.pieces().get(1).start().distance(inner.pieces().get(1).center()), 1e-3);
+        assertEquals(
+                196.062,
+                inner.pieces().get(1).start().distance(inner.pieces().get(1).center()),
+                1e-3);
     }
 
     /**
@@ -67,8 +73,10 @@ class PassPlannerTest {
         PocketPlan fresa = PassPlanner.plan(rec, t, false);
         assertOffsets(List.of(5.0, 6.7, 13.9, 20.96666), offsets(thesis));
         int sliver = rec.root().children().get(1).id();
-        assertEquals(0, thesis.generated().stream().filter(p -> p.nodeId() == sliver).count());
-        List<PocketPass> inSliver = fresa.generated().stream().filter(p -> p.nodeId() == sliver).toList();
+        assertEquals(
+                0, thesis.generated().stream().filter(p -> p.nodeId() == sliver).count());
+        List<PocketPass> inSliver =
+                fresa.generated().stream().filter(p -> p.nodeId() == sliver).toList();
         assertEquals(1, inSliver.size());
         // the default's stepover stops at d + R = 11.7 where the subcontour changes
         assertEquals(11.7, inSliver.get(0).offsetMm(), 1e-6);
@@ -79,7 +87,10 @@ class PassPlannerTest {
         PocketPlan p = plan("cavity03.dad", new PocketTechnology(6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90));
         // the seed rounds s to 4.1919; the NC radius 33.579 - 20.687 confirms 12.892
         assertOffsets(List.of(3.0, 4.32, 8.70, 8.70, 12.89176, 17.27176), offsets(p));
-        double alpha = Recognition.of(RecognitionTest.sample("cavity03.dad")).root().stateAt(5.7).minAngleDeg(5.7);
+        double alpha = Recognition.of(RecognitionTest.sample("cavity03.dad"))
+                .root()
+                .stateAt(5.7)
+                .minAngleDeg(5.7);
         assertEquals(49.32, alpha, 0.01);
         assertEquals(0.69865, PassPlanner.stepoverFraction(0.73, alpha), 5e-5);
     }
@@ -109,7 +120,8 @@ class PassPlannerTest {
 
     @Test
     void aToolLargerThanTheLargestHoleIsRefused() {
-        assertThrows(ToolTooLargeException.class,
+        assertThrows(
+                ToolTooLargeException.class,
                 () -> plan("examplepart.dad", new PocketTechnology(16, 0.6, 0.1, 8, 6, 2, 3000, 300, 100)));
     }
 }

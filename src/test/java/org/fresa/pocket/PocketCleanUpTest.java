@@ -101,16 +101,15 @@ class PocketCleanUpTest {
     }
 
     static PocketTechnology tech(Random rnd) {
-        return new PocketTechnology(6, 0.5 + 0.3 * rnd.nextDouble(), rnd.nextBoolean() ? 0.1 : 0.15, 0, -3, 3, 3000,
-                300, 100);
+        return new PocketTechnology(
+                6, 0.5 + 0.3 * rnd.nextDouble(), rnd.nextBoolean() ? 0.1 : 0.15, 0, -3, 3, 3000, 300, 100);
     }
 
     /** The floor's swept area, the uncut and the gouge (mm2, mm2, mm) of the interpreter's moves. */
-    record Verdict(double uncutMm2, double gougeMm) {
-    }
+    record Verdict(double uncutMm2, double gougeMm) {}
 
-    static Verdict verdict(List<Rs274.Canon> motions, double floorZ, double topZ, double r, Geometry wall,
-            Geometry reachable) {
+    static Verdict verdict(
+            List<Rs274.Canon> motions, double floorZ, double topZ, double r, Geometry wall, Geometry reachable) {
         // discs as polygons within 4 um of their circle (16 segments a quadrant for a 6 mm tool)
         BufferParameters bp = new BufferParameters((int) Math.ceil(Math.PI / 2 / Math.acos(1 - 0.004 / r)));
         List<Geometry> discs = new ArrayList<>();
@@ -167,8 +166,9 @@ class PocketCleanUpTest {
     }
 
     @org.junit.jupiter.params.ParameterizedTest
-    @org.junit.jupiter.params.provider.ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03",
-            "cavity04", "cavity05", "cavity06", "cavity07"})
+    @org.junit.jupiter.params.provider.ValueSource(
+            strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"
+            })
     @InterpreterCheck
     void theThesisContoursLeaveNoSliverAndNeverCutAWall(String name, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
@@ -178,8 +178,13 @@ class PocketCleanUpTest {
         PocketPlan plan = PassPlanner.plan(rec, t, false);
         // the wall: the thesis's own finishing pass grown by R, everything inside reachable
         Geometry wall = PocketCoverageTest.region(thesis.generated().get(0), t.radiusMm());
-        Verdict v = verdict(interpreted(PocketToolpath.of(plan, true), dir, name), t.zBottomMm(), t.zTopMm(),
-                t.radiusMm(), wall, wall);
+        Verdict v = verdict(
+                interpreted(PocketToolpath.of(plan, true), dir, name),
+                t.zBottomMm(),
+                t.zTopMm(),
+                t.radiusMm(),
+                wall,
+                wall);
         System.out.printf(Locale.ROOT, "%s: uncut %.4f mm2, gouge %.4f mm%n", name, v.uncutMm2(), v.gougeMm());
         assertTrue(v.uncutMm2() < UNCUT_MM2, name + " leaves " + v.uncutMm2() + " mm2");
         assertTrue(v.gougeMm() < GOUGE_MM, name + " cuts the wall by " + v.gougeMm() + " mm");
@@ -210,12 +215,20 @@ class PocketCleanUpTest {
             }
             Geometry wall = RegionPocketTest.region(p);
             Geometry reachable = wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32);
-            Verdict v = verdict(interpreted(plan.toolpath(), dir, "p" + done), t.zBottomMm(), t.zTopMm(), t.radiusMm(),
-                    wall, reachable);
+            Verdict v = verdict(
+                    interpreted(plan.toolpath(), dir, "p" + done),
+                    t.zBottomMm(),
+                    t.zTopMm(),
+                    t.radiusMm(),
+                    wall,
+                    reachable);
             // the same pocket without the clean-up, measured on the planner's own grid (no interpreter, no JTS)
-            double without = Coverage.of(bare.levels().get(0).loops(),
-                    bare.order().stream().map(c -> c.loop().curves()).toList(), t.radiusMm(),
-                    RegionPocket.COVERAGE_CELL_MM).uncutAreaMm2();
+            double without = Coverage.of(
+                            bare.levels().get(0).loops(),
+                            bare.order().stream().map(c -> c.loop().curves()).toList(),
+                            t.radiusMm(),
+                            RegionPocket.COVERAGE_CELL_MM)
+                    .uncutAreaMm2();
             if (without >= UNCUT_MM2) {
                 failWithout++;
             }
@@ -223,15 +236,30 @@ class PocketCleanUpTest {
             worst = Math.max(worst, v.uncutMm2());
             worstGouge = Math.max(worstGouge, v.gougeMm());
             if (v.uncutMm2() >= UNCUT_MM2 || v.gougeMm() >= GOUGE_MM) {
-                bad.add(String.format(Locale.ROOT, "pocket %d (%d islands): uncut %.4f mm2, gouge %.4f mm", done,
-                        p.size() - 1, v.uncutMm2(), v.gougeMm()));
+                bad.add(String.format(
+                        Locale.ROOT,
+                        "pocket %d (%d islands): uncut %.4f mm2, gouge %.4f mm",
+                        done,
+                        p.size() - 1,
+                        v.uncutMm2(),
+                        v.gougeMm()));
             }
             byIslands[p.size() - 1]++;
             done++;
         }
-        System.out.printf(Locale.ROOT, "random pockets %d (islands 0..3: %d %d %d %d): worst uncut %.4f mm2, worst gouge"
-                + " %.4f mm; without clean-up %d fail, worst %.4f mm2%n", done, byIslands[0], byIslands[1],
-                byIslands[2], byIslands[3], worst, worstGouge, failWithout, worstWithout);
+        System.out.printf(
+                Locale.ROOT,
+                "random pockets %d (islands 0..3: %d %d %d %d): worst uncut %.4f mm2, worst gouge"
+                        + " %.4f mm; without clean-up %d fail, worst %.4f mm2%n",
+                done,
+                byIslands[0],
+                byIslands[1],
+                byIslands[2],
+                byIslands[3],
+                worst,
+                worstGouge,
+                failWithout,
+                worstWithout);
         assertEquals(POCKETS, done);
         assertTrue(bad.isEmpty(), bad.size() + " pockets fail: " + bad);
     }

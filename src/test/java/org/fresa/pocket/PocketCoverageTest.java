@@ -80,9 +80,10 @@ class PocketCoverageTest {
                     } else {
                         pts = List.of(new Coordinate(cur.x(), cur.y()), new Coordinate(e.x(), e.y()));
                     }
-                    Geometry g = pts.size() < 2 || pts.get(0).distance(pts.get(pts.size() - 1)) < 1e-9 && pts.size() == 2
-                            ? GF.createPoint(pts.get(0))
-                            : GF.createLineString(pts.toArray(new Coordinate[0]));
+                    Geometry g =
+                            pts.size() < 2 || pts.get(0).distance(pts.get(pts.size() - 1)) < 1e-9 && pts.size() == 2
+                                    ? GF.createPoint(pts.get(0))
+                                    : GF.createLineString(pts.toArray(new Coordinate[0]));
                     parts.add(org.locationtech.jts.operation.buffer.BufferOp.bufferOp(g, r, bp));
                 }
                 cur = e;
@@ -97,7 +98,8 @@ class PocketCoverageTest {
             if (p.isArc() && p.radiusMm() > 1e-9) {
                 // on the arc's true offset circle: cavity 02's snapped junctions lie off it
                 Vec2 c = p.center();
-                Vec2 s = c.plus(p.start().minus(c).times(p.radiusMm() / p.start().distance(c)));
+                Vec2 s =
+                        c.plus(p.start().minus(c).times(p.radiusMm() / p.start().distance(c)));
                 Vec2 e = c.plus(p.end().minus(c).times(p.radiusMm() / p.end().distance(c)));
                 pts.add(new Coordinate(p.start().x(), p.start().y()));
                 pts.addAll(arcPoints(s, e, c, p.ccw()));
@@ -126,11 +128,20 @@ class PocketCoverageTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"})
+    @ValueSource(
+            strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"
+            })
     void defaultPassesClearThePocketFloorAndNeverLeaveIt(String name) throws Exception {
         double[] r = uncutAndOutside(name, false);
         double[] th = uncutAndOutside(name, true);
-        System.out.printf(java.util.Locale.ROOT, "%s default uncut %.4f outside %.4f | thesis uncut %.4f outside %.4f%n", name, r[0], r[1], th[0], th[1]);
+        System.out.printf(
+                java.util.Locale.ROOT,
+                "%s default uncut %.4f outside %.4f | thesis uncut %.4f outside %.4f%n",
+                name,
+                r[0],
+                r[1],
+                th[0],
+                th[1]);
         assertTrue(r[1] < 1e-3, name + " goes beyond the wall by " + r[1] + " mm2");
         assertTrue(r[0] < 1e-3, name + " leaves " + r[0] + " mm2 uncut");
     }

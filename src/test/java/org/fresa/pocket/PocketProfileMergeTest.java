@@ -25,14 +25,21 @@ class PocketProfileMergeTest {
         Contour m = PocketProfile.mergeCarriers(c);
         assertEquals(4, m.size());
         assertEquals(c.signedArea(), m.signedArea(), 1e-9);
-        assertEquals(1, PocketProfile.fromContours(List.of(c)).elements().stream()
-                .filter(e -> e.arc() && e.d() > 29 && e.d() < 30).count());
+        assertEquals(
+                1,
+                PocketProfile.fromContours(List.of(c)).elements().stream()
+                        .filter(e -> e.arc() && e.d() > 29 && e.d() < 30)
+                        .count());
     }
 
     @Test
     void collinearSegmentsJoin() {
-        Contour square = Contour.polygon(List.of(org.fresa.geom.Vec2.of(0, 0), org.fresa.geom.Vec2.of(5, 0),
-                org.fresa.geom.Vec2.of(10, 0), org.fresa.geom.Vec2.of(10, 10), org.fresa.geom.Vec2.of(0, 10)));
+        Contour square = Contour.polygon(List.of(
+                org.fresa.geom.Vec2.of(0, 0),
+                org.fresa.geom.Vec2.of(5, 0),
+                org.fresa.geom.Vec2.of(10, 0),
+                org.fresa.geom.Vec2.of(10, 10),
+                org.fresa.geom.Vec2.of(0, 10)));
         assertEquals(4, PocketProfile.mergeCarriers(square).size());
     }
 }

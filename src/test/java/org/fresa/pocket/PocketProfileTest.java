@@ -38,7 +38,8 @@ class PocketProfileTest {
                 line 14 34
                 line 14 56
                 """;
-        Recognition.Result r = Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "c01")));
+        Recognition.Result r =
+                Recognition.of(PocketProfile.fromContours(ContourFile.read(new StringReader(text), "c01")));
         // unit-normalised line 4 moves the first event to 7.950215 (seed §5.4); the leaf stays
         assertEquals(7.950215, r.root().events().get(0).t(), 1e-4);
         assertEquals(18.64534, r.root().leafT(), 1e-4);

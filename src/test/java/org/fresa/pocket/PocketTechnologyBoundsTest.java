@@ -20,7 +20,9 @@ class PocketTechnologyBoundsTest {
     void moreThanAMillionDepthPassesAreRefused() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> depth(1e308, 2));
         IllegalArgumentException f = assertThrows(IllegalArgumentException.class, () -> depth(0, 1e-9));
-        assertAll(() -> assertTrue(e.getMessage().contains("must be finite") || e.getMessage().contains("more than")),
+        assertAll(
+                () -> assertTrue(e.getMessage().contains("must be finite")
+                        || e.getMessage().contains("more than")),
                 () -> assertTrue(f.getMessage().contains("more than 1000000 depth passes"), f.getMessage()),
                 () -> assertDoesNotThrow(() -> depth(995, 0.001)));
     }
@@ -28,15 +30,15 @@ class PocketTechnologyBoundsTest {
     @ParameterizedTest
     @ValueSource(doubles = {0, -1, Double.NaN, Double.POSITIVE_INFINITY})
     void aSpindleThatDoesNotTurnIsRefused(double rpm) {
-        assertThrows(IllegalArgumentException.class,
-                () -> new PocketTechnology(6, 0.6, 0.15, 0, -5, 2, rpm, 300, 100));
+        assertThrows(IllegalArgumentException.class, () -> new PocketTechnology(6, 0.6, 0.15, 0, -5, 2, rpm, 300, 100));
     }
 
     @Test
     void aProgramOfMoreThanAMillionMovesIsNotDoable() {
         PocketTechnology t = depth(995, 1);
         ToolTooLargeException e = assertThrows(ToolTooLargeException.class, () -> t.checkMoves(1001));
-        assertAll(() -> assertTrue(e.getMessage().contains("more than 1000000 in all"), e.getMessage()),
+        assertAll(
+                () -> assertTrue(e.getMessage().contains("more than 1000000 in all"), e.getMessage()),
                 () -> assertDoesNotThrow(() -> t.checkMoves(1000)));
     }
 }

@@ -47,7 +47,10 @@ class RecognitionTest {
     void cavity02CancelsLine1BeforeItsLeaf() throws Exception {
         Recognition.Result r = Recognition.of(sample("cavity02.dad"));
         RecognitionNode root = r.root();
-        RecognitionNode.Event line1 = root.events().stream().filter(e -> e.elements().equals(List.of(1))).findFirst().orElseThrow();
+        RecognitionNode.Event line1 = root.events().stream()
+                .filter(e -> e.elements().equals(List.of(1)))
+                .findFirst()
+                .orElseThrow();
         assertEquals(107.04485, line1.t(), 1e-4);
         assertEquals(113.07973, root.leafT(), 1e-4);
         assertTrue(root.isLeaf());
@@ -94,7 +97,9 @@ class RecognitionTest {
         Recognition.Result r = Recognition.of(sample("cavity07.dad"));
         assertEquals(31.1539, r.root().leafT(), 1e-4);
         LoopState last = r.root().states().get(r.root().states().size() - 1);
-        assertEquals(List.of(1, 3, 5), last.elements().stream().map(PocketElement::number).toList());
+        assertEquals(
+                List.of(1, 3, 5),
+                last.elements().stream().map(PocketElement::number).toList());
     }
 
     /**

@@ -50,7 +50,9 @@ class RegionPocketTest {
             }
         }
         pts.add(pts.get(0));
-        return PocketCoverageTest.GF.createPolygon(pts.toArray(new Coordinate[0])).buffer(0);
+        return PocketCoverageTest.GF
+                .createPolygon(pts.toArray(new Coordinate[0]))
+                .buffer(0);
     }
 
     static Geometry region(List<Contour> contours) {
@@ -63,16 +65,23 @@ class RegionPocketTest {
 
     @Test
     void squareWithSquareIslandOffsetsToASquareAndARoundedRing() {
-        Contour outer = Contour.polygon(List.of(new Vec2(0, 0), new Vec2(100, 0), new Vec2(100, 100), new Vec2(0, 100)));
-        Contour island = Contour.polygon(List.of(new Vec2(40, 40), new Vec2(60, 40), new Vec2(60, 60), new Vec2(40, 60)));
+        Contour outer =
+                Contour.polygon(List.of(new Vec2(0, 0), new Vec2(100, 0), new Vec2(100, 100), new Vec2(0, 100)));
+        Contour island =
+                Contour.polygon(List.of(new Vec2(40, 40), new Vec2(60, 40), new Vec2(60, 60), new Vec2(40, 60)));
         List<Contour> loops = RegionOffsetter.inward(RegionOffsetter.oriented(outer, List.of(island)), 5, TOL);
         assertAll(
                 () -> assertEquals(2, loops.size()),
                 () -> assertTrue(loops.get(0).isCcw()),
                 () -> assertEquals(90 * 90, loops.get(0).area(), 1e-6),
                 () -> assertTrue(!loops.get(1).isCcw()),
-                () -> assertEquals(20 * 20 + 4 * 20 * 5 + Math.PI * 25, loops.get(1).area(), 1e-6),
-                () -> assertEquals(4, loops.get(1).curves().stream().filter(c -> c instanceof Arc2).count()));
+                () -> assertEquals(
+                        20 * 20 + 4 * 20 * 5 + Math.PI * 25, loops.get(1).area(), 1e-6),
+                () -> assertEquals(
+                        4,
+                        loops.get(1).curves().stream()
+                                .filter(c -> c instanceof Arc2)
+                                .count()));
     }
 
     @Test
@@ -88,27 +97,36 @@ class RegionPocketTest {
 
     @Test
     @InterpreterCheck
-    void threeRoomsWithTwoIslandsSplitThreeWaysAndAreMilledCompletelyWithinTheirWalls(@TempDir Path dir) throws Exception {
+    void threeRoomsWithTwoIslandsSplitThreeWaysAndAreMilledCompletelyWithinTheirWalls(@TempDir Path dir)
+            throws Exception {
         List<Contour> c = read("samples/pocket/rooms-islands.contour");
         assertEquals(3, c.size());
         PocketTechnology t = new PocketTechnology(6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100);
         RegionPocket.Plan plan = RegionPocket.plan(c.get(0), c.subList(1, 3), t, true);
-        List<Long> faces = plan.levels().stream().map(l -> l.loops().stream().filter(Contour::isCcw).count()).toList();
+        List<Long> faces = plan.levels().stream()
+                .map(l -> l.loops().stream().filter(Contour::isCcw).count())
+                .toList();
         int split = faces.indexOf(faces.stream().filter(f -> f > 1).findFirst().orElseThrow());
         // one face becomes three at one step: both necks close at t = 5
         assertAll(
                 () -> assertEquals(1, faces.get(split - 1)),
                 () -> assertEquals(3, faces.get(split)),
-                () -> assertTrue(plan.levels().get(split - 1).offsetMm() < 5 && plan.levels().get(split).offsetMm() > 5));
+                () -> assertTrue(plan.levels().get(split - 1).offsetMm() < 5
+                        && plan.levels().get(split).offsetMm() > 5));
         // both islands are ringed by the finishing pass
-        assertEquals(2, plan.levels().get(0).loops().stream().filter(l -> !l.isCcw()).count());
+        assertEquals(
+                2, plan.levels().get(0).loops().stream().filter(l -> !l.isCcw()).count());
         Geometry wall = region(c);
         Geometry reachable = wall.buffer(-3, 64).buffer(3, 64);
         Geometry swept = PocketCoverageTest.swept(plan.toolpath(), -6, 3);
         double uncut = reachable.buffer(-0.01, 64).difference(swept).getArea();
         double outside = swept.difference(wall.buffer(0.01, 64)).getArea();
-        System.out.printf(java.util.Locale.ROOT, "rooms-islands: %d levels, uncut %.5f mm2, outside %.5f mm2%n",
-                plan.levels().size(), uncut, outside);
+        System.out.printf(
+                java.util.Locale.ROOT,
+                "rooms-islands: %d levels, uncut %.5f mm2, outside %.5f mm2%n",
+                plan.levels().size(),
+                uncut,
+                outside);
         assertTrue(uncut < 1e-3, "uncut " + uncut + " mm2");
         assertTrue(outside < 1e-3, "beyond the walls " + outside + " mm2");
         assumeTrue(Rs274.available(), Rs274.whyNot());

@@ -6,8 +6,7 @@ import org.locationtech.jts.geom.Geometry;
 
 /** The pocket tests' JTS helpers for tests in other packages (sole cavity). */
 public final class RegionPocketTestAccess {
-    private RegionPocketTestAccess() {
-    }
+    private RegionPocketTestAccess() {}
 
     /** The contour as a JTS polygon, arcs as chords within 0.5 um. */
     public static Geometry polygon(Contour c) {

@@ -42,9 +42,11 @@ class SoleOutlineRecognitionTest {
         Toolpath path = PocketToolpath.of(plan, true);
         Geometry swept = PocketCoverageTest.swept(path, -4, 12.5);
         Geometry wall = RegionPocketTest.polygon(sole);
-        double uncut = wall.buffer(-12.5, 64).buffer(12.5 - 0.01, 64).difference(swept).getArea();
+        double uncut =
+                wall.buffer(-12.5, 64).buffer(12.5 - 0.01, 64).difference(swept).getArea();
         double outside = swept.difference(wall.buffer(0.01, 64)).getArea();
-        System.out.printf(java.util.Locale.ROOT, "men40 recognition passes: uncut %.5f mm2, outside %.5f mm2%n", uncut, outside);
+        System.out.printf(
+                java.util.Locale.ROOT, "men40 recognition passes: uncut %.5f mm2, outside %.5f mm2%n", uncut, outside);
         assertTrue(outside < 1e-3, "beyond the outline " + outside + " mm2");
         assertTrue(uncut < 1e-3, "uncut " + uncut + " mm2");
     }

@@ -41,15 +41,22 @@ class AptPostTest {
         String text = program();
         List<String> lines = text.lines().toList();
         // the linuxcnc program replaces the tilted half circle by 79 chords; APT keeps it one CIRCLE
-        long tilted = lines.stream().filter(l -> l.startsWith("CIRCLE/")).filter(l -> {
-            String[] a = l.substring(7).split(",");
-            return Math.abs(Math.abs(Double.parseDouble(a[3])) + Math.abs(Double.parseDouble(a[4]))
-                    + Math.abs(Double.parseDouble(a[5])) - 1) > 1e-6;
-        }).count();
+        long tilted = lines.stream()
+                .filter(l -> l.startsWith("CIRCLE/"))
+                .filter(l -> {
+                    String[] a = l.substring(7).split(",");
+                    return Math.abs(Math.abs(Double.parseDouble(a[3]))
+                                    + Math.abs(Double.parseDouble(a[4]))
+                                    + Math.abs(Double.parseDouble(a[5]))
+                                    - 1)
+                            > 1e-6;
+                })
+                .count();
         assertEquals(1, tilted, text);
         for (int i = 0; i < lines.size(); i++) {
             if (lines.get(i).startsWith("CIRCLE/")) {
-                assertTrue(lines.get(i + 1).startsWith("GOTO/"), "a CIRCLE is followed by its GOTO: " + lines.get(i + 1));
+                assertTrue(
+                        lines.get(i + 1).startsWith("GOTO/"), "a CIRCLE is followed by its GOTO: " + lines.get(i + 1));
             }
         }
         assertTrue(text.startsWith("PARTNO mixed sample\nUNITS/MM\n"), text);
@@ -75,7 +82,8 @@ class AptPostTest {
         ProgramCheck.Verdict apt = ProgramCheck.of(program(), NcDialect.APT, any);
         assertTrue(apt.ok(), () -> apt.failure().get().message());
         // a cutter that may not plunge: the same block of the same section fails in both
-        Limits ramp = Limits.milling().withOtherTools(ToolLimits.notCentreCutting().withRadiusMm(3));
+        Limits ramp =
+                Limits.milling().withOtherTools(ToolLimits.notCentreCutting().withRadiusMm(3));
         var a = ProgramCheck.of(program(), NcDialect.APT, ramp).failure();
         var g = ProgramCheck.of(NcPostsTest.program("linuxcnc", SampleToolpaths.mixed()), NcDialect.LINUXCNC, ramp)
                 .failure();

@@ -19,10 +19,16 @@ class DialectTest {
     void theCheckReadsEachDialectWithItsTurnWordAndUnit(Dialect d) {
         NcDialect read = NcDialect.byPost(d.id()).orElseThrow();
         assertEquals(d.mmPerUnit(), read.mmPerUnit());
-        assertEquals(d, Dialect.byName(" " + d.id().toUpperCase(java.util.Locale.ROOT) + " ").orElseThrow());
+        assertEquals(
+                d,
+                Dialect.byName(" " + d.id().toUpperCase(java.util.Locale.ROOT) + " ")
+                        .orElseThrow());
         // a turn word is written exactly where the dialect names its address, behind that address
         assertEquals(d.turnAddress().isPresent(), d.turnsWord(2).isPresent());
-        d.turnAddress().ifPresent(a -> assertTrue(d.turnsWord(2).orElseThrow().startsWith(a), d.turnsWord(2).get()));
+        d.turnAddress()
+                .ifPresent(a -> assertTrue(
+                        d.turnsWord(2).orElseThrow().startsWith(a),
+                        d.turnsWord(2).get()));
     }
 
     @Test
@@ -38,7 +44,10 @@ class DialectTest {
 
     @Test
     void everyCuttingPostIsADialectAndTheSevenMIsNone() {
-        assertEquals(Arrays.stream(Dialect.values()).filter(d -> d != Dialect.SINUMERIK_7M).toList(),
+        assertEquals(
+                Arrays.stream(Dialect.values())
+                        .filter(d -> d != Dialect.SINUMERIK_7M)
+                        .toList(),
                 Arrays.stream(CuttingPost.values()).map(CuttingPost::dialect).toList());
         for (CuttingPost p : CuttingPost.values()) {
             assertEquals(p, CuttingPost.byName(p.id()).orElseThrow());

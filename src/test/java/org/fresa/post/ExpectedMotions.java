@@ -16,8 +16,7 @@ import org.fresa.model.ToolpathSection;
  */
 public final class ExpectedMotions {
 
-    private ExpectedMotions() {
-    }
+    private ExpectedMotions() {}
 
     public static List<Rs274.Canon> of(Toolpath path, boolean splitTurns, double chordTolMm) {
         List<Rs274.Canon> list = new ArrayList<>();
@@ -61,7 +60,8 @@ public final class ExpectedMotions {
         ArcGeometry g = ArcGeometry.of(at, c);
         double perTurn = 2 * Math.PI / Math.abs(g.sweepRad());
         for (int k = 1; k <= c.turns(); k++) {
-            list.add(new Rs274.Canon("arc", at.plus(c.normal().times(g.riseMm() * perTurn * k)), c.center(), axis, sense));
+            list.add(new Rs274.Canon(
+                    "arc", at.plus(c.normal().times(g.riseMm() * perTurn * k)), c.center(), axis, sense));
         }
         list.add(new Rs274.Canon("arc", c.end(), c.center(), axis, sense));
     }
@@ -71,7 +71,8 @@ public final class ExpectedMotions {
         for (int i = 0; i < Math.min(expected.size(), actual.size()); i++) {
             Rs274.Canon e = expected.get(i);
             Rs274.Canon a = actual.get(i);
-            boolean same = e.kind().equals(a.kind()) && e.end().distance(a.end()) <= tolMm
+            boolean same = e.kind().equals(a.kind())
+                    && e.end().distance(a.end()) <= tolMm
                     && Math.abs(e.seconds() - a.seconds()) <= 5e-4;
             if (same && e.kind().equals("arc")) {
                 Vec3 n = e.normal();

@@ -37,9 +37,12 @@ class NcPostsTest {
             if (line.startsWith("%_N_") || line.startsWith(";$PATH")) {
                 continue;
             }
-            String l = line.replace("G71 ", "G21 ").replace(" G60", " G61").replaceAll(" D1$", "")
+            String l = line.replace("G71 ", "G21 ")
+                    .replace(" G60", " G61")
+                    .replaceAll(" D1$", "")
                     .replaceAll("^(N\\d+ )?G4 F", "$1G4 P");
-            java.util.regex.Matcher m = java.util.regex.Pattern.compile("TURN=(\\d+)").matcher(l);
+            java.util.regex.Matcher m =
+                    java.util.regex.Pattern.compile("TURN=(\\d+)").matcher(l);
             if (m.find()) {
                 l = m.replaceFirst("P" + (Integer.parseInt(m.group(1)) + 1));
             }
@@ -101,14 +104,17 @@ class NcPostsTest {
 
     @Test
     void aSpindleStoppedOrReversedInASectionIsStartedAgainByTheNext() throws IOException {
-        List<String> lines = program("linuxcnc", SampleToolpaths.drilling()).lines().toList();
+        List<String> lines =
+                program("linuxcnc", SampleToolpaths.drilling()).lines().toList();
         int bore = lines.indexOf("(WS2 bore tool 4 D12.000)");
         int reversed = lines.indexOf("(WS3 reversed tool 4 D12.000)");
         int ws4 = lines.indexOf("(WS4 tool 4 D12.000)");
-        assertEquals(List.of("G4 P2.000", "M5", "G1 X50.000 Y20.000 Z5.000", "S800 M3", "G0 X50.000 Y20.000 Z30.000"),
+        assertEquals(
+                List.of("G4 P2.000", "M5", "G1 X50.000 Y20.000 Z5.000", "S800 M3", "G0 X50.000 Y20.000 Z30.000"),
                 lines.subList(lines.indexOf("G1 X50.000 Y20.000 Z-15.000 F80.0") + 1, reversed));
         // same tool and speed, spindle running clockwise: no new start for WS3's own speed, then M4
-        assertEquals(List.of("(WS3 reversed tool 4 D12.000)", "G0 X50.000 Y20.000 Z30.000", "S800 M4"),
+        assertEquals(
+                List.of("(WS3 reversed tool 4 D12.000)", "G0 X50.000 Y20.000 Z30.000", "S800 M4"),
                 lines.subList(reversed, reversed + 3));
         assertEquals(List.of("(WS4 tool 4 D12.000)", "S800 M3"), lines.subList(ws4, ws4 + 2));
         assertTrue(bore > 0);
@@ -132,19 +138,29 @@ class NcPostsTest {
         Rs274.Result r = Rs274.run(file, 10);
         assertEquals(0, r.exitStatus(), Rs274.log(r));
         List<Rs274.Canon> expected = ExpectedMotions.of(path, false, NcPosts.CHORD_TOLERANCE_MM);
-        assertEquals(2 + 1, expected.stream().filter(c -> c.kind().equals("dwell")).count());
+        assertEquals(
+                2 + 1, expected.stream().filter(c -> c.kind().equals("dwell")).count());
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
         // in the boring: dwell, stop, out at feed, start at 800 rpm, the rapid up; WS3's start, then M4
-        List<String> calls = r.stdout().lines().map(l -> l.replaceFirst("^\\s*\\d+\\s+N\\S+\\s+", ""))
+        List<String> calls = r.stdout()
+                .lines()
+                .map(l -> l.replaceFirst("^\\s*\\d+\\s+N\\S+\\s+", ""))
                 .filter(l -> l.matches("(DWELL|STOP_SPINDLE|START_SPINDLE|SET_SPINDLE_SPEED|STRAIGHT_).*"))
                 .toList();
         int at = calls.indexOf("DWELL(2.0000)");
-        assertEquals(List.of("DWELL(2.0000)", "STOP_SPINDLE_TURNING(0)",
-                "STRAIGHT_FEED(50.0000, 20.0000, 5.0000, 0.0000, 0.0000, 0.0000)", "SET_SPINDLE_SPEED(0, 800.0000)",
-                "START_SPINDLE_CLOCKWISE(0)", "STRAIGHT_TRAVERSE(50.0000, 20.0000, 30.0000, 0.0000, 0.0000, 0.0000)",
-                "STRAIGHT_TRAVERSE(50.0000, 20.0000, 30.0000, 0.0000, 0.0000, 0.0000)", "SET_SPINDLE_SPEED(0, 800.0000)",
-                "START_SPINDLE_COUNTERCLOCKWISE(0)"),
-                calls.subList(at, Math.min(calls.size(), at + 9)), String.join("\n", calls));
+        assertEquals(
+                List.of(
+                        "DWELL(2.0000)",
+                        "STOP_SPINDLE_TURNING(0)",
+                        "STRAIGHT_FEED(50.0000, 20.0000, 5.0000, 0.0000, 0.0000, 0.0000)",
+                        "SET_SPINDLE_SPEED(0, 800.0000)",
+                        "START_SPINDLE_CLOCKWISE(0)",
+                        "STRAIGHT_TRAVERSE(50.0000, 20.0000, 30.0000, 0.0000, 0.0000, 0.0000)",
+                        "STRAIGHT_TRAVERSE(50.0000, 20.0000, 30.0000, 0.0000, 0.0000, 0.0000)",
+                        "SET_SPINDLE_SPEED(0, 800.0000)",
+                        "START_SPINDLE_COUNTERCLOCKWISE(0)"),
+                calls.subList(at, Math.min(calls.size(), at + 9)),
+                String.join("\n", calls));
     }
 
     @Test
@@ -172,9 +188,13 @@ class NcPostsTest {
     @Test
     void aTiltedArcIsReplacedByChordsWithinTheTolerance() throws IOException {
         String text = program("linuxcnc", SampleToolpaths.mixed());
-        // the tilted half circle of radius 5 at 0.001 mm needs ceil(pi / (2 acos(1 - 0.001 / 5))) = ceil(78.5) = 79 chords
-        long g1InWs2 = text.lines().dropWhile(l -> !l.startsWith("(WS2")).takeWhile(l -> !l.startsWith("(WS3"))
-                .filter(l -> l.startsWith("G1 ")).count();
+        // the tilted half circle of radius 5 at 0.001 mm needs
+        // ceil(pi / (2 acos(1 - 0.001 / 5))) = ceil(78.5) = 79 chords
+        long g1InWs2 = text.lines()
+                .dropWhile(l -> !l.startsWith("(WS2"))
+                .takeWhile(l -> !l.startsWith("(WS3"))
+                .filter(l -> l.startsWith("G1 "))
+                .count();
         assertEquals(1 + 79, g1InWs2);
     }
 }

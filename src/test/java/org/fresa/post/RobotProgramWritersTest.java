@@ -42,7 +42,8 @@ class RobotProgramWritersTest {
     @Test
     void everyFormatCarriesTheTrajectoryJointsToAMillionthOfADegree() throws IOException {
         RobotProgram p = RobotProgramsForTest.sample();
-        for (String text : List.of(write(new RapidWriter(RobotProgramsForTest.FRONT_UPPER)),
+        for (String text : List.of(
+                write(new RapidWriter(RobotProgramsForTest.FRONT_UPPER)),
                 write(new KrlWriter(RobotProgramsForTest.FRONT_UPPER)))) {
             List<double[]> joints = jointsIn(text);
             assertEquals(p.motions().size(), joints.size());
@@ -79,10 +80,12 @@ class RobotProgramWritersTest {
         RobotProgram.Motion plus = linear(List.of(1e-16, 10.0, -20.0, 1e-16, 1e-16, 1e-16), 1, 0);
         RobotProgram.Motion minus = linear(List.of(-1e-16, 10.0, -20.0, -1e-16, -1e-16, -1e-16), 1, 0);
         assertAll(
-                () -> assertEquals(RapidWriter.confdata(plus, RobotProgramsForTest.FRONT_UPPER),
+                () -> assertEquals(
+                        RapidWriter.confdata(plus, RobotProgramsForTest.FRONT_UPPER),
                         RapidWriter.confdata(minus, RobotProgramsForTest.FRONT_UPPER)),
                 () -> assertEquals(KrlWriter.turn(plus), KrlWriter.turn(minus)),
-                () -> assertEquals(KrlWriter.status(plus, RobotProgramsForTest.FRONT_UPPER),
+                () -> assertEquals(
+                        KrlWriter.status(plus, RobotProgramsForTest.FRONT_UPPER),
                         KrlWriter.status(minus, RobotProgramsForTest.FRONT_UPPER)),
                 () -> assertEquals(-1, RapidWriter.quarter(-1e-6)));
     }
@@ -99,19 +102,34 @@ class RobotProgramWritersTest {
         StringWriter krl = new StringWriter();
         new KrlWriter(RobotProgramsForTest.FRONT_UPPER).write(p, krl);
         assertAll(
-                () -> assertTrue(rapid.toString().contains(",fine,tFresa1\\WObj:=wFresa; ! j=[3.000000,13.500000,"
-                        + "-20.500000,-0.500000,31.000000,359.900000] ! 4\n    WaitTime \\InPos, 0.500;\n"),
+                () -> assertTrue(
+                        rapid.toString()
+                                .contains(
+                                        ",fine,tFresa1\\WObj:=wFresa; ! j=[3.000000,13.500000,"
+                                                + "-20.500000,-0.500000,31.000000,359.900000] ! 4\n    WaitTime \\InPos, 0.500;\n"),
                         rapid::toString),
-                () -> assertTrue(rapid.toString().contains(",z1,tFresa1\\WObj:=wFresa; ! j=[3.000000,13.500000,"
-                        + "-20.500000,-0.500000,31.000000,359.900000] ! 5\n"), rapid::toString),
+                () -> assertTrue(
+                        rapid.toString()
+                                .contains(",z1,tFresa1\\WObj:=wFresa; ! j=[3.000000,13.500000,"
+                                        + "-20.500000,-0.500000,31.000000,359.900000] ! 5\n"),
+                        rapid::toString),
                 () -> assertTrue(krl.toString().contains(" ; 4\nWAIT SEC 0.500\n"), krl::toString),
                 () -> assertTrue(krl.toString().contains("$APO.CDIS = 1.000\n"), krl::toString));
     }
 
     private static RobotProgram.Motion linear(List<Double> q, double zoneMm, double dwellS) {
         int index = dwellS > 0 ? 4 : 5;
-        return new RobotProgram.Motion(index, "WS 2", RobotProgram.MotionType.LINEAR, RobotProgram.PointRole.PART,
-                q, Transform3.rotY(180), 5, zoneMm, dwellS, 0);
+        return new RobotProgram.Motion(
+                index,
+                "WS 2",
+                RobotProgram.MotionType.LINEAR,
+                RobotProgram.PointRole.PART,
+                q,
+                Transform3.rotY(180),
+                5,
+                zoneMm,
+                dwellS,
+                0);
     }
 
     /** The joint values of every move: MoveAbsJ/PTP axis values, or the j=[...] of linear moves. */

@@ -26,14 +26,15 @@ public final class Rs274 {
     /** The one beside the checkout, a fallback only. */
     static final Path SHARED = Path.of("../shared/tools/rs274");
 
-    private static final Pattern CALL = Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE|DWELL)\\((.*)\\)");
+    private static final Pattern CALL =
+            Pattern.compile("(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SELECT_PLANE|DWELL)\\((.*)\\)");
 
     /** The script to run, or null; and why not, when null. Decided once per test JVM. */
     private static Path tool;
+
     private static String whyNot;
 
-    private Rs274() {
-    }
+    private Rs274() {}
 
     /**
      * Whether an interpreter can run here: {@code tools/rs274 --fetch} sets ours up (the first
@@ -66,13 +67,17 @@ public final class Rs274 {
         try {
             Path log = Files.createTempFile("rs274-fetch", ".txt");
             try {
-                Process p = new ProcessBuilder(script.toString(), "--fetch").redirectErrorStream(true)
-                        .redirectOutput(log.toFile()).start();
+                Process p = new ProcessBuilder(script.toString(), "--fetch")
+                        .redirectErrorStream(true)
+                        .redirectOutput(log.toFile())
+                        .start();
                 if (!p.waitFor(10, TimeUnit.MINUTES)) {
                     p.destroyForcibly();
                     return script + " --fetch took more than 10 minutes";
                 }
-                return p.exitValue() == 0 ? null : Files.readString(log, StandardCharsets.UTF_8).strip();
+                return p.exitValue() == 0
+                        ? null
+                        : Files.readString(log, StandardCharsets.UTF_8).strip();
             } finally {
                 Files.deleteIfExists(log);
             }
@@ -85,8 +90,7 @@ public final class Rs274 {
     }
 
     /** What the interpreter did with a program. */
-    public record Result(int exitStatus, String stdout, String stderr, List<Canon> motions) {
-    }
+    public record Result(int exitStatus, String stdout, String stderr, List<Canon> motions) {}
 
     /**
      * One canonical motion. For arcs, centre is the axis point at the start's height along the
@@ -123,7 +127,8 @@ public final class Rs274 {
         return r.exitStatus() != 0 && CRASH.matcher(r.stderr()).find();
     }
 
-    private static final Pattern CRASH = Pattern.compile("Bus error|Segmentation fault|core dumped|Aborted|Illegal instruction");
+    private static final Pattern CRASH =
+            Pattern.compile("Bus error|Segmentation fault|core dumped|Aborted|Illegal instruction");
 
     private static Result runOnce(Path program, double toolDiameterMm) throws IOException, InterruptedException {
         Path outFile = Files.createTempFile("rs274", ".out");
@@ -138,7 +143,9 @@ public final class Rs274 {
             }
             cmd.add(program.toString());
             Process p = new ProcessBuilder(cmd)
-                    .redirectOutput(outFile.toFile()).redirectError(errFile.toFile()).start();
+                    .redirectOutput(outFile.toFile())
+                    .redirectError(errFile.toFile())
+                    .start();
             if (!p.waitFor(120, TimeUnit.SECONDS)) {
                 p.destroyForcibly();
                 throw new IOException("rs274 did not finish");
@@ -169,11 +176,23 @@ public final class Rs274 {
             String[] a = m.group(2).split(",\\s*");
             switch (m.group(1)) {
                 case "SELECT_PLANE" -> plane = a[0].trim();
-                case "DWELL" -> list.add(new Canon("dwell", list.isEmpty() ? Vec3.ZERO : list.get(list.size() - 1).end(),
-                        null, null, 0, d(a[0])));
-                case "STRAIGHT_TRAVERSE", "STRAIGHT_FEED" -> list.add(new Canon(
-                        m.group(1).equals("STRAIGHT_FEED") ? "feed" : "rapid",
-                        new Vec3(d(a[0]), d(a[1]), d(a[2])), null, null, 0));
+                case "DWELL" ->
+                    list.add(new Canon(
+                            "dwell",
+                            list.isEmpty()
+                                    ? Vec3.ZERO
+                                    : list.get(list.size() - 1).end(),
+                            null,
+                            null,
+                            0,
+                            d(a[0])));
+                case "STRAIGHT_TRAVERSE", "STRAIGHT_FEED" ->
+                    list.add(new Canon(
+                            m.group(1).equals("STRAIGHT_FEED") ? "feed" : "rapid",
+                            new Vec3(d(a[0]), d(a[1]), d(a[2])),
+                            null,
+                            null,
+                            0));
                 default -> {
                     double e1 = d(a[0]);
                     double e2 = d(a[1]);

@@ -10,8 +10,7 @@ import org.fresa.model.ToolpathSection;
 /** Toolpaths that exercise every kind of move a post must write. */
 final class SampleToolpaths {
 
-    private SampleToolpaths() {
-    }
+    private SampleToolpaths() {}
 
     static Vec3 v(double x, double y, double z) {
         return new Vec3(x, y, z);

@@ -15,8 +15,11 @@ import org.junit.jupiter.api.Test;
 class SheetCuttingPostTest {
 
     static Toolpath cut(Move extra) {
-        List<Move> moves = List.of(new Move.Rapid(new Vec3(10, 0, 0)), new Move.Linear(new Vec3(20, 0, 0), 1000),
-                extra, new Move.Linear(new Vec3(20, 10, 0), 1000));
+        List<Move> moves = List.of(
+                new Move.Rapid(new Vec3(10, 0, 0)),
+                new Move.Linear(new Vec3(20, 0, 0), 1000),
+                extra,
+                new Move.Linear(new Vec3(20, 10, 0), 1000));
         return new Toolpath(List.of(new ToolpathSection("c1", Vec3.UNIT_Z, 2, 1, 0, Vec3.ZERO, moves)));
     }
 
@@ -30,10 +33,13 @@ class SheetCuttingPostTest {
     @Test
     void aDwellInACutIsWrittenWithTheDialectsDwellWord() throws Exception {
         String text = program(cut(new Move.Dwell(new Vec3(20, 0, 0), 1.5)), CuttingPost.LINUXCNC);
-        List<String> lines = text.lines().map(l -> l.replaceFirst("^N\\d+ ", "")).toList();
+        List<String> lines =
+                text.lines().map(l -> l.replaceFirst("^N\\d+ ", "")).toList();
         int at = lines.indexOf("G4 P1.5");
         assertEquals("G1 X20 Y10", lines.get(at + 1).replaceFirst(" F.*", ""), text);
-        assertEquals(List.of("M64 P0"), lines.stream().filter(l -> l.startsWith("M64")).toList());
+        assertEquals(
+                List.of("M64 P0"),
+                lines.stream().filter(l -> l.startsWith("M64")).toList());
         String fanuc = program(cut(new Move.Dwell(new Vec3(20, 0, 0), 1.5)), CuttingPost.FANUC);
         assertEquals(1, fanuc.lines().filter(l -> l.endsWith("G04 X1.500")).count(), fanuc);
         // iso as the milling iso post: X in seconds, never P (milliseconds on Fanuc-like controls)
@@ -44,7 +50,8 @@ class SheetCuttingPostTest {
 
     @Test
     void aSheetCuttingHeadHasNoSpindleToStop() {
-        assertThrows(IllegalArgumentException.class,
+        assertThrows(
+                IllegalArgumentException.class,
                 () -> program(cut(new Move.SpindleStop(new Vec3(20, 0, 0))), CuttingPost.LINUXCNC));
     }
 }

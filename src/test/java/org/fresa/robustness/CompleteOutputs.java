@@ -14,15 +14,16 @@ import org.fresa.model.CamInputException;
 /** Checks that the grading files under final names are whole, for the interruption tests. */
 public final class CompleteOutputs {
 
-    private CompleteOutputs() {
-    }
+    private CompleteOutputs() {}
 
     /** The final-named files of the folder that are truncated or unreadable (empty when all are whole). */
     public static List<String> incomplete(Path dir) throws IOException {
         List<String> bad = new ArrayList<>();
         List<Path> files;
         try (Stream<Path> s = Files.list(dir)) {
-            files = s.filter(p -> !p.getFileName().toString().startsWith(".")).sorted().toList();
+            files = s.filter(p -> !p.getFileName().toString().startsWith("."))
+                    .sorted()
+                    .toList();
         }
         for (Path f : files) {
             String name = f.getFileName().toString();

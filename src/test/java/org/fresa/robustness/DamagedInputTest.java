@@ -48,14 +48,32 @@ class DamagedInputTest {
 
     static Stream<Arguments> cases() {
         List<Case> all = List.of(
-                new Case("stepnc", Path.of("samples/stepnc/example2.stp"), ".stp",
-                        List.of("stepnc", "IN", "--json")),
-                new Case("pocket-dad", Path.of("samples/pocket/cavity03.dad"), ".dad",
+                new Case("stepnc", Path.of("samples/stepnc/example2.stp"), ".stp", List.of("stepnc", "IN", "--json")),
+                new Case(
+                        "pocket-dad",
+                        Path.of("samples/pocket/cavity03.dad"),
+                        ".dad",
                         List.of("pocket", "IN", "--out", "OUT/p.nc", "--tool-diameter", "6")),
-                new Case("cut-dxf", Path.of("samples/cutting/plate.dxf"), ".dxf",
+                new Case(
+                        "cut-dxf",
+                        Path.of("samples/cutting/plate.dxf"),
+                        ".dxf",
                         List.of("cut", "IN", "--out", "OUT/c.ngc")),
-                new Case("grade-contour", Path.of("samples/grading/sole-40.contour"), ".contour",
-                        List.of("grade", "IN", "--out", "OUT", "--base-size", "40", "--sizes", "39-41", "--system", "br")));
+                new Case(
+                        "grade-contour",
+                        Path.of("samples/grading/sole-40.contour"),
+                        ".contour",
+                        List.of(
+                                "grade",
+                                "IN",
+                                "--out",
+                                "OUT",
+                                "--base-size",
+                                "40",
+                                "--sizes",
+                                "39-41",
+                                "--system",
+                                "br")));
         List<Arguments> out = new ArrayList<>();
         for (Case c : all) {
             for (String damage : List.of("truncated", "bytes", "numbers", "shuffled")) {
@@ -86,8 +104,10 @@ class DamagedInputTest {
             StringWriter so = new StringWriter();
             StringWriter se = new StringWriter();
             long t0 = System.nanoTime();
-            int status = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> FresaCommand.execute(
-                    new PrintWriter(so, true), new PrintWriter(se, true), args.toArray(String[]::new)),
+            int status = assertTimeoutPreemptively(
+                    Duration.ofSeconds(30),
+                    () -> FresaCommand.execute(
+                            new PrintWriter(so, true), new PrintWriter(se, true), args.toArray(String[]::new)),
                     c + " " + damage + " #" + i + " hangs");
             long ms = (System.nanoTime() - t0) / 1_000_000;
             maxMs = Math.max(maxMs, ms);
@@ -98,13 +118,16 @@ class DamagedInputTest {
             }
             List<String> nonFinite = HostileCliTest.nonFinite(files, so.toString());
             String what = c + " " + damage + " #" + i + ": status " + status + ", stderr: " + se;
-            assertAll(what,
+            assertAll(
+                    what,
                     () -> assertTrue(status == 0 || status == 1 || status == 2),
                     () -> assertFalse(se.toString().contains("\tat "), "no stack trace"),
                     () -> assertFalse(se.toString().contains("internal error"), "no internal error"),
                     () -> assertTrue(status != 2 || files.isEmpty(), "nothing written for refused input: " + files),
-                    () -> assertTrue(files.stream().noneMatch(f -> f.getFileName().toString()
-                            .startsWith(AtomicFiles.TEMP_PREFIX)), "no temporary file left"),
+                    () -> assertTrue(
+                            files.stream()
+                                    .noneMatch(f -> f.getFileName().toString().startsWith(AtomicFiles.TEMP_PREFIX)),
+                            "no temporary file left"),
                     () -> assertTrue(nonFinite.isEmpty(), "no NaN or Infinity in " + nonFinite));
         }
         // the measured figures, for the issue's acceptance (surefire keeps them in the test's output file)
@@ -127,7 +150,8 @@ class DamagedInputTest {
             case "numbers": {
                 String s = new String(original, StandardCharsets.ISO_8859_1);
                 String[] huge = {"1e308", "-1e308", "NaN", "Infinity", "99999999999999999999", "0", "-0", "1e-320"};
-                java.util.regex.Matcher m = java.util.regex.Pattern.compile("-?\\d+\\.\\d*").matcher(s);
+                java.util.regex.Matcher m =
+                        java.util.regex.Pattern.compile("-?\\d+\\.\\d*").matcher(s);
                 StringBuilder sb = new StringBuilder();
                 while (m.find()) {
                     m.appendReplacement(sb, rnd.nextInt(12) == 0 ? huge[rnd.nextInt(huge.length)] : m.group());
@@ -136,8 +160,8 @@ class DamagedInputTest {
                 return sb.toString().getBytes(StandardCharsets.ISO_8859_1);
             }
             case "shuffled": {
-                List<String> lines = new ArrayList<>(List.of(new String(original, StandardCharsets.ISO_8859_1)
-                        .split("\n", -1)));
+                List<String> lines =
+                        new ArrayList<>(List.of(new String(original, StandardCharsets.ISO_8859_1).split("\n", -1)));
                 int swaps = 1 + rnd.nextInt(5);
                 for (int k = 0; k < swaps && lines.size() > 1; k++) {
                     Collections.swap(lines, rnd.nextInt(lines.size()), rnd.nextInt(lines.size()));

@@ -31,8 +31,19 @@ class FolderLockProcessTest {
     Path dir;
 
     private static String[] grade(Path out, String sizes) {
-        return new String[] {"grade", "samples/grading/sole-40.contour", "--out", out.toString(), "--base-size", "40",
-            "--sizes", sizes, "--half-sizes", "--system", "br"};
+        return new String[] {
+            "grade",
+            "samples/grading/sole-40.contour",
+            "--out",
+            out.toString(),
+            "--base-size",
+            "40",
+            "--sizes",
+            sizes,
+            "--half-sizes",
+            "--system",
+            "br"
+        };
     }
 
     private static int run(StringWriter err, String... args) {
@@ -44,17 +55,25 @@ class FolderLockProcessTest {
     void aSecondRunIntoABusyFolderIsRefusedAndTheFolderIsFreeAfterTheFirstIsKilled(String signal) throws Exception {
         Path out = Files.createDirectories(dir.resolve("out"));
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new ArrayList<>(List.of(java, "-Xmx256m", "-Djava.awt.headless=true", "-cp",
-                System.getProperty("java.class.path"), "org.fresa.app.Main"));
+        List<String> cmd = new ArrayList<>(List.of(
+                java,
+                "-Xmx256m",
+                "-Djava.awt.headless=true",
+                "-cp",
+                System.getProperty("java.class.path"),
+                "org.fresa.app.Main"));
         cmd.addAll(List.of(grade(out, "17-50")));
-        Process first = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile())
+        Process first = new ProcessBuilder(cmd)
+                .redirectErrorStream(true)
+                .redirectOutput(dir.resolve("log").toFile())
                 .start();
         Path lock = out.resolve(FolderLock.FILE_NAME);
         StringWriter err = new StringWriter();
         int second;
         try {
             long until = System.currentTimeMillis() + 120_000;
-            while (first.isAlive() && System.currentTimeMillis() < until
+            while (first.isAlive()
+                    && System.currentTimeMillis() < until
                     && !(Files.exists(lock) && InterruptionTest.names(out).size() >= 4)) {
                 Thread.sleep(5);
             }
@@ -72,20 +91,27 @@ class FolderLockProcessTest {
         }
         String e = err.toString();
         List<String> afterKill = InterruptionTest.names(out);
-        assertAll(e, () -> assertEquals(1, second, "the second run is refused"),
+        assertAll(
+                e,
+                () -> assertEquals(1, second, "the second run is refused"),
                 () -> assertTrue(e.contains("another Fresa run (process " + first.pid()), "names the first run"),
-                () -> assertFalse(afterKill.contains("program.ngc") || afterKill.contains("summary.json"),
+                () -> assertFalse(
+                        afterKill.contains("program.ngc") || afterKill.contains("summary.json"),
                         "the refused job wrote nothing: " + afterKill),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(out), "final-named files are complete"),
-                () -> assertTrue(signal.equals("SIGKILL") || !afterKill.contains(FolderLock.FILE_NAME),
+                () -> assertTrue(
+                        signal.equals("SIGKILL") || !afterKill.contains(FolderLock.FILE_NAME),
                         "SIGTERM removes the lock file: " + afterKill),
-                () -> assertTrue(signal.equals("SIGKILL") || InterruptionTest.temporaries(out).isEmpty(),
+                () -> assertTrue(
+                        signal.equals("SIGKILL")
+                                || InterruptionTest.temporaries(out).isEmpty(),
                         "SIGTERM leaves no temporary file: " + afterKill));
 
         // the folder is free again: a SIGKILL's leftover lock file is taken over
         StringWriter err2 = new StringWriter();
         int third = run(err2, grade(out, "40-40"));
-        assertAll(() -> assertEquals(0, third, err2.toString()),
+        assertAll(
+                () -> assertEquals(0, third, err2.toString()),
                 () -> assertFalse(Files.exists(lock), "the lock file goes with the run"),
                 () -> assertTrue(Files.exists(out.resolve("grading.csv"))));
     }

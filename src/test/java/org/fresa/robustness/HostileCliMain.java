@@ -16,8 +16,7 @@ import org.fresa.app.cli.FresaCommand;
  */
 public final class HostileCliMain {
 
-    private HostileCliMain() {
-    }
+    private HostileCliMain() {}
 
     public static void main(String[] args) throws Exception {
         List<String> lines = Files.readAllLines(Path.of(args[0]));
@@ -28,11 +27,11 @@ public final class HostileCliMain {
             StringWriter so = new StringWriter();
             StringWriter se = new StringWriter();
             long t0 = System.nanoTime();
-            int status = FresaCommand.execute(new PrintWriter(so, true), new PrintWriter(se, true),
-                    cli.toArray(String[]::new));
+            int status = FresaCommand.execute(
+                    new PrintWriter(so, true), new PrintWriter(se, true), cli.toArray(String[]::new));
             long ms = (System.nanoTime() - t0) / 1_000_000;
-            out.println(f[0] + "\t" + status + "\t" + ms + "\t" + se.toString().replaceAll("[\t\r\n]+", " ")
-                    + " | " + so.toString().replaceAll("[\t\r\n]+", " "));
+            out.println(f[0] + "\t" + status + "\t" + ms + "\t" + se.toString().replaceAll("[\t\r\n]+", " ") + " | "
+                    + so.toString().replaceAll("[\t\r\n]+", " "));
         }
         out.println("END");
     }

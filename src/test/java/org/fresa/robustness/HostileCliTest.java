@@ -1,6 +1,5 @@
 package org.fresa.robustness;
 
-import static org.fresa.robustness.HostileFiles.LINE;
 import static org.fresa.robustness.HostileFiles.contour;
 import static org.fresa.robustness.HostileFiles.dxf;
 import static org.fresa.robustness.HostileFiles.example2With;
@@ -46,8 +45,7 @@ class HostileCliTest {
     Path dir;
 
     /** One command: the file it reads, its arguments (IN, OUT replaced), the status wanted (-1: any) and words. */
-    record Case(String name, String fileName, String content, List<String> args, int status, String words) {
-    }
+    record Case(String name, String fileName, String content, List<String> args, int status, String words) {}
 
     static List<String> pocket() {
         return List.of("pocket", "IN", "--out", "OUT/p.ngc", "--tool-diameter", "6");
@@ -73,16 +71,38 @@ class HostileCliTest {
         List<Case> c = new ArrayList<>();
         // ---- Part 21 / ISO 14649: counts, nesting, cycles
         c.add(new Case("p21-20-digit-name", "a.stp", part21("#12345678901234567890=X(1);\n"), stepnc(), 2, "line 8"));
-        c.add(new Case("p21-100000-parens", "a.stp", part21("#1=X(" + nested("(", "", ")", 100_000) + ");\n"),
-                toolpath(), 2, "nested more than"));
-        c.add(new Case("p21-100000-typed", "a.stp", part21("#1=X(" + nested("A(", "1", ")", 100_000) + ");\n"),
-                stepnc(), 2, "nested more than"));
-        c.add(new Case("p21-254-lists", "a.stp", part21("#1=X(" + nested("(", "", ")", 254) + ");\n"), stepnc(), 0, ""));
+        c.add(new Case(
+                "p21-100000-parens",
+                "a.stp",
+                part21("#1=X(" + nested("(", "", ")", 100_000) + ");\n"),
+                toolpath(),
+                2,
+                "nested more than"));
+        c.add(new Case(
+                "p21-100000-typed",
+                "a.stp",
+                part21("#1=X(" + nested("A(", "1", ")", 100_000) + ");\n"),
+                stepnc(),
+                2,
+                "nested more than"));
+        c.add(new Case(
+                "p21-254-lists", "a.stp", part21("#1=X(" + nested("(", "", ")", 254) + ");\n"), stepnc(), 0, ""));
         c.add(new Case("p21-self-ref", "a.stp", part21("#1=X(#1);\n"), toolpath(), -1, ""));
-        c.add(new Case("p21-workplan-self", "a.stp", part21("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#2),$,$,$);\n"),
-                toolpath(), 2, "contains itself"));
-        c.add(new Case("p21-workplan-cycle", "a.stp", part21("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#3),$,$,$);\n"
-                + "#3=WORKPLAN('v',(#2),$,$,$);\n"), stepnc(), 2, "contains itself"));
+        c.add(new Case(
+                "p21-workplan-self",
+                "a.stp",
+                part21("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#2),$,$,$);\n"),
+                toolpath(),
+                2,
+                "contains itself"));
+        c.add(new Case(
+                "p21-workplan-cycle",
+                "a.stp",
+                part21("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#3),$,$,$);\n"
+                        + "#3=WORKPLAN('v',(#2),$,$,$);\n"),
+                stepnc(),
+                2,
+                "contains itself"));
         c.add(new Case("p21-workplans-5000-deep", "a.stp", HostileFiles.workplanChain(5000), toolpath(), 2, "nested"));
         c.add(new Case("p21-workplans-99-deep", "a.stp", HostileFiles.workplanChain(99), stepnc(), 0, ""));
         // ---- STEP-NC numeric hazards into the toolpath
@@ -90,39 +110,87 @@ class HostileCliTest {
         String tool = "#29=MILLING_TOOL_DIMENSION(10.0,";
         String pocketWidth = "#40=TOLERANCED_LENGTH_MEASURE(20.0,";
         for (String v : List.of("1.E308", "-1.E308", "1.E15")) {
-            c.add(new Case("stepnc-point-" + v, "a.stp", example2With(point, "#4=CARTESIAN_POINT('',(" + v + ",0.0,0.0));"),
-                    toolpath(), 2, "out of range"));
+            c.add(new Case(
+                    "stepnc-point-" + v,
+                    "a.stp",
+                    example2With(point, "#4=CARTESIAN_POINT('',(" + v + ",0.0,0.0));"),
+                    toolpath(),
+                    2,
+                    "out of range"));
         }
         for (String v : List.of("0.", "-5.", "1.E-320", "1.E15", "1.E308")) {
-            c.add(new Case("stepnc-tool-" + v, "a.stp", example2With(tool, "#29=MILLING_TOOL_DIMENSION(" + v + ","),
-                    toolpath(), -1, ""));
-            c.add(new Case("stepnc-width-" + v, "a.stp", example2With(pocketWidth, "#40=TOLERANCED_LENGTH_MEASURE(" + v
-                    + ","), toolpath(), -1, ""));
+            c.add(new Case(
+                    "stepnc-tool-" + v,
+                    "a.stp",
+                    example2With(tool, "#29=MILLING_TOOL_DIMENSION(" + v + ","),
+                    toolpath(),
+                    -1,
+                    ""));
+            c.add(new Case(
+                    "stepnc-width-" + v,
+                    "a.stp",
+                    example2With(pocketWidth, "#40=TOLERANCED_LENGTH_MEASURE(" + v + ","),
+                    toolpath(),
+                    -1,
+                    ""));
         }
         // ---- DXF: counts, nesting, cycles, numbers, through cut, pocket and grade
         String square = HostileFiles.lwpolyline("", new double[][] {{0, 0}, {100, 0}, {100, 100}, {0, 100}}, null);
         Map<String, String> drawings = new LinkedHashMap<>();
-        drawings.put("lwpolyline-90-1e9", HostileFiles.lwpolyline("90\n1000000000\n",
-                new double[][] {{0, 0}, {100, 0}, {100, 100}, {0, 100}}, null));
-        drawings.put("insert-self", dxf(List.<String[]>of(new String[] {"A", square + insert("A", 0)}), insert("A", 0)));
-        drawings.put("insert-cycle", dxf(List.of(new String[] {"A", square + insert("B", 0)},
-                new String[] {"B", insert("A", 0)}), insert("A", 0)));
+        drawings.put(
+                "lwpolyline-90-1e9",
+                HostileFiles.lwpolyline(
+                        "90\n1000000000\n", new double[][] {{0, 0}, {100, 0}, {100, 100}, {0, 100}}, null));
+        drawings.put(
+                "insert-self", dxf(List.<String[]>of(new String[] {"A", square + insert("A", 0)}), insert("A", 0)));
+        drawings.put(
+                "insert-cycle",
+                dxf(
+                        List.of(new String[] {"A", square + insert("B", 0)}, new String[] {"B", insert("A", 0)}),
+                        insert("A", 0)));
         drawings.put("blocks-20000-deep", dxf(fanOut(20_000, 1, square), insert("B0", 0)));
         drawings.put("inserts-10-pow-15", dxf(fanOut(15, 10, ""), insert("B0", 0)));
         drawings.put("inserts-undefined-10-pow-4", dxf(fanOut(4, 10, null), insert("B0", 0)));
-        drawings.put("ellipse-u0-1e300", dxf(List.of(), "0\nELLIPSE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n40\n0.5\n41\n1e300\n42\n0\n"));
-        drawings.put("huge-lines", dxf(List.of(), HostileFiles.line("-1e308", "0", "1e308", "0")
-                + HostileFiles.line("1e308", "0", "1e308", "1e308") + HostileFiles.line("1e308", "1e308", "-1e308", "0")));
-        drawings.put("degenerate-arcs", dxf(List.of(), "0\nARC\n8\n0\n10\n0\n20\n0\n40\n0\n50\n0\n51\n90\n"
-                + "0\nARC\n8\n0\n10\n0\n20\n0\n40\n-5\n50\n0\n51\n90\n" + HostileFiles.line("0", "0", "0", "0")
-                + "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n1e-300\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\nNaN\n"
-                + "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\nInfinity\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n40\n"));
-        drawings.put("bulges", dxf(List.of(), HostileFiles.lwpolyline("", new double[][] {{0, 0}, {100, 0}, {100, 100}, {0, 100}},
-                new double[] {1e308, 1e-300, -1e200, 0})));
-        drawings.put("near-parallel", dxf(List.of(), HostileFiles.lwpolyline("",
-                new double[][] {{0, 0}, {100, 0}, {100, 1e-9}, {0, 2e-9}}, null)));
-        drawings.put("coincident-points", dxf(List.of(), HostileFiles.lwpolyline("",
-                new double[][] {{0, 0}, {0, 0}, {100, 0}, {100, 0}, {100, 100}, {0, 100}, {0, 100}}, null)));
+        drawings.put(
+                "ellipse-u0-1e300",
+                dxf(List.of(), "0\nELLIPSE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n40\n0.5\n41\n1e300\n42\n0\n"));
+        drawings.put(
+                "huge-lines",
+                dxf(
+                        List.of(),
+                        HostileFiles.line("-1e308", "0", "1e308", "0")
+                                + HostileFiles.line("1e308", "0", "1e308", "1e308")
+                                + HostileFiles.line("1e308", "1e308", "-1e308", "0")));
+        drawings.put(
+                "degenerate-arcs",
+                dxf(
+                        List.of(),
+                        "0\nARC\n8\n0\n10\n0\n20\n0\n40\n0\n50\n0\n51\n90\n"
+                                + "0\nARC\n8\n0\n10\n0\n20\n0\n40\n-5\n50\n0\n51\n90\n"
+                                + HostileFiles.line("0", "0", "0", "0")
+                                + "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n1e-300\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\nNaN\n"
+                                + "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\nInfinity\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n40\n"));
+        drawings.put(
+                "bulges",
+                dxf(
+                        List.of(),
+                        HostileFiles.lwpolyline(
+                                "",
+                                new double[][] {{0, 0}, {100, 0}, {100, 100}, {0, 100}},
+                                new double[] {1e308, 1e-300, -1e200, 0})));
+        drawings.put(
+                "near-parallel",
+                dxf(
+                        List.of(),
+                        HostileFiles.lwpolyline("", new double[][] {{0, 0}, {100, 0}, {100, 1e-9}, {0, 2e-9}}, null)));
+        drawings.put(
+                "coincident-points",
+                dxf(
+                        List.of(),
+                        HostileFiles.lwpolyline(
+                                "",
+                                new double[][] {{0, 0}, {0, 0}, {100, 0}, {100, 0}, {100, 100}, {0, 100}, {0, 100}},
+                                null)));
         drawings.put("polygon-30000", dxf(List.of(), HostileFiles.lwpolyline("", polygon(30_000, 100), null)));
         for (var d : drawings.entrySet()) {
             String text = d.getValue().startsWith("0\nSECTION") ? d.getValue() : dxf(List.of(), d.getValue());
@@ -132,31 +200,59 @@ class HostileCliTest {
                 c.add(new Case("pocket-" + d.getKey(), "a.dxf", text, pocket(), -1, ""));
             }
         }
-        c.add(new Case("grade-dxf-polygon-30000", "a.dxf", dxf(List.of(), HostileFiles.lwpolyline("", polygon(30_000, 100), null)),
-                grade(), 2, "at most 20000"));
+        c.add(new Case(
+                "grade-dxf-polygon-30000",
+                "a.dxf",
+                dxf(List.of(), HostileFiles.lwpolyline("", polygon(30_000, 100), null)),
+                grade(),
+                2,
+                "at most 20000"));
         // ---- contours: huge, tiny, slivers, near-parallel, many elements
         Map<String, double[][]> contours = new LinkedHashMap<>();
         contours.put("square-2e9", new double[][] {{-1e9, -1e9}, {-1e9, 1e9}, {1e9, 1e9}, {1e9, -1e9}});
         contours.put("square-1e-5", new double[][] {{0, 0}, {0, 1e-5}, {1e-5, 1e-5}, {1e-5, 0}});
         contours.put("sliver", new double[][] {{0, 0}, {50, 1e-5}, {100, 0}});
         contours.put("near-parallel", new double[][] {{0, 0}, {0, 2e-7}, {100, 1e-7}, {100, 0}});
-        contours.put("spike", new double[][] {{0, 0}, {0, 10}, {5, 10}, {5.000001, 1e6}, {5, 10.000001}, {10, 10}, {10, 0}});
+        contours.put(
+                "spike", new double[][] {{0, 0}, {0, 10}, {5, 10}, {5.000001, 1e6}, {5, 10.000001}, {10, 10}, {10, 0}});
         contours.put("bow-tie", new double[][] {{0, 0}, {10, 10}, {10, 0}, {0, 10}});
         contours.put("polygon-20000", polygon(20_000, 100));
         for (var k : contours.entrySet()) {
             c.add(new Case("pocket-contour-" + k.getKey(), "a.contour", contour(k.getValue()), pocket(), -1, ""));
             c.add(new Case("grade-contour-" + k.getKey(), "a.contour", contour(k.getValue()), grade(), -1, ""));
         }
-        c.add(new Case("pocket-contour-NaN", "a.contour", "contour\nmove 0 0\nline NaN 0\nline 0 10\nline 0 0\n", pocket(), 2,
+        c.add(new Case(
+                "pocket-contour-NaN",
+                "a.contour",
+                "contour\nmove 0 0\nline NaN 0\nline 0 10\nline 0 0\n",
+                pocket(),
+                2,
                 "out of range"));
-        c.add(new Case("pocket-contour-1e308", "a.contour", "contour\nmove 0 0\nline 1e308 0\nline 0 10\nline 0 0\n", pocket(), 2,
+        c.add(new Case(
+                "pocket-contour-1e308",
+                "a.contour",
+                "contour\nmove 0 0\nline 1e308 0\nline 0 10\nline 0 0\n",
+                pocket(),
+                2,
                 "out of range"));
-        c.add(new Case("pocket-arc-zero-radius", "a.contour", "contour\nmove 0 0\narc 0 0 0 0 ccw\n", pocket(), 2, "zero"));
-        c.add(new Case("pocket-zero-length-line", "a.contour", "contour\nmove 0 0\nline 0 0\nline 10 0\nline 0 0\n", pocket(), 2,
+        c.add(new Case(
+                "pocket-arc-zero-radius", "a.contour", "contour\nmove 0 0\narc 0 0 0 0 ccw\n", pocket(), 2, "zero"));
+        c.add(new Case(
+                "pocket-zero-length-line",
+                "a.contour",
+                "contour\nmove 0 0\nline 0 0\nline 10 0\nline 0 0\n",
+                pocket(),
+                2,
                 "zero-length"));
-        c.add(new Case("pocket-square-2e9-pass-budget", "a.contour", contour(contours.get("square-2e9")), pocket(), 1,
+        c.add(new Case(
+                "pocket-square-2e9-pass-budget",
+                "a.contour",
+                contour(contours.get("square-2e9")),
+                pocket(),
+                1,
                 "more than 1000000 pass elements"));
-        c.add(new Case("grade-square-2e9", "a.contour", contour(contours.get("square-2e9")), grade(), 2, "at most 5000 mm"));
+        c.add(new Case(
+                "grade-square-2e9", "a.contour", contour(contours.get("square-2e9")), grade(), 2, "at most 5000 mm"));
         return c;
     }
 
@@ -200,18 +296,26 @@ class HostileCliTest {
                 files = s.toList();
             }
             String what = c.name() + ": status " + status + ", " + ms + " ms, " + messages;
-            checks.add(() -> assertAll(what,
+            checks.add(() -> assertAll(
+                    what,
                     () -> assertTrue(status == 0 || status == 1 || status == 2),
                     () -> assertTrue(c.status() < 0 || c.status() == status, "status " + c.status() + " wanted"),
                     () -> assertTrue(messages.contains(c.words()), "says '" + c.words() + "'"),
-                    () -> assertFalse(messages.contains("internal error") || messages.contains("\tat ")
-                            || messages.contains("Exception"), "no internal error"),
+                    () -> assertFalse(
+                            messages.contains("internal error")
+                                    || messages.contains("\tat ")
+                                    || messages.contains("Exception"),
+                            "no internal error"),
                     () -> assertTrue(ms < 30_000, "under 30 s"),
                     () -> assertTrue(status != 2 || files.isEmpty(), "nothing written for refused input: " + files),
-                    () -> assertTrue(files.stream().noneMatch(p -> p.getFileName().toString()
-                            .startsWith(AtomicFiles.TEMP_PREFIX)), "no temporary file"),
-                    () -> assertEquals(List.of(), nonFinite(files, messages.substring(messages.indexOf(" | ") + 3))
-                            , "no NaN or Infinity in outputs")));
+                    () -> assertTrue(
+                            files.stream()
+                                    .noneMatch(p -> p.getFileName().toString().startsWith(AtomicFiles.TEMP_PREFIX)),
+                            "no temporary file"),
+                    () -> assertEquals(
+                            List.of(),
+                            nonFinite(files, messages.substring(messages.indexOf(" | ") + 3)),
+                            "no NaN or Infinity in outputs")));
         }
         assertEquals(cases.size(), result.size() - 1);
         System.out.println("HostileCliTest: " + cases.size() + " commands, " + HEAP + " " + STACK + ", slowest "
@@ -228,7 +332,9 @@ class HostileCliTest {
             if (f.getFileName().toString().endsWith(".png")) {
                 continue;
             }
-            if (NON_FINITE.matcher(Files.readString(f, StandardCharsets.ISO_8859_1)).find()) {
+            if (NON_FINITE
+                    .matcher(Files.readString(f, StandardCharsets.ISO_8859_1))
+                    .find()) {
                 bad.add(f.getFileName().toString());
             }
         }
@@ -238,16 +344,23 @@ class HostileCliTest {
     /** Runs {@link HostileCliMain} in a JVM with the small heap and stack; its stdout and stderr lines. */
     static List<String> fork(Path plan, int timeoutS) throws Exception {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        ProcessBuilder pb = new ProcessBuilder(java, HEAP, STACK, "-Djava.awt.headless=true", "-XX:+UseSerialGC",
-                "-cp", System.getProperty("java.class.path"), HostileCliMain.class.getName(), plan.toString());
+        ProcessBuilder pb = new ProcessBuilder(
+                java,
+                HEAP,
+                STACK,
+                "-Djava.awt.headless=true",
+                "-XX:+UseSerialGC",
+                "-cp",
+                System.getProperty("java.class.path"),
+                HostileCliMain.class.getName(),
+                plan.toString());
         pb.redirectErrorStream(true);
         Path log = plan.resolveSibling("fork.log");
         pb.redirectOutput(log.toFile());
         Process p = pb.start();
         if (!p.waitFor(timeoutS, TimeUnit.SECONDS)) {
             p.destroyForcibly();
-            throw new AssertionError("hostile commands hang (more than " + timeoutS + " s): "
-                    + Files.readString(log));
+            throw new AssertionError("hostile commands hang (more than " + timeoutS + " s): " + Files.readString(log));
         }
         return Files.readAllLines(log, StandardCharsets.UTF_8);
     }

@@ -15,8 +15,7 @@ import java.util.Locale;
  */
 final class HostileFiles {
 
-    private HostileFiles() {
-    }
+    private HostileFiles() {}
 
     static final String P21_HEAD = "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\n"
             + "FILE_NAME('x','',(''),(''),'','','');\nFILE_SCHEMA(('MACHINING_SCHEMA'));\nENDSEC;\nDATA;\n";
@@ -30,7 +29,13 @@ final class HostileFiles {
     static String workplanChain(int depth) {
         StringBuilder sb = new StringBuilder("#1=PROJECT('p',#2,(),$,$,$);\n");
         for (int i = 2; i < depth + 1; i++) {
-            sb.append("#").append(i).append("=WORKPLAN('w").append(i).append("',(#").append(i + 1).append("),$,$,$);\n");
+            sb.append("#")
+                    .append(i)
+                    .append("=WORKPLAN('w")
+                    .append(i)
+                    .append("',(#")
+                    .append(i + 1)
+                    .append("),$,$,$);\n");
         }
         sb.append("#").append(depth + 1).append("=WORKPLAN('last',(),$,$,$);\n");
         return part21(sb.toString());
@@ -41,12 +46,18 @@ final class HostileFiles {
     }
 
     static String dxf(List<String[]> blocks, String entities) {
-        StringBuilder sb = new StringBuilder("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n"
-                + "0\nSECTION\n2\nBLOCKS\n");
+        StringBuilder sb = new StringBuilder(
+                "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n" + "0\nSECTION\n2\nBLOCKS\n");
         for (String[] b : blocks) {
-            sb.append("0\nBLOCK\n2\n").append(b[0]).append("\n10\n0\n20\n0\n").append(b[1]).append("0\nENDBLK\n");
+            sb.append("0\nBLOCK\n2\n")
+                    .append(b[0])
+                    .append("\n10\n0\n20\n0\n")
+                    .append(b[1])
+                    .append("0\nENDBLK\n");
         }
-        return sb.append("0\nENDSEC\n0\nSECTION\n2\nENTITIES\n").append(entities).append("0\nENDSEC\n0\nEOF\n")
+        return sb.append("0\nENDSEC\n0\nSECTION\n2\nENTITIES\n")
+                .append(entities)
+                .append("0\nENDSEC\n0\nEOF\n")
                 .toString();
     }
 
@@ -61,9 +72,14 @@ final class HostileFiles {
     static final String LINE = line("0", "0", "10", "0");
 
     static String lwpolyline(String extra, double[][] pts, double[] bulges) {
-        StringBuilder sb = new StringBuilder("0\nLWPOLYLINE\n8\n0\n").append(extra).append("70\n1\n");
+        StringBuilder sb =
+                new StringBuilder("0\nLWPOLYLINE\n8\n0\n").append(extra).append("70\n1\n");
         for (int i = 0; i < pts.length; i++) {
-            sb.append("10\n").append(pts[i][0]).append("\n20\n").append(pts[i][1]).append('\n');
+            sb.append("10\n")
+                    .append(pts[i][0])
+                    .append("\n20\n")
+                    .append(pts[i][1])
+                    .append('\n');
             if (bulges != null) {
                 sb.append("42\n").append(bulges[i]).append('\n');
             }
@@ -88,7 +104,10 @@ final class HostileFiles {
     }
 
     static String contour(double[][] pts) {
-        StringBuilder sb = new StringBuilder("contour\nmove ").append(num(pts[0][0])).append(' ').append(num(pts[0][1]))
+        StringBuilder sb = new StringBuilder("contour\nmove ")
+                .append(num(pts[0][0]))
+                .append(' ')
+                .append(num(pts[0][1]))
                 .append('\n');
         for (int i = 1; i <= pts.length; i++) {
             double[] p = pts[i % pts.length];

@@ -24,11 +24,10 @@ import org.fresa.app.cli.FresaCommand;
  */
 public final class HostileOptionsMain {
 
-    private static final com.sun.management.OperatingSystemMXBean CPU =
-            (com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+    private static final com.sun.management.OperatingSystemMXBean CPU = (com.sun.management.OperatingSystemMXBean)
+            java.lang.management.ManagementFactory.getOperatingSystemMXBean();
 
-    private HostileOptionsMain() {
-    }
+    private HostileOptionsMain() {}
 
     public static void main(String[] args) throws Exception {
         List<String> lines = Files.readAllLines(Path.of(args[0]));
@@ -46,8 +45,8 @@ public final class HostileOptionsMain {
             StringWriter se = new StringWriter();
             long t0 = System.nanoTime();
             long cpu0 = CPU.getProcessCpuTime();
-            Future<Integer> run = worker.submit(() -> FresaCommand.execute(new PrintWriter(new StringWriter(), true),
-                    new PrintWriter(se, true), cli));
+            Future<Integer> run = worker.submit(() ->
+                    FresaCommand.execute(new PrintWriter(new StringWriter(), true), new PrintWriter(se, true), cli));
             String status;
             try {
                 status = Integer.toString(run.get(deadlineMs, TimeUnit.MILLISECONDS));

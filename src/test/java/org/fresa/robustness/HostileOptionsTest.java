@@ -43,15 +43,38 @@ class HostileOptionsTest {
     static final long DEADLINE_MS = 60_000;
     static final String HEAP = "-Xmx256m";
 
-    static final List<String> DOUBLES = List.of("0", "-1", "NaN", "inf", "-inf", "Infinity", "-Infinity", "1e308",
-            "-1e308", "1e-9", "4.9E-324", "1.7976931348623157E308", "-1.7976931348623157E308");
-    static final List<String> INTS = List.of("0", "-1", "NaN", "inf", "-inf", "1e308", "1e-9", "2147483647",
-            "-2147483648");
-    static final List<String> LONGS = List.of("0", "-1", "NaN", "inf", "-inf", "1e308", "1e-9",
-            "9223372036854775807", "-9223372036854775808");
+    static final List<String> DOUBLES = List.of(
+            "0",
+            "-1",
+            "NaN",
+            "inf",
+            "-inf",
+            "Infinity",
+            "-Infinity",
+            "1e308",
+            "-1e308",
+            "1e-9",
+            "4.9E-324",
+            "1.7976931348623157E308",
+            "-1.7976931348623157E308");
+    static final List<String> INTS =
+            List.of("0", "-1", "NaN", "inf", "-inf", "1e308", "1e-9", "2147483647", "-2147483648");
+    static final List<String> LONGS =
+            List.of("0", "-1", "NaN", "inf", "-inf", "1e308", "1e-9", "9223372036854775807", "-9223372036854775808");
     /** Values beyond any physical range: refused with exit 2 naming the option. */
-    static final Set<String> ABSURD = Set.of("NaN", "inf", "-inf", "Infinity", "-Infinity", "1e308", "-1e308",
-            "1.7976931348623157E308", "-1.7976931348623157E308", "2147483647", "-2147483648", "9223372036854775807",
+    static final Set<String> ABSURD = Set.of(
+            "NaN",
+            "inf",
+            "-inf",
+            "Infinity",
+            "-Infinity",
+            "1e308",
+            "-1e308",
+            "1.7976931348623157E308",
+            "-1.7976931348623157E308",
+            "2147483647",
+            "-2147483648",
+            "9223372036854775807",
             "-9223372036854775808");
 
     @TempDir
@@ -61,17 +84,43 @@ class HostileOptionsTest {
     Map<String, List<String>> bases() throws Exception {
         Path one = dir.resolve("one-hole.stp");
         // ISO 14649-11 example 1 with its drilling only: seven points, so that every robot case is short
-        Files.writeString(one, Files.readString(Path.of("samples/stepnc/iso14649-11-example1.stp"))
-                .replace("(#10,#11,#12,#13,#14)", "(#11)"));
+        Files.writeString(
+                one,
+                Files.readString(Path.of("samples/stepnc/iso14649-11-example1.stp"))
+                        .replace("(#10,#11,#12,#13,#14)", "(#11)"));
         Path targets = dir.resolve("targets.csv");
         Files.writeString(targets, "x,y,z,roll,pitch,yaw\n500,0,400,0,90,0\n");
         Map<String, List<String>> m = new LinkedHashMap<>();
         m.put("pocket", List.of("pocket", "samples/pocket/cavity01.dad", "--out", "OUT/p.ngc", "--tool-diameter", "6"));
         m.put("cut", List.of("cut", "samples/cutting/plate.dxf", "--out", "OUT/c.ngc"));
-        m.put("grade", List.of("grade", "samples/grading/sole-40.contour", "--out", "OUT", "--base-size", "40",
-                "--sizes", "40-41", "--system", "br"));
-        m.put("robot", List.of("robot", one.toString(), "--robot", "irb140", "--out", "OUT", "--robot-table",
-                "450,0,350", "--table-piece", "0,10,0", "--formats", "csv"));
+        m.put(
+                "grade",
+                List.of(
+                        "grade",
+                        "samples/grading/sole-40.contour",
+                        "--out",
+                        "OUT",
+                        "--base-size",
+                        "40",
+                        "--sizes",
+                        "40-41",
+                        "--system",
+                        "br"));
+        m.put(
+                "robot",
+                List.of(
+                        "robot",
+                        one.toString(),
+                        "--robot",
+                        "irb140",
+                        "--out",
+                        "OUT",
+                        "--robot-table",
+                        "450,0,350",
+                        "--table-piece",
+                        "0,10,0",
+                        "--formats",
+                        "csv"));
         m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
         m.put("ik", List.of("ik", targets.toString(), "--robot", "irb140", "--out", "OUT"));
         m.put("toolpath", List.of("toolpath", one.toString(), "--out", "OUT"));
@@ -79,14 +128,14 @@ class HostileOptionsTest {
     }
 
     /** One command line: which option it varies, with which value. */
-    record Case(String name, String option, String value, boolean absurd, List<String> args) {
-    }
+    record Case(String name, String option, String value, boolean absurd, List<String> args) {}
 
     /** The values an option is given: a number type's list, or per slot of a comma list (X,Y,Z). */
     static List<String[]> values(OptionSpec o) {
         List<String[]> out = new ArrayList<>();
         Class<?> t = o.type();
-        List<String> list = t == double.class || t == Double.class || t == float.class || t == Float.class ? DOUBLES
+        List<String> list = t == double.class || t == Double.class || t == float.class || t == Float.class
+                ? DOUBLES
                 : t == int.class || t == Integer.class ? INTS : t == long.class || t == Long.class ? LONGS : null;
         if (list != null) {
             list.forEach(v -> out.add(new String[] {v, v}));
@@ -118,7 +167,8 @@ class HostileOptionsTest {
         CommandLine all = FresaCommand.withAllCommands();
         for (Map.Entry<String, CommandLine> c : all.getSubcommands().entrySet()) {
             List<OptionSpec> numeric = c.getValue().getCommandSpec().options().stream()
-                    .filter(o -> !values(o).isEmpty()).toList();
+                    .filter(o -> !values(o).isEmpty())
+                    .toList();
             if (numeric.isEmpty()) {
                 continue;
             }
@@ -181,17 +231,28 @@ class HostileOptionsTest {
             }
             worstWall = Math.max(worstWall, ms);
             List<String> left = names(dir.resolve("case-" + i));
-            checks.add(() -> assertAll(c.name() + ": status " + status + ", " + cpuMs + " ms CPU, " + ms + " ms, " + err,
+            checks.add(() -> assertAll(
+                    c.name() + ": status " + status + ", " + cpuMs + " ms CPU, " + ms + " ms, " + err,
                     () -> assertTrue(Set.of("0", "1", "2").contains(status), "exit 0, 1 or 2"),
                     () -> assertTrue(cpuMs < LIMIT_CPU_MS, "within 10 s of CPU time"),
-                    () -> assertFalse(err.contains("internal error") || err.contains("\tat ") || err.contains("Exception")
-                            || err.contains("must be finite"), "no trace, no internal error"),
+                    () -> assertFalse(
+                            err.contains("internal error")
+                                    || err.contains("\tat ")
+                                    || err.contains("Exception")
+                                    || err.contains("must be finite"),
+                            "no trace, no internal error"),
                     () -> assertTrue(!c.absurd() || status.equals("2"), "a value beyond any range is refused (exit 2)"),
-                    () -> assertTrue(!c.absurd() || err.contains(c.option()) || c.option().equals("--sizes")
-                            && err.contains("size"), "the message names " + c.option()),
+                    () -> assertTrue(
+                            !c.absurd()
+                                    || err.contains(c.option())
+                                    || c.option().equals("--sizes") && err.contains("size"),
+                            "the message names " + c.option()),
                     () -> assertTrue(!status.equals("2") || left.isEmpty(), "nothing written when refused: " + left),
-                    () -> assertTrue(left.stream().noneMatch(n -> n.startsWith(AtomicFiles.TEMP_PREFIX)
-                            || n.equals(FolderLock.FILE_NAME)), "no temporary or lock file: " + left)));
+                    () -> assertTrue(
+                            left.stream()
+                                    .noneMatch(n ->
+                                            n.startsWith(AtomicFiles.TEMP_PREFIX) || n.equals(FolderLock.FILE_NAME)),
+                            "no temporary or lock file: " + left)));
         }
         System.out.println("HostileOptionsTest: " + cases.size() + " cases, " + HEAP + ", exit statuses " + statuses
                 + ", most CPU " + worst + " ms: " + slowest + "; longest wall time " + worstWall + " ms");
@@ -205,11 +266,23 @@ class HostileOptionsTest {
         int fork = 0;
         while (results.size() < n) {
             Path log = dir.resolve("fork-" + fork++ + ".log");
-            String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-            Process p = new ProcessBuilder(java, HEAP, HostileCliTest.STACK, "-Djava.awt.headless=true",
-                    "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"), HostileOptionsMain.class.getName(),
-                    plan.toString(), Integer.toString(results.size()), Long.toString(DEADLINE_MS))
-                    .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+            String java =
+                    Path.of(System.getProperty("java.home"), "bin", "java").toString();
+            Process p = new ProcessBuilder(
+                            java,
+                            HEAP,
+                            HostileCliTest.STACK,
+                            "-Djava.awt.headless=true",
+                            "-XX:+UseSerialGC",
+                            "-cp",
+                            System.getProperty("java.class.path"),
+                            HostileOptionsMain.class.getName(),
+                            plan.toString(),
+                            Integer.toString(results.size()),
+                            Long.toString(DEADLINE_MS))
+                    .redirectErrorStream(true)
+                    .redirectOutput(log.toFile())
+                    .start();
             if (!p.waitFor(20, TimeUnit.MINUTES)) {
                 p.destroyForcibly();
                 throw new AssertionError("the hostile options hang beyond their deadlines: " + Files.readString(log));
@@ -230,7 +303,10 @@ class HostileOptionsTest {
 
     static List<String> names(Path d) throws Exception {
         try (Stream<Path> s = Files.walk(d)) {
-            return s.filter(p -> !p.equals(d)).map(p -> d.relativize(p).toString()).sorted().toList();
+            return s.filter(p -> !p.equals(d))
+                    .map(p -> d.relativize(p).toString())
+                    .sorted()
+                    .toList();
         }
     }
 }

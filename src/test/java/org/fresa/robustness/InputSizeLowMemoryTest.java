@@ -41,8 +41,9 @@ class InputSizeLowMemoryTest {
     @BeforeEach
     void needsTheLowMemoryExecution() {
         long maxHeap = Runtime.getRuntime().maxMemory();
-        assumeTrue(maxHeap <= 520 * MIB, "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB
-                + " MiB");
+        assumeTrue(
+                maxHeap <= 520 * MIB,
+                "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB + " MiB");
     }
 
     private Path sparse(String name, long bytes) throws Exception {
@@ -67,18 +68,31 @@ class InputSizeLowMemoryTest {
         Path big = sparse(name, 4096 * MIB);
         Path out = dir.resolve("out");
         List<String> args = switch (command) {
-            case "cut" -> List.of("cut", big.toString(), "--out", out.resolve("c.ngc").toString());
+            case "cut" ->
+                List.of("cut", big.toString(), "--out", out.resolve("c.ngc").toString());
             case "stepnc" -> List.of("stepnc", big.toString());
-            case "pocket" -> List.of("pocket", big.toString(), "--out", out.resolve("p.ngc").toString(),
-                    "--tool-diameter", "6");
-            case "grade" -> List.of("grade", big.toString(), "--out", out.toString(), "--base-size", "40", "--sizes",
-                    "40", "--system", "br");
+            case "pocket" ->
+                List.of("pocket", big.toString(), "--out", out.resolve("p.ngc").toString(), "--tool-diameter", "6");
+            case "grade" ->
+                List.of(
+                        "grade",
+                        big.toString(),
+                        "--out",
+                        out.toString(),
+                        "--base-size",
+                        "40",
+                        "--sizes",
+                        "40",
+                        "--system",
+                        "br");
             default -> List.of("run", big.toString(), "--out", out.toString());
         };
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true),
-                args.toArray(String[]::new));
-        assertAll(err.toString(), () -> assertEquals(2, status),
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), args.toArray(String[]::new));
+        assertAll(
+                err.toString(),
+                () -> assertEquals(2, status),
                 () -> assertTrue(err.toString().contains("is 4096 MB; " + words), "says " + words),
                 () -> assertFalse(err.toString().contains("OutOfMemoryError")),
                 () -> assertFalse(Files.exists(out), "nothing written"));
@@ -87,9 +101,12 @@ class InputSizeLowMemoryTest {
     @org.junit.jupiter.api.Test
     void theStatedLimitsAreShareOfTheHeapThatFit() {
         long heap = Runtime.getRuntime().maxMemory();
-        assertAll(() -> assertEquals(heap / 8, DxfReader.maxFileBytes()),
+        assertAll(
+                () -> assertEquals(heap / 8, DxfReader.maxFileBytes()),
                 () -> assertEquals(heap / 4, Part21Reader.maxFileBytes()),
-                () -> assertTrue(Part21Reader.maxFileBytes() >= 100 * MIB, "the 100 MB Part 21 file of the performance goals fits"),
+                () -> assertTrue(
+                        Part21Reader.maxFileBytes() >= 100 * MIB,
+                        "the 100 MB Part 21 file of the performance goals fits"),
                 () -> assertEquals(16 * MIB, FileChecks.MAX_TEXT_FILE_BYTES));
     }
 
@@ -114,8 +131,13 @@ class InputSizeLowMemoryTest {
                 for (int k = 0; k < 4; k++) {
                     double[] a = c[k];
                     double[] b = c[(k + 1) % 4];
-                    String line = String.format(Locale.ROOT, "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n"
-                            + "21\n%.3f\n31\n0.0\n", a[0], a[1], b[0], b[1]);
+                    String line = String.format(
+                            Locale.ROOT,
+                            "0\nLINE\n8\n0\n10\n%.3f\n20\n%.3f\n30\n0.0\n11\n%.3f\n" + "21\n%.3f\n31\n0.0\n",
+                            a[0],
+                            a[1],
+                            b[0],
+                            b[1]);
                     w.write(line);
                     written += line.length();
                 }

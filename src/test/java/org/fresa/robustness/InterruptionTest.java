@@ -39,12 +39,25 @@ class InterruptionTest {
     }
 
     static List<String> temporaries(Path d) throws Exception {
-        return names(d).stream().filter(n -> n.startsWith(AtomicFiles.TEMP_PREFIX)).toList();
+        return names(d).stream()
+                .filter(n -> n.startsWith(AtomicFiles.TEMP_PREFIX))
+                .toList();
     }
 
     static String[] grade(Path out, String sizes) {
-        return new String[] {"grade", "samples/grading/sole-40.contour", "--out", out.toString(), "--base-size", "40",
-            "--sizes", sizes, "--half-sizes", "--system", "br"};
+        return new String[] {
+            "grade",
+            "samples/grading/sole-40.contour",
+            "--out",
+            out.toString(),
+            "--base-size",
+            "40",
+            "--sizes",
+            sizes,
+            "--half-sizes",
+            "--system",
+            "br"
+        };
     }
 
     @ParameterizedTest(name = "{0}")
@@ -52,15 +65,25 @@ class InterruptionTest {
     void aKilledRunLeavesNoTruncatedFileUnderAFinalName(String signal) throws Exception {
         Path out = Files.createDirectories(dir.resolve("out"));
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new java.util.ArrayList<>(List.of(java, "-Xmx256m", "-Djava.awt.headless=true", "-cp",
-                System.getProperty("java.class.path"), "org.fresa.app.Main"));
+        List<String> cmd = new java.util.ArrayList<>(List.of(
+                java,
+                "-Xmx256m",
+                "-Djava.awt.headless=true",
+                "-cp",
+                System.getProperty("java.class.path"),
+                "org.fresa.app.Main"));
         cmd.addAll(List.of(grade(out, "17-50")));
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("log").toFile()).start();
+        Process p = new ProcessBuilder(cmd)
+                .redirectErrorStream(true)
+                .redirectOutput(dir.resolve("log").toFile())
+                .start();
         try {
             // kill while it writes: after a few files, preferably while a temporary file exists
             long until = System.currentTimeMillis() + 90_000;
-            while (p.isAlive() && System.currentTimeMillis() < until
-                    && !(names(out).size() >= 6 && !temporaries(out).isEmpty()) && names(out).size() < 20) {
+            while (p.isAlive()
+                    && System.currentTimeMillis() < until
+                    && !(names(out).size() >= 6 && !temporaries(out).isEmpty())
+                    && names(out).size() < 20) {
                 Thread.sleep(1);
             }
             assertTrue(p.isAlive(), "the run ended before it could be killed: " + Files.readString(dir.resolve("log")));
@@ -75,20 +98,24 @@ class InterruptionTest {
         }
         List<String> left = names(out);
         List<String> temps = temporaries(out);
-        assertAll(signal + " left " + left,
+        assertAll(
+                signal + " left " + left,
                 () -> assertFalse(left.contains("grading.csv"), "killed before the end"),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(out), "final-named files are complete"),
-                () -> assertTrue(signal.equals("SIGKILL") ? temps.size() <= 1 : temps.isEmpty(),
-                        "temporary files: " + temps));
+                () -> assertTrue(
+                        signal.equals("SIGKILL") ? temps.size() <= 1 : temps.isEmpty(), "temporary files: " + temps));
 
         // the next run into the folder: a leftover older than STALE is removed, the run completes
         for (String t : temps) {
-            Files.setLastModifiedTime(out.resolve(t), FileTime.from(Instant.now().minus(AtomicFiles.STALE).minusSeconds(1)));
+            Files.setLastModifiedTime(
+                    out.resolve(t),
+                    FileTime.from(Instant.now().minus(AtomicFiles.STALE).minusSeconds(1)));
         }
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true),
-                grade(out, "40-40"));
-        assertAll(() -> assertEquals(0, status, err.toString()),
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), grade(out, "40-40"));
+        assertAll(
+                () -> assertEquals(0, status, err.toString()),
                 () -> assertEquals(List.of(), temporaries(out)),
                 () -> assertTrue(names(out).contains("grading.csv")),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(out)));

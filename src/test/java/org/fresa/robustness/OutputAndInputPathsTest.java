@@ -62,7 +62,8 @@ class OutputAndInputPathsTest {
     }
 
     private int run(List<String> args) {
-        return FresaCommand.execute(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
+        return FresaCommand.execute(
+                new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
     }
 
     private static List<String> command(String name, Path target) {
@@ -70,8 +71,18 @@ class OutputAndInputPathsTest {
         return switch (name) {
             case "pocket" -> List.of("pocket", "samples/pocket/cavity01.dad", "--out", t, "--tool-diameter", "6");
             case "cut" -> List.of("cut", "samples/cutting/plate.dxf", "--out", t);
-            case "grade" -> List.of("grade", "samples/grading/sole-40.contour", "--out", t, "--base-size", "40",
-                    "--sizes", "40", "--system", "br");
+            case "grade" ->
+                List.of(
+                        "grade",
+                        "samples/grading/sole-40.contour",
+                        "--out",
+                        t,
+                        "--base-size",
+                        "40",
+                        "--sizes",
+                        "40",
+                        "--system",
+                        "br");
             case "toolpath" -> List.of("toolpath", "samples/stepnc/example2.stp", "--out", t);
             case "robot" -> List.of("robot", "samples/stepnc/example2.stp", "--robot", "irb140", "--out", t);
             case "run" -> List.of("run", "samples/jobs/grade-sole40.xml", "--out", t);
@@ -83,7 +94,9 @@ class OutputAndInputPathsTest {
     private void assertRefusedAndUnchanged(int status, Path node, String kind) throws Exception {
         FileTime before = Files.getLastModifiedTime(node);
         String e = err.toString();
-        assertAll(e, () -> assertEquals(2, status),
+        assertAll(
+                e,
+                () -> assertEquals(2, status),
                 () -> assertTrue(e.contains("--out") && e.contains("is " + kind), "names --out and " + kind),
                 () -> assertEquals(kind, FileChecks.kind(node), "the node is still " + kind),
                 () -> assertEquals(before, Files.getLastModifiedTime(node)),
@@ -93,7 +106,8 @@ class OutputAndInputPathsTest {
     private List<String> others(Path node) throws Exception {
         List<String> l = new ArrayList<>();
         try (var s = Files.list(dir)) {
-            s.filter(p -> !p.equals(fifo) && !p.equals(device)).forEach(p -> l.add(p.getFileName().toString()));
+            s.filter(p -> !p.equals(fifo) && !p.equals(device))
+                    .forEach(p -> l.add(p.getFileName().toString()));
         }
         return l;
     }
@@ -125,7 +139,10 @@ class OutputAndInputPathsTest {
     void anInputThatIsADirectoryIsRefusedWithASentence(String name, String input, String sentence) throws Exception {
         Path in = Files.createDirectory(dir.resolve(input));
         int status = run(input(name, in));
-        assertAll(err.toString(), () -> assertEquals(2, status), () -> assertTrue(err.toString().contains(sentence)),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(2, status),
+                () -> assertTrue(err.toString().contains(sentence)),
                 () -> assertFalse(err.toString().contains("Exception")));
     }
 
@@ -133,16 +150,25 @@ class OutputAndInputPathsTest {
     @ValueSource(strings = {"cut", "pocket", "stepnc", "grade", "run"})
     void anInputThatIsANamedPipeIsRefusedWithoutWaitingForAWriter(String name) {
         int status = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> run(input(name, fifo)));
-        assertAll(err.toString(), () -> assertEquals(2, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(2, status),
                 () -> assertTrue(err.toString().contains("is a named pipe (FIFO), not a")));
     }
 
     @org.junit.jupiter.api.Test
     void aRobotFileThatIsADirectoryIsRefusedWithASentence() throws Exception {
         Path robot = Files.createDirectory(dir.resolve("robot.xml"));
-        int status = run(List.of("robot", "samples/stepnc/example2.stp", "--robot", robot.toString(), "--out",
+        int status = run(List.of(
+                "robot",
+                "samples/stepnc/example2.stp",
+                "--robot",
+                robot.toString(),
+                "--out",
                 dir.resolve("r").toString()));
-        assertAll(err.toString(), () -> assertEquals(2, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(2, status),
                 () -> assertTrue(err.toString().contains("is a directory, not a robot file")));
     }
 
@@ -153,8 +179,8 @@ class OutputAndInputPathsTest {
             case "cut" -> List.of("cut", i, "--out", o.resolve("c.ngc").toString());
             case "pocket" -> List.of("pocket", i, "--out", o.resolve("p.ngc").toString(), "--tool-diameter", "6");
             case "stepnc" -> List.of("stepnc", i);
-            case "grade" -> List.of("grade", i, "--out", o.toString(), "--base-size", "40", "--sizes", "40",
-                    "--system", "br");
+            case "grade" ->
+                List.of("grade", i, "--out", o.toString(), "--base-size", "40", "--sizes", "40", "--system", "br");
             case "run" -> List.of("run", i, "--out", o.toString());
             default -> throw new IllegalArgumentException(name);
         };

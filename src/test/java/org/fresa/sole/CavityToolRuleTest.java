@@ -50,9 +50,13 @@ class CavityToolRuleTest {
         // a 40 x 40 square whose top side has a notch bulging into the cavity: a clockwise arc
         // of radius 2 in a counter-clockwise outline, its centre outside the cavity
         Tolerance tol = Tolerance.DEFAULT;
-        List<Curve2> curves = List.of(Segment2.of(0, 0, 40, 0), Segment2.of(40, 0, 40, 40),
-                Segment2.of(40, 40, 22, 40), Arc2.cw(Vec2.of(20, 40), Vec2.of(22, 40), Vec2.of(18, 40), tol),
-                Segment2.of(18, 40, 0, 40), Segment2.of(0, 40, 0, 0));
+        List<Curve2> curves = List.of(
+                Segment2.of(0, 0, 40, 0),
+                Segment2.of(40, 0, 40, 40),
+                Segment2.of(40, 40, 22, 40),
+                Arc2.cw(Vec2.of(20, 40), Vec2.of(22, 40), Vec2.of(18, 40), tol),
+                Segment2.of(18, 40, 0, 40),
+                Segment2.of(0, 40, 0, 0));
         Contour notched = Contour.of(curves, tol);
         assertTrue(notched.isCcw());
         assertTrue(CavityToolRule.check(notched, 10).isEmpty());

@@ -55,7 +55,8 @@ class DescomTestProgramsTest {
     }
 
     private static List<Stroke> cut(List<TreadFigure> lead, TreadFigure block, List<Similarity2> copies) {
-        return new TreadItem("test", lead, List.of(block), new TreadPattern.Copies(copies), SizeRule.HELD, false, "bit3")
+        return new TreadItem(
+                        "test", lead, List.of(block), new TreadPattern.Copies(copies), SizeRule.HELD, false, "bit3")
                 .strokes(TOL);
     }
 
@@ -64,7 +65,12 @@ class DescomTestProgramsTest {
         assertPoint(xy[0], xy[1], s.start());
         assertEquals(xy.length / 2 - 1, s.curves().size(), "segments of " + s.start());
         for (int i = 0; i < s.curves().size(); i++) {
-            assertLine(xy[2 * i], xy[2 * i + 1], xy[2 * i + 2], xy[2 * i + 3], s.curves().get(i));
+            assertLine(
+                    xy[2 * i],
+                    xy[2 * i + 1],
+                    xy[2 * i + 2],
+                    xy[2 * i + 3],
+                    s.curves().get(i));
         }
     }
 

@@ -41,9 +41,10 @@ class MouldBlockTest {
         "41, 282.060, 326.107, 96.265, 297.307, 75.265",
         "42, 288.720, 327.213, 93.651, 298.413, 72.651",
         "43, 295.380, 328.320, 91.036, 299.520, 70.036",
-        "44, 302.040, 329.427, 88.421, 300.627, 67.421"})
-    void theRightSolesPartZeroIsTheThesissTable(int nd, double cp, double xzInserts, double yzInserts,
-            double xzCavities, double yzCavities) {
+        "44, 302.040, 329.427, 88.421, 300.627, 67.421"
+    })
+    void theRightSolesPartZeroIsTheThesissTable(
+            int nd, double cp, double xzInserts, double yzInserts, double xzCavities, double yzCavities) {
         MouldBlock.PartZero inserts = INSERTS.partZero(size(nd), Foot.RIGHT);
         MouldBlock.PartZero cavities = CAVITIES.partZero(size(nd), Foot.RIGHT);
         assertEquals(cp, inserts.patternLengthMm(), 5e-4);

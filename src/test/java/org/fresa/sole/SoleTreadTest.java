@@ -39,9 +39,14 @@ class SoleTreadTest {
 
     @Test
     void copiesOfSub7bChainIntoTheZigZagRowOfTest02() throws Exception {
-        TreadItem zig = new TreadItem("zig-zag", List.of(call("PRIM", "XI=-40,YI=-10,XA1=0,YA1=0")),
-                List.of(call("SUB7B", "XB7=10,YB7=8,XC7=10,YC7=-8")), TreadPattern.linear(20, 0, 4), SizeRule.HELD,
-                false, "bit");
+        TreadItem zig = new TreadItem(
+                "zig-zag",
+                List.of(call("PRIM", "XI=-40,YI=-10,XA1=0,YA1=0")),
+                List.of(call("SUB7B", "XB7=10,YB7=8,XC7=10,YC7=-8")),
+                TreadPattern.linear(20, 0, 4),
+                SizeRule.HELD,
+                false,
+                "bit");
         List<Stroke> s = zig.strokes(TOL);
         assertEquals(1, s.size(), "one continuous groove");
         List<Curve2> c = s.get(0).curves();
@@ -55,11 +60,21 @@ class SoleTreadTest {
     @Test
     void theBrickRowsOfTest01ComeFromALinearPatternAndAMirroredCopy() throws Exception {
         TreadFigure dash = call("SUB2", "XA2=-40,YA2=10,XB2=10,YB2=0");
-        List<Similarity2> copies = List.of(Similarity2.IDENTITY, Similarity2.translation(15, 0),
-                Similarity2.translation(30, 0), Similarity2.mirrorX(-23.75).then(Similarity2.translation(0, 5)),
+        List<Similarity2> copies = List.of(
+                Similarity2.IDENTITY,
+                Similarity2.translation(15, 0),
+                Similarity2.translation(30, 0),
+                Similarity2.mirrorX(-23.75).then(Similarity2.translation(0, 5)),
                 Similarity2.mirrorX(-23.75).then(Similarity2.translation(-15, 5)));
-        List<Stroke> s = new TreadItem("bricks", List.of(), List.of(dash), new TreadPattern.Copies(copies),
-                SizeRule.HELD, false, "bit").strokes(TOL);
+        List<Stroke> s = new TreadItem(
+                        "bricks",
+                        List.of(),
+                        List.of(dash),
+                        new TreadPattern.Copies(copies),
+                        SizeRule.HELD,
+                        false,
+                        "bit")
+                .strokes(TOL);
         assertEquals(5, s.size());
         assertLine(-10, 10, 0, 10, s.get(2).curves().get(0));
         assertLine(-7.5, 15, -17.5, 15, s.get(3).curves().get(0));
@@ -68,8 +83,14 @@ class SoleTreadTest {
 
     @Test
     void theLeftFootIsTheMirrorImageCutInTheSameSense() throws Exception {
-        TreadItem ring = new TreadItem("ring", List.of(), List.of(call("SUB4", "XC=-32,YC=161,RA=5,XA4=-37,YA4=161,XB4=-27,YB4=161")),
-                TreadPattern.single(), SizeRule.HELD, false, "bit");
+        TreadItem ring = new TreadItem(
+                "ring",
+                List.of(),
+                List.of(call("SUB4", "XC=-32,YC=161,RA=5,XA4=-37,YA4=161,XB4=-27,YB4=161")),
+                TreadPattern.single(),
+                SizeRule.HELD,
+                false,
+                "bit");
         SizeScale base = SizeScale.base("40", ORIGIN);
         List<Stroke> right = SoleTread.placed(ring, base, Foot.RIGHT, TOL);
         List<Stroke> left = SoleTread.placed(ring, base, Foot.LEFT, TOL);
@@ -83,8 +104,14 @@ class SoleTreadTest {
 
     @Test
     void textIsMovedToTheLeftFootButNotMirrored() throws Exception {
-        TreadItem logo = new TreadItem("logo", List.of(), List.of(call("SUB7A", "XA7=-20,YA7=100,XB7=5,YB7=10,XC7=5,YC7=-10")),
-                TreadPattern.single(), SizeRule.HELD, true, "bit");
+        TreadItem logo = new TreadItem(
+                "logo",
+                List.of(),
+                List.of(call("SUB7A", "XA7=-20,YA7=100,XB7=5,YB7=10,XC7=5,YC7=-10")),
+                TreadPattern.single(),
+                SizeRule.HELD,
+                true,
+                "bit");
         List<Stroke> left = SoleTread.placed(logo, SizeScale.base("40", ORIGIN), Foot.LEFT, TOL);
         // the V's bounding box centre (-15, 105) goes to (15, 105); the V still opens downwards, left to right
         assertLine(10, 100, 15, 110, left.get(0).curves().get(0));
@@ -121,9 +148,14 @@ class SoleTreadTest {
     @Test
     void noGrooveOfTheZigZagFieldLeavesTheSoleShrunkByTheMargin() throws Exception {
         Contour outline = men40();
-        TreadItem field = new TreadItem("field", List.of(),
+        TreadItem field = new TreadItem(
+                "field",
+                List.of(),
                 List.of(call("SUB7A", "XA7=-70,YA7=130,XB7=15,YB7=11.7,XC7=15,YC7=-11.7")),
-                TreadPattern.grid(30, 5.85, 5, 20, 0), SizeRule.SCALED, false, "bit");
+                TreadPattern.grid(30, 5.85, 5, 20, 0),
+                SizeRule.SCALED,
+                false,
+                "bit");
         SoleTread tread = new SoleTread(List.of(field), 3);
         for (Foot foot : Foot.values()) {
             SizeScale s = new SizeScale("42", ORIGIN, 1.036889 + 0.02, 1.049333 + 0.02, 1.02);
@@ -135,7 +167,8 @@ class SoleTreadTest {
                 for (Curve2 c : st.curves()) {
                     for (int k = 0; k <= 8; k++) {
                         Vec2 p = c.pointAt(k / 8.0);
-                        assertTrue(sideOutline.contains(p, TOL) && sideOutline.distanceTo(p) >= 3 - 1e-6, foot + " " + p);
+                        assertTrue(
+                                sideOutline.contains(p, TOL) && sideOutline.distanceTo(p) >= 3 - 1e-6, foot + " " + p);
                         n++;
                     }
                 }
@@ -146,7 +179,8 @@ class SoleTreadTest {
 
     /** The outline graded by the 3-point rebuild (the tread test needs an outline per size, not the grading module). */
     static Contour gradedOutline(Contour base, SizeScale s) {
-        return Contour.of(base.curves().stream().map(c -> SoleTread.graded(c, s, TOL)).toList(), Tolerance.ofLinear(1e-6));
+        return Contour.of(
+                base.curves().stream().map(c -> SoleTread.graded(c, s, TOL)).toList(), Tolerance.ofLinear(1e-6));
     }
 
     @Test
@@ -163,19 +197,32 @@ class SoleTreadTest {
             for (Curve2 c : st.curves()) {
                 Vec2 m = c.pointAt(0.5);
                 Vec2 back = Vec2.of(2 * ORIGIN.x() - m.x(), m.y());
-                assertTrue(right.stream().anyMatch(r -> r.curves().stream().anyMatch(k -> k.distanceTo(back) < 1e-6)), "" + m);
+                assertTrue(
+                        right.stream().anyMatch(r -> r.curves().stream().anyMatch(k -> k.distanceTo(back) < 1e-6)),
+                        "" + m);
             }
         }
     }
 
     static SoleTread sample() throws Exception {
-        TreadItem heel = new TreadItem("heel grooves", List.of(),
+        TreadItem heel = new TreadItem(
+                "heel grooves",
+                List.of(),
                 List.of(call("SUB1A", "XA1=-34,YA1=-23,XB1=34,XC1=34,YC1=-18.6,XD1=-34")),
-                TreadPattern.linear(0, 8.8, 3), SizeRule.SCALED, false, "bit");
-        TreadItem rings = new TreadItem("rings", List.of(),
-                List.of(call("SUB4", "XC=-32,YC=161,RA=23,XA4=-55,YA4=161,XB4=-9,YB4=161"),
+                TreadPattern.linear(0, 8.8, 3),
+                SizeRule.SCALED,
+                false,
+                "bit");
+        TreadItem rings = new TreadItem(
+                "rings",
+                List.of(),
+                List.of(
+                        call("SUB4", "XC=-32,YC=161,RA=23,XA4=-55,YA4=161,XB4=-9,YB4=161"),
                         call("SUB4", "XC=-32,YC=161,RA=16.5,XA4=-48.5,YA4=161,XB4=-15.5,YB4=161")),
-                TreadPattern.single(), SizeRule.POSITION, false, "bit");
+                TreadPattern.single(),
+                SizeRule.POSITION,
+                false,
+                "bit");
         return new SoleTread(List.of(heel, rings), 2);
     }
 
@@ -185,9 +232,13 @@ class SoleTreadTest {
         SoleTread tread = sample();
         Contour outline = men40();
         for (Foot foot : Foot.values()) {
-            Toolpath tp = TreadProgram.toolpath(tread.grooves(SizeScale.base("40", ORIGIN), foot, outline, TOL),
-                    Map.of("bit", new TreadTool("bit", 5, 3.5, 4000, 160, 80)), 2, 5);
-            assertTrue(tp.sections().get(0).moves().stream().anyMatch(m -> m instanceof Move.Circular), "arcs stay arcs");
+            Toolpath tp = TreadProgram.toolpath(
+                    tread.grooves(SizeScale.base("40", ORIGIN), foot, outline, TOL),
+                    Map.of("bit", new TreadTool("bit", 5, 3.5, 4000, 160, 80)),
+                    2,
+                    5);
+            assertTrue(
+                    tp.sections().get(0).moves().stream().anyMatch(m -> m instanceof Move.Circular), "arcs stay arcs");
             StringWriter w = new StringWriter();
             NcPosts.defaultPost().write(tp, "tread-40-" + foot.id(), w);
             Path f = dir.resolve("tread-40-" + foot.id() + ".ngc");

@@ -72,13 +72,19 @@ class SpecialDesignsTest {
 
     @Test
     void everySpecialDesignIsInTheFigureLibraryWithAnExample() throws Exception {
-        assertEquals(List.of("PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO"),
+        assertEquals(
+                List.of("PARAL", "COLMEIA", "PIRAM", "TEXTURA", "LOGO"),
                 TreadFigures.MACROS.subList(18, TreadFigures.MACROS.size()));
         for (String m : SpecialDesigns.MACROS) {
             assertTrue(TreadFigures.isSpecial(m));
             assertFalse(TreadFigures.parameters(m).isEmpty());
             if (!TreadFigures.needsDrawing(m)) {
-                assertFalse(figure(m, TreadFigures.thesisExample(m)).path(Vec2.ZERO, TOL).strokes().isEmpty(), m);
+                assertFalse(
+                        figure(m, TreadFigures.thesisExample(m))
+                                .path(Vec2.ZERO, TOL)
+                                .strokes()
+                                .isEmpty(),
+                        m);
             }
         }
         CamInputException e = assertThrows(CamInputException.class, () -> figure("LOGO", "X=0,Y=0,H=10"));
@@ -111,7 +117,8 @@ class SpecialDesignsTest {
         for (int i = 0; i < 5; i++) {
             assertEquals(15 + 5 * i, xs.get(i), 1e-9);
         }
-        assertTrue(seg.stream().anyMatch(s -> s.distanceTo(Vec2.of(10, 25)) < 1e-4 && s.distanceTo(Vec2.of(15, 15)) < 1e-9));
+        assertTrue(seg.stream()
+                .anyMatch(s -> s.distanceTo(Vec2.of(10, 25)) < 1e-4 && s.distanceTo(Vec2.of(15, 15)) < 1e-9));
         // clipped to the sole: a lattice bigger than the sole keeps only what lies 2 mm inside
         TreadFigure big = figure("PARAL", "XO=-80,YO=-40,A=8,B=8,ANG=60,NA=30,NB=40");
         List<Stroke> all = big.path(Vec2.ZERO, TOL).strokes();
@@ -138,7 +145,8 @@ class SpecialDesignsTest {
         // centres sqrt(3) S apart in a row, rows 1.5 S apart and shifted half a cell
         assertEquals(5 * Math.sqrt(3), four.centre(1, 0).x() - four.centre(0, 0).x(), 1e-12);
         assertEquals(7.5, four.centre(0, 1).y() - four.centre(0, 0).y(), 1e-12);
-        assertEquals(5 * Math.sqrt(3) / 2, four.centre(0, 1).x() - four.centre(0, 0).x(), 1e-12);
+        assertEquals(
+                5 * Math.sqrt(3) / 2, four.centre(0, 1).x() - four.centre(0, 0).x(), 1e-12);
         // every side once: no two segments the same
         Set<String> keys = new HashSet<>();
         for (Segment2 s : seg) {
@@ -149,31 +157,45 @@ class SpecialDesignsTest {
             assertTrue(keys.add(ka.compareTo(kb) < 0 ? ka + kb : kb + ka));
         }
         // a honeycomb over the heel, clipped to the sole
-        List<Stroke> kept = TreadClipper.clip(figure("COLMEIA", "XO=-70,YO=-40,S=6,NX=10,NY=8").path(Vec2.ZERO, TOL)
-                .strokes(), sole, 2, TOL);
+        List<Stroke> kept = TreadClipper.clip(
+                figure("COLMEIA", "XO=-70,YO=-40,S=6,NX=10,NY=8")
+                        .path(Vec2.ZERO, TOL)
+                        .strokes(),
+                sole,
+                2,
+                TOL);
         assertInside(kept, 2);
     }
 
     @Test
     void groupHInvertedPyramidsAreVGroovesInTwoDirectionsAtRightAngles() throws Exception {
-        List<Stroke> st = figure("PIRAM", "XO=-30,YO=0,P=6,ANG=45,N1=5,N2=3").path(Vec2.ZERO, TOL).strokes();
+        List<Stroke> st = figure("PIRAM", "XO=-30,YO=0,P=6,ANG=45,N1=5,N2=3")
+                .path(Vec2.ZERO, TOL)
+                .strokes();
         assertEquals((3 + 1) + (5 + 1), st.size());
         List<Segment2> seg = segments(st);
         for (Segment2 s : seg.subList(0, 4)) {
-            double cross = (s.end().x() - s.start().x()) - (s.end().y() - s.start().y());
+            double cross =
+                    (s.end().x() - s.start().x()) - (s.end().y() - s.start().y());
             assertEquals(0, cross, 1e-9, "along 45 degrees");
             assertEquals(30, s.length(), 1e-9);
         }
         for (Segment2 s : seg.subList(4, 10)) {
-            double dot = (s.end().x() - s.start().x()) * 1 + (s.end().y() - s.start().y()) * 1;
+            double dot =
+                    (s.end().x() - s.start().x()) * 1 + (s.end().y() - s.start().y()) * 1;
             assertEquals(0, dot, 1e-9, "at right angles to the first direction");
             assertEquals(18, s.length(), 1e-9);
         }
         // pitch: the first set's lines 6 apart (distance of a line's start from the next line)
         assertEquals(6, lineDistance(seg.get(0), seg.get(1)), 1e-9);
         assertEquals(6, lineDistance(seg.get(4), seg.get(5)), 1e-9);
-        List<Stroke> kept = TreadClipper.clip(figure("PIRAM", "XO=-20,YO=-60,P=6,ANG=45,N1=40,N2=40").path(Vec2.ZERO, TOL)
-                .strokes(), sole, 3, TOL);
+        List<Stroke> kept = TreadClipper.clip(
+                figure("PIRAM", "XO=-20,YO=-60,P=6,ANG=45,N1=40,N2=40")
+                        .path(Vec2.ZERO, TOL)
+                        .strokes(),
+                sole,
+                3,
+                TOL);
         assertInside(kept, 3);
     }
 
@@ -186,7 +208,8 @@ class SpecialDesignsTest {
     @Test
     void groupITextureLinesAreDashedLikeStitching() throws Exception {
         // 3 lines 60 long, 3 apart; dashes 4 with gaps 2: 10 dashes a line, the last one whole
-        List<Stroke> st = figure("TEXTURA", "XO=-30,YO=100,L=60,P=3,ANG=0,N=3,DASH=4,GAP=2").path(Vec2.ZERO, TOL)
+        List<Stroke> st = figure("TEXTURA", "XO=-30,YO=100,L=60,P=3,ANG=0,N=3,DASH=4,GAP=2")
+                .path(Vec2.ZERO, TOL)
                 .strokes();
         assertEquals(30, st.size());
         for (Segment2 s : segments(st)) {
@@ -197,23 +220,30 @@ class SpecialDesignsTest {
         assertEquals(-30, st.get(0).start().x(), 1e-12);
         assertEquals(-24, st.get(1).start().x(), 1e-12, "dash 4 + gap 2");
         // whole lines without dashes; back and forth
-        List<Stroke> ribs = figure("TEXTURA", "XO=-30,YO=100,L=60,P=1.5,ANG=90,N=4,DASH=0,GAP=0").path(Vec2.ZERO, TOL)
+        List<Stroke> ribs = figure("TEXTURA", "XO=-30,YO=100,L=60,P=1.5,ANG=90,N=4,DASH=0,GAP=0")
+                .path(Vec2.ZERO, TOL)
                 .strokes();
         assertEquals(4, ribs.size());
         assertEquals(-31.5, ribs.get(1).start().x(), 1e-12, "the next line 1.5 to the left of the first at 90 deg");
         assertEquals(160, ribs.get(1).start().y(), 1e-12, "the second line runs back");
-        List<Stroke> kept = TreadClipper.clip(figure("TEXTURA", "XO=35,YO=-40,L=300,P=2,ANG=90,N=60,DASH=5,GAP=2")
-                .path(Vec2.ZERO, TOL).strokes(), sole, 2, TOL);
+        List<Stroke> kept = TreadClipper.clip(
+                figure("TEXTURA", "XO=35,YO=-40,L=300,P=2,ANG=90,N=60,DASH=5,GAP=2")
+                        .path(Vec2.ZERO, TOL)
+                        .strokes(),
+                sole,
+                2,
+                TOL);
         assertInside(kept, 2);
     }
 
     @Test
     void groupJALogoIsTheDrawingsOutlinesScaledToHeightH() throws Exception {
         // a drawing 40 x 20 about (100, 100): a rectangle and a circle of radius 5
-        Contour box = Contour.polygon(List.of(Vec2.of(100, 100), Vec2.of(140, 100), Vec2.of(140, 120), Vec2.of(100, 120)));
+        Contour box =
+                Contour.polygon(List.of(Vec2.of(100, 100), Vec2.of(140, 100), Vec2.of(140, 120), Vec2.of(100, 120)));
         Arc2 circle = new Arc2(Vec2.of(110, 110), Vec2.of(115, 110), Vec2.of(115, 110), true);
-        TreadFigure f = TreadFigures.of("LOGO", Map.of("X", -20.0, "Y", 150.0, "H", 10.0),
-                List.of(box.curves(), List.of(circle)), "logo");
+        TreadFigure f = TreadFigures.of(
+                "LOGO", Map.of("X", -20.0, "Y", 150.0, "H", 10.0), List.of(box.curves(), List.of(circle)), "logo");
         List<Stroke> st = f.path(Vec2.ZERO, TOL).strokes();
         assertEquals(2, st.size(), "one groove per outline");
         assertEquals(4, st.get(0).curves().size());
@@ -233,8 +263,8 @@ class SpecialDesignsTest {
         assertEquals(150, minY, 1e-12);
         assertEquals(10, maxY - minY, 1e-12);
         // a logo wider than the toe is cut where the outline lets it
-        TreadFigure wide = TreadFigures.of("LOGO", Map.of("X", -80.0, "Y", 200.0, "H", 50.0),
-                List.of(box.curves()), "logo");
+        TreadFigure wide =
+                TreadFigures.of("LOGO", Map.of("X", -80.0, "Y", 200.0, "H", 50.0), List.of(box.curves()), "logo");
         List<Stroke> kept = TreadClipper.clip(wide.path(Vec2.ZERO, TOL).strokes(), sole, 2, TOL);
         assertInside(kept, 2);
         double cut = kept.stream().mapToDouble(Stroke::length).sum();

@@ -23,8 +23,8 @@ class TreadClipperTest {
     @Test
     void aLineAcrossASquareKeepsTheChordInsideTheMargin() {
         Contour square = Contour.polygon(List.of(Vec2.of(0, 0), Vec2.of(100, 0), Vec2.of(100, 100), Vec2.of(0, 100)));
-        List<Stroke> out = TreadClipper.clip(List.of(Stroke.of(Vec2.of(-20, 50), List.of(Segment2.of(-20, 50, 120, 50)))),
-                square, 5, TOL);
+        List<Stroke> out = TreadClipper.clip(
+                List.of(Stroke.of(Vec2.of(-20, 50), List.of(Segment2.of(-20, 50, 120, 50)))), square, 5, TOL);
         assertEquals(1, out.size());
         Curve2 c = out.get(0).curves().get(0);
         assertEquals(5, c.start().x(), 1e-9);
@@ -34,10 +34,17 @@ class TreadClipperTest {
     @Test
     void aStrokeThatLeavesAndReentersBecomesTwoStrokes() {
         // a U-shaped outline: a straight cut across the mouth leaves through the gap
-        Contour u = Contour.polygon(List.of(Vec2.of(0, 0), Vec2.of(60, 0), Vec2.of(60, 60), Vec2.of(40, 60),
-                Vec2.of(40, 20), Vec2.of(20, 20), Vec2.of(20, 60), Vec2.of(0, 60)));
-        List<Stroke> out = TreadClipper.clip(List.of(Stroke.of(Vec2.of(-10, 40), List.of(Segment2.of(-10, 40, 70, 40)))),
-                u, 2, TOL);
+        Contour u = Contour.polygon(List.of(
+                Vec2.of(0, 0),
+                Vec2.of(60, 0),
+                Vec2.of(60, 60),
+                Vec2.of(40, 60),
+                Vec2.of(40, 20),
+                Vec2.of(20, 20),
+                Vec2.of(20, 60),
+                Vec2.of(0, 60)));
+        List<Stroke> out = TreadClipper.clip(
+                List.of(Stroke.of(Vec2.of(-10, 40), List.of(Segment2.of(-10, 40, 70, 40)))), u, 2, TOL);
         assertEquals(2, out.size());
         assertEquals(2, out.get(0).start().x(), 1e-9);
         assertEquals(18, out.get(0).end().x(), 1e-9);
@@ -90,8 +97,10 @@ class TreadClipperTest {
                     for (int k = 0; k <= 16; k++) {
                         Vec2 p = c.pointAt(k / 16.0);
                         double d = outline.distanceTo(p);
-                        assertTrue(d >= margin - 1e-6, kind + " trial " + trial + ": kept point " + p + " at " + d
-                                + " from the outline, margin " + margin);
+                        assertTrue(
+                                d >= margin - 1e-6,
+                                kind + " trial " + trial + ": kept point " + p + " at " + d
+                                        + " from the outline, margin " + margin);
                         assertTrue(d <= 1e-6 || outline.windingNumber(p) != 0, "kept point outside: " + p);
                     }
                 }

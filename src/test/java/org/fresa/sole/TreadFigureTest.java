@@ -56,7 +56,8 @@ class TreadFigureTest {
 
     @Test
     void sub1bCutsTheVerticalPairOfTheInsertProgram() throws Exception {
-        FigurePath p = call("SUB1B", "XA1=-45,YA1=210.6,YB1=181,XC1=-30,YC1=184,YD1=220").path(Vec2.ZERO, TOL);
+        FigurePath p = call("SUB1B", "XA1=-45,YA1=210.6,YB1=181,XC1=-30,YC1=184,YD1=220")
+                .path(Vec2.ZERO, TOL);
         assertLine(-45, 210.6, -45, 181, p.strokes().get(0).curves().get(0));
         assertLine(-30, 184, -30, 220, p.strokes().get(1).curves().get(0));
     }
@@ -90,7 +91,8 @@ class TreadFigureTest {
 
     @Test
     void sub3eCutsFourSuccessiveArcsOfTest02EndingOnMinus20Plus20I() throws Exception {
-        FigurePath p = call("SUB3E", "XC=-30,YC=20,RA=10,XA3=-40,XB3=-20,AFAS=20,N=3").path(Vec2.of(-35, 15), TOL);
+        FigurePath p =
+                call("SUB3E", "XC=-30,YC=20,RA=10,XA3=-40,XB3=-20,AFAS=20,N=3").path(Vec2.of(-35, 15), TOL);
         List<Curve2> c = p.strokes().get(0).curves();
         assertEquals(4, c.size());
         assertPoint(-40, 20, c.get(0).start());
@@ -106,8 +108,15 @@ class TreadFigureTest {
     void sub4CutsTheThreeRingsOfTest01InTwoHalves() throws Exception {
         double[][] rings = {{16, 10, 42}, {10, 16, 36}, {5, 21, 31}};
         for (double[] r : rings) {
-            FigurePath p = call("SUB4", String.format(java.util.Locale.ROOT, "XC=26,YC=24,RA=%s,XA4=%s,YA4=24,XB4=%s,YB4=24",
-                    r[0], r[1], r[2])).path(Vec2.ZERO, TOL);
+            FigurePath p = call(
+                            "SUB4",
+                            String.format(
+                                    java.util.Locale.ROOT,
+                                    "XC=26,YC=24,RA=%s,XA4=%s,YA4=24,XB4=%s,YB4=24",
+                                    r[0],
+                                    r[1],
+                                    r[2]))
+                    .path(Vec2.ZERO, TOL);
             List<Curve2> c = p.strokes().get(0).curves();
             assertEquals(2, c.size());
             assertArc(r[1], 24, r[2], 24, 26, 24, false, c.get(0));
@@ -139,7 +148,9 @@ class TreadFigureTest {
 
     @Test
     void sub5bJoinsFromNovoOfTest04() throws Exception {
-        Vec2 at = call("NOVO", "XF1=-27.5,YF1=-25,XF2=-40,YF2=-10").path(Vec2.ZERO, TOL).end();
+        Vec2 at = call("NOVO", "XF1=-27.5,YF1=-25,XF2=-40,YF2=-10")
+                .path(Vec2.ZERO, TOL)
+                .end();
         FigurePath p = call("SUB5B", "XC1=-30,YC1=-10,XC2=-20,YC2=-10,XT=-25,YT=-10,XA5=-35,XB5=-15")
                 .path(at, TOL);
         List<Curve2> c = p.strokes().get(0).curves();
@@ -166,8 +177,11 @@ class TreadFigureTest {
 
     @Test
     void sub7aCutsTheVOfTest04() throws Exception {
-        List<Curve2> c = call("SUB7A", "XA7=-40,YA7=20,XB7=10,YB7=5,XC7=10,YC7=-5").path(Vec2.ZERO, TOL)
-                .strokes().get(0).curves();
+        List<Curve2> c = call("SUB7A", "XA7=-40,YA7=20,XB7=10,YB7=5,XC7=10,YC7=-5")
+                .path(Vec2.ZERO, TOL)
+                .strokes()
+                .get(0)
+                .curves();
         assertLine(-40, 20, -30, 25, c.get(0));
         assertLine(-30, 25, -20, 20, c.get(1));
     }
@@ -183,8 +197,11 @@ class TreadFigureTest {
 
     @Test
     void sub8aCutsTheSteppedZOfTest03() throws Exception {
-        List<Curve2> c = call("SUB8A", "XA8=-39,YA8=20,XB8=4,YB8=0,XC8=5,YC8=-10,XD8=4,YD8=0").path(Vec2.ZERO, TOL)
-                .strokes().get(0).curves();
+        List<Curve2> c = call("SUB8A", "XA8=-39,YA8=20,XB8=4,YB8=0,XC8=5,YC8=-10,XD8=4,YD8=0")
+                .path(Vec2.ZERO, TOL)
+                .strokes()
+                .get(0)
+                .curves();
         assertLine(-39, 20, -35, 20, c.get(0));
         assertLine(-35, 20, -30, 10, c.get(1));
         assertLine(-30, 10, -26, 10, c.get(2));
@@ -192,8 +209,14 @@ class TreadFigureTest {
 
     @Test
     void sub8bCutsOneTrapezoidOfTest03FromNovo() throws Exception {
-        Vec2 at = call("NOVO", "XF1=-40,YF1=-25,XF2=-40,YF2=-15").path(Vec2.ZERO, TOL).end();
-        List<Curve2> c = call("SUB8B", "XB8=5,YB8=5,XC8=10,YC8=0,XD8=5,YD8=-5").path(at, TOL).strokes().get(0).curves();
+        Vec2 at = call("NOVO", "XF1=-40,YF1=-25,XF2=-40,YF2=-15")
+                .path(Vec2.ZERO, TOL)
+                .end();
+        List<Curve2> c = call("SUB8B", "XB8=5,YB8=5,XC8=10,YC8=0,XD8=5,YD8=-5")
+                .path(at, TOL)
+                .strokes()
+                .get(0)
+                .curves();
         assertLine(-40, -15, -35, -10, c.get(0));
         assertLine(-35, -10, -25, -10, c.get(1));
         assertLine(-25, -10, -20, -15, c.get(2));
@@ -202,7 +225,10 @@ class TreadFigureTest {
     @Test
     void sub9aClosesTheParallelogramOfTest05() throws Exception {
         List<Curve2> c = call("SUB9A", "XA9=15,YA9=15,XB9=5,YB9=0,XC9=-5,YC9=10,XD9=-5,YD9=0,XE9=5,YE9=-10")
-                .path(Vec2.ZERO, TOL).strokes().get(0).curves();
+                .path(Vec2.ZERO, TOL)
+                .strokes()
+                .get(0)
+                .curves();
         assertLine(15, 15, 20, 15, c.get(0));
         assertLine(20, 15, 15, 25, c.get(1));
         assertLine(15, 25, 10, 25, c.get(2));
@@ -211,9 +237,14 @@ class TreadFigureTest {
 
     @Test
     void sub9bCutsOneTrapezoidPeriodOfTest05() throws Exception {
-        Vec2 at = call("NOVO", "XF1=-35,YF1=-30,XF2=-40,YF2=-20").path(Vec2.ZERO, TOL).end();
-        List<Curve2> c = call("SUB9B", "XB9=5,YB9=0,XC9=5,YC9=8,XD9=5,YD9=0,XE9=5,YE9=-8").path(at, TOL)
-                .strokes().get(0).curves();
+        Vec2 at = call("NOVO", "XF1=-35,YF1=-30,XF2=-40,YF2=-20")
+                .path(Vec2.ZERO, TOL)
+                .end();
+        List<Curve2> c = call("SUB9B", "XB9=5,YB9=0,XC9=5,YC9=8,XD9=5,YD9=0,XE9=5,YE9=-8")
+                .path(at, TOL)
+                .strokes()
+                .get(0)
+                .curves();
         assertLine(-40, -20, -35, -20, c.get(0));
         assertLine(-35, -20, -30, -12, c.get(1));
         assertLine(-30, -12, -25, -12, c.get(2));
@@ -222,7 +253,8 @@ class TreadFigureTest {
 
     @Test
     void primPlungesAtItsPointAndStaysDown() throws Exception {
-        FigurePath p = call("PRIM", "XI=-40,YI=-10,XA1=0,YA1=0,PROF=7,AVAN=150,CTM=0,I=1").path(Vec2.ZERO, TOL);
+        FigurePath p = call("PRIM", "XI=-40,YI=-10,XA1=0,YA1=0,PROF=7,AVAN=150,CTM=0,I=1")
+                .path(Vec2.ZERO, TOL);
         assertTrue(p.staysDown());
         assertPoint(-40, -10, p.strokes().get(0).start());
         assertTrue(p.strokes().get(0).via().isEmpty());
@@ -240,15 +272,15 @@ class TreadFigureTest {
 
     @Test
     void aMissingParameterIsReportedByItsThesisName() {
-        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
-                () -> call("SUB2", "XA2=-40,YA2=10,XB2=10"));
+        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+                CamInputException.class, () -> call("SUB2", "XA2=-40,YA2=10,XB2=10"));
         assertTrue(e.getMessage().contains("YB2"), e.getMessage());
     }
 
     @Test
     void anArcWhoseStartLineMissesTheCircleIsBadInput() {
-        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(CamInputException.class,
-                () -> call("SUB3A", "XC=0,YC=0,RA=5,XA3=-9,XB3=5"));
+        CamInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+                CamInputException.class, () -> call("SUB3A", "XC=0,YC=0,RA=5,XA3=-9,XB3=5"));
         assertTrue(e.getMessage().contains("misses"), e.getMessage());
     }
 }

@@ -21,8 +21,10 @@ class Ap238AimBinderTest {
     private static final double EPS = 1e-9;
 
     static StepNcProgram inMillimetres() throws Exception {
-        String text = Files.readString(INCH).replace("#1=(CONVERSION_BASED_UNIT('INCH',#3) LENGTH_UNIT() NAMED_UNIT(#4));",
-                "#1=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));");
+        String text = Files.readString(INCH)
+                .replace(
+                        "#1=(CONVERSION_BASED_UNIT('INCH',#3) LENGTH_UNIT() NAMED_UNIT(#4));",
+                        "#1=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));");
         return StepNcReader.read(new StringReader(text), "mm.stp");
     }
 
@@ -36,25 +38,34 @@ class Ap238AimBinderTest {
         assertTrue(p.integratedForm());
         assertEquals("AIM", p.form());
         assertEquals("INCH PART", p.projectId());
-        assertEquals(List.of("WS DRILL HOLE1", "WS ROUGH POCKET1"),
+        assertEquals(
+                List.of("WS DRILL HOLE1", "WS ROUGH POCKET1"),
                 p.workingsteps().stream().map(MachiningWorkingstep::id).toList());
         assertTrue(p.skipped().isEmpty(), p.skipped().toString());
         assertEquals("MAIN WORKPLAN", p.mainWorkplan().orElseThrow().id());
         assertEquals("SETUP1", p.workingsteps().get(0).setup().orElseThrow().id());
-        assertEquals(List.of("PLATE"), p.workpieces().stream().map(Workpiece::id).toList());
+        assertEquals(
+                List.of("PLATE"), p.workpieces().stream().map(Workpiece::id).toList());
         // the project is a MACHINING_PROJECT, the workingsteps are in the main workplan's sequence
-        assertFalse(p.warnings().stream().anyMatch(w -> w.contains("PROJECT")), p.warnings().toString());
+        assertFalse(
+                p.warnings().stream().anyMatch(w -> w.contains("PROJECT")),
+                p.warnings().toString());
     }
 
     @Test
     void anSiPrefixScalesTheFilesLengths() throws Exception {
-        String text = Files.readString(INCH).replace("#1=(CONVERSION_BASED_UNIT('INCH',#3) LENGTH_UNIT() NAMED_UNIT(#4));",
-                "#1=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.CENTI.,.METRE.));");
+        String text = Files.readString(INCH)
+                .replace(
+                        "#1=(CONVERSION_BASED_UNIT('INCH',#3) LENGTH_UNIT() NAMED_UNIT(#4));",
+                        "#1=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.CENTI.,.METRE.));");
         StepNcProgram p = StepNcReader.read(new StringReader(text), "cm.stp");
         near(new Vec3(10, 20, 0), p.workingsteps().get(0).feature().location());
         assertEquals(5, p.workingsteps().get(0).feature().depthMm().getAsDouble(), EPS);
         // 5 cm/minute
-        assertEquals(50, p.workingsteps().get(0).operation().technology().feedMmPerMin().getAsDouble(), 1e-9);
+        assertEquals(
+                50,
+                p.workingsteps().get(0).operation().technology().feedMmPerMin().getAsDouble(),
+                1e-9);
     }
 
     @Test
@@ -93,13 +104,17 @@ class Ap238AimBinderTest {
         Operation mill = rough.operation();
         assertEquals(Operation.OperationType.BOTTOM_AND_SIDE_ROUGH_MILLING, mill.type());
         assertEquals(6.35, mill.axialCuttingDepthMm().getAsDouble(), EPS);
-        assertEquals(Strategy.StrategyType.CONTOUR_PARALLEL, mill.strategy().orElseThrow().type());
+        assertEquals(
+                Strategy.StrategyType.CONTOUR_PARALLEL,
+                mill.strategy().orElseThrow().type());
         assertEquals("CW", mill.strategy().orElseThrow().rotationDirection().orElseThrow());
-        assertEquals(ApproachRetract.Kind.PLUNGE_RAMP, mill.approach().orElseThrow().kind());
+        assertEquals(
+                ApproachRetract.Kind.PLUNGE_RAMP, mill.approach().orElseThrow().kind());
         assertEquals(10, mill.approach().orElseThrow().angle().getAsDouble(), 1e-9);
         assertEquals(12.7, mill.tool().orElseThrow().diameterMm().getAsDouble(), EPS);
         assertEquals(4, mill.tool().orElseThrow().teeth().getAsInt());
-        assertTrue(p.spellings().stream().anyMatch(s -> s.contains("lengths in INCH (25.4 mm), converted to mm")),
+        assertTrue(
+                p.spellings().stream().anyMatch(s -> s.contains("lengths in INCH (25.4 mm), converted to mm")),
                 p.spellings().toString());
     }
 
@@ -111,26 +126,37 @@ class Ap238AimBinderTest {
         assertEquals(0.5, hole.depthMm().getAsDouble(), EPS);
         assertEquals(0.25, hole.diameterMm().getAsDouble(), EPS);
         // 5 mm/minute: kept, and reported as too slow to cut
-        assertEquals(5, p.workingsteps().get(0).operation().technology().feedMmPerMin().getAsDouble(), 1e-9);
-        assertTrue(p.warnings().stream().anyMatch(w -> w.contains("too slow to cut")), p.warnings().toString());
-        assertFalse(p.spellings().stream().anyMatch(s -> s.startsWith("lengths in")), p.spellings().toString());
+        assertEquals(
+                5,
+                p.workingsteps().get(0).operation().technology().feedMmPerMin().getAsDouble(),
+                1e-9);
+        assertTrue(
+                p.warnings().stream().anyMatch(w -> w.contains("too slow to cut")),
+                p.warnings().toString());
+        assertFalse(
+                p.spellings().stream().anyMatch(s -> s.startsWith("lengths in")),
+                p.spellings().toString());
     }
 
     @Test
     void aWorkingstepOutsideEverySequenceIsNamedWithThatReason() throws Exception {
-        String text = Files.readString(INCH).replace("#304=MACHINING_PROCESS_SEQUENCE_RELATIONSHIP('','',#300,#400,1.);",
-                "");
+        String text =
+                Files.readString(INCH).replace("#304=MACHINING_PROCESS_SEQUENCE_RELATIONSHIP('','',#300,#400,1.);", "");
         StepNcProgram p = StepNcReader.read(new StringReader(text), "t.stp");
         assertEquals(1, p.workingsteps().size());
         assertEquals(1, p.skipped().size());
         assertEquals("WS DRILL HOLE1", p.skipped().get(0).id());
-        assertTrue(p.skipped().get(0).reason().contains("in no workplan's sequence"), p.skipped().get(0).reason());
+        assertTrue(
+                p.skipped().get(0).reason().contains("in no workplan's sequence"),
+                p.skipped().get(0).reason());
     }
 
     @Test
     void anOperationTheBindingDoesNotKnowIsKeptWithItsNameForThePlannerToRefuse() throws Exception {
-        String text = Files.readString(INCH).replace("#420=DRILLING_OPERATION('DRILL HOLE1','drilling','','');",
-                "#420=FACING_TURNING_OPERATION('FACE','roughing','','');");
+        String text = Files.readString(INCH)
+                .replace(
+                        "#420=DRILLING_OPERATION('DRILL HOLE1','drilling','','');",
+                        "#420=FACING_TURNING_OPERATION('FACE','roughing','','');");
         StepNcProgram p = StepNcReader.read(new StringReader(text), "t.stp");
         Operation op = p.workingsteps().get(0).operation();
         assertEquals(Operation.OperationType.OTHER, op.type());
@@ -144,8 +170,12 @@ class Ap238AimBinderTest {
         assertEquals("TOOLPATH_FEATURE", ws.feature().entity());
         Operation op = ws.operation();
         assertEquals(Operation.OperationType.FREEFORM_OPERATION, op.type());
-        assertEquals(List.of("TP 1", "TP 2", "TP 3"), op.toolpaths().stream().map(ExplicitToolpath::id).toList());
-        assertEquals(List.of(true, false, true), op.toolpaths().stream().map(ExplicitToolpath::rapid).toList());
+        assertEquals(
+                List.of("TP 1", "TP 2", "TP 3"),
+                op.toolpaths().stream().map(ExplicitToolpath::id).toList());
+        assertEquals(
+                List.of(true, false, true),
+                op.toolpaths().stream().map(ExplicitToolpath::rapid).toList());
         assertEquals(300, op.technology().feedMmPerMin().getAsDouble(), 1e-9);
         assertEquals(1200, op.technology().spindleRpm().getAsDouble(), 1e-9);
         List<Profile.Segment> cut = op.toolpaths().get(1).curve();

@@ -29,8 +29,12 @@ class DamagedFilesTest {
     }
 
     static CamInputException refused(String text) {
-        return assertTimeoutPreemptively(HANG_GUARD, () -> assertThrows(CamInputException.class,
-                () -> StepNcReader.read(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), "x.stp")));
+        return assertTimeoutPreemptively(
+                HANG_GUARD,
+                () -> assertThrows(
+                        CamInputException.class,
+                        () -> StepNcReader.read(
+                                new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), "x.stp")));
     }
 
     static void assertHasLine(CamInputException e) {
@@ -58,8 +62,10 @@ class DamagedFilesTest {
 
     @Test
     void aDanglingReferenceIsRefusedAtTheReferencingLine() throws Exception {
-        String s = example2().replace("#48=MACHINING_WORKINGSTEP('Plane Base Hole_RGH',#15,#35,#25,$);",
-                "#48=MACHINING_WORKINGSTEP('Plane Base Hole_RGH',#15,#35,#9999,$);");
+        String s = example2()
+                .replace(
+                        "#48=MACHINING_WORKINGSTEP('Plane Base Hole_RGH',#15,#35,#25,$);",
+                        "#48=MACHINING_WORKINGSTEP('Plane Base Hole_RGH',#15,#35,#9999,$);");
         CamInputException e = refused(s);
         assertHasLine(e);
         assertTrue(e.getMessage().contains("#9999"), e.getMessage());
@@ -92,8 +98,9 @@ class DamagedFilesTest {
 
     @Test
     void randomMutationsOfEverySampleOnlyEverSucceedOrGiveACamInputException() throws Exception {
-        for (String name : new String[] {"example2.stp", "iso14649-11-example1.stp",
-            "iso14649-11-example1-explicit-toolpaths.stp"}) {
+        for (String name :
+                new String[] {"example2.stp", "iso14649-11-example1.stp", "iso14649-11-example1-explicit-toolpaths.stp"
+                }) {
             byte[] original = Files.readAllBytes(Path.of("samples/stepnc", name));
             for (long seed = 1; seed <= 100; seed++) {
                 Random r = new Random(seed);
@@ -117,8 +124,10 @@ class DamagedFilesTest {
         });
     }
 
-    private static final String[] INSERTS = {"(", ")", ",", ";", "'", "#", "$", "*", ".", "#0", "#99999",
-        "/*", "\\", "\"", "=", "1E400", "-", "#1=", "ENDSEC;", "(((", ")))"};
+    private static final String[] INSERTS = {
+        "(", ")", ",", ";", "'", "#", "$", "*", ".", "#0", "#99999", "/*", "\\", "\"", "=", "1E400", "-", "#1=",
+        "ENDSEC;", "(((", ")))"
+    };
 
     static byte[] mutate(byte[] in, Random r) {
         byte[] b = in.clone();

@@ -20,7 +20,8 @@ class DraftSpellingsTest {
     void exampleOneInTheDraftsSpellingIsReadWithEachSpellingReported() throws Exception {
         StepNcProgram p = StepNcReader.read(DRAFT);
         String seen = String.join("\n", p.spellings());
-        assertAll(seen,
+        assertAll(
+                seen,
                 () -> assertEquals(5, p.workingsteps().size()),
                 () -> assertTrue(seen.contains("BIDIRECTIONAL read as BIDIRECTIONAL_MILLING")),
                 () -> assertTrue(seen.contains("TOOL_DIMENSION read as MILLING_TOOL_DIMENSION")),
@@ -33,9 +34,16 @@ class DraftSpellingsTest {
     void thePercentagesOfTheDraftBecomeFractions() throws Exception {
         StepNcProgram p = StepNcReader.read(DRAFT);
         // DRILLING_TYPE_STRATEGY(75.000, 50.000, 2.000, 50.000, 75.000, 8.000)
-        DrillingStrategy d = p.workingsteps().get(1).operation().strategy().orElseThrow().drilling().orElseThrow();
+        DrillingStrategy d = p.workingsteps()
+                .get(1)
+                .operation()
+                .strategy()
+                .orElseThrow()
+                .drilling()
+                .orElseThrow();
         Strategy bidir = p.workingsteps().get(0).operation().strategy().orElseThrow();
-        assertAll(() -> assertEquals(0.5, d.reducedFeedAtStart().orElseThrow(), 1e-12),
+        assertAll(
+                () -> assertEquals(0.5, d.reducedFeedAtStart().orElseThrow(), 1e-12),
                 () -> assertEquals(0.75, d.reducedFeedAtEnd().orElseThrow(), 1e-12),
                 () -> assertEquals(8.0, d.depthOfEndMm().orElseThrow(), 1e-12),
                 () -> assertEquals(Strategy.StrategyType.BIDIRECTIONAL, bidir.type()),
@@ -46,12 +54,26 @@ class DraftSpellingsTest {
     @Test
     void theGeneralPocketProfileAndTheRampsOfTheDraftAreKept() throws Exception {
         StepNcProgram p = StepNcReader.read(DRAFT);
-        Profile.General outline = (Profile.General) p.workingsteps().get(3).feature().profile().orElseThrow();
-        assertAll(() -> assertEquals(4, outline.segments().size()),
+        Profile.General outline =
+                (Profile.General) p.workingsteps().get(3).feature().profile().orElseThrow();
+        assertAll(
+                () -> assertEquals(4, outline.segments().size()),
                 () -> assertTrue(outline.closed()),
-                () -> assertEquals(Strategy.StrategyType.CONTOUR_BIDIRECTIONAL,
-                        p.workingsteps().get(3).operation().strategy().orElseThrow().type()),
-                () -> assertEquals(ApproachRetract.Kind.PLUNGE_RAMP,
-                        p.workingsteps().get(0).operation().approach().orElseThrow().kind()));
+                () -> assertEquals(
+                        Strategy.StrategyType.CONTOUR_BIDIRECTIONAL,
+                        p.workingsteps()
+                                .get(3)
+                                .operation()
+                                .strategy()
+                                .orElseThrow()
+                                .type()),
+                () -> assertEquals(
+                        ApproachRetract.Kind.PLUNGE_RAMP,
+                        p.workingsteps()
+                                .get(0)
+                                .operation()
+                                .approach()
+                                .orElseThrow()
+                                .kind()));
     }
 }

@@ -43,7 +43,14 @@ class Iso14649SchemaTest {
             RECTANGULAR_CLOSED_PROFILE, 3
             """)
     void attributeCountsMatchTheStandardWithInheritedAttributesFirst(String entity, int count) {
-        assertEquals(count, Iso14649Schema.get().find(entity).orElseThrow().def().attributes().size());
+        assertEquals(
+                count,
+                Iso14649Schema.get()
+                        .find(entity)
+                        .orElseThrow()
+                        .def()
+                        .attributes()
+                        .size());
     }
 
     @ParameterizedTest

@@ -27,8 +27,9 @@ class LargePart21LowMemoryTest {
     @Test
     void aHundredMegabyteFileIsReadAndBoundIn512Megabytes() throws Exception {
         long maxHeap = Runtime.getRuntime().maxMemory();
-        assumeTrue(maxHeap <= 520 * MIB, "needs -Xmx512m (the low-memory surefire execution), has "
-                + maxHeap / MIB + " MiB");
+        assumeTrue(
+                maxHeap <= 520 * MIB,
+                "needs -Xmx512m (the low-memory surefire execution), has " + maxHeap / MIB + " MiB");
         Path big = dir.resolve("big.stp");
         int copies = RepeatedPart21.write(Path.of("samples/stepnc/example2.stp"), big, TARGET_BYTES);
         assertTrue(Files.size(big) >= TARGET_BYTES, "generated " + Files.size(big) + " bytes");
@@ -40,7 +41,9 @@ class LargePart21LowMemoryTest {
         assertAll(
                 () -> assertEquals((long) copies * one.instanceCount(), p.instanceCount()),
                 () -> assertEquals(one.workingsteps(), p.workingsteps()),
-                () -> assertEquals((long) copies * perCopy, p.workingsteps().size() + p.skipped().size()),
+                () -> assertEquals(
+                        (long) copies * perCopy,
+                        p.workingsteps().size() + p.skipped().size()),
                 () -> assertEquals(one.projectId(), p.projectId()));
     }
 }

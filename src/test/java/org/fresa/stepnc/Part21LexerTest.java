@@ -37,10 +37,13 @@ class Part21LexerTest {
             Map.entry("FuroBaseConica.p21", "1f7968e08b9e5595524fcaccc1e5ec71b5f4194919c03652a8d0356513a829f3"),
             Map.entry("FuroBaseEsferica.p21", "5e053bda5553861428c9eb6fc99c9581da64e7727134a992624f1ce238a2e47f"),
             Map.entry("FuroConico.p21", "a4aea785029ffbba41d778dc3607ffae3892da4164c2a99368807091bc27e83e"),
-            Map.entry("OneHoleOneSlotReaderTest.p21", "ec560b314613c379dd8a30f8aadc801b5894c9f6583374f22fdcf24b91406734"),
+            Map.entry(
+                    "OneHoleOneSlotReaderTest.p21", "ec560b314613c379dd8a30f8aadc801b5894c9f6583374f22fdcf24b91406734"),
             Map.entry("Ranhura.p21", "a2f33dbc59f66470cf57f32a82cd7d7bd9d526edf084d47c70526e8d72e3f148"),
             Map.entry("RanhuraPerfilBezier.p21", "f8a435eb553e8c57c8b63600a8c185c83295831a840bd7f34003f3bd0d124549"),
-            Map.entry("RanhuraPerfilCircularParcial.p21", "fb3c584fbb3777fb6d93d42fe5fde9e751462d63c64dbed9d5fbee660d4ae51c"),
+            Map.entry(
+                    "RanhuraPerfilCircularParcial.p21",
+                    "fb3c584fbb3777fb6d93d42fe5fde9e751462d63c64dbed9d5fbee660d4ae51c"),
             Map.entry("RanhuraPerfilRoundedU.p21", "ef5401e2d9afc32d037725dada93c306c9e60c25c281109ef770661ba3d682d8"),
             Map.entry("RanhuraPerfilUQuadrado.p21", "fff6275b90422600b0d6299eb1d213ec0f0c674233777fea5e872f4f31658654"),
             Map.entry("RanhuraPerfilVee.p21", "e8056570d69ecce098625a4718798daca91be6ba222bae2d49332c1cf33b5578"),
@@ -53,22 +56,34 @@ class Part21LexerTest {
             Map.entry("STEP-NC_slot File.p21", "ac190bad3537e7a14662197165934fe46a89013494b4a672c8c95bf4bd3ba009"),
             Map.entry("aim-cc1-toolpaths.stp", "ff9106505aea9f16f69d5d5d87ea7cacf1e21ab22ea2d380e67be3a9608a50e1"),
             Map.entry("aim-header-only.stp", "4fa027b3d06fde7daa3b9f1c84509aa3cc754bf737f0bd842fe9c1c809b4208c"),
-            Map.entry("aim-inch-hole-and-pocket.stp", "c98a06d2b8ec1a080183c204d95daf2972d99b86dcab55e71bedf1f89a766873"),
-            Map.entry("annexJ4-cc1-simple-block.stp", "2e16da42df461a5effa24c7292f46f7bd5b00b31fb4cb44aa608b01d9a078b6c"),
-            Map.entry("annexJ6-cc3-iso14649-11-example1-aim.stp", "4c06283fa180e0da9d0853cfc18c2b659d03eb105d14d947010d9cc0db8c84a6"),
+            Map.entry(
+                    "aim-inch-hole-and-pocket.stp", "c98a06d2b8ec1a080183c204d95daf2972d99b86dcab55e71bedf1f89a766873"),
+            Map.entry(
+                    "annexJ4-cc1-simple-block.stp", "2e16da42df461a5effa24c7292f46f7bd5b00b31fb4cb44aa608b01d9a078b6c"),
+            Map.entry(
+                    "annexJ6-cc3-iso14649-11-example1-aim.stp",
+                    "4c06283fa180e0da9d0853cfc18c2b659d03eb105d14d947010d9cc0db8c84a6"),
             Map.entry("example2.stp", "5c87b08d50cd8e150649d8c49a444baa73ebee221e309d2badeb64ad876a98af"),
-            Map.entry("iso14649-11-example1-explicit-toolpaths.stp", "e64a4f16ef499a960fbb6b912a3a058b8ff294823aabd776747dd442c77d1bac"),
+            Map.entry(
+                    "iso14649-11-example1-explicit-toolpaths.stp",
+                    "e64a4f16ef499a960fbb6b912a3a058b8ff294823aabd776747dd442c77d1bac"),
             Map.entry("iso14649-11-example1.stp", "8af92083cce54ce1e0c2da217deb9d827c2ab9d55ce8bd493c6bffaa49b0a78b"),
-            Map.entry("iso14649-11-fdis-example1.p21", "80366f50512c0a38a27b5d99427c3af927d1e67aa5d53858be538da5eaf2e22e"),
-            Map.entry("oneHoleOneSlotOneStepOnePoket.p21", "b9c86ae7c1331a46e87550fee71b4c2caa5d482c9cf71d02a6d4b11f571a4ec4"),
+            Map.entry(
+                    "iso14649-11-fdis-example1.p21",
+                    "80366f50512c0a38a27b5d99427c3af927d1e67aa5d53858be538da5eaf2e22e"),
+            Map.entry(
+                    "oneHoleOneSlotOneStepOnePoket.p21",
+                    "b9c86ae7c1331a46e87550fee71b4c2caa5d482c9cf71d02a6d4b11f571a4ec4"),
             Map.entry("slots-square-u.stp", "16296703489b57aee04c8a43ff9e122e3d320cac3f8598614abffebc60ba9567"),
             Map.entry("testBoxy.p21", "af592fd1e0d8def8904778ea64defc745dd6481738d29a5d1299f828b8d257f3"),
             Map.entry("testePrecedencias.p21", "1dde8af19bc6b6b076fad01abd624b597501e066f54b7d9f802de940cf18f4c7"));
 
     static Stream<Path> projectFiles() throws IOException {
-        try (Stream<Path> a = Files.list(Path.of("samples/stepnc")); Stream<Path> b = Files.list(Path.of("src/test/resources/stepnc"))) {
+        try (Stream<Path> a = Files.list(Path.of("samples/stepnc"));
+                Stream<Path> b = Files.list(Path.of("src/test/resources/stepnc"))) {
             return Stream.concat(a.toList().stream(), b.toList().stream())
-                    .filter(p -> p.toString().endsWith(".stp")).sorted();
+                    .filter(p -> p.toString().endsWith(".stp"))
+                    .sorted();
         }
     }
 
@@ -108,7 +123,10 @@ class Part21LexerTest {
     void theProjectsDigestedFilesAreStillRead() throws Exception {
         // the project's own files among the digests: if they were renamed away, the test above
         // would compare nothing with the old lexer
-        assertTrue(projectFiles().filter(p -> DIGESTS.containsKey(p.getFileName().toString())).count() >= 7);
+        assertTrue(projectFiles()
+                        .filter(p -> DIGESTS.containsKey(p.getFileName().toString()))
+                        .count()
+                >= 7);
     }
 
     @Test
@@ -128,7 +146,8 @@ class Part21LexerTest {
             if (rnd.nextBoolean()) {
                 s += "." + digits(rnd, rnd.nextInt(0, 26));
                 if (rnd.nextBoolean()) {
-                    s += (rnd.nextBoolean() ? "E" : "e") + (rnd.nextBoolean() ? "-" : rnd.nextBoolean() ? "+" : "")
+                    s += (rnd.nextBoolean() ? "E" : "e")
+                            + (rnd.nextBoolean() ? "-" : rnd.nextBoolean() ? "+" : "")
                             + rnd.nextInt(0, 280);
                 }
             }
@@ -201,7 +220,6 @@ class Part21LexerTest {
         }
 
         @Override
-        public void close() {
-        }
+        public void close() {}
     }
 }

@@ -60,7 +60,9 @@ class Part21ReaderTest {
         assertTrue(i.isComplex());
         assertEquals("LENGTH_UNIT+NAMED_UNIT+SI_UNIT", i.type());
         assertEquals(StepValue.DERIVED, i.part("NAMED_UNIT").orElseThrow().param(0));
-        assertEquals(new StepValue.Enumeration("METRE"), i.part("SI_UNIT").orElseThrow().param(1));
+        assertEquals(
+                new StepValue.Enumeration("METRE"),
+                i.part("SI_UNIT").orElseThrow().param(1));
     }
 
     @Test
@@ -133,7 +135,12 @@ class Part21ReaderTest {
 
     @Test
     void lowerCaseKeywordsAreAccepted() throws Exception {
-        assertEquals("CARTESIAN_POINT", data("#1=cartesian_point('',(0.,0.));").instance(1).orElseThrow().type());
+        assertEquals(
+                "CARTESIAN_POINT",
+                data("#1=cartesian_point('',(0.,0.));")
+                        .instance(1)
+                        .orElseThrow()
+                        .type());
     }
 
     @Test
@@ -145,7 +152,9 @@ class Part21ReaderTest {
     @Test
     void instanceNamesUpTo64BitsAreAccepted() throws Exception {
         StepFile f = data("#1=X(#9223372036854775807);#9223372036854775807=Y();");
-        assertEquals(new StepValue.Ref(Long.MAX_VALUE), f.instance(1).orElseThrow().record().param(0));
+        assertEquals(
+                new StepValue.Ref(Long.MAX_VALUE),
+                f.instance(1).orElseThrow().record().param(0));
     }
 
     @Test
@@ -255,8 +264,10 @@ class Part21ReaderTest {
         }
         StepFile f = data(sb.toString());
         for (int i = 0; i < written.size(); i++) {
-            assertEquals(new StepValue.Real(Double.parseDouble(written.get(i))),
-                    f.instance(i + 1).orElseThrow().record().param(0), written.get(i));
+            assertEquals(
+                    new StepValue.Real(Double.parseDouble(written.get(i))),
+                    f.instance(i + 1).orElseThrow().record().param(0),
+                    written.get(i));
         }
     }
 
@@ -277,15 +288,18 @@ class Part21ReaderTest {
             };
             String digits = Long.toString(m);
             int point = 1 + rnd.nextInt(digits.length());
-            String w = (i % 5 == 0 ? "-" : "") + (i % 7 == 0 ? "0." + digits : digits.substring(0, point) + "."
-                    + digits.substring(point)) + (i % 3 == 0 ? "E" + (rnd.nextInt(50) - 25) : "");
+            String w = (i % 5 == 0 ? "-" : "")
+                    + (i % 7 == 0 ? "0." + digits : digits.substring(0, point) + "." + digits.substring(point))
+                    + (i % 3 == 0 ? "E" + (rnd.nextInt(50) - 25) : "");
             written.add(w);
             sb.append("#").append(i + 1).append("=X(").append(w).append(");");
         }
         StepFile f = data(sb.toString());
         for (int i = 0; i < written.size(); i++) {
-            assertEquals(new StepValue.Real(Double.parseDouble(written.get(i))),
-                    f.instance(i + 1).orElseThrow().record().param(0), written.get(i));
+            assertEquals(
+                    new StepValue.Real(Double.parseDouble(written.get(i))),
+                    f.instance(i + 1).orElseThrow().record().param(0),
+                    written.get(i));
         }
     }
 
@@ -308,8 +322,7 @@ class Part21ReaderTest {
         }
 
         @Override
-        public void close() {
-        }
+        public void close() {}
     }
 
     @Test
@@ -318,11 +331,13 @@ class Part21ReaderTest {
         StepFile whole = parse(text);
         StepFile trickled = Part21Reader.read(new Trickle(text), "test.stp");
         assertEquals(whole.header(), trickled.header());
-        assertEquals(List.copyOf(whole.instances().values()), List.copyOf(trickled.instances().values()));
+        assertEquals(
+                List.copyOf(whole.instances().values()),
+                List.copyOf(trickled.instances().values()));
         String odd = HEAD + "DATA;\n#1=x_y-z('a''b\\X2\\00E9\\X0\\c',.t.,-1.5E+3,\"0F\",  \t#1);\n#2=A(12, /* c */ .";
         StepParseException a = assertThrows(StepParseException.class, () -> parse(odd));
-        StepParseException b = assertThrows(StepParseException.class,
-                () -> Part21Reader.read(new Trickle(odd), "test.stp"));
+        StepParseException b =
+                assertThrows(StepParseException.class, () -> Part21Reader.read(new Trickle(odd), "test.stp"));
         assertEquals(a.getMessage(), b.getMessage());
     }
 }

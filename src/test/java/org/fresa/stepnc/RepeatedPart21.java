@@ -12,8 +12,7 @@ import java.util.List;
  * a complete, valid program (the low-memory test and the GUI responsiveness test read one).
  */
 public final class RepeatedPart21 {
-    private RepeatedPart21() {
-    }
+    private RepeatedPart21() {}
 
     /** Writes the sample's header once and its data section as often as it takes to pass targetBytes. */
     public static int write(Path sample, Path out, long targetBytes) throws IOException {

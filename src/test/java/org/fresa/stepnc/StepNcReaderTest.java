@@ -1,7 +1,6 @@
 package org.fresa.stepnc;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -40,10 +39,13 @@ class StepNcReaderTest {
         assertEquals(732, p.instanceCount());
         assertEquals("3caras", p.projectId());
         assertEquals(StepNcProgram.Dialect.STEP_MODELER, p.dialect());
-        List<Long> ids = p.workingsteps().stream().map(MachiningWorkingstep::instanceId).toList();
-        assertEquals(List.of(59L, 74L, 109L, 124L, 159L, 174L, 209L, 224L, 276L,
-                329L, 364L, 379L, 414L, 429L, 464L, 479L, 514L, 529L, 564L, 579L,
-                615L, 630L, 665L, 680L, 715L, 730L), ids);
+        List<Long> ids =
+                p.workingsteps().stream().map(MachiningWorkingstep::instanceId).toList();
+        assertEquals(
+                List.of(
+                        59L, 74L, 109L, 124L, 159L, 174L, 209L, 224L, 276L, 329L, 364L, 379L, 414L, 429L, 464L, 479L,
+                        514L, 529L, 564L, 579L, 615L, 630L, 665L, 680L, 715L, 730L),
+                ids);
     }
 
     @Test
@@ -61,7 +63,10 @@ class StepNcReaderTest {
     @Test
     void example2FeaturesLieOnThreeFacesWithAxesPlusZMinusYMinusX() throws Exception {
         StepNcProgram p = read("example2.stp");
-        List<Vec3> axes = p.workingsteps().stream().map(w -> w.feature().axis()).distinct().toList();
+        List<Vec3> axes = p.workingsteps().stream()
+                .map(w -> w.feature().axis())
+                .distinct()
+                .toList();
         assertEquals(3, axes.size());
         assertTrue(axes.get(0).eq(Vec3.UNIT_Z, TOL));
         assertTrue(axes.get(1).eq(new Vec3(0, -1, 0), TOL));
@@ -89,17 +94,20 @@ class StepNcReaderTest {
         assertEquals("length", s.overlapInterpretation().orElseThrow());
         assertEquals(1.6, o.axialCuttingDepthMm().orElseThrow());
         assertEquals(2884.683343540603, o.technology().spindleRpm().orElseThrow());
-        assertEquals(ApproachRetract.Kind.PLUNGE_TOOLAXIS, o.approach().orElseThrow().kind());
+        assertEquals(
+                ApproachRetract.Kind.PLUNGE_TOOLAXIS, o.approach().orElseThrow().kind());
     }
 
     @Test
     void example2Skips14WorkingstepsThatNoWorkplanReferences() throws Exception {
         StepNcProgram p = read("example2.stp");
-        List<Long> skipped = p.skipped().stream().map(StepNcProgram.Skipped::instanceId).toList();
-        assertEquals(List.of(48L, 98L, 148L, 198L, 261L, 314L, 353L, 403L, 453L, 503L, 553L, 604L, 654L, 704L),
-                skipped);
+        List<Long> skipped =
+                p.skipped().stream().map(StepNcProgram.Skipped::instanceId).toList();
+        assertEquals(
+                List.of(48L, 98L, 148L, 198L, 261L, 314L, 353L, 403L, 453L, 503L, 553L, 604L, 654L, 704L), skipped);
         assertTrue(p.skipped().get(0).reason().contains("not referenced by any workplan"));
-        assertEquals(Operation.OperationType.CENTER_DRILLING,
+        assertEquals(
+                Operation.OperationType.CENTER_DRILLING,
                 p.skipped().get(0).workingstep().orElseThrow().operation().type());
     }
 
@@ -107,29 +115,48 @@ class StepNcReaderTest {
     void example2NestsThreeWorkplansInTheMainOne() throws Exception {
         Workplan main = read("example2.stp").mainWorkplan().orElseThrow();
         assertEquals("Main workplan", main.id());
-        assertEquals(List.of("workplan setup XY", "workplan setup XZ", "workplan setup ZY"),
+        assertEquals(
+                List.of("workplan setup XY", "workplan setup XZ", "workplan setup ZY"),
                 main.elements().stream().map(Executable::id).toList());
         Workplan xy = (Workplan) main.elements().get(0);
         Setup setup = xy.setup().orElseThrow();
-        assertEquals(225.0, setup.securityPlane().orElseThrow().translationPart().z());
+        assertEquals(
+                225.0, setup.securityPlane().orElseThrow().translationPart().z());
     }
 
     @Test
     void example1HasFiveWorkingstepsWithTheFilesStrategiesAndTools() throws Exception {
         StepNcProgram p = read("iso14649-11-example1.stp");
         assertEquals(StepNcProgram.Dialect.ISO_14649, p.dialect());
-        List<String> features = p.workingsteps().stream().map(w -> w.feature().entity()).toList();
+        List<String> features =
+                p.workingsteps().stream().map(w -> w.feature().entity()).toList();
         assertEquals(List.of("PLANAR_FACE", "ROUND_HOLE", "ROUND_HOLE", "CLOSED_POCKET", "CLOSED_POCKET"), features);
-        List<String> ops = p.workingsteps().stream().map(w -> w.operation().entity()).toList();
-        assertEquals(List.of("PLANE_FINISH_MILLING", "DRILLING", "REAMING", "BOTTOM_AND_SIDE_ROUGH_MILLING",
-                "BOTTOM_AND_SIDE_FINISH_MILLING"), ops);
+        List<String> ops =
+                p.workingsteps().stream().map(w -> w.operation().entity()).toList();
+        assertEquals(
+                List.of(
+                        "PLANE_FINISH_MILLING",
+                        "DRILLING",
+                        "REAMING",
+                        "BOTTOM_AND_SIDE_ROUGH_MILLING",
+                        "BOTTOM_AND_SIDE_FINISH_MILLING"),
+                ops);
         List<String> strategies = p.workingsteps().stream()
-                .map(w -> w.operation().strategy().map(Strategy::entity).orElse("-")).toList();
-        assertEquals(List.of("BIDIRECTIONAL_MILLING", "DRILLING_TYPE_STRATEGY", "DRILLING_TYPE_STRATEGY",
-                "CONTOUR_PARALLEL", "CONTOUR_PARALLEL"), strategies);
+                .map(w -> w.operation().strategy().map(Strategy::entity).orElse("-"))
+                .toList();
+        assertEquals(
+                List.of(
+                        "BIDIRECTIONAL_MILLING",
+                        "DRILLING_TYPE_STRATEGY",
+                        "DRILLING_TYPE_STRATEGY",
+                        "CONTOUR_PARALLEL",
+                        "CONTOUR_PARALLEL"),
+                strategies);
         List<String> tools = p.workingsteps().stream()
-                .map(w -> w.operation().tool().orElseThrow().body()).toList();
-        assertEquals(List.of("TAPERED_ENDMILL", "TWIST_DRILL", "TAPERED_REAMER", "TAPERED_ENDMILL", "TAPERED_ENDMILL"),
+                .map(w -> w.operation().tool().orElseThrow().body())
+                .toList();
+        assertEquals(
+                List.of("TAPERED_ENDMILL", "TWIST_DRILL", "TAPERED_REAMER", "TAPERED_ENDMILL", "TAPERED_ENDMILL"),
                 tools);
         Tool drill = p.workingsteps().get(1).operation().tool().orElseThrow();
         assertEquals(20.0, drill.diameterMm().orElseThrow());
@@ -150,27 +177,63 @@ class StepNcReaderTest {
         Strategy bidir = p.workingsteps().get(0).operation().strategy().orElseThrow();
         assertEquals(0.05, bidir.overlapFraction().orElseThrow());
         assertTrue(bidir.feedDirection().orElseThrow().eq(Vec3.UNIT_Y, TOL));
-        assertEquals(Feature.FeatureType.PLANAR_FACE, p.workingsteps().get(0).feature().type());
-        assertEquals(120.0, p.workingsteps().get(0).feature().courseOfTravel().orElseThrow().distanceMm().orElseThrow());
+        assertEquals(
+                Feature.FeatureType.PLANAR_FACE,
+                p.workingsteps().get(0).feature().type());
+        assertEquals(
+                120.0,
+                p.workingsteps()
+                        .get(0)
+                        .feature()
+                        .courseOfTravel()
+                        .orElseThrow()
+                        .distanceMm()
+                        .orElseThrow());
     }
 
     /** The drilling strategy and the drilling attributes are bound, not discarded. */
     @Test
     void example1sDrillingStrategyAndReamingAttributesAreBound() throws Exception {
         StepNcProgram p = read("iso14649-11-example1.stp");
-        DrillingStrategy d = p.workingsteps().get(1).operation().strategy().orElseThrow().drilling().orElseThrow();
-        assertEquals(List.of(0.75, 0.5, 2.0, 0.5, 0.75, 8.0), List.of(d.reducedCutAtStart().orElseThrow(),
-                d.reducedFeedAtStart().orElseThrow(), d.depthOfStartMm().orElseThrow(), d.reducedCutAtEnd().orElseThrow(),
-                d.reducedFeedAtEnd().orElseThrow(), d.depthOfEndMm().orElseThrow()));
-        assertEquals(DrillingStrategy.NONE,
-                p.workingsteps().get(2).operation().strategy().orElseThrow().drilling().orElseThrow());
+        DrillingStrategy d = p.workingsteps()
+                .get(1)
+                .operation()
+                .strategy()
+                .orElseThrow()
+                .drilling()
+                .orElseThrow();
+        assertEquals(
+                List.of(0.75, 0.5, 2.0, 0.5, 0.75, 8.0),
+                List.of(
+                        d.reducedCutAtStart().orElseThrow(),
+                        d.reducedFeedAtStart().orElseThrow(),
+                        d.depthOfStartMm().orElseThrow(),
+                        d.reducedCutAtEnd().orElseThrow(),
+                        d.reducedFeedAtEnd().orElseThrow(),
+                        d.depthOfEndMm().orElseThrow()));
+        assertEquals(
+                DrillingStrategy.NONE,
+                p.workingsteps()
+                        .get(2)
+                        .operation()
+                        .strategy()
+                        .orElseThrow()
+                        .drilling()
+                        .orElseThrow());
         DrillingParameters ream = p.workingsteps().get(2).operation().drilling().orElseThrow();
         assertEquals(java.util.Optional.of(true), ream.spindleStopAtBottom());
         assertTrue(ream.dwellTimeBottomS().isEmpty() && ream.feedOnRetract().isEmpty());
-        DrillingParameters drill = p.workingsteps().get(1).operation().drilling().orElseThrow();
+        DrillingParameters drill =
+                p.workingsteps().get(1).operation().drilling().orElseThrow();
         assertEquals(DrillingParameters.NONE, drill);
         assertTrue(p.workingsteps().get(0).operation().drilling().isEmpty());
-        assertTrue(p.workingsteps().get(0).operation().strategy().orElseThrow().drilling().isEmpty());
+        assertTrue(p.workingsteps()
+                .get(0)
+                .operation()
+                .strategy()
+                .orElseThrow()
+                .drilling()
+                .isEmpty());
     }
 
     @Test
@@ -187,7 +250,13 @@ class StepNcReaderTest {
         assertTrue(seen.contains("CUTTING_COMPONENT written with 4 attributes"), seen);
         assertTrue(seen.contains("percentage"), seen);
         // the draft writes DRILLING_TYPE_STRATEGY(75.000, 50.000, 2.000, 50.000, 75.000, 8.000)
-        DrillingStrategy d = p.workingsteps().get(1).operation().strategy().orElseThrow().drilling().orElseThrow();
+        DrillingStrategy d = p.workingsteps()
+                .get(1)
+                .operation()
+                .strategy()
+                .orElseThrow()
+                .drilling()
+                .orElseThrow();
         assertEquals(0.5, d.reducedFeedAtStart().orElseThrow(), 1e-12);
         assertEquals(0.75, d.reducedFeedAtEnd().orElseThrow(), 1e-12);
         assertEquals(8.0, d.depthOfEndMm().orElseThrow(), 1e-12);
@@ -195,12 +264,15 @@ class StepNcReaderTest {
         assertEquals(Strategy.StrategyType.BIDIRECTIONAL, bidir.type());
         assertEquals("BIDIRECTIONAL", bidir.entity());
         assertEquals(0.05, bidir.overlapFraction().orElseThrow(), 1e-12);
-        Profile.General outline = (Profile.General) p.workingsteps().get(3).feature().profile().orElseThrow();
+        Profile.General outline =
+                (Profile.General) p.workingsteps().get(3).feature().profile().orElseThrow();
         assertEquals(4, outline.segments().size());
         assertTrue(outline.closed());
-        assertEquals(Strategy.StrategyType.CONTOUR_BIDIRECTIONAL,
+        assertEquals(
+                Strategy.StrategyType.CONTOUR_BIDIRECTIONAL,
                 p.workingsteps().get(3).operation().strategy().orElseThrow().type());
-        assertEquals(ApproachRetract.Kind.PLUNGE_RAMP,
+        assertEquals(
+                ApproachRetract.Kind.PLUNGE_RAMP,
                 p.workingsteps().get(0).operation().approach().orElseThrow().kind());
     }
 
@@ -212,7 +284,8 @@ class StepNcReaderTest {
         assertTrue(p.workingsteps().stream()
                 .allMatch(w -> w.operation().type() == Operation.OperationType.FREEFORM_OPERATION));
         long rapids = p.mainWorkplan().orElseThrow().elements().stream()
-                .filter(e -> e instanceof Executable.Other o && o.entity().equals("RAPID_MOVEMENT")).count();
+                .filter(e -> e instanceof Executable.Other o && o.entity().equals("RAPID_MOVEMENT"))
+                .count();
         assertEquals(6, rapids);
         assertTrue(p.unknownEntities().containsKey("TOOLPATH_LIST"));
     }
@@ -264,7 +337,8 @@ class StepNcReaderTest {
 
     @Test
     void aWorkplanThatContainsItselfIsRefusedWithItsLine() throws Exception {
-        StepParseException e = org.junit.jupiter.api.Assertions.assertThrows(StepParseException.class,
+        StepParseException e = org.junit.jupiter.api.Assertions.assertThrows(
+                StepParseException.class,
                 () -> bind("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#3),$,$,$);\n#3=WORKPLAN('v',(#2),$,$,$);"));
         assertTrue(e.getMessage().contains("contains itself"), e.getMessage());
         assertTrue(e.line().isPresent());
@@ -272,7 +346,8 @@ class StepNcReaderTest {
 
     @Test
     void anAttributeOfTheWrongKindNamesTheInstanceAndLine() throws Exception {
-        StepParseException e = org.junit.jupiter.api.Assertions.assertThrows(StepParseException.class,
+        StepParseException e = org.junit.jupiter.api.Assertions.assertThrows(
+                StepParseException.class,
                 () -> bind("#1=PROJECT('p',#2,(),$,$,$);\n#2=WORKPLAN('w',(#3),$,$,$);\n"
                         + "#3=MACHINING_WORKINGSTEP('ws',$,#4,#4,$);\n#4=DIRECTION('',(0.,0.,1.));"));
         assertEquals(5, e.line().orElseThrow(), e.getMessage());
@@ -311,7 +386,9 @@ class StepNcReaderTest {
         assertTrue(f.depthMm().isEmpty());
         Profile.General g = (Profile.General) f.profile().orElseThrow();
         assertEquals("COMPOSITE_CURVE", g.curveEntity());
-        assertEquals(new Profile.Line(new Vec3(0, 0, 0), new Vec3(10, 0, 0)), g.segments().get(0));
+        assertEquals(
+                new Profile.Line(new Vec3(0, 0, 0), new Vec3(10, 0, 0)),
+                g.segments().get(0));
         Profile.Arc arc = (Profile.Arc) g.segments().get(1);
         assertTrue(arc.center().eq(new Vec3(5, 0, 0), TOL));
         assertEquals(5.0, arc.radiusMm());

@@ -26,8 +26,7 @@ public final class CheckCountLine {
             CheckCounter.INTERPRETER, "Interpreter checks (LinuxCNC's rs274)",
             CheckCounter.CORPUS, "corpus checks (files written by other programs)");
 
-    private CheckCountLine() {
-    }
+    private CheckCountLine() {}
 
     public static void main(String[] args) throws IOException {
         Path folder = Path.of(args[0]);
@@ -46,13 +45,16 @@ public final class CheckCountLine {
         }
         List<Path> files;
         try (Stream<Path> s = Files.list(folder)) {
-            files = s.filter(p -> p.getFileName().toString().startsWith(prefix)).sorted().toList();
+            files = s.filter(p -> p.getFileName().toString().startsWith(prefix))
+                    .sorted()
+                    .toList();
         }
         for (Path f : files) {
             for (String l : Files.readAllLines(f, StandardCharsets.UTF_8)) {
                 String[] c = l.split("\t", 4);
                 if (c.length == 4) {
-                    sums.computeIfAbsent(c[0], k -> new TreeMap<>()).computeIfAbsent(c[1], k -> new LinkedHashMap<>())
+                    sums.computeIfAbsent(c[0], k -> new TreeMap<>())
+                            .computeIfAbsent(c[1], k -> new LinkedHashMap<>())
                             .merge(c[3], Integer.parseInt(c[2]), Integer::sum);
                 }
             }
@@ -68,8 +70,10 @@ public final class CheckCountLine {
             int ran = total(byOutcome.get(CheckCounter.RAN));
             int failed = total(byOutcome.get(CheckCounter.FAILED));
             Map<String, Integer> skipped = byOutcome.getOrDefault(CheckCounter.SKIPPED, Map.of());
-            StringBuilder sb = new StringBuilder(TITLES.getOrDefault(k.getKey(), k.getKey() + " checks")).append(": ")
-                    .append(ran + failed).append(" ran");
+            StringBuilder sb = new StringBuilder(TITLES.getOrDefault(k.getKey(), k.getKey() + " checks"))
+                    .append(": ")
+                    .append(ran + failed)
+                    .append(" ran");
             if (failed > 0) {
                 sb.append(" (").append(failed).append(" failed)");
             }

@@ -84,14 +84,22 @@ public final class CheckCounter implements TestExecutionListener {
             return;
         }
         StringBuilder sb = new StringBuilder();
-        counts.forEach((k, n) -> sb.append(k.kind()).append('\t').append(k.outcome()).append('\t').append(n).append('\t')
-                .append(k.reason()).append('\n'));
+        counts.forEach((k, n) -> sb.append(k.kind())
+                .append('\t')
+                .append(k.outcome())
+                .append('\t')
+                .append(n)
+                .append('\t')
+                .append(k.reason())
+                .append('\n'));
         try {
             Path dir = Files.createDirectories(Path.of(folder));
             Path tmp = Files.createTempFile(dir, ".counts", ".part");
             Files.writeString(tmp, sb, StandardCharsets.UTF_8);
-            Files.move(tmp, dir.resolve(fileName(System.getProperty(BUILD, "")) + ProcessHandle.current().pid()
-                    + "-" + System.nanoTime() + ".tsv"));
+            Files.move(
+                    tmp,
+                    dir.resolve(fileName(System.getProperty(BUILD, ""))
+                            + ProcessHandle.current().pid() + "-" + System.nanoTime() + ".tsv"));
         } catch (IOException e) {
             throw new UncheckedIOException("the check counts could not be written into " + folder, e);
         }
@@ -107,7 +115,8 @@ public final class CheckCounter implements TestExecutionListener {
         if (id.isTest() || plan == null) {
             return List.of(id);
         }
-        List<TestIdentifier> tests = plan.getDescendants(id).stream().filter(TestIdentifier::isTest).toList();
+        List<TestIdentifier> tests =
+                plan.getDescendants(id).stream().filter(TestIdentifier::isTest).toList();
         return tests.isEmpty() ? List.of(id) : tests;
     }
 
@@ -122,7 +131,9 @@ public final class CheckCounter implements TestExecutionListener {
     private static String reason(TestExecutionResult result) {
         Optional<Throwable> t = result.getThrowable();
         String m = t.map(Throwable::getMessage).orElse("");
-        return m == null ? t.map(x -> x.getClass().getSimpleName()).orElse("") : m.replaceFirst("^Assumption failed: ", "");
+        return m == null
+                ? t.map(x -> x.getClass().getSimpleName()).orElse("")
+                : m.replaceFirst("^Assumption failed: ", "");
     }
 
     private static String oneLine(String reason) {

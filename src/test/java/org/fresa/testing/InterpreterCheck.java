@@ -13,5 +13,4 @@ import org.junit.jupiter.api.Tag;
 @Target({ElementType.METHOD, ElementType.TYPE})
 @Retention(RetentionPolicy.RUNTIME)
 @Tag(CheckCounter.INTERPRETER)
-public @interface InterpreterCheck {
-}
+public @interface InterpreterCheck {}

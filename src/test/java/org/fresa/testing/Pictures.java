@@ -7,8 +7,7 @@ import java.awt.image.BufferedImage;
 /** Measures on pictures the program drew (plots written as PNG, screenshots). */
 public final class Pictures {
 
-    private Pictures() {
-    }
+    private Pictures() {}
 
     /**
      * Width over height of a disc filled in one colour: its widest row over its tallest column of
@@ -32,7 +31,8 @@ public final class Pictures {
             }
             tallest = Math.max(tallest, n);
         }
-        assertTrue(widest > 20 && tallest > 20, "the disc is drawn large enough to measure: " + widest + " x " + tallest);
+        assertTrue(
+                widest > 20 && tallest > 20, "the disc is drawn large enough to measure: " + widest + " x " + tallest);
         return (double) widest / tallest;
     }
 }

@@ -7,8 +7,7 @@ package org.fresa.testing;
  */
 public final class SpecKinematics {
 
-    private SpecKinematics() {
-    }
+    private SpecKinematics() {}
 
     /** The IRB-140's flange pose (4x4, mm) for joints q1..q6 in deg, from the spec's table. */
     public static double[][] irb140(double... q) {
@@ -54,9 +53,12 @@ public final class SpecKinematics {
         double a = Math.toRadians(rollDeg);
         double b = Math.toRadians(pitchDeg);
         double g = Math.toRadians(yawDeg);
-        double[][] rz = {{Math.cos(a), -Math.sin(a), 0, 0}, {Math.sin(a), Math.cos(a), 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-        double[][] ry = {{Math.cos(b), 0, Math.sin(b), 0}, {0, 1, 0, 0}, {-Math.sin(b), 0, Math.cos(b), 0}, {0, 0, 0, 1}};
-        double[][] rx = {{1, 0, 0, 0}, {0, Math.cos(g), -Math.sin(g), 0}, {0, Math.sin(g), Math.cos(g), 0}, {0, 0, 0, 1}};
+        double[][] rz = {{Math.cos(a), -Math.sin(a), 0, 0}, {Math.sin(a), Math.cos(a), 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}
+        };
+        double[][] ry = {{Math.cos(b), 0, Math.sin(b), 0}, {0, 1, 0, 0}, {-Math.sin(b), 0, Math.cos(b), 0}, {0, 0, 0, 1}
+        };
+        double[][] rx = {{1, 0, 0, 0}, {0, Math.cos(g), -Math.sin(g), 0}, {0, Math.sin(g), Math.cos(g), 0}, {0, 0, 0, 1}
+        };
         double[][] t = times(rz, times(ry, rx));
         t[0][3] = x;
         t[1][3] = y;
@@ -66,8 +68,8 @@ public final class SpecKinematics {
 
     /** Distance of the positions of two poses (mm). */
     public static double positionError(double[][] a, double[][] b) {
-        return Math.sqrt(Math.pow(a[0][3] - b[0][3], 2) + Math.pow(a[1][3] - b[1][3], 2)
-                + Math.pow(a[2][3] - b[2][3], 2));
+        return Math.sqrt(
+                Math.pow(a[0][3] - b[0][3], 2) + Math.pow(a[1][3] - b[1][3], 2) + Math.pow(a[2][3] - b[2][3], 2));
     }
 
     /** The angle of R_a^T R_b (rad), from the trace and the skew part. */

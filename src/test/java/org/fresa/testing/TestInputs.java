@@ -26,6 +26,5 @@ public final class TestInputs {
         return folder.normalize() + " is not beside the checkout (files with no licence to copy, read in place only)";
     }
 
-    private TestInputs() {
-    }
+    private TestInputs() {}
 }

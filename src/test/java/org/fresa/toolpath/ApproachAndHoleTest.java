@@ -31,7 +31,8 @@ class ApproachAndHoleTest {
         Profile p = new Profile.RoundedRectangle(Vec2.ZERO, 60, 40, 5);
         Geometry pocket = Swept.polygon(p.contour(TOL));
         for (Approach a : List.of(new Approach.Ramp(3), new Approach.Helix(4, 3))) {
-            MillingPlan plan = MillingPlan.simple(Strategy.CONTOUR_PARALLEL, 8, 4).withApproach(a);
+            MillingPlan plan =
+                    MillingPlan.simple(Strategy.CONTOUR_PARALLEL, 8, 4).withApproach(a);
             ToolpathSection s = PocketMilling.section("ws", p, new Heights(30, 5, 0, -8), D10, plan, TOL);
             assertTrue(Swept.gouge(pocket, Swept.sweep(s, 5, 0.5)) < 1e-3, a + " gouges");
             assertEquals(-8, lowest(s), 1e-12);
@@ -40,7 +41,8 @@ class ApproachAndHoleTest {
                 if (!(m instanceof Move.Rapid) && m.end().z() < at.z() - 1e-9) {
                     double drop = at.z() - m.end().z();
                     double run = m instanceof Move.Circular c
-                            ? org.fresa.post.ArcGeometry.of(at, c).lengthMm() : at.xy().distance(m.end().xy());
+                            ? org.fresa.post.ArcGeometry.of(at, c).lengthMm()
+                            : at.xy().distance(m.end().xy());
                     assertTrue(Math.toDegrees(Math.atan2(drop, run)) <= 3 + 1e-6, a + ": entry at " + drop + "/" + run);
                 }
                 at = m.end();
@@ -60,8 +62,8 @@ class ApproachAndHoleTest {
         assertEquals(-9.5, lowest(r), 1e-12);
         Geometry shrunk = pocket.buffer(-1 + 0.01, Swept.QUADRANT_SEGMENTS);
         assertTrue(Swept.gouge(shrunk, Swept.sweep(r, 5, 0)) < 1e-3, "the side allowance was cut");
-        ToolpathSection f = PocketMilling.section("ws", p, new Heights(30, 5, 0, -10), D10,
-                rough.withAllowances(1, 0.5, true), TOL);
+        ToolpathSection f = PocketMilling.section(
+                "ws", p, new Heights(30, 5, 0, -10), D10, rough.withAllowances(1, 0.5, true), TOL);
         assertEquals(-10, lowest(f), 1e-12);
         Geometry floor = Swept.sweep(f, 5, -10 + 1e-9);
         assertTrue(Swept.uncutBeyondResidue(pocket, floor, 5) < 0.05);
@@ -87,7 +89,10 @@ class ApproachAndHoleTest {
         Geometry floor = Swept.sweep(s, 5, -12 + 1e-9);
         assertTrue(hole.buffer(-0.005).difference(floor).getArea() < 1e-6);
         assertTrue(Swept.gouge(hole, Swept.sweep(s, 5, 0.5)) < 1e-3);
-        Move.Circular helix = (Move.Circular) s.moves().stream().filter(m -> m instanceof Move.Circular).findFirst().orElseThrow();
+        Move.Circular helix = (Move.Circular) s.moves().stream()
+                .filter(m -> m instanceof Move.Circular)
+                .findFirst()
+                .orElseThrow();
         // 13 mm from 1 mm above the top to -12, no steeper than 3 deg on a radius of 4 mm:
         // 2 pi 4 tan(3 deg) = 1.317 mm a turn, 10 turns, the first 9 extra
         assertEquals(9, helix.turns());
@@ -99,11 +104,18 @@ class ApproachAndHoleTest {
         Heights h = new Heights(20, 5, 0, -25);
         ToolpathSection s = HoleMaking.drill("drill", new Vec2(20, 60), h, D10, 10, false);
         assertEquals(-25, lowest(s), 1e-12);
-        List<Double> feedEnds = s.moves().stream().filter(m -> m instanceof Move.Linear).map(m -> m.end().z()).toList();
+        List<Double> feedEnds = s.moves().stream()
+                .filter(m -> m instanceof Move.Linear)
+                .map(m -> m.end().z())
+                .toList();
         assertEquals(List.of(-10.0, -20.0, -25.0), feedEnds);
         ToolpathSection ream = HoleMaking.drill("ream", new Vec2(20, 60), h, D10, 0, true);
-        assertEquals(List.of(-25.0, 5.0), ream.moves().stream().filter(m -> m instanceof Move.Linear)
-                .map(m -> m.end().z()).toList());
+        assertEquals(
+                List.of(-25.0, 5.0),
+                ream.moves().stream()
+                        .filter(m -> m instanceof Move.Linear)
+                        .map(m -> m.end().z())
+                        .toList());
     }
 
     @Test
@@ -119,7 +131,9 @@ class ApproachAndHoleTest {
                 assertEquals(60, c.center().x(), 1e-9);
                 assertEquals(150, c.center().z(), 1e-9);
             }
-            assertTrue(m.end().y() >= -20 - 1e-9 && m.end().y() <= 6 + 1e-9, "y " + m.end().y());
+            assertTrue(
+                    m.end().y() >= -20 - 1e-9 && m.end().y() <= 6 + 1e-9,
+                    "y " + m.end().y());
         }
     }
 }

@@ -17,13 +17,38 @@ import org.junit.jupiter.api.Test;
 class CutModeTest {
 
     private static Operation rough(String rotation, String cutmode) {
-        Strategy s = new Strategy(2, Strategy.StrategyType.CONTOUR_PARALLEL, "CONTOUR_PARALLEL", OptionalDouble.empty(),
-                OptionalDouble.empty(), Optional.empty(), Optional.empty(), Optional.empty(), Optional.empty(),
-                Optional.ofNullable(rotation), Optional.ofNullable(cutmode), Optional.empty());
-        return new Operation(3, Operation.OperationType.BOTTOM_AND_SIDE_ROUGH_MILLING, "BOTTOM_AND_SIDE_ROUGH_MILLING",
-                "rough", OptionalDouble.of(5), Optional.empty(), Optional.empty(), Technology.NONE, Optional.of(s),
-                Optional.empty(), Optional.empty(), OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(),
-                OptionalDouble.empty(), OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty());
+        Strategy s = new Strategy(
+                2,
+                Strategy.StrategyType.CONTOUR_PARALLEL,
+                "CONTOUR_PARALLEL",
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.ofNullable(rotation),
+                Optional.ofNullable(cutmode),
+                Optional.empty());
+        return new Operation(
+                3,
+                Operation.OperationType.BOTTOM_AND_SIDE_ROUGH_MILLING,
+                "BOTTOM_AND_SIDE_ROUGH_MILLING",
+                "rough",
+                OptionalDouble.of(5),
+                Optional.empty(),
+                Optional.empty(),
+                Technology.NONE,
+                Optional.of(s),
+                Optional.empty(),
+                Optional.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                Optional.empty());
     }
 
     @Test

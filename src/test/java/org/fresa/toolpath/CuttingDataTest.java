@@ -32,47 +32,71 @@ class CuttingDataTest {
     }
 
     static Optional<ToolpathSection> section(ToolpathPlanner.Plan p, String workingstep) {
-        return p.toolpath().sections().stream().filter(x -> x.label().equals(workingstep)).findFirst();
+        return p.toolpath().sections().stream()
+                .filter(x -> x.label().equals(workingstep))
+                .findFirst();
     }
 
     @Test
     void aWorkingstepWithoutSpindleSpeedTakesItFromTheCuttingSpeedAndSaysSo() throws Exception {
         ToolpathPlanner.Plan p = plan(false);
         // 1.8 m/s = 108 m/min on a Ø6 drill: n = 1000 v / (pi D)
-        assertAll(() -> assertEquals(1000 * 108 / (Math.PI * 6),
-                section(p, "WS SPEED FROM CUTTING SPEED").orElseThrow().spindleRpm(), EPS),
-                () -> assertTrue(p.problems().contains("workingstep 'WS SPEED FROM CUTTING SPEED': no spindle speed in"
-                        + " the file: 5729.578 rpm from the cutting speed 1.8 m/s for the 6 mm tool"
-                        + " (n = 1000 v / (pi D))"), p.problems().toString()));
+        assertAll(
+                () -> assertEquals(
+                        1000 * 108 / (Math.PI * 6),
+                        section(p, "WS SPEED FROM CUTTING SPEED").orElseThrow().spindleRpm(),
+                        EPS),
+                () -> assertTrue(
+                        p.problems()
+                                .contains("workingstep 'WS SPEED FROM CUTTING SPEED': no spindle speed in"
+                                        + " the file: 5729.578 rpm from the cutting speed 1.8 m/s for the 6 mm tool"
+                                        + " (n = 1000 v / (pi D))"),
+                        p.problems().toString()));
     }
 
     @Test
     void aWorkingstepWithNeitherSpindleNorCuttingSpeedIsRefusedWithItsName() throws Exception {
         ToolpathPlanner.Plan p = plan(false);
-        assertAll(() -> assertTrue(section(p, "WS NO SPEED").isEmpty()),
-                () -> assertTrue(p.problems().contains("workingstep 'WS NO SPEED' (#11): no spindle speed and no"
-                        + " cutting speed in the file (MILLING_TECHNOLOGY #52): the tool would cut with the spindle"
-                        + " stopped"), p.problems().toString()));
+        assertAll(
+                () -> assertTrue(section(p, "WS NO SPEED").isEmpty()),
+                () -> assertTrue(
+                        p.problems()
+                                .contains("workingstep 'WS NO SPEED' (#11): no spindle speed and no"
+                                        + " cutting speed in the file (MILLING_TECHNOLOGY #52): the tool would cut with the spindle"
+                                        + " stopped"),
+                        p.problems().toString()));
     }
 
     @Test
     void aSpindleAHundredTimesBelowItsCuttingSpeedIsRefusedWithBothValues() throws Exception {
         ToolpathPlanner.Plan p = plan(false);
-        assertAll(() -> assertTrue(section(p, "WS SPINDLE 100 TIMES TOO SLOW").isEmpty()),
-                () -> assertTrue(p.problems().contains("workingstep 'WS SPINDLE 100 TIMES TOO SLOW' (#12): spindle"
-                        + " 5.84 rpm and cutting speed 0.1835 m/s (584.0986 rpm for the 6 mm tool) disagree by a"
-                        + " factor of 100; correct the file, or plan from the cutting speed with"
-                        + " --trust-cutting-speed"), p.problems().toString()));
+        assertAll(
+                () -> assertTrue(section(p, "WS SPINDLE 100 TIMES TOO SLOW").isEmpty()),
+                () -> assertTrue(
+                        p.problems()
+                                .contains("workingstep 'WS SPINDLE 100 TIMES TOO SLOW' (#12): spindle"
+                                        + " 5.84 rpm and cutting speed 0.1835 m/s (584.0986 rpm for the 6 mm tool) disagree by a"
+                                        + " factor of 100; correct the file, or plan from the cutting speed with"
+                                        + " --trust-cutting-speed"),
+                        p.problems().toString()));
     }
 
     @Test
     void trustingTheCuttingSpeedPlansTheDisagreeingWorkingstepFromIt() throws Exception {
         ToolpathPlanner.Plan p = plan(true);
-        assertAll(() -> assertEquals(1000 * 0.1835 * 60 / (Math.PI * 6),
-                section(p, "WS SPINDLE 100 TIMES TOO SLOW").orElseThrow().spindleRpm(), EPS),
-                () -> assertTrue(p.problems().contains("workingstep 'WS SPINDLE 100 TIMES TOO SLOW': spindle 5.84 rpm"
-                        + " and cutting speed 0.1835 m/s (584.0986 rpm for the 6 mm tool) disagree by a factor of"
-                        + " 100: planned at 584.0986 rpm from the cutting speed (--trust-cutting-speed)"),
+        assertAll(
+                () -> assertEquals(
+                        1000 * 0.1835 * 60 / (Math.PI * 6),
+                        section(p, "WS SPINDLE 100 TIMES TOO SLOW")
+                                .orElseThrow()
+                                .spindleRpm(),
+                        EPS),
+                () -> assertTrue(
+                        p.problems()
+                                .contains(
+                                        "workingstep 'WS SPINDLE 100 TIMES TOO SLOW': spindle 5.84 rpm"
+                                                + " and cutting speed 0.1835 m/s (584.0986 rpm for the 6 mm tool) disagree by a factor of"
+                                                + " 100: planned at 584.0986 rpm from the cutting speed (--trust-cutting-speed)"),
                         p.problems().toString()),
                 () -> assertEquals(3, p.planned()));
     }
@@ -80,19 +104,27 @@ class CuttingDataTest {
     @Test
     void aWorkingstepWithoutFeedIsRefusedNotGivenADefault() throws Exception {
         ToolpathPlanner.Plan p = plan(true);
-        assertAll(() -> assertTrue(section(p, "WS NO FEED").isEmpty()),
-                () -> assertTrue(p.problems().contains("workingstep 'WS NO FEED' (#13): no feed in the file"
-                        + " (MILLING_TECHNOLOGY #54: feedrate unset, no feed_per_tooth with a tooth count): no feed is"
-                        + " guessed"), p.problems().toString()));
+        assertAll(
+                () -> assertTrue(section(p, "WS NO FEED").isEmpty()),
+                () -> assertTrue(
+                        p.problems()
+                                .contains("workingstep 'WS NO FEED' (#13): no feed in the file"
+                                        + " (MILLING_TECHNOLOGY #54: feedrate unset, no feed_per_tooth with a tooth count): no feed is"
+                                        + " guessed"),
+                        p.problems().toString()));
     }
 
     @Test
     void aSpindleWithinTenTimesOfItsCuttingSpeedIsTheFilesSpindle() throws Exception {
         ToolpathPlanner.Plan p = plan(false);
         String name = "WS SPINDLE AND CUTTING SPEED AGREE";
-        assertAll(() -> assertEquals(80 * 60, section(p, name).orElseThrow().spindleRpm(), EPS),
-                () -> assertTrue(p.problems().stream().noneMatch(q -> q.contains(name)), p.problems().toString()),
-                () -> assertEquals(2, p.planned()), () -> assertEquals(5, p.workingsteps()));
+        assertAll(
+                () -> assertEquals(80 * 60, section(p, name).orElseThrow().spindleRpm(), EPS),
+                () -> assertTrue(
+                        p.problems().stream().noneMatch(q -> q.contains(name)),
+                        p.problems().toString()),
+                () -> assertEquals(2, p.planned()),
+                () -> assertEquals(5, p.workingsteps()));
     }
 
     /**
@@ -102,29 +134,63 @@ class CuttingDataTest {
      */
     @Test
     void aChipLoadIsConvertedAtTheSpindleSpeedTakenFromTheCuttingSpeed() {
-        Technology stepModeler = new Technology(7, OptionalDouble.of(0.245), "unstated", Optional.empty(),
-                OptionalDouble.of(110), "m/min", OptionalDouble.empty(), "rpm", OptionalDouble.empty(),
-                OptionalDouble.empty(), OptionalDouble.empty(), false);
-        Operation base = DrillCycleTest.op(Operation.OperationType.DRILLING, DrillCycleTest.drill(0.54, "rad"),
-                DrillingStrategy.NONE, DrillingParameters.NONE);
-        Operation op = new Operation(base.instanceId(), base.type(), base.entity(), base.id(), base.retractPlaneMm(),
-                base.startPoint(), base.tool(), stepModeler, base.strategy(), base.approach(), base.retract(),
-                base.axialCuttingDepthMm(), base.radialCuttingDepthMm(), base.allowanceSideMm(),
-                base.allowanceBottomMm(), base.cuttingDepthMm(), base.overcutLengthMm(), base.drilling());
+        Technology stepModeler = new Technology(
+                7,
+                OptionalDouble.of(0.245),
+                "unstated",
+                Optional.empty(),
+                OptionalDouble.of(110),
+                "m/min",
+                OptionalDouble.empty(),
+                "rpm",
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                false);
+        Operation base = DrillCycleTest.op(
+                Operation.OperationType.DRILLING,
+                DrillCycleTest.drill(0.54, "rad"),
+                DrillingStrategy.NONE,
+                DrillingParameters.NONE);
+        Operation op = new Operation(
+                base.instanceId(),
+                base.type(),
+                base.entity(),
+                base.id(),
+                base.retractPlaneMm(),
+                base.startPoint(),
+                base.tool(),
+                stepModeler,
+                base.strategy(),
+                base.approach(),
+                base.retract(),
+                base.axialCuttingDepthMm(),
+                base.radialCuttingDepthMm(),
+                base.allowanceSideMm(),
+                base.allowanceBottomMm(),
+                base.cuttingDepthMm(),
+                base.overcutLengthMm(),
+                base.drilling());
         CuttingData c = CuttingData.of(op, 10, false);
         double n = 1000 * 110 / (Math.PI * 10);
-        assertAll(() -> assertEquals(n, c.spindleRpm(), EPS), () -> assertTrue(c.fromCuttingSpeed()),
+        assertAll(
+                () -> assertEquals(n, c.spindleRpm(), EPS),
+                () -> assertTrue(c.fromCuttingSpeed()),
                 () -> assertEquals(0.245 * n, c.feed().feedMmPerMin(), EPS),
                 () -> assertEquals("mm/rev", c.feed().readAs()),
-                () -> assertEquals(List.of("no spindle speed in the file: 3501.4087 rpm from the cutting speed 110 m/min"
-                        + " for the 10 mm tool (n = 1000 v / (pi D))"), c.notes()));
+                () -> assertEquals(
+                        List.of("no spindle speed in the file: 3501.4087 rpm from the cutting speed 110 m/min"
+                                + " for the 10 mm tool (n = 1000 v / (pi D))"),
+                        c.notes()));
     }
 
     @Test
     void everyPlannedWorkingstepHasASpindleSpeed() throws Exception {
         for (boolean trust : List.of(false, true)) {
             ToolpathPlanner.Plan p = plan(trust);
-            assertTrue(p.toolpath().sections().stream().allMatch(s -> s.spindleRpm() > 0), p.toolpath().toString());
+            assertTrue(
+                    p.toolpath().sections().stream().allMatch(s -> s.spindleRpm() > 0),
+                    p.toolpath().toString());
         }
     }
 }

@@ -26,15 +26,26 @@ class GeneralProfileTest {
 
     /** A "D": three sides and a half circle, convex. */
     static Contour dShape() {
-        return Contour.of(List.of(new Segment2(v(0, 0), v(40, 0)), new Arc2(v(40, 20), v(40, 0), v(40, 40), true),
-                new Segment2(v(40, 40), v(0, 40)), new Segment2(v(0, 40), v(0, 0))), TOL);
+        return Contour.of(
+                List.of(
+                        new Segment2(v(0, 0), v(40, 0)),
+                        new Arc2(v(40, 20), v(40, 0), v(40, 40), true),
+                        new Segment2(v(40, 40), v(0, 40)),
+                        new Segment2(v(0, 40), v(0, 0))),
+                TOL);
     }
 
     /** An L with a concave fillet of radius 6 in its inner corner. */
     static Contour lShape() {
-        return Contour.of(List.of(new Segment2(v(0, 0), v(60, 0)), new Segment2(v(60, 0), v(60, 24)),
-                new Segment2(v(60, 24), v(30, 24)), new Arc2(v(30, 30), v(30, 24), v(24, 30), false),
-                new Segment2(v(24, 30), v(24, 50)), new Segment2(v(24, 50), v(0, 50)), new Segment2(v(0, 50), v(0, 0))),
+        return Contour.of(
+                List.of(
+                        new Segment2(v(0, 0), v(60, 0)),
+                        new Segment2(v(60, 0), v(60, 24)),
+                        new Segment2(v(60, 24), v(30, 24)),
+                        new Arc2(v(30, 30), v(30, 24), v(24, 30), false),
+                        new Segment2(v(24, 30), v(24, 50)),
+                        new Segment2(v(24, 50), v(0, 50)),
+                        new Segment2(v(0, 50), v(0, 0))),
                 TOL);
     }
 
@@ -51,8 +62,8 @@ class GeneralProfileTest {
         Contour c = shape.equals("D") ? dShape() : lShape();
         Profile p = new Profile.General(c, ContourOffsetter.EXACT);
         assertTrue(shape.equals("D") == p.convex());
-        ToolpathSection s = PocketMilling.section("ws", p, new Heights(30, 5, 0, -6), D8,
-                MillingPlan.simple(strategy, 6, 3), TOL);
+        ToolpathSection s =
+                PocketMilling.section("ws", p, new Heights(30, 5, 0, -6), D8, MillingPlan.simple(strategy, 6, 3), TOL);
         Geometry pocket = Swept.polygon(c);
         double gouge = Swept.gouge(pocket, Swept.sweep(s, 4, 0));
         assertTrue(gouge < 1e-3, "gouge " + gouge);

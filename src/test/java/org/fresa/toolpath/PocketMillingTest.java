@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
-import org.fresa.geom.Vec3;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -55,8 +54,8 @@ class PocketMillingTest {
             triangle, CONTOUR_SPIRAL,        0.0,  0.05
             triangle, BIDIRECTIONAL_CONTOUR, 0.0,  0.05
             """)
-    void theFloorIsClearedExceptTheCornerResidueAndTheWallsAreNeverCut(String shape, Strategy strategy,
-            double overlap, double maxUncutMm2) {
+    void theFloorIsClearedExceptTheCornerResidueAndTheWallsAreNeverCut(
+            String shape, Strategy strategy, double overlap, double maxUncutMm2) {
         Profile p = profile(shape);
         Heights h = new Heights(50, 5, 0, -12);
         MillingPlan plan = MillingPlan.simple(strategy, Stepover.nominal(18, overlap), 5);
@@ -85,11 +84,21 @@ class PocketMillingTest {
     void loopsTurnInThePlansRotationDirection(boolean clockwise) {
         Profile p = profile("rect");
         MillingPlan simple = MillingPlan.simple(Strategy.CONTOUR_PARALLEL, Stepover.nominal(18, 0.1), 5);
-        MillingPlan plan = new MillingPlan(simple.strategy(), simple.stepoverMm(), simple.axialDepthMm(), 0, 0,
-                simple.feedDirection(), clockwise, new Approach.Helix(3, 5), false);
+        MillingPlan plan = new MillingPlan(
+                simple.strategy(),
+                simple.stepoverMm(),
+                simple.axialDepthMm(),
+                0,
+                0,
+                simple.feedDirection(),
+                clockwise,
+                new Approach.Helix(3, 5),
+                false);
         ToolpathSection s = PocketMilling.section("ws", p, new Heights(50, 5, 0, -12), D18, plan, TOL);
-        List<Move.Circular> arcs = s.moves().stream().filter(m -> m instanceof Move.Circular)
-                .map(m -> (Move.Circular) m).toList();
+        List<Move.Circular> arcs = s.moves().stream()
+                .filter(m -> m instanceof Move.Circular)
+                .map(m -> (Move.Circular) m)
+                .toList();
         assertTrue(arcs.size() >= 4, "corner arcs expected: " + arcs.size());
         for (Move.Circular c : arcs) {
             assertEquals(1, c.normal().z(), 1e-12);
@@ -104,8 +113,8 @@ class PocketMillingTest {
     @org.junit.jupiter.api.Test
     void centerMillingASlotAsWideAsTheToolRunsAlongItsCentreLine() {
         Profile p = new Profile.RoundedRectangle(new Vec2(0, 0), 60, 18, 9);
-        ToolpathSection s = PocketMilling.section("ws", p, new Heights(50, 5, 0, -6), D18,
-                MillingPlan.simple(Strategy.CENTER_MILLING, 9, 3), TOL);
+        ToolpathSection s = PocketMilling.section(
+                "ws", p, new Heights(50, 5, 0, -6), D18, MillingPlan.simple(Strategy.CENTER_MILLING, 9, 3), TOL);
         for (Move m : s.moves()) {
             if (m.end().z() < 0) {
                 assertEquals(0, m.end().y(), 1e-9, m.toString());
@@ -114,7 +123,9 @@ class PocketMillingTest {
         }
         Geometry pocket = Swept.polygon(p.contour(TOL));
         Geometry floor = Swept.sweep(s, 9, -6);
-        assertTrue(pocket.difference(floor).getArea() < 0.05, "uncut " + pocket.difference(floor).getArea());
+        assertTrue(
+                pocket.difference(floor).getArea() < 0.05,
+                "uncut " + pocket.difference(floor).getArea());
         assertTrue(Swept.gouge(pocket, Swept.sweep(s, 9, 0)) < 1e-3);
         assertEquals(-6, lowestZ(s), 1e-9);
     }

@@ -23,7 +23,8 @@ class ProfileTest {
             4,  20, true,  14.142135623730951
             40, 80, true,  40.12368793931302
             """)
-    void theVertexRadiusFollowsEquation22WhenCircumscribed(int n, double diameter, boolean circumscribed, double expected) {
+    void theVertexRadiusFollowsEquation22WhenCircumscribed(
+            int n, double diameter, boolean circumscribed, double expected) {
         Profile.RegularPolygon p = new Profile.RegularPolygon(Vec2.ZERO, n, diameter, circumscribed);
         assertEquals(expected, p.vertexRadiusMm(), 1e-9);
         for (Curve2 c : p.contour(TOL).curves()) {
@@ -48,7 +49,8 @@ class ProfileTest {
         double w = 80 - 2 * 4;
         double h = 50 - 2 * 4;
         double area = w * h - (4 - Math.PI) * 6 * 6;
-        assertEquals(area, new org.fresa.geom.Contour(p.inset(4, TOL).orElseThrow().curves()).area(), 1e-9);
+        assertEquals(
+                area, new org.fresa.geom.Contour(p.inset(4, TOL).orElseThrow().curves()).area(), 1e-9);
         // beyond the corner radius the corners are sharp: no arcs left
         assertTrue(p.inset(12, TOL).orElseThrow().curves().stream().noneMatch(c -> c instanceof Arc2));
         // exactly half the width: a segment run there and back; beyond: nothing

@@ -21,8 +21,13 @@ class SlotMillingTest {
     static final Path SLOTS = Path.of("src/test/resources/stepnc/slots-square-u.stp");
 
     private static Geometry rectangle(double x0, double y0, double x1, double y1) {
-        return Swept.GF.createPolygon(new Coordinate[] {new Coordinate(x0, y0), new Coordinate(x1, y0),
-            new Coordinate(x1, y1), new Coordinate(x0, y1), new Coordinate(x0, y0)});
+        return Swept.GF.createPolygon(new Coordinate[] {
+            new Coordinate(x0, y0),
+            new Coordinate(x1, y0),
+            new Coordinate(x1, y1),
+            new Coordinate(x0, y1),
+            new Coordinate(x0, y0)
+        });
     }
 
     private static void check(ToolpathSection s, Geometry slot, double depth, double radius) {
@@ -33,9 +38,12 @@ class SlotMillingTest {
         assertEquals(-depth, floor, 1e-9, s.label() + ": the floor");
         // everything the cutter sweeps below the top stays in the slot; at the floor it clears the slot
         Geometry below = Swept.sweep(s, radius, 0);
-        assertTrue(Swept.gouge(slot, below) < 1e-6, s.label() + " leaves the slot by " + Swept.gouge(slot, below) + " mm2");
+        assertTrue(
+                Swept.gouge(slot, below) < 1e-6,
+                s.label() + " leaves the slot by " + Swept.gouge(slot, below) + " mm2");
         Geometry atFloor = Swept.sweep(s, radius, -depth);
-        assertTrue(Swept.uncutBeyondResidue(slot, atFloor, radius) < 1e-3,
+        assertTrue(
+                Swept.uncutBeyondResidue(slot, atFloor, radius) < 1e-3,
                 s.label() + " leaves " + Swept.uncutBeyondResidue(slot, atFloor, radius) + " mm2 of floor");
     }
 
@@ -57,15 +65,21 @@ class SlotMillingTest {
 
     @Test
     void aSlotTheCutterCannotEnterIsRefusedWithTheReason() throws Exception {
-        String text = java.nio.file.Files.readString(SLOTS).replace("#28= SQUARE_U_PROFILE($,10.000,$,$,$,$);",
-                "#28= SQUARE_U_PROFILE($,8.000,$,$,$,$);").replace("#24= LINEAR_PATH($,60.000,#55);",
-                "#24= LINEAR_PATH($,60.000,#55);\n#99= VEE_PROFILE($,$,$,$);").replace("#25= SQUARE_U_PROFILE($,16.000,$,$,$,$);",
-                "#25= VEE_PROFILE($,$,90.000,55.000);");
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(
-                StepNcReader.read(new java.io.StringReader(text), "t.stp"), Tolerance.DEFAULT);
+        String text = java.nio.file.Files.readString(SLOTS)
+                .replace("#28= SQUARE_U_PROFILE($,10.000,$,$,$,$);", "#28= SQUARE_U_PROFILE($,8.000,$,$,$,$);")
+                .replace(
+                        "#24= LINEAR_PATH($,60.000,#55);",
+                        "#24= LINEAR_PATH($,60.000,#55);\n#99= VEE_PROFILE($,$,$,$);")
+                .replace("#25= SQUARE_U_PROFILE($,16.000,$,$,$,$);", "#25= VEE_PROFILE($,$,90.000,55.000);");
+        ToolpathPlanner.Plan plan =
+                ToolpathPlanner.plan(StepNcReader.read(new java.io.StringReader(text), "t.stp"), Tolerance.DEFAULT);
         assertEquals(0, plan.planned());
-        assertTrue(plan.problems().get(0).contains("the vee leans by 10 deg"), plan.problems().toString());
-        assertTrue(plan.problems().get(1).contains("SLOT2") && plan.problems().get(1).contains(
-                "the tool (10 mm) is wider than the slot (8 mm)"), plan.problems().toString());
+        assertTrue(
+                plan.problems().get(0).contains("the vee leans by 10 deg"),
+                plan.problems().toString());
+        assertTrue(
+                plan.problems().get(1).contains("SLOT2")
+                        && plan.problems().get(1).contains("the tool (10 mm) is wider than the slot (8 mm)"),
+                plan.problems().toString());
     }
 }

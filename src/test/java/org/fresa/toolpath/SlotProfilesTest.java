@@ -51,8 +51,7 @@ class SlotProfilesTest {
     }
 
     /** A slot along +x in the workpiece frame: its path, half width at each height, ends. */
-    record Slot(double x0, double x1, double y, double depth, DoubleUnaryOperator halfWidth, End start, End end) {
-    }
+    record Slot(double x0, double x1, double y, double depth, DoubleUnaryOperator halfWidth, End start, End end) {}
 
     /** An end: open, radiused, or flat with its +y and -y corner radii. */
     record End(char kind, double plusYRadius, double minusYRadius) {
@@ -79,8 +78,13 @@ class SlotProfilesTest {
     }
 
     static Geometry box(double x0, double y0, double x1, double y1) {
-        return Swept.GF.createPolygon(new Coordinate[] {new Coordinate(x0, y0), new Coordinate(x1, y0),
-            new Coordinate(x1, y1), new Coordinate(x0, y1), new Coordinate(x0, y0)});
+        return Swept.GF.createPolygon(new Coordinate[] {
+            new Coordinate(x0, y0),
+            new Coordinate(x1, y0),
+            new Coordinate(x1, y1),
+            new Coordinate(x0, y1),
+            new Coordinate(x0, y0)
+        });
     }
 
     static Geometry disc(double x, double y, double r) {
@@ -103,7 +107,10 @@ class SlotProfilesTest {
             if (rc > 0) {
                 double cx = x - sign * rc;
                 double cy = s.y() + side * (w - rc);
-                Geometry corner = box(Math.min(cx, x), Math.min(cy, s.y() + side * w), Math.max(cx, x),
+                Geometry corner = box(
+                        Math.min(cx, x),
+                        Math.min(cy, s.y() + side * w),
+                        Math.max(cx, x),
                         Math.max(cy, s.y() + side * w));
                 g = g.difference(corner.difference(disc(cx, cy, rc)));
             }
@@ -142,7 +149,8 @@ class SlotProfilesTest {
                 } else {
                     pts.add(new Coordinate(m.end().x(), m.end().y()));
                 }
-                Geometry g = pts.size() == 2 && pts.get(0).equals2D(pts.get(1)) ? Swept.GF.createPoint(pts.get(0))
+                Geometry g = pts.size() == 2 && pts.get(0).equals2D(pts.get(1))
+                        ? Swept.GF.createPoint(pts.get(0))
                         : Swept.GF.createLineString(pts.toArray(new Coordinate[0]));
                 parts.add(g.buffer(r, 32));
             }
@@ -166,7 +174,8 @@ class SlotProfilesTest {
         assertEquals(floorZ, lowest, 1e-3, sec.label() + ": the floor");
         for (double z = 0; z >= lowest - 1e-9; z -= SLICE_MM) {
             double at = Math.max(z, lowest);
-            Geometry allowed = section(s, s.halfWidth().applyAsDouble(at)).union(OUTSIDE).buffer(0.01, 64);
+            Geometry allowed =
+                    section(s, s.halfWidth().applyAsDouble(at)).union(OUTSIDE).buffer(0.01, 64);
             double out = outside(sec, tool, at, allowed);
             assertTrue(out < 1e-6, sec.label() + " leaves the slot at z " + at + " by " + out + " mm2");
         }
@@ -176,7 +185,9 @@ class SlotProfilesTest {
     }
 
     static ToolpathSection section(String label) {
-        return plan.toolpath().sections().stream().filter(x -> x.label().equals(label)).findFirst()
+        return plan.toolpath().sections().stream()
+                .filter(x -> x.label().equals(label))
+                .findFirst()
                 .orElseThrow(() -> new AssertionError(label + " not planned: " + plan.problems()));
     }
 
@@ -186,18 +197,28 @@ class SlotProfilesTest {
         var byId = new java.util.HashMap<String, org.fresa.stepnc.Feature>();
         program.workingsteps().forEach(w -> byId.put(w.feature().id(), w.feature()));
         var tee = (org.fresa.stepnc.Profile.Tee) byId.get("TEE").profile().orElseThrow();
-        assertEquals(List.of(10.0, 20.0, 6.0, 90.0, 90.0), List.of(tee.widthMm(), tee.crossBarWidthMm(),
-                tee.crossBarDepthMm(), tee.firstAngleDeg(), tee.secondAngleDeg()));
+        assertEquals(
+                List.of(10.0, 20.0, 6.0, 90.0, 90.0),
+                List.of(
+                        tee.widthMm(),
+                        tee.crossBarWidthMm(),
+                        tee.crossBarDepthMm(),
+                        tee.firstAngleDeg(),
+                        tee.secondAngleDeg()));
         assertTrue(tee.radiusMm().isEmpty());
         var vee = (org.fresa.stepnc.Profile.Vee) byId.get("VEE").profile().orElseThrow();
-        assertEquals(List.of(1.0, 90.0, 45.0), List.of(vee.profileRadiusMm().orElseThrow(), vee.profileAngleDeg(),
-                vee.tiltAngleDeg()));
+        assertEquals(
+                List.of(1.0, 90.0, 45.0),
+                List.of(vee.profileRadiusMm().orElseThrow(), vee.profileAngleDeg(), vee.tiltAngleDeg()));
         var ends = byId.get("SQUARE U ENDS").slotEnds();
         assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.FLAT, ends.get(0).type());
         assertEquals(6.0, ends.get(0).firstRadiusMm().orElseThrow());
         assertEquals(4.0, ends.get(0).secondRadiusMm().orElseThrow());
-        assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.RADIUSED, ends.get(1).type());
-        assertEquals(org.fresa.stepnc.Feature.SlotEnd.EndType.OPEN, byId.get("TEE").slotEnds().get(1).type());
+        assertEquals(
+                org.fresa.stepnc.Feature.SlotEnd.EndType.RADIUSED, ends.get(1).type());
+        assertEquals(
+                org.fresa.stepnc.Feature.SlotEnd.EndType.OPEN,
+                byId.get("TEE").slotEnds().get(1).type());
     }
 
     @Test
@@ -209,8 +230,8 @@ class SlotProfilesTest {
     @Test
     void aBallEndMillAsWideAsARoundedUFollowsItsMiddleToTheBottom() {
         // rounded-U 12 wide, 10 deep: walls down to z -4, then a half circle about (y 15, z -4)
-        Slot s = new Slot(0, 120, 15, 10, z -> z >= -4 ? 6 : Math.sqrt(Math.max(36 - (z + 4) * (z + 4), 0)),
-                End.OPEN, End.OPEN);
+        Slot s = new Slot(
+                0, 120, 15, 10, z -> z >= -4 ? 6 : Math.sqrt(Math.max(36 - (z + 4) * (z + 4), 0)), End.OPEN, End.OPEN);
         ToolpathSection sec = section("WS ROUND U BALL");
         for (Move m : sec.moves()) {
             if (m.end().z() < 0) {
@@ -225,10 +246,18 @@ class SlotProfilesTest {
         // rounded-U 16 wide, 12 deep, x 20..100 at y 40: the 10 mm cutter's corner meets the
         // half circle (radius 8 about z -4) at z -4 - sqrt(64 - 25)
         double floor = -4 - Math.sqrt(39);
-        Slot s = new Slot(20, 100, 40, 12, z -> z >= -4 ? 8 : Math.sqrt(Math.max(64 - (z + 4) * (z + 4), 0)),
-                End.RADIUSED, End.RADIUSED);
+        Slot s = new Slot(
+                20,
+                100,
+                40,
+                12,
+                z -> z >= -4 ? 8 : Math.sqrt(Math.max(64 - (z + 4) * (z + 4), 0)),
+                End.RADIUSED,
+                End.RADIUSED);
         check(section("WS ROUND U FLAT"), s, flat(5), floor, section(s, 5), 5);
-        assertTrue(plan.problems().stream().anyMatch(p -> p.contains("WS ROUND U FLAT") && p.contains("reaches 10.244998")),
+        assertTrue(
+                plan.problems().stream()
+                        .anyMatch(p -> p.contains("WS ROUND U FLAT") && p.contains("reaches 10.244998")),
                 plan.problems().toString());
     }
 
@@ -248,8 +277,13 @@ class SlotProfilesTest {
     void aTeeSlotsStemIsMilledWithAnEndMillAndItsCrossBarWithATSlotMillFromItsOpenEnd() {
         // stem 10 wide down to z -10, cross bar 20 wide from z -10 to z -16; through the block at y 105
         Slot s = new Slot(0, 120, 105, 16, z -> z > -10 + 1e-9 ? 5 : 10, End.OPEN, End.OPEN);
-        check(section("WS TEE STEM"), new Slot(0, 120, 105, 16, z -> 5, End.OPEN, End.OPEN), flat(5), -16,
-                box(0, 100, 120, 110), 5);
+        check(
+                section("WS TEE STEM"),
+                new Slot(0, 120, 105, 16, z -> 5, End.OPEN, End.OPEN),
+                flat(5),
+                -16,
+                box(0, 100, 120, 110),
+                5);
         ToolpathSection bar = section("WS TEE CROSS BAR");
         check(bar, s, tSlot(10, 6), -16, box(0, 95, 120, 115), 10);
         // it goes down and comes up outside the block, past the open start
@@ -280,7 +314,9 @@ class SlotProfilesTest {
     }
 
     private static String problemOf(ToolpathPlanner.Plan p, String workingstep) {
-        return p.problems().stream().filter(x -> x.startsWith("workingstep '" + workingstep + "' (#")).findFirst()
+        return p.problems().stream()
+                .filter(x -> x.startsWith("workingstep '" + workingstep + "' (#"))
+                .findFirst()
                 .orElseThrow(() -> new AssertionError(workingstep + " not refused: " + p.problems()));
     }
 
@@ -296,23 +332,35 @@ class SlotProfilesTest {
                 .replace("(#29,#32)", "(#32,#32)")
                 // a dovetail cut with a ball end mill, a tee without an open end
                 .replace("#25= ROUNDED_U_PROFILE($,12.000);", "#25= DOVETAIL_PROFILE($,12.000,60.000);")
-                .replace("#19= SLOT('TEE',#4,(#23,#33),#87,#88,#24,#35,(#26,#26));",
+                .replace(
+                        "#19= SLOT('TEE',#4,(#23,#33),#87,#88,#24,#35,(#26,#26));",
                         "#19= SLOT('TEE',#4,(#23,#33),#87,#88,#24,#35,(#32,#32));");
         ToolpathPlanner.Plan p = planText(text);
-        assertTrue(problemOf(p, "WS ROUND U BALL").endsWith("a dovetail slot needs a DOVETAIL_MILL; the tool is a BALL_ENDMILL"),
+        assertTrue(
+                problemOf(p, "WS ROUND U BALL")
+                        .endsWith("a dovetail slot needs a DOVETAIL_MILL; the tool is a BALL_ENDMILL"),
                 p.problems().toString());
-        assertTrue(problemOf(p, "WS ROUND U FLAT").contains("woodruff slot ends are not machined"), p.problems().toString());
-        assertTrue(problemOf(p, "WS VEE").contains("the vee leans by -15 deg (tilt_angle 30 deg for a 90 deg vee)"), p.problems().toString());
-        assertTrue(problemOf(p, "WS TEE CROSS BAR").endsWith("a T_SLOT_MILL enters the cross bar from an open end; the slot"
-                + " has none"), p.problems().toString());
-        assertTrue(problemOf(p, "WS SQUARE U ENDS").contains("loop slot ends are not machined"), p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS ROUND U FLAT").contains("woodruff slot ends are not machined"),
+                p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS VEE").contains("the vee leans by -15 deg (tilt_angle 30 deg for a 90 deg vee)"),
+                p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS TEE CROSS BAR")
+                        .endsWith("a T_SLOT_MILL enters the cross bar from an open end; the slot" + " has none"),
+                p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS SQUARE U ENDS").contains("loop slot ends are not machined"),
+                p.problems().toString());
         // the stem is still milled (its flat ends keep the cutter within the slot)
         assertEquals(1, p.planned(), p.problems().toString());
 
         // a cutter wider than the slot
-        ToolpathPlanner.Plan wide = planText(part.replace("#36= SQUARE_U_PROFILE($,20.000,$,$,$,$);",
-                "#36= SQUARE_U_PROFILE($,8.000,$,$,$,$);"));
-        assertTrue(problemOf(wide, "WS SQUARE U ENDS").endsWith("the tool (10 mm) is wider than the slot (8 mm)"),
+        ToolpathPlanner.Plan wide = planText(
+                part.replace("#36= SQUARE_U_PROFILE($,20.000,$,$,$,$);", "#36= SQUARE_U_PROFILE($,8.000,$,$,$,$);"));
+        assertTrue(
+                problemOf(wide, "WS SQUARE U ENDS").endsWith("the tool (10 mm) is wider than the slot (8 mm)"),
                 wide.problems().toString());
     }
 
@@ -320,18 +368,22 @@ class SlotProfilesTest {
     void aPartWhoseSlotsAreAllRefusedWritesNoProgramAndExitsWith1(@TempDir Path dir) throws Exception {
         String part = Files.readString(PART);
         // every slot gets a woodruff end
-        String text = part.replace("(#26,#26)", "(#26,#38)").replace("(#29,#29)", "(#29,#38)")
-                .replace("(#29,#32)", "(#29,#38)").replace("(#37,#29)", "(#37,#38)")
-                .replace("#37= FLAT_SLOT_END_TYPE(6.000,4.000);", "#37= FLAT_SLOT_END_TYPE(6.000,4.000);\n"
-                        + "#38= WOODRUFF_SLOT_END_TYPE(8.000);");
+        String text = part.replace("(#26,#26)", "(#26,#38)")
+                .replace("(#29,#29)", "(#29,#38)")
+                .replace("(#29,#32)", "(#29,#38)")
+                .replace("(#37,#29)", "(#37,#38)")
+                .replace(
+                        "#37= FLAT_SLOT_END_TYPE(6.000,4.000);",
+                        "#37= FLAT_SLOT_END_TYPE(6.000,4.000);\n" + "#38= WOODRUFF_SLOT_END_TYPE(8.000);");
         Path file = dir.resolve("woodruff.stp");
         Files.writeString(file, text);
-        TaskOutcome o = ToolpathService.run(file, MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")),
-                ProgressMonitor.NONE);
+        TaskOutcome o = ToolpathService.run(
+                file, MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
         assertEquals(1, o.exitStatus());
         assertFalse(Files.exists(dir.resolve("out/program.ngc")));
         assertEquals(6, o.problems().size(), o.problems().toString());
-        assertTrue(o.problems().stream().allMatch(x -> x.contains("woodruff slot ends are not machined")),
+        assertTrue(
+                o.problems().stream().allMatch(x -> x.contains("woodruff slot ends are not machined")),
                 o.problems().toString());
     }
 }

@@ -37,7 +37,9 @@ class StepsAndOutsideProfilesTest {
     static final double SLICE_MM = 0.5;
     /** The block: the tool may go anywhere outside it. */
     static final Geometry BLOCK = SlotProfilesTest.box(0, 0, 120, 150);
-    static final Geometry OUTSIDE = SlotProfilesTest.box(-1000, -1000, 1000, 1000).difference(BLOCK);
+
+    static final Geometry OUTSIDE =
+            SlotProfilesTest.box(-1000, -1000, 1000, 1000).difference(BLOCK);
 
     static ToolpathPlanner.Plan plan;
 
@@ -47,7 +49,9 @@ class StepsAndOutsideProfilesTest {
     }
 
     static ToolpathSection section(String label) {
-        return plan.toolpath().sections().stream().filter(x -> x.label().equals(label)).findFirst()
+        return plan.toolpath().sections().stream()
+                .filter(x -> x.label().equals(label))
+                .findFirst()
                 .orElseThrow(() -> new AssertionError(label + " not planned: " + plan.problems()));
     }
 
@@ -61,7 +65,12 @@ class StepsAndOutsideProfilesTest {
         check(sec, radius, feature, floorZ, floorRegion, true);
     }
 
-    static void check(ToolpathSection sec, double radius, Geometry feature, double floorZ, Geometry floorRegion,
+    static void check(
+            ToolpathSection sec,
+            double radius,
+            Geometry feature,
+            double floorZ,
+            Geometry floorRegion,
             boolean fromOutside) {
         double lowest = Double.POSITIVE_INFINITY;
         for (Move m : sec.moves()) {
@@ -84,9 +93,13 @@ class StepsAndOutsideProfilesTest {
         var at = sec.start();
         Geometry grown = BLOCK.buffer(radius);
         for (Move m : sec.moves()) {
-            if (m instanceof Move.Linear && m.end().z() < at.z() - 1e-9 && m.end().z() < 0) {
-                assertTrue(!grown.contains(Swept.GF.createPoint(new org.locationtech.jts.geom.Coordinate(m.end().x(),
-                        m.end().y()))), sec.label() + " goes down into the block at " + m.end());
+            if (m instanceof Move.Linear
+                    && m.end().z() < at.z() - 1e-9
+                    && m.end().z() < 0) {
+                assertTrue(
+                        !grown.contains(Swept.GF.createPoint(new org.locationtech.jts.geom.Coordinate(
+                                m.end().x(), m.end().y()))),
+                        sec.label() + " goes down into the block at " + m.end());
             }
             at = m.end();
         }
@@ -98,7 +111,8 @@ class StepsAndOutsideProfilesTest {
     static final Geometry STEP_CLOSED = SlotProfilesTest.box(20, 0, 120, 10);
     // the part kept by the outside profile: 80 x 120 centred at (50, 75)
     static final Geometry PART_KEPT = SlotProfilesTest.box(10, 15, 90, 135);
-    static final Geometry AROUND_PART = SlotProfilesTest.box(-1000, -1000, 1000, 1000).difference(PART_KEPT);
+    static final Geometry AROUND_PART =
+            SlotProfilesTest.box(-1000, -1000, 1000, 1000).difference(PART_KEPT);
 
     @Test
     void everyWorkingstepIsPlanned() {
@@ -117,7 +131,9 @@ class StepsAndOutsideProfilesTest {
         var at = finish.start();
         for (Move m : finish.moves()) {
             if (m.end().z() < 0 && at.z() == m.end().z() && Math.abs(m.end().x() - at.x()) < 1e-9) {
-                assertTrue(m.end().y() <= at.y() || m.end().x() > 120, "a pass runs +y at x " + m.end().x());
+                assertTrue(
+                        m.end().y() <= at.y() || m.end().x() > 120,
+                        "a pass runs +y at x " + m.end().x());
             }
             at = m.end();
         }
@@ -131,13 +147,21 @@ class StepsAndOutsideProfilesTest {
     @Test
     void anOutsideProfileIsMilledAsAContourOutsideThePartInLayers() {
         ToolpathSection sec = section("WS OUTSIDE PROFILE");
-        check(sec, 5, AROUND_PART, -6, PART_KEPT.buffer(10, 64).difference(PART_KEPT).intersection(BLOCK));
+        check(
+                sec,
+                5,
+                AROUND_PART,
+                -6,
+                PART_KEPT.buffer(10, 64).difference(PART_KEPT).intersection(BLOCK));
         long arcs = sec.moves().stream().filter(m -> m instanceof Move.Circular).count();
         // two layers of 3 mm, four rounded corners each: the offset corners stay arcs
         assertEquals(8, arcs);
         // the block's far corner (120, 0) is sqrt(30^2 + 15^2) from the part's corner (90, 15)
-        assertTrue(plan.problems().contains("workingstep 'WS OUTSIDE PROFILE': the stock reaches 33.54102 mm beyond"
-                + " the outside profile; the contour cuts the 10 mm next to it"), plan.problems().toString());
+        assertTrue(
+                plan.problems()
+                        .contains("workingstep 'WS OUTSIDE PROFILE': the stock reaches 33.54102 mm beyond"
+                                + " the outside profile; the contour cuts the 10 mm next to it"),
+                plan.problems().toString());
     }
 
     // the open pocket: x 0..25 between y 60 and 100, and the half circle of radius 20 about (25, 80) beyond
@@ -162,8 +186,8 @@ class StepsAndOutsideProfilesTest {
 
     // the pocket 60 x 40 at (60, 120) with 6 mm corners, less its round boss and its rectangular one
     static final Geometry BOSSES = SlotProfilesTest.disc(45, 120, 6).union(SlotProfilesTest.box(67, 112, 77, 128));
-    static final Geometry POCKET_AROUND_BOSSES = SlotProfilesTest.box(30, 100, 90, 140).buffer(-6, 64).buffer(6, 64)
-            .difference(BOSSES);
+    static final Geometry POCKET_AROUND_BOSSES =
+            SlotProfilesTest.box(30, 100, 90, 140).buffer(-6, 64).buffer(6, 64).difference(BOSSES);
 
     @Test
     void aClosedPocketLeavesItsBossesStandingAndClearsTheFloorAroundThem() {
@@ -175,7 +199,8 @@ class StepsAndOutsideProfilesTest {
 
     /** The area (mm2) the tool of this radius sweeps outside the feature (or the block's outside) at height z. */
     static double outsideAt(ToolpathSection sec, double radius, Geometry feature, double z) {
-        return SlotProfilesTest.outside(sec, SlotProfilesTest.flat(radius), z, feature.union(OUTSIDE).buffer(0.01, 64));
+        return SlotProfilesTest.outside(
+                sec, SlotProfilesTest.flat(radius), z, feature.union(OUTSIDE).buffer(0.01, 64));
     }
 
     @Test
@@ -207,43 +232,59 @@ class StepsAndOutsideProfilesTest {
     }
 
     private static String problemOf(ToolpathPlanner.Plan p, String workingstep) {
-        return p.problems().stream().filter(x -> x.startsWith("workingstep '" + workingstep + "' (#")).findFirst()
+        return p.problems().stream()
+                .filter(x -> x.startsWith("workingstep '" + workingstep + "' (#"))
+                .findFirst()
                 .orElseThrow(() -> new AssertionError(workingstep + " not refused: " + p.problems()));
     }
 
     @Test
     void whatIsNotMilledIsRefusedWithTheReason() throws Exception {
         String part = Files.readString(PART);
-        ToolpathPlanner.Plan p = planText(part
-                // a sloped wall, a boss on the closed step, an open outside profile
-                .replace("#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#25,());",
-                        "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#29,());\n#29= VEE_PROFILE($,0.000,60.000,90.000);")
-                .replace("#17= STEP('STEP CLOSED START',#4,(#22),#83,#84,#26,#25,());",
-                        "#17= STEP('STEP CLOSED START',#4,(#22),#83,#84,#26,#25,(#30));\n"
-                                + "#30= BOSS('BOSS',#4,(),#83,#84,#28,$);")
-                .replace("#18= GENERAL_OUTSIDE_PROFILE('OUTSIDE PROFILE',#4,(#23),#85,#86,#27,#28);",
-                        "#18= GENERAL_OUTSIDE_PROFILE('OUTSIDE PROFILE',#4,(#23),#85,#86,#27,#31);\n"
-                                + "#31= GENERAL_PROFILE($,#32);\n#32= POLYLINE('OPEN',(#110,#111,#112));")
-                // the open pocket's open side moved 5 mm into the block
-                .replace("#85= AXIS2_PLACEMENT_3D('OUTSIDE PROFILE',#101,#96,#97);",
-                        "#85= AXIS2_PLACEMENT_3D('OUTSIDE PROFILE',#101,#96,#97);\n"
-                                + "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#89,#88,(),$,#257,$,$,#235,$);\n"
-                                + "#89= AXIS2_PLACEMENT_3D('INSIDE',#135,#96,#97);\n#135= CARTESIAN_POINT('',(5.0,0.0,0.0));")
-                .replace("#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);", "")
-                // a planar face with the round boss
-                .replace("(#10,#11,#12,#13,#14,#15)", "(#10,#11,#12,#13,#14,#15,#400)")
-                .replace("#125= CUTTING_COMPONENT", "#400= MACHINING_WORKINGSTEP('WS FACE WITH BOSS',#62,#401,#310,$);\n"
-                        + "#401= PLANAR_FACE('FACE',#4,(#310),#85,#340,#402,#403,$,(#320));\n"
-                        + "#402= LINEAR_PATH($,120.000,#56);\n#403= LINEAR_PROFILE($,150.000);\n#125= CUTTING_COMPONENT"));
-        assertTrue(problemOf(p, "WS FACE WITH BOSS").endsWith("PLANAR_FACE features with bosses (its_boss) are not"
-                + " supported yet"), p.problems().toString());
-        assertTrue(problemOf(p, "WS STEP ROUGH").endsWith("only a vertical wall (profile_angle 90 deg) is milled"),
+        ToolpathPlanner.Plan p = planText(
+                part
+                        // a sloped wall, a boss on the closed step, an open outside profile
+                        .replace(
+                                "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#25,());",
+                                "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#29,());\n#29= VEE_PROFILE($,0.000,60.000,90.000);")
+                        .replace(
+                                "#17= STEP('STEP CLOSED START',#4,(#22),#83,#84,#26,#25,());",
+                                "#17= STEP('STEP CLOSED START',#4,(#22),#83,#84,#26,#25,(#30));\n"
+                                        + "#30= BOSS('BOSS',#4,(),#83,#84,#28,$);")
+                        .replace(
+                                "#18= GENERAL_OUTSIDE_PROFILE('OUTSIDE PROFILE',#4,(#23),#85,#86,#27,#28);",
+                                "#18= GENERAL_OUTSIDE_PROFILE('OUTSIDE PROFILE',#4,(#23),#85,#86,#27,#31);\n"
+                                        + "#31= GENERAL_PROFILE($,#32);\n#32= POLYLINE('OPEN',(#110,#111,#112));")
+                        // the open pocket's open side moved 5 mm into the block
+                        .replace(
+                                "#85= AXIS2_PLACEMENT_3D('OUTSIDE PROFILE',#101,#96,#97);",
+                                "#85= AXIS2_PLACEMENT_3D('OUTSIDE PROFILE',#101,#96,#97);\n"
+                                        + "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#89,#88,(),$,#257,$,$,#235,$);\n"
+                                        + "#89= AXIS2_PLACEMENT_3D('INSIDE',#135,#96,#97);\n#135= CARTESIAN_POINT('',(5.0,0.0,0.0));")
+                        .replace("#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);", "")
+                        // a planar face with the round boss
+                        .replace("(#10,#11,#12,#13,#14,#15)", "(#10,#11,#12,#13,#14,#15,#400)")
+                        .replace(
+                                "#125= CUTTING_COMPONENT",
+                                "#400= MACHINING_WORKINGSTEP('WS FACE WITH BOSS',#62,#401,#310,$);\n"
+                                        + "#401= PLANAR_FACE('FACE',#4,(#310),#85,#340,#402,#403,$,(#320));\n"
+                                        + "#402= LINEAR_PATH($,120.000,#56);\n#403= LINEAR_PROFILE($,150.000);\n#125= CUTTING_COMPONENT"));
+        assertTrue(
+                problemOf(p, "WS FACE WITH BOSS")
+                        .endsWith("PLANAR_FACE features with bosses (its_boss) are not" + " supported yet"),
                 p.problems().toString());
-        assertTrue(problemOf(p, "WS STEP CLOSED START").endsWith("STEP features with bosses (its_boss) are not"
-                + " supported yet"), p.problems().toString());
-        assertTrue(problemOf(p, "WS OUTSIDE PROFILE").contains("open general outside profiles are not supported yet"),
+        assertTrue(
+                problemOf(p, "WS STEP ROUGH").endsWith("only a vertical wall (profile_angle 90 deg) is milled"),
                 p.problems().toString());
-        assertTrue(problemOf(p, "WS OPEN POCKET").endsWith("is not on the edge of the workpiece's block"),
+        assertTrue(
+                problemOf(p, "WS STEP CLOSED START")
+                        .endsWith("STEP features with bosses (its_boss) are not" + " supported yet"),
+                p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS OUTSIDE PROFILE").contains("open general outside profiles are not supported yet"),
+                p.problems().toString());
+        assertTrue(
+                problemOf(p, "WS OPEN POCKET").endsWith("is not on the edge of the workpiece's block"),
                 p.problems().toString());
         // the pocket with bosses is still planned
         assertEquals(1, p.planned(), p.problems().toString());

@@ -12,7 +12,6 @@ import org.fresa.post.ArcGeometry;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
-import org.locationtech.jts.geom.LineString;
 import org.locationtech.jts.operation.union.UnaryUnionOp;
 
 /**
@@ -24,8 +23,7 @@ public final class Swept {
     static final double CHORD = 0.002;
     public static final int QUADRANT_SEGMENTS = 64;
 
-    private Swept() {
-    }
+    private Swept() {}
 
     /** Polygon of a contour. */
     public static Geometry polygon(Contour c) {

@@ -23,7 +23,8 @@ class ThesisConventionsTest {
         near(new Vec2(89.2, 0), p.get(1));
         assertEquals(List.of(), ThesisPaths.divide(Vec2.ZERO, Vec2.ZERO, 16));
         // an exact multiple ends on its end point once
-        assertEquals(5, ThesisPaths.divide(new Vec2(0, 10), new Vec2(0, 110), 20).size());
+        assertEquals(
+                5, ThesisPaths.divide(new Vec2(0, 10), new Vec2(0, 110), 20).size());
     }
 
     @Test

@@ -21,8 +21,11 @@ class BackgroundTasksTest {
         for (int i = 0; i < 2000 && seen.get() == null; i++) {
             SwingUtilities.invokeAndWait(() -> {
                 if (bar.message.getText().endsWith(phase)) {
-                    seen.set(new Object[] {bar.progress.isIndeterminate(), bar.progress.isStringPainted(),
-                        bar.progress.getPercentComplete()});
+                    seen.set(new Object[] {
+                        bar.progress.isIndeterminate(),
+                        bar.progress.isStringPainted(),
+                        bar.progress.getPercentComplete()
+                    });
                 }
             });
             Thread.sleep(5);
@@ -45,14 +48,17 @@ class BackgroundTasksTest {
         CountDownLatch planning = new CountDownLatch(1);
         CountDownLatch solving = new CountDownLatch(1);
         CountDownLatch end = new CountDownLatch(1);
-        SwingUtilities.invokeAndWait(() -> tasks.start("Robot", pm -> {
-            pm.progress(1, "read 2954 instances");
-            pm.progress(-1, "planning toolpaths");
-            planning.await(10, TimeUnit.SECONDS);
-            pm.progress(0.5, "inverse kinematics");
-            solving.await(10, TimeUnit.SECONDS);
-            return "done";
-        }, r -> end.countDown()));
+        SwingUtilities.invokeAndWait(() -> tasks.start(
+                "Robot",
+                pm -> {
+                    pm.progress(1, "read 2954 instances");
+                    pm.progress(-1, "planning toolpaths");
+                    planning.await(10, TimeUnit.SECONDS);
+                    pm.progress(0.5, "inverse kinematics");
+                    solving.await(10, TimeUnit.SECONDS);
+                    return "done";
+                },
+                r -> end.countDown()));
         Object[] plan = barWhen(bar, "planning toolpaths");
         planning.countDown();
         Object[] ik = barWhen(bar, "inverse kinematics");

@@ -32,9 +32,18 @@ import org.junit.jupiter.api.Test;
 class CancelRunGuiTest extends WindowGuiTest {
 
     static Job grading(String sizes, boolean half) {
-        return Job.empty(JobTask.GRADE).withGrading(new GradingSettings(
-                Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, sizes, half, org.fresa.grading.SizeSystem.BR,
-                OptionalDouble.empty(), OptionalDouble.empty(), Optional.empty(), 0, org.fresa.grading.ShrinkageMode.MULTIPLICATIVE));
+        return Job.empty(JobTask.GRADE)
+                .withGrading(new GradingSettings(
+                        Path.of("samples/grading/sole-40.contour").toAbsolutePath(),
+                        40,
+                        sizes,
+                        half,
+                        org.fresa.grading.SizeSystem.BR,
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        Optional.empty(),
+                        0,
+                        org.fresa.grading.ShrinkageMode.MULTIPLICATIVE));
     }
 
     /** Presses a key in the window, clicking it first: without a window manager a closed chooser leaves no focus. */
@@ -100,18 +109,21 @@ class CancelRunGuiTest extends WindowGuiTest {
         assertTrue(names(out).size() >= 2, "the run writes: " + names(out) + ", status " + status());
         try {
             var pane = window.optionPane(Timeout.timeout(100));
-            throw new AssertionError("no dialog while running, found: " + GuiActionRunner.execute(
-                    () -> String.valueOf(pane.target().getMessage())) + "; files " + names(out));
+            throw new AssertionError("no dialog while running, found: "
+                    + GuiActionRunner.execute(() -> String.valueOf(pane.target().getMessage())) + "; files "
+                    + names(out));
         } catch (org.assertj.swing.exception.WaitTimedOutError expected) {
             // running: no dialog yet
         }
         pressInWindow(KeyEvent.VK_ESCAPE);
-        Pause.pause(new org.assertj.swing.timing.Condition("the run reports it is cancelled") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> status()).endsWith("cancelled");
-            }
-        }, Timeout.timeout(20_000));
+        Pause.pause(
+                new org.assertj.swing.timing.Condition("the run reports it is cancelled") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(() -> status()).endsWith("cancelled");
+                    }
+                },
+                Timeout.timeout(20_000));
         // the worker stops at its next check: wait until the folder stops changing
         List<String> before;
         List<String> after = names(out);
@@ -123,14 +135,15 @@ class CancelRunGuiTest extends WindowGuiTest {
         List<String> files = after;
         assertAll(
                 () -> assertFalse(files.contains("grading.csv"), "cancelled before the end: " + files),
-                () -> assertTrue(files.stream().noneMatch(f -> f.startsWith(AtomicFiles.TEMP_PREFIX)),
+                () -> assertTrue(
+                        files.stream().noneMatch(f -> f.startsWith(AtomicFiles.TEMP_PREFIX)),
                         "no temporary file: " + files),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(out), "every final-named file is complete"));
 
         try {
             var pane = window.optionPane(Timeout.timeout(1000));
-            throw new AssertionError("no dialog after Cancel, found: " + GuiActionRunner.execute(
-                    () -> String.valueOf(pane.target().getMessage())));
+            throw new AssertionError("no dialog after Cancel, found: "
+                    + GuiActionRunner.execute(() -> String.valueOf(pane.target().getMessage())));
         } catch (org.assertj.swing.exception.WaitTimedOutError expected) {
             // no dialog: the cancelled run said so in the status bar only
         }
@@ -140,9 +153,11 @@ class CancelRunGuiTest extends WindowGuiTest {
         runInto(next);
         DialogFixture done = window.dialog(Timeout.timeout(60_000));
         done.close();
-        assertAll(() -> assertTrue(status().endsWith("done"), status()),
-                () -> assertTrue(names(next).containsAll(List.of("grading.csv", "grading.png", "size-40.dxf",
-                        "size-41.dxf")), names(next).toString()),
+        assertAll(
+                () -> assertTrue(status().endsWith("done"), status()),
+                () -> assertTrue(
+                        names(next).containsAll(List.of("grading.csv", "grading.png", "size-40.dxf", "size-41.dxf")),
+                        names(next).toString()),
                 () -> assertEquals(List.of(), CompleteOutputs.incomplete(next)));
     }
 }

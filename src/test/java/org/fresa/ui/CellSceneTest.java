@@ -29,15 +29,30 @@ class CellSceneTest {
 
     @Test
     void theIrb140AtHomeEndsAtItsFlangeWithTheToolFrameThere() {
-        CellScene s = CellScene.of(Robots.irb140(), new double[6], Transform3.IDENTITY, Transform3.IDENTITY,
-                Optional.empty(), List.of(), -1);
+        CellScene s = CellScene.of(
+                Robots.irb140(),
+                new double[6],
+                Transform3.IDENTITY,
+                Transform3.IDENTITY,
+                Optional.empty(),
+                List.of(),
+                -1);
         List<Vec3> arm = s.links().get(0);
         Vec3 tip = arm.get(arm.size() - 1);
         // spec/robots.md: at q = 0 the flange is at (515, 0, 712)
-        assertAll(() -> assertEquals(Vec3.ZERO, arm.get(0)),
+        assertAll(
+                () -> assertEquals(Vec3.ZERO, arm.get(0)),
                 () -> assertEquals(0, tip.distance(new Vec3(515, 0, 712)), EPS),
-                () -> assertEquals(0, s.frames().stream().filter(f -> f.name().equals("tool")).findFirst()
-                        .orElseThrow().pose().translationPart().distance(tip), EPS));
+                () -> assertEquals(
+                        0,
+                        s.frames().stream()
+                                .filter(f -> f.name().equals("tool"))
+                                .findFirst()
+                                .orElseThrow()
+                                .pose()
+                                .translationPart()
+                                .distance(tip),
+                        EPS));
     }
 
     @Test
@@ -56,21 +71,37 @@ class CellSceneTest {
 
     @Test
     void legLengthsWithoutAnAssemblyDrawNoRobot() {
-        CellScene s = CellScene.of(Robots.tricept806(), new double[] {1, 1, 5000, 0, 0, 0}, Transform3.IDENTITY,
-                Transform3.IDENTITY, Optional.empty(), List.of(), -1);
+        CellScene s = CellScene.of(
+                Robots.tricept806(),
+                new double[] {1, 1, 5000, 0, 0, 0},
+                Transform3.IDENTITY,
+                Transform3.IDENTITY,
+                Optional.empty(),
+                List.of(),
+                -1);
         assertTrue(s.links().isEmpty());
     }
 
     @Test
     void theWorkpieceIsTheBoxAroundTheCuttingMovesInThePieceFrame() {
-        Toolpath tp = new Toolpath(List.of(new ToolpathSection("ws", Vec3.UNIT_Z, 10, 1, 0, new Vec3(0, 0, 50),
-                List.of(new Move.Rapid(new Vec3(500, 500, 500)), new Move.Linear(new Vec3(0, 0, -20), 100),
+        Toolpath tp = new Toolpath(List.of(new ToolpathSection(
+                "ws",
+                Vec3.UNIT_Z,
+                10,
+                1,
+                0,
+                new Vec3(0, 0, 50),
+                List.of(
+                        new Move.Rapid(new Vec3(500, 500, 500)),
+                        new Move.Linear(new Vec3(0, 0, -20), 100),
                         new Move.Linear(new Vec3(100, 60, 0), 100)))));
         Transform3 piece = Transform3.translation(400, 0, 300);
         List<List<Vec3>> edges = CellScene.workpieceEdges(tp, piece);
         assertEquals(12, edges.size());
-        double minZ = edges.stream().flatMap(List::stream).mapToDouble(Vec3::z).min().orElseThrow();
-        double maxX = edges.stream().flatMap(List::stream).mapToDouble(Vec3::x).max().orElseThrow();
+        double minZ =
+                edges.stream().flatMap(List::stream).mapToDouble(Vec3::z).min().orElseThrow();
+        double maxX =
+                edges.stream().flatMap(List::stream).mapToDouble(Vec3::x).max().orElseThrow();
         // the rapid to (500, 500, 500) is not part of the workpiece
         assertAll(() -> assertEquals(280, minZ, EPS), () -> assertEquals(500, maxX, EPS));
     }

@@ -35,7 +35,8 @@ class CuttingViewModelTest {
         vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
         vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
         PlotScene s = vm.scene();
-        assertTrue(layer(s, "parts").style() == PlotScene.Style.PART && !layer(s, "parts").curves().isEmpty());
+        assertTrue(layer(s, "parts").style() == PlotScene.Style.PART
+                && !layer(s, "parts").curves().isEmpty());
         assertTrue(!layer(s, "holes").curves().isEmpty());
         assertEquals(PlotScene.Style.WARNING, layer(s, "open chains").style());
         assertEquals(1, layer(s, "open chains").curves().size());
@@ -53,13 +54,20 @@ class CuttingViewModelTest {
         CuttingService.Result r = CuttingService.compute(vm.settings(), ProgressMonitor.NONE);
         vm.setResult(r);
         WarningList w = vm.warnings();
-        java.util.List<?> summary = (java.util.List<?>) CuttingService.summary(r).get("warnings");
+        java.util.List<?> summary =
+                (java.util.List<?>) CuttingService.summary(r).get("warnings");
         org.junit.jupiter.api.Assertions.assertAll(
                 // 32 on the drawing in 2026-12 (18 contours not cut); the tab listed 3 of them
                 () -> assertTrue(w.size() > 20, w.size() + " warnings"),
-                () -> assertEquals(summary, w.all().stream().map(WarningList.Warning::text).toList()),
-                () -> assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(23, 109)), w.all().stream()
-                        .filter(x -> x.text().startsWith("open chain")).findFirst().orElseThrow().place()),
+                () -> assertEquals(
+                        summary, w.all().stream().map(WarningList.Warning::text).toList()),
+                () -> assertEquals(
+                        java.util.Optional.of(org.fresa.geom.Vec2.of(23, 109)),
+                        w.all().stream()
+                                .filter(x -> x.text().startsWith("open chain"))
+                                .findFirst()
+                                .orElseThrow()
+                                .place()),
                 () -> assertEquals(java.util.Optional.empty(), w.all().get(0).place()),
                 () -> assertTrue(w.heading().startsWith(w.size() + " warnings"), w.heading()));
     }
@@ -85,8 +93,13 @@ class CuttingViewModelTest {
         assertEquals(vm.settings(), again.settings());
 
         java.io.StringWriter err = new java.io.StringWriter();
-        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
-                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        int status = org.fresa.app.cli.FresaCommand.execute(
+                new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true),
+                "run",
+                file.toString(),
+                "--out",
+                dir.resolve("out").toString());
         assertTrue(status <= 1, err.toString());
         String program = java.nio.file.Files.readString(dir.resolve("out").resolve("program.ngc"));
         assertTrue(program.contains("G42") && program.contains("M64 P0"), program);
@@ -105,15 +118,25 @@ class CuttingViewModelTest {
         java.util.List<CuttingViewModel.CutRow> auto = vm.cutList();
         assertEquals(10, auto.size());
         // a part may not move up over its own hole (the part's last hole comes just before it)
-        int part = java.util.stream.IntStream.range(1, auto.size()).filter(i -> !auto.get(i).contour().contains("hole")
-                && auto.get(i - 1).contour().startsWith(auto.get(i).contour() + " hole")).findFirst().orElseThrow();
+        int part = java.util.stream.IntStream.range(1, auto.size())
+                .filter(i -> !auto.get(i).contour().contains("hole")
+                        && auto.get(i - 1).contour().startsWith(auto.get(i).contour() + " hole"))
+                .findFirst()
+                .orElseThrow();
         java.util.Optional<String> refused = vm.moveCut(part, -1);
-        assertTrue(refused.isPresent() && refused.get().startsWith(auto.get(part - 1).contour() + " lies inside "
-                + auto.get(part).contour()), refused.toString());
+        assertTrue(
+                refused.isPresent()
+                        && refused.get()
+                                .startsWith(auto.get(part - 1).contour() + " lies inside "
+                                        + auto.get(part).contour()),
+                refused.toString());
         assertTrue(vm.cutOrder().isEmpty(), "a refused move leaves the order alone");
         // a hole moved up over another hole of the same part is allowed
-        int hole = java.util.stream.IntStream.range(1, auto.size()).filter(i -> auto.get(i).contour().contains("hole")
-                && auto.get(i - 1).contour().contains("hole")).findFirst().orElseThrow();
+        int hole = java.util.stream.IntStream.range(1, auto.size())
+                .filter(i -> auto.get(i).contour().contains("hole")
+                        && auto.get(i - 1).contour().contains("hole"))
+                .findFirst()
+                .orElseThrow();
         assertEquals(java.util.Optional.empty(), vm.moveCut(hole, -1));
         vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
         assertEquals(auto.get(hole).contour(), vm.cutList().get(hole - 1).contour());
@@ -134,8 +157,13 @@ class CuttingViewModelTest {
         again.load(org.fresa.job.JobXml.read(file));
         assertEquals(vm.settings(), again.settings());
         java.io.StringWriter err = new java.io.StringWriter();
-        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
-                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        int status = org.fresa.app.cli.FresaCommand.execute(
+                new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true),
+                "run",
+                file.toString(),
+                "--out",
+                dir.resolve("out").toString());
         assertTrue(status <= 1, err.toString());
         assertEquals(shown, java.nio.file.Files.readString(dir.resolve("out").resolve("program.ngc")));
         // Reset: the automatic order and starts again
@@ -146,7 +174,8 @@ class CuttingViewModelTest {
 
     @Test
     void aStartIsTypedAsTwoNumbers() {
-        assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(12.5, -3)), CuttingViewModel.parseStart(" 12.5, -3 "));
+        assertEquals(
+                java.util.Optional.of(org.fresa.geom.Vec2.of(12.5, -3)), CuttingViewModel.parseStart(" 12.5, -3 "));
         assertEquals(java.util.Optional.of(org.fresa.geom.Vec2.of(1, 2)), CuttingViewModel.parseStart("1 2"));
         assertEquals(java.util.Optional.empty(), CuttingViewModel.parseStart("1"));
         assertEquals(java.util.Optional.empty(), CuttingViewModel.parseStart("a, b"));
@@ -154,13 +183,18 @@ class CuttingViewModelTest {
     }
 
     private static PlotScene.Layer layer(PlotScene s, String name) {
-        return s.layers().stream().filter(l -> l.name().equals(name)).findFirst().orElseThrow();
+        return s.layers().stream()
+                .filter(l -> l.name().equals(name))
+                .findFirst()
+                .orElseThrow();
     }
 
     @Test
     void aBadFieldIsNamedInThePlannersWordsAndTheSettingsWaitForAGoodOne() {
         CuttingViewModel vm = new CuttingViewModel();
-        assertEquals(java.util.List.of(CuttingViewModel.DRAWING), java.util.List.copyOf(vm.problems().keySet()));
+        assertEquals(
+                java.util.List.of(CuttingViewModel.DRAWING),
+                java.util.List.copyOf(vm.problems().keySet()));
         vm.setDrawing(Path.of("samples/cutting/plate.dxf"));
         assertTrue(vm.problems().isEmpty(), vm.problems().toString());
         vm.setKerfMm("1,5");
@@ -168,7 +202,8 @@ class CuttingViewModelTest {
         vm.setOvercutMm("");
         java.util.Map<String, String> p = vm.problems();
         assertEquals("Kerf (mm): '1,5' is not a number (decimals take a point: 1.5).", p.get(CuttingViewModel.KERF));
-        assertTrue(p.get(CuttingViewModel.LEAD_IN).startsWith("Lead-in (mm): expected a number from 0 to "),
+        assertTrue(
+                p.get(CuttingViewModel.LEAD_IN).startsWith("Lead-in (mm): expected a number from 0 to "),
                 p.get(CuttingViewModel.LEAD_IN));
         assertEquals("Overcut (mm): a number is needed.", p.get(CuttingViewModel.OVERCUT));
         for (String m : p.values()) {
@@ -185,9 +220,22 @@ class CuttingViewModelTest {
     void whatTheTabHasNoFieldForStaysAsTheJobHasIt() throws Exception {
         org.fresa.job.Job job = org.fresa.job.JobXml.read(Path.of("samples/jobs/cut-plate.xml"));
         org.fresa.job.JobSettings.CuttingSettings c = job.cutting().orElseThrow();
-        org.fresa.job.JobSettings.CuttingSettings odd = new org.fresa.job.JobSettings.CuttingSettings(c.drawing(),
-                c.kerfMm(), c.process(), c.leadInMm(), c.leadOutMm(), c.lead(), 0.05, org.fresa.dxf.DrawingUnits.of("mm").orElseThrow(), c.paperMode(), c.post(),
-                c.compensation(), c.outerDirection(), c.holeDirection(), c.overcutMm(), c.avoidCutParts());
+        org.fresa.job.JobSettings.CuttingSettings odd = new org.fresa.job.JobSettings.CuttingSettings(
+                c.drawing(),
+                c.kerfMm(),
+                c.process(),
+                c.leadInMm(),
+                c.leadOutMm(),
+                c.lead(),
+                0.05,
+                org.fresa.dxf.DrawingUnits.of("mm").orElseThrow(),
+                c.paperMode(),
+                c.post(),
+                c.compensation(),
+                c.outerDirection(),
+                c.holeDirection(),
+                c.overcutMm(),
+                c.avoidCutParts());
         CuttingViewModel vm = new CuttingViewModel();
         vm.load(job.withCutting(odd));
         assertEquals(odd, vm.typedSettings().orElseThrow());

@@ -32,16 +32,21 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         window.tabbedPane("tabs").selectTab("Cutting");
         window.textBox(CuttingViewModel.KERF).deleteText().enterText("6,5");
         window.button("cutting-cut").requireDisabled();
-        assertEquals("Correct the marked field first", window.button("cutting-cut").target().getToolTipText());
+        assertEquals(
+                "Correct the marked field first",
+                window.button("cutting-cut").target().getToolTipText());
         assertEquals(BAD, window.textBox(CuttingViewModel.KERF).background().target());
-        assertEquals("Kerf (mm): '6,5' is not a number (decimals take a point: 6.5).",
+        assertEquals(
+                "Kerf (mm): '6,5' is not a number (decimals take a point: 6.5).",
                 window.label("cutting-status").target().getToolTipText());
         assertEquals(2, model().job().cutting().orElseThrow().kerfMm());
         shoot("cutting-bad-field.png");
         window.textBox(CuttingViewModel.KERF).deleteText().enterText("2.5");
         window.button("cutting-cut").requireEnabled();
         // the good value goes into the job once the typing pauses
-        waitFor("the job's kerf is 2.5", () -> model().job().cutting().orElseThrow().kerfMm() == 2.5);
+        waitFor(
+                "the job's kerf is 2.5",
+                () -> model().job().cutting().orElseThrow().kerfMm() == 2.5);
 
         Path bad = dir.resolve("broken.dxf");
         Files.writeString(bad, "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nabc\n");
@@ -51,8 +56,10 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         fc.selectFile(bad.toFile());
         fc.approve();
         window.button("cutting-cut").click();
-        waitFor("the cut ended", () -> window.label("status").target().getText().startsWith("Cutting: f")
-                || window.label("status").target().getText().startsWith("Cutting: d"));
+        waitFor(
+                "the cut ended",
+                () -> window.label("status").target().getText().startsWith("Cutting: f")
+                        || window.label("status").target().getText().startsWith("Cutting: d"));
         window.label("status").requireText("Cutting: failed");
         String why = window.label("cutting-status").target().getToolTipText();
         assertTrue(why.contains("broken.dxf"), why);
@@ -67,40 +74,51 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         waitFor("Grade may run", () -> window.button("grading-grade").target().isEnabled());
         window.textBox(GradingViewModel.SIZES).deleteText().enterText("44-36");
         window.button("grading-grade").requireDisabled();
-        assertEquals("Correct the marked field first", window.button("grading-grade").target().getToolTipText());
+        assertEquals(
+                "Correct the marked field first",
+                window.button("grading-grade").target().getToolTipText());
         assertEquals(BAD, window.textBox(GradingViewModel.SIZES).background().target());
-        assertEquals("Sizes: expected sizes A-B with A <= B, found '44-36'.",
+        assertEquals(
+                "Sizes: expected sizes A-B with A <= B, found '44-36'.",
                 window.label("grading-status").target().getToolTipText());
         assertEquals("36-44", model().job().grading().orElseThrow().sizes());
         shoot("grading-bad-field.png");
         window.textBox(GradingViewModel.SHRINKAGE).deleteText().enterText("0,02");
         // a field that does not read comes first; the grading judges the values once every field reads
-        assertEquals("Shrinkage: '0,02' is not a number (decimals take a point: 0.02).",
+        assertEquals(
+                "Shrinkage: '0,02' is not a number (decimals take a point: 0.02).",
                 window.label("grading-status").target().getToolTipText());
-        assertEquals(BAD, window.textBox(GradingViewModel.SHRINKAGE).background().target());
+        assertEquals(
+                BAD, window.textBox(GradingViewModel.SHRINKAGE).background().target());
         window.textBox(GradingViewModel.SHRINKAGE).deleteText().enterText("0");
         window.textBox(GradingViewModel.SIZES).deleteText().enterText("38-42");
         window.button("grading-grade").requireEnabled();
         window.button("grading-grade").click();
-        waitFor("the grading is shown", () -> window.table("grading-table").target().getRowCount() == 5);
+        waitFor(
+                "the grading is shown",
+                () -> window.table("grading-table").target().getRowCount() == 5);
         window.label("status").requireText("Grading: done");
         assertEquals(0, optionPanes());
     }
 
     private void shoot(String name) throws java.io.IOException {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         Files.createDirectories(Path.of("target", "screenshots"));
-        javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+        javax.imageio.ImageIO.write(
+                img, "png", Path.of("target", "screenshots", name).toFile());
     }
 
     private int optionPanes() {
-        return window.robot().finder().findAll(new GenericTypeMatcher<>(javax.swing.JOptionPane.class, true) {
-            @Override
-            protected boolean isMatching(javax.swing.JOptionPane p) {
-                return true;
-            }
-        }).size();
+        return window.robot()
+                .finder()
+                .findAll(new GenericTypeMatcher<>(javax.swing.JOptionPane.class, true) {
+                    @Override
+                    protected boolean isMatching(javax.swing.JOptionPane p) {
+                        return true;
+                    }
+                })
+                .size();
     }
 
     private MainViewModel model() {
@@ -112,11 +130,13 @@ class ErrorStyleGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, BooleanSupplier test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::getAsBoolean);
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::getAsBoolean);
+                    }
+                },
+                Timeout.timeout(60_000));
     }
 }

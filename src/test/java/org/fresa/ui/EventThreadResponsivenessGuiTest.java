@@ -56,7 +56,8 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     void watch() throws Exception {
         // a -Dtest selection also runs this in the low-memory execution (-Xmx512m), which is for
         // the *LowMemoryTest readers; the window's jobs need the default execution's heap
-        Assumptions.assumeTrue(Runtime.getRuntime().maxMemory() > 1024L * 1024 * 1024,
+        Assumptions.assumeTrue(
+                Runtime.getRuntime().maxMemory() > 1024L * 1024 * 1024,
                 "runs in the default surefire execution's heap");
         watchdog = EventThreadWatchdog.install(THRESHOLD_MS);
     }
@@ -81,8 +82,9 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         record("STEP-NC import of a 4 MiB Part 21 file", () -> {
             chooser.approve();
-            waitFor("the program is read and planned", () -> window.label("stepnc-cycle-time").target()
-                    .getText().startsWith("Cycle time"));
+            waitFor(
+                    "the program is read and planned",
+                    () -> window.label("stepnc-cycle-time").target().getText().startsWith("Cycle time"));
         });
     }
 
@@ -95,8 +97,9 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         record("robot IK of example 2 on the IRB-140", () -> {
             window.button("position-compute").click();
-            waitFor("the summary shows the result", () -> window.textBox("position-summary").target().getText()
-                    .contains("Unreachable:"));
+            waitFor(
+                    "the summary shows the result",
+                    () -> window.textBox("position-summary").target().getText().contains("Unreachable:"));
         });
     }
 
@@ -104,12 +107,15 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     void aPocketIsComputed() {
         window.tabbedPane("tabs").selectTab("Pocket");
         // set, not typed: the robot's key map under Xvfb turns '/' into '&'
-        window.textBox("pocket-contour").setText(Path.of("samples/pocket/cavity02.dad").toAbsolutePath().toString());
+        window.textBox("pocket-contour")
+                .setText(Path.of("samples/pocket/cavity02.dad").toAbsolutePath().toString());
         settle();
         record("pocket of samples/pocket/cavity02.dad", () -> {
             window.button("pocket-compute").click();
-            waitFor("the pocket is computed", () -> !List.of(" ", "computing").contains(
-                    window.label("pocket-status").target().getText()));
+            waitFor(
+                    "the pocket is computed",
+                    () -> !List.of(" ", "computing")
+                            .contains(window.label("pocket-status").target().getText()));
         });
         window.label("pocket-status").requireText("done");
     }
@@ -136,20 +142,33 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         record("grading the size-40 sole over 36-44", () -> {
             window.button("grading-grade").click();
-            waitFor("the table is filled", () -> window.table("grading-table").target().getRowCount() == 9);
+            waitFor(
+                    "the table is filled",
+                    () -> window.table("grading-table").target().getRowCount() == 9);
         });
     }
 
     private void cut(Path drawing, String job) {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.CUT).withCutting(new CuttingSettings(
-                drawing.toAbsolutePath(), 2, org.fresa.cutting.CutProcess.PLASMA, 3, 1, org.fresa.cutting.LeadShape.ARC, 0.001, org.fresa.dxf.DrawingUnits.AUTO, false, org.fresa.post.CuttingPost.LINUXCNC))));
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.CUT)
+                .withCutting(new CuttingSettings(
+                        drawing.toAbsolutePath(),
+                        2,
+                        org.fresa.cutting.CutProcess.PLASMA,
+                        3,
+                        1,
+                        org.fresa.cutting.LeadShape.ARC,
+                        0.001,
+                        org.fresa.dxf.DrawingUnits.AUTO,
+                        false,
+                        org.fresa.post.CuttingPost.LINUXCNC))));
         window.tabbedPane("tabs").selectTab("Cutting");
         settle();
         record(job, () -> {
             window.button("cutting-cut").click();
-            waitFor("the drawing is cut", () -> window.textBox("cutting-totals").target().getText()
-                    .contains("pierces"));
+            waitFor(
+                    "the drawing is cut",
+                    () -> window.textBox("cutting-totals").target().getText().contains("pierces"));
         });
     }
 
@@ -161,21 +180,30 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         watchdog.pause();
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
-        List<EventThreadWatchdog.Slow> over = slow.stream().filter(s -> s.isChargedOver(THRESHOLD_MS))
-                .toList();
-        double worstNet = slow.stream().mapToDouble(EventThreadWatchdog.Slow::chargedMs).max()
+        List<EventThreadWatchdog.Slow> over =
+                slow.stream().filter(s -> s.isChargedOver(THRESHOLD_MS)).toList();
+        double worstNet = slow.stream()
+                .mapToDouble(EventThreadWatchdog.Slow::chargedMs)
+                .max()
                 .orElse(watchdog.worstMs());
-        String line = String.format(Locale.ROOT, "%s: worst event-thread task %.1f ms wall (%s), %.1f ms charged "
-                + "to the application; %d over %.0f ms wall, %d of them charged over it%n", job,
-                watchdog.worstMs(), watchdog.worstEvent(), Math.min(worstNet, watchdog.worstMs()), slow.size(),
-                THRESHOLD_MS, over.size());
+        String line = String.format(
+                Locale.ROOT,
+                "%s: worst event-thread task %.1f ms wall (%s), %.1f ms charged "
+                        + "to the application; %d over %.0f ms wall, %d of them charged over it%n",
+                job,
+                watchdog.worstMs(),
+                watchdog.worstEvent(),
+                Math.min(worstNet, watchdog.worstMs()),
+                slow.size(),
+                THRESHOLD_MS,
+                over.size());
         StringBuilder sb = new StringBuilder(line);
         sb.append("  ").append(watchdog.threadsSinceRecord()).append('\n');
         slow.forEach(s -> sb.append("  ").append(s).append('\n'));
         try {
             Files.createDirectories(REPORT.getParent());
-            Files.writeString(REPORT, sb, java.nio.file.StandardOpenOption.CREATE,
-                    java.nio.file.StandardOpenOption.APPEND);
+            Files.writeString(
+                    REPORT, sb, java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -184,7 +212,8 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     }
 
     private void openJob(String file) {
-        GuiActionRunner.execute(() -> ((MainWindow) window.target()).openJob(Path.of(file).toAbsolutePath()));
+        GuiActionRunner.execute(
+                () -> ((MainWindow) window.target()).openJob(Path.of(file).toAbsolutePath()));
     }
 
     /** Lets pending paints and layouts run (twice: a paint may post another). */
@@ -195,21 +224,27 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, Supplier<Boolean> test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::get);
-            }
-        }, Timeout.timeout(180_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::get);
+                    }
+                },
+                Timeout.timeout(180_000));
     }
 
     private void waitUntilNoTaskRuns() {
-        waitFor("no task is running", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JProgressBar.class, false) {
-            @Override
-            protected boolean isMatching(javax.swing.JProgressBar b) {
-                return b.isShowing();
-            }
-        }).isEmpty());
+        waitFor(
+                "no task is running",
+                () -> window.robot()
+                        .finder()
+                        .findAll(new GenericTypeMatcher<>(javax.swing.JProgressBar.class, false) {
+                            @Override
+                            protected boolean isMatching(javax.swing.JProgressBar b) {
+                                return b.isShowing();
+                            }
+                        })
+                        .isEmpty());
     }
 }

@@ -6,10 +6,10 @@ import java.awt.EventQueue;
 import java.awt.Toolkit;
 import java.awt.event.InvocationEvent;
 import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -42,8 +42,16 @@ import javax.management.openmbean.CompositeData;
 final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     /** One event that took longer than the threshold. */
-    record Slow(String event, long startMs, double ms, double gcMs, double runQueueMs, double cpuMs,
-            double blockedMs, String running, List<String> stack) {
+    record Slow(
+            String event,
+            long startMs,
+            double ms,
+            double gcMs,
+            double runQueueMs,
+            double cpuMs,
+            double blockedMs,
+            String running,
+            List<String> stack) {
         /**
          * What the application is charged: the wall time without GC pauses and waits for a core,
          * and at most what the event thread computed or blocked (waited on a lock, slept, waited
@@ -60,17 +68,25 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
         @Override
         public String toString() {
-            return String.format(java.util.Locale.ROOT, "%.1f ms wall, charged %.1f ms (GC %.1f ms, waiting for a "
-                    + "core %.1f ms, event thread's CPU %.1f ms, blocked or waiting %.1f ms) %s%n"
-                    + "      runnable threads of the JVM at 50 ms: %s%n      at %s", ms,
-                    chargedMs(), gcMs, runQueueMs, cpuMs, blockedMs, event, running,
+            return String.format(
+                    java.util.Locale.ROOT,
+                    "%.1f ms wall, charged %.1f ms (GC %.1f ms, waiting for a "
+                            + "core %.1f ms, event thread's CPU %.1f ms, blocked or waiting %.1f ms) %s%n"
+                            + "      runnable threads of the JVM at 50 ms: %s%n      at %s",
+                    ms,
+                    chargedMs(),
+                    gcMs,
+                    runQueueMs,
+                    cpuMs,
+                    blockedMs,
+                    event,
+                    running,
                     String.join("\n      at ", stack));
         }
     }
 
     /** A stop-the-world collection, in milliseconds since the JVM started. */
-    private record GcPause(long startMs, long endMs) {
-    }
+    private record GcPause(long startMs, long endMs) {}
 
     private volatile double thresholdMs;
     private final long jvmStartNanos;
@@ -116,15 +132,21 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     }
 
     // the CPU time says whether a slow event computed or waited for a core (reported, not excused)
-    private record Finished(String event, long startNanos, long endNanos, long cpuNanos, long blockedMs,
-            String running, StackTraceElement[] stack) {
-    }
+    private record Finished(
+            String event,
+            long startNanos,
+            long endNanos,
+            long cpuNanos,
+            long blockedMs,
+            String running,
+            StackTraceElement[] stack) {}
 
     private static final java.lang.management.ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     private EventThreadWatchdog(double thresholdMs) {
         this.thresholdMs = thresholdMs;
-        this.jvmStartNanos = System.nanoTime() - ManagementFactory.getRuntimeMXBean().getUptime() * 1_000_000L;
+        this.jvmStartNanos =
+                System.nanoTime() - ManagementFactory.getRuntimeMXBean().getUptime() * 1_000_000L;
         for (GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
             if (gc instanceof NotificationEmitter e) {
                 e.addNotificationListener(gcListener, null, null);
@@ -164,8 +186,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     }
 
     /** A thread of this JVM as the kernel sees it: name, state, nice value, CPU time so far (ms). */
-    private record Task(String tid, String name, char state, int nice, long cpuMs) {
-    }
+    private record Task(String tid, String name, char state, int nice, long cpuMs) {}
 
     private static final long TICK_MS = 10;
     private java.util.Map<String, Task> atRecord = java.util.Map.of();
@@ -182,8 +203,11 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
                     int close = st.lastIndexOf(')');
                     String[] f = st.substring(close + 2).split(" ");
                     // fields after the name: state(0) ... utime(11) stime(12) ... nice(16)
-                    out.add(new Task(d.getFileName().toString(), st.substring(st.indexOf('(') + 1, close),
-                            f[0].charAt(0), Integer.parseInt(f[16]),
+                    out.add(new Task(
+                            d.getFileName().toString(),
+                            st.substring(st.indexOf('(') + 1, close),
+                            f[0].charAt(0),
+                            Integer.parseInt(f[16]),
                             (Long.parseLong(f[11]) + Long.parseLong(f[12])) * TICK_MS));
                 } catch (IOException | RuntimeException e) {
                     // the thread ended meanwhile
@@ -197,9 +221,11 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     /** The runnable threads (state R, the event thread left out), or all of them, with their nice values. */
     private static String describe(List<Task> ts, boolean runnableOnly) {
-        String s = ts.stream().filter(t -> !runnableOnly || t.state() == 'R')
+        String s = ts.stream()
+                .filter(t -> !runnableOnly || t.state() == 'R')
                 .filter(t -> !runnableOnly || !t.name().startsWith("AWT-EventQueue"))
-                .map(t -> t.name() + " (nice " + t.nice() + ")").collect(Collectors.joining(", "));
+                .map(t -> t.name() + " (nice " + t.nice() + ")")
+                .collect(Collectors.joining(", "));
         return s.isEmpty() ? "none" : s;
     }
 
@@ -209,10 +235,14 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
      */
     String threadsSinceRecord() {
         List<String> out = new ArrayList<>();
-        atPause.stream().map(t -> {
-            Task before = atRecord.get(t.tid());
-            return new Task(t.tid(), t.name(), t.state(), t.nice(), t.cpuMs() - (before == null ? 0 : before.cpuMs()));
-        }).filter(t -> t.cpuMs() >= 50).sorted((a, b) -> Long.compare(b.cpuMs(), a.cpuMs()))
+        atPause.stream()
+                .map(t -> {
+                    Task before = atRecord.get(t.tid());
+                    return new Task(
+                            t.tid(), t.name(), t.state(), t.nice(), t.cpuMs() - (before == null ? 0 : before.cpuMs()));
+                })
+                .filter(t -> t.cpuMs() >= 50)
+                .sorted((a, b) -> Long.compare(b.cpuMs(), a.cpuMs()))
                 .forEach(t -> out.add(t.name() + " " + t.cpuMs() + " ms (nice " + t.nice() + ")"));
         return "load average at the start " + loadAtRecord + "; CPU of the JVM's threads during the job: "
                 + (out.isEmpty() ? "none over 50 ms" : String.join(", ", out));
@@ -222,8 +252,10 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
     void record() {
         atRecord = tasks().stream().collect(Collectors.toMap(Task::tid, t -> t, (a, b) -> a));
         try {
-            loadAtRecord = String.join(" ", Arrays.asList(Files.readString(Path.of("/proc/loadavg")).split(" "))
-                    .subList(0, 3));
+            loadAtRecord = String.join(
+                    " ",
+                    Arrays.asList(Files.readString(Path.of("/proc/loadavg")).split(" "))
+                            .subList(0, 3));
         } catch (IOException | RuntimeException e) {
             loadAtRecord = "unknown";
         }
@@ -275,7 +307,8 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
 
     /** The ms this thread was blocked on monitors or waiting, as the JVM counts them (-1: not counted). */
     private static long blockedMs() {
-        java.lang.management.ThreadInfo i = THREADS.getThreadInfo(Thread.currentThread().getId());
+        java.lang.management.ThreadInfo i =
+                THREADS.getThreadInfo(Thread.currentThread().getId());
         return i == null || i.getBlockedTime() < 0 ? 0 : i.getBlockedTime() + i.getWaitedTime();
     }
 
@@ -302,8 +335,14 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
             worstEvent = event;
         }
         if (ms > thresholdMs) {
-            finished.add(new Finished(event, s.startNanos, t1, THREADS.getCurrentThreadCpuTime() - s.startCpuNanos,
-                    blockedMs() - s.startBlockedMs, s.running, s.stack));
+            finished.add(new Finished(
+                    event,
+                    s.startNanos,
+                    t1,
+                    THREADS.getCurrentThreadCpuTime() - s.startCpuNanos,
+                    blockedMs() - s.startBlockedMs,
+                    s.running,
+                    s.stack));
         }
     }
 
@@ -328,10 +367,19 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
                 }
             }
             double runQueue = runQueueWaitNanos(f.startNanos(), f.endNanos()) / 1e6;
-            List<String> stack = f.stack() == null ? List.of("(no sample)")
+            List<String> stack = f.stack() == null
+                    ? List.of("(no sample)")
                     : Arrays.stream(f.stack()).limit(40).map(String::valueOf).collect(Collectors.toList());
-            out.add(new Slow(f.event(), sMs, (f.endNanos() - f.startNanos()) / 1e6, gc, runQueue, f.cpuNanos() / 1e6,
-                    f.blockedMs(), f.running(), stack));
+            out.add(new Slow(
+                    f.event(),
+                    sMs,
+                    (f.endNanos() - f.startNanos()) / 1e6,
+                    gc,
+                    runQueue,
+                    f.cpuNanos() / 1e6,
+                    f.blockedMs(),
+                    f.running(),
+                    stack));
         }
         return out;
     }
@@ -364,12 +412,13 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         String name = t.getName().length() > 15 ? t.getName().substring(0, 15) : t.getName();
         try (var tasks = Files.list(Path.of("/proc/self/task"))) {
             List<Path> found = tasks.filter(d -> {
-                try {
-                    return Files.readString(d.resolve("comm")).strip().equals(name);
-                } catch (IOException e) {
-                    return false;
-                }
-            }).toList();
+                        try {
+                            return Files.readString(d.resolve("comm")).strip().equals(name);
+                        } catch (IOException e) {
+                            return false;
+                        }
+                    })
+                    .toList();
             return found.size() == 1 ? found.get(0).resolve("schedstat") : null;
         } catch (IOException | RuntimeException e) {
             return null;
@@ -441,8 +490,8 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
         if (!GarbageCollectionNotificationInfo.GARBAGE_COLLECTION_NOTIFICATION.equals(n.getType())) {
             return;
         }
-        GarbageCollectionNotificationInfo info = GarbageCollectionNotificationInfo.from(
-                (CompositeData) n.getUserData());
+        GarbageCollectionNotificationInfo info =
+                GarbageCollectionNotificationInfo.from((CompositeData) n.getUserData());
         // concurrent cycles do not stop the event thread; their beans say so in the action
         if (info.getGcAction().contains("concurrent") || info.getGcName().contains("Concurrent")) {
             return;

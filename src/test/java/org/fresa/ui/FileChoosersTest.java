@@ -33,8 +33,12 @@ class FileChoosersTest {
         });
         JFileChooser stepnc = made[0];
         assertAll(
-                () -> assertEquals(parts.toFile().getCanonicalFile(), stepnc.getCurrentDirectory().getCanonicalFile()),
-                () -> assertEquals(parts.toFile().getCanonicalFile(), made[1].getCurrentDirectory().getCanonicalFile()),
+                () -> assertEquals(
+                        parts.toFile().getCanonicalFile(),
+                        stepnc.getCurrentDirectory().getCanonicalFile()),
+                () -> assertEquals(
+                        parts.toFile().getCanonicalFile(),
+                        made[1].getCurrentDirectory().getCanonicalFile()),
                 () -> assertTrue(stepnc.getFileFilter().accept(new File("part.stp"))),
                 () -> assertFalse(stepnc.getFileFilter().accept(new File("plate.dxf"))),
                 () -> assertEquals(JFileChooser.DIRECTORIES_ONLY, made[1].getFileSelectionMode()),

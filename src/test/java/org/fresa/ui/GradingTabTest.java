@@ -38,14 +38,24 @@ class GradingTabTest {
             f.add(t.component());
             f.setSize(1200, 800);
             f.setVisible(true);
-            model.setJob(model.job().withTask(JobTask.GRADE).withGrading(new GradingSettings(
-                    Path.of("samples/grading/sole-40.contour").toAbsolutePath(), 40, "38-42", false, org.fresa.grading.SizeSystem.BR,
-                    java.util.OptionalDouble.empty(), java.util.OptionalDouble.empty(), java.util.Optional.empty(), 0,
-                    org.fresa.grading.ShrinkageMode.MULTIPLICATIVE)));
+            model.setJob(model.job()
+                    .withTask(JobTask.GRADE)
+                    .withGrading(new GradingSettings(
+                            Path.of("samples/grading/sole-40.contour").toAbsolutePath(),
+                            40,
+                            "38-42",
+                            false,
+                            org.fresa.grading.SizeSystem.BR,
+                            java.util.OptionalDouble.empty(),
+                            java.util.OptionalDouble.empty(),
+                            java.util.Optional.empty(),
+                            0,
+                            org.fresa.grading.ShrinkageMode.MULTIPLICATIVE)));
             tab.set(t);
             frame.set(f);
         });
-        SwingUtilities.invokeAndWait(() -> find(tab.get().component(), JButton.class, "grading-grade").doClick());
+        SwingUtilities.invokeAndWait(() ->
+                find(tab.get().component(), JButton.class, "grading-grade").doClick());
         JTable table = find(tab.get().component(), JTable.class, "grading-table");
         for (int i = 0; i < 200 && table.getRowCount() == 0; i++) {
             Thread.sleep(50);

@@ -34,8 +34,11 @@ class GradingViewModelTest {
         GradingResult r = vm.grade();
         vm.setResult(r);
         List<List<String>> rows = vm.tableRows();
-        assertAll(() -> assertEquals(9, rows.size()), () -> assertEquals("36", rows.get(0).get(0)),
-                () -> assertEquals("243.360", rows.get(0).get(1)), () -> assertEquals("96.640", rows.get(8).get(2)),
+        assertAll(
+                () -> assertEquals(9, rows.size()),
+                () -> assertEquals("36", rows.get(0).get(0)),
+                () -> assertEquals("243.360", rows.get(0).get(1)),
+                () -> assertEquals("96.640", rows.get(8).get(2)),
                 () -> assertEquals(GradingViewModel.COLUMNS.size(), rows.get(0).size()));
         PlotScene s = vm.scene();
         assertTrue(s.layers().stream().filter(l -> l.name().startsWith("size ")).count() >= 9);
@@ -53,8 +56,11 @@ class GradingViewModelTest {
         vm.setFitting("D");
         List<List<String>> rows = vm.tableRows();
         // Brazilian 36 is French 38: fitting D 210.0 mm; Brazilian 40 is French 42: 227.0; 41 is beyond the table
-        assertAll(() -> assertEquals("36", rows.get(0).get(0)), () -> assertEquals("210.0", rows.get(0).get(girth)),
-                () -> assertEquals("40", rows.get(4).get(0)), () -> assertEquals("227.0", rows.get(4).get(girth)),
+        assertAll(
+                () -> assertEquals("36", rows.get(0).get(0)),
+                () -> assertEquals("210.0", rows.get(0).get(girth)),
+                () -> assertEquals("40", rows.get(4).get(0)),
+                () -> assertEquals("227.0", rows.get(4).get(girth)),
                 () -> assertEquals("", rows.get(5).get(girth)));
         assertThrows(IllegalArgumentException.class, () -> vm.setFitting("K"));
     }
@@ -66,8 +72,14 @@ class GradingViewModelTest {
         vm.setHeelElements("1,5");
         vm.setHeelGroup("3");
         PlotScene s = vm.scene();
-        assertEquals(2, s.layers().stream().filter(l -> l.name().equals("heel elements 1,5")).findFirst()
-                .orElseThrow().curves().size());
+        assertEquals(
+                2,
+                s.layers().stream()
+                        .filter(l -> l.name().equals("heel elements 1,5"))
+                        .findFirst()
+                        .orElseThrow()
+                        .curves()
+                        .size());
         var job = vm.applyTo(org.fresa.job.Job.empty(org.fresa.job.JobTask.GRADE));
         var h = job.grading().orElseThrow().coordination().orElseThrow();
         assertAll(() -> assertEquals("1,5", h.heelElements()), () -> assertEquals(3, h.groupSize()));
@@ -88,7 +100,9 @@ class GradingViewModelTest {
         vm.openOutline(SOLE);
         vm.setResult(vm.grade());
         vm.pickOrigin(new Vec2(1.23456, 100.0004));
-        assertAll(() -> assertEquals("1.235,100", vm.origin()), () -> assertTrue(vm.result().isEmpty()));
+        assertAll(
+                () -> assertEquals("1.235,100", vm.origin()),
+                () -> assertTrue(vm.result().isEmpty()));
         GradingResult r = vm.grade();
         assertEquals(new Vec2(1.235, 100), r.frame().origin());
     }
@@ -103,7 +117,8 @@ class GradingViewModelTest {
         assertTrue(e.getMessage().startsWith("Shrinkage"), e.getMessage());
         vm.setShrinkage("0.02");
         vm.setOrigin("1;2");
-        assertTrue(assertThrows(CamInputException.class, vm::settings).getMessage().startsWith("Origin"));
+        assertTrue(
+                assertThrows(CamInputException.class, vm::settings).getMessage().startsWith("Origin"));
     }
 
     @Test
@@ -123,10 +138,15 @@ class GradingViewModelTest {
         assertEquals(JobTask.POCKET, job.task());
         GradingViewModel other = new GradingViewModel();
         other.load(job);
-        assertAll(() -> assertEquals(org.fresa.grading.SizeSystem.PARIS, other.system()), () -> assertEquals("42", other.baseSize()),
-                () -> assertEquals("40-44", other.sizes()), () -> assertTrue(other.halfSizes()),
-                () -> assertEquals("6.67", other.lengthStep()), () -> assertEquals("", other.widthStep()),
-                () -> assertEquals("0,0", other.origin()), () -> assertEquals("0.02", other.shrinkage()),
+        assertAll(
+                () -> assertEquals(org.fresa.grading.SizeSystem.PARIS, other.system()),
+                () -> assertEquals("42", other.baseSize()),
+                () -> assertEquals("40-44", other.sizes()),
+                () -> assertTrue(other.halfSizes()),
+                () -> assertEquals("6.67", other.lengthStep()),
+                () -> assertEquals("", other.widthStep()),
+                () -> assertEquals("0,0", other.origin()),
+                () -> assertEquals("0.02", other.shrinkage()),
                 () -> assertEquals(org.fresa.grading.ShrinkageMode.ADDITIVE, other.shrinkageMode()),
                 () -> assertEquals(1, other.outline().size()));
     }
@@ -149,7 +169,8 @@ class GradingViewModelTest {
         vm.openOutline(SOLE);
         assertTrue(vm.problems().isEmpty(), vm.problems().toString());
         vm.setSizes("44-36");
-        assertEquals(java.util.Map.of(GradingViewModel.SIZES, "Sizes: expected sizes A-B with A <= B, found '44-36'."),
+        assertEquals(
+                java.util.Map.of(GradingViewModel.SIZES, "Sizes: expected sizes A-B with A <= B, found '44-36'."),
                 vm.problems());
         assertTrue(vm.typedSettings().isEmpty());
         vm.setSizes("36-44");
@@ -158,13 +179,15 @@ class GradingViewModelTest {
         vm.setOrigin("10;20");
         var p = vm.problems();
         assertEquals("Base size: '4O' is not a number.", p.get(GradingViewModel.BASE_SIZE));
-        assertEquals("Shrinkage: '0,02' is not a number (decimals take a point: 0.02).", p.get(GradingViewModel.SHRINKAGE));
+        assertEquals(
+                "Shrinkage: '0,02' is not a number (decimals take a point: 0.02).", p.get(GradingViewModel.SHRINKAGE));
         assertTrue(p.get(GradingViewModel.ORIGIN).startsWith("Origin X,Y: expected X,Y in mm"), p.toString());
         vm.setBaseSize("40");
         vm.setShrinkage("0.7");
         vm.setOrigin("");
         assertEquals(java.util.Set.of(GradingViewModel.SHRINKAGE), vm.problems().keySet());
-        assertTrue(vm.problems().get(GradingViewModel.SHRINKAGE).startsWith("Shrinkage: shrinkage must be a fraction"),
+        assertTrue(
+                vm.problems().get(GradingViewModel.SHRINKAGE).startsWith("Shrinkage: shrinkage must be a fraction"),
                 vm.problems().toString());
         for (String m : vm.problems().values()) {
             assertTrue(!m.contains("--") && !m.contains("Exception"), m);

@@ -30,15 +30,15 @@ class HelpGuiTest extends WindowGuiTest {
         DialogFixture guide = window.dialog("user-guide");
         guide.requireVisible();
         String text = GuiActionRunner.execute(() -> {
-            javax.swing.JEditorPane p = (javax.swing.JEditorPane) guide.robot().finder()
-                    .findByName(guide.target(), "user-guide-text");
+            javax.swing.JEditorPane p =
+                    (javax.swing.JEditorPane) guide.robot().finder().findByName(guide.target(), "user-guide-text");
             return p.getDocument().getText(0, p.getDocument().getLength());
         });
         assertTrue(text.contains("Every plot keeps the same scale on both axes"), text);
         java.awt.image.BufferedImage img = GuiActionRunner.execute(() -> {
             javax.swing.JRootPane root = ((javax.swing.JDialog) guide.target()).getRootPane();
-            java.awt.image.BufferedImage i = new java.awt.image.BufferedImage(root.getWidth(), root.getHeight(),
-                    java.awt.image.BufferedImage.TYPE_INT_RGB);
+            java.awt.image.BufferedImage i = new java.awt.image.BufferedImage(
+                    root.getWidth(), root.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB);
             java.awt.Graphics2D g = i.createGraphics();
             root.printAll(g);
             g.dispose();
@@ -46,8 +46,11 @@ class HelpGuiTest extends WindowGuiTest {
         });
         try {
             java.nio.file.Files.createDirectories(java.nio.file.Path.of("target", "screenshots"));
-            javax.imageio.ImageIO.write(img, "png", java.nio.file.Path.of("target", "screenshots", "help-user-guide.png")
-                    .toFile());
+            javax.imageio.ImageIO.write(
+                    img,
+                    "png",
+                    java.nio.file.Path.of("target", "screenshots", "help-user-guide.png")
+                            .toFile());
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
@@ -58,8 +61,9 @@ class HelpGuiTest extends WindowGuiTest {
     @Test
     void everyInputOfEveryTabHasATooltip() {
         // a real job, so that the tabs have validated and filled their fields
-        GuiActionRunner.execute(() -> ((MainWindow) window.target()).openJob(
-                java.nio.file.Path.of("samples/jobs/example2-irb140.xml").toAbsolutePath()));
+        GuiActionRunner.execute(() -> ((MainWindow) window.target())
+                .openJob(java.nio.file.Path.of("samples/jobs/example2-irb140.xml")
+                        .toAbsolutePath()));
         window.robot().waitForIdle();
         List<String> missing = GuiActionRunner.execute(() -> {
             JTabbedPane tabs = ((MainWindow) window.target()).tabs();
@@ -75,17 +79,25 @@ class HelpGuiTest extends WindowGuiTest {
     /** The inputs (fields, lists to choose from, boxes, spinners, sliders, tables) without a tooltip. */
     private static void collect(String tab, Component c, List<String> out) {
         boolean input = c instanceof JTextComponent t && t.isEditable()
-                || c instanceof JComboBox<?> || c instanceof JSpinner || c instanceof JSlider
-                || c instanceof JToggleButton || c instanceof JTable;
+                || c instanceof JComboBox<?>
+                || c instanceof JSpinner
+                || c instanceof JSlider
+                || c instanceof JToggleButton
+                || c instanceof JTable;
         // a table says what it holds on its header (its cells give their own problems)
-        JComponent said = c instanceof JTable t && t.getTableHeader() != null ? t.getTableHeader()
+        JComponent said = c instanceof JTable t && t.getTableHeader() != null
+                ? t.getTableHeader()
                 : c instanceof JComponent j ? j : null;
-        if (input && said != null && (said.getToolTipText() == null || said.getToolTipText().isBlank())) {
+        if (input
+                && said != null
+                && (said.getToolTipText() == null || said.getToolTipText().isBlank())) {
             String label = c instanceof AbstractButton b ? b.getText() : "";
             out.add(tab + ": " + c.getClass().getSimpleName() + " " + c.getName() + " " + label);
         }
         // a spinner's or combo box's own editor field is part of it, not another input
-        if (c instanceof Container k && !(c instanceof JSpinner) && !(c instanceof JComboBox<?>)
+        if (c instanceof Container k
+                && !(c instanceof JSpinner)
+                && !(c instanceof JComboBox<?>)
                 && !(c instanceof JTable)) {
             for (Component child : k.getComponents()) {
                 collect(tab, child, out);

@@ -47,7 +47,8 @@ class LiveReachGuiTest extends WindowGuiTest {
 
     @BeforeEach
     void watch() throws Exception {
-        Assumptions.assumeTrue(Runtime.getRuntime().maxMemory() > 1024L * 1024 * 1024,
+        Assumptions.assumeTrue(
+                Runtime.getRuntime().maxMemory() > 1024L * 1024 * 1024,
                 "runs in the default surefire execution's heap");
         watchdog = EventThreadWatchdog.install(THRESHOLD_MS);
     }
@@ -75,19 +76,31 @@ class LiveReachGuiTest extends WindowGuiTest {
         settle();
         // the first changes run the solver and the painting for the first time: the JIT compiles them
         // meanwhile (seconds of CPU on the machine's cores), so they are typed and reported, not judged
-        String[][] warmUp = {{"position-rt-X", "455"}, {"position-rt-Y", "20"}, {"position-rt-Y", "0"},
-            {"position-rt-X", "450"}};
+        String[][] warmUp = {
+            {"position-rt-X", "455"}, {"position-rt-Y", "20"}, {"position-rt-Y", "0"}, {"position-rt-X", "450"}
+        };
         List<String> warm = new ArrayList<>();
         for (String[] c : warmUp) {
             window.textBox(c[0]).selectAll().enterText(c[1]);
             waitFor("the reach of " + c[0] + " = " + c[1] + " is shown", () -> tab.showsLiveAnswerOfFields());
-            warm.add(String.format(Locale.ROOT, "%.0f ms (CPU %.0f ms)",
+            warm.add(String.format(
+                    Locale.ROOT,
+                    "%.0f ms (CPU %.0f ms)",
                     GuiActionRunner.execute(() -> last(tab.viewLatenciesMs(), 0)),
                     GuiActionRunner.execute(() -> last(tab.cpuMs(), 0))));
         }
-        String[][] changes = {{"position-rt-X", "460"}, {"position-rt-X", "700"}, {"position-rt-Y", "150"},
-            {"position-rt-Z", "300"}, {"position-rt-RZ", "20"}, {"position-tp-Y", "-40"}, {"position-rt-X", "450"},
-            {"position-rt-Y", "0"}, {"position-rt-Z", "350"}, {"position-rt-RZ", "0"}};
+        String[][] changes = {
+            {"position-rt-X", "460"},
+            {"position-rt-X", "700"},
+            {"position-rt-Y", "150"},
+            {"position-rt-Z", "300"},
+            {"position-rt-RZ", "20"},
+            {"position-tp-Y", "-40"},
+            {"position-rt-X", "450"},
+            {"position-rt-Y", "0"},
+            {"position-rt-Z", "350"},
+            {"position-rt-RZ", "0"}
+        };
         List<Double> view = new ArrayList<>();
         List<Double> plot = new ArrayList<>();
         List<Double> cpu = new ArrayList<>();
@@ -104,16 +117,25 @@ class LiveReachGuiTest extends WindowGuiTest {
             waitFor("the reach of " + c[0] + " = " + c[1] + " is shown", () -> tab.showsLiveAnswerOfFields());
             double v = GuiActionRunner.execute(() -> last(tab.viewLatenciesMs(), views));
             double u = GuiActionRunner.execute(() -> last(tab.cpuMs(), views));
-            double[] split = GuiActionRunner.execute(() -> tab.splitsMs().get(tab.splitsMs().size() - 1));
+            double[] split = GuiActionRunner.execute(
+                    () -> tab.splitsMs().get(tab.splitsMs().size() - 1));
             splits.add(split);
             waitFor("its plot is drawn", () -> tab.plotLatenciesMs().size() > plots);
             double p = GuiActionRunner.execute(() -> last(tab.plotLatenciesMs(), plots));
             view.add(v);
             plot.add(p);
             cpu.add(u);
-            lines.add(String.format(Locale.ROOT, "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; %s", c[0],
-                    c[1], v, u, p, split(split),
-                    GuiActionRunner.execute(() -> window.label("position-reach").target().getText())));
+            lines.add(String.format(
+                    Locale.ROOT,
+                    "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; %s",
+                    c[0],
+                    c[1],
+                    v,
+                    u,
+                    p,
+                    split(split),
+                    GuiActionRunner.execute(
+                            () -> window.label("position-reach").target().getText())));
         }
         settle();
         watchdog.pause();
@@ -121,22 +143,39 @@ class LiveReachGuiTest extends WindowGuiTest {
         // an event that waited for the X toolkit's lock (held by the toolkit's thread while it talks to
         // a starved Xvfb) with little CPU of its own waited for the X server, which the watchdog does
         // not charge either when it sees it as a wait on the socket
-        List<EventThreadWatchdog.Slow> over = slow.stream().filter(e -> e.isChargedOver(THRESHOLD_MS))
-                .filter(e -> e.cpuMs() > THRESHOLD_MS || e.stack().stream().noneMatch(f -> f.contains(
-                        "SunToolkit.awtLock"))).toList();
-        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
+        List<EventThreadWatchdog.Slow> over = slow.stream()
+                .filter(e -> e.isChargedOver(THRESHOLD_MS))
+                .filter(e ->
+                        e.cpuMs() > THRESHOLD_MS || e.stack().stream().noneMatch(f -> f.contains("SunToolkit.awtLock")))
+                .toList();
+        StringBuilder sb = new StringBuilder(String.format(
+                Locale.ROOT,
                 "example 2 on the IRB-140, %d field changes typed: 3D view median %.1f ms, worst %.1f ms"
                         + " (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, worst %.1f ms; worst"
                         + " event-thread task %.1f ms (%s); load average before %.2f on %d cores%n",
-                changes.length, median(view), max(view), median(cpu), max(cpu), median(plot), max(plot),
-                watchdog.worstMs(), watchdog.worstEvent(), load, cores));
+                changes.length,
+                median(view),
+                max(view),
+                median(cpu),
+                max(cpu),
+                median(plot),
+                max(plot),
+                watchdog.worstMs(),
+                watchdog.worstEvent(),
+                load,
+                cores));
         double[] medians = new double[PositionTab.SPLITS.size()];
         for (int i = 0; i < medians.length; i++) {
             int k = i;
             medians[i] = median(splits.stream().map(x -> x[k]).toList());
         }
-        sb.append("  where the 3D view's time went, medians: ").append(split(medians)).append('\n');
-        sb.append("  the first ").append(warmUp.length).append(" changes, not judged: ").append(String.join(", ", warm))
+        sb.append("  where the 3D view's time went, medians: ")
+                .append(split(medians))
+                .append('\n');
+        sb.append("  the first ")
+                .append(warmUp.length)
+                .append(" changes, not judged: ")
+                .append(String.join(", ", warm))
                 .append('\n');
         lines.forEach(l -> sb.append(l).append('\n'));
         sb.append("  ").append(watchdog.threadsSinceRecord()).append('\n');
@@ -162,14 +201,16 @@ class LiveReachGuiTest extends WindowGuiTest {
         window.textBox("robot-spindle").selectAll().enterText("0,0,150");
         window.textBox("robot-tool-length").selectAll().enterText("50");
         window.label("robot-tool-length-message").requireText(" ");
-        var robot = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model().job().robot().orElseThrow());
+        var robot = GuiActionRunner.execute(
+                () -> ((MainWindow) window.target()).model().job().robot().orElseThrow());
         assertEquals(150, robot.spindle().orElseThrow().zMm());
         assertEquals(50, robot.toolLengthMm().getAsDouble());
 
         window.tabbedPane("tabs").selectTab("Position");
         PositionTab tab = position();
         waitFor("the reach with the tool is shown", () -> tab.showsLiveAnswerOfFields());
-        CellScene.ToolShape tool = GuiActionRunner.execute(() -> tab.scene().tool().orElseThrow());
+        CellScene.ToolShape tool =
+                GuiActionRunner.execute(() -> tab.scene().tool().orElseThrow());
         assertEquals(200, tool.lengthMm(), 1e-6);
         assertEquals(50, tool.cutterLengthMm(), 1e-6);
         assertTrue(tool.diameterMm() > 0, "the STEP-NC tool's diameter: " + tool.diameterMm());
@@ -190,7 +231,8 @@ class LiveReachGuiTest extends WindowGuiTest {
     private static String split(double[] ms) {
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < ms.length; i++) {
-            sb.append(i == 0 ? "" : ", ").append(PositionTab.SPLITS.get(i))
+            sb.append(i == 0 ? "" : ", ")
+                    .append(PositionTab.SPLITS.get(i))
                     .append(String.format(Locale.ROOT, " %.1f", ms[i]));
         }
         return sb.toString();
@@ -216,8 +258,8 @@ class LiveReachGuiTest extends WindowGuiTest {
         System.out.print(text);
         try {
             Files.createDirectories(REPORT.getParent());
-            Files.writeString(REPORT, text, java.nio.file.StandardOpenOption.CREATE,
-                    java.nio.file.StandardOpenOption.APPEND);
+            Files.writeString(
+                    REPORT, text, java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -225,18 +267,20 @@ class LiveReachGuiTest extends WindowGuiTest {
 
     /** For looking at after the build: target/screenshots/. */
     private void shoot(String name) {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         try {
             Files.createDirectories(Path.of("target", "screenshots"));
-            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+            javax.imageio.ImageIO.write(
+                    img, "png", Path.of("target", "screenshots", name).toFile());
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
     }
 
     private void openJob(String file) {
-        GuiActionRunner.execute(() -> ((MainWindow) window.target()).openJob(Path.of(file).toAbsolutePath()));
+        GuiActionRunner.execute(
+                () -> ((MainWindow) window.target()).openJob(Path.of(file).toAbsolutePath()));
     }
 
     private void settle() {
@@ -246,21 +290,27 @@ class LiveReachGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, Supplier<Boolean> test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::get);
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::get);
+                    }
+                },
+                Timeout.timeout(60_000));
     }
 
     private void waitUntilNoTaskRuns() {
-        waitFor("no task is running", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JProgressBar.class, false) {
-            @Override
-            protected boolean isMatching(javax.swing.JProgressBar b) {
-                return b.isShowing();
-            }
-        }).isEmpty());
+        waitFor(
+                "no task is running",
+                () -> window.robot()
+                        .finder()
+                        .findAll(new GenericTypeMatcher<>(javax.swing.JProgressBar.class, false) {
+                            @Override
+                            protected boolean isMatching(javax.swing.JProgressBar b) {
+                                return b.isShowing();
+                            }
+                        })
+                        .isEmpty());
     }
 }

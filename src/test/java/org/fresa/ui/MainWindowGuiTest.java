@@ -33,16 +33,27 @@ class MainWindowGuiTest extends WindowGuiTest {
             window.tabbedPane("tabs").requireSelectedTab(org.assertj.swing.data.Index.atIndex(i));
             assertTrue(window.tabbedPane("tabs").target().getComponentAt(i).isShowing(), TABS[i]);
         }
-        int mnemonic = GuiActionRunner.execute(() -> window.tabbedPane("tabs").target().getMnemonicAt(3));
+        int mnemonic =
+                GuiActionRunner.execute(() -> window.tabbedPane("tabs").target().getMnemonicAt(3));
         assertEquals(java.awt.event.KeyEvent.VK_4, mnemonic);
     }
 
     @Test
     void aJobCanBeSavedAndOpenedAgain() throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        Job job = Job.empty(JobTask.POCKET).withPocket(new PocketSettings(
-                Path.of("samples/pocket/cavity01.dad").toAbsolutePath(), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
-                org.fresa.job.PocketPost.LINUXCNC));
+        Job job = Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/cavity01.dad").toAbsolutePath(),
+                        6,
+                        0.62,
+                        0.13,
+                        30,
+                        27,
+                        3,
+                        3200,
+                        290,
+                        100,
+                        org.fresa.job.PocketPost.LINUXCNC));
         GuiActionRunner.execute(() -> model.setJob(job));
 
         window.menuItemWithPath("File", "Save as...").click();
@@ -70,8 +81,13 @@ class MainWindowGuiTest extends WindowGuiTest {
 
         // the job saved by the GUI runs unchanged on the command line
         java.io.StringWriter err = new java.io.StringWriter();
-        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
-                new java.io.PrintWriter(err, true), "run", file.toString(), "--out", dir.resolve("out").toString());
+        int status = org.fresa.app.cli.FresaCommand.execute(
+                new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true),
+                "run",
+                file.toString(),
+                "--out",
+                dir.resolve("out").toString());
         assertEquals(0, status, err.toString());
         assertTrue(Files.size(dir.resolve("out").resolve("pocket.ngc")) > 1000);
     }

@@ -16,9 +16,20 @@ class NewJobDefaultsTest {
     void aNewPocketTabShowsThePocketDefaults() {
         PocketViewModel m = new PocketViewModel();
         PocketSettings d = PocketSettings.DEFAULTS;
-        double[] v = {d.toolDiameterMm(), d.cutFraction(), d.finishFraction(), d.zTopMm(), d.zBottomMm(),
-            d.maxDepthPerPassMm(), d.spindleRpm(), d.feedMmPerMin(), d.finishFeedMmPerMin()};
-        assertAll(() -> assertEquals(d.post(), m.post()), () -> assertEquals(d.direction(), m.direction()),
+        double[] v = {
+            d.toolDiameterMm(),
+            d.cutFraction(),
+            d.finishFraction(),
+            d.zTopMm(),
+            d.zBottomMm(),
+            d.maxDepthPerPassMm(),
+            d.spindleRpm(),
+            d.feedMmPerMin(),
+            d.finishFeedMmPerMin()
+        };
+        assertAll(
+                () -> assertEquals(d.post(), m.post()),
+                () -> assertEquals(d.direction(), m.direction()),
                 () -> assertEquals(d, m.settings()),
                 () -> {
                     for (int i = 0; i < v.length; i++) {
@@ -31,11 +42,13 @@ class NewJobDefaultsTest {
     void aNewCuttingTabShowsTheCuttingDefaults() {
         CuttingViewModel m = new CuttingViewModel();
         CuttingSettings d = CuttingSettings.DEFAULTS;
-        assertAll(() -> assertEquals(ExactDecimal.of(d.kerfMm()), m.kerfMm()),
+        assertAll(
+                () -> assertEquals(ExactDecimal.of(d.kerfMm()), m.kerfMm()),
                 () -> assertEquals(d.process(), m.process()),
                 () -> assertEquals(ExactDecimal.of(d.leadInMm()), m.leadInMm()),
                 () -> assertEquals(ExactDecimal.of(d.leadOutMm()), m.leadOutMm()),
-                () -> assertEquals(d.lead(), m.lead()), () -> assertEquals(d.post(), m.post()),
+                () -> assertEquals(d.lead(), m.lead()),
+                () -> assertEquals(d.post(), m.post()),
                 () -> assertEquals(d.compensation(), m.compensation()),
                 () -> assertEquals(d.outerDirection(), m.outerDirection()),
                 () -> assertEquals(d.holeDirection(), m.holeDirection()),
@@ -48,12 +61,15 @@ class NewJobDefaultsTest {
     void aNewGradingTabShowsTheGradingDefaults() {
         GradingViewModel m = new GradingViewModel();
         GradingSettings d = GradingSettings.DEFAULTS;
-        assertAll(() -> assertEquals(d.system(), m.system()),
+        assertAll(
+                () -> assertEquals(d.system(), m.system()),
                 () -> assertEquals(ExactDecimal.of(d.baseSize()), m.baseSize()),
-                () -> assertEquals(d.sizes(), m.sizes()), () -> assertEquals(d.halfSizes(), m.halfSizes()),
+                () -> assertEquals(d.sizes(), m.sizes()),
+                () -> assertEquals(d.halfSizes(), m.halfSizes()),
                 () -> assertEquals(ExactDecimal.of(d.shrinkage()), m.shrinkage()),
                 () -> assertEquals(d.shrinkageMode(), m.shrinkageMode()),
-                () -> assertEquals("", m.lengthStep()), () -> assertEquals("", m.widthStep()),
+                () -> assertEquals("", m.lengthStep()),
+                () -> assertEquals("", m.widthStep()),
                 () -> assertEquals("", m.origin()));
     }
 }

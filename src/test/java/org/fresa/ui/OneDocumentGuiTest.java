@@ -32,10 +32,14 @@ class OneDocumentGuiTest extends WindowGuiTest {
     // the robot presses modifier keys given by the old masks
     @SuppressWarnings("deprecation")
     private static final int CTRL = java.awt.event.InputEvent.CTRL_MASK;
+
     @SuppressWarnings("deprecation")
     private static final int SHIFT = java.awt.event.InputEvent.SHIFT_MASK;
-    private static final Path EXAMPLE2 = Path.of("samples/jobs/example2-irb140.xml").toAbsolutePath();
-    private static final Path CAVITY01 = Path.of("samples/jobs/pocket-cavity01.xml").toAbsolutePath();
+
+    private static final Path EXAMPLE2 =
+            Path.of("samples/jobs/example2-irb140.xml").toAbsolutePath();
+    private static final Path CAVITY01 =
+            Path.of("samples/jobs/pocket-cavity01.xml").toAbsolutePath();
 
     @Test
     void aGradeRefusedInAnotherTabLeavesTheSavedJobRunnableWithItsTask() throws Exception {
@@ -45,19 +49,23 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.button("grading-open").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
         fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
-        fc.selectFile(Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
+        fc.selectFile(
+                Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
         fc.approve();
         JTextField sizes = (JTextField) textFieldShowing("36-44").target();
         GuiActionRunner.execute(() -> sizes.setText("44-36"));
         // the refused range is marked and said beside Grade, which cannot run on it
         window.button("grading-grade").requireDisabled();
-        assertEquals("Sizes: expected sizes A-B with A <= B, found '44-36'.",
+        assertEquals(
+                "Sizes: expected sizes A-B with A <= B, found '44-36'.",
                 window.label("grading-status").target().getToolTipText());
 
         Path saved = saveAs("refused.xml");
         Job read = JobXml.read(saved);
         assertEquals(JobTask.ROBOT, read.task());
-        assertFalse(read.grading().map(g -> g.sizes().equals("44-36")).orElse(false), read.grading().toString());
+        assertFalse(
+                read.grading().map(g -> g.sizes().equals("44-36")).orElse(false),
+                read.grading().toString());
         assertEquals(before.robot(), read.robot());
         assertEquals(0, run(saved, dir.resolve("out")));
         assertTrue(Files.exists(dir.resolve("out").resolve("program.mod")));
@@ -66,8 +74,13 @@ class OneDocumentGuiTest extends WindowGuiTest {
     @Test
     void openReplacesEveryTabsDocumentAndDropsTheOldResults() {
         open(EXAMPLE2);
-        waitFor("the STEP-NC tab shows example 2", () -> treeText().contains("example2")
-                || window.label(labelMatching("workingsteps")).target().getText().startsWith("example2.stp"));
+        waitFor(
+                "the STEP-NC tab shows example 2",
+                () -> treeText().contains("example2")
+                        || window.label(labelMatching("workingsteps"))
+                                .target()
+                                .getText()
+                                .startsWith("example2.stp"));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.textBox("pocket-contour").setText("nothing-here.dad");
 
@@ -77,14 +90,19 @@ class OneDocumentGuiTest extends WindowGuiTest {
         fc.selectFile(CAVITY01.toFile());
         fc.approve();
         // the contour typed went into the job, so Open first asks whether to discard it
-        if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JOptionPane.class, true) {
-                    @Override
-                    protected boolean isMatching(javax.swing.JOptionPane p) {
-                        return true;
-                    }
-                }).isEmpty() || ((MainWindow) window.target()).getTitle().equals("Fresa - pocket-cavity01.xml"),
-                10_000) && !((MainWindow) window.target()).getTitle().equals("Fresa - pocket-cavity01.xml")) {
+        if (waitQuietly(
+                        () -> !window.robot()
+                                        .finder()
+                                        .findAll(new GenericTypeMatcher<>(javax.swing.JOptionPane.class, true) {
+                                            @Override
+                                            protected boolean isMatching(javax.swing.JOptionPane p) {
+                                                return true;
+                                            }
+                                        })
+                                        .isEmpty()
+                                || ((MainWindow) window.target()).getTitle().equals("Fresa - pocket-cavity01.xml"),
+                        10_000)
+                && !((MainWindow) window.target()).getTitle().equals("Fresa - pocket-cavity01.xml")) {
             answer(p -> p.noButton());
         }
         waitUntilNoTaskRuns();
@@ -93,24 +111,34 @@ class OneDocumentGuiTest extends WindowGuiTest {
         assertFalse(treeText().contains("example2"), treeText());
         assertFalse(allText().contains("example2"), "a tab still names the old part");
         window.tabbedPane("tabs").selectTab("Pocket");
-        assertTrue(window.textBox("pocket-contour").text().endsWith("cavity01.dad"), window.textBox("pocket-contour")
-                .text());
+        assertTrue(
+                window.textBox("pocket-contour").text().endsWith("cavity01.dad"),
+                window.textBox("pocket-contour").text());
         assertEquals("7m-compat", window.comboBox("pocket-post").selectedItem());
         window.tabbedPane("tabs").selectTab("Output");
-        assertTrue(window.label("output-status").text().startsWith("No programs"), window.label("output-status").text());
+        assertTrue(
+                window.label("output-status").text().startsWith("No programs"),
+                window.label("output-status").text());
     }
 
     @Test
     void newEmptiesEveryTabAndAsksBeforeDiscardingChanges() {
         open(CAVITY01);
         window.tabbedPane("tabs").selectTab("Position");
-        waitFor("the Position tab's fields are shown", () -> window.robot().finder().findAll(
-                new GenericTypeMatcher<javax.swing.text.JTextComponent>(javax.swing.text.JTextComponent.class, true) {
-                    @Override
-                    protected boolean isMatching(javax.swing.text.JTextComponent c) {
-                        return "position-rt-X".equals(c.getName());
-                    }
-                }).size() == 1);
+        waitFor(
+                "the Position tab's fields are shown",
+                () -> window.robot()
+                                .finder()
+                                .findAll(
+                                        new GenericTypeMatcher<javax.swing.text.JTextComponent>(
+                                                javax.swing.text.JTextComponent.class, true) {
+                                            @Override
+                                            protected boolean isMatching(javax.swing.text.JTextComponent c) {
+                                                return "position-rt-X".equals(c.getName());
+                                            }
+                                        })
+                                .size()
+                        == 1);
         window.textBox("position-rt-X").deleteText().enterText("123");
         window.requireTitle("Fresa - pocket-cavity01.xml *");
 
@@ -150,7 +178,9 @@ class OneDocumentGuiTest extends WindowGuiTest {
     @Test
     void theOutputTabShowsTheLastRunsProgramsOfThisJobOnly() {
         window.tabbedPane("tabs").selectTab("Output");
-        assertTrue(window.label("output-status").text().startsWith("No programs"), window.label("output-status").text());
+        assertTrue(
+                window.label("output-status").text().startsWith("No programs"),
+                window.label("output-status").text());
         open(EXAMPLE2);
         menu("Job", "Run job into folder...").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
@@ -160,12 +190,17 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.optionPane(Timeout.timeout(180_000)).okButton().click();
         window.tabbedPane("tabs").selectTab("Output");
         window.radioButton("output-preview-rapid").click();
-        waitFor("the run's RAPID program is shown", () -> window.textBox("output-text").target().getText()
-                .contains("MoveL"));
-        assertTrue(window.label("output-status").text().contains("irb140"), window.label("output-status").text());
+        waitFor(
+                "the run's RAPID program is shown",
+                () -> window.textBox("output-text").target().getText().contains("MoveL"));
+        assertTrue(
+                window.label("output-status").text().contains("irb140"),
+                window.label("output-status").text());
 
         open(CAVITY01);
-        assertTrue(window.label("output-status").text().startsWith("No programs"), window.label("output-status").text());
+        assertTrue(
+                window.label("output-status").text().startsWith("No programs"),
+                window.label("output-status").text());
         assertEquals("", window.textBox("output-text").text());
     }
 
@@ -175,13 +210,20 @@ class OneDocumentGuiTest extends WindowGuiTest {
         Job opened = model().job();
         window.tabbedPane("tabs").selectTab("Position");
         // on a loaded machine the tab's fields may be shown a moment after the tab is selected
-        waitFor("the Position tab's fields are shown", () -> window.robot().finder().findAll(
-                new GenericTypeMatcher<javax.swing.text.JTextComponent>(javax.swing.text.JTextComponent.class, true) {
-                    @Override
-                    protected boolean isMatching(javax.swing.text.JTextComponent c) {
-                        return "position-rt-X".equals(c.getName());
-                    }
-                }).size() == 1);
+        waitFor(
+                "the Position tab's fields are shown",
+                () -> window.robot()
+                                .finder()
+                                .findAll(
+                                        new GenericTypeMatcher<javax.swing.text.JTextComponent>(
+                                                javax.swing.text.JTextComponent.class, true) {
+                                            @Override
+                                            protected boolean isMatching(javax.swing.text.JTextComponent c) {
+                                                return "position-rt-X".equals(c.getName());
+                                            }
+                                        })
+                                .size()
+                        == 1);
         window.textBox("position-rt-X").setText("300");
         Job edited = model().job();
         assertNotEquals(opened, edited);
@@ -215,27 +257,38 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.button("grading-open").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
         fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
-        fc.selectFile(Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
+        fc.selectFile(
+                Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
         fc.approve();
         waitUntilNoTaskRuns();
         window.button("grading-grade").click();
-        waitFor("the accepted grading is the job's", () -> model().job().grading().isPresent());
+        waitFor(
+                "the accepted grading is the job's",
+                () -> model().job().grading().isPresent());
         assertEquals(java.util.List.of(JobTask.ROBOT), model().job().runs());
 
         window.menuItem("run-stepnc").click();
         window.menuItem("run-grade").click();
         window.menuItem("run-robot").click();
-        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.GRADE), model().job().runs());
+        assertEquals(
+                java.util.List.of(JobTask.STEPNC, JobTask.GRADE), model().job().runs());
         Path saved = saveAs("several.xml");
-        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.GRADE), JobXml.read(saved).runs());
+        assertEquals(
+                java.util.List.of(JobTask.STEPNC, JobTask.GRADE),
+                JobXml.read(saved).runs());
 
         Path out = dir.resolve("out");
         run(saved, out);
         try (java.util.stream.Stream<Path> s = Files.list(out)) {
-            assertEquals(java.util.List.of("grade", "stepnc"), s.filter(Files::isDirectory)
-                    .map(p -> p.getFileName().toString()).sorted().toList());
+            assertEquals(
+                    java.util.List.of("grade", "stepnc"),
+                    s.filter(Files::isDirectory)
+                            .map(p -> p.getFileName().toString())
+                            .sorted()
+                            .toList());
         }
-        assertTrue(Files.exists(out.resolve("stepnc/summary.json")) || Files.list(out.resolve("stepnc")).count() > 0);
+        assertTrue(Files.exists(out.resolve("stepnc/summary.json"))
+                || Files.list(out.resolve("stepnc")).count() > 0);
         assertFalse(Files.exists(out.resolve("robot")));
     }
 
@@ -276,8 +329,10 @@ class OneDocumentGuiTest extends WindowGuiTest {
                 String n = folder.relativize(f).toString();
                 if (!n.endsWith(".png") && !n.startsWith(".fresa")) {
                     // the time a step took differs from run to run
-                    out.put(n, Files.readString(f, java.nio.charset.StandardCharsets.ISO_8859_1)
-                            .replaceAll("\"[a-z_]*_ms\": [0-9.Ee+-]+", "\"ms\""));
+                    out.put(
+                            n,
+                            Files.readString(f, java.nio.charset.StandardCharsets.ISO_8859_1)
+                                    .replaceAll("\"[a-z_]*_ms\": [0-9.Ee+-]+", "\"ms\""));
                 }
             }
         }
@@ -288,15 +343,19 @@ class OneDocumentGuiTest extends WindowGuiTest {
     void thePocketTabMarksABadFieldInThePlannersWordsAndAFailedComputeSaysFailed() {
         open(CAVITY01);
         window.tabbedPane("tabs").selectTab("Pocket");
-        java.util.List<String> posts = java.util.Arrays.asList(window.comboBox("pocket-post").contents());
-        assertTrue(posts.containsAll(java.util.List.of("7m-compat", "7m", "linuxcnc", "iso", "fanuc", "840d")),
+        java.util.List<String> posts =
+                java.util.Arrays.asList(window.comboBox("pocket-post").contents());
+        assertTrue(
+                posts.containsAll(java.util.List.of("7m-compat", "7m", "linuxcnc", "iso", "fanuc", "840d")),
                 posts.toString());
         window.textBox("pocket-tool").setText("6,5");
         window.button("pocket-compute").requireDisabled();
         String why = window.label("pocket-status").target().getToolTipText();
         shoot("pocket-bad-field.png");
         assertEquals("Tool diameter (mm): '6,5' is not a number (decimals take a point: 6.5).", why);
-        assertEquals(new java.awt.Color(255, 220, 220), window.textBox("pocket-tool").background().target());
+        assertEquals(
+                new java.awt.Color(255, 220, 220),
+                window.textBox("pocket-tool").background().target());
         window.textBox("pocket-tool").setText("6");
         window.button("pocket-compute").requireEnabled();
 
@@ -330,11 +389,12 @@ class OneDocumentGuiTest extends WindowGuiTest {
     }
 
     private void shoot(String name) {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         try {
             Files.createDirectories(Path.of("target", "screenshots"));
-            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+            javax.imageio.ImageIO.write(
+                    img, "png", Path.of("target", "screenshots", name).toFile());
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
@@ -366,8 +426,10 @@ class OneDocumentGuiTest extends WindowGuiTest {
      * Presses a button of the open question or message, again when Xvfb lost the click and the
      * pane still shows (the dialog then stays open with its default button focused).
      */
-    private void answer(java.util.function.Function<org.assertj.swing.fixture.JOptionPaneFixture,
-            org.assertj.swing.fixture.JButtonFixture> button) {
+    private void answer(
+            java.util.function.Function<
+                            org.assertj.swing.fixture.JOptionPaneFixture, org.assertj.swing.fixture.JButtonFixture>
+                    button) {
         org.assertj.swing.fixture.JOptionPaneFixture pane = window.optionPane(Timeout.timeout(20_000));
         for (int i = 0; i < 5 && GuiActionRunner.execute(() -> pane.target().isShowing()); i++) {
             org.assertj.swing.fixture.JButtonFixture b = button.apply(pane);
@@ -389,13 +451,17 @@ class OneDocumentGuiTest extends WindowGuiTest {
             window.menuItemWithPath("File").click();
             window.menuItemWithPath("File", "Recent jobs").click();
             window.menuItem("recent-" + n).click();
-            if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
-                    javax.swing.JOptionPane.class, true) {
-                @Override
-                protected boolean isMatching(javax.swing.JOptionPane p) {
-                    return true;
-                }
-            }).isEmpty(), 5_000)) {
+            if (waitQuietly(
+                    () -> !window.robot()
+                            .finder()
+                            .findAll(new GenericTypeMatcher<>(javax.swing.JOptionPane.class, true) {
+                                @Override
+                                protected boolean isMatching(javax.swing.JOptionPane p) {
+                                    return true;
+                                }
+                            })
+                            .isEmpty(),
+                    5_000)) {
                 return;
             }
         }
@@ -405,13 +471,17 @@ class OneDocumentGuiTest extends WindowGuiTest {
     private void askFromMenu(String... path) {
         for (int i = 0; i < 3; i++) {
             menu(path).click();
-            if (waitQuietly(() -> !window.robot().finder().findAll(new GenericTypeMatcher<>(
-                    javax.swing.JOptionPane.class, true) {
-                @Override
-                protected boolean isMatching(javax.swing.JOptionPane p) {
-                    return true;
-                }
-            }).isEmpty(), 5_000)) {
+            if (waitQuietly(
+                    () -> !window.robot()
+                            .finder()
+                            .findAll(new GenericTypeMatcher<>(javax.swing.JOptionPane.class, true) {
+                                @Override
+                                protected boolean isMatching(javax.swing.JOptionPane p) {
+                                    return true;
+                                }
+                            })
+                            .isEmpty(),
+                    5_000)) {
                 return;
             }
         }
@@ -441,8 +511,13 @@ class OneDocumentGuiTest extends WindowGuiTest {
 
     static int run(Path job, Path out) {
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), "run",
-                job.toString(), "--out", out.toString());
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter(), true),
+                new PrintWriter(err, true),
+                "run",
+                job.toString(),
+                "--out",
+                out.toString());
         assertEquals(0, status, err.toString());
         return status;
     }
@@ -467,8 +542,8 @@ class OneDocumentGuiTest extends WindowGuiTest {
 
     private String treeText() {
         return GuiActionRunner.execute(() -> {
-            javax.swing.JTree t = window.robot().finder().findByName(window.target(), "stepnc-tree",
-                    javax.swing.JTree.class, false);
+            javax.swing.JTree t =
+                    window.robot().finder().findByName(window.target(), "stepnc-tree", javax.swing.JTree.class, false);
             return String.valueOf(t.getModel().getRoot());
         });
     }
@@ -498,21 +573,27 @@ class OneDocumentGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, BooleanSupplier test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::getAsBoolean);
-            }
-        }, Timeout.timeout(120_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::getAsBoolean);
+                    }
+                },
+                Timeout.timeout(120_000));
     }
 
     private void waitUntilNoTaskRuns() {
-        waitFor("no task is running", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JProgressBar.class, false) {
-            @Override
-            protected boolean isMatching(javax.swing.JProgressBar b) {
-                return b.isShowing();
-            }
-        }).isEmpty());
+        waitFor(
+                "no task is running",
+                () -> window.robot()
+                        .finder()
+                        .findAll(new GenericTypeMatcher<>(javax.swing.JProgressBar.class, false) {
+                            @Override
+                            protected boolean isMatching(javax.swing.JProgressBar b) {
+                                return b.isShowing();
+                            }
+                        })
+                        .isEmpty());
     }
 }

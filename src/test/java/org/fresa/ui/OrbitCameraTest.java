@@ -23,7 +23,9 @@ class OrbitCameraTest {
     @Test
     void theCentreOfWhatWasFittedIsTheMiddleOfTheView() {
         double[] p = fitted().project(new Vec3(100, 100, 100), 400, 300);
-        assertAll(() -> assertEquals(200, p[0], EPS), () -> assertEquals(150, p[1], EPS),
+        assertAll(
+                () -> assertEquals(200, p[0], EPS),
+                () -> assertEquals(150, p[1], EPS),
                 () -> assertEquals(0, p[2], EPS));
     }
 
@@ -44,8 +46,11 @@ class OrbitCameraTest {
         double s = c.scale(400, 300);
         double[] y = c.project(new Vec3(100, 200, 100), 400, 300);
         double[] x = c.project(new Vec3(200, 100, 100), 400, 300);
-        assertAll(() -> assertEquals(200 + 100 * s, y[0], EPS), () -> assertEquals(150, y[1], EPS),
-                () -> assertEquals(200, x[0], EPS), () -> assertEquals(100, x[2], EPS));
+        assertAll(
+                () -> assertEquals(200 + 100 * s, y[0], EPS),
+                () -> assertEquals(150, y[1], EPS),
+                () -> assertEquals(200, x[0], EPS),
+                () -> assertEquals(100, x[2], EPS));
         assertEquals(300 / (2.2 * Math.sqrt(3) * 100), s, EPS);
     }
 
@@ -54,10 +59,12 @@ class OrbitCameraTest {
         OrbitCamera c = fitted();
         c.rotate(30, 500);
         c.zoomBy(1000);
-        assertAll(() -> assertEquals(OrbitCamera.MAX_ELEVATION_DEG, c.elevationDeg()),
+        assertAll(
+                () -> assertEquals(OrbitCamera.MAX_ELEVATION_DEG, c.elevationDeg()),
                 () -> assertEquals(OrbitCamera.MAX_ZOOM, c.zoom()));
         c.reset();
-        assertAll(() -> assertEquals(OrbitCamera.DEFAULT_AZIMUTH_DEG, c.azimuthDeg()),
+        assertAll(
+                () -> assertEquals(OrbitCamera.DEFAULT_AZIMUTH_DEG, c.azimuthDeg()),
                 () -> assertEquals(OrbitCamera.DEFAULT_ELEVATION_DEG, c.elevationDeg()),
                 () -> assertEquals(1, c.zoom()));
         assertThrows(IllegalArgumentException.class, () -> c.zoomBy(0));

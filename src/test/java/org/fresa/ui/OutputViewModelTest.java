@@ -41,14 +41,20 @@ class OutputViewModelTest {
     @Test
     void motionKeywordsAreFoundForColouring() {
         String text = "  MoveAbsJ j1, v100;\n  MoveL p1, v50;\nPTP {A1 0}\nLIN {X 1}\nMoveLX";
-        List<String> words = OutputViewModel.keywordSpans(text).stream().map(s -> text.substring(s[0], s[1])).toList();
+        List<String> words = OutputViewModel.keywordSpans(text).stream()
+                .map(s -> text.substring(s[0], s[1]))
+                .toList();
         assertEquals(List.of("MoveAbsJ", "MoveL", "PTP", "LIN"), words);
     }
 
     @Test
     void theChosenFormatsOfARunAreWrittenAndPreviewed() throws Exception {
-        RobotTrajectoryService.Solved s = PositionViewModel.compute(Path.of("samples/stepnc/iso14649-11-example1.stp"),
-                "irb140", new Placement(400, -200, 500, 0, 0, 0), new Placement(0, 10, 0, 0, 0, 0), List.of("csv"),
+        RobotTrajectoryService.Solved s = PositionViewModel.compute(
+                Path.of("samples/stepnc/iso14649-11-example1.stp"),
+                "irb140",
+                new Placement(400, -200, 500, 0, 0, 0),
+                new Placement(0, 10, 0, 0, 0, 0),
+                List.of("csv"),
                 ProgressMonitor.NONE);
         RobotRunModel.Run run = new RobotRunModel.Run(s, "example1");
         RobotRunModel shared = new RobotRunModel();

@@ -53,10 +53,17 @@ class PlotPanelGuiTest {
     private PlotPanel plot;
 
     /** A disc of radius 10 filled in the material colour, in a long thin outline: a wide scene. */
-    private static final PlotScene SCENE = PlotScene.empty("disc").with(new PlotScene.Layer("disc",
-            PlotScene.Style.PART, List.of(Arc2.circle(Vec2.of(20, 10), 10, true))))
-            .with(new PlotScene.Layer("strip", PlotScene.Style.OUTLINE, List.of(Segment2.of(0, 0, 200, 0),
-                    Segment2.of(200, 0, 200, 20), Segment2.of(200, 20, 0, 20), Segment2.of(0, 20, 0, 0))));
+    private static final PlotScene SCENE = PlotScene.empty("disc")
+            .with(new PlotScene.Layer("disc", PlotScene.Style.PART, List.of(Arc2.circle(Vec2.of(20, 10), 10, true))))
+            .with(new PlotScene.Layer(
+                    "strip",
+                    PlotScene.Style.OUTLINE,
+                    List.of(
+                            Segment2.of(0, 0, 200, 0),
+                            Segment2.of(200, 0, 200, 20),
+                            Segment2.of(200, 20, 0, 20),
+                            Segment2.of(0, 20, 0, 0))));
+
     private static final Box2 BOUNDS = new Box2(0, 0, 200, 20);
 
     @BeforeAll
@@ -92,12 +99,14 @@ class PlotPanelGuiTest {
 
     private void awaitDrawn() {
         window.robot().waitForIdle();
-        Pause.pause(new Condition("the plot is drawn") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> plot.isDrawn());
-            }
-        }, Timeout.timeout(20_000));
+        Pause.pause(
+                new Condition("the plot is drawn") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(() -> plot.isDrawn());
+                    }
+                },
+                Timeout.timeout(20_000));
         window.robot().waitForIdle();
     }
 
@@ -110,7 +119,8 @@ class PlotPanelGuiTest {
         return GuiActionRunner.execute(() -> {
             XYPlot xy = chartPanel().getChart().getXYPlot();
             Rectangle2D area = chartPanel().getScreenDataArea();
-            return xy.getDomainAxis().getRange().getLength() / area.getWidth()
+            return xy.getDomainAxis().getRange().getLength()
+                    / area.getWidth()
                     / (xy.getRangeAxis().getRange().getLength() / area.getHeight());
         });
     }
@@ -120,8 +130,11 @@ class PlotPanelGuiTest {
             XYPlot xy = chartPanel().getChart().getXYPlot();
             Range x = xy.getDomainAxis().getRange();
             Range y = xy.getRangeAxis().getRange();
-            return x.contains(BOUNDS.minX()) && x.contains(BOUNDS.maxX()) && y.contains(BOUNDS.minY())
-                    && y.contains(BOUNDS.maxY()) && x.getLength() < 2 * BOUNDS.width();
+            return x.contains(BOUNDS.minX())
+                    && x.contains(BOUNDS.maxX())
+                    && y.contains(BOUNDS.minY())
+                    && y.contains(BOUNDS.maxY())
+                    && x.getLength() < 2 * BOUNDS.width();
         });
     }
 
@@ -144,25 +157,22 @@ class PlotPanelGuiTest {
     @Test
     void aDragZoomOverALongFlatBoxKeepsEqualScale() {
         zoomIntoTheDisc();
-        double x = GuiActionRunner.execute(() -> chartPanel().getChart().getXYPlot().getDomainAxis().getRange()
-                .getLength());
-        assertAll(
-                () -> assertTrue(x < 100, "zoomed in: " + x + " mm across"),
-                () -> assertEquals(1, aspect(), 0.01));
+        double x = GuiActionRunner.execute(() ->
+                chartPanel().getChart().getXYPlot().getDomainAxis().getRange().getLength());
+        assertAll(() -> assertTrue(x < 100, "zoomed in: " + x + " mm across"), () -> assertEquals(1, aspect(), 0.01));
     }
 
     @Test
     void autoRangeOfThePlotsMenuFitsTheDrawing() {
         zoomIntoTheDisc();
-        JPopupMenuFixture menu = new JPopupMenuFixture(window.robot(),
-                window.robot().showPopupMenu(plot.chartComponent(), pixel(30, 10)));
+        JPopupMenuFixture menu = new JPopupMenuFixture(
+                window.robot(), window.robot().showPopupMenu(plot.chartComponent(), pixel(30, 10)));
         // the menu speaks the machine's language: its words from JFreeChart's own bundle
         java.util.ResourceBundle words = java.util.ResourceBundle.getBundle("org.jfree.chart.LocalizationBundle");
-        menu.menuItemWithPath(words.getString("Auto_Range"), words.getString("All_Axes")).click();
+        menu.menuItemWithPath(words.getString("Auto_Range"), words.getString("All_Axes"))
+                .click();
         awaitDrawn();
-        assertAll(
-                () -> assertTrue(showsAll(), "the whole drawing in view"),
-                () -> assertEquals(1, aspect(), 0.01));
+        assertAll(() -> assertTrue(showsAll(), "the whole drawing in view"), () -> assertEquals(1, aspect(), 0.01));
     }
 
     @Test
@@ -172,9 +182,7 @@ class PlotPanelGuiTest {
         assertEquals(1, aspect(), 0.01);
         window.resizeTo(new Dimension(1200, 400));
         awaitDrawn();
-        assertAll(
-                () -> assertTrue(showsAll(), "the whole drawing in view"),
-                () -> assertEquals(1, aspect(), 0.01));
+        assertAll(() -> assertTrue(showsAll(), "the whole drawing in view"), () -> assertEquals(1, aspect(), 0.01));
     }
 
     @Test
@@ -192,9 +200,7 @@ class PlotPanelGuiTest {
         zoomIntoTheDisc();
         window.button(JButtonMatcher.withName("fitPlot")).click();
         awaitDrawn();
-        assertAll(
-                () -> assertTrue(showsAll(), "the whole drawing in view"),
-                () -> assertEquals(1, aspect(), 0.01));
+        assertAll(() -> assertTrue(showsAll(), "the whole drawing in view"), () -> assertEquals(1, aspect(), 0.01));
     }
 
     @Test

@@ -46,12 +46,14 @@ class PocketContourEditorGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, String label, java.util.function.Predicate<String> p) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return p.test(text(label));
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return p.test(text(label));
+                    }
+                },
+                Timeout.timeout(60_000));
     }
 
     private static void type(JTableFixture t, int row, PocketContourEditor.Column c, String value) {
@@ -82,35 +84,61 @@ class PocketContourEditorGuiTest extends WindowGuiTest {
         // a decimal comma: the cell is pink, the reason under the table
         type(table, 3, PocketContourEditor.Column.B, "0,0");
         waitFor("the bad cell is explained", "pocket-contour-status", s -> s.contains("decimals take a point"));
-        assertEquals("Element 4, B: '0,0' is not a number (decimals take a point: 0.0).", text("pocket-contour-status"));
+        assertEquals(
+                "Element 4, B: '0,0' is not a number (decimals take a point: 0.0).", text("pocket-contour-status"));
         table.selectCell(TableCell.row(0).column(1));
         assertEquals(new java.awt.Color(255, 220, 220), GuiActionRunner.execute(() -> {
             javax.swing.JTable t = table.target();
             return t.prepareRenderer(t.getCellRenderer(3, 3), 3, 3).getBackground();
         }));
         // the job keeps the last valid value: the line x + y = 0 closed the contour already
-        assertEquals(1, GuiActionRunner.execute(
-                () -> model.job().pocket().orElseThrow().elements().orElseThrow().elements().get(3).b()));
+        assertEquals(
+                1,
+                GuiActionRunner.execute(() -> model.job()
+                        .pocket()
+                        .orElseThrow()
+                        .elements()
+                        .orElseThrow()
+                        .elements()
+                        .get(3)
+                        .b()));
         type(table, 3, PocketContourEditor.Column.B, "0");
         waitFor("the contour closes", "pocket-contour-status", s -> s.equals("4 elements, closed"));
         DadContour typed = PocketContourEditorTest.rectangleWithArc();
-        assertEquals(typed, GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().elements().orElseThrow()));
+        assertEquals(
+                typed,
+                GuiActionRunner.execute(
+                        () -> model.job().pocket().orElseThrow().elements().orElseThrow()));
 
         // one more edit is one undo step: the tab shows the contour from before it
         type(table, 0, PocketContourEditor.Column.D, "31");
-        assertEquals(31, GuiActionRunner.execute(
-                () -> model.job().pocket().orElseThrow().elements().orElseThrow().elements().get(0).d()));
+        assertEquals(
+                31,
+                GuiActionRunner.execute(() -> model.job()
+                        .pocket()
+                        .orElseThrow()
+                        .elements()
+                        .orElseThrow()
+                        .elements()
+                        .get(0)
+                        .d()));
         GuiActionRunner.execute(model::undo);
-        assertEquals(typed, GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().elements().orElseThrow()));
+        assertEquals(
+                typed,
+                GuiActionRunner.execute(
+                        () -> model.job().pocket().orElseThrow().elements().orElseThrow()));
         table.requireCellValue(TableCell.row(0).column(PocketContourEditor.Column.D.ordinal() + 1), "30");
 
         // the program the tab shows is the one the saved job writes
         window.button("pocket-compute").click();
-        waitFor("the pocket is computed", "pocket-status", s -> s.equals("done") || s.contains("refused")
-                || s.contains("cannot"));
+        waitFor(
+                "the pocket is computed",
+                "pocket-status",
+                s -> s.equals("done") || s.contains("refused") || s.contains("cannot"));
         assertEquals("done", text("pocket-status"));
         window.tabbedPane("pocket-texts").selectTab("NC program");
-        String shown = GuiActionRunner.execute(() -> window.textBox("pocket-nc").target().getText());
+        String shown = GuiActionRunner.execute(
+                () -> window.textBox("pocket-nc").target().getText());
         assertTrue(shown.contains("G2") || shown.contains("G02"), "the arc stays an arc:\n" + shown);
         Path job = dir.resolve("typed.xml");
         GuiActionRunner.execute(() -> {
@@ -122,7 +150,9 @@ class PocketContourEditorGuiTest extends WindowGuiTest {
         assertEquals(typed, p.elements().orElseThrow());
         TaskOutcome run = JobRunner.run(read, new OutputFolder(dir.resolve("run")), ProgressMonitor.NONE);
         assertEquals(0, run.exitStatus(), run.problems().toString());
-        Path program = run.files().stream().filter(f -> f.getFileName().toString().endsWith(".ngc")).findFirst()
+        Path program = run.files().stream()
+                .filter(f -> f.getFileName().toString().endsWith(".ngc"))
+                .findFirst()
                 .orElseThrow(() -> new AssertionError(run.files().toString()));
         assertEquals(shown, Files.readString(program));
 
@@ -135,19 +165,28 @@ class PocketContourEditorGuiTest extends WindowGuiTest {
         chooser.approve();
         waitFor("the contour is saved", "pocket-status", s -> s.startsWith("Saved"));
         assertEquals(typed.toDad(), Files.readString(dad, StandardCharsets.ISO_8859_1));
-        assertEquals(List.of(
-                " 4R                     1                     0                     0   1",
-                " 1R                     0                     1                    30   2",
-                " 2C                    20                    15                    25LF 3",
-                " 3R                     0                     1                     0L  4"),
+        assertEquals(
+                List.of(
+                        " 4R                     1                     0                     0   1",
+                        " 1R                     0                     1                    30   2",
+                        " 2C                    20                    15                    25LF 3",
+                        " 3R                     0                     1                     0L  4"),
                 Files.readString(dad).lines().toList());
-        assertEquals(dad, GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().contour()));
-        assertEquals(typed, GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().elements().orElseThrow()));
+        assertEquals(
+                dad,
+                GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().contour()));
+        assertEquals(
+                typed,
+                GuiActionRunner.execute(
+                        () -> model.job().pocket().orElseThrow().elements().orElseThrow()));
 
         table.selectCell(TableCell.row(1).column(1));
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         Files.createDirectories(Path.of("target", "screenshots"));
-        javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", "pocket-contour-editor.png").toFile());
+        javax.imageio.ImageIO.write(
+                img,
+                "png",
+                Path.of("target", "screenshots", "pocket-contour-editor.png").toFile());
     }
 }

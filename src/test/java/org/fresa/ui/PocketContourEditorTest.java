@@ -25,7 +25,8 @@ class PocketContourEditorTest {
 
     static Stream<Path> thesisContours() throws IOException {
         try (Stream<Path> s = Files.list(Path.of("samples/pocket"))) {
-            List<Path> files = s.filter(p -> p.toString().endsWith(".dad")).sorted().toList();
+            List<Path> files =
+                    s.filter(p -> p.toString().endsWith(".dad")).sorted().toList();
             // the 8 contours of the thesis's Appendix B
             assertEquals(8, files.size(), files.toString());
             return files.stream();
@@ -74,9 +75,12 @@ class PocketContourEditorTest {
             }
         }
         if (name.equals("cavity02.dad")) {
-            assertEquals(List.of("1R                 .8852                  .461               68.2000S  2"
-                    + " | 1R                 .8852                  .461                  68.2S  2"), differ);
-            assertEquals(DadReader.read(text, name), DadReader.read(editor.contour().toDad(), name));
+            assertEquals(
+                    List.of("1R                 .8852                  .461               68.2000S  2"
+                            + " | 1R                 .8852                  .461                  68.2S  2"),
+                    differ);
+            assertEquals(
+                    DadReader.read(text, name), DadReader.read(editor.contour().toDad(), name));
         } else {
             assertEquals(List.of(), differ, name);
             assertEquals(text, editor.contour().toDad(), name + ": byte for byte with its CR LF");
@@ -89,7 +93,8 @@ class PocketContourEditorTest {
         editor.load(DadReader.contour(read("examplepart.dad"), "examplepart.dad"));
         DadContour before = editor.contour();
         assertFalse(editor.type(1, Column.D, "5,5"));
-        assertEquals("Element 2, radius: '5,5' is not a number (decimals take a point: 5.5).",
+        assertEquals(
+                "Element 2, radius: '5,5' is not a number (decimals take a point: 5.5).",
                 editor.problem(1, Column.D).orElseThrow());
         assertEquals("5,5", editor.text(1, Column.D));
         assertEquals(before, editor.contour());
@@ -97,19 +102,26 @@ class PocketContourEditorTest {
         assertFalse(editor.type(1, Column.D, "-5"));
         assertEquals("Element 2, radius: radius must be >= 0.", editor.refusal().orElseThrow());
         assertFalse(editor.type(0, Column.SENSE, "convex"));
-        assertEquals("Element 1, sense: a line has no sense, found 'convex'.", editor.problem(0, Column.SENSE).orElseThrow());
+        assertEquals(
+                "Element 1, sense: a line has no sense, found 'convex'.",
+                editor.problem(0, Column.SENSE).orElseThrow());
         assertFalse(editor.type(0, Column.SELECTOR, "X"));
         assertTrue(editor.problem(0, Column.SELECTOR).orElseThrow().startsWith("Element 1, selector: S (the junction"));
         assertFalse(editor.type(3, Column.TYPE, "spline"));
-        assertEquals("Element 4, type: 'spline' is neither line nor arc.", editor.problem(3, Column.TYPE).orElseThrow());
+        assertEquals(
+                "Element 4, type: 'spline' is neither line nor arc.",
+                editor.problem(3, Column.TYPE).orElseThrow());
         assertFalse(editor.type(2, Column.A, "1e7"));
-        assertEquals("Element 3, A: |value| must be at most 1e6 mm, found 1e7.", editor.problem(2, Column.A).orElseThrow());
+        assertEquals(
+                "Element 3, A: |value| must be at most 1e6 mm, found 1e7.",
+                editor.problem(2, Column.A).orElseThrow());
         // typed right, the cell is good again and the value changes
         assertTrue(editor.type(1, Column.D, "5.5"));
         assertEquals("5.5", editor.text(1, Column.D));
         assertEquals(5.5, editor.contour().elements().get(1).d(), 0);
         // the first bad cell is the one reported
-        assertEquals("Element 1, selector: S (the junction with the smaller x), L (the larger x) or blank, found 'X'.",
+        assertEquals(
+                "Element 1, selector: S (the junction with the smaller x), L (the larger x) or blank, found 'X'.",
                 editor.refusal().orElseThrow());
     }
 
@@ -121,7 +133,8 @@ class PocketContourEditorTest {
         assertTrue(editor.valid(), () -> editor.refusal().toString());
         // the right arc moved far away meets neither neighbour
         assertTrue(editor.type(1, Column.B, "500"));
-        assertEquals("Element 2 does not meet element 1: the contour does not close there.",
+        assertEquals(
+                "Element 2 does not meet element 1: the contour does not close there.",
                 editor.refusal().orElseThrow());
         assertEquals(1, editor.refusedRow().orElseThrow());
         assertEquals("The contour does not close", editor.scene().title());
@@ -130,9 +143,14 @@ class PocketContourEditorTest {
 
         // a bow tie (0, 0), (40, 30), (40, 0), (0, 30): its diagonals cross at (20, 15)
         PocketContourEditor bow = new PocketContourEditor();
-        bow.load(new DadContour(List.of(DadElement.line(3, -4, 0), DadElement.line(1, 0, 40),
-                DadElement.line(3, 4, 120), DadElement.line(1, 0, 0))));
-        assertEquals("Element 3 crosses element 1: the contour intersects itself.", bow.refusal().orElseThrow());
+        bow.load(new DadContour(List.of(
+                DadElement.line(3, -4, 0),
+                DadElement.line(1, 0, 40),
+                DadElement.line(3, 4, 120),
+                DadElement.line(1, 0, 0))));
+        assertEquals(
+                "Element 3 crosses element 1: the contour intersects itself.",
+                bow.refusal().orElseThrow());
         assertEquals(2, bow.refusedRow().orElseThrow());
 
         // the left side as x + y = 100 turns the contour round: counter-clockwise, refused
@@ -140,7 +158,9 @@ class PocketContourEditorTest {
         ccw.load(rectangleWithArc());
         assertTrue(ccw.type(3, Column.B, "1"));
         assertTrue(ccw.type(3, Column.D, "100"));
-        assertTrue(ccw.refusal().orElseThrow().startsWith("The contour runs counter-clockwise"), ccw.refusal().toString());
+        assertTrue(
+                ccw.refusal().orElseThrow().startsWith("The contour runs counter-clockwise"),
+                ccw.refusal().toString());
 
         PocketContourEditor one = new PocketContourEditor();
         one.add();
@@ -163,7 +183,8 @@ class PocketContourEditorTest {
         assertFalse(editor.moveUp());
         editor.insert();
         assertEquals(0, editor.selected());
-        assertEquals(PocketContourEditor.NEW_ELEMENT, editor.contour().elements().get(0));
+        assertEquals(
+                PocketContourEditor.NEW_ELEMENT, editor.contour().elements().get(0));
         assertEquals(5, editor.rows());
         assertTrue(editor.delete());
         assertEquals(start, editor.contour());
@@ -186,12 +207,20 @@ class PocketContourEditorTest {
         editor.load(rectangleWithArc());
         editor.select(1);
         var scene = editor.scene();
-        var contour = scene.layers().stream().filter(l -> l.name().equals("contour")).findFirst().orElseThrow();
+        var contour = scene.layers().stream()
+                .filter(l -> l.name().equals("contour"))
+                .findFirst()
+                .orElseThrow();
         assertEquals(4, contour.curves().size());
-        var selected = scene.layers().stream().filter(l -> l.name().equals("selected element")).findFirst().orElseThrow();
+        var selected = scene.layers().stream()
+                .filter(l -> l.name().equals("selected element"))
+                .findFirst()
+                .orElseThrow();
         assertEquals(1, selected.curves().size());
         assertTrue(selected.curves().get(0) instanceof org.fresa.geom.Arc2);
-        assertEquals(List.of("1", "2", "3", "4"), scene.labels().stream().map(l -> l.text()).toList());
+        assertEquals(
+                List.of("1", "2", "3", "4"),
+                scene.labels().stream().map(l -> l.text()).toList());
     }
 
     /**
@@ -199,8 +228,11 @@ class PocketContourEditorTest {
      * about (20, 15) from (40, 30) to (40, 0), the bottom (starting at the larger x), the left side.
      */
     static DadContour rectangleWithArc() {
-        return new DadContour(List.of(DadElement.line(0, 1, 30), DadElement.arc(20, 15, 25, 'L', true),
-                DadElement.line(0, 1, 0).withSelector('L'), DadElement.line(1, 0, 0)));
+        return new DadContour(List.of(
+                DadElement.line(0, 1, 30),
+                DadElement.arc(20, 15, 25, 'L', true),
+                DadElement.line(0, 1, 0).withSelector('L'),
+                DadElement.line(1, 0, 0)));
     }
 
     private static String read(String name) {

@@ -38,28 +38,41 @@ class PocketTabGuiTest extends WindowGuiTest {
     }
 
     private void waitFor(String what, java.util.function.Predicate<String> p) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return p.test(status());
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return p.test(status());
+                    }
+                },
+                Timeout.timeout(60_000));
     }
 
     private void shoot(String name) throws Exception {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         Files.createDirectories(Path.of("target", "screenshots"));
-        javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+        javax.imageio.ImageIO.write(
+                img, "png", Path.of("target", "screenshots", name).toFile());
     }
 
     @Test
     void aPlungeOfACutterNotCuttingAtItsCentreIsShownRefusedAtItsBlockAndCannotBeSaved() throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         // the thesis's cavity 01 opened as a job (samples/pocket/jobs.csv), on the thesis's 7M post
-        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET).withPocket(new PocketSettings(
-                Path.of("samples/pocket/cavity01.dad").toAbsolutePath(), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100,
-                org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT))));
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/cavity01.dad").toAbsolutePath(),
+                        6,
+                        0.62,
+                        0.13,
+                        30,
+                        27,
+                        3,
+                        3200,
+                        290,
+                        100,
+                        org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.ENTRY).requireSelection("auto");
         window.textBox(PocketViewModel.ENTRY_ANGLE).requireText("3");
@@ -69,12 +82,17 @@ class PocketTabGuiTest extends WindowGuiTest {
         window.textBox(PocketViewModel.ENTRY_ANGLE).deleteText().enterText("0,2");
         waitFor("the bad angle is explained", s -> s.contains("Entry angle (deg)"));
         assertTrue(status().contains("decimals take a point"), status());
-        assertEquals(new java.awt.Color(255, 220, 220), GuiActionRunner.execute(
-                () -> window.textBox(PocketViewModel.ENTRY_ANGLE).target().getBackground()));
-        assertTrue(GuiActionRunner.execute(() -> window.textBox(PocketViewModel.ENTRY_ANGLE).target().getToolTipText())
+        assertEquals(
+                new java.awt.Color(255, 220, 220),
+                GuiActionRunner.execute(() ->
+                        window.textBox(PocketViewModel.ENTRY_ANGLE).target().getBackground()));
+        assertTrue(GuiActionRunner.execute(() ->
+                        window.textBox(PocketViewModel.ENTRY_ANGLE).target().getToolTipText())
                 .contains("not a number"));
         window.button("pocket-compute").requireDisabled();
-        assertEquals(3, GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().entryAngleDeg()));
+        assertEquals(
+                3,
+                GuiActionRunner.execute(() -> model.job().pocket().orElseThrow().entryAngleDeg()));
         window.textBox(PocketViewModel.ENTRY_ANGLE).deleteText().enterText("3");
         window.button("pocket-compute").requireEnabled();
 
@@ -85,8 +103,11 @@ class PocketTabGuiTest extends WindowGuiTest {
         waitFor("the program is computed", s -> s.contains("refused") || s.equals("done"));
         String refused = status();
         assertTrue(refused.startsWith("The program is refused and not written:"), refused);
-        assertTrue(refused.contains("entry angle") && refused.contains("(a plunge)")
-                && refused.contains("a cutter not cutting at its centre"), refused);
+        assertTrue(
+                refused.contains("entry angle")
+                        && refused.contains("(a plunge)")
+                        && refused.contains("a cutter not cutting at its centre"),
+                refused);
         // the failing block is marked in the program, which is in front
         assertEquals("NC program", GuiActionRunner.execute(() -> {
             javax.swing.JTabbedPane texts = window.tabbedPane("pocket-texts").target();
@@ -96,11 +117,14 @@ class PocketTabGuiTest extends WindowGuiTest {
                 () -> window.textBox("pocket-nc").target().getHighlighter().getHighlights());
         assertEquals(1, marked.length);
         String block = GuiActionRunner.execute(() -> {
-            javax.swing.JTextArea t = (javax.swing.JTextArea) window.textBox("pocket-nc").target();
-            return t.getText().substring(marked[0].getStartOffset(), Math.min(t.getText().length(),
-                    marked[0].getEndOffset())).strip();
+            javax.swing.JTextArea t =
+                    (javax.swing.JTextArea) window.textBox("pocket-nc").target();
+            return t.getText()
+                    .substring(marked[0].getStartOffset(), Math.min(t.getText().length(), marked[0].getEndOffset()))
+                    .strip();
         });
-        java.util.regex.Matcher n = java.util.regex.Pattern.compile("line (\\d+)").matcher(refused);
+        java.util.regex.Matcher n =
+                java.util.regex.Pattern.compile("line (\\d+)").matcher(refused);
         assertTrue(n.find(), refused);
         assertTrue(refused.contains(block), block + " / " + refused);
         assertTrue(block.startsWith("G1") && block.contains("Z"), block);
@@ -119,10 +143,16 @@ class PocketTabGuiTest extends WindowGuiTest {
         window.button("pocket-compute").click();
         waitFor("the program is computed", s -> s.equals("done") || s.contains("refused"));
         assertEquals("done", status());
-        assertEquals(0, GuiActionRunner.execute(
-                () -> window.textBox("pocket-nc").target().getHighlighter().getHighlights().length));
+        assertEquals(
+                0,
+                GuiActionRunner.execute(() ->
+                        window.textBox("pocket-nc").target().getHighlighter().getHighlights().length));
         PocketSettings job = GuiActionRunner.execute(() -> model.job().pocket().orElseThrow());
-        assertTrue(job.centreCutting() && job.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE && job.post() == org.fresa.job.PocketPost.LINUXCNC, job.toString());
+        assertTrue(
+                job.centreCutting()
+                        && job.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
+                        && job.post() == org.fresa.job.PocketPost.LINUXCNC,
+                job.toString());
         Path saved = dir.resolve("cavity01.ngc");
         window.button("pocket-save-program").click();
         org.assertj.swing.fixture.JFileChooserFixture chooser = window.fileChooser(Timeout.timeout(10_000));

@@ -13,20 +13,43 @@ class PocketViewModelTest {
     @Test
     void computesTreeSceneAndProgramForCavity03() {
         PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73, 0.22, 30, 27, 5, 2750, 280, 90, org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT));
+        m.setSettings(new PocketSettings(
+                Path.of("samples/pocket/cavity03.dad"),
+                6,
+                0.73,
+                0.22,
+                30,
+                27,
+                5,
+                2750,
+                280,
+                90,
+                org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow();
         assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
         assertTrue(r.report().contains("DIAMETRO MAXIMO (largest tool)    12.271 mm"), r.report());
         assertTrue(r.nc().startsWith("N05 %\n"));
         assertEquals(5, r.scene().labels().size());
-        assertTrue(r.scene().layers().stream().anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
+        assertTrue(r.scene().layers().stream()
+                .anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
     }
 
     @Test
     void aMissingFileIsAMessageNotAnException() {
         PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(Path.of("samples/pocket/none.dad"), 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, org.fresa.job.PocketPost.SINUMERIK_7M));
+        m.setSettings(new PocketSettings(
+                Path.of("samples/pocket/none.dad"),
+                6,
+                0.6,
+                0.1,
+                0,
+                -3,
+                3,
+                3000,
+                300,
+                100,
+                org.fresa.job.PocketPost.SINUMERIK_7M));
         m.compute();
         assertTrue(m.result().isEmpty());
         assertTrue(m.error().isPresent());
@@ -35,21 +58,42 @@ class PocketViewModelTest {
     @Test
     void aContourWithIslandsShowsItsOffsetsAndTheLinuxCncProgram() {
         PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(Path.of("samples/pocket/rooms-islands.contour"), 6, 0.7, 0.1, 0, -6, 3, 3000,
-                300, 100, org.fresa.job.PocketPost.LINUXCNC));
+        m.setSettings(new PocketSettings(
+                Path.of("samples/pocket/rooms-islands.contour"),
+                6,
+                0.7,
+                0.1,
+                0,
+                -6,
+                3,
+                3000,
+                300,
+                100,
+                org.fresa.job.PocketPost.LINUXCNC));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
         assertTrue(r.report().startsWith("2 island(s)"), r.report());
         assertTrue(r.report().contains("3 sub-area(s)"), r.report());
         assertTrue(r.nc().contains("\nG2 ") || r.nc().contains("\nG3 "), "arcs as arcs");
-        assertTrue(r.scene().layers().stream().anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
+        assertTrue(r.scene().layers().stream()
+                .anyMatch(l -> l.style() == PlotScene.Style.FEED && !l.curves().isEmpty()));
     }
 
     @Test
     void theDirectionSettingReversesTheProgramsArcs() {
         PocketViewModel m = new PocketViewModel();
-        PocketSettings climb = new PocketSettings(Path.of("samples/pocket/examplepart.dad"), 4, 0.62, 0.18, 8, 6, 2,
-                3000, 300, 100, org.fresa.job.PocketPost.LINUXCNC);
+        PocketSettings climb = new PocketSettings(
+                Path.of("samples/pocket/examplepart.dad"),
+                4,
+                0.62,
+                0.18,
+                8,
+                6,
+                2,
+                3000,
+                300,
+                100,
+                org.fresa.job.PocketPost.LINUXCNC);
         m.setSettings(climb);
         m.compute();
         String a = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
@@ -61,20 +105,35 @@ class PocketViewModelTest {
     }
 
     private static long words(String nc, String word) {
-        return java.util.regex.Pattern.compile("\\b" + word + "\\b").matcher(nc).results().count();
+        return java.util.regex.Pattern.compile("\\b" + word + "\\b")
+                .matcher(nc)
+                .results()
+                .count();
     }
 
     @Test
     void theEntryFieldsAreBoundToTheJobsPocketAndTheAngleIsChecked() {
         PocketViewModel m = new PocketViewModel();
-        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET).withPocket(new PocketSettings(
-                Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200, 290, 100, org.fresa.job.PocketPost.LINUXCNC)
-                .withEntry(org.fresa.pocket.EntryRule.Kind.RAMP, 2.5, true)));
+        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                                Path.of("samples/pocket/cavity01.dad"),
+                                6,
+                                0.62,
+                                0.13,
+                                30,
+                                27,
+                                3,
+                                3200,
+                                290,
+                                100,
+                                org.fresa.job.PocketPost.LINUXCNC)
+                        .withEntry(org.fresa.pocket.EntryRule.Kind.RAMP, 2.5, true)));
         assertEquals("ramp", m.entry());
         assertEquals("2.5", m.entryAngle());
         assertTrue(m.centreCutting());
         m.setEntryAngle("95");
-        assertEquals("Entry angle (deg): expected a number from 0.5 to 90 deg, found 95.",
+        assertEquals(
+                "Entry angle (deg): expected a number from 0.5 to 90 deg, found 95.",
                 m.problems().get(PocketViewModel.ENTRY_ANGLE));
         assertTrue(m.typedSettings().isEmpty());
         m.setEntryAngle("1.5");
@@ -90,8 +149,19 @@ class PocketViewModelTest {
     void aPlungeOfACutterNotCuttingAtItsCentreIsPlannedAndRefusedByTheCheckAndCannotBeSaved() {
         PocketViewModel m = new PocketViewModel();
         assertTrue(m.saveProblem().orElseThrow().contains("press Compute"));
-        PocketSettings plunge = new PocketSettings(Path.of("samples/pocket/cavity01.dad"), 6, 0.62, 0.13, 30, 27, 3, 3200,
-                290, 100, org.fresa.job.PocketPost.LINUXCNC).withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, 3, false);
+        PocketSettings plunge = new PocketSettings(
+                        Path.of("samples/pocket/cavity01.dad"),
+                        6,
+                        0.62,
+                        0.13,
+                        30,
+                        27,
+                        3,
+                        3200,
+                        290,
+                        100,
+                        org.fresa.job.PocketPost.LINUXCNC)
+                .withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, 3, false);
         m.setSettings(plunge);
         m.compute();
         org.fresa.check.Failure f = m.result().orElseThrow().refusal().orElseThrow();

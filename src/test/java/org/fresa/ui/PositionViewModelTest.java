@@ -67,8 +67,13 @@ class PositionViewModelTest {
         vm.setRobotTable(1, "-200");
         vm.setRobotTable(2, "500");
         vm.setTablePiece(1, "10");
-        RobotTrajectoryService.Solved s = PositionViewModel.compute(Path.of("samples/stepnc/iso14649-11-example1.stp"),
-                "irb140", vm.robotTablePlacement(), vm.tablePiecePlacement(), List.of("csv"), ProgressMonitor.NONE);
+        RobotTrajectoryService.Solved s = PositionViewModel.compute(
+                Path.of("samples/stepnc/iso14649-11-example1.stp"),
+                "irb140",
+                vm.robotTablePlacement(),
+                vm.tablePiecePlacement(),
+                List.of("csv"),
+                ProgressMonitor.NONE);
         vm.setResult(s);
         assertTrue(vm.pointCount() > 10);
         assertEquals(0, s.result().unreachable());

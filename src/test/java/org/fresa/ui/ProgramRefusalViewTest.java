@@ -15,8 +15,18 @@ import org.junit.jupiter.api.Test;
 /** The Pocket and Output tabs' side of the program check: the failing block found and marked. */
 class ProgramRefusalViewTest {
 
-    private static final PocketSettings CAVITY03 = new PocketSettings(Path.of("samples/pocket/cavity03.dad"), 6, 0.73,
-            0.22, 30, 27, 5, 2750, 280, 90, org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT);
+    private static final PocketSettings CAVITY03 = new PocketSettings(
+            Path.of("samples/pocket/cavity03.dad"),
+            6,
+            0.73,
+            0.22,
+            30,
+            27,
+            5,
+            2750,
+            280,
+            90,
+            org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT);
 
     @Test
     void theThesisProgramOfCavity03PassesTheCheck() {
@@ -36,7 +46,8 @@ class ProgramRefusalViewTest {
         // stays installed after a GUI test has run in the same JVM
         JTextArea text = GuiActionRunner.execute(() -> new JTextArea(nc));
         assertTrue(GuiActionRunner.execute(() -> ProgramHighlight.line(text, 3)));
-        Highlighter.Highlight[] marked = GuiActionRunner.execute(() -> text.getHighlighter().getHighlights());
+        Highlighter.Highlight[] marked =
+                GuiActionRunner.execute(() -> text.getHighlighter().getHighlights());
         assertEquals(1, marked.length);
         assertEquals(nc.indexOf("N15"), marked[0].getStartOffset());
         assertFalse(GuiActionRunner.execute(() -> ProgramHighlight.line(text, 9)));

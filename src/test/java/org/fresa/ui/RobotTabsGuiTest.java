@@ -19,8 +19,8 @@ class RobotTabsGuiTest extends WindowGuiTest {
     void example1IsComputedOnTheIrb140AndItsProgramPreviewed() {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
-        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                org.fresa.post.MillingPost.LINUXCNC))));
+        GuiActionRunner.execute(() -> model.setJob(
+                model.job().withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
 
         showTab("Robot");
@@ -35,40 +35,54 @@ class RobotTabsGuiTest extends WindowGuiTest {
         window.textBox("position-rt-Z").requireText("500");
         window.button("position-compute").click();
         window.tabbedPane("position-results").selectTab("Summary");
-        Pause.pause(new Condition("the summary shows the result") {
-            @Override
-            public boolean test() {
-                String s = GuiActionRunner.execute(() -> window.textBox("position-summary").target().getText());
-                return s.contains("Unreachable: 0");
-            }
-        }, Timeout.timeout(120_000));
-        window.slider("position-replay").slideTo(GuiActionRunner.execute(
-                () -> window.slider("position-replay").target().getMaximum() / 2));
+        Pause.pause(
+                new Condition("the summary shows the result") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(() ->
+                                window.textBox("position-summary").target().getText());
+                        return s.contains("Unreachable: 0");
+                    }
+                },
+                Timeout.timeout(120_000));
+        window.slider("position-replay")
+                .slideTo(GuiActionRunner.execute(
+                        () -> window.slider("position-replay").target().getMaximum() / 2));
         shoot("robot-position.png");
         assertTrue(window.label("position-point").target().getText().startsWith("Point "));
-        JobSettings.RobotSettings r = GuiActionRunner.execute(() -> model.job().robot().orElseThrow());
-        assertTrue(r.robotTable().xMm() == 400 && r.robotTable().zMm() == 500 && r.tablePiece().yMm() == 10,
+        JobSettings.RobotSettings r =
+                GuiActionRunner.execute(() -> model.job().robot().orElseThrow());
+        assertTrue(
+                r.robotTable().xMm() == 400
+                        && r.robotTable().zMm() == 500
+                        && r.tablePiece().yMm() == 10,
                 r.toString());
 
         window.tabbedPane("tabs").selectTab("Output");
         window.radioButton("output-preview-rapid").click();
-        Pause.pause(new Condition("the RAPID program is previewed") {
-            @Override
-            public boolean test() {
-                String s = GuiActionRunner.execute(() -> window.textBox("output-text").target().getText());
-                return s.contains("MoveL");
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition("the RAPID program is previewed") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(
+                                () -> window.textBox("output-text").target().getText());
+                        return s.contains("MoveL");
+                    }
+                },
+                Timeout.timeout(60_000));
         shoot("robot-output.png");
         window.tabbedPane("tabs").selectTab("Robot");
         window.button("robot-symbolic").click();
-        Pause.pause(new Condition("the symbolic forward kinematics is shown") {
-            @Override
-            public boolean test() {
-                String s = GuiActionRunner.execute(() -> window.textBox("robot-fk").target().getText());
-                return s.contains("px = ");
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition("the symbolic forward kinematics is shown") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(
+                                () -> window.textBox("robot-fk").target().getText());
+                        return s.contains("px = ");
+                    }
+                },
+                Timeout.timeout(60_000));
         shoot("robot-robot.png");
     }
 
@@ -76,8 +90,8 @@ class RobotTabsGuiTest extends WindowGuiTest {
     void aDhCellEditedWithTheKeyboardIsTheRobotTheJobComputesAndReplays() throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
-        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                org.fresa.post.MillingPost.LINUXCNC))));
+        GuiActionRunner.execute(() -> model.setJob(
+                model.job().withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))));
         waitUntilNoTaskRuns();
         showTab("Robot");
         window.comboBox("robot-choice").selectItem("irb140");
@@ -90,26 +104,33 @@ class RobotTabsGuiTest extends WindowGuiTest {
         // joint 6's theta gets an offset: the job then names a robot file with it
         // (only letters, digits, '-' and spaces: the robot's key map under Xvfb turns '+' into ']')
         typeIntoCell(5, RobotViewModel.THETA, "q6 - -10");
-        window.table("robot-dh").requireCellValue(org.assertj.swing.data.TableCell.row(5).column(RobotViewModel.THETA),
-                "q6 - -10");
-        Pause.pause(new Condition("the job names the edited robot") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> model.job().robot().orElseThrow().robot()).startsWith(
-                        dir.resolve("robots").toString());
-            }
-        }, Timeout.timeout(10_000));
-        String robotFile = GuiActionRunner.execute(() -> model.job().robot().orElseThrow().robot());
+        window.table("robot-dh")
+                .requireCellValue(org.assertj.swing.data.TableCell.row(5).column(RobotViewModel.THETA), "q6 - -10");
+        Pause.pause(
+                new Condition("the job names the edited robot") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(
+                                        () -> model.job().robot().orElseThrow().robot())
+                                .startsWith(dir.resolve("robots").toString());
+                    }
+                },
+                Timeout.timeout(10_000));
+        String robotFile =
+                GuiActionRunner.execute(() -> model.job().robot().orElseThrow().robot());
         org.fresa.kin.SerialRobot edited = (org.fresa.kin.SerialRobot) org.fresa.job.RobotFiles.load(robotFile);
         assertEquals(10, edited.chain().joints().get(5).thetaDeg());
         assertEquals("irb140-edited", edited.name());
-        Pause.pause(new Condition("the symbolic forward kinematics follows the table") {
-            @Override
-            public boolean test() {
-                String s = GuiActionRunner.execute(() -> window.textBox("robot-fk").target().getText());
-                return s.startsWith("Forward kinematics of irb140-edited") && s.contains("px = ");
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition("the symbolic forward kinematics follows the table") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(
+                                () -> window.textBox("robot-fk").target().getText());
+                        return s.startsWith("Forward kinematics of irb140-edited") && s.contains("px = ");
+                    }
+                },
+                Timeout.timeout(60_000));
         shoot("robot-edited.png");
 
         window.tabbedPane("tabs").selectTab("Position");
@@ -119,19 +140,24 @@ class RobotTabsGuiTest extends WindowGuiTest {
         setField("position-tp-Y", "10");
         window.button("position-compute").click();
         window.tabbedPane("position-results").selectTab("Summary");
-        Pause.pause(new Condition("the summary shows the result") {
-            @Override
-            public boolean test() {
-                String s = GuiActionRunner.execute(() -> window.textBox("position-summary").target().getText());
-                return s.contains("Unreachable: 0");
-            }
-        }, Timeout.timeout(120_000));
-        String summary = GuiActionRunner.execute(() -> window.textBox("position-summary").target().getText());
+        Pause.pause(
+                new Condition("the summary shows the result") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(() ->
+                                window.textBox("position-summary").target().getText());
+                        return s.contains("Unreachable: 0");
+                    }
+                },
+                Timeout.timeout(120_000));
+        String summary = GuiActionRunner.execute(
+                () -> window.textBox("position-summary").target().getText());
         assertTrue(summary.contains("Robot: irb140-edited"), summary);
 
         window.tabbedPane("position-results").selectTab("Joints");
         CellView cell = (CellView) window.robot().finder().findByName("position-cell");
-        int max = GuiActionRunner.execute(() -> window.slider("position-replay").target().getMaximum());
+        int max = GuiActionRunner.execute(
+                () -> window.slider("position-replay").target().getMaximum());
         assertTrue(max > 10);
         for (int target : new int[] {max / 3, 2 * max / 3}) {
             window.slider("position-replay").slideTo(target);
@@ -140,15 +166,20 @@ class RobotTabsGuiTest extends WindowGuiTest {
             java.util.List<org.fresa.geom.Vec3> arm = scene.links().get(0);
             // the robot drawn reaches the replayed point with its tool, which starts at the arm's flange
             org.fresa.geom.Vec3 flange = arm.get(arm.size() - 1);
-            assertEquals(0, scene.tool().map(CellScene.ToolShape::tip).orElse(flange).distance(sel.at()), 1e-6);
+            assertEquals(
+                    0, scene.tool().map(CellScene.ToolShape::tip).orElse(flange).distance(sel.at()), 1e-6);
             scene.tool().ifPresent(t -> assertEquals(0, flange.distance(t.flange()), 1e-6));
             double marked = GuiActionRunner.execute(() -> {
-                org.jfree.chart.ChartPanel p = (org.jfree.chart.ChartPanel) window.robot().finder().findByName(
-                        "position-joints-chart");
-                var sub = ((org.jfree.chart.plot.CombinedDomainXYPlot) p.getChart()
-                        .getPlot()).getSubplots().get(0);
+                org.jfree.chart.ChartPanel p =
+                        (org.jfree.chart.ChartPanel) window.robot().finder().findByName("position-joints-chart");
+                var sub = ((org.jfree.chart.plot.CombinedDomainXYPlot)
+                                p.getChart().getPlot())
+                        .getSubplots()
+                        .get(0);
                 return ((org.jfree.chart.plot.ValueMarker) sub.getDomainMarkers(org.jfree.chart.ui.Layer.FOREGROUND)
-                        .iterator().next()).getValue();
+                                .iterator()
+                                .next())
+                        .getValue();
             });
             assertEquals(target + 1, marked);
         }
@@ -156,27 +187,40 @@ class RobotTabsGuiTest extends WindowGuiTest {
         // the 3D view turns with the arrow keys and Home puts it back
         window.robot().click(cell);
         window.robot().pressAndReleaseKey(java.awt.event.KeyEvent.VK_LEFT);
-        assertEquals(OrbitCamera.DEFAULT_AZIMUTH_DEG + 5, GuiActionRunner.execute(() -> cell.camera().azimuthDeg()),
+        assertEquals(
+                OrbitCamera.DEFAULT_AZIMUTH_DEG + 5,
+                GuiActionRunner.execute(() -> cell.camera().azimuthDeg()),
                 1e-9);
         window.robot().pressAndReleaseKey(java.awt.event.KeyEvent.VK_HOME);
-        assertEquals(OrbitCamera.DEFAULT_AZIMUTH_DEG, GuiActionRunner.execute(() -> cell.camera().azimuthDeg()));
+        assertEquals(
+                OrbitCamera.DEFAULT_AZIMUTH_DEG,
+                GuiActionRunner.execute(() -> cell.camera().azimuthDeg()));
         shoot("robot-position-3d.png");
         window.tabbedPane("position-results").selectTab("Position error");
         shoot("robot-position-error.png");
 
         // Compute never changes what the job runs: the planner ticks the robot module (which drops
         // the new job's pocket, which has no settings); the saved job runs on the edited robot
-        assertEquals(java.util.List.of(org.fresa.job.JobTask.POCKET), GuiActionRunner.execute(() -> model.job().runs()));
+        assertEquals(
+                java.util.List.of(org.fresa.job.JobTask.POCKET),
+                GuiActionRunner.execute(() -> model.job().runs()));
         window.menuItem("run-robot").click();
-        assertEquals(java.util.List.of(org.fresa.job.JobTask.ROBOT), GuiActionRunner.execute(() -> model.job().runs()));
+        assertEquals(
+                java.util.List.of(org.fresa.job.JobTask.ROBOT),
+                GuiActionRunner.execute(() -> model.job().runs()));
         Path job = dir.resolve("edited.xml");
         GuiActionRunner.execute(() -> {
             model.saveAs(job);
             return null;
         });
         java.io.StringWriter err = new java.io.StringWriter();
-        int status = org.fresa.app.cli.FresaCommand.execute(new java.io.PrintWriter(new java.io.StringWriter(), true),
-                new java.io.PrintWriter(err, true), "run", job.toString(), "--out", dir.resolve("out").toString());
+        int status = org.fresa.app.cli.FresaCommand.execute(
+                new java.io.PrintWriter(new java.io.StringWriter(), true),
+                new java.io.PrintWriter(err, true),
+                "run",
+                job.toString(),
+                "--out",
+                dir.resolve("out").toString());
         assertEquals(0, status, err.toString());
         String json = java.nio.file.Files.readString(dir.resolve("out").resolve("summary.json"));
         assertTrue(json.contains("irb140-edited"), json);
@@ -184,7 +228,9 @@ class RobotTabsGuiTest extends WindowGuiTest {
 
     /** Keyboard only: arrows to the cell, type (which replaces its text), Enter. */
     private void typeIntoCell(int row, int col, String text) {
-        window.table("robot-dh").cell(org.assertj.swing.data.TableCell.row(0).column(0)).click();
+        window.table("robot-dh")
+                .cell(org.assertj.swing.data.TableCell.row(0).column(0))
+                .click();
         for (int i = 0; i < row; i++) {
             window.robot().pressAndReleaseKey(java.awt.event.KeyEvent.VK_DOWN);
         }
@@ -198,11 +244,12 @@ class RobotTabsGuiTest extends WindowGuiTest {
 
     /** For looking at after the build: target/screenshots/robot-*.png. */
     private void shoot(String name) {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         try {
             java.nio.file.Files.createDirectories(Path.of("target", "screenshots"));
-            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+            javax.imageio.ImageIO.write(
+                    img, "png", Path.of("target", "screenshots", name).toFile());
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
@@ -213,18 +260,22 @@ class RobotTabsGuiTest extends WindowGuiTest {
     }
 
     private void waitUntilNoTaskRuns() {
-        Pause.pause(new Condition("no task is running") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                        javax.swing.JProgressBar.class, false) {
+        Pause.pause(
+                new Condition("no task is running") {
                     @Override
-                    protected boolean isMatching(javax.swing.JProgressBar b) {
-                        return b.isShowing();
+                    public boolean test() {
+                        return GuiActionRunner.execute(() -> window.robot()
+                                .finder()
+                                .findAll(new GenericTypeMatcher<>(javax.swing.JProgressBar.class, false) {
+                                    @Override
+                                    protected boolean isMatching(javax.swing.JProgressBar b) {
+                                        return b.isShowing();
+                                    }
+                                })
+                                .isEmpty());
                     }
-                }).isEmpty());
-            }
-        }, Timeout.timeout(60_000));
+                },
+                Timeout.timeout(60_000));
     }
 
     /** Selects a tab, again through the model when the virtual display lost the click. */

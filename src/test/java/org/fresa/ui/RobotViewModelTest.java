@@ -33,7 +33,9 @@ class RobotViewModelTest {
     void theIrb140DhTableIsShownAsTheSpecPrintsIt() {
         RobotViewModel vm = new RobotViewModel();
         assertEquals(6, vm.dhRows().size());
-        assertArrayEquals(new String[] {"q1", "R", "q1", "352", "70", "-90", "-180", "180"}, vm.dhRows().get(0));
+        assertArrayEquals(
+                new String[] {"q1", "R", "q1", "352", "70", "-90", "-180", "180"},
+                vm.dhRows().get(0));
         assertEquals("q2 - 90", vm.cell(1, RobotViewModel.THETA));
         assertEquals("q5 + 180", vm.cell(4, RobotViewModel.THETA));
     }
@@ -41,7 +43,8 @@ class RobotViewModelTest {
     @Test
     void anUntouchedTableIsTheChosenRobot() {
         RobotViewModel vm = new RobotViewModel();
-        assertAll(() -> assertTrue(vm.messages().isEmpty(), vm.messages().toString()),
+        assertAll(
+                () -> assertTrue(vm.messages().isEmpty(), vm.messages().toString()),
                 () -> assertFalse(vm.isModified()));
     }
 
@@ -55,7 +58,9 @@ class RobotViewModelTest {
         assertFalse(vm.isModified());
         vm.choose("tricept806");
         assertEquals(6, vm.rowCount());
-        assertTrue(String.join("\n", vm.parameters()).contains("r_p = 200 mm"), vm.parameters().toString());
+        assertTrue(
+                String.join("\n", vm.parameters()).contains("r_p = 200 mm"),
+                vm.parameters().toString());
         assertTrue(String.join("\n", vm.parameters()).contains("e_ffl = 250 mm"));
         assertFalse(vm.isModified());
     }
@@ -102,8 +107,9 @@ class RobotViewModelTest {
     void limitsMustBeOrderedNumbersInRange() {
         RobotViewModel vm = new RobotViewModel();
         vm.setCell(2, RobotViewModel.MAX, "-300");
-        assertEquals("Joint 3, max: must be more than min (-230 deg)", vm.problem(2, RobotViewModel.MAX)
-                .orElseThrow());
+        assertEquals(
+                "Joint 3, max: must be more than min (-230 deg)",
+                vm.problem(2, RobotViewModel.MAX).orElseThrow());
         vm.setCell(2, RobotViewModel.MAX, "50");
         vm.setCell(3, RobotViewModel.MIN, "-800");
         assertTrue(vm.problem(3, RobotViewModel.MIN).orElseThrow().contains("more than two turns"));
@@ -119,12 +125,14 @@ class RobotViewModelTest {
     void makingAJointPrismaticMovesTheVariableIntoD() {
         RobotViewModel vm = new RobotViewModel();
         vm.setCell(1, RobotViewModel.TYPE, "P");
-        assertAll(() -> assertEquals("-90", vm.cell(1, RobotViewModel.THETA)),
+        assertAll(
+                () -> assertEquals("-90", vm.cell(1, RobotViewModel.THETA)),
                 () -> assertEquals("q2", vm.cell(1, RobotViewModel.D)));
         vm.setCell(1, RobotViewModel.MIN, "0");
         vm.setCell(1, RobotViewModel.MAX, "500");
         SerialRobot r = (SerialRobot) vm.edited().orElseThrow();
-        assertEquals(org.fresa.kin.JointType.PRISMATIC, r.chain().joints().get(1).type());
+        assertEquals(
+                org.fresa.kin.JointType.PRISMATIC, r.chain().joints().get(1).type());
         // 100 mm more along z1 moves the flange by 100 mm
         Transform3 a = r.forward(0, 0, 0, 0, 0, 0);
         Transform3 b = r.forward(0, 100, 0, 0, 0, 0);
@@ -220,7 +228,8 @@ class RobotViewModelTest {
     @Test
     void theExportHoldsTheForwardKinematicsAndTheJacobian() {
         String text = RobotViewModel.symbolicExport(Robots.adeptOne());
-        assertAll(() -> assertTrue(text.contains("px = "), text),
+        assertAll(
+                () -> assertTrue(text.contains("px = "), text),
                 () -> assertTrue(text.contains("J_vx_q1 = "), text),
                 () -> assertTrue(text.contains("J_wz_q4 = "), text),
                 // the prismatic q3 moves the flange along the fixed vertical: no turn, no x speed
@@ -239,12 +248,15 @@ class RobotViewModelTest {
         assertEquals(50, r.toolLengthMm().getAsDouble());
 
         vm.setToolLength("5x");
-        assertEquals("Tool length: '5x' is not a number (mm)", vm.toolLengthProblem().orElseThrow());
+        assertEquals(
+                "Tool length: '5x' is not a number (mm)", vm.toolLengthProblem().orElseThrow());
         vm.setToolLength("-3");
-        assertTrue(vm.toolLengthProblem().orElseThrow().startsWith("Tool length: expected "),
+        assertTrue(
+                vm.toolLengthProblem().orElseThrow().startsWith("Tool length: expected "),
                 vm.toolLengthProblem().get());
         vm.setSpindle("0,0");
-        assertTrue(vm.spindleProblem().orElseThrow().startsWith("Spindle: expected 3 to 6"),
+        assertTrue(
+                vm.spindleProblem().orElseThrow().startsWith("Spindle: expected 3 to 6"),
                 vm.spindleProblem().get());
         // the job keeps the last good values while a field is wrong
         var kept = vm.applyToolTo(j).robot().orElseThrow();

@@ -34,25 +34,30 @@ import org.junit.jupiter.api.Test;
 class SoleTabGuiTest extends WindowGuiTest {
 
     private void waitFor(String what, Supplier<Boolean> test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::get);
-            }
-        }, Timeout.timeout(90_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::get);
+                    }
+                },
+                Timeout.timeout(90_000));
     }
 
     private JSettingsView placedDesign(MainViewModel model) {
-        JobSettings.SoleSettings s = GuiActionRunner.execute(() -> model.job().sole().orElseThrow());
+        JobSettings.SoleSettings s =
+                GuiActionRunner.execute(() -> model.job().sole().orElseThrow());
         JobSettings.SoleDesign d = s.designs().get(s.designs().size() - 1);
-        return new JSettingsView(d.name(), d.copies().get(0).dxMm(), d.copies().get(0).dyMm());
+        return new JSettingsView(
+                d.name(), d.copies().get(0).dxMm(), d.copies().get(0).dyMm());
     }
 
-    private record JSettingsView(String name, double dxMm, double dyMm) {
-    }
+    private record JSettingsView(String name, double dxMm, double dyMm) {}
 
     private static Box2 selectedBox(PlotScene s) {
-        PlotScene.Layer l = s.layers().stream().filter(x -> x.style() == PlotScene.Style.WARNING).findFirst()
+        PlotScene.Layer l = s.layers().stream()
+                .filter(x -> x.style() == PlotScene.Style.WARNING)
+                .findFirst()
                 .orElseThrow();
         Box2 b = l.curves().get(0).bounds();
         for (Curve2 c : l.curves()) {
@@ -70,24 +75,36 @@ class SoleTabGuiTest extends WindowGuiTest {
         });
         window.tabbedPane("tabs").selectTab("Sole");
         window.button("sole-load").click();
-        waitFor("the sole is planned", () -> window.comboBox("sole-size").target().getItemCount() == 5
-                && window.comboBox("sole-designs").target().getItemCount() == 9);
-        PlotPanel plot = GuiActionRunner.execute(() -> window.robot().finder()
+        waitFor(
+                "the sole is planned",
+                () -> window.comboBox("sole-size").target().getItemCount() == 5
+                        && window.comboBox("sole-designs").target().getItemCount() == 9);
+        PlotPanel plot = GuiActionRunner.execute(() -> window
+                .robot()
+                .finder()
                 .findAll(window.target(), new GenericTypeMatcher<PlotPanel>(PlotPanel.class, true) {
                     @Override
                     protected boolean isMatching(PlotPanel p) {
                         return true;
                     }
-                }).stream().max(Comparator.comparingInt(PlotPanel::getWidth)).orElseThrow());
+                })
+                .stream()
+                .max(Comparator.comparingInt(PlotPanel::getWidth))
+                .orElseThrow());
         waitFor("the tread is shown", () -> plot.scene().title().startsWith("Sole 40"));
 
         // keyboard: Place puts SUB4 in the middle of the plot, the arrows move it
         window.list("sole-library").selectItem("SUB4");
         window.button("sole-place").click();
-        waitFor("the figure is placed", () -> window.comboBox("sole-designs").target().getItemCount() == 10);
+        waitFor(
+                "the figure is placed",
+                () -> window.comboBox("sole-designs").target().getItemCount() == 10);
         JSettingsView placed = placedDesign(model);
         assertEquals("SUB4 1", placed.name());
-        assertEquals("SUB4 1", GuiActionRunner.execute(() -> window.comboBox("sole-designs").target().getSelectedItem()));
+        assertEquals(
+                "SUB4 1",
+                GuiActionRunner.execute(
+                        () -> window.comboBox("sole-designs").target().getSelectedItem()));
         window.table("sole-parameters").requireRowCount(7);
         JComponent chart = GuiActionRunner.execute(plot::chartComponent);
         window.robot().focus(chart);
@@ -102,16 +119,29 @@ class SoleTabGuiTest extends WindowGuiTest {
         assertEquals(placed.dyMm() + 10, nudged.dyMm(), 1e-9);
 
         // the parameters panel: a bad value says why, a good one is taken
-        window.table("sole-parameters").enterValue(org.assertj.swing.data.TableCell.row(2).column(2), "-3");
-        waitFor("the bad radius is refused", () -> window.label("sole-status").target().getText().contains("RA"));
-        window.table("sole-parameters").enterValue(org.assertj.swing.data.TableCell.row(2).column(2), "12");
-        waitFor("the radius is taken", () -> model.job().sole().orElseThrow().designs().get(8).figures().get(0).params()
-                .contains("RA=12"));
+        window.table("sole-parameters")
+                .enterValue(org.assertj.swing.data.TableCell.row(2).column(2), "-3");
+        waitFor(
+                "the bad radius is refused",
+                () -> window.label("sole-status").target().getText().contains("RA"));
+        window.table("sole-parameters")
+                .enterValue(org.assertj.swing.data.TableCell.row(2).column(2), "12");
+        waitFor(
+                "the radius is taken",
+                () -> model.job()
+                        .sole()
+                        .orElseThrow()
+                        .designs()
+                        .get(8)
+                        .figures()
+                        .get(0)
+                        .params()
+                        .contains("RA=12"));
 
         // mouse: drag the selected ring 60 pixels to the right
         Box2 b = GuiActionRunner.execute(() -> selectedBox(plot.scene()));
-        Point from = GuiActionRunner.execute(() -> plot.toPixels(
-                org.fresa.geom.Vec2.of(b.center().x(), b.maxY())));
+        Point from = GuiActionRunner.execute(
+                () -> plot.toPixels(org.fresa.geom.Vec2.of(b.center().x(), b.maxY())));
         window.robot().pressMouse(chart, from, MouseButton.LEFT_BUTTON);
         window.robot().moveMouse(chart, new Point(from.x + 30, from.y));
         window.robot().moveMouse(chart, new Point(from.x + 60, from.y));
@@ -127,7 +157,9 @@ class SoleTabGuiTest extends WindowGuiTest {
         Path out = dir.resolve("gui-out");
         window.textBox("sole-out").setText(out.toString());
         window.button("sole-generate").click();
-        waitFor("the programs are written", () -> window.label("sole-status").target().getText().contains("files written"));
+        waitFor(
+                "the programs are written",
+                () -> window.label("sole-status").target().getText().contains("files written"));
         Path saved = dir.resolve("edited.xml");
         GuiActionRunner.execute(() -> {
             model.saveAs(saved);
@@ -136,7 +168,10 @@ class SoleTabGuiTest extends WindowGuiTest {
         Job read = JobXml.read(saved);
         JobRunner.run(read, new OutputFolder(dir.resolve("run-out")), ProgressMonitor.NONE);
         for (String n : new String[] {"tread-40-right.ngc", "tread-38-left.ngc", "cavity-42-right.ngc"}) {
-            assertEquals(Files.readString(out.resolve(n)), Files.readString(dir.resolve("run-out").resolve(n)), n);
+            assertEquals(
+                    Files.readString(out.resolve(n)),
+                    Files.readString(dir.resolve("run-out").resolve(n)),
+                    n);
         }
         assertTrue(Files.readString(out.resolve("tread-40-right.ngc")).contains("G3")
                 || Files.readString(out.resolve("tread-40-right.ngc")).contains("G2"));
@@ -145,14 +180,20 @@ class SoleTabGuiTest extends WindowGuiTest {
         window.robot().focus(chart);
         waitFor("the plot has the focus again", chart::isFocusOwner);
         window.robot().pressAndReleaseKey(KeyEvent.VK_DELETE);
-        waitFor("the figure is deleted", () -> model.job().sole().orElseThrow().designs().size() == 8);
-        assertEquals("(none)", GuiActionRunner.execute(() -> window.comboBox("sole-designs").target().getSelectedItem()));
+        waitFor(
+                "the figure is deleted",
+                () -> model.job().sole().orElseThrow().designs().size() == 8);
+        assertEquals(
+                "(none)",
+                GuiActionRunner.execute(
+                        () -> window.comboBox("sole-designs").target().getSelectedItem()));
     }
 
     private void screenshot(String name) throws Exception {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         Files.createDirectories(Path.of("target", "screenshots"));
-        javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+        javax.imageio.ImageIO.write(
+                img, "png", Path.of("target", "screenshots", name).toFile());
     }
 }

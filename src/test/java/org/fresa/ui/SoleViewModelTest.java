@@ -17,11 +17,11 @@ import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobRunner;
+import org.fresa.job.JobTask;
+import org.fresa.job.JobXml;
 import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
-import org.fresa.job.JobTask;
-import org.fresa.job.JobXml;
 import org.fresa.sole.Foot;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -60,8 +60,12 @@ class SoleViewModelTest {
         vm.selectFoot(Foot.LEFT);
         PlotScene s = vm.scene();
         assertTrue(s.title().contains("42") && s.title().contains("left"));
-        assertFalse(s.layers().stream().filter(l -> l.style() == PlotScene.Style.FEED).findFirst().orElseThrow()
-                .curves().isEmpty());
+        assertFalse(s.layers().stream()
+                .filter(l -> l.style() == PlotScene.Style.FEED)
+                .findFirst()
+                .orElseThrow()
+                .curves()
+                .isEmpty());
     }
 
     @Test
@@ -78,7 +82,8 @@ class SoleViewModelTest {
     void theMouldBlockViewShowsThePairWhereTheEquationsPutIt() throws Exception {
         SoleViewModel vm = sample();
         PlotScene s = vm.pairScene();
-        assertTrue(s.title().contains("right ZP (296.200, 77.880)") && s.title().contains("left ZP (153.800, 77.880)"),
+        assertTrue(
+                s.title().contains("right ZP (296.200, 77.880)") && s.title().contains("left ZP (153.800, 77.880)"),
                 s.title());
         Box2 right = bounds(s, "right outline");
         Box2 left = bounds(s, "left outline");
@@ -92,12 +97,18 @@ class SoleViewModelTest {
         Box2 block = bounds(s, "block edges y = S, S + CM; mirror line x = DLM + E");
         assertEquals(11, block.minY(), 1e-9);
         assertEquals(361, block.maxY(), 1e-9);
-        assertTrue(bounds(s, "left tread").width() > 50 && bounds(s, "left tread").maxX() < 225, "the tread is drawn, left of the mirror line");
+        assertTrue(
+                bounds(s, "left tread").width() > 50 && bounds(s, "left tread").maxX() < 225,
+                "the tread is drawn, left of the mirror line");
     }
 
     private static Box2 bounds(PlotScene s, String layer) {
         Box2 b = null;
-        for (Curve2 c : s.layers().stream().filter(l -> l.name().equals(layer)).findFirst().orElseThrow().curves()) {
+        for (Curve2 c : s.layers().stream()
+                .filter(l -> l.name().equals(layer))
+                .findFirst()
+                .orElseThrow()
+                .curves()) {
             b = b == null ? c.bounds() : b.union(c.bounds());
         }
         return b;
@@ -112,7 +123,10 @@ class SoleViewModelTest {
 
     /** Every tread feed move of the scene starts and ends inside its outline. */
     private static void assertTreadInsideOutline(PlotScene s) {
-        var outline = s.layers().stream().filter(l -> l.style() == PlotScene.Style.OUTLINE).findFirst().orElseThrow();
+        var outline = s.layers().stream()
+                .filter(l -> l.style() == PlotScene.Style.OUTLINE)
+                .findFirst()
+                .orElseThrow();
         Contour c = Contour.of(outline.curves(), Tolerance.DEFAULT);
         for (PlotScene.Layer l : s.layers()) {
             if (l.style() != PlotScene.Style.FEED) {
@@ -127,7 +141,9 @@ class SoleViewModelTest {
     }
 
     private static long feedCurves(PlotScene s) {
-        return s.layers().stream().filter(l -> l.style() == PlotScene.Style.FEED).mapToLong(l -> l.curves().size())
+        return s.layers().stream()
+                .filter(l -> l.style() == PlotScene.Style.FEED)
+                .mapToLong(l -> l.curves().size())
                 .sum();
     }
 
@@ -168,7 +184,8 @@ class SoleViewModelTest {
         assertEquals(60 / 1.02, vm.position(i).y(), EPS);
         assertEquals(Optional.empty(), vm.moveSelectedBy(1, 0));
         assertEquals(Optional.empty(), vm.moveSelectedBy(0, -10));
-        assertAll(() -> assertEquals(-5 / 1.02 + 1, vm.position(i).x(), EPS),
+        assertAll(
+                () -> assertEquals(-5 / 1.02 + 1, vm.position(i).x(), EPS),
                 () -> assertEquals(60 / 1.02 - 10, vm.position(i).y(), EPS));
         assertTreadInsideOutline(vm.scene());
     }
@@ -234,10 +251,15 @@ class SoleViewModelTest {
     void parametersAreListedWithUnitsAndEditedValuesRecomputeTheTread() throws Exception {
         SoleViewModel vm = sample();
         vm.select(0);
-        assertEquals(List.of(new SoleViewModel.Parameter("XC", "mm", "-32"),
-                new SoleViewModel.Parameter("YC", "mm", "161"), new SoleViewModel.Parameter("RA", "mm", "5"),
-                new SoleViewModel.Parameter("XA4", "mm", "-37"), new SoleViewModel.Parameter("YA4", "mm", "161"),
-                new SoleViewModel.Parameter("XB4", "mm", "-27"), new SoleViewModel.Parameter("YB4", "mm", "161")),
+        assertEquals(
+                List.of(
+                        new SoleViewModel.Parameter("XC", "mm", "-32"),
+                        new SoleViewModel.Parameter("YC", "mm", "161"),
+                        new SoleViewModel.Parameter("RA", "mm", "5"),
+                        new SoleViewModel.Parameter("XA4", "mm", "-37"),
+                        new SoleViewModel.Parameter("YA4", "mm", "161"),
+                        new SoleViewModel.Parameter("XB4", "mm", "-27"),
+                        new SoleViewModel.Parameter("YB4", "mm", "161")),
                 vm.parameters());
         double w = selectedBox(vm).width();
         assertEquals(Optional.empty(), vm.setParameter("XA4", "-40"));
@@ -251,7 +273,10 @@ class SoleViewModelTest {
     }
 
     private static Box2 selectedBox(SoleViewModel vm) {
-        var l = vm.scene().layers().stream().filter(x -> x.style() == PlotScene.Style.WARNING).findFirst().orElseThrow();
+        var l = vm.scene().layers().stream()
+                .filter(x -> x.style() == PlotScene.Style.WARNING)
+                .findFirst()
+                .orElseThrow();
         Box2 b = l.curves().get(0).bounds();
         for (Curve2 c : l.curves()) {
             b = b.union(c.bounds());
@@ -297,7 +322,8 @@ class SoleViewModelTest {
         Job job = vm.job().orElseThrow();
         JobXml.write(job, saved);
         Job read = JobXml.read(saved);
-        assertEquals(job.sole().orElseThrow().designs(), read.sole().orElseThrow().designs());
+        assertEquals(
+                job.sole().orElseThrow().designs(), read.sole().orElseThrow().designs());
         TaskOutcome run = JobRunner.run(read, new OutputFolder(dir.resolve("run")), ProgressMonitor.NONE);
         assertEquals(0, tab.exitStatus());
         assertEquals(tab.exitStatus(), run.exitStatus());
@@ -308,12 +334,16 @@ class SoleViewModelTest {
         assertTrue(names.contains("tread-40-right.ngc") && names.contains("cavity-42-left.ngc"), names.toString());
         for (String n : names) {
             if (n.endsWith(".ngc") || n.endsWith(".csv")) {
-                assertEquals(Files.readString(dir.resolve("tab").resolve(n)),
-                        Files.readString(dir.resolve("run").resolve(n)), n);
+                assertEquals(
+                        Files.readString(dir.resolve("tab").resolve(n)),
+                        Files.readString(dir.resolve("run").resolve(n)),
+                        n);
             }
         }
         // the edits are in the programs: the tread differs from the sample's
-        JobRunner.run(JobXml.read(Path.of("samples/jobs/sole-men40.xml")), new OutputFolder(dir.resolve("plain")),
+        JobRunner.run(
+                JobXml.read(Path.of("samples/jobs/sole-men40.xml")),
+                new OutputFolder(dir.resolve("plain")),
                 ProgressMonitor.NONE);
         assertFalse(Files.readString(dir.resolve("plain/tread-40-right.ngc"))
                 .equals(Files.readString(dir.resolve("tab/tread-40-right.ngc"))));

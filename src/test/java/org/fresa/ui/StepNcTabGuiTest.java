@@ -25,22 +25,27 @@ class StepNcTabGuiTest extends WindowGuiTest {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
         window.tabbedPane("tabs").selectTab("STEP-NC");
-        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                org.fresa.post.MillingPost.LINUXCNC))));
-        Pause.pause(new Condition("the program is read and planned") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time").target().getText())
-                        .startsWith("Cycle time: this workingstep");
-            }
-        }, Timeout.timeout(60_000));
+        GuiActionRunner.execute(() -> model.setJob(
+                model.job().withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))));
+        Pause.pause(
+                new Condition("the program is read and planned") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time")
+                                        .target()
+                                        .getText())
+                                .startsWith("Cycle time: this workingstep");
+                    }
+                },
+                Timeout.timeout(60_000));
 
         window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
         shoot("stepnc-selected.png");
         // per layer of 15: a rapid to 1 mm above the layer, a helix entry and a full circle at its
         // floor, the layer's passes, the retract; the end is the last retract to the security plane
-        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile(
-                ".* of .*: move 362 of 362 \\(rapid\\), tool at \\(86, 70, 30\\) mm"));
+        window.label("stepnc-replay-text")
+                .requireText(java.util.regex.Pattern.compile(
+                        ".* of .*: move 362 of 362 \\(rapid\\), tool at \\(86, 70, 30\\) mm"));
         assertTrue(window.textBox("stepnc-details").text().contains("Cycle time of this workingstep"));
 
         // Alt+R focuses the replay slider; Home goes to the start, each Right arrow one step on
@@ -52,7 +57,8 @@ class StepNcTabGuiTest extends WindowGuiTest {
         slider.requireFocused();
         slider.pressAndReleaseKeys(KeyEvent.VK_HOME);
         assertEquals(0, value(slider));
-        window.label("stepnc-replay-text").requireText(java.util.regex.Pattern.compile("0\\.0 s of .*before the first move.*"));
+        window.label("stepnc-replay-text")
+                .requireText(java.util.regex.Pattern.compile("0\\.0 s of .*before the first move.*"));
         String toolAtStart = toolCircle();
         for (int i = 0; i < 70; i++) {
             slider.pressAndReleaseKeys(KeyEvent.VK_RIGHT);
@@ -84,49 +90,67 @@ class StepNcTabGuiTest extends WindowGuiTest {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
         Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
         window.tabbedPane("tabs").selectTab("STEP-NC");
-        GuiActionRunner.execute(() -> model.setJob(model.job().withStepnc(new JobSettings.StepNcSettings(stp,
-                org.fresa.post.MillingPost.LINUXCNC))));
+        GuiActionRunner.execute(() -> model.setJob(
+                model.job().withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))));
         waitForThePlan();
         window.comboBox("stepnc-paths").requireSelection("Fresa's paths");
         window.comboBox("stepnc-paths").selectItem("the 2016 robot thesis's points");
-        Pause.pause(new Condition("the job carries the thesis's paths") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> model.job().stepnc().orElseThrow().paths())
-                        == org.fresa.toolpath.PathConvention.THESIS;
-            }
-        }, Timeout.timeout(10_000));
+        Pause.pause(
+                new Condition("the job carries the thesis's paths") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(
+                                        () -> model.job().stepnc().orElseThrow().paths())
+                                == org.fresa.toolpath.PathConvention.THESIS;
+                    }
+                },
+                Timeout.timeout(10_000));
         waitForThePlan();
-        int moves = org.fresa.toolpath.ToolpathPlanner.plan(org.fresa.stepnc.StepNcReader.read(stp),
-                org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT
-                        .withPaths(org.fresa.toolpath.PathConvention.THESIS))
-                .toolpath().sections().stream().filter(x -> x.label().equals("WS FINISH POCKET1")).findFirst()
-                .orElseThrow().moves().size();
+        int moves = org.fresa.toolpath.ToolpathPlanner.plan(
+                        org.fresa.stepnc.StepNcReader.read(stp),
+                        org.fresa.geom.Tolerance.DEFAULT,
+                        org.fresa.toolpath.PlanningChoices.DEFAULT.withPaths(org.fresa.toolpath.PathConvention.THESIS))
+                .toolpath()
+                .sections()
+                .stream()
+                .filter(x -> x.label().equals("WS FINISH POCKET1"))
+                .findFirst()
+                .orElseThrow()
+                .moves()
+                .size();
         // planned again in the background: the workingstep shows the thesis's moves once it is done
         String want = "move " + moves + " of " + moves + " (rapid), tool at (0, 0, 30) mm";
-        Pause.pause(new Condition("the thesis's plan is shown") {
-            @Override
-            public boolean test() {
-                try {
-                    window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
-                } catch (RuntimeException | AssertionError e) {
-                    return false;
-                }
-                return GuiActionRunner.execute(() -> window.label("stepnc-replay-text").target().getText())
-                        .endsWith(want);
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition("the thesis's plan is shown") {
+                    @Override
+                    public boolean test() {
+                        try {
+                            window.tree("stepnc-tree").selectRow(row("WS FINISH POCKET1"));
+                        } catch (RuntimeException | AssertionError e) {
+                            return false;
+                        }
+                        return GuiActionRunner.execute(() -> window.label("stepnc-replay-text")
+                                        .target()
+                                        .getText())
+                                .endsWith(want);
+                    }
+                },
+                Timeout.timeout(60_000));
         shoot("stepnc-thesis-paths.png");
     }
 
     private void waitForThePlan() {
-        Pause.pause(new Condition("the program is read and planned") {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time").target().getText())
-                        .startsWith("Cycle time: this workingstep");
-            }
-        }, Timeout.timeout(60_000));
+        Pause.pause(
+                new Condition("the program is read and planned") {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(() -> window.label("stepnc-cycle-time")
+                                        .target()
+                                        .getText())
+                                .startsWith("Cycle time: this workingstep");
+                    }
+                },
+                Timeout.timeout(60_000));
     }
 
     private static int value(JSliderFixture slider) {
@@ -146,28 +170,33 @@ class StepNcTabGuiTest extends WindowGuiTest {
     }
 
     private PlotScene plotScene() {
-        PlotPanel p = window.robot().finder().find(window.target(),
-                new GenericTypeMatcher<>(PlotPanel.class, true) {
-                    @Override
-                    protected boolean isMatching(PlotPanel c) {
-                        return true;
-                    }
-                });
+        PlotPanel p = window.robot().finder().find(window.target(), new GenericTypeMatcher<>(PlotPanel.class, true) {
+            @Override
+            protected boolean isMatching(PlotPanel c) {
+                return true;
+            }
+        });
         return p.scene();
     }
 
     private String toolCircle() {
-        return GuiActionRunner.execute(() -> plotScene().layers().stream().filter(l -> l.name().equals("tool"))
-                .findFirst().orElseThrow().curves().get(0).toString());
+        return GuiActionRunner.execute(() -> plotScene().layers().stream()
+                .filter(l -> l.name().equals("tool"))
+                .findFirst()
+                .orElseThrow()
+                .curves()
+                .get(0)
+                .toString());
     }
 
     /** For looking at after the build: target/screenshots/stepnc-*.png. */
     private void shoot(String name) {
-        java.awt.image.BufferedImage img = GuiActionRunner.execute(
-                () -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
+        java.awt.image.BufferedImage img =
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target()));
         try {
             java.nio.file.Files.createDirectories(Path.of("target", "screenshots"));
-            javax.imageio.ImageIO.write(img, "png", Path.of("target", "screenshots", name).toFile());
+            javax.imageio.ImageIO.write(
+                    img, "png", Path.of("target", "screenshots", name).toFile());
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException(e);
         }

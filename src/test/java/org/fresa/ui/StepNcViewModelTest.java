@@ -35,7 +35,8 @@ class StepNcViewModelTest {
     void theTreeShowsWorkplansThenSkippedWorkingstepsAndNotes() throws Exception {
         StepNcViewModel.Node root = loaded("example2.stp").tree().orElseThrow();
         assertTrue(root.label().contains("3caras"));
-        List<String> top = root.children().stream().map(StepNcViewModel.Node::label).toList();
+        List<String> top =
+                root.children().stream().map(StepNcViewModel.Node::label).toList();
         assertEquals("Workplan 'Main workplan'", top.get(0));
         assertEquals("Skipped workingsteps (14)", top.get(1));
         StepNcViewModel.Node main = root.children().get(0);
@@ -47,8 +48,10 @@ class StepNcViewModelTest {
 
     @Test
     void unknownEntitiesAreVisibleInTheTree() throws Exception {
-        StepNcViewModel.Node root = loaded("iso14649-11-example1-explicit-toolpaths.stp").tree().orElseThrow();
-        assertTrue(root.children().stream().anyMatch(n -> n.label().startsWith("Entities not interpreted")),
+        StepNcViewModel.Node root =
+                loaded("iso14649-11-example1-explicit-toolpaths.stp").tree().orElseThrow();
+        assertTrue(
+                root.children().stream().anyMatch(n -> n.label().startsWith("Entities not interpreted")),
                 root.children().toString());
     }
 
@@ -87,7 +90,12 @@ class StepNcViewModelTest {
         assertAll(
                 () -> assertEquals("x (mm)", s.axes().horizontal()),
                 () -> assertEquals("z (mm)", s.axes().vertical()),
-                () -> assertEquals("z (mm)", org.fresa.chart.ToolpathChart.frame(s).getXYPlot().getRangeAxis().getLabel()));
+                () -> assertEquals(
+                        "z (mm)",
+                        org.fresa.chart.ToolpathChart.frame(s)
+                                .getXYPlot()
+                                .getRangeAxis()
+                                .getLabel()));
     }
 
     @Test
@@ -98,11 +106,16 @@ class StepNcViewModelTest {
         vm.planned(plan);
         MachiningWorkingstep ws = p.workingsteps().get(1);
         assertAll(
-                () -> assertEquals(plan.problems(), vm.problems().all().stream().map(WarningList.Warning::text).toList()),
-                () -> assertEquals(Optional.of(ws), vm.workingstepNamedIn("workingstep 'x' (#" + ws.instanceId()
-                        + "): no tool")),
-                () -> assertEquals(Optional.of(ws), vm.workingstepNamedIn("workingstep '" + ws.id()
-                        + "': read but not in the moves: depth")),
+                () -> assertEquals(
+                        plan.problems(),
+                        vm.problems().all().stream()
+                                .map(WarningList.Warning::text)
+                                .toList()),
+                () -> assertEquals(
+                        Optional.of(ws), vm.workingstepNamedIn("workingstep 'x' (#" + ws.instanceId() + "): no tool")),
+                () -> assertEquals(
+                        Optional.of(ws),
+                        vm.workingstepNamedIn("workingstep '" + ws.id() + "': read but not in the moves: depth")),
                 () -> assertEquals(Optional.empty(), vm.workingstepNamedIn("3 workingsteps: feed from the tool")));
     }
 
@@ -114,10 +127,17 @@ class StepNcViewModelTest {
         assertEquals("Top view (XY)", s.title());
         // 140 x 140 at (100, 100) with its orthogonal radius 10 at the corners, drawn as arcs
         List<Curve2> outline = s.layers().get(1).curves();
-        assertEquals(4, outline.stream().filter(c -> c instanceof Arc2 a && Math.abs(a.radius() - 10) < 1e-9).count());
+        assertEquals(
+                4,
+                outline.stream()
+                        .filter(c -> c instanceof Arc2 a && Math.abs(a.radius() - 10) < 1e-9)
+                        .count());
         Box2 b = outline.stream().map(Curve2::bounds).reduce(Box2::union).orElseThrow();
-        assertAll(() -> assertEquals(30.0, b.minX(), 1e-9), () -> assertEquals(170.0, b.maxX(), 1e-9),
-                () -> assertEquals(30.0, b.minY(), 1e-9), () -> assertEquals(170.0, b.maxY(), 1e-9));
+        assertAll(
+                () -> assertEquals(30.0, b.minX(), 1e-9),
+                () -> assertEquals(170.0, b.maxX(), 1e-9),
+                () -> assertEquals(30.0, b.minY(), 1e-9),
+                () -> assertEquals(170.0, b.maxY(), 1e-9));
         double length = outline.stream().mapToDouble(Curve2::length).sum();
         assertEquals(4 * 120 + 2 * Math.PI * 10, length, 1e-9);
     }
@@ -129,7 +149,9 @@ class StepNcViewModelTest {
         StepNcViewModel vm = loaded(name);
         StepNcProgram p = vm.program().orElseThrow();
         vm.planned(ToolpathPlanner.plan(p, Tolerance.DEFAULT));
-        vm.select(p.workingsteps().stream().filter(w -> w.id().equals(workingstep)).findFirst());
+        vm.select(p.workingsteps().stream()
+                .filter(w -> w.id().equals(workingstep))
+                .findFirst());
         return vm;
     }
 
@@ -148,7 +170,8 @@ class StepNcViewModelTest {
         CycleTime t = planned(EX1, FACE).workingstepTime().orElseThrow();
         double feedS = 2 * (6 * 147 + 5 * 16.4) / 2400.0 * 60 + 27.5 / 1200.0 * 60;
         double rapidS = 139.5 / 10000.0 * 60;
-        assertAll(() -> assertEquals(2 * (6 * 147 + 5 * 16.4) + 27.5, t.feedLengthMm(), 1e-9),
+        assertAll(
+                () -> assertEquals(2 * (6 * 147 + 5 * 16.4) + 27.5, t.feedLengthMm(), 1e-9),
                 () -> assertEquals(139.5, t.rapidLengthMm(), 1e-9),
                 () -> assertEquals(feedS, t.feedSeconds(), 1e-9),
                 () -> assertEquals(rapidS, t.rapidSeconds(), 1e-9),
@@ -170,7 +193,8 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, DRILL);
         double drill = (12 + TIP) / 900.0 * 60 + 21 / 1800.0 * 60 + 8 / 1350.0 * 60 + (81 + TIP) / 10000.0 * 60;
         assertEquals(drill, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
-        vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS REAM HOLE1"))
+        vm.select(vm.program().orElseThrow().workingsteps().stream()
+                .filter(w -> w.id().equals("WS REAM HOLE1"))
                 .findFirst());
         double ream = 82 / 1800.0 * 60 + 40 / 10000.0 * 60;
         assertEquals(ream, vm.workingstepTime().orElseThrow().seconds(), 1e-9);
@@ -183,10 +207,16 @@ class StepNcViewModelTest {
         assertEquals(sum, total, 1e-9);
         assertTrue(total > 50.412 + drill + ream, "pockets take time too: " + total);
         List<String> lines = vm.cycleTime();
-        assertEquals("Cycle time of this workingstep: " + StepNcViewModel.seconds(vm.workingstepTime().orElseThrow()
-                .seconds()) + " (feed", lines.get(0).substring(0, lines.get(0).indexOf("(feed") + 5));
-        assertTrue(lines.get(1).startsWith("Cycle time of the program (5 of 5 workingsteps): "
-                + StepNcViewModel.seconds(total)), lines.get(1));
+        assertEquals(
+                "Cycle time of this workingstep: "
+                        + StepNcViewModel.seconds(
+                                vm.workingstepTime().orElseThrow().seconds()) + " (feed",
+                lines.get(0).substring(0, lines.get(0).indexOf("(feed") + 5));
+        assertTrue(
+                lines.get(1)
+                        .startsWith(
+                                "Cycle time of the program (5 of 5 workingsteps): " + StepNcViewModel.seconds(total)),
+                lines.get(1));
         assertTrue(lines.get(2).contains("rapids at 10000 mm/min"), lines.get(2));
     }
 
@@ -201,7 +231,8 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, FACE);
         // the face's top is z 5: layers at z 2.5 and 0
         assertEquals(List.of(new StepNcViewModel.Layer(1, 2.5), new StepNcViewModel.Layer(2, 5.0)), vm.layers());
-        assertEquals(List.of("All 2 layers", "Layer 1 of 2: 2.5 mm deep", "Layer 2 of 2: 5 mm deep"), vm.layerChoices());
+        assertEquals(
+                List.of("All 2 layers", "Layer 1 of 2: 2.5 mm deep", "Layer 2 of 2: 5 mm deep"), vm.layerChoices());
         assertEquals(29, vm.shown().orElseThrow().moves().size());
         vm.selectLayer(1);
         StepNcViewModel.Shown one = vm.shown().orElseThrow();
@@ -252,14 +283,18 @@ class StepNcViewModelTest {
         StepNcViewModel.ReplayPoint half = vm.replayPoint().orElseThrow();
         double total = (12 + TIP) / 900.0 * 60 + 21 / 1800.0 * 60 + 8 / 1350.0 * 60 + (81 + TIP) / 10000.0 * 60;
         double intoFullFeed = total / 2 - 0.12 - (12 + TIP) / 15;
-        assertAll(() -> assertEquals(4, half.moveIndex()),
+        assertAll(
+                () -> assertEquals(4, half.moveIndex()),
                 () -> assertEquals(total / 2, half.timeS(), 1e-9),
                 () -> assertEquals(total, half.totalS(), 1e-9),
                 () -> assertEquals(20, half.position().x(), EPS),
                 () -> assertEquals(60, half.position().y(), EPS),
-                () -> assertEquals(-(2 + TIP) - intoFullFeed * 30, half.position().z(), 1e-9),
+                () -> assertEquals(
+                        -(2 + TIP) - intoFullFeed * 30, half.position().z(), 1e-9),
                 () -> assertEquals(-10.0641, half.position().z(), 1e-4));
-        assertTrue(vm.replayText().startsWith("1.4 s of 2.8 s: move 5 of 9 (feed 1800 mm/min), tool at (20, 60, -10.0641) mm"),
+        assertTrue(
+                vm.replayText()
+                        .startsWith("1.4 s of 2.8 s: move 5 of 9 (feed 1800 mm/min), tool at (20, 60, -10.0641) mm"),
                 vm.replayText());
         vm.setReplay(0);
         assertEquals(new Vec3(20, 60, 30), vm.replayPoint().orElseThrow().position());
@@ -274,16 +309,22 @@ class StepNcViewModelTest {
     @Test
     void theReplayWaitsAtADwellAndNamesIt() {
         Vec3 bottom = new Vec3(0, 0, -10);
-        List<Move> moves = List.of(new Move.Linear(bottom, 600), new Move.Dwell(bottom, 2),
-                new Move.SpindleStop(bottom), new Move.Rapid(new Vec3(0, 0, 0)));
+        List<Move> moves = List.of(
+                new Move.Linear(bottom, 600),
+                new Move.Dwell(bottom, 2),
+                new Move.SpindleStop(bottom),
+                new Move.Rapid(new Vec3(0, 0, 0)));
         StepNcViewModel.Shown sh = new StepNcViewModel.Shown(Vec3.ZERO, moves);
         // 1 s of feed, 2 s of dwell, 0.06 s of rapid
         StepNcViewModel.ReplayPoint r = StepNcViewModel.replayAt(sh, 2.0 / 3.06);
-        assertAll(() -> assertEquals(1, r.moveIndex()), () -> assertEquals(bottom, r.position()),
+        assertAll(
+                () -> assertEquals(1, r.moveIndex()),
+                () -> assertEquals(bottom, r.position()),
                 () -> assertEquals(3.06, r.totalS(), 1e-12));
         assertEquals("dwell 2 s", StepNcViewModel.kindText(moves.get(1)));
         assertEquals("spindle stop", StepNcViewModel.kindText(moves.get(2)));
-        assertEquals("spindle 800 rpm counter-clockwise",
+        assertEquals(
+                "spindle 800 rpm counter-clockwise",
                 StepNcViewModel.kindText(new Move.SpindleStart(bottom, 800, false)));
     }
 
@@ -328,15 +369,19 @@ class StepNcViewModelTest {
         assertEquals(PlotScene.Style.FEED, s.layers().get(2).style());
         List<Curve2> feeds = s.layers().get(2).curves();
         // the corner arcs (pocket corner radius 10 - tool radius 9 = 1) are drawn as arcs
-        assertTrue(feeds.stream().anyMatch(c -> c instanceof Arc2 a && Math.abs(a.radius() - 1) < 1e-9), "no corner arc");
+        assertTrue(
+                feeds.stream().anyMatch(c -> c instanceof Arc2 a && Math.abs(a.radius() - 1) < 1e-9), "no corner arc");
         assertTrue(s.layers().get(1).curves().stream().allMatch(c -> c instanceof Segment2));
         // the travelled part is shorter than all feeds, and the tool is a D18 circle at the replay point
         double all = feeds.stream().mapToDouble(Curve2::length).sum();
-        double done = s.layers().get(3).curves().stream().mapToDouble(Curve2::length).sum();
+        double done =
+                s.layers().get(3).curves().stream().mapToDouble(Curve2::length).sum();
         assertTrue(done > 0 && done < all, done + " of " + all);
         Arc2 tool = (Arc2) s.layers().get(4).curves().get(0);
         Vec3 at = vm.replayPoint().orElseThrow().position();
-        assertAll(() -> assertEquals(9, tool.radius(), 1e-9), () -> assertEquals(at.x(), tool.center().x(), 1e-9),
+        assertAll(
+                () -> assertEquals(9, tool.radius(), 1e-9),
+                () -> assertEquals(at.x(), tool.center().x(), 1e-9),
                 () -> assertEquals(at.y(), tool.center().y(), 1e-9));
         assertTrue(s.title().endsWith(": WS FINISH POCKET1"), s.title());
     }
@@ -350,7 +395,10 @@ class StepNcViewModelTest {
         vm.select(Optional.of(p.workingsteps().get(11)));
         PlotScene s = vm.plot();
         assertEquals("Front view (XZ)", s.title().substring(0, "Front view (XZ)".length()));
-        List<Arc2> arcs = s.layers().get(3).curves().stream().filter(c -> c instanceof Arc2).map(c -> (Arc2) c).toList();
+        List<Arc2> arcs = s.layers().get(3).curves().stream()
+                .filter(c -> c instanceof Arc2)
+                .map(c -> (Arc2) c)
+                .toList();
         assertTrue(!arcs.isEmpty(), "no arcs in the front view");
         for (Arc2 a : arcs) {
             assertEquals(60, a.center().x(), 1e-6);
@@ -364,7 +412,8 @@ class StepNcViewModelTest {
         StepNcViewModel vm = planned(EX1, FACE);
         vm.selectLayer(2);
         vm.setReplay(3);
-        vm.select(vm.program().orElseThrow().workingsteps().stream().filter(w -> w.id().equals("WS ROUGH POCKET1"))
+        vm.select(vm.program().orElseThrow().workingsteps().stream()
+                .filter(w -> w.id().equals("WS ROUGH POCKET1"))
                 .findFirst());
         assertEquals(0, vm.layer());
         assertEquals(StepNcViewModel.REPLAY_STEPS, vm.replay());
@@ -376,16 +425,25 @@ class StepNcViewModelTest {
     void theTabsPathChoiceGoesIntoTheJobKeepingItsOtherStepNcSettings() {
         Path file = Path.of("samples/stepnc/example2.stp");
         org.fresa.job.Job job = org.fresa.job.Job.empty(org.fresa.job.JobTask.ofId("robot"))
-                .withStepnc(new org.fresa.job.JobSettings.StepNcSettings(file, org.fresa.post.MillingPost.SIEMENS_840D, true, 2));
+                .withStepnc(new org.fresa.job.JobSettings.StepNcSettings(
+                        file, org.fresa.post.MillingPost.SIEMENS_840D, true, 2));
         var s = StepNcViewModel.settingsFor(job, file, org.fresa.toolpath.PathConvention.THESIS);
-        assertEquals(new org.fresa.job.JobSettings.StepNcSettings(file, org.fresa.post.MillingPost.SIEMENS_840D, true, 2,
-                org.fresa.pocket.EntryRule.DEFAULT, org.fresa.toolpath.PathConvention.THESIS), s);
+        assertEquals(
+                new org.fresa.job.JobSettings.StepNcSettings(
+                        file,
+                        org.fresa.post.MillingPost.SIEMENS_840D,
+                        true,
+                        2,
+                        org.fresa.pocket.EntryRule.DEFAULT,
+                        org.fresa.toolpath.PathConvention.THESIS),
+                s);
         assertEquals(org.fresa.toolpath.PathConvention.THESIS, s.choices().paths());
         // another file: the job's post, the default choices, the paths shown
         Path other = Path.of("samples/stepnc/iso14649-11-example1.stp");
         var o = StepNcViewModel.settingsFor(job, other, org.fresa.toolpath.PathConvention.FRESA);
         assertEquals(new org.fresa.job.JobSettings.StepNcSettings(other, org.fresa.post.MillingPost.SIEMENS_840D), o);
-        assertEquals(List.of("Fresa's paths", "the 2016 robot thesis's points"),
+        assertEquals(
+                List.of("Fresa's paths", "the 2016 robot thesis's points"),
                 StepNcViewModel.PATHS.stream().map(StepNcViewModel::pathsLabel).toList());
     }
 }

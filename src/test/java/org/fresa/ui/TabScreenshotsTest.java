@@ -44,7 +44,10 @@ class TabScreenshotsTest {
                 SwingUtilities.invokeAndWait(() -> w.tabs().setSelectedIndex(index));
                 Thread.sleep(300);
                 SwingUtilities.invokeAndWait(() -> img[0] = paint(w));
-                String name = w.tabs().getTitleAt(i).toLowerCase(java.util.Locale.ROOT).replaceAll("[^a-z0-9]+", "-");
+                String name = w.tabs()
+                        .getTitleAt(i)
+                        .toLowerCase(java.util.Locale.ROOT)
+                        .replaceAll("[^a-z0-9]+", "-");
                 Path file = out.resolve(String.format(java.util.Locale.ROOT, "%02d-%s.png", i + 1, name));
                 ImageIO.write(img[0], "png", file.toFile());
                 assertTrue(Files.size(file) > 1000, file.toString());

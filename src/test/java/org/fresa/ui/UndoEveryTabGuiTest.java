@@ -27,14 +27,18 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
     // the robot presses modifier keys given by the old masks
     @SuppressWarnings("deprecation")
     private static final int CTRL = java.awt.event.InputEvent.CTRL_MASK;
+
     @SuppressWarnings("deprecation")
     private static final int SHIFT = java.awt.event.InputEvent.SHIFT_MASK;
+
     private static final Path JOBS = Path.of("samples/jobs").toAbsolutePath();
 
     @Test
     void stepNc() {
         open("example2-irb140.xml");
-        waitFor("example 2 is read", () -> model().job().stepnc().isPresent() && treeText().contains("example2"));
+        waitFor(
+                "example 2 is read",
+                () -> model().job().stepnc().isPresent() && treeText().contains("example2"));
         select("STEP-NC");
         undoAndRedoRestore(() -> {
             window.button("stepnc-open").click();
@@ -48,13 +52,19 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         // after the last redo the tab shows the file the job has
         String name = model().job().stepnc().orElseThrow().file().getFileName().toString();
         assertEquals("iso14649-11-example1.stp", name);
-        waitFor("the tab shows the job's file", () -> window.robot().finder().findAll(window.target(),
-                new GenericTypeMatcher<>(javax.swing.JLabel.class, true) {
-                    @Override
-                    protected boolean isMatching(javax.swing.JLabel l) {
-                        return l.getText() != null && l.getText().startsWith(name + ": ");
-                    }
-                }).size() == 1);
+        waitFor(
+                "the tab shows the job's file",
+                () -> window.robot()
+                                .finder()
+                                .findAll(window.target(), new GenericTypeMatcher<>(javax.swing.JLabel.class, true) {
+                                    @Override
+                                    protected boolean isMatching(javax.swing.JLabel l) {
+                                        return l.getText() != null
+                                                && l.getText().startsWith(name + ": ");
+                                    }
+                                })
+                                .size()
+                        == 1);
     }
 
     @Test
@@ -71,7 +81,8 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         open("example2-irb140.xml");
         select("Robot");
         String other = GuiActionRunner.execute(() -> {
-            javax.swing.JComboBox<?> c = (javax.swing.JComboBox<?>) window.comboBox("robot-choice").target();
+            javax.swing.JComboBox<?> c =
+                    (javax.swing.JComboBox<?>) window.comboBox("robot-choice").target();
             for (int i = 0; i < c.getItemCount(); i++) {
                 if (!"irb140".equals(c.getItemAt(i))) {
                     return (String) c.getItemAt(i);
@@ -98,10 +109,12 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         open("grade-sole40.xml");
         select("Grading");
         waitFor("Grade may run", () -> window.button("grading-grade").target().isEnabled());
-        undoAndRedoRestore(() -> window.textBox(GradingViewModel.SIZES).deleteText().enterText("38-42"));
+        undoAndRedoRestore(
+                () -> window.textBox(GradingViewModel.SIZES).deleteText().enterText("38-42"));
         assertEquals("38-42", model().job().grading().orElseThrow().sizes());
         undoAndRedoRestore(() -> window.checkBox("grading-half-sizes").click());
-        undoAndRedoRestore(() -> window.comboBox(GradingViewModel.SHRINKAGE_MODE).selectItem("additive"));
+        undoAndRedoRestore(
+                () -> window.comboBox(GradingViewModel.SHRINKAGE_MODE).selectItem("additive"));
     }
 
     @Test
@@ -109,7 +122,9 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         open("sole-men40.xml");
         select("Sole");
         window.button("sole-load").click();
-        waitFor("the sole is planned", () -> window.comboBox("sole-designs").target().getItemCount() > 1);
+        waitFor(
+                "the sole is planned",
+                () -> window.comboBox("sole-designs").target().getItemCount() > 1);
         waitUntilNoTaskRuns();
         window.list("sole-library").selectItem("SUB4");
         undoAndRedoRestore(() -> window.button("sole-place").click());
@@ -119,22 +134,25 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
     void cutting() {
         open("cut-plate.xml");
         select("Cutting");
-        undoAndRedoRestore(() -> window.textBox(CuttingViewModel.KERF).deleteText().enterText("1.5"));
+        undoAndRedoRestore(
+                () -> window.textBox(CuttingViewModel.KERF).deleteText().enterText("1.5"));
         assertEquals(1.5, model().job().cutting().orElseThrow().kerfMm());
         undoAndRedoRestore(() -> window.comboBox("cutting-compensation").selectItem("controller"));
         undoAndRedoRestore(() -> window.checkBox(new GenericTypeMatcher<>(javax.swing.JCheckBox.class, true) {
-            @Override
-            protected boolean isMatching(javax.swing.JCheckBox b) {
-                return b.getText().startsWith("Rapids around");
-            }
-        }).click());
+                    @Override
+                    protected boolean isMatching(javax.swing.JCheckBox b) {
+                        return b.getText().startsWith("Rapids around");
+                    }
+                })
+                .click());
     }
 
     @Test
     void theRunSetOfTheJobMenu() {
         open("example2-irb140.xml");
         undoAndRedoRestore(() -> window.menuItem("run-stepnc").click());
-        assertEquals(java.util.List.of(JobTask.STEPNC, JobTask.ROBOT), model().job().runs());
+        assertEquals(
+                java.util.List.of(JobTask.STEPNC, JobTask.ROBOT), model().job().runs());
     }
 
     /**
@@ -153,7 +171,9 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         press(after, KeyEvent.VK_Y, CTRL);
         press(before, KeyEvent.VK_Z, CTRL);
         press(after, KeyEvent.VK_Z, CTRL | SHIFT);
-        org.junit.jupiter.api.Assertions.assertTrue(GuiActionRunner.execute(() -> ((MainWindow) window.target()).getTitle()).endsWith(" *"));
+        org.junit.jupiter.api.Assertions.assertTrue(
+                GuiActionRunner.execute(() -> ((MainWindow) window.target()).getTitle())
+                        .endsWith(" *"));
     }
 
     /**
@@ -164,15 +184,18 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
         Job was = model().job();
         regainFocus();
         for (int attempt = 0; attempt < 3; attempt++) {
-            window.pressAndReleaseKey(KeyPressInfo.keyCode(key).modifiers(modifiers == (CTRL | SHIFT)
-                    ? new int[] {CTRL, SHIFT} : new int[] {modifiers}));
+            window.pressAndReleaseKey(KeyPressInfo.keyCode(key)
+                    .modifiers(modifiers == (CTRL | SHIFT) ? new int[] {CTRL, SHIFT} : new int[] {modifiers}));
             if (waitQuietly(() -> !model().job().equals(was), 5_000)) {
                 break;
             }
         }
         waitUntilNoTaskRuns();
-        assertEquals(expected, model().job(), (modifiers == (CTRL | SHIFT) ? "Ctrl+Shift" : modifiers == CTRL ? "Ctrl" : "Shift") + "+"
-                + KeyEvent.getKeyText(key));
+        assertEquals(
+                expected,
+                model().job(),
+                (modifiers == (CTRL | SHIFT) ? "Ctrl+Shift" : modifiers == CTRL ? "Ctrl" : "Shift") + "+"
+                        + KeyEvent.getKeyText(key));
     }
 
     /**
@@ -180,20 +203,25 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
      * may leave no component with the keyboard focus: a click on a field of the tab gives it back.
      */
     private void regainFocus() {
-        if (GuiActionRunner.execute(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager()
-                .getFocusOwner() != null)) {
+        if (GuiActionRunner.execute(() ->
+                java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() != null)) {
             return;
         }
-        java.util.Collection<java.awt.Component> found = window.robot().finder().findAll(window.target(),
-                new GenericTypeMatcher<java.awt.Component>(java.awt.Component.class, true) {
+        java.util.Collection<java.awt.Component> found = window.robot()
+                .finder()
+                .findAll(window.target(), new GenericTypeMatcher<java.awt.Component>(java.awt.Component.class, true) {
                     @Override
                     protected boolean isMatching(java.awt.Component c) {
-                        return c instanceof javax.swing.JTree || c instanceof javax.swing.text.JTextComponent
-                                && ((javax.swing.text.JTextComponent) c).isEditable();
+                        return c instanceof javax.swing.JTree
+                                || c instanceof javax.swing.text.JTextComponent
+                                        && ((javax.swing.text.JTextComponent) c).isEditable();
                     }
                 });
         window.robot().click(found.iterator().next());
-        waitQuietly(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() != null,
+        waitQuietly(
+                () -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager()
+                                .getFocusOwner()
+                        != null,
                 5_000);
     }
 
@@ -214,13 +242,16 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
     }
 
     private boolean showing(String name) {
-        return window.robot().finder().findAll(new GenericTypeMatcher<javax.swing.JComponent>(
-                javax.swing.JComponent.class, true) {
-            @Override
-            protected boolean isMatching(javax.swing.JComponent c) {
-                return name.equals(c.getName());
-            }
-        }).size() == 1;
+        return window.robot()
+                        .finder()
+                        .findAll(new GenericTypeMatcher<javax.swing.JComponent>(javax.swing.JComponent.class, true) {
+                            @Override
+                            protected boolean isMatching(javax.swing.JComponent c) {
+                                return name.equals(c.getName());
+                            }
+                        })
+                        .size()
+                == 1;
     }
 
     private MainViewModel model() {
@@ -234,28 +265,34 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
 
     private String treeText() {
         return GuiActionRunner.execute(() -> {
-            javax.swing.JTree t = window.robot().finder().findByName(window.target(), "stepnc-tree",
-                    javax.swing.JTree.class, false);
+            javax.swing.JTree t =
+                    window.robot().finder().findByName(window.target(), "stepnc-tree", javax.swing.JTree.class, false);
             return String.valueOf(t.getModel().getRoot());
         });
     }
 
     private void waitFor(String what, BooleanSupplier test) {
-        Pause.pause(new Condition(what) {
-            @Override
-            public boolean test() {
-                return GuiActionRunner.execute(test::getAsBoolean);
-            }
-        }, Timeout.timeout(120_000));
+        Pause.pause(
+                new Condition(what) {
+                    @Override
+                    public boolean test() {
+                        return GuiActionRunner.execute(test::getAsBoolean);
+                    }
+                },
+                Timeout.timeout(120_000));
     }
 
     private void waitUntilNoTaskRuns() {
-        waitFor("no task is running", () -> window.robot().finder().findAll(new GenericTypeMatcher<>(
-                javax.swing.JProgressBar.class, false) {
-            @Override
-            protected boolean isMatching(javax.swing.JProgressBar b) {
-                return b.isShowing();
-            }
-        }).isEmpty());
+        waitFor(
+                "no task is running",
+                () -> window.robot()
+                        .finder()
+                        .findAll(new GenericTypeMatcher<>(javax.swing.JProgressBar.class, false) {
+                            @Override
+                            protected boolean isMatching(javax.swing.JProgressBar b) {
+                                return b.isShowing();
+                            }
+                        })
+                        .isEmpty());
     }
 }

@@ -23,8 +23,9 @@ class UserGuideTest {
                 () -> assertTrue(html.contains("<b>Fit</b>"), "the fit button"),
                 () -> assertTrue(html.contains("<td>F1</td>"), "the keys table"),
                 () -> {
-                    for (String tab : new String[] {"STEP-NC", "Position", "Robot", "Pocket", "Cutting", "Grading",
-                        "Sole", "Output"}) {
+                    for (String tab : new String[] {
+                        "STEP-NC", "Position", "Robot", "Pocket", "Cutting", "Grading", "Sole", "Output"
+                    }) {
                         assertTrue(html.contains("<b>" + tab + "</b> (Alt+"), tab);
                     }
                 });

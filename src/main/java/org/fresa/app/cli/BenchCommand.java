@@ -5,9 +5,9 @@ import org.fresa.job.Benchmarks;
 import org.fresa.job.Json;
 import org.fresa.job.TaskOutcome;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa bench [--json]}: short versions of the performance benchmarks. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Run short benchmarks and print the figures.")
@@ -24,8 +24,11 @@ final class BenchCommand implements Callable<Integer> {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), false, progress -> {
             java.nio.file.Path jar = null;
             try {
-                java.nio.file.Path self = java.nio.file.Path.of(BenchCommand.class.getProtectionDomain().getCodeSource()
-                        .getLocation().toURI());
+                java.nio.file.Path self = java.nio.file.Path.of(BenchCommand.class
+                        .getProtectionDomain()
+                        .getCodeSource()
+                        .getLocation()
+                        .toURI());
                 jar = self.toString().endsWith(".jar") ? self : null;
             } catch (java.net.URISyntaxException | SecurityException e) {
                 jar = null;

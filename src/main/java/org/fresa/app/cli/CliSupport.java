@@ -22,8 +22,7 @@ public final class CliSupport {
     public static final int EXIT_NOT_DOABLE = 1;
     public static final int EXIT_BAD_INPUT = 2;
 
-    private CliSupport() {
-    }
+    private CliSupport() {}
 
     /** A command's work: reads its input, does the job, writes its files. */
     @FunctionalInterface

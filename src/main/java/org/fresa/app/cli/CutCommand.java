@@ -12,13 +12,16 @@ import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.SettingRanges.Cutting;
 import org.fresa.post.CuttingPost;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa cut DRAWING.dxf --out FILE [cutting options] [--post NAME] [--json]}. */
-@Command(name = "cut", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(
+        name = "cut",
+        mixinStandardHelpOptions = true,
+        sortOptions = false,
         description = "Sheet cutting path (plasma, laser, waterjet) from a DXF drawing.")
 final class CutCommand implements Callable<Integer> {
 
@@ -48,7 +51,11 @@ final class CutCommand implements Callable<Integer> {
     @Option(names = "--lead", paramLabel = "arc|line", description = "lead shape")
     LeadShape lead = DEFAULTS.lead();
 
-    @Option(names = "--tolerance", paramLabel = "T", description = "widest gap closed between the ends of an outline, in drawing units (default 0.05 mm); each gap closed is listed")
+    @Option(
+            names = "--tolerance",
+            paramLabel = "T",
+            description =
+                    "widest gap closed between the ends of an outline, in drawing units (default 0.05 mm); each gap closed is listed")
     Double tolerance;
 
     @Option(names = "--units", paramLabel = "mm|inch|auto", description = "drawing units; auto reads $INSUNITS")
@@ -57,22 +64,30 @@ final class CutCommand implements Callable<Integer> {
     @Option(names = "--paper-mode", description = "the 2010 paper's rules (largest contour outside, no lead-ins)")
     boolean paperMode;
 
-    @Option(names = "--compensation", paramLabel = "software|controller",
+    @Option(
+            names = "--compensation",
+            paramLabel = "software|controller",
             description = "software: the path is offset by W/2; controller: the drawn contour with G41/G42 (D = W)")
     KerfCompensation compensation = DEFAULTS.compensation();
 
-    @Option(names = "--outer-direction", paramLabel = "cw|ccw|process",
+    @Option(
+            names = "--outer-direction",
+            paramLabel = "cw|ccw|process",
             description = "sense of outer contours; process: the process's default (clockwise)")
     CutSense outerDirection = DEFAULTS.outerDirection();
 
-    @Option(names = "--hole-direction", paramLabel = "cw|ccw|process",
+    @Option(
+            names = "--hole-direction",
+            paramLabel = "cw|ccw|process",
             description = "sense of holes; process: the opposite of the outer contours")
     CutSense holeDirection = DEFAULTS.holeDirection();
 
     @Option(names = "--overcut", paramLabel = "LEN", description = "run past the start of each cut (mm)")
     double overcutMm = DEFAULTS.overcutMm();
 
-    @Option(names = "--no-avoid-cut-parts", negatable = false,
+    @Option(
+            names = "--no-avoid-cut-parts",
+            negatable = false,
             description = "rapid moves go straight, even over parts already cut free")
     boolean straightRapids;
 
@@ -85,10 +100,22 @@ final class CutCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
-            CuttingSettings s = new CuttingSettings(drawing, Cutting.KERF.check(kerfMm),
-                    process, Cutting.LEAD_IN.check(leadInMm), Cutting.LEAD_OUT.check(leadOutMm), lead,
-                    tolerance == null ? DEFAULTS.toleranceMm() : Cutting.TOLERANCE.check(tolerance), units, paperMode, post, compensation,
-                    outerDirection, holeDirection, Cutting.OVERCUT.check(overcutMm), !straightRapids);
+            CuttingSettings s = new CuttingSettings(
+                    drawing,
+                    Cutting.KERF.check(kerfMm),
+                    process,
+                    Cutting.LEAD_IN.check(leadInMm),
+                    Cutting.LEAD_OUT.check(leadOutMm),
+                    lead,
+                    tolerance == null ? DEFAULTS.toleranceMm() : Cutting.TOLERANCE.check(tolerance),
+                    units,
+                    paperMode,
+                    post,
+                    compensation,
+                    outerDirection,
+                    holeDirection,
+                    Cutting.OVERCUT.check(overcutMm),
+                    !straightRapids);
             return CuttingService.run(s, CliSupport.outFile(out), tolerance != null, progress);
         });
     }

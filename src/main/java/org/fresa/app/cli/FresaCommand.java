@@ -7,13 +7,21 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /** The top-level command: {@code fresa [COMMAND]}; without a command it opens the desktop application. */
-@Command(name = "fresa", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+@Command(
+        name = "fresa",
+        mixinStandardHelpOptions = true,
+        versionProvider = VersionProvider.class,
         sortOptions = false,
-        description = {"Fresa: CAM for process planners. STEP-NC to robot, pocket milling, sheet cutting, shoe soles.",
-                "Without a command, opens the desktop application."},
+        description = {
+            "Fresa: CAM for process planners. STEP-NC to robot, pocket milling, sheet cutting, shoe soles.",
+            "Without a command, opens the desktop application."
+        },
         exitCodeListHeading = "%nExit status:%n",
-        exitCodeList = {"0:done", "1:the input was read but the job cannot be done as asked (reason on stderr)",
-                "2:bad input or usage (file, line and what was expected on stderr)"})
+        exitCodeList = {
+            "0:done",
+            "1:the input was read but the job cannot be done as asked (reason on stderr)",
+            "2:bad input or usage (file, line and what was expected on stderr)"
+        })
 public final class FresaCommand implements Callable<Integer> {
 
     /**
@@ -22,9 +30,20 @@ public final class FresaCommand implements Callable<Integer> {
      * which in a fresh JVM cost more than a tenth of a second, so a command line that names one
      * command gets only that one (help, version and unknown names get them all).
      */
-    static final List<Class<?>> COMMANDS = List.of(GuiCommand.class, RunCommand.class, StepncCommand.class,
-            ToolpathCommand.class, RobotCommand.class, PocketCommand.class, CutCommand.class, GradeCommand.class,
-            SoleCommand.class, IkCommand.class, RobotsCommand.class, PostsCommand.class, BenchCommand.class);
+    static final List<Class<?>> COMMANDS = List.of(
+            GuiCommand.class,
+            RunCommand.class,
+            StepncCommand.class,
+            ToolpathCommand.class,
+            RobotCommand.class,
+            PocketCommand.class,
+            CutCommand.class,
+            GradeCommand.class,
+            SoleCommand.class,
+            IkCommand.class,
+            RobotsCommand.class,
+            PostsCommand.class,
+            BenchCommand.class);
 
     /** Returned when the desktop application was started and the JVM must stay up. */
     public static final int KEEP_RUNNING = -1;

@@ -6,22 +6,25 @@ import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.ArcMode;
+import org.fresa.grading.Coordination;
 import org.fresa.grading.ShrinkageMode;
 import org.fresa.grading.SizeSystem;
-import org.fresa.grading.Coordination;
 import org.fresa.job.GradingService;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.SettingRange;
 import org.fresa.job.SettingRanges.Grading;
 import org.fresa.model.CamInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa grade OUTLINE --out DIR [grading options] [--json]}. */
-@Command(name = "grade", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(
+        name = "grade",
+        mixinStandardHelpOptions = true,
+        sortOptions = false,
         description = "A sole outline graded over a range of shoe sizes.")
 final class GradeCommand implements Callable<Integer> {
 
@@ -58,26 +61,37 @@ final class GradeCommand implements Callable<Integer> {
     @Option(names = "--shrinkage", paramLabel = "S", description = "material shrinkage (fraction)")
     double shrinkage = GradingSettings.DEFAULTS.shrinkage();
 
-    @Option(names = "--shrinkage-mode", paramLabel = "MODE",
+    @Option(
+            names = "--shrinkage-mode",
+            paramLabel = "MODE",
             description = "additive (the thesis) or multiplicative (default)")
     ShrinkageMode shrinkageMode = GradingSettings.DEFAULTS.shrinkageMode();
 
-    @Option(names = "--arcs", paramLabel = "MODE", defaultValue = "biarc",
+    @Option(
+            names = "--arcs",
+            paramLabel = "MODE",
+            defaultValue = "biarc",
             description = "graded arcs as biarc (within 0.005 mm of the exact ellipse, default) or three-point "
                     + "(the thesis's circle through the graded start, middle and end)")
     String arcs;
 
-    @Option(names = "--length-axis", paramLabel = "DEG",
+    @Option(
+            names = "--length-axis",
+            paramLabel = "DEG",
             description = "direction of the length axis, heel to toe, in degrees from +x (default: the outline's "
                     + "longer extent)")
     Double lengthAxisDeg;
 
-    @Option(names = "--coordination", paramLabel = "MM",
+    @Option(
+            names = "--coordination",
+            paramLabel = "MM",
             description = "one heel per group of sizes: points up to MM from the origin along the length axis "
                     + "grade as the group's middle size (the thesis's coordination; implies three-point arcs)")
     Double coordinationMm;
 
-    @Option(names = "--heel-group", paramLabel = "N",
+    @Option(
+            names = "--heel-group",
+            paramLabel = "N",
             description = "sizes per heel with --coordination (default ${DEFAULT-VALUE})")
     int heelGroup = org.fresa.job.JobSettings.HeelCoordination.DEFAULT_GROUP_SIZE;
 
@@ -87,16 +101,27 @@ final class GradeCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
-            GradingSettings s = new GradingSettings(outline.toAbsolutePath(), Grading.BASE_SIZE.check(baseSize), sizes,
-                    halfSizes, system, optional(Grading.LENGTH_STEP, lengthStepMm),
-                    optional(Grading.WIDTH_STEP, widthStepMm), origin(), Grading.SHRINKAGE.check(shrinkage),
+            GradingSettings s = new GradingSettings(
+                    outline.toAbsolutePath(),
+                    Grading.BASE_SIZE.check(baseSize),
+                    sizes,
+                    halfSizes,
+                    system,
+                    optional(Grading.LENGTH_STEP, lengthStepMm),
+                    optional(Grading.WIDTH_STEP, widthStepMm),
+                    origin(),
+                    Grading.SHRINKAGE.check(shrinkage),
                     shrinkageMode);
             OptionalDouble axis = optional(Grading.LENGTH_AXIS, lengthAxisDeg);
             Grading.HEEL_GROUP.check(heelGroup);
             GradingService.Options o;
             try {
-                o = new GradingService.Options(ArcMode.ofId(arcs), axis, coordinationMm == null ? Optional.empty()
-                        : Optional.of(new Coordination(Grading.COORDINATION.check(coordinationMm), heelGroup)));
+                o = new GradingService.Options(
+                        ArcMode.ofId(arcs),
+                        axis,
+                        coordinationMm == null
+                                ? Optional.empty()
+                                : Optional.of(new Coordination(Grading.COORDINATION.check(coordinationMm), heelGroup)));
             } catch (IllegalArgumentException e) {
                 throw new CamInputException("options", e.getMessage());
             }

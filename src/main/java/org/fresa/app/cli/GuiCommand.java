@@ -9,14 +9,18 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa gui [JOB]}: the desktop application. */
-@Command(name = "gui", mixinStandardHelpOptions = true,
+@Command(
+        name = "gui",
+        mixinStandardHelpOptions = true,
         description = "Open the desktop application, optionally with a saved job.")
 final class GuiCommand implements Callable<Integer> {
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "JOB", description = "a job file to open")
     Path job;
 
-    @Option(names = "--exit-when-shown", hidden = true,
+    @Option(
+            names = "--exit-when-shown",
+            hidden = true,
             description = "print the time from JVM start to a visible window, then exit (start-up check)")
     boolean exitWhenShown;
 
@@ -28,8 +32,10 @@ final class GuiCommand implements Callable<Integer> {
                 return CliSupport.EXIT_BAD_INPUT;
             }
             FresaApp.launch(Optional.ofNullable(job), w -> {
-                long ms = java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime();
-                System.out.println("window '" + w.getTitle() + "' with " + w.tabCount() + " tabs shown after " + ms + " ms");
+                long ms = java.lang.management.ManagementFactory.getRuntimeMXBean()
+                        .getUptime();
+                System.out.println(
+                        "window '" + w.getTitle() + "' with " + w.tabCount() + " tabs shown after " + ms + " ms");
                 System.exit(0);
             });
             return FresaCommand.KEEP_RUNNING;

@@ -17,35 +17,49 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code fresa ik TARGETS.csv --robot NAME|FILE --out DIR [ik options]}. */
-@Command(name = "ik", mixinStandardHelpOptions = true,
+@Command(
+        name = "ik",
+        mixinStandardHelpOptions = true,
         description = "Inverse kinematics of any list of tool poses (x,y,z,roll,pitch,yaw[,q1..qN] per row).")
 final class IkCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "TARGETS.csv",
+    @Parameters(
+            index = "0",
+            paramLabel = "TARGETS.csv",
             description = "header x,y,z,roll,pitch,yaw[,q1,...,qN]; mm and deg in the robot base frame, "
                     + "R = Rz(roll)*Ry(pitch)*Rx(yaw); optional seed joints")
     Path targets;
 
-    @Option(names = "--robot", required = true, paramLabel = "NAME|FILE",
+    @Option(
+            names = "--robot",
+            required = true,
+            paramLabel = "NAME|FILE",
             description = "built-in robot (irb140, adept-one, tricept806) or a robot file")
     String robot;
 
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
     Path out;
 
-    @Option(names = "--tolerance-mm", paramLabel = "T", defaultValue = "1e-7",
+    @Option(
+            names = "--tolerance-mm",
+            paramLabel = "T",
+            defaultValue = "1e-7",
             description = "position tolerance (mm); the orientation's is T/100 rad; default ${DEFAULT-VALUE}")
     double toleranceMm;
 
-    @Option(names = "--method", paramLabel = "default|thesis-dls",
+    @Option(
+            names = "--method",
+            paramLabel = "default|thesis-dls",
             description = "Levenberg-Marquardt with the closed form where the robot has one (default), or the"
                     + " thesis's damped least squares")
     IkOptions.Method method = IkOptions.DEFAULT.method();
 
-    @Option(names = "--configuration", paramLabel = "K=V[,K=V]",
+    @Option(
+            names = "--configuration",
+            paramLabel = "K=V[,K=V]",
             description = "keep only solutions in this arm configuration: cf1, cf4, cf6, cfx (ABB confdata), S, T"
                     + " (KUKA Status and Turn)")
     String configuration;
@@ -53,12 +67,16 @@ final class IkCommand implements Callable<Integer> {
     @Option(names = "--all", description = "every solution branch of each pose (column branch)")
     boolean all;
 
-    @Option(names = "--spindle", paramLabel = "X,Y,Z[,RX,RY,RZ]",
+    @Option(
+            names = "--spindle",
+            paramLabel = "X,Y,Z[,RX,RY,RZ]",
             description = "spindle nose in the flange frame (mm, deg); default: the robot file's tool frame, else"
                     + " the flange")
     String spindle;
 
-    @Option(names = "--tool-length", paramLabel = "MM",
+    @Option(
+            names = "--tool-length",
+            paramLabel = "MM",
             description = "tool length from the spindle nose to the tip; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
@@ -69,14 +87,13 @@ final class IkCommand implements Callable<Integer> {
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
             double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
-            Map<String, Integer> conf = configuration == null ? Map.of()
-                    : IkService.parseConfiguration(configuration);
+            Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
             RobotTools.Choice tool = new RobotTools.Choice(
                     spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
-                    toolLength == null ? OptionalDouble.empty()
+                    toolLength == null
+                            ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
-            IkService.Settings s = new IkService.Settings(targets, robot, tool, method, tol,
-                    conf, all);
+            IkService.Settings s = new IkService.Settings(targets, robot, tool, method, tol, conf, all);
             return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
         });
     }

@@ -4,21 +4,24 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketPost;
-import org.fresa.pocket.EntryRule;
-import org.fresa.pocket.MillingDirection;
 import org.fresa.job.PocketService;
 import org.fresa.job.SettingRanges.Pocket;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
  * [--thesis-name NAME] [--json]}.
  */
-@Command(name = "pocket", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(
+        name = "pocket",
+        mixinStandardHelpOptions = true,
+        sortOptions = false,
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
 final class PocketCommand implements Callable<Integer> {
 
@@ -27,7 +30,10 @@ final class PocketCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "CONTOUR", description = ".dad (73-column records), .dxf or Fresa contour file")
+    @Parameters(
+            index = "0",
+            paramLabel = "CONTOUR",
+            description = ".dad (73-column records), .dxf or Fresa contour file")
     Path contour;
 
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "NC program to write")
@@ -60,33 +66,45 @@ final class PocketCommand implements Callable<Integer> {
     @Option(names = "--finish-feed", paramLabel = "F", description = "finishing feed (mm/min)")
     double finishFeedMmPerMin = DEFAULTS.finishFeedMmPerMin();
 
-    @Option(names = "--post", paramLabel = "NAME",
+    @Option(
+            names = "--post",
+            paramLabel = "NAME",
             description = "7m, 7m-compat, iso, linuxcnc, fanuc, 840d, apt (APT / CL data); default ${DEFAULT-VALUE}")
     PocketPost post = DEFAULTS.post();
 
-    @Option(names = "--direction", paramLabel = "climb|conventional",
+    @Option(
+            names = "--direction",
+            paramLabel = "climb|conventional",
             description = "milling direction on every post but 7m-compat (which keeps the thesis's conventional"
                     + " passes); default ${DEFAULT-VALUE}")
     MillingDirection direction = DEFAULTS.direction();
 
-    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge",
+    @Option(
+            names = "--entry",
+            paramLabel = "auto|helix|ramp|plunge",
             description = "how the tool enters the material: a helix where it has room, else a zig-zag ramp (auto),"
                     + " helix, ramp, or plunge (centre-cutting tools only); 7m-compat keeps the thesis's plunge;"
                     + " default ${DEFAULT-VALUE}")
     EntryRule.Kind entry = DEFAULTS.entry();
 
-    @Option(names = "--entry-angle", paramLabel = "DEG",
+    @Option(
+            names = "--entry-angle",
+            paramLabel = "DEG",
             description = "steepest descent of a helix or ramp entry (deg, 0.5 to 90); default ${DEFAULT-VALUE}")
     double entryAngleDeg = DEFAULTS.entryAngleDeg();
 
     @Option(names = "--centre-cutting", description = "the cutter cuts at its centre (may plunge)")
     boolean centreCutting;
 
-    @Option(names = "--report", paramLabel = "FILE",
+    @Option(
+            names = "--report",
+            paramLabel = "FILE",
             description = "also write the thesis's technology printout (GOTA.BAS's LPRINT block) to FILE")
     java.nio.file.Path report;
 
-    @Option(names = "--thesis-name", paramLabel = "NAME",
+    @Option(
+            names = "--thesis-name",
+            paramLabel = "NAME",
             description = "write the program beside --out as N01NAME.DAD, the thesis's output name (NAME: 1 to 5"
                     + " letters or digits)")
     String thesisName;
@@ -97,12 +115,22 @@ final class PocketCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
-            PocketSettings settings = new PocketSettings(contour,
-                    Pocket.TOOL_DIAMETER.check(toolDiameterMm), Pocket.CUT.check(cutFraction),
-                    Pocket.FINISH.check(finishFraction), Pocket.Z_TOP.check(zTopMm), Pocket.Z_BOTTOM.check(zBottomMm),
-                    Pocket.MAX_DEPTH.check(maxDepthMm), Pocket.SPINDLE.check(spindleRpm), Pocket.FEED.check(feedMmPerMin),
-                    Pocket.FINISH_FEED.check(finishFeedMmPerMin), post, direction, entry,
-                    Pocket.ENTRY_ANGLE.check(entryAngleDeg), centreCutting);
+            PocketSettings settings = new PocketSettings(
+                    contour,
+                    Pocket.TOOL_DIAMETER.check(toolDiameterMm),
+                    Pocket.CUT.check(cutFraction),
+                    Pocket.FINISH.check(finishFraction),
+                    Pocket.Z_TOP.check(zTopMm),
+                    Pocket.Z_BOTTOM.check(zBottomMm),
+                    Pocket.MAX_DEPTH.check(maxDepthMm),
+                    Pocket.SPINDLE.check(spindleRpm),
+                    Pocket.FEED.check(feedMmPerMin),
+                    Pocket.FINISH_FEED.check(finishFeedMmPerMin),
+                    post,
+                    direction,
+                    entry,
+                    Pocket.ENTRY_ANGLE.check(entryAngleDeg),
+                    centreCutting);
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {

@@ -10,9 +10,9 @@ import org.fresa.job.Json;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa posts}: the post-processors. */
 @Command(name = "posts", mixinStandardHelpOptions = true, description = "List the post-processors.")

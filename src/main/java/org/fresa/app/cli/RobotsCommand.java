@@ -8,12 +8,15 @@ import java.util.concurrent.Callable;
 import org.fresa.job.Json;
 import org.fresa.job.RobotFiles;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa robots}: the built-in robots and their parameters. */
-@Command(name = "robots", mixinStandardHelpOptions = true, description = "List the built-in robots and their parameters.")
+@Command(
+        name = "robots",
+        mixinStandardHelpOptions = true,
+        description = "List the built-in robots and their parameters.")
 final class RobotsCommand implements Callable<Integer> {
 
     @Spec
@@ -36,13 +39,23 @@ final class RobotsCommand implements Callable<Integer> {
             out.println(r.get("name") + ": " + r.get("description"));
             for (Object jo : (List<?>) r.get("joints")) {
                 Map<?, ?> j = (Map<?, ?>) jo;
-                StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "  %-3s %-9s %9s .. %-9s %s",
-                        j.get("name"), j.get("type"), num(j.get("min")), num(j.get("max")), j.get("unit")));
+                StringBuilder sb = new StringBuilder(String.format(
+                        Locale.ROOT,
+                        "  %-3s %-9s %9s .. %-9s %s",
+                        j.get("name"),
+                        j.get("type"),
+                        num(j.get("min")),
+                        num(j.get("max")),
+                        j.get("unit")));
                 if (j.containsKey("a_mm")) {
-                    sb.append(String.format(Locale.ROOT, "   a %s  alpha %s  d %s  theta %s", num(j.get("a_mm")),
+                    sb.append(String.format(
+                            Locale.ROOT,
+                            "   a %s  alpha %s  d %s  theta %s",
+                            num(j.get("a_mm")),
                             num(j.get("alpha_deg")),
                             j.containsKey("d_mm") ? num(j.get("d_mm")) : variable(j.get("d_offset_mm")),
-                            j.containsKey("theta_offset_deg") ? variable(j.get("theta_offset_deg"))
+                            j.containsKey("theta_offset_deg")
+                                    ? variable(j.get("theta_offset_deg"))
                                     : num(j.get("theta_deg"))));
                 }
                 out.println(sb);

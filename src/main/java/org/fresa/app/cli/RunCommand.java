@@ -7,13 +7,15 @@ import org.fresa.job.JobRunner;
 import org.fresa.job.JobXml;
 import org.fresa.job.OutputFolder;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa run JOB --out DIR}: a saved job, headless. */
-@Command(name = "run", mixinStandardHelpOptions = true,
+@Command(
+        name = "run",
+        mixinStandardHelpOptions = true,
         description = "Run a saved job file (the same file the desktop application saves) headless.")
 final class RunCommand implements Callable<Integer> {
 

@@ -13,15 +13,22 @@ import picocli.CommandLine;
 final class SettingConverters {
 
     /** Every choice an option takes, one per enumeration. */
-    static final List<SettingChoice<?>> CHOICES = List.of(SettingRanges.Pocket.POST, SettingRanges.Pocket.DIRECTION,
-            SettingRanges.Pocket.ENTRY, SettingRanges.Cutting.PROCESS, SettingRanges.Cutting.LEAD,
-            SettingRanges.Cutting.UNITS, SettingRanges.Cutting.POST, SettingRanges.Cutting.COMPENSATION,
-            SettingRanges.Cutting.OUTER_DIRECTION, SettingRanges.StepNc.POST,
-            SettingRanges.Grading.SYSTEM, SettingRanges.Grading.SHRINKAGE_MODE,
+    static final List<SettingChoice<?>> CHOICES = List.of(
+            SettingRanges.Pocket.POST,
+            SettingRanges.Pocket.DIRECTION,
+            SettingRanges.Pocket.ENTRY,
+            SettingRanges.Cutting.PROCESS,
+            SettingRanges.Cutting.LEAD,
+            SettingRanges.Cutting.UNITS,
+            SettingRanges.Cutting.POST,
+            SettingRanges.Cutting.COMPENSATION,
+            SettingRanges.Cutting.OUTER_DIRECTION,
+            SettingRanges.StepNc.POST,
+            SettingRanges.Grading.SYSTEM,
+            SettingRanges.Grading.SHRINKAGE_MODE,
             SettingRanges.Robot.IK_METHOD);
 
-    private SettingConverters() {
-    }
+    private SettingConverters() {}
 
     /** Registers the converters on a command line and the subcommands it has now. */
     static CommandLine register(CommandLine cl) {
@@ -32,7 +39,8 @@ final class SettingConverters {
     }
 
     private static <E extends Enum<E>> void add(CommandLine cl, SettingChoice<E> c) {
-        cl.registerConverter(c.type(), text -> c.find(text)
-                .orElseThrow(() -> new CommandLine.TypeConversionException(c.problem(text))));
+        cl.registerConverter(
+                c.type(),
+                text -> c.find(text).orElseThrow(() -> new CommandLine.TypeConversionException(c.problem(text))));
     }
 }

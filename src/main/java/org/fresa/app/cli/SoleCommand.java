@@ -3,13 +3,15 @@ package org.fresa.app.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa sole JOB --out DIR}. */
-@Command(name = "sole", mixinStandardHelpOptions = true,
+@Command(
+        name = "sole",
+        mixinStandardHelpOptions = true,
         description = "Sole mould programs: cavity, tread figures, graded sizes, both feet.")
 final class SoleCommand implements Callable<Integer> {
 

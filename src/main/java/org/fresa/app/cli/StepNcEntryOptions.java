@@ -13,13 +13,17 @@ import picocli.CommandLine.Option;
  */
 final class StepNcEntryOptions {
 
-    @Option(names = "--entry", paramLabel = "auto|helix|ramp|plunge",
+    @Option(
+            names = "--entry",
+            paramLabel = "auto|helix|ramp|plunge",
             description = "how pockets are entered: the file's own ramp or helix, else a helix where it has room,"
                     + " else a zig-zag ramp (auto), helix, ramp, or plunge (with --centre-cutting only);"
                     + " default ${DEFAULT-VALUE}")
     EntryRule.Kind entry = StepNcSettings.DEFAULTS.entry().kind();
 
-    @Option(names = "--entry-angle", paramLabel = "DEG",
+    @Option(
+            names = "--entry-angle",
+            paramLabel = "DEG",
             description = "steepest descent of a pocket's helix or ramp entry and of a hole milled on a helix"
                     + " (deg, 0.5 to 90); default ${DEFAULT-VALUE}")
     double entryAngleDeg = StepNcSettings.DEFAULTS.entry().angleDeg();
@@ -37,8 +41,10 @@ final class StepNcEntryOptions {
         EntryRule.Kind kind = entry;
         double angle = SettingRanges.StepNc.ENTRY_ANGLE.check(entryAngleDeg);
         if (kind == EntryRule.Kind.PLUNGE && !centreCutting) {
-            throw new CamInputException("--entry plunge", "a plunge entry needs a centre-cutting tool: say so with"
-                    + " --centre-cutting, or choose auto, helix or ramp");
+            throw new CamInputException(
+                    "--entry plunge",
+                    "a plunge entry needs a centre-cutting tool: say so with"
+                            + " --centre-cutting, or choose auto, helix or ramp");
         }
         return new EntryRule(kind, angle, centreCutting);
     }

@@ -6,13 +6,15 @@ import java.util.concurrent.Callable;
 import org.fresa.job.StepNcService;
 import org.fresa.stepnc.StepNcProgram;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fresa stepnc FILE [--json]}: describe an ISO 14649 Part 21 file. */
-@Command(name = "stepnc", mixinStandardHelpOptions = true,
+@Command(
+        name = "stepnc",
+        mixinStandardHelpOptions = true,
         description = "Read an ISO 14649 (STEP-NC) Part 21 file and describe it.")
 final class StepncCommand implements Callable<Integer> {
 

@@ -21,8 +21,8 @@ final class TerminalProgress implements ProgressMonitor {
 
     static ProgressMonitor forStderr(PrintWriter err) {
         String term = System.getenv("TERM");
-        boolean terminal = System.console() != null && term != null && !"dumb".equals(term)
-                && System.getenv("CI") == null;
+        boolean terminal =
+                System.console() != null && term != null && !"dumb".equals(term) && System.getenv("CI") == null;
         return terminal ? new TerminalProgress(err) : ProgressMonitor.NONE;
     }
 

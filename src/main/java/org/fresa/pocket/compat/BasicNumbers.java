@@ -32,8 +32,7 @@ import java.util.Locale;
  */
 public final class BasicNumbers {
 
-    private BasicNumbers() {
-    }
+    private BasicNumbers() {}
 
     /**
      * The single nearest to num/den after a 56-bit rounding (nearest, ties to even) and

@@ -11,8 +11,7 @@ package org.fresa.pocket.compat;
  */
 public final class MbfFunctions {
 
-    private MbfFunctions() {
-    }
+    private MbfFunctions() {}
 
     /** The four MBF bytes written in octal in the package's tables (mantissa low first). */
     private static Mbf octal(int b0, int b1, int b2, int exp) {
@@ -23,14 +22,23 @@ public final class MbfFunctions {
         return Integer.parseInt(Integer.toString(written), 8);
     }
 
-    private static final Mbf[] LOG_P = {octal(232, 367, 31, 203), octal(44, 143, 103, 203), octal(165, 315, 215, 204),
-        octal(251, 177, 203, 202)};
-    private static final Mbf[] LOG_Q = {octal(0, 0, 0, 201), octal(342, 260, 115, 203), octal(12, 162, 21, 203),
-        octal(364, 4, 65, 177)};
+    private static final Mbf[] LOG_P = {
+        octal(232, 367, 31, 203), octal(44, 143, 103, 203), octal(165, 315, 215, 204), octal(251, 177, 203, 202)
+    };
+    private static final Mbf[] LOG_Q = {
+        octal(0, 0, 0, 201), octal(342, 260, 115, 203), octal(12, 162, 21, 203), octal(364, 4, 65, 177)
+    };
     private static final Mbf LN2 = octal(30, 162, 61, 200);
     private static final Mbf LOG2_E = octal(73, 252, 70, 201);
-    private static final Mbf[] EXP_C = {octal(174, 210, 131, 164), octal(340, 227, 46, 167), octal(304, 35, 36, 172),
-        octal(136, 120, 143, 174), octal(32, 376, 165, 176), octal(30, 162, 61, 200), octal(0, 0, 0, 201)};
+    private static final Mbf[] EXP_C = {
+        octal(174, 210, 131, 164),
+        octal(340, 227, 46, 167),
+        octal(304, 35, 36, 172),
+        octal(136, 120, 143, 174),
+        octal(32, 376, 165, 176),
+        octal(30, 162, 61, 200),
+        octal(0, 0, 0, 201)
+    };
 
     /** {@code $POLY}: Horner's rule, highest coefficient first, in single precision. */
     static Mbf poly(Mbf x, Mbf[] coefficients) {

@@ -49,7 +49,8 @@ public final class Sinumerik7MPost {
 
     /** Faithful or corrected output. */
     public enum Mode {
-        COMPAT, CORRECTED
+        COMPAT,
+        CORRECTED
     }
 
     /** Chord tolerance of a ramp leg over an arc of the pass (mm): the 7M has no helical interpolation. */
@@ -85,8 +86,7 @@ public final class Sinumerik7MPost {
         this.entry = java.util.Objects.requireNonNull(entry, "entry");
     }
 
-    private record Block(String text, int copiedFrom) {
-    }
+    private record Block(String text, int copiedFrom) {}
 
     /**
      * The whole program text, lines ending in LF.
@@ -172,12 +172,17 @@ public final class Sinumerik7MPost {
         long bottom = -lv.belowTopUm(depth);
         add(blocks, "G00 G91 Z" + str(top - 5000));
         EntryRule rule = entry.kind() == EntryRule.Kind.HELIX
-                ? new EntryRule(EntryRule.Kind.RAMP, entry.angleDeg(), entry.centreCutting()) : entry;
+                ? new EntryRule(EntryRule.Kind.RAMP, entry.angleDeg(), entry.centreCutting())
+                : entry;
         Vec2 s = pass.start();
-        Entry e = Entries.choose(rule, s, chords(pass.pieces()), climb, Entries.Room.NONE, t.radiusMm(),
-                (top - bottom) / 1000.0).orElseThrow(() -> new ToolTooLargeException(String.format(java.util.Locale.ROOT,
+        Entry e = Entries.choose(
+                        rule, s, chords(pass.pieces()), climb, Entries.Room.NONE, t.radiusMm(), (top - bottom) / 1000.0)
+                .orElseThrow(() -> new ToolTooLargeException(String.format(
+                        java.util.Locale.ROOT,
                         "no room for a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting tool"
-                                + " (--centre-cutting) may plunge there", s.x(), s.y())));
+                                + " (--centre-cutting) may plunge there",
+                        s.x(),
+                        s.y())));
         long x = um(s.x());
         long y = um(s.y());
         List<Move> moves = e.moves(top / 1000.0, bottom / 1000.0, feed);
@@ -203,8 +208,10 @@ public final class Sinumerik7MPost {
                 if (nx == x && ny == y) {
                     continue;
                 }
-                add(blocks, (first ? "G01 G91 " : "") + "X" + str(nx - x) + " Y" + str(ny - y) + " Z" + str(nz - z)
-                        + (first ? " F" + str(feed) : ""));
+                add(
+                        blocks,
+                        (first ? "G01 G91 " : "") + "X" + str(nx - x) + " Y" + str(ny - y) + " Z" + str(nz - z)
+                                + (first ? " F" + str(feed) : ""));
                 x = nx;
                 y = ny;
                 z = nz;
@@ -263,7 +270,10 @@ public final class Sinumerik7MPost {
                 } else {
                     long up = mode == Mode.COMPAT ? lv.stepUm() + 20000 : lv.belowTopUm(depth) + 20000;
                     add(blocks, "G00 G91 Z" + str(up));
-                    add(blocks, "G90 X" + str(um(pass.start().x())) + " Y" + str(um(pass.start().y())));
+                    add(
+                            blocks,
+                            "G90 X" + str(um(pass.start().x())) + " Y"
+                                    + str(um(pass.start().y())));
                     add(blocks, "G91 Z -15000");
                     if (mode == Mode.COMPAT) {
                         add(blocks, "G01 Z -" + (lv.stepUm() + 5000));
@@ -280,8 +290,13 @@ public final class Sinumerik7MPost {
                 if (p.isArc()) {
                     long sx = um(p.start().x()), sy = um(p.start().y());
                     long cx = um(p.center().x()), cy = um(p.center().y());
-                    motion(blocks, modal, afterPlunge, p.ccw() ? "G03" : "G02",
-                            xy(p.end()) + " I" + str(cx - sx) + " J" + str(cy - sy), tail);
+                    motion(
+                            blocks,
+                            modal,
+                            afterPlunge,
+                            p.ccw() ? "G03" : "G02",
+                            xy(p.end()) + " I" + str(cx - sx) + " J" + str(cy - sy),
+                            tail);
                 } else {
                     motion(blocks, modal, afterPlunge, "G01", xy(p.end()), tail);
                 }
@@ -290,7 +305,8 @@ public final class Sinumerik7MPost {
         }
     }
 
-    private void motion(List<Block> blocks, String[] modal, boolean[] afterPlunge, String g, String coords, String tail) {
+    private void motion(
+            List<Block> blocks, String[] modal, boolean[] afterPlunge, String g, String coords, String tail) {
         StringBuilder sb = new StringBuilder();
         if (afterPlunge[0]) {
             sb.append("G90 ");
@@ -320,7 +336,11 @@ public final class Sinumerik7MPost {
             String num = n < 100 ? String.format(java.util.Locale.ROOT, "%02d", n) : Integer.toString(n);
             Block b = blocks.get(i);
             boolean glued = mode == Mode.COMPAT && b.copiedFrom() >= 0 && n >= 100 && 5 * (b.copiedFrom() + 1) < 100;
-            out.append('N').append(num).append(glued ? "" : " ").append(b.text()).append('\n');
+            out.append('N')
+                    .append(num)
+                    .append(glued ? "" : " ")
+                    .append(b.text())
+                    .append('\n');
         }
         return out.toString();
     }
@@ -345,7 +365,9 @@ public final class Sinumerik7MPost {
     /** Lines 3072 and 3079: {@code PROF = INT((ZSUP - ZBASE)/ZPROF + .9999999)}, at least 1. */
     private static int thesisDepthPasses(PocketTechnology t) {
         Mbf depth = mbf(t.zTopMm()).minus(mbf(t.zBottomMm()));
-        Mbf prof = depth.dividedBy(mbf(t.maxDepthMm())).plus(BasicNumbers.val(".9999999")).floor();
+        Mbf prof = depth.dividedBy(mbf(t.maxDepthMm()))
+                .plus(BasicNumbers.val(".9999999"))
+                .floor();
         return prof.isZero() ? 1 : (int) prof.toDouble();
     }
 

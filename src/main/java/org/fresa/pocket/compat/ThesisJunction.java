@@ -27,16 +27,13 @@ import java.util.Optional;
  */
 public final class ThesisJunction {
 
-    private ThesisJunction() {
-    }
+    private ThesisJunction() {}
 
     /** One element's current coefficients: a line (a, b, d) or a circle (centre x, centre y, radius). */
-    public record Carrier(boolean circle, Mbf a, Mbf b, Mbf d) {
-    }
+    public record Carrier(boolean circle, Mbf a, Mbf b, Mbf d) {}
 
     /** A junction point in single precision. */
-    public record Point(Mbf x, Mbf y) {
-    }
+    public record Point(Mbf x, Mbf y) {}
 
     private static final Mbf TWO = Mbf.of(2);
     private static final Mbf FOUR = Mbf.of(4);
@@ -63,8 +60,19 @@ public final class ThesisJunction {
             Mbf x2 = q.a(), y2 = q.b(), r2 = q.d();
             a2 = TWO.times(x2.minus(x1));
             b2 = TWO.times(y2.minus(y1));
-            d2 = x1.pow(2).plus(y1.pow(2)).minus(r1.pow(2)).plus(r2.pow(2)).minus(x2.pow(2)).minus(y2.pow(2)).negate();
-            dist = x2.minus(x1).pow(2).plus(y2.minus(y1).pow(2)).pow(HALF).minus(r1).minus(r2);
+            d2 = x1.pow(2)
+                    .plus(y1.pow(2))
+                    .minus(r1.pow(2))
+                    .plus(r2.pow(2))
+                    .minus(x2.pow(2))
+                    .minus(y2.pow(2))
+                    .negate();
+            dist = x2.minus(x1)
+                    .pow(2)
+                    .plus(y2.minus(y1).pow(2))
+                    .pow(HALF)
+                    .minus(r1)
+                    .minus(r2);
         } else {
             Carrier line = p.circle() ? q : p;
             Carrier circle = p.circle() ? p : q;
@@ -74,7 +82,11 @@ public final class ThesisJunction {
             x1 = circle.a();
             y1 = circle.b();
             r1 = circle.d();
-            dist = a2.times(x1).plus(b2.times(y1)).minus(d2).dividedBy(a2.pow(2).plus(b2.pow(2)).pow(HALF)).abs()
+            dist = a2.times(x1)
+                    .plus(b2.times(y1))
+                    .minus(d2)
+                    .dividedBy(a2.pow(2).plus(b2.pow(2)).pow(HALF))
+                    .abs()
                     .minus(r1);
         }
         if (b2.isZero()) {
@@ -85,8 +97,11 @@ public final class ThesisJunction {
         }
         Mbf bb = TWO.times(d2.negate().times(a2).plus(a2.times(y1).times(b2)).minus(x1.times(b2.pow(2))));
         Mbf aa = b2.pow(2).plus(a2.pow(2));
-        Mbf cc = d2.pow(2).minus(TWO.times(d2).times(y1).times(b2)).plus(y1.pow(2).times(b2.pow(2)))
-                .plus(x1.pow(2).times(b2.pow(2))).minus(r1.pow(2).times(b2.pow(2)));
+        Mbf cc = d2.pow(2)
+                .minus(TWO.times(d2).times(y1).times(b2))
+                .plus(y1.pow(2).times(b2.pow(2)))
+                .plus(x1.pow(2).times(b2.pow(2)))
+                .minus(r1.pow(2).times(b2.pow(2)));
         Mbf del = bb.pow(2).minus(FOUR.times(aa).times(cc));
         if (!del.greaterThan(Mbf.ZERO)) {
             if (dist.abs().lessThan(compar.times(HUNDRED))) {
@@ -118,8 +133,8 @@ public final class ThesisJunction {
     }
 
     /** Lines 11030-11140: the line y = D/B. */
-    private static Optional<Point> horizontal(Mbf b2, Mbf d2, Mbf x1, Mbf y1, Mbf r1, Mbf dist, boolean largeRoot,
-            Mbf compar) {
+    private static Optional<Point> horizontal(
+            Mbf b2, Mbf d2, Mbf x1, Mbf y1, Mbf r1, Mbf dist, boolean largeRoot, Mbf compar) {
         Mbf y = d2.dividedBy(b2);
         Mbf es = y.minus(y1).pow(2).minus(r1.pow(2)).plus(x1.pow(2));
         Mbf del = FOUR.times(x1.pow(2)).minus(FOUR.times(es));
@@ -135,8 +150,8 @@ public final class ThesisJunction {
     }
 
     /** Lines 11150-11260: the line x = D/A. */
-    private static Optional<Point> vertical(Mbf a2, Mbf d2, Mbf x1, Mbf y1, Mbf r1, Mbf dist, boolean largeRoot,
-            Mbf compar) {
+    private static Optional<Point> vertical(
+            Mbf a2, Mbf d2, Mbf x1, Mbf y1, Mbf r1, Mbf dist, boolean largeRoot, Mbf compar) {
         Mbf x = d2.dividedBy(a2);
         Mbf ds = x.minus(x1).pow(2).minus(r1.pow(2)).plus(y1.pow(2));
         Mbf del = FOUR.times(y1.pow(2)).minus(FOUR.times(ds));

@@ -92,8 +92,8 @@ public final class ThesisPasses {
             kByNumber.put(e.number(), e.k());
             if (!e.zeroRadius()) {
                 inputs.add(e);
-                reference.put(e.number(), new ThesisJunction.Carrier(e.arc(), single(e.a()), single(e.b()),
-                        single(e.d())));
+                reference.put(
+                        e.number(), new ThesisJunction.Carrier(e.arc(), single(e.a()), single(e.b()), single(e.d())));
             }
         }
         inputs.sort(Comparator.comparingInt(PocketElement::number));
@@ -154,10 +154,11 @@ public final class ThesisPasses {
         ThesisJunction.Point best = null;
         double bd = Double.POSITIVE_INFINITY;
         for (boolean large : new boolean[] {false, true}) {
-            Optional<ThesisJunction.Point> j = p == null || q == null ? Optional.empty()
-                    : ThesisJunction.of(p, q, large, compar);
+            Optional<ThesisJunction.Point> j =
+                    p == null || q == null ? Optional.empty() : ThesisJunction.of(p, q, large, compar);
             if (j.isPresent()) {
-                double dd = Math.hypot(j.get().x().toDouble() - c.x(), j.get().y().toDouble() - c.y());
+                double dd =
+                        Math.hypot(j.get().x().toDouble() - c.x(), j.get().y().toDouble() - c.y());
                 if (dd < bd) {
                     bd = dd;
                     best = j.get();
@@ -313,8 +314,8 @@ public final class ThesisPasses {
         for (int i = 0; i < n; i++) {
             PocketElement prev = pieces.get((i + n - 1) % n).element();
             PocketElement e = pieces.get(i).element();
-            Optional<ThesisJunction.Point> j = ThesisJunction.of(carrier(prev, chain), carrier(e, chain),
-                    e.selector() == 'L', compar);
+            Optional<ThesisJunction.Point> j =
+                    ThesisJunction.of(carrier(prev, chain), carrier(e, chain), e.selector() == 'L', compar);
             if (j.isEmpty()) {
                 return Optional.empty();
             }

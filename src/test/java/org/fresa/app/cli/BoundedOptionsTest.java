@@ -32,12 +32,18 @@ class BoundedOptionsTest {
     private final StringWriter err = new StringWriter();
 
     private int run(List<String> args) {
-        return FresaCommand.execute(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
+        return FresaCommand.execute(
+                new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
     }
 
     private List<String> pocket(String... extra) {
-        List<String> a = new ArrayList<>(List.of("pocket", "samples/pocket/cavity01.dad", "--out",
-                dir.resolve("p.ngc").toString(), "--tool-diameter", "6"));
+        List<String> a = new ArrayList<>(List.of(
+                "pocket",
+                "samples/pocket/cavity01.dad",
+                "--out",
+                dir.resolve("p.ngc").toString(),
+                "--tool-diameter",
+                "6"));
         for (int i = 0; i < extra.length; i += 2) {
             int at = a.indexOf(extra[i]);
             if (at >= 0) {
@@ -50,8 +56,17 @@ class BoundedOptionsTest {
     }
 
     private List<String> grade(String sizes, String... extra) {
-        List<String> a = new ArrayList<>(List.of("grade", "samples/grading/sole-40.contour", "--out",
-                dir.resolve("g").toString(), "--base-size", "40", "--sizes", sizes, "--system", "br"));
+        List<String> a = new ArrayList<>(List.of(
+                "grade",
+                "samples/grading/sole-40.contour",
+                "--out",
+                dir.resolve("g").toString(),
+                "--base-size",
+                "40",
+                "--sizes",
+                sizes,
+                "--system",
+                "br"));
         a.addAll(List.of(extra));
         return a;
     }
@@ -62,7 +77,9 @@ class BoundedOptionsTest {
         try (Stream<Path> s = Files.walk(dir)) {
             written = s.filter(p -> !p.equals(dir)).map(Path::toString).toList();
         }
-        assertAll(e, () -> assertEquals(2, status),
+        assertAll(
+                e,
+                () -> assertEquals(2, status),
                 () -> assertTrue(Stream.of(words).allMatch(e::contains), "says " + List.of(words)),
                 () -> assertFalse(e.contains("internal error") || e.contains("Exception")),
                 () -> assertEquals(List.of(), written, "nothing written"));
@@ -87,8 +104,16 @@ class BoundedOptionsTest {
     @ParameterizedTest(name = "cut {0} 1e308")
     @ValueSource(strings = {"--lead-in", "--lead-out", "--overcut", "--kerf"})
     void cuttingLengthsOutOfTheirRangeAreRefused(String option) throws Exception {
-        refused(run(List.of("cut", "samples/cutting/plate.dxf", "--out", dir.resolve("c.ngc").toString(), option,
-                "1e308")), option, "expected a number from 0 to");
+        refused(
+                run(List.of(
+                        "cut",
+                        "samples/cutting/plate.dxf",
+                        "--out",
+                        dir.resolve("c.ngc").toString(),
+                        option,
+                        "1e308")),
+                option,
+                "expected a number from 0 to");
     }
 
     @Test
@@ -99,7 +124,9 @@ class BoundedOptionsTest {
     @Test
     void aPocketProgramOfMoreThanAMillionMovesIsNotDoable() {
         int status = run(pocket("--z-top", "9000", "--max-depth", "1"));
-        assertAll(err.toString(), () -> assertEquals(1, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(1, status),
                 () -> assertTrue(err.toString().contains("more than 1000000 in all")),
                 () -> assertFalse(Files.exists(dir.resolve("p.ngc"))));
     }
@@ -138,15 +165,31 @@ class BoundedOptionsTest {
 
     @Test
     void aPlacementOutsideTheCellIsRefused() throws Exception {
-        refused(run(List.of("robot", "samples/stepnc/example2.stp", "--robot", "irb140", "--out",
-                dir.resolve("r").toString(), "--robot-table", "450,0,1e308")), "--robot-table", "z: expected");
+        refused(
+                run(List.of(
+                        "robot",
+                        "samples/stepnc/example2.stp",
+                        "--robot",
+                        "irb140",
+                        "--out",
+                        dir.resolve("r").toString(),
+                        "--robot-table",
+                        "450,0,1e308")),
+                "--robot-table",
+                "z: expected");
     }
 
     @Test
     void aRobotFileWithAnAbsurdLinkLengthIsRefusedAtItsLine() throws Exception {
         Path robot = dir.resolve("robot.xml");
-        Files.writeString(robot, Files.readString(Path.of("samples/robot/irb140.xml")).replace("a=\"70\" ", "a=\"1e308\""));
-        int status = run(List.of("robot", "samples/stepnc/example2.stp", "--robot", robot.toString(), "--out",
+        Files.writeString(
+                robot, Files.readString(Path.of("samples/robot/irb140.xml")).replace("a=\"70\" ", "a=\"1e308\""));
+        int status = run(List.of(
+                "robot",
+                "samples/stepnc/example2.stp",
+                "--robot",
+                robot.toString(),
+                "--out",
                 dir.resolve("r").toString()));
         Files.delete(robot);
         refused(status, "robot.xml: line 6", "a: expected a number from -100000 to 100000 mm, found 1E308");
@@ -155,29 +198,54 @@ class BoundedOptionsTest {
     @Test
     void aTriceptLegWithMinAboveMaxIsRefusedLikeASerialJoint() throws Exception {
         Path tricept = dir.resolve("tricept.xml");
-        Files.writeString(tricept, Files.readString(Path.of("samples/robot/tricept806.xml"))
-                .replaceFirst("<leg min=\"900\" max=\"1800\"/>", "<leg min=\"1800\" max=\"900\"/>"));
+        Files.writeString(
+                tricept,
+                Files.readString(Path.of("samples/robot/tricept806.xml"))
+                        .replaceFirst("<leg min=\"900\" max=\"1800\"/>", "<leg min=\"1800\" max=\"900\"/>"));
         Path serial = dir.resolve("serial.xml");
-        Files.writeString(serial, Files.readString(Path.of("samples/robot/irb140.xml"))
-                .replace("min=\"-180\" max=\"180\"", "min=\"180\" max=\"-180\""));
-        int t = run(List.of("robot", "samples/stepnc/example2.stp", "--robot", tricept.toString(), "--out",
+        Files.writeString(
+                serial,
+                Files.readString(Path.of("samples/robot/irb140.xml"))
+                        .replace("min=\"-180\" max=\"180\"", "min=\"180\" max=\"-180\""));
+        int t = run(List.of(
+                "robot",
+                "samples/stepnc/example2.stp",
+                "--robot",
+                tricept.toString(),
+                "--out",
                 dir.resolve("t").toString()));
         String tErr = err.toString();
         err.getBuffer().setLength(0);
-        int s = run(List.of("robot", "samples/stepnc/example2.stp", "--robot", serial.toString(), "--out",
+        int s = run(List.of(
+                "robot",
+                "samples/stepnc/example2.stp",
+                "--robot",
+                serial.toString(),
+                "--out",
                 dir.resolve("s").toString()));
-        assertAll(() -> assertEquals(2, t, tErr), () -> assertTrue(tErr.contains("max > min"), tErr),
-                () -> assertEquals(2, s, err.toString()), () -> assertTrue(err.toString().contains("max > min")),
-                () -> assertFalse(Files.exists(dir.resolve("t"))), () -> assertFalse(Files.exists(dir.resolve("s"))));
+        assertAll(
+                () -> assertEquals(2, t, tErr),
+                () -> assertTrue(tErr.contains("max > min"), tErr),
+                () -> assertEquals(2, s, err.toString()),
+                () -> assertTrue(err.toString().contains("max > min")),
+                () -> assertFalse(Files.exists(dir.resolve("t"))),
+                () -> assertFalse(Files.exists(dir.resolve("s"))));
     }
 
     @Test
     void aJobFileCannotBringAValueTheOptionRefuses() throws Exception {
         Path job = dir.resolve("job.xml");
-        Files.writeString(job, Files.readString(Path.of("samples/jobs/pocket-cavity01.xml"))
-                .replace("../pocket/cavity01.dad", Path.of("samples/pocket/cavity01.dad").toAbsolutePath().toString())
-                .replace("zTopMm=\"30\"", "zTopMm=\"1e300\""));
-        int status = run(List.of("run", job.toString(), "--out", dir.resolve("out").toString()));
+        Files.writeString(
+                job,
+                Files.readString(Path.of("samples/jobs/pocket-cavity01.xml"))
+                        .replace(
+                                "../pocket/cavity01.dad",
+                                Path.of("samples/pocket/cavity01.dad")
+                                        .toAbsolutePath()
+                                        .toString())
+                        .replace("zTopMm=\"30\"", "zTopMm=\"1e300\""));
+        int status =
+                run(List.of("run", job.toString(), "--out", dir.resolve("out").toString()));
         Files.delete(job);
         refused(status, "job.xml: line 6", "zTopMm: expected a number from -10000 to 10000 mm, found 1E300");
     }
@@ -193,7 +261,8 @@ class BoundedOptionsTest {
         System.arraycopy(text, 0, withMark, 3, text.length);
         Files.write(bom, withMark);
         int status = run(List.of("stepnc", bom.toString(), "--json"));
-        assertAll(() -> assertEquals(0, status, err.toString()),
+        assertAll(
+                () -> assertEquals(0, status, err.toString()),
                 () -> assertTrue(out.toString().contains("\"workingsteps\""), out.toString()));
     }
 }

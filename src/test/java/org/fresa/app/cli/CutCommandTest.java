@@ -21,8 +21,7 @@ class CutCommandTest {
     @TempDir
     Path dir;
 
-    record Run(int status, String out, String err) {
-    }
+    record Run(int status, String out, String err) {}
 
     static Run fresa(String... args) {
         StringWriter out = new StringWriter();
@@ -35,7 +34,8 @@ class CutCommandTest {
     static String square(String thirdEndX) {
         String line = "0\nLINE\n5\n%s\n8\n0\n10\n%s\n20\n%s\n11\n%s\n21\n%s\n";
         return "0\nSECTION\n2\nENTITIES\n" + String.format(line, "A1", "0", "0", "10", "0")
-                + String.format(line, "A2", "10", "0", "10", "10") + String.format(line, "A3", "10", "10", thirdEndX, "10")
+                + String.format(line, "A2", "10", "0", "10", "10")
+                + String.format(line, "A3", "10", "10", thirdEndX, "10")
                 + String.format(line, "A4", "0", "10", "0", "0") + "0\nENDSEC\n0\nEOF\n";
     }
 
@@ -61,7 +61,8 @@ class CutCommandTest {
             """)
     void aCoordinateThatIsNotANumberRefusesTheDrawingWithItsLine(String x, String message) throws IOException {
         Run r = cut(square(x));
-        assertAll(() -> assertEquals(2, r.status()),
+        assertAll(
+                () -> assertEquals(2, r.status()),
                 () -> assertEquals("fresa: d.dxf: " + message + "\n", r.err()),
                 () -> assertFalse(Files.exists(dir.resolve("d.ngc"))));
     }
@@ -69,7 +70,8 @@ class CutCommandTest {
     @Test
     void aMissingCoordinateRefusesTheDrawingWithTheEntitysLine() throws IOException {
         Run r = cut(square("0").replace("11\n0\n21\n10\n", "11\n0\n"));
-        assertAll(() -> assertEquals(2, r.status()),
+        assertAll(
+                () -> assertEquals(2, r.status()),
                 () -> assertEquals("fresa: d.dxf: line 34: LINE A3: group 21 (a y coordinate) is missing\n", r.err()));
     }
 
@@ -77,9 +79,13 @@ class CutCommandTest {
     void aDrawingCutShortBeforeItsEofIsRefused() throws IOException {
         String whole = square("0");
         Run r = cut(whole.substring(0, whole.indexOf("0\nLINE\n5\nA4")));
-        assertAll(() -> assertEquals(2, r.status()),
-                () -> assertTrue(r.err().contains("d.dxf: line 46: the drawing ends without its closing group 0 EOF"
-                        + " (the file is truncated)"), r.err()),
+        assertAll(
+                () -> assertEquals(2, r.status()),
+                () -> assertTrue(
+                        r.err()
+                                .contains("d.dxf: line 46: the drawing ends without its closing group 0 EOF"
+                                        + " (the file is truncated)"),
+                        r.err()),
                 () -> assertFalse(Files.exists(dir.resolve("d.ngc"))));
     }
 
@@ -94,8 +100,17 @@ class CutCommandTest {
     }
 
     static String poly(double x, double y, double side) {
-        return String.format(java.util.Locale.ROOT, "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n"
-                + "10\n%s\n20\n%s\n", x, y, x + side, y, x + side, y + side, x, y + side);
+        return String.format(
+                java.util.Locale.ROOT,
+                "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n10\n%s\n20\n%s\n" + "10\n%s\n20\n%s\n",
+                x,
+                y,
+                x + side,
+                y,
+                x + side,
+                y + side,
+                x,
+                y + side);
     }
 
     @Test
@@ -104,16 +119,24 @@ class CutCommandTest {
         Files.writeString(in, plateWithTinyHoles());
         Run r = fresa("cut", in.toString(), "--out", dir.resolve("h.ngc").toString());
         Run j = fresa("cut", in.toString(), "--out", dir.resolve("h.ngc").toString(), "--json");
-        long named = r.err().lines().filter(l -> l.matches("fresa: part 1 hole \\d+ \\(1\\.000 x 1\\.000 mm at \\d+\\.000,"
-                + " 100\\.000\\) is too small for a 2\\.000 mm kerf: not cut")).count();
-        assertAll(() -> assertEquals(1, r.status()),
+        long named = r.err()
+                .lines()
+                .filter(l -> l.matches("fresa: part 1 hole \\d+ \\(1\\.000 x 1\\.000 mm at \\d+\\.000,"
+                        + " 100\\.000\\) is too small for a 2\\.000 mm kerf: not cut"))
+                .count();
+        assertAll(
+                () -> assertEquals(1, r.status()),
                 () -> assertEquals(30, named, r.err()),
                 () -> assertFalse(r.err().contains("more warnings"), r.err()),
-                () -> assertTrue(r.err().contains("fresa: part 1 hole 30 (1.000 x 1.000 mm at 184.000, 100.000) is too"
-                        + " small"), r.err()),
-                () -> assertTrue(j.out().contains("\"not_cut_contours\":[{\"contour\":\"part 1 hole 1\",\"x_mm\":"), j.out()),
-                () -> assertEquals(30, j.out().split("\"reason\":\"is too small for a 2.000 mm kerf\"", -1).length - 1,
-                        j.out()));
+                () -> assertTrue(
+                        r.err()
+                                .contains("fresa: part 1 hole 30 (1.000 x 1.000 mm at 184.000, 100.000) is too"
+                                        + " small"),
+                        r.err()),
+                () -> assertTrue(
+                        j.out().contains("\"not_cut_contours\":[{\"contour\":\"part 1 hole 1\",\"x_mm\":"), j.out()),
+                () -> assertEquals(
+                        30, j.out().split("\"reason\":\"is too small for a 2.000 mm kerf\"", -1).length - 1, j.out()));
     }
 
     @Test
@@ -122,8 +145,15 @@ class CutCommandTest {
         Path in = dir.resolve("square-hole.dxf");
         Files.writeString(in, "0\nSECTION\n2\nENTITIES\n" + poly(0, 0, 100) + poly(40, 40, 20) + "0\nENDSEC\n0\nEOF\n");
         Run r = fresa("cut", in.toString(), "--out", dir.resolve("s.ngc").toString(), "--paper-mode", "--json");
-        assertAll(() -> assertTrue(r.out().contains("\"invalid_vertex_points\":[[40,40],[60,40],[60,60],[40,60]]"), r.out()),
-                () -> assertEquals(4, r.err().lines().filter(l -> l.startsWith("fresa: invalid vertex of part 1 hole 1 at (")).count(),
+        assertAll(
+                () -> assertTrue(
+                        r.out().contains("\"invalid_vertex_points\":[[40,40],[60,40],[60,60],[40,60]]"), r.out()),
+                () -> assertEquals(
+                        4,
+                        r.err()
+                                .lines()
+                                .filter(l -> l.startsWith("fresa: invalid vertex of part 1 hole 1 at ("))
+                                .count(),
                         r.err()),
                 () -> assertTrue(r.err().contains("invalid vertex of part 1 hole 1 at (40.000, 40.000)"), r.err()));
     }

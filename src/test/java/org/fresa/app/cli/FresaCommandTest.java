@@ -19,8 +19,7 @@ class FresaCommandTest {
     @TempDir
     Path dir;
 
-    record Run(int status, String out, String err) {
-    }
+    record Run(int status, String out, String err) {}
 
     static Run fresa(String... args) {
         StringWriter out = new StringWriter();
@@ -30,8 +29,21 @@ class FresaCommandTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"gui", "run", "stepnc", "toolpath", "robot", "pocket", "cut", "grade", "sole", "robots",
-            "posts", "bench"})
+    @ValueSource(
+            strings = {
+                "gui",
+                "run",
+                "stepnc",
+                "toolpath",
+                "robot",
+                "pocket",
+                "cut",
+                "grade",
+                "sole",
+                "robots",
+                "posts",
+                "bench"
+            })
     void helpListsEveryCommandOfTheSpec(String command) {
         Run r = fresa("--help");
         assertEquals(0, r.status());
@@ -39,8 +51,21 @@ class FresaCommandTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"gui", "run", "stepnc", "toolpath", "robot", "pocket", "cut", "grade", "sole", "robots",
-            "posts", "bench"})
+    @ValueSource(
+            strings = {
+                "gui",
+                "run",
+                "stepnc",
+                "toolpath",
+                "robot",
+                "pocket",
+                "cut",
+                "grade",
+                "sole",
+                "robots",
+                "posts",
+                "bench"
+            })
     void aNamedCommandAloneStillHasItsFullUsage(String command) {
         // only the named command is built (start-up time); its usage names it under fresa
         Run r = fresa(command, "--help");
@@ -53,7 +78,8 @@ class FresaCommandTest {
         String out = fresa("--help").out();
         int last = -1;
         for (Class<?> c : FresaCommand.COMMANDS) {
-            int at = out.indexOf("\n  " + c.getAnnotation(picocli.CommandLine.Command.class).name() + " ");
+            int at = out.indexOf(
+                    "\n  " + c.getAnnotation(picocli.CommandLine.Command.class).name() + " ");
             assertTrue(at > last, c + " out of order in:\n" + out);
             last = at;
         }
@@ -78,8 +104,10 @@ class FresaCommandTest {
     @Test
     void aJobWithAnExternalEntityIsRefusedWithStatus2() throws Exception {
         Path job = dir.resolve("xxe.xml");
-        Files.writeString(job, "<?xml version=\"1.0\"?><!DOCTYPE job [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>"
-                + "<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\"><name>&x;</name></job>");
+        Files.writeString(
+                job,
+                "<?xml version=\"1.0\"?><!DOCTYPE job [<!ENTITY x SYSTEM \"file:///etc/passwd\">]>"
+                        + "<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\"><name>&x;</name></job>");
         Run r = fresa("run", job.toString(), "--out", dir.resolve("out").toString());
         assertAll(
                 () -> assertEquals(2, r.status()),
@@ -98,17 +126,40 @@ class FresaCommandTest {
     @Test
     void pocketTakesTheMillingDirection() throws Exception {
         String c = "samples/pocket/examplepart.dad";
-        Run climb = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("a.ngc").toString(), "--json");
-        Run conv = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("b.ngc").toString(), "--json",
-                "--direction", "conventional");
-        Run bad = fresa("pocket", c, "--tool-diameter", "10", "--out", dir.resolve("c.ngc").toString(),
-                "--direction", "sideways");
+        Run climb = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "10",
+                "--out",
+                dir.resolve("a.ngc").toString(),
+                "--json");
+        Run conv = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "10",
+                "--out",
+                dir.resolve("b.ngc").toString(),
+                "--json",
+                "--direction",
+                "conventional");
+        Run bad = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "10",
+                "--out",
+                dir.resolve("c.ngc").toString(),
+                "--direction",
+                "sideways");
         assertAll(
                 () -> assertEquals(0, climb.status(), climb.err()),
                 () -> assertTrue(climb.out().contains("\"direction\":\"climb\""), climb.out()),
                 () -> assertEquals(0, conv.status(), conv.err()),
                 () -> assertTrue(conv.out().contains("\"direction\":\"conventional\""), conv.out()),
-                () -> assertFalse(Files.readString(dir.resolve("a.ngc")).equals(Files.readString(dir.resolve("b.ngc")))),
+                () -> assertFalse(
+                        Files.readString(dir.resolve("a.ngc")).equals(Files.readString(dir.resolve("b.ngc")))),
                 () -> assertEquals(2, bad.status()),
                 () -> assertTrue(bad.err().contains("sideways"), bad.err()),
                 () -> assertFalse(Files.exists(dir.resolve("c.ngc"))));
@@ -117,12 +168,38 @@ class FresaCommandTest {
     @Test
     void pocketTakesTheMillingDirectionOnTheCorrected7mPost() throws Exception {
         String c = "samples/pocket/examplepart.dad";
-        Run climb = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m", "--out", dir.resolve("a.nc").toString(),
+        Run climb = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "4",
+                "--post",
+                "7m",
+                "--out",
+                dir.resolve("a.nc").toString(),
                 "--json");
-        Run conv = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m", "--out", dir.resolve("b.nc").toString(),
-                "--json", "--direction", "conventional");
-        Run compat = fresa("pocket", c, "--tool-diameter", "4", "--post", "7m-compat", "--out",
-                dir.resolve("c.nc").toString(), "--json");
+        Run conv = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "4",
+                "--post",
+                "7m",
+                "--out",
+                dir.resolve("b.nc").toString(),
+                "--json",
+                "--direction",
+                "conventional");
+        Run compat = fresa(
+                "pocket",
+                c,
+                "--tool-diameter",
+                "4",
+                "--post",
+                "7m-compat",
+                "--out",
+                dir.resolve("c.nc").toString(),
+                "--json");
         assertAll(
                 () -> assertEquals(0, climb.status(), climb.err()),
                 () -> assertTrue(climb.out().contains("\"direction\":\"climb\""), climb.out()),

@@ -25,9 +25,20 @@ class GradeCommandTest {
 
     @Test
     void gradingTheSampleWritesTheFilesAndAJsonSummary() throws Exception {
-        int rc = run("grade", "samples/grading/sole-40.contour", "--out", dir.toString(), "--base-size", "40",
-                "--sizes", "36-44", "--system", "br", "--json");
-        assertAll(() -> assertEquals(0, rc, err.toString()),
+        int rc = run(
+                "grade",
+                "samples/grading/sole-40.contour",
+                "--out",
+                dir.toString(),
+                "--base-size",
+                "40",
+                "--sizes",
+                "36-44",
+                "--system",
+                "br",
+                "--json");
+        assertAll(
+                () -> assertEquals(0, rc, err.toString()),
                 () -> assertTrue(out.toString().startsWith("{\"outline\":\"sole-40.contour\""), out.toString()),
                 () -> assertTrue(out.toString().contains("\"base_length_mm\":270,\"base_width_mm\":90")),
                 () -> assertTrue(Files.exists(dir.resolve("size-36.dxf"))),
@@ -36,10 +47,24 @@ class GradeCommandTest {
 
     @Test
     void anUnknownShrinkageModeIsBadInputWithExitStatus2() {
-        int rc = run("grade", "samples/grading/sole-40.contour", "--out", dir.toString(), "--base-size", "40",
-                "--sizes", "36-44", "--system", "br", "--shrinkage-mode", "both");
+        int rc = run(
+                "grade",
+                "samples/grading/sole-40.contour",
+                "--out",
+                dir.toString(),
+                "--base-size",
+                "40",
+                "--sizes",
+                "36-44",
+                "--system",
+                "br",
+                "--shrinkage-mode",
+                "both");
         assertEquals(2, rc);
-        assertTrue(err.toString().contains("--shrinkage-mode") && err.toString().contains("expected one of additive, multiplicative"), err.toString());
+        assertTrue(
+                err.toString().contains("--shrinkage-mode")
+                        && err.toString().contains("expected one of additive, multiplicative"),
+                err.toString());
     }
 
     @Test

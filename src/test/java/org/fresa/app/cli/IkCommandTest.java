@@ -21,8 +21,15 @@ class IkCommandTest {
         Path f = dir.resolve("targets.csv");
         Files.writeString(f, "x,y,z,roll,pitch,yaw\n500,0,500,0,180,0\n500,0,500,0,180\n");
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter()), new PrintWriter(err), "ik",
-                f.toString(), "--robot", "irb140", "--out", dir.resolve("out").toString());
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter()),
+                new PrintWriter(err),
+                "ik",
+                f.toString(),
+                "--robot",
+                "irb140",
+                "--out",
+                dir.resolve("out").toString());
         assertEquals(2, status, err::toString);
         assertTrue(err.toString().contains("targets.csv") && err.toString().contains("3"), err::toString);
         assertTrue(err.toString().contains("expected 6 comma-separated numbers"), err::toString);
@@ -34,9 +41,20 @@ class IkCommandTest {
         Path f = dir.resolve("targets.csv");
         Files.writeString(f, "x,y,z,roll,pitch,yaw\n500,100,500,0,180,0\n");
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter()), new PrintWriter(err), "ik",
-                f.toString(), "--robot", "irb140", "--out", dir.resolve("out").toString(), "--all", "--tool-length",
-                "20", "--spindle", "0,0,100");
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter()),
+                new PrintWriter(err),
+                "ik",
+                f.toString(),
+                "--robot",
+                "irb140",
+                "--out",
+                dir.resolve("out").toString(),
+                "--all",
+                "--tool-length",
+                "20",
+                "--spindle",
+                "0,0,100");
         assertEquals(0, status, err::toString);
         var rows = Files.readAllLines(dir.resolve("out").resolve("ik.csv"));
         assertTrue(rows.get(0).endsWith(",branch"), rows.get(0));
@@ -50,8 +68,17 @@ class IkCommandTest {
         Path f = dir.resolve("targets.csv");
         Files.writeString(f, "x,y,z,roll,pitch,yaw\n500,100,500,0,180,0\n");
         StringWriter err = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(new StringWriter()), new PrintWriter(err), "ik",
-                f.toString(), "--robot", "irb140", "--out", dir.resolve("out").toString(), "--method", "newton");
+        int status = FresaCommand.execute(
+                new PrintWriter(new StringWriter()),
+                new PrintWriter(err),
+                "ik",
+                f.toString(),
+                "--robot",
+                "irb140",
+                "--out",
+                dir.resolve("out").toString(),
+                "--method",
+                "newton");
         assertEquals(2, status, err::toString);
         assertTrue(err.toString().contains("--method"), err::toString);
     }

@@ -27,10 +27,32 @@ class PocketReportCommandTest {
     }
 
     private Run pocketFrom(String zBottom, String... extra) {
-        List<String> args = new ArrayList<>(List.of("pocket", "samples/pocket/examplepart.dad", "--out",
-                dir.resolve("examplepart.nc").toString(), "--tool-diameter", "4", "--cut", "0.62", "--finish", "0.18",
-                "--z-top", "8", "--z-bottom", zBottom, "--max-depth", "2", "--rpm", "3250", "--feed", "278",
-                "--finish-feed", "115", "--post", "7m-compat", "--json"));
+        List<String> args = new ArrayList<>(List.of(
+                "pocket",
+                "samples/pocket/examplepart.dad",
+                "--out",
+                dir.resolve("examplepart.nc").toString(),
+                "--tool-diameter",
+                "4",
+                "--cut",
+                "0.62",
+                "--finish",
+                "0.18",
+                "--z-top",
+                "8",
+                "--z-bottom",
+                zBottom,
+                "--max-depth",
+                "2",
+                "--rpm",
+                "3250",
+                "--feed",
+                "278",
+                "--finish-feed",
+                "115",
+                "--post",
+                "7m-compat",
+                "--json"));
         args.addAll(Arrays.asList(extra));
         return CutCommandTest.fresa(args.toArray(String[]::new));
     }
@@ -56,8 +78,10 @@ class PocketReportCommandTest {
                  AVANCO DA FRESA        =    278\s
                  AVANCO NO ACABAMENTO   =    115\s
                 """, Files.readString(report));
-        assertTrue(r.out().contains("\"report\": \"" + report.toString().replace("\\", "\\\\") + "\"")
-                || r.out().contains("\"report\":\"" + report.toString().replace("\\", "\\\\") + "\""), r.out());
+        assertTrue(
+                r.out().contains("\"report\": \"" + report.toString().replace("\\", "\\\\") + "\"")
+                        || r.out().contains("\"report\":\"" + report.toString().replace("\\", "\\\\") + "\""),
+                r.out());
         assertTrue(Files.exists(dir.resolve("examplepart.nc")));
     }
 

@@ -29,24 +29,57 @@ class RobotPlaceAutoCommandTest {
 
     @Test
     void thePlacementPrintedIsTheOneThatReachesEveryPoint() throws Exception {
-        assertEquals(0, run("robot", "samples/stepnc/iso14649-11-example1.stp", "--robot", "tricept806", "--out",
-                dir.resolve("a").toString(), "--place", "auto", "--formats", "csv"), err::toString);
-        Matcher m = Pattern.compile("placement found: --robot-table (\\S+) reaches all (\\d+) targets").matcher(
-                out.toString());
+        assertEquals(
+                0,
+                run(
+                        "robot",
+                        "samples/stepnc/iso14649-11-example1.stp",
+                        "--robot",
+                        "tricept806",
+                        "--out",
+                        dir.resolve("a").toString(),
+                        "--place",
+                        "auto",
+                        "--formats",
+                        "csv"),
+                err::toString);
+        Matcher m = Pattern.compile("placement found: --robot-table (\\S+) reaches all (\\d+) targets")
+                .matcher(out.toString());
         assertTrue(m.find(), out::toString);
         String summary = Files.readString(dir.resolve("a/summary.json"));
         assertTrue(summary.contains("\"unreachable\": 0"), summary);
-        assertEquals(0, run("robot", "samples/stepnc/iso14649-11-example1.stp", "--robot", "tricept806", "--out",
-                dir.resolve("b").toString(), "--robot-table", m.group(1), "--formats", "csv"), err::toString);
+        assertEquals(
+                0,
+                run(
+                        "robot",
+                        "samples/stepnc/iso14649-11-example1.stp",
+                        "--robot",
+                        "tricept806",
+                        "--out",
+                        dir.resolve("b").toString(),
+                        "--robot-table",
+                        m.group(1),
+                        "--formats",
+                        "csv"),
+                err::toString);
         assertTrue(Files.readString(dir.resolve("b/summary.json")).contains("\"unreachable\": 0"));
     }
 
     @Test
     void anotherWordThanAutoIsRefusedWithNothingWritten() {
-        assertEquals(2, run("robot", "samples/stepnc/iso14649-11-example1.stp", "--robot", "tricept806", "--out",
-                dir.resolve("c").toString(), "--place", "anywhere"));
-        assertTrue(err.toString().contains("--place") && err.toString().contains("expected auto or given"),
-                err::toString);
+        assertEquals(
+                2,
+                run(
+                        "robot",
+                        "samples/stepnc/iso14649-11-example1.stp",
+                        "--robot",
+                        "tricept806",
+                        "--out",
+                        dir.resolve("c").toString(),
+                        "--place",
+                        "anywhere"));
+        assertTrue(
+                err.toString().contains("--place") && err.toString().contains("expected auto or given"), err::toString);
         assertTrue(!Files.exists(dir.resolve("c")));
     }
 }

@@ -24,7 +24,8 @@ class RobotsCommandTest {
     @Test
     void withJsonTheyArePrintedAsOneObject() {
         StringWriter out = new StringWriter();
-        int status = FresaCommand.execute(new PrintWriter(out), new PrintWriter(new StringWriter()), "robots", "--json");
+        int status =
+                FresaCommand.execute(new PrintWriter(out), new PrintWriter(new StringWriter()), "robots", "--json");
         assertEquals(0, status);
         String json = out.toString().trim();
         assertTrue(json.startsWith("{\"robots\":[") && json.endsWith("}"), json);

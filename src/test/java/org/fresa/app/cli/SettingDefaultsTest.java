@@ -81,7 +81,8 @@ class SettingDefaultsTest {
     static Map<String, String> xsdDefaults(String type) throws Exception {
         DocumentBuilderFactory f = DocumentBuilderFactory.newInstance();
         f.setNamespaceAware(true);
-        NodeList types = f.newDocumentBuilder().parse(Path.of("schemas/job.xsd").toFile())
+        NodeList types = f.newDocumentBuilder()
+                .parse(Path.of("schemas/job.xsd").toFile())
                 .getElementsByTagNameNS("http://www.w3.org/2001/XMLSchema", "complexType");
         for (int i = 0; i < types.getLength(); i++) {
             Element t = (Element) types.item(i);
@@ -108,7 +109,8 @@ class SettingDefaultsTest {
                 return c.getAccessor().invoke(defaults);
             }
         }
-        throw new IllegalArgumentException("no setting " + attribute + " in " + defaults.getClass().getSimpleName());
+        throw new IllegalArgumentException(
+                "no setting " + attribute + " in " + defaults.getClass().getSimpleName());
     }
 
     /** Whether a value as written in job.xsd is the value: numbers by value, choices by their word. */
@@ -131,7 +133,8 @@ class SettingDefaultsTest {
             return written.equals(String.valueOf(e));
         }
         if (value instanceof List<?> l) {
-            return written.equals(String.join(",", l.stream().map(String::valueOf).toList()));
+            return written.equals(
+                    String.join(",", l.stream().map(String::valueOf).toList()));
         }
         return written.equals(String.valueOf(value));
     }
@@ -175,7 +178,8 @@ class SettingDefaultsTest {
         Map<String, String> xsd = xsdDefaults(m.xsdType());
         Map<String, SettingChoice<?>> choices = choices(m.holder());
         Map<String, String> options = options(m.holder());
-        CommandLine command = m.command() == null ? null
+        CommandLine command = m.command() == null
+                ? null
                 : FresaCommand.withAllCommands().getSubcommands().get(m.command());
         List<String> mismatches = new ArrayList<>();
         int compared = 0;
@@ -199,7 +203,8 @@ class SettingDefaultsTest {
             if (o.defaultValue() != null) {
                 mismatches.add(m.command() + " " + option + ": declares its own default " + o.defaultValue()
                         + " instead of the constant's");
-            } else if (o.initialValue() instanceof String text ? !same(text, constant, choice)
+            } else if (o.initialValue() instanceof String text
+                    ? !same(text, constant, choice)
                     : !o.initialValue().equals(constant)) {
                 mismatches.add(m.command() + " " + option + ": defaults to " + o.initialValue() + ", the constant "
                         + constant);

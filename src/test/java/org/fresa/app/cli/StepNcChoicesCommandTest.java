@@ -38,11 +38,14 @@ class StepNcChoicesCommandTest {
     void aRefusedWorkingstepExitsOneNamingItAndTheRestIsWritten() throws Exception {
         int status = run("toolpath", TECHNOLOGY, "--out", dir.toString());
         String e = err.toString();
-        assertAll(e, () -> assertEquals(1, status),
+        assertAll(
+                e,
+                () -> assertEquals(1, status),
                 () -> assertTrue(e.contains("workingstep 'WS NO SPEED' (#11): no spindle speed and no cutting speed")),
                 () -> assertTrue(e.contains("'WS SPINDLE 100 TIMES TOO SLOW' (#12): spindle 5.84 rpm and cutting speed"
                         + " 0.1835 m/s (584.0986 rpm for the 6 mm tool)")),
-                () -> assertTrue(e.contains("'WS SPEED FROM CUTTING SPEED': no spindle speed in the file: 5729.578 rpm")),
+                () -> assertTrue(
+                        e.contains("'WS SPEED FROM CUTTING SPEED': no spindle speed in the file: 5729.578 rpm")),
                 () -> assertFalse(e.contains("Exception")),
                 () -> assertTrue(Files.readString(dir.resolve("program.ngc")).contains("S5730 M3")));
     }
@@ -50,7 +53,9 @@ class StepNcChoicesCommandTest {
     @Test
     void trustingTheCuttingSpeedPlansTheContradictoryWorkingstepAtIt() throws Exception {
         int status = run("toolpath", TECHNOLOGY, "--out", dir.toString(), "--trust-cutting-speed");
-        assertAll(err.toString(), () -> assertEquals(1, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(1, status),
                 () -> assertTrue(err.toString().contains("planned at 584.0986 rpm from the cutting speed")),
                 () -> assertTrue(Files.readString(dir.resolve("program.ngc")).contains("S584 M3")));
     }
@@ -58,7 +63,9 @@ class StepNcChoicesCommandTest {
     @Test
     void aFileWhoseTechnologyAndHolesAreWholeExitsZeroWithTheBreakthroughAskedFor() throws Exception {
         int status = run("toolpath", HOLES, "--out", dir.toString(), "--breakthrough", "2.5");
-        assertAll(err.toString(), () -> assertEquals(0, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(0, status),
                 () -> assertTrue(Files.readString(dir.resolve("program.ngc")).contains("Z-4.303")));
     }
 
@@ -70,7 +77,9 @@ class StepNcChoicesCommandTest {
             int status = command.equals("robot")
                     ? run("robot", HOLES, "--robot", "irb140", "--out", o.toString(), "--breakthrough", value)
                     : run("toolpath", HOLES, "--out", o.toString(), "--breakthrough", value);
-            assertAll(err.toString(), () -> assertEquals(2, status),
+            assertAll(
+                    err.toString(),
+                    () -> assertEquals(2, status),
                     () -> assertTrue(err.toString().contains("--breakthrough: expected a number from 0 to 100 mm")),
                     () -> assertFalse(Files.exists(o)));
         }

@@ -14,8 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 class StepncCommandTest {
 
-    record Run(int status, String out, String err) {
-    }
+    record Run(int status, String out, String err) {}
 
     static Run fresa(String... args) {
         StringWriter out = new StringWriter();
@@ -29,7 +28,10 @@ class StepncCommandTest {
         Run r = fresa("stepnc", "samples/stepnc/example2.stp", "--json");
         assertEquals(0, r.status(), r.err());
         String j = r.out();
-        assertTrue(j.startsWith("{\"schema\":\"COMBINED_SCHEMA\",\"instances\":732,\"project\":\"3caras\",\"workingsteps\":["), j);
+        assertTrue(
+                j.startsWith(
+                        "{\"schema\":\"COMBINED_SCHEMA\",\"instances\":732,\"project\":\"3caras\",\"workingsteps\":["),
+                j);
         assertTrue(j.contains("\"feature\":{\"type\":\"CLOSED_POCKET\""), j);
         assertTrue(j.contains("\"axis\":[0,-1,0]"), j);
         assertTrue(j.contains("\"strategy\":\"CONTOUR_PARALLEL\""), j);
@@ -50,8 +52,11 @@ class StepncCommandTest {
     void aDamagedFileExitsWith2AndALineAndNothingOnStdout(@TempDir Path dir) throws Exception {
         String text = Files.readString(Path.of("samples/stepnc/example2.stp"), StandardCharsets.UTF_8);
         Path bad = dir.resolve("bad.stp");
-        Files.writeString(bad, text.replace("#35=ROUND_HOLE('Plane Base Hole',#2,(#25,#49,#60),",
-                "#35=ROUND_HOLE('Plane Base Hole',#2,((#25,#49,#60),"));
+        Files.writeString(
+                bad,
+                text.replace(
+                        "#35=ROUND_HOLE('Plane Base Hole',#2,(#25,#49,#60),",
+                        "#35=ROUND_HOLE('Plane Base Hole',#2,((#25,#49,#60),"));
         Run r = fresa("stepnc", bad.toString(), "--json");
         assertEquals(2, r.status());
         assertEquals("", r.out());
@@ -67,11 +72,19 @@ class StepncCommandTest {
         Files.writeString(file, text.replace("#37= FLAT_SLOT_END_TYPE(6.000,4.000);", "#37= LOOP_SLOT_END_TYPE();"));
         Run prose = fresa("stepnc", file.toString());
         assertEquals(0, prose.status(), prose.err());
-        assertTrue(prose.out().contains("1 workingstep not planned:\n  #15 'WS SQUARE U ENDS': loop slot ends are not"
-                + " machined"), prose.out());
+        assertTrue(
+                prose.out()
+                        .contains("1 workingstep not planned:\n  #15 'WS SQUARE U ENDS': loop slot ends are not"
+                                + " machined"),
+                prose.out());
         Run json = fresa("stepnc", file.toString(), "--json");
-        assertTrue(json.out().contains("\"not_planned\":[{\"id\":\"WS SQUARE U ENDS\",\"instance\":15,\"reason\":"
-                + "\"loop slot ends are not machined"), json.out());
-        assertFalse(fresa("stepnc", "src/test/resources/stepnc/slots-profiles.stp").out().contains("not planned"));
+        assertTrue(
+                json.out()
+                        .contains("\"not_planned\":[{\"id\":\"WS SQUARE U ENDS\",\"instance\":15,\"reason\":"
+                                + "\"loop slot ends are not machined"),
+                json.out());
+        assertFalse(fresa("stepnc", "src/test/resources/stepnc/slots-profiles.stp")
+                .out()
+                .contains("not planned"));
     }
 }

@@ -53,13 +53,17 @@ class ThesisPathsCommandTest {
         assumeTrue(Rs274.available(), Rs274.whyNot());
         int status = run("toolpath", input, "--paths", "thesis", "--out", dir.toString());
         String summary = Files.readString(dir.resolve("summary.json"));
-        assertAll(err.toString(), () -> assertEquals(0, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(0, status),
                 () -> assertFalse(summary.contains("program_refused")),
-                () -> assertTrue(summary.contains(input.equals(EXAMPLE2) ? "\"points\": 3106" : "\"points\": 531"),
-                        summary));
+                () -> assertTrue(
+                        summary.contains(input.equals(EXAMPLE2) ? "\"points\": 3106" : "\"points\": 531"), summary));
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 20);
         assertEquals(0, r.exitStatus(), r.stderr());
-        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(StepNcReader.read(Path.of(input)), Tolerance.DEFAULT,
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(
+                StepNcReader.read(Path.of(input)),
+                Tolerance.DEFAULT,
                 PlanningChoices.DEFAULT.withPaths(PathConvention.THESIS));
         List<Rs274.Canon> expected = ExpectedMotions.of(plan.toolpath(), false, NcPosts.CHORD_TOLERANCE_MM);
         assertNull(ExpectedMotions.firstDifference(expected, r.motions(), 0.0011));
@@ -67,12 +71,27 @@ class ThesisPathsCommandTest {
 
     @Test
     void theRobotProgramsOfTheThesissPathsPassTheCheck() throws Exception {
-        int status = run("robot", EXAMPLE2, "--paths", "thesis", "--robot", "irb140", "--robot-table", "450,0,350",
-                "--table-piece", "0,10,0", "--formats", "csv,xml,rapid,krl", "--out", dir.toString());
+        int status = run(
+                "robot",
+                EXAMPLE2,
+                "--paths",
+                "thesis",
+                "--robot",
+                "irb140",
+                "--robot-table",
+                "450,0,350",
+                "--table-piece",
+                "0,10,0",
+                "--formats",
+                "csv,xml,rapid,krl",
+                "--out",
+                dir.toString());
         String summary = Files.readString(dir.resolve("summary.json"));
         // the robot keeps a workingstep's first point (the security point) only where the previous one
         // did not end there with the same tool axis: 3106 points less 23 repeats
-        assertAll(err.toString(), () -> assertEquals(0, status),
+        assertAll(
+                err.toString(),
+                () -> assertEquals(0, status),
                 () -> assertTrue(summary.contains("\"targets\": 3083"), summary),
                 () -> assertTrue(Files.exists(dir.resolve("program.mod"))),
                 () -> assertTrue(Files.exists(dir.resolve("program.src"))),
@@ -86,9 +105,11 @@ class ThesisPathsCommandTest {
             int status = command.equals("robot")
                     ? run("robot", EXAMPLE2, "--robot", "irb140", "--out", o.toString(), "--paths", "nist")
                     : run("toolpath", EXAMPLE2, "--out", o.toString(), "--paths", "nist");
-            assertAll(err.toString(), () -> assertEquals(2, status),
-                    () -> assertTrue(err.toString().contains("--paths: unknown path conventions 'nist': expected fresa"
-                            + " or thesis")),
+            assertAll(
+                    err.toString(),
+                    () -> assertEquals(2, status),
+                    () -> assertTrue(err.toString()
+                            .contains("--paths: unknown path conventions 'nist': expected fresa" + " or thesis")),
                     () -> assertFalse(err.toString().contains("Exception")),
                     () -> assertFalse(Files.exists(o)));
         }

@@ -48,12 +48,15 @@ class BasicNumbersTest {
     @Test
     void strIsNotPlainRoundingToSevenDigits() {
         Mbf x = new Mbf((int) Long.parseLong("83124924", 16));
-        String plain = new BigDecimal(x.toDouble()).round(new MathContext(7, RoundingMode.HALF_UP)).toPlainString();
+        String plain = new BigDecimal(x.toDouble())
+                .round(new MathContext(7, RoundingMode.HALF_UP))
+                .toPlainString();
         assertAll(
                 () -> assertEquals("4.571428", plain),
                 () -> assertEquals(" 4.571429", BasicNumbers.str(x)),
                 // one unit in the last place above 40 is 40.0000038: it prints as 40.00001
-                () -> assertEquals(" 40.00001", BasicNumbers.str(new Mbf(Mbf.of(40).bits() + 1))));
+                () -> assertEquals(
+                        " 40.00001", BasicNumbers.str(new Mbf(Mbf.of(40).bits() + 1))));
     }
 
     @Test

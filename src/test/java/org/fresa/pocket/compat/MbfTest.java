@@ -100,13 +100,15 @@ class MbfTest {
         Mbf n = BasicNumbers.val("10000");
         assertAll(
                 () -> assertEquals(" 100", BasicNumbers.str(n.pow(half))),
-                () -> assertEquals(" 90", BasicNumbers.str(BasicNumbers.val("8100").pow(half))),
+                () -> assertEquals(
+                        " 90", BasicNumbers.str(BasicNumbers.val("8100").pow(half))),
                 () -> assertEquals((float) Math.sqrt(2), Mbf.of(2).pow(half).toFloat()),
                 // GW-BASIC's $FPWR: EXP(.5 * LOG(10000)) with its polynomial LOG and EXP
                 () -> assertEquals(" 99.99999", BasicNumbers.str(MbfFunctions.exp(half.times(MbfFunctions.log(n))))),
                 () -> assertEquals(Mbf.ZERO, MbfFunctions.log(Mbf.ONE)),
                 () -> assertEquals(Math.log(7), MbfFunctions.log(Mbf.of(7)).toDouble(), 1e-6),
-                () -> assertEquals(Math.exp(-3.5), MbfFunctions.exp(Mbf.of(-3.5f)).toDouble(), 1e-7));
+                () -> assertEquals(
+                        Math.exp(-3.5), MbfFunctions.exp(Mbf.of(-3.5f)).toDouble(), 1e-7));
     }
 
     @Test

@@ -28,8 +28,8 @@ class Sinumerik7MPostTest {
         for (String line : Files.readAllLines(SAMPLES.resolve("jobs.csv"))) {
             String[] f = line.split(",");
             if (f[0].equals(name + ".dad")) {
-                PocketTechnology t = new PocketTechnology(d(f[1]), d(f[2]), d(f[3]), d(f[4]), d(f[5]), d(f[6]), d(f[7]),
-                        d(f[8]), d(f[9]));
+                PocketTechnology t = new PocketTechnology(
+                        d(f[1]), d(f[2]), d(f[3]), d(f[4]), d(f[5]), d(f[6]), d(f[7]), d(f[8]), d(f[9]));
                 var profile = DadReader.read(Files.readString(SAMPLES.resolve(f[0])), f[0]);
                 return PassPlanner.plan(Recognition.of(profile), t);
             }
@@ -131,7 +131,10 @@ class Sinumerik7MPostTest {
         List<Integer> differing = new java.util.ArrayList<>();
         long worst = 0;
         for (int i = 0; i < g.size(); i++) {
-            assertEquals(WORD.matcher(g.get(i)).replaceAll("$1"), WORD.matcher(nc.get(i)).replaceAll("$1"), "line " + (i + 1));
+            assertEquals(
+                    WORD.matcher(g.get(i)).replaceAll("$1"),
+                    WORD.matcher(nc.get(i)).replaceAll("$1"),
+                    "line " + (i + 1));
             Matcher a = WORD.matcher(g.get(i));
             Matcher b = WORD.matcher(nc.get(i));
             while (a.find() && b.find()) {
@@ -141,7 +144,8 @@ class Sinumerik7MPostTest {
                 differing.add(i + 1);
             }
         }
-        assertEquals(java.util.Arrays.stream(lines.split(" ")).map(Integer::valueOf).toList(), differing);
+        assertEquals(
+                java.util.Arrays.stream(lines.split(" ")).map(Integer::valueOf).toList(), differing);
         assertEquals(maxUm, worst);
     }
 
@@ -206,8 +210,8 @@ class Sinumerik7MPostTest {
     void correctedPostEndsTheLastDepthPassOnTheFloorWhenTheStepIsNoWholeMicrometre() throws Exception {
         PocketTechnology t = new PocketTechnology(6, 0.6, 0.15, 0, -5, 2, 3000, 300, 150);
         var profile = DadReader.read(Files.readString(SAMPLES.resolve("examplepart.dad")), "examplepart.dad");
-        List<String> nc = lines(new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED).write(
-                PassPlanner.plan(Recognition.of(profile), t)));
+        List<String> nc = lines(new Sinumerik7MPost(Sinumerik7MPost.Mode.CORRECTED)
+                .write(PassPlanner.plan(Recognition.of(profile), t)));
         assertEquals(3, t.depthPasses());
         // from Z+5 above the top (incremental Z): the floor at -5 is Z-10000
         assertEquals(-10000, deepestUm(nc));

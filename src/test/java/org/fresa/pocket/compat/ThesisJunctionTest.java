@@ -21,7 +21,8 @@ class ThesisJunctionTest {
 
     /** The program's micrometres: INT(v·1000 + .499) in single precision. */
     private static long um(Mbf v) {
-        return (long) v.times(Mbf.of(1000)).plus(BasicNumbers.val(".499")).floor().toDouble();
+        return (long)
+                v.times(Mbf.of(1000)).plus(BasicNumbers.val(".499")).floor().toDouble();
     }
 
     @Test
@@ -29,10 +30,12 @@ class ThesisJunctionTest {
         // the example part's slot end: line 1 misses tangency with arc 2 by 0.05 µm; on the
         // finishing pass (t = 2) the exact crossing is (45.2885, 34.9144), the thesis printed
         // N125 X 45278 Y 34912: the discriminant's rounding noise, which this routine reproduces
-        ThesisJunction.Point p = ThesisJunction.of(line(".2315189", "-.9728306", "-23.48066"), circle("46", "32", "3"),
-                false, COMPAR).orElseThrow();
-        ThesisJunction.Point q = ThesisJunction.of(line(".2315189", "-.9728306", "-22.76066"), circle("46", "32", "2.28"),
-                false, COMPAR).orElseThrow();
+        ThesisJunction.Point p = ThesisJunction.of(
+                        line(".2315189", "-.9728306", "-23.48066"), circle("46", "32", "3"), false, COMPAR)
+                .orElseThrow();
+        ThesisJunction.Point q = ThesisJunction.of(
+                        line(".2315189", "-.9728306", "-22.76066"), circle("46", "32", "2.28"), false, COMPAR)
+                .orElseThrow();
         assertAll(
                 () -> assertEquals(45278, um(p.x())),
                 () -> assertEquals(34912, um(p.y())),
@@ -44,11 +47,10 @@ class ThesisJunctionTest {
     @Test
     void tangentCirclesMeetOnTheLineOfCentres() {
         // cavity 04: the zero-radius arc at (40, 30) grown to 25.44 against circle 2 shrunk to 24.56
-        ThesisJunction.Point p = ThesisJunction.of(circle("40", "30", "25.44"), circle("90", "30", "24.56"), false,
-                BasicNumbers.val(".00583")).orElseThrow();
-        assertAll(
-                () -> assertEquals(65440, um(p.x())),
-                () -> assertEquals(30000, um(p.y())));
+        ThesisJunction.Point p = ThesisJunction.of(
+                        circle("40", "30", "25.44"), circle("90", "30", "24.56"), false, BasicNumbers.val(".00583"))
+                .orElseThrow();
+        assertAll(() -> assertEquals(65440, um(p.x())), () -> assertEquals(30000, um(p.y())));
     }
 
     @Test
@@ -57,17 +59,32 @@ class ThesisJunctionTest {
         ThesisJunction.Carrier y30 = line("0", "1", "30");
         ThesisJunction.Carrier c = circle("90", "30", "50");
         assertAll(
-                () -> assertEquals(40f, ThesisJunction.of(y30, c, false, COMPAR).orElseThrow().x().toFloat()),
-                () -> assertEquals(140f, ThesisJunction.of(y30, c, true, COMPAR).orElseThrow().x().toFloat()),
-                () -> assertEquals(30f, ThesisJunction.of(y30, c, true, COMPAR).orElseThrow().y().toFloat()));
+                () -> assertEquals(
+                        40f,
+                        ThesisJunction.of(y30, c, false, COMPAR)
+                                .orElseThrow()
+                                .x()
+                                .toFloat()),
+                () -> assertEquals(
+                        140f,
+                        ThesisJunction.of(y30, c, true, COMPAR)
+                                .orElseThrow()
+                                .x()
+                                .toFloat()),
+                () -> assertEquals(
+                        30f,
+                        ThesisJunction.of(y30, c, true, COMPAR)
+                                .orElseThrow()
+                                .y()
+                                .toFloat()));
     }
 
     @Test
     void theProgramStopsWhereThereIsNoJunction() {
-        Optional<ThesisJunction.Point> parallel = ThesisJunction.of(line("1", "0", "5"), line("1", "0", "9"), false, COMPAR);
-        Optional<ThesisJunction.Point> miss = ThesisJunction.of(line("1", "0", "20"), circle("0", "0", "5"), false, COMPAR);
-        assertAll(
-                () -> assertTrue(parallel.isEmpty()),
-                () -> assertTrue(miss.isEmpty()));
+        Optional<ThesisJunction.Point> parallel =
+                ThesisJunction.of(line("1", "0", "5"), line("1", "0", "9"), false, COMPAR);
+        Optional<ThesisJunction.Point> miss =
+                ThesisJunction.of(line("1", "0", "20"), circle("0", "0", "5"), false, COMPAR);
+        assertAll(() -> assertTrue(parallel.isEmpty()), () -> assertTrue(miss.isEmpty()));
     }
 }

@@ -33,8 +33,10 @@ class ThesisPassesTest {
         // third pass at 13.9, the sub-area's last pass at (leaf + DTESTE)/2 = 20.96666; GOTA.BAS
         // run in an emulated GW-BASIC prints the same DPERC at its passes
         PocketPlan plan = plan("cavity05.dad", new PocketTechnology(10, 0.72, 0.17, 15, 12, 4, 3250, 295, 90));
-        List<String> offsets = ThesisPasses.of(plan).orElseThrow().generated().stream().map(PocketPass::offsetMm)
-                .map(d -> BasicNumbers.str(Mbf.of(d.floatValue()))).toList();
+        List<String> offsets = ThesisPasses.of(plan).orElseThrow().generated().stream()
+                .map(PocketPass::offsetMm)
+                .map(d -> BasicNumbers.str(Mbf.of(d.floatValue())))
+                .toList();
         assertEquals(List.of(" 5", " 6.7", " 13.9", " 20.96666"), offsets);
     }
 
@@ -51,7 +53,8 @@ class ThesisPassesTest {
             assertEquals(a.offsetMm(), b.offsetMm(), 1e-5);
             for (int k = 0; k < a.pieces().size(); k++) {
                 assertEquals(a.pieces().get(k).element(), b.pieces().get(k).element());
-                assertEquals(0, a.pieces().get(k).start().distance(b.pieces().get(k).start()), 1e-3);
+                assertEquals(
+                        0, a.pieces().get(k).start().distance(b.pieces().get(k).start()), 1e-3);
             }
         }
     }
@@ -62,11 +65,15 @@ class ThesisPassesTest {
         // Fresa's own test contours: several sub-areas, a four-way split; every pass is recomputed
         var contours = org.fresa.pocket.PocketProfile.fromContours(org.fresa.model.ContourFile.read(
                 new java.io.StringReader(Files.readString(Path.of("samples/pocket", name))), name));
-        PocketPlan plan = PassPlanner.plan(Recognition.of(contours), new PocketTechnology(2, 0.6, 0.1, 5, 0, 5, 3000, 300, 100));
+        PocketPlan plan =
+                PassPlanner.plan(Recognition.of(contours), new PocketTechnology(2, 0.6, 0.1, 5, 0, 5, 3000, 300, 100));
         PocketPlan thesis = ThesisPasses.of(plan).orElseThrow();
         assertEquals(plan.generated().size(), thesis.generated().size());
         for (int i = 0; i < plan.generated().size(); i++) {
-            assertEquals(plan.generated().get(i).offsetMm(), thesis.generated().get(i).offsetMm(), 1e-4);
+            assertEquals(
+                    plan.generated().get(i).offsetMm(),
+                    thesis.generated().get(i).offsetMm(),
+                    1e-4);
         }
     }
 }
