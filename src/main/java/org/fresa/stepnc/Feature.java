@@ -73,42 +73,6 @@ public record Feature(
         bosses = List.copyOf(bosses);
     }
 
-    /** A feature without bosses. */
-    public Feature(
-            long instanceId,
-            FeatureType type,
-            String entity,
-            String id,
-            Transform3 placement,
-            OptionalDouble depthMm,
-            Optional<Transform3> depthPlane,
-            Optional<Profile> profile,
-            Optional<TravelPath> courseOfTravel,
-            OptionalDouble diameterMm,
-            Optional<String> bottomCondition,
-            OptionalDouble planarRadiusMm,
-            OptionalDouble orthogonalRadiusMm,
-            List<Long> operationIds,
-            List<SlotEnd> slotEnds) {
-        this(
-                instanceId,
-                type,
-                entity,
-                id,
-                placement,
-                depthMm,
-                depthPlane,
-                profile,
-                courseOfTravel,
-                diameterMm,
-                bottomCondition,
-                planarRadiusMm,
-                orthogonalRadiusMm,
-                operationIds,
-                slotEnds,
-                List.of());
-    }
-
     /** A feature without slot ends. */
     public Feature(
             long instanceId,
@@ -140,6 +104,7 @@ public record Feature(
                 planarRadiusMm,
                 orthogonalRadiusMm,
                 operationIds,
+                List.of(),
                 List.of());
     }
 

@@ -263,12 +263,14 @@ public final class ToolpathPlanner {
             return Optional.of(viaSecurityPlane(
                     Placing.place(ExplicitPaths.section(label, op, tooling, problems), place), ws.securityPlane()));
         }
+        if (!f.bosses().isEmpty() && f.type() != Feature.FeatureType.CLOSED_POCKET) {
+            // cutting it as if it had none would mill its bosses away
+            throw new UnsupportedOperationException(
+                    f.type() + " features with bosses (its_boss) are not supported yet");
+        }
         ToolpathSection local;
         switch (f.type()) {
-            case PLANAR_FACE -> {
-                noBosses(f);
-                local = face(label, f, op, h, tooling, problems);
-            }
+            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
@@ -286,13 +288,14 @@ public final class ToolpathPlanner {
                             label,
                             p,
                             f,
-                            f.placement().times(pp),
+                            place,
                             op,
                             h,
                             tooling,
                             stepover(op, tooling),
                             axial,
-                            climb(op),
+                            // counter-clockwise loops, as the same pocket without bosses turns
+                            !clockwise(op),
                             tol,
                             holes.choices().entry(),
                             problems);
@@ -333,7 +336,6 @@ public final class ToolpathPlanner {
                                 holes.choices().entry()));
             }
             case STEP -> {
-                noBosses(f);
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
                 local = OpenSideMilling.step(
@@ -346,8 +348,8 @@ public final class ToolpathPlanner {
                         tooling,
                         stepover(op, tooling),
                         axial,
-                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        sideAllowanceMm(op),
+                        bottomAllowanceMm(op),
                         climb(op),
                         tol);
             }
@@ -370,10 +372,11 @@ public final class ToolpathPlanner {
                     throw new UnsupportedOperationException(
                             "outside profiles bounded by " + sp.entity() + " are not supported yet");
                 }
-                Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "outside profile");
+                Contour stock = stockOutline(holes.program(), f, place, "outside profile");
+                Contour outline = part.contour(tol);
                 double reach = 0;
                 for (Curve2 c : stock.curves()) {
-                    reach = Math.max(reach, part.contour(tol).distanceTo(c.start()));
+                    reach = Math.max(reach, outline.distanceTo(c.start()));
                 }
                 if (reach > tooling.diameterMm() + tol.linear()) {
                     // one loop a layer, as a contour: what lies farther out stays
@@ -383,18 +386,17 @@ public final class ToolpathPlanner {
                 }
                 local = OpenSideMilling.outsideProfile(
                         label,
-                        part.contour(tol),
+                        outline,
                         stock,
                         h,
                         tooling,
                         axial,
-                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        sideAllowanceMm(op),
+                        bottomAllowanceMm(op),
                         climb(op),
                         tol);
             }
             case OPEN_POCKET -> {
-                noBosses(f);
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the open pocket has no open boundary"));
                 if (!(sp instanceof org.fresa.stepnc.Profile.General g)
@@ -430,7 +432,7 @@ public final class ToolpathPlanner {
                         walls.add(new Segment2(a, b));
                     }
                 }
-                Contour stock = stockOutline(holes.program(), f, f.placement().times(pp), "open pocket");
+                Contour stock = stockOutline(holes.program(), f, place, "open pocket");
                 local = OpenSideMilling.openPocket(
                         label,
                         walls,
@@ -439,8 +441,8 @@ public final class ToolpathPlanner {
                         tooling,
                         stepover(op, tooling),
                         axial,
-                        isRough(op) ? op.allowanceSideMm().orElse(0) : 0,
-                        isRough(op) ? op.allowanceBottomMm().orElse(0) : 0,
+                        sideAllowanceMm(op),
+                        bottomAllowanceMm(op),
                         climb(op),
                         tol,
                         problems);
@@ -453,18 +455,20 @@ public final class ToolpathPlanner {
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
     }
 
-    /** Refuses a feature with bosses: cutting it as if it had none would mill them away. */
-    static void noBosses(Feature f) {
-        if (!f.bosses().isEmpty()) {
-            throw new UnsupportedOperationException(
-                    f.type() + " features with bosses (its_boss) are not supported yet");
-        }
-    }
-
     /**
      * Climb milling unless the strategy's cutmode says conventional: with the spindle turning
      * clockwise, the material being cut on the tool's right.
      */
+    /** The side allowance a rough operation leaves; a finish cuts to size. */
+    static double sideAllowanceMm(Operation op) {
+        return isRough(op) ? op.allowanceSideMm().orElse(0) : 0;
+    }
+
+    /** The bottom allowance a rough operation leaves; a finish cuts to size. */
+    static double bottomAllowanceMm(Operation op) {
+        return isRough(op) ? op.allowanceBottomMm().orElse(0) : 0;
+    }
+
     static boolean climb(Operation op) {
         return !op.strategy()
                 .flatMap(org.fresa.stepnc.Strategy::cutmode)
@@ -629,7 +633,7 @@ public final class ToolpathPlanner {
             problems.add("workingstep '" + label + "': " + st.get() + " on a planar face is milled bidirectionally");
         }
         double overcut = op.overcutLengthMm().orElse(0.25 * t.diameterMm());
-        double bottom = h.bottomZ() + (isRough(op) ? op.allowanceBottomMm().orElse(0) : 0);
+        double bottom = h.bottomZ() + bottomAllowanceMm(op);
         Heights hh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), bottom);
         boolean left = !op.strategy()
                 .flatMap(org.fresa.stepnc.Strategy::stepoverDirection)
@@ -1053,7 +1057,7 @@ public final class ToolpathPlanner {
         if (s.get().rotationDirection().isPresent()) {
             return s.get().rotationDirection().get().equalsIgnoreCase("CW");
         }
-        return s.get().cutmode().map(m -> m.equalsIgnoreCase("CONVENTIONAL")).orElse(false);
+        return !climb(op);
     }
 
     static Approach approach(Optional<ApproachRetract> a) {
