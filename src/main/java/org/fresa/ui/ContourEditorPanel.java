@@ -73,19 +73,13 @@ final class ContourEditorPanel {
                 "Add",
                 "Add an element after the selected one (Insert)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, 0),
-                () -> {
-                    editor.add();
-                    return true;
-                }));
+                editor::add));
         buttons.add(button(
                 "pocket-element-insert",
                 "Insert before",
                 "Insert an element before the selected one (Shift+Insert)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_INSERT, InputEvent.SHIFT_DOWN_MASK),
-                () -> {
-                    editor.insert();
-                    return true;
-                }));
+                editor::insert));
         buttons.add(button(
                 "pocket-element-delete",
                 "Delete",

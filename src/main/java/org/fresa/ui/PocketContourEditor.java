@@ -62,11 +62,16 @@ public final class PocketContourEditor {
     private final Map<Cell, String> badText = new HashMap<>();
     private final Map<Cell, String> problems = new HashMap<>();
     private int selected = -1;
+    // the contour's own refusal and curves, worked out once per change of the elements: the table
+    // asks for them for every row it paints
+    private Optional<DadContour.Refusal> refusal;
+    private Optional<List<Curve2>> curves;
 
     /** Shows a contour (a new one, read from its file or from the job); no cell is bad, nothing is selected. */
     public void load(DadContour contour) {
         elements.clear();
         elements.addAll(contour.elements());
+        elementsChanged();
         badText.clear();
         problems.clear();
         selected = elements.isEmpty() ? -1 : 0;
@@ -154,6 +159,7 @@ public final class PocketContourEditor {
             return false;
         }
         elements.set(row, changed);
+        elementsChanged();
         return true;
     }
 
@@ -217,23 +223,28 @@ public final class PocketContourEditor {
         throw new IllegalArgumentException("convex (centre inside the pocket, F) or concave (M), found '" + t + "'");
     }
 
-    /** Adds a new element after the selected one (at the end when none is) and selects it. */
-    public void add() {
-        insertAt(selected < 0 ? elements.size() : selected + 1);
+    /**
+     * Adds a new element after the selected one (at the end when none is) and selects it; false
+     * when the contour already has the most elements a .dad file holds.
+     */
+    public boolean add() {
+        return insertAt(selected < 0 ? elements.size() : selected + 1);
     }
 
     /** Inserts a new element before the selected one (at the start when none is) and selects it. */
-    public void insert() {
-        insertAt(Math.max(0, selected));
+    public boolean insert() {
+        return insertAt(Math.max(0, selected));
     }
 
-    private void insertAt(int row) {
+    private boolean insertAt(int row) {
         if (elements.size() >= DadContour.MAX_ELEMENTS) {
-            throw new IllegalStateException("a .dad contour has at most " + DadContour.MAX_ELEMENTS + " elements");
+            return false;
         }
         structural();
         elements.add(row, NEW_ELEMENT);
+        elementsChanged();
         selected = row;
+        return true;
     }
 
     /** Deletes the selected element; the next one (or the new last) is selected. */
@@ -243,6 +254,7 @@ public final class PocketContourEditor {
         }
         structural();
         elements.remove(selected);
+        elementsChanged();
         selected = Math.min(selected, elements.size() - 1);
         return true;
     }
@@ -265,8 +277,28 @@ public final class PocketContourEditor {
         DadElement e = elements.get(selected);
         elements.set(selected, elements.get(other));
         elements.set(other, e);
+        elementsChanged();
         selected = other;
         return true;
+    }
+
+    private void elementsChanged() {
+        refusal = null;
+        curves = null;
+    }
+
+    private Optional<DadContour.Refusal> contourRefusal() {
+        if (refusal == null) {
+            refusal = contour().refusal();
+        }
+        return refusal;
+    }
+
+    private Optional<List<Curve2>> contourCurves() {
+        if (curves == null) {
+            curves = contour().curves();
+        }
+        return curves;
     }
 
     /** Rows move: a cell typed badly goes back to its element's value. */
@@ -277,7 +309,7 @@ public final class PocketContourEditor {
 
     /** Whether every cell holds a value and the contour closes without crossing itself. */
     public boolean valid() {
-        return problems.isEmpty() && contour().refusal().isEmpty();
+        return problems.isEmpty() && contourRefusal().isEmpty();
     }
 
     /** The first reason the contour is not taken: a bad cell first, then the contour as a whole. */
@@ -289,12 +321,12 @@ public final class PocketContourEditor {
         if (first.isPresent()) {
             return Optional.of(problems.get(first.get()));
         }
-        return contour().refusal().map(DadContour.Refusal::message);
+        return contourRefusal().map(DadContour.Refusal::message);
     }
 
     /** The element the contour's refusal names (row = element - 1), when it names one. */
     public OptionalInt refusedRow() {
-        Optional<DadContour.Refusal> r = contour().refusal();
+        Optional<DadContour.Refusal> r = contourRefusal();
         return r.isPresent() && r.get().element() > 0 ? OptionalInt.of(r.get().element() - 1) : OptionalInt.empty();
     }
 
@@ -303,7 +335,7 @@ public final class PocketContourEditor {
      * in the warning style; empty of curves while two consecutive elements do not meet.
      */
     public PlotScene scene() {
-        Optional<List<Curve2>> curves = contour().curves();
+        Optional<List<Curve2>> curves = contourCurves();
         if (curves.isEmpty()) {
             return PlotScene.empty(
                     elements.size() < DadContour.MIN_ELEMENTS

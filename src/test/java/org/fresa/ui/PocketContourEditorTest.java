@@ -242,4 +242,15 @@ class PocketContourEditorTest {
             throw new java.io.UncheckedIOException(e);
         }
     }
+
+    @Test
+    void aContourOfTheMostElementsTakesNoMore() {
+        PocketContourEditor full = new PocketContourEditor();
+        for (int i = 0; i < org.fresa.pocket.DadContour.MAX_ELEMENTS; i++) {
+            assertTrue(full.add());
+        }
+        assertFalse(full.add());
+        assertFalse(full.insert());
+        assertEquals(org.fresa.pocket.DadContour.MAX_ELEMENTS, full.rows());
+    }
 }
