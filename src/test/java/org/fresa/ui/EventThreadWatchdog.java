@@ -283,6 +283,11 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
      */
     @Override
     protected void dispatchEvent(AWTEvent event) {
+        if (!recording && frames.isEmpty()) {
+            // between recordings (the watchdog stays on the queue for the JVM) events only pass
+            super.dispatchEvent(event);
+            return;
+        }
         Frame f = new Frame(describe(event));
         frames.push(f);
         openSegment();
@@ -469,7 +474,7 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
                 sampleRunQueue();
             }
             Segment s = inFlight;
-            if (s != null && s.stack == null && System.nanoTime() - s.startNanos > thresholdMs * 1e6) {
+            if (recording && s != null && s.stack == null && System.nanoTime() - s.startNanos > thresholdMs * 1e6) {
                 Thread t = eventThread;
                 StackTraceElement[] st = t == null ? null : t.getStackTrace();
                 String running = describe(tasks(), true);
