@@ -34,7 +34,9 @@ public record ToolTurns(boolean free, double maxDeg) {
         if (!free || !robot.controlsFullOrientation()) {
             return List.of(wrapDeg(phiDeg));
         }
-        return List.of(wrapDeg(phiDeg), wrapDeg(phiDeg + 180), wrapDeg(phiDeg + 90), wrapDeg(phiDeg - 90));
+        List<Double> all = List.of(wrapDeg(phiDeg), wrapDeg(phiDeg + 180), wrapDeg(phiDeg + 90), wrapDeg(phiDeg - 90));
+        // held within a largest turn under 180 degrees two of them can be the same turn: solved once
+        return maxDeg >= 180 ? all : all.stream().distinct().toList();
     }
 
     /** The turn in [-180, 180] degrees, held within the largest turn allowed. */

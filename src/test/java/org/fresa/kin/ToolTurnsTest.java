@@ -26,6 +26,7 @@ class ToolTurnsTest {
     @Test
     void turnsAreHeldWithinTheLargestTurnAllowed() {
         assertEquals(List.of(30.0, -90.0, 90.0, -60.0), new ToolTurns(true, 90).firstDeg(IRB140, 30));
+        assertEquals(List.of(0.0, 90.0, -90.0), new ToolTurns(true, 90).firstDeg(IRB140, 0));
         assertThrows(IllegalArgumentException.class, () -> new ToolTurns(true, 181));
     }
 
