@@ -26,10 +26,17 @@ public final class Json {
         return sb.append('\n').toString();
     }
 
-    private static Map<String, Object> byName(Map<?, ?> m) {
-        Map<String, Object> out = new java.util.HashMap<>();
-        m.forEach((k, v) -> out.put(String.valueOf(k), v));
-        return out;
+    /**
+     * The map in an order that is the same in every run: a {@code Map.of} (whose iteration order is
+     * salted per JVM run) by its keys' names; any other map (LinkedHashMap, TreeMap) as it is.
+     */
+    static Map<?, ?> inStableOrder(Map<?, ?> m) {
+        if (!m.getClass().getName().startsWith("java.util.ImmutableCollections")) {
+            return m;
+        }
+        Map<Object, Object> sorted = new java.util.TreeMap<>(java.util.Comparator.comparing(String::valueOf));
+        sorted.putAll(m);
+        return sorted;
     }
 
     private static void append(StringBuilder sb, Object v, int indent, boolean pretty) {
@@ -44,13 +51,7 @@ public final class Json {
             sb.append(v);
         } else if (v instanceof Map<?, ?> m) {
             sb.append('{');
-            // Map.of iterates in an order salted per JVM run: its keys are written sorted, so that
-            // two runs write the same file; ordered maps (LinkedHashMap, TreeMap) keep their order
-            Iterator<? extends Map.Entry<?, ?>> it = m.getClass().getName().startsWith("java.util.ImmutableCollections")
-                    ? new java.util.TreeMap<String, Object>(byName(m))
-                            .entrySet()
-                            .iterator()
-                    : m.entrySet().iterator();
+            Iterator<? extends Map.Entry<?, ?>> it = inStableOrder(m).entrySet().iterator();
             boolean first = true;
             while (it.hasNext()) {
                 Map.Entry<?, ?> e = it.next();

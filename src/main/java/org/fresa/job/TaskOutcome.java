@@ -22,8 +22,9 @@ public record TaskOutcome(int exitStatus, List<String> problems, Map<String, Obj
             throw new IllegalArgumentException("exit status must be 0 or 1: " + exitStatus);
         }
         problems = List.copyOf(problems);
-        summary =
-                java.util.Collections.unmodifiableMap(new LinkedHashMap<>(Objects.requireNonNull(summary, "summary")));
+        Map<String, Object> ordered = new LinkedHashMap<>();
+        Json.inStableOrder(Objects.requireNonNull(summary, "summary")).forEach((k, v) -> ordered.put((String) k, v));
+        summary = java.util.Collections.unmodifiableMap(ordered);
         files = List.copyOf(files);
     }
 }

@@ -3,6 +3,7 @@ package org.fresa.job;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 
@@ -14,7 +15,7 @@ class JsonTest {
         assertEquals("{\"a\":1,\"b\":2,\"c\":3,\"d\":4}", Json.write(Map.of("d", 4, "b", 2, "c", 3, "a", 1)));
         assertEquals(
                 "[{\"id\":\"WS 1\",\"reason\":\"turning\"}]",
-                Json.write(java.util.List.of(Map.of("reason", "turning", "id", "WS 1"))));
+                Json.write(List.of(Map.of("reason", "turning", "id", "WS 1"))));
     }
 
     @Test
@@ -24,5 +25,12 @@ class JsonTest {
         m.put("workingsteps", 4);
         m.put("planned", 0);
         assertEquals("{\"schema\":\"MACHINING_SCHEMA\",\"workingsteps\":4,\"planned\":0}", Json.write(m));
+    }
+
+    /** A task's summary made with Map.of keeps a stable order through the outcome too. */
+    @Test
+    void anOutcomesSummaryMadeWithMapOfIsInAStableOrder() {
+        TaskOutcome o = new TaskOutcome(1, List.of(), Map.of("refused", "x", "out", "p.ngc", "a", 1), List.of());
+        assertEquals(List.of("a", "out", "refused"), List.copyOf(o.summary().keySet()));
     }
 }
