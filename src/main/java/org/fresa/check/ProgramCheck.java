@@ -53,35 +53,11 @@ public final class ProgramCheck {
         if (dialect == NcDialect.APT) {
             return AptStatements.check(program, limits);
         }
-        Machine m = new Machine(dialect, limits);
-        // block by block, as the lines of Words.blocks: a long program is never held as blocks all at once
-        int count = 0;
-        int n = program.length();
-        int start = 0;
-        while (start <= n) {
-            int end = start;
-            while (end < n && program.charAt(end) != '\n' && program.charAt(end) != '\r') {
-                end++;
-            }
-            Words.Block b = Words.block(++count, program.substring(start, end));
-            start = end < n && program.charAt(end) == '\r' && end + 1 < n && program.charAt(end + 1) == '\n'
-                    ? end + 2
-                    : end + 1;
-            m.readAxis(b.text());
-            Step step = m.execute(b);
-            for (Rule r : RULES) {
-                String why = r.broken(step, limits);
-                if (why != null) {
-                    return new Verdict(
-                            Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), lines(program, 0));
-                }
-            }
-            if (b.problem().isPresent()) {
-                // the word rule names it; nothing after an unreadable block is read
-                break;
-            }
+        try {
+            return of(new java.io.StringReader(program), dialect, limits);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e); // a string reader does not fail
         }
-        return new Verdict(Optional.empty(), count + lines(program, start));
     }
 
     /**
@@ -108,8 +84,8 @@ public final class ProgramCheck {
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
-                    return new Verdict(
-                            Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), count + lines.skipAll());
+                    // the rest is not read: a refused program's file is deleted unread
+                    return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), count);
                 }
             }
             if (b.problem().isPresent()) {
@@ -176,26 +152,6 @@ public final class ProgramCheck {
             }
             return n;
         }
-    }
-
-    /** The lines from offset start to the end of the text (as Words.blocks counts them). */
-    private static int lines(String program, int start) {
-        int n = 0;
-        int i = start;
-        while (i <= program.length()) {
-            int end = i;
-            while (end < program.length() && program.charAt(end) != '\n' && program.charAt(end) != '\r') {
-                end++;
-            }
-            n++;
-            i = end < program.length()
-                            && program.charAt(end) == '\r'
-                            && end + 1 < program.length()
-                            && program.charAt(end + 1) == '\n'
-                    ? end + 2
-                    : end + 1;
-        }
-        return n;
     }
 
     /**
