@@ -73,15 +73,14 @@ final class RapidRouter {
 
     /** Marks a part as cut free: its path becomes an obstacle for the following rapids. */
     void cutFree(Contour path) {
-        Vec2[] raw = rawHull(path);
-        if (raw.length < 3) {
+        Vec2[][] h = hullsOf(path);
+        if (h[0].length < 3) {
             return;
         }
-        Vec2[] grown = clearanceMm > 0 ? hull(grownPoints(raw)) : raw;
-        Obstacle o = new Obstacle(path, box(grown));
+        Obstacle o = new Obstacle(path, box(h[1]));
         obstacles.add(o);
         grid.add(obstacles.size() - 1, o.box);
-        recent.put(obstacles.size() - 1, new Vec2[][] {raw, grown});
+        recent.put(obstacles.size() - 1, h);
     }
 
     /** The counter-clockwise hull of a path, its arcs by circumscribed polygons of 10 degree steps. */
@@ -126,11 +125,16 @@ final class RapidRouter {
     private Vec2[][] hulls(int i) {
         Vec2[][] h = recent.get(i);
         if (h == null) {
-            Vec2[] raw = rawHull(obstacles.get(i).path());
-            h = new Vec2[][] {raw, clearanceMm > 0 ? hull(grownPoints(raw)) : raw};
+            h = hullsOf(obstacles.get(i).path());
             recent.put(i, h);
         }
         return h;
+    }
+
+    /** A path's hull and the hull grown by the clearance (the same when there is none). */
+    private Vec2[][] hullsOf(Contour path) {
+        Vec2[] raw = rawHull(path);
+        return new Vec2[][] {raw, clearanceMm > 0 && raw.length >= 3 ? hull(grownPoints(raw)) : raw};
     }
 
     /** The rapid from a to b: a, any detour points, b. */
