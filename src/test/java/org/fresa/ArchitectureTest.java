@@ -54,6 +54,8 @@ class ArchitectureTest {
                     "org.fresa.post..")
             .layer("Chart")
             .definedBy("org.fresa.chart..")
+            .layer("Io")
+            .definedBy("org.fresa.io..")
             .layer("Service")
             .definedBy("org.fresa.job..")
             .layer("Ui")
@@ -68,10 +70,12 @@ class ArchitectureTest {
             .mayOnlyBeAccessedByLayers("Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Io")
+            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Domain")
             .mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Service", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -131,11 +135,13 @@ class ArchitectureTest {
             entry("post", List.of("model", "geom")),
             entry("check", List.of("post", "geom")),
             entry("chart", List.of("model", "geom")),
+            entry("io", List.of("model")),
             entry(
                     "job",
                     List.of(
                             "check",
                             "chart",
+                            "io",
                             "stepnc",
                             "dxf",
                             "pocket",
@@ -245,6 +251,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule chartUsesOnlyStatedPackages = usesOnlyStatedPackages("chart");
+
+    @ArchTest
+    static final ArchRule ioUsesOnlyStatedPackages = usesOnlyStatedPackages("io");
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");

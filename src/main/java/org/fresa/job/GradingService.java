@@ -25,6 +25,7 @@ import org.fresa.grading.GradingResult;
 import org.fresa.grading.ShrinkageMode;
 import org.fresa.grading.SizeRange;
 import org.fresa.grading.SizeSystem;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;

@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import org.fresa.geom.Transform3;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.kin.IkOptions;
 import org.fresa.kin.IkResult;
 import org.fresa.kin.IkSolver;

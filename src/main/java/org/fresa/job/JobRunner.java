@@ -1,6 +1,8 @@
 package org.fresa.job;
 
 import java.io.IOException;
+import org.fresa.io.FolderLock;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 
 /**

@@ -18,6 +18,8 @@ import java.util.OptionalDouble;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
 import org.fresa.geom.Vec2;
+import org.fresa.io.AtomicFiles;
+import org.fresa.io.SafeXml;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.JobSettings.OutputSettings;

@@ -15,6 +15,7 @@ import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Intersections;
 import org.fresa.geom.Tolerance;
+import org.fresa.io.AtomicFiles;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.fresa.io.AtomicFiles;
 
 /** The recently opened job files, newest first, kept in a small text file. */
 public final class RecentJobs {

@@ -17,6 +17,8 @@ import java.util.Map;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
 import org.fresa.geom.Transform3;
+import org.fresa.io.AtomicFiles;
+import org.fresa.io.SafeXml;
 import org.fresa.job.SettingRanges.RobotFile;
 import org.fresa.job.robotxml.FrameType;
 import org.fresa.job.robotxml.JointType;

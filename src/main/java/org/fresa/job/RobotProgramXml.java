@@ -20,6 +20,7 @@ import javax.xml.validation.Schema;
 import org.fresa.geom.Quaternion;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
+import org.fresa.io.SafeXml;
 import org.fresa.job.robotprogram.ActivityListType;
 import org.fresa.job.robotprogram.ActivityType;
 import org.fresa.job.robotprogram.CartesianTargetType;

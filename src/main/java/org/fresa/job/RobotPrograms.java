@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
+import org.fresa.io.OutputFolder;
 import org.fresa.kin.JointLimit;
 import org.fresa.kin.JointType;
 import org.fresa.kin.Robot;

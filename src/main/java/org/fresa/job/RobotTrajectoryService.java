@@ -12,6 +12,8 @@ import org.fresa.chart.ChartFiles;
 import org.fresa.chart.RobotCharts;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.kin.JointLimit;
 import org.fresa.kin.JointType;
 import org.fresa.kin.Orientation;

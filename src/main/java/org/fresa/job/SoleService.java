@@ -21,6 +21,7 @@ import org.fresa.grading.GradingPlan;
 import org.fresa.grading.ShrinkageMode;
 import org.fresa.grading.SizeRange;
 import org.fresa.grading.SizeSystem;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ContourFile;
 import org.fresa.model.ExactDecimal;

@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.OptionalDouble;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.stepnc.Executable;

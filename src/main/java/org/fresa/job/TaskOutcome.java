@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import org.fresa.io.Json;
 
 /**
  * What a task did: its exit status (0 done, 1 read but not fully doable), the problems a planner

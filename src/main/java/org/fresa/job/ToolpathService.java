@@ -10,6 +10,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.fresa.geom.Tolerance;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;

@@ -5,7 +5,7 @@ import java.util.concurrent.CancellationException;
 import java.util.concurrent.ExecutionException;
 import java.util.function.Consumer;
 import javax.swing.SwingWorker;
-import org.fresa.job.ErrorLog;
+import org.fresa.io.ErrorLog;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.model.CamInputException;
 

@@ -19,9 +19,9 @@ import javax.swing.JTabbedPane;
 import javax.swing.KeyStroke;
 import javax.swing.WindowConstants;
 import javax.swing.filechooser.FileNameExtensionFilter;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobRunner;
 import org.fresa.job.JobTask;
-import org.fresa.job.OutputFolder;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
 

@@ -31,8 +31,8 @@ import javax.swing.text.BadLocationException;
 import javax.swing.text.SimpleAttributeSet;
 import javax.swing.text.StyleConstants;
 import javax.swing.text.StyledDocument;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings;
-import org.fresa.job.OutputFolder;
 import org.fresa.job.TaskOutcome;
 
 /**

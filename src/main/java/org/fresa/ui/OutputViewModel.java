@@ -8,7 +8,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.regex.Pattern;
-import org.fresa.job.OutputFolder;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.job.TaskOutcome;
 

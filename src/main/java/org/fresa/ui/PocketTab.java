@@ -254,7 +254,7 @@ final class PocketTab implements ModuleTab {
             return;
         }
         try {
-            org.fresa.job.AtomicFiles.writeString(file, editor.contour().toDad());
+            org.fresa.io.AtomicFiles.writeString(file, editor.contour().toDad());
         } catch (java.io.IOException e) {
             say("Cannot save " + file + ": " + e.getMessage(), true);
             return;
@@ -421,7 +421,7 @@ final class PocketTab implements ModuleTab {
                     text,
                     org.fresa.job.ProgramChecks.dialect(s.post().word()),
                     org.fresa.job.ProgramChecks.pocket(s));
-            org.fresa.job.AtomicFiles.writeString(file, text);
+            org.fresa.io.AtomicFiles.writeString(file, text);
             say("Saved " + file, false);
         } catch (org.fresa.job.ProgramChecks.RefusedProgram e) {
             say(e.getMessage(), true);

@@ -407,7 +407,7 @@ final class RobotTab implements ModuleTab {
                 .start(
                         "Symbolic kinematics of " + r.name(),
                         progress -> {
-                            org.fresa.job.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
+                            org.fresa.io.AtomicFiles.writeString(file, RobotViewModel.symbolicExport(r));
                             return file;
                         },
                         f -> uses.setText("Wrote the symbolic kinematics of " + r.name() + " to " + f));

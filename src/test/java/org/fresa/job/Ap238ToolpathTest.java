@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Tolerance;
+import org.fresa.io.OutputFolder;
 import org.fresa.post.ExpectedMotions;
 import org.fresa.post.NcPosts;
 import org.fresa.post.Rs274;

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.fresa.geom.Vec3;
+import org.fresa.io.OutputFolder;
 import org.fresa.post.MillingPost;
 import org.fresa.post.Rs274;
 import org.fresa.testing.InterpreterCheck;

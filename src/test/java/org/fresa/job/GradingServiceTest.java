@@ -12,6 +12,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.model.CamInputException;
 import org.junit.jupiter.api.Test;

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
 import org.fresa.geom.Transform3;
+import org.fresa.io.OutputFolder;
 import org.fresa.kin.IkOptions;
 import org.fresa.kin.Robots;
 import org.fresa.model.CamInputException;

@@ -8,6 +8,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.fresa.check.ProgramCheck;
+import org.fresa.io.AtomicFiles;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

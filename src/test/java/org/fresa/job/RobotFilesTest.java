@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Transform3;
+import org.fresa.io.Json;
 import org.fresa.kin.Robot;
 import org.fresa.kin.Robots;
 import org.fresa.kin.SerialRobot;

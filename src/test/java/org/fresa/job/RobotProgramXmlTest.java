@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.fresa.io.SafeXml;
 import org.fresa.model.CamInputException;
 import org.fresa.post.RobotProgram;
 import org.fresa.post.RobotProgramsForTest;

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
 import org.fresa.post.RobotProgram;
 import org.junit.jupiter.api.BeforeAll;

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
+import org.fresa.io.OutputFolder;
 import org.fresa.kin.Robot;
 import org.fresa.kin.Robots;
 import org.fresa.model.Move;

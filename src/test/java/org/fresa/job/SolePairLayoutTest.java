@@ -14,6 +14,8 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.fresa.grading.GradedSize;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Toolpath;
 import org.fresa.sole.Foot;

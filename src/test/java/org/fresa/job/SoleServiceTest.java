@@ -11,6 +11,7 @@ import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.grading.GradedSize;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;

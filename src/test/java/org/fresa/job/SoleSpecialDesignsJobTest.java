@@ -9,6 +9,7 @@ import java.util.List;
 import org.fresa.dxf.DxfWriter;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

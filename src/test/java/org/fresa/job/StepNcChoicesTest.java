@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.post.Rs274;
 import org.fresa.testing.InterpreterCheck;

@@ -15,6 +15,7 @@ import java.util.List;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
+import org.fresa.io.OutputFolder;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;

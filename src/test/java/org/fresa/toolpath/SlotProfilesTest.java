@@ -12,7 +12,7 @@ import java.util.List;
 import java.util.function.DoubleUnaryOperator;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec3;
-import org.fresa.job.OutputFolder;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.job.ToolpathService;

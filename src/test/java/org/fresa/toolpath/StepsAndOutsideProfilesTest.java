@@ -7,7 +7,7 @@ import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Tolerance;
-import org.fresa.job.OutputFolder;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.job.ToolpathService;

@@ -17,7 +17,7 @@ import org.assertj.swing.fixture.DialogFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
 import org.assertj.swing.timing.Pause;
 import org.assertj.swing.timing.Timeout;
-import org.fresa.job.AtomicFiles;
+import org.fresa.io.AtomicFiles;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.JobTask;

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.fresa.job.OutputFolder;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.Placement;

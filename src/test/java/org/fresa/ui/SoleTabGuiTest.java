@@ -19,11 +19,11 @@ import org.assertj.swing.timing.Timeout;
 import org.fresa.chart.PlotScene;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.Job;
 import org.fresa.job.JobRunner;
 import org.fresa.job.JobSettings;
 import org.fresa.job.JobXml;
-import org.fresa.job.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.junit.jupiter.api.Test;
 

@@ -3,10 +3,10 @@ package org.fresa.app.cli;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.CancellationException;
-import org.fresa.job.AtomicFiles;
-import org.fresa.job.FolderLock;
-import org.fresa.job.Json;
-import org.fresa.job.OutputFolder;
+import org.fresa.io.AtomicFiles;
+import org.fresa.io.FolderLock;
+import org.fresa.io.Json;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
@@ -106,7 +106,7 @@ public final class CliSupport {
 
     /** A bug, not bad input: a short message for the user, the trace in the log file. */
     static int internalError(PrintWriter err, Exception ex) {
-        Path log = org.fresa.job.ErrorLog.record(ex);
+        Path log = org.fresa.io.ErrorLog.record(ex);
         err.println("fresa: internal error: " + ex + (log != null ? " (details in " + log + ")" : ""));
         return EXIT_NOT_DOABLE;
     }

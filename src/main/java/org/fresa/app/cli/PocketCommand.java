@@ -140,7 +140,7 @@ final class PocketCommand implements Callable<Integer> {
             }
             java.util.Optional<java.nio.file.Path> printout = java.util.Optional.ofNullable(report);
             if (printout.isPresent()) {
-                org.fresa.job.AtomicFiles.requireWritable(printout.get(), "--report");
+                org.fresa.io.AtomicFiles.requireWritable(printout.get(), "--report");
             }
             org.fresa.job.TaskOutcome o = PocketService.run(settings, file, printout, progress);
             if (thesisFile == null || o.exitStatus() != 0) {

@@ -6,7 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.fresa.job.Json;
+import org.fresa.io.Json;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import picocli.CommandLine.Command;

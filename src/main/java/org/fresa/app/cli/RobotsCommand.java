@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.fresa.job.Json;
+import org.fresa.io.Json;
 import org.fresa.job.RobotFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

@@ -2,10 +2,10 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.fresa.io.OutputFolder;
 import org.fresa.job.Job;
 import org.fresa.job.JobRunner;
 import org.fresa.job.JobXml;
-import org.fresa.job.OutputFolder;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;

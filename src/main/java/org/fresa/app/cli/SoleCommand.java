@@ -31,7 +31,7 @@ final class SoleCommand implements Callable<Integer> {
     public Integer call() {
         java.io.PrintWriter o = spec.commandLine().getOut();
         return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
-            org.fresa.job.OutputFolder.of(out, "--out");
+            org.fresa.io.OutputFolder.of(out, "--out");
             org.fresa.job.Job j = org.fresa.job.JobXml.read(job);
             if (j.sole().isEmpty()) {
                 throw new org.fresa.model.CamInputException(job.toString(), "the job has no <sole> settings");

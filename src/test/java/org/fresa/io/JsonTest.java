@@ -1,10 +1,11 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.fresa.job.TaskOutcome;
 import org.junit.jupiter.api.Test;
 
 class JsonTest {

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import java.io.IOException;
 import java.nio.file.Files;

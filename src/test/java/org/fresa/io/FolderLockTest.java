@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -8,6 +8,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.fresa.job.Job;
+import org.fresa.job.JobRunner;
+import org.fresa.job.JobXml;
+import org.fresa.job.ProgressMonitor;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -11,13 +11,13 @@ import java.time.Instant;
  * logged (System.Logger {@code fresa.timing}, by default on standard error) with the wall time
  * since the JVM started and the thread's CPU time. Off, a phase costs one boolean test.
  */
-final class Timing {
-    static final boolean ON = Boolean.getBoolean("fresa.timing");
+public final class Timing {
+    public static final boolean ON = Boolean.getBoolean("fresa.timing");
 
     private Timing() {}
 
     /** The phase that just ended on this thread. */
-    static void mark(String phase) {
+    public static void mark(String phase) {
         if (ON) {
             Print.mark(phase);
         }

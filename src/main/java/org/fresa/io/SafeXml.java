@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import java.io.InputStream;
 import java.net.URL;
@@ -17,11 +17,11 @@ import org.xml.sax.SAXException;
  * and a parser that refuses any DOCTYPE, so that external entities (XXE) and entity expansion
  * cannot happen whatever the file says.
  */
-final class SafeXml {
+public final class SafeXml {
     private SafeXml() {}
 
     /** A schema from the class path, e.g. {@code /schemas/job.xsd}. */
-    static Schema schema(String resource) {
+    public static Schema schema(String resource) {
         URL url = SafeXml.class.getResource(resource);
         if (url == null) {
             throw new IllegalStateException(resource + " missing from the class path");
@@ -37,7 +37,7 @@ final class SafeXml {
     }
 
     /** A namespace-aware source over the stream that refuses DOCTYPEs; file names locate errors. */
-    static SAXSource source(InputStream in, Path file) throws SAXException, ParserConfigurationException {
+    public static SAXSource source(InputStream in, Path file) throws SAXException, ParserConfigurationException {
         SAXParserFactory spf = SAXParserFactory.newInstance();
         spf.setNamespaceAware(true);
         spf.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);

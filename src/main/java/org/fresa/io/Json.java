@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.io;
 
 import java.util.Iterator;
 import java.util.List;
@@ -30,7 +30,7 @@ public final class Json {
      * The map in an order that is the same in every run: a {@code Map.of} (whose iteration order is
      * salted per JVM run) by its keys' names; any other map (LinkedHashMap, TreeMap) as it is.
      */
-    static Map<?, ?> inStableOrder(Map<?, ?> m) {
+    public static Map<?, ?> inStableOrder(Map<?, ?> m) {
         if (!m.getClass().getName().startsWith("java.util.ImmutableCollections")) {
             return m;
         }
