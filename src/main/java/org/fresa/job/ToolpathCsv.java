@@ -7,12 +7,12 @@ import java.io.Writer;
 import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Vec3;
+import org.fresa.model.ArcGeometry;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.ArcGeometry;
 
 /**
  * {@code toolpath.csv} (spec/cli.md): the tool-tip path in the workpiece frame, one row per

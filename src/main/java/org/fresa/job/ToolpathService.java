@@ -13,6 +13,7 @@ import org.fresa.geom.Tolerance;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
+import org.fresa.model.CycleTime;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.post.MillingPost;

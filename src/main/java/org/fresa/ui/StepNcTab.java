@@ -305,7 +305,7 @@ final class StepNcTab implements ModuleTab {
     private record Loaded(
             StepNcProgram program,
             ToolpathPlanner.Plan plan,
-            org.fresa.job.CycleTime time,
+            org.fresa.model.CycleTime time,
             DefaultTreeModel tree,
             org.fresa.chart.PlotScene firstPlot,
             List<String> firstDetails) {}
@@ -325,7 +325,7 @@ final class StepNcTab implements ModuleTab {
                             StepNcProgram p = planned.program();
                             ToolpathPlanner.Plan plan = planned.plan();
                             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
-                            org.fresa.job.CycleTime time = StepNcViewModel.programTimeOf(plan);
+                            org.fresa.model.CycleTime time = StepNcViewModel.programTimeOf(plan);
                             // the first workingstep's plot, from a view model of this thread in the tab's first state
                             StepNcViewModel first = new StepNcViewModel();
                             first.load(p);

@@ -16,6 +16,7 @@ import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
 import org.fresa.geom.Vec3;
 import org.fresa.io.OutputFolder;
+import org.fresa.model.CycleTime;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;

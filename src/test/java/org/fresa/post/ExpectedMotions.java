@@ -3,6 +3,7 @@ package org.fresa.post;
 import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Vec3;
+import org.fresa.model.ArcGeometry;
 import org.fresa.model.Move;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;

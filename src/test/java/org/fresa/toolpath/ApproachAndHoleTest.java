@@ -41,7 +41,7 @@ class ApproachAndHoleTest {
                 if (!(m instanceof Move.Rapid) && m.end().z() < at.z() - 1e-9) {
                     double drop = at.z() - m.end().z();
                     double run = m instanceof Move.Circular c
-                            ? org.fresa.post.ArcGeometry.of(at, c).lengthMm()
+                            ? org.fresa.model.ArcGeometry.of(at, c).lengthMm()
                             : at.xy().distance(m.end().xy());
                     assertTrue(Math.toDegrees(Math.atan2(drop, run)) <= 3 + 1e-6, a + ": entry at " + drop + "/" + run);
                 }

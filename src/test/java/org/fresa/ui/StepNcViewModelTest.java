@@ -15,7 +15,7 @@ import org.fresa.geom.Curve2;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec3;
-import org.fresa.job.CycleTime;
+import org.fresa.model.CycleTime;
 import org.fresa.model.Move;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.StepNcProgram;

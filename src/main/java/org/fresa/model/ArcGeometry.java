@@ -1,9 +1,8 @@
-package org.fresa.post;
+package org.fresa.model;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Vec3;
-import org.fresa.model.Move;
 
 /**
  * The geometry of a {@link Move.Circular} seen from its start point: radius, signed sweep about

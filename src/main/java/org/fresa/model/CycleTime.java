@@ -1,10 +1,7 @@
-package org.fresa.job;
+package org.fresa.model;
 
 import java.util.List;
 import org.fresa.geom.Vec3;
-import org.fresa.model.Move;
-import org.fresa.model.ToolpathSection;
-import org.fresa.post.ArcGeometry;
 
 /**
  * A cycle-time estimate without acceleration: each feed move takes its length over its feed,

@@ -1,10 +1,9 @@
-package org.fresa.job;
+package org.fresa.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
 import org.fresa.geom.Vec3;
-import org.fresa.model.Move;
 import org.junit.jupiter.api.Test;
 
 class CycleTimeTest {
