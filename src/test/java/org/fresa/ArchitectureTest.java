@@ -56,6 +56,8 @@ class ArchitectureTest {
             .definedBy("org.fresa.chart..")
             .layer("Io")
             .definedBy("org.fresa.io..")
+            .layer("Robot")
+            .definedBy("org.fresa.robot..")
             .layer("Service")
             .definedBy("org.fresa.job..")
             .layer("Ui")
@@ -70,12 +72,14 @@ class ArchitectureTest {
             .mayOnlyBeAccessedByLayers("Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
-            .whereLayer("Io")
+            .whereLayer("Robot")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Io")
+            .mayOnlyBeAccessedByLayers("Robot", "Service", "Ui", "App")
             .whereLayer("Domain")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Service", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Service", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -136,12 +140,14 @@ class ArchitectureTest {
             entry("check", List.of("post", "geom")),
             entry("chart", List.of("model", "geom")),
             entry("io", List.of("model")),
+            entry("robot", List.of("io", "post", "kin", "model", "geom")),
             entry(
                     "job",
                     List.of(
                             "check",
                             "chart",
                             "io",
+                            "robot",
                             "stepnc",
                             "dxf",
                             "pocket",
@@ -254,6 +260,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule ioUsesOnlyStatedPackages = usesOnlyStatedPackages("io");
+
+    @ArchTest
+    static final ArchRule robotUsesOnlyStatedPackages = usesOnlyStatedPackages("robot");
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");

@@ -24,6 +24,7 @@ import org.fresa.model.ExactDecimal;
 import org.fresa.post.KrlWriter;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
+import org.fresa.robot.RobotPrograms;
 
 /**
  * {@code fresa ik TARGETS.csv}: the inverse kinematics of any list of tool (TCP) poses in the

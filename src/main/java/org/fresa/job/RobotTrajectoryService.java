@@ -27,6 +27,7 @@ import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.post.RobotProgram;
+import org.fresa.robot.RobotPrograms;
 
 /**
  * A toolpath in the workpiece frame turned into a robot joint trajectory:

@@ -3,6 +3,7 @@ package org.fresa.job;
 import org.fresa.cutting.CuttingOptions;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.robot.RobotFormat;
 
 /**
  * The ranges of every numeric setting and the choices of every enumerated one

@@ -4,7 +4,7 @@
  * job.
  *
  * <p>Dependencies: {@code check} (every program is checked before it is written), {@code chart}
- * for plots written as files, {@code io} for the atomic output files, every domain package
+ * for plots written as files, {@code io} for the atomic output files, {@code robot} for the robot programs, every domain package
  * ({@code stepnc}, {@code dxf}, {@code pocket}, {@code toolpath}, {@code cutting},
  * {@code grading}, {@code sole}, {@code post}), {@code kin}, {@code model}, {@code geom}; never
  * {@code ui} or {@code app}. File I/O is allowed here and above, not below.

@@ -231,7 +231,7 @@ final class OutputTab implements ModuleTab {
                                 // a preview of a long program shows its beginning; Save writes all of it
                                 String shownText = s.length() > 200_000 ? s.substring(0, 200_000) + "\n..." : s;
                                 java.util.Optional<org.fresa.check.Failure> refusal =
-                                        org.fresa.job.RobotPrograms.FORMATS.contains(format)
+                                        org.fresa.robot.RobotPrograms.FORMATS.contains(format)
                                                 ? OutputViewModel.refusal(run)
                                                 : java.util.Optional.empty();
                                 return (Object) new Previewed(
@@ -305,7 +305,7 @@ final class OutputTab implements ModuleTab {
             Dialogs.error(ctx.owner(), "Save", problem);
             return;
         }
-        if (vm.checkedFormats().stream().anyMatch(org.fresa.job.RobotPrograms.FORMATS::contains)) {
+        if (vm.checkedFormats().stream().anyMatch(org.fresa.robot.RobotPrograms.FORMATS::contains)) {
             java.util.Optional<org.fresa.check.Failure> refusal = runs.last().isPresent()
                     ? OutputViewModel.refusal(runs.last().get())
                     : java.util.Optional.empty();

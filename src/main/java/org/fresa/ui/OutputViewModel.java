@@ -135,9 +135,10 @@ final class OutputViewModel {
     static Path previewFile(RobotRunModel.Run run, String format, Path scratch) throws IOException {
         OutputFolder out = new OutputFolder(scratch);
         write(run, List.of(format), out);
-        if (org.fresa.job.RobotPrograms.FORMATS.contains(format) && refusal(run).isPresent()) {
+        if (org.fresa.robot.RobotPrograms.FORMATS.contains(format)
+                && refusal(run).isPresent()) {
             // refused programs are not saved; the preview shows the program so that its failing motion can be marked
-            org.fresa.job.RobotPrograms.write(
+            org.fresa.robot.RobotPrograms.write(
                     program(run), run.solved().request().robot(), List.of(format), out);
         }
         Path f = scratch.resolve(fileOf(format));
@@ -150,7 +151,7 @@ final class OutputViewModel {
     /** The robot program of a run, as the writers take it. */
     static org.fresa.post.RobotProgram program(RobotRunModel.Run run) {
         RobotTrajectoryService.Request r = run.solved().request();
-        return org.fresa.job.RobotPrograms.of(
+        return org.fresa.robot.RobotPrograms.of(
                 run.programName(),
                 r.robot(),
                 r.toolpath(),

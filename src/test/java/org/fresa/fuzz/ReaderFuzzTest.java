@@ -74,7 +74,7 @@ class ReaderFuzzTest {
         Path f = Files.createTempFile("fuzz-program", ".xml");
         try {
             Files.write(f, data);
-            org.fresa.job.RobotProgramXml.read(f);
+            org.fresa.robot.RobotProgramXml.read(f);
         } catch (CamInputException expected) {
             // refusing bad input with a message is the wanted outcome
         } finally {

@@ -17,6 +17,7 @@ import org.fresa.kin.Robots;
 import org.fresa.model.CamInputException;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
+import org.fresa.robot.RobotPrograms;
 import org.fresa.testing.SpecKinematics;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

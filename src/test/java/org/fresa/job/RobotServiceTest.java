@@ -10,6 +10,7 @@ import java.util.List;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
 import org.fresa.post.RobotProgram;
+import org.fresa.robot.RobotProgramXml;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -10,6 +10,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
+import org.fresa.robot.RobotProgramXml;
 import org.fresa.testing.SpecKinematics;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.robot;
 
 import java.util.Locale;
 

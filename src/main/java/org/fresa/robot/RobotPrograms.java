@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.robot;
 
 import java.io.IOException;
 import java.io.OutputStreamWriter;
