@@ -60,6 +60,8 @@ class ArchitectureTest {
             .definedBy("org.fresa.robot..")
             .layer("Service")
             .definedBy("org.fresa.job..")
+            .layer("Bench")
+            .definedBy("org.fresa.bench..")
             .layer("Ui")
             .definedBy(UI)
             .layer("App")
@@ -68,8 +70,10 @@ class ArchitectureTest {
             .mayNotBeAccessedByAnyLayer()
             .whereLayer("Ui")
             .mayOnlyBeAccessedByLayers("App")
+            .whereLayer("Bench")
+            .mayOnlyBeAccessedByLayers("App")
             .whereLayer("Service")
-            .mayOnlyBeAccessedByLayers("Ui", "App")
+            .mayOnlyBeAccessedByLayers("Bench", "Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Robot")
@@ -77,9 +81,9 @@ class ArchitectureTest {
             .whereLayer("Io")
             .mayOnlyBeAccessedByLayers("Robot", "Service", "Ui", "App")
             .whereLayer("Domain")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Service", "Bench", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Service", "Bench", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -158,7 +162,8 @@ class ArchitectureTest {
                             "post",
                             "kin",
                             "model",
-                            "geom")));
+                            "geom")),
+            entry("bench", List.of("job", "stepnc", "dxf", "pocket", "cutting", "post", "kin", "model")));
 
     /** No class of the package uses a Fresa package that its package-info does not state. */
     static ArchRule usesOnlyStatedPackages(String pkg) {
@@ -266,6 +271,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");
+
+    @ArchTest
+    static final ArchRule benchUsesOnlyStatedPackages = usesOnlyStatedPackages("bench");
 
     @ArchTest
     static final ArchRule symjaOnlyInKinematics = noClasses()

@@ -4,7 +4,6 @@ import com.formdev.flatlaf.FlatLightLaf;
 import java.nio.file.Path;
 import java.util.Optional;
 import javax.swing.SwingUtilities;
-import org.fresa.job.RecentJobs;
 
 /** Starts the desktop application. */
 public final class FresaApp {

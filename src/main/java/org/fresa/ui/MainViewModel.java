@@ -12,7 +12,6 @@ import java.util.Optional;
 import org.fresa.job.Job;
 import org.fresa.job.JobTask;
 import org.fresa.job.JobXml;
-import org.fresa.job.RecentJobs;
 import org.fresa.model.CamInputException;
 
 /**

@@ -13,7 +13,6 @@ import javax.swing.JTable;
 import javax.swing.SwingUtilities;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.JobTask;
-import org.fresa.job.RecentJobs;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.util.List;
 import org.fresa.job.Job;
 import org.fresa.job.JobTask;
-import org.fresa.job.RecentJobs;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

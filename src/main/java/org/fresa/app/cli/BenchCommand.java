@@ -1,8 +1,8 @@
 package org.fresa.app.cli;
 
 import java.util.concurrent.Callable;
+import org.fresa.bench.Benchmarks;
 import org.fresa.io.Json;
-import org.fresa.job.Benchmarks;
 import org.fresa.job.TaskOutcome;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

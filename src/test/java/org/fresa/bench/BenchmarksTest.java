@@ -1,9 +1,10 @@
-package org.fresa.job;
+package org.fresa.bench;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.fresa.job.ProgressMonitor;
 import org.junit.jupiter.api.Test;
 
 class BenchmarksTest {

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.bench;
 
 import java.io.BufferedWriter;
 import java.io.IOException;

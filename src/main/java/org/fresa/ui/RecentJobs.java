@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.ui;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

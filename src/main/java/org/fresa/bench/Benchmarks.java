@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.bench;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -13,6 +13,12 @@ import org.fresa.cutting.Chainer;
 import org.fresa.dxf.DxfDrawing;
 import org.fresa.dxf.DxfReadOptions;
 import org.fresa.dxf.DxfReader;
+import org.fresa.job.CuttingService;
+import org.fresa.job.JobSettings;
+import org.fresa.job.PocketPost;
+import org.fresa.job.PocketService;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkBenchmark;
 import org.fresa.model.CamInputException;
 import org.fresa.stepnc.StepNcReader;
