@@ -140,63 +140,6 @@ public final class RobotTrajectoryService {
         }
     }
 
-    /**
-     * Reads {@code --robot-table X,Y,Z[,RZ]} (mm, deg).
-     *
-     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 or 4 numbers
-     */
-    public static Placement parseRobotTable(String text) throws org.fresa.model.CamInputException {
-        double[] v = numbers("--robot-table", text, 3, 4);
-        return new Placement(v[0], v[1], v[2], 0, 0, v.length > 3 ? v[3] : 0);
-    }
-
-    /**
-     * Reads {@code --table-piece X,Y,Z[,RX,RY,RZ]} (mm, deg; R = Rz*Ry*Rx).
-     *
-     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers
-     */
-    public static Placement parseTablePiece(String text) throws org.fresa.model.CamInputException {
-        double[] v = numbers("--table-piece", text, 3, 6);
-        return new Placement(
-                v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0);
-    }
-
-    /**
-     * Reads {@code --spindle X,Y,Z[,RX,RY,RZ]}: the spindle nose in the flange frame (mm, deg;
-     * R = Rz*Ry*Rx), each value within {@link SettingRanges.Robot#checkSpindle}'s ranges.
-     *
-     * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers in range
-     */
-    public static Placement parseSpindle(String text) throws org.fresa.model.CamInputException {
-        double[] v = numbers("--spindle", text, 3, 6);
-        return SettingRanges.Robot.checkSpindle(
-                "--spindle",
-                new Placement(
-                        v[0], v[1], v[2], v.length > 3 ? v[3] : 0, v.length > 4 ? v[4] : 0, v.length > 5 ? v[5] : 0));
-    }
-
-    private static double[] numbers(String option, String text, int min, int max)
-            throws org.fresa.model.CamInputException {
-        String[] parts = text.split(",", -1);
-        if (parts.length < min || parts.length > max) {
-            throw new org.fresa.model.CamInputException(
-                    option, "expected " + min + " to " + max + " comma-separated numbers, got '" + text + "'");
-        }
-        double[] v = new double[parts.length];
-        for (int i = 0; i < parts.length; i++) {
-            try {
-                v[i] = Double.parseDouble(parts[i].trim());
-            } catch (NumberFormatException e) {
-                v[i] = Double.NaN;
-            }
-            if (!Double.isFinite(v[i])) {
-                throw new org.fresa.model.CamInputException(
-                        option, "value " + (i + 1) + " is not a number: '" + parts[i].trim() + "'");
-            }
-        }
-        return v;
-    }
-
     /** A solved trajectory with what it was solved for. */
     public record Solved(Request request, List<ToolTarget> targets, TrajectorySolver.Result result) {}
 

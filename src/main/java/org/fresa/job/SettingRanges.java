@@ -255,6 +255,53 @@ public final class SettingRanges {
             return p;
         }
 
+        /**
+         * Reads {@code --spindle X,Y,Z[,RX,RY,RZ]}: the spindle nose in the flange frame (mm, deg;
+         * R = Rz*Ry*Rx), each value within {@link #checkSpindle}'s ranges.
+         *
+         * @throws org.fresa.model.CamInputException naming the option when the text is not 3 to 6 numbers in range
+         */
+        public static Placement parseSpindle(String text) throws org.fresa.model.CamInputException {
+            double[] v = numbers("--spindle", text, 3, 6);
+            return checkSpindle(
+                    "--spindle",
+                    new Placement(
+                            v[0],
+                            v[1],
+                            v[2],
+                            v.length > 3 ? v[3] : 0,
+                            v.length > 4 ? v[4] : 0,
+                            v.length > 5 ? v[5] : 0));
+        }
+
+        /**
+         * The comma-separated numbers of an option or a field ({@code X,Y,Z[,...]}), between {@code
+         * min} and {@code max} of them, each finite.
+         *
+         * @throws org.fresa.model.CamInputException naming the option when the text is not that
+         */
+        public static double[] numbers(String option, String text, int min, int max)
+                throws org.fresa.model.CamInputException {
+            String[] parts = text.split(",", -1);
+            if (parts.length < min || parts.length > max) {
+                throw new org.fresa.model.CamInputException(
+                        option, "expected " + min + " to " + max + " comma-separated numbers, got '" + text + "'");
+            }
+            double[] v = new double[parts.length];
+            for (int i = 0; i < parts.length; i++) {
+                try {
+                    v[i] = Double.parseDouble(parts[i].trim());
+                } catch (NumberFormatException e) {
+                    v[i] = Double.NaN;
+                }
+                if (!Double.isFinite(v[i])) {
+                    throw new org.fresa.model.CamInputException(
+                            option, "value " + (i + 1) + " is not a number: '" + parts[i].trim() + "'");
+                }
+            }
+            return v;
+        }
+
         /** {@link #checkSpindle} for a job file's spindle element. */
         public static Placement requireSpindle(Placement p) {
             double[] v = {p.xMm(), p.yMm(), p.zMm(), p.rxDeg(), p.ryDeg(), p.rzDeg()};

@@ -687,7 +687,7 @@ final class RobotViewModel {
             return Optional.empty();
         }
         try {
-            org.fresa.job.RobotTrajectoryService.parseSpindle(spindleText);
+            org.fresa.job.SettingRanges.Robot.parseSpindle(spindleText);
             return Optional.empty();
         } catch (CamInputException e) {
             return Optional.of("Spindle: " + e.problem());
@@ -714,7 +714,7 @@ final class RobotViewModel {
             return Optional.empty();
         }
         try {
-            return Optional.of(org.fresa.job.RobotTrajectoryService.parseSpindle(text));
+            return Optional.of(org.fresa.job.SettingRanges.Robot.parseSpindle(text));
         } catch (CamInputException e) {
             return Optional.empty();
         }

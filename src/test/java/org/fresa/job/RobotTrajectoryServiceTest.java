@@ -221,17 +221,6 @@ class RobotTrajectoryServiceTest {
     }
 
     @Test
-    void placementOptionsReadAsTheThesisTable51() throws org.fresa.model.CamInputException {
-        assertEquals(new Placement(450, 0, 350, 0, 0, 0), RobotTrajectoryService.parseRobotTable("450,0,350"));
-        assertEquals(new Placement(300, 300, 745, 0, 0, 30), RobotTrajectoryService.parseRobotTable("300,300,745,30"));
-        assertEquals(new Placement(0, 10, 0, -90, 0, 0), RobotTrajectoryService.parseTablePiece("0,10,0,-90"));
-        org.junit.jupiter.api.Assertions.assertThrows(
-                org.fresa.model.CamInputException.class, () -> RobotTrajectoryService.parseTablePiece("0,ten,0"));
-        org.junit.jupiter.api.Assertions.assertThrows(
-                org.fresa.model.CamInputException.class, () -> RobotTrajectoryService.parseRobotTable("1,2"));
-    }
-
-    @Test
     void aDrillingsDwellIsAWaitInTheRobotPrograms() throws IOException {
         Vec3 safe = new Vec3(100, 100, 225);
         Toolpath hole = new Toolpath(List.of(new ToolpathSection(

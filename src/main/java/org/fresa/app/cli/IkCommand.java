@@ -7,7 +7,6 @@ import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
 import org.fresa.job.IkService;
 import org.fresa.job.RobotTools;
-import org.fresa.job.RobotTrajectoryService;
 import org.fresa.job.SettingRanges;
 import org.fresa.kin.IkOptions;
 import picocli.CommandLine.Command;
@@ -89,7 +88,7 @@ final class IkCommand implements Callable<Integer> {
             double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
             Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
             RobotTools.Choice tool = new RobotTools.Choice(
-                    spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
+                    spindle == null ? Optional.empty() : Optional.of(SettingRanges.Robot.parseSpindle(spindle)),
                     toolLength == null
                             ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));

@@ -7,7 +7,6 @@ import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
 import org.fresa.job.RobotService;
 import org.fresa.job.RobotTools;
-import org.fresa.job.RobotTrajectoryService;
 import org.fresa.job.SettingRanges;
 import org.fresa.job.TablePlacing;
 import org.fresa.job.TaskOutcome;
@@ -116,17 +115,17 @@ final class RobotCommand implements Callable<Integer> {
             List<String> fmts = RobotService.parseFormats(formats);
             Placement table = robotTable == null
                     ? Placement.ORIGIN
-                    : SettingRanges.Robot.check("--robot-table", RobotTrajectoryService.parseRobotTable(robotTable));
+                    : SettingRanges.Robot.check("--robot-table", PlacementOptions.parseRobotTable(robotTable));
             Placement piece = tablePiece == null
                     ? Placement.ORIGIN
-                    : SettingRanges.Robot.check("--table-piece", RobotTrajectoryService.parseTablePiece(tablePiece));
+                    : SettingRanges.Robot.check("--table-piece", PlacementOptions.parseTablePiece(tablePiece));
             PlanningChoices choices = new PlanningChoices(
                     trustCuttingSpeed,
                     SettingRanges.StepNc.BREAKTHROUGH.check(breakthroughMm),
                     entries.rule(),
                     SettingRanges.StepNc.paths("--paths", paths));
             RobotTools.Choice tool = new RobotTools.Choice(
-                    spindle == null ? Optional.empty() : Optional.of(RobotTrajectoryService.parseSpindle(spindle)),
+                    spindle == null ? Optional.empty() : Optional.of(SettingRanges.Robot.parseSpindle(spindle)),
                     toolLength == null
                             ? OptionalDouble.empty()
                             : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
