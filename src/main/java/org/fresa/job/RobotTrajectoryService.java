@@ -21,6 +21,7 @@ import org.fresa.kin.Robot;
 import org.fresa.kin.ToolTarget;
 import org.fresa.kin.TrajectoryPoint;
 import org.fresa.kin.TrajectorySolver;
+import org.fresa.model.ArcGeometry;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Move;
 import org.fresa.model.Placement;
@@ -280,7 +281,7 @@ public final class RobotTrajectoryService {
             }
             for (Move m : s.moves()) {
                 if (m instanceof Move.Circular c) {
-                    for (Vec3 p : sampleArc(at, c, chordToleranceMm)) {
+                    for (Vec3 p : ArcGeometry.of(at, c).points(chordToleranceMm)) {
                         out.add(new ToolTarget(s.label(), robotToPiece.applyToPoint(p), axis, x));
                         dwells.add(0.0);
                     }
@@ -296,52 +297,6 @@ public final class RobotTrajectoryService {
                 at = m.end();
             }
         }
-    }
-
-    /**
-     * Points along a circular (or helical) move after its start, ending exactly at its end, no
-     * chord further than the tolerance from the arc.
-     */
-    static List<Vec3> sampleArc(Vec3 start, Move.Circular c, double chordToleranceMm) {
-        Vec3 n = c.normal();
-        Vec3 u = start.minus(c.center());
-        double hu = u.dot(n);
-        u = u.minus(n.times(hu));
-        Vec3 v = c.end().minus(c.center());
-        double hv = v.dot(n);
-        v = v.minus(n.times(hv));
-        double ru = u.norm();
-        double rv = v.norm();
-        double sweep = Math.atan2(n.dot(u.cross(v)), u.dot(v));
-        if (c.ccw()) {
-            if (sweep <= 1e-12) {
-                sweep += 2 * Math.PI;
-            }
-            sweep += 2 * Math.PI * c.turns();
-        } else {
-            if (sweep >= -1e-12) {
-                sweep -= 2 * Math.PI;
-            }
-            sweep -= 2 * Math.PI * c.turns();
-        }
-        double r = Math.max(ru, rv);
-        double maxStep = r <= chordToleranceMm ? Math.PI / 2 : 2 * Math.acos(1 - chordToleranceMm / r);
-        int pieces = Math.max(1, (int) Math.ceil(Math.abs(sweep) / Math.min(maxStep, Math.PI / 2)));
-        List<Vec3> out = new ArrayList<>(pieces);
-        Vec3 uh = ru > 0 ? u.times(1 / ru) : Vec3.UNIT_X;
-        Vec3 wh = n.cross(uh);
-        for (int i = 1; i < pieces; i++) {
-            double f = (double) i / pieces;
-            double a = sweep * f;
-            double rad = ru + (rv - ru) * f;
-            Vec3 p = c.center()
-                    .plus(uh.times(rad * Math.cos(a)))
-                    .plus(wh.times(rad * Math.sin(a)))
-                    .plus(n.times(hu + (hv - hu) * f));
-            out.add(p);
-        }
-        out.add(c.end());
-        return out;
     }
 
     static String trajectoryCsv(Robot robot, TrajectorySolver.Result r) {

@@ -7,7 +7,8 @@ import org.fresa.geom.Vec3;
 /**
  * The geometry of a {@link Move.Circular} seen from its start point: radius, signed sweep about
  * the normal (extra turns included) and rise along the normal, and its points at a chord
- * tolerance. Shared by the posts (arcs in planes other than XY/XZ/YZ) and the CSV writer.
+ * tolerance. Shared by the posts (arcs in planes other than XY/XZ/YZ), the CSV writer and the
+ * robot trajectory, so that toolpath.csv and trajectory.csv sample an arc at the same points.
  *
  * <p>Conventions: the sweep is positive counter-clockwise about the normal; an arc whose end
  * projects onto its start (within 1e-9 of the radius) is a full turn, so its sweep is 2 pi (plus
