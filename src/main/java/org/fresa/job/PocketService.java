@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Intersections;
@@ -314,20 +315,10 @@ public final class PocketService {
             problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
-        try {
-            ProgramChecks.require(
-                    outFile.getFileName().toString(),
-                    nc,
-                    ProgramChecks.dialect(s.post().word()),
-                    ProgramChecks.pocket(s));
-        } catch (ProgramChecks.RefusedProgram e) {
-            return new TaskOutcome(
-                    1,
-                    List.of(e.getMessage()),
-                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
-                    List.of());
+        Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
+        if (refused.isPresent()) {
+            return refused.get();
         }
-        AtomicFiles.writeString(outFile, nc);
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post().word());
@@ -407,20 +398,10 @@ public final class PocketService {
         }
         String name = s.contour().getFileName().toString();
         String nc = regionProgram(plan, s.post(), name);
-        try {
-            ProgramChecks.require(
-                    outFile.getFileName().toString(),
-                    nc,
-                    ProgramChecks.dialect(s.post().word()),
-                    ProgramChecks.pocket(s));
-        } catch (ProgramChecks.RefusedProgram e) {
-            return new TaskOutcome(
-                    1,
-                    List.of(e.getMessage()),
-                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
-                    List.of());
+        Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
+        if (refused.isPresent()) {
+            return refused.get();
         }
-        AtomicFiles.writeString(outFile, nc);
         double inradius = RegionOffsetter.inradius(
                 RegionOffsetter.oriented(contours.get(0), contours.subList(1, contours.size())),
                 new Tolerance(1e-4, 1e-9));
@@ -438,5 +419,27 @@ public final class PocketService {
         summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, List.of(), summary, List.of(outFile));
+    }
+
+    /**
+     * Checks the program (the program check of the settings' post and pocket) and writes it to
+     * {@code outFile}; a refused program is not written and its outcome is returned.
+     */
+    private static Optional<TaskOutcome> checkAndWrite(PocketSettings s, Path outFile, String nc) throws IOException {
+        try {
+            ProgramChecks.require(
+                    outFile.getFileName().toString(),
+                    nc,
+                    ProgramChecks.dialect(s.post().word()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return Optional.of(new TaskOutcome(
+                    1,
+                    List.of(e.getMessage()),
+                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
+                    List.of()));
+        }
+        AtomicFiles.writeString(outFile, nc);
+        return Optional.empty();
     }
 }
