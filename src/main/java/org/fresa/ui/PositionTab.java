@@ -80,6 +80,10 @@ final class PositionTab implements ModuleTab {
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
     private final java.util.List<double[]> splitsMs = new java.util.ArrayList<>();
+    private final java.util.List<double[]> plotSplitsMs = new java.util.ArrayList<>();
+    // the plots of the live answer shown, as they arrived on the event thread (System.nanoTime)
+    private transient LiveReachability.Charted plotAsked;
+    private long plotArrivedNanos;
     // when the last field was typed into and not yet asked about (System.nanoTime), or -1
     private long changedNanos = -1;
     private long plotAskedNanos = -1;
@@ -426,6 +430,8 @@ final class PositionTab implements ModuleTab {
         }
         showCharts(c.charts(), c.joints(), c.errors());
         plotAskedNanos = c.changedNanos();
+        plotAsked = c;
+        plotArrivedNanos = System.nanoTime();
     }
 
     private void liveFailed(String message) {
@@ -441,6 +447,23 @@ final class PositionTab implements ModuleTab {
         if (plotAskedNanos >= 0 && shown != null && shown.isUpToDate()) {
             plotLatenciesMs.add((System.nanoTime() - plotAskedNanos) / 1e6);
             plotAskedNanos = -1;
+            OffThreadChartPanel.Drawn d = shown.lastDrawn();
+            LiveReachability.Charted c = plotAsked;
+            if (d != null && c != null) {
+                plotSplitsMs.add(new double[] {
+                    (c.postedNanos() - c.changedNanos()) / 1e6,
+                    (c.madeNanos() - c.postedNanos()) / 1e6,
+                    (plotArrivedNanos - c.madeNanos()) / 1e6,
+                    (d.asked() - plotArrivedNanos) / 1e6,
+                    (d.started() - d.asked()) / 1e6,
+                    (d.built() - d.started()) / 1e6,
+                    (d.drawn() - d.built()) / 1e6,
+                    (d.shown() - d.drawn()) / 1e6,
+                    c.cpuNanos() / 1e6,
+                    d.buildCpuNanos() / 1e6,
+                    d.drawCpuNanos() / 1e6
+                });
+            }
         }
     }
 
@@ -481,6 +504,31 @@ final class PositionTab implements ModuleTab {
     /** The names of {@link #splitsMs()}'s figures, in order. */
     static final java.util.List<String> SPLITS =
             java.util.List.of("fields", "queue", "reach", "scene", "to-edt", "show", "paint", "worker-cpu", "edt-cpu");
+
+    /**
+     * Where the time of each plot shown after a live answer went (ms): the answer itself (reach and
+     * scene, as for the 3D view), the plots' data on the worker, the wait for the event thread, until
+     * the panel's paint asks for the picture, the wait for the drawing thread, building the chart,
+     * drawing it, the wait for the event thread to show it; then the CPU time of the plots' data, of
+     * the chart's building and of its drawing.
+     */
+    java.util.List<double[]> plotSplitsMs() {
+        return java.util.List.copyOf(plotSplitsMs);
+    }
+
+    /** The names of {@link #plotSplitsMs()}'s figures, in order. */
+    static final java.util.List<String> PLOT_SPLITS = java.util.List.of(
+            "answer",
+            "data",
+            "to-edt",
+            "to-paint",
+            "queue",
+            "build",
+            "draw",
+            "to-screen",
+            "data-cpu",
+            "build-cpu",
+            "draw-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {

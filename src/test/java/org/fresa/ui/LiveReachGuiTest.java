@@ -105,6 +105,7 @@ class LiveReachGuiTest extends WindowGuiTest {
         List<Double> plot = new ArrayList<>();
         List<Double> cpu = new ArrayList<>();
         List<double[]> splits = new ArrayList<>();
+        List<double[]> plotSplits = new ArrayList<>();
         List<String> lines = new ArrayList<>();
         double load = loadAverage();
         int cores = Runtime.getRuntime().availableProcessors();
@@ -122,18 +123,24 @@ class LiveReachGuiTest extends WindowGuiTest {
             splits.add(split);
             waitFor("its plot is drawn", () -> tab.plotLatenciesMs().size() > plots);
             double p = GuiActionRunner.execute(() -> last(tab.plotLatenciesMs(), plots));
+            double[] plotSplit =
+                    GuiActionRunner.execute(() -> tab.plotSplitsMs().isEmpty()
+                            ? new double[PositionTab.PLOT_SPLITS.size()]
+                            : tab.plotSplitsMs().get(tab.plotSplitsMs().size() - 1));
+            plotSplits.add(plotSplit);
             view.add(v);
             plot.add(p);
             cpu.add(u);
             lines.add(String.format(
                     Locale.ROOT,
-                    "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; %s",
+                    "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; plot: %s; %s",
                     c[0],
                     c[1],
                     v,
                     u,
                     p,
-                    split(split),
+                    split(split, PositionTab.SPLITS),
+                    split(plotSplit, PositionTab.PLOT_SPLITS),
                     GuiActionRunner.execute(
                             () -> window.label("position-reach").target().getText())));
         }
@@ -170,7 +177,15 @@ class LiveReachGuiTest extends WindowGuiTest {
             medians[i] = median(splits.stream().map(x -> x[k]).toList());
         }
         sb.append("  where the 3D view's time went, medians: ")
-                .append(split(medians))
+                .append(split(medians, PositionTab.SPLITS))
+                .append('\n');
+        double[] plotMedians = new double[PositionTab.PLOT_SPLITS.size()];
+        for (int i = 0; i < plotMedians.length; i++) {
+            int k = i;
+            plotMedians[i] = median(plotSplits.stream().map(x -> x[k]).toList());
+        }
+        sb.append("  where the plot's time went, medians: ")
+                .append(split(plotMedians, PositionTab.PLOT_SPLITS))
                 .append('\n');
         sb.append("  the first ")
                 .append(warmUp.length)
@@ -230,12 +245,10 @@ class LiveReachGuiTest extends WindowGuiTest {
     }
 
     /** A change's time split into its steps (ms), as the tab names them. */
-    private static String split(double[] ms) {
+    private static String split(double[] ms, List<String> names) {
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < ms.length; i++) {
-            sb.append(i == 0 ? "" : ", ")
-                    .append(PositionTab.SPLITS.get(i))
-                    .append(String.format(Locale.ROOT, " %.1f", ms[i]));
+            sb.append(i == 0 ? "" : ", ").append(names.get(i)).append(String.format(Locale.ROOT, " %.1f", ms[i]));
         }
         return sb.toString();
     }
