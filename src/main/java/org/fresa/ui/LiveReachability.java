@@ -70,8 +70,6 @@ final class LiveReachability {
     record Charted(
             Inputs inputs,
             TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints,
-            TrajectoryCharts.Marked errors,
             long changedNanos,
             long postedNanos,
             long madeNanos,
@@ -202,14 +200,7 @@ final class LiveReachability {
             long cpu1 = cpuNanos();
             TrajectoryCharts c = TrajectoryCharts.of(s);
             Charted charted = new Charted(
-                    in,
-                    c,
-                    c.joints(1),
-                    c.errors(1),
-                    changed,
-                    a.phases().posted(),
-                    System.nanoTime(),
-                    cpu1 < 0 ? -1 : cpuNanos() - cpu1);
+                    in, c, changed, a.phases().posted(), System.nanoTime(), cpu1 < 0 ? -1 : cpuNanos() - cpu1);
             SwingUtilities.invokeLater(() -> {
                 if (!stale(gen)) {
                     showCharts.accept(charted);

@@ -24,7 +24,6 @@ import org.fresa.job.JobSettings;
 import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.CamInputException;
-import org.jfree.chart.plot.ValueMarker;
 
 /**
  * The Position tab: where the table stands in front of the robot and the workpiece on the table,
@@ -64,10 +63,12 @@ final class PositionTab implements ModuleTab {
                 }
             };
     private final javax.swing.JTable errorAxes = new javax.swing.JTable(errorAxesModel);
-    // the charts of the last result; the panels draw new ones off the event thread
+    // the data of the last result's charts, the panels' charts (the event thread's: their markers
+    // follow the replay) and those the drawing thread draws (its own, given each result's data)
     private transient TrajectoryCharts charts;
-    private transient ValueMarker jointsMarker = new ValueMarker(1);
-    private transient ValueMarker errorMarker = new ValueMarker(1);
+    private final transient TrajectoryCharts.Screen shownCharts = new TrajectoryCharts.Screen(false);
+    private final transient TrajectoryCharts.Screen drawnCharts = new TrajectoryCharts.Screen(true);
+    private double markedPoint = 1;
     private final OffThreadChartPanel jointsChart = chartPanel(() -> picture(true));
     private final OffThreadChartPanel errorChart = chartPanel(() -> picture(false));
     private boolean loading;
@@ -131,8 +132,8 @@ final class PositionTab implements ModuleTab {
         replay.addChangeListener(e -> {
             vm.select(replay.getValue());
             pointLabel.setText(vm.selectedText());
-            jointsMarker.setValue(vm.selected() + 1);
-            errorMarker.setValue(vm.selected() + 1);
+            markedPoint = vm.selected() + 1;
+            shownCharts.mark(markedPoint);
             cell.repaint();
         });
         JLabel replayLabel = new JLabel("Replay point:");
@@ -428,7 +429,7 @@ final class PositionTab implements ModuleTab {
         if (!c.inputs().equals(shownInputs)) {
             return;
         }
-        showCharts(c.charts(), c.joints(), c.errors());
+        showCharts(c.charts());
         plotAskedNanos = c.changedNanos();
         plotAsked = c;
         plotArrivedNanos = System.nanoTime();
@@ -578,12 +579,9 @@ final class PositionTab implements ModuleTab {
                             RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
                                     planned.request(r.robotTable(), r.tablePiece(), formats), progress);
                             progress.progress(-1, "preparing the plots");
-                            TrajectoryCharts c = TrajectoryCharts.of(solved);
                             return new Charted(
                                     solved,
-                                    c,
-                                    c.joints(1),
-                                    c.errors(1),
+                                    TrajectoryCharts.of(solved),
                                     PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
                                     planned.spindle());
                         },
@@ -602,7 +600,7 @@ final class PositionTab implements ModuleTab {
                             reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
                             reach.setText(vm.reachLine());
                             runs.set(new RobotRunModel.Run(solved, name));
-                            showCharts(charted.charts(), charted.joints(), charted.error());
+                            showCharts(charted.charts());
                             showResult();
                         });
     }
@@ -656,8 +654,6 @@ final class PositionTab implements ModuleTab {
     private record Charted(
             RobotTrajectoryService.Solved solved,
             TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints,
-            TrajectoryCharts.Marked error,
             CellScene scene,
             org.fresa.geom.Transform3 spindle) {}
 
@@ -673,20 +669,28 @@ final class PositionTab implements ModuleTab {
         if (c == null) {
             return null;
         }
-        double point = (joints ? jointsMarker : errorMarker).getValue();
+        double point = markedPoint;
         java.util.List<Object> key = java.util.List.of(c, joints, point);
-        return new OffThreadChartPanel.Picture(key, () -> (joints ? c.joints(point) : c.errors(point)).chart());
+        // built on the drawing thread, the only one that touches drawnCharts
+        return new OffThreadChartPanel.Picture(
+                key, () -> joints ? drawnCharts.joints(c, point) : drawnCharts.errors(c, point));
     }
 
-    /** The two plots of the result (joints with limits, error per axis), with the replayed point marked. */
-    private void showCharts(TrajectoryCharts c, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error) {
+    /**
+     * The two plots of the result (joints with limits, error per axis), with the replayed point
+     * marked: the panels keep their charts, which take the new data in one change each.
+     */
+    private void showCharts(TrajectoryCharts c) {
         charts = c;
-        jointsMarker = joints.marker();
-        errorMarker = error.marker();
-        jointsMarker.setValue(vm.selected() + 1);
-        errorMarker.setValue(vm.selected() + 1);
-        jointsChart.setChart(joints.chart());
-        errorChart.setChart(error.chart());
+        markedPoint = vm.selected() + 1;
+        var joints = shownCharts.joints(c, markedPoint);
+        var errors = shownCharts.errors(c, markedPoint);
+        if (jointsChart.getChart() != joints) {
+            jointsChart.setChart(joints);
+        }
+        if (errorChart.getChart() != errors) {
+            errorChart.setChart(errors);
+        }
     }
 
     private void showResult() {
