@@ -473,6 +473,11 @@ final class PositionTab implements ModuleTab {
         return shownInputs != null && liveInputs().equals(java.util.Optional.of(shownInputs));
     }
 
+    /** Whether the plot on screen shows the last answer (tests wait for it before a screenshot). */
+    boolean plotUpToDate() {
+        return !(results.getSelectedComponent() instanceof OffThreadChartPanel p) || p.isUpToDate();
+    }
+
     /** The scene the 3D view draws now. */
     CellScene scene() {
         return cell.scene();

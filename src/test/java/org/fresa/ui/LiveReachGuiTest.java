@@ -146,6 +146,9 @@ class LiveReachGuiTest extends WindowGuiTest {
         }
         settle();
         watchdog.pause();
+        // the error plot of the placement typed back, as the planner sees it (target/screenshots/)
+        waitFor("the plot is up to date", () -> tab.plotUpToDate());
+        shoot("position-live-plot.png");
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
         // an event that waited for the X toolkit's lock (held by the toolkit's thread while it talks to
         // a starved Xvfb) with little CPU of its own waited for the X server, which the watchdog does
