@@ -69,6 +69,8 @@ final class ThinLineRenderer extends XYLineAndShapeRenderer {
     /** The state of one drawing: which items of the series being drawn are kept. */
     private static final class Thinned extends State {
         private final double scaleX;
+        private final double translateX;
+        private final boolean g2ShearsOrTurns;
         private final Rectangle2D dataArea;
         private final XYPlot plot;
         private final XYDataset dataset;
@@ -77,8 +79,11 @@ final class ThinLineRenderer extends XYLineAndShapeRenderer {
 
         Thinned(PlotRenderingInfo info, Graphics2D g2, Rectangle2D dataArea, XYPlot plot, XYDataset dataset) {
             super(info);
-            // the device's pixels: an image drawn at twice the size has twice the columns
-            this.scaleX = Math.abs(g2.getTransform().getScaleX());
+            // the device's pixel columns: an image drawn at twice the size has twice as many
+            this.scaleX = g2.getTransform().getScaleX();
+            this.g2ShearsOrTurns =
+                    g2.getTransform().getShearX() != 0 || g2.getTransform().getShearY() != 0;
+            this.translateX = g2.getTransform().getTranslateX();
             this.dataArea = dataArea;
             this.plot = plot;
             this.dataset = dataset;
@@ -89,8 +94,11 @@ final class ThinLineRenderer extends XYLineAndShapeRenderer {
             super.startSeriesPass(data, series, firstItem, lastItem, pass, passCount);
             first = firstItem;
             kept = null;
-            if (data != dataset || plot.getOrientation() != PlotOrientation.VERTICAL || scaleX == 0) {
-                // only the plots of the tab are thinned; any other is drawn whole
+            if (data != dataset
+                    || plot.getOrientation() != PlotOrientation.VERTICAL
+                    || scaleX <= 0
+                    || g2ShearsOrTurns) {
+                // turned, mirrored or sheared, the device columns are not along x: drawn whole
                 return;
             }
             ValueAxis x = plot.getDomainAxisForDataset(plot.indexOf(data));
@@ -99,7 +107,8 @@ final class ThinLineRenderer extends XYLineAndShapeRenderer {
             double[] y = new double[n];
             for (int k = 0; k < n; k++) {
                 xPx[k] = x.valueToJava2D(data.getXValue(series, firstItem + k), dataArea, plot.getDomainAxisEdge())
-                        * scaleX;
+                                * scaleX
+                        + translateX;
                 y[k] = data.getYValue(series, firstItem + k);
             }
             kept = ColumnThinning.keep(xPx, y);
