@@ -70,10 +70,10 @@ final class LiveReachability {
     record Charted(
             Inputs inputs,
             TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints,
-            TrajectoryCharts.Marked errors,
             long changedNanos,
-            long madeNanos) {}
+            long postedNanos,
+            long madeNanos,
+            long cpuNanos) {}
 
     /**
      * When (System.nanoTime) an answer's steps ended: the field change, the request (after the
@@ -197,8 +197,10 @@ final class LiveReachability {
             if (stale(gen)) {
                 return;
             }
+            long cpu1 = cpuNanos();
             TrajectoryCharts c = TrajectoryCharts.of(s);
-            Charted charted = new Charted(in, c, c.joints(1), c.errors(1), changed, System.nanoTime());
+            Charted charted = new Charted(
+                    in, c, changed, a.phases().posted(), System.nanoTime(), cpu1 < 0 ? -1 : cpuNanos() - cpu1);
             SwingUtilities.invokeLater(() -> {
                 if (!stale(gen)) {
                     showCharts.accept(charted);

@@ -60,7 +60,15 @@ final class OffThreadChartPanel extends ChartPanel {
     // the frame ChartPanel copies to the screen, when the last image has another size than the panel
     private transient BufferedImage frame;
     private transient Runnable onDrawn = () -> {};
+    private transient Drawn lastDrawn;
     private String placeholder;
+
+    /**
+     * When (System.nanoTime) the last image's steps ended, and the drawing thread's CPU time (ns,
+     * -1 where the JVM does not count it): asked at a paint, taken up by the drawing thread, the
+     * chart built, the image drawn, shown on the event thread.
+     */
+    record Drawn(long asked, long started, long built, long drawn, long shown, long buildCpuNanos, long drawCpuNanos) {}
 
     /** picture is asked on the event thread at every paint; null means nothing to draw. */
     OffThreadChartPanel(JFreeChart chart, Supplier<Picture> picture) {
@@ -95,7 +103,8 @@ final class OffThreadChartPanel extends ChartPanel {
             Object key = List.of(p.key(), w, h, scale);
             if (!key.equals(imageKey) && !key.equals(pendingKey)) {
                 pendingKey = key;
-                DRAWING.execute(() -> draw(p, key, w, h, scale));
+                long asked = System.nanoTime();
+                DRAWING.execute(() -> draw(p, key, w, h, scale, asked));
             }
         }
         if (image != null && image.getWidth() == bufferSize.width && image.getHeight() == bufferSize.height) {
@@ -118,12 +127,16 @@ final class OffThreadChartPanel extends ChartPanel {
     }
 
     /** Runs on the drawing thread. */
-    private void draw(Picture p, Object key, int w, int h, double scale) {
+    private void draw(Picture p, Object key, int w, int h, double scale, long asked) {
         if (!key.equals(pendingKey)) {
             // a newer picture was asked for while this one waited
             return;
         }
+        long started = System.nanoTime();
+        long cpu0 = LiveReachability.cpuNanos();
         JFreeChart c = p.build();
+        long built = System.nanoTime();
+        long cpu1 = LiveReachability.cpuNanos();
         int iw = (int) Math.ceil(w * scale);
         int ih = (int) Math.ceil(h * scale);
         BufferedImage img = new BufferedImage(iw, ih, BufferedImage.TYPE_INT_RGB);
@@ -135,10 +148,24 @@ final class OffThreadChartPanel extends ChartPanel {
         ChartRenderingInfo info = new ChartRenderingInfo(null);
         c.draw(g2, new Rectangle2D.Double(0, 0, w, h), null, info);
         g2.dispose();
-        SwingUtilities.invokeLater(() -> show(img, key, info));
+        long drawn = System.nanoTime();
+        long cpu2 = LiveReachability.cpuNanos();
+        SwingUtilities.invokeLater(() -> show(
+                img,
+                key,
+                info,
+                new Drawn(
+                        asked,
+                        started,
+                        built,
+                        drawn,
+                        System.nanoTime(),
+                        cpu0 < 0 ? -1 : cpu1 - cpu0,
+                        cpu0 < 0 ? -1 : cpu2 - cpu1)));
     }
 
-    private void show(BufferedImage img, Object key, ChartRenderingInfo drawn) {
+    private void show(BufferedImage img, Object key, ChartRenderingInfo drawn, Drawn times) {
+        lastDrawn = times;
         image = img;
         imageKey = key;
         if (key.equals(pendingKey)) {
@@ -158,6 +185,11 @@ final class OffThreadChartPanel extends ChartPanel {
         }
         repaint();
         onDrawn.run();
+    }
+
+    /** The times of the image on screen, or null before the first (tests and the timing log read them). */
+    Drawn lastDrawn() {
+        return lastDrawn;
     }
 
     /** A grey line of text shown while there is no chart. */

@@ -24,7 +24,6 @@ import org.fresa.job.JobSettings;
 import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.CamInputException;
-import org.jfree.chart.plot.ValueMarker;
 
 /**
  * The Position tab: where the table stands in front of the robot and the workpiece on the table,
@@ -64,10 +63,12 @@ final class PositionTab implements ModuleTab {
                 }
             };
     private final javax.swing.JTable errorAxes = new javax.swing.JTable(errorAxesModel);
-    // the charts of the last result; the panels draw new ones off the event thread
+    // the data of the last result's charts, the panels' charts (the event thread's: their markers
+    // follow the replay) and those the drawing thread draws (its own, given each result's data)
     private transient TrajectoryCharts charts;
-    private transient ValueMarker jointsMarker = new ValueMarker(1);
-    private transient ValueMarker errorMarker = new ValueMarker(1);
+    private final transient TrajectoryCharts.Screen shownCharts = new TrajectoryCharts.Screen(false);
+    private final transient TrajectoryCharts.Screen drawnCharts = new TrajectoryCharts.Screen(true);
+    private double markedPoint = 1;
     private final OffThreadChartPanel jointsChart = chartPanel(() -> picture(true));
     private final OffThreadChartPanel errorChart = chartPanel(() -> picture(false));
     private boolean loading;
@@ -80,6 +81,10 @@ final class PositionTab implements ModuleTab {
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> cpuMs = new java.util.ArrayList<>();
     private final java.util.List<double[]> splitsMs = new java.util.ArrayList<>();
+    private final java.util.List<double[]> plotSplitsMs = new java.util.ArrayList<>();
+    // the plots of the live answer shown, as they arrived on the event thread (System.nanoTime)
+    private transient LiveReachability.Charted plotAsked;
+    private long plotArrivedNanos;
     // when the last field was typed into and not yet asked about (System.nanoTime), or -1
     private long changedNanos = -1;
     private long plotAskedNanos = -1;
@@ -127,8 +132,8 @@ final class PositionTab implements ModuleTab {
         replay.addChangeListener(e -> {
             vm.select(replay.getValue());
             pointLabel.setText(vm.selectedText());
-            jointsMarker.setValue(vm.selected() + 1);
-            errorMarker.setValue(vm.selected() + 1);
+            markedPoint = vm.selected() + 1;
+            shownCharts.mark(markedPoint);
             cell.repaint();
         });
         JLabel replayLabel = new JLabel("Replay point:");
@@ -424,8 +429,10 @@ final class PositionTab implements ModuleTab {
         if (!c.inputs().equals(shownInputs)) {
             return;
         }
-        showCharts(c.charts(), c.joints(), c.errors());
+        showCharts(c.charts());
         plotAskedNanos = c.changedNanos();
+        plotAsked = c;
+        plotArrivedNanos = System.nanoTime();
     }
 
     private void liveFailed(String message) {
@@ -441,12 +448,34 @@ final class PositionTab implements ModuleTab {
         if (plotAskedNanos >= 0 && shown != null && shown.isUpToDate()) {
             plotLatenciesMs.add((System.nanoTime() - plotAskedNanos) / 1e6);
             plotAskedNanos = -1;
+            OffThreadChartPanel.Drawn d = shown.lastDrawn();
+            LiveReachability.Charted c = plotAsked;
+            if (d != null && c != null) {
+                plotSplitsMs.add(new double[] {
+                    (c.postedNanos() - c.changedNanos()) / 1e6,
+                    (c.madeNanos() - c.postedNanos()) / 1e6,
+                    (plotArrivedNanos - c.madeNanos()) / 1e6,
+                    (d.asked() - plotArrivedNanos) / 1e6,
+                    (d.started() - d.asked()) / 1e6,
+                    (d.built() - d.started()) / 1e6,
+                    (d.drawn() - d.built()) / 1e6,
+                    (d.shown() - d.drawn()) / 1e6,
+                    c.cpuNanos() / 1e6,
+                    d.buildCpuNanos() / 1e6,
+                    d.drawCpuNanos() / 1e6
+                });
+            }
         }
     }
 
     /** Whether the live answer shown is that of the fields and job as they are now. */
     boolean showsLiveAnswerOfFields() {
         return shownInputs != null && liveInputs().equals(java.util.Optional.of(shownInputs));
+    }
+
+    /** Whether the plot on screen shows the last answer (tests wait for it before a screenshot). */
+    boolean plotUpToDate() {
+        return !(results.getSelectedComponent() instanceof OffThreadChartPanel p) || p.isUpToDate();
     }
 
     /** The scene the 3D view draws now. */
@@ -481,6 +510,31 @@ final class PositionTab implements ModuleTab {
     /** The names of {@link #splitsMs()}'s figures, in order. */
     static final java.util.List<String> SPLITS =
             java.util.List.of("fields", "queue", "reach", "scene", "to-edt", "show", "paint", "worker-cpu", "edt-cpu");
+
+    /**
+     * Where the time of each plot shown after a live answer went (ms): the answer itself (reach and
+     * scene, as for the 3D view), the plots' data on the worker, the wait for the event thread, until
+     * the panel's paint asks for the picture, the wait for the drawing thread, building the chart,
+     * drawing it, the wait for the event thread to show it; then the CPU time of the plots' data, of
+     * the chart's building and of its drawing.
+     */
+    java.util.List<double[]> plotSplitsMs() {
+        return java.util.List.copyOf(plotSplitsMs);
+    }
+
+    /** The names of {@link #plotSplitsMs()}'s figures, in order. */
+    static final java.util.List<String> PLOT_SPLITS = java.util.List.of(
+            "answer",
+            "data",
+            "to-edt",
+            "to-paint",
+            "queue",
+            "build",
+            "draw",
+            "to-screen",
+            "data-cpu",
+            "build-cpu",
+            "draw-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {
@@ -530,12 +584,9 @@ final class PositionTab implements ModuleTab {
                             RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
                                     planned.request(r.robotTable(), r.tablePiece(), formats), progress);
                             progress.progress(-1, "preparing the plots");
-                            TrajectoryCharts c = TrajectoryCharts.of(solved);
                             return new Charted(
                                     solved,
-                                    c,
-                                    c.joints(1),
-                                    c.errors(1),
+                                    TrajectoryCharts.of(solved),
                                     PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
                                     planned.spindle());
                         },
@@ -554,7 +605,7 @@ final class PositionTab implements ModuleTab {
                             reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
                             reach.setText(vm.reachLine());
                             runs.set(new RobotRunModel.Run(solved, name));
-                            showCharts(charted.charts(), charted.joints(), charted.error());
+                            showCharts(charted.charts());
                             showResult();
                         });
     }
@@ -608,8 +659,6 @@ final class PositionTab implements ModuleTab {
     private record Charted(
             RobotTrajectoryService.Solved solved,
             TrajectoryCharts charts,
-            TrajectoryCharts.Marked joints,
-            TrajectoryCharts.Marked error,
             CellScene scene,
             org.fresa.geom.Transform3 spindle) {}
 
@@ -625,20 +674,28 @@ final class PositionTab implements ModuleTab {
         if (c == null) {
             return null;
         }
-        double point = (joints ? jointsMarker : errorMarker).getValue();
+        double point = markedPoint;
         java.util.List<Object> key = java.util.List.of(c, joints, point);
-        return new OffThreadChartPanel.Picture(key, () -> (joints ? c.joints(point) : c.errors(point)).chart());
+        // built on the drawing thread, the only one that touches drawnCharts
+        return new OffThreadChartPanel.Picture(
+                key, () -> joints ? drawnCharts.joints(c, point) : drawnCharts.errors(c, point));
     }
 
-    /** The two plots of the result (joints with limits, error per axis), with the replayed point marked. */
-    private void showCharts(TrajectoryCharts c, TrajectoryCharts.Marked joints, TrajectoryCharts.Marked error) {
+    /**
+     * The two plots of the result (joints with limits, error per axis), with the replayed point
+     * marked: the panels keep their charts, which take the new data in one change each.
+     */
+    private void showCharts(TrajectoryCharts c) {
         charts = c;
-        jointsMarker = joints.marker();
-        errorMarker = error.marker();
-        jointsMarker.setValue(vm.selected() + 1);
-        errorMarker.setValue(vm.selected() + 1);
-        jointsChart.setChart(joints.chart());
-        errorChart.setChart(error.chart());
+        markedPoint = vm.selected() + 1;
+        var joints = shownCharts.joints(c, markedPoint);
+        var errors = shownCharts.errors(c, markedPoint);
+        if (jointsChart.getChart() != joints) {
+            jointsChart.setChart(joints);
+        }
+        if (errorChart.getChart() != errors) {
+            errorChart.setChart(errors);
+        }
     }
 
     private void showResult() {

@@ -105,6 +105,8 @@ class LiveReachGuiTest extends WindowGuiTest {
         List<Double> plot = new ArrayList<>();
         List<Double> cpu = new ArrayList<>();
         List<double[]> splits = new ArrayList<>();
+        List<double[]> plotSplits = new ArrayList<>();
+        List<Double> plotCpu = new ArrayList<>();
         List<String> lines = new ArrayList<>();
         double load = loadAverage();
         int cores = Runtime.getRuntime().availableProcessors();
@@ -122,23 +124,35 @@ class LiveReachGuiTest extends WindowGuiTest {
             splits.add(split);
             waitFor("its plot is drawn", () -> tab.plotLatenciesMs().size() > plots);
             double p = GuiActionRunner.execute(() -> last(tab.plotLatenciesMs(), plots));
+            double[] plotSplit =
+                    GuiActionRunner.execute(() -> tab.plotSplitsMs().isEmpty()
+                            ? new double[PositionTab.PLOT_SPLITS.size()]
+                            : tab.plotSplitsMs().get(tab.plotSplitsMs().size() - 1));
+            plotSplits.add(plotSplit);
+            // the plot's own work: its data on the worker, the chart's building and drawing
+            int cpus = PositionTab.PLOT_SPLITS.indexOf("data-cpu");
+            plotCpu.add(plotSplit[cpus] + plotSplit[cpus + 1] + plotSplit[cpus + 2]);
             view.add(v);
             plot.add(p);
             cpu.add(u);
             lines.add(String.format(
                     Locale.ROOT,
-                    "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; %s",
+                    "  %s = %s: view %.1f ms (CPU %.1f ms), plot %.1f ms; %s; plot: %s; %s",
                     c[0],
                     c[1],
                     v,
                     u,
                     p,
-                    split(split),
+                    split(split, PositionTab.SPLITS),
+                    split(plotSplit, PositionTab.PLOT_SPLITS),
                     GuiActionRunner.execute(
                             () -> window.label("position-reach").target().getText())));
         }
         settle();
         watchdog.pause();
+        // the error plot of the placement typed back, as the planner sees it (target/screenshots/)
+        waitFor("the plot is up to date", () -> tab.plotUpToDate());
+        shoot("position-live-plot.png");
         List<EventThreadWatchdog.Slow> slow = watchdog.slowEvents();
         // an event that waited for the X toolkit's lock (held by the toolkit's thread while it talks to
         // a starved Xvfb) with little CPU of its own waited for the X server, which the watchdog does
@@ -151,7 +165,8 @@ class LiveReachGuiTest extends WindowGuiTest {
         StringBuilder sb = new StringBuilder(String.format(
                 Locale.ROOT,
                 "example 2 on the IRB-140, %d field changes typed: 3D view median %.1f ms, worst %.1f ms"
-                        + " (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, worst %.1f ms; worst"
+                        + " (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, worst %.1f ms (CPU median"
+                        + " %.1f ms, worst %.1f ms); worst"
                         + " event-thread task %.1f ms (%s); load average before %.2f on %d cores%n",
                 changes.length,
                 median(view),
@@ -160,6 +175,8 @@ class LiveReachGuiTest extends WindowGuiTest {
                 max(cpu),
                 median(plot),
                 max(plot),
+                median(plotCpu),
+                max(plotCpu),
                 watchdog.worstMs(),
                 watchdog.worstEvent(),
                 load,
@@ -170,7 +187,15 @@ class LiveReachGuiTest extends WindowGuiTest {
             medians[i] = median(splits.stream().map(x -> x[k]).toList());
         }
         sb.append("  where the 3D view's time went, medians: ")
-                .append(split(medians))
+                .append(split(medians, PositionTab.SPLITS))
+                .append('\n');
+        double[] plotMedians = new double[PositionTab.PLOT_SPLITS.size()];
+        for (int i = 0; i < plotMedians.length; i++) {
+            int k = i;
+            plotMedians[i] = median(plotSplits.stream().map(x -> x[k]).toList());
+        }
+        sb.append("  where the plot's time went, medians: ")
+                .append(split(plotMedians, PositionTab.PLOT_SPLITS))
                 .append('\n');
         sb.append("  the first ")
                 .append(warmUp.length)
@@ -230,12 +255,10 @@ class LiveReachGuiTest extends WindowGuiTest {
     }
 
     /** A change's time split into its steps (ms), as the tab names them. */
-    private static String split(double[] ms) {
+    private static String split(double[] ms, List<String> names) {
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < ms.length; i++) {
-            sb.append(i == 0 ? "" : ", ")
-                    .append(PositionTab.SPLITS.get(i))
-                    .append(String.format(Locale.ROOT, " %.1f", ms[i]));
+            sb.append(i == 0 ? "" : ", ").append(names.get(i)).append(String.format(Locale.ROOT, " %.1f", ms[i]));
         }
         return sb.toString();
     }
