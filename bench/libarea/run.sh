@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The whole libarea bench, from the worktree's root or anywhere:
+#   bench/libarea/run.sh [DIR]      (DIR defaults to target/bench)
+# 1. exports the pocket set and Fresa's programs (the Java test LibareaPockets, with the property
+#    fresa.bench.out; needs `mvn -o -q test-compile` done),
+# 2. makes libarea importable (fetch.sh),
+# 3. plans each pocket with libarea, runs both sides' programs through tools/rs274 and measures
+#    them (pocket.py): DIR/results.md, DIR/results.csv.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+dir=${1:-$root/target/bench}
+mkdir -p "$dir"
+dir=$(cd "$dir" && pwd)
+rm -rf "$dir/ours"
+(cd "$root" && mvn -o -B -ntp -q surefire:test -Dtest=LibareaPockets -Dfresa.bench.out="$dir")
+eval "$("$root/bench/libarea/fetch.sh")"
+python3.11 "$root/bench/libarea/pocket.py" "$dir"
