@@ -222,6 +222,8 @@ def main():
         print("libarea's area module is not importable: measuring the programs already in theirs/", file=sys.stderr)
     rows = []
     keys = ["rapids", "rapidMm", "blocks", "feedMm", "downMm", "min"]
+    # the CSV's columns (uncutMm2 and gougeMm come from uncut.csv when the Java measure has run)
+    csv_keys = keys + ["uncutMm2", "gougeMm"]
     total = {s: {k: 0.0 for k in keys} for s in ("ours", "theirs")}
     for p in pockets:
         theirs = os.path.join(d, "theirs", p["name"] + ".ngc")
@@ -236,17 +238,28 @@ def main():
             for k in keys:
                 total[side][k] += m[k]
         rows.append(row)
+    uncut = {}
+    if os.path.exists(os.path.join(d, "uncut.csv")):
+        for row in list(open(os.path.join(d, "uncut.csv")))[1:]:
+            name, side, mm2, gouge = row.strip().split(",")
+            uncut[(name, side)] = (float(mm2), float(gouge))
+    for r in rows:
+        for side in ("ours", "theirs"):
+            r[side]["uncutMm2"], r[side]["gougeMm"] = uncut.get((r["name"], side), (float("nan"), float("nan")))
+            total[side]["uncutMm2"] = total[side].get("uncutMm2", 0.0) + r[side]["uncutMm2"]
+            total[side]["gougeMm"] = max(total[side].get("gougeMm", 0.0), r[side]["gougeMm"])
     lines = [
         "| pocket | G0 ours | G0 libarea | rapid mm ours | rapid mm libarea | blocks ours | blocks libarea"
         " | feed mm ours | feed mm libarea | of which entry ours | entry libarea | min ours | min libarea"
-        " | time ratio |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        " | time ratio | uncut mm2 ours | uncut mm2 libarea | gouge mm ours | gouge mm libarea |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
 
     def line(name, o, t):
-        return "| %s | %d | %d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | %.1f | %.3f | %.3f | %.3f |" % (
+        return "| %s | %d | %d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | %.1f | %.3f | %.3f | %.3f | %.2f | %.2f | %.3f | %.3f |" % (
             name, o["rapids"], t["rapids"], o["rapidMm"], t["rapidMm"], o["blocks"], t["blocks"],
-            o["feedMm"], t["feedMm"], o["downMm"], t["downMm"], o["min"], t["min"], o["min"] / t["min"])
+            o["feedMm"], t["feedMm"], o["downMm"], t["downMm"], o["min"], t["min"], o["min"] / t["min"],
+            o["uncutMm2"], t["uncutMm2"], o["gougeMm"], t["gougeMm"])
 
     for r in rows:
         lines.append(line(r["name"], r["ours"], r["theirs"]))
@@ -255,10 +268,10 @@ def main():
     with open(os.path.join(d, "results.md"), "w") as f:
         f.write(table)
     with open(os.path.join(d, "results.csv"), "w") as f:
-        f.write("pocket,side," + ",".join(keys) + "\n")
+        f.write("pocket,side," + ",".join(csv_keys) + "\n")
         for r in rows:
             for side in ("ours", "theirs"):
-                f.write("%s,%s,%s\n" % (r["name"], side, ",".join("%.4f" % r[side][k] for k in keys)))
+                f.write("%s,%s,%s\n" % (r["name"], side, ",".join("%.4f" % r[side][k] for k in csv_keys)))
     print(table)
 
 

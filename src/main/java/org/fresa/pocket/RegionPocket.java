@@ -34,8 +34,9 @@ import org.fresa.model.ToolpathSection;
  *
  * <p>Order: the offsets form a tree of faces (a face of one offset lies in exactly one face of
  * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
- * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
- * and stays inside the finishing offset (so the tool never touches a wall or island), or when the
+ * loops nearest first; a link between loops is a straight feed move when it stays inside the
+ * finishing offset (so the tool never touches a wall or island) and is no longer than 2 D or than
+ * the ramp that a retract would need to enter the next loop ({@link #linkLimitMm}), or when the
  * tool's disc along it stays in material this layer has already cut or the next loop cuts
  * (whatever its length; {@link Coverage#clearedAlong}), otherwise a
  * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
@@ -485,7 +486,7 @@ public final class RegionPocket {
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
                 if (cursor != null
-                        && (feedLink(cursor, s, finishing, t.toolDiameterMm())
+                        && (feedLink(cursor, s, finishing, linkLimitMm(t, entry, above - z))
                                 || cleared.clearedAlong(cursor, s, loop.curves()))) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
@@ -554,9 +555,27 @@ public final class RegionPocket {
         }
     }
 
-    /** A straight feed link is safe when short and inside the finishing offset's region. */
-    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double diameter) {
-        if (p.distance(q) > 2 * diameter) {
+    /**
+     * The longest straight link at depth through material not yet cut (mm). The link slots at the
+     * layer's depth, as the first loop after an entry does all round; the other way to the next
+     * loop is a retract, rapids and a ramp down along it that feeds (top - z) / tan(entry angle)
+     * through the same material (76 mm for 4 mm at 3 deg): a link no longer than that ramp takes
+     * less feed and no lift. At least 2 D; with plunge entries (no ramp to save) just 2 D.
+     */
+    static double linkLimitMm(PocketTechnology t, EntryRule entry, double descentMm) {
+        double shortLink = 2 * t.toolDiameterMm();
+        if (entry.kind() == EntryRule.Kind.PLUNGE) {
+            return shortLink;
+        }
+        return Math.max(shortLink, descentMm / Math.tan(Math.toRadians(entry.angleDeg())));
+    }
+
+    /**
+     * A straight feed link is safe when no longer than limitMm and inside the finishing offset's
+     * region: the tool's disc along it touches no wall and no island.
+     */
+    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm) {
+        if (p.distance(q) > limitMm) {
             return false;
         }
         if (p.distance(q) < 1e-9) {

@@ -14,8 +14,10 @@ import org.fresa.geom.Curve2;
 import org.fresa.geom.Vec2;
 import org.fresa.model.Toolpath;
 import org.fresa.post.NcPosts;
+import org.fresa.post.Rs274;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.condition.EnabledIfSystemProperty;
+import org.locationtech.jts.geom.Geometry;
 
 /**
  * The island pockets Fresa is measured on against FreeCAD's libarea (bench/libarea, and
@@ -88,6 +90,7 @@ class LibareaPockets {
     @Test
     @EnabledIfSystemProperty(named = "fresa.bench.out", matches = ".+")
     void export() throws Exception {
+        // (the uncut measure below runs after bench/libarea/pocket.py has written libarea's programs)
         Path dir = Path.of(System.getProperty("fresa.bench.out"));
         Files.createDirectories(dir.resolve("ours"));
         StringBuilder json = new StringBuilder("[\n");
@@ -119,6 +122,37 @@ class LibareaPockets {
         }
         json.append("]\n");
         Files.writeString(dir.resolve("pockets.json"), json.toString());
+    }
+
+    /**
+     * The floor each side leaves uncut and how far it cuts into a wall, measured as {@link
+     * PocketCleanUpTest} measures Fresa's pockets (LinuxCNC's moves, JTS): DIR/uncut.csv for the
+     * programs in DIR/ours and DIR/theirs (where bench/libarea/pocket.py writes libarea's).
+     */
+    @Test
+    @EnabledIfSystemProperty(named = "fresa.bench.out", matches = ".+")
+    void uncut() throws Exception {
+        Path dir = Path.of(System.getProperty("fresa.bench.out"));
+        if (!Files.isDirectory(dir.resolve("theirs"))) {
+            return;
+        }
+        StringBuilder csv = new StringBuilder("pocket,side,uncutMm2,gougeMm\n");
+        for (Bench b : pockets()) {
+            PocketTechnology t = b.tech();
+            Geometry wall = RegionPocketTest.region(b.contours());
+            Geometry reachable = wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32);
+            for (String side : List.of("ours", "theirs")) {
+                Path f = dir.resolve(side).resolve(b.name() + ".ngc");
+                if (!Files.exists(f)) {
+                    continue;
+                }
+                Rs274.Result res = Rs274.run(f, t.toolDiameterMm());
+                PocketCleanUpTest.Verdict v = PocketCleanUpTest.verdict(
+                        res.motions(), t.zBottomMm(), t.zTopMm(), t.radiusMm(), wall, reachable);
+                csv.append(String.format(Locale.ROOT, "%s,%s,%.4f,%.4f%n", b.name(), side, v.uncutMm2(), v.gougeMm()));
+            }
+        }
+        Files.writeString(dir.resolve("uncut.csv"), csv.toString());
     }
 
     /**
