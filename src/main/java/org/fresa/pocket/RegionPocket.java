@@ -492,13 +492,17 @@ public final class RegionPocket {
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
-                    moves.add(new Move.Rapid(at(s, safe)));
+                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE
+                            ? List.of()
+                            : rampPath(loop, above - z, entry.angleDeg());
+                    Vec2 from = down.isEmpty() ? s : down.get(0).start();
+                    moves.add(new Move.Rapid(at(from, safe)));
                     // down at rapid to just above the floor cleared at the layer above, then no straight feed down
-                    moves.add(new Move.Rapid(at(s, above)));
-                    if (entry.kind() == EntryRule.Kind.PLUNGE) {
+                    moves.add(new Move.Rapid(at(from, above)));
+                    if (down.isEmpty()) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
-                        ramp(moves, loop, above, z, t.feedMmPerMin(), entry.angleDeg());
+                        ramp(moves, down, above, z, t.feedMmPerMin());
                     }
                     if (moves.size() > PocketTechnology.MAX_MOVES) {
                         throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
@@ -518,11 +522,17 @@ public final class RegionPocket {
         return new Toolpath(List.of(section));
     }
 
-    /** Down from top to z along the loop, as many times round as a ramp no steeper than angleDeg needs. */
-    private static void ramp(PocketMoves moves, Contour loop, double top, double z, double feed, double angleDeg)
-            throws ToolTooLargeException {
+    /**
+     * The way down onto a loop: the last stretch of the loop before its start, as long as a ramp
+     * no steeper than angleDeg needs to descend descentMm (1 % longer, so that rounding the
+     * program's Z to the micrometre never makes it steeper), round the loop as many times as that
+     * takes. It ends at the loop's start, where the loop is then cut at depth: no more feed than
+     * the descent needs (whole rounds of a long loop fed up to twice that).
+     */
+    static List<Curve2> rampPath(Contour loop, double descentMm, double angleDeg) throws ToolTooLargeException {
         double len = loop.length();
-        double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
+        double want = 1.01 * descentMm / Math.tan(Math.toRadians(angleDeg));
+        double need = Math.ceil(want / len - 1e-9);
         if (!(len >= 1e-3) || !(need <= Entries.MAX_STEPS)) {
             throw new ToolTooLargeException(String.format(
                     java.util.Locale.ROOT,
@@ -535,15 +545,44 @@ public final class RegionPocket {
                     angleDeg));
         }
         int rounds = Math.max(1, (int) need);
-        double total = rounds * len;
-        double done = 0;
-        for (int k = 0; k < rounds; k++) {
-            for (Curve2 c : loop.curves()) {
-                double z0 = top - (top - z) * done / total;
-                done += c.length();
-                double z1 = top - (top - z) * done / total;
-                emit(moves, c, z0, z1, feed);
+        // where on the loop (mm from its start) the ramp begins
+        double skip = Math.max(0, rounds * len - want);
+        List<Curve2> out = new ArrayList<>();
+        double at = 0;
+        for (Curve2 c : loop.curves()) {
+            double l = c.length();
+            if (at + l <= skip + 1e-9) {
+                at += l;
+                continue;
             }
+            if (at < skip) {
+                Vec2 p = c.pointAt((skip - at) / l);
+                if (p.distance(c.end()) >= PocketMoves.RESOLUTION_MM) {
+                    out.add(piece(c, p, c.end()));
+                }
+            } else {
+                out.add(c);
+            }
+            at += l;
+        }
+        for (int k = 1; k < rounds; k++) {
+            out.addAll(loop.curves());
+        }
+        if (out.isEmpty()) {
+            out.addAll(loop.curves());
+        }
+        return out;
+    }
+
+    /** Down from top to z along the ramp's curves, evenly by length. */
+    private static void ramp(PocketMoves moves, List<Curve2> down, double top, double z, double feed) {
+        double total = down.stream().mapToDouble(Curve2::length).sum();
+        double done = 0;
+        for (Curve2 c : down) {
+            double z0 = top - (top - z) * done / total;
+            done += c.length();
+            double z1 = top - (top - z) * done / total;
+            emit(moves, c, z0, z1, feed);
         }
     }
 
