@@ -120,6 +120,13 @@ public final class RegionPocket {
         }
         List<Cut> directed = new ArrayList<>();
         for (Cut c : order) {
+            if (cleanUp && c.level() > 0 && c.loop().length() < tech.toolDiameterMm()) {
+                // a loop shorter than the tool's diameter encloses a face a fraction of the tool's
+                // disc wide, which the loop round it sweeps nearly all of; entered on its own it
+                // takes a ramp of hundreds of rounds (a block per element each): the coverage
+                // check below clears what it alone would have cut by a spur from another loop
+                continue;
+            }
             directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
         }
         if (cleanUp) {
