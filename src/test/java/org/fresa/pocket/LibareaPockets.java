@@ -42,6 +42,11 @@ class LibareaPockets {
      * generator that the planner takes.
      */
     static List<Bench> pockets() {
+        return pockets(Double.NaN);
+    }
+
+    /** The set, with the finishing allowance (fraction of D) given, or the generator's when NaN. */
+    static List<Bench> pockets(double finishFraction) {
         Random rnd = new Random(SEED);
         List<Bench> out = new ArrayList<>();
         int[] taken = new int[4];
@@ -55,7 +60,7 @@ class LibareaPockets {
             PocketTechnology same = new PocketTechnology(
                     t.toolDiameterMm(),
                     t.cutFraction(),
-                    t.finishFraction(),
+                    Double.isNaN(finishFraction) ? t.finishFraction() : finishFraction,
                     t.zTopMm(),
                     t.zBottomMm(),
                     t.maxDepthMm(),
@@ -94,7 +99,7 @@ class LibareaPockets {
         Path dir = Path.of(System.getProperty("fresa.bench.out"));
         Files.createDirectories(dir.resolve("ours"));
         StringBuilder json = new StringBuilder("[\n");
-        List<Bench> set = pockets();
+        List<Bench> set = pockets(allowance());
         for (int i = 0; i < set.size(); i++) {
             Bench b = set.get(i);
             Files.writeString(dir.resolve("ours").resolve(b.name() + ".ngc"), program(b));
@@ -124,6 +129,12 @@ class LibareaPockets {
         Files.writeString(dir.resolve("pockets.json"), json.toString());
     }
 
+    /** The finishing allowance of the property fresa.bench.allowance (fraction of D), NaN without it. */
+    private static double allowance() {
+        String a = System.getProperty("fresa.bench.allowance", "");
+        return a.isBlank() ? Double.NaN : Double.parseDouble(a);
+    }
+
     /**
      * The floor each side leaves uncut and how far it cuts into a wall, measured as {@link
      * PocketCleanUpTest} measures Fresa's pockets (LinuxCNC's moves, JTS): DIR/uncut.csv for the
@@ -137,7 +148,7 @@ class LibareaPockets {
             return;
         }
         StringBuilder csv = new StringBuilder("pocket,side,uncutMm2,gougeMm\n");
-        for (Bench b : pockets()) {
+        for (Bench b : pockets(allowance())) {
             PocketTechnology t = b.tech();
             Geometry wall = RegionPocketTest.region(b.contours());
             Geometry reachable = wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32);
