@@ -39,7 +39,9 @@ import org.fresa.model.ToolpathSection;
  * finishing offset (so the tool never touches a wall or island) and is no longer than 2 D or than
  * the ramp that a retract would need to enter the next loop ({@link #linkLimitMm}), or when the
  * tool's disc along it stays in material this layer has already cut or the next loop cuts
- * (whatever its length; {@link Coverage#clearedAlong}), otherwise a
+ * (whatever its length; {@link Coverage#clearedAlong}), or, when an island's offset cuts the
+ * straight link off, two straight moves by one corner beside a finishing loop ({@link #detour}),
+ * otherwise a
  * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
  * vertical plunge into material unless a centre-cutting tool is asked to).
  */
@@ -473,9 +475,13 @@ public final class RegionPocket {
                 Contour loop = cut.loop();
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
+                double limit = linkLimitMm(t, entry, above - z);
+                Vec2 via = null;
                 if (cursor != null
-                        && (feedLink(cursor, s, finishing, linkLimitMm(t, entry, above - z))
-                                || cleared.clearedAlong(cursor, s, loop.curves()))) {
+                        && (feedLink(cursor, s, finishing, limit) || cleared.clearedAlong(cursor, s, loop.curves()))) {
+                    moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                } else if (cursor != null && (via = detour(cursor, s, finishing, limit, t.radiusMm())) != null) {
+                    moves.add(new Move.Linear(at(via, z), t.feedMmPerMin()));
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
@@ -595,6 +601,41 @@ public final class RegionPocket {
             return shortLink;
         }
         return Math.max(shortLink, descentMm / Math.tan(Math.toRadians(entry.angleDeg())));
+    }
+
+    /**
+     * A corner for a link that a straight line cannot make inside the finishing offset (an
+     * island's offset in the way): the point beside the middle of an element of a finishing loop,
+     * a little into the region, from which both legs stay inside and which makes the shortest way
+     * no longer than limitMm; null when there is none.
+     */
+    static Vec2 detour(Vec2 p, Vec2 q, Level finishing, double limitMm, double radiusMm) {
+        if (p.distance(q) > limitMm) {
+            return null;
+        }
+        Vec2 best = null;
+        double bestLen = limitMm;
+        for (Contour c : finishing.loops()) {
+            for (Curve2 k : c.curves()) {
+                if (k.length() < 1e-6) {
+                    continue;
+                }
+                Vec2 mid = k.pointAt(0.5);
+                // the region lies on the left of every finishing loop (faces CCW, holes CW)
+                Vec2 left = k instanceof Arc2 a
+                        ? (a.ccw() ? a.center().minus(mid) : mid.minus(a.center())).normalized()
+                        : k.end().minus(k.start()).normalized().leftNormal();
+                for (double away : new double[] {0.05 * radiusMm, 0.25 * radiusMm, radiusMm}) {
+                    Vec2 w = mid.plus(left.times(away));
+                    double len = p.distance(w) + w.distance(q);
+                    if (len < bestLen && feedLink(p, w, finishing, limitMm) && feedLink(w, q, finishing, limitMm)) {
+                        best = w;
+                        bestLen = len;
+                    }
+                }
+            }
+        }
+        return best;
     }
 
     /**
