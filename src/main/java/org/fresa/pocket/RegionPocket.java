@@ -23,21 +23,25 @@ import org.fresa.model.ToolpathSection;
  * <p>No uncut material, by construction, and checked. Let delta(p) be the distance of p from the region's
  * boundary; the pass at offset d runs on {delta = d} and clears every point with
  * d &lt;= delta &lt;= d + R. So a step s &lt;= R between consecutive offsets leaves nothing; a
- * larger step (up to the nominal stepover) is taken only when the next offset has the same
- * topology (each face has one successor with the same number of holes: no neck is pinched and no
- * sub-area vanishes within the step) and no corner of the next offset is sharper than the
- * thesis's rule allows: s &lt;= R (1 + sin(alpha / 2)) for its smallest interior corner angle
- * alpha (with a 3 % margin for curved fronts). Otherwise the step is cut to 0.98 R. The rule
- * misses a sliver where the last pass round an island meets a sharp corner of the outer passes
- * (the step there grows beyond R), so the plan's coverage is checked on a grid
- * ({@link Coverage}) and each patch left gets a clean-up spur ({@link #cleanedUp}).
+ * larger step (up to the nominal stepover) is taken only when no corner of the next offset is
+ * sharper than the thesis's rule allows: s &lt;= R (1 + sin(alpha / 2)) for its smallest interior
+ * corner angle alpha (with a 3 % margin for curved fronts), and cut to no less than 0.98 R. The
+ * rule misses a sliver where the last pass round an island meets a sharp corner of the outer
+ * passes (the step there grows beyond R), and where the offsets change topology within a step (a
+ * neck pinched, a sub-area vanishing), so the plan's coverage is checked on a grid
+ * ({@link Coverage}) and each patch left gets a clean-up spur ({@link #cleanedUp}). (A step cut
+ * to 0.98 R at every change of topology cost a whole pass per change and 2 % of the machining
+ * time on the libarea bench's island pockets, for slivers the clean-up clears anyway.)
  *
  * <p>Order: the offsets form a tree of faces (a face of one offset lies in exactly one face of
  * the previous one). Each face's subtree is cut before the face itself (inside out), each face's
- * loops nearest first; a link between loops is a straight feed move when it is short (&lt;= 2 D)
- * and stays inside the finishing offset (so the tool never touches a wall or island), or when the
+ * loops nearest first; a link between loops is a straight feed move when it stays inside the
+ * finishing offset (so the tool never touches a wall or island) and is no longer than 2 D or than
+ * the ramp that a retract would need to enter the next loop ({@link #linkLimitMm}), or when the
  * tool's disc along it stays in material this layer has already cut or the next loop cuts
- * (whatever its length; {@link Coverage#clearedAlong}), otherwise a
+ * (whatever its length; {@link Coverage#clearedAlong}), or, when an island's offset cuts the
+ * straight link off, two straight moves by one corner beside a finishing loop ({@link #detour}),
+ * otherwise a
  * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
  * vertical plunge into material unless a centre-cutting tool is asked to).
  */
@@ -119,6 +123,13 @@ public final class RegionPocket {
         }
         List<Cut> directed = new ArrayList<>();
         for (Cut c : order) {
+            if (cleanUp && c.level() > 0 && c.loop().length() < tech.toolDiameterMm()) {
+                // a loop shorter than the tool's diameter encloses a face a fraction of the tool's
+                // disc wide, which the loop round it sweeps nearly all of; entered on its own it
+                // takes a ramp of hundreds of rounds (a block per element each): the coverage
+                // check below clears what it alone would have cut by a spur from another loop
+                continue;
+            }
             directed.add(new Cut(c.level(), halved(climb ? c.loop() : c.loop().reversed())));
         }
         if (cleanUp) {
@@ -248,7 +259,7 @@ public final class RegionPocket {
             List<Contour> next = RegionOffsetter.inward(boundary, d + s, TOL);
             for (int k = 0; k < 6 && s > safeStep; k++) {
                 double limit;
-                if (next.isEmpty() || !sameTopology(prev, next)) {
+                if (next.isEmpty()) {
                     limit = safeStep;
                 } else {
                     double alpha = minCornerAngleRad(next);
@@ -291,26 +302,6 @@ public final class RegionPocket {
             }
         }
         return min;
-    }
-
-    /** Whether each face of next has its own face in prev and the hole count is kept. */
-    static boolean sameTopology(List<Contour> prev, List<Contour> next) {
-        List<Contour> prevFaces = prev.stream().filter(Contour::isCcw).toList();
-        List<Contour> nextFaces = next.stream().filter(Contour::isCcw).toList();
-        long prevHoles = prev.size() - prevFaces.size();
-        long nextHoles = next.size() - nextFaces.size();
-        if (prevFaces.size() != nextFaces.size() || prevHoles != nextHoles) {
-            return false;
-        }
-        boolean[] taken = new boolean[prevFaces.size()];
-        for (Contour f : nextFaces) {
-            int p = containing(prevFaces, RegionOffsetter.probe(f));
-            if (p < 0 || taken[p]) {
-                return false;
-            }
-            taken[p] = true;
-        }
-        return true;
     }
 
     private static int containing(List<Contour> faces, Vec2 p) {
@@ -484,20 +475,28 @@ public final class RegionPocket {
                 Contour loop = cut.loop();
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
+                double limit = linkLimitMm(t, entry, above - z);
+                Vec2 via = null;
                 if (cursor != null
-                        && (feedLink(cursor, s, finishing, t.toolDiameterMm())
-                                || cleared.clearedAlong(cursor, s, loop.curves()))) {
+                        && (feedLink(cursor, s, finishing, limit) || cleared.clearedAlong(cursor, s, loop.curves()))) {
+                    moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                } else if (cursor != null && (via = detour(cursor, s, finishing, limit, t.radiusMm())) != null) {
+                    moves.add(new Move.Linear(at(via, z), t.feedMmPerMin()));
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
-                    moves.add(new Move.Rapid(at(s, safe)));
+                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE
+                            ? List.of()
+                            : rampPath(loop, above - z, entry.angleDeg());
+                    Vec2 from = down.isEmpty() ? s : down.get(0).start();
+                    moves.add(new Move.Rapid(at(from, safe)));
                     // down at rapid to just above the floor cleared at the layer above, then no straight feed down
-                    moves.add(new Move.Rapid(at(s, above)));
-                    if (entry.kind() == EntryRule.Kind.PLUNGE) {
+                    moves.add(new Move.Rapid(at(from, above)));
+                    if (down.isEmpty()) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
-                        ramp(moves, loop, above, z, t.feedMmPerMin(), entry.angleDeg());
+                        ramp(moves, down, above, z, t.feedMmPerMin());
                     }
                     if (moves.size() > PocketTechnology.MAX_MOVES) {
                         throw new ToolTooLargeException("the program would have more than " + PocketTechnology.MAX_MOVES
@@ -517,11 +516,17 @@ public final class RegionPocket {
         return new Toolpath(List.of(section));
     }
 
-    /** Down from top to z along the loop, as many times round as a ramp no steeper than angleDeg needs. */
-    private static void ramp(PocketMoves moves, Contour loop, double top, double z, double feed, double angleDeg)
-            throws ToolTooLargeException {
+    /**
+     * The way down onto a loop: the last stretch of the loop before its start, as long as a ramp
+     * no steeper than angleDeg needs to descend descentMm (1 % longer, so that rounding the
+     * program's Z to the micrometre never makes it steeper), round the loop as many times as that
+     * takes. It ends at the loop's start, where the loop is then cut at depth: no more feed than
+     * the descent needs (whole rounds of a long loop fed up to twice that).
+     */
+    static List<Curve2> rampPath(Contour loop, double descentMm, double angleDeg) throws ToolTooLargeException {
         double len = loop.length();
-        double need = Math.ceil((top - z) / (len * Math.tan(Math.toRadians(angleDeg))) - 1e-9);
+        double want = 1.01 * descentMm / Math.tan(Math.toRadians(angleDeg));
+        double need = Math.ceil(want / len - 1e-9);
         if (!(len >= 1e-3) || !(need <= Entries.MAX_STEPS)) {
             throw new ToolTooLargeException(String.format(
                     java.util.Locale.ROOT,
@@ -534,15 +539,44 @@ public final class RegionPocket {
                     angleDeg));
         }
         int rounds = Math.max(1, (int) need);
-        double total = rounds * len;
-        double done = 0;
-        for (int k = 0; k < rounds; k++) {
-            for (Curve2 c : loop.curves()) {
-                double z0 = top - (top - z) * done / total;
-                done += c.length();
-                double z1 = top - (top - z) * done / total;
-                emit(moves, c, z0, z1, feed);
+        // where on the loop (mm from its start) the ramp begins
+        double skip = Math.max(0, rounds * len - want);
+        List<Curve2> out = new ArrayList<>();
+        double at = 0;
+        for (Curve2 c : loop.curves()) {
+            double l = c.length();
+            if (at + l <= skip + 1e-9) {
+                at += l;
+                continue;
             }
+            if (at < skip) {
+                Vec2 p = c.pointAt((skip - at) / l);
+                if (p.distance(c.end()) >= PocketMoves.RESOLUTION_MM) {
+                    out.add(piece(c, p, c.end()));
+                }
+            } else {
+                out.add(c);
+            }
+            at += l;
+        }
+        for (int k = 1; k < rounds; k++) {
+            out.addAll(loop.curves());
+        }
+        if (out.isEmpty()) {
+            out.addAll(loop.curves());
+        }
+        return out;
+    }
+
+    /** Down from top to z along the ramp's curves, evenly by length. */
+    private static void ramp(PocketMoves moves, List<Curve2> down, double top, double z, double feed) {
+        double total = down.stream().mapToDouble(Curve2::length).sum();
+        double done = 0;
+        for (Curve2 c : down) {
+            double z0 = top - (top - z) * done / total;
+            done += c.length();
+            double z1 = top - (top - z) * done / total;
+            emit(moves, c, z0, z1, feed);
         }
     }
 
@@ -554,9 +588,62 @@ public final class RegionPocket {
         }
     }
 
-    /** A straight feed link is safe when short and inside the finishing offset's region. */
-    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double diameter) {
-        if (p.distance(q) > 2 * diameter) {
+    /**
+     * The longest straight link at depth through material not yet cut (mm). The link slots at the
+     * layer's depth, as the first loop after an entry does all round; the other way to the next
+     * loop is a retract, rapids and a ramp down along it that feeds (top - z) / tan(entry angle)
+     * through the same material (76 mm for 4 mm at 3 deg): a link no longer than that ramp takes
+     * less feed and no lift. At least 2 D; with plunge entries (no ramp to save) just 2 D.
+     */
+    static double linkLimitMm(PocketTechnology t, EntryRule entry, double descentMm) {
+        double shortLink = 2 * t.toolDiameterMm();
+        if (entry.kind() == EntryRule.Kind.PLUNGE) {
+            return shortLink;
+        }
+        return Math.max(shortLink, descentMm / Math.tan(Math.toRadians(entry.angleDeg())));
+    }
+
+    /**
+     * A corner for a link that a straight line cannot make inside the finishing offset (an
+     * island's offset in the way): the point beside the middle of an element of a finishing loop,
+     * a little into the region, from which both legs stay inside and which makes the shortest way
+     * no longer than limitMm; null when there is none.
+     */
+    static Vec2 detour(Vec2 p, Vec2 q, Level finishing, double limitMm, double radiusMm) {
+        if (p.distance(q) > limitMm) {
+            return null;
+        }
+        Vec2 best = null;
+        double bestLen = limitMm;
+        for (Contour c : finishing.loops()) {
+            for (Curve2 k : c.curves()) {
+                if (k.length() < 1e-6) {
+                    continue;
+                }
+                Vec2 mid = k.pointAt(0.5);
+                // the region lies on the left of every finishing loop (faces CCW, holes CW)
+                Vec2 left = k instanceof Arc2 a
+                        ? (a.ccw() ? a.center().minus(mid) : mid.minus(a.center())).normalized()
+                        : k.end().minus(k.start()).normalized().leftNormal();
+                for (double away : new double[] {0.05 * radiusMm, 0.25 * radiusMm, radiusMm}) {
+                    Vec2 w = mid.plus(left.times(away));
+                    double len = p.distance(w) + w.distance(q);
+                    if (len < bestLen && feedLink(p, w, finishing, limitMm) && feedLink(w, q, finishing, limitMm)) {
+                        best = w;
+                        bestLen = len;
+                    }
+                }
+            }
+        }
+        return best;
+    }
+
+    /**
+     * A straight feed link is safe when no longer than limitMm and inside the finishing offset's
+     * region: the tool's disc along it touches no wall and no island.
+     */
+    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm) {
+        if (p.distance(q) > limitMm) {
             return false;
         }
         if (p.distance(q) < 1e-9) {
