@@ -447,7 +447,7 @@ public final class RegionPocket {
         return new Contour(out);
     }
 
-    private static Curve2 piece(Curve2 c, Vec2 a, Vec2 b) {
+    static Curve2 piece(Curve2 c, Vec2 a, Vec2 b) {
         if (c instanceof Arc2 arc) {
             return new Arc2(arc.center(), a, b, arc.ccw());
         }
@@ -455,7 +455,7 @@ public final class RegionPocket {
     }
 
     /** Full circles as two half circles, so every arc move has distinct ends. */
-    private static Contour halved(Contour c) {
+    static Contour halved(Contour c) {
         List<Curve2> out = new ArrayList<>();
         for (Curve2 k : c.curves()) {
             if (k instanceof Arc2 a && a.isFullCircle()) {
@@ -546,7 +546,7 @@ public final class RegionPocket {
         }
     }
 
-    private static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
+    static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
         if (c instanceof Arc2 a && a.radius() >= PocketMoves.RESOLUTION_MM && !PocketMoves.same(a.start(), a.end())) {
             moves.add(new Move.Circular(at(a.end(), z1), at(a.center(), z0), Z, a.ccw(), 0, feed));
         } else {
@@ -555,7 +555,7 @@ public final class RegionPocket {
     }
 
     /** A straight feed link is safe when short and inside the finishing offset's region. */
-    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double diameter) {
+    static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double diameter) {
         if (p.distance(q) > 2 * diameter) {
             return false;
         }
