@@ -31,6 +31,7 @@ import org.fresa.pocket.Recognition;
 import org.fresa.pocket.RegionOffsetter;
 import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
+import org.fresa.pocket.ZigzagPocket;
 import org.fresa.pocket.compat.Sinumerik7MPost;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
@@ -289,6 +290,9 @@ public final class PocketService {
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
+        if (s.strategy().zigzag()) {
+            return runZigzag(s, outFile);
+        }
         if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
             if (contours.size() > 1) {
@@ -434,6 +438,84 @@ public final class PocketService {
                 "pass_offsets",
                 plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());
         summary.put("depth_passes", tech.depthPasses());
+        summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
+        summary.put("out", outFile.toString());
+        return new TaskOutcome(0, List.of(), summary, List.of(outFile));
+    }
+
+    /**
+     * The zigzag plan of the settings ({@link ZigzagPocket}): the outer contour and its islands
+     * from a drawing or {@code .contour} file, or the one loop of a {@code .dad} file or of the
+     * elements the job holds.
+     *
+     * @throws CamInputException for a 7M post (its blocks are the thesis's offset passes), bad
+     *     technology or a bad contour
+     */
+    public static ZigzagPocket.Plan zigzagPlan(PocketSettings s)
+            throws CamInputException, IOException, ToolTooLargeException {
+        if (s.post().sevenM()) {
+            throw new CamInputException(
+                    "--strategy",
+                    "the thesis's 7M posts write its offset passes only: zigzag needs one of "
+                            + String.join(", ", NcPosts.names()));
+        }
+        List<Contour> contours = zigzagContours(s);
+        return ZigzagPocket.plan(
+                contours.get(0),
+                contours.subList(1, contours.size()),
+                technology(s),
+                s.strategy().angleDeg(),
+                s.climb(),
+                entryRule(s));
+    }
+
+    private static List<Contour> zigzagContours(PocketSettings s) throws CamInputException, IOException {
+        if (mayHaveIslands(s)) {
+            return readContours(s.contour());
+        }
+        PocketProfile profile = readContour(s);
+        try {
+            return List.of(profile.outline());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(s.contour().toString(), e.getMessage());
+        }
+    }
+
+    /** A pocket cleared by zigzag lines, then its contour passes: G-code posts only. */
+    static TaskOutcome runZigzag(PocketSettings s, Path outFile) throws CamInputException, IOException {
+        ZigzagPocket.Plan plan;
+        try {
+            plan = zigzagPlan(s);
+        } catch (ToolTooLargeException e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
+        }
+        NcPost p = s.post().gcode().orElseThrow().ncPost();
+        StringWriter w = new StringWriter();
+        p.write(plan.toolpath(), s.contour().getFileName().toString(), w);
+        String nc = w.toString();
+        try {
+            ProgramChecks.require(
+                    outFile.getFileName().toString(),
+                    nc,
+                    ProgramChecks.dialect(s.post().word()),
+                    ProgramChecks.pocket(s));
+        } catch (ProgramChecks.RefusedProgram e) {
+            return new TaskOutcome(
+                    1,
+                    List.of(e.getMessage()),
+                    Map.of("out", outFile.toString(), "refused", e.failure().message()),
+                    List.of());
+        }
+        AtomicFiles.writeString(outFile, nc);
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("contour", s.contour().toString());
+        summary.put("post", s.post().word());
+        summary.put("strategy", s.strategy().kind().word());
+        summary.put("angle_deg", s.strategy().angleDeg());
+        summary.put("direction", s.direction().word());
+        summary.put("lines", plan.lines());
+        summary.put("passes", plan.order().size());
+        summary.put("depth_passes", technology(s).depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, List.of(), summary, List.of(outFile));

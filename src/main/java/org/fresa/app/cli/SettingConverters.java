@@ -17,6 +17,7 @@ final class SettingConverters {
             SettingRanges.Pocket.POST,
             SettingRanges.Pocket.DIRECTION,
             SettingRanges.Pocket.ENTRY,
+            SettingRanges.Pocket.STRATEGY,
             SettingRanges.Cutting.PROCESS,
             SettingRanges.Cutting.LEAD,
             SettingRanges.Cutting.UNITS,
