@@ -25,11 +25,13 @@ import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.PassPlanner;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketProfile;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.Recognition;
 import org.fresa.pocket.RegionOffsetter;
 import org.fresa.pocket.RegionPocket;
+import org.fresa.pocket.StrategyPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.pocket.ZigzagPocket;
 import org.fresa.pocket.compat.Sinumerik7MPost;
@@ -290,8 +292,8 @@ public final class PocketService {
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
-        if (s.strategy().zigzag()) {
-            return runZigzag(s, outFile);
+        if (s.strategy().zigzag() || !s.strategy().asThesis()) {
+            return runStrategy(s, outFile);
         }
         if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
@@ -444,32 +446,53 @@ public final class PocketService {
     }
 
     /**
-     * The zigzag plan of the settings ({@link ZigzagPocket}): the outer contour and its islands
-     * from a drawing or {@code .contour} file, or the one loop of a {@code .dad} file or of the
-     * elements the job holds.
+     * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines
+     * ({@link ZigzagPocket}), or offset passes with stock left or from the outside in
+     * ({@link RegionPocket}). The contour: the outer one and its islands from a drawing or
+     * {@code .contour} file, or the one loop of a {@code .dad} file or of the elements the job
+     * holds. Stock to leave: the region offset inwards by it and the floor raised by it.
      *
-     * @throws CamInputException for a 7M post (its blocks are the thesis's offset passes), bad
-     *     technology or a bad contour
+     * @throws CamInputException for a 7M post (its blocks are the thesis's passes), stock to leave
+     *     as deep as the pocket, bad technology or a bad contour
      */
-    public static ZigzagPocket.Plan zigzagPlan(PocketSettings s)
+    public static Toolpath strategyToolpath(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
+        PocketStrategy st = s.strategy();
         if (s.post().sevenM()) {
+            String option = st.zigzag() ? "--strategy" : st.stockToLeaveMm() > 0 ? "--stock-to-leave" : "--order";
+            String what = st.zigzag() ? "zigzag" : st.stockToLeaveMm() > 0 ? "stock to leave" : "passes outside in";
             throw new CamInputException(
-                    "--strategy",
-                    "the thesis's 7M posts write its offset passes only: zigzag needs one of "
+                    option,
+                    "the thesis's 7M posts write its own offset passes only: " + what + " needs one of "
                             + String.join(", ", NcPosts.names()));
         }
-        List<Contour> contours = zigzagContours(s);
-        return ZigzagPocket.plan(
-                contours.get(0),
-                contours.subList(1, contours.size()),
-                technology(s),
-                s.strategy().angleDeg(),
-                s.climb(),
-                entryRule(s));
+        List<Contour> contours = strategyContours(s);
+        try {
+            return StrategyPocket.toolpath(
+                    contours.get(0), contours.subList(1, contours.size()), technology(s), st, s.climb(), entryRule(s));
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("--stock-to-leave", e.getMessage());
+        }
     }
 
-    private static List<Contour> zigzagContours(PocketSettings s) throws CamInputException, IOException {
+    private static PocketTechnology technology(PocketSettings s, double floorMm) throws CamInputException {
+        try {
+            return new PocketTechnology(
+                    s.toolDiameterMm(),
+                    s.cutFraction(),
+                    s.finishFraction(),
+                    s.zTopMm(),
+                    floorMm,
+                    s.maxDepthPerPassMm(),
+                    s.spindleRpm(),
+                    s.feedMmPerMin(),
+                    s.finishFeedMmPerMin());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("technology", e.getMessage());
+        }
+    }
+
+    private static List<Contour> strategyContours(PocketSettings s) throws CamInputException, IOException {
         if (mayHaveIslands(s)) {
             return readContours(s.contour());
         }
@@ -481,17 +504,17 @@ public final class PocketService {
         }
     }
 
-    /** A pocket cleared by zigzag lines, then its contour passes: G-code posts only. */
-    static TaskOutcome runZigzag(PocketSettings s, Path outFile) throws CamInputException, IOException {
-        ZigzagPocket.Plan plan;
+    /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
+    static TaskOutcome runStrategy(PocketSettings s, Path outFile) throws CamInputException, IOException {
+        Toolpath path;
         try {
-            plan = zigzagPlan(s);
+            path = strategyToolpath(s);
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         NcPost p = s.post().gcode().orElseThrow().ncPost();
         StringWriter w = new StringWriter();
-        p.write(plan.toolpath(), s.contour().getFileName().toString(), w);
+        p.write(path, s.contour().getFileName().toString(), w);
         String nc = w.toString();
         try {
             ProgramChecks.require(
@@ -507,16 +530,22 @@ public final class PocketService {
                     List.of());
         }
         AtomicFiles.writeString(outFile, nc);
+        PocketStrategy st = s.strategy();
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("contour", s.contour().toString());
         summary.put("post", s.post().word());
-        summary.put("strategy", s.strategy().kind().word());
-        summary.put("angle_deg", s.strategy().angleDeg());
+        summary.put("strategy", st.kind().word());
+        if (st.zigzag()) {
+            summary.put("angle_deg", st.angleDeg());
+        } else {
+            summary.put("order", st.order().word());
+        }
+        summary.put("stock_to_leave_mm", st.stockToLeaveMm());
         summary.put("direction", s.direction().word());
-        summary.put("lines", plan.lines());
-        summary.put("passes", plan.order().size());
-        summary.put("depth_passes", technology(s).depthPasses());
-        summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
+        summary.put(
+                "depth_passes",
+                technology(s, s.zBottomMm() + st.stockToLeaveMm()).depthPasses());
+        summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, List.of(), summary, List.of(outFile));
     }

@@ -106,7 +106,26 @@ public final class RegionPocket {
             EntryRule entry,
             boolean cleanUp)
             throws ToolTooLargeException {
-        List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
+        return plan(RegionOffsetter.oriented(outer, islands), tech, climb, entry, cleanUp, false);
+    }
+
+    /**
+     * Plans the pocket of a region given by its boundary.
+     *
+     * @param boundary the region's loops with the region on their left ({@link RegionOffsetter#oriented}),
+     *     any number of faces
+     * @param outsideIn the roughing passes from the outermost inwards, the finishing pass last (the
+     *     pre-finish pass first); false: inside out
+     * @throws ToolTooLargeException as {@link #plan(Contour, List, PocketTechnology, boolean, EntryRule)}
+     */
+    public static Plan plan(
+            List<Contour> boundary,
+            PocketTechnology tech,
+            boolean climb,
+            EntryRule entry,
+            boolean cleanUp,
+            boolean outsideIn)
+            throws ToolTooLargeException {
         List<Level> levels = levels(boundary, tech);
         List<Face> roots = faces(levels);
         List<Cut> order = new ArrayList<>();
@@ -115,7 +134,11 @@ public final class RegionPocket {
         while (!pending.isEmpty()) {
             Face f = nearestFace(pending, cursor[0]);
             pending.remove(f);
-            cutSubtree(f, order, cursor);
+            if (outsideIn) {
+                cutOutsideIn(f, order, cursor);
+            } else {
+                cutSubtree(f, order, cursor);
+            }
         }
         List<Cut> directed = new ArrayList<>();
         for (Cut c : order) {
@@ -367,6 +390,46 @@ public final class RegionPocket {
             pending.remove(c);
             cutSubtree(c, order, cursor);
         }
+        List<Contour> loops = new ArrayList<>();
+        loops.add(f.outer());
+        loops.addAll(f.holes());
+        while (!loops.isEmpty()) {
+            int best = 0;
+            double bestD = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < loops.size() && cursor[0] != null; i++) {
+                double dd = loops.get(i).distanceTo(cursor[0]);
+                if (dd < bestD) {
+                    bestD = dd;
+                    best = i;
+                }
+            }
+            Contour l = loops.remove(best);
+            Contour started = cursor[0] == null ? l : startedNear(l, cursor[0]);
+            order.add(new Cut(f.level(), started));
+            cursor[0] = started.get(0).start();
+        }
+    }
+
+    /**
+     * A finishing face's subtree from the outside in: each roughing face's loops before its
+     * children's (the nearest child first), the finishing face's own loops last.
+     */
+    private static void cutOutsideIn(Face f, List<Cut> order, Vec2[] cursor) {
+        if (f.level() > 0) {
+            loopsNearestFirst(f, order, cursor);
+        }
+        List<Face> pending = new ArrayList<>(f.children());
+        while (!pending.isEmpty()) {
+            Face c = nearestFace(pending, cursor[0]);
+            pending.remove(c);
+            cutOutsideIn(c, order, cursor);
+        }
+        if (f.level() == 0) {
+            loopsNearestFirst(f, order, cursor);
+        }
+    }
+
+    private static void loopsNearestFirst(Face f, List<Cut> order, Vec2[] cursor) {
         List<Contour> loops = new ArrayList<>();
         loops.add(f.outer());
         loops.addAll(f.holes());

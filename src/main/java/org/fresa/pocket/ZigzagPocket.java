@@ -113,7 +113,19 @@ public final class ZigzagPocket {
             boolean climb,
             EntryRule entry)
             throws ToolTooLargeException {
-        List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
+        return plan(RegionOffsetter.oriented(outer, islands), tech, angleDeg, climb, entry);
+    }
+
+    /**
+     * Plans the pocket of a region given by its boundary.
+     *
+     * @param boundary the region's loops with the region on their left ({@link RegionOffsetter#oriented}),
+     *     any number of faces
+     * @throws ToolTooLargeException as {@link #plan(Contour, List, PocketTechnology, double, boolean, EntryRule)}
+     */
+    public static Plan plan(
+            List<Contour> boundary, PocketTechnology tech, double angleDeg, boolean climb, EntryRule entry)
+            throws ToolTooLargeException {
         double r = tech.radiusMm();
         double a = tech.finishFraction() * tech.toolDiameterMm();
         List<Contour> finishing = RegionOffsetter.inward(boundary, r, TOL);

@@ -73,7 +73,6 @@ class ZigzagServiceTest {
             TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
             assertEquals(0, o.exitStatus(), file + " " + post + ": " + o.problems());
             assertEquals("zigzag", o.summary().get("strategy"));
-            assertTrue((int) o.summary().get("lines") > 0, file);
             if (post.equals("apt")) {
                 continue;
             }

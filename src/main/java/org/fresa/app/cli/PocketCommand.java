@@ -17,7 +17,8 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
- * [--strategy offset|zigzag] [--angle DEG] [--thesis-name NAME] [--json]}.
+ * [--strategy offset|zigzag] [--angle DEG] [--stock-to-leave MM] [--order inside-out|outside-in]
+ * [--thesis-name NAME] [--json]}.
  */
 @Command(
         name = "pocket",
@@ -112,6 +113,20 @@ final class PocketCommand implements Callable<Integer> {
     double angleDeg = DEFAULTS.strategy().angleDeg();
 
     @Option(
+            names = "--stock-to-leave",
+            paramLabel = "MM",
+            description = "material left on the walls, islands and floor for a later finish (mm, 0 to 10; G-code and"
+                    + " APT posts); default ${DEFAULT-VALUE}")
+    double stockToLeaveMm = DEFAULTS.strategy().stockToLeaveMm();
+
+    @Option(
+            names = "--order",
+            paramLabel = "inside-out|outside-in",
+            description = "order of the offset passes (the finishing pass last either way; outside-in on G-code and"
+                    + " APT posts); default ${DEFAULT-VALUE}")
+    PocketStrategy.Order order = DEFAULTS.strategy().order();
+
+    @Option(
             names = "--report",
             paramLabel = "FILE",
             description = "also write the thesis's technology printout (GOTA.BAS's LPRINT block) to FILE")
@@ -146,7 +161,11 @@ final class PocketCommand implements Callable<Integer> {
                             entry,
                             Pocket.ENTRY_ANGLE.check(entryAngleDeg),
                             centreCutting)
-                    .withStrategy(new PocketStrategy(strategy, Pocket.ANGLE.check(angleDeg)));
+                    .withStrategy(new PocketStrategy(
+                            strategy,
+                            Pocket.ANGLE.check(angleDeg),
+                            Pocket.STOCK_TO_LEAVE.check(stockToLeaveMm),
+                            order));
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {

@@ -18,6 +18,7 @@ final class SettingConverters {
             SettingRanges.Pocket.DIRECTION,
             SettingRanges.Pocket.ENTRY,
             SettingRanges.Pocket.STRATEGY,
+            SettingRanges.Pocket.ORDER,
             SettingRanges.Cutting.PROCESS,
             SettingRanges.Cutting.LEAD,
             SettingRanges.Cutting.UNITS,

@@ -98,6 +98,8 @@ class BoundedOptionsTest {
             --tool-diameter, Infinity, from 0.01 to 1000 mm
             --angle,       200,    from -180 to 180 deg
             --angle,       NaN,    from -180 to 180 deg
+            --stock-to-leave, 11,  from 0 to 10 mm
+            --stock-to-leave, -1,  from 0 to 10 mm
             """)
     void pocketOptionsOutOfTheirRangeAreRefused(String option, String value, String range) throws Exception {
         refused(run(pocket(option, value)), option, range, "found");
@@ -107,6 +109,7 @@ class BoundedOptionsTest {
     @ValueSource(strings = {"7m", "7m-compat"})
     void zigzagOnTheThesisPostsIsRefused(String post) throws Exception {
         refused(run(pocket("--strategy", "zigzag", "--post", post)), "--strategy", "zigzag needs one of linuxcnc");
+        refused(run(pocket("--order", "outside-in", "--post", post)), "--order", "needs one of linuxcnc");
     }
 
     @ParameterizedTest(name = "cut {0} 1e308")
