@@ -492,7 +492,8 @@ public final class PocketService {
         }
     }
 
-    private static List<Contour> strategyContours(PocketSettings s) throws CamInputException, IOException {
+    /** The outer contour and its islands a strategy plans ({@link #strategyToolpath}). */
+    public static List<Contour> strategyContours(PocketSettings s) throws CamInputException, IOException {
         if (mayHaveIslands(s)) {
             return readContours(s.contour());
         }
@@ -504,6 +505,16 @@ public final class PocketService {
         }
     }
 
+    /** The program text of a toolpath for a G-code or APT post. */
+    public static String toolpathProgram(Toolpath path, PocketPost post, String programName) throws IOException {
+        NcPost p = post.gcode()
+                .orElseThrow(() -> new IllegalArgumentException(post.word()))
+                .ncPost();
+        StringWriter w = new StringWriter();
+        p.write(path, programName, w);
+        return w.toString();
+    }
+
     /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
     static TaskOutcome runStrategy(PocketSettings s, Path outFile) throws CamInputException, IOException {
         Toolpath path;
@@ -512,10 +523,7 @@ public final class PocketService {
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
-        NcPost p = s.post().gcode().orElseThrow().ncPost();
-        StringWriter w = new StringWriter();
-        p.write(path, s.contour().getFileName().toString(), w);
-        String nc = w.toString();
+        String nc = toolpathProgram(path, s.post(), s.contour().getFileName().toString());
         try {
             ProgramChecks.require(
                     outFile.getFileName().toString(),
