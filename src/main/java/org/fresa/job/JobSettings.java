@@ -19,6 +19,7 @@ import org.fresa.model.Placement;
 import org.fresa.pocket.DadContour;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.CuttingPost;
 import org.fresa.post.MillingPost;
 import org.fresa.sole.PatternKind;
@@ -170,6 +171,7 @@ public final class JobSettings {
      * @param elements the contour typed in the Pocket tab's editor, held in the job itself: when
      *     present it is the contour planned, and {@code contour} only names it (the {@code .dad}
      *     file it was opened from or is saved as); empty: the contour is read from the file
+     * @param strategy how the floor is cleared: offset passes (the default) or zigzag lines at an angle
      */
     public record PocketSettings(
             Path contour,
@@ -187,7 +189,8 @@ public final class JobSettings {
             EntryRule.Kind entry,
             double entryAngleDeg,
             boolean centreCutting,
-            Optional<DadContour> elements) {
+            Optional<DadContour> elements,
+            PocketStrategy strategy) {
         /**
          * The pocket module's defaults, as {@code fresa pocket}, the Pocket tab of a new job and
          * {@code schemas/job.xsd} have them. The contour and the tool diameter have none (the
@@ -217,6 +220,45 @@ public final class JobSettings {
             Objects.requireNonNull(direction, "direction");
             Objects.requireNonNull(entry, "entry");
             Objects.requireNonNull(elements, "elements");
+            Objects.requireNonNull(strategy, "strategy");
+        }
+
+        /** Settings with today's offset passes ({@link PocketStrategy#DEFAULT}). */
+        public PocketSettings(
+                Path contour,
+                double toolDiameterMm,
+                double cutFraction,
+                double finishFraction,
+                double zTopMm,
+                double zBottomMm,
+                double maxDepthPerPassMm,
+                double spindleRpm,
+                double feedMmPerMin,
+                double finishFeedMmPerMin,
+                PocketPost post,
+                MillingDirection direction,
+                EntryRule.Kind entry,
+                double entryAngleDeg,
+                boolean centreCutting,
+                Optional<DadContour> elements) {
+            this(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    elements,
+                    PocketStrategy.DEFAULT);
         }
 
         /** Settings whose contour is read from its file. */
@@ -343,7 +385,8 @@ public final class JobSettings {
                     kind,
                     angleDeg,
                     centre,
-                    elements);
+                    elements,
+                    strategy);
         }
 
         /**
@@ -366,7 +409,8 @@ public final class JobSettings {
                     entry,
                     entryAngleDeg,
                     centreCutting,
-                    Optional.of(typed));
+                    Optional.of(typed),
+                    strategy);
         }
 
         /** The same settings with the contour read from a file (no elements held in the job). */
@@ -387,7 +431,8 @@ public final class JobSettings {
                     entry,
                     entryAngleDeg,
                     centreCutting,
-                    Optional.empty());
+                    Optional.empty(),
+                    strategy);
         }
 
         /** Whether the passes are climb-milled. */
@@ -413,7 +458,30 @@ public final class JobSettings {
                     entry,
                     entryAngleDeg,
                     centreCutting,
-                    elements);
+                    elements,
+                    strategy);
+        }
+
+        /** The same settings with another clearing strategy. */
+        public PocketSettings withStrategy(PocketStrategy s) {
+            return new PocketSettings(
+                    contour,
+                    toolDiameterMm,
+                    cutFraction,
+                    finishFraction,
+                    zTopMm,
+                    zBottomMm,
+                    maxDepthPerPassMm,
+                    spindleRpm,
+                    feedMmPerMin,
+                    finishFeedMmPerMin,
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    elements,
+                    s);
         }
     }
 

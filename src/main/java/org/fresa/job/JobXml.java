@@ -400,7 +400,12 @@ public final class JobXml {
                     Pocket.ENTRY.require(p.getEntry()),
                     Pocket.ENTRY_ANGLE.require(p.getEntryAngleDeg()),
                     p.isCentreCutting(),
-                    elements));
+                    elements,
+                    new org.fresa.pocket.PocketStrategy(
+                            Pocket.STRATEGY.require(p.getStrategy()),
+                            Pocket.ANGLE.require(p.getAngleDeg()),
+                            Pocket.STOCK_TO_LEAVE.require(p.getStockToLeaveMm()),
+                            Pocket.ORDER.require(p.getOrder()))));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -717,6 +722,20 @@ public final class JobXml {
             t.setEntry(p.entry().word());
             t.setEntryAngleDeg(p.entryAngleDeg());
             t.setCentreCutting(p.centreCutting());
+            // written only when not the default: a job saved with the defaults reads as it always has
+            org.fresa.pocket.PocketStrategy st = p.strategy();
+            if (st.kind() != org.fresa.pocket.PocketStrategy.DEFAULT.kind()) {
+                t.setStrategy(st.kind().word());
+            }
+            if (st.angleDeg() != org.fresa.pocket.PocketStrategy.DEFAULT.angleDeg()) {
+                t.setAngleDeg(st.angleDeg());
+            }
+            if (st.stockToLeaveMm() != org.fresa.pocket.PocketStrategy.DEFAULT.stockToLeaveMm()) {
+                t.setStockToLeaveMm(st.stockToLeaveMm());
+            }
+            if (st.order() != org.fresa.pocket.PocketStrategy.DEFAULT.order()) {
+                t.setOrder(st.order().word());
+            }
             p.elements().ifPresent(c -> t.setElements(pocketElements(c)));
             x.setPocket(t);
         });

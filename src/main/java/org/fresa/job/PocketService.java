@@ -27,12 +27,15 @@ import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.PassPlanner;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketProfile;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.pocket.PocketTechnology;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.Recognition;
 import org.fresa.pocket.RegionOffsetter;
 import org.fresa.pocket.RegionPocket;
+import org.fresa.pocket.StrategyPocket;
 import org.fresa.pocket.ToolTooLargeException;
+import org.fresa.pocket.ZigzagPocket;
 import org.fresa.pocket.compat.Sinumerik7MPost;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
@@ -291,6 +294,9 @@ public final class PocketService {
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
+        if (s.strategy().zigzag() || !s.strategy().asThesis()) {
+            return runStrategy(s, outFile);
+        }
         if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
             if (contours.size() > 1) {
@@ -417,6 +423,109 @@ public final class PocketService {
                 plan.levels().stream().map(RegionPocket.Level::offsetMm).toList());
         summary.put("depth_passes", tech.depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(plan.toolpath()));
+        summary.put("out", outFile.toString());
+        return new TaskOutcome(0, List.of(), summary, List.of(outFile));
+    }
+
+    /**
+     * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines
+     * ({@link ZigzagPocket}), or offset passes with stock left or from the outside in
+     * ({@link RegionPocket}). The contour: the outer one and its islands from a drawing or
+     * {@code .contour} file, or the one loop of a {@code .dad} file or of the elements the job
+     * holds. Stock to leave: the region offset inwards by it and the floor raised by it.
+     *
+     * @throws CamInputException for a 7M post (its blocks are the thesis's passes), stock to leave
+     *     as deep as the pocket, bad technology or a bad contour
+     */
+    public static Toolpath strategyToolpath(PocketSettings s)
+            throws CamInputException, IOException, ToolTooLargeException {
+        PocketStrategy st = s.strategy();
+        if (s.post().sevenM()) {
+            String option = st.zigzag() ? "--strategy" : st.stockToLeaveMm() > 0 ? "--stock-to-leave" : "--order";
+            String what = st.zigzag() ? "zigzag" : st.stockToLeaveMm() > 0 ? "stock to leave" : "passes outside in";
+            throw new CamInputException(
+                    option,
+                    "the thesis's 7M posts write its own offset passes only: " + what + " needs one of "
+                            + String.join(", ", NcPosts.names()));
+        }
+        List<Contour> contours = strategyContours(s);
+        try {
+            return StrategyPocket.toolpath(
+                    contours.get(0), contours.subList(1, contours.size()), technology(s), st, s.climb(), entryRule(s));
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("--stock-to-leave", e.getMessage());
+        }
+    }
+
+    private static PocketTechnology technology(PocketSettings s, double floorMm) throws CamInputException {
+        try {
+            return new PocketTechnology(
+                    s.toolDiameterMm(),
+                    s.cutFraction(),
+                    s.finishFraction(),
+                    s.zTopMm(),
+                    floorMm,
+                    s.maxDepthPerPassMm(),
+                    s.spindleRpm(),
+                    s.feedMmPerMin(),
+                    s.finishFeedMmPerMin());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException("technology", e.getMessage());
+        }
+    }
+
+    /** The outer contour and its islands a strategy plans ({@link #strategyToolpath}). */
+    public static List<Contour> strategyContours(PocketSettings s) throws CamInputException, IOException {
+        if (mayHaveIslands(s)) {
+            return readContours(s.contour());
+        }
+        PocketProfile profile = readContour(s);
+        try {
+            return List.of(profile.outline());
+        } catch (IllegalArgumentException e) {
+            throw new CamInputException(s.contour().toString(), e.getMessage());
+        }
+    }
+
+    /** The program text of a toolpath for a G-code or APT post. */
+    public static String toolpathProgram(Toolpath path, PocketPost post, String programName) throws IOException {
+        NcPost p = post.gcode()
+                .orElseThrow(() -> new IllegalArgumentException(post.word()))
+                .ncPost();
+        StringWriter w = new StringWriter();
+        p.write(path, programName, w);
+        return w.toString();
+    }
+
+    /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
+    static TaskOutcome runStrategy(PocketSettings s, Path outFile) throws CamInputException, IOException {
+        Toolpath path;
+        try {
+            path = strategyToolpath(s);
+        } catch (ToolTooLargeException e) {
+            return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
+        }
+        String nc = toolpathProgram(path, s.post(), s.contour().getFileName().toString());
+        Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
+        if (refused.isPresent()) {
+            return refused.get();
+        }
+        PocketStrategy st = s.strategy();
+        Map<String, Object> summary = new LinkedHashMap<>();
+        summary.put("contour", s.contour().toString());
+        summary.put("post", s.post().word());
+        summary.put("strategy", st.kind().word());
+        if (st.zigzag()) {
+            summary.put("angle_deg", st.angleDeg());
+        } else {
+            summary.put("order", st.order().word());
+        }
+        summary.put("stock_to_leave_mm", st.stockToLeaveMm());
+        summary.put("direction", s.direction().word());
+        summary.put(
+                "depth_passes",
+                technology(s, s.zBottomMm() + st.stockToLeaveMm()).depthPasses());
+        summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, List.of(), summary, List.of(outFile));
     }

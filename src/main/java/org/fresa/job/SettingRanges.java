@@ -105,6 +105,26 @@ public final class SettingRanges {
                 org.fresa.pocket.MillingDirection::word);
         public static final SettingChoice<org.fresa.pocket.EntryRule.Kind> ENTRY = SettingChoice.of(
                 "--entry", "entry", org.fresa.pocket.EntryRule.Kind.class, org.fresa.pocket.EntryRule.Kind::word);
+        public static final SettingChoice<org.fresa.pocket.PocketStrategy.Kind> STRATEGY = SettingChoice.of(
+                "--strategy",
+                "strategy",
+                org.fresa.pocket.PocketStrategy.Kind.class,
+                org.fresa.pocket.PocketStrategy.Kind::word);
+        public static final SettingChoice<org.fresa.pocket.PocketStrategy.Order> ORDER = SettingChoice.of(
+                "--order",
+                "order",
+                org.fresa.pocket.PocketStrategy.Order.class,
+                org.fresa.pocket.PocketStrategy.Order::word);
+        /** Stock left on walls and floor: a roughing allowance of up to 10 mm. */
+        public static final SettingRange STOCK_TO_LEAVE = SettingRange.of(
+                "--stock-to-leave", "stockToLeaveMm", 0, org.fresa.pocket.PocketStrategy.MAX_STOCK_TO_LEAVE_MM, "mm");
+        /** The zigzag lines' direction from +X: a half turn either way covers every direction, both senses. */
+        public static final SettingRange ANGLE = SettingRange.of(
+                "--angle",
+                "angleDeg",
+                -org.fresa.pocket.PocketStrategy.MAX_ANGLE_DEG,
+                org.fresa.pocket.PocketStrategy.MAX_ANGLE_DEG,
+                "deg");
 
         private Pocket() {}
     }

@@ -50,6 +50,47 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
     }
 
     /**
+     * The wall as lines and arcs, clockwise as the elements run (the pocket on the right), from
+     * junction to junction at t = 0; a zero-radius arc is a corner and adds nothing. Arcs are
+     * counter-clockwise where concave (k = 1), as the passes cut them. A line whose (A, B) is not
+     * of unit length (cavity 01's element 4, 1.026) is drawn where it lies, A x + B y = D.
+     */
+    public Contour outline() {
+        List<Vec2> v = vertices();
+        int n = elements.size();
+        List<Curve2> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            PocketElement e = elements.get(i);
+            Vec2 a = v.get(i);
+            Vec2 b = v.get((i + 1) % n);
+            if (a.distance(b) <= 1e-9) {
+                continue;
+            }
+            if (!e.arc() || !(e.d() > 0)) {
+                out.add(new Segment2(a, b));
+                continue;
+            }
+            // a near-tangent junction the thesis snapped may lie off the circle: the arc runs on
+            // its circle and a short line joins each such junction, as the passes are cut
+            Vec2 as = onCircle(a, e.center(), e.d());
+            Vec2 bs = onCircle(b, e.center(), e.d());
+            if (a.distance(as) > 1e-9) {
+                out.add(new Segment2(a, as));
+            }
+            out.add(new Arc2(e.center(), as, bs, e.k() == 1));
+            if (bs.distance(b) > 1e-9) {
+                out.add(new Segment2(bs, b));
+            }
+        }
+        return new Contour(out);
+    }
+
+    private static Vec2 onCircle(Vec2 p, Vec2 c, double r) {
+        double d = p.distance(c);
+        return d < 1e-12 ? p : c.plus(p.minus(c).times(r / d));
+    }
+
+    /**
      * Sets each line's k from its direction of travel between its junctions (pocket on the right),
      * as the thesis's subroutine 8470 does for lines with A >= 0, but for any sign of (A, B).
      *

@@ -110,7 +110,26 @@ public final class RegionPocket {
             EntryRule entry,
             boolean cleanUp)
             throws ToolTooLargeException {
-        List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
+        return plan(RegionOffsetter.oriented(outer, islands), tech, climb, entry, cleanUp, false);
+    }
+
+    /**
+     * Plans the pocket of a region given by its boundary.
+     *
+     * @param boundary the region's loops with the region on their left ({@link RegionOffsetter#oriented}),
+     *     any number of faces
+     * @param outsideIn the roughing passes from the outermost inwards, the finishing pass last (the
+     *     pre-finish pass first); false: inside out
+     * @throws ToolTooLargeException as {@link #plan(Contour, List, PocketTechnology, boolean, EntryRule)}
+     */
+    public static Plan plan(
+            List<Contour> boundary,
+            PocketTechnology tech,
+            boolean climb,
+            EntryRule entry,
+            boolean cleanUp,
+            boolean outsideIn)
+            throws ToolTooLargeException {
         List<Level> levels = levels(boundary, tech);
         List<Face> roots = faces(levels);
         List<Cut> order = new ArrayList<>();
@@ -119,7 +138,11 @@ public final class RegionPocket {
         while (!pending.isEmpty()) {
             Face f = nearestFace(pending, cursor[0]);
             pending.remove(f);
-            cutSubtree(f, order, cursor);
+            if (outsideIn) {
+                cutOutsideIn(f, order, cursor);
+            } else {
+                cutSubtree(f, order, cursor);
+            }
         }
         List<Cut> directed = new ArrayList<>();
         for (Cut c : order) {
@@ -378,6 +401,46 @@ public final class RegionPocket {
         }
     }
 
+    /**
+     * A finishing face's subtree from the outside in: each roughing face's loops before its
+     * children's (the nearest child first), the finishing face's own loops last.
+     */
+    private static void cutOutsideIn(Face f, List<Cut> order, Vec2[] cursor) {
+        if (f.level() > 0) {
+            loopsNearestFirst(f, order, cursor);
+        }
+        List<Face> pending = new ArrayList<>(f.children());
+        while (!pending.isEmpty()) {
+            Face c = nearestFace(pending, cursor[0]);
+            pending.remove(c);
+            cutOutsideIn(c, order, cursor);
+        }
+        if (f.level() == 0) {
+            loopsNearestFirst(f, order, cursor);
+        }
+    }
+
+    private static void loopsNearestFirst(Face f, List<Cut> order, Vec2[] cursor) {
+        List<Contour> loops = new ArrayList<>();
+        loops.add(f.outer());
+        loops.addAll(f.holes());
+        while (!loops.isEmpty()) {
+            int best = 0;
+            double bestD = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < loops.size() && cursor[0] != null; i++) {
+                double dd = loops.get(i).distanceTo(cursor[0]);
+                if (dd < bestD) {
+                    bestD = dd;
+                    best = i;
+                }
+            }
+            Contour l = loops.remove(best);
+            Contour started = cursor[0] == null ? l : startedNear(l, cursor[0]);
+            order.add(new Cut(f.level(), started));
+            cursor[0] = started.get(0).start();
+        }
+    }
+
     private static Face nearestFace(List<Face> faces, Vec2 p) {
         if (p == null) {
             return faces.get(0);
@@ -438,7 +501,7 @@ public final class RegionPocket {
         return new Contour(out);
     }
 
-    private static Curve2 piece(Curve2 c, Vec2 a, Vec2 b) {
+    static Curve2 piece(Curve2 c, Vec2 a, Vec2 b) {
         if (c instanceof Arc2 arc) {
             return new Arc2(arc.center(), a, b, arc.ccw());
         }
@@ -446,7 +509,7 @@ public final class RegionPocket {
     }
 
     /** Full circles as two half circles, so every arc move has distinct ends. */
-    private static Contour halved(Contour c) {
+    static Contour halved(Contour c) {
         List<Curve2> out = new ArrayList<>();
         for (Curve2 k : c.curves()) {
             if (k instanceof Arc2 a && a.isFullCircle()) {
@@ -580,7 +643,7 @@ public final class RegionPocket {
         }
     }
 
-    private static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
+    static void emit(PocketMoves moves, Curve2 c, double z0, double z1, double feed) {
         if (c instanceof Arc2 a && a.radius() >= PocketMoves.RESOLUTION_MM && !PocketMoves.same(a.start(), a.end())) {
             moves.add(new Move.Circular(at(a.end(), z1), at(a.center(), z0), Z, a.ccw(), 0, feed));
         } else {
@@ -642,7 +705,7 @@ public final class RegionPocket {
      * A straight feed link is safe when no longer than limitMm and inside the finishing offset's
      * region: the tool's disc along it touches no wall and no island.
      */
-    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm) {
+    static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm) {
         if (p.distance(q) > limitMm) {
             return false;
         }

@@ -49,6 +49,10 @@ final class PocketTab implements ModuleTab {
     private final JComboBox<String> entry = new JComboBox<>(PocketViewModel.ENTRIES.toArray(new String[0]));
     private final JTextField entryAngle = new JTextField(8);
     private final javax.swing.JCheckBox centreCutting = new javax.swing.JCheckBox("Centre-cutting cutter");
+    private final JComboBox<String> strategy = new JComboBox<>(PocketViewModel.STRATEGIES.toArray(new String[0]));
+    private final JTextField angle = new JTextField(8);
+    private final JTextField stockToLeave = new JTextField(8);
+    private final JComboBox<String> order = new JComboBox<>(PocketViewModel.ORDERS.toArray(new String[0]));
     private final JButton run = new JButton("Compute");
     private final JButton saveProgram = new JButton("Save program...");
     private final JLabel status = new JLabel(" ");
@@ -121,6 +125,35 @@ final class PocketTab implements ModuleTab {
         centreCutting.addActionListener(e -> fieldsChanged());
         form.add(new JLabel());
         form.add(centreCutting);
+        // the clearing strategy: offset or zigzag (G-code and APT posts), each label a keyboard mnemonic
+        JLabel sl = new JLabel("Strategy");
+        sl.setLabelFor(strategy);
+        sl.setDisplayedMnemonic('y');
+        strategy.setName(PocketViewModel.STRATEGY);
+        strategy.addActionListener(e -> fieldsChanged());
+        form.add(sl);
+        form.add(strategy);
+        JLabel gl = new JLabel(PocketViewModel.ANGLE_LABEL);
+        gl.setLabelFor(angle);
+        gl.setDisplayedMnemonic('Z');
+        angle.setName(PocketViewModel.ANGLE);
+        TextChanges.onChange(angle, this::fieldsChanged);
+        form.add(gl);
+        form.add(angle);
+        JLabel kl = new JLabel(PocketViewModel.STOCK_TO_LEAVE_LABEL);
+        kl.setLabelFor(stockToLeave);
+        kl.setDisplayedMnemonic('k');
+        stockToLeave.setName(PocketViewModel.STOCK_TO_LEAVE);
+        TextChanges.onChange(stockToLeave, this::fieldsChanged);
+        form.add(kl);
+        form.add(stockToLeave);
+        JLabel ol = new JLabel("Pass order (offset)");
+        ol.setLabelFor(order);
+        ol.setDisplayedMnemonic('r');
+        order.setName(PocketViewModel.ORDER);
+        order.addActionListener(e -> fieldsChanged());
+        form.add(ol);
+        form.add(order);
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
@@ -177,6 +210,10 @@ final class PocketTab implements ModuleTab {
             entry.setSelectedItem(model.entry());
             entryAngle.setText(model.entryAngle());
             centreCutting.setSelected(model.centreCutting());
+            strategy.setSelectedItem(model.strategy());
+            angle.setText(model.angle());
+            stockToLeave.setText(model.stockToLeave());
+            order.setSelectedItem(model.order());
         } finally {
             filling = false;
         }
@@ -340,12 +377,18 @@ final class PocketTab implements ModuleTab {
         model.setEntry((String) entry.getSelectedItem());
         model.setEntryAngle(entryAngle.getText());
         model.setCentreCutting(centreCutting.isSelected());
+        model.setStrategy((String) strategy.getSelectedItem());
+        model.setAngle(angle.getText());
+        model.setStockToLeave(stockToLeave.getText());
+        model.setOrder((String) order.getSelectedItem());
         Map<String, String> problems = model.problems();
         mark(contour, problems);
         for (JTextField f : tech) {
             mark(f, problems);
         }
         mark(entryAngle, problems);
+        mark(angle, problems);
+        mark(stockToLeave, problems);
         run.setEnabled(problems.isEmpty());
         run.setToolTipText(
                 problems.isEmpty()

@@ -22,6 +22,7 @@ import org.fresa.job.SettingRange;
 import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
+import org.fresa.model.Toolpath;
 import org.fresa.pocket.LoopState;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketElement;
@@ -109,6 +110,22 @@ public final class PocketViewModel {
     public static final String CENTRE_CUTTING = "pocket-centre-cutting";
     /** The entry field's label. */
     public static final String ENTRY_ANGLE_LABEL = "Entry angle (deg)";
+    /** The names of the strategy fields: the pattern, the zigzag angle and the stock (keys of {@link #problems()}), the order. */
+    public static final String STRATEGY = "pocket-strategy";
+
+    public static final String ANGLE = "pocket-angle";
+    public static final String STOCK_TO_LEAVE = "pocket-stock-to-leave";
+    public static final String ORDER = "pocket-order";
+    /** The strategy fields' labels. */
+    public static final String ANGLE_LABEL = "Zigzag angle (deg)";
+
+    public static final String STOCK_TO_LEAVE_LABEL = "Stock to leave (mm)";
+    /** The strategies and orders the tab offers, as the job and the command line name them. */
+    public static final List<String> STRATEGIES = org.fresa.pocket.PocketStrategy.Kind.words();
+
+    public static final List<String> ORDERS = java.util.Arrays.stream(org.fresa.pocket.PocketStrategy.Order.values())
+            .map(org.fresa.pocket.PocketStrategy.Order::word)
+            .toList();
     /** The kinds of entry the tab offers, as the job and the command line name them. */
     public static final List<String> ENTRIES = org.fresa.pocket.EntryRule.Kind.words();
     /** A new job's technology: the pocket module's defaults ({@link PocketSettings#DEFAULTS}); no contour. */
@@ -121,6 +138,11 @@ public final class PocketViewModel {
     private String entry = PocketSettings.DEFAULTS.entry().word();
     private String entryAngle = ExactDecimal.of(PocketSettings.DEFAULTS.entryAngleDeg());
     private boolean centreCutting = PocketSettings.DEFAULTS.centreCutting();
+    private String strategy = PocketSettings.DEFAULTS.strategy().kind().word();
+    private String angle = ExactDecimal.of(PocketSettings.DEFAULTS.strategy().angleDeg());
+    private String stockToLeave =
+            ExactDecimal.of(PocketSettings.DEFAULTS.strategy().stockToLeaveMm());
+    private String order = PocketSettings.DEFAULTS.strategy().order().word();
     // the contour typed in the editor, held in the job; empty: the contour file is read
     private Optional<org.fresa.pocket.DadContour> elements = Optional.empty();
 
@@ -162,6 +184,10 @@ public final class PocketViewModel {
         entry = p.entry().word();
         entryAngle = ExactDecimal.of(p.entryAngleDeg());
         centreCutting = p.centreCutting();
+        strategy = p.strategy().kind().word();
+        angle = ExactDecimal.of(p.strategy().angleDeg());
+        stockToLeave = ExactDecimal.of(p.strategy().stockToLeaveMm());
+        order = p.strategy().order().word();
     }
 
     public String contourText() {
@@ -263,6 +289,55 @@ public final class PocketViewModel {
         centreCutting = c;
     }
 
+    public String strategy() {
+        return strategy;
+    }
+
+    public void setStrategy(String w) {
+        if (!STRATEGIES.contains(w)) {
+            throw new IllegalArgumentException("unknown strategy " + w);
+        }
+        strategy = w;
+    }
+
+    public String angle() {
+        return angle;
+    }
+
+    public void setAngle(String t) {
+        angle = t.trim();
+    }
+
+    public String stockToLeave() {
+        return stockToLeave;
+    }
+
+    public void setStockToLeave(String t) {
+        stockToLeave = t.trim();
+    }
+
+    public String order() {
+        return order;
+    }
+
+    public void setOrder(String w) {
+        if (!ORDERS.contains(w)) {
+            throw new IllegalArgumentException("unknown order " + w);
+        }
+        order = w;
+    }
+
+    /** A typed number's problem against its range, as the other fields word it. */
+    private static Optional<String> numberProblem(String label, String text, org.fresa.job.SettingRange range) {
+        try {
+            double v = Double.parseDouble(text);
+            return range.contains(v) ? Optional.empty() : Optional.of(label + ": " + range.problem(v) + ".");
+        } catch (NumberFormatException e) {
+            return Optional.of(label + ": '" + text + "' is not a number"
+                    + (text.contains(",") ? " (decimals take a point: " + text.replace(',', '.') + ")." : "."));
+        }
+    }
+
     /**
      * What is wrong with the typed fields, in the planner's words, by field name ({@link #CONTOUR}
      * or one of {@link #NAMES}); empty when Compute may run.
@@ -301,6 +376,9 @@ public final class PocketViewModel {
                                     ? " (decimals take a point: " + entryAngle.replace(',', '.') + ")."
                                     : "."));
         }
+        numberProblem(ANGLE_LABEL, angle, Pocket.ANGLE).ifPresent(m -> out.put(ANGLE, m));
+        numberProblem(STOCK_TO_LEAVE_LABEL, stockToLeave, Pocket.STOCK_TO_LEAVE)
+                .ifPresent(m -> out.put(STOCK_TO_LEAVE, m));
         return out;
     }
 
@@ -318,7 +396,12 @@ public final class PocketViewModel {
                 .withEntry(
                         org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry),
                         Double.parseDouble(entryAngle),
-                        centreCutting);
+                        centreCutting)
+                .withStrategy(new org.fresa.pocket.PocketStrategy(
+                        Pocket.STRATEGY.require(strategy),
+                        Double.parseDouble(angle),
+                        Double.parseDouble(stockToLeave),
+                        Pocket.ORDER.require(order)));
         return Optional.of(elements.isPresent() ? s.withElements(s.contour(), elements.get()) : s);
     }
 
@@ -379,6 +462,30 @@ public final class PocketViewModel {
                 : checked;
         try {
             String name = settings.contour().getFileName().toString();
+            if (settings.strategy().zigzag() || !settings.strategy().asThesis()) {
+                // the program fresa pocket and Job > Run write for these settings
+                Toolpath path = PocketService.strategyToolpath(settings);
+                List<Contour> contours = PocketService.strategyContours(settings);
+                List<Curve2> walls = new ArrayList<>();
+                for (Contour c : contours) {
+                    walls.addAll(c.curves());
+                }
+                PlotScene scene = PlotScene.empty("pocket")
+                        .with(new PlotScene.Layer("contour and islands", PlotScene.Style.OUTLINE, walls))
+                        .withToolpath(path);
+                org.fresa.pocket.PocketStrategy st = settings.strategy();
+                String report = String.format(
+                        Locale.ROOT,
+                        "%s, %d island(s), stock to leave %s mm%s%n",
+                        st.zigzag() ? "zigzag at " + ExactDecimal.of(st.angleDeg()) + " deg" : "offset " + st.order(),
+                        contours.size() - 1,
+                        ExactDecimal.of(st.stockToLeaveMm()),
+                        String.format(Locale.ROOT, ", path %.1f mm", PocketToolpath.lengthMm(path)));
+                return new Outcome(
+                        Optional.of(Result.checked(
+                                scene, report, PocketService.toolpathProgram(path, settings.post(), name), checked)),
+                        Optional.empty());
+            }
             if (PocketService.mayHaveIslands(settings)) {
                 List<Contour> contours = PocketService.readContours(settings.contour());
                 if (contours.size() > 1) {
@@ -573,6 +680,7 @@ public final class PocketViewModel {
                 s.entry(),
                 s.entryAngleDeg(),
                 s.centreCutting(),
-                s.elements());
+                s.elements(),
+                s.strategy());
     }
 }

@@ -20,7 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-class NcPostsTest {
+public class NcPostsTest {
 
     private static final Path GOLDEN = Path.of("src/test/resources/org/fresa/post");
 
@@ -31,7 +31,7 @@ class NcPostsTest {
     }
 
     /** The 840D program in RS274/NGC words, so LinuxCNC can check its motions. */
-    static String siemensAsNgc(String program) {
+    public static String siemensAsNgc(String program) {
         StringBuilder sb = new StringBuilder();
         for (String line : program.split("\n")) {
             if (line.startsWith("%_N_") || line.startsWith(";$PATH")) {

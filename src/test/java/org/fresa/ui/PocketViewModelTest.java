@@ -172,4 +172,63 @@ class PocketViewModelTest {
         assertTrue(m.result().orElseThrow().refusal().isEmpty());
         assertTrue(m.saveProblem().isEmpty());
     }
+
+    @Test
+    void theStrategyFieldsAreBoundToTheJobAndTheProgramIsFresaRunsOfTheSavedJob(
+            @org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        PocketViewModel m = new PocketViewModel();
+        assertEquals("offset", m.strategy());
+        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                        6,
+                        0.6,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        org.fresa.job.PocketPost.LINUXCNC)));
+        m.setStrategy("zigzag");
+        m.setAngle("200");
+        assertEquals(
+                "Zigzag angle (deg): expected a number from -180 to 180 deg, found 200.",
+                m.problems().get(PocketViewModel.ANGLE));
+        m.setStockToLeave("0,3");
+        assertTrue(m.problems().get(PocketViewModel.STOCK_TO_LEAVE).contains("decimals take a point: 0.3"));
+        m.setAngle("30");
+        m.setStockToLeave("0.3");
+        m.setOrder("outside-in");
+        PocketSettings s = m.typedSettings().orElseThrow();
+        assertEquals(
+                new org.fresa.pocket.PocketStrategy(
+                        org.fresa.pocket.PocketStrategy.Kind.ZIGZAG,
+                        30,
+                        0.3,
+                        org.fresa.pocket.PocketStrategy.Order.OUTSIDE_IN),
+                s.strategy());
+        m.setSettings(s);
+        m.compute();
+        String tab = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
+        // the same settings saved as a job and run as fresa run runs it
+        Path file = dir.resolve("job.xml");
+        org.fresa.job.JobXml.write(
+                org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET).withPocket(s), file);
+        Path out = dir.resolve("out");
+        java.nio.file.Files.createDirectories(out);
+        org.fresa.job.TaskOutcome o = org.fresa.job.JobRunner.run(
+                org.fresa.job.JobXml.read(file),
+                new org.fresa.io.OutputFolder(out),
+                org.fresa.job.ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(java.nio.file.Files.readString(out.resolve("pocket.ngc")), tab);
+        PocketViewModel again = new PocketViewModel();
+        again.load(org.fresa.job.JobXml.read(file));
+        assertEquals("zigzag", again.strategy());
+        assertEquals("30", again.angle());
+        assertEquals("0.3", again.stockToLeave());
+        assertEquals("outside-in", again.order());
+    }
 }

@@ -8,6 +8,7 @@ import org.fresa.job.PocketService;
 import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -16,6 +17,7 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
+ * [--strategy offset|zigzag] [--angle DEG] [--stock-to-leave MM] [--order inside-out|outside-in]
  * [--thesis-name NAME] [--json]}.
  */
 @Command(
@@ -97,6 +99,34 @@ final class PocketCommand implements Callable<Integer> {
     boolean centreCutting;
 
     @Option(
+            names = "--strategy",
+            paramLabel = "offset|zigzag",
+            description = "how the floor is cleared: passes parallel to the walls (offset), or parallel lines at"
+                    + " --angle then the contour passes (zigzag, G-code and APT posts only); default ${DEFAULT-VALUE}")
+    PocketStrategy.Kind strategy = DEFAULTS.strategy().kind();
+
+    @Option(
+            names = "--angle",
+            paramLabel = "DEG",
+            description = "direction of the zigzag lines, counter-clockwise from +X (deg, -180 to 180);"
+                    + " default ${DEFAULT-VALUE}")
+    double angleDeg = DEFAULTS.strategy().angleDeg();
+
+    @Option(
+            names = "--stock-to-leave",
+            paramLabel = "MM",
+            description = "material left on the walls, islands and floor for a later finish (mm, 0 to 10; G-code and"
+                    + " APT posts); default ${DEFAULT-VALUE}")
+    double stockToLeaveMm = DEFAULTS.strategy().stockToLeaveMm();
+
+    @Option(
+            names = "--order",
+            paramLabel = "inside-out|outside-in",
+            description = "order of the offset passes (the finishing pass last either way; outside-in on G-code and"
+                    + " APT posts); default ${DEFAULT-VALUE}")
+    PocketStrategy.Order order = DEFAULTS.strategy().order();
+
+    @Option(
             names = "--report",
             paramLabel = "FILE",
             description = "also write the thesis's technology printout (GOTA.BAS's LPRINT block) to FILE")
@@ -116,21 +146,26 @@ final class PocketCommand implements Callable<Integer> {
     public Integer call() {
         return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
             PocketSettings settings = new PocketSettings(
-                    contour,
-                    Pocket.TOOL_DIAMETER.check(toolDiameterMm),
-                    Pocket.CUT.check(cutFraction),
-                    Pocket.FINISH.check(finishFraction),
-                    Pocket.Z_TOP.check(zTopMm),
-                    Pocket.Z_BOTTOM.check(zBottomMm),
-                    Pocket.MAX_DEPTH.check(maxDepthMm),
-                    Pocket.SPINDLE.check(spindleRpm),
-                    Pocket.FEED.check(feedMmPerMin),
-                    Pocket.FINISH_FEED.check(finishFeedMmPerMin),
-                    post,
-                    direction,
-                    entry,
-                    Pocket.ENTRY_ANGLE.check(entryAngleDeg),
-                    centreCutting);
+                            contour,
+                            Pocket.TOOL_DIAMETER.check(toolDiameterMm),
+                            Pocket.CUT.check(cutFraction),
+                            Pocket.FINISH.check(finishFraction),
+                            Pocket.Z_TOP.check(zTopMm),
+                            Pocket.Z_BOTTOM.check(zBottomMm),
+                            Pocket.MAX_DEPTH.check(maxDepthMm),
+                            Pocket.SPINDLE.check(spindleRpm),
+                            Pocket.FEED.check(feedMmPerMin),
+                            Pocket.FINISH_FEED.check(finishFeedMmPerMin),
+                            post,
+                            direction,
+                            entry,
+                            Pocket.ENTRY_ANGLE.check(entryAngleDeg),
+                            centreCutting)
+                    .withStrategy(new PocketStrategy(
+                            strategy,
+                            Pocket.ANGLE.check(angleDeg),
+                            Pocket.STOCK_TO_LEAVE.check(stockToLeaveMm),
+                            order));
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {

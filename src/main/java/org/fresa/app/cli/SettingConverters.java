@@ -17,6 +17,8 @@ final class SettingConverters {
             SettingRanges.Pocket.POST,
             SettingRanges.Pocket.DIRECTION,
             SettingRanges.Pocket.ENTRY,
+            SettingRanges.Pocket.STRATEGY,
+            SettingRanges.Pocket.ORDER,
             SettingRanges.Cutting.PROCESS,
             SettingRanges.Cutting.LEAD,
             SettingRanges.Cutting.UNITS,

@@ -96,9 +96,20 @@ class BoundedOptionsTest {
             --feed,        1e308,  from 0.1 to 100000 mm/min
             --finish-feed, 0,      from 0.1 to 100000 mm/min
             --tool-diameter, Infinity, from 0.01 to 1000 mm
+            --angle,       200,    from -180 to 180 deg
+            --angle,       NaN,    from -180 to 180 deg
+            --stock-to-leave, 11,  from 0 to 10 mm
+            --stock-to-leave, -1,  from 0 to 10 mm
             """)
     void pocketOptionsOutOfTheirRangeAreRefused(String option, String value, String range) throws Exception {
         refused(run(pocket(option, value)), option, range, "found");
+    }
+
+    @ParameterizedTest(name = "pocket --strategy zigzag --post {0}")
+    @ValueSource(strings = {"7m", "7m-compat"})
+    void zigzagOnTheThesisPostsIsRefused(String post) throws Exception {
+        refused(run(pocket("--strategy", "zigzag", "--post", post)), "--strategy", "zigzag needs one of linuxcnc");
+        refused(run(pocket("--order", "outside-in", "--post", post)), "--order", "needs one of linuxcnc");
     }
 
     @ParameterizedTest(name = "cut {0} 1e308")

@@ -50,6 +50,20 @@ class SettingDefaultsTest {
                         break;
                 }
             }
+            if (defaults instanceof JobSettings.PocketSettings p) {
+                switch (attribute) {
+                    case "strategy":
+                        return p.strategy().kind();
+                    case "angleDeg":
+                        return p.strategy().angleDeg();
+                    case "stockToLeaveMm":
+                        return p.strategy().stockToLeaveMm();
+                    case "order":
+                        return p.strategy().order();
+                    default:
+                        break;
+                }
+            }
             if (defaults instanceof JobSettings.RobotSettings r && attribute.equals("place")) {
                 return r.placing();
             }

@@ -1,0 +1,119 @@
+package org.fresa.pocket;
+
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+
+/**
+ * How a pocket's floor is cleared before the finishing contour: by passes parallel to the walls
+ * ({@link Kind#OFFSET}, the thesis's and the default) or by parallel straight lines at an angle
+ * ({@link Kind#ZIGZAG}), linked along the pre-finish offset of the walls; how much stock is left
+ * for a later finish; in which order the offset passes are cut.
+ *
+ * @param kind the pattern
+ * @param angleDeg the zigzag lines' direction, counter-clockwise from +X (deg, -180 to 180); unused by offset
+ * @param stockToLeaveMm material left on the walls, the islands and the floor for a later finish
+ *     (mm, 0 to {@link #MAX_STOCK_TO_LEAVE_MM}): the passes are planned for walls that much nearer
+ *     and a floor that much higher
+ * @param order the offset passes' order: from the inside out (the thesis's, the default) or from
+ *     the outside in (the finishing pass still last); unused by zigzag
+ */
+public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, Order order) {
+
+    /** The lines' direction bounds (deg). */
+    public static final double MAX_ANGLE_DEG = 180;
+
+    /** The most stock a pocket may leave (mm): a roughing allowance, not a second pocket. */
+    public static final double MAX_STOCK_TO_LEAVE_MM = 10;
+
+    /** Today's offset passes, inside out, nothing left. */
+    public static final PocketStrategy DEFAULT = new PocketStrategy(Kind.OFFSET, 0);
+
+    /** The order of the offset passes, by the names the command line and the job file use. */
+    public enum Order {
+        /** The innermost pass first, each next pass enclosing the last (the thesis's). */
+        INSIDE_OUT,
+        /** The outermost roughing pass first, inwards, the finishing pass last. */
+        OUTSIDE_IN;
+
+        /** The name as written: {@code inside-out}, {@code outside-in}. */
+        public String word() {
+            return name().toLowerCase(Locale.ROOT).replace('_', '-');
+        }
+
+        /** The order of a name as written, or empty. */
+        public static java.util.Optional<Order> of(String word) {
+            for (Order o : values()) {
+                if (o.word().equals(word)) {
+                    return java.util.Optional.of(o);
+                }
+            }
+            return java.util.Optional.empty();
+        }
+
+        @Override
+        public String toString() {
+            return word();
+        }
+    }
+
+    /** A pattern at an angle, nothing left, inside out. */
+    public PocketStrategy(Kind kind, double angleDeg) {
+        this(kind, angleDeg, 0, Order.INSIDE_OUT);
+    }
+
+    /** The patterns, by the names the command line and the job file use. */
+    public enum Kind {
+        /** Passes parallel to the walls, from the inside out. */
+        OFFSET,
+        /** Parallel lines at an angle, alternating in direction, then the contour passes. */
+        ZIGZAG;
+
+        /** The name as written: {@code offset}, {@code zigzag}. */
+        public String word() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+
+        /** The kind of a name as written, or empty. */
+        public static java.util.Optional<Kind> of(String word) {
+            for (Kind k : values()) {
+                if (k.word().equals(word)) {
+                    return java.util.Optional.of(k);
+                }
+            }
+            return java.util.Optional.empty();
+        }
+
+        /** The names, the default first. */
+        public static List<String> words() {
+            return java.util.Arrays.stream(values()).map(Kind::word).toList();
+        }
+
+        @Override
+        public String toString() {
+            return word();
+        }
+    }
+
+    public PocketStrategy {
+        Objects.requireNonNull(kind, "kind");
+        if (!(angleDeg >= -MAX_ANGLE_DEG && angleDeg <= MAX_ANGLE_DEG)) {
+            throw new IllegalArgumentException("zigzag angle must be in [-180, 180] deg: " + angleDeg);
+        }
+        if (!(stockToLeaveMm >= 0 && stockToLeaveMm <= MAX_STOCK_TO_LEAVE_MM)) {
+            throw new IllegalArgumentException(
+                    "stock to leave must be in [0, " + MAX_STOCK_TO_LEAVE_MM + "] mm: " + stockToLeaveMm);
+        }
+        Objects.requireNonNull(order, "order");
+    }
+
+    /** Whether nothing is left and offset passes run inside out, as the thesis's engine plans them. */
+    public boolean asThesis() {
+        return stockToLeaveMm == 0 && order == Order.INSIDE_OUT;
+    }
+
+    /** Whether the floor is cleared by zigzag lines. */
+    public boolean zigzag() {
+        return kind == Kind.ZIGZAG;
+    }
+}

@@ -1,0 +1,71 @@
+package org.fresa.pocket;
+
+import java.util.List;
+import org.fresa.geom.Contour;
+import org.fresa.geom.Tolerance;
+import org.fresa.model.Toolpath;
+
+/**
+ * A pocket planned by a {@link PocketStrategy} other than the thesis's own passes: zigzag lines
+ * ({@link ZigzagPocket}), or offset passes ({@link RegionPocket}) with stock left or cut from the
+ * outside in. Stock to leave: the region is offset inwards by it (walls and islands that much
+ * nearer) and the floor raised by it, so that every pass keeps it from what it finishes later.
+ * Units mm.
+ */
+public final class StrategyPocket {
+
+    private StrategyPocket() {}
+
+    /**
+     * The toolpath.
+     *
+     * @param outer the outer contour (either orientation)
+     * @param islands closed contours inside it (either orientation), not touching it or each other
+     * @param tech the technology; its floor is the finished floor
+     * @param strategy the pattern, stock and order
+     * @param climb climb milling of the contour passes
+     * @param entry the entries allowed
+     * @throws IllegalArgumentException when the stock is as deep as the pocket
+     * @throws ToolTooLargeException when the walls less the stock leave no room, the tool does not
+     *     fit, an entry has no room, or the program would have too many moves
+     */
+    public static Toolpath toolpath(
+            Contour outer,
+            List<Contour> islands,
+            PocketTechnology tech,
+            PocketStrategy strategy,
+            boolean climb,
+            EntryRule entry)
+            throws ToolTooLargeException {
+        double stock = strategy.stockToLeaveMm();
+        List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
+        PocketTechnology t = tech;
+        if (stock > 0) {
+            if (!(tech.zBottomMm() + stock < tech.zTopMm())) {
+                throw new IllegalArgumentException(stock + " mm of stock is as much as the pocket's depth ("
+                        + (tech.zTopMm() - tech.zBottomMm()) + " mm): nothing would be cut");
+            }
+            t = new PocketTechnology(
+                    tech.toolDiameterMm(),
+                    tech.cutFraction(),
+                    tech.finishFraction(),
+                    tech.zTopMm(),
+                    tech.zBottomMm() + stock,
+                    tech.maxDepthMm(),
+                    tech.spindleRpm(),
+                    tech.feedMmPerMin(),
+                    tech.finishFeedMmPerMin());
+            boundary = RegionOffsetter.inward(boundary, stock, Tolerance.DEFAULT);
+            if (boundary.isEmpty()) {
+                throw new ToolTooLargeException(
+                        "the walls less " + stock + " mm of stock leave no room for the pocket: leave less stock");
+            }
+        }
+        if (strategy.zigzag()) {
+            return ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry)
+                    .toolpath();
+        }
+        return RegionPocket.plan(boundary, t, climb, entry, true, strategy.order() == PocketStrategy.Order.OUTSIDE_IN)
+                .toolpath();
+    }
+}

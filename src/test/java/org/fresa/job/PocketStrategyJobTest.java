@@ -1,0 +1,94 @@
+package org.fresa.job;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.fresa.io.OutputFolder;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.model.CamInputException;
+import org.fresa.pocket.PocketStrategy;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The pocket strategy in the job file: written and read back alike, left out when it is the
+ * default (a saved default job reads and writes as before), refused out of range, and
+ * {@code fresa run} of the saved job writing the program {@code fresa pocket} writes.
+ */
+class PocketStrategyJobTest {
+
+    @TempDir
+    Path dir;
+
+    private static PocketSettings settings(Path contour, PocketStrategy st) {
+        return new PocketSettings(contour, 6, 0.6, 0.1, 0, -4, 2, 3000, 300, 100, PocketPost.LINUXCNC).withStrategy(st);
+    }
+
+    @Test
+    void theStrategyRoundTripsThroughTheJobFile() throws Exception {
+        Path contour = Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath();
+        for (PocketStrategy st : new PocketStrategy[] {
+            new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 37.5, 0.25, PocketStrategy.Order.INSIDE_OUT),
+            new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0.5, PocketStrategy.Order.OUTSIDE_IN),
+            new PocketStrategy(PocketStrategy.Kind.ZIGZAG, -180, 0, PocketStrategy.Order.INSIDE_OUT)
+        }) {
+            Job job = Job.empty(JobTask.POCKET).withPocket(settings(contour, st));
+            Path file = dir.resolve("job.xml");
+            JobXml.write(job, file);
+            assertEquals(st, JobXml.read(file).pocket().orElseThrow().strategy(), Files.readString(file));
+        }
+    }
+
+    @Test
+    void theDefaultStrategyIsNotWritten() throws Exception {
+        Path file = dir.resolve("job.xml");
+        JobXml.write(
+                Job.empty(JobTask.POCKET)
+                        .withPocket(settings(
+                                Path.of("samples/pocket/cavity01.dad").toAbsolutePath(), PocketStrategy.DEFAULT)),
+                file);
+        String xml = Files.readString(file);
+        assertFalse(
+                xml.contains("strategy=")
+                        || xml.contains("angleDeg=")
+                        || xml.contains("stockToLeaveMm=")
+                        || xml.contains("order="),
+                xml);
+        assertEquals(
+                PocketStrategy.DEFAULT, JobXml.read(file).pocket().orElseThrow().strategy());
+    }
+
+    @Test
+    void anAngleOrAStockOutOfRangeIsRefusedAtTheJobFile() throws Exception {
+        for (String attribute : new String[] {"angleDeg=\"200\"", "stockToLeaveMm=\"11\"", "order=\"sideways\""}) {
+            Path file = dir.resolve("bad.xml");
+            Files.writeString(
+                    file,
+                    "<?xml version=\"1.0\"?>\n<job xmlns=\"urn:fresa:job:1\" version=\"1\" task=\"pocket\">"
+                            + "<pocket contour=\"c.dad\" toolDiameterMm=\"6\" strategy=\"zigzag\" " + attribute
+                            + "/></job>\n");
+            assertThrows(CamInputException.class, () -> JobXml.read(file), attribute);
+        }
+    }
+
+    @Test
+    void runningTheSavedJobWritesThePocketCommandsProgram() throws Exception {
+        PocketSettings s = settings(
+                Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 30, 0.2, PocketStrategy.Order.INSIDE_OUT));
+        Path direct = dir.resolve("direct.ngc");
+        assertEquals(0, PocketService.run(s, direct, ProgressMonitor.NONE).exitStatus());
+        Path file = dir.resolve("job.xml");
+        JobXml.write(Job.empty(JobTask.POCKET).withPocket(s), file);
+        Path out = dir.resolve("out");
+        Files.createDirectories(out);
+        TaskOutcome o = JobRunner.run(JobXml.read(file), new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertTrue(Files.exists(out.resolve("pocket.ngc")));
+        assertEquals(Files.readString(direct), Files.readString(out.resolve("pocket.ngc")));
+    }
+}

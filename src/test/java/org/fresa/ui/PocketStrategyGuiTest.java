@@ -1,0 +1,112 @@
+package org.fresa.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.timing.Condition;
+import org.assertj.swing.timing.Pause;
+import org.assertj.swing.timing.Timeout;
+import org.fresa.job.Job;
+import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.job.JobTask;
+import org.fresa.job.PocketService;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.pocket.PocketStrategy;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The Pocket tab's strategy fields, as a planner uses them: each reached by its label's mnemonic,
+ * a bad angle marked, zigzag at 30 degrees with 0.3 mm of stock computed into the job, and the
+ * program shown is the one {@code fresa pocket} writes for the same settings.
+ */
+class PocketStrategyGuiTest extends WindowGuiTest {
+
+    @Override
+    java.awt.Dimension windowSize() {
+        return new java.awt.Dimension(1400, 900);
+    }
+
+    private String status() {
+        return GuiActionRunner.execute(() -> {
+            javax.swing.JLabel l = window.label("pocket-status").target();
+            return l.getToolTipText() != null ? l.getToolTipText() : l.getText();
+        });
+    }
+
+    @Test
+    void zigzagTypedInTheTabIsTheJobsAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                        6,
+                        0.6,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        org.fresa.job.PocketPost.LINUXCNC))));
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
+        // every strategy field has a label that names it and takes the keyboard there
+        for (String name : new String[] {
+            PocketViewModel.STRATEGY, PocketViewModel.ANGLE, PocketViewModel.STOCK_TO_LEAVE, PocketViewModel.ORDER
+        }) {
+            assertTrue(
+                    GuiActionRunner.execute(() -> {
+                        java.awt.Component field = window.robot().finder().findByName(window.target(), name, true);
+                        for (java.awt.Component c : field.getParent().getComponents()) {
+                            if (c instanceof javax.swing.JLabel l
+                                    && l.getLabelFor() == field
+                                    && l.getDisplayedMnemonic() != 0) {
+                                return true;
+                            }
+                        }
+                        return false;
+                    }),
+                    name);
+        }
+        window.comboBox(PocketViewModel.STRATEGY).selectItem("zigzag");
+        window.textBox(PocketViewModel.ANGLE).deleteText().enterText("200");
+        Pause.pause(
+                new Condition("the bad angle is explained") {
+                    @Override
+                    public boolean test() {
+                        return status().contains("Zigzag angle (deg)");
+                    }
+                },
+                Timeout.timeout(30_000));
+        window.button("pocket-compute").requireDisabled();
+        window.textBox(PocketViewModel.ANGLE).deleteText().enterText("30");
+        window.textBox(PocketViewModel.STOCK_TO_LEAVE).deleteText().enterText("0.3");
+        window.button("pocket-compute").requireEnabled();
+        window.button("pocket-compute").click();
+        Pause.pause(
+                new Condition("the program is computed") {
+                    @Override
+                    public boolean test() {
+                        return status().equals("done") || status().contains("refused");
+                    }
+                },
+                Timeout.timeout(60_000));
+        assertEquals("done", status());
+        PocketSettings s = GuiActionRunner.execute(() -> model.job().pocket().orElseThrow());
+        assertEquals(
+                new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 30, 0.3, PocketStrategy.Order.INSIDE_OUT), s.strategy());
+        Path out = dir.resolve("p.ngc");
+        assertEquals(0, PocketService.run(s, out, ProgressMonitor.NONE).exitStatus());
+        // the program's text, whichever of the tab's texts is in front
+        String shown = GuiActionRunner.execute(() -> window.robot()
+                .finder()
+                .findByName(window.target(), "pocket-nc", javax.swing.text.JTextComponent.class, false)
+                .getText());
+        assertEquals(Files.readString(out), shown);
+    }
+}
