@@ -37,6 +37,14 @@ final class ConvexHull {
         return xs.length;
     }
 
+    double x(int i) {
+        return xs[i];
+    }
+
+    double y(int i) {
+        return ys[i];
+    }
+
     Vec2 vertex(int i) {
         return new Vec2(xs[i], ys[i]);
     }
