@@ -290,6 +290,10 @@ public final class CutPlanner {
         }
         List<Asked> asked = resolve(override, nodes, warnings);
         java.util.Set<String> pinned = startsAsked(asked, o, half, grid, warnings);
+        // the lead test's grid and its list of every drawn curve are done with: on a big sheet
+        // they are 40 MB the ordering, the routing and the post need
+        grid = null;
+        all = null;
         progress.at(0.5, "looking for contours that cross");
         crossings(nodes, warnings);
         progress.at(0.55, "ordering the pierces");
@@ -602,7 +606,7 @@ public final class CutPlanner {
                     continue;
                 }
                 List<Curve2> tail = tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer);
-                return new CutPath(label, outer, part, started, in, tail, comp);
+                return SharedPoints.of(new CutPath(label, outer, part, started, in, tail, comp));
             }
         }
         if (forced != null && (leadIn > 0 || comp != 0)) {
@@ -612,14 +616,14 @@ public final class CutPlanner {
         if (leadIn > 0 && comp == 0) {
             warnings.add(label + ": no room for a lead-in; pierced on the contour");
         }
-        return new CutPath(
+        return SharedPoints.of(new CutPath(
                 label,
                 outer,
                 part,
                 started,
                 List.of(),
                 tail(started, o, half, scrapLeft, arcs, grid, clearance, part, outer),
-                comp);
+                comp));
     }
 
     /**
