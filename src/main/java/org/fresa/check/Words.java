@@ -47,12 +47,23 @@ public final class Words {
 
         /** The first word of the address, if any. */
         public Optional<Word> word(String address) {
-            return words.stream().filter(w -> w.address().equals(address)).findFirst();
+            // loops, not streams: the check asks every block of a 3 million-block program a dozen times
+            for (Word w : words) {
+                if (w.address().equals(address)) {
+                    return Optional.of(w);
+                }
+            }
+            return Optional.empty();
         }
 
         /** True when a word of the address has the value. */
         public boolean has(String address, double value) {
-            return words.stream().anyMatch(w -> w.address().equals(address) && w.value() == value);
+            for (Word w : words) {
+                if (w.address().equals(address) && w.value() == value) {
+                    return true;
+                }
+            }
+            return false;
         }
 
         /** The block's N number as written, or "line L". */
@@ -88,8 +99,7 @@ public final class Words {
         int i = 0;
         int n = s.length();
         // a tape mark or a Siemens header, possibly after a block number (the 7M's "N05 %")
-        String body = s.replaceFirst("^[Nn]\\s*\\d+\\s*", "");
-        if (body.startsWith("%")) {
+        if (tapeMark(s)) {
             return new Block(line, text, List.of(), Optional.empty());
         }
         while (i < n) {
@@ -105,7 +115,9 @@ public final class Words {
             while (i < n && Character.isLetter(s.charAt(i)) && s.charAt(i) < 128) {
                 i++;
             }
-            String address = s.substring(a, i).toUpperCase(Locale.ROOT);
+            String address = i == a + 1
+                    ? LETTERS[Character.toUpperCase(s.charAt(a)) - 'A']
+                    : s.substring(a, i).toUpperCase(Locale.ROOT);
             if (address.length() > 1) {
                 if (i < n && s.charAt(i) == '=') {
                     i++;
@@ -149,6 +161,47 @@ public final class Words {
             words.add(new Word(address, Double.parseDouble(num), num));
         }
         return new Block(line, text, words, Optional.empty());
+    }
+
+    /** The one-letter addresses, upper case: one string each instead of one per word read. */
+    private static final String[] LETTERS = new String[26];
+
+    static {
+        for (char c = 'A'; c <= 'Z'; c++) {
+            LETTERS[c - 'A'] = String.valueOf(c);
+        }
+    }
+
+    /**
+     * True when the block, after a block number if any ({@code N}, blanks, digits, blanks), starts
+     * with {@code %}: what the pattern {@code ^[Nn]\s*\d+\s*} stripped before it, without compiling
+     * the pattern for every block.
+     */
+    private static boolean tapeMark(String s) {
+        int n = s.length();
+        int j = 0;
+        if (n > 0 && (s.charAt(0) == 'N' || s.charAt(0) == 'n')) {
+            int k = 1;
+            while (k < n && blank(s.charAt(k))) {
+                k++;
+            }
+            int d = k;
+            while (k < n && s.charAt(k) >= '0' && s.charAt(k) <= '9') {
+                k++;
+            }
+            if (k > d) {
+                while (k < n && blank(s.charAt(k))) {
+                    k++;
+                }
+                j = k;
+            }
+        }
+        return j < n && s.charAt(j) == '%';
+    }
+
+    /** The regular expression's {@code \s}: space, tab, line feed, vertical tab, form feed, carriage return. */
+    private static boolean blank(char c) {
+        return c == ' ' || c == '\t' || c == '\n' || c == 0x0B || c == '\f' || c == '\r';
     }
 
     private static String stripComments(String text) {

@@ -1,8 +1,6 @@
 package org.fresa.cutting;
 
 import java.util.Arrays;
-import java.util.HashMap;
-import java.util.Map;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Vec2;
 
@@ -16,7 +14,7 @@ final class BoxGrid {
     private static final int MAX_CELLS = 1024;
 
     private final double cell;
-    private final Map<Long, int[]> cells = new HashMap<>();
+    private final CellTable cells = new CellTable();
     private int[] big = new int[0];
     /** Per id, the query that last returned it (so an id is returned once per query). */
     private int[] stamp = new int[64];

@@ -1,8 +1,6 @@
 package org.fresa.cutting;
 
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Vec2;
@@ -15,7 +13,7 @@ import org.fresa.geom.Vec2;
 final class CurveGrid {
     private final List<Curve2> curves;
     private final double cell;
-    private final Map<Long, int[]> cells = new HashMap<>();
+    private final CellTable cells = new CellTable();
     private final int[] stamp;
     private int query;
 

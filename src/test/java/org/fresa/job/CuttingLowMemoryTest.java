@@ -18,8 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
  * read, chained, nested, offset, ordered, routed around the cut parts, posted and checked, every
  * part cut. The program is posted a cut at a time to the file and checked there, never held as
  * text. The sheet is a quarter of the 50 MB drawing (45 000 parts, 13 MB): the whole one is cut in
- * 512 MB too ({@code java -Xmx512m -jar fresa.jar cut}, docs/cutting.md), but with three times the
- * CPU seconds a test may take, most of them the collector's near the heap's limit. Runs in the
+ * 512 MB too ({@code java -Xmx512m -jar fresa.jar cut}, docs/cutting.md), but with more than the
+ * CPU seconds a test may take (74 s of CPU with the collector's). Runs in the
  * {@code low-memory} surefire execution ({@code -Xmx512m});
  * skipped in a larger heap, where it would prove nothing. The time is printed, not asserted: the
  * 60 s goal is the benchmark's ({@code cut_parts_per_s}).
