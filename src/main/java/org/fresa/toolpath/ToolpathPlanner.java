@@ -1080,6 +1080,14 @@ public final class ToolpathPlanner {
     /**
      * The section starting and ending on the security plane: its first and last points moved
      * along the plane's normal onto it, joined to the section by rapids.
+     *
+     * <p>A tool whose axis points against the plane's normal works from the far side of the part
+     * (the underside of a part whose security plane is above it): the straight link from its
+     * retract point to the plane would cross the whole part, and no link through the plane
+     * reaches it. Such a workingstep needs the part turned over, in another setup, and is refused
+     * with that reason.
+     *
+     * @throws IllegalArgumentException for a tool axis against the plane's normal
      */
     static ToolpathSection viaSecurityPlane(ToolpathSection s, Optional<Transform3> plane) {
         if (plane.isEmpty()) {
@@ -1087,6 +1095,12 @@ public final class ToolpathPlanner {
         }
         Vec3 o = plane.get().translationPart();
         Vec3 n = plane.get().zAxis();
+        if (s.toolAxis().dot(n) < -AXIS_TOLERANCE) {
+            throw new IllegalArgumentException("tool axis " + axis(s.toolAxis())
+                    + " works from the far side of the part, against the security plane's normal " + axis(n)
+                    + ": the link through the security plane would cross the part; it needs the part turned"
+                    + " over, in another setup");
+        }
         Vec3 first = s.start();
         Vec3 last = s.moves().isEmpty()
                 ? first
@@ -1099,5 +1113,15 @@ public final class ToolpathPlanner {
         moves.add(new Move.Rapid(out));
         return new ToolpathSection(
                 s.label(), s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), in, moves);
+    }
+
+    /** How far from the plane's side an axis may lean and still be read as square to the normal. */
+    static final double AXIS_TOLERANCE = 1e-9;
+
+    /** An axis as the listings write it: "(0, 0, -1)". */
+    public static String axis(Vec3 a) {
+        return "(" + org.fresa.model.ExactDecimal.of(Math.round(a.x() * 1e4) / 1e4 + 0.0) + ", "
+                + org.fresa.model.ExactDecimal.of(Math.round(a.y() * 1e4) / 1e4 + 0.0) + ", "
+                + org.fresa.model.ExactDecimal.of(Math.round(a.z() * 1e4) / 1e4 + 0.0) + ")";
     }
 }
