@@ -222,6 +222,21 @@ public final class ToolpathService {
         m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
         m.put("workingstep_paths", perSection);
         m.put("problems", plan.problems());
+        // every workingstep the program does not hold, each with its own reason (the problems sum
+        // some of them up, per tool axis or per feed note)
+        java.util.Set<Long> held = new java.util.HashSet<>();
+        plan.steps().forEach(x -> held.add(x.workingstepInstanceId()));
+        List<Object> notPlanned = new ArrayList<>();
+        for (org.fresa.stepnc.MachiningWorkingstep w : program.workingsteps()) {
+            if (!held.contains(w.instanceId())) {
+                Map<String, Object> x = new LinkedHashMap<>();
+                x.put("id", w.id());
+                x.put("instance", w.instanceId());
+                x.put("reason", plan.refusals().getOrDefault(w.instanceId(), "not planned"));
+                notPlanned.add(x);
+            }
+        }
+        m.put("not_planned", notPlanned);
         List<Object> skipped = new ArrayList<>();
         for (StepNcProgram.Skipped s : program.skipped()) {
             skipped.add(Map.of("id", s.id(), "reason", s.reason()));

@@ -62,6 +62,24 @@ class ToolAxisSetupsTest {
                 o.problems().toString());
         assertTrue(o.problems().contains(UNDERSIDE_REFUSED), o.problems().toString());
         assertEquals(1, o.summary().get("planned"));
+        // the summary names each workingstep left out with its own reason
+        assertEquals(
+                List.of(
+                        java.util.Map.of(
+                                "id",
+                                "WS DRILL SIDE X",
+                                "instance",
+                                11L,
+                                "reason",
+                                "tool axis (1, 0, 0): a 3-axis program machines along +Z only; it needs another setup"),
+                        java.util.Map.of(
+                                "id",
+                                "WS DRILL UNDERSIDE",
+                                "instance",
+                                12L,
+                                "reason",
+                                UNDERSIDE_REFUSED.substring(UNDERSIDE_REFUSED.indexOf("tool axis")))),
+                o.summary().get("not_planned"));
         String nc = Files.readString(dir.resolve("program.ngc"));
         assertAll(
                 () -> assertTrue(nc.contains("(WS DRILL TOP"), nc),
@@ -75,6 +93,23 @@ class ToolAxisSetupsTest {
         // the deepest point of the program is the top hole's bottom, 10 mm into the 40 mm block
         double lowest = r.motions().stream().mapToDouble(c -> c.end().z()).min().orElseThrow();
         assertEquals(30, lowest, 1e-9);
+    }
+
+    /** {@code fresa stepnc} lists what {@code fresa toolpath} leaves out, each with its real reason. */
+    @Test
+    void theListingGivesEachLeftOutWorkingstepsRealReason() throws Exception {
+        List<StepNcService.NotPlanned> np = StepNcService.notPlanned(StepNcReader.read(THREE_SIDES));
+        assertEquals(
+                List.of(
+                        new StepNcService.NotPlanned(
+                                11,
+                                "WS DRILL SIDE X",
+                                "tool axis (1, 0, 0): a 3-axis program machines along +Z only; it needs another setup"),
+                        new StepNcService.NotPlanned(
+                                12,
+                                "WS DRILL UNDERSIDE",
+                                UNDERSIDE_REFUSED.substring(UNDERSIDE_REFUSED.indexOf("tool axis")))),
+                np);
     }
 
     @Test
