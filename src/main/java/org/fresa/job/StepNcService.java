@@ -50,11 +50,14 @@ public final class StepNcService {
 
     /**
      * The workingsteps the planner (default choices) leaves out, in program order, each with the
-     * reason it gives: what {@code fresa toolpath} would refuse.
+     * reason it gives: what {@code fresa toolpath} would refuse, its 3-axis programs included (a
+     * workingstep whose tool axis is not +Z needs another setup, {@link
+     * ToolpathService#alongMachineZ}; {@code fresa robot} keeps those).
      */
     public static List<NotPlanned> notPlanned(StepNcProgram p) {
-        org.fresa.toolpath.ToolpathPlanner.Plan plan = org.fresa.toolpath.ToolpathPlanner.plan(
-                p, org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT);
+        org.fresa.toolpath.ToolpathPlanner.Plan plan =
+                ToolpathService.alongMachineZ(org.fresa.toolpath.ToolpathPlanner.plan(
+                        p, org.fresa.geom.Tolerance.DEFAULT, org.fresa.toolpath.PlanningChoices.DEFAULT));
         java.util.Set<Long> planned = new java.util.HashSet<>();
         plan.steps().forEach(s -> planned.add(s.workingstepInstanceId()));
         List<NotPlanned> out = new ArrayList<>();

@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.fresa.geom.Tolerance;
+import org.fresa.geom.Vec3;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.CamInputException;
@@ -73,7 +74,7 @@ public final class ToolpathService {
         if (nothing.isPresent()) {
             return nothingToMachine(program, List.of(nothing.get()), out);
         }
-        ToolpathPlanner.Plan plan = plan(program, choices, progress);
+        ToolpathPlanner.Plan plan = alongMachineZ(plan(program, choices, progress));
         if (plan.planned() == 0) {
             // every workingstep refused: an empty program would look like a finished job
             return nothingToMachine(program, plan.problems(), out);
@@ -109,6 +110,50 @@ public final class ToolpathService {
         int status = !refused && (plan.problems().isEmpty() || plan.planned() == plan.workingsteps()) ? 0 : 1;
         return new TaskOutcome(status, problems, summary, out.written());
     }
+
+    /**
+     * What a 3-axis program can hold of a plan: the workingsteps whose tool axis is the machine's
+     * spindle, +Z of the workpiece frame. A workingstep on another side of the part (a tool axis
+     * along X, -Y, or the underside's -Z) needs the part turned into another setup: run in this
+     * program's frame, its tool would be below or inside the part. Those are refused, each with its
+     * axis, and summed per axis among the problems ("tool axis (0, -1, 0): a 3-axis program
+     * machines along +Z only; 12 workingsteps need another setup"); the robot, which orients the
+     * tool, keeps them. The program's {@code toolpath.csv} is the same path as the program, so it
+     * holds only the workingsteps kept.
+     */
+    public static ToolpathPlanner.Plan alongMachineZ(ToolpathPlanner.Plan plan) {
+        List<ToolpathSection> kept = new ArrayList<>();
+        List<ToolpathPlanner.PlannedStep> keptSteps = new ArrayList<>();
+        Map<Long, String> refusals = new LinkedHashMap<>(plan.refusals());
+        Map<String, Integer> perAxis = new LinkedHashMap<>();
+        List<ToolpathSection> sections = plan.toolpath().sections();
+        for (int i = 0; i < sections.size(); i++) {
+            ToolpathSection s = sections.get(i);
+            ToolpathPlanner.PlannedStep step = plan.steps().get(i);
+            if (s.toolAxis().distance(Vec3.UNIT_Z) <= AXIS_TOLERANCE) {
+                kept.add(s);
+                keptSteps.add(step);
+                continue;
+            }
+            String axis = "tool axis " + ToolpathPlanner.axis(s.toolAxis());
+            perAxis.merge(axis, 1, Integer::sum);
+            refusals.put(step.workingstepInstanceId(), axis + ": " + THREE_AXIS + "; it needs another setup");
+        }
+        if (perAxis.isEmpty()) {
+            return plan;
+        }
+        List<String> problems = new ArrayList<>(plan.problems());
+        perAxis.forEach((axis, n) -> problems.add(axis + ": " + THREE_AXIS + "; " + n
+                + (n == 1 ? " workingstep needs" : " workingsteps need") + " another setup"));
+        return new ToolpathPlanner.Plan(
+                new Toolpath(kept), problems, plan.workingsteps(), kept.size(), keptSteps, refusals);
+    }
+
+    /** Why a 3-axis program leaves a workingstep out. */
+    static final String THREE_AXIS = "a 3-axis program machines along +Z only";
+
+    /** How far a section's tool axis may be from +Z and still be the spindle's (the posts' own test). */
+    static final double AXIS_TOLERANCE = 1e-9;
 
     /**
      * A file with nothing to machine writes no program, since an empty one would look like a
@@ -180,6 +225,21 @@ public final class ToolpathService {
         m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
         m.put("workingstep_paths", perSection);
         m.put("problems", plan.problems());
+        // every workingstep the program does not hold, each with its own reason (the problems sum
+        // some of them up, per tool axis or per feed note)
+        java.util.Set<Long> held = new java.util.HashSet<>();
+        plan.steps().forEach(x -> held.add(x.workingstepInstanceId()));
+        List<Object> notPlanned = new ArrayList<>();
+        for (org.fresa.stepnc.MachiningWorkingstep w : program.workingsteps()) {
+            if (!held.contains(w.instanceId())) {
+                Map<String, Object> x = new LinkedHashMap<>();
+                x.put("id", w.id());
+                x.put("instance", w.instanceId());
+                x.put("reason", plan.refusals().getOrDefault(w.instanceId(), "not planned"));
+                notPlanned.add(x);
+            }
+        }
+        m.put("not_planned", notPlanned);
         List<Object> skipped = new ArrayList<>();
         for (StepNcProgram.Skipped s : program.skipped()) {
             skipped.add(Map.of("id", s.id(), "reason", s.reason()));

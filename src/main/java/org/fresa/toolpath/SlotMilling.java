@@ -48,6 +48,8 @@ final class SlotMilling {
     static final double OPEN_END_CLEARANCE_MM = 2.0;
     /** Below this room beside the cutter (mm), a layer of mixed ends is cut along the middle only. */
     static final double CENTRE_ONLY_MM = 0.01;
+    /** Room left beside a cutter that fits only along the middle of an arc's slot (mm), within the 0.01 mm allowed. */
+    static final double ARC_CENTRE_ROOM_MM = 0.005;
     /** An arc of a smaller radius (mm) is a point: cut as a straight move to its end. */
     static final double NO_RADIUS_MM = 1e-4;
     /** Largest angle a tee's stem wall may differ from square to the cross bar (deg). */
@@ -63,7 +65,7 @@ final class SlotMilling {
     /**
      * The moves of a slot in its frame.
      *
-     * @param lengthMm the path's length
+     * @param course the path in the slot frame: a straight length, or an arc about the frame's origin
      * @param pocket mills an outline as a pocket with the operation's strategy and entry rules
      * @throws UnsupportedOperationException with the reason when the slot cannot be machined with this tool
      */
@@ -73,7 +75,7 @@ final class SlotMilling {
             Tool tool,
             Tooling t,
             Heights h,
-            double lengthMm,
+            Course course,
             double axialMm,
             Tolerance tol,
             List<String> problems,
@@ -106,7 +108,7 @@ final class SlotMilling {
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
             double w = checkedWidth(u.widthMm(), d, tol);
-            return straight(label, lengthMm, w / 2, ends, h, t, tol, pocket);
+            return straight(label, course, w / 2, ends, h, t, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u) {
             double w = checkedWidth(u.widthMm(), d, tol);
@@ -127,7 +129,7 @@ final class SlotMilling {
                         + " mm of the rounded-U's " + mm(depth)
                         + " mm; a ball end mill as wide as the slot reaches the bottom");
             }
-            return shaped(label, lengthMm, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
+            return shaped(label, course, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.Vee v) {
             double angle = v.profileAngleDeg();
@@ -157,8 +159,7 @@ final class SlotMilling {
             floor = Math.max(floor, -depth);
             problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter follows the vee in "
                     + mm(SHAPED_LAYER_MM) + " mm steps down to " + mm(-floor) + " mm of its " + mm(depth) + " mm");
-            return shaped(
-                    label, lengthMm, 0, floor, z -> half.applyAsDouble(z) - r, r, ends, h, t, axialMm, tol, pocket);
+            return shaped(label, course, 0, floor, z -> half.applyAsDouble(z) - r, r, ends, h, t, axialMm, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.Tee tee) {
             if (Math.abs(tee.firstAngleDeg() - 90) > SQUARE_TOLERANCE_DEG
@@ -175,12 +176,16 @@ final class SlotMilling {
                         + " mm stem in the slot's depth " + mm(depth) + " mm");
             }
             if (tool.body().equals("T_SLOT_MILL")) {
-                return crossBar(label, lengthMm, tee, ends, tool, h, t, tol);
+                if (!(course instanceof Course.Straight straightCourse)) {
+                    throw new UnsupportedOperationException("a T_SLOT_MILL's cross bar is milled along a LINEAR_PATH"
+                            + " only: it enters from an open end and goes straight along the middle");
+                }
+                return crossBar(label, straightCourse.lengthMm(), tee, ends, tool, h, t, tol);
             }
             double w = checkedWidth(tee.widthMm(), d, tol);
             problems.add("workingstep '" + label + "': the " + tool.body() + " mills the tee's stem; its cross bar"
                     + " needs a T_SLOT_MILL");
-            return straight(label, lengthMm, w / 2, ends, h, t, tol, pocket);
+            return straight(label, course, w / 2, ends, h, t, tol, pocket);
         }
         throw new UnsupportedOperationException("slots with a " + shape.entity() + " are not supported yet");
     }
@@ -208,14 +213,14 @@ final class SlotMilling {
 
     private static ToolpathSection straight(
             String label,
-            double length,
+            Course course,
             double halfWidth,
             List<SlotEnd> ends,
             Heights h,
             Tooling t,
             Tolerance tol,
             PocketCutter pocket) {
-        return join(label, List.of(pocket.cut(outline(length, halfWidth, t.radiusMm(), ends, tol), h)));
+        return join(label, List.of(pocket.cut(course.outline(halfWidth, t.radiusMm(), ends, tol), h)));
     }
 
     /**
@@ -226,7 +231,7 @@ final class SlotMilling {
      */
     private static ToolpathSection shaped(
             String label,
-            double length,
+            Course course,
             double zStraight,
             double floor,
             DoubleUnaryOperator reach,
@@ -242,7 +247,7 @@ final class SlotMilling {
         if (zStraight < top - tol.linear()) {
             double z = Math.max(zStraight, floor);
             parts.add(pocket.cut(
-                    outline(length, Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
+                    course.outline(Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
                     new Heights(h.clearanceZ(), h.retractZ(), top, z)));
             top = z;
         }
@@ -254,7 +259,7 @@ final class SlotMilling {
                 double z = i == n ? floor : top - (top - floor) * i / n;
                 double half = Math.max(reach.applyAsDouble(z), 0) + r;
                 parts.add(pocket.cut(
-                        outline(length, half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+                        course.outline(half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
                 prev = z;
             }
         }
@@ -291,6 +296,104 @@ final class SlotMilling {
                 first.spindleRpm(),
                 first.start(),
                 moves);
+    }
+
+    /**
+     * A slot's course of travel in the slot frame (z the feature axis), which gives the outline
+     * the tool may sweep at a half width.
+     */
+    sealed interface Course {
+        /** The outline at this half width, with the slot's ends. */
+        Profile outline(double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol);
+
+        /**
+         * A LINEAR_PATH: x along it from its middle.
+         *
+         * @param lengthMm the path's length
+         */
+        record Straight(double lengthMm) implements Course {
+            @Override
+            public Profile outline(double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol) {
+                return SlotMilling.outline(lengthMm, halfWidth, toolRadius, ends, tol);
+            }
+        }
+
+        /**
+         * A CIRCULAR_PATH: an arc about the frame's origin, from the point on its x axis at the
+         * radius, counter-clockwise about its z for a positive sweep (clockwise for a negative one).
+         *
+         * @param radiusMm the path's radius
+         * @param sweepRad the signed sweep, less than a full turn
+         */
+        record Arc(double radiusMm, double sweepRad) implements Course {
+            public Arc {
+                if (!(radiusMm > 0 && radiusMm <= ToolpathPlanner.MAX_LENGTH_MM)) {
+                    throw new IllegalArgumentException("the circular path's radius " + radiusMm + " mm is outside 0 to "
+                            + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+                }
+                if (!(Math.abs(sweepRad) > 1e-9 && Math.abs(sweepRad) < 2 * Math.PI - 1e-9)) {
+                    throw new UnsupportedOperationException("the circular path's sweep_angle " + sweepRad
+                            + " (radians) is not between 0 and a full turn: a closed course is a loop, not machined");
+                }
+            }
+
+            @Override
+            public Profile outline(double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol) {
+                // where the cutter fits only along the middle, the pocket's inset of an outline as
+                // wide as the cutter is a curve of no area: a hair of room keeps it a loop along the
+                // middle, the tool leaving the slot's walls by no more than that hair
+                return arcOutline(this, Math.max(halfWidth, toolRadius + ARC_CENTRE_ROOM_MM), ends, tol);
+            }
+        }
+    }
+
+    /**
+     * The outline of a slot along an arc at one half width: an annular sector between the
+     * radii less and more the half width, its ends square to the path (open, flat) or half
+     * circles of the half width about the path's end points (radiused); arcs stay arcs.
+     */
+    static Profile arcOutline(Course.Arc c, double halfWidth, List<SlotEnd> ends, Tolerance tol) {
+        SlotEnd first = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd last = ends.size() < 2 ? first : ends.get(1);
+        for (SlotEnd e : new SlotEnd[] {first, last}) {
+            if (e != null
+                    && e.type() == EndType.FLAT
+                    && (e.firstRadiusMm().orElse(0) > 0 || e.secondRadiusMm().orElse(0) > 0)) {
+                throw new UnsupportedOperationException(
+                        "flat slot ends with corner radii are machined on a LINEAR_PATH only; along a CIRCULAR_PATH"
+                                + " a flat end is square");
+            }
+        }
+        double rIn = c.radiusMm() - halfWidth;
+        double rOut = c.radiusMm() + halfWidth;
+        if (!(rIn > tol.linear())) {
+            throw new UnsupportedOperationException("the slot (" + mm(2 * halfWidth) + " mm wide here) is wider than"
+                    + " twice its circular path's radius (" + mm(c.radiusMm()) + " mm)");
+        }
+        // counter-clockwise from a0 to a1; a clockwise path is the same outline with its ends swapped
+        double a0 = Math.min(0, c.sweepRad());
+        double a1 = Math.max(0, c.sweepRad());
+        SlotEnd atA0 = c.sweepRad() > 0 ? first : last;
+        SlotEnd atA1 = c.sweepRad() > 0 ? last : first;
+        List<Curve2> cs = new ArrayList<>();
+        Vec2 o = Vec2.ZERO;
+        cs.add(new Arc2(o, polar(rOut, a0), polar(rOut, a1), true));
+        if (isRadiused(atA1)) {
+            cs.add(new Arc2(polar(c.radiusMm(), a1), polar(rOut, a1), polar(rIn, a1), true));
+        } else {
+            cs.add(new Segment2(polar(rOut, a1), polar(rIn, a1)));
+        }
+        cs.add(new Arc2(o, polar(rIn, a1), polar(rIn, a0), false));
+        if (isRadiused(atA0)) {
+            cs.add(new Arc2(polar(c.radiusMm(), a0), polar(rIn, a0), polar(rOut, a0), true));
+        } else {
+            cs.add(new Segment2(polar(rIn, a0), polar(rOut, a0)));
+        }
+        return new Profile.General(Contour.of(cs, Tolerance.DRAWING), ContourOffsetter.EXACT);
+    }
+
+    private static Vec2 polar(double r, double a) {
+        return new Vec2(r * Math.cos(a), r * Math.sin(a));
     }
 
     /**

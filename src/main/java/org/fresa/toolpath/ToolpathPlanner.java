@@ -321,7 +321,7 @@ public final class ToolpathPlanner {
                         tool,
                         tooling,
                         h,
-                        slotLength(f),
+                        slotCourse(f),
                         axial,
                         tol,
                         problems,
@@ -591,7 +591,8 @@ public final class ToolpathPlanner {
         org.fresa.stepnc.TravelPath path =
                 f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
         if (!path.entity().equals("LINEAR_PATH")) {
-            throw new UnsupportedOperationException("slots along a " + path.entity() + " are not supported yet");
+            throw new UnsupportedOperationException("slots along a " + path.entity() + " are not machined: the"
+                    + " planner follows a LINEAR_PATH or a CIRCULAR_PATH course of travel only");
         }
         double length =
                 path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
@@ -602,9 +603,43 @@ public final class ToolpathPlanner {
         return length;
     }
 
-    /** The slot's middle, x along its path, z the feature's axis, in the feature frame. */
+    /** The slot's course of travel in its slot frame ({@link #slotFrame}). */
+    static SlotMilling.Course slotCourse(Feature f) {
+        org.fresa.stepnc.TravelPath path =
+                f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
+        if (path.entity().equals("CIRCULAR_PATH")) {
+            return new SlotMilling.Course.Arc(
+                    path.radiusMm()
+                            .orElseThrow(() -> new IllegalArgumentException("the slot's circular path has no radius")),
+                    path.sweepAngle()
+                            .orElseThrow(
+                                    () -> new IllegalArgumentException("the slot's circular path has no sweep_angle")));
+        }
+        return new SlotMilling.Course.Straight(slotLength(f));
+    }
+
+    /**
+     * The slot's frame in the feature frame, z the feature's axis: along a linear path, its
+     * middle with x along the path; along a circular path, the circle's centre (the path's
+     * placement) with x towards the path's start.
+     */
     static Transform3 slotFrame(Feature f) {
         org.fresa.stepnc.TravelPath path = f.courseOfTravel().orElseThrow();
+        if (path.entity().equals("CIRCULAR_PATH")) {
+            if (path.placement().zAxis().cross(Vec3.UNIT_Z).norm() > 1e-9) {
+                throw new UnsupportedOperationException(
+                        "the slot's circular path is not square to the feature's axis: its axis is "
+                                + axis(path.placement().zAxis()));
+            }
+            Vec3 x = path.placement().applyToDirection(Vec3.UNIT_X);
+            if (path.placement().zAxis().z() < 0) {
+                // a path turning about -z sweeps clockwise seen from the tool: its frame is mirrored
+                throw new UnsupportedOperationException("the slot's circular path turns about the feature's -z axis");
+            }
+            Vec3 centre = path.placement().applyToPoint(Vec3.ZERO);
+            return Transform3.ofFrame(
+                    new Vec3(centre.x(), centre.y(), 0), Vec3.UNIT_Z, new Vec3(x.x(), x.y(), 0).normalized());
+        }
         Vec3 dir = path.placement().applyToDirection(path.direction().orElse(Vec3.UNIT_X));
         Vec3 along = new Vec3(dir.x(), dir.y(), 0);
         if (along.norm() < 1e-9) {
@@ -1080,6 +1115,14 @@ public final class ToolpathPlanner {
     /**
      * The section starting and ending on the security plane: its first and last points moved
      * along the plane's normal onto it, joined to the section by rapids.
+     *
+     * <p>A tool whose axis points against the plane's normal works from the far side of the part
+     * (the underside of a part whose security plane is above it): the straight link from its
+     * retract point to the plane would cross the whole part, and no link through the plane
+     * reaches it. Such a workingstep needs the part turned over, in another setup, and is refused
+     * with that reason.
+     *
+     * @throws IllegalArgumentException for a tool axis against the plane's normal
      */
     static ToolpathSection viaSecurityPlane(ToolpathSection s, Optional<Transform3> plane) {
         if (plane.isEmpty()) {
@@ -1087,6 +1130,12 @@ public final class ToolpathPlanner {
         }
         Vec3 o = plane.get().translationPart();
         Vec3 n = plane.get().zAxis();
+        if (s.toolAxis().dot(n) < -AXIS_TOLERANCE) {
+            throw new IllegalArgumentException("tool axis " + axis(s.toolAxis())
+                    + " works from the far side of the part, against the security plane's normal " + axis(n)
+                    + ": the link through the security plane would cross the part; it needs the part turned"
+                    + " over, in another setup");
+        }
         Vec3 first = s.start();
         Vec3 last = s.moves().isEmpty()
                 ? first
@@ -1099,5 +1148,15 @@ public final class ToolpathPlanner {
         moves.add(new Move.Rapid(out));
         return new ToolpathSection(
                 s.label(), s.toolAxis(), s.toolDiameterMm(), s.toolNumber(), s.spindleRpm(), in, moves);
+    }
+
+    /** How far from the plane's side an axis may lean and still be read as square to the normal. */
+    static final double AXIS_TOLERANCE = 1e-9;
+
+    /** An axis as the listings write it: "(0, 0, -1)". */
+    public static String axis(Vec3 a) {
+        return "(" + org.fresa.model.ExactDecimal.of(Math.round(a.x() * 1e4) / 1e4 + 0.0) + ", "
+                + org.fresa.model.ExactDecimal.of(Math.round(a.y() * 1e4) / 1e4 + 0.0) + ", "
+                + org.fresa.model.ExactDecimal.of(Math.round(a.z() * 1e4) / 1e4 + 0.0) + ")";
     }
 }
