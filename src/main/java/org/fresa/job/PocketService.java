@@ -220,7 +220,7 @@ public final class PocketService {
                             + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
                             + "written by fresa pocket or Job > Run with a post other than 7m");
         }
-        Recognition.Result rec = Recognition.of(profile);
+        Recognition.Result rec = Recognition.of(faithful ? profile : profile.withUnitNormals());
         return PassPlanner.plan(rec, tech, faithful);
     }
 

@@ -38,6 +38,36 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
         return mean > 0 ? 1e-4 * mean : 1e-6;
     }
 
+    /**
+     * The same contour with every line's (A, B) of unit length. An offset moves a line's D by the
+     * offset, which is a distance only for a unit normal: the thesis's files do not always write
+     * one (cavity 01's element 4, {@code .7 -.75 30}, has |(A, B)| = 1.026, so its finishing pass
+     * would stand 2.924 mm from that wall for a 3 mm radius and cut 0.076 mm into it). The
+     * thesis's own printed programs keep the raw coefficients; every other program is planned on
+     * this one. Normals within {@link #UNIT_NORMAL_SLACK} of unit length (seven printed digits)
+     * are kept as written.
+     */
+    public PocketProfile withUnitNormals() {
+        List<PocketElement> out = new ArrayList<>(elements.size());
+        boolean changed = false;
+        for (PocketElement e : elements) {
+            double n = e.normalLength();
+            if (e.arc() || !(n > 0) || Math.abs(n - 1) <= UNIT_NORMAL_SLACK) {
+                out.add(e);
+                continue;
+            }
+            changed = true;
+            out.add(new PocketElement(e.number(), false, e.a() / n, e.b() / n, e.d() / n, e.k(), e.selector()));
+        }
+        return changed ? new PocketProfile(out, compar, islands) : this;
+    }
+
+    /**
+     * How far a line's |(A, B)| may be from 1 and be taken as a unit normal: the thesis's files
+     * write seven digits, which leaves about 1e-7 (0.3 nm of a 3 mm offset).
+     */
+    static final double UNIT_NORMAL_SLACK = 1e-6;
+
     /** Junction points at t = 0: index i is the start of element i. */
     public List<Vec2> vertices() {
         List<Vec2> out = new ArrayList<>();
