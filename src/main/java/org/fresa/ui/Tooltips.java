@@ -116,6 +116,25 @@ final class Tooltips {
                 "Pocket",
                 PocketViewModel.CENTRE_CUTTING,
                 "The cutter cuts at its centre (a slot drill): it may plunge" + " straight down");
+        tip(
+                "Pocket",
+                PocketViewModel.STRATEGY,
+                "How the floor is cleared: offset (passes parallel to the walls) or zigzag (parallel lines at"
+                        + " the zigzag angle); the finishing pass follows the walls either way. The 7M posts"
+                        + " write offset passes only");
+        tip(
+                "Pocket",
+                PocketViewModel.ANGLE,
+                "Direction of the zigzag lines, degrees from the x axis (-180 to 180); zigzag only");
+        tip(
+                "Pocket",
+                PocketViewModel.STOCK_TO_LEAVE,
+                "Material left on the walls, islands and floor for a later finish (mm, 0 to 10; 0 mills to" + " size)");
+        tip(
+                "Pocket",
+                PocketViewModel.ORDER,
+                "Order of the offset passes: from the pocket's middle out to the walls (inside-out) or from"
+                        + " the walls in (outside-in); the finishing pass is last either way");
         tip("Cutting", "Kerf (mm):", "Full width of the cut (mm): the path runs half of it off the part");
         tip("Cutting", "Process:", "The cutting process: sets the default speeds, pierce and cut senses");
         tip("Cutting", "Lead-in (mm):", "Length of the approach from the pierce point to the contour (mm)");

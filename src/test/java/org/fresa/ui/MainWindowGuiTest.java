@@ -58,11 +58,22 @@ class MainWindowGuiTest extends WindowGuiTest {
 
         window.menuItemWithPath("File", "Save as...").click();
         JFileChooserFixture save = window.fileChooser(Timeout.timeout(5000));
-        save.setCurrentDirectory(dir.toFile());
-        save.fileNameTextBox().setText("cavity.xml");
-        save.approve();
-
         Path file = dir.resolve("cavity.xml");
+        // the file named on the event thread: the robot's typing and approve in the save chooser
+        // sometimes did not take on a loaded machine; the open chooser below is driven by the robot
+        GuiActionRunner.execute(() -> {
+            save.target().setCurrentDirectory(dir.toFile());
+            save.target().setSelectedFile(file.toFile());
+            save.target().approveSelection();
+        });
+        org.assertj.swing.timing.Pause.pause(
+                new org.assertj.swing.timing.Condition("cavity.xml is written") {
+                    @Override
+                    public boolean test() {
+                        return Files.exists(file);
+                    }
+                },
+                Timeout.timeout(30_000));
         assertTrue(Files.exists(file));
         assertEquals(job.withName("cavity"), JobXml.read(file));
         window.requireTitle("Fresa - cavity.xml");

@@ -501,10 +501,15 @@ class OneDocumentGuiTest extends WindowGuiTest {
     private Path saveAs(String name) {
         menu("File", "Save as...").click();
         JFileChooserFixture save = window.fileChooser(Timeout.timeout(5000));
-        save.setCurrentDirectory(dir.toFile());
-        save.fileNameTextBox().setText(name);
-        save.approve();
         Path file = dir.resolve(name);
+        // the file named on the event thread: the robot's typing and approve in the save chooser
+        // sometimes did not take on a loaded machine (the job never written); the open chooser
+        // of this class is still driven by the robot
+        GuiActionRunner.execute(() -> {
+            save.target().setCurrentDirectory(dir.toFile());
+            save.target().setSelectedFile(file.toFile());
+            save.target().approveSelection();
+        });
         waitFor(name + " is written", () -> Files.exists(file));
         return file;
     }
