@@ -381,24 +381,7 @@ public final class RegionPocket {
             pending.remove(c);
             cutSubtree(c, order, cursor);
         }
-        List<Contour> loops = new ArrayList<>();
-        loops.add(f.outer());
-        loops.addAll(f.holes());
-        while (!loops.isEmpty()) {
-            int best = 0;
-            double bestD = Double.POSITIVE_INFINITY;
-            for (int i = 0; i < loops.size() && cursor[0] != null; i++) {
-                double dd = loops.get(i).distanceTo(cursor[0]);
-                if (dd < bestD) {
-                    bestD = dd;
-                    best = i;
-                }
-            }
-            Contour l = loops.remove(best);
-            Contour started = cursor[0] == null ? l : startedNear(l, cursor[0]);
-            order.add(new Cut(f.level(), started));
-            cursor[0] = started.get(0).start();
-        }
+        loopsNearestFirst(f, order, cursor);
     }
 
     /**
