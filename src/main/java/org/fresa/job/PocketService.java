@@ -187,20 +187,7 @@ public final class PocketService {
 
     /** The technology of the settings. */
     static PocketTechnology technology(PocketSettings s) throws CamInputException {
-        try {
-            return new PocketTechnology(
-                    s.toolDiameterMm(),
-                    s.cutFraction(),
-                    s.finishFraction(),
-                    s.zTopMm(),
-                    s.zBottomMm(),
-                    s.maxDepthPerPassMm(),
-                    s.spindleRpm(),
-                    s.feedMmPerMin(),
-                    s.finishFeedMmPerMin());
-        } catch (IllegalArgumentException e) {
-            throw new CamInputException("technology", e.getMessage());
-        }
+        return technology(s, s.zBottomMm());
     }
 
     /** The plan for the settings (no file written). */
