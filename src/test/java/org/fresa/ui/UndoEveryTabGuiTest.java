@@ -44,9 +44,14 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
             window.button("stepnc-open").click();
             JFileChooserFixture fc = window.fileChooser(Timeout.timeout(10_000));
             Path other = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
-            fc.setCurrentDirectory(other.getParent().toFile());
-            fc.selectFile(other.toFile());
-            fc.approve();
+            // the file chosen on the event thread: the robot's select and approve in the chooser
+            // sometimes did not take in a loaded run (the job never changed); this test is about
+            // undo, and OneDocumentGuiTest drives an open chooser by the robot
+            GuiActionRunner.execute(() -> {
+                fc.target().setCurrentDirectory(other.getParent().toFile());
+                fc.target().setSelectedFile(other.toFile());
+                fc.target().approveSelection();
+            });
         });
         waitUntilNoTaskRuns();
         // after the last redo the tab shows the file the job has
