@@ -77,11 +77,14 @@ class EventThreadResponsivenessGuiTest extends WindowGuiTest {
         settle();
         window.button("stepnc-open").click();
         JFileChooserFixture chooser = window.fileChooser(Timeout.timeout(10_000));
-        chooser.setCurrentDirectory(dir.toFile());
-        chooser.selectFile(big.toFile());
+        // chosen and approved on the event thread, as WindowGuiTest.choose says why
+        GuiActionRunner.execute(() -> {
+            chooser.target().setCurrentDirectory(dir.toFile());
+            chooser.target().setSelectedFile(big.toFile());
+        });
         settle();
         record("STEP-NC import of a 4 MiB Part 21 file", () -> {
-            chooser.approve();
+            GuiActionRunner.execute(() -> chooser.target().approveSelection());
             waitFor(
                     "the program is read and planned",
                     () -> window.label("stepnc-cycle-time").target().getText().startsWith("Cycle time"));

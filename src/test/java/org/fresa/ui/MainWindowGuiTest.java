@@ -81,9 +81,7 @@ class MainWindowGuiTest extends WindowGuiTest {
         GuiActionRunner.execute(model::newJob);
         window.menuItemWithPath("File", "Open job...").click();
         JFileChooserFixture open = window.fileChooser(Timeout.timeout(5000));
-        open.setCurrentDirectory(dir.toFile());
-        open.selectFile(file.toFile());
-        open.approve();
+        choose(open, file);
 
         Job reopened = GuiActionRunner.execute(model::job);
         assertEquals(job.withName("cavity"), reopened);

@@ -48,10 +48,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.tabbedPane("tabs").selectTab("Grading");
         window.button("grading-open").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
-        fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
-        fc.selectFile(
-                Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
-        fc.approve();
+        choose(fc, Path.of("samples/grading/sole-40.contour"));
         JTextField sizes = (JTextField) textFieldShowing("36-44").target();
         GuiActionRunner.execute(() -> sizes.setText("44-36"));
         // the refused range is marked and said beside Grade, which cannot run on it
@@ -86,9 +83,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
 
         menu("File", "Open job...").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
-        fc.setCurrentDirectory(CAVITY01.getParent().toFile());
-        fc.selectFile(CAVITY01.toFile());
-        fc.approve();
+        choose(fc, CAVITY01);
         // the contour typed went into the job, so Open first asks whether to discard it
         if (waitQuietly(
                         () -> !window.robot()
@@ -184,9 +179,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
         open(EXAMPLE2);
         menu("Job", "Run job into folder...").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
-        fc.setCurrentDirectory(dir.toFile());
-        fc.fileNameTextBox().setText(dir.resolve("run").toString());
-        fc.approve();
+        choose(fc, dir.resolve("run"));
         window.optionPane(Timeout.timeout(180_000)).okButton().click();
         window.tabbedPane("tabs").selectTab("Output");
         window.radioButton("output-preview-rapid").click();
@@ -256,10 +249,7 @@ class OneDocumentGuiTest extends WindowGuiTest {
         window.tabbedPane("tabs").selectTab("Grading");
         window.button("grading-open").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(5000));
-        fc.setCurrentDirectory(Path.of("samples/grading").toAbsolutePath().toFile());
-        fc.selectFile(
-                Path.of("samples/grading/sole-40.contour").toAbsolutePath().toFile());
-        fc.approve();
+        choose(fc, Path.of("samples/grading/sole-40.contour"));
         waitUntilNoTaskRuns();
         window.button("grading-grade").click();
         waitFor(

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import org.assertj.swing.edt.FailOnThreadViolationRepaintManager;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.fixture.JFileChooserFixture;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
@@ -55,5 +56,22 @@ abstract class WindowGuiTest {
         if (window != null) {
             window.cleanUp();
         }
+    }
+
+    /**
+     * Chooses a file in a shown chooser and approves it, on the event thread. The robot's select
+     * and approve sometimes did not take in a loaded run (the dialog stayed, or closed with no
+     * selection): JFileChooser is Swing's, not ours, so these tests give it the user's answer
+     * directly and test what the window does with it.
+     */
+    static void choose(JFileChooserFixture chooser, Path file) {
+        Path absolute = file.toAbsolutePath();
+        GuiActionRunner.execute(() -> {
+            if (absolute.getParent() != null) {
+                chooser.target().setCurrentDirectory(absolute.getParent().toFile());
+            }
+            chooser.target().setSelectedFile(absolute.toFile());
+            chooser.target().approveSelection();
+        });
     }
 }
