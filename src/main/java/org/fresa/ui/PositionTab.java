@@ -175,6 +175,8 @@ final class PositionTab implements ModuleTab {
         results.setPreferredSize(new java.awt.Dimension(430, 420));
         jointsChart.onDrawn(this::plotDrawn);
         errorChart.onDrawn(this::plotDrawn);
+        zoomable(jointsChart, true);
+        zoomable(errorChart, false);
         results.addChangeListener(
                 e -> plotInView = results.getSelectedComponent() instanceof OffThreadChartPanel p ? p : null);
         plotInView = jointsChart;
@@ -734,6 +736,31 @@ final class PositionTab implements ModuleTab {
             org.jfree.chart.JFreeChart chart = joints ? drawnCharts.joints(c, point) : drawnCharts.errors(c, point);
             TrajectoryCharts.Screen.show(chart, view);
             return chart;
+        });
+    }
+
+    /**
+     * Zoom with the mouse wheel or a drag, back to the whole trajectory with Home (a click in the
+     * plot gives it the keyboard).
+     */
+    private void zoomable(OffThreadChartPanel p, boolean joints) {
+        p.setMouseWheelEnabled(true);
+        p.setFocusable(true);
+        p.setToolTipText("wheel: zoom, drag: zoom to the box, Home: the whole trajectory again");
+        p.addMouseListener(new java.awt.event.MouseAdapter() {
+            @Override
+            public void mousePressed(java.awt.event.MouseEvent e) {
+                p.requestFocusInWindow();
+            }
+        });
+        p.getInputMap(JComponent.WHEN_FOCUSED).put(javax.swing.KeyStroke.getKeyStroke("HOME"), "unzoom");
+        p.getActionMap().put("unzoom", new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                shownCharts.unzoom(joints);
+            }
         });
     }
 

@@ -8,6 +8,7 @@ import org.fresa.chart.RobotCharts;
 import org.fresa.job.ErrorStatistics;
 import org.fresa.job.RobotTrajectoryService;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
 import org.jfree.chart.plot.CombinedDomainXYPlot;
 import org.jfree.chart.plot.ValueMarker;
@@ -116,6 +117,13 @@ final class TrajectoryCharts {
      * its own.
      */
     static final class Screen {
+        /**
+         * The smallest span (um) of the error axis: about the spacing of doubles at a metre (1.1e-10
+         * um), so that errors that are all rounding still get an axis of their own size instead of
+         * JFreeChart's default of 1e-8, and all-zero errors an axis at all.
+         */
+        static final double MIN_ERROR_SPAN_UM = 1e-10;
+
         /** An axis's range in a {@link #view}: its automatic range, or not. */
         private static final String AUTO = "auto";
 
@@ -169,6 +177,7 @@ final class TrajectoryCharts {
                 errorsSubtitled = !subtitle.isEmpty();
                 thin(errors.getXYPlot());
                 errors.getXYPlot().addDomainMarker(errorsMarker);
+                ((NumberAxis) errors.getXYPlot().getRangeAxis()).setAutoRangeMinimumSize(MIN_ERROR_SPAN_UM);
                 errorsHome = view(errors);
             }
             errors.setNotify(false);
@@ -213,6 +222,14 @@ final class TrajectoryCharts {
                 } else if (!a.isAutoRange()) {
                     a.setAutoRange(true);
                 }
+            }
+        }
+
+        /** Shows the whole trajectory again in the chart (the joints or the errors) after a zoom. */
+        void unzoom(boolean ofJoints) {
+            JFreeChart c = ofJoints ? joints : errors;
+            if (c != null) {
+                show(c, ofJoints ? jointsHome : errorsHome);
             }
         }
 
