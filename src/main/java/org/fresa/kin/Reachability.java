@@ -167,10 +167,9 @@ public final class Reachability {
         DenavitHartenbergChain chain = ((SerialRobot) robot).chain();
         Pose.fromTransform(target, pose, 0);
         List<double[]> inLimits = new ArrayList<>();
-        for (double[] s : closed.get().solutions(pose, false)) {
-            if (withinLimits(chain, s)) {
-                inLimits.add(chain.toUser(s));
-            }
+        // a closed-form value on a limit up to rounding is on it
+        for (double[] s : closed.get().solutionsWithinLimits(pose, 1e-9)) {
+            inLimits.add(chain.toUser(s));
         }
         while (!inLimits.isEmpty()) {
             double[] seed = nearest(inLimits, prev);
@@ -180,16 +179,6 @@ public final class Reachability {
             inLimits.remove(seed);
         }
         return null;
-    }
-
-    private static boolean withinLimits(DenavitHartenbergChain chain, double[] s) {
-        for (int i = 0; i < s.length; i++) {
-            // a closed-form value on a limit up to rounding is on it
-            if (!(s[i] >= chain.qMin[i] - 1e-9 && s[i] <= chain.qMax[i] + 1e-9)) {
-                return false;
-            }
-        }
-        return true;
     }
 
     private static double[] nearest(List<double[]> qs, double[] prev) {

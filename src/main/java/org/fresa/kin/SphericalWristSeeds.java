@@ -72,6 +72,22 @@ final class SphericalWristSeeds implements ClosedFormSeeds {
      * with every other whole-turn variant within the limits too when {@code allTurns}.
      */
     List<double[]> solutions(double[] target, boolean allTurns) {
+        return solutions(target, allTurns, Double.NaN);
+    }
+
+    /**
+     * The closed-form solutions, each joint moved into its limits by whole turns where it can be,
+     * that then lie within the limits up to {@code rounding} (rad or mm): those of {@link
+     * #solutions(double[], boolean) solutions(target, false)} within the limits, in its order. The
+     * wrist of a shoulder and elbow already out of their limits is not worked out.
+     */
+    List<double[]> solutionsWithinLimits(double[] target, double rounding) {
+        return solutions(target, false, rounding);
+    }
+
+    /** As above; a NaN rounding keeps the solutions out of the limits too. */
+    private List<double[]> solutions(double[] target, boolean allTurns, double rounding) {
+        boolean within = !Double.isNaN(rounding);
         double[] fl = new double[Pose.SIZE];
         Pose.mul(target, 0, toolInverse, 0, fl, 0);
         double wx = fl[3] - d6 * fl[2];
@@ -97,6 +113,9 @@ final class SphericalWristSeeds implements ClosedFormSeeds {
                 q[0] = t1 - chain.theta[0];
                 q[1] = t2 - chain.theta[1];
                 q[2] = t3 - chain.theta[2];
+                if (within && !armWithinLimits(q, rounding)) {
+                    continue;
+                }
                 chain.frames(q, f, 3);
                 // N = R3^T R_flange diag(1, -1, -1) = Rz(t4) Ry(-t5) Rz(-t6)
                 int o = 3 * Pose.SIZE;
@@ -124,13 +143,39 @@ final class SphericalWristSeeds implements ClosedFormSeeds {
                     }
                     if (allTurns) {
                         addTurns(s, 0, out);
-                    } else {
+                    } else if (!within || withinLimits(s, rounding)) {
                         out.add(s);
                     }
                 }
             }
         }
         return out;
+    }
+
+    /**
+     * Whether the first three joints of q, each moved into its limits as {@link #solutions} moves
+     * it, lie within their limits up to rounding.
+     */
+    private boolean armWithinLimits(double[] q, double rounding) {
+        for (int i = 0; i < 3; i++) {
+            if (!within(i, intoLimits(i, q[i]), rounding)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean withinLimits(double[] s, double rounding) {
+        for (int i = 0; i < s.length; i++) {
+            if (!within(i, s[i], rounding)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean within(int i, double v, double rounding) {
+        return v >= chain.qMin[i] - rounding && v <= chain.qMax[i] + rounding;
     }
 
     /** s and its whole-turn variants from joint {@code from} on, into out. */

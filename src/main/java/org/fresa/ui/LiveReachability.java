@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BiConsumer;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import org.fresa.geom.Transform3;
@@ -95,7 +97,7 @@ final class LiveReachability {
 
     private final AtomicLong generation = new AtomicLong();
     private final Consumer<Answer> show;
-    private final Consumer<Charted> showCharts;
+    private final BiConsumer<Charted, BooleanSupplier> plots;
     private final Consumer<String> failed;
     private Inputs last;
 
@@ -106,12 +108,14 @@ final class LiveReachability {
 
     /**
      * @param show runs on the event thread with each answer still wanted
-     * @param showCharts runs on the event thread with the plots of the answer shown last, if still wanted
+     * @param plots runs on the background thread, right after the answer is handed to the event
+     *     thread, with the answer's plot data and whether it is no longer wanted: it makes the plots
+     *     ready while the event thread shows the answer, and shows them on the event thread after it
      * @param failed runs on the event thread when the file or robot cannot be read or planned
      */
-    LiveReachability(Consumer<Answer> show, Consumer<Charted> showCharts, Consumer<String> failed) {
+    LiveReachability(Consumer<Answer> show, BiConsumer<Charted, BooleanSupplier> plots, Consumer<String> failed) {
         this.show = show;
-        this.showCharts = showCharts;
+        this.plots = plots;
         this.failed = failed;
     }
 
@@ -201,11 +205,7 @@ final class LiveReachability {
             TrajectoryCharts c = TrajectoryCharts.of(s);
             Charted charted = new Charted(
                     in, c, changed, a.phases().posted(), System.nanoTime(), cpu1 < 0 ? -1 : cpuNanos() - cpu1);
-            SwingUtilities.invokeLater(() -> {
-                if (!stale(gen)) {
-                    showCharts.accept(charted);
-                }
-            });
+            plots.accept(charted, () -> stale(gen));
         } catch (org.fresa.model.CamInputException | java.io.IOException | RuntimeException e) {
             plannedKey = null;
             String message = e.getMessage();

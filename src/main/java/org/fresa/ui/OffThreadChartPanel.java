@@ -9,6 +9,8 @@ import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 import org.jfree.chart.ChartPanel;
@@ -62,6 +64,8 @@ final class OffThreadChartPanel extends ChartPanel {
     private transient Runnable onDrawn = () -> {};
     private transient Drawn lastDrawn;
     private String placeholder;
+    // the size of the image the last paint asked for: that of an image drawn ahead of its paint
+    private transient volatile Size lastSize;
 
     /**
      * When (System.nanoTime) the last image's steps ended, and the drawing thread's CPU time (ns,
@@ -69,6 +73,35 @@ final class OffThreadChartPanel extends ChartPanel {
      * chart built, the image drawn, shown on the event thread.
      */
     record Drawn(long asked, long started, long built, long drawn, long shown, long buildCpuNanos, long drawCpuNanos) {}
+
+    /** The chart size (pixels) and screen scale an image is drawn at. */
+    private record Size(int width, int height, double scale) {}
+
+    /** An image drawn on the drawing thread, with the areas of the chart in it and its times. */
+    private record Rendered(
+            BufferedImage image,
+            ChartRenderingInfo info,
+            long started,
+            long built,
+            long drawn,
+            long buildCpuNanos,
+            long drawCpuNanos) {}
+
+    /**
+     * A picture drawn ahead of the paint that shows it ({@link #prepare}), to be given to the
+     * panel with {@link #install} on the event thread.
+     */
+    static final class Prepared {
+        private final Object key;
+        private final Rendered rendered;
+        private final long asked;
+
+        private Prepared(Object key, Rendered rendered, long asked) {
+            this.key = key;
+            this.rendered = rendered;
+            this.asked = asked;
+        }
+    }
 
     /** picture is asked on the event thread at every paint; null means nothing to draw. */
     OffThreadChartPanel(JFreeChart chart, Supplier<Picture> picture) {
@@ -98,6 +131,7 @@ final class OffThreadChartPanel extends ChartPanel {
         int w = chartSize.width;
         int h = chartSize.height;
         double scale = g2.getTransform().getScaleX();
+        lastSize = new Size(w, h, scale);
         Picture p = picture.get();
         if (p != null) {
             Object key = List.of(p.key(), w, h, scale);
@@ -132,6 +166,12 @@ final class OffThreadChartPanel extends ChartPanel {
             // a newer picture was asked for while this one waited
             return;
         }
+        Rendered r = render(p, w, h, scale);
+        SwingUtilities.invokeLater(() -> show(r.image(), key, r.info(), drawn(r, asked)));
+    }
+
+    /** Builds the picture's chart and draws it into an image of w x h at the scale (drawing thread). */
+    private static Rendered render(Picture p, int w, int h, double scale) {
         long started = System.nanoTime();
         long cpu0 = LiveReachability.cpuNanos();
         JFreeChart c = p.build();
@@ -150,27 +190,70 @@ final class OffThreadChartPanel extends ChartPanel {
         g2.dispose();
         long drawn = System.nanoTime();
         long cpu2 = LiveReachability.cpuNanos();
-        SwingUtilities.invokeLater(() -> show(
-                img,
-                key,
-                info,
-                new Drawn(
-                        asked,
-                        started,
-                        built,
-                        drawn,
-                        System.nanoTime(),
-                        cpu0 < 0 ? -1 : cpu1 - cpu0,
-                        cpu0 < 0 ? -1 : cpu2 - cpu1)));
+        return new Rendered(img, info, started, built, drawn, cpu0 < 0 ? -1 : cpu1 - cpu0, cpu0 < 0 ? -1 : cpu2 - cpu1);
+    }
+
+    private static Drawn drawn(Rendered r, long asked) {
+        return new Drawn(
+                asked, r.started(), r.built(), r.drawn(), System.nanoTime(), r.buildCpuNanos(), r.drawCpuNanos());
+    }
+
+    /**
+     * Draws a picture on the drawing thread at the size of the panel's last paint, before the
+     * event thread shows it: while the event thread paints something else, the picture is made,
+     * and its own paint then only copies it. Then runs on the event thread with the image, or
+     * with null when the panel has not been painted yet (its first paint draws the picture) or
+     * when {@code stale} says, before the drawing, that it is no longer wanted. Any thread.
+     */
+    void prepare(Picture p, BooleanSupplier stale, Consumer<Prepared> then) {
+        long asked = System.nanoTime();
+        Size s = lastSize;
+        if (s == null) {
+            SwingUtilities.invokeLater(() -> then.accept(null));
+            return;
+        }
+        DRAWING.execute(() -> {
+            Prepared d = stale.getAsBoolean()
+                    ? null
+                    : new Prepared(
+                            List.of(p.key(), s.width(), s.height(), s.scale()),
+                            render(p, s.width(), s.height(), s.scale()),
+                            asked);
+            SwingUtilities.invokeLater(() -> then.accept(d));
+        });
+    }
+
+    /**
+     * Takes an image drawn ahead ({@link #prepare}) as the panel's (event thread): its next paint
+     * copies it when it shows the picture drawn and the panel has kept its size, else it draws anew.
+     */
+    void install(Prepared d) {
+        Rendered r = d.rendered;
+        if (d.key.equals(pendingKey)) {
+            pendingKey = null;
+        }
+        take(r.image(), d.key, r.info(), drawn(r, d.asked));
+        repaint();
     }
 
     private void show(BufferedImage img, Object key, ChartRenderingInfo drawn, Drawn times) {
-        lastDrawn = times;
-        image = img;
-        imageKey = key;
+        if (!key.equals(pendingKey) && isUpToDate()) {
+            // an older picture, drawn while the one on screen was installed ahead of it
+            return;
+        }
         if (key.equals(pendingKey)) {
             pendingKey = null;
         }
+        take(img, key, drawn, times);
+        repaint();
+        onDrawn.run();
+    }
+
+    /** The image on screen, and the chart and data areas of it, for the zoom and the pixel-to-value mapping. */
+    private void take(BufferedImage img, Object key, ChartRenderingInfo drawn, Drawn times) {
+        lastDrawn = times;
+        image = img;
+        imageKey = key;
         ChartRenderingInfo mine = getChartRenderingInfo();
         mine.clear();
         mine.setChartArea(drawn.getChartArea());
@@ -183,8 +266,6 @@ final class OffThreadChartPanel extends ChartPanel {
             sub.setDataArea(drawn.getPlotInfo().getSubplotInfo(i).getDataArea());
             pi.addSubplotInfo(sub);
         }
-        repaint();
-        onDrawn.run();
     }
 
     /** The times of the image on screen, or null before the first (tests and the timing log read them). */

@@ -75,7 +75,12 @@ final class PositionTab implements ModuleTab {
     private String drawnRobot = "";
     private final JLabel reach = new JLabel(" ");
     private final transient LiveReachability live =
-            new LiveReachability(this::showLive, this::showLiveCharts, this::liveFailed);
+            new LiveReachability(this::showLive, this::prepareLive, this::liveFailed);
+    // the plot in view (null for the summary) and what each plot's zoom shows, as of the last
+    // paint: the background thread draws the next answer's plot with them
+    private transient volatile OffThreadChartPanel plotInView;
+    private transient volatile java.util.List<Object> jointsView;
+    private transient volatile java.util.List<Object> errorsView;
     // the time from a change to the 3D view painted with its reachability, and to the plot drawn (tests read them)
     private final java.util.List<Double> viewLatenciesMs = new java.util.ArrayList<>();
     private final java.util.List<Double> plotLatenciesMs = new java.util.ArrayList<>();
@@ -170,6 +175,11 @@ final class PositionTab implements ModuleTab {
         results.setPreferredSize(new java.awt.Dimension(430, 420));
         jointsChart.onDrawn(this::plotDrawn);
         errorChart.onDrawn(this::plotDrawn);
+        zoomable(jointsChart, true);
+        zoomable(errorChart, false);
+        results.addChangeListener(
+                e -> plotInView = results.getSelectedComponent() instanceof OffThreadChartPanel p ? p : null);
+        plotInView = jointsChart;
 
         JSplitPane views = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, cell, results);
         views.setResizeWeight(0.6);
@@ -424,15 +434,59 @@ final class PositionTab implements ModuleTab {
         });
     }
 
-    /** The plots of the live answer shown, made after it. */
-    private void showLiveCharts(LiveReachability.Charted c) {
+    /**
+     * Runs on the background thread with the plots' data of a live answer just handed to the event
+     * thread: the plot in view is drawn now, while the event thread paints the 3D view, and its
+     * image is shown with the data.
+     */
+    private void prepareLive(LiveReachability.Charted c, java.util.function.BooleanSupplier stale) {
+        OffThreadChartPanel panel = plotInView;
+        java.util.List<Object> view = panel == jointsChart ? jointsView : errorsView;
+        if (panel == null || view == null) {
+            javax.swing.SwingUtilities.invokeLater(() -> showLiveCharts(c, null, null));
+            return;
+        }
+        // the answer shown replays its first point
+        OffThreadChartPanel.Picture p = pictureOf(c.charts(), panel == jointsChart, 1, view);
+        panel.prepare(p, stale, d -> showLiveCharts(c, panel, d));
+    }
+
+    /**
+     * The plots of the live answer shown, made after it; the image of the plot in view, drawn
+     * ahead (or null), is copied to the screen at once when it shows what the panel shows now.
+     */
+    private void showLiveCharts(
+            LiveReachability.Charted c, OffThreadChartPanel panel, OffThreadChartPanel.Prepared drawn) {
         if (!c.inputs().equals(shownInputs)) {
             return;
         }
+        plotArrivedNanos = System.nanoTime();
         showCharts(c.charts());
         plotAskedNanos = c.changedNanos();
         plotAsked = c;
-        plotArrivedNanos = System.nanoTime();
+        if (drawn == null || panel != results.getSelectedComponent()) {
+            return;
+        }
+        panel.install(drawn);
+        if (panel.isUpToDate()) {
+            panel.paintImmediately(0, 0, panel.getWidth(), panel.getHeight());
+            long shown = System.nanoTime();
+            plotLatenciesMs.add((shown - c.changedNanos()) / 1e6);
+            plotAskedNanos = -1;
+            OffThreadChartPanel.Drawn d = panel.lastDrawn();
+            plotSplitsMs.add(new double[] {
+                (c.postedNanos() - c.changedNanos()) / 1e6,
+                (c.madeNanos() - c.postedNanos()) / 1e6,
+                (d.started() - c.madeNanos()) / 1e6,
+                (d.built() - d.started()) / 1e6,
+                (d.drawn() - d.built()) / 1e6,
+                (plotArrivedNanos - d.drawn()) / 1e6,
+                (shown - plotArrivedNanos) / 1e6,
+                c.cpuNanos() / 1e6,
+                d.buildCpuNanos() / 1e6,
+                d.drawCpuNanos() / 1e6
+            });
+        }
     }
 
     private void liveFailed(String message) {
@@ -451,15 +505,15 @@ final class PositionTab implements ModuleTab {
             OffThreadChartPanel.Drawn d = shown.lastDrawn();
             LiveReachability.Charted c = plotAsked;
             if (d != null && c != null) {
+                // drawn at the panel's paint after the data arrived (no image drawn ahead)
                 plotSplitsMs.add(new double[] {
                     (c.postedNanos() - c.changedNanos()) / 1e6,
                     (c.madeNanos() - c.postedNanos()) / 1e6,
-                    (plotArrivedNanos - c.madeNanos()) / 1e6,
-                    (d.asked() - plotArrivedNanos) / 1e6,
-                    (d.started() - d.asked()) / 1e6,
+                    (d.started() - c.madeNanos()) / 1e6,
                     (d.built() - d.started()) / 1e6,
                     (d.drawn() - d.built()) / 1e6,
                     (d.shown() - d.drawn()) / 1e6,
+                    0,
                     c.cpuNanos() / 1e6,
                     d.buildCpuNanos() / 1e6,
                     d.drawCpuNanos() / 1e6
@@ -513,10 +567,10 @@ final class PositionTab implements ModuleTab {
 
     /**
      * Where the time of each plot shown after a live answer went (ms): the answer itself (reach and
-     * scene, as for the 3D view), the plots' data on the worker, the wait for the event thread, until
-     * the panel's paint asks for the picture, the wait for the drawing thread, building the chart,
-     * drawing it, the wait for the event thread to show it; then the CPU time of the plots' data, of
-     * the chart's building and of its drawing.
+     * scene, as for the 3D view), the plots' data on the worker, the wait for the drawing thread,
+     * building the chart, drawing it, the wait for the event thread (it paints the 3D view
+     * meanwhile), showing the data and copying the image to the screen; then the CPU time of the
+     * plots' data, of the chart's building and of its drawing.
      */
     java.util.List<double[]> plotSplitsMs() {
         return java.util.List.copyOf(plotSplitsMs);
@@ -524,17 +578,7 @@ final class PositionTab implements ModuleTab {
 
     /** The names of {@link #plotSplitsMs()}'s figures, in order. */
     static final java.util.List<String> PLOT_SPLITS = java.util.List.of(
-            "answer",
-            "data",
-            "to-edt",
-            "to-paint",
-            "queue",
-            "build",
-            "draw",
-            "to-screen",
-            "data-cpu",
-            "build-cpu",
-            "draw-cpu");
+            "answer", "data", "to-draw", "build", "draw", "to-edt", "show", "data-cpu", "build-cpu", "draw-cpu");
 
     /** The times (ms) from each field change to the plot on screen drawn with its reachability. */
     java.util.List<Double> plotLatenciesMs() {
@@ -668,17 +712,56 @@ final class PositionTab implements ModuleTab {
         return p;
     }
 
-    /** The joints (or error) chart as it is shown now: the last result with the replayed point. */
+    /** The joints (or error) chart as it is shown now: the last result with the replayed point, as zoomed. */
     private OffThreadChartPanel.Picture picture(boolean joints) {
         TrajectoryCharts c = charts;
         if (c == null) {
             return null;
         }
-        double point = markedPoint;
-        java.util.List<Object> key = java.util.List.of(c, joints, point);
+        java.util.List<Object> view = TrajectoryCharts.Screen.view((joints ? jointsChart : errorChart).getChart());
+        if (joints) {
+            jointsView = view;
+        } else {
+            errorsView = view;
+        }
+        return pictureOf(c, joints, markedPoint, view);
+    }
+
+    /** The joints (or error) chart of c with the point marked (from 1), its axes showing the view. */
+    private OffThreadChartPanel.Picture pictureOf(
+            TrajectoryCharts c, boolean joints, double point, java.util.List<Object> view) {
+        java.util.List<Object> key = java.util.List.of(c, joints, point, view);
         // built on the drawing thread, the only one that touches drawnCharts
-        return new OffThreadChartPanel.Picture(
-                key, () -> joints ? drawnCharts.joints(c, point) : drawnCharts.errors(c, point));
+        return new OffThreadChartPanel.Picture(key, () -> {
+            org.jfree.chart.JFreeChart chart = joints ? drawnCharts.joints(c, point) : drawnCharts.errors(c, point);
+            TrajectoryCharts.Screen.show(chart, view);
+            return chart;
+        });
+    }
+
+    /**
+     * Zoom with the mouse wheel or a drag, back to the whole trajectory with Home (a click in the
+     * plot gives it the keyboard).
+     */
+    private void zoomable(OffThreadChartPanel p, boolean joints) {
+        p.setMouseWheelEnabled(true);
+        p.setFocusable(true);
+        p.setToolTipText("wheel: zoom, drag: zoom to the box, Home: the whole trajectory again");
+        p.addMouseListener(new java.awt.event.MouseAdapter() {
+            @Override
+            public void mousePressed(java.awt.event.MouseEvent e) {
+                p.requestFocusInWindow();
+            }
+        });
+        p.getInputMap(JComponent.WHEN_FOCUSED).put(javax.swing.KeyStroke.getKeyStroke("HOME"), "unzoom");
+        p.getActionMap().put("unzoom", new javax.swing.AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                shownCharts.unzoom(joints);
+            }
+        });
     }
 
     /**

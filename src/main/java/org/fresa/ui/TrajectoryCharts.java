@@ -8,6 +8,8 @@ import org.fresa.chart.RobotCharts;
 import org.fresa.job.ErrorStatistics;
 import org.fresa.job.RobotTrajectoryService;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.axis.NumberAxis;
+import org.jfree.chart.axis.ValueAxis;
 import org.jfree.chart.plot.CombinedDomainXYPlot;
 import org.jfree.chart.plot.ValueMarker;
 import org.jfree.chart.plot.XYPlot;
@@ -115,12 +117,24 @@ final class TrajectoryCharts {
      * its own.
      */
     static final class Screen {
+        /**
+         * The smallest span (um) of the error axis: about the spacing of doubles at a metre (1.1e-10
+         * um), so that errors that are all rounding still get an axis of their own size instead of
+         * JFreeChart's default of 1e-8, and all-zero errors an axis at all.
+         */
+        static final double MIN_ERROR_SPAN_UM = 1e-10;
+
+        /** An axis's range in a {@link #view}: its automatic range, or not. */
+        private static final String AUTO = "auto";
+
         private final boolean thin;
         private JFreeChart joints;
         private List<Object> jointPanels;
+        private List<Object> jointsHome;
         private final ValueMarker jointsMarker = marker();
         private JFreeChart errors;
         private boolean errorsSubtitled;
+        private List<Object> errorsHome;
         private final ValueMarker errorsMarker = marker();
 
         /** @param thin whether the curves draw only the points each pixel column needs ({@link ThinLineRenderer}) */
@@ -139,6 +153,7 @@ final class TrajectoryCharts {
                     thin(sub);
                     sub.addDomainMarker(jointsMarker);
                 }
+                jointsHome = view(joints);
             }
             joints.setNotify(false);
             joints.setTitle(c.jointsTitle());
@@ -162,6 +177,8 @@ final class TrajectoryCharts {
                 errorsSubtitled = !subtitle.isEmpty();
                 thin(errors.getXYPlot());
                 errors.getXYPlot().addDomainMarker(errorsMarker);
+                ((NumberAxis) errors.getXYPlot().getRangeAxis()).setAutoRangeMinimumSize(MIN_ERROR_SPAN_UM);
+                errorsHome = view(errors);
             }
             errors.setNotify(false);
             errors.setTitle(c.errorsTitle());
@@ -175,6 +192,60 @@ final class TrajectoryCharts {
             errorsMarker.setValue(point);
             errors.setNotify(true);
             return errors;
+        }
+
+        /**
+         * What the zoom shows of a chart: per axis (the shared point axis first, then each panel's
+         * value axis) its range, or {@link #AUTO} where it follows the data. Equal for two charts
+         * whose axes show the same.
+         */
+        static List<Object> view(JFreeChart chart) {
+            List<Object> v = new ArrayList<>();
+            for (ValueAxis a : axes(chart)) {
+                v.add(a.isAutoRange() ? AUTO : a.getRange());
+            }
+            return List.copyOf(v);
+        }
+
+        /** Sets the chart's axes to a {@link #view} of a chart of the same panels. */
+        static void show(JFreeChart chart, List<Object> view) {
+            List<ValueAxis> axes = axes(chart);
+            if (axes.size() != view.size()) {
+                return;
+            }
+            for (int i = 0; i < axes.size(); i++) {
+                ValueAxis a = axes.get(i);
+                if (view.get(i) instanceof org.jfree.data.Range r) {
+                    if (a.isAutoRange() || !a.getRange().equals(r)) {
+                        a.setRange(r);
+                    }
+                } else if (!a.isAutoRange()) {
+                    a.setAutoRange(true);
+                }
+            }
+        }
+
+        /** Shows the whole trajectory again in the chart (the joints or the errors) after a zoom. */
+        void unzoom(boolean ofJoints) {
+            JFreeChart c = ofJoints ? joints : errors;
+            if (c != null) {
+                show(c, ofJoints ? jointsHome : errorsHome);
+            }
+        }
+
+        private static List<ValueAxis> axes(JFreeChart chart) {
+            List<ValueAxis> axes = new ArrayList<>();
+            List<XYPlot> subs = subplots(chart);
+            if (subs.isEmpty()) {
+                axes.add(chart.getXYPlot().getDomainAxis());
+                axes.add(chart.getXYPlot().getRangeAxis());
+            } else {
+                axes.add(((CombinedDomainXYPlot) chart.getPlot()).getDomainAxis());
+                for (XYPlot sub : subs) {
+                    axes.add(sub.getRangeAxis());
+                }
+            }
+            return axes;
         }
 
         /** Moves the marked point of both charts (from 1). */

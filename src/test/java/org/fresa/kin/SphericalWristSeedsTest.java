@@ -50,6 +50,45 @@ class SphericalWristSeedsTest {
     }
 
     @Test
+    void theSolutionsWithinTheLimitsAreThoseOfAllSolutionsWithinTheLimitsInTheirOrder() {
+        DenavitHartenbergChain c = Robots.irb140().chain();
+        SphericalWristSeeds seeds = SphericalWristSeeds.of(c).orElseThrow();
+        SplittableRandom rnd = new SplittableRandom(5);
+        int kept = 0;
+        int dropped = 0;
+        for (int k = 0; k < 500; k++) {
+            // poses about the arm, some out of reach, many with solutions out of the limits
+            Transform3 t = Transform3.translation(
+                            -900 + 1800 * rnd.nextDouble(),
+                            -900 + 1800 * rnd.nextDouble(),
+                            -300 + 1300 * rnd.nextDouble())
+                    .times(Transform3.rotZ(360 * rnd.nextDouble()))
+                    .times(Transform3.rotX(360 * rnd.nextDouble()));
+            double[] target = new double[Pose.SIZE];
+            Pose.fromTransform(t, target, 0);
+            List<double[]> expected = new java.util.ArrayList<>();
+            List<double[]> all = seeds.solutions(target, false);
+            for (double[] s : all) {
+                boolean in = true;
+                for (int i = 0; i < 6; i++) {
+                    in &= s[i] >= c.qMin[i] - 1e-9 && s[i] <= c.qMax[i] + 1e-9;
+                }
+                if (in) {
+                    expected.add(s);
+                }
+            }
+            List<double[]> within = seeds.solutionsWithinLimits(target, 1e-9);
+            assertEquals(expected.size(), within.size());
+            for (int i = 0; i < within.size(); i++) {
+                assertTrue(java.util.Arrays.equals(expected.get(i), within.get(i)));
+            }
+            kept += within.size();
+            dropped += all.size() - within.size();
+        }
+        assertTrue(kept > 100 && dropped > 100, kept + " kept, " + dropped + " dropped");
+    }
+
+    @Test
     void otherChainsHaveNoClosedForm() {
         assertTrue(SphericalWristSeeds.of(Robots.adeptOne().chain()).isEmpty());
     }

@@ -245,6 +245,66 @@ class LiveReachGuiTest extends WindowGuiTest {
         shoot("position-tool.png");
     }
 
+    @Test
+    void theErrorPlotZoomsWithTheWheelAndHomeShowsTheWholeTrajectoryAgain() {
+        openJob("samples/jobs/example2-irb140.xml");
+        waitUntilNoTaskRuns();
+        window.tabbedPane("tabs").selectTab("Position");
+        window.tabbedPane("position-results").selectTab("Position error");
+        PositionTab tab = position();
+        waitFor("the first reach is shown", () -> tab.showsLiveAnswerOfFields());
+        waitFor(
+                "its plot is drawn",
+                () -> tab.plotUpToDate() && tab.plotLatenciesMs().size() > 0);
+        settle();
+        OffThreadChartPanel plot = (OffThreadChartPanel) window.robot().finder().findByName("position-error-chart");
+        java.awt.image.BufferedImage whole = GuiActionRunner.execute(() -> paint(plot));
+        java.awt.Point centre = GuiActionRunner.execute(() -> {
+            java.awt.geom.Rectangle2D area = plot.getScreenDataArea();
+            return new java.awt.Point((int) area.getCenterX(), (int) area.getCenterY());
+        });
+        window.robot().moveMouse(plot, centre);
+        window.robot().rotateMouseWheel(plot, -3);
+        waitFor(
+                "the zoomed plot is drawn",
+                () -> !plot.getChart().getXYPlot().getDomainAxis().isAutoRange() && tab.plotUpToDate());
+        settle();
+        java.awt.image.BufferedImage zoomed = GuiActionRunner.execute(() -> paint(plot));
+        double shownPoints = GuiActionRunner.execute(
+                () -> plot.getChart().getXYPlot().getDomainAxis().getRange().getLength());
+        assertTrue(shownPoints < 6000, "points in view: " + shownPoints);
+        assertTrue(differing(whole, zoomed) > 1000, "the image on screen shows the zoom");
+
+        window.robot().click(plot, centre);
+        window.robot().pressAndReleaseKey(java.awt.event.KeyEvent.VK_HOME);
+        waitFor(
+                "the whole plot is drawn",
+                () -> plot.getChart().getXYPlot().getDomainAxis().isAutoRange()
+                        && plot.getChart().getXYPlot().getRangeAxis().isAutoRange()
+                        && tab.plotUpToDate());
+        settle();
+        assertEquals(0, differing(whole, GuiActionRunner.execute(() -> paint(plot))));
+    }
+
+    private static java.awt.image.BufferedImage paint(javax.swing.JComponent c) {
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(
+                c.getWidth(), c.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = img.createGraphics();
+        c.paint(g);
+        g.dispose();
+        return img;
+    }
+
+    private static int differing(java.awt.image.BufferedImage a, java.awt.image.BufferedImage b) {
+        int n = 0;
+        for (int y = 0; y < Math.min(a.getHeight(), b.getHeight()); y++) {
+            for (int x = 0; x < Math.min(a.getWidth(), b.getWidth()); x++) {
+                n += a.getRGB(x, y) != b.getRGB(x, y) ? 1 : 0;
+            }
+        }
+        return n;
+    }
+
     /** The last minute's load average, or 0 where the system does not say. */
     private static double loadAverage() {
         try {

@@ -1,5 +1,6 @@
 package org.fresa.ui;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -73,6 +74,67 @@ class TrajectoryChartsTest {
             assertTrue(d < W * H / 40, d + " pixels differ");
             assertTrue(worst[2] > 200, "columns with curves: " + worst[2]);
             assertTrue(worst[0] <= (joints ? 1 : 6) && worst[1] <= (joints ? 1 : 6), java.util.Arrays.toString(worst));
+        }
+    }
+
+    @Test
+    void theErrorAxisSpansErrorsOfDoublesRoundingNotJFreeChartsDefaultSpan() {
+        // errors of a trajectory solved to the last bit: +-5e-13 mm, +-5e-10 um
+        double[][] e = new double[100][3];
+        for (int i = 0; i < e.length; i++) {
+            for (int a = 0; a < 3; a++) {
+                e[i][a] = (i % 2 == 0 ? 5e-13 : -5e-13) * (a + 1) / 3;
+            }
+        }
+        TrajectoryCharts t = TrajectoryCharts.of("irb140", joints(4, 0), e, legends(4), "orientation error 4");
+        org.jfree.data.Range y = new TrajectoryCharts.Screen(true)
+                .errors(t, 1)
+                .getXYPlot()
+                .getRangeAxis()
+                .getRange();
+        // the data and JFreeChart's margins of 5 %, not its default span of 1e-8 um
+        assertAll(
+                () -> assertTrue(y.getLowerBound() <= -5e-10 && y.getUpperBound() >= 5e-10, y.toString()),
+                () -> assertTrue(y.getLowerBound() > -1e-9 && y.getUpperBound() < 1e-9, y.toString()));
+    }
+
+    @Test
+    void aChartShowingAZoomedChartsViewDrawsWhatItDrawsAndHomeGivesTheWholeTrajectoryBack() {
+        TrajectoryCharts t = trajectory(5, 0.1);
+        for (boolean joints : new boolean[] {true, false}) {
+            TrajectoryCharts.Screen shown = new TrajectoryCharts.Screen(false);
+            TrajectoryCharts.Screen drawn = new TrajectoryCharts.Screen(false);
+            JFreeChart zoomed = joints ? shown.joints(t, 10) : shown.errors(t, 10);
+            BufferedImage whole = draw(zoomed);
+            List<Object> home = TrajectoryCharts.Screen.view(zoomed);
+            ChartRenderingInfo info = new ChartRenderingInfo(null);
+            zoomed.draw(
+                    new BufferedImage(W, H, BufferedImage.TYPE_INT_RGB).createGraphics(),
+                    new Rectangle2D.Double(0, 0, W, H),
+                    null,
+                    info);
+            // as the mouse wheel zooms in at a point of the first panel
+            Rectangle2D area = joints
+                    ? info.getPlotInfo().getSubplotInfo(0).getDataArea()
+                    : info.getPlotInfo().getDataArea();
+            java.awt.geom.Point2D at = new java.awt.geom.Point2D.Double(area.getCenterX(), area.getCenterY());
+            ((org.jfree.chart.plot.Zoomable) zoomed.getPlot()).zoomDomainAxes(0.5, info.getPlotInfo(), at, true);
+            ((org.jfree.chart.plot.Zoomable) zoomed.getPlot()).zoomRangeAxes(0.5, info.getPlotInfo(), at, true);
+            List<Object> view = TrajectoryCharts.Screen.view(zoomed);
+            JFreeChart copy = joints ? drawn.joints(t, 10) : drawn.errors(t, 10);
+            TrajectoryCharts.Screen.show(copy, view);
+            BufferedImage zoomedImage = draw(zoomed);
+            String what = joints ? "joints" : "errors";
+            assertAll(
+                    () -> assertTrue(!view.equals(home), what + " " + view),
+                    () -> assertTrue(differing(whole, zoomedImage) > 1000, what),
+                    () -> assertEquals(0, differing(zoomedImage, draw(copy)), what));
+            shown.unzoom(joints);
+            TrajectoryCharts.Screen.show(copy, TrajectoryCharts.Screen.view(zoomed));
+            assertAll(
+                    () -> assertEquals(home, TrajectoryCharts.Screen.view(zoomed), what),
+                    () -> assertEquals(0, differing(whole, draw(zoomed)), what),
+                    () -> assertEquals(0, differing(whole, draw(copy)), what));
         }
     }
 
