@@ -18,13 +18,14 @@ import org.fresa.stepnc.Feature.SlotEnd.EndType;
 import org.fresa.stepnc.Tool;
 
 /**
- * Slots on a linear path (ISO 14649-10 slot), in the slot frame: x along the path from its
+ * Slots (ISO 14649-10 slot) along a linear, circular or general path, in the slot frame: x along the path from its
  * middle, z the feature axis, the top at z 0 and the floor at minus the feature depth.
  *
  * <p>What each profile becomes:
  * <ul>
  * <li>square-U: the outline the path sweeps, cleared as a pocket in layers of the axial depth;
- * <li>rounded-U (walls down to a half circle of the width) and vee (two walls at the included
+ * <li>rounded-U (walls down to a half circle of the width), partial circle (its arc as a
+ * rounded-U's bottom) and vee (two walls at the included
  * angle, blended by the profile radius): the straight part as a square-U, then thin layers whose
  * outline is as wide as the cutter may reach at that depth without leaving the profile (a ball
  * end mill as wide as the slot follows the middle down to the bottom; a flat or bull-nose cutter
@@ -38,7 +39,8 @@ import org.fresa.stepnc.Tool;
  * half circles of each layer's width about the path's ends; flat ends are square to the path,
  * their corners rounded by corner_radius1 (the side left of the path) and corner_radius2; open
  * ends are cut square at the path's end like flat ones: the tool stays within the path's length.
- * Woodruff and loop ends are refused.
+ * Woodruff ends of a square-U slot are cut in layers within the end's arc; loop ends need a
+ * closed course (the band about its island). Along a GENERAL_PATH see {@link SlotBands}.
  */
 final class SlotMilling {
 

@@ -67,9 +67,9 @@ import org.fresa.stepnc.Tool;
  * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
- * <li>Slots on a linear path are milled by {@link SlotMilling}: square-U, rounded-U, vee and tee
- * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
- * with the reason.
+ * <li>Slots along linear, circular and general paths are milled by {@link SlotMilling}: square-U,
+ * rounded-U, partial circular, vee and tee profiles as far as the tool fits them, radiused, flat,
+ * open, woodruff and loop ends; the others are refused with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Steps, closed general outside profiles and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
