@@ -685,15 +685,6 @@ final class SlotMilling {
     static Profile arcOutline(Course.Arc c, double halfWidth, List<SlotEnd> ends, Tolerance tol) {
         SlotEnd first = ends.isEmpty() ? null : ends.get(0);
         SlotEnd last = ends.size() < 2 ? first : ends.get(1);
-        for (SlotEnd e : new SlotEnd[] {first, last}) {
-            if (e != null
-                    && e.type() == EndType.FLAT
-                    && (e.firstRadiusMm().orElse(0) > 0 || e.secondRadiusMm().orElse(0) > 0)) {
-                throw new UnsupportedOperationException(
-                        "flat slot ends with corner radii are machined on a LINEAR_PATH only; along a CIRCULAR_PATH"
-                                + " a flat end is square");
-            }
-        }
         double rIn = c.radiusMm() - halfWidth;
         double rOut = c.radiusMm() + halfWidth;
         if (!(rIn > tol.linear())) {
@@ -705,21 +696,68 @@ final class SlotMilling {
         double a1 = Math.max(0, c.sweepRad());
         SlotEnd atA0 = c.sweepRad() > 0 ? first : last;
         SlotEnd atA1 = c.sweepRad() > 0 ? last : first;
+        // corner_radius1 is on the path's left: towards the centre on a counter-clockwise path
+        boolean leftIsInner = c.sweepRad() > 0;
+        double in0 = cornerRadius(atA0, leftIsInner, halfWidth);
+        double out0 = cornerRadius(atA0, !leftIsInner, halfWidth);
+        double in1 = cornerRadius(atA1, leftIsInner, halfWidth);
+        double out1 = cornerRadius(atA1, !leftIsInner, halfWidth);
+        // a corner's fillet touches the wall this far round from the end: sin = r / (its centre's radius)
+        double dOut0 = Math.asin(out0 / (rOut - out0));
+        double dOut1 = Math.asin(out1 / (rOut - out1));
+        double dIn0 = Math.asin(in0 / (rIn + in0));
+        double dIn1 = Math.asin(in1 / (rIn + in1));
+        if (a1 - dOut1 < a0 + dOut0 || a1 - dIn1 < a0 + dIn0) {
+            throw new UnsupportedOperationException(
+                    "the flat ends' corner radii do not fit along the slot's " + mm(Math.toDegrees(a1 - a0)) + " deg");
+        }
         List<Curve2> cs = new ArrayList<>();
         Vec2 o = Vec2.ZERO;
-        cs.add(new Arc2(o, polar(rOut, a0), polar(rOut, a1), true));
+        cs.add(new Arc2(o, polar(rOut, a0 + dOut0), polar(rOut, a1 - dOut1), true));
         if (isRadiused(atA1)) {
             cs.add(new Arc2(polar(c.radiusMm(), a1), polar(rOut, a1), polar(rIn, a1), true));
         } else {
-            cs.add(new Segment2(polar(rOut, a1), polar(rIn, a1)));
+            double lOut = Math.sqrt((rOut - out1) * (rOut - out1) - out1 * out1);
+            double lIn = Math.sqrt((rIn + in1) * (rIn + in1) - in1 * in1);
+            if (out1 > 0) {
+                cs.add(new Arc2(polar(rOut - out1, a1 - dOut1), polar(rOut, a1 - dOut1), polar(lOut, a1), true));
+            }
+            if (lOut - lIn > 1e-12) {
+                cs.add(new Segment2(polar(lOut, a1), polar(lIn, a1)));
+            }
+            if (in1 > 0) {
+                cs.add(new Arc2(polar(rIn + in1, a1 - dIn1), polar(lIn, a1), polar(rIn, a1 - dIn1), true));
+            }
         }
-        cs.add(new Arc2(o, polar(rIn, a1), polar(rIn, a0), false));
+        cs.add(new Arc2(o, polar(rIn, a1 - dIn1), polar(rIn, a0 + dIn0), false));
         if (isRadiused(atA0)) {
             cs.add(new Arc2(polar(c.radiusMm(), a0), polar(rIn, a0), polar(rOut, a0), true));
         } else {
-            cs.add(new Segment2(polar(rIn, a0), polar(rOut, a0)));
+            double lOut = Math.sqrt((rOut - out0) * (rOut - out0) - out0 * out0);
+            double lIn = Math.sqrt((rIn + in0) * (rIn + in0) - in0 * in0);
+            if (in0 > 0) {
+                cs.add(new Arc2(polar(rIn + in0, a0 + dIn0), polar(rIn, a0 + dIn0), polar(lIn, a0), true));
+            }
+            if (lOut - lIn > 1e-12) {
+                cs.add(new Segment2(polar(lIn, a0), polar(lOut, a0)));
+            }
+            if (out0 > 0) {
+                cs.add(new Arc2(polar(rOut - out0, a0 + dOut0), polar(lOut, a0), polar(rOut, a0 + dOut0), true));
+            }
         }
         return new Profile.General(Contour.of(cs, Tolerance.DRAWING), ContourOffsetter.EXACT);
+    }
+
+    /**
+     * A flat end's corner radius on one side of the path (corner_radius1 on its left), no more
+     * than the half width; 0 for other ends.
+     */
+    private static double cornerRadius(SlotEnd e, boolean left, double halfWidth) {
+        if (e == null || e.type() != EndType.FLAT) {
+            return 0;
+        }
+        double r = left ? e.firstRadiusMm().orElse(0) : e.secondRadiusMm().orElse(0);
+        return Math.min(Math.max(r, 0), halfWidth);
     }
 
     private static Vec2 polar(double r, double a) {

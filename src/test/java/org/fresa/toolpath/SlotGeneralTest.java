@@ -128,7 +128,7 @@ class SlotGeneralTest {
 
     @Test
     void everySlotIsPlanned() {
-        assertEquals(6, plan.planned(), plan.problems().toString());
+        assertEquals(7, plan.planned(), plan.problems().toString());
         assertEquals(
                 List.of(
                         "workingstep 'WS WOODRUFF': the woodruff end is cut in 6 layers square to the path, each as"
@@ -215,6 +215,47 @@ class SlotGeneralTest {
                 z -> SlotProfilesTest.box(100, 230 - partialHalfWidth(z), 160, 230 + partialHalfWidth(z));
         assertTrue(outside(s, 4, at) < 1e-6, "leaves the partial circle");
         double left = uncut(s, 4, SlotProfilesTest.box(100, 226.01, 160, 233.99), true);
+        assertTrue(left < 1e-2, "leaves " + left + " mm2 of its floor");
+    }
+
+    /**
+     * The material a flat end's rounded corner leaves in a slot along an arc about (cx, cy): the
+     * corner between the wall of radius rWall and the end's radial line at endA, less the fillet
+     * of radius rc touching both; the fillet lies towards larger angles when toward is +1.
+     */
+    static Geometry arcCorner(
+            double cx, double cy, double rWall, double rc, double endA, double toward, boolean outer) {
+        double centre = outer ? rWall - rc : rWall + rc;
+        double d = Math.asin(rc / centre);
+        Coordinate p =
+                new Coordinate(cx + centre * Math.cos(endA + toward * d), cy + centre * Math.sin(endA + toward * d));
+        double l = Math.sqrt(centre * centre - rc * rc);
+        List<Coordinate> pts = new ArrayList<>();
+        pts.add(p);
+        pts.add(new Coordinate(cx + l * Math.cos(endA), cy + l * Math.sin(endA)));
+        for (int k = 0; k <= 32; k++) {
+            double a = endA + toward * d * k / 32;
+            pts.add(new Coordinate(cx + rWall * Math.cos(a), cy + rWall * Math.sin(a)));
+        }
+        pts.add(p);
+        Geometry wedge = Swept.GF.createPolygon(pts.toArray(new Coordinate[0]));
+        return wedge.difference(SlotProfilesTest.disc(p.x, p.y, rc));
+    }
+
+    @Test
+    void flatEndsAlongAnArcKeepTheirCornerRadii() {
+        ToolpathSection s = section("WS ARC FLAT CORNERS");
+        assertEquals(-4, lowest(s), 1e-9);
+        double a0 = -Math.toRadians(100);
+        SlotArcsTest.ArcSlot arc = new SlotArcsTest.ArcSlot(250, 60, 30, a0, 0, SlotArcsTest.square(16), 'f', 'f');
+        // the path runs clockwise: its left (corner_radius1, 7 mm) is the outer wall at both ends
+        Geometry slot = SlotArcsTest.section(arc, 8, 720)
+                .difference(arcCorner(250, 60, 38, 7, 0, -1, true))
+                .difference(arcCorner(250, 60, 22, 6, 0, -1, false))
+                .difference(arcCorner(250, 60, 38, 7, a0, 1, true))
+                .difference(arcCorner(250, 60, 22, 6, a0, 1, false));
+        assertTrue(outside(s, 5, z -> slot) < 1e-6, "leaves the slot's rounded corners");
+        double left = uncut(s, 5, slot, true);
         assertTrue(left < 1e-2, "leaves " + left + " mm2 of its floor");
     }
 
