@@ -233,9 +233,13 @@ final class SlotMilling {
                         + " mm stem in the slot's depth " + mm(depth) + " mm");
             }
             if (tool.body().equals("T_SLOT_MILL")) {
+                if (course instanceof Course.Arc arcCourse) {
+                    checkTSlotMill(tee, tool, t, tol);
+                    return crossBarAlongArc(label, arcCourse, ends, h, t);
+                }
                 if (!(course instanceof Course.Straight straightCourse)) {
                     throw new UnsupportedOperationException("a T_SLOT_MILL's cross bar is milled along a LINEAR_PATH"
-                            + " only: it enters from an open end and goes straight along the middle");
+                            + " or a CIRCULAR_PATH only: it enters from an open end and goes along the middle");
                 }
                 return crossBar(label, straightCourse.lengthMm(), tee, ends, tool, h, t, tol);
             }
@@ -882,19 +886,7 @@ final class SlotMilling {
             Tooling t,
             Tolerance tol) {
         double r = t.radiusMm();
-        if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
-                    + " cross bar (" + mm(tee.crossBarWidthMm()) + " mm)");
-        }
-        if (t.diameterMm() < tee.widthMm() - tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
-                    + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
-        }
-        double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
-        if (edge < tee.crossBarDepthMm() - tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill's cutting edge (" + mm(edge) + " mm) is shorter"
-                    + " than the cross bar (" + mm(tee.crossBarDepthMm()) + " mm)");
-        }
+        checkTSlotMill(tee, tool, t, tol);
         SlotEnd start = ends.isEmpty() ? null : ends.get(0);
         SlotEnd end = ends.size() < 2 ? start : ends.get(1);
         boolean startOpen = start != null && start.type() == EndType.OPEN;
@@ -931,6 +923,86 @@ final class SlotMilling {
                 t.spindleRpm(),
                 new Vec3(outside, 0, h.clearanceZ()),
                 b.moves());
+    }
+
+    /** A T-slot mill fits the cross bar: no wider than the bar, no narrower than the stem, its edge as deep as the bar. */
+    private static void checkTSlotMill(org.fresa.stepnc.Profile.Tee tee, Tool tool, Tooling t, Tolerance tol) {
+        if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
+                    + " cross bar (" + mm(tee.crossBarWidthMm()) + " mm)");
+        }
+        if (t.diameterMm() < tee.widthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
+                    + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
+        }
+        double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
+        if (edge < tee.crossBarDepthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill's cutting edge (" + mm(edge) + " mm) is shorter"
+                    + " than the cross bar (" + mm(tee.crossBarDepthMm()) + " mm)");
+        }
+    }
+
+    /**
+     * The tee's cross bar along an arc with a T-slot mill: down beyond an open end, on the
+     * path's tangent there, where the cutter cuts air; straight to the end, along the middle arc
+     * at the floor to the other end (out past it when open, to a radiused end's centre, or where
+     * the cutter's disc touches a flat end), and back out the same way.
+     */
+    private static ToolpathSection crossBarAlongArc(
+            String label, Course.Arc c, List<SlotEnd> ends, Heights h, Tooling t) {
+        double r = t.radiusMm();
+        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+        boolean startOpen = start != null && start.type() == EndType.OPEN;
+        boolean endOpen = end != null && end.type() == EndType.OPEN;
+        if (!startOpen && !endOpen) {
+            throw new UnsupportedOperationException(
+                    "a T_SLOT_MILL enters the cross bar from an open end; the slot has" + " none");
+        }
+        double radius = c.radiusMm();
+        if (r >= radius) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than"
+                    + " its circular path (" + mm(2 * radius) + " mm)");
+        }
+        // the end entered from, and the angle turned from it to the far end (counter-clockwise +)
+        double aIn = startOpen ? 0 : c.sweepRad();
+        double turn = startOpen ? c.sweepRad() : -c.sweepRad();
+        SlotEnd far = startOpen ? end : start;
+        double sign = Math.signum(turn);
+        Vec2 in = polar(radius, aIn);
+        // the path's direction into the slot there: along the turn
+        Vec2 into = new Vec2(-Math.sin(aIn) * sign, Math.cos(aIn) * sign);
+        Vec2 outside = in.minus(into.times(r + OPEN_END_CLEARANCE_MM));
+        double aFar;
+        if (far != null && far.type() == EndType.OPEN) {
+            aFar = aIn + turn;
+        } else if (far != null && far.type() == EndType.RADIUSED) {
+            aFar = aIn + turn;
+        } else {
+            aFar = aIn + turn - sign * Math.asin(r / radius);
+        }
+        if ((aFar - aIn) * sign <= 0) {
+            throw new UnsupportedOperationException("the T-slot mill does not fit along the slot's arc");
+        }
+        double z = h.bottomZ();
+        Vec3 o3 = Vec3.of(outside, h.clearanceZ());
+        Vec3 centre = Vec3.of(Vec2.ZERO, z);
+        MoveBuilder b = new MoveBuilder(o3);
+        b.rapid(Vec3.of(outside, h.retractZ()));
+        b.feed(Vec3.of(outside, z), t.plungeFeedMmPerMin());
+        b.feed(Vec3.of(in, z), t.feedMmPerMin());
+        b.arc(Vec3.of(polar(radius, aFar), z), centre, sign > 0, 0, t.feedMmPerMin());
+        if (far != null && far.type() == EndType.OPEN) {
+            Vec2 at = polar(radius, aFar);
+            Vec2 on = new Vec2(-Math.sin(aFar) * sign, Math.cos(aFar) * sign);
+            b.feed(Vec3.of(at.plus(on.times(r + OPEN_END_CLEARANCE_MM)), z), t.feedMmPerMin());
+            b.feed(Vec3.of(at, z), t.feedMmPerMin());
+        }
+        b.arc(Vec3.of(in, z), centre, sign < 0, 0, t.feedMmPerMin());
+        b.feed(Vec3.of(outside, z), t.feedMmPerMin());
+        b.rapid(Vec3.of(outside, h.retractZ()));
+        b.rapid(o3);
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), o3, b.moves());
     }
 
     private static String mm(double v) {

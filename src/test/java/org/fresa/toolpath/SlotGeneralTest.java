@@ -128,14 +128,16 @@ class SlotGeneralTest {
 
     @Test
     void everySlotIsPlanned() {
-        assertEquals(7, plan.planned(), plan.problems().toString());
+        assertEquals(9, plan.planned(), plan.problems().toString());
         assertEquals(
                 List.of(
                         "workingstep 'WS WOODRUFF': the woodruff end is cut in 6 layers square to the path, each as"
                                 + " long as the end's arc at its bottom: steps up to 5.385165 mm are left along the"
                                 + " arc, and the 4 mm corners of the cutter in each layer's ends",
                         "workingstep 'WS PARTIAL CIRCLE': the 8 mm cutter reaches 6.165151 mm of the partial circle's"
-                                + " 7 mm; a ball end mill no wider than the circle (20 mm) reaches the bottom"),
+                                + " 7 mm; a ball end mill no wider than the circle (20 mm) reaches the bottom",
+                        "workingstep 'WS ARC TEE STEM': the TAPERED_ENDMILL mills the tee's stem; its cross bar needs a"
+                                + " T_SLOT_MILL"),
                 plan.problems());
     }
 
@@ -257,6 +259,30 @@ class SlotGeneralTest {
         assertTrue(outside(s, 5, z -> slot) < 1e-6, "leaves the slot's rounded corners");
         double left = uncut(s, 5, slot, true);
         assertTrue(left < 1e-2, "leaves " + left + " mm2 of its floor");
+    }
+
+    @Test
+    void aTeeAlongAnArcHasItsCrossBarMilledWithATSlotMillFromItsOpenStart() {
+        SlotArcsTest.ArcSlot stem =
+                new SlotArcsTest.ArcSlot(260, 320, 40, -Math.PI / 2, 0, SlotArcsTest.square(10), 'f', 'f');
+        // the open start is on the block's edge y 320: beyond it the cutter cuts air
+        Geometry air = SlotProfilesTest.box(0, 320, 400, 400);
+        ToolpathSection s = section("WS ARC TEE STEM");
+        assertEquals(-16, lowest(s), 1e-9);
+        assertTrue(outside(s, 5, z -> SlotArcsTest.section(stem, 5, 180).union(air)) < 1e-6, "the stem leaves");
+        ToolpathSection bar = section("WS ARC TEE CROSS BAR");
+        assertEquals(-16, lowest(bar), 1e-9);
+        double out = 0;
+        for (double z = -16; z <= -8; z += SlotProfilesTest.SLICE_MM) {
+            Geometry allowed = SlotArcsTest.section(stem, z > -10 + 1e-9 ? 5 : 10, 180)
+                    .union(air)
+                    .buffer(0.01, 64);
+            out = Math.max(out, SlotProfilesTest.outside(bar, SlotProfilesTest.tSlot(10, 6), z, allowed));
+        }
+        assertTrue(out < 1e-6, "the cross bar's cutter leaves by " + out + " mm2");
+        double left = uncut(bar, 10, SlotArcsTest.section(stem, 10, 720), true);
+        assertTrue(left < 1e-2, "leaves " + left + " mm2 of the cross bar's floor");
+        assertTrue(bar.start().y() > 320, "enters at " + bar.start());
     }
 
     /** The loop's path moved 0.05 mm along x: it leaves the ring on one side, its floor uncut on the other. */
