@@ -292,6 +292,9 @@ public final class StepNcService {
             putIf(m, "radius", t.radiusMm());
             m.put("first_angle_deg", t.firstAngleDeg());
             m.put("second_angle_deg", t.secondAngleDeg());
+        } else if (p instanceof Profile.PartialCircular pc) {
+            m.put("radius", pc.radiusMm());
+            m.put("sweep_angle_deg", pc.sweepAngleDeg());
         } else if (p instanceof Profile.General g) {
             m.put("curve", g.curveEntity());
             m.put("segments", g.segments().size());

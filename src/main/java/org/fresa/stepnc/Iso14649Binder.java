@@ -773,6 +773,18 @@ final class Iso14649Binder {
             return Optional.empty();
         }
         Optional<E> k = known(id.get());
+        if (k.isPresent() && k.get().def.isA("GENERAL_PATH")) {
+            E g = k.get();
+            Profile c = curveProfile(g.name(), g.id(), Transform3.IDENTITY, refId(g, "swept_path"));
+            return Optional.of(new TravelPath(
+                    g.name(),
+                    placementAttr(g, "placement").orElse(Transform3.IDENTITY),
+                    OptionalDouble.empty(),
+                    Optional.empty(),
+                    OptionalDouble.empty(),
+                    OptionalDouble.empty(),
+                    c instanceof Profile.General curve ? curve.segments() : List.of()));
+        }
         if (k.isEmpty() || !(k.get().def.isA("LINEAR_PATH") || k.get().def.isA("CIRCULAR_PATH"))) {
             return Optional.of(new TravelPath(
                     typeOf(id.get()),
@@ -869,6 +881,8 @@ final class Iso14649Binder {
                         num(p, "radius"),
                         degrees(required(p, "first_angle")),
                         degrees(required(p, "second_angle")));
+            case "PARTIAL_CIRCULAR_PROFILE" ->
+                new Profile.PartialCircular(p.name(), pl, required(p, "radius"), degrees(required(p, "sweep_angle")));
             case "GENERAL_CLOSED_PROFILE", "GENERAL_PROFILE" ->
                 general(p, pl, p.name().equals("GENERAL_PROFILE") ? "its_profile" : "closed_profile_shape");
             default -> new Profile.Other(p.name(), pl, p.id());

@@ -136,7 +136,21 @@ public sealed interface Profile {
         }
     }
 
-    /** A profile the binding does not turn into geometry (PARTIAL_CIRCULAR_PROFILE, a dovetail, ...). */
+    /**
+     * PARTIAL_CIRCULAR_PROFILE: an arc of the radius about the placement's origin, from the
+     * placement's x axis counter-clockwise about its z axis by the sweep; for a slot the z axis
+     * runs along the path and the arc is the slot's cross-section. The sweep in degrees,
+     * converted from radians where the file's writer uses them.
+     */
+    record PartialCircular(String entity, Transform3 placement, double radiusMm, double sweepAngleDeg)
+            implements Profile {
+        public PartialCircular {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(placement);
+        }
+    }
+
+    /** A profile the binding does not turn into geometry (a dovetail, ...). */
     record Other(String entity, Transform3 placement, long instanceId) implements Profile {
         public Other {
             Objects.requireNonNull(entity);

@@ -1,5 +1,6 @@
 package org.fresa.stepnc;
 
+import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
@@ -16,6 +17,8 @@ import org.fresa.geom.Vec3;
  * @param direction LINEAR_PATH's direction in the path frame
  * @param radiusMm CIRCULAR_PATH's radius
  * @param sweepAngle CIRCULAR_PATH's sweep, as written (radians in ISO 14649)
+ * @param curve GENERAL_PATH's swept_path, its lines and arcs in the path frame (empty for the
+ *     other paths, and for a curve the binding does not read)
  */
 public record TravelPath(
         String entity,
@@ -23,13 +26,26 @@ public record TravelPath(
         OptionalDouble distanceMm,
         Optional<Vec3> direction,
         OptionalDouble radiusMm,
-        OptionalDouble sweepAngle) {
+        OptionalDouble sweepAngle,
+        List<Profile.Segment> curve) {
     public TravelPath {
+        curve = List.copyOf(curve);
         Objects.requireNonNull(entity);
         Objects.requireNonNull(placement);
         Objects.requireNonNull(distanceMm);
         Objects.requireNonNull(direction);
         Objects.requireNonNull(radiusMm);
         Objects.requireNonNull(sweepAngle);
+    }
+
+    /** A path that is not a GENERAL_PATH: no curve. */
+    public TravelPath(
+            String entity,
+            Transform3 placement,
+            OptionalDouble distanceMm,
+            Optional<Vec3> direction,
+            OptionalDouble radiusMm,
+            OptionalDouble sweepAngle) {
+        this(entity, placement, distanceMm, direction, radiusMm, sweepAngle, List.of());
     }
 }

@@ -18,13 +18,14 @@ import org.fresa.stepnc.Feature.SlotEnd.EndType;
 import org.fresa.stepnc.Tool;
 
 /**
- * Slots on a linear path (ISO 14649-10 slot), in the slot frame: x along the path from its
+ * Slots (ISO 14649-10 slot) along a linear, circular or general path, in the slot frame: x along the path from its
  * middle, z the feature axis, the top at z 0 and the floor at minus the feature depth.
  *
  * <p>What each profile becomes:
  * <ul>
  * <li>square-U: the outline the path sweeps, cleared as a pocket in layers of the axial depth;
- * <li>rounded-U (walls down to a half circle of the width) and vee (two walls at the included
+ * <li>rounded-U (walls down to a half circle of the width), partial circle (its arc as a
+ * rounded-U's bottom) and vee (two walls at the included
  * angle, blended by the profile radius): the straight part as a square-U, then thin layers whose
  * outline is as wide as the cutter may reach at that depth without leaving the profile (a ball
  * end mill as wide as the slot follows the middle down to the bottom; a flat or bull-nose cutter
@@ -38,7 +39,8 @@ import org.fresa.stepnc.Tool;
  * half circles of each layer's width about the path's ends; flat ends are square to the path,
  * their corners rounded by corner_radius1 (the side left of the path) and corner_radius2; open
  * ends are cut square at the path's end like flat ones: the tool stays within the path's length.
- * Woodruff and loop ends are refused.
+ * Woodruff ends of a square-U slot are cut in layers within the end's arc; loop ends need a
+ * closed course (the band about its island). Along a GENERAL_PATH see {@link SlotBands}.
  */
 final class SlotMilling {
 
@@ -55,9 +57,12 @@ final class SlotMilling {
     /** Largest angle a tee's stem wall may differ from square to the cross bar (deg). */
     static final double SQUARE_TOLERANCE_DEG = 0.01;
 
-    /** Mills one layer outline from a top height down to a bottom height (mm), in the slot frame. */
+    /**
+     * Mills one layer outline from a top height down to a bottom height (mm), in the slot frame,
+     * leaving the islands (a loop slot's inner wall) standing.
+     */
     interface PocketCutter {
-        ToolpathSection cut(Profile outline, Heights heights);
+        ToolpathSection cut(Profile outline, List<Contour> islands, Heights heights);
     }
 
     private SlotMilling() {}
@@ -85,17 +90,30 @@ final class SlotMilling {
         List<SlotEnd> ends = f.slotEnds();
         for (SlotEnd e : ends) {
             switch (e.type()) {
-                case WOODRUFF ->
-                    throw new UnsupportedOperationException(
-                            "woodruff slot ends are not machined: the end"
-                                    + " rises to the top as an arc along the path, which a cutter along the feature axis cannot follow");
-                case LOOP ->
-                    throw new UnsupportedOperationException("loop slot ends are not machined: a loop needs a"
-                            + " closed course of travel, and the path is "
-                            + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
+                case WOODRUFF -> {
+                    if (!(course instanceof Course.Straight) || !shape.entity().equals("SQUARE_U_PROFILE")) {
+                        throw new UnsupportedOperationException("woodruff slot ends are machined on a SQUARE_U_PROFILE"
+                                + " slot along a LINEAR_PATH only: its end rises along the path, which layers of a"
+                                + " cutter along the feature axis follow there; this slot has a " + shape.entity()
+                                + " along a "
+                                + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
+                    }
+                }
+                case LOOP -> {
+                    if (!(course instanceof Course.General g && g.closed())) {
+                        throw new UnsupportedOperationException("loop slot ends are machined along a closed course"
+                                + " of travel only (a full turn of a CIRCULAR_PATH, a closed GENERAL_PATH); the path"
+                                + " is an open "
+                                + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
+                    }
+                }
                 case OTHER -> throw new UnsupportedOperationException("slot end " + e.entity() + " is not known");
                 default -> {}
             }
+        }
+        if (course instanceof Course.General g && g.closed() && ends.stream().anyMatch(e -> e.type() != EndType.LOOP)) {
+            throw new UnsupportedOperationException("the slot's course of travel is closed and its ends are not"
+                    + " LOOP_SLOT_END_TYPE: a closed course has no ends");
         }
         double depth = -h.bottomZ();
         double r = t.radiusMm();
@@ -108,28 +126,67 @@ final class SlotMilling {
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
             double w = checkedWidth(u.widthMm(), d, tol);
+            if (ends.stream().anyMatch(e -> e.type() == EndType.WOODRUFF)) {
+                return woodruff(
+                        label,
+                        ((Course.Straight) course).lengthMm(),
+                        w / 2,
+                        ends,
+                        h,
+                        t,
+                        axialMm,
+                        tol,
+                        problems,
+                        pocket);
+            }
             return straight(label, course, w / 2, ends, h, t, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u) {
             double w = checkedWidth(u.widthMm(), d, tol);
-            double big = w / 2;
-            double e = cornerRadius(tool, r);
-            double zc = -depth + big;
-            if (e > big + tol.linear() || big - e < -tol.linear()) {
-                throw new UnsupportedOperationException("the cutter's corner radius " + e + " mm is larger than the"
-                        + " rounded-U's radius " + big + " mm");
+            return circular(
+                    label,
+                    course,
+                    w / 2,
+                    -depth + w / 2,
+                    -depth,
+                    "rounded-U",
+                    tool,
+                    r,
+                    ends,
+                    h,
+                    t,
+                    axialMm,
+                    tol,
+                    problems,
+                    pocket);
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.PartialCircular pc) {
+            PartialCircle arc = partialCircle(pc, tol);
+            checkedWidth(2 * Math.sqrt(Math.max(arc.radius() * arc.radius() - arc.zc() * arc.zc(), 0)), d, tol);
+            double bottom = arc.zc() - arc.radius();
+            if (depth > tol.linear() && Math.abs(depth + bottom) > tol.linear()) {
+                problems.add("workingstep '" + label + "': the depth plane (" + mm(depth) + " mm) and the partial"
+                        + " circular profile (" + mm(-bottom) + " mm deep) disagree; the profile is cut");
+            } else if (!(depth > tol.linear())) {
+                problems.add("workingstep '" + label + "': the depth plane is at the slot's top; the partial circular"
+                        + " profile gives its depth, " + mm(-bottom) + " mm");
             }
-            double re = Math.max(big - e, 0);
-            double ce = Math.max(r - e, 0);
-            double floor = Math.max(zc - e - Math.sqrt(Math.max(re * re - ce * ce, 0)), -depth);
-            DoubleUnaryOperator reach =
-                    z -> z + e >= zc ? big - r : Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
-            if (floor > -depth + tol.linear()) {
-                problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter reaches " + mm(-floor)
-                        + " mm of the rounded-U's " + mm(depth)
-                        + " mm; a ball end mill as wide as the slot reaches the bottom");
-            }
-            return shaped(label, course, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
+            return circular(
+                    label,
+                    course,
+                    arc.radius(),
+                    arc.zc(),
+                    bottom,
+                    "partial circle",
+                    tool,
+                    r,
+                    ends,
+                    h,
+                    t,
+                    axialMm,
+                    tol,
+                    problems,
+                    pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.Vee v) {
             double angle = v.profileAngleDeg();
@@ -176,9 +233,13 @@ final class SlotMilling {
                         + " mm stem in the slot's depth " + mm(depth) + " mm");
             }
             if (tool.body().equals("T_SLOT_MILL")) {
+                if (course instanceof Course.Arc arcCourse) {
+                    checkTSlotMill(tee, tool, t, tol);
+                    return crossBarAlongArc(label, arcCourse, ends, h, t);
+                }
                 if (!(course instanceof Course.Straight straightCourse)) {
                     throw new UnsupportedOperationException("a T_SLOT_MILL's cross bar is milled along a LINEAR_PATH"
-                            + " only: it enters from an open end and goes straight along the middle");
+                            + " or a CIRCULAR_PATH only: it enters from an open end and goes along the middle");
                 }
                 return crossBar(label, straightCourse.lengthMm(), tee, ends, tool, h, t, tol);
             }
@@ -202,6 +263,186 @@ final class SlotMilling {
         return widthMm;
     }
 
+    /**
+     * A cross-section bounded below by a circle of the radius about (0, zc) in the slot's
+     * profile plane, its walls straight and upright above the centre (a rounded-U; a partial
+     * circle's arc ends at or above the top), down to the bottom.
+     */
+    private static ToolpathSection circular(
+            String label,
+            Course course,
+            double big,
+            double zc,
+            double bottom,
+            String name,
+            Tool tool,
+            double r,
+            List<SlotEnd> ends,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            Tolerance tol,
+            List<String> problems,
+            PocketCutter pocket) {
+        double d = 2 * r;
+        double e = cornerRadius(tool, r);
+        if (e > big + tol.linear() || big - e < -tol.linear()) {
+            throw new UnsupportedOperationException("the cutter's corner radius " + e + " mm is larger than the" + " "
+                    + name + "'s radius " + big + " mm");
+        }
+        double re = Math.max(big - e, 0);
+        double ce = Math.max(r - e, 0);
+        double floor = Math.max(zc - e - Math.sqrt(Math.max(re * re - ce * ce, 0)), bottom);
+        DoubleUnaryOperator reach =
+                z -> z + e >= zc ? big - r : Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
+        if (floor > bottom + tol.linear()) {
+            problems.add("workingstep '" + label + "': the " + mm(d) + " mm cutter reaches " + mm(-floor)
+                    + " mm of the " + name + "'s " + mm(-bottom)
+                    + (zc > tol.linear()
+                            ? " mm; a ball end mill no wider than the circle (" + mm(2 * big)
+                                    + " mm) reaches the bottom"
+                            : " mm; a ball end mill as wide as the slot reaches the bottom"));
+        }
+        return shaped(label, course, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
+    }
+
+    /**
+     * A square-U slot with woodruff ends (ISO 14649-10 woodruff_slot_end_type: the end is the
+     * arc of a woodruff cutter of the radius, in the path's vertical plane): the floor ends at the
+     * path's end and rises beyond it along the arc about the point the radius above the floor
+     * there, to the top. A cutter along the feature axis cuts it in layers, each square-ended where
+     * the arc is at the layer's bottom, so the tool stays inside the arc and leaves steps along it.
+     */
+    private static ToolpathSection woodruff(
+            String label,
+            double length,
+            double halfWidth,
+            List<SlotEnd> ends,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            Tolerance tol,
+            List<String> problems,
+            PocketCutter pocket) {
+        double depth = h.topZ() - h.bottomZ();
+        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+        double r0 = woodruffRadius(start, depth);
+        double r1 = woodruffRadius(end, depth);
+        List<SlotEnd> square = new ArrayList<>();
+        for (SlotEnd e : ends) {
+            square.add(
+                    e.type() == EndType.WOODRUFF
+                            ? new SlotEnd(
+                                    EndType.FLAT,
+                                    e.entity(),
+                                    java.util.OptionalDouble.empty(),
+                                    java.util.OptionalDouble.empty())
+                            : e);
+        }
+        double step = axialMm > 0 ? Math.min(axialMm, SHAPED_LAYER_MM) : SHAPED_LAYER_MM;
+        int n = (int) Math.ceil(depth / step - 1e-9);
+        List<ToolpathSection> parts = new ArrayList<>();
+        double prev = h.topZ();
+        double steps = 0;
+        for (int i = 1; i <= n; i++) {
+            double z = i == n ? h.bottomZ() : h.topZ() - depth * i / n;
+            double e0 = beyond(r0, z - h.bottomZ());
+            double e1 = beyond(r1, z - h.bottomZ());
+            steps = Math.max(steps, Math.max(beyond(r0, prev - h.bottomZ()) - e0, beyond(r1, prev - h.bottomZ()) - e1));
+            Profile outline = outline(length + e0 + e1, halfWidth, t.radiusMm(), square, tol);
+            Vec2 shift = new Vec2((e1 - e0) / 2, 0);
+            parts.add(pocket.cut(
+                    outline instanceof Profile.RoundedRectangle rr
+                            ? new Profile.RoundedRectangle(
+                                    rr.center().plus(shift), rr.xLengthMm(), rr.yLengthMm(), rr.cornerRadiusMm())
+                            : new Profile.General(outline.contour(tol).translated(shift), ContourOffsetter.EXACT),
+                    List.of(),
+                    new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+            prev = z;
+        }
+        problems.add("workingstep '" + label + "': the woodruff end is cut in " + n + " layers square to the path,"
+                + " each as long as the end's arc at its bottom: steps up to " + mm(steps) + " mm are left along"
+                + " the arc, and the " + mm(t.radiusMm()) + " mm corners of the cutter in each layer's ends");
+        return join(label, parts);
+    }
+
+    /** A woodruff end's radius, 0 for any other end (which stays at the path's end). */
+    private static double woodruffRadius(SlotEnd e, double depth) {
+        if (e == null || e.type() != EndType.WOODRUFF) {
+            return 0;
+        }
+        double radius = e.firstRadiusMm()
+                .orElseThrow(() -> new IllegalArgumentException("the woodruff slot end has no radius"));
+        if (!(radius > 0 && radius <= ToolpathPlanner.MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("woodruff slot end radius " + radius + " mm is outside 0 to "
+                    + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+        }
+        if (radius < depth) {
+            throw new UnsupportedOperationException("the woodruff end's radius (" + mm(radius) + " mm) is less than"
+                    + " the slot's depth (" + mm(depth) + " mm): its arc does not reach the top");
+        }
+        return radius;
+    }
+
+    /** How far beyond the path's end a woodruff end of the radius reaches at the height above the floor. */
+    private static double beyond(double radius, double above) {
+        if (radius <= 0) {
+            return 0;
+        }
+        double dz = radius - above;
+        return Math.sqrt(Math.max(radius * radius - dz * dz, 0));
+    }
+
+    /** A partial circle's radius and the height of its centre above the slot's top (mm). */
+    record PartialCircle(double radius, double zc) {}
+
+    /**
+     * The arc of a PARTIAL_CIRCULAR_PROFILE in the slot: its axis along the path (square to the
+     * feature's), its ends level on either side of its lowest point, at or above the slot's top.
+     */
+    static PartialCircle partialCircle(org.fresa.stepnc.Profile.PartialCircular pc, Tolerance tol) {
+        double radius = pc.radiusMm();
+        if (!(radius > 0 && radius <= ToolpathPlanner.MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("partial circular profile radius " + radius + " mm is outside 0 to "
+                    + ToolpathPlanner.MAX_LENGTH_MM + " mm");
+        }
+        double sweep = pc.sweepAngleDeg();
+        if (!(sweep > 0 && sweep <= 180 + SQUARE_TOLERANCE_DEG)) {
+            throw new UnsupportedOperationException("the partial circular profile sweeps " + mm(sweep) + " deg: more"
+                    + " than a half circle is wider below the top than at it, which a cutter along the feature axis"
+                    + " cannot reach");
+        }
+        org.fresa.geom.Transform3 pl = pc.placement();
+        Vec3 axis = pl.zAxis();
+        if (Math.abs(axis.z()) > 1e-9) {
+            throw new UnsupportedOperationException("the partial circular profile's axis is not square to the"
+                    + " feature's: the slot's cross-section must stand upright");
+        }
+        Vec3 x = pl.applyToDirection(Vec3.UNIT_X);
+        Vec3 y = axis.cross(x);
+        double a = Math.toRadians(sweep);
+        Vec3 endDir = x.times(Math.cos(a)).plus(y.times(Math.sin(a)));
+        double zc = pl.translationPart().z();
+        // the file's numbers are written to a few decimals: level as a drawing is
+        if (Math.abs(x.z() - endDir.z()) * radius > Tolerance.DRAWING.linear()) {
+            throw new UnsupportedOperationException("the partial circular profile's ends are not level ("
+                    + mm(zc + radius * x.z()) + " and " + mm(zc + radius * endDir.z())
+                    + " mm): only an arc symmetric about the slot's middle is cut");
+        }
+        Vec3 middle = x.times(Math.cos(a / 2)).plus(y.times(Math.sin(a / 2)));
+        if (middle.z() > -0.5) {
+            throw new UnsupportedOperationException(
+                    "the partial circular profile's arc does not pass below its" + " centre: it is no slot's floor");
+        }
+        double zEnds = zc + radius * x.z();
+        if (zEnds < -tol.linear()) {
+            throw new UnsupportedOperationException("the partial circular profile's ends are " + mm(-zEnds)
+                    + " mm below the slot's top: the cross-section does not reach the top");
+        }
+        return new PartialCircle(radius, zc);
+    }
+
     /** The cutter's corner radius: a ball end mill's is its radius. */
     private static double cornerRadius(Tool tool, double r) {
         if (tool.body().equals("BALL_ENDMILL")) {
@@ -220,7 +461,12 @@ final class SlotMilling {
             Tooling t,
             Tolerance tol,
             PocketCutter pocket) {
-        return join(label, List.of(pocket.cut(course.outline(halfWidth, t.radiusMm(), ends, tol), h)));
+        return join(
+                label,
+                List.of(pocket.cut(
+                        course.outline(halfWidth, t.radiusMm(), ends, tol),
+                        course.islands(halfWidth, t.radiusMm(), tol),
+                        h)));
     }
 
     /**
@@ -246,8 +492,10 @@ final class SlotMilling {
         double top = h.topZ();
         if (zStraight < top - tol.linear()) {
             double z = Math.max(zStraight, floor);
+            double half = Math.max(reach.applyAsDouble(z), 0) + r;
             parts.add(pocket.cut(
-                    course.outline(Math.max(reach.applyAsDouble(z), 0) + r, r, ends, tol),
+                    course.outline(half, r, ends, tol),
+                    course.islands(half, r, tol),
                     new Heights(h.clearanceZ(), h.retractZ(), top, z)));
             top = z;
         }
@@ -259,11 +507,58 @@ final class SlotMilling {
                 double z = i == n ? floor : top - (top - floor) * i / n;
                 double half = Math.max(reach.applyAsDouble(z), 0) + r;
                 parts.add(pocket.cut(
-                        course.outline(half, r, ends, tol), new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
+                        course.outline(half, r, ends, tol),
+                        course.islands(half, r, tol),
+                        new Heights(h.clearanceZ(), h.retractZ(), prev, z)));
                 prev = z;
             }
         }
         return join(label, parts);
+    }
+
+    /**
+     * A loop slot's layer: the band between its outer wall and the island inside it, cleared
+     * contour-parallel by the pocket module's region pocketing, each loop entered by a ramp along
+     * itself.
+     *
+     * @param stepoverMm the radial step between loops
+     * @param climb whether the cutter climbs (it turns counter-clockwise about the island)
+     */
+    static ToolpathSection band(
+            String label,
+            Contour outer,
+            List<Contour> islands,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            boolean climb,
+            org.fresa.pocket.EntryRule entry) {
+        double depth = h.topZ() - h.bottomZ();
+        if (!(depth > 0)) {
+            throw new IllegalArgumentException("the loop slot's layer has no depth");
+        }
+        double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
+        org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(
+                t.diameterMm(),
+                fraction,
+                0,
+                h.topZ(),
+                h.bottomZ(),
+                axialMm > 0 ? axialMm : depth,
+                Math.max(t.spindleRpm(), 1),
+                t.feedMmPerMin(),
+                t.feedMmPerMin());
+        org.fresa.model.Toolpath path;
+        try {
+            path = org.fresa.pocket.RegionPocket.plan(outer, islands, tech, climb, entry)
+                    .toolpath();
+        } catch (org.fresa.pocket.ToolTooLargeException e) {
+            throw new UnsupportedOperationException(e.getMessage());
+        }
+        ToolpathSection s = path.sections().get(0);
+        return new ToolpathSection(
+                label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), s.start(), s.moves());
     }
 
     /** One section of the parts in order, the tool going from the end of each to the start of the next at clearance. */
@@ -306,6 +601,11 @@ final class SlotMilling {
         /** The outline at this half width, with the slot's ends. */
         Profile outline(double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol);
 
+        /** What stands inside the outline at this half width: nothing but for a loop. */
+        default List<Contour> islands(double halfWidth, double toolRadius, Tolerance tol) {
+            return List.of();
+        }
+
         /**
          * A LINEAR_PATH: x along it from its middle.
          *
@@ -345,6 +645,40 @@ final class SlotMilling {
                 return arcOutline(this, Math.max(halfWidth, toolRadius + ARC_CENTRE_ROOM_MM), ends, tol);
             }
         }
+
+        /**
+         * A GENERAL_PATH: its lines and arcs in the slot frame, open; or closed (a loop: the
+         * band between its walls, counter-clockwise), as is a full turn of a CIRCULAR_PATH.
+         */
+        record General(List<Curve2> path, boolean closed) implements Course {
+            public General {
+                path = List.copyOf(path);
+                if (path.isEmpty()) {
+                    throw new IllegalArgumentException("the slot's general path has no curve");
+                }
+            }
+
+            @Override
+            public Profile outline(double halfWidth, double toolRadius, List<SlotEnd> ends, Tolerance tol) {
+                double hw = withRoom(halfWidth, toolRadius);
+                Contour c = closed ? SlotBands.closedOuter(path, hw, tol) : SlotBands.openOutline(path, hw, ends, tol);
+                return new Profile.General(c, ContourOffsetter.EXACT);
+            }
+
+            @Override
+            public List<Contour> islands(double halfWidth, double toolRadius, Tolerance tol) {
+                return closed ? List.of(SlotBands.closedInner(path, withRoom(halfWidth, toolRadius), tol)) : List.of();
+            }
+        }
+    }
+
+    /**
+     * Where the cutter fits only along the middle, the pocket's inset of an outline as wide as
+     * the cutter is a curve of no area: a hair of room keeps it a loop along the middle, the tool
+     * leaving the slot's walls by no more than that hair.
+     */
+    private static double withRoom(double halfWidth, double toolRadius) {
+        return Math.max(halfWidth, toolRadius + ARC_CENTRE_ROOM_MM);
     }
 
     /**
@@ -355,15 +689,6 @@ final class SlotMilling {
     static Profile arcOutline(Course.Arc c, double halfWidth, List<SlotEnd> ends, Tolerance tol) {
         SlotEnd first = ends.isEmpty() ? null : ends.get(0);
         SlotEnd last = ends.size() < 2 ? first : ends.get(1);
-        for (SlotEnd e : new SlotEnd[] {first, last}) {
-            if (e != null
-                    && e.type() == EndType.FLAT
-                    && (e.firstRadiusMm().orElse(0) > 0 || e.secondRadiusMm().orElse(0) > 0)) {
-                throw new UnsupportedOperationException(
-                        "flat slot ends with corner radii are machined on a LINEAR_PATH only; along a CIRCULAR_PATH"
-                                + " a flat end is square");
-            }
-        }
         double rIn = c.radiusMm() - halfWidth;
         double rOut = c.radiusMm() + halfWidth;
         if (!(rIn > tol.linear())) {
@@ -375,21 +700,68 @@ final class SlotMilling {
         double a1 = Math.max(0, c.sweepRad());
         SlotEnd atA0 = c.sweepRad() > 0 ? first : last;
         SlotEnd atA1 = c.sweepRad() > 0 ? last : first;
+        // corner_radius1 is on the path's left: towards the centre on a counter-clockwise path
+        boolean leftIsInner = c.sweepRad() > 0;
+        double in0 = cornerRadius(atA0, leftIsInner, halfWidth);
+        double out0 = cornerRadius(atA0, !leftIsInner, halfWidth);
+        double in1 = cornerRadius(atA1, leftIsInner, halfWidth);
+        double out1 = cornerRadius(atA1, !leftIsInner, halfWidth);
+        // a corner's fillet touches the wall this far round from the end: sin = r / (its centre's radius)
+        double dOut0 = Math.asin(out0 / (rOut - out0));
+        double dOut1 = Math.asin(out1 / (rOut - out1));
+        double dIn0 = Math.asin(in0 / (rIn + in0));
+        double dIn1 = Math.asin(in1 / (rIn + in1));
+        if (a1 - dOut1 < a0 + dOut0 || a1 - dIn1 < a0 + dIn0) {
+            throw new UnsupportedOperationException(
+                    "the flat ends' corner radii do not fit along the slot's " + mm(Math.toDegrees(a1 - a0)) + " deg");
+        }
         List<Curve2> cs = new ArrayList<>();
         Vec2 o = Vec2.ZERO;
-        cs.add(new Arc2(o, polar(rOut, a0), polar(rOut, a1), true));
+        cs.add(new Arc2(o, polar(rOut, a0 + dOut0), polar(rOut, a1 - dOut1), true));
         if (isRadiused(atA1)) {
             cs.add(new Arc2(polar(c.radiusMm(), a1), polar(rOut, a1), polar(rIn, a1), true));
         } else {
-            cs.add(new Segment2(polar(rOut, a1), polar(rIn, a1)));
+            double lOut = Math.sqrt((rOut - out1) * (rOut - out1) - out1 * out1);
+            double lIn = Math.sqrt((rIn + in1) * (rIn + in1) - in1 * in1);
+            if (out1 > 0) {
+                cs.add(new Arc2(polar(rOut - out1, a1 - dOut1), polar(rOut, a1 - dOut1), polar(lOut, a1), true));
+            }
+            if (lOut - lIn > 1e-12) {
+                cs.add(new Segment2(polar(lOut, a1), polar(lIn, a1)));
+            }
+            if (in1 > 0) {
+                cs.add(new Arc2(polar(rIn + in1, a1 - dIn1), polar(lIn, a1), polar(rIn, a1 - dIn1), true));
+            }
         }
-        cs.add(new Arc2(o, polar(rIn, a1), polar(rIn, a0), false));
+        cs.add(new Arc2(o, polar(rIn, a1 - dIn1), polar(rIn, a0 + dIn0), false));
         if (isRadiused(atA0)) {
             cs.add(new Arc2(polar(c.radiusMm(), a0), polar(rIn, a0), polar(rOut, a0), true));
         } else {
-            cs.add(new Segment2(polar(rIn, a0), polar(rOut, a0)));
+            double lOut = Math.sqrt((rOut - out0) * (rOut - out0) - out0 * out0);
+            double lIn = Math.sqrt((rIn + in0) * (rIn + in0) - in0 * in0);
+            if (in0 > 0) {
+                cs.add(new Arc2(polar(rIn + in0, a0 + dIn0), polar(rIn, a0 + dIn0), polar(lIn, a0), true));
+            }
+            if (lOut - lIn > 1e-12) {
+                cs.add(new Segment2(polar(lIn, a0), polar(lOut, a0)));
+            }
+            if (out0 > 0) {
+                cs.add(new Arc2(polar(rOut - out0, a0 + dOut0), polar(lOut, a0), polar(rOut, a0 + dOut0), true));
+            }
         }
         return new Profile.General(Contour.of(cs, Tolerance.DRAWING), ContourOffsetter.EXACT);
+    }
+
+    /**
+     * A flat end's corner radius on one side of the path (corner_radius1 on its left), no more
+     * than the half width; 0 for other ends.
+     */
+    private static double cornerRadius(SlotEnd e, boolean left, double halfWidth) {
+        if (e == null || e.type() != EndType.FLAT) {
+            return 0;
+        }
+        double r = left ? e.firstRadiusMm().orElse(0) : e.secondRadiusMm().orElse(0);
+        return Math.min(Math.max(r, 0), halfWidth);
     }
 
     private static Vec2 polar(double r, double a) {
@@ -514,19 +886,7 @@ final class SlotMilling {
             Tooling t,
             Tolerance tol) {
         double r = t.radiusMm();
-        if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
-                    + " cross bar (" + mm(tee.crossBarWidthMm()) + " mm)");
-        }
-        if (t.diameterMm() < tee.widthMm() - tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
-                    + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
-        }
-        double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
-        if (edge < tee.crossBarDepthMm() - tol.linear()) {
-            throw new UnsupportedOperationException("the T-slot mill's cutting edge (" + mm(edge) + " mm) is shorter"
-                    + " than the cross bar (" + mm(tee.crossBarDepthMm()) + " mm)");
-        }
+        checkTSlotMill(tee, tool, t, tol);
         SlotEnd start = ends.isEmpty() ? null : ends.get(0);
         SlotEnd end = ends.size() < 2 ? start : ends.get(1);
         boolean startOpen = start != null && start.type() == EndType.OPEN;
@@ -563,6 +923,86 @@ final class SlotMilling {
                 t.spindleRpm(),
                 new Vec3(outside, 0, h.clearanceZ()),
                 b.moves());
+    }
+
+    /** A T-slot mill fits the cross bar: no wider than the bar, no narrower than the stem, its edge as deep as the bar. */
+    private static void checkTSlotMill(org.fresa.stepnc.Profile.Tee tee, Tool tool, Tooling t, Tolerance tol) {
+        if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
+                    + " cross bar (" + mm(tee.crossBarWidthMm()) + " mm)");
+        }
+        if (t.diameterMm() < tee.widthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
+                    + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
+        }
+        double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
+        if (edge < tee.crossBarDepthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill's cutting edge (" + mm(edge) + " mm) is shorter"
+                    + " than the cross bar (" + mm(tee.crossBarDepthMm()) + " mm)");
+        }
+    }
+
+    /**
+     * The tee's cross bar along an arc with a T-slot mill: down beyond an open end, on the
+     * path's tangent there, where the cutter cuts air; straight to the end, along the middle arc
+     * at the floor to the other end (out past it when open, to a radiused end's centre, or where
+     * the cutter's disc touches a flat end), and back out the same way.
+     */
+    private static ToolpathSection crossBarAlongArc(
+            String label, Course.Arc c, List<SlotEnd> ends, Heights h, Tooling t) {
+        double r = t.radiusMm();
+        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+        boolean startOpen = start != null && start.type() == EndType.OPEN;
+        boolean endOpen = end != null && end.type() == EndType.OPEN;
+        if (!startOpen && !endOpen) {
+            throw new UnsupportedOperationException(
+                    "a T_SLOT_MILL enters the cross bar from an open end; the slot has" + " none");
+        }
+        double radius = c.radiusMm();
+        if (r >= radius) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than"
+                    + " its circular path (" + mm(2 * radius) + " mm)");
+        }
+        // the end entered from, and the angle turned from it to the far end (counter-clockwise +)
+        double aIn = startOpen ? 0 : c.sweepRad();
+        double turn = startOpen ? c.sweepRad() : -c.sweepRad();
+        SlotEnd far = startOpen ? end : start;
+        double sign = Math.signum(turn);
+        Vec2 in = polar(radius, aIn);
+        // the path's direction into the slot there: along the turn
+        Vec2 into = new Vec2(-Math.sin(aIn) * sign, Math.cos(aIn) * sign);
+        Vec2 outside = in.minus(into.times(r + OPEN_END_CLEARANCE_MM));
+        double aFar;
+        if (far != null && far.type() == EndType.OPEN) {
+            aFar = aIn + turn;
+        } else if (far != null && far.type() == EndType.RADIUSED) {
+            aFar = aIn + turn;
+        } else {
+            aFar = aIn + turn - sign * Math.asin(r / radius);
+        }
+        if ((aFar - aIn) * sign <= 0) {
+            throw new UnsupportedOperationException("the T-slot mill does not fit along the slot's arc");
+        }
+        double z = h.bottomZ();
+        Vec3 o3 = Vec3.of(outside, h.clearanceZ());
+        Vec3 centre = Vec3.of(Vec2.ZERO, z);
+        MoveBuilder b = new MoveBuilder(o3);
+        b.rapid(Vec3.of(outside, h.retractZ()));
+        b.feed(Vec3.of(outside, z), t.plungeFeedMmPerMin());
+        b.feed(Vec3.of(in, z), t.feedMmPerMin());
+        b.arc(Vec3.of(polar(radius, aFar), z), centre, sign > 0, 0, t.feedMmPerMin());
+        if (far != null && far.type() == EndType.OPEN) {
+            Vec2 at = polar(radius, aFar);
+            Vec2 on = new Vec2(-Math.sin(aFar) * sign, Math.cos(aFar) * sign);
+            b.feed(Vec3.of(at.plus(on.times(r + OPEN_END_CLEARANCE_MM)), z), t.feedMmPerMin());
+            b.feed(Vec3.of(at, z), t.feedMmPerMin());
+        }
+        b.arc(Vec3.of(in, z), centre, sign < 0, 0, t.feedMmPerMin());
+        b.feed(Vec3.of(outside, z), t.feedMmPerMin());
+        b.rapid(Vec3.of(outside, h.retractZ()));
+        b.rapid(o3);
+        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), o3, b.moves());
     }
 
     private static String mm(double v) {

@@ -67,9 +67,9 @@ import org.fresa.stepnc.Tool;
  * and depth_of_step (else one tool diameter); reaming and boring leave at feed; milling operations use helical
  * interpolation when the hole is at most twice the tool diameter, and the operation's strategy
  * on a circular pocket (entered on a helix) when it is wider.
- * <li>Slots on a linear path are milled by {@link SlotMilling}: square-U, rounded-U, vee and tee
- * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
- * with the reason.
+ * <li>Slots along linear, circular and general paths are milled by {@link SlotMilling}: square-U,
+ * rounded-U, partial circular, vee and tee profiles as far as the tool fits them, radiused, flat,
+ * open, woodruff and loop ends; the others are refused with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Steps, closed general outside profiles and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
@@ -325,15 +325,26 @@ public final class ToolpathPlanner {
                         axial,
                         tol,
                         problems,
-                        (outline, layer) -> pocket(
-                                label,
-                                outline,
-                                op,
-                                layer,
-                                tooling,
-                                pp,
-                                tol,
-                                holes.choices().entry()));
+                        (outline, islands, layer) -> islands.isEmpty()
+                                ? pocket(
+                                        label,
+                                        outline,
+                                        op,
+                                        layer,
+                                        tooling,
+                                        pp,
+                                        tol,
+                                        holes.choices().entry())
+                                : SlotMilling.band(
+                                        label,
+                                        outline.contour(tol),
+                                        islands,
+                                        layer,
+                                        tooling,
+                                        stepover(op, tooling),
+                                        axial,
+                                        !clockwise(op),
+                                        holes.choices().entry()));
             }
             case STEP -> {
                 StepShape st = stepShape(f, holes.program(), tool, tol);
@@ -592,7 +603,7 @@ public final class ToolpathPlanner {
                 f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
         if (!path.entity().equals("LINEAR_PATH")) {
             throw new UnsupportedOperationException("slots along a " + path.entity() + " are not machined: the"
-                    + " planner follows a LINEAR_PATH or a CIRCULAR_PATH course of travel only");
+                    + " planner follows a LINEAR_PATH, a CIRCULAR_PATH or a GENERAL_PATH course of travel only");
         }
         double length =
                 path.distanceMm().orElseThrow(() -> new IllegalArgumentException("the slot's path has no length"));
@@ -607,6 +618,21 @@ public final class ToolpathPlanner {
     static SlotMilling.Course slotCourse(Feature f) {
         org.fresa.stepnc.TravelPath path =
                 f.courseOfTravel().orElseThrow(() -> new IllegalArgumentException("the slot has no course of travel"));
+        if (path.entity().equals("GENERAL_PATH")) {
+            return generalCourse(path);
+        }
+        if (path.entity().equals("CIRCULAR_PATH")
+                && path.sweepAngle().isPresent()
+                && Math.abs(Math.abs(path.sweepAngle().getAsDouble()) - 2 * Math.PI) < 1e-9) {
+            // a full turn: the loop about the circle's centre, where the slot frame is
+            double radius = path.radiusMm()
+                    .orElseThrow(() -> new IllegalArgumentException("the slot's circular path has no radius"));
+            if (!(radius > 0 && radius <= MAX_LENGTH_MM)) {
+                throw new IllegalArgumentException(
+                        "the circular path's radius " + radius + " mm is outside 0 to " + MAX_LENGTH_MM + " mm");
+            }
+            return new SlotMilling.Course.General(List.of(Arc2.circle(Vec2.ZERO, radius, true)), true);
+        }
         if (path.entity().equals("CIRCULAR_PATH")) {
             return new SlotMilling.Course.Arc(
                     path.radiusMm()
@@ -619,12 +645,74 @@ public final class ToolpathPlanner {
     }
 
     /**
+     * A GENERAL_PATH's curve in the feature frame, flat on the feature's xy plane: open, or
+     * closed (a loop), turned counter-clockwise then.
+     */
+    static SlotMilling.Course.General generalCourse(org.fresa.stepnc.TravelPath path) {
+        if (path.curve().isEmpty()) {
+            throw new UnsupportedOperationException("the slot's GENERAL_PATH has no swept_path the planner reads: a"
+                    + " POLYLINE, or a COMPOSITE_CURVE of trimmed lines and circles, is machined");
+        }
+        Transform3 pl = path.placement();
+        if (pl.zAxis().minus(Vec3.UNIT_Z).norm() > 1e-9) {
+            throw new UnsupportedOperationException(
+                    "the slot's general path does not lie square to the feature's axis: its axis is "
+                            + axis(pl.zAxis()));
+        }
+        List<Curve2> cs = new ArrayList<>();
+        double z0 = Double.NaN;
+        for (org.fresa.stepnc.Profile.Segment s : path.curve()) {
+            Vec3 a = pl.applyToPoint(s.start());
+            Vec3 b = pl.applyToPoint(s.end());
+            for (Vec3 p : List.of(a, b)) {
+                if (Double.isNaN(z0)) {
+                    z0 = p.z();
+                } else if (Math.abs(p.z() - z0) > 1e-6) {
+                    throw new UnsupportedOperationException("the slot's general path is not flat: it runs from z "
+                            + mm(z0) + " to " + mm(p.z()) + " mm");
+                }
+                if (Math.max(Math.abs(p.x()), Math.abs(p.y())) > MAX_LENGTH_MM) {
+                    throw new IllegalArgumentException(
+                            "the slot's general path reaches beyond " + MAX_LENGTH_MM + " mm of its feature's origin");
+                }
+            }
+            Vec2 a2 = new Vec2(a.x(), a.y());
+            Vec2 b2 = new Vec2(b.x(), b.y());
+            if (s instanceof org.fresa.stepnc.Profile.Arc arc) {
+                Vec3 c = pl.applyToPoint(arc.center());
+                cs.add(new Arc2(new Vec2(c.x(), c.y()), a2, b2, arc.ccw()));
+            } else if (a2.distance(b2) > 1e-9) {
+                cs.add(new Segment2(a2, b2));
+            }
+        }
+        if (cs.isEmpty()) {
+            throw new IllegalArgumentException("the slot's general path has no length");
+        }
+        for (int i = 0; i + 1 < cs.size(); i++) {
+            if (cs.get(i).end().distance(cs.get(i + 1).start()) > 1e-6) {
+                throw new IllegalArgumentException(
+                        "the slot's general path is broken between its elements " + (i + 1) + " and " + (i + 2));
+            }
+        }
+        boolean closed = cs.get(0).start().distance(cs.get(cs.size() - 1).end()) <= 1e-6;
+        if (closed) {
+            Contour c = Contour.of(cs, Tolerance.DRAWING).ccw();
+            return new SlotMilling.Course.General(c.curves(), true);
+        }
+        return new SlotMilling.Course.General(cs, false);
+    }
+
+    /**
      * The slot's frame in the feature frame, z the feature's axis: along a linear path, its
      * middle with x along the path; along a circular path, the circle's centre (the path's
      * placement) with x towards the path's start.
      */
     static Transform3 slotFrame(Feature f) {
         org.fresa.stepnc.TravelPath path = f.courseOfTravel().orElseThrow();
+        if (path.entity().equals("GENERAL_PATH")) {
+            // the path's curve is read into the feature frame itself
+            return Transform3.IDENTITY;
+        }
         if (path.entity().equals("CIRCULAR_PATH")) {
             if (path.placement().zAxis().cross(Vec3.UNIT_Z).norm() > 1e-9) {
                 throw new UnsupportedOperationException(

@@ -341,7 +341,9 @@ class SlotProfilesTest {
                         .endsWith("a dovetail slot needs a DOVETAIL_MILL; the tool is a BALL_ENDMILL"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS ROUND U FLAT").contains("woodruff slot ends are not machined"),
+                problemOf(p, "WS ROUND U FLAT")
+                        .contains("woodruff slot ends are machined on a SQUARE_U_PROFILE slot along a LINEAR_PATH"
+                                + " only"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS VEE").contains("the vee leans by -15 deg (tilt_angle 30 deg for a 90 deg vee)"),
@@ -351,7 +353,8 @@ class SlotProfilesTest {
                         .endsWith("a T_SLOT_MILL enters the cross bar from an open end; the slot" + " has none"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS SQUARE U ENDS").contains("loop slot ends are not machined"),
+                problemOf(p, "WS SQUARE U ENDS")
+                        .contains("loop slot ends are machined along a closed course of travel only"),
                 p.problems().toString());
         // the stem is still milled (its flat ends keep the cutter within the slot)
         assertEquals(1, p.planned(), p.problems().toString());
@@ -367,14 +370,14 @@ class SlotProfilesTest {
     @Test
     void aPartWhoseSlotsAreAllRefusedWritesNoProgramAndExitsWith1(@TempDir Path dir) throws Exception {
         String part = Files.readString(PART);
-        // every slot gets a woodruff end
+        // every slot gets a woodruff end, of a radius less than any slot's depth
         String text = part.replace("(#26,#26)", "(#26,#38)")
                 .replace("(#29,#29)", "(#29,#38)")
                 .replace("(#29,#32)", "(#29,#38)")
                 .replace("(#37,#29)", "(#37,#38)")
                 .replace(
                         "#37= FLAT_SLOT_END_TYPE(6.000,4.000);",
-                        "#37= FLAT_SLOT_END_TYPE(6.000,4.000);\n" + "#38= WOODRUFF_SLOT_END_TYPE(8.000);");
+                        "#37= FLAT_SLOT_END_TYPE(6.000,4.000);\n" + "#38= WOODRUFF_SLOT_END_TYPE(1.000);");
         Path file = dir.resolve("woodruff.stp");
         Files.writeString(file, text);
         TaskOutcome o = ToolpathService.run(
@@ -383,7 +386,9 @@ class SlotProfilesTest {
         assertFalse(Files.exists(dir.resolve("out/program.ngc")));
         assertEquals(6, o.problems().size(), o.problems().toString());
         assertTrue(
-                o.problems().stream().allMatch(x -> x.contains("woodruff slot ends are not machined")),
+                o.problems().stream()
+                        .allMatch(x -> x.contains("woodruff slot ends are machined on a SQUARE_U_PROFILE")
+                                || x.contains("the woodruff end's radius (1 mm) is less than the slot's depth")),
                 o.problems().toString());
     }
 }

@@ -74,14 +74,14 @@ class StepncCommandTest {
         assertEquals(0, prose.status(), prose.err());
         assertTrue(
                 prose.out()
-                        .contains("1 workingstep not planned:\n  #15 'WS SQUARE U ENDS': loop slot ends are not"
-                                + " machined"),
+                        .contains("1 workingstep not planned:\n  #15 'WS SQUARE U ENDS': loop slot ends are"
+                                + " machined along a closed course of travel only"),
                 prose.out());
         Run json = fresa("stepnc", file.toString(), "--json");
         assertTrue(
                 json.out()
                         .contains("\"not_planned\":[{\"id\":\"WS SQUARE U ENDS\",\"instance\":15,\"reason\":"
-                                + "\"loop slot ends are not machined"),
+                                + "\"loop slot ends are machined along a closed course of travel only"),
                 json.out());
         assertFalse(fresa("stepnc", "src/test/resources/stepnc/slots-profiles.stp")
                 .out()
