@@ -207,35 +207,9 @@ final class OpenSideMilling {
             List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
+        Profile region = new Profile.General(carriedPastOpenSide(walls, stock, off, t, tol), ContourOffsetter.EXACT);
         Vec2 s = walls.get(0).start();
-        Vec2 e = walls.get(walls.size() - 1).end();
-        if (s.distance(e) < 2 * off + tol.linear()) {
-            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
-                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
-        }
-        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
-            if (stock.distanceTo(p) > tol.linear()) {
-                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to (" + xy(s)
-                        + "), is not on the edge of the workpiece's block");
-            }
-        }
-        List<Curve2> closed = new ArrayList<>(walls);
-        closed.add(new Segment2(e, s));
-        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
-        Vec2 chord = s.minus(e).normalized();
-        Vec2 out = chord.leftNormal();
-        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
-            out = out.negated();
-        }
-        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
-        double past = 2 * off + OUTSIDE_MM;
-        List<Curve2> grown = new ArrayList<>(walls);
-        Vec2 e2 = e.plus(out.times(past));
-        Vec2 s2 = s.plus(out.times(past));
-        grown.add(new Segment2(e, e2));
-        grown.add(new Segment2(e2, s2));
-        grown.add(new Segment2(s2, s));
-        Profile region = new Profile.General(Contour.of(grown, Tolerance.DRAWING), ContourOffsetter.EXACT);
+        Vec2 out = outOfOpenSide(walls);
         List<Ring> rings = region.insetAll(off, tol);
         if (rings.isEmpty()) {
             throw new UnsupportedOperationException(
@@ -310,6 +284,55 @@ final class OpenSideMilling {
         List<Curve2> ring = new ArrayList<>(split.subList(best, split.size()));
         ring.addAll(split.subList(0, best));
         return ring;
+    }
+
+    /**
+     * The open pocket's region carried past its open side (the straight line from the walls' end
+     * back to their start) by a cutter's diameter (twice the offset) and the clearance, so that
+     * the tool at the offset from it runs in the air there.
+     *
+     * @param off the tool's radius and the side allowance
+     * @throws UnsupportedOperationException when the open side is not on the stock's edge or too
+     *     narrow for the tool
+     */
+    static Contour carriedPastOpenSide(List<Curve2> walls, Contour stock, double off, Tooling t, Tolerance tol) {
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        if (s.distance(e) < 2 * off + tol.linear()) {
+            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
+                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
+        }
+        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
+            if (stock.distanceTo(p) > tol.linear()) {
+                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to (" + xy(s)
+                        + "), is not on the edge of the workpiece's block");
+            }
+        }
+        Vec2 out = outOfOpenSide(walls);
+        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
+        double past = 2 * off + OUTSIDE_MM;
+        List<Curve2> grown = new ArrayList<>(walls);
+        Vec2 e2 = e.plus(out.times(past));
+        Vec2 s2 = s.plus(out.times(past));
+        grown.add(new Segment2(e, e2));
+        grown.add(new Segment2(e2, s2));
+        grown.add(new Segment2(s2, s));
+        return Contour.of(grown, Tolerance.DRAWING);
+    }
+
+    /** The unit normal of the open side pointing out of the pocket. */
+    private static Vec2 outOfOpenSide(List<Curve2> walls) {
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        List<Curve2> closed = new ArrayList<>(walls);
+        closed.add(new Segment2(e, s));
+        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
+        Vec2 chord = s.minus(e).normalized();
+        Vec2 out = chord.leftNormal();
+        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
+            out = out.negated();
+        }
+        return out;
     }
 
     private static List<Curve2> reversed(List<Curve2> cs) {
