@@ -73,8 +73,9 @@ import org.fresa.stepnc.Tool;
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
  * <li>Steps, closed general outside profiles and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
- * depth; a step, open pocket or planar face with bosses is refused (its bosses would be milled away); a
- * closed pocket leaves its bosses standing ({@link BossPockets}).
+ * depth; closed pockets, steps, open pockets and planar faces leave their bosses standing
+ * ({@link BossPockets}): the feature's region (carried into the air beyond its open sides) less
+ * the bosses, cleared by the region engine.
  * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
  * outside profiles and open pockets are reported and skipped.
  * </ul>
@@ -263,14 +264,29 @@ public final class ToolpathPlanner {
             return Optional.of(viaSecurityPlane(
                     Placing.place(ExplicitPaths.section(label, op, tooling, problems), place), ws.securityPlane()));
         }
-        if (!f.bosses().isEmpty() && f.type() != Feature.FeatureType.CLOSED_POCKET) {
+        if (!f.bosses().isEmpty() && !BossPockets.LEAVES_BOSSES.contains(f.type())) {
             // cutting it as if it had none would mill its bosses away
             throw new UnsupportedOperationException(
                     f.type() + " features with bosses (its_boss) are not supported yet");
         }
         ToolpathSection local;
         switch (f.type()) {
-            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
+            case PLANAR_FACE -> {
+                if (f.bosses().isEmpty()) {
+                    local = face(label, f, op, h, tooling, problems);
+                } else {
+                    // round the bosses, the face carried into the air where the stock ends
+                    java.util.Optional<Contour> stock = holes.program()
+                                    .workpieceOf(f)
+                                    .flatMap(org.fresa.stepnc.Workpiece::block)
+                                    .isPresent()
+                            ? Optional.of(stockOutline(holes.program(), f, place, "planar face"))
+                            : Optional.empty();
+                    Contour region = BossPockets.faceRegion(faceBoundary(f), stock, tooling, tol);
+                    local = withBosses(
+                            label, "planar face", region, f, place, op, h, tooling, axial, tol, holes, problems);
+                }
+            }
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
@@ -338,20 +354,34 @@ public final class ToolpathPlanner {
             case STEP -> {
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
-                local = OpenSideMilling.step(
-                        label,
-                        st.lengthMm(),
-                        st.widthMm(),
-                        st.openStart(),
-                        st.openEnd(),
-                        h,
-                        tooling,
-                        stepover(op, tooling),
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol);
+                local = !f.bosses().isEmpty()
+                        ? withBosses(
+                                label,
+                                "step",
+                                BossPockets.stepRegion(st, tooling),
+                                f,
+                                place,
+                                op,
+                                h,
+                                tooling,
+                                axial,
+                                tol,
+                                holes,
+                                problems)
+                        : OpenSideMilling.step(
+                                label,
+                                st.lengthMm(),
+                                st.widthMm(),
+                                st.openStart(),
+                                st.openEnd(),
+                                h,
+                                tooling,
+                                stepover(op, tooling),
+                                axial,
+                                sideAllowanceMm(op),
+                                bottomAllowanceMm(op),
+                                climb(op),
+                                tol);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -433,19 +463,33 @@ public final class ToolpathPlanner {
                     }
                 }
                 Contour stock = stockOutline(holes.program(), f, place, "open pocket");
-                local = OpenSideMilling.openPocket(
-                        label,
-                        walls,
-                        stock,
-                        h,
-                        tooling,
-                        stepover(op, tooling),
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol,
-                        problems);
+                local = !f.bosses().isEmpty()
+                        ? withBosses(
+                                label,
+                                "open pocket",
+                                OpenSideMilling.carriedPastOpenSide(walls, stock, tooling.radiusMm(), tooling, tol),
+                                f,
+                                place,
+                                op,
+                                h,
+                                tooling,
+                                axial,
+                                tol,
+                                holes,
+                                problems)
+                        : OpenSideMilling.openPocket(
+                                label,
+                                walls,
+                                stock,
+                                h,
+                                tooling,
+                                stepover(op, tooling),
+                                axial,
+                                sideAllowanceMm(op),
+                                bottomAllowanceMm(op),
+                                climb(op),
+                                tol,
+                                problems);
             }
             default ->
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
@@ -453,6 +497,41 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * A step, open pocket or planar face with bosses: its region (carried into the air beyond its
+     * open sides) less its bosses, cleared by the pocket module's region pocketing, cut to size.
+     */
+    private static ToolpathSection withBosses(
+            String label,
+            String what,
+            Contour region,
+            Feature f,
+            Transform3 place,
+            Operation op,
+            Heights h,
+            Tooling tooling,
+            double axial,
+            Tolerance tol,
+            HoleContext holes,
+            List<String> problems) {
+        List<Contour> islands = BossPockets.islands(f, what, place, h, tol);
+        BossPockets.inside(f, what, region, islands, tol);
+        return BossPockets.section(
+                label,
+                what,
+                region,
+                islands,
+                op,
+                h,
+                tooling,
+                stepover(op, tooling),
+                axial,
+                climb(op),
+                tol,
+                holes.choices().entry(),
+                problems);
     }
 
     /**
