@@ -50,6 +50,46 @@ final class OpenSideMilling {
             double bottomAllowanceMm,
             boolean climb,
             Tolerance tol) {
+        return step(
+                label,
+                lengthMm,
+                widthMm,
+                openStart,
+                openEnd,
+                0,
+                h,
+                t,
+                stepoverMm,
+                axialMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                climb,
+                tol);
+    }
+
+    /**
+     * A step whose wall slopes back from its foot: each layer's passes go in to the wall where it
+     * stands at the layer's bottom, so the tool stays within the step and leaves a step on the
+     * wall as high as the layer.
+     *
+     * @param footPerMm how far (mm) the wall lies farther out (towards -y) for each mm below the
+     *     step's top: 0 for a vertical wall, -1 / tan(profile_angle) for a sloped one
+     */
+    static ToolpathSection step(
+            String label,
+            double lengthMm,
+            double widthMm,
+            boolean openStart,
+            boolean openEnd,
+            double footPerMm,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol) {
         double r = t.radiusMm();
         double x0 = openStart ? -(r + OUTSIDE_MM) : r;
         double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
@@ -58,17 +98,8 @@ final class OpenSideMilling {
                     + " mm) is longer than the step between its closed ends (" + ToolpathPlanner.mm(lengthMm) + " mm)");
         }
         x1 = Math.max(x1, x0);
-        double wallY = -(r + sideAllowanceMm);
         double outY = -(widthMm + r + OUTSIDE_MM);
-        // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
-        List<Double> ys = new ArrayList<>();
-        double y = -widthMm - r + stepoverMm;
         ToolpathPlanner.bounded("the step's width", widthMm, "the stepover", stepoverMm);
-        while (y < wallY - tol.linear()) {
-            ys.add(y);
-            y += stepoverMm;
-        }
-        ys.add(wallY);
         double floor = h.bottomZ() + bottomAllowanceMm;
         Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         double xa = climb ? x1 : x0;
@@ -76,6 +107,15 @@ final class OpenSideMilling {
         MoveBuilder b = new MoveBuilder(new Vec3(xa, outY, h.clearanceZ()));
         b.rapid(new Vec3(xa, outY, h.retractZ()));
         for (double z : layers.layers(axialMm)) {
+            double wallY = -(r + sideAllowanceMm) - footPerMm * (h.topZ() - z);
+            // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
+            List<Double> ys = new ArrayList<>();
+            double y = -widthMm - r + stepoverMm;
+            while (y < wallY - tol.linear()) {
+                ys.add(y);
+                y += stepoverMm;
+            }
+            ys.add(wallY);
             for (double py : ys) {
                 b.rapid(new Vec3(xa, outY, h.retractZ()));
                 // down in the air beyond the open side, then in at depth

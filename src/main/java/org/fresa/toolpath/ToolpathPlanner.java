@@ -354,6 +354,11 @@ public final class ToolpathPlanner {
             case STEP -> {
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
+                if (!f.bosses().isEmpty() && st.sloped()) {
+                    throw new UnsupportedOperationException(
+                            "steps with a sloped wall and bosses are not supported yet: the region round the"
+                                    + " bosses would need to follow the wall in each layer");
+                }
                 local = !f.bosses().isEmpty()
                         ? withBosses(
                                 label,
@@ -368,20 +373,22 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : OpenSideMilling.step(
-                                label,
-                                st.lengthMm(),
-                                st.widthMm(),
-                                st.openStart(),
-                                st.openEnd(),
-                                h,
-                                tooling,
-                                stepover(op, tooling),
-                                axial,
-                                sideAllowanceMm(op),
-                                bottomAllowanceMm(op),
-                                climb(op),
-                                tol);
+                        : st.sloped()
+                                ? slopedStep(label, st, h, tooling, op, axial, tol, problems)
+                                : OpenSideMilling.step(
+                                        label,
+                                        st.lengthMm(),
+                                        st.widthMm(),
+                                        st.openStart(),
+                                        st.openEnd(),
+                                        h,
+                                        tooling,
+                                        stepover(op, tooling),
+                                        axial,
+                                        sideAllowanceMm(op),
+                                        bottomAllowanceMm(op),
+                                        climb(op),
+                                        tol);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -500,6 +507,42 @@ public final class ToolpathPlanner {
     }
 
     /**
+     * A step whose wall slopes back: layers no thicker than the vee slots' (docs/slots.md), each
+     * cut in to where the wall stands at its bottom; the steps this leaves on the wall are reported
+     * with their height and width.
+     */
+    private static ToolpathSection slopedStep(
+            String label,
+            StepShape st,
+            Heights h,
+            Tooling tooling,
+            Operation op,
+            double axial,
+            Tolerance tol,
+            List<String> problems) {
+        double layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
+        double footPerMm = st.footMm(1);
+        problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg()) + " deg is cut in "
+                + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and " + mm(layer * footPerMm)
+                + " mm wide are left on it");
+        return OpenSideMilling.step(
+                label,
+                st.lengthMm(),
+                st.widthMm(),
+                st.openStart(),
+                st.openEnd(),
+                footPerMm,
+                h,
+                tooling,
+                stepover(op, tooling),
+                layer,
+                sideAllowanceMm(op),
+                bottomAllowanceMm(op),
+                climb(op),
+                tol);
+    }
+
+    /**
      * A step, open pocket or planar face with bosses: its region (carried into the air beyond its
      * open sides) less its bosses, cleared by the pocket module's region pocketing, cut to size.
      */
@@ -559,7 +602,32 @@ public final class ToolpathPlanner {
      * A step in its own frame (x along the open boundary from its start, z the feature axis, the
      * material kept at +y) and how far the step reaches out to the stock's edge.
      */
-    record StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {}
+    record StepShape(
+            Transform3 frame,
+            double lengthMm,
+            double widthMm,
+            boolean openStart,
+            boolean openEnd,
+            double wallAngleDeg) {
+
+        /** A step with a vertical wall. */
+        StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {
+            this(frame, lengthMm, widthMm, openStart, openEnd, 90);
+        }
+
+        /** Whether the wall slopes back from its foot (profile_angle above 90 deg). */
+        boolean sloped() {
+            return wallAngleDeg > 90;
+        }
+
+        /**
+         * How far (mm, towards -y) the wall's foot lies from the open boundary at the step's top
+         * for a step this deep: 0 for a vertical wall.
+         */
+        double footMm(double depthMm) {
+            return sloped() ? -depthMm / Math.tan(Math.toRadians(wallAngleDeg)) : 0;
+        }
+    }
 
     /**
      * The step's frame and extent: ISO 14649-10 keeps the material on the left of the open
@@ -581,16 +649,25 @@ public final class ToolpathPlanner {
         }
         org.fresa.stepnc.Profile wall =
                 f.profile().orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
+        double wallAngle = 90;
         if (wall instanceof org.fresa.stepnc.Profile.Vee v) {
             // GRIMA's writers put pi / 2 there in radians, also in files not otherwise known as
             // theirs: a wall 1.57 deg from its floor is no step
             boolean radiansRight = Math.abs(v.profileAngleDeg() - Math.PI / 2) < 1e-6;
             if (!radiansRight && Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
-                throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
-                        + " deg to its floor: only a vertical wall (profile_angle 90 deg) is milled");
+                if (!(v.profileAngleDeg() > 90 && v.profileAngleDeg() < 180)) {
+                    throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
+                            + " deg to its floor: it overhangs the floor, which a cutter along the feature's axis"
+                            + " cannot reach under; only walls at 90 deg or sloping back (up to 180 deg) are milled");
+                }
+                wallAngle = v.profileAngleDeg();
             }
             double rho = v.profileRadiusMm().orElse(0);
             double edge = tool.edgeRadiusMm().orElse(0);
+            if (rho > tol.linear() && wallAngle != 90) {
+                throw new UnsupportedOperationException("the step's sloped wall meets its floor in a " + mm(rho)
+                        + " mm radius: only a sloped wall with a sharp foot is milled");
+            }
             if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
                 throw new UnsupportedOperationException("the step's wall meets its floor in a " + mm(rho)
                         + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
@@ -634,7 +711,15 @@ public final class ToolpathPlanner {
         }
         Transform3 frame =
                 Transform3.ofFrame(s3.minus(new Vec3(0, 0, s3.z())), Vec3.UNIT_Z, new Vec3(along.x(), along.y(), 0));
-        return new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear());
+        StepShape shape =
+                new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear(), wallAngle);
+        double foot = shape.footMm(f.depthMm().orElse(0));
+        if (foot >= width - tol.linear()) {
+            throw new UnsupportedOperationException("the step's wall sloped at " + mm(wallAngle) + " deg reaches "
+                    + mm(foot) + " mm out at its floor, past the block's side " + mm(width)
+                    + " mm away: the step has no floor");
+        }
+        return shape;
     }
 
     /**

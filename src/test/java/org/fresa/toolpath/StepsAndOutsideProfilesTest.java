@@ -243,7 +243,7 @@ class StepsAndOutsideProfilesTest {
         String part = Files.readString(PART);
         ToolpathPlanner.Plan p = planText(
                 part
-                        // a sloped wall, a boss larger than the closed step, an open outside profile
+                        // a wall overhanging its floor, a boss larger than the closed step, an open outside profile
                         .replace(
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#25,());",
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#29,());\n#29= VEE_PROFILE($,0.000,60.000,90.000);")
@@ -275,7 +275,9 @@ class StepsAndOutsideProfilesTest {
                                 + " free-standing bosses are left standing"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS STEP ROUGH").endsWith("only a vertical wall (profile_angle 90 deg) is milled"),
+                problemOf(p, "WS STEP ROUGH")
+                        .endsWith("it overhangs the floor, which a cutter along the feature's axis cannot reach"
+                                + " under; only walls at 90 deg or sloping back (up to 180 deg) are milled"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS STEP CLOSED START")
