@@ -71,7 +71,7 @@ import org.fresa.stepnc.Tool;
  * profiles as far as the tool fits them, radiused, flat and open ends; the others are refused
  * with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
- * <li>Steps, closed general outside profiles and open pockets bounded by an open general
+ * <li>Steps, general outside profiles (closed, or open across the block) and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
  * depth; closed pockets, steps, open pockets and planar faces leave their bosses standing
  * ({@link BossPockets}): the feature's region (carried into the air beyond its open sides) less
@@ -400,8 +400,11 @@ public final class ToolpathPlanner {
                 place = place.times(pp);
                 Profile part;
                 if (sp instanceof org.fresa.stepnc.Profile.General g && !g.closed()) {
-                    throw new UnsupportedOperationException("open general outside profiles are not supported yet:"
-                            + " only closed ones are milled as a contour");
+                    return Optional.of(viaSecurityPlane(
+                            Placing.place(
+                                    openOutsideProfile(label, g, f, place, op, h, tooling, axial, tol, holes, problems),
+                                    place),
+                            ws.securityPlane()));
                 }
                 try {
                     part = profile(sp, 0, tol);
@@ -504,6 +507,47 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /** An open general outside profile, cut as a contour on its right from the air to the air. */
+    private static ToolpathSection openOutsideProfile(
+            String label,
+            org.fresa.stepnc.Profile.General g,
+            Feature f,
+            Transform3 place,
+            Operation op,
+            Heights h,
+            Tooling tooling,
+            double axial,
+            Tolerance tol,
+            HoleContext holes,
+            List<String> problems) {
+        List<Curve2> chain = new ArrayList<>();
+        for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
+            Vec2 a = new Vec2(seg.start().x(), seg.start().y());
+            Vec2 b = new Vec2(seg.end().x(), seg.end().y());
+            if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
+                chain.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+            } else if (a.distance(b) > tol.linear()) {
+                chain.add(new Segment2(a, b));
+            }
+        }
+        if (chain.isEmpty()) {
+            throw new IllegalArgumentException("the open outside profile has no elements");
+        }
+        Contour stock = stockOutline(holes.program(), f, place, "outside profile");
+        return OpenSideMilling.openOutsideProfile(
+                label,
+                chain,
+                stock,
+                h,
+                tooling,
+                axial,
+                sideAllowanceMm(op),
+                bottomAllowanceMm(op),
+                climb(op),
+                tol,
+                problems);
     }
 
     /**

@@ -244,6 +244,7 @@ class StepsAndOutsideProfilesTest {
         ToolpathPlanner.Plan p = planText(
                 part
                         // a wall overhanging its floor, a boss larger than the closed step, an open outside profile
+                        // ending inside the block
                         .replace(
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#25,());",
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#29,());\n#29= VEE_PROFILE($,0.000,60.000,90.000);")
@@ -285,7 +286,7 @@ class StepsAndOutsideProfilesTest {
                                 + " bosses are left standing"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS OUTSIDE PROFILE").contains("open general outside profiles are not supported yet"),
+                problemOf(p, "WS OUTSIDE PROFILE").endsWith("only profiles from edge to edge across the block are cut"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS OPEN POCKET").endsWith("is not on the edge of the workpiece's block"),
