@@ -298,7 +298,22 @@ public final class ToolpathPlanner {
                             + " read as the feature frame itself");
                 }
                 place = place.times(pp);
+                if (sp instanceof org.fresa.stepnc.Profile.General g
+                        && !g.closed()
+                        && g.entity().equals("GENERAL_CLOSED_PROFILE")
+                        && g.segments().size() > 1) {
+                    sp = closedByALine(g);
+                    problems.add("workingstep '" + label + "': the pocket's " + g.curveEntity() + " does not end where"
+                            + " it starts; closed by a line from its last point back to its first");
+                }
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
+                if (sp instanceof org.fresa.stepnc.Profile.General
+                        && f.orthogonalRadiusMm().orElse(0) > tooling.radiusMm() + tol.linear()) {
+                    // corners rounder than the tool's: the tool must keep out of the fillets' material
+                    p = new Profile.General(
+                            filleted(p.contour(tol), f.orthogonalRadiusMm().getAsDouble(), tol),
+                            ContourOffsetter.EXACT);
+                }
                 if (!f.bosses().isEmpty()) {
                     local = BossPockets.section(
                             label,
@@ -507,6 +522,78 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /** A general profile whose chain does not close, closed by a line from its end to its start. */
+    static org.fresa.stepnc.Profile.General closedByALine(org.fresa.stepnc.Profile.General g) {
+        List<org.fresa.stepnc.Profile.Segment> segs = new ArrayList<>(g.segments());
+        segs.add(new org.fresa.stepnc.Profile.Line(
+                segs.get(segs.size() - 1).end(), segs.get(0).start()));
+        return new org.fresa.stepnc.Profile.General(g.entity(), g.placement(), g.curveEntity(), segs, true);
+    }
+
+    /**
+     * The contour (counter-clockwise) with each corner that points out of the region, between two
+     * straight sides, rounded by the radius (ISO 14649-10 orthogonal_radius).
+     *
+     * @throws UnsupportedOperationException when a fillet does not fit its sides or a corner to
+     *     round meets an arc
+     */
+    static Contour filleted(Contour c, double radiusMm, Tolerance tol) {
+        List<Curve2> cs = c.ccw().curves();
+        int n = cs.size();
+        double[] cutStart = new double[n];
+        double[] cutEnd = new double[n];
+        Arc2[] fillet = new Arc2[n];
+        for (int i = 0; i < n; i++) {
+            Curve2 a = cs.get(i);
+            Curve2 b = cs.get((i + 1) % n);
+            Vec2 u = a.endTangent().normalized();
+            Vec2 w = b.startTangent().normalized();
+            double turn = u.x() * w.y() - u.y() * w.x();
+            if (turn <= 1e-9) {
+                // straight on, or a corner pointing into the region: the tool leaves material there anyway
+                continue;
+            }
+            if (!(a instanceof Segment2) || !(b instanceof Segment2)) {
+                throw new UnsupportedOperationException("the pocket's corner at "
+                        + mm(a.end().x()) + ", "
+                        + mm(a.end().y()) + " meets an arc: its orthogonal_radius is rounded between straight sides"
+                        + " only");
+            }
+            double interior = Math.PI - Math.acos(Math.max(-1, Math.min(1, u.dot(w))));
+            double t = radiusMm / Math.tan(interior / 2);
+            Vec2 v = a.end();
+            Vec2 t1 = v.minus(u.times(t));
+            Vec2 t2 = v.plus(w.times(t));
+            Vec2 centre = t1.plus(u.leftNormal().times(radiusMm));
+            fillet[i] = new Arc2(centre, t1, t2, true);
+            cutEnd[i] = t;
+            cutStart[(i + 1) % n] = t;
+        }
+        List<Curve2> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Curve2 x = cs.get(i);
+            if (x instanceof Segment2 sg && (cutStart[i] > 0 || cutEnd[i] > 0)) {
+                double len = sg.length();
+                if (cutStart[i] + cutEnd[i] > len + tol.linear()) {
+                    throw new UnsupportedOperationException("the pocket's orthogonal_radius " + mm(radiusMm)
+                            + " mm does not fit its " + mm(len) + " mm side");
+                }
+                Vec2 d = sg.direction().normalized();
+                Vec2 p0 = sg.start().plus(d.times(cutStart[i]));
+                Vec2 p1 = sg.end().minus(d.times(cutEnd[i]));
+                if (p0.distance(p1) > tol.linear()) {
+                    out.add(new Segment2(p0, p1));
+                }
+            } else {
+                out.add(x);
+            }
+            if (fillet[i] != null) {
+                out.add(fillet[i]);
+            }
+        }
+        return Contour.of(out, Tolerance.DRAWING);
     }
 
     /** An open general outside profile, cut as a contour on its right from the air to the air. */
