@@ -305,6 +305,11 @@ final class OpenSideMilling {
         Vec2 in = leadPoint(path.get(0).start(), path.get(0).startTangent().negated(), stock, r, tol);
         Vec2 out = leadPoint(
                 path.get(path.size() - 1).end(), path.get(path.size() - 1).endTangent(), stock, r, tol);
+        if (!clears(part, in, path.get(0).start(), off, tol)
+                || !clears(part, path.get(path.size() - 1).end(), out, off, tol)) {
+            throw new UnsupportedOperationException(
+                    "no straight lead-in or lead-out along the open outside profile's" + " ends clears the part");
+        }
         if (climb) {
             path = reversed(path);
             Vec2 x = in;
