@@ -28,6 +28,56 @@ final class BossPockets {
 
     private BossPockets() {}
 
+    /** The features whose bosses (its_boss) the planner leaves standing. */
+    static final java.util.Set<Feature.FeatureType> LEAVES_BOSSES = java.util.EnumSet.of(
+            Feature.FeatureType.CLOSED_POCKET,
+            Feature.FeatureType.OPEN_POCKET,
+            Feature.FeatureType.STEP,
+            Feature.FeatureType.PLANAR_FACE);
+
+    /**
+     * A step's region in its frame ({@link ToolpathPlanner.StepShape}: x along the open boundary,
+     * the wall at y 0, the step at -y), carried past its open side and its open ends by a
+     * cutter's diameter and the clearance, so that the loops at the tool's radius from it run in
+     * the air there; a closed end keeps the tool within the path's length.
+     */
+    static Contour stepRegion(ToolpathPlanner.StepShape st, Tooling t) {
+        double past = t.diameterMm() + OpenSideMilling.OUTSIDE_MM;
+        double x0 = st.openStart() ? -past : 0;
+        double x1 = st.lengthMm() + (st.openEnd() ? past : 0);
+        double y0 = -(st.widthMm() + past);
+        return Contour.polygon(List.of(
+                new org.fresa.geom.Vec2(x0, y0),
+                new org.fresa.geom.Vec2(x1, y0),
+                new org.fresa.geom.Vec2(x1, 0),
+                new org.fresa.geom.Vec2(x0, 0)));
+    }
+
+    /**
+     * A planar face's removal boundary in its frame, each side carried a cutter's diameter and
+     * the clearance outwards where the stock does not reach past it (the tool runs in the air
+     * there); without a stock outline the tool stays within the boundary.
+     */
+    static Contour faceRegion(org.fresa.geom.Box2 box, java.util.Optional<Contour> stock, Tooling t, Tolerance tol) {
+        double past = t.diameterMm() + OpenSideMilling.OUTSIDE_MM;
+        double minX = box.minX();
+        double minY = box.minY();
+        double maxX = box.maxX();
+        double maxY = box.maxY();
+        if (stock.isPresent()) {
+            org.fresa.geom.Box2 sb = stock.get().bounds();
+            minX -= sb.minX() >= minX - tol.linear() ? past : 0;
+            minY -= sb.minY() >= minY - tol.linear() ? past : 0;
+            maxX += sb.maxX() <= maxX + tol.linear() ? past : 0;
+            maxY += sb.maxY() <= maxY + tol.linear() ? past : 0;
+        }
+        return Contour.polygon(List.of(
+                new org.fresa.geom.Vec2(minX, minY),
+                new org.fresa.geom.Vec2(maxX, minY),
+                new org.fresa.geom.Vec2(maxX, maxY),
+                new org.fresa.geom.Vec2(minX, maxY)));
+    }
+
     /**
      * @param pocketFrame the pocket's profile frame in the workpiece frame
      * @throws UnsupportedOperationException for a boss the planner cannot leave standing
@@ -46,8 +96,34 @@ final class BossPockets {
             Tolerance tol,
             EntryRule entry,
             List<String> problems) {
+        List<Contour> islands = islands(f, "pocket", pocketFrame, h, tol);
+        return section(
+                label,
+                "pocket",
+                pocket.contour(tol),
+                islands,
+                op,
+                h,
+                t,
+                stepoverMm,
+                axialMm,
+                climb,
+                tol,
+                entry,
+                problems);
+    }
+
+    /**
+     * The feature's bosses (its_boss) as islands in a frame whose z axis is the feature's: each
+     * must stand upright along it, its top at least as high as the feature's top.
+     *
+     * @param what the feature's kind in the messages ("pocket", "step", ...)
+     * @param frame the frame of the feature's region in the workpiece frame
+     * @throws UnsupportedOperationException for a boss the planner cannot leave standing
+     */
+    static List<Contour> islands(Feature f, String what, Transform3 frame, Heights h, Tolerance tol) {
         List<Contour> islands = new ArrayList<>();
-        Transform3 toPocket = pocketFrame.inverse();
+        Transform3 toPocket = frame.inverse();
         for (Feature boss : f.bosses()) {
             if (boss.type() != Feature.FeatureType.BOSS) {
                 throw new IllegalArgumentException("its_boss lists a " + boss.entity() + ", not a BOSS");
@@ -57,14 +133,14 @@ final class BossPockets {
             Transform3 bossFrame = toPocket.times(boss.placement()).times(bp.placement());
             if (bossFrame.zAxis().minus(Vec3.UNIT_Z).norm() > 1e-9) {
                 throw new UnsupportedOperationException(
-                        "boss '" + boss.id() + "' does not stand along the pocket's axis");
+                        "boss '" + boss.id() + "' does not stand along the " + what + "'s axis");
             }
             if (bossFrame.translationPart().z() < h.topZ() - tol.linear()) {
                 throw new UnsupportedOperationException("boss '" + boss.id() + "' ends "
                         + ToolpathPlanner.mm(
                                 h.topZ() - bossFrame.translationPart().z())
-                        + " mm below the pocket's top: only bosses as"
-                        + " high as the pocket are left standing");
+                        + " mm below the " + what + "'s top: only bosses as"
+                        + " high as the " + what + " are left standing");
             }
             Profile outline;
             try {
@@ -78,13 +154,39 @@ final class BossPockets {
             }
             islands.add(Contour.of(placed, Tolerance.DRAWING));
         }
+        return islands;
+    }
+
+    /**
+     * The region inside outer less the islands cleared by the region engine, cut to size.
+     *
+     * @param what the feature's kind in the messages ("pocket", "step", ...)
+     * @param outer the region's boundary in the feature's frame (carried into the air beyond an
+     *     open side by the caller)
+     * @throws UnsupportedOperationException when an island is not inside the region clear of its
+     *     boundary, or the tool fits nowhere
+     */
+    static ToolpathSection section(
+            String label,
+            String what,
+            Contour outer,
+            List<Contour> islands,
+            Operation op,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            boolean climb,
+            Tolerance tol,
+            EntryRule entry,
+            List<String> problems) {
         double depth = h.topZ() - h.bottomZ();
         if (!(depth > 0)) {
-            throw new IllegalArgumentException("the pocket has no depth");
+            throw new IllegalArgumentException("the " + what + " has no depth");
         }
         if (op.allowanceSideMm().orElse(0) > 0 || op.allowanceBottomMm().orElse(0) > 0) {
-            problems.add("workingstep '" + label + "': the pocket with bosses is cut to size: its allowances are not"
-                    + " left");
+            problems.add("workingstep '" + label + "': the " + what + " with bosses is cut to size: its allowances are"
+                    + " not left");
         }
         double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
         PocketTechnology tech = new PocketTechnology(
@@ -99,14 +201,36 @@ final class BossPockets {
                 t.feedMmPerMin());
         Toolpath path;
         try {
-            path = RegionPocket.plan(pocket.contour(tol), islands, tech, climb, entry)
-                    .toolpath();
+            path = RegionPocket.plan(outer, islands, tech, climb, entry).toolpath();
         } catch (ToolTooLargeException e) {
             throw new UnsupportedOperationException(e.getMessage());
         }
         ToolpathSection s = path.sections().get(0);
         return new ToolpathSection(
                 label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), s.start(), s.moves());
+    }
+
+    /**
+     * Refuses a boss that is not inside the region clear of its boundary: the region engine
+     * takes islands strictly inside it (a boss against a step's wall would need the wall and the
+     * boss as one boundary).
+     */
+    static void inside(Feature f, String what, Contour outer, List<Contour> islands, Tolerance tol) {
+        for (int i = 0; i < islands.size(); i++) {
+            Contour island = islands.get(i);
+            boolean inside = island.curves().stream()
+                    .allMatch(c -> outer.windingNumber(c.start()) != 0 && outer.distanceTo(c.start()) > tol.linear());
+            for (Curve2 a : island.curves()) {
+                for (Curve2 b : outer.curves()) {
+                    inside &= org.fresa.geom.Intersections.of(a, b, tol).isEmpty();
+                }
+            }
+            if (!inside) {
+                throw new UnsupportedOperationException(
+                        "boss '" + f.bosses().get(i).id() + "' is not inside the " + what
+                                + " clear of its boundary: only free-standing bosses are left standing");
+            }
+        }
     }
 
     /** A line or arc of a frame whose z axis is the pocket's, in the pocket's xy plane. */

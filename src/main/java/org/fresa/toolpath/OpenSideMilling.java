@@ -50,6 +50,46 @@ final class OpenSideMilling {
             double bottomAllowanceMm,
             boolean climb,
             Tolerance tol) {
+        return step(
+                label,
+                lengthMm,
+                widthMm,
+                openStart,
+                openEnd,
+                0,
+                h,
+                t,
+                stepoverMm,
+                axialMm,
+                sideAllowanceMm,
+                bottomAllowanceMm,
+                climb,
+                tol);
+    }
+
+    /**
+     * A step whose wall slopes back from its foot: each layer's passes go in to the wall where it
+     * stands at the layer's bottom, so the tool stays within the step and leaves a step on the
+     * wall as high as the layer.
+     *
+     * @param footPerMm how far (mm) the wall lies farther out (towards -y) for each mm below the
+     *     step's top: 0 for a vertical wall, -1 / tan(profile_angle) for a sloped one
+     */
+    static ToolpathSection step(
+            String label,
+            double lengthMm,
+            double widthMm,
+            boolean openStart,
+            boolean openEnd,
+            double footPerMm,
+            Heights h,
+            Tooling t,
+            double stepoverMm,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol) {
         double r = t.radiusMm();
         double x0 = openStart ? -(r + OUTSIDE_MM) : r;
         double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
@@ -58,17 +98,8 @@ final class OpenSideMilling {
                     + " mm) is longer than the step between its closed ends (" + ToolpathPlanner.mm(lengthMm) + " mm)");
         }
         x1 = Math.max(x1, x0);
-        double wallY = -(r + sideAllowanceMm);
         double outY = -(widthMm + r + OUTSIDE_MM);
-        // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
-        List<Double> ys = new ArrayList<>();
-        double y = -widthMm - r + stepoverMm;
         ToolpathPlanner.bounded("the step's width", widthMm, "the stepover", stepoverMm);
-        while (y < wallY - tol.linear()) {
-            ys.add(y);
-            y += stepoverMm;
-        }
-        ys.add(wallY);
         double floor = h.bottomZ() + bottomAllowanceMm;
         Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         double xa = climb ? x1 : x0;
@@ -76,6 +107,15 @@ final class OpenSideMilling {
         MoveBuilder b = new MoveBuilder(new Vec3(xa, outY, h.clearanceZ()));
         b.rapid(new Vec3(xa, outY, h.retractZ()));
         for (double z : layers.layers(axialMm)) {
+            double wallY = -(r + sideAllowanceMm) - footPerMm * (h.topZ() - z);
+            // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
+            List<Double> ys = new ArrayList<>();
+            double y = -widthMm - r + stepoverMm;
+            while (y < wallY - tol.linear()) {
+                ys.add(y);
+                y += stepoverMm;
+            }
+            ys.add(wallY);
             for (double py : ys) {
                 b.rapid(new Vec3(xa, outY, h.retractZ()));
                 // down in the air beyond the open side, then in at depth
@@ -178,6 +218,210 @@ final class OpenSideMilling {
     }
 
     /**
+     * An open outside profile: a chain of lines and arcs from the block's edge across the block
+     * to its edge again, the material kept on its left as it runs (ISO 14649-10). One pass per
+     * layer at the tool's radius (and the side allowance) on the chain's right, the offset made
+     * from the kept part's outline (the chain closed along the block's edge on its left, so
+     * that the chain's corners are rounded or trimmed as a closed profile's), led in and out
+     * along the chain's end tangents from the air beyond the block.
+     *
+     * @param chain the profile, start to end, in the feature frame
+     * @param stock the stock's outline in the same frame, counter-clockwise
+     * @param climb with M3: the pass runs against the chain (the material on the tool's right)
+     * @throws UnsupportedOperationException when an end is not on the block's edge, the chain
+     *     leaves the block, or an end meets the edge too obliquely to lead out along it
+     */
+    static ToolpathSection openOutsideProfile(
+            String label,
+            List<Curve2> chain,
+            Contour stock,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            double sideAllowanceMm,
+            double bottomAllowanceMm,
+            boolean climb,
+            Tolerance tol,
+            List<String> problems) {
+        double r = t.radiusMm();
+        double off = r + sideAllowanceMm;
+        Vec2 s = chain.get(0).start();
+        Vec2 e = chain.get(chain.size() - 1).end();
+        for (Vec2 p : List.of(s, e)) {
+            if (stock.distanceTo(p) > tol.linear()) {
+                throw new UnsupportedOperationException("the open outside profile ends at (" + xy(p) + "), not on the"
+                        + " edge of the workpiece's block: only profiles from edge to edge across the block are cut");
+            }
+        }
+        for (Curve2 c : chain) {
+            Vec2 m = c.pointAt(0.5);
+            if (stock.windingNumber(m) == 0 || stock.distanceTo(m) < tol.linear()) {
+                throw new UnsupportedOperationException("the open outside profile runs outside the workpiece's block"
+                        + " or along its edge near (" + xy(m) + ")");
+            }
+        }
+        List<Curve2> edge = edgeFrom(stock, e, s, tol);
+        List<Curve2> closed = new ArrayList<>(chain);
+        closed.addAll(edge);
+        Contour part = Contour.of(closed, Tolerance.DRAWING);
+        if (!part.isCcw()) {
+            throw new UnsupportedOperationException(
+                    "the open outside profile does not divide the block with the" + " material on its left");
+        }
+        Contour loop = org.fresa.pocket.LineArcOffsetter.offset(part, off, tol).stream()
+                .filter(Contour::isCcw)
+                .max(java.util.Comparator.comparingDouble(Contour::area))
+                .orElseThrow(() -> new UnsupportedOperationException(
+                        "the profile has no outward offset by " + ToolpathPlanner.mm(off) + " mm"));
+        List<Curve2> along = chain;
+        List<Curve2> rest = edge.isEmpty() ? List.of(new Segment2(e, s)) : edge;
+        // the loop's pieces that run beside the chain, not beside the block's edge or round its ends
+        List<Curve2> cs = loop.curves();
+        int n = cs.size();
+        boolean[] beside = new boolean[n];
+        for (int i = 0; i < n; i++) {
+            Vec2 m = cs.get(i).pointAt(0.5);
+            beside[i] = Math.abs(distance(along, m) - off) < 10 * tol.linear()
+                    && distance(rest, m) > off + 10 * tol.linear();
+        }
+        int first = -1;
+        for (int i = 0; i < n; i++) {
+            if (beside[i] && !beside[(i + n - 1) % n]) {
+                if (first >= 0) {
+                    throw new UnsupportedOperationException("the tool's path beside the open outside profile"
+                            + " breaks into pieces: the profile comes within the tool's diameter of the block's edge");
+                }
+                first = i;
+            }
+        }
+        if (first < 0) {
+            throw new UnsupportedOperationException("no path beside the open outside profile for the "
+                    + ToolpathPlanner.mm(t.diameterMm()) + " mm tool");
+        }
+        List<Curve2> path = new ArrayList<>();
+        for (int k = 0; beside[(first + k) % n]; k++) {
+            path.add(cs.get((first + k) % n));
+        }
+        Vec2 in = leadPoint(path.get(0).start(), path.get(0).startTangent().negated(), stock, r, tol);
+        Vec2 out = leadPoint(
+                path.get(path.size() - 1).end(), path.get(path.size() - 1).endTangent(), stock, r, tol);
+        if (!clears(part, in, path.get(0).start(), off, tol)
+                || !clears(part, path.get(path.size() - 1).end(), out, off, tol)) {
+            throw new UnsupportedOperationException(
+                    "no straight lead-in or lead-out along the open outside profile's" + " ends clears the part");
+        }
+        if (climb) {
+            path = reversed(path);
+            Vec2 x = in;
+            in = out;
+            out = x;
+        }
+        double reach = 0;
+        for (Curve2 c : stock.curves()) {
+            // the block's corners on the cut side, not those on the part kept
+            if (part.windingNumber(c.start()) == 0 && part.distanceTo(c.start()) > tol.linear()) {
+                reach = Math.max(reach, distance(along, c.start()));
+            }
+        }
+        if (reach > t.diameterMm() + tol.linear()) {
+            problems.add(
+                    "workingstep '" + label + "': the stock reaches " + ToolpathPlanner.mm(reach) + " mm beyond the"
+                            + " open outside profile; the pass cuts the " + ToolpathPlanner.mm(t.diameterMm())
+                            + " mm next to it");
+        }
+        Vec2 p0 = path.get(0).start();
+        Vec2 p1 = path.get(path.size() - 1).end();
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        MoveBuilder b = new MoveBuilder(Vec3.of(in, h.clearanceZ()));
+        b.rapid(Vec3.of(in, h.retractZ()));
+        for (double z : layers.layers(axialMm)) {
+            b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+            b.rapid(Vec3.of(in, h.retractZ()));
+            // down in the air beyond the block, in along the chain's tangent
+            b.feed(Vec3.of(in, z), t.plungeFeedMmPerMin());
+            b.feed(Vec3.of(p0, z), t.feedMmPerMin());
+            b.curves(path, z, t.feedMmPerMin());
+            b.feed(Vec3.of(out, z), t.feedMmPerMin());
+            b.rapid(Vec3.of(out, h.retractZ()));
+        }
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return new ToolpathSection(
+                label,
+                Vec3.UNIT_Z,
+                t.diameterMm(),
+                t.toolNumber(),
+                t.spindleRpm(),
+                Vec3.of(in, h.clearanceZ()),
+                b.moves());
+    }
+
+    private static double distance(List<Curve2> cs, Vec2 p) {
+        double d = Double.POSITIVE_INFINITY;
+        for (Curve2 x : cs) {
+            d = Math.min(d, x.distanceTo(p));
+        }
+        return d;
+    }
+
+    /**
+     * The point along a direction from p where the tool's disc is clear of the stock by the
+     * clearance: the lead-in or lead-out, straight along the chain's end tangent.
+     */
+    private static Vec2 leadPoint(Vec2 p, Vec2 dir, Contour stock, double r, Tolerance tol) {
+        Vec2 u = dir.normalized();
+        double step = 0.5;
+        for (double d = 0; d <= 4 * (r + OUTSIDE_MM) + 1e-9; d += step) {
+            Vec2 q = p.plus(u.times(d));
+            if (stock.windingNumber(q) == 0 && stock.distanceTo(q) >= r + OUTSIDE_MM - tol.linear()) {
+                return q;
+            }
+        }
+        throw new UnsupportedOperationException("the open outside profile meets the block's edge at (" + xy(p)
+                + ") too obliquely to lead the tool in or out along it");
+    }
+
+    /** The stock's outline from a onto b, both on it, counter-clockwise (the stock on the left). */
+    private static List<Curve2> edgeFrom(Contour stock, Vec2 a, Vec2 b, Tolerance tol) {
+        List<Curve2> cs = stock.curves();
+        int n = cs.size();
+        int ia = on(cs, a, tol);
+        int ib = on(cs, b, tol);
+        List<Curve2> out = new ArrayList<>();
+        if (ia == ib && b.minus(a).dot(cs.get(ia).end().minus(cs.get(ia).start())) > 0) {
+            add(out, a, b, tol);
+            return out;
+        }
+        add(out, a, cs.get(ia).end(), tol);
+        for (int i = (ia + 1) % n; i != ib; i = (i + 1) % n) {
+            out.add(cs.get(i));
+        }
+        add(out, cs.get(ib).start(), b, tol);
+        return out;
+    }
+
+    private static int on(List<Curve2> cs, Vec2 p, Tolerance tol) {
+        int best = 0;
+        for (int i = 0; i < cs.size(); i++) {
+            if (cs.get(i).distanceTo(p) < cs.get(best).distanceTo(p)) {
+                best = i;
+            }
+        }
+        // a point at a corner belongs to the side that starts there
+        Curve2 c = cs.get(best);
+        if (c.end().distance(p) <= tol.linear()) {
+            return (best + 1) % cs.size();
+        }
+        return best;
+    }
+
+    private static void add(List<Curve2> out, Vec2 a, Vec2 b, Tolerance tol) {
+        if (a.distance(b) > tol.linear()) {
+            out.add(new Segment2(a, b));
+        }
+    }
+
+    /**
      * An open pocket: its walls (an open chain of lines and arcs, in the feature frame) closed by
      * the straight open side from the chain's end back to its start, which must lie on the
      * stock's edge. The region is carried past the open side by a cutter's diameter and the
@@ -207,35 +451,9 @@ final class OpenSideMilling {
             List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
+        Profile region = new Profile.General(carriedPastOpenSide(walls, stock, off, t, tol), ContourOffsetter.EXACT);
         Vec2 s = walls.get(0).start();
-        Vec2 e = walls.get(walls.size() - 1).end();
-        if (s.distance(e) < 2 * off + tol.linear()) {
-            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
-                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
-        }
-        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
-            if (stock.distanceTo(p) > tol.linear()) {
-                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to (" + xy(s)
-                        + "), is not on the edge of the workpiece's block");
-            }
-        }
-        List<Curve2> closed = new ArrayList<>(walls);
-        closed.add(new Segment2(e, s));
-        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
-        Vec2 chord = s.minus(e).normalized();
-        Vec2 out = chord.leftNormal();
-        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
-            out = out.negated();
-        }
-        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
-        double past = 2 * off + OUTSIDE_MM;
-        List<Curve2> grown = new ArrayList<>(walls);
-        Vec2 e2 = e.plus(out.times(past));
-        Vec2 s2 = s.plus(out.times(past));
-        grown.add(new Segment2(e, e2));
-        grown.add(new Segment2(e2, s2));
-        grown.add(new Segment2(s2, s));
-        Profile region = new Profile.General(Contour.of(grown, Tolerance.DRAWING), ContourOffsetter.EXACT);
+        Vec2 out = outOfOpenSide(walls);
         List<Ring> rings = region.insetAll(off, tol);
         if (rings.isEmpty()) {
             throw new UnsupportedOperationException(
@@ -310,6 +528,55 @@ final class OpenSideMilling {
         List<Curve2> ring = new ArrayList<>(split.subList(best, split.size()));
         ring.addAll(split.subList(0, best));
         return ring;
+    }
+
+    /**
+     * The open pocket's region carried past its open side (the straight line from the walls' end
+     * back to their start) by a cutter's diameter (twice the offset) and the clearance, so that
+     * the tool at the offset from it runs in the air there.
+     *
+     * @param off the tool's radius and the side allowance
+     * @throws UnsupportedOperationException when the open side is not on the stock's edge or too
+     *     narrow for the tool
+     */
+    static Contour carriedPastOpenSide(List<Curve2> walls, Contour stock, double off, Tooling t, Tolerance tol) {
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        if (s.distance(e) < 2 * off + tol.linear()) {
+            throw new UnsupportedOperationException("the open side (" + ToolpathPlanner.mm(s.distance(e)) + " mm) is"
+                    + " too narrow for the " + ToolpathPlanner.mm(t.diameterMm()) + " mm tool to come in through it");
+        }
+        for (Vec2 p : List.of(s, e, s.interpolate(e, 0.5))) {
+            if (stock.distanceTo(p) > tol.linear()) {
+                throw new UnsupportedOperationException("the open side of the pocket, from (" + xy(e) + ") to (" + xy(s)
+                        + "), is not on the edge of the workpiece's block");
+            }
+        }
+        Vec2 out = outOfOpenSide(walls);
+        // past the open side by a diameter and the clearance: the loop inset by the radius runs in the air there
+        double past = 2 * off + OUTSIDE_MM;
+        List<Curve2> grown = new ArrayList<>(walls);
+        Vec2 e2 = e.plus(out.times(past));
+        Vec2 s2 = s.plus(out.times(past));
+        grown.add(new Segment2(e, e2));
+        grown.add(new Segment2(e2, s2));
+        grown.add(new Segment2(s2, s));
+        return Contour.of(grown, Tolerance.DRAWING);
+    }
+
+    /** The unit normal of the open side pointing out of the pocket. */
+    private static Vec2 outOfOpenSide(List<Curve2> walls) {
+        Vec2 s = walls.get(0).start();
+        Vec2 e = walls.get(walls.size() - 1).end();
+        List<Curve2> closed = new ArrayList<>(walls);
+        closed.add(new Segment2(e, s));
+        Contour pocket = Contour.of(closed, Tolerance.DRAWING);
+        Vec2 chord = s.minus(e).normalized();
+        Vec2 out = chord.leftNormal();
+        if (pocket.windingNumber(s.interpolate(e, 0.5).plus(out.times(1e-3))) != 0) {
+            out = out.negated();
+        }
+        return out;
     }
 
     private static List<Curve2> reversed(List<Curve2> cs) {

@@ -71,10 +71,11 @@ import org.fresa.stepnc.Tool;
  * rounded-U, partial circular, vee and tee profiles as far as the tool fits them, radiused, flat,
  * open, woodruff and loop ends; the others are refused with the reason.
  * <li>An operation with explicit toolpaths (AP238 CC1) follows them as given ({@link ExplicitPaths}).
- * <li>Steps, closed general outside profiles and open pockets bounded by an open general
+ * <li>Steps, general outside profiles (closed, or open across the block) and open pockets bounded by an open general
  * profile are milled by {@link OpenSideMilling}, entered from the air beyond the block's edge at
- * depth; a step, open pocket or planar face with bosses is refused (its bosses would be milled away); a
- * closed pocket leaves its bosses standing ({@link BossPockets}).
+ * depth; closed pockets, steps, open pockets and planar faces leave their bosses standing
+ * ({@link BossPockets}): the feature's region (carried into the air beyond its open sides) less
+ * the bosses, cleared by the region engine.
  * <li>Features other than planar faces, closed pockets, round holes, those slots, steps,
  * outside profiles and open pockets are reported and skipped.
  * </ul>
@@ -263,14 +264,29 @@ public final class ToolpathPlanner {
             return Optional.of(viaSecurityPlane(
                     Placing.place(ExplicitPaths.section(label, op, tooling, problems), place), ws.securityPlane()));
         }
-        if (!f.bosses().isEmpty() && f.type() != Feature.FeatureType.CLOSED_POCKET) {
+        if (!f.bosses().isEmpty() && !BossPockets.LEAVES_BOSSES.contains(f.type())) {
             // cutting it as if it had none would mill its bosses away
             throw new UnsupportedOperationException(
                     f.type() + " features with bosses (its_boss) are not supported yet");
         }
         ToolpathSection local;
         switch (f.type()) {
-            case PLANAR_FACE -> local = face(label, f, op, h, tooling, problems);
+            case PLANAR_FACE -> {
+                if (f.bosses().isEmpty()) {
+                    local = face(label, f, op, h, tooling, problems);
+                } else {
+                    // round the bosses, the face carried into the air where the stock ends
+                    java.util.Optional<Contour> stock = holes.program()
+                                    .workpieceOf(f)
+                                    .flatMap(org.fresa.stepnc.Workpiece::block)
+                                    .isPresent()
+                            ? Optional.of(stockOutline(holes.program(), f, place, "planar face"))
+                            : Optional.empty();
+                    Contour region = BossPockets.faceRegion(faceBoundary(f), stock, tooling, tol);
+                    local = withBosses(
+                            label, "planar face", region, f, place, op, h, tooling, axial, tol, holes, problems);
+                }
+            }
             case CLOSED_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the pocket has no boundary profile"));
@@ -282,7 +298,22 @@ public final class ToolpathPlanner {
                             + " read as the feature frame itself");
                 }
                 place = place.times(pp);
+                if (sp instanceof org.fresa.stepnc.Profile.General g
+                        && !g.closed()
+                        && g.entity().equals("GENERAL_CLOSED_PROFILE")
+                        && g.segments().size() > 1) {
+                    sp = closedByALine(g);
+                    problems.add("workingstep '" + label + "': the pocket's " + g.curveEntity() + " does not end where"
+                            + " it starts; closed by a line from its last point back to its first");
+                }
                 Profile p = profile(sp, f.orthogonalRadiusMm().orElse(0), tol);
+                if (sp instanceof org.fresa.stepnc.Profile.General
+                        && f.orthogonalRadiusMm().orElse(0) > tooling.radiusMm() + tol.linear()) {
+                    // corners rounder than the tool's: the tool must keep out of the fillets' material
+                    p = new Profile.General(
+                            filleted(p.contour(tol), f.orthogonalRadiusMm().getAsDouble(), tol),
+                            ContourOffsetter.EXACT);
+                }
                 if (!f.bosses().isEmpty()) {
                     local = BossPockets.section(
                             label,
@@ -349,20 +380,41 @@ public final class ToolpathPlanner {
             case STEP -> {
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
-                local = OpenSideMilling.step(
-                        label,
-                        st.lengthMm(),
-                        st.widthMm(),
-                        st.openStart(),
-                        st.openEnd(),
-                        h,
-                        tooling,
-                        stepover(op, tooling),
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol);
+                if (!f.bosses().isEmpty() && st.sloped()) {
+                    throw new UnsupportedOperationException(
+                            "steps with a sloped wall and bosses are not supported yet: the region round the"
+                                    + " bosses would need to follow the wall in each layer");
+                }
+                local = !f.bosses().isEmpty()
+                        ? withBosses(
+                                label,
+                                "step",
+                                BossPockets.stepRegion(st, tooling),
+                                f,
+                                place,
+                                op,
+                                h,
+                                tooling,
+                                axial,
+                                tol,
+                                holes,
+                                problems)
+                        : st.sloped()
+                                ? slopedStep(label, st, h, tooling, op, axial, tol, problems)
+                                : OpenSideMilling.step(
+                                        label,
+                                        st.lengthMm(),
+                                        st.widthMm(),
+                                        st.openStart(),
+                                        st.openEnd(),
+                                        h,
+                                        tooling,
+                                        stepover(op, tooling),
+                                        axial,
+                                        sideAllowanceMm(op),
+                                        bottomAllowanceMm(op),
+                                        climb(op),
+                                        tol);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -374,8 +426,11 @@ public final class ToolpathPlanner {
                 place = place.times(pp);
                 Profile part;
                 if (sp instanceof org.fresa.stepnc.Profile.General g && !g.closed()) {
-                    throw new UnsupportedOperationException("open general outside profiles are not supported yet:"
-                            + " only closed ones are milled as a contour");
+                    return Optional.of(viaSecurityPlane(
+                            Placing.place(
+                                    openOutsideProfile(label, g, f, place, op, h, tooling, axial, tol, holes, problems),
+                                    place),
+                            ws.securityPlane()));
                 }
                 try {
                     part = profile(sp, 0, tol);
@@ -444,19 +499,33 @@ public final class ToolpathPlanner {
                     }
                 }
                 Contour stock = stockOutline(holes.program(), f, place, "open pocket");
-                local = OpenSideMilling.openPocket(
-                        label,
-                        walls,
-                        stock,
-                        h,
-                        tooling,
-                        stepover(op, tooling),
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol,
-                        problems);
+                local = !f.bosses().isEmpty()
+                        ? withBosses(
+                                label,
+                                "open pocket",
+                                OpenSideMilling.carriedPastOpenSide(walls, stock, tooling.radiusMm(), tooling, tol),
+                                f,
+                                place,
+                                op,
+                                h,
+                                tooling,
+                                axial,
+                                tol,
+                                holes,
+                                problems)
+                        : OpenSideMilling.openPocket(
+                                label,
+                                walls,
+                                stock,
+                                h,
+                                tooling,
+                                stepover(op, tooling),
+                                axial,
+                                sideAllowanceMm(op),
+                                bottomAllowanceMm(op),
+                                climb(op),
+                                tol,
+                                problems);
             }
             default ->
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
@@ -464,6 +533,190 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /** A general profile whose chain does not close, closed by a line from its end to its start. */
+    static org.fresa.stepnc.Profile.General closedByALine(org.fresa.stepnc.Profile.General g) {
+        List<org.fresa.stepnc.Profile.Segment> segs = new ArrayList<>(g.segments());
+        segs.add(new org.fresa.stepnc.Profile.Line(
+                segs.get(segs.size() - 1).end(), segs.get(0).start()));
+        return new org.fresa.stepnc.Profile.General(g.entity(), g.placement(), g.curveEntity(), segs, true);
+    }
+
+    /**
+     * The contour (counter-clockwise) with each corner that points out of the region, between two
+     * straight sides, rounded by the radius (ISO 14649-10 orthogonal_radius).
+     *
+     * @throws UnsupportedOperationException when a fillet does not fit its sides or a corner to
+     *     round meets an arc
+     */
+    static Contour filleted(Contour c, double radiusMm, Tolerance tol) {
+        List<Curve2> cs = c.ccw().curves();
+        int n = cs.size();
+        double[] cutStart = new double[n];
+        double[] cutEnd = new double[n];
+        Arc2[] fillet = new Arc2[n];
+        for (int i = 0; i < n; i++) {
+            Curve2 a = cs.get(i);
+            Curve2 b = cs.get((i + 1) % n);
+            Vec2 u = a.endTangent().normalized();
+            Vec2 w = b.startTangent().normalized();
+            double turn = u.x() * w.y() - u.y() * w.x();
+            if (turn <= 1e-9) {
+                // straight on, or a corner pointing into the region: the tool leaves material there anyway
+                continue;
+            }
+            if (!(a instanceof Segment2) || !(b instanceof Segment2)) {
+                throw new UnsupportedOperationException("the pocket's corner at "
+                        + mm(a.end().x()) + ", "
+                        + mm(a.end().y()) + " meets an arc: its orthogonal_radius is rounded between straight sides"
+                        + " only");
+            }
+            double interior = Math.PI - Math.acos(Math.max(-1, Math.min(1, u.dot(w))));
+            double t = radiusMm / Math.tan(interior / 2);
+            Vec2 v = a.end();
+            Vec2 t1 = v.minus(u.times(t));
+            Vec2 t2 = v.plus(w.times(t));
+            Vec2 centre = t1.plus(u.leftNormal().times(radiusMm));
+            fillet[i] = new Arc2(centre, t1, t2, true);
+            cutEnd[i] = t;
+            cutStart[(i + 1) % n] = t;
+        }
+        List<Curve2> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Curve2 x = cs.get(i);
+            if (x instanceof Segment2 sg && (cutStart[i] > 0 || cutEnd[i] > 0)) {
+                double len = sg.length();
+                if (cutStart[i] + cutEnd[i] > len + tol.linear()) {
+                    throw new UnsupportedOperationException("the pocket's orthogonal_radius " + mm(radiusMm)
+                            + " mm does not fit its " + mm(len) + " mm side");
+                }
+                Vec2 d = sg.direction().normalized();
+                Vec2 p0 = sg.start().plus(d.times(cutStart[i]));
+                Vec2 p1 = sg.end().minus(d.times(cutEnd[i]));
+                if (p0.distance(p1) > tol.linear()) {
+                    out.add(new Segment2(p0, p1));
+                }
+            } else {
+                out.add(x);
+            }
+            if (fillet[i] != null) {
+                out.add(fillet[i]);
+            }
+        }
+        return Contour.of(out, Tolerance.DRAWING);
+    }
+
+    /** An open general outside profile, cut as a contour on its right from the air to the air. */
+    private static ToolpathSection openOutsideProfile(
+            String label,
+            org.fresa.stepnc.Profile.General g,
+            Feature f,
+            Transform3 place,
+            Operation op,
+            Heights h,
+            Tooling tooling,
+            double axial,
+            Tolerance tol,
+            HoleContext holes,
+            List<String> problems) {
+        List<Curve2> chain = new ArrayList<>();
+        for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
+            Vec2 a = new Vec2(seg.start().x(), seg.start().y());
+            Vec2 b = new Vec2(seg.end().x(), seg.end().y());
+            if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
+                chain.add(new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+            } else if (a.distance(b) > tol.linear()) {
+                chain.add(new Segment2(a, b));
+            }
+        }
+        if (chain.isEmpty()) {
+            throw new IllegalArgumentException("the open outside profile has no elements");
+        }
+        Contour stock = stockOutline(holes.program(), f, place, "outside profile");
+        return OpenSideMilling.openOutsideProfile(
+                label,
+                chain,
+                stock,
+                h,
+                tooling,
+                axial,
+                sideAllowanceMm(op),
+                bottomAllowanceMm(op),
+                climb(op),
+                tol,
+                problems);
+    }
+
+    /**
+     * A step whose wall slopes back: layers no thicker than the vee slots' (docs/slots.md), each
+     * cut in to where the wall stands at its bottom; the steps this leaves on the wall are reported
+     * with their height and width.
+     */
+    private static ToolpathSection slopedStep(
+            String label,
+            StepShape st,
+            Heights h,
+            Tooling tooling,
+            Operation op,
+            double axial,
+            Tolerance tol,
+            List<String> problems) {
+        double layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
+        double footPerMm = st.footMm(1);
+        problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg()) + " deg is cut in "
+                + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and " + mm(layer * footPerMm)
+                + " mm wide are left on it");
+        return OpenSideMilling.step(
+                label,
+                st.lengthMm(),
+                st.widthMm(),
+                st.openStart(),
+                st.openEnd(),
+                footPerMm,
+                h,
+                tooling,
+                stepover(op, tooling),
+                layer,
+                sideAllowanceMm(op),
+                bottomAllowanceMm(op),
+                climb(op),
+                tol);
+    }
+
+    /**
+     * A step, open pocket or planar face with bosses: its region (carried into the air beyond its
+     * open sides) less its bosses, cleared by the pocket module's region pocketing, cut to size.
+     */
+    private static ToolpathSection withBosses(
+            String label,
+            String what,
+            Contour region,
+            Feature f,
+            Transform3 place,
+            Operation op,
+            Heights h,
+            Tooling tooling,
+            double axial,
+            Tolerance tol,
+            HoleContext holes,
+            List<String> problems) {
+        List<Contour> islands = BossPockets.islands(f, what, place, h, tol);
+        BossPockets.inside(f, what, region, islands, tol);
+        return BossPockets.section(
+                label,
+                what,
+                region,
+                islands,
+                op,
+                h,
+                tooling,
+                stepover(op, tooling),
+                axial,
+                climb(op),
+                tol,
+                holes.choices().entry(),
+                problems);
     }
 
     /**
@@ -491,7 +744,32 @@ public final class ToolpathPlanner {
      * A step in its own frame (x along the open boundary from its start, z the feature axis, the
      * material kept at +y) and how far the step reaches out to the stock's edge.
      */
-    record StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {}
+    record StepShape(
+            Transform3 frame,
+            double lengthMm,
+            double widthMm,
+            boolean openStart,
+            boolean openEnd,
+            double wallAngleDeg) {
+
+        /** A step with a vertical wall. */
+        StepShape(Transform3 frame, double lengthMm, double widthMm, boolean openStart, boolean openEnd) {
+            this(frame, lengthMm, widthMm, openStart, openEnd, 90);
+        }
+
+        /** Whether the wall slopes back from its foot (profile_angle above 90 deg). */
+        boolean sloped() {
+            return wallAngleDeg > 90;
+        }
+
+        /**
+         * How far (mm, towards -y) the wall's foot lies from the open boundary at the step's top
+         * for a step this deep: 0 for a vertical wall.
+         */
+        double footMm(double depthMm) {
+            return sloped() ? -depthMm / Math.tan(Math.toRadians(wallAngleDeg)) : 0;
+        }
+    }
 
     /**
      * The step's frame and extent: ISO 14649-10 keeps the material on the left of the open
@@ -513,16 +791,25 @@ public final class ToolpathPlanner {
         }
         org.fresa.stepnc.Profile wall =
                 f.profile().orElseThrow(() -> new IllegalArgumentException("the step has no wall boundary"));
+        double wallAngle = 90;
         if (wall instanceof org.fresa.stepnc.Profile.Vee v) {
             // GRIMA's writers put pi / 2 there in radians, also in files not otherwise known as
             // theirs: a wall 1.57 deg from its floor is no step
             boolean radiansRight = Math.abs(v.profileAngleDeg() - Math.PI / 2) < 1e-6;
             if (!radiansRight && Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
-                throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
-                        + " deg to its floor: only a vertical wall (profile_angle 90 deg) is milled");
+                if (!(v.profileAngleDeg() > 90 && v.profileAngleDeg() < 180)) {
+                    throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
+                            + " deg to its floor: it overhangs the floor, which a cutter along the feature's axis"
+                            + " cannot reach under; only walls at 90 deg or sloping back (up to 180 deg) are milled");
+                }
+                wallAngle = v.profileAngleDeg();
             }
             double rho = v.profileRadiusMm().orElse(0);
             double edge = tool.edgeRadiusMm().orElse(0);
+            if (rho > tol.linear() && wallAngle != 90) {
+                throw new UnsupportedOperationException("the step's sloped wall meets its floor in a " + mm(rho)
+                        + " mm radius: only a sloped wall with a sharp foot is milled");
+            }
             if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
                 throw new UnsupportedOperationException("the step's wall meets its floor in a " + mm(rho)
                         + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
@@ -566,7 +853,15 @@ public final class ToolpathPlanner {
         }
         Transform3 frame =
                 Transform3.ofFrame(s3.minus(new Vec3(0, 0, s3.z())), Vec3.UNIT_Z, new Vec3(along.x(), along.y(), 0));
-        return new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear());
+        StepShape shape =
+                new StepShape(frame, length, width, lo >= -tol.linear(), hi <= length + tol.linear(), wallAngle);
+        double foot = shape.footMm(f.depthMm().orElse(0));
+        if (foot >= width - tol.linear()) {
+            throw new UnsupportedOperationException("the step's wall sloped at " + mm(wallAngle) + " deg reaches "
+                    + mm(foot) + " mm out at its floor, past the block's side " + mm(width)
+                    + " mm away: the step has no floor");
+        }
+        return shape;
     }
 
     /**

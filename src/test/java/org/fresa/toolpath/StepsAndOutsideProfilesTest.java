@@ -243,7 +243,8 @@ class StepsAndOutsideProfilesTest {
         String part = Files.readString(PART);
         ToolpathPlanner.Plan p = planText(
                 part
-                        // a sloped wall, a boss on the closed step, an open outside profile
+                        // a wall overhanging its floor, a boss larger than the closed step, an open outside profile
+                        // ending inside the block
                         .replace(
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#25,());",
                                 "#16= STEP('STEP OPEN',#4,(#20,#21),#81,#82,#24,#29,());\n#29= VEE_PROFILE($,0.000,60.000,90.000);")
@@ -262,7 +263,7 @@ class StepsAndOutsideProfilesTest {
                                         + "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#89,#88,(),$,#257,$,$,#235,$);\n"
                                         + "#89= AXIS2_PLACEMENT_3D('INSIDE',#135,#96,#97);\n#135= CARTESIAN_POINT('',(5.0,0.0,0.0));")
                         .replace("#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);", "")
-                        // a planar face with the round boss
+                        // a planar face whose boundary (a line swept along itself) holds none of the round boss
                         .replace("(#10,#11,#12,#13,#14,#15)", "(#10,#11,#12,#13,#14,#15,#400)")
                         .replace(
                                 "#125= CUTTING_COMPONENT",
@@ -271,17 +272,21 @@ class StepsAndOutsideProfilesTest {
                                         + "#402= LINEAR_PATH($,120.000,#56);\n#403= LINEAR_PROFILE($,150.000);\n#125= CUTTING_COMPONENT"));
         assertTrue(
                 problemOf(p, "WS FACE WITH BOSS")
-                        .endsWith("PLANAR_FACE features with bosses (its_boss) are not" + " supported yet"),
+                        .endsWith("boss 'ROUND BOSS' is not inside the planar face clear of its boundary: only"
+                                + " free-standing bosses are left standing"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS STEP ROUGH").endsWith("only a vertical wall (profile_angle 90 deg) is milled"),
+                problemOf(p, "WS STEP ROUGH")
+                        .endsWith("it overhangs the floor, which a cutter along the feature's axis cannot reach"
+                                + " under; only walls at 90 deg or sloping back (up to 180 deg) are milled"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS STEP CLOSED START")
-                        .endsWith("STEP features with bosses (its_boss) are not" + " supported yet"),
+                        .endsWith("boss 'BOSS' is not inside the step clear of its boundary: only free-standing"
+                                + " bosses are left standing"),
                 p.problems().toString());
         assertTrue(
-                problemOf(p, "WS OUTSIDE PROFILE").contains("open general outside profiles are not supported yet"),
+                problemOf(p, "WS OUTSIDE PROFILE").endsWith("only profiles from edge to edge across the block are cut"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS OPEN POCKET").endsWith("is not on the edge of the workpiece's block"),
