@@ -532,14 +532,22 @@ public final class RegionPocket {
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
-                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE
+                    boolean helixFirst = entry.kind() == EntryRule.Kind.AUTO || entry.kind() == EntryRule.Kind.HELIX;
+                    Helix helix =
+                            helixFirst ? helixOnto(loop, finishing, t.radiusMm(), above - z, entry.angleDeg()) : null;
+                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE || helix != null
                             ? List.of()
                             : rampPath(loop, above - z, entry.angleDeg());
-                    Vec2 from = down.isEmpty() ? s : down.get(0).start();
+                    Vec2 from = helix != null
+                            ? helix.from()
+                            : down.isEmpty() ? s : down.get(0).start();
                     moves.add(new Move.Rapid(at(from, safe)));
                     // down at rapid to just above the floor cleared at the layer above, then no straight feed down
                     moves.add(new Move.Rapid(at(from, above)));
-                    if (down.isEmpty()) {
+                    if (helix != null) {
+                        moves.add(new Move.Circular(
+                                at(s, z), at(helix.centre(), above), Z, helix.ccw(), helix.turns(), t.feedMmPerMin()));
+                    } else if (down.isEmpty()) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
                         ramp(moves, down, above, z, t.feedMmPerMin());
@@ -612,6 +620,75 @@ public final class RegionPocket {
             out.addAll(loop.curves());
         }
         return out;
+    }
+
+    /**
+     * A helix down onto a loop's start: the tool centre on a circle beside the start, tangent to
+     * the loop there, descending evenly as far along as a ramp along the loop would
+     * ({@link #rampPath}: the same feed at the same angle), in one block (its full turns counted
+     * in the block) where a ramp along a loop of many short elements takes one block per element
+     * per round.
+     *
+     * @param from where the helix begins (XY), on its circle
+     * @param centre its axis (XY)
+     * @param ccw counter-clockwise seen from +Z
+     * @param turns full turns before the last part turn that ends at the loop's start
+     */
+    record Helix(Vec2 from, Vec2 centre, boolean ccw, int turns) {}
+
+    /** The part turn a helix ends with, at least (rad): so that its ends never coincide. */
+    private static final double HELIX_LEAST_PART_TURN_RAD = 0.05;
+
+    /**
+     * The helix onto the loop's start: radius the tool's radius, else three quarters or half of
+     * it (no core wider than half the tool left standing for a tool that does not cut at its
+     * centre), its circle of tool centres inside the finishing offset (the tool touches no wall
+     * and no island), turning with the loop first; null when none has room.
+     */
+    static Helix helixOnto(Contour loop, Level finishing, double radiusMm, double descentMm, double angleDeg) {
+        double want = 1.01 * descentMm / Math.tan(Math.toRadians(angleDeg));
+        Vec2 s = loop.get(0).start();
+        Vec2 tangent = null;
+        for (Curve2 c : loop.curves()) {
+            if (c.length() > 1e-9) {
+                tangent = c.startTangent().normalized();
+                break;
+            }
+        }
+        if (tangent == null || !(want > 0)) {
+            return null;
+        }
+        boolean loopCcw = loop.isCcw();
+        for (double f : new double[] {1, 0.75, 0.5}) {
+            double r = f * radiusMm;
+            for (boolean ccw : new boolean[] {loopCcw, !loopCcw}) {
+                Vec2 c = s.plus(tangent.leftNormal().times(ccw ? r : -r));
+                if (!holds(finishing, c, r)) {
+                    continue;
+                }
+                double sweep = want / r;
+                int turns = (int) Math.floor(sweep / (2 * Math.PI));
+                double part = Math.max(HELIX_LEAST_PART_TURN_RAD, sweep - turns * 2 * Math.PI);
+                if (turns > Entries.MAX_STEPS) {
+                    continue;
+                }
+                Vec2 from = c.plus(s.minus(c).rotated(ccw ? -part : part));
+                return new Helix(from, c, ccw, turns);
+            }
+        }
+        return null;
+    }
+
+    /** Whether the circle of tool centres about c lies inside the finishing offset's region. */
+    private static boolean holds(Level finishing, Vec2 c, double r) {
+        int w = 0;
+        for (Contour loop : finishing.loops()) {
+            if (loop.distanceTo(c) < r + 1e-6) {
+                return false;
+            }
+            w += loop.windingNumber(c);
+        }
+        return w == 1;
     }
 
     /** Down from top to z along the ramp's curves, evenly by length. */
