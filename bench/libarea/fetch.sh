@@ -19,8 +19,8 @@ lib=$dir/root/usr/lib/freecad-python3/lib
 if [[ ! -f $lib/area.so ]]; then
   ( cd "$dir/debs" &&
     { ls libfreecad-python3-0.20_*.deb >/dev/null 2>&1 ||
-      apt-get download libfreecad-python3-0.20 ||
-      { apt-get update -qq && apt-get download libfreecad-python3-0.20; }; } )
+      apt-get download libfreecad-python3-0.20 >&2 ||
+      { apt-get update -qq && apt-get download libfreecad-python3-0.20 >&2; }; } )
   for d in "$dir"/debs/*.deb; do dpkg -x "$d" "$dir/root"; done
 fi
 py=${PYTHON:-python3.11}

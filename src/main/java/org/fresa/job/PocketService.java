@@ -207,8 +207,7 @@ public final class PocketService {
                             + profile.islands().size() + " found): the pocket is planned by Fresa's region engine, "
                             + "written by fresa pocket or Job > Run with a post other than 7m");
         }
-        Recognition.Result rec = Recognition.of(faithful ? profile : profile.withUnitNormals());
-        return PassPlanner.plan(rec, tech, faithful);
+        return PassPlanner.plan(profile, tech, faithful);
     }
 
     /** The NC program text for a plan, climb-milled on the G-code posts and 7m, with the default entries. */
@@ -308,6 +307,9 @@ public final class PocketService {
             problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
                     + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
         }
+        if (thesis) {
+            thesisGouge(readContour(s)).ifPresent(problems::add);
+        }
         Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
         if (refused.isPresent()) {
             return refused.get();
@@ -328,6 +330,36 @@ public final class PocketService {
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, problems, summary, List.of(outFile));
+    }
+
+    /**
+     * The warning for a program printed as the thesis printed it ({@code 7m-compat}) from a
+     * contour whose elements miss each other at a junction the thesis snaps: its passes join
+     * there at the snapped point, and its finishing pass cuts the wall beyond the step by the gap
+     * (cavity 02: 0.755 mm past circle 6). Every other post plans the step as an element and
+     * keeps to the wall ({@link PocketProfile#withBridgedJunctions()}).
+     */
+    static Optional<String> thesisGouge(PocketProfile profile) {
+        List<PocketProfile.SnappedJunction> snapped = profile.snappedJunctions();
+        if (snapped.isEmpty()) {
+            return Optional.empty();
+        }
+        StringBuilder where = new StringBuilder();
+        for (PocketProfile.SnappedJunction j : snapped) {
+            where.append(where.length() == 0 ? "" : ", ")
+                    .append(String.format(
+                            Locale.ROOT,
+                            "%.3f mm at (%.3f, %.3f)",
+                            j.gapMm(),
+                            j.point().x(),
+                            j.point().y()));
+        }
+        return Optional.of(String.format(
+                Locale.ROOT,
+                "warning: the thesis's program as printed cuts into the wall by up to %.3f mm where it joins"
+                        + " elements that miss each other (%s); a post other than 7m-compat keeps to the wall",
+                snapped.get(0).gapMm(),
+                where));
     }
 
     /**

@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import org.fresa.geom.Vec2;
+import org.fresa.model.CamInputException;
 
 /**
  * The thesis's pass rules (§7.6.1, §3.9 of the seed): finishing pass at R, pre-finish at R + a,
@@ -27,6 +28,20 @@ public final class PassPlanner {
         this.tech = tech;
         this.faithful = faithful;
         this.r = tech.radiusMm();
+    }
+
+    /**
+     * Plans the passes of a profile: by the thesis's rules on its elements as written (the 7M
+     * compat output), or by Fresa's on the profile every other post mills, its lines of unit
+     * normal and the junctions the thesis snaps across a gap bridged by a step, so that no pass
+     * stands nearer the wall as drawn than its offset ({@link PocketProfile#withBridgedJunctions()}).
+     *
+     * @throws CamInputException when the recognition tree cannot be built (not clockwise or not closed)
+     */
+    public static PocketPlan plan(PocketProfile profile, PocketTechnology tech, boolean faithful)
+            throws CamInputException, ToolTooLargeException {
+        PocketProfile milled = faithful ? profile : profile.withUnitNormals().withBridgedJunctions();
+        return plan(Recognition.of(milled), tech, faithful);
     }
 
     /** Plans the passes exactly by the thesis's rules (for the 7M compat output and tests). */

@@ -68,6 +68,97 @@ public record PocketProfile(List<PocketElement> elements, double compar, List<Co
      */
     static final double UNIT_NORMAL_SLACK = 1e-6;
 
+    /**
+     * The same contour with a line element across every junction the thesis snaps: where two
+     * elements that should meet near-tangent miss each other by a gap (cavity 02's circles 5 and
+     * 6 by 0.755 mm, line 1 and circle 2 by 0.368 mm), the wall as drawn runs along each element
+     * to the point nearest the junction and steps across the gap there, as {@link #outline()}
+     * draws it. The step has one reflex end, a corner of material standing into the pocket. The
+     * thesis instead joins the two offsets at their snapped junction at every pass, so its pass
+     * at t leaves the step's reflex corner closer than t: grown by the tool's radius, the
+     * finishing pass cuts the wall beyond that corner by the gap. With the step an element of its
+     * own (and the zero-radius arc the reference contour puts at its reflex end) every pass
+     * stands t from the wall as drawn. Gaps up to {@link #BRIDGED_GAP_MM} are left snapped.
+     */
+    public PocketProfile withBridgedJunctions() {
+        int n = elements.size();
+        List<Vec2> v = vertices();
+        int created = elements.stream().mapToInt(PocketElement::number).max().orElse(n);
+        List<PocketElement> out = new ArrayList<>(elements.size());
+        boolean changed = false;
+        for (int i = 0; i < n; i++) {
+            PocketElement p = elements.get((i + n - 1) % n);
+            PocketElement q = elements.get(i);
+            Vec2 from = nearestOnCarrier(p, v.get(i));
+            Vec2 to = nearestOnCarrier(q, v.get(i));
+            if (from.distance(to) <= BRIDGED_GAP_MM) {
+                out.add(q);
+                continue;
+            }
+            changed = true;
+            // the step's unit normal on its right, where the pocket is as it is walked from p to q
+            Vec2 u = to.minus(from).normalized();
+            double a = u.y();
+            double b = -u.x();
+            int k = 1;
+            if (a < 0 || (a == 0 && b < 0)) {
+                a = -a;
+                b = -b;
+                k = -1;
+            }
+            PocketElement step = new PocketElement(++created, false, a, b, a * from.x() + b * from.y(), k, 'S');
+            step = step.withSelector(ElementGeometry.selectorNear(p, step, 0, from, compar));
+            out.add(step);
+            out.add(q.withSelector(ElementGeometry.selectorNear(step, q, 0, to, compar)));
+        }
+        return changed ? new PocketProfile(out, compar, islands) : this;
+    }
+
+    /**
+     * The largest gap (mm) a snapped junction may keep in {@link #withBridgedJunctions()}: the
+     * most its passes may stand into the wall there.
+     */
+    public static final double BRIDGED_GAP_MM = 0.001;
+
+    /**
+     * The junctions the thesis snaps across a gap of more than {@link #BRIDGED_GAP_MM} (its pass
+     * grown by the tool's radius cuts the wall beyond them by that gap), largest gap first.
+     *
+     * @return each such junction's point at t = 0 and its gap (mm)
+     */
+    public List<SnappedJunction> snappedJunctions() {
+        int n = elements.size();
+        List<Vec2> v = vertices();
+        List<SnappedJunction> out = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            double gap = nearestOnCarrier(elements.get((i + n - 1) % n), v.get(i))
+                    .distance(nearestOnCarrier(elements.get(i), v.get(i)));
+            if (gap > BRIDGED_GAP_MM) {
+                out.add(new SnappedJunction(v.get(i), gap));
+            }
+        }
+        out.sort((x, y) -> Double.compare(y.gapMm(), x.gapMm()));
+        return out;
+    }
+
+    /**
+     * A junction of two elements that miss each other, which the thesis snaps.
+     *
+     * @param point the snapped junction at t = 0 (mm)
+     * @param gapMm how far apart the two elements are there (mm)
+     */
+    public record SnappedJunction(Vec2 point, double gapMm) {}
+
+    /** The point of e's carrier (its line, or its circle at t = 0) nearest to p. */
+    private static Vec2 nearestOnCarrier(PocketElement e, Vec2 p) {
+        if (e.arc()) {
+            return onCircle(p, e.center(), Math.max(0, e.d()));
+        }
+        double n = e.normalLength();
+        double h = (e.a() * p.x() + e.b() * p.y() - e.d()) / n;
+        return new Vec2(p.x() - e.a() / n * h, p.y() - e.b() / n * h);
+    }
+
     /** Junction points at t = 0: index i is the start of element i. */
     public List<Vec2> vertices() {
         List<Vec2> out = new ArrayList<>();

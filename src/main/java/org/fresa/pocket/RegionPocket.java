@@ -40,10 +40,10 @@ import org.fresa.model.ToolpathSection;
  * the ramp that a retract would need to enter the next loop ({@link #linkLimitMm}), or when the
  * tool's disc along it stays in material this layer has already cut or the next loop cuts
  * (whatever its length; {@link Coverage#clearedAlong}), or, when an island's offset cuts the
- * straight link off, two straight moves by one corner beside a finishing loop ({@link #detour}),
- * otherwise a
- * retract, a rapid and a ramp down along the next loop, no steeper than the entry angle (no
- * vertical plunge into material unless a centre-cutting tool is asked to).
+ * straight link off, straight moves by corners beside the finishing loops ({@link #detour}),
+ * otherwise a retract, a rapid and a helix beside the next loop's start ({@link #helixOnto}) or a
+ * ramp down along the loop, no steeper than the entry angle (no vertical plunge into material
+ * unless a centre-cutting tool is asked to).
  */
 public final class RegionPocket {
 
@@ -522,24 +522,34 @@ public final class RegionPocket {
                 Vec2 s = loop.get(0).start();
                 double feed = cut.level() == 0 ? t.finishFeedMmPerMin() : t.feedMmPerMin();
                 double limit = linkLimitMm(t, entry, above - z);
-                Vec2 via = null;
+                List<Vec2> corners = List.of();
                 if (cursor != null
                         && (feedLink(cursor, s, finishing, limit) || cleared.clearedAlong(cursor, s, loop.curves()))) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
-                } else if (cursor != null && (via = detour(cursor, s, finishing, limit, t.radiusMm())) != null) {
-                    moves.add(new Move.Linear(at(via, z), t.feedMmPerMin()));
+                } else if (cursor != null && !(corners = detour(cursor, s, finishing, limit, t.radiusMm())).isEmpty()) {
+                    for (Vec2 corner : corners) {
+                        moves.add(new Move.Linear(at(corner, z), t.feedMmPerMin()));
+                    }
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                 } else {
                     // straight up from where the tool is (the last loop of the layer above ends deep in the pocket)
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
-                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE
+                    boolean helixFirst = entry.kind() == EntryRule.Kind.AUTO || entry.kind() == EntryRule.Kind.HELIX;
+                    Helix helix =
+                            helixFirst ? helixOnto(loop, finishing, t.radiusMm(), above - z, entry.angleDeg()) : null;
+                    List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE || helix != null
                             ? List.of()
                             : rampPath(loop, above - z, entry.angleDeg());
-                    Vec2 from = down.isEmpty() ? s : down.get(0).start();
+                    Vec2 from = helix != null
+                            ? helix.from()
+                            : down.isEmpty() ? s : down.get(0).start();
                     moves.add(new Move.Rapid(at(from, safe)));
                     // down at rapid to just above the floor cleared at the layer above, then no straight feed down
                     moves.add(new Move.Rapid(at(from, above)));
-                    if (down.isEmpty()) {
+                    if (helix != null) {
+                        moves.add(new Move.Circular(
+                                at(s, z), at(helix.centre(), above), Z, helix.ccw(), helix.turns(), t.feedMmPerMin()));
+                    } else if (down.isEmpty()) {
                         moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
                     } else {
                         ramp(moves, down, above, z, t.feedMmPerMin());
@@ -614,6 +624,75 @@ public final class RegionPocket {
         return out;
     }
 
+    /**
+     * A helix down onto a loop's start: the tool centre on a circle beside the start, tangent to
+     * the loop there, descending evenly as far along as a ramp along the loop would
+     * ({@link #rampPath}: the same feed at the same angle), in one block (its full turns counted
+     * in the block) where a ramp along a loop of many short elements takes one block per element
+     * per round.
+     *
+     * @param from where the helix begins (XY), on its circle
+     * @param centre its axis (XY)
+     * @param ccw counter-clockwise seen from +Z
+     * @param turns full turns before the last part turn that ends at the loop's start
+     */
+    record Helix(Vec2 from, Vec2 centre, boolean ccw, int turns) {}
+
+    /** The part turn a helix ends with, at least (rad): so that its ends never coincide. */
+    private static final double HELIX_LEAST_PART_TURN_RAD = 0.05;
+
+    /**
+     * The helix onto the loop's start: radius the tool's radius, else three quarters or half of
+     * it (no core wider than half the tool left standing for a tool that does not cut at its
+     * centre), its circle of tool centres inside the finishing offset (the tool touches no wall
+     * and no island), turning with the loop first; null when none has room.
+     */
+    static Helix helixOnto(Contour loop, Level finishing, double radiusMm, double descentMm, double angleDeg) {
+        double want = 1.01 * descentMm / Math.tan(Math.toRadians(angleDeg));
+        Vec2 s = loop.get(0).start();
+        Vec2 tangent = null;
+        for (Curve2 c : loop.curves()) {
+            if (c.length() > 1e-9) {
+                tangent = c.startTangent().normalized();
+                break;
+            }
+        }
+        if (tangent == null || !(want > 0)) {
+            return null;
+        }
+        boolean loopCcw = loop.isCcw();
+        for (double f : new double[] {1, 0.75, 0.5}) {
+            double r = f * radiusMm;
+            for (boolean ccw : new boolean[] {loopCcw, !loopCcw}) {
+                Vec2 c = s.plus(tangent.leftNormal().times(ccw ? r : -r));
+                if (!holds(finishing, c, r)) {
+                    continue;
+                }
+                double sweep = want / r;
+                int turns = (int) Math.floor(sweep / (2 * Math.PI));
+                double part = Math.max(HELIX_LEAST_PART_TURN_RAD, sweep - turns * 2 * Math.PI);
+                if (turns > Entries.MAX_STEPS) {
+                    continue;
+                }
+                Vec2 from = c.plus(s.minus(c).rotated(ccw ? -part : part));
+                return new Helix(from, c, ccw, turns);
+            }
+        }
+        return null;
+    }
+
+    /** Whether the circle of tool centres about c lies inside the finishing offset's region. */
+    private static boolean holds(Level finishing, Vec2 c, double r) {
+        int w = 0;
+        for (Contour loop : finishing.loops()) {
+            if (loop.distanceTo(c) < r + 1e-6) {
+                return false;
+            }
+            w += loop.windingNumber(c);
+        }
+        return w == 1;
+    }
+
     /** Down from top to z along the ramp's curves, evenly by length. */
     private static void ramp(PocketMoves moves, List<Curve2> down, double top, double z, double feed) {
         double total = down.stream().mapToDouble(Curve2::length).sum();
@@ -650,38 +729,86 @@ public final class RegionPocket {
     }
 
     /**
-     * A corner for a link that a straight line cannot make inside the finishing offset (an
-     * island's offset in the way): the point beside the middle of an element of a finishing loop,
-     * a little into the region, from which both legs stay inside and which makes the shortest way
-     * no longer than limitMm; null when there is none.
+     * What a link's corner costs in {@link #detour} beside its length (mm): of two ways nearly
+     * as long, the one of fewer blocks.
      */
-    static Vec2 detour(Vec2 p, Vec2 q, Level finishing, double limitMm, double radiusMm) {
+    private static final double CORNER_MM = 1;
+
+    /**
+     * The corners of a link that a straight line cannot make inside the finishing offset (an
+     * island's offset in the way): the shortest way from p to q by straight legs through points
+     * beside the elements of the finishing loops (a quarter, half and three quarters along each,
+     * a little into the region), every leg inside the finishing offset ({@link #feedLink}), the
+     * whole no longer than limitMm (the ramp a retract would need); empty when there is none.
+     */
+    static List<Vec2> detour(Vec2 p, Vec2 q, Level finishing, double limitMm, double radiusMm) {
         if (p.distance(q) > limitMm) {
-            return null;
+            return List.of();
         }
-        Vec2 best = null;
-        double bestLen = limitMm;
+        List<Vec2> nodes = new ArrayList<>(List.of(p, q));
         for (Contour c : finishing.loops()) {
             for (Curve2 k : c.curves()) {
                 if (k.length() < 1e-6) {
                     continue;
                 }
-                Vec2 mid = k.pointAt(0.5);
-                // the region lies on the left of every finishing loop (faces CCW, holes CW)
-                Vec2 left = k instanceof Arc2 a
-                        ? (a.ccw() ? a.center().minus(mid) : mid.minus(a.center())).normalized()
-                        : k.end().minus(k.start()).normalized().leftNormal();
-                for (double away : new double[] {0.05 * radiusMm, 0.25 * radiusMm, radiusMm}) {
-                    Vec2 w = mid.plus(left.times(away));
-                    double len = p.distance(w) + w.distance(q);
-                    if (len < bestLen && feedLink(p, w, finishing, limitMm) && feedLink(w, q, finishing, limitMm)) {
-                        best = w;
-                        bestLen = len;
+                for (double along : new double[] {0.25, 0.5, 0.75}) {
+                    Vec2 at = k.pointAt(along);
+                    // the region lies on the left of every finishing loop (faces CCW, holes CW)
+                    Vec2 left = k instanceof Arc2 arc
+                            ? (arc.ccw() ? arc.center().minus(at) : at.minus(arc.center())).normalized()
+                            : k.end().minus(k.start()).normalized().leftNormal();
+                    for (double away : new double[] {0.05 * radiusMm, 0.25 * radiusMm, radiusMm}) {
+                        Vec2 w = at.plus(left.times(away));
+                        if (p.distance(w) + w.distance(q) <= limitMm) {
+                            nodes.add(w);
+                        }
                     }
                 }
             }
         }
-        return best;
+        // A*: the straight distance to q never overestimates what is left
+        int n = nodes.size();
+        double[] way = new double[n];
+        int[] from = new int[n];
+        boolean[] done = new boolean[n];
+        java.util.Arrays.fill(way, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(from, -1);
+        way[0] = 0;
+        while (true) {
+            int u = -1;
+            double best = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < n; i++) {
+                double f = way[i] + nodes.get(i).distance(q);
+                if (!done[i] && f < best) {
+                    best = f;
+                    u = i;
+                }
+            }
+            if (u < 0) {
+                return List.of();
+            }
+            if (u == 1) {
+                break;
+            }
+            done[u] = true;
+            for (int v = 0; v < n; v++) {
+                if (done[v]) {
+                    continue;
+                }
+                double via = way[u] + nodes.get(u).distance(nodes.get(v)) + (v == 1 ? 0 : CORNER_MM);
+                if (via < way[v]
+                        && via + nodes.get(v).distance(q) <= limitMm
+                        && feedLink(nodes.get(u), nodes.get(v), finishing, limitMm)) {
+                    way[v] = via;
+                    from[v] = u;
+                }
+            }
+        }
+        List<Vec2> corners = new ArrayList<>();
+        for (int v = from[1]; v > 0; v = from[v]) {
+            corners.add(0, nodes.get(v));
+        }
+        return corners;
     }
 
     /**

@@ -31,6 +31,9 @@ class AptPostAcceptanceTest {
 
     private static final double TOL_MM = 1e-6;
 
+    /** How far a helix's intermediate turn end, rounded to the micrometre in the APT file, may lie (mm). */
+    private static final double TURN_END_MM = 0.0005 * Math.sqrt(3) + 1e-6;
+
     /** One motion of an APT program as this test reads it. */
     record AptMotion(String kind, Vec3 end, Vec3 centre, Vec3 axis, double seconds) {}
 
@@ -115,14 +118,22 @@ class AptPostAcceptanceTest {
                     Vec3 sense = n.times(Math.signum(c.rotation()));
                     int turns = Math.abs(c.rotation());
                     double rise = c.end().minus(at).dot(n);
+                    // the helix rises in proportion to its angle: whole turns, then the part
+                    // turn to its end (a whole one where the end is over the start)
+                    double part = partTurnRad(at, c.end(), c.center(), n, c.rotation() > 0);
+                    double sweep = 2 * Math.PI * (turns - 1) + part;
                     for (int t = 1; t <= turns; t++) {
                         AptMotion m = apt.get(i++);
                         assertEquals("arc", m.kind(), where + " turn " + t);
                         near(sense, m.axis(), where + " sense");
                         Vec3 dc = m.centre().minus(c.center());
                         near(Vec3.ZERO, dc.minus(n.times(dc.dot(n))), where + " centre");
-                        Vec3 end = t == turns ? c.end() : at.plus(n.times(rise * t / turns));
-                        near(end, m.end(), where + " end of turn " + t);
+                        Vec3 end = t == turns ? c.end() : at.plus(n.times(rise * 2 * Math.PI * t / sweep));
+                        // a turn's end short of the last is the APT's own point, written to the
+                        // micrometre (LinuxCNC reports only the helix's end)
+                        assertTrue(
+                                end.distance(m.end()) <= (t == turns ? TOL_MM : TURN_END_MM),
+                                where + " end of turn " + t + ": expected " + end + " but the APT has " + m.end());
                         arcs++;
                     }
                     at = c.end();
@@ -132,6 +143,18 @@ class AptPostAcceptanceTest {
         }
         assertEquals(apt.size(), i, what + ": the APT program has motions LinuxCNC does not");
         return new Counts(i, arcs);
+    }
+
+    /** The angle (rad, in (0, 2 pi]) from a to b about the centre's axis n, in the arc's sense. */
+    private static double partTurnRad(Vec3 a, Vec3 b, Vec3 centre, Vec3 n, boolean ccw) {
+        Vec3 u = a.minus(centre);
+        u = u.minus(n.times(u.dot(n)));
+        Vec3 v = b.minus(centre);
+        v = v.minus(n.times(v.dot(n)));
+        double angle = Math.atan2(u.cross(v).dot(n), u.dot(v));
+        double part = ccw ? angle : -angle;
+        part = ((part % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
+        return part < 1e-9 ? 2 * Math.PI : part;
     }
 
     private static void near(Vec3 expected, Vec3 actual, String where) {

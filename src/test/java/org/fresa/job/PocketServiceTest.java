@@ -1,5 +1,6 @@
 package org.fresa.job;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -71,6 +72,25 @@ class PocketServiceTest {
         assertEquals(30.0, (double) o.summary().get("max_tool_diameter"), 1e-6);
         assertEquals(14.17, (double) o.summary().get("wall_tool_diameter"), 0.01);
         assertEquals(5, o.summary().get("passes"));
+    }
+
+    @Test
+    void theThesisProgramOfCavity02WarnsOfItsCutIntoTheWall(@TempDir Path dir) throws Exception {
+        // circles 5 and 6 miss each other by 0.755 mm, line 1 and circle 2 by 0.368 mm: the
+        // thesis's pass joins them at the snapped point and cuts past circle 6 by that much
+        TaskOutcome printed =
+                PocketService.run(settings("cavity02", "7m-compat"), dir.resolve("c2.nc"), ProgressMonitor.NONE);
+        TaskOutcome milled =
+                PocketService.run(settings("cavity02", "linuxcnc"), dir.resolve("c2.ngc"), ProgressMonitor.NONE);
+        String warning = printed.problems().stream()
+                .filter(p -> p.contains("cuts into the wall"))
+                .findFirst()
+                .orElse("none in " + printed.problems());
+        assertAll(
+                () -> assertEquals(0, printed.exitStatus()),
+                () -> assertTrue(warning.contains("by up to 0.755 mm"), warning),
+                () -> assertTrue(warning.contains("0.368 mm at (15.814, 117.573)"), warning),
+                () -> assertTrue(milled.problems().stream().noneMatch(p -> p.contains("cuts into the wall"))));
     }
 
     @Test

@@ -175,14 +175,17 @@ class PocketCleanUpTest {
         PocketTechnology t = PocketCoverageTest.tech(name);
         PocketProfile profile = RecognitionTest.sample(name + ".dad");
         PocketPlan thesis = PassPlanner.plan(Recognition.of(unitNormals(profile)), t, true);
-        PocketPlan plan = PassPlanner.plan(Recognition.of(profile.withUnitNormals()), t, false);
-        // uncut: within the thesis's finishing pass grown by R (everything inside reachable), the
-        // pass of lines of unit normal, each R from its wall (cavity 01's element 4 is not written so);
+        PocketPlan plan = PassPlanner.plan(profile, t, false);
         // gouge: against the wall as drawn, where a line lies whatever the length of its (A, B),
-        // widened only where that pass grown by R reaches past it (cavity 02's junctions, snapped
-        // by the thesis where its elements meet near-tangent: up to 0.47 mm wide about (334.5, 186.2))
-        Geometry reach = PocketCoverageTest.region(thesis.generated().get(0), t.radiusMm());
-        Geometry wall = RegionPocketTest.polygon(profile.outline()).union(reach);
+        // across each junction the thesis snaps a straight step from one element to the other
+        // (cavity 02's circles 5 and 6 miss by 0.755 mm: the thesis's pass grown by R reaches
+        // that far past circle 6 about (334.5, 186.2), and its lines 1 and circle 2 by 0.368 mm);
+        // uncut: within the thesis's finishing pass grown by R, the pass of lines of unit normal,
+        // each R from its wall (cavity 01's element 4 is not written so), where a tool inside the
+        // wall can reach (not the square corner at the far end of cavity 02's step, 1.67 mm2)
+        Geometry wall = RegionPocketTest.polygon(profile.outline());
+        Geometry reach = PocketCoverageTest.region(thesis.generated().get(0), t.radiusMm())
+                .intersection(wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32));
         Verdict v = verdict(
                 interpreted(PocketToolpath.of(plan, true), dir, name),
                 t.zBottomMm(),
