@@ -15,12 +15,12 @@ import org.fresa.dxf.DxfReadOptions;
 import org.fresa.dxf.DxfReader;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.job.PocketService;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkBenchmark;
 import org.fresa.model.CamInputException;
+import org.fresa.post.PocketPost;
 import org.fresa.stepnc.StepNcReader;
 
 /**

@@ -22,6 +22,7 @@ import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.CuttingPost;
 import org.fresa.post.MillingPost;
+import org.fresa.post.PocketPost;
 import org.fresa.sole.PatternKind;
 import org.fresa.sole.SizeRule;
 

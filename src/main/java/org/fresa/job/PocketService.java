@@ -39,6 +39,7 @@ import org.fresa.pocket.ZigzagPocket;
 import org.fresa.pocket.compat.Sinumerik7MPost;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
+import org.fresa.post.PocketPost;
 
 /**
  * The pocket module's service, shared by {@code fresa pocket} and {@code fresa run}: reads the

@@ -3,6 +3,7 @@ package org.fresa.job;
 import org.fresa.cutting.CuttingOptions;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.post.PocketPost;
 import org.fresa.robot.RobotFormat;
 
 /**

@@ -16,7 +16,6 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.job.PocketService;
 import org.fresa.job.SettingRange;
 import org.fresa.job.SettingRanges.Pocket;
@@ -31,6 +30,7 @@ import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.RecognitionNode;
 import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
+import org.fresa.post.PocketPost;
 
 /**
  * The Pocket tab's state without Swing: the settings being edited and the last computed result

@@ -19,6 +19,7 @@ import org.fresa.job.JobSettings.RobotSettings;
 import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.post.PocketPost;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -53,7 +53,7 @@ class MainWindowGuiTest extends WindowGuiTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC));
+                        org.fresa.post.PocketPost.LINUXCNC));
         GuiActionRunner.execute(() -> model.setJob(job));
 
         window.menuItemWithPath("File", "Save as...").click();

@@ -52,7 +52,7 @@ class PocketStrategyGuiTest extends WindowGuiTest {
                         3000,
                         300,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC))));
+                        org.fresa.post.PocketPost.LINUXCNC))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
         // every strategy field has a label that names it and takes the keyboard there

@@ -72,7 +72,7 @@ class PocketTabGuiTest extends WindowGuiTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT))));
+                        org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.ENTRY).requireSelection("auto");
         window.textBox(PocketViewModel.ENTRY_ANGLE).requireText("3");
@@ -151,7 +151,7 @@ class PocketTabGuiTest extends WindowGuiTest {
         assertTrue(
                 job.centreCutting()
                         && job.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
-                        && job.post() == org.fresa.job.PocketPost.LINUXCNC,
+                        && job.post() == org.fresa.post.PocketPost.LINUXCNC,
                 job.toString());
         Path saved = dir.resolve("cavity01.ngc");
         window.button("pocket-save-program").click();

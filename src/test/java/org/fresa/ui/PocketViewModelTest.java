@@ -24,7 +24,7 @@ class PocketViewModelTest {
                 2750,
                 280,
                 90,
-                org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT));
+                org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow();
         assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
@@ -49,7 +49,7 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.SINUMERIK_7M));
+                org.fresa.post.PocketPost.SINUMERIK_7M));
         m.compute();
         assertTrue(m.result().isEmpty());
         assertTrue(m.error().isPresent());
@@ -69,7 +69,7 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.LINUXCNC));
+                org.fresa.post.PocketPost.LINUXCNC));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
         assertTrue(r.report().startsWith("2 island(s)"), r.report());
@@ -93,7 +93,7 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.LINUXCNC);
+                org.fresa.post.PocketPost.LINUXCNC);
         m.setSettings(climb);
         m.compute();
         String a = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
@@ -126,7 +126,7 @@ class PocketViewModelTest {
                                 3200,
                                 290,
                                 100,
-                                org.fresa.job.PocketPost.LINUXCNC)
+                                org.fresa.post.PocketPost.LINUXCNC)
                         .withEntry(org.fresa.pocket.EntryRule.Kind.RAMP, 2.5, true)));
         assertEquals("ramp", m.entry());
         assertEquals("2.5", m.entryAngle());
@@ -160,7 +160,7 @@ class PocketViewModelTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC)
+                        org.fresa.post.PocketPost.LINUXCNC)
                 .withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, 3, false);
         m.setSettings(plunge);
         m.compute();
@@ -190,7 +190,7 @@ class PocketViewModelTest {
                         3000,
                         300,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC)));
+                        org.fresa.post.PocketPost.LINUXCNC)));
         m.setStrategy("zigzag");
         m.setAngle("200");
         assertEquals(

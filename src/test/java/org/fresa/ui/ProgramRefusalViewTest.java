@@ -26,7 +26,7 @@ class ProgramRefusalViewTest {
             2750,
             280,
             90,
-            org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT);
+            org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT);
 
     @Test
     void theThesisProgramOfCavity03PassesTheCheck() {
