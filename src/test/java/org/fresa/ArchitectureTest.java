@@ -58,6 +58,8 @@ class ArchitectureTest {
             .definedBy("org.fresa.io..")
             .layer("Robot")
             .definedBy("org.fresa.robot..")
+            .layer("Setting")
+            .definedBy("org.fresa.setting..")
             .layer("Service")
             .definedBy("org.fresa.job..")
             .layer("Bench")
@@ -74,16 +76,18 @@ class ArchitectureTest {
             .mayOnlyBeAccessedByLayers("App")
             .whereLayer("Service")
             .mayOnlyBeAccessedByLayers("Bench", "Ui", "App")
+            .whereLayer("Setting")
+            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Robot")
-            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Setting", "Service", "Ui", "App")
             .whereLayer("Io")
             .mayOnlyBeAccessedByLayers("Robot", "Service", "Ui", "App")
             .whereLayer("Domain")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Setting", "Service", "Bench", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Setting", "Service", "Bench", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -146,8 +150,22 @@ class ArchitectureTest {
             entry("io", List.of("model")),
             entry("robot", List.of("io", "post", "kin", "model", "geom")),
             entry(
+                    "setting",
+                    List.of(
+                            "robot",
+                            "dxf",
+                            "pocket",
+                            "toolpath",
+                            "cutting",
+                            "grading",
+                            "sole",
+                            "post",
+                            "kin",
+                            "model")),
+            entry(
                     "job",
                     List.of(
+                            "setting",
                             "check",
                             "chart",
                             "io",
@@ -268,6 +286,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule robotUsesOnlyStatedPackages = usesOnlyStatedPackages("robot");
+
+    @ArchTest
+    static final ArchRule settingUsesOnlyStatedPackages = usesOnlyStatedPackages("setting");
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");

@@ -15,6 +15,7 @@ import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPosts;
+import org.fresa.setting.SettingRanges;
 import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 

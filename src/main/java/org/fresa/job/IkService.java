@@ -25,6 +25,7 @@ import org.fresa.post.KrlWriter;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
 import org.fresa.robot.RobotPrograms;
+import org.fresa.setting.SettingRanges;
 
 /**
  * {@code fresa ik TARGETS.csv}: the inverse kinematics of any list of tool (TCP) poses in the

@@ -23,6 +23,7 @@ import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.CuttingPost;
 import org.fresa.post.MillingPost;
 import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRanges;
 import org.fresa.sole.PatternKind;
 import org.fresa.sole.SizeRule;
 

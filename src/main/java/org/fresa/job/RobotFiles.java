@@ -19,7 +19,6 @@ import javax.xml.validation.Schema;
 import org.fresa.geom.Transform3;
 import org.fresa.io.AtomicFiles;
 import org.fresa.io.SafeXml;
-import org.fresa.job.SettingRanges.RobotFile;
 import org.fresa.job.robotxml.FrameType;
 import org.fresa.job.robotxml.JointType;
 import org.fresa.job.robotxml.LimitType;
@@ -38,6 +37,8 @@ import org.fresa.kin.TriceptRobot;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.FileChecks;
+import org.fresa.setting.SettingRange;
+import org.fresa.setting.SettingRanges.RobotFile;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 

@@ -9,6 +9,7 @@ import java.util.OptionalDouble;
 import org.fresa.geom.Transform3;
 import org.fresa.kin.Robot;
 import org.fresa.model.Placement;
+import org.fresa.setting.SettingRanges;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.Tool;

@@ -17,8 +17,6 @@ import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketService;
-import org.fresa.job.SettingRange;
-import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Toolpath;
@@ -31,6 +29,8 @@ import org.fresa.pocket.RecognitionNode;
 import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRange;
+import org.fresa.setting.SettingRanges.Pocket;
 
 /**
  * The Pocket tab's state without Swing: the settings being edited and the last computed result
@@ -328,7 +328,7 @@ public final class PocketViewModel {
     }
 
     /** A typed number's problem against its range, as the other fields word it. */
-    private static Optional<String> numberProblem(String label, String text, org.fresa.job.SettingRange range) {
+    private static Optional<String> numberProblem(String label, String text, org.fresa.setting.SettingRange range) {
         try {
             double v = Double.parseDouble(text);
             return range.contains(v) ? Optional.empty() : Optional.of(label + ": " + range.problem(v) + ".");
@@ -394,7 +394,7 @@ public final class PocketViewModel {
         PocketSettings s = new PocketSettings(
                         typedContourName(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post, direction)
                 .withEntry(
-                        org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry),
+                        org.fresa.setting.SettingRanges.Pocket.ENTRY.require(entry),
                         Double.parseDouble(entryAngle),
                         centreCutting)
                 .withStrategy(new org.fresa.pocket.PocketStrategy(

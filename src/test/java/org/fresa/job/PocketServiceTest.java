@@ -14,6 +14,7 @@ import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRanges;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

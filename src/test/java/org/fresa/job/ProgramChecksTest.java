@@ -11,6 +11,7 @@ import org.fresa.check.ProgramCheck;
 import org.fresa.io.AtomicFiles;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.setting.SettingRanges;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -17,6 +17,7 @@ import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.NcPostsTest;
 import org.fresa.post.Rs274;
+import org.fresa.setting.SettingRanges;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
