@@ -60,6 +60,8 @@ class ArchitectureTest {
             .definedBy("org.fresa.robot..")
             .layer("Setting")
             .definedBy("org.fresa.setting..")
+            .layer("Cell")
+            .definedBy("org.fresa.cell..")
             .layer("Service")
             .definedBy("org.fresa.job..")
             .layer("Bench")
@@ -76,18 +78,21 @@ class ArchitectureTest {
             .mayOnlyBeAccessedByLayers("App")
             .whereLayer("Service")
             .mayOnlyBeAccessedByLayers("Bench", "Ui", "App")
-            .whereLayer("Setting")
+            .whereLayer("Cell")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Setting")
+            .mayOnlyBeAccessedByLayers("Cell", "Service", "Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Robot")
             .mayOnlyBeAccessedByLayers("Setting", "Service", "Ui", "App")
             .whereLayer("Io")
-            .mayOnlyBeAccessedByLayers("Robot", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Robot", "Cell", "Service", "Ui", "App")
             .whereLayer("Domain")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Setting", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Setting", "Cell", "Service", "Bench", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Setting", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers(
+                    "Domain", "Chart", "Io", "Robot", "Setting", "Cell", "Service", "Bench", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -162,9 +167,11 @@ class ArchitectureTest {
                             "post",
                             "kin",
                             "model")),
+            entry("cell", List.of("setting", "io", "stepnc", "toolpath", "kin", "model", "geom")),
             entry(
                     "job",
                     List.of(
+                            "cell",
                             "setting",
                             "check",
                             "chart",
@@ -289,6 +296,9 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule settingUsesOnlyStatedPackages = usesOnlyStatedPackages("setting");
+
+    @ArchTest
+    static final ArchRule cellUsesOnlyStatedPackages = usesOnlyStatedPackages("cell");
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");

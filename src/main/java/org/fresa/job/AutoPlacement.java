@@ -6,6 +6,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.fresa.cell.RobotFiles;
+import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.kin.PlacementSearch;
 import org.fresa.kin.Robot;

@@ -11,6 +11,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import org.fresa.cell.RobotFiles;
+import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cell.TablePlacing;
 import org.fresa.cutting.CutOrderOverride;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CutSense;

@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cell.TablePlacing;
 import org.fresa.geom.Vec2;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobSettings.GradingSettings;

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -64,7 +64,7 @@ public final class RobotTools {
             + " is taken as the flange plus the tool's length along the flange's z axis";
 
     /** The spindle in the flange frame, and the warning when there is none. */
-    static Transform3 spindle(Robot robot, Choice choice, List<String> warnings) {
+    public static Transform3 spindle(Robot robot, Choice choice, List<String> warnings) {
         if (choice.spindle().isPresent()) {
             return choice.spindle().get().toTransform();
         }

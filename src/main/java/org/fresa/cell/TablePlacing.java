@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import java.util.Locale;
 import org.fresa.model.CamInputException;
