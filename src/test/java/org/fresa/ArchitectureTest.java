@@ -146,7 +146,7 @@ class ArchitectureTest {
             entry("pocket", List.of("geom", "model")),
             entry("pocket.compat", List.of("pocket", "model", "geom")),
             entry("toolpath", List.of("pocket", "stepnc", "model", "geom")),
-            entry("cutting", List.of("pocket", "model", "geom")),
+            entry("cutting", List.of("pocket", "dxf", "model", "geom")),
             entry("grading", List.of("geom", "model")),
             entry("sole", List.of("pocket", "model", "geom")),
             entry("post", List.of("model", "geom")),

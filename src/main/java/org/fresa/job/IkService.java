@@ -16,6 +16,7 @@ import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
+import org.fresa.kin.ErrorStatistics;
 import org.fresa.kin.IkOptions;
 import org.fresa.kin.IkResult;
 import org.fresa.kin.IkSolver;

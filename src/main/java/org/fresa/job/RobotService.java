@@ -25,6 +25,7 @@ import org.fresa.model.Toolpath;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.PlanningChoices;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**

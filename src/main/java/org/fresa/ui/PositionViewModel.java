@@ -473,8 +473,8 @@ final class PositionViewModel {
     /** The error per axis rows of a result (any thread): {@link #errorRows()} of a model showing it. */
     static List<String[]> errorRowsOf(TrajectorySolver.Result result) {
         List<String[]> rows = new ArrayList<>();
-        for (org.fresa.job.ErrorStatistics.Axis a :
-                org.fresa.job.ErrorStatistics.of(result).axes()) {
+        for (org.fresa.kin.ErrorStatistics.Axis a :
+                org.fresa.kin.ErrorStatistics.of(result).axes()) {
             rows.add(new String[] {
                 a.axis() + " (" + a.unit() + ")",
                 String.format(Locale.ROOT, "%.3g", a.mean()),

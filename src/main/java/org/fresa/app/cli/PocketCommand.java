@@ -169,7 +169,7 @@ final class PocketCommand implements Callable<Integer> {
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {
-                thesisFile = org.fresa.job.PocketReport.thesisFileName(thesisName);
+                thesisFile = org.fresa.pocket.compat.PocketReport.thesisFileName(thesisName);
                 java.nio.file.Path folder = file.toAbsolutePath().getParent();
                 file = CliSupport.outFile(folder.resolve(thesisFile));
             }
