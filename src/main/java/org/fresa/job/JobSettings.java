@@ -215,7 +215,9 @@ public final class JobSettings {
                 MillingDirection.CLIMB,
                 EntryRule.Kind.AUTO,
                 EntryRule.DEFAULT_ANGLE_DEG,
-                false);
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
 
         public PocketSettings {
             Objects.requireNonNull(contour, "contour");
@@ -224,140 +226,6 @@ public final class JobSettings {
             Objects.requireNonNull(entry, "entry");
             Objects.requireNonNull(elements, "elements");
             Objects.requireNonNull(strategy, "strategy");
-        }
-
-        /** Settings with today's offset passes ({@link PocketStrategy#DEFAULT}). */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction,
-                EntryRule.Kind entry,
-                double entryAngleDeg,
-                boolean centreCutting,
-                Optional<DadContour> elements) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    elements,
-                    PocketStrategy.DEFAULT);
-        }
-
-        /** Settings whose contour is read from its file. */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction,
-                EntryRule.Kind entry,
-                double entryAngleDeg,
-                boolean centreCutting) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    Optional.empty());
-        }
-
-        /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    EntryRule.Kind.AUTO,
-                    EntryRule.DEFAULT_ANGLE_DEG,
-                    false);
-        }
-
-        /** Climb-milled settings. */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    MillingDirection.CLIMB);
         }
 
         /**

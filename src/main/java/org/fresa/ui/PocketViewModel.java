@@ -20,10 +20,12 @@ import org.fresa.job.PocketService;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Toolpath;
+import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.LoopState;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketElement;
 import org.fresa.pocket.PocketPlan;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.RecognitionNode;
 import org.fresa.pocket.RegionPocket;
@@ -392,7 +394,23 @@ public final class PocketViewModel {
             v[i] = Double.parseDouble(values[i]);
         }
         PocketSettings s = new PocketSettings(
-                        typedContourName(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post, direction)
+                        typedContourName(),
+                        v[0],
+                        v[1],
+                        v[2],
+                        v[3],
+                        v[4],
+                        v[5],
+                        v[6],
+                        v[7],
+                        v[8],
+                        post,
+                        direction,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)
                 .withEntry(
                         org.fresa.setting.SettingRanges.Pocket.ENTRY.require(entry),
                         Double.parseDouble(entryAngle),

@@ -20,6 +20,8 @@ import org.fresa.job.JobSettings.RobotSettings;
 import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.PocketPost;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -51,7 +53,12 @@ class JobXmlTest {
                         290,
                         100,
                         PocketPost.SINUMERIK_7M,
-                        org.fresa.pocket.MillingDirection.CONVENTIONAL))
+                        org.fresa.pocket.MillingDirection.CONVENTIONAL,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))
                 .withCutting(new CuttingSettings(
                         dir.resolve("sheet.dxf"),
                         2,
@@ -239,7 +246,9 @@ class JobXmlTest {
                         d.direction(),
                         d.entry(),
                         d.entryAngleDeg(),
-                        d.centreCutting()),
+                        d.centreCutting(),
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT),
                 JobXml.read(file).pocket().orElseThrow());
     }
 

@@ -1,6 +1,7 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketService;
@@ -160,7 +161,9 @@ final class PocketCommand implements Callable<Integer> {
                             direction,
                             entry,
                             Pocket.ENTRY_ANGLE.check(entryAngleDeg),
-                            centreCutting)
+                            centreCutting,
+                            Optional.empty(),
+                            PocketStrategy.DEFAULT)
                     .withStrategy(new PocketStrategy(
                             strategy,
                             Pocket.ANGLE.check(angleDeg),
