@@ -123,11 +123,11 @@ public final class PocketViewModel {
 
     public static final String STOCK_TO_LEAVE_LABEL = "Stock to leave (mm)";
     /** The strategies and orders the tab offers, as the job and the command line name them. */
-    public static final List<String> STRATEGIES = org.fresa.pocket.PocketStrategy.Kind.words();
+    public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
+            org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word);
 
-    public static final List<String> ORDERS = java.util.Arrays.stream(org.fresa.pocket.PocketStrategy.Order.values())
-            .map(org.fresa.pocket.PocketStrategy.Order::word)
-            .toList();
+    public static final List<String> ORDERS = org.fresa.model.EnumWords.all(
+            org.fresa.pocket.PocketStrategy.Order.class, org.fresa.pocket.PocketStrategy.Order::word);
     /** The kinds of entry the tab offers, as the job and the command line name them. */
     public static final List<String> ENTRIES = org.fresa.pocket.EntryRule.Kind.words();
     /** A new job's technology: the pocket module's defaults ({@link PocketSettings#DEFAULTS}); no contour. */
