@@ -9,7 +9,6 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.fresa.cutting.Chainer;
 import org.fresa.dxf.DxfDrawing;
 import org.fresa.dxf.DxfReadOptions;
@@ -21,9 +20,7 @@ import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkBenchmark;
 import org.fresa.model.CamInputException;
-import org.fresa.pocket.EntryRule;
-import org.fresa.pocket.MillingDirection;
-import org.fresa.pocket.PocketStrategy;
+import org.fresa.pocket.PocketTechnology;
 import org.fresa.post.PocketPost;
 import org.fresa.stepnc.StepNcReader;
 
@@ -343,24 +340,9 @@ public final class Benchmarks {
     static double pocketMs() throws IOException, CamInputException {
         Path dad = inputFile(CAVITY02);
         try {
-            return pocketMs(new JobSettings.PocketSettings(
-                    dad,
-                    42,
-                    0.74,
-                    0.15,
-                    23,
-                    20,
-                    5,
-                    3000,
-                    300,
-                    100,
-                    PocketPost.LINUXCNC,
-                    MillingDirection.CLIMB,
-                    EntryRule.Kind.AUTO,
-                    EntryRule.DEFAULT_ANGLE_DEG,
-                    false,
-                    Optional.empty(),
-                    PocketStrategy.DEFAULT));
+            return pocketMs(JobSettings.PocketSettings.DEFAULTS
+                    .withContourFile(dad)
+                    .withTechnology(new PocketTechnology(42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100)));
         } finally {
             Files.deleteIfExists(dad);
         }

@@ -21,6 +21,7 @@ import org.fresa.pocket.DadContour;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
+import org.fresa.pocket.PocketTechnology;
 import org.fresa.post.CuttingPost;
 import org.fresa.post.MillingPost;
 import org.fresa.post.PocketPost;
@@ -303,6 +304,28 @@ public final class JobSettings {
                     entryAngleDeg,
                     centreCutting,
                     Optional.empty(),
+                    strategy);
+        }
+
+        /** The same settings with the thesis's technology data (tool, depths, speed and feeds). */
+        public PocketSettings withTechnology(PocketTechnology t) {
+            return new PocketSettings(
+                    contour,
+                    t.toolDiameterMm(),
+                    t.cutFraction(),
+                    t.finishFraction(),
+                    t.zTopMm(),
+                    t.zBottomMm(),
+                    t.maxDepthMm(),
+                    t.spindleRpm(),
+                    t.feedMmPerMin(),
+                    t.finishFeedMmPerMin(),
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    elements,
                     strategy);
         }
 
