@@ -58,6 +58,10 @@ class ArchitectureTest {
             .definedBy("org.fresa.io..")
             .layer("Robot")
             .definedBy("org.fresa.robot..")
+            .layer("Setting")
+            .definedBy("org.fresa.setting..")
+            .layer("Cell")
+            .definedBy("org.fresa.cell..")
             .layer("Service")
             .definedBy("org.fresa.job..")
             .layer("Bench")
@@ -74,16 +78,21 @@ class ArchitectureTest {
             .mayOnlyBeAccessedByLayers("App")
             .whereLayer("Service")
             .mayOnlyBeAccessedByLayers("Bench", "Ui", "App")
+            .whereLayer("Cell")
+            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .whereLayer("Setting")
+            .mayOnlyBeAccessedByLayers("Cell", "Service", "Ui", "App")
             .whereLayer("Chart")
             .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
             .whereLayer("Robot")
-            .mayOnlyBeAccessedByLayers("Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Setting", "Service", "Ui", "App")
             .whereLayer("Io")
-            .mayOnlyBeAccessedByLayers("Robot", "Service", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Robot", "Cell", "Service", "Ui", "App")
             .whereLayer("Domain")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Robot", "Setting", "Cell", "Service", "Bench", "Ui", "App")
             .whereLayer("Core")
-            .mayOnlyBeAccessedByLayers("Domain", "Chart", "Io", "Robot", "Service", "Bench", "Ui", "App")
+            .mayOnlyBeAccessedByLayers(
+                    "Domain", "Chart", "Io", "Robot", "Setting", "Cell", "Service", "Bench", "Ui", "App")
             .because("dependencies point one way: geometry <- kinematics/model <- modules <- job <- ui/cli");
 
     @ArchTest
@@ -137,7 +146,7 @@ class ArchitectureTest {
             entry("pocket", List.of("geom", "model")),
             entry("pocket.compat", List.of("pocket", "model", "geom")),
             entry("toolpath", List.of("pocket", "stepnc", "model", "geom")),
-            entry("cutting", List.of("pocket", "model", "geom")),
+            entry("cutting", List.of("pocket", "dxf", "model", "geom")),
             entry("grading", List.of("geom", "model")),
             entry("sole", List.of("pocket", "model", "geom")),
             entry("post", List.of("model", "geom")),
@@ -146,8 +155,24 @@ class ArchitectureTest {
             entry("io", List.of("model")),
             entry("robot", List.of("io", "post", "kin", "model", "geom")),
             entry(
+                    "setting",
+                    List.of(
+                            "robot",
+                            "dxf",
+                            "pocket",
+                            "toolpath",
+                            "cutting",
+                            "grading",
+                            "sole",
+                            "post",
+                            "kin",
+                            "model")),
+            entry("cell", List.of("setting", "io", "stepnc", "toolpath", "kin", "model", "geom")),
+            entry(
                     "job",
                     List.of(
+                            "cell",
+                            "setting",
                             "check",
                             "chart",
                             "io",
@@ -268,6 +293,12 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule robotUsesOnlyStatedPackages = usesOnlyStatedPackages("robot");
+
+    @ArchTest
+    static final ArchRule settingUsesOnlyStatedPackages = usesOnlyStatedPackages("setting");
+
+    @ArchTest
+    static final ArchRule cellUsesOnlyStatedPackages = usesOnlyStatedPackages("cell");
 
     @ArchTest
     static final ArchRule jobUsesOnlyStatedPackages = usesOnlyStatedPackages("job");

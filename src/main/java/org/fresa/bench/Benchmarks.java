@@ -15,12 +15,13 @@ import org.fresa.dxf.DxfReadOptions;
 import org.fresa.dxf.DxfReader;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.job.PocketService;
 import org.fresa.job.ProgressMonitor;
 import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkBenchmark;
 import org.fresa.model.CamInputException;
+import org.fresa.pocket.PocketTechnology;
+import org.fresa.post.PocketPost;
 import org.fresa.stepnc.StepNcReader;
 
 /**
@@ -339,8 +340,9 @@ public final class Benchmarks {
     static double pocketMs() throws IOException, CamInputException {
         Path dad = inputFile(CAVITY02);
         try {
-            return pocketMs(new JobSettings.PocketSettings(
-                    dad, 42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100, PocketPost.LINUXCNC));
+            return pocketMs(JobSettings.PocketSettings.DEFAULTS
+                    .withContourFile(dad)
+                    .withTechnology(new PocketTechnology(42, 0.74, 0.15, 23, 20, 5, 3000, 300, 100)));
         } finally {
             Files.deleteIfExists(dad);
         }

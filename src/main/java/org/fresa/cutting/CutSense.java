@@ -1,6 +1,6 @@
 package org.fresa.cutting;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * The sense contours are cut in: {@link #PROCESS} (the default: the process's own, see
@@ -13,7 +13,7 @@ public enum CutSense {
 
     /** The name as written: {@code process}, {@code cw}, {@code ccw}. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     /** Whether contours are cut clockwise, the given sense standing for {@link #PROCESS}. */

@@ -1,6 +1,6 @@
 package org.fresa.cutting;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * Who allows for the kerf: {@link #SOFTWARE} (the default: the path is the contour offset by half
@@ -12,7 +12,7 @@ public enum KerfCompensation {
 
     /** The name as written: {@code software}, {@code controller}. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     @Override

@@ -1,6 +1,6 @@
 package org.fresa.cutting;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /** The shape of the lead-in and lead-out: an arc (the default, a tangent entry) or a straight line. */
 public enum LeadShape {
@@ -9,7 +9,7 @@ public enum LeadShape {
 
     /** The name as written: {@code arc}, {@code line}. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     @Override

@@ -2,6 +2,7 @@ package org.fresa.dxf;
 
 import java.util.Locale;
 import java.util.Optional;
+import org.fresa.model.EnumWords;
 
 /**
  * The units a drawing is read in: {@link #AUTO} (the default: the drawing's {@code $INSUNITS}),
@@ -23,7 +24,7 @@ public enum DrawingUnits {
 
     /** The name as written: {@code mm}, {@code inch}, {@code auto}, ... */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     /** The units asked for, empty for the drawing's own. */

@@ -6,6 +6,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.fresa.cell.RobotFiles;
+import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.kin.PlacementSearch;
 import org.fresa.kin.Robot;
@@ -15,6 +17,7 @@ import org.fresa.model.Placement;
 import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 import org.fresa.post.NcPosts;
+import org.fresa.setting.SettingRanges;
 import org.fresa.toolpath.PlanningChoices;
 import org.fresa.toolpath.ToolpathPlanner;
 

@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import org.fresa.chart.GradingChart;
+import org.fresa.cutting.DrawingContours;
 import org.fresa.dxf.DxfWriter;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Vec2;

@@ -11,9 +11,12 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import org.fresa.cell.RobotFiles;
+import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
+import org.fresa.kin.ErrorStatistics;
 import org.fresa.kin.IkOptions;
 import org.fresa.kin.IkResult;
 import org.fresa.kin.IkSolver;
@@ -25,6 +28,7 @@ import org.fresa.post.KrlWriter;
 import org.fresa.post.RapidWriter;
 import org.fresa.post.RobotProgram;
 import org.fresa.robot.RobotPrograms;
+import org.fresa.setting.SettingRanges;
 
 /**
  * {@code fresa ik TARGETS.csv}: the inverse kinematics of any list of tool (TCP) poses in the

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cell.TablePlacing;
 import org.fresa.cutting.CutOrderOverride;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CutSense;
@@ -20,8 +21,11 @@ import org.fresa.pocket.DadContour;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
+import org.fresa.pocket.PocketTechnology;
 import org.fresa.post.CuttingPost;
 import org.fresa.post.MillingPost;
+import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRanges;
 import org.fresa.sole.PatternKind;
 import org.fresa.sole.SizeRule;
 
@@ -212,7 +216,9 @@ public final class JobSettings {
                 MillingDirection.CLIMB,
                 EntryRule.Kind.AUTO,
                 EntryRule.DEFAULT_ANGLE_DEG,
-                false);
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
 
         public PocketSettings {
             Objects.requireNonNull(contour, "contour");
@@ -221,140 +227,6 @@ public final class JobSettings {
             Objects.requireNonNull(entry, "entry");
             Objects.requireNonNull(elements, "elements");
             Objects.requireNonNull(strategy, "strategy");
-        }
-
-        /** Settings with today's offset passes ({@link PocketStrategy#DEFAULT}). */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction,
-                EntryRule.Kind entry,
-                double entryAngleDeg,
-                boolean centreCutting,
-                Optional<DadContour> elements) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    elements,
-                    PocketStrategy.DEFAULT);
-        }
-
-        /** Settings whose contour is read from its file. */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction,
-                EntryRule.Kind entry,
-                double entryAngleDeg,
-                boolean centreCutting) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    Optional.empty());
-        }
-
-        /** Settings with the default entries (auto, 3 deg, a tool that does not cut at its centre). */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post,
-                MillingDirection direction) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    EntryRule.Kind.AUTO,
-                    EntryRule.DEFAULT_ANGLE_DEG,
-                    false);
-        }
-
-        /** Climb-milled settings. */
-        public PocketSettings(
-                Path contour,
-                double toolDiameterMm,
-                double cutFraction,
-                double finishFraction,
-                double zTopMm,
-                double zBottomMm,
-                double maxDepthPerPassMm,
-                double spindleRpm,
-                double feedMmPerMin,
-                double finishFeedMmPerMin,
-                PocketPost post) {
-            this(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    MillingDirection.CLIMB);
         }
 
         /**
@@ -432,6 +304,28 @@ public final class JobSettings {
                     entryAngleDeg,
                     centreCutting,
                     Optional.empty(),
+                    strategy);
+        }
+
+        /** The same settings with the thesis's technology data (tool, depths, speed and feeds). */
+        public PocketSettings withTechnology(PocketTechnology t) {
+            return new PocketSettings(
+                    contour,
+                    t.toolDiameterMm(),
+                    t.cutFraction(),
+                    t.finishFraction(),
+                    t.zTopMm(),
+                    t.zBottomMm(),
+                    t.maxDepthMm(),
+                    t.spindleRpm(),
+                    t.feedMmPerMin(),
+                    t.finishFeedMmPerMin(),
+                    post,
+                    direction,
+                    entry,
+                    entryAngleDeg,
+                    centreCutting,
+                    elements,
                     strategy);
         }
 

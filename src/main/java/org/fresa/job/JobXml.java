@@ -17,9 +17,11 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
+import org.fresa.cell.TablePlacing;
 import org.fresa.geom.Vec2;
 import org.fresa.io.AtomicFiles;
 import org.fresa.io.SafeXml;
+import org.fresa.io.XmlLines;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.JobSettings.OutputSettings;
@@ -27,10 +29,6 @@ import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobSettings.RobotSettings;
 import org.fresa.job.JobSettings.SoleSettings;
 import org.fresa.job.JobSettings.StepNcSettings;
-import org.fresa.job.SettingRanges.Cutting;
-import org.fresa.job.SettingRanges.Grading;
-import org.fresa.job.SettingRanges.Pocket;
-import org.fresa.job.SettingRanges.Sole;
 import org.fresa.job.xml.CuttingType;
 import org.fresa.job.xml.GradingType;
 import org.fresa.job.xml.JobType;
@@ -44,6 +42,13 @@ import org.fresa.job.xml.StepNcType;
 import org.fresa.model.CamInputException;
 import org.fresa.model.FileChecks;
 import org.fresa.model.Placement;
+import org.fresa.setting.SettingChoice;
+import org.fresa.setting.SettingRange;
+import org.fresa.setting.SettingRanges;
+import org.fresa.setting.SettingRanges.Cutting;
+import org.fresa.setting.SettingRanges.Grading;
+import org.fresa.setting.SettingRanges.Pocket;
+import org.fresa.setting.SettingRanges.Sole;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -104,61 +109,18 @@ public final class JobXml {
         } catch (SettingRange.OutOfRange e) {
             throw new CamInputException(
                     name,
-                    lineOf(file, e.range().attribute(), e.value()),
+                    XmlLines.lineOf(file, e.range().attribute(), e.value()),
                     0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
         } catch (SettingChoice.Unknown e) {
-            throw new CamInputException(name, lineOf(file, e.choice().attribute(), e.text()), 0, e.getMessage());
+            throw new CamInputException(
+                    name, XmlLines.lineOf(file, e.choice().attribute(), e.text()), 0, e.getMessage());
         } catch (BadEntry e) {
-            int line = e.attribute == null ? 0 : lineOf(file, e.attribute, e.word);
+            int line = e.attribute == null ? 0 : XmlLines.lineOf(file, e.attribute, e.word);
             throw line > 0
                     ? new CamInputException(name, line, 0, e.getMessage())
                     : new CamInputException(name, e.getMessage());
         }
-    }
-
-    /** The line where an attribute has the word (or a list with it), or 0 when it cannot be found. */
-    static int lineOf(Path file, String attribute, String word) {
-        java.util.regex.Pattern p = java.util.regex.Pattern.compile("\\b" + attribute + "\\s*=\\s*([\"'])(.*?)\\1");
-        try {
-            List<String> lines = Files.readAllLines(file, java.nio.charset.StandardCharsets.UTF_8);
-            for (int i = 0; i < lines.size(); i++) {
-                java.util.regex.Matcher m = p.matcher(lines.get(i));
-                while (m.find()) {
-                    // the word alone, or one item of a comma list
-                    if (Arrays.stream(m.group(2).split(","))
-                            .anyMatch(w -> w.trim().equals(word.trim()))) {
-                        return i + 1;
-                    }
-                }
-            }
-        } catch (IOException e) {
-            // the message goes without a line
-        }
-        return 0;
-    }
-
-    /** The line where an attribute has the value, or 0 when it cannot be found. */
-    static int lineOf(Path file, String attribute, double value) {
-        java.util.regex.Pattern p = java.util.regex.Pattern.compile("\\b" + attribute + "\\s*=\\s*([\"'])(.*?)\\1");
-        try {
-            List<String> lines = Files.readAllLines(file, java.nio.charset.StandardCharsets.UTF_8);
-            for (int i = 0; i < lines.size(); i++) {
-                java.util.regex.Matcher m = p.matcher(lines.get(i));
-                while (m.find()) {
-                    try {
-                        if (Double.compare(Double.parseDouble(m.group(2).trim()), value) == 0) {
-                            return i + 1;
-                        }
-                    } catch (NumberFormatException e) {
-                        // another attribute's text: look on
-                    }
-                }
-            }
-        } catch (IOException e) {
-            // the message goes without a line
-        }
-        return 0;
     }
 
     private static CamInputException fromUnmarshal(String name, UnmarshalException e) {

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.fresa.cutting.DrawingContours;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Intersections;
@@ -36,9 +37,11 @@ import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.StrategyPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.pocket.ZigzagPocket;
+import org.fresa.pocket.compat.PocketReport;
 import org.fresa.pocket.compat.Sinumerik7MPost;
 import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
+import org.fresa.post.PocketPost;
 
 /**
  * The pocket module's service, shared by {@code fresa pocket} and {@code fresa run}: reads the
@@ -267,7 +270,7 @@ public final class PocketService {
         if (report.isEmpty() || o.exitStatus() != 0) {
             return o;
         }
-        AtomicFiles.writeString(report.get(), PocketReport.of(s));
+        AtomicFiles.writeString(report.get(), PocketReport.of(technology(s)));
         Map<String, Object> summary = new LinkedHashMap<>(o.summary());
         summary.put("report", report.get().toString());
         List<Path> files = new ArrayList<>(o.files());

@@ -12,6 +12,9 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import org.fresa.cell.RobotFiles;
+import org.fresa.cell.RobotTools;
+import org.fresa.cell.TablePlacing;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
 import org.fresa.io.Timing;
@@ -22,6 +25,7 @@ import org.fresa.model.Toolpath;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.PlanningChoices;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**

@@ -14,6 +14,7 @@ import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.io.Json;
 import org.fresa.io.OutputFolder;
+import org.fresa.kin.ErrorStatistics;
 import org.fresa.kin.JointLimit;
 import org.fresa.kin.JointType;
 import org.fresa.kin.Orientation;

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Map;
 import org.fresa.chart.PlotScene;
 import org.fresa.chart.ToolpathChart;
+import org.fresa.cutting.DrawingContours;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Tolerance;

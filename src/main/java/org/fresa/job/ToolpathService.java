@@ -22,6 +22,7 @@ import org.fresa.post.NcPost;
 import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.toolpath.PlanningChoices;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 
 /**

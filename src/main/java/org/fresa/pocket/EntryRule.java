@@ -1,7 +1,7 @@
 package org.fresa.pocket;
 
 import java.util.List;
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * What the planner may do when the tool goes down into material at the start of a cut: the kind
@@ -37,22 +37,17 @@ public record EntryRule(Kind kind, double angleDeg, boolean centreCutting) {
 
         /** The name as written: {@code auto}, {@code helix}, {@code ramp}, {@code plunge}. */
         public String word() {
-            return name().toLowerCase(Locale.ROOT);
+            return EnumWords.of(this);
         }
 
         /** The kind of a name as written, or empty. */
         public static java.util.Optional<Kind> of(String word) {
-            for (Kind k : values()) {
-                if (k.word().equals(word)) {
-                    return java.util.Optional.of(k);
-                }
-            }
-            return java.util.Optional.empty();
+            return EnumWords.parse(Kind.class, Kind::word, word);
         }
 
         /** The names, the default first. */
         public static List<String> words() {
-            return java.util.Arrays.stream(values()).map(Kind::word).toList();
+            return EnumWords.all(Kind.class, Kind::word);
         }
 
         @Override

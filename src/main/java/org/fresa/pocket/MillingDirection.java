@@ -1,6 +1,6 @@
 package org.fresa.pocket;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * Which way the cutter goes round the walls: {@link #CLIMB} (the default: counter-clockwise with
@@ -12,7 +12,7 @@ public enum MillingDirection {
 
     /** The name as written: {@code climb}, {@code conventional}. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     /** Whether the passes are climb-milled. */

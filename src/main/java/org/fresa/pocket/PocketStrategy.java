@@ -1,8 +1,7 @@
 package org.fresa.pocket;
 
-import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
+import org.fresa.model.EnumWords;
 
 /**
  * How a pocket's floor is cleared before the finishing contour: by passes parallel to the walls
@@ -38,17 +37,7 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
 
         /** The name as written: {@code inside-out}, {@code outside-in}. */
         public String word() {
-            return name().toLowerCase(Locale.ROOT).replace('_', '-');
-        }
-
-        /** The order of a name as written, or empty. */
-        public static java.util.Optional<Order> of(String word) {
-            for (Order o : values()) {
-                if (o.word().equals(word)) {
-                    return java.util.Optional.of(o);
-                }
-            }
-            return java.util.Optional.empty();
+            return EnumWords.of(this);
         }
 
         @Override
@@ -71,22 +60,7 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
 
         /** The name as written: {@code offset}, {@code zigzag}. */
         public String word() {
-            return name().toLowerCase(Locale.ROOT);
-        }
-
-        /** The kind of a name as written, or empty. */
-        public static java.util.Optional<Kind> of(String word) {
-            for (Kind k : values()) {
-                if (k.word().equals(word)) {
-                    return java.util.Optional.of(k);
-                }
-            }
-            return java.util.Optional.empty();
-        }
-
-        /** The names, the default first. */
-        public static List<String> words() {
-            return java.util.Arrays.stream(values()).map(Kind::word).toList();
+            return EnumWords.of(this);
         }
 
         @Override

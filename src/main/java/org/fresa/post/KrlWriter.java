@@ -52,21 +52,8 @@ public final class KrlWriter implements RobotProgramWriter {
         for (RobotProgram.ToolFrame t : p.tools()) {
             Vec3 at = t.tcp().translationPart();
             Vec3 abc = t.tcp().zyxAnglesDeg();
-            sb.append("TOOL_DATA[")
-                    .append(t.number())
-                    .append("] = {X ")
-                    .append(f(at.x(), 3))
-                    .append(",Y ")
-                    .append(f(at.y(), 3))
-                    .append(",Z ")
-                    .append(f(at.z(), 3))
-                    .append(",A ")
-                    .append(f(abc.x(), 6))
-                    .append(",B ")
-                    .append(f(abc.y(), 6))
-                    .append(",C ")
-                    .append(f(abc.z(), 6))
-                    .append("}\n");
+            sb.append("TOOL_DATA[").append(t.number()).append("] = {");
+            frame(sb, at, abc).append("}\n");
         }
         int tool = -1;
         double apo = 0;
@@ -110,18 +97,8 @@ public final class KrlWriter implements RobotProgramWriter {
                 }
                 Vec3 pos = m.target().translationPart();
                 Vec3 abc = m.target().zyxAnglesDeg();
-                sb.append("LIN {E6POS: X ")
-                        .append(f(pos.x(), 3))
-                        .append(",Y ")
-                        .append(f(pos.y(), 3))
-                        .append(",Z ")
-                        .append(f(pos.z(), 3))
-                        .append(",A ")
-                        .append(f(abc.x(), 6))
-                        .append(",B ")
-                        .append(f(abc.y(), 6))
-                        .append(",C ")
-                        .append(f(abc.z(), 6))
+                sb.append("LIN {E6POS: ");
+                frame(sb, pos, abc)
                         .append(",S 'B")
                         .append(bits(status(m), 3))
                         .append("',T 'B")
@@ -130,11 +107,7 @@ public final class KrlWriter implements RobotProgramWriter {
                 if (m.zoneMm() > 0) {
                     sb.append(" C_DIS");
                 }
-                sb.append(" ; j=[");
-                for (int i = 0; i < m.jointValues().size(); i++) {
-                    sb.append(i > 0 ? "," : "").append(f(m.joint(i), 6));
-                }
-                sb.append(']');
+                RobotProgramWriter.appendJoints(sb, " ;", m, m.jointValues().size());
             }
             sb.append(" ; ").append(m.index()).append('\n');
             if (m.dwellS() > 0) {
@@ -202,6 +175,22 @@ public final class KrlWriter implements RobotProgramWriter {
             }
         }
         return t;
+    }
+
+    /** A frame as KRL writes it: {@code X x,Y y,Z z,A a,B b,C c}, mm and the ZYX angles in deg. */
+    private static StringBuilder frame(StringBuilder sb, Vec3 at, Vec3 abc) {
+        return sb.append("X ")
+                .append(f(at.x(), 3))
+                .append(",Y ")
+                .append(f(at.y(), 3))
+                .append(",Z ")
+                .append(f(at.z(), 3))
+                .append(",A ")
+                .append(f(abc.x(), 6))
+                .append(",B ")
+                .append(f(abc.y(), 6))
+                .append(",C ")
+                .append(f(abc.z(), 6));
     }
 
     static String bits(int value, int width) {

@@ -65,23 +65,8 @@ public final class RapidWriter implements RobotProgramWriter {
         for (RobotProgram.ToolFrame t : p.tools()) {
             Vec3 at = t.tcp().translationPart();
             Quaternion q = Quaternion.of(t.tcp());
-            sb.append("  PERS tooldata ")
-                    .append(toolName(t))
-                    .append(" := [TRUE,[[")
-                    .append(f(at.x(), 3))
-                    .append(',')
-                    .append(f(at.y(), 3))
-                    .append(',')
-                    .append(f(at.z(), 3))
-                    .append("],[")
-                    .append(f(q.w(), 8))
-                    .append(',')
-                    .append(f(q.x(), 8))
-                    .append(',')
-                    .append(f(q.y(), 8))
-                    .append(',')
-                    .append(f(q.z(), 8))
-                    .append("]],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+            sb.append("  PERS tooldata ").append(toolName(t)).append(" := [TRUE,[");
+            pose(sb, at, q).append("],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
         }
         sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
         sb.append("  ! the joints and poses are in the robot base frame (wFresa is the identity); each tooldata\n");
@@ -121,21 +106,9 @@ public final class RapidWriter implements RobotProgramWriter {
             } else {
                 Vec3 pos = m.target().translationPart();
                 Quaternion q = Quaternion.of(m.target());
-                sb.append("    MoveL [[")
-                        .append(f(pos.x(), 3))
-                        .append(',')
-                        .append(f(pos.y(), 3))
-                        .append(',')
-                        .append(f(pos.z(), 3))
-                        .append("],[")
-                        .append(f(q.w(), 8))
-                        .append(',')
-                        .append(f(q.x(), 8))
-                        .append(',')
-                        .append(f(q.y(), 8))
-                        .append(',')
-                        .append(f(q.z(), 8))
-                        .append("],[")
+                sb.append("    MoveL [");
+                pose(sb, pos, q)
+                        .append(",[")
                         .append(confdata(m, arm))
                         .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],")
                         .append(speed)
@@ -145,11 +118,7 @@ public final class RapidWriter implements RobotProgramWriter {
                         .append(toolName(p.toolOf(m.workingstep())))
                         .append("\\WObj:=wFresa;");
                 // the joints the trajectory found for this robtarget, so a reader can check them
-                sb.append(" ! j=[");
-                for (int i = 0; i < 6; i++) {
-                    sb.append(i > 0 ? "," : "").append(f(m.joint(i), 6));
-                }
-                sb.append(']');
+                RobotProgramWriter.appendJoints(sb, " !", m, 6);
             }
             sb.append(" ! ").append(m.index()).append('\n');
             if (m.dwellS() > 0) {
@@ -251,6 +220,25 @@ public final class RapidWriter implements RobotProgramWriter {
         }
         return "[FALSE," + f(mm, 3) + "," + f(1.5 * mm, 3) + "," + f(1.5 * mm, 3) + ",0.15," + f(1.5 * mm, 3)
                 + ",0.15]";
+    }
+
+    /** A pose as RAPID writes it: {@code [x,y,z],[q1,q2,q3,q4]}, mm and the unit quaternion. */
+    private static StringBuilder pose(StringBuilder sb, Vec3 at, Quaternion q) {
+        return sb.append('[')
+                .append(f(at.x(), 3))
+                .append(',')
+                .append(f(at.y(), 3))
+                .append(',')
+                .append(f(at.z(), 3))
+                .append("],[")
+                .append(f(q.w(), 8))
+                .append(',')
+                .append(f(q.x(), 8))
+                .append(',')
+                .append(f(q.y(), 8))
+                .append(',')
+                .append(f(q.z(), 8))
+                .append(']');
     }
 
     static String f(double v, int decimals) {

@@ -22,4 +22,16 @@ public interface RobotProgramWriter {
         }
         return s.length() > maxLength ? s.substring(0, maxLength) : s;
     }
+
+    /**
+     * The joints the trajectory found for a target, after the language's comment marker
+     * ({@code j=[q1,...]}), so that a reader can check them against trajectory.csv.
+     */
+    static void appendJoints(StringBuilder sb, String commentMarker, RobotProgram.Motion m, int joints) {
+        sb.append(commentMarker).append(" j=[");
+        for (int i = 0; i < joints; i++) {
+            sb.append(i > 0 ? "," : "").append(RapidWriter.f(m.joint(i), 6));
+        }
+        sb.append(']');
+    }
 }

@@ -1,6 +1,6 @@
 package org.fresa.robot;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * The files a robot run may write besides the trajectory: {@code csv} (trajectory.csv),
@@ -16,7 +16,7 @@ public enum RobotFormat {
 
     /** The name as the command line and job files write it. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     @Override

@@ -1,6 +1,6 @@
 package org.fresa.sole;
 
-import java.util.Locale;
+import org.fresa.model.EnumWords;
 
 /**
  * How a tread design repeats its figures (the job's {@code pattern}): once, along a line, on a
@@ -16,7 +16,7 @@ public enum PatternKind {
 
     /** The name as written: {@code single}, {@code linear}, ... */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     @Override

@@ -1,7 +1,7 @@
 package org.fresa.toolpath;
 
-import java.util.Locale;
 import java.util.Optional;
+import org.fresa.model.EnumWords;
 
 /**
  * Whose conventions the STEP-NC toolpaths follow ({@code --paths}).
@@ -17,7 +17,7 @@ public enum PathConvention {
 
     /** The word of {@code --paths} and of the job's {@code paths} attribute. */
     public String word() {
-        return name().toLowerCase(Locale.ROOT);
+        return EnumWords.of(this);
     }
 
     /** The convention of a word ({@code fresa}, {@code thesis}), case ignored. */

@@ -27,9 +27,9 @@ import org.fresa.cutting.KerfCompensation;
 import org.fresa.cutting.LeadShape;
 import org.fresa.job.CuttingService;
 import org.fresa.job.JobSettings.CuttingSettings;
-import org.fresa.job.SettingRanges.Cutting;
 import org.fresa.model.CamInputException;
 import org.fresa.post.CuttingPost;
+import org.fresa.setting.SettingRanges.Cutting;
 
 /**
  * Sheet cutting: open a DXF, set kerf, process, leads, compensation and directions, cut, see the

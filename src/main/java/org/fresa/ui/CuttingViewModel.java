@@ -21,10 +21,10 @@ import org.fresa.geom.Vec2;
 import org.fresa.job.CuttingService;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.CuttingSettings;
-import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.post.CuttingPost;
+import org.fresa.setting.SettingRanges;
 
 /**
  * The Cutting tab's state without Swing: the drawing and the settings the planner types in, the

@@ -1,7 +1,7 @@
 package org.fresa.ui;
 
 import java.util.Optional;
-import org.fresa.job.SettingRange;
+import org.fresa.setting.SettingRange;
 
 /**
  * What is wrong with a number typed into a field, in the planner's words: the field's label, then

@@ -22,10 +22,10 @@ import org.fresa.job.Job;
 import org.fresa.job.JobSettings;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.job.ProgressMonitor;
-import org.fresa.job.SettingRanges;
 import org.fresa.job.TaskOutcome;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
+import org.fresa.setting.SettingRanges;
 
 /**
  * The Grading tab's state without Swing: the base outline, the grading options as the planner

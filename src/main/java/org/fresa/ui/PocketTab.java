@@ -19,8 +19,8 @@ import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.post.PocketPost;
 
 /**
  * The Pocket tab: contour file, technology, the recognition tree, the toolpath plot and the NC

@@ -16,21 +16,23 @@ import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.job.PocketService;
-import org.fresa.job.SettingRange;
-import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.Toolpath;
+import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.LoopState;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketElement;
 import org.fresa.pocket.PocketPlan;
+import org.fresa.pocket.PocketStrategy;
 import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.RecognitionNode;
 import org.fresa.pocket.RegionPocket;
 import org.fresa.pocket.ToolTooLargeException;
+import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRange;
+import org.fresa.setting.SettingRanges.Pocket;
 
 /**
  * The Pocket tab's state without Swing: the settings being edited and the last computed result
@@ -121,11 +123,11 @@ public final class PocketViewModel {
 
     public static final String STOCK_TO_LEAVE_LABEL = "Stock to leave (mm)";
     /** The strategies and orders the tab offers, as the job and the command line name them. */
-    public static final List<String> STRATEGIES = org.fresa.pocket.PocketStrategy.Kind.words();
+    public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
+            org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word);
 
-    public static final List<String> ORDERS = java.util.Arrays.stream(org.fresa.pocket.PocketStrategy.Order.values())
-            .map(org.fresa.pocket.PocketStrategy.Order::word)
-            .toList();
+    public static final List<String> ORDERS = org.fresa.model.EnumWords.all(
+            org.fresa.pocket.PocketStrategy.Order.class, org.fresa.pocket.PocketStrategy.Order::word);
     /** The kinds of entry the tab offers, as the job and the command line name them. */
     public static final List<String> ENTRIES = org.fresa.pocket.EntryRule.Kind.words();
     /** A new job's technology: the pocket module's defaults ({@link PocketSettings#DEFAULTS}); no contour. */
@@ -328,7 +330,7 @@ public final class PocketViewModel {
     }
 
     /** A typed number's problem against its range, as the other fields word it. */
-    private static Optional<String> numberProblem(String label, String text, org.fresa.job.SettingRange range) {
+    private static Optional<String> numberProblem(String label, String text, org.fresa.setting.SettingRange range) {
         try {
             double v = Double.parseDouble(text);
             return range.contains(v) ? Optional.empty() : Optional.of(label + ": " + range.problem(v) + ".");
@@ -392,9 +394,25 @@ public final class PocketViewModel {
             v[i] = Double.parseDouble(values[i]);
         }
         PocketSettings s = new PocketSettings(
-                        typedContourName(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], post, direction)
+                        typedContourName(),
+                        v[0],
+                        v[1],
+                        v[2],
+                        v[3],
+                        v[4],
+                        v[5],
+                        v[6],
+                        v[7],
+                        v[8],
+                        post,
+                        direction,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)
                 .withEntry(
-                        org.fresa.job.SettingRanges.Pocket.ENTRY.require(entry),
+                        org.fresa.setting.SettingRanges.Pocket.ENTRY.require(entry),
                         Double.parseDouble(entryAngle),
                         centreCutting)
                 .withStrategy(new org.fresa.pocket.PocketStrategy(

@@ -20,8 +20,8 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
+import org.fresa.cell.RobotFiles;
 import org.fresa.job.JobSettings;
-import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.model.CamInputException;
 
@@ -379,7 +379,7 @@ final class PositionTab implements ModuleTab {
                 stepnc.get().file(),
                 stepnc.get().choices(),
                 r.robot(),
-                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
                 vm.robotTablePlacement(),
                 vm.tablePiecePlacement(),
                 r.formats()));
@@ -622,7 +622,7 @@ final class PositionTab implements ModuleTab {
                             PositionViewModel.Planned planned = PositionViewModel.plan(
                                     file,
                                     r.robot(),
-                                    new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                    new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
                                     stepnc.get().choices(),
                                     progress);
                             RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
@@ -680,7 +680,7 @@ final class PositionTab implements ModuleTab {
                                 stepnc.get().choices(),
                                 r.robot(),
                                 r.tablePiece(),
-                                new org.fresa.job.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
                                 progress),
                         outcome -> {
                             if (generation != ctx.model().generation()) {

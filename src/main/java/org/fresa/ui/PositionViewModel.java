@@ -7,12 +7,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.fresa.cell.RobotFiles;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings;
 import org.fresa.job.ProgressMonitor;
-import org.fresa.job.RobotFiles;
 import org.fresa.job.RobotTrajectoryService;
 import org.fresa.kin.Robot;
 import org.fresa.kin.SerialRobot;
@@ -172,7 +172,7 @@ final class PositionViewModel {
             ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
         return compute(
-                stepnc, robotName, robotTable, tablePiece, formats, org.fresa.job.RobotTools.Choice.NONE, progress);
+                stepnc, robotName, robotTable, tablePiece, formats, org.fresa.cell.RobotTools.Choice.NONE, progress);
     }
 
     /** As above, with the job's spindle and tool length: each workingstep's TCP as {@code fresa robot} makes it. */
@@ -182,7 +182,7 @@ final class PositionViewModel {
             Placement robotTable,
             Placement tablePiece,
             List<String> formats,
-            org.fresa.job.RobotTools.Choice tool,
+            org.fresa.cell.RobotTools.Choice tool,
             ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
         return compute(
@@ -203,7 +203,7 @@ final class PositionViewModel {
             Placement robotTable,
             Placement tablePiece,
             List<String> formats,
-            org.fresa.job.RobotTools.Choice tool,
+            org.fresa.cell.RobotTools.Choice tool,
             org.fresa.toolpath.PlanningChoices choices,
             ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
@@ -249,7 +249,7 @@ final class PositionViewModel {
     static Planned plan(
             Path stepnc,
             String robotName,
-            org.fresa.job.RobotTools.Choice tool,
+            org.fresa.cell.RobotTools.Choice tool,
             org.fresa.toolpath.PlanningChoices choices,
             ProgressMonitor progress)
             throws CamInputException, java.io.IOException {
@@ -258,8 +258,8 @@ final class PositionViewModel {
                 org.fresa.job.ToolpathService.compute(stepnc, choices, progress);
         var program = planned.program();
         ToolpathPlanner.Plan plan = planned.plan();
-        org.fresa.job.RobotTools.Frames tools =
-                org.fresa.job.RobotTools.of(robot, tool, program, plan, stepnc.toString());
+        org.fresa.cell.RobotTools.Frames tools =
+                org.fresa.cell.RobotTools.of(robot, tool, program, plan, stepnc.toString());
         org.fresa.check.Limits limits = org.fresa.job.ProgramChecks.stepnc(program, plan, choices);
         RobotTrajectoryService.Request any = new RobotTrajectoryService.Request(
                 tools.toolpath(),
@@ -473,8 +473,8 @@ final class PositionViewModel {
     /** The error per axis rows of a result (any thread): {@link #errorRows()} of a model showing it. */
     static List<String[]> errorRowsOf(TrajectorySolver.Result result) {
         List<String[]> rows = new ArrayList<>();
-        for (org.fresa.job.ErrorStatistics.Axis a :
-                org.fresa.job.ErrorStatistics.of(result).axes()) {
+        for (org.fresa.kin.ErrorStatistics.Axis a :
+                org.fresa.kin.ErrorStatistics.of(result).axes()) {
             rows.add(new String[] {
                 a.axis() + " (" + a.unit() + ")",
                 String.format(Locale.ROOT, "%.3g", a.mean()),

@@ -13,12 +13,12 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.fresa.cell.RobotFiles;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings;
-import org.fresa.job.RobotFiles;
 import org.fresa.kin.DenavitHartenbergChain;
 import org.fresa.kin.DhExpression;
 import org.fresa.kin.DhJoint;
@@ -687,7 +687,7 @@ final class RobotViewModel {
             return Optional.empty();
         }
         try {
-            org.fresa.job.SettingRanges.Robot.parseSpindle(spindleText);
+            org.fresa.setting.SettingRanges.Robot.parseSpindle(spindleText);
             return Optional.empty();
         } catch (CamInputException e) {
             return Optional.of("Spindle: " + e.problem());
@@ -705,7 +705,7 @@ final class RobotViewModel {
         } catch (NumberFormatException e) {
             return Optional.of("Tool length: '" + toolLengthText + "' is not a number (mm)");
         }
-        org.fresa.job.SettingRange r = org.fresa.job.SettingRanges.Robot.TOOL_LENGTH;
+        org.fresa.setting.SettingRange r = org.fresa.setting.SettingRanges.Robot.TOOL_LENGTH;
         return r.contains(v) ? Optional.empty() : Optional.of("Tool length: " + r.problem(v));
     }
 
@@ -714,7 +714,7 @@ final class RobotViewModel {
             return Optional.empty();
         }
         try {
-            return Optional.of(org.fresa.job.SettingRanges.Robot.parseSpindle(text));
+            return Optional.of(org.fresa.setting.SettingRanges.Robot.parseSpindle(text));
         } catch (CamInputException e) {
             return Optional.empty();
         }

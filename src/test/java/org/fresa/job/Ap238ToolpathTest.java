@@ -20,6 +20,7 @@ import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.CorpusCheck;
 import org.fresa.testing.InterpreterCheck;
 import org.fresa.testing.TestInputs;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -252,7 +252,7 @@ class CuttingAcceptanceTest {
                 0.001,
                 org.fresa.dxf.DrawingUnits.AUTO,
                 false,
-                org.fresa.job.SettingRanges.Cutting.POST.require(post));
+                org.fresa.setting.SettingRanges.Cutting.POST.require(post));
         CuttingService.Result r = CuttingService.compute(s, ProgressMonitor.NONE);
         assertEquals(10, r.plan().cuts().size());
         // iso dwells are G04 X seconds (Fanuc-like controls); LinuxCNC's word for the same is P,

@@ -15,6 +15,7 @@ import org.fresa.geom.Vec2;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.GradingSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.setting.SettingRanges;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

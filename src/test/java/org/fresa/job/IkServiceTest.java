@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
+import org.fresa.cell.RobotTools;
 import org.fresa.geom.Transform3;
 import org.fresa.io.OutputFolder;
 import org.fresa.kin.IkOptions;

@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cell.TablePlacing;
 import org.fresa.geom.Vec2;
 import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.job.JobSettings.GradingSettings;
@@ -19,6 +20,9 @@ import org.fresa.job.JobSettings.RobotSettings;
 import org.fresa.job.JobSettings.StepNcSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.PocketStrategy;
+import org.fresa.post.PocketPost;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -49,7 +53,12 @@ class JobXmlTest {
                         290,
                         100,
                         PocketPost.SINUMERIK_7M,
-                        org.fresa.pocket.MillingDirection.CONVENTIONAL))
+                        org.fresa.pocket.MillingDirection.CONVENTIONAL,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))
                 .withCutting(new CuttingSettings(
                         dir.resolve("sheet.dxf"),
                         2,
@@ -237,7 +246,9 @@ class JobXmlTest {
                         d.direction(),
                         d.entry(),
                         d.entryAngleDeg(),
-                        d.centreCutting()),
+                        d.centreCutting(),
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT),
                 JobXml.read(file).pocket().orElseThrow());
     }
 

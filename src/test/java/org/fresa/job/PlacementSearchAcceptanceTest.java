@@ -7,6 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.fresa.cell.RobotTools;
+import org.fresa.cell.TablePlacing;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
 import org.junit.jupiter.api.Test;

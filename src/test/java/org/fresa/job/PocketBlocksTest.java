@@ -8,9 +8,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
+import org.fresa.setting.SettingRanges;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -47,7 +52,13 @@ class PocketBlocksTest {
                 3000,
                 300,
                 100,
-                SettingRanges.Pocket.POST.require(post));
+                SettingRanges.Pocket.POST.require(post),
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
     }
 
     /** What is wrong with the program's blocks, empty when nothing. */

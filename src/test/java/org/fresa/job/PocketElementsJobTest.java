@@ -9,11 +9,16 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.DadContour;
 import org.fresa.pocket.DadReader;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
+import org.fresa.post.PocketPost;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -28,7 +33,24 @@ class PocketElementsJobTest {
     }
 
     private static PocketSettings cavity05(Path contour) {
-        return new PocketSettings(contour, 4, 0.65, 0.1, 0, -3, 3, 3000, 300, 100, PocketPost.LINUXCNC);
+        return new PocketSettings(
+                contour,
+                4,
+                0.65,
+                0.1,
+                0,
+                -3,
+                3,
+                3000,
+                300,
+                100,
+                PocketPost.LINUXCNC,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
     }
 
     @Test

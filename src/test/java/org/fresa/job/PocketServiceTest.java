@@ -10,10 +10,15 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
+import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRanges;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -41,7 +46,13 @@ class PocketServiceTest {
                         v[6],
                         v[7],
                         v[8],
-                        SettingRanges.Pocket.POST.require(post));
+                        SettingRanges.Pocket.POST.require(post),
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT);
             }
         }
         throw new IllegalArgumentException(name);
@@ -97,7 +108,24 @@ class PocketServiceTest {
     void aBadRecordWritesNothing(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.dad");
         Files.writeString(bad, " 1R                   1.2.3\r\n");
-        PocketSettings s = new PocketSettings(bad, 6, 0.6, 0.1, 0, -3, 3, 3000, 300, 100, PocketPost.SINUMERIK_7M);
+        PocketSettings s = new PocketSettings(
+                bad,
+                6,
+                0.6,
+                0.1,
+                0,
+                -3,
+                3,
+                3000,
+                300,
+                100,
+                PocketPost.SINUMERIK_7M,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
         CamInputException e = assertThrows(
                 CamInputException.class, () -> PocketService.run(s, dir.resolve("x.nc"), ProgressMonitor.NONE));
         assertEquals(1, e.line().orElseThrow());
@@ -258,7 +286,12 @@ class PocketServiceTest {
                         s.feedMmPerMin(),
                         s.finishFeedMmPerMin(),
                         PocketPost.LINUXCNC,
-                        MillingDirection.CONVENTIONAL));
+                        MillingDirection.CONVENTIONAL,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT));
         Path file = dir.resolve("job.xml");
         JobXml.write(job, file);
         assertTrue(Files.readString(file).contains("direction=\"conventional\""));
@@ -282,7 +315,23 @@ class PocketServiceTest {
 
     static PocketSettings islandSettings(Path contour, String post) {
         return new PocketSettings(
-                contour, 6, 0.7, 0.1, 0, -6, 3, 3000, 300, 100, SettingRanges.Pocket.POST.require(post));
+                contour,
+                6,
+                0.7,
+                0.1,
+                0,
+                -6,
+                3,
+                3000,
+                300,
+                100,
+                SettingRanges.Pocket.POST.require(post),
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
     }
 
     @Test

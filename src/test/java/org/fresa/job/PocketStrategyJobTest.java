@@ -7,10 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
+import org.fresa.post.PocketPost;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -25,7 +29,25 @@ class PocketStrategyJobTest {
     Path dir;
 
     private static PocketSettings settings(Path contour, PocketStrategy st) {
-        return new PocketSettings(contour, 6, 0.6, 0.1, 0, -4, 2, 3000, 300, 100, PocketPost.LINUXCNC).withStrategy(st);
+        return new PocketSettings(
+                        contour,
+                        6,
+                        0.6,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)
+                .withStrategy(st);
     }
 
     @Test

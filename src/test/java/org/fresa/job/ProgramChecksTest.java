@@ -7,10 +7,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import org.fresa.check.ProgramCheck;
 import org.fresa.io.AtomicFiles;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
+import org.fresa.setting.SettingRanges;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -40,7 +45,13 @@ class ProgramChecksTest {
                         Double.parseDouble(f[7]),
                         Double.parseDouble(f[8]),
                         Double.parseDouble(f[9]),
-                        SettingRanges.Pocket.POST.require(post));
+                        SettingRanges.Pocket.POST.require(post),
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT);
                 Path out = dir.resolve(f[0] + "-" + post + ".nc");
                 TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
                 assertEquals(0, o.exitStatus(), f[0] + " " + post + ": " + o.problems());

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.fresa.cell.RobotTools;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
 import org.junit.jupiter.api.Test;

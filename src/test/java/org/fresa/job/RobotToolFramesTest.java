@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import org.fresa.cell.RobotTools;
 import org.fresa.io.OutputFolder;
 import org.fresa.model.Placement;
 import org.fresa.robot.RobotProgramXml;

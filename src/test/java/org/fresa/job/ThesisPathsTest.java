@@ -17,6 +17,7 @@ import org.fresa.post.NcPosts;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.toolpath.PathConvention;
 import org.fresa.toolpath.PlanningChoices;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 

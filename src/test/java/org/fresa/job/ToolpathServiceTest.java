@@ -27,6 +27,7 @@ import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
 import org.fresa.toolpath.Profile;
 import org.fresa.toolpath.Swept;
+import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -10,13 +10,16 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import org.fresa.geom.Transform3;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.NcPostsTest;
 import org.fresa.post.Rs274;
+import org.fresa.setting.SettingRanges;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -46,7 +49,13 @@ class ZigzagServiceTest {
                         3000,
                         300,
                         100,
-                        SettingRanges.Pocket.POST.require(post));
+                        SettingRanges.Pocket.POST.require(post),
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT);
         return s.withStrategy(new PocketStrategy(PocketStrategy.Kind.ZIGZAG, angleDeg));
     }
 

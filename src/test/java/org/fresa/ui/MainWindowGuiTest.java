@@ -13,6 +13,9 @@ import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobTask;
 import org.fresa.job.JobXml;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
 /** The main window under a real (virtual) display: CI runs it under Xvfb, a headless run skips it. */
@@ -53,7 +56,13 @@ class MainWindowGuiTest extends WindowGuiTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC));
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT));
         GuiActionRunner.execute(() -> model.setJob(job));
 
         window.menuItemWithPath("File", "Save as...").click();

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.assertj.swing.timing.Condition;
 import org.assertj.swing.timing.Pause;
@@ -14,6 +15,8 @@ import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobTask;
 import org.fresa.job.PocketService;
 import org.fresa.job.ProgressMonitor;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
@@ -52,7 +55,13 @@ class PocketStrategyGuiTest extends WindowGuiTest {
                         3000,
                         300,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC))));
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
         // every strategy field has a label that names it and takes the keyboard there

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 import javax.swing.text.Highlighter;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.assertj.swing.timing.Condition;
@@ -14,6 +15,9 @@ import org.assertj.swing.timing.Timeout;
 import org.fresa.job.Job;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobTask;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -72,7 +76,13 @@ class PocketTabGuiTest extends WindowGuiTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT))));
+                        org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.ENTRY).requireSelection("auto");
         window.textBox(PocketViewModel.ENTRY_ANGLE).requireText("3");
@@ -151,7 +161,7 @@ class PocketTabGuiTest extends WindowGuiTest {
         assertTrue(
                 job.centreCutting()
                         && job.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE
-                        && job.post() == org.fresa.job.PocketPost.LINUXCNC,
+                        && job.post() == org.fresa.post.PocketPost.LINUXCNC,
                 job.toString());
         Path saved = dir.resolve("cavity01.ngc");
         window.button("pocket-save-program").click();

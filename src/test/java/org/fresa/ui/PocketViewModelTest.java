@@ -4,8 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.Optional;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
 class PocketViewModelTest {
@@ -24,7 +28,13 @@ class PocketViewModelTest {
                 2750,
                 280,
                 90,
-                org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT));
+                org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow();
         assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
@@ -49,7 +59,13 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.SINUMERIK_7M));
+                org.fresa.post.PocketPost.SINUMERIK_7M,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT));
         m.compute();
         assertTrue(m.result().isEmpty());
         assertTrue(m.error().isPresent());
@@ -69,7 +85,13 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.LINUXCNC));
+                org.fresa.post.PocketPost.LINUXCNC,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
         assertTrue(r.report().startsWith("2 island(s)"), r.report());
@@ -93,7 +115,13 @@ class PocketViewModelTest {
                 3000,
                 300,
                 100,
-                org.fresa.job.PocketPost.LINUXCNC);
+                org.fresa.post.PocketPost.LINUXCNC,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                PocketStrategy.DEFAULT);
         m.setSettings(climb);
         m.compute();
         String a = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
@@ -126,7 +154,13 @@ class PocketViewModelTest {
                                 3200,
                                 290,
                                 100,
-                                org.fresa.job.PocketPost.LINUXCNC)
+                                org.fresa.post.PocketPost.LINUXCNC,
+                                MillingDirection.CLIMB,
+                                EntryRule.Kind.AUTO,
+                                EntryRule.DEFAULT_ANGLE_DEG,
+                                false,
+                                Optional.empty(),
+                                PocketStrategy.DEFAULT)
                         .withEntry(org.fresa.pocket.EntryRule.Kind.RAMP, 2.5, true)));
         assertEquals("ramp", m.entry());
         assertEquals("2.5", m.entryAngle());
@@ -160,7 +194,13 @@ class PocketViewModelTest {
                         3200,
                         290,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC)
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)
                 .withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, 3, false);
         m.setSettings(plunge);
         m.compute();
@@ -190,7 +230,13 @@ class PocketViewModelTest {
                         3000,
                         300,
                         100,
-                        org.fresa.job.PocketPost.LINUXCNC)));
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)));
         m.setStrategy("zigzag");
         m.setAngle("200");
         assertEquals(

@@ -5,11 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.Optional;
 import javax.swing.JTextArea;
 import javax.swing.text.Highlighter;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.fresa.chart.PlotScene;
 import org.fresa.job.JobSettings.PocketSettings;
+import org.fresa.pocket.EntryRule;
+import org.fresa.pocket.MillingDirection;
+import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
 /** The Pocket and Output tabs' side of the program check: the failing block found and marked. */
@@ -26,7 +30,13 @@ class ProgramRefusalViewTest {
             2750,
             280,
             90,
-            org.fresa.job.PocketPost.SINUMERIK_7M_COMPAT);
+            org.fresa.post.PocketPost.SINUMERIK_7M_COMPAT,
+            MillingDirection.CLIMB,
+            EntryRule.Kind.AUTO,
+            EntryRule.DEFAULT_ANGLE_DEG,
+            false,
+            Optional.empty(),
+            PocketStrategy.DEFAULT);
 
     @Test
     void theThesisProgramOfCavity03PassesTheCheck() {

@@ -118,7 +118,7 @@ class RobotTabsGuiTest extends WindowGuiTest {
                 Timeout.timeout(10_000));
         String robotFile =
                 GuiActionRunner.execute(() -> model.job().robot().orElseThrow().robot());
-        org.fresa.kin.SerialRobot edited = (org.fresa.kin.SerialRobot) org.fresa.job.RobotFiles.load(robotFile);
+        org.fresa.kin.SerialRobot edited = (org.fresa.kin.SerialRobot) org.fresa.cell.RobotFiles.load(robotFile);
         assertEquals(10, edited.chain().joints().get(5).thetaDeg());
         assertEquals("irb140-edited", edited.name());
         Pause.pause(

@@ -9,11 +9,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.fresa.cell.RobotFiles;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Transform3;
 import org.fresa.job.Job;
 import org.fresa.job.JobTask;
-import org.fresa.job.RobotFiles;
 import org.fresa.kin.Robot;
 import org.fresa.kin.Robots;
 import org.fresa.kin.SerialRobot;

@@ -1,7 +1,7 @@
 package org.fresa.app.cli;
 
-import org.fresa.job.SettingRanges;
 import org.fresa.model.Placement;
+import org.fresa.setting.SettingRanges;
 
 /** The placements of the robot command's options, read from their comma-separated numbers. */
 final class PlacementOptions {

@@ -1,14 +1,15 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
-import org.fresa.job.PocketPost;
 import org.fresa.job.PocketService;
-import org.fresa.job.SettingRanges.Pocket;
 import org.fresa.pocket.EntryRule;
 import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
+import org.fresa.post.PocketPost;
+import org.fresa.setting.SettingRanges.Pocket;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -160,7 +161,9 @@ final class PocketCommand implements Callable<Integer> {
                             direction,
                             entry,
                             Pocket.ENTRY_ANGLE.check(entryAngleDeg),
-                            centreCutting)
+                            centreCutting,
+                            Optional.empty(),
+                            PocketStrategy.DEFAULT)
                     .withStrategy(new PocketStrategy(
                             strategy,
                             Pocket.ANGLE.check(angleDeg),
@@ -169,7 +172,7 @@ final class PocketCommand implements Callable<Integer> {
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {
-                thesisFile = org.fresa.job.PocketReport.thesisFileName(thesisName);
+                thesisFile = org.fresa.pocket.compat.PocketReport.thesisFileName(thesisName);
                 java.nio.file.Path folder = file.toAbsolutePath().getParent();
                 file = CliSupport.outFile(folder.resolve(thesisFile));
             }

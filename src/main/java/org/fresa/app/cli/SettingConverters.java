@@ -1,8 +1,8 @@
 package org.fresa.app.cli;
 
 import java.util.List;
-import org.fresa.job.SettingChoice;
-import org.fresa.job.SettingRanges;
+import org.fresa.setting.SettingChoice;
+import org.fresa.setting.SettingRanges;
 import picocli.CommandLine;
 
 /**

@@ -1,9 +1,9 @@
 package org.fresa.app.cli;
 
 import org.fresa.job.JobSettings.StepNcSettings;
-import org.fresa.job.SettingRanges;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.EntryRule;
+import org.fresa.setting.SettingRanges;
 import picocli.CommandLine.Option;
 
 /**

@@ -1,7 +1,8 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import java.util.Locale;
 import org.fresa.model.CamInputException;
+import org.fresa.model.EnumWords;
 
 /**
  * Where the table of a robot cell comes from: the placement the planner typed, or the placement
@@ -10,19 +11,13 @@ import org.fresa.model.CamInputException;
  */
 public enum TablePlacing {
     /** The robot -> table placement as given. */
-    GIVEN("given"),
+    GIVEN,
     /** The robot -> table placement searched. */
-    AUTO("auto");
-
-    private final String id;
-
-    TablePlacing(String id) {
-        this.id = id;
-    }
+    AUTO;
 
     /** The name on the command line and in the job file. */
     public String id() {
-        return id;
+        return EnumWords.of(this);
     }
 
     /**
@@ -31,12 +26,7 @@ public enum TablePlacing {
      * @throws CamInputException naming the option for anything but {@code auto} or {@code given}
      */
     public static TablePlacing parse(String option, String text) throws CamInputException {
-        String t = text.trim().toLowerCase(Locale.ROOT);
-        for (TablePlacing p : values()) {
-            if (p.id.equals(t)) {
-                return p;
-            }
-        }
-        throw new CamInputException(option, "expected auto or given, got '" + text + "'");
+        return EnumWords.parse(TablePlacing.class, TablePlacing::id, text.trim().toLowerCase(Locale.ROOT))
+                .orElseThrow(() -> new CamInputException(option, "expected auto or given, got '" + text + "'"));
     }
 }

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.setting;
 
 import java.util.Arrays;
 import java.util.List;

@@ -1,14 +1,15 @@
-package org.fresa.job;
+package org.fresa.setting;
 
 import org.fresa.cutting.CuttingOptions;
 import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
+import org.fresa.post.PocketPost;
 import org.fresa.robot.RobotFormat;
 
 /**
  * The ranges of every numeric setting and the choices of every enumerated one
  * ({@link SettingChoice}), one holder per module: the commands check their options against them
- * before any work, {@link JobXml} checks the job file's attributes against the same ranges and
+ * before any work, {@link org.fresa.job.JobXml} checks the job file's attributes against the same ranges and
  * choices, so that a job file cannot bring a value the option refuses.
  *
  * <p>The bounds are what a workshop meets, with room to spare: a machine travels at most 10 m

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import jakarta.xml.bind.JAXBContext;
 import jakarta.xml.bind.JAXBElement;
@@ -16,17 +16,17 @@ import java.util.List;
 import java.util.Map;
 import javax.xml.parsers.ParserConfigurationException;
 import javax.xml.validation.Schema;
+import org.fresa.cell.robotxml.FrameType;
+import org.fresa.cell.robotxml.JointType;
+import org.fresa.cell.robotxml.LimitType;
+import org.fresa.cell.robotxml.ObjectFactory;
+import org.fresa.cell.robotxml.RobotType;
+import org.fresa.cell.robotxml.SerialType;
+import org.fresa.cell.robotxml.TriceptType;
 import org.fresa.geom.Transform3;
 import org.fresa.io.AtomicFiles;
 import org.fresa.io.SafeXml;
-import org.fresa.job.SettingRanges.RobotFile;
-import org.fresa.job.robotxml.FrameType;
-import org.fresa.job.robotxml.JointType;
-import org.fresa.job.robotxml.LimitType;
-import org.fresa.job.robotxml.ObjectFactory;
-import org.fresa.job.robotxml.RobotType;
-import org.fresa.job.robotxml.SerialType;
-import org.fresa.job.robotxml.TriceptType;
+import org.fresa.io.XmlLines;
 import org.fresa.kin.DenavitHartenbergChain;
 import org.fresa.kin.DhExpression;
 import org.fresa.kin.DhJoint;
@@ -38,6 +38,8 @@ import org.fresa.kin.TriceptRobot;
 import org.fresa.model.CamInputException;
 import org.fresa.model.ExactDecimal;
 import org.fresa.model.FileChecks;
+import org.fresa.setting.SettingRange;
+import org.fresa.setting.SettingRanges.RobotFile;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
 
@@ -103,7 +105,7 @@ public final class RobotFiles {
         } catch (SettingRange.OutOfRange e) {
             throw new CamInputException(
                     name,
-                    JobXml.lineOf(file, e.range().attribute(), e.value()),
+                    XmlLines.lineOf(file, e.range().attribute(), e.value()),
                     0,
                     e.range().attribute() + ": " + e.range().problem(e.value()));
         } catch (IllegalArgumentException e) {

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.kin;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -31,7 +31,7 @@ public final class ErrorStatistics {
     }
 
     /** The statistics of every point of a trajectory that reached its target. */
-    public static ErrorStatistics of(org.fresa.kin.TrajectorySolver.Result r) {
+    public static ErrorStatistics of(TrajectorySolver.Result r) {
         ErrorStatistics s = new ErrorStatistics();
         for (org.fresa.kin.TrajectoryPoint p : r.points()) {
             if (p.status() != org.fresa.kin.TrajectoryPoint.Status.UNREACHABLE
@@ -98,13 +98,13 @@ public final class ErrorStatistics {
     private double maxPosMm;
     private double maxRotRad;
 
-    ErrorStatistics() {
+    public ErrorStatistics() {
         java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
         java.util.Arrays.fill(max, Double.NEGATIVE_INFINITY);
     }
 
     /** Adds one reached pose. */
-    void add(Transform3 target, Transform3 reached) {
+    public void add(Transform3 target, Transform3 reached) {
         double[] e = new double[6];
         e[0] = target.tx() - reached.tx();
         e[1] = target.ty() - reached.ty();
@@ -131,12 +131,12 @@ public final class ErrorStatistics {
     }
 
     /** The largest |target - reached| (mm). */
-    double maxPosMm() {
+    public double maxPosMm() {
         return maxPosMm;
     }
 
     /** The largest orientation error angle (rad). */
-    double maxRotRad() {
+    public double maxRotRad() {
         return maxRotRad;
     }
 
@@ -144,7 +144,7 @@ public final class ErrorStatistics {
      * {@code error_per_axis}: for each of x_mm, y_mm, z_mm, rx_rad, ry_rad, rz_rad its mean, min
      * and max over the poses added (absent when there are none).
      */
-    Map<String, Object> summary() {
+    public Map<String, Object> summary() {
         Map<String, Object> axes = new LinkedHashMap<>();
         if (count > 0) {
             for (int i = 0; i < 6; i++) {

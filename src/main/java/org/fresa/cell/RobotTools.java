@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -9,6 +9,7 @@ import java.util.OptionalDouble;
 import org.fresa.geom.Transform3;
 import org.fresa.kin.Robot;
 import org.fresa.model.Placement;
+import org.fresa.setting.SettingRanges;
 import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.Tool;
@@ -63,7 +64,7 @@ public final class RobotTools {
             + " is taken as the flange plus the tool's length along the flange's z axis";
 
     /** The spindle in the flange frame, and the warning when there is none. */
-    static Transform3 spindle(Robot robot, Choice choice, List<String> warnings) {
+    public static Transform3 spindle(Robot robot, Choice choice, List<String> warnings) {
         if (choice.spindle().isPresent()) {
             return choice.spindle().get().toTransform();
         }

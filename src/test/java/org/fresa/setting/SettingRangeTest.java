@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.setting;
 
 import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;

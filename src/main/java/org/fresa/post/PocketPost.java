@@ -1,7 +1,6 @@
-package org.fresa.job;
+package org.fresa.post;
 
 import java.util.Optional;
-import org.fresa.post.MillingPost;
 
 /**
  * The posts the pocket module writes: the thesis's Sinumerik 7M dialect, as printed

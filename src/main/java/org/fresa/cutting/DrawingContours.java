@@ -1,11 +1,10 @@
-package org.fresa.job;
+package org.fresa.cutting;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import org.fresa.cutting.Chainer;
 import org.fresa.dxf.DxfReader;
 import org.fresa.geom.Contour;
 import org.fresa.model.CamInputException;
@@ -18,16 +17,17 @@ import org.fresa.model.CamInputException;
  * @param closed closed contours, largest area first
  * @param openChains how many chains did not close
  */
-record DrawingContours(List<Contour> closed, int openChains) {
+public record DrawingContours(List<Contour> closed, int openChains) {
 
     /** Chaining gap, mm: what CAD systems round coordinates to. */
-    static final double GAP_MM = 0.001;
+    public static final double GAP_MM = 0.001;
 
-    DrawingContours {
+    public DrawingContours {
         closed = List.copyOf(closed);
     }
 
-    static DrawingContours read(Path file) throws CamInputException, IOException {
+    /** Reads the drawing and chains its curves. */
+    public static DrawingContours read(Path file) throws CamInputException, IOException {
         Chainer.Chains chains = Chainer.chain(DxfReader.read(file).curves(), GAP_MM);
         List<Contour> closed = new ArrayList<>(chains.closed());
         closed.sort(Comparator.comparingDouble(Contour::area).reversed());

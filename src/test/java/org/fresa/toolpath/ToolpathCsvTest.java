@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.toolpath;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.toolpath;
 
 import java.io.BufferedReader;
 import java.io.IOException;

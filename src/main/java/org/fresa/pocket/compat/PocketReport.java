@@ -1,11 +1,11 @@
-package org.fresa.job;
+package org.fresa.pocket.compat;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.List;
 import java.util.regex.Pattern;
-import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
+import org.fresa.pocket.PocketTechnology;
 
 /**
  * The pocket thesis's technology printout and its output name ({@code GOTA.BAS} lines 3400-3470 and
@@ -33,10 +33,10 @@ public final class PocketReport {
 
     private PocketReport() {}
 
-    /** The printout of the settings' technology. */
-    public static String of(PocketSettings s) {
+    /** The printout of the technology. */
+    public static String of(PocketTechnology s) {
         double depth = s.zTopMm() - s.zBottomMm();
-        int passes = (int) Math.floor(depth / s.maxDepthPerPassMm() + .9999999);
+        int passes = (int) Math.floor(depth / s.maxDepthMm() + .9999999);
         if (passes == 0) {
             passes = 1;
         }
@@ -49,7 +49,7 @@ public final class PocketReport {
                 "",
                 zone(" PLANO (Z) DA SUPERFICIE = ") + basic(s.zTopMm()),
                 zone(" PLANO (Z) DA BASE      = ") + basic(s.zBottomMm()),
-                zone(" PASSE DE PROFUNDIDADE  = ") + basic(s.maxDepthPerPassMm()),
+                zone(" PASSE DE PROFUNDIDADE  = ") + basic(s.maxDepthMm()),
                 zone(" N DE PASSE DE PROFUND. = ") + basic(passes),
                 zone(" INCREMENTO NA PROFUNDID.= ") + basic(increment),
                 zone(" ROTACAO DA FRESA       = ") + basic(s.spindleRpm()),

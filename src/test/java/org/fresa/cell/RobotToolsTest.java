@@ -1,4 +1,4 @@
-package org.fresa.job;
+package org.fresa.cell;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
