@@ -74,7 +74,8 @@ public final class ToolpathService {
             Path file, MillingPost postName, PlanningChoices choices, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         NcPost post = postName.ncPost();
-        StepNcProgram program = StepNcService.read(file, progress);
+        // planning reads only the features of the instance table: the rest of a large file's can go
+        StepNcProgram program = StepNcService.read(file, progress).forPlanning();
         java.util.Optional<String> nothing = program.whyNothingToMachine();
         if (nothing.isPresent()) {
             return nothingToMachine(program, List.of(nothing.get()), out);
