@@ -104,6 +104,21 @@ public final class AtomicFiles {
      * target left as it was.
      */
     public static <E extends Exception> void write(Path target, Body body, Inspection<E> before) throws IOException, E {
+        try (Staged s = stage(target)) {
+            body.writeTo(s.out());
+            before.inspect(s.written());
+            s.commit();
+        }
+    }
+
+    /**
+     * Starts writing the target atomically, for a writer that fills several files at once: the
+     * content goes to a temporary file until {@link Staged#commit}; closing without committing
+     * removes it and leaves the target as it was.
+     *
+     * @throws IOException also when the target exists and is not a regular file (it is left as it is)
+     */
+    public static Staged stage(Path target) throws IOException {
         Path abs = target.toAbsolutePath();
         if (Files.exists(abs) && !Files.isRegularFile(abs)) {
             throw new IOException(abs + " is " + FileChecks.kind(abs) + ", not a regular file: not replaced");
@@ -122,12 +137,46 @@ public final class AtomicFiles {
             tmp = createTemporary(dir);
             IN_PROGRESS.add(tmp);
         }
-        boolean done = false;
         try {
-            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16)) {
-                body.writeTo(out);
+            return new Staged(abs, tmp, new BufferedOutputStream(Files.newOutputStream(tmp), 1 << 16));
+        } catch (IOException | RuntimeException e) {
+            IN_PROGRESS.remove(tmp);
+            Files.deleteIfExists(tmp);
+            throw e;
+        }
+    }
+
+    /** A file being written under a temporary name, renamed over its target only when committed. */
+    public static final class Staged implements AutoCloseable {
+        private final Path target;
+        private final Path tmp;
+        private final OutputStream out;
+        private boolean streamClosed;
+        private boolean done;
+
+        private Staged(Path target, Path tmp, OutputStream out) {
+            this.target = target;
+            this.tmp = tmp;
+            this.out = out;
+        }
+
+        /** Where the content goes (buffered). */
+        public OutputStream out() {
+            return out;
+        }
+
+        /** Ends the content and gives the temporary file, to be read before it is committed. */
+        public Path written() throws IOException {
+            if (!streamClosed) {
+                streamClosed = true;
+                out.close();
             }
-            before.inspect(tmp);
+            return tmp;
+        }
+
+        /** Ends the content and renames the temporary file over the target. */
+        public void commit() throws IOException {
+            written();
             // temporary files are created private (0600); the result is an ordinary file (0644)
             if (Files.getFileStore(tmp)
                     .supportsFileAttributeView(java.nio.file.attribute.PosixFileAttributeView.class)) {
@@ -135,14 +184,27 @@ public final class AtomicFiles {
                         tmp, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
             }
             try {
-                Files.move(tmp, abs, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
             done = true;
-        } finally {
             IN_PROGRESS.remove(tmp);
-            if (!done) {
+        }
+
+        /** Removes the temporary file unless it was committed. */
+        @Override
+        public void close() throws IOException {
+            if (done) {
+                return;
+            }
+            try {
+                if (!streamClosed) {
+                    streamClosed = true;
+                    out.close();
+                }
+            } finally {
+                IN_PROGRESS.remove(tmp);
                 Files.deleteIfExists(tmp);
             }
         }

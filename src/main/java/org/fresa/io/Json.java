@@ -13,17 +13,47 @@ import org.fresa.model.ExactDecimal;
 public final class Json {
     private Json() {}
 
+    /** Above this many characters the text built so far goes to the writer, when there is one. */
+    private static final int SPILL_CHARS = 1 << 16;
+
     public static String write(Object value) {
         StringBuilder sb = new StringBuilder();
-        append(sb, value, 0, false);
+        append(sb, value, 0, false, null);
         return sb.toString();
     }
 
     /** Indented, for files people read. */
     public static String writePretty(Object value) {
         StringBuilder sb = new StringBuilder();
-        append(sb, value, 0, true);
+        append(sb, value, 0, true, null);
         return sb.append('\n').toString();
+    }
+
+    /**
+     * {@link #writePretty(Object)} into a writer, a part at a time: the same text, without holding
+     * the whole of a large summary as one string.
+     */
+    public static void writePretty(Object value, java.io.Writer out) throws java.io.IOException {
+        StringBuilder sb = new StringBuilder();
+        try {
+            append(sb, value, 0, true, out);
+        } catch (java.io.UncheckedIOException e) {
+            throw e.getCause();
+        }
+        out.write(sb.append('\n').toString());
+        out.flush();
+    }
+
+    /** Passes what is built to the writer once it is long. */
+    private static void spill(StringBuilder sb, java.io.Writer out) {
+        if (out != null && sb.length() > SPILL_CHARS) {
+            try {
+                out.write(sb.toString());
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+            sb.setLength(0);
+        }
     }
 
     /**
@@ -39,7 +69,7 @@ public final class Json {
         return sorted;
     }
 
-    private static void append(StringBuilder sb, Object v, int indent, boolean pretty) {
+    private static void append(StringBuilder sb, Object v, int indent, boolean pretty, java.io.Writer out) {
         if (v == null) {
             sb.append("null");
         } else if (v instanceof String s) {
@@ -62,7 +92,8 @@ public final class Json {
                 newline(sb, indent + 1, pretty);
                 quote(sb, String.valueOf(e.getKey()));
                 sb.append(pretty ? ": " : ":");
-                append(sb, e.getValue(), indent + 1, pretty);
+                append(sb, e.getValue(), indent + 1, pretty, out);
+                spill(sb, out);
             }
             if (!m.isEmpty()) {
                 newline(sb, indent, pretty);
@@ -74,7 +105,8 @@ public final class Json {
                 if (i > 0) {
                     sb.append(pretty ? ", " : ",");
                 }
-                append(sb, l.get(i), indent + 1, pretty);
+                append(sb, l.get(i), indent + 1, pretty, out);
+                spill(sb, out);
             }
             sb.append(']');
         } else if (v instanceof double[] a) {
@@ -83,7 +115,7 @@ public final class Json {
                 if (i > 0) {
                     sb.append(pretty ? ", " : ",");
                 }
-                append(sb, a[i], indent, pretty);
+                append(sb, a[i], indent, pretty, out);
             }
             sb.append(']');
         } else if (v instanceof Enum<?> e) {

@@ -173,6 +173,51 @@ public final class OutputFolder {
         return target;
     }
 
+    /**
+     * Starts a file of the folder written atomically a part at a time, for several files filled at
+     * once ({@link AtomicFiles#stage}); it is listed in {@link #written} when committed. Written
+     * at once, also between {@link #beginParallel} and {@link #finishParallel}.
+     */
+    public Staged stage(String fileName) throws IOException {
+        Path target = resolve(fileName);
+        return new Staged(target, AtomicFiles.stage(target));
+    }
+
+    /** A file of the folder being written; see {@link AtomicFiles.Staged}. */
+    public final class Staged implements AutoCloseable {
+        private final Path target;
+        private final AtomicFiles.Staged file;
+
+        private Staged(Path target, AtomicFiles.Staged file) {
+            this.target = target;
+            this.file = file;
+        }
+
+        public java.io.OutputStream out() {
+            return file.out();
+        }
+
+        /** Ends the content and gives the temporary file, to be read before it is committed. */
+        public Path written() throws IOException {
+            return file.written();
+        }
+
+        /** Renames the file into place and lists it as written. */
+        public Path commit() throws IOException {
+            file.commit();
+            synchronized (OutputFolder.this) {
+                written.add(target);
+            }
+            return target;
+        }
+
+        /** Removes the file unless it was committed. */
+        @Override
+        public void close() throws IOException {
+            file.close();
+        }
+    }
+
     public Path writeString(String fileName, String text) throws IOException {
         return write(fileName, out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
     }

@@ -214,16 +214,46 @@ public final class ProgramChecks {
      */
     public static Limits stepnc(
             StepNcProgram program, ToolpathPlanner.Plan plan, org.fresa.toolpath.PlanningChoices choices) {
-        Limits l = Limits.milling();
         Map<Long, MachiningWorkingstep> byId = new HashMap<>();
         for (MachiningWorkingstep w : program.workingsteps()) {
             byId.put(w.instanceId(), w);
         }
+        StepNcLimits limits = new StepNcLimits(program, choices);
         List<ToolpathSection> sections = plan.toolpath().sections();
-        double allowanceMm = choices.breakthroughMm();
         for (int i = 0; i < sections.size() && i < plan.steps().size(); i++) {
-            ToolpathSection s = sections.get(i);
-            MachiningWorkingstep w = byId.get(plan.steps().get(i).workingstepInstanceId());
+            limits.add(byId.get(plan.steps().get(i).workingstepInstanceId()), sections.get(i));
+        }
+        return limits.limits();
+    }
+
+    /**
+     * {@link #stepnc}'s limits gathered a section at a time, as a program too long to hold whole is
+     * planned and written: what each section adds is its tool, its through allowance and, for a
+     * file without a workpiece block, how far its cuts reach.
+     */
+    public static final class StepNcLimits {
+        private final StepNcProgram program;
+        private final org.fresa.toolpath.PlanningChoices choices;
+        private Limits l = Limits.milling();
+        private double allowanceMm;
+        // how far the cuts of the sections other than planar faces reach, for statedStock
+        private double cutMinX = Double.POSITIVE_INFINITY;
+        private double cutMinY = Double.POSITIVE_INFINITY;
+        private double cutMaxX = Double.NEGATIVE_INFINITY;
+        private double cutMaxY = Double.NEGATIVE_INFINITY;
+
+        public StepNcLimits(StepNcProgram program, org.fresa.toolpath.PlanningChoices choices) {
+            this.program = program;
+            this.choices = choices;
+            this.allowanceMm = choices.breakthroughMm();
+        }
+
+        /**
+         * A section of the program, in order.
+         *
+         * @param w its workingstep, or null when it is not one of the program's
+         */
+        public void add(MachiningWorkingstep w, ToolpathSection s) {
             boolean axial = w != null && AXIAL.contains(w.operation().type());
             // the thesis's paths go straight down into every layer (its robots were simulated, not
             // cutting): they can only be run with a cutter that cuts at its centre, declared so
@@ -241,31 +271,47 @@ public final class ProgramChecks {
                         ToolpathPlanner.throughAllowanceMm(
                                 w.operation(), s.toolDiameterMm(), choices.breakthroughMm()));
             }
+            if (w != null && w.feature().type() == org.fresa.stepnc.Feature.FeatureType.PLANAR_FACE) {
+                return;
+            }
+            for (org.fresa.model.Move m : s.moves()) {
+                // an arc reaches at most its radius from its centre
+                double reach = m instanceof org.fresa.model.Move.Circular c
+                        ? c.end().minus(c.center()).norm()
+                        : 0;
+                Vec3 at = m instanceof org.fresa.model.Move.Circular c ? c.center() : m.end();
+                if (m instanceof org.fresa.model.Move.Linear || m instanceof org.fresa.model.Move.Circular) {
+                    cutMinX = Math.min(cutMinX, at.x() - reach);
+                    cutMinY = Math.min(cutMinY, at.y() - reach);
+                    cutMaxX = Math.max(cutMaxX, at.x() + reach);
+                    cutMaxY = Math.max(cutMaxY, at.y() + reach);
+                }
+            }
         }
-        Optional<Workpiece.Block> block =
-                program.workpieces().size() == 1 ? program.workpieces().get(0).block() : Optional.empty();
-        if (block.isPresent()) {
-            Limits.Stock stock = box(block.get());
-            l = l.withStock(stock).withFloor(stock.minZMm(), allowanceMm);
-        } else {
-            l = l.withStock(statedStock(program, sections, plan.steps(), byId));
+
+        /** The limits of the sections added. */
+        public Limits limits() {
+            Optional<Workpiece.Block> block = program.workpieces().size() == 1
+                    ? program.workpieces().get(0).block()
+                    : Optional.empty();
+            if (block.isPresent()) {
+                Limits.Stock stock = box(block.get());
+                return l.withStock(stock).withFloor(stock.minZMm(), allowanceMm);
+            }
+            return l.withStock(statedStock(program, cutMinX, cutMinY, cutMaxX, cutMaxY));
         }
-        return l;
     }
 
     /**
      * The stock of a file that gives no workpiece block, as far as the file states it: its planar
      * faces' removal boundaries (the part's top, machined flat), grown over every point another
-     * workingstep cuts (material is wherever a feature is cut), from below up to the highest
-     * feature's top. Outside it a descent is in the air (a face's passes start beyond its
-     * boundary). A file with no planar face states no top: the stock is unknown and every descent
-     * counts.
+     * workingstep cuts (material is wherever a feature is cut, the cuts reaching from cutMinX to
+     * cutMaxX and cutMinY to cutMaxY), from below up to the highest feature's top. Outside it a
+     * descent is in the air (a face's passes start beyond its boundary). A file with no planar
+     * face states no top: the stock is unknown and every descent counts.
      */
     static Limits.Stock statedStock(
-            StepNcProgram program,
-            List<ToolpathSection> sections,
-            List<ToolpathPlanner.PlannedStep> steps,
-            Map<Long, MachiningWorkingstep> byId) {
+            StepNcProgram program, double cutMinX, double cutMinY, double cutMaxX, double cutMaxY) {
         double minX = Double.POSITIVE_INFINITY;
         double minY = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY;
@@ -301,26 +347,13 @@ public final class ProgramChecks {
         if (!face || !Double.isFinite(top)) {
             return Limits.Stock.UNKNOWN;
         }
-        for (int i = 0; i < sections.size(); i++) {
-            MachiningWorkingstep w = byId.get(steps.get(i).workingstepInstanceId());
-            if (w != null && w.feature().type() == org.fresa.stepnc.Feature.FeatureType.PLANAR_FACE) {
-                continue;
-            }
-            for (org.fresa.model.Move m : sections.get(i).moves()) {
-                // an arc reaches at most its radius from its centre
-                double reach = m instanceof org.fresa.model.Move.Circular c
-                        ? c.end().minus(c.center()).norm()
-                        : 0;
-                Vec3 at = m instanceof org.fresa.model.Move.Circular c ? c.center() : m.end();
-                if (m instanceof org.fresa.model.Move.Linear || m instanceof org.fresa.model.Move.Circular) {
-                    minX = Math.min(minX, at.x() - reach);
-                    minY = Math.min(minY, at.y() - reach);
-                    maxX = Math.max(maxX, at.x() + reach);
-                    maxY = Math.max(maxY, at.y() + reach);
-                }
-            }
-        }
-        return new Limits.Stock(minX, minY, Double.NEGATIVE_INFINITY, maxX, maxY, top);
+        return new Limits.Stock(
+                Math.min(minX, cutMinX),
+                Math.min(minY, cutMinY),
+                Double.NEGATIVE_INFINITY,
+                Math.max(maxX, cutMaxX),
+                Math.max(maxY, cutMaxY),
+                top);
     }
 
     /** The block's bounding box in the workpiece frame. */

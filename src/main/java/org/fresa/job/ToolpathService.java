@@ -65,51 +65,92 @@ public final class ToolpathService {
         return ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices);
     }
 
-    /** Plans with these choices and writes the three files into the folder. */
+    /**
+     * Plans with these choices and writes the three files into the folder. Each workingstep's
+     * section is written to {@code toolpath.csv} and the program as soon as it is planned, and only
+     * its summary line is kept, so a file of tens of thousands of workingsteps is planned in a small
+     * heap; the program is checked as written, in full, before it is renamed into place.
+     */
     public static TaskOutcome run(
             Path file, MillingPost postName, PlanningChoices choices, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
         NcPost post = postName.ncPost();
-        StepNcProgram program = StepNcService.read(file, progress);
+        // planning reads only the features of the instance table: the rest of a large file's can go
+        StepNcProgram program = StepNcService.read(file, progress).forPlanning();
         java.util.Optional<String> nothing = program.whyNothingToMachine();
         if (nothing.isPresent()) {
             return nothingToMachine(program, List.of(nothing.get()), out);
         }
-        ToolpathPlanner.Plan plan = alongMachineZ(plan(program, choices, progress));
-        if (plan.planned() == 0) {
-            // every workingstep refused: an empty program would look like a finished job
-            return nothingToMachine(program, plan.problems(), out);
-        }
-        Toolpath path = plan.toolpath();
-        out.create();
-        out.write("toolpath.csv", os -> {
-            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
-            ToolpathCsv.write(path, NcPosts.CHORD_TOLERANCE_MM, w);
-            w.flush();
-        });
+        progress.progress(-1, "planning " + program.workingsteps().size() + " workingsteps");
         String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        java.io.StringWriter nc = new java.io.StringWriter();
-        post.write(path, name, nc);
-        List<String> problems = new ArrayList<>(plan.problems());
-        Map<String, Object> summary = summary(program, plan, post);
-        boolean refused = false;
-        try {
-            String programFile = "program." + post.fileExtension();
-            ProgramChecks.require(
-                    programFile,
-                    nc.toString(),
-                    ProgramChecks.dialect(post.name()),
-                    ProgramChecks.stepnc(program, plan, choices));
-            out.writeString(programFile, nc.toString());
-        } catch (ProgramChecks.RefusedProgram e) {
-            problems.add(e.getMessage());
-            summary.put("program_refused", e.failure().message());
-            refused = true;
+        String programFile = "program." + post.fileExtension();
+        SummaryLines lines = new SummaryLines();
+        List<String> problems = new ArrayList<>();
+        Map<Long, String> refusals;
+        int workingsteps;
+        String refusal = null;
+        out.create();
+        try (OutputFolder.Staged csvFile = out.stage("toolpath.csv");
+                OutputFolder.Staged ncFile = out.stage(programFile)) {
+            Writer csvText = new OutputStreamWriter(csvFile.out(), StandardCharsets.UTF_8);
+            Writer ncText = new OutputStreamWriter(ncFile.out(), StandardCharsets.UTF_8);
+            ToolpathCsv.Sections csv = ToolpathCsv.begin(NcPosts.CHORD_TOLERANCE_MM, csvText);
+            NcPost.Program nc = post.begin(name, ncText);
+            ProgramChecks.StepNcLimits limits = new ProgramChecks.StepNcLimits(program, choices);
+            Map<Long, String> axisRefusals = new LinkedHashMap<>();
+            Map<String, Integer> perAxis = new LinkedHashMap<>();
+            ToolpathPlanner.Outcome planned =
+                    ToolpathPlanner.plan(program, Tolerance.DEFAULT, choices, (ws, section, step) -> {
+                        // what a 3-axis program can hold, as alongMachineZ says
+                        if (section.toolAxis().distance(Vec3.UNIT_Z) > AXIS_TOLERANCE) {
+                            String axis = "tool axis " + ToolpathPlanner.axis(section.toolAxis());
+                            perAxis.merge(axis, 1, Integer::sum);
+                            axisRefusals.put(
+                                    step.workingstepInstanceId(),
+                                    axis + ": " + THREE_AXIS + "; it needs another setup");
+                            return;
+                        }
+                        int rows = csv.section(section);
+                        nc.section(section);
+                        limits.add(ws, section);
+                        lines.add(section, step, rows);
+                    });
+            problems.addAll(planned.problems());
+            perAxis.forEach((axis, n) -> problems.add(axis + ": " + THREE_AXIS + "; " + n
+                    + (n == 1 ? " workingstep needs" : " workingsteps need") + " another setup"));
+            refusals = new LinkedHashMap<>(planned.refusals());
+            workingsteps = planned.workingsteps();
+            refusals.putAll(axisRefusals);
+            if (lines.sections() > 0) {
+                csvText.flush();
+                nc.end();
+                csvFile.commit();
+                try {
+                    ProgramChecks.require(
+                            programFile, ncFile.written(), ProgramChecks.dialect(post.name()), limits.limits());
+                    ncFile.commit();
+                } catch (ProgramChecks.RefusedProgram e) {
+                    refusal = e.getMessage();
+                    lines.refused(e.failure().message());
+                }
+            }
         }
-        out.writeString("summary.json", Json.writePretty(summary));
+        if (lines.sections() == 0) {
+            // every workingstep refused: an empty program would look like a finished job
+            return nothingToMachine(program, problems, out);
+        }
+        Map<String, Object> summary = lines.summary(program, post, workingsteps, problems, refusals);
+        out.write("summary.json", os -> {
+            Writer w = new OutputStreamWriter(os, StandardCharsets.UTF_8);
+            Json.writePretty(summary, w);
+        });
         progress.progress(1, "done");
-        int status = !refused && (plan.problems().isEmpty() || plan.planned() == plan.workingsteps()) ? 0 : 1;
-        return new TaskOutcome(status, problems, summary, out.written());
+        int status = refusal == null && (problems.isEmpty() || lines.sections() == workingsteps) ? 0 : 1;
+        List<String> told = new ArrayList<>(problems);
+        if (refusal != null) {
+            told.add(refusal);
+        }
+        return new TaskOutcome(status, told, summary, out.written());
     }
 
     /**
@@ -178,23 +219,24 @@ public final class ToolpathService {
         return run(s.file(), s.post(), s.choices(), out, progress);
     }
 
-    static Map<String, Object> summary(StepNcProgram program, ToolpathPlanner.Plan plan, NcPost post) {
-        Toolpath path = plan.toolpath();
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("source", program.source());
-        m.put("post", post.name());
-        m.put("workingsteps", plan.workingsteps());
-        m.put("planned", plan.planned());
-        m.put("sections", path.sections().size());
-        m.put("moves", path.moveCount());
-        m.put("points", ToolpathCsv.rows(path, NcPosts.CHORD_TOLERANCE_MM).size());
-        CycleTime total = CycleTime.ZERO;
-        List<Object> perSection = new ArrayList<>();
-        for (int i = 0; i < path.sections().size(); i++) {
-            ToolpathSection s = path.sections().get(i);
-            ToolpathPlanner.PlannedStep step = plan.steps().get(i);
+    /**
+     * {@code summary.json} gathered a section at a time: one line per section written, the totals,
+     * and at the end what the program does not hold.
+     */
+    static final class SummaryLines {
+        private final List<Object> perSection = new ArrayList<>();
+        private final java.util.Set<Long> held = new java.util.HashSet<>();
+        private CycleTime total = CycleTime.ZERO;
+        private long moves;
+        private long points;
+        private String refused;
+
+        void add(ToolpathSection s, ToolpathPlanner.PlannedStep step, int rows) {
             CycleTime t = CycleTime.of(s, RAPID_MM_PER_MIN);
             total = total.plus(t);
+            moves += s.moves().size();
+            points += rows;
+            held.add(step.workingstepInstanceId());
             Map<String, Object> x = new LinkedHashMap<>();
             x.put("workingstep", s.label());
             x.put("workingstep_instance", step.workingstepInstanceId());
@@ -216,36 +258,67 @@ public final class ToolpathService {
             x.put("time_s", t.seconds());
             perSection.add(x);
         }
-        m.put("rapid_mm_per_min", RAPID_MM_PER_MIN);
-        m.put("feed_length_mm", total.feedLengthMm());
-        m.put("rapid_length_mm", total.rapidLengthMm());
-        if (total.dwellSeconds() > 0) {
-            m.put("dwell_time_s", total.dwellSeconds());
+
+        int sections() {
+            return perSection.size();
         }
-        m.put("cycle_time_s", total.seconds());
-        m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
-        m.put("workingstep_paths", perSection);
-        m.put("problems", plan.problems());
-        // every workingstep the program does not hold, each with its own reason (the problems sum
-        // some of them up, per tool axis or per feed note)
-        java.util.Set<Long> held = new java.util.HashSet<>();
-        plan.steps().forEach(x -> held.add(x.workingstepInstanceId()));
-        List<Object> notPlanned = new ArrayList<>();
-        for (org.fresa.stepnc.MachiningWorkingstep w : program.workingsteps()) {
-            if (!held.contains(w.instanceId())) {
-                Map<String, Object> x = new LinkedHashMap<>();
-                x.put("id", w.id());
-                x.put("instance", w.instanceId());
-                x.put("reason", plan.refusals().getOrDefault(w.instanceId(), "not planned"));
-                notPlanned.add(x);
+
+        /** The program failed its check: the failure's message. */
+        void refused(String message) {
+            refused = message;
+        }
+
+        Map<String, Object> summary(
+                StepNcProgram program,
+                NcPost post,
+                int workingsteps,
+                List<String> problems,
+                Map<Long, String> refusals) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("source", program.source());
+            m.put("post", post.name());
+            m.put("workingsteps", workingsteps);
+            m.put("planned", perSection.size());
+            m.put("sections", perSection.size());
+            m.put("moves", number(moves));
+            m.put("points", number(points));
+            m.put("rapid_mm_per_min", RAPID_MM_PER_MIN);
+            m.put("feed_length_mm", total.feedLengthMm());
+            m.put("rapid_length_mm", total.rapidLengthMm());
+            if (total.dwellSeconds() > 0) {
+                m.put("dwell_time_s", total.dwellSeconds());
             }
+            m.put("cycle_time_s", total.seconds());
+            m.put("chord_tolerance_mm", NcPosts.CHORD_TOLERANCE_MM);
+            m.put("workingstep_paths", perSection);
+            m.put("problems", problems);
+            // every workingstep the program does not hold, each with its own reason (the problems sum
+            // some of them up, per tool axis or per feed note)
+            List<Object> notPlanned = new ArrayList<>();
+            for (org.fresa.stepnc.MachiningWorkingstep w : program.workingsteps()) {
+                if (!held.contains(w.instanceId())) {
+                    Map<String, Object> x = new LinkedHashMap<>();
+                    x.put("id", w.id());
+                    x.put("instance", w.instanceId());
+                    x.put("reason", refusals.getOrDefault(w.instanceId(), "not planned"));
+                    notPlanned.add(x);
+                }
+            }
+            m.put("not_planned", notPlanned);
+            List<Object> skipped = new ArrayList<>();
+            for (StepNcProgram.Skipped s : program.skipped()) {
+                skipped.add(Map.of("id", s.id(), "reason", s.reason()));
+            }
+            m.put("skipped", skipped);
+            if (refused != null) {
+                m.put("program_refused", refused);
+            }
+            return m;
         }
-        m.put("not_planned", notPlanned);
-        List<Object> skipped = new ArrayList<>();
-        for (StepNcProgram.Skipped s : program.skipped()) {
-            skipped.add(Map.of("id", s.id(), "reason", s.reason()));
+
+        /** A count as the summary has always written it: an int while it fits. */
+        private static Number number(long n) {
+            return n <= Integer.MAX_VALUE ? Integer.valueOf((int) n) : Long.valueOf(n);
         }
-        m.put("skipped", skipped);
-        return m;
     }
 }

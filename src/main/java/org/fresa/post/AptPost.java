@@ -8,7 +8,6 @@ import java.util.Locale;
 import org.fresa.geom.Vec3;
 import org.fresa.model.ArcGeometry;
 import org.fresa.model.Move;
-import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 
 /**
@@ -50,16 +49,42 @@ final class AptPost implements NcPost {
     }
 
     @Override
-    public void write(Toolpath path, String programName, Writer out) throws IOException {
-        List<String> lines = new ArrayList<>();
+    public NcPost.Program begin(String programName, Writer out) throws IOException {
         String title = plain(programName);
-        lines.add("PARTNO " + (title.length() > PARTNO_CHARS ? title.substring(0, PARTNO_CHARS) : title));
-        lines.add("UNITS/MM");
-        int tool = 0;
-        long rpm = -1;
-        boolean clockwise = true;
-        double feed = -1;
-        for (ToolpathSection s : path.sections()) {
+        Statements p = new Statements(out);
+        p.add("PARTNO " + (title.length() > PARTNO_CHARS ? title.substring(0, PARTNO_CHARS) : title));
+        p.add("UNITS/MM");
+        return p;
+    }
+
+    /** The statements of one program as they are written, with the state it has left between sections. */
+    private static final class Statements implements NcPost.Program {
+        private final Writer out;
+        private final List<String> lines = new ArrayList<>();
+        private int tool = 0;
+        private long rpm = -1;
+        private boolean clockwise = true;
+        private double feed = -1;
+
+        Statements(Writer out) {
+            this.out = out;
+        }
+
+        void add(String line) {
+            lines.add(line);
+        }
+
+        /** Writes the statements gathered since the last call. */
+        private void drain() throws IOException {
+            for (String l : lines) {
+                out.write(l);
+                out.write('\n');
+            }
+            lines.clear();
+        }
+
+        @Override
+        public void section(ToolpathSection s) throws IOException {
             lines.add("$$ " + plain(s.label()) + " tool " + s.toolNumber() + " D" + num(s.toolDiameterMm()));
             if (s.toolAxis().distance(Vec3.UNIT_Z) > 1e-9) {
                 lines.add("$$ tool axis " + num(s.toolAxis().x()) + " "
@@ -107,12 +132,17 @@ final class AptPost implements NcPost {
                 }
                 at = m.end();
             }
+            drain();
         }
-        lines.add("SPINDL/OFF");
-        lines.add("COOLNT/OFF");
-        lines.add("FINI");
-        out.write(String.join("\n", lines) + "\n");
-        out.flush();
+
+        @Override
+        public void end() throws IOException {
+            lines.add("SPINDL/OFF");
+            lines.add("COOLNT/OFF");
+            lines.add("FINI");
+            drain();
+            out.flush();
+        }
     }
 
     private static String spindle(long rpm, boolean clockwise) {

@@ -2,7 +2,6 @@ package org.fresa.post;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -10,7 +9,6 @@ import java.util.function.Function;
 import org.fresa.geom.Vec3;
 import org.fresa.model.ArcGeometry;
 import org.fresa.model.Move;
-import org.fresa.model.Toolpath;
 import org.fresa.model.ToolpathSection;
 
 /**
@@ -126,20 +124,34 @@ final class GcodePost implements NcPost {
     }
 
     @Override
-    public void write(Toolpath path, String programName, Writer out) throws IOException {
-        Program p = new Program(dialect.numbered());
+    public NcPost.Program begin(String programName, Writer out) throws IOException {
+        Blocks p = new Blocks(dialect.numbered(), out);
         for (String h : frame.header().apply(programName)) {
             p.raw(h);
         }
         p.raw(comment(programName));
-        frame.safeStart().forEach(p::block);
-        int tool = 0;
+        for (String b : frame.safeStart()) {
+            p.block(b);
+        }
+        return new Sections(p);
+    }
+
+    /** The sections of one program, with the modal state the program has left between them. */
+    private final class Sections implements NcPost.Program {
+        private final Blocks p;
+        private int tool = 0;
         // the spindle as the program has left it: -1 when stopped or unknown
-        long rpm = -1;
-        boolean clockwise = true;
-        Plane plane = Plane.XY;
-        double feed = -1;
-        for (ToolpathSection s : path.sections()) {
+        private long rpm = -1;
+        private boolean clockwise = true;
+        private Plane plane = Plane.XY;
+        private double feed = -1;
+
+        Sections(Blocks p) {
+            this.p = p;
+        }
+
+        @Override
+        public void section(ToolpathSection s) throws IOException {
             p.raw(comment(s.label() + " tool " + s.toolNumber() + " D" + num(s.toolDiameterMm())));
             if (s.toolAxis().distance(Vec3.UNIT_Z) > 1e-9) {
                 p.raw(comment("tool axis " + num(s.toolAxis().x()) + " "
@@ -147,7 +159,9 @@ final class GcodePost implements NcPost {
                         + " is not +Z: needs the part turned or a spindle along this axis"));
             }
             if (s.toolNumber() != tool) {
-                dialect.toolChange(s.toolNumber()).forEach(p::block);
+                for (String b : dialect.toolChange(s.toolNumber())) {
+                    p.block(b);
+                }
                 tool = s.toolNumber();
                 rpm = -1;
                 feed = -1;
@@ -184,16 +198,23 @@ final class GcodePost implements NcPost {
                 at = m.end();
             }
         }
-        if (plane != Plane.XY) {
-            p.block("G17");
+
+        @Override
+        public void end() throws IOException {
+            if (plane != Plane.XY) {
+                p.block("G17");
+            }
+            for (String b : frame.safeEnd()) {
+                p.block(b);
+            }
+            for (String t : frame.trailer()) {
+                p.raw(t);
+            }
+            p.flush();
         }
-        frame.safeEnd().forEach(p::block);
-        frame.trailer().forEach(p::raw);
-        out.write(p.text());
-        out.flush();
     }
 
-    private Plane arc(Program p, Vec3 start, Move.Circular c, Plane current, double feed) {
+    private Plane arc(Blocks p, Vec3 start, Move.Circular c, Plane current, double feed) throws IOException {
         Optional<Plane> found = Plane.of(c.normal());
         if (found.isEmpty()) {
             ArcGeometry g = ArcGeometry.of(start, c);
@@ -305,32 +326,33 @@ final class GcodePost implements NcPost {
         }
     }
 
-    /** The program text being built, with block numbers when the dialect wants them. */
-    static final class Program {
+    /** The program's lines as they are written, with block numbers when the dialect wants them. */
+    static final class Blocks {
         private final boolean numbered;
-        private final List<String> lines = new ArrayList<>();
+        private final Writer out;
         private int n;
 
-        Program(boolean numbered) {
+        Blocks(boolean numbered, Writer out) {
             this.numbered = numbered;
+            this.out = out;
         }
 
-        void raw(String line) {
-            lines.add(line);
+        void raw(String line) throws IOException {
+            out.write(line);
+            out.write('\n');
         }
 
-        void block(String words) {
+        void block(String words) throws IOException {
             if (numbered) {
                 // RS274/NGC and Fanuc take at most five digits; N words are labels, so repeating is harmless
                 n = n >= 99990 ? 10 : n + 10;
-                lines.add("N" + n + " " + words);
-            } else {
-                lines.add(words);
+                out.write("N" + n + " ");
             }
+            raw(words);
         }
 
-        String text() {
-            return String.join("\n", lines) + "\n";
+        void flush() throws IOException {
+            out.flush();
         }
     }
 }

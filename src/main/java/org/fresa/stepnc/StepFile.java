@@ -81,6 +81,62 @@ public final class StepFile {
         return store.instanceAt(i);
     }
 
+    /**
+     * The same file with only the instances named: what stays of a large file once it is bound,
+     * when later steps read only these few instances and the rest of the table would be most of
+     * the memory. References to the instances left out are kept as written.
+     */
+    public StepFile only(java.util.Set<Long> ids) {
+        InstanceStore kept = new InstanceStore();
+        for (int i = 0; i < store.count(); i++) {
+            if (ids.contains(store.idAt(i))) {
+                StepInstance inst = store.instanceAt(i);
+                kept.beginInstance(inst.id(), inst.line(), inst.column(), inst.isComplex());
+                for (StepRecord r : inst.records()) {
+                    kept.putString(InstanceStore.RECORD, r.type());
+                    encodeList(kept, r.params(), inst.id());
+                }
+            }
+        }
+        return new StepFile(source, header, kept);
+    }
+
+    /** A list as the reader codes it: begin, its items, end. */
+    private static void encodeList(InstanceStore to, List<StepValue> items, long self) {
+        to.put(InstanceStore.BEGIN);
+        for (StepValue v : items) {
+            encode(to, v, self);
+        }
+        to.put(InstanceStore.END);
+    }
+
+    private static void encode(InstanceStore to, StepValue v, long self) {
+        if (v instanceof StepValue.Unset) {
+            to.put(InstanceStore.UNSET);
+        } else if (v instanceof StepValue.Derived) {
+            to.put(InstanceStore.DERIVED);
+        } else if (v instanceof StepValue.Int n) {
+            to.putSigned(InstanceStore.INT, n.value());
+        } else if (v instanceof StepValue.Real r) {
+            to.putReal(r.value());
+        } else if (v instanceof StepValue.Text t) {
+            to.putString(InstanceStore.TEXT, t.value());
+        } else if (v instanceof StepValue.Enumeration e) {
+            to.putString(InstanceStore.ENUM, e.name());
+        } else if (v instanceof StepValue.Binary b) {
+            to.putString(InstanceStore.BINARY, b.hex());
+        } else if (v instanceof StepValue.Ref ref) {
+            to.putSigned(InstanceStore.REF, ref.id() - self);
+        } else if (v instanceof StepValue.Aggregate a) {
+            encodeList(to, a.items(), self);
+        } else if (v instanceof StepValue.Typed t) {
+            to.putString(InstanceStore.TYPED, t.type());
+            encode(to, t.value(), self);
+        } else {
+            throw new IllegalStateException("no code for " + v);
+        }
+    }
+
     /** The schema names of FILE_SCHEMA, upper case; empty when the header has none. */
     public List<String> schemas() {
         List<String> out = new ArrayList<>();

@@ -117,6 +117,35 @@ public record StepNcProgram(
         return workpieces.size() == 1 ? Optional.of(workpieces.get(0)) : Optional.empty();
     }
 
+    /**
+     * The program with only what planning reads of the raw instance graph, the features'
+     * instances ({@link #workpieceOf}): the rest of a large file's instance table, most of its
+     * memory once it is bound, can go. Everything bound stays as it is.
+     */
+    public StepNcProgram forPlanning() {
+        java.util.Set<Long> features = new java.util.HashSet<>();
+        for (MachiningWorkingstep w : workingsteps) {
+            features.add(w.feature().instanceId());
+        }
+        for (Skipped s : skipped) {
+            s.workingstep().ifPresent(w -> features.add(w.feature().instanceId()));
+        }
+        return new StepNcProgram(
+                source,
+                schemas,
+                dialect,
+                instanceCount,
+                projectId,
+                mainWorkplan,
+                workpieces,
+                workingsteps,
+                skipped,
+                unknownEntities,
+                spellings,
+                warnings,
+                file.only(features));
+    }
+
     /** The schema names joined as the header lists them. */
     public String schema() {
         return String.join(",", schemas);

@@ -55,27 +55,34 @@ public final class ToolpathCsv {
     public static List<Row> rows(Toolpath path, double chordToleranceMm) {
         List<Row> rows = new ArrayList<>();
         for (ToolpathSection s : path.sections()) {
-            String ws = s.label();
-            Vec3 axis = s.toolAxis();
-            rows.add(new Row(rows.size(), ws, "rapid", s.start(), axis, 0));
-            Vec3 at = s.start();
-            for (Move m : s.moves()) {
-                if (m instanceof Move.Rapid r) {
-                    rows.add(new Row(rows.size(), ws, "rapid", r.end(), axis, 0));
-                } else if (m instanceof Move.Linear l) {
-                    rows.add(new Row(rows.size(), ws, "feed", l.end(), axis, l.feedMmPerMin()));
-                } else if (m instanceof Move.Circular c) {
-                    String kind = gSense(c) ? "arc-ccw" : "arc-cw";
-                    for (Vec3 p : ArcGeometry.of(at, c).points(chordToleranceMm)) {
-                        rows.add(new Row(rows.size(), ws, kind, p, axis, c.feedMmPerMin()));
-                    }
-                } else if (m instanceof Move.Dwell d) {
-                    rows.add(new Row(rows.size(), ws, "dwell", d.end(), axis, d.seconds()));
-                } else if (!(m instanceof Move.SpindleStop) && !(m instanceof Move.SpindleStart)) {
-                    throw new IllegalStateException("no toolpath.csv row for " + m);
+            rows.addAll(rows(s, chordToleranceMm, rows.size()));
+        }
+        return rows;
+    }
+
+    /** The rows of one section, numbered from {@code firstIndex} (the rows of the sections before it). */
+    public static List<Row> rows(ToolpathSection s, double chordToleranceMm, int firstIndex) {
+        List<Row> rows = new ArrayList<>();
+        String ws = s.label();
+        Vec3 axis = s.toolAxis();
+        rows.add(new Row(firstIndex + rows.size(), ws, "rapid", s.start(), axis, 0));
+        Vec3 at = s.start();
+        for (Move m : s.moves()) {
+            if (m instanceof Move.Rapid r) {
+                rows.add(new Row(firstIndex + rows.size(), ws, "rapid", r.end(), axis, 0));
+            } else if (m instanceof Move.Linear l) {
+                rows.add(new Row(firstIndex + rows.size(), ws, "feed", l.end(), axis, l.feedMmPerMin()));
+            } else if (m instanceof Move.Circular c) {
+                String kind = gSense(c) ? "arc-ccw" : "arc-cw";
+                for (Vec3 p : ArcGeometry.of(at, c).points(chordToleranceMm)) {
+                    rows.add(new Row(firstIndex + rows.size(), ws, kind, p, axis, c.feedMmPerMin()));
                 }
-                at = m.end();
+            } else if (m instanceof Move.Dwell d) {
+                rows.add(new Row(firstIndex + rows.size(), ws, "dwell", d.end(), axis, d.seconds()));
+            } else if (!(m instanceof Move.SpindleStop) && !(m instanceof Move.SpindleStart)) {
+                throw new IllegalStateException("no toolpath.csv row for " + m);
             }
+            at = m.end();
         }
         return rows;
     }
@@ -92,30 +99,66 @@ public final class ToolpathCsv {
 
     /** Writes the header and the rows. */
     public static void write(Toolpath path, double chordToleranceMm, Writer out) throws IOException {
-        out.write(HEADER);
-        out.write('\n');
-        StringBuilder sb = new StringBuilder(128);
-        for (Row r : rows(path, chordToleranceMm)) {
-            sb.setLength(0);
-            sb.append(r.index())
-                    .append(',')
-                    .append(quote(r.workingstep()))
-                    .append(',')
-                    .append(r.move());
-            for (double d : new double[] {
-                r.point().x(),
-                r.point().y(),
-                r.point().z(),
-                r.toolAxis().x(),
-                r.toolAxis().y(),
-                r.toolAxis().z(),
-                r.feedMmPerMin()
-            }) {
-                ExactDecimal.append(sb.append(','), d);
-            }
-            out.write(sb.append('\n').toString());
+        Sections w = begin(chordToleranceMm, out);
+        for (ToolpathSection s : path.sections()) {
+            w.section(s);
         }
         out.flush();
+    }
+
+    /**
+     * Starts the file for a toolpath written a section at a time, for a toolpath too long to
+     * hold whole: the header now, each section's rows when it is given.
+     */
+    public static Sections begin(double chordToleranceMm, Writer out) throws IOException {
+        out.write(HEADER);
+        out.write('\n');
+        return new Sections(chordToleranceMm, out);
+    }
+
+    /** The rows of the sections written so far, numbered on from one section to the next. */
+    public static final class Sections {
+        private final double chordToleranceMm;
+        private final Writer out;
+        private final StringBuilder sb = new StringBuilder(128);
+        private int rows;
+
+        private Sections(double chordToleranceMm, Writer out) {
+            this.chordToleranceMm = chordToleranceMm;
+            this.out = out;
+        }
+
+        /** Writes the section's rows; returns how many. */
+        public int section(ToolpathSection s) throws IOException {
+            List<Row> these = ToolpathCsv.rows(s, chordToleranceMm, rows);
+            for (Row r : these) {
+                sb.setLength(0);
+                sb.append(r.index())
+                        .append(',')
+                        .append(quote(r.workingstep()))
+                        .append(',')
+                        .append(r.move());
+                for (double d : new double[] {
+                    r.point().x(),
+                    r.point().y(),
+                    r.point().z(),
+                    r.toolAxis().x(),
+                    r.toolAxis().y(),
+                    r.toolAxis().z(),
+                    r.feedMmPerMin()
+                }) {
+                    ExactDecimal.append(sb.append(','), d);
+                }
+                out.write(sb.append('\n').toString());
+            }
+            rows += these.size();
+            return these.size();
+        }
+
+        /** The rows written so far. */
+        public int rows() {
+            return rows;
+        }
     }
 
     /** The whole file as text. */

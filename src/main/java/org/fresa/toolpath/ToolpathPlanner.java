@@ -168,24 +168,77 @@ public final class ToolpathPlanner {
         if (choices.paths() == PathConvention.THESIS) {
             return ThesisPaths.plan(program, choices);
         }
-        Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<ToolpathSection> sections = new ArrayList<>();
         List<PlannedStep> steps = new ArrayList<>();
+        Outcome o = plan(program, tol, choices, (ws, s, step) -> {
+            sections.add(s);
+            steps.add(step);
+        });
+        return new Plan(new Toolpath(sections), o.problems(), o.workingsteps(), o.planned(), steps, o.refusals());
+    }
+
+    /**
+     * Takes each section as soon as it is planned, in execution order: a program of tens of
+     * thousands of workingsteps is written as it is planned, never held whole.
+     */
+    @FunctionalInterface
+    public interface Sections<E extends Exception> {
+        void accept(MachiningWorkingstep ws, ToolpathSection section, PlannedStep step) throws E;
+    }
+
+    /**
+     * What planning found besides the sections: the {@link Plan} less its toolpath and steps.
+     *
+     * @param problems as {@link Plan#problems()}
+     * @param workingsteps the program's workingsteps
+     * @param planned the sections handed on
+     * @param refusals as {@link Plan#refusals()}
+     */
+    public record Outcome(List<String> problems, int workingsteps, int planned, Map<Long, String> refusals) {
+        public Outcome {
+            problems = List.copyOf(problems);
+            refusals = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(refusals));
+        }
+    }
+
+    /**
+     * {@link #plan(StepNcProgram, Tolerance, PlanningChoices)}, each section handed on as soon as it
+     * is made instead of kept: the same sections in the same order, the same problems.
+     */
+    public static <E extends Exception> Outcome plan(
+            StepNcProgram program, Tolerance tol, PlanningChoices choices, Sections<E> into) throws E {
+        if (choices.paths() == PathConvention.THESIS) {
+            // the thesis's paths are few and short: planned whole, then handed on
+            Plan p = ThesisPaths.plan(program, choices);
+            Map<Long, MachiningWorkingstep> byId = new java.util.HashMap<>();
+            program.workingsteps().forEach(w -> byId.put(w.instanceId(), w));
+            for (int i = 0; i < p.steps().size(); i++) {
+                PlannedStep step = p.steps().get(i);
+                into.accept(
+                        byId.get(step.workingstepInstanceId()),
+                        p.toolpath().sections().get(i),
+                        step);
+            }
+            return new Outcome(p.problems(), p.workingsteps(), p.planned(), p.refusals());
+        }
+        Map<String, Integer> toolNumbers = new LinkedHashMap<>();
         List<String> problems = new ArrayList<>();
         Map<Long, String> refusals = new LinkedHashMap<>();
         Map<String, Integer> feedNotes = new LinkedHashMap<>();
         int planned = 0;
         for (MachiningWorkingstep ws : program.workingsteps()) {
+            ToolpathSection made = null;
+            PlannedStep step = null;
             try {
                 CuttingData cutting = cuttingData(ws.operation(), choices);
                 Optional<ToolpathSection> s =
                         section(ws, toolNumbers, problems, tol, cutting, new HoleContext(program, choices));
                 if (s.isPresent()) {
-                    sections.add(s.get());
+                    made = s.get();
                     FeedRate feed = cutting.feed();
                     cutting.notes()
                             .forEach(n -> problems.add("workingstep '" + s.get().label() + "': " + n));
-                    steps.add(new PlannedStep(ws.instanceId(), s.get().label(), feed));
+                    step = new PlannedStep(ws.instanceId(), s.get().label(), feed);
                     if (feed.inferred()) {
                         feedNotes.merge(feed.note(), 1, Integer::sum);
                     }
@@ -195,10 +248,13 @@ public final class ToolpathPlanner {
                 problems.add("workingstep '" + ws.id() + "' (#" + ws.instanceId() + "): " + e.getMessage());
                 refusals.put(ws.instanceId(), e.getMessage());
             }
+            if (made != null) {
+                into.accept(ws, made, step);
+            }
         }
         feedNotes.forEach(
                 (note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ") + note));
-        return new Plan(new Toolpath(sections), problems, program.workingsteps().size(), planned, steps, refusals);
+        return new Outcome(problems, program.workingsteps().size(), planned, refusals);
     }
 
     /** The cutting data of an operation (the tool's diameter for the cutting speed), checked. */
