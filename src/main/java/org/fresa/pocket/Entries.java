@@ -29,6 +29,12 @@ public final class Entries {
 
     /** The shortest cut a ramp may run along (mm). */
     static final double MIN_LEG_MM = 1e-3;
+    /**
+     * The uncut core of a cutter that does not cut at its centre, as a fraction of its radius: a
+     * helix narrower than this about its axis, or a ramp whose course fits in a circle this size,
+     * keeps the core over the same material all the way down.
+     */
+    public static final double CORE_OF_RADIUS = 0.5;
 
     private static final double[] HELIX_RADII = {1, 0.75, 0.5};
 
@@ -76,7 +82,7 @@ public final class Entries {
         if (helix.isPresent()) {
             return helix;
         }
-        Optional<Entry> ramp = ramp(cut, horizontal);
+        Optional<Entry> ramp = ramp(cut, horizontal, rule.centreCutting() ? 0 : toolRadiusMm);
         if (ramp.isPresent()) {
             return ramp;
         }
@@ -136,9 +142,16 @@ public final class Entries {
     }
 
     /** Legs along the first H/n of the cut, n even and as small as the cut's length allows. */
-    private static Optional<Entry> ramp(List<Curve2> cut, double horizontalMm) {
+    /**
+     * A zig-zag along the start of the cut. For a cutter that does not cut at its centre each leg
+     * is at least one tool radius long, so that the core under its centre (half the radius, as
+     * for the helix) passes off every point on the way down; a cut shorter than that has no room
+     * for a ramp. The legs may then descend less steeply than the angle allows.
+     */
+    private static Optional<Entry> ramp(List<Curve2> cut, double horizontalMm, double toolRadiusMm) {
         double length = cut.stream().mapToDouble(Curve2::length).sum();
-        if (!(length >= MIN_LEG_MM)) {
+        double least = Math.max(MIN_LEG_MM, 2 * CORE_OF_RADIUS * toolRadiusMm);
+        if (!(length >= least)) {
             return Optional.empty();
         }
         double n = 2 * Math.ceil(horizontalMm / (2 * length) - 1e-12);
@@ -146,7 +159,7 @@ public final class Entries {
         if (!(n <= MAX_STEPS)) {
             return Optional.empty();
         }
-        double leg = Math.min(length, horizontalMm / legs);
+        double leg = Math.min(length, Math.max(horizontalMm / legs, 2 * CORE_OF_RADIUS * toolRadiusMm));
         if (!(leg >= MIN_LEG_MM / 10)) {
             return Optional.empty();
         }
