@@ -29,12 +29,6 @@ public final class Entries {
 
     /** The shortest cut a ramp may run along (mm). */
     static final double MIN_LEG_MM = 1e-3;
-    /**
-     * The uncut core of a cutter that does not cut at its centre, as a fraction of its radius: a
-     * helix narrower than this about its axis, or a ramp whose course fits in a circle this size,
-     * keeps the core over the same material all the way down.
-     */
-    public static final double CORE_OF_RADIUS = 0.5;
 
     private static final double[] HELIX_RADII = {1, 0.75, 0.5};
 
@@ -82,7 +76,7 @@ public final class Entries {
         if (helix.isPresent()) {
             return helix;
         }
-        Optional<Entry> ramp = ramp(cut, horizontal, rule.centreCutting() ? 0 : toolRadiusMm);
+        Optional<Entry> ramp = ramp(cut, horizontal);
         if (ramp.isPresent()) {
             return ramp;
         }
@@ -142,16 +136,9 @@ public final class Entries {
     }
 
     /** Legs along the first H/n of the cut, n even and as small as the cut's length allows. */
-    /**
-     * A zig-zag along the start of the cut. For a cutter that does not cut at its centre each leg
-     * is at least one tool radius long, so that the core under its centre (half the radius, as
-     * for the helix) passes off every point on the way down; a cut shorter than that has no room
-     * for a ramp. The legs may then descend less steeply than the angle allows.
-     */
-    private static Optional<Entry> ramp(List<Curve2> cut, double horizontalMm, double toolRadiusMm) {
+    private static Optional<Entry> ramp(List<Curve2> cut, double horizontalMm) {
         double length = cut.stream().mapToDouble(Curve2::length).sum();
-        double least = Math.max(MIN_LEG_MM, 2 * CORE_OF_RADIUS * toolRadiusMm);
-        if (!(length >= least)) {
+        if (!(length >= MIN_LEG_MM)) {
             return Optional.empty();
         }
         double n = 2 * Math.ceil(horizontalMm / (2 * length) - 1e-12);
@@ -159,7 +146,7 @@ public final class Entries {
         if (!(n <= MAX_STEPS)) {
             return Optional.empty();
         }
-        double leg = Math.min(length, Math.max(horizontalMm / legs, 2 * CORE_OF_RADIUS * toolRadiusMm));
+        double leg = Math.min(length, horizontalMm / legs);
         if (!(leg >= MIN_LEG_MM / 10)) {
             return Optional.empty();
         }

@@ -51,8 +51,11 @@ public final class RegionPocket {
     private static final Tolerance TOL = Tolerance.DEFAULT;
     private static final Vec3 Z = new Vec3(0, 0, 1);
     private static final double CLEARANCE_MM = 5;
-    /** The uncut core of a cutter that does not cut at its centre, as the single-contour entries take it. */
-    static final double CORE_OF_RADIUS = Entries.CORE_OF_RADIUS;
+    /**
+     * The uncut core of a cutter that does not cut at its centre, as a fraction of its radius: the
+     * helix entries' least radius (docs/entries.md) is the same figure.
+     */
+    static final double CORE_OF_RADIUS = 0.5;
 
     /** One offset level: its distance from the region boundary and its loops (faces CCW, holes CW). */
     public record Level(double offsetMm, List<Contour> loops) {

@@ -64,8 +64,7 @@ class EntriesTest {
 
     @Test
     void withoutRoomForAHelixTheRampTurnsBackAndForthAlongTheShortCut() {
-        // a 2.6 mm cutter: each leg of the ramp is longer than its radius, so its centre moves
-        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 1.3, 3)
+        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
                 .orElseThrow();
         Entry.Ramp r = assertInstanceOf(Entry.Ramp.class, e);
         List<Move> moves = r.moves(0, -3, 300);
@@ -75,26 +74,6 @@ class EntriesTest {
                 () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
                 () -> assertEquals(
                         Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
-    }
-
-    @Test
-    void aCutShorterThanTheToolRadiusHasNoRampForACutterThatDoesNotCutAtItsCentre() {
-        // a 10 mm cutter zig-zagging along 2.7 mm would keep its uncut core (2.5 mm about its
-        // centre) over the middle of the cut all the way down: a plunge in all but name
-        assertTrue(Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
-                .isEmpty());
-        // a tool that cuts at its centre may ramp there as before
-        assertInstanceOf(
-                Entry.Ramp.class,
-                Entries.choose(
-                                new EntryRule(EntryRule.Kind.AUTO, 3, true),
-                                Vec2.ZERO,
-                                SHORT_CUT,
-                                true,
-                                Entries.Room.NONE,
-                                5,
-                                3)
-                        .orElseThrow());
     }
 
     @Test
