@@ -52,9 +52,7 @@ class ErrorStyleGuiTest extends WindowGuiTest {
         Files.writeString(bad, "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nabc\n");
         window.button("cutting-open").click();
         JFileChooserFixture fc = window.fileChooser(Timeout.timeout(10_000));
-        fc.setCurrentDirectory(dir.toFile());
-        fc.selectFile(bad.toFile());
-        fc.approve();
+        WindowGuiTest.choose(fc, bad);
         window.button("cutting-cut").click();
         waitFor(
                 "the cut ended",

@@ -161,8 +161,7 @@ class PocketContourEditorGuiTest extends WindowGuiTest {
         window.tabbedPane("pocket-texts").selectTab("Contour elements");
         window.button("pocket-save-contour").click();
         var chooser = window.fileChooser();
-        chooser.fileNameTextBox().setText(dad.toString());
-        chooser.approve();
+        WindowGuiTest.choose(chooser, dad);
         waitFor("the contour is saved", "pocket-status", s -> s.startsWith("Saved"));
         assertEquals(typed.toDad(), Files.readString(dad, StandardCharsets.ISO_8859_1));
         assertEquals(

@@ -166,9 +166,7 @@ class PocketTabGuiTest extends WindowGuiTest {
         Path saved = dir.resolve("cavity01.ngc");
         window.button("pocket-save-program").click();
         org.assertj.swing.fixture.JFileChooserFixture chooser = window.fileChooser(Timeout.timeout(10_000));
-        chooser.setCurrentDirectory(dir.toFile());
-        chooser.fileNameTextBox().setText("cavity01.ngc");
-        chooser.approve();
+        WindowGuiTest.choose(chooser, saved);
         waitFor("the program is saved", s -> s.startsWith("Saved "));
         assertTrue(Files.readString(saved).contains("M3"));
         assertFalse(Files.list(dir).anyMatch(p -> p.getFileName().toString().startsWith(".fresa-tmp-")));
