@@ -743,37 +743,36 @@ public final class RegionPocket {
         for (double f : new double[] {1, 0.75, 0.5}) {
             double r = f * radiusMm;
             for (boolean ccw : new boolean[] {loopCcw, !loopCcw}) {
-                Vec2 c = s.plus(tangent.leftNormal().times(ccw ? r : -r));
-                if (!holds(finishing, c, r)) {
-                    continue;
+                Helix h = helixAbout(s.plus(tangent.leftNormal().times(ccw ? r : -r)), r, ccw, s, want, finishing);
+                if (h != null) {
+                    return h;
                 }
-                double sweep = want / r;
-                int turns = (int) Math.floor(sweep / (2 * Math.PI));
-                double part = Math.max(HELIX_LEAST_PART_TURN_RAD, sweep - turns * 2 * Math.PI);
-                if (turns > Entries.MAX_STEPS) {
-                    continue;
-                }
-                Vec2 from = c.plus(s.minus(c).rotated(ccw ? -part : part));
-                return new Helix(from, c, ccw, turns);
             }
             // no room beside the start: the axis in seven other directions round it, as the
             // single-contour entries try (the helix then meets the loop at an angle, at depth)
             for (int k = 1; k < 8; k++) {
                 Vec2 c = s.plus(tangent.leftNormal().rotated(k * Math.PI / 4).times(r));
-                if (!holds(finishing, c, r)) {
-                    continue;
+                Helix h = helixAbout(c, r, loopCcw, s, want, finishing);
+                if (h != null) {
+                    return h;
                 }
-                double sweep = want / r;
-                int turns = (int) Math.floor(sweep / (2 * Math.PI));
-                double part = Math.max(HELIX_LEAST_PART_TURN_RAD, sweep - turns * 2 * Math.PI);
-                if (turns > Entries.MAX_STEPS) {
-                    continue;
-                }
-                Vec2 from = c.plus(s.minus(c).rotated(loopCcw ? -part : part));
-                return new Helix(from, c, loopCcw, turns);
             }
         }
         return null;
+    }
+
+    /** A helix about c of radius r ending at s after want mm, or null where the finishing offset does not hold it. */
+    private static Helix helixAbout(Vec2 c, double r, boolean ccw, Vec2 s, double want, Level finishing) {
+        if (!holds(finishing, c, r)) {
+            return null;
+        }
+        double sweep = want / r;
+        int turns = (int) Math.floor(sweep / (2 * Math.PI));
+        double part = Math.max(HELIX_LEAST_PART_TURN_RAD, sweep - turns * 2 * Math.PI);
+        if (turns > Entries.MAX_STEPS) {
+            return null;
+        }
+        return new Helix(c.plus(s.minus(c).rotated(ccw ? -part : part)), c, ccw, turns);
     }
 
     /** Whether the circle of tool centres about c lies inside the finishing offset's region. */
