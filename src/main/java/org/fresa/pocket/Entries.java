@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Optional;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Curve2;
+import org.fresa.geom.EnclosingCircle;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Vec2;
 
@@ -32,6 +33,15 @@ public final class Entries {
 
     private static final double[] HELIX_RADII = {1, 0.75, 0.5};
 
+    /**
+     * The uncut core of a cutter that does not cut at its centre, as a fraction of its radius: the
+     * helix entries' least radius is the same figure.
+     */
+    public static final double CORE_OF_RADIUS = 0.5;
+
+    /** Directions a straight zig-zag down may take (the first along +X, then round counter-clockwise). */
+    private static final int ZIGZAG_DIRECTIONS = 16;
+
     private Entries() {}
 
     /** Whether a circle of tool-centre positions lies where the tool may cut (inside the region to clear). */
@@ -45,6 +55,97 @@ public final class Entries {
 
         /** No room for a helix anywhere. */
         Room NONE = (c, r) -> false;
+    }
+
+    /** Whether the straight course of the tool centre from a to b stays where the tool may cut. */
+    @FunctionalInterface
+    public interface Course {
+        boolean holds(Vec2 a, Vec2 b);
+    }
+
+    /**
+     * Whether a ramp along this course moves the tool's centre far enough for a cutter that does
+     * not cut at its centre: a point within half the tool radius of every centre position stays
+     * under the uncut core all the way down, as under a helix narrower than half the radius
+     * (which the entries refuse). A course round a loop a few tenths of a millimetre across, or
+     * forth and back along a cut shorter than the tool radius, is a plunge in all but name.
+     */
+    public static boolean movesTheCentre(List<Curve2> course, double toolRadiusMm) {
+        List<Vec2> points = new ArrayList<>();
+        // the course repeats its loop round by round: the first rounds hold every point of it
+        for (Curve2 c : course.subList(0, Math.min(course.size(), 512))) {
+            for (int k = 0; k < 8; k++) {
+                points.add(c.pointAt(k / 8.0));
+            }
+            points.add(c.end());
+        }
+        return EnclosingCircle.radiusMm(points) >= CORE_OF_RADIUS * toolRadiusMm - 1e-9;
+    }
+
+    /**
+     * The course down to a loop's start for the region engine: its ramp round the loop where that
+     * moves the centre ({@link #movesTheCentre}) or the tool cuts at its centre, else a straight
+     * zig-zag of one tool radius ending at the start ({@link #zigzagLeg}), as many rounds as the
+     * angle needs (1 % more, so that Z rounded to the micrometre is never steeper).
+     *
+     * @param rule what is allowed
+     * @param course the ramp round the loop, ending at its start
+     * @param start the loop's start (mm)
+     * @param inside where the tool centre may run straight
+     * @param toolRadiusMm the cutter's radius
+     * @param descentMm how far the entry goes down
+     * @throws ToolTooLargeException where no zig-zag fits (only a tool that cuts at its centre could go down)
+     */
+    static List<Curve2> keepingTheCoreMoving(
+            EntryRule rule, List<Curve2> course, Vec2 start, Course inside, double toolRadiusMm, double descentMm)
+            throws ToolTooLargeException {
+        if (rule.centreCutting() || movesTheCentre(course, toolRadiusMm)) {
+            return course;
+        }
+        Optional<Segment2> leg = zigzagLeg(start, inside, toolRadiusMm);
+        double want = 1.01 * descentMm / Math.tan(Math.toRadians(rule.angleDeg()));
+        double lengthMm = zigzagLengthMm(toolRadiusMm);
+        int rounds = Math.max(1, (int) Math.ceil(want / (2 * lengthMm) - 1e-9));
+        if (leg.isEmpty() || rounds > MAX_STEPS) {
+            throw tooSmallToGoDown(start);
+        }
+        List<Curve2> out = new ArrayList<>();
+        for (int j = 0; j < rounds; j++) {
+            out.add(leg.get());
+            out.add(leg.get().reversed());
+        }
+        return out;
+    }
+
+    /**
+     * A straight leg of one tool radius from the start (its enclosing circle half the radius, a
+     * thousandth more), in the first of sixteen directions whose course stays inside, or none.
+     */
+    static Optional<Segment2> zigzagLeg(Vec2 start, Course inside, double toolRadiusMm) {
+        double lengthMm = zigzagLengthMm(toolRadiusMm);
+        for (int k = 0; k < ZIGZAG_DIRECTIONS; k++) {
+            double a = k * 2 * Math.PI / ZIGZAG_DIRECTIONS;
+            Vec2 e = start.plus(new Vec2(Math.cos(a), Math.sin(a)).times(lengthMm));
+            if (inside.holds(start, e)) {
+                return Optional.of(new Segment2(start, e));
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static double zigzagLengthMm(double toolRadiusMm) {
+        return 2 * CORE_OF_RADIUS * toolRadiusMm * 1.001;
+    }
+
+    /** The refusal where a cutter that does not cut at its centre has no way down, naming the place. */
+    static ToolTooLargeException tooSmallToGoDown(Vec2 at) {
+        return new ToolTooLargeException(String.format(
+                java.util.Locale.ROOT,
+                "the area about X%.3f Y%.3f is too small to go down into with a cutter that does not cut at its centre"
+                        + " (no helix or ramp there moves its centre by half its radius): a centre-cutting tool"
+                        + " (--centre-cutting) may go down there, or use a smaller tool",
+                at.x(),
+                at.y()));
     }
 
     /**

@@ -5,7 +5,6 @@ import java.util.List;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
-import org.fresa.geom.EnclosingCircle;
 import org.fresa.geom.Intersections;
 import org.fresa.geom.Segment2;
 import org.fresa.geom.Tolerance;
@@ -51,11 +50,6 @@ public final class RegionPocket {
     private static final Tolerance TOL = Tolerance.DEFAULT;
     private static final Vec3 Z = new Vec3(0, 0, 1);
     private static final double CLEARANCE_MM = 5;
-    /**
-     * The uncut core of a cutter that does not cut at its centre, as a fraction of its radius: the
-     * helix entries' least radius (docs/entries.md) is the same figure.
-     */
-    static final double CORE_OF_RADIUS = 0.5;
 
     /** One offset level: its distance from the region boundary and its loops (faces CCW, holes CW). */
     public record Level(double offsetMm, List<Contour> loops) {
@@ -546,8 +540,9 @@ public final class RegionPocket {
                     List<Curve2> down = entry.kind() == EntryRule.Kind.PLUNGE || helix != null
                             ? List.of()
                             : rampPath(loop, above - z, entry.angleDeg());
-                    if (!down.isEmpty() && !entry.centreCutting() && !movesTheCentre(down, t.radiusMm())) {
-                        down = zigzagRamp(loop, finishing, t.radiusMm(), above - z, entry.angleDeg());
+                    if (!down.isEmpty()) {
+                        down = Entries.keepingTheCoreMoving(
+                                entry, down, s, (a, b) -> inside(finishing, a, b), t.radiusMm(), above - z);
                     }
                     Vec2 from = helix != null
                             ? helix.from()
@@ -579,61 +574,6 @@ public final class RegionPocket {
         ToolpathSection section = new ToolpathSection(
                 "pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(), new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
-    }
-
-    /**
-     * Whether a ramp along this course moves the tool's centre far enough for a cutter that does
-     * not cut at its centre: a point within half the tool radius of every centre position stays
-     * under the uncut core all the way down, as under a helix narrower than half the radius
-     * (which the entries refuse). A course round a loop a few tenths of a millimetre across is a
-     * plunge in all but name.
-     */
-    static boolean movesTheCentre(List<Curve2> course, double toolRadiusMm) {
-        List<Vec2> points = new ArrayList<>();
-        // the course repeats its loop round by round: the first rounds hold every point of it
-        for (Curve2 c : course.subList(0, Math.min(course.size(), 512))) {
-            for (int k = 0; k < 8; k++) {
-                points.add(c.pointAt(k / 8.0));
-            }
-            points.add(c.end());
-        }
-        return EnclosingCircle.radiusMm(points) >= CORE_OF_RADIUS * toolRadiusMm - 1e-9;
-    }
-
-    /**
-     * A straight zig-zag down to a loop's start where a ramp round the loop would not move the
-     * centre ({@link #movesTheCentre}): back and forth along a segment of one tool radius (its
-     * enclosing circle half the radius) ending at the start, in the first of sixteen directions
-     * whose segment keeps the centre inside the finishing offset. None: the pocket is refused there,
-     * since only a tool that cuts at its centre could go down.
-     */
-    static List<Curve2> zigzagRamp(
-            Contour loop, Level finishing, double toolRadiusMm, double descentMm, double angleDeg)
-            throws ToolTooLargeException {
-        Vec2 s = loop.get(0).start();
-        double lengthMm = 2 * CORE_OF_RADIUS * toolRadiusMm * 1.001;
-        double want = 1.01 * descentMm / Math.tan(Math.toRadians(angleDeg));
-        int rounds = Math.max(1, (int) Math.ceil(want / (2 * lengthMm) - 1e-9));
-        for (int k = 0; k < 16; k++) {
-            double a = k * Math.PI / 8;
-            Vec2 e = s.plus(new Vec2(Math.cos(a), Math.sin(a)).times(lengthMm));
-            if (!inside(finishing, s, e) || rounds > Entries.MAX_STEPS) {
-                continue;
-            }
-            List<Curve2> out = new ArrayList<>();
-            for (int j = 0; j < rounds; j++) {
-                out.add(new Segment2(s, e));
-                out.add(new Segment2(e, s));
-            }
-            return out;
-        }
-        throw new ToolTooLargeException(String.format(
-                java.util.Locale.ROOT,
-                "the area about X%.3f Y%.3f is too small to go down into with a cutter that does not cut at its centre"
-                        + " (no helix or ramp there moves its centre by half its radius): a centre-cutting tool"
-                        + " (--centre-cutting) may go down there, or use a smaller tool",
-                s.x(),
-                s.y()));
     }
 
     /** Whether the straight course a to b keeps the tool centre inside the finishing offset's region. */

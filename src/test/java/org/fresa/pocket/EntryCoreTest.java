@@ -88,7 +88,7 @@ class EntryCoreTest {
 
     /** The first descending course whose centre stays within half the radius, or null. */
     static String narrowestEntry(ToolpathSection s, double radiusMm) {
-        double need = RegionPocket.CORE_OF_RADIUS * radiusMm - 1e-6;
+        double need = Entries.CORE_OF_RADIUS * radiusMm - 1e-6;
         Vec3 at = s.start();
         List<Vec2> run = new ArrayList<>();
         for (Move m : s.moves()) {
