@@ -21,7 +21,10 @@ import org.fresa.geom.Vec2;
  * away, then at the start itself: the tool then joins the helix's circle level at the top and
  * comes back to the start at depth). The ramp: legs of
  * {@code H / n} along the cut, H = depth / tan(angle), n the smallest even number for which a
- * leg is no longer than the cut.
+ * leg is no longer than the cut; for a cutter that does not cut at its centre, legs that move its
+ * centre by half its radius ({@link #movesTheCentre}), run on along the path followed at depth
+ * where the cut is shorter, else a straight zig-zag of one radius, else none. The region engine
+ * takes the same rule ({@link #keepingTheCoreMoving}).
  */
 public final class Entries {
 
@@ -79,7 +82,15 @@ public final class Entries {
             }
             points.add(c.end());
         }
-        return EnclosingCircle.radiusMm(points) >= CORE_OF_RADIUS * toolRadiusMm - 1e-9;
+        return movesTheCentreOver(points, toolRadiusMm);
+    }
+
+    /**
+     * {@link #movesTheCentre} for the tool centre's positions along a descent: their smallest
+     * enclosing circle is at least {@link #CORE_OF_RADIUS} of the tool radius.
+     */
+    public static boolean movesTheCentreOver(List<Vec2> centres, double toolRadiusMm) {
+        return EnclosingCircle.radiusMm(centres) >= CORE_OF_RADIUS * toolRadiusMm - 1e-9;
     }
 
     /**
@@ -138,7 +149,7 @@ public final class Entries {
     }
 
     /** The refusal where a cutter that does not cut at its centre has no way down, naming the place. */
-    static ToolTooLargeException tooSmallToGoDown(Vec2 at) {
+    public static ToolTooLargeException tooSmallToGoDown(Vec2 at) {
         return new ToolTooLargeException(String.format(
                 java.util.Locale.ROOT,
                 "the area about X%.3f Y%.3f is too small to go down into with a cutter that does not cut at its centre"
@@ -163,6 +174,33 @@ public final class Entries {
      */
     public static Optional<Entry> choose(
             EntryRule rule, Vec2 start, List<Curve2> cut, boolean ccw, Room room, double toolRadiusMm, double depthMm) {
+        return choose(rule, start, cut, List.of(), ccw, room, room, toolRadiusMm, depthMm);
+    }
+
+    /**
+     * The entry of a cut that the tool follows at depth by more path: for a cutter that does not
+     * cut at its centre, a ramp whose legs along the cut alone would not move the centre by half
+     * the radius ({@link #movesTheCentre}) runs its legs on along that path until they do, else
+     * zig-zags along a straight leg of one radius inside the room ({@link #zigzagLeg}); where
+     * neither fits there is no entry.
+     *
+     * @param onwards the path the tool follows at depth after the cut (the passes joined to it
+     *     at depth with their links, may be empty), so that the cut and it are one chain
+     * @param room where a helix may lie
+     * @param legRoom where a straight zig-zag's leg may run (the region the cuts clear; a post
+     *     that writes no helix still has room for a leg)
+     * @see #choose(EntryRule, Vec2, List, boolean, Room, double, double)
+     */
+    public static Optional<Entry> choose(
+            EntryRule rule,
+            Vec2 start,
+            List<Curve2> cut,
+            List<Curve2> onwards,
+            boolean ccw,
+            Room room,
+            Room legRoom,
+            double toolRadiusMm,
+            double depthMm) {
         if (rule.kind() == EntryRule.Kind.PLUNGE) {
             return Optional.of(new Entry.Plunge(start));
         }
@@ -177,7 +215,9 @@ public final class Entries {
         if (helix.isPresent()) {
             return helix;
         }
-        Optional<Entry> ramp = ramp(cut, horizontal);
+        Optional<Entry> ramp = rule.centreCutting()
+                ? ramp(cut, horizontal)
+                : rampMovingTheCentre(start, cut, onwards, legRoom, toolRadiusMm, horizontal);
         if (ramp.isPresent()) {
             return ramp;
         }
@@ -234,6 +274,90 @@ public final class Entries {
             }
         }
         return Vec2.UNIT_X;
+    }
+
+    /**
+     * A ramp for a cutter that does not cut at its centre: the legs along the cut where they move
+     * the centre by half the radius, else run on along the cut and the path onwards just far
+     * enough that they do (a thousandth more, for the program's rounding), else a zig-zag of one
+     * radius inside the room.
+     */
+    private static Optional<Entry> rampMovingTheCentre(
+            Vec2 start, List<Curve2> cut, List<Curve2> onwards, Room room, double toolRadiusMm, double horizontalMm) {
+        Optional<Entry> along = ramp(cut, horizontalMm);
+        double legMm = 0;
+        if (along.isPresent() && along.get() instanceof Entry.Ramp r) {
+            if (movesTheCentre(r.leg(), toolRadiusMm)) {
+                return along;
+            }
+            legMm = r.legLengthMm();
+        }
+        List<Curve2> path = new ArrayList<>(cut);
+        path.addAll(onwards);
+        double need = shortestMovingTheCentre(path, toolRadiusMm * ROUNDING_MARGIN);
+        if (need >= 0) {
+            Optional<Entry> longer = legs(prefix(path, Math.max(legMm, need)), horizontalMm);
+            if (longer.isPresent()) {
+                return longer;
+            }
+        }
+        return zigzagLeg(start, straight(room), toolRadiusMm).flatMap(leg -> legs(List.of(leg), horizontalMm));
+    }
+
+    /** A thousandth more than half the radius: rounding the program's coordinates never makes it less. */
+    private static final double ROUNDING_MARGIN = 1.001;
+
+    /**
+     * The length of the shortest start of the path along which the centre moves by half the
+     * radius ({@link #movesTheCentre}), or -1 when the whole path does not.
+     */
+    private static double shortestMovingTheCentre(List<Curve2> path, double toolRadiusMm) {
+        double length = path.stream().mapToDouble(Curve2::length).sum();
+        if (!(length >= MIN_LEG_MM) || !movesTheCentre(prefix(path, length), toolRadiusMm)) {
+            return -1;
+        }
+        // the enclosing circle only grows along the path
+        double lo = 0;
+        double hi = length;
+        while (hi - lo > 1e-4) {
+            double mid = (lo + hi) / 2;
+            if (movesTheCentre(prefix(path, mid), toolRadiusMm)) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        return hi;
+    }
+
+    /** Forth and back along the leg, as many legs (an even number) as the angle needs. */
+    private static Optional<Entry> legs(List<Curve2> leg, double horizontalMm) {
+        double length = leg.stream().mapToDouble(Curve2::length).sum();
+        if (leg.isEmpty() || !(length >= MIN_LEG_MM)) {
+            return Optional.empty();
+        }
+        double n = 2 * Math.ceil(horizontalMm / (2 * length) - 1e-12);
+        int legs = (int) Math.max(2, n);
+        if (!(n <= MAX_STEPS) || (long) legs * leg.size() > MAX_STEPS) {
+            return Optional.empty();
+        }
+        return Optional.of(new Entry.Ramp(leg, legs));
+    }
+
+    /**
+     * Whether a straight course keeps the tool centre where the room allows: points every 0.05 mm,
+     * each farther inside than half the spacing, so that the course between two cannot leave.
+     */
+    private static Course straight(Room room) {
+        return (a, b) -> {
+            int n = Math.max(1, (int) Math.ceil(a.distance(b) / 0.05));
+            for (int k = 1; k <= n; k++) {
+                if (!room.holds(a.plus(b.minus(a).times((double) k / n)), 0.6 * a.distance(b) / n)) {
+                    return false;
+                }
+            }
+            return true;
+        };
     }
 
     /** Legs along the first H/n of the cut, n even and as small as the cut's length allows. */

@@ -77,13 +77,17 @@ public final class PocketToolpath {
                     double above = entryTop(t, j);
                     moves.add(new Move.Rapid(at(s, above)));
                     // no straight feed down at all: a helix or a zig-zag ramp within the entry angle
-                    Entry entry = Entries.choose(rule, s, chain(pieces), climb, room, t.radiusMm(), above - z)
-                            .orElseThrow(() -> new ToolTooLargeException(String.format(
-                                    java.util.Locale.ROOT,
-                                    "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
-                                            + " tool (--centre-cutting) may plunge there",
-                                    s.x(),
-                                    s.y())));
+                    Entry entry = Entries.choose(
+                                    rule,
+                                    s,
+                                    chain(pieces),
+                                    onwards(milled, passes, k),
+                                    climb,
+                                    room,
+                                    room,
+                                    t.radiusMm(),
+                                    above - z)
+                            .orElseThrow(() -> Entries.tooSmallToGoDown(s));
                     moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
                 for (PassPiece pc : pieces) {
@@ -103,6 +107,24 @@ public final class PocketToolpath {
         return new Toolpath(List.of(section));
     }
 
+    /**
+     * What the tool follows at depth after pass k: the passes joined to it outward, each by a
+     * straight link from where the one before ends (a ramp's legs may run on along it).
+     */
+    private static List<Curve2> onwards(List<PocketPass> milled, List<List<PassPiece>> passes, int k) {
+        List<Curve2> out = new ArrayList<>();
+        for (int i = k + 1; i < milled.size() && milled.get(i - 1).linksOutwardTo(milled.get(i)); i++) {
+            List<PassPiece> before = passes.get(i - 1);
+            List<PassPiece> next = passes.get(i);
+            if (before.isEmpty() || next.isEmpty()) {
+                break;
+            }
+            add(out, before.get(before.size() - 1).end(), next.get(0).start());
+            out.addAll(chain(next));
+        }
+        return out;
+    }
+
     /** Above the stock before the first layer (mm): its top face is as delivered. */
     static final double ABOVE_STOCK_MM = 1;
 
@@ -120,10 +142,14 @@ public final class PocketToolpath {
     }
 
     /**
-     * Where a helix may lie: inside the loop of a milled pass, everything inside which is cleared
-     * at every depth; inside the finishing pass only as far as the finishing allowance stays.
+     * Where a helix (or a straight zig-zag's leg) may lie: inside the loop of a milled pass,
+     * everything inside which is cleared at every depth; inside the finishing pass only as far as
+     * the finishing allowance stays.
+     *
+     * @param milled the passes as milled
+     * @param allowanceMm the finishing allowance (mm)
      */
-    private static Entries.Room room(List<PocketPass> milled, double allowanceMm) {
+    public static Entries.Room room(List<PocketPass> milled, double allowanceMm) {
         List<Contour> loops = new ArrayList<>();
         List<Double> margins = new ArrayList<>();
         for (PocketPass p : milled) {

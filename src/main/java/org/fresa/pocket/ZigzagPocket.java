@@ -2,7 +2,6 @@ package org.fresa.pocket;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
@@ -459,7 +458,8 @@ public final class ZigzagPocket {
             Vec2 cursor = null;
             // what this layer has cut so far: a link through it stays down
             Coverage cleared = Coverage.of(finishing, List.of(), t.radiusMm(), RegionPocket.COVERAGE_CELL_MM);
-            for (Cut cut : order) {
+            for (int i = 0; i < order.size(); i++) {
+                Cut cut = order.get(i);
                 Vec2 s = cut.start();
                 double feed = cut.finishing() ? t.finishFeedMmPerMin() : t.feedMmPerMin();
                 if (cursor != null
@@ -470,13 +470,17 @@ public final class ZigzagPocket {
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
                     moves.add(new Move.Rapid(at(s, above)));
-                    Entry entry = Entries.choose(rule, s, cut.curves(), climb, room, t.radiusMm(), above - z)
-                            .orElseThrow(() -> new ToolTooLargeException(String.format(
-                                    Locale.ROOT,
-                                    "no room for a helix or a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting"
-                                            + " tool (--centre-cutting) may plunge there",
-                                    s.x(),
-                                    s.y())));
+                    Entry entry = Entries.choose(
+                                    rule,
+                                    s,
+                                    cut.curves(),
+                                    onwards(order, i, finish, t),
+                                    climb,
+                                    room,
+                                    room,
+                                    t.radiusMm(),
+                                    above - z)
+                            .orElseThrow(() -> Entries.tooSmallToGoDown(s));
                     moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
                 for (Curve2 c : cut.curves()) {
@@ -494,6 +498,31 @@ public final class ZigzagPocket {
         ToolpathSection section = new ToolpathSection(
                 "pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(), new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
+    }
+
+    /**
+     * What the tool surely follows at depth after cut i: the cuts after it joined by a straight
+     * feed inside the finishing offset ({@link RegionPocket#feedLink}, which stays down whatever
+     * the layer has cut), with their links, as far as a ramp's legs could need (the tool's
+     * diameter, 4 times over).
+     */
+    private static List<Curve2> onwards(List<Cut> order, int i, RegionPocket.Level finish, PocketTechnology t) {
+        List<Curve2> out = new ArrayList<>();
+        double length = 0;
+        for (int j = i + 1; j < order.size() && length < 4 * t.toolDiameterMm(); j++) {
+            Vec2 from = order.get(j - 1).end();
+            Vec2 to = order.get(j).start();
+            if (!RegionPocket.feedLink(from, to, finish, 2 * t.toolDiameterMm())) {
+                break;
+            }
+            if (from.distance(to) > 1e-9) {
+                out.add(new Segment2(from, to));
+            }
+            out.addAll(order.get(j).curves());
+            length += from.distance(to)
+                    + order.get(j).curves().stream().mapToDouble(Curve2::length).sum();
+        }
+        return out;
     }
 
     private static Vec3 at(Vec2 p, double z) {

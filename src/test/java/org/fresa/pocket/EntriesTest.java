@@ -62,15 +62,75 @@ class EntriesTest {
                         Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
     }
 
+    static final EntryRule CENTRE_CUTTING = new EntryRule(EntryRule.Kind.AUTO, 3, true);
+
     @Test
-    void withoutRoomForAHelixTheRampTurnsBackAndForthAlongTheShortCut() {
-        Entry e = Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
+    void withoutRoomForAHelixACentreCuttingToolRampsBackAndForthAlongTheShortCut() {
+        Entry e = Entries.choose(CENTRE_CUTTING, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
                 .orElseThrow();
         Entry.Ramp r = assertInstanceOf(Entry.Ramp.class, e);
         List<Move> moves = r.moves(0, -3, 300);
         // 3 / tan(3 deg) = 57.2 mm of travel along a cut of 2.7 mm: 22 legs
         assertAll(
                 () -> assertEquals(22, r.legs()),
+                () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
+                () -> assertEquals(
+                        Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
+    }
+
+    @Test
+    void aCutShorterThanTheToolRadiusIsNoRampForACutterThatDoesNotCutAtItsCentre() {
+        // forth and back along 1.35 mm, the centre within 0.675 mm: the 2.5 mm core is plunged
+        assertFalse(Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, true, Entries.Room.NONE, 5, 3)
+                .isPresent());
+    }
+
+    @Test
+    void theLegsRunOnAlongThePathFollowedAtDepthUntilTheyMoveTheCentre() {
+        List<Curve2> onwards = List.of(Segment2.of(0, 0, 0, 20));
+        Entry.Ramp r = assertInstanceOf(
+                Entry.Ramp.class,
+                Entries.choose(
+                                EntryRule.DEFAULT,
+                                Vec2.ZERO,
+                                SHORT_CUT,
+                                onwards,
+                                true,
+                                Entries.Room.NONE,
+                                Entries.Room.NONE,
+                                5,
+                                3)
+                        .orElseThrow());
+        List<Move> moves = r.moves(0, -3, 300);
+        // the shortest start of the path whose centre positions span a circle of 2.5 mm (a thousandth more)
+        List<Vec2> course = new java.util.ArrayList<>(List.of(Vec2.ZERO));
+        moves.forEach(m -> course.add(m.end().xy()));
+        assertAll(
+                () -> assertTrue(Entries.movesTheCentreOver(course, 5)),
+                () -> assertTrue(r.legLengthMm() < 2.7 + 5.1, r.legLengthMm() + " mm"),
+                () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
+                () -> assertEquals(
+                        Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));
+    }
+
+    @Test
+    void whereThePathIsShortTooTheRampZigzagsOneRadiusInsideTheRoom() {
+        // the region cleared lies above the line through the start (y >= 0)
+        Entries.Room above = (c, r) -> c.y() - r > -1e-9 && Math.abs(c.x()) < 20;
+        Entry.Ramp r = assertInstanceOf(
+                Entry.Ramp.class,
+                Entries.choose(EntryRule.DEFAULT, Vec2.ZERO, SHORT_CUT, List.of(), true, Entries.Room.NONE, above, 5, 3)
+                        .orElseThrow());
+        List<Move> moves = r.moves(0, -3, 300);
+        assertAll(
+                () -> assertEquals(5.005, r.legLengthMm(), 1e-9),
+                // the first of sixteen directions from +X whose course keeps off that line by more
+                // than half its sampling step (0.6 of it): 45 deg
+                () -> assertEquals(
+                        Math.PI / 4,
+                        Math.atan2(
+                                r.leg().get(0).end().y(), r.leg().get(0).end().x()),
+                        1e-9),
                 () -> assertTrue(steepestDeg(Vec2.ZERO, 0, moves) <= 3 + 1e-9),
                 () -> assertEquals(
                         Vec3.of(Vec2.ZERO, -3), moves.get(moves.size() - 1).end()));

@@ -88,7 +88,25 @@ class EntryCoreTest {
 
     /** The first descending course whose centre stays within half the radius, or null. */
     static String narrowestEntry(ToolpathSection s, double radiusMm) {
-        double need = Entries.CORE_OF_RADIUS * radiusMm - 1e-6;
+        for (List<Vec2> run : descents(s)) {
+            if (!Entries.movesTheCentreOver(run, radiusMm)) {
+                return String.format(
+                        Locale.ROOT,
+                        "a ramp within %.3f mm about X%.3f Y%.3f",
+                        EnclosingCircle.radiusMm(run),
+                        run.get(0).x(),
+                        run.get(0).y());
+            }
+        }
+        return null;
+    }
+
+    /**
+     * The tool centre's positions seen from above along each run of feed moves that go down (a
+     * helix or a ramp along an arc sampled 64 times a turn's sweep).
+     */
+    static List<List<Vec2>> descents(ToolpathSection s) {
+        List<List<Vec2>> out = new ArrayList<>();
         Vec3 at = s.start();
         List<Vec2> run = new ArrayList<>();
         for (Move m : s.moves()) {
@@ -102,12 +120,15 @@ class EntryCoreTest {
                 Vec2 from = new Vec2(at.x(), at.y()).minus(centre);
                 Vec2 to = new Vec2(c.end().x(), c.end().y()).minus(centre);
                 double a0 = Math.atan2(from.y(), from.x());
-                double sweep = Math.atan2(to.y(), to.x()) - a0;
-                if (c.ccw()) {
-                    sweep = (sweep % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI) + 2 * Math.PI * c.turns();
-                } else {
-                    sweep = -((-sweep % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI)) - 2 * Math.PI * c.turns();
+                double part = Math.atan2(to.y(), to.x()) - a0;
+                part = c.ccw()
+                        ? (part % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI)
+                        : (-part % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI);
+                if (part < 1e-9 && from.distance(to) < 1e-9) {
+                    // ending where it began: one whole turn (a helix of one turn)
+                    part = 2 * Math.PI;
                 }
+                double sweep = (part + 2 * Math.PI * c.turns()) * (c.ccw() ? 1 : -1);
                 double r = from.norm();
                 for (int k = 1; k <= 64; k++) {
                     double a = a0 + sweep * k / 64;
@@ -119,19 +140,14 @@ class EntryCoreTest {
                 }
                 run.add(new Vec2(m.end().x(), m.end().y()));
             } else if (!run.isEmpty()) {
-                double r = EnclosingCircle.radiusMm(run);
-                if (r < need) {
-                    return String.format(
-                            Locale.ROOT,
-                            "a ramp within %.3f mm about X%.3f Y%.3f",
-                            r,
-                            run.get(0).x(),
-                            run.get(0).y());
-                }
-                run.clear();
+                out.add(run);
+                run = new ArrayList<>();
             }
             at = m.end();
         }
-        return null;
+        if (!run.isEmpty()) {
+            out.add(run);
+        }
+        return out;
     }
 }

@@ -13,6 +13,7 @@ import org.fresa.pocket.PassPiece;
 import org.fresa.pocket.PocketPass;
 import org.fresa.pocket.PocketPlan;
 import org.fresa.pocket.PocketTechnology;
+import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.ToolTooLargeException;
 
 /**
@@ -118,7 +119,7 @@ public final class Sinumerik7MPost {
         if (mode == Mode.COMPAT) {
             add(blocks, "G01 G91 Z" + str(-(zp + 5000)) + "F" + str(feed));
         } else {
-            enter(blocks, milled.get(0), 1, lv, feed, t);
+            enter(blocks, milled, 0, 1, lv, feed, t);
         }
         int firstCut = blocks.size();
         emitContours(blocks, plan, 1, lv, feed);
@@ -136,7 +137,7 @@ public final class Sinumerik7MPost {
                 add(blocks, "G00 G91 Z" + str(lv.belowTopUm(j - 1) + 20000));
                 add(blocks, "G90 X" + str(um(s0.x())) + " Y" + str(um(s0.y())));
                 add(blocks, "G91 Z -15000");
-                enter(blocks, milled.get(0), j, lv, feed, t);
+                enter(blocks, milled, 0, j, lv, feed, t);
                 emitContours(blocks, plan, j, lv, feed);
             }
         }
@@ -166,8 +167,10 @@ public final class Sinumerik7MPost {
      * as incremental G01 X Y Z blocks between micrometre points (no drift), the roughing feed
      * on the first; the next contour block returns to G90.
      */
-    private void enter(List<Block> blocks, PocketPass pass, int depth, Levels lv, long feed, PocketTechnology t)
+    private void enter(
+            List<Block> blocks, List<PocketPass> milled, int k, int depth, Levels lv, long feed, PocketTechnology t)
             throws ToolTooLargeException {
+        PocketPass pass = milled.get(k);
         long top = -lv.belowTopUm(depth - 1) + 1000;
         long bottom = -lv.belowTopUm(depth);
         add(blocks, "G00 G91 Z" + str(top - 5000));
@@ -176,7 +179,15 @@ public final class Sinumerik7MPost {
                 : entry;
         Vec2 s = pass.start();
         Entry e = Entries.choose(
-                        rule, s, chords(pass.pieces()), climb, Entries.Room.NONE, t.radiusMm(), (top - bottom) / 1000.0)
+                        rule,
+                        s,
+                        chords(pass.pieces()),
+                        onwards(milled, k),
+                        climb,
+                        Entries.Room.NONE,
+                        PocketToolpath.room(milled, t.finishFraction() * t.toolDiameterMm()),
+                        t.radiusMm(),
+                        (top - bottom) / 1000.0)
                 .orElseThrow(() -> new ToolTooLargeException(String.format(
                         java.util.Locale.ROOT,
                         "no room for a ramp to enter the pocket at X%.3f Y%.3f: a centre-cutting tool"
@@ -226,6 +237,23 @@ public final class Sinumerik7MPost {
             throw new ToolTooLargeException("the ramp to enter the pocket at X" + s.x() + " Y" + s.y()
                     + " does not reach the depth in " + Entries.MAX_STEPS + " rounds");
         }
+    }
+
+    /**
+     * What the tool follows at depth after pass k: the passes joined to it outward, each by a
+     * straight link from where the one before ends (a ramp's legs may run on along it).
+     */
+    private static List<Curve2> onwards(List<PocketPass> milled, int k) {
+        List<Curve2> out = new ArrayList<>();
+        for (int i = k + 1; i < milled.size() && milled.get(i - 1).linksOutwardTo(milled.get(i)); i++) {
+            List<PassPiece> before = milled.get(i - 1).pieces();
+            Vec2 from = before.get(before.size() - 1).end();
+            if (from.distance(milled.get(i).start()) > 1e-9) {
+                out.add(new Segment2(from, milled.get(i).start()));
+            }
+            out.addAll(chords(milled.get(i).pieces()));
+        }
+        return out;
     }
 
     /** The pass as the 7M cuts it, its arcs as chords within {@link #RAMP_CHORD_MM} (for the ramp legs). */
@@ -278,7 +306,7 @@ public final class Sinumerik7MPost {
                     if (mode == Mode.COMPAT) {
                         add(blocks, "G01 Z -" + (lv.stepUm() + 5000));
                     } else {
-                        enter(blocks, pass, depth, lv, feed, t);
+                        enter(blocks, milled, k, depth, lv, feed, t);
                     }
                     modal[0] = "G01";
                     afterPlunge[0] = true;
