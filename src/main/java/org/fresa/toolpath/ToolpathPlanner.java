@@ -370,25 +370,56 @@ public final class ToolpathPlanner {
                             filleted(p.contour(tol), f.orthogonalRadiusMm().getAsDouble(), tol),
                             ContourOffsetter.EXACT);
                 }
-                if (!f.bosses().isEmpty()) {
-                    local = BossPockets.section(
+                Profile outline = p;
+                Transform3 frame = place;
+                Transform3 profileFrame = pp;
+                Heights heights = h;
+                FilletedFloor.Above above = !f.bosses().isEmpty()
+                        ? at -> BossPockets.section(
+                                label,
+                                outline,
+                                f,
+                                frame,
+                                op,
+                                at,
+                                tooling,
+                                stepover(op, tooling),
+                                axial,
+                                // counter-clockwise loops, as the same pocket without bosses turns
+                                !clockwise(op),
+                                tol,
+                                holes.choices().entry(),
+                                problems)
+                        : at -> pocket(
+                                label,
+                                outline,
+                                op,
+                                at,
+                                tooling,
+                                profileFrame,
+                                tol,
+                                holes.choices().entry());
+                double rho = filletBeyondCorner(f, tool, "pocket", tol);
+                if (rho > 0) {
+                    // the cutter's corner cannot follow the floor's fillet: the fillet by Z-levels
+                    List<Contour> islands = BossPockets.islands(f, "pocket", place, h, tol);
+                    boolean boss = !islands.isEmpty();
+                    local = FilletedFloor.section(
                             label,
-                            p,
-                            f,
-                            place,
-                            op,
-                            h,
+                            org.fresa.pocket.RegionOffsetter.oriented(p.contour(tol), islands),
+                            rho,
+                            heights,
                             tooling,
                             stepover(op, tooling),
                             axial,
-                            // counter-clockwise loops, as the same pocket without bosses turns
+                            boss ? 0 : sideAllowanceMm(op),
+                            boss ? 0 : bottomAllowanceMm(op),
                             !clockwise(op),
-                            tol,
                             holes.choices().entry(),
-                            problems);
+                            tol,
+                            above);
                 } else {
-                    local = pocket(
-                            label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                    local = above.plan(h);
                 }
             }
             case ROUND_HOLE -> {
@@ -589,6 +620,29 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * How much of the floor's fillet (planar_radius) the cutter's corner (edge_radius) cannot
+     * follow (mm): 0 when the corner leaves the fillet as drawn (or there is none), the fillet
+     * less the corner when it is the larger.
+     *
+     * @throws UnsupportedOperationException when the cutter's corner is larger than the fillet:
+     *     its corner would leave a larger fillet than drawn, material the drawing takes away
+     */
+    static double filletBeyondCorner(Feature f, Tool tool, String what, Tolerance tol) {
+        double rho = f.planarRadiusMm().orElse(0);
+        double edge = tool.edgeRadiusMm().orElse(0);
+        if (!(rho > tol.linear()) || Math.abs(rho - edge) <= tol.linear()) {
+            return 0;
+        }
+        if (edge > rho) {
+            throw new UnsupportedOperationException("the " + what + "'s floor meets its walls in a " + mm(rho)
+                    + " mm radius; a cutter with a " + mm(edge) + " mm corner would leave a " + mm(edge)
+                    + " mm one, material the drawing takes away: a cutter whose corner is at most " + mm(rho)
+                    + " mm mills it");
+        }
+        return rho - edge;
     }
 
     /** A general profile whose chain does not close, closed by a line from its end to its start. */
