@@ -558,8 +558,29 @@ public final class ToolpathPlanner {
                     throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
                             + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side");
                 }
-                if (isThrough(f) || f.depthMm().isEmpty()) {
-                    throw new UnsupportedOperationException("through open pockets are not supported yet");
+                Heights oh = h;
+                if (isThrough(f)) {
+                    if (!f.bosses().isEmpty()) {
+                        throw new UnsupportedOperationException(
+                                "a through open pocket has no floor for its bosses to stand on");
+                    }
+                    // through the block: to its bottom and past it by what a hole's milling cutter goes
+                    if (holes.program()
+                            .workpieceOf(f)
+                            .flatMap(org.fresa.stepnc.Workpiece::block)
+                            .isEmpty()) {
+                        throw new IllegalArgumentException("the through open pocket needs the workpiece's BLOCK to"
+                                + " find the bottom of the stock");
+                    }
+                    double stock = stockDepth(holes.program(), f, tol);
+                    double past = throughAllowanceMm(
+                            op, tooling.diameterMm(), holes.choices().breakthroughMm());
+                    oh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - stock - past);
+                    problems.add("workingstep '" + label + "': the through open pocket is cut " + mm(stock + past)
+                            + " mm deep: to the bottom of the workpiece's block (" + mm(stock) + " mm) and "
+                            + mm(past) + " mm past it");
+                } else if (f.depthMm().isEmpty()) {
+                    throw new IllegalArgumentException("the open pocket has no depth plane");
                 }
                 double rho = f.planarRadiusMm().orElse(0);
                 double edge = tool.edgeRadiusMm().orElse(0);
@@ -604,7 +625,7 @@ public final class ToolpathPlanner {
                                 label,
                                 walls,
                                 stock,
-                                h,
+                                oh,
                                 tooling,
                                 stepover(op, tooling),
                                 axial,
