@@ -120,6 +120,21 @@ class FilletedPocketsTest {
     }
 
     @Test
+    void aRoughingLeavesItsAllowancesOffTheFilletToo() throws Exception {
+        // 0.5 mm on the walls, 0.2 mm on the floor: the fillet's passes move off the walls and up
+        String text = Files.readString(PART)
+                .replace(
+                        "'MILL FILLET FLAT',5.000,$,#52,#50,$,$,$,$,$,3.000,3.000,$,$);",
+                        "'MILL FILLET FLAT',5.000,$,#52,#50,$,$,$,$,$,3.000,3.000,0.500,0.200);");
+        ToolpathSection sec = planText(text).toolpath().sections().get(0);
+        DoubleFunction<Geometry> at = pocketAt(FLAT, 8, 3);
+        FeatureVolumeCheck.assertFloor(sec, -7.8, 1e-6);
+        FeatureVolumeCheck.assertInside(sec, SlotProfilesTest.flat(3.5), at);
+        checkFillet(sec, SlotProfilesTest.flat(3.5), at, 8, 3);
+        FeatureVolumeCheck.assertFloorCleared(sec, 3, FLAT.buffer(-3.5 - 0.005, 64));
+    }
+
+    @Test
     void theVolumeCheckSeesACutterWiderThanPlannedCutIntoTheFillet() {
         ToolpathSection sec = section("WS FILLET FLAT");
         double z = -8 + 1.5;
