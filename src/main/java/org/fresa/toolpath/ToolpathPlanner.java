@@ -370,25 +370,56 @@ public final class ToolpathPlanner {
                             filleted(p.contour(tol), f.orthogonalRadiusMm().getAsDouble(), tol),
                             ContourOffsetter.EXACT);
                 }
-                if (!f.bosses().isEmpty()) {
-                    local = BossPockets.section(
+                Profile outline = p;
+                Transform3 frame = place;
+                Transform3 profileFrame = pp;
+                Heights heights = h;
+                FilletedFloor.Above above = !f.bosses().isEmpty()
+                        ? at -> BossPockets.section(
+                                label,
+                                outline,
+                                f,
+                                frame,
+                                op,
+                                at,
+                                tooling,
+                                stepover(op, tooling),
+                                axial,
+                                // counter-clockwise loops, as the same pocket without bosses turns
+                                !clockwise(op),
+                                tol,
+                                holes.choices().entry(),
+                                problems)
+                        : at -> pocket(
+                                label,
+                                outline,
+                                op,
+                                at,
+                                tooling,
+                                profileFrame,
+                                tol,
+                                holes.choices().entry());
+                double rho = filletBeyondCorner(f, tool, "pocket", tol);
+                if (rho > 0) {
+                    // the cutter's corner cannot follow the floor's fillet: the fillet by Z-levels
+                    List<Contour> islands = BossPockets.islands(f, "pocket", place, h, tol);
+                    boolean boss = !islands.isEmpty();
+                    local = FilletedFloor.section(
                             label,
-                            p,
-                            f,
-                            place,
-                            op,
-                            h,
+                            org.fresa.pocket.RegionOffsetter.oriented(p.contour(tol), islands),
+                            rho,
+                            heights,
                             tooling,
                             stepover(op, tooling),
                             axial,
-                            // counter-clockwise loops, as the same pocket without bosses turns
+                            boss ? 0 : sideAllowanceMm(op),
+                            boss ? 0 : bottomAllowanceMm(op),
                             !clockwise(op),
-                            tol,
                             holes.choices().entry(),
-                            problems);
+                            tol,
+                            above);
                 } else {
-                    local = pocket(
-                            label, p, op, h, tooling, pp, tol, holes.choices().entry());
+                    local = above.plan(h);
                 }
             }
             case ROUND_HOLE -> {
@@ -521,14 +552,37 @@ public final class ToolpathPlanner {
             case OPEN_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
                         .orElseThrow(() -> new IllegalArgumentException("the open pocket has no open boundary"));
-                if (!(sp instanceof org.fresa.stepnc.Profile.General g)
-                        || g.closed()
-                        || g.segments().isEmpty()) {
+                boolean general = sp instanceof org.fresa.stepnc.Profile.General g
+                        && !g.closed()
+                        && !g.segments().isEmpty();
+                if (!general && !(sp instanceof org.fresa.stepnc.Profile.U)) {
                     throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
-                            + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side");
+                            + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side, a"
+                            + " SQUARE_U_PROFILE or a ROUNDED_U_PROFILE");
                 }
-                if (isThrough(f) || f.depthMm().isEmpty()) {
-                    throw new UnsupportedOperationException("through open pockets are not supported yet");
+                Heights oh = h;
+                if (isThrough(f)) {
+                    if (!f.bosses().isEmpty()) {
+                        throw new UnsupportedOperationException(
+                                "a through open pocket has no floor for its bosses to stand on");
+                    }
+                    // through the block: to its bottom and past it by what a hole's milling cutter goes
+                    if (holes.program()
+                            .workpieceOf(f)
+                            .flatMap(org.fresa.stepnc.Workpiece::block)
+                            .isEmpty()) {
+                        throw new IllegalArgumentException("the through open pocket needs the workpiece's BLOCK to"
+                                + " find the bottom of the stock");
+                    }
+                    double stock = stockDepth(holes.program(), f, tol);
+                    double past = throughAllowanceMm(
+                            op, tooling.diameterMm(), holes.choices().breakthroughMm());
+                    oh = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), h.topZ() - stock - past);
+                    problems.add("workingstep '" + label + "': the through open pocket is cut " + mm(stock + past)
+                            + " mm deep: to the bottom of the workpiece's block (" + mm(stock) + " mm) and "
+                            + mm(past) + " mm past it");
+                } else if (f.depthMm().isEmpty()) {
+                    throw new IllegalArgumentException("the open pocket has no depth plane");
                 }
                 double rho = f.planarRadiusMm().orElse(0);
                 double edge = tool.edgeRadiusMm().orElse(0);
@@ -541,20 +595,24 @@ public final class ToolpathPlanner {
                             + mm(f.orthogonalRadiusMm().getAsDouble()) + " mm is larger than the tool's radius: the"
                             + " corners would be cut sharper than drawn");
                 }
-                Transform3 pp = g.placement();
+                Transform3 pp = sp.placement();
                 place = place.times(pp);
+                Contour stock = stockOutline(holes.program(), f, place, "open pocket");
                 List<Curve2> walls = new ArrayList<>();
-                for (org.fresa.stepnc.Profile.Segment seg : g.segments()) {
-                    Vec2 a = new Vec2(seg.start().x(), seg.start().y());
-                    Vec2 b = new Vec2(seg.end().x(), seg.end().y());
-                    if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
-                        walls.add(
-                                new Arc2(new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
-                    } else if (a.distance(b) > tol.linear()) {
-                        walls.add(new Segment2(a, b));
+                if (sp instanceof org.fresa.stepnc.Profile.U u) {
+                    walls = uWalls(u, stock, problems, label, tol);
+                } else {
+                    for (org.fresa.stepnc.Profile.Segment seg : ((org.fresa.stepnc.Profile.General) sp).segments()) {
+                        Vec2 a = new Vec2(seg.start().x(), seg.start().y());
+                        Vec2 b = new Vec2(seg.end().x(), seg.end().y());
+                        if (seg instanceof org.fresa.stepnc.Profile.Arc arc) {
+                            walls.add(new Arc2(
+                                    new Vec2(arc.center().x(), arc.center().y()), a, b, arc.ccw()));
+                        } else if (a.distance(b) > tol.linear()) {
+                            walls.add(new Segment2(a, b));
+                        }
                     }
                 }
-                Contour stock = stockOutline(holes.program(), f, place, "open pocket");
                 local = !f.bosses().isEmpty()
                         ? withBosses(
                                 label,
@@ -573,7 +631,7 @@ public final class ToolpathPlanner {
                                 label,
                                 walls,
                                 stock,
-                                h,
+                                oh,
                                 tooling,
                                 stepover(op, tooling),
                                 axial,
@@ -589,6 +647,107 @@ public final class ToolpathPlanner {
         }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * How much of the floor's fillet (planar_radius) the cutter's corner (edge_radius) cannot
+     * follow (mm): 0 when the corner leaves the fillet as drawn (or there is none), the fillet
+     * less the corner when it is the larger.
+     *
+     * @throws UnsupportedOperationException when the cutter's corner is larger than the fillet:
+     *     its corner would leave a larger fillet than drawn, material the drawing takes away
+     */
+    static double filletBeyondCorner(Feature f, Tool tool, String what, Tolerance tol) {
+        double rho = f.planarRadiusMm().orElse(0);
+        double edge = tool.edgeRadiusMm().orElse(0);
+        if (!(rho > tol.linear()) || Math.abs(rho - edge) <= tol.linear()) {
+            return 0;
+        }
+        if (edge > rho) {
+            throw new UnsupportedOperationException("the " + what + "'s floor meets its walls in a " + mm(rho)
+                    + " mm radius; a cutter with a " + mm(edge) + " mm corner would leave a " + mm(edge)
+                    + " mm one, material the drawing takes away: a cutter whose corner is at most " + mm(rho)
+                    + " mm mills it");
+        }
+        return rho - edge;
+    }
+
+    /**
+     * The walls of an open pocket bounded by a U (SQUARE_U_PROFILE or ROUNDED_U_PROFILE) in its
+     * profile frame, with the pocket on their right as an open GENERAL_PROFILE's: the U's bottom
+     * on the frame's x axis, centred on its origin, its sides running along +y out to the stock's
+     * edge, where the open side joins their ends. A square U's corners are rounded by the larger
+     * of its radii (the smaller would let the tool into the other corner's fillet, whichever ISO
+     * 14649-10's first one is).
+     *
+     * @throws UnsupportedOperationException for sides that do not stand square to the bottom, or
+     *     that do not both reach the stock's edge
+     */
+    static List<Curve2> uWalls(
+            org.fresa.stepnc.Profile.U u, Contour stock, List<String> problems, String label, Tolerance tol) {
+        double w = u.widthMm();
+        if (!(w > 0)) {
+            throw new IllegalArgumentException("the open pocket's U has no width");
+        }
+        boolean rounded = u.entity().equals("ROUNDED_U_PROFILE");
+        double rc = rounded
+                ? w / 2
+                : Math.max(u.firstRadiusMm().orElse(0), u.secondRadiusMm().orElse(0));
+        if (!rounded) {
+            for (java.util.OptionalDouble a : List.of(u.firstAngleRad(), u.secondAngleRad())) {
+                if (a.isPresent()
+                        && Math.abs(Math.toDegrees(a.getAsDouble()) - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
+                    throw new UnsupportedOperationException("the open pocket's U has a side at "
+                            + mm(Math.toDegrees(a.getAsDouble())) + " deg to its bottom: only sides square to it"
+                            + " are milled");
+                }
+            }
+            if (Math.abs(u.firstRadiusMm().orElse(0) - u.secondRadiusMm().orElse(0)) > tol.linear()) {
+                problems.add("workingstep '" + label + "': the U's corners of "
+                        + mm(u.firstRadiusMm().orElse(0)) + " and "
+                        + mm(u.secondRadiusMm().orElse(0)) + " mm are both milled with the larger");
+            }
+            if (!(rc <= w / 2 + tol.linear())) {
+                throw new IllegalArgumentException(
+                        "the open pocket's U corner radius " + mm(rc) + " mm does not fit its " + mm(w) + " mm width");
+            }
+            rc = Math.min(rc, w / 2);
+        }
+        double[] reach = new double[2];
+        for (int i = 0; i < 2; i++) {
+            double x = i == 0 ? w / 2 : -w / 2;
+            Segment2 ray = new Segment2(new Vec2(x, rc), new Vec2(x, rc + 2 * MAX_LENGTH_MM));
+            double near = Double.POSITIVE_INFINITY;
+            for (Curve2 c : stock.curves()) {
+                for (Vec2 p : org.fresa.geom.Intersections.of(ray, c, tol)) {
+                    near = Math.min(near, p.y());
+                }
+            }
+            if (!Double.isFinite(near)) {
+                throw new UnsupportedOperationException(
+                        "the open pocket's U sides do not reach the stock's edge along the profile's +y");
+            }
+            reach[i] = near;
+        }
+        Vec2 right = new Vec2(w / 2, reach[0]);
+        Vec2 left = new Vec2(-w / 2, reach[1]);
+        List<Curve2> walls = new ArrayList<>();
+        if (rc > tol.linear()) {
+            walls.add(new Segment2(right, new Vec2(w / 2, rc)));
+            if (w / 2 - rc > tol.linear()) {
+                walls.add(new Arc2(new Vec2(w / 2 - rc, rc), new Vec2(w / 2, rc), new Vec2(w / 2 - rc, 0), false));
+                walls.add(new Segment2(new Vec2(w / 2 - rc, 0), new Vec2(-w / 2 + rc, 0)));
+                walls.add(new Arc2(new Vec2(-w / 2 + rc, rc), new Vec2(-w / 2 + rc, 0), new Vec2(-w / 2, rc), false));
+            } else {
+                walls.add(new Arc2(new Vec2(0, rc), new Vec2(w / 2, rc), new Vec2(-w / 2, rc), false));
+            }
+            walls.add(new Segment2(new Vec2(-w / 2, rc), left));
+        } else {
+            walls.add(new Segment2(right, new Vec2(w / 2, 0)));
+            walls.add(new Segment2(new Vec2(w / 2, 0), new Vec2(-w / 2, 0)));
+            walls.add(new Segment2(new Vec2(-w / 2, 0), left));
+        }
+        return walls;
     }
 
     /** A general profile whose chain does not close, closed by a line from its end to its start. */

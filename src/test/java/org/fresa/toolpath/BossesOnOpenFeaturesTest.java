@@ -3,20 +3,12 @@ package org.fresa.toolpath;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Tolerance;
-import org.fresa.io.OutputFolder;
-import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
-import org.fresa.job.ToolpathService;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.MillingPost;
-import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -106,12 +98,6 @@ class BossesOnOpenFeaturesTest {
     @Test
     @InterpreterCheck
     void theProgramPassesTheProgramCheckAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
-        TaskOutcome o = ToolpathService.run(PART, MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
-        Path program = dir.resolve("program.ngc");
-        assertTrue(Files.exists(program), "the program check let the program through");
-        Assumptions.assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(program, 20);
-        assertEquals(0, r.exitStatus(), () -> "rs274 rejected the program: " + Rs274.log(r));
+        FeatureVolumeCheck.assertProgramAccepted(PART, dir);
     }
 }

@@ -7,17 +7,10 @@ import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Tolerance;
-import org.fresa.io.OutputFolder;
-import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
-import org.fresa.job.ToolpathService;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.MillingPost;
-import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -118,15 +111,6 @@ class OpenOutsideProfileTest {
     @Test
     @InterpreterCheck
     void theProgramPassesTheProgramCheckAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
-        Path file = dir.resolve("open.stp");
-        Files.writeString(file, part);
-        Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(file, MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
-        Path program = out.resolve("program.ngc");
-        assertTrue(Files.exists(program), "the program check let the program through");
-        Assumptions.assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(program, 20);
-        assertEquals(0, r.exitStatus(), () -> "rs274 rejected the program: " + Rs274.log(r));
+        FeatureVolumeCheck.assertProgramAccepted(part, "open.stp", dir);
     }
 }

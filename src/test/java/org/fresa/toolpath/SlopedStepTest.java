@@ -7,17 +7,10 @@ import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Tolerance;
-import org.fresa.io.OutputFolder;
-import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
-import org.fresa.job.ToolpathService;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.MillingPost;
-import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -60,24 +53,16 @@ class SlopedStepTest {
     }
 
     static double outsideAt(ToolpathSection sec, double radius, double z) {
-        return SlotProfilesTest.outside(
-                sec,
-                SlotProfilesTest.flat(radius),
-                z,
-                stepAt(z).union(StepsAndOutsideProfilesTest.OUTSIDE).buffer(0.01, 64));
+        return FeatureVolumeCheck.outsideAt(
+                sec, SlotProfilesTest.flat(radius), z, stepAt(z).union(StepsAndOutsideProfilesTest.OUTSIDE));
     }
 
     static void check(ToolpathSection sec, double radius, double floorZ, double allowanceMm) {
-        double lowest = sec.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow();
-        assertEquals(floorZ, lowest, 1e-6, sec.label() + ": the floor");
-        for (double z = 0; z >= lowest - 1e-9; z -= StepsAndOutsideProfilesTest.SLICE_MM) {
-            double at = Math.max(z, lowest);
-            double out = outsideAt(sec, radius, at);
-            assertTrue(out < 1e-6, sec.label() + " leaves the sloped step at z " + at + " by " + out + " mm2");
-        }
+        FeatureVolumeCheck.assertFloor(sec, floorZ, 1e-6);
+        FeatureVolumeCheck.assertInside(
+                sec, SlotProfilesTest.flat(radius), z -> stepAt(z).union(StepsAndOutsideProfilesTest.OUTSIDE));
         Geometry floor = SlotProfilesTest.box(105 + 8 * COT + allowanceMm, 0, 120, 150);
-        double left = Swept.uncutBeyondResidue(floor.buffer(-0.005, 64), Swept.sweep(sec, radius, lowest), radius);
-        assertTrue(left < 1e-2, sec.label() + " leaves " + left + " mm2 of its floor");
+        FeatureVolumeCheck.assertFloorCleared(sec, radius, floor.buffer(-0.005, 64));
     }
 
     @Test
@@ -123,15 +108,6 @@ class SlopedStepTest {
     @Test
     @InterpreterCheck
     void theProgramPassesTheProgramCheckAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
-        Path file = dir.resolve("sloped.stp");
-        Files.writeString(file, part);
-        Path out = dir.resolve("out");
-        TaskOutcome o = ToolpathService.run(file, MillingPost.LINUXCNC, new OutputFolder(out), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
-        Path program = out.resolve("program.ngc");
-        assertTrue(Files.exists(program), "the program check let the program through");
-        Assumptions.assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(program, 20);
-        assertEquals(0, r.exitStatus(), () -> "rs274 rejected the program: " + Rs274.log(r));
+        FeatureVolumeCheck.assertProgramAccepted(part, "sloped.stp", dir);
     }
 }

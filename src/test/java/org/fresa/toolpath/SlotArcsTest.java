@@ -114,20 +114,9 @@ class SlotArcsTest {
      *     as the cutter is given as the band its centre line sweeps, with no corners)
      */
     static Misfit misfit(ToolpathSection sec, ArcSlot s, double r, Geometry floor, boolean residue) {
-        double lowest = Double.POSITIVE_INFINITY;
-        for (Move m : sec.moves()) {
-            lowest = Math.min(lowest, m.end().z());
-        }
-        double out = 0;
-        for (double z = 0; z >= lowest - 1e-9; z -= SlotProfilesTest.SLICE_MM) {
-            double at = Math.max(z, lowest);
-            Geometry allowed = section(s, s.halfWidth().applyAsDouble(at), 180).buffer(0.01, 64);
-            out = Math.max(out, SlotProfilesTest.outside(sec, SlotProfilesTest.flat(r), at, allowed));
-        }
-        Geometry swept = Swept.sweep(sec, r, lowest);
-        double uncut = residue
-                ? Swept.uncutBeyondResidue(floor, swept, r)
-                : floor.difference(swept).getArea();
+        double out = FeatureVolumeCheck.outside(
+                sec, SlotProfilesTest.flat(r), z -> section(s, s.halfWidth().applyAsDouble(z), 180));
+        double uncut = FeatureVolumeCheck.uncut(sec, r, floor, residue);
         return new Misfit(out, uncut);
     }
 
@@ -139,7 +128,7 @@ class SlotArcsTest {
     }
 
     static double lowest(ToolpathSection s) {
-        return s.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow();
+        return FeatureVolumeCheck.lowest(s);
     }
 
     @Test

@@ -10,17 +10,10 @@ import java.util.List;
 import java.util.function.DoubleFunction;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec3;
-import org.fresa.io.OutputFolder;
-import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
-import org.fresa.job.ToolpathService;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.MillingPost;
-import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -97,21 +90,12 @@ class SlotGeneralTest {
     }
 
     static double lowest(ToolpathSection s) {
-        return s.moves().stream().mapToDouble(m -> m.end().z()).min().orElseThrow();
+        return FeatureVolumeCheck.lowest(s);
     }
 
     /** The tool's shadow outside the slot's cross-section (mm2), the worst height. */
     static double outside(ToolpathSection sec, double r, DoubleFunction<Geometry> slotAt) {
-        double lowest = lowest(sec);
-        double out = 0;
-        for (double z = 0; z >= lowest - 1e-9; z -= SlotProfilesTest.SLICE_MM) {
-            double at = Math.max(z, lowest);
-            out = Math.max(
-                    out,
-                    SlotProfilesTest.outside(
-                            sec, SlotProfilesTest.flat(r), at, slotAt.apply(at).buffer(0.01, 64)));
-        }
-        return out;
+        return FeatureVolumeCheck.outside(sec, SlotProfilesTest.flat(r), slotAt);
     }
 
     /**
@@ -119,11 +103,7 @@ class SlotGeneralTest {
      * swept as chords falling short of them by up to 0.002 mm (Swept.CHORD).
      */
     static double uncut(ToolpathSection sec, double r, Geometry walls, boolean residue) {
-        Geometry floor = walls.buffer(-0.003, 64);
-        Geometry swept = Swept.sweep(sec, r, lowest(sec));
-        return residue
-                ? Swept.uncutBeyondResidue(floor, swept, r)
-                : floor.difference(swept).getArea();
+        return FeatureVolumeCheck.uncut(sec, r, walls.buffer(-0.003, 64), residue);
     }
 
     @Test
@@ -297,11 +277,6 @@ class SlotGeneralTest {
     @Test
     @InterpreterCheck
     void linuxCncAndTheProgramCheckAcceptThePart(@TempDir Path dir) throws Exception {
-        TaskOutcome o = ToolpathService.run(PART, MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
-        assertFalse(o.summary().containsKey("program_refused"));
-        Assumptions.assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 10);
-        assertEquals(0, r.exitStatus(), r.stderr());
+        FeatureVolumeCheck.assertProgramAccepted(PART, dir);
     }
 }

@@ -7,17 +7,10 @@ import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.fresa.geom.Tolerance;
-import org.fresa.io.OutputFolder;
-import org.fresa.job.ProgressMonitor;
-import org.fresa.job.TaskOutcome;
-import org.fresa.job.ToolpathService;
 import org.fresa.model.Move;
 import org.fresa.model.ToolpathSection;
-import org.fresa.post.MillingPost;
-import org.fresa.post.Rs274;
 import org.fresa.stepnc.StepNcReader;
 import org.fresa.testing.InterpreterCheck;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -72,21 +65,11 @@ class StepsAndOutsideProfilesTest {
             double floorZ,
             Geometry floorRegion,
             boolean fromOutside) {
-        double lowest = Double.POSITIVE_INFINITY;
-        for (Move m : sec.moves()) {
-            lowest = Math.min(lowest, m.end().z());
-        }
-        assertEquals(floorZ, lowest, 1e-6, sec.label() + ": the floor");
-        Geometry allowed = feature.union(OUTSIDE).buffer(0.01, 64);
-        for (double z = 0; z >= lowest - 1e-9; z -= SLICE_MM) {
-            double at = Math.max(z, lowest);
-            double out = SlotProfilesTest.outside(sec, SlotProfilesTest.flat(radius), at, allowed);
-            assertTrue(out < 1e-6, sec.label() + " leaves its feature at z " + at + " by " + out + " mm2");
-        }
-        Geometry atFloor = Swept.sweep(sec, radius, lowest);
+        FeatureVolumeCheck.assertFloor(sec, floorZ, 1e-6);
+        Geometry allowed = feature.union(OUTSIDE);
+        FeatureVolumeCheck.assertInside(sec, SlotProfilesTest.flat(radius), z -> allowed);
         // 5 um inside the walls: the tool's buffered discs fall short of a round wall by up to 2 um
-        double left = Swept.uncutBeyondResidue(floorRegion.buffer(-0.005, 64), atFloor, radius);
-        assertTrue(left < 1e-2, sec.label() + " leaves " + left + " mm2 of its floor");
+        FeatureVolumeCheck.assertFloorCleared(sec, radius, floorRegion.buffer(-0.005, 64));
         if (!fromOutside) {
             return;
         }
@@ -199,8 +182,7 @@ class StepsAndOutsideProfilesTest {
 
     /** The area (mm2) the tool of this radius sweeps outside the feature (or the block's outside) at height z. */
     static double outsideAt(ToolpathSection sec, double radius, Geometry feature, double z) {
-        return SlotProfilesTest.outside(
-                sec, SlotProfilesTest.flat(radius), z, feature.union(OUTSIDE).buffer(0.01, 64));
+        return FeatureVolumeCheck.outsideAt(sec, SlotProfilesTest.flat(radius), z, feature.union(OUTSIDE));
     }
 
     @Test
@@ -218,13 +200,7 @@ class StepsAndOutsideProfilesTest {
     @Test
     @InterpreterCheck
     void theProgramPassesTheProgramCheckAndLinuxCncAcceptsIt(@TempDir Path dir) throws Exception {
-        TaskOutcome o = ToolpathService.run(PART, MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
-        assertEquals(0, o.exitStatus(), o.problems().toString());
-        Path program = dir.resolve("program.ngc");
-        assertTrue(Files.exists(program), "the program check let the program through");
-        Assumptions.assumeTrue(Rs274.available(), Rs274.whyNot());
-        Rs274.Result r = Rs274.run(program, 20);
-        assertEquals(0, r.exitStatus(), () -> "rs274 rejected the program: " + Rs274.log(r));
+        FeatureVolumeCheck.assertProgramAccepted(PART, dir);
     }
 
     private static ToolpathPlanner.Plan planText(String text) throws Exception {
