@@ -1019,6 +1019,7 @@ public final class ToolpathPlanner {
                 }
                 wallAngle = v.profileAngleDeg();
             }
+            checkStepTilt(v, wallAngle, radiansRight);
             double rho = v.profileRadiusMm().orElse(0);
             double edge = tool.edgeRadiusMm().orElse(0);
             if (rho > tol.linear() && wallAngle != 90) {
@@ -1077,6 +1078,30 @@ public final class ToolpathPlanner {
                     + " mm away: the step has no floor");
         }
         return shape;
+    }
+
+    /**
+     * ISO 14649-10 gives a vee's tilt_angle as the angle between one of its sides and the
+     * workpiece's surface round it. A step's wall meets the block's top at the profile angle on the
+     * material's side and at 180 deg less it on the air's: either tilt draws the wall standing on a
+     * floor parallel to the top, as the planner mills it. Any other tilt turns the whole profile,
+     * the floor with it, which a cutter along the feature's axis would cut flat.
+     *
+     * @throws UnsupportedOperationException for a tilt that draws a floor not parallel to the top
+     */
+    private static void checkStepTilt(org.fresa.stepnc.Profile.Vee v, double wallAngleDeg, boolean radians) {
+        double written = v.tiltAngleDeg();
+        // the writers that put the profile angle in radians put the tilt there too
+        double tilt = radians && Math.abs(written) <= Math.PI + 1e-6 ? Math.toDegrees(written) : written;
+        double off = Math.min(Math.abs(tilt - wallAngleDeg), Math.abs(tilt - (180 - wallAngleDeg)));
+        if (off > SlotMilling.SQUARE_TOLERANCE_DEG) {
+            throw new UnsupportedOperationException("the step's wall_boundary gives profile_angle "
+                    + mm(v.profileAngleDeg()) + " and tilt_angle " + mm(written) + ": a wall at "
+                    + mm(wallAngleDeg) + " deg to its floor meets the block's top at " + mm(wallAngleDeg)
+                    + " or " + mm(180 - wallAngleDeg) + " deg, and a tilt of " + mm(tilt)
+                    + " deg would tilt the floor by " + mm(off) + " deg, which is not milled: only a floor"
+                    + " parallel to the top is");
+        }
     }
 
     /**

@@ -95,7 +95,8 @@ class SlopedStepTest {
     void aWallOverhangingItsFloorOrReachingTheBlocksSideIsRefused() throws Exception {
         for (String[] c : new String[][] {{"60.000", "it overhangs the floor"}, {"170.000", "the step has no floor"}}) {
             String text = part.replace(
-                    "#29= VEE_PROFILE($,0.000,120.000,120.000);", "#29= VEE_PROFILE($,0.000," + c[0] + ",120.000);");
+                    "#29= VEE_PROFILE($,0.000,120.000,120.000);",
+                    "#29= VEE_PROFILE($,0.000," + c[0] + "," + c[0] + ");");
             ToolpathPlanner.Plan p =
                     ToolpathPlanner.plan(StepNcReader.read(new StringReader(text), "sloped.stp"), Tolerance.DEFAULT);
             assertTrue(
@@ -103,6 +104,36 @@ class SlopedStepTest {
                             .anyMatch(x -> x.startsWith("workingstep 'WS STEP FINISH' (#") && x.contains(c[1])),
                     p.problems().toString());
         }
+    }
+
+    static ToolpathPlanner.Plan withTilt(String tilt) throws Exception {
+        String text = part.replace(
+                "#29= VEE_PROFILE($,0.000,120.000,120.000);", "#29= VEE_PROFILE($,0.000,120.000," + tilt + ");");
+        return ToolpathPlanner.plan(StepNcReader.read(new StringReader(text), "tilted.stp"), Tolerance.DEFAULT);
+    }
+
+    @Test
+    void aTiltReadOnTheAirSideOfTheWallDrawsTheSameStep() throws Exception {
+        // 60 deg between the wall and the block's top above the step is the same wall as 120 deg
+        // under the top in the material
+        ToolpathPlanner.Plan p = withTilt("60.000");
+        ToolpathSection sec = p.toolpath().sections().stream()
+                .filter(x -> x.label().equals("WS STEP FINISH"))
+                .findFirst()
+                .orElseThrow(() -> new AssertionError(p.problems().toString()));
+        assertEquals(section("WS STEP FINISH").moves(), sec.moves());
+    }
+
+    @Test
+    void aTiltThatWouldTiltTheFloorIsRefusedNamingBothAngles() throws Exception {
+        ToolpathPlanner.Plan p = withTilt("75.000");
+        assertTrue(
+                p.problems().stream()
+                        .anyMatch(x -> x.startsWith("workingstep 'WS STEP FINISH' (#")
+                                && x.contains("profile_angle 120 and tilt_angle 75")
+                                && x.contains("would tilt the floor by 15 deg")),
+                p.problems().toString());
+        assertTrue(p.toolpath().sections().stream().noneMatch(x -> x.label().equals("WS STEP FINISH")));
     }
 
     @Test
