@@ -713,24 +713,8 @@ public final class ToolpathPlanner {
             }
             rc = Math.min(rc, w / 2);
         }
-        double[] reach = new double[2];
-        for (int i = 0; i < 2; i++) {
-            double x = i == 0 ? w / 2 : -w / 2;
-            Segment2 ray = new Segment2(new Vec2(x, rc), new Vec2(x, rc + 2 * MAX_LENGTH_MM));
-            double near = Double.POSITIVE_INFINITY;
-            for (Curve2 c : stock.curves()) {
-                for (Vec2 p : org.fresa.geom.Intersections.of(ray, c, tol)) {
-                    near = Math.min(near, p.y());
-                }
-            }
-            if (!Double.isFinite(near)) {
-                throw new UnsupportedOperationException(
-                        "the open pocket's U sides do not reach the stock's edge along the profile's +y");
-            }
-            reach[i] = near;
-        }
-        Vec2 right = new Vec2(w / 2, reach[0]);
-        Vec2 left = new Vec2(-w / 2, reach[1]);
+        Vec2 right = stockEdgeAlong(new Vec2(w / 2, rc), Vec2.UNIT_Y, stock, "U", tol);
+        Vec2 left = stockEdgeAlong(new Vec2(-w / 2, rc), Vec2.UNIT_Y, stock, "U", tol);
         List<Curve2> walls = new ArrayList<>();
         if (rc > tol.linear()) {
             walls.add(new Segment2(right, new Vec2(w / 2, rc)));
@@ -748,6 +732,29 @@ public final class ToolpathPlanner {
             walls.add(new Segment2(new Vec2(-w / 2, 0), left));
         }
         return walls;
+    }
+
+    /**
+     * Where a side of an open pocket's profile, running from a point along a direction, first
+     * meets the stock's edge.
+     *
+     * @throws UnsupportedOperationException when it does not meet it
+     */
+    static Vec2 stockEdgeAlong(Vec2 from, Vec2 direction, Contour stock, String profile, Tolerance tol) {
+        Segment2 ray = new Segment2(from, from.plus(direction.normalized().times(2 * MAX_LENGTH_MM)));
+        Vec2 near = null;
+        for (Curve2 c : stock.curves()) {
+            for (Vec2 p : org.fresa.geom.Intersections.of(ray, c, tol)) {
+                if (near == null || p.distance(from) < near.distance(from)) {
+                    near = p;
+                }
+            }
+        }
+        if (near == null) {
+            throw new UnsupportedOperationException("the open pocket's " + profile + " sides do not reach the"
+                    + " stock's edge along the direction the profile opens in");
+        }
+        return near;
     }
 
     /** A general profile whose chain does not close, closed by a line from its end to its start. */
