@@ -555,10 +555,14 @@ public final class ToolpathPlanner {
                 boolean general = sp instanceof org.fresa.stepnc.Profile.General g
                         && !g.closed()
                         && !g.segments().isEmpty();
-                if (!general && !(sp instanceof org.fresa.stepnc.Profile.U)) {
+                if (!general
+                        && !(sp instanceof org.fresa.stepnc.Profile.U)
+                        && !(sp instanceof org.fresa.stepnc.Profile.Vee)
+                        && !(sp instanceof org.fresa.stepnc.Profile.PartialCircular)) {
                     throw new UnsupportedOperationException("open pockets bounded by " + sp.entity()
                             + " are not supported yet: only an open GENERAL_PROFILE, closed by its open side, a"
-                            + " SQUARE_U_PROFILE or a ROUNDED_U_PROFILE");
+                            + " SQUARE_U_PROFILE, a ROUNDED_U_PROFILE, a VEE_PROFILE or a"
+                            + " PARTIAL_CIRCULAR_PROFILE");
                 }
                 Heights oh = h;
                 if (isThrough(f)) {
@@ -601,6 +605,10 @@ public final class ToolpathPlanner {
                 List<Curve2> walls = new ArrayList<>();
                 if (sp instanceof org.fresa.stepnc.Profile.U u) {
                     walls = uWalls(u, stock, problems, label, tol);
+                } else if (sp instanceof org.fresa.stepnc.Profile.Vee v) {
+                    walls = veeWalls(v, stock, tooling.radiusMm(), problems, label, tol);
+                } else if (sp instanceof org.fresa.stepnc.Profile.PartialCircular pc) {
+                    walls = partialCircleWalls(pc, stock, tol);
                 } else {
                     for (org.fresa.stepnc.Profile.Segment seg : ((org.fresa.stepnc.Profile.General) sp).segments()) {
                         Vec2 a = new Vec2(seg.start().x(), seg.start().y());
@@ -731,6 +739,92 @@ public final class ToolpathPlanner {
             walls.add(new Segment2(new Vec2(w / 2, 0), new Vec2(-w / 2, 0)));
             walls.add(new Segment2(new Vec2(-w / 2, 0), left));
         }
+        return walls;
+    }
+
+    /**
+     * The walls of an open pocket bounded by a VEE_PROFILE in its profile frame, with the pocket on
+     * their right as a U's: the vee's bottom (the middle of its blend, or its point when sharp) on
+     * the frame's origin, its first wall at tilt_angle from the frame's x axis and its second at
+     * the profile angle beyond, both running out to the stock's edge. An upright vee (tilt 90 deg
+     * less half its angle) opens along +y as a U does; another tilt turns it about its bottom. A
+     * blend smaller than the tool's radius, or none, leaves the material in the vee's point that
+     * the cutter cannot reach into: reported with how far short of the bottom it stops.
+     */
+    static List<Curve2> veeWalls(
+            org.fresa.stepnc.Profile.Vee v,
+            Contour stock,
+            double toolRadiusMm,
+            List<String> problems,
+            String label,
+            Tolerance tol) {
+        double angle = v.profileAngleDeg();
+        if (!(angle > 0 && angle < 180)) {
+            throw new IllegalArgumentException("vee profile_angle " + mm(angle) + " deg is outside 0 to 180 deg");
+        }
+        double rho = v.profileRadiusMm().orElse(0);
+        if (!(rho >= 0 && rho <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException(
+                    "vee profile_radius " + mm(rho) + " mm is outside 0 to " + mm(MAX_LENGTH_MM) + " mm");
+        }
+        double half = Math.toRadians(angle / 2);
+        Vec2 first = Vec2.ofAngle(Math.toRadians(v.tiltAngleDeg()));
+        Vec2 second = Vec2.ofAngle(Math.toRadians(v.tiltAngleDeg() + angle));
+        Vec2 opens = Vec2.ofAngle(Math.toRadians(v.tiltAngleDeg() + angle / 2));
+        // the walls' lines meet at the point, the blend's centre on the bisector rho / sin(half) from it
+        Vec2 point = opens.times(-(rho / Math.sin(half) - rho));
+        List<Curve2> walls = new ArrayList<>();
+        if (rho > tol.linear()) {
+            Vec2 centre = point.plus(opens.times(rho / Math.sin(half)));
+            Vec2 t1 = point.plus(first.times(rho / Math.tan(half)));
+            Vec2 t2 = point.plus(second.times(rho / Math.tan(half)));
+            walls.add(new Segment2(stockEdgeAlong(t1, first, stock, "vee", tol), t1));
+            walls.add(new Arc2(centre, t1, t2, false));
+            walls.add(new Segment2(t2, stockEdgeAlong(t2, second, stock, "vee", tol)));
+        } else {
+            walls.add(new Segment2(stockEdgeAlong(point, first, stock, "vee", tol), point));
+            walls.add(new Segment2(point, stockEdgeAlong(point, second, stock, "vee", tol)));
+        }
+        if (toolRadiusMm > rho + tol.linear()) {
+            // the cutter touches both walls with its centre r / sin(half) from the point
+            double shortOfBottomMm = (toolRadiusMm - rho) * (1 / Math.sin(half) - 1);
+            problems.add("workingstep '" + label + "': the " + mm(2 * toolRadiusMm) + " mm cutter cannot reach into"
+                    + " the " + mm(angle) + " deg vee's point ("
+                    + (rho > tol.linear() ? mm(rho) + " mm blend" : "sharp")
+                    + "): it stops " + mm(shortOfBottomMm) + " mm short of its bottom, leaving the material there");
+        }
+        return walls;
+    }
+
+    /**
+     * The walls of an open pocket bounded by a PARTIAL_CIRCULAR_PROFILE in its profile frame, with
+     * the pocket on their right as a U's: the arc as ISO 14649-10 draws it, about the frame's
+     * origin from its x axis counter-clockwise by the sweep, its ends carried out to the stock's
+     * edge along the line from the arc's middle through its centre, the way the profile opens (a
+     * half circle about the origin drawn from the x axis opens along -y).
+     *
+     * @throws UnsupportedOperationException for an arc of more than a half circle, wider inside
+     *     than at its mouth
+     */
+    static List<Curve2> partialCircleWalls(org.fresa.stepnc.Profile.PartialCircular pc, Contour stock, Tolerance tol) {
+        double radius = pc.radiusMm();
+        if (!(radius > 0 && radius <= MAX_LENGTH_MM)) {
+            throw new IllegalArgumentException("partial circular profile radius " + mm(radius) + " mm is outside 0 to "
+                    + mm(MAX_LENGTH_MM) + " mm");
+        }
+        double sweep = pc.sweepAngleDeg();
+        if (!(sweep > 0 && sweep <= 180 + SlotMilling.SQUARE_TOLERANCE_DEG)) {
+            throw new UnsupportedOperationException("the open pocket's partial circular profile sweeps " + mm(sweep)
+                    + " deg: more than a half circle is wider inside than at its mouth, and the passes from the"
+                    + " open side would not reach behind its walls");
+        }
+        Vec2 start = Vec2.ofAngle(0).times(radius);
+        Vec2 end = Vec2.ofAngle(Math.toRadians(sweep)).times(radius);
+        Vec2 opens = Vec2.ofAngle(Math.toRadians(sweep / 2)).negated();
+        List<Curve2> walls = new ArrayList<>();
+        walls.add(new Segment2(stockEdgeAlong(end, opens, stock, "partial circular profile's", tol), end));
+        walls.add(new Arc2(Vec2.ZERO, end, start, false));
+        walls.add(new Segment2(start, stockEdgeAlong(start, opens, stock, "partial circular profile's", tol)));
         return walls;
     }
 
