@@ -102,6 +102,7 @@ final class BossPockets {
                 "pocket",
                 pocket.contour(tol),
                 islands,
+                tallestTopZ(f, pocketFrame, h),
                 op,
                 h,
                 t,
@@ -171,6 +172,7 @@ final class BossPockets {
             String what,
             Contour outer,
             List<Contour> islands,
+            double bossesTopZ,
             Operation op,
             Heights h,
             Tooling t,
@@ -206,8 +208,49 @@ final class BossPockets {
             throw new UnsupportedOperationException(e.getMessage());
         }
         ToolpathSection s = path.sections().get(0);
-        return new ToolpathSection(
-                label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), s.start(), s.moves());
+        Vec3 start = s.start();
+        List<org.fresa.model.Move> moves = s.moves();
+        if (bossesTopZ > h.topZ() + tol.linear()) {
+            // the engine goes from loop to loop in straight lines over the islands at its
+            // clearance above the top: raised to the same clearance over the tallest boss
+            double safe = h.topZ() + ENGINE_CLEARANCE_MM;
+            double lift = bossesTopZ - h.topZ();
+            moves = new ArrayList<>();
+            for (org.fresa.model.Move m : s.moves()) {
+                moves.add(
+                        m instanceof org.fresa.model.Move.Rapid r
+                                        && Math.abs(r.end().z() - safe) < 1e-9
+                                ? new org.fresa.model.Move.Rapid(r.end().plus(new Vec3(0, 0, lift)))
+                                : m);
+            }
+            if (Math.abs(start.z() - safe) < 1e-9) {
+                start = start.plus(new Vec3(0, 0, lift));
+            }
+            problems.add("workingstep '" + label + "': a boss stands " + ToolpathPlanner.mm(lift) + " mm above the "
+                    + what + "'s top: the tool goes from loop to loop " + ToolpathPlanner.mm(ENGINE_CLEARANCE_MM)
+                    + " mm over it");
+        }
+        return new ToolpathSection(label, s.toolAxis(), t.diameterMm(), t.toolNumber(), t.spindleRpm(), start, moves);
+    }
+
+    /** How high over the top of its region the region engine takes the tool from loop to loop (mm). */
+    static final double ENGINE_CLEARANCE_MM = 5;
+
+    /**
+     * The height of the feature's tallest boss's top in the frame, or the feature's top when no
+     * boss stands above it.
+     */
+    static double tallestTopZ(Feature f, Transform3 frame, Heights h) {
+        double top = h.topZ();
+        Transform3 toFeature = frame.inverse();
+        for (Feature boss : f.bosses()) {
+            Transform3 at = toFeature.times(boss.placement());
+            if (boss.profile().isPresent()) {
+                at = at.times(boss.profile().get().placement());
+            }
+            top = Math.max(top, at.translationPart().z());
+        }
+        return top;
     }
 
     /**

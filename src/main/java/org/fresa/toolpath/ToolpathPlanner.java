@@ -653,6 +653,9 @@ public final class ToolpathPlanner {
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
                         + " features are not supported yet");
         }
+        if (!f.bosses().isEmpty()) {
+            traversesOverBosses(local, h.topZ(), BossPockets.tallestTopZ(f, place, h), tol);
+        }
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
     }
@@ -826,6 +829,32 @@ public final class ToolpathPlanner {
         walls.add(new Arc2(Vec2.ZERO, end, start, false));
         walls.add(new Segment2(start, stockEdgeAlong(start, opens, stock, "partial circular profile's", tol)));
         return walls;
+    }
+
+    /**
+     * Refuses a plan with a rapid move across the feature above its top but no higher than its
+     * tallest boss's top: a boss may stand above the feature's top, and a rapid over it there
+     * would run into it (below the top the tool moves within the region it cleared, round the
+     * bosses).
+     *
+     * @throws UnsupportedOperationException naming the height of the lowest such traverse
+     */
+    static void traversesOverBosses(ToolpathSection local, double topZ, double bossesTopZ, Tolerance tol) {
+        if (!(bossesTopZ > topZ + tol.linear())) {
+            return;
+        }
+        Vec3 at = local.start();
+        for (org.fresa.model.Move m : local.moves()) {
+            Vec3 to = m.end();
+            boolean across = Math.hypot(to.x() - at.x(), to.y() - at.y()) > tol.linear();
+            double low = Math.min(at.z(), to.z());
+            if (m instanceof org.fresa.model.Move.Rapid && across && low >= topZ - tol.linear() && low <= bossesTopZ) {
+                throw new UnsupportedOperationException("a rapid move crosses the feature at " + mm(low)
+                        + " mm, not over its tallest boss, whose top is at " + mm(bossesTopZ) + " mm: raise the"
+                        + " retract plane above it");
+            }
+            at = to;
+        }
     }
 
     /**
@@ -1024,6 +1053,7 @@ public final class ToolpathPlanner {
                 what,
                 region,
                 islands,
+                BossPockets.tallestTopZ(f, place, h),
                 op,
                 h,
                 tooling,
