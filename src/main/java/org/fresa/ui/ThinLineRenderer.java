@@ -71,7 +71,10 @@ final class ThinLineRenderer extends XYLineAndShapeRenderer {
             int pass) {
         if (state instanceof Thinned t && t.columns != null) {
             // the whole series at once, at its first item; nothing for the others
-            if (item == t.first && isLinePass(pass) && getItemVisible(series, item)) {
+            if (item == t.first
+                    && isLinePass(pass)
+                    && getItemVisible(series, item)
+                    && !OffThreadChartPanel.drawingAbandoned()) {
                 t.drawSeries(g2, lookupSeriesPaint(series), lookupSeriesStroke(series));
             }
             return;
