@@ -40,7 +40,7 @@ public final class RobotCharts {
 
     /** Joint values against the point index, one stacked panel per joint, limits as red lines. */
     public static JFreeChart joints(String title, List<JointSeries> joints) {
-        CombinedDomainXYPlot plot = new CombinedDomainXYPlot(new NumberAxis("point"));
+        CombinedDomainXYPlot plot = new CombinedDomainXYPlot(NumberAxes.of("point"));
         plot.setGap(6);
         for (JointSeries j : joints) {
             XYSeries s = new XYSeries(j.name(), false, true);
@@ -48,7 +48,7 @@ public final class RobotCharts {
             for (int i = 0; i < v.length; i++) {
                 s.add(i + 1, Double.isNaN(v[i]) ? null : v[i], false);
             }
-            NumberAxis y = new NumberAxis(j.name() + " (" + j.unit() + ")");
+            NumberAxis y = NumberAxes.of(j.name() + " (" + j.unit() + ")");
             y.setAutoRangeIncludesZero(false);
             double pad = 0.05 * (j.max() - j.min());
             y.setRange(j.min() - pad, j.max() + pad);
@@ -92,13 +92,13 @@ public final class RobotCharts {
             }
             data.addSeries(s);
         }
-        NumberAxis y = new NumberAxis("target - reached (um)");
+        NumberAxis y = NumberAxes.of("target - reached (um)");
         y.setAutoRangeIncludesZero(true);
         XYLineAndShapeRenderer r = lines();
         for (int a = 0; a < 3; a++) {
             r.setSeriesPaint(a, SERIES[a]);
         }
-        XYPlot plot = new XYPlot(data, new NumberAxis("point"), y, r);
+        XYPlot plot = new XYPlot(data, NumberAxes.of("point"), y, r);
         plot.setBackgroundPaint(Color.WHITE);
         plot.setRangeGridlinePaint(new Color(0xE0E0E0));
         JFreeChart chart = new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, true);

@@ -81,8 +81,8 @@ public final class ToolpathChart {
             extent.add(b.maxX() + pad, b.maxY() + pad);
         });
         data.addSeries(extent);
-        NumberAxis x = new NumberAxis(scene.axes().horizontal());
-        NumberAxis y = new NumberAxis(scene.axes().vertical());
+        NumberAxis x = NumberAxes.of(scene.axes().horizontal());
+        NumberAxis y = NumberAxes.of(scene.axes().vertical());
         for (NumberAxis a : List.of(x, y)) {
             a.setAutoRangeIncludesZero(false);
             // the extent already holds the margin

@@ -55,6 +55,18 @@ final class OffThreadChartPanel extends ChartPanel {
     // one thread for all panels: drawing is CPU work and the machine may have two cores
     private static final ExecutorService DRAWING = BackgroundThreads.single("fresa-plot-drawing");
 
+    // whether the picture the drawing thread draws ahead is no longer wanted (unset: it is)
+    private static final ThreadLocal<BooleanSupplier> ABANDONED = new ThreadLocal<>();
+
+    /**
+     * Whether the picture being drawn ahead on this thread is no longer wanted ({@link #prepare}'s
+     * stale): a renderer may then leave the rest of it undrawn, as it is dropped. False elsewhere.
+     */
+    static boolean drawingAbandoned() {
+        BooleanSupplier s = ABANDONED.get();
+        return s != null && s.getAsBoolean();
+    }
+
     private final transient Supplier<Picture> picture;
     private transient BufferedImage image;
     private transient Object imageKey;
@@ -203,7 +215,8 @@ final class OffThreadChartPanel extends ChartPanel {
      * event thread shows it: while the event thread paints something else, the picture is made,
      * and its own paint then only copies it. Then runs on the event thread with the image, or
      * with null when the panel has not been painted yet (its first paint draws the picture) or
-     * when {@code stale} says, before the drawing, that it is no longer wanted. Any thread.
+     * when {@code stale} says, before or after the drawing, that it is no longer wanted (the
+     * drawing stops early then). Any thread.
      */
     void prepare(Picture p, BooleanSupplier stale, Consumer<Prepared> then) {
         long asked = System.nanoTime();
@@ -213,13 +226,22 @@ final class OffThreadChartPanel extends ChartPanel {
             return;
         }
         DRAWING.execute(() -> {
-            Prepared d = stale.getAsBoolean()
-                    ? null
-                    : new Prepared(
-                            List.of(p.key(), s.width(), s.height(), s.scale()),
-                            render(p, s.width(), s.height(), s.scale()),
-                            asked);
-            SwingUtilities.invokeLater(() -> then.accept(d));
+            Prepared d = null;
+            if (!stale.getAsBoolean()) {
+                // a newer change makes the curves not yet drawn stop (ThinLineRenderer asks):
+                // the drawing thread is free for the newer picture sooner
+                ABANDONED.set(stale);
+                try {
+                    Rendered r = render(p, s.width(), s.height(), s.scale());
+                    d = stale.getAsBoolean()
+                            ? null
+                            : new Prepared(List.of(p.key(), s.width(), s.height(), s.scale()), r, asked);
+                } finally {
+                    ABANDONED.remove();
+                }
+            }
+            Prepared drawn = d;
+            SwingUtilities.invokeLater(() -> then.accept(drawn));
         });
     }
 

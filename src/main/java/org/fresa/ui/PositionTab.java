@@ -442,13 +442,23 @@ final class PositionTab implements ModuleTab {
     private void prepareLive(LiveReachability.Charted c, java.util.function.BooleanSupplier stale) {
         OffThreadChartPanel panel = plotInView;
         java.util.List<Object> view = panel == jointsChart ? jointsView : errorsView;
+        // a plot made stale by a newer change is not shown: the newer one follows, and the stale
+        // one shown would only be drawn again at the panel's paint, ahead of it on the drawing thread
         if (panel == null || view == null) {
-            javax.swing.SwingUtilities.invokeLater(() -> showLiveCharts(c, null, null));
+            javax.swing.SwingUtilities.invokeLater(() -> {
+                if (!stale.getAsBoolean()) {
+                    showLiveCharts(c, null, null);
+                }
+            });
             return;
         }
         // the answer shown replays its first point
         OffThreadChartPanel.Picture p = pictureOf(c.charts(), panel == jointsChart, 1, view);
-        panel.prepare(p, stale, d -> showLiveCharts(c, panel, d));
+        panel.prepare(p, stale, d -> {
+            if (!stale.getAsBoolean()) {
+                showLiveCharts(c, panel, d);
+            }
+        });
     }
 
     /**

@@ -1,5 +1,6 @@
 package org.fresa.ui;
 
+import static org.junit.jupiter.api.Assertions.assertAll;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -23,9 +24,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The Position tab's live reachability as a planner types: example 2 on the IRB-140, each change
- * of a placement field shown in the 3D view (and the plot) without Compute, the event thread never
- * blocked (every event under 50 ms, as {@link EventThreadResponsivenessGuiTest} checks); and the
- * tool the Robot tab's fields put on the flange drawn in the cell.
+ * of a placement field shown in the 3D view and the plot without Compute within 100 ms (the 95th
+ * percentile and the worst, judged on a quiet machine), the event thread watched meanwhile; and
+ * the tool the Robot tab's fields put on the flange drawn in the cell.
  *
  * <p>The first few changes, typed before those measured, are not judged: they run the solver and
  * the painting for the first time, while the JIT compiles them. The time of a change runs from the keystroke's document change on the event thread to the
@@ -36,6 +37,8 @@ class LiveReachGuiTest extends WindowGuiTest {
 
     private static final double THRESHOLD_MS = 50;
     private static final double UPDATE_MS = 100;
+    // the most load (per core) at which the machine counts as quiet: the wall times are then the tab's
+    private static final double QUIET_LOAD_PER_CORE = 1.5;
     private static final Path REPORT = Path.of("target", "live-reach.txt");
 
     private EventThreadWatchdog watchdog;
@@ -65,7 +68,7 @@ class LiveReachGuiTest extends WindowGuiTest {
     }
 
     @Test
-    void eachPlacementChangeOfExample2IsShownForUnder100MsOfCpu() {
+    void eachPlacementChangeOfExample2IsShownWithin100Ms() {
         openJob("samples/jobs/example2-irb140.xml");
         waitUntilNoTaskRuns();
         window.tabbedPane("tabs").selectTab("Position");
@@ -89,6 +92,10 @@ class LiveReachGuiTest extends WindowGuiTest {
                     GuiActionRunner.execute(() -> last(tab.viewLatenciesMs(), 0)),
                     GuiActionRunner.execute(() -> last(tab.cpuMs(), 0))));
         }
+        // the first change judged starts as every other does, after the plot of the one before: the
+        // last warm-up's plot still being drawn took the drawing thread for 107 ms of the next one's
+        waitFor("the last warm-up's plot is drawn", () -> tab.plotUpToDate());
+        settle();
         String[][] changes = {
             {"position-rt-X", "460"},
             {"position-rt-X", "700"},
@@ -164,16 +171,18 @@ class LiveReachGuiTest extends WindowGuiTest {
                 .toList();
         StringBuilder sb = new StringBuilder(String.format(
                 Locale.ROOT,
-                "example 2 on the IRB-140, %d field changes typed: 3D view median %.1f ms, worst %.1f ms"
-                        + " (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, worst %.1f ms (CPU median"
-                        + " %.1f ms, worst %.1f ms); worst"
+                "example 2 on the IRB-140, %d field changes typed: 3D view median %.1f ms, p95 %.1f ms, worst"
+                        + " %.1f ms (CPU median %.1f ms, worst %.1f ms); plot median %.1f ms, p95 %.1f ms, worst"
+                        + " %.1f ms (CPU median %.1f ms, worst %.1f ms); worst"
                         + " event-thread task %.1f ms (%s); load average before %.2f on %d cores%n",
                 changes.length,
                 median(view),
+                percentile95(view),
                 max(view),
                 median(cpu),
                 max(cpu),
                 median(plot),
+                percentile95(plot),
                 max(plot),
                 median(plotCpu),
                 max(plotCpu),
@@ -211,11 +220,25 @@ class LiveReachGuiTest extends WindowGuiTest {
         // took 12 to 24 (EventThreadResponsivenessGuiTest judges the long jobs' events).
         // the work of a change, on any machine: what the application asks of the cores
         assertTrue(median(cpu) <= UPDATE_MS, sb.toString());
-        // The wall time a planner sees is reported (target/live-reach.txt), not judged: on a quiet
-        // 2-core machine the 3D view's median was 79.8 ms in one run and 109.6 ms in the next, so a
-        // test of it would fail a build at random; speed goals belong to the benchmarks.
         // the placement typed back: every target reachable again, as the job's placement is
         window.label("position-reach").requireText("All 6518 targets are within reach of irb140.");
+        // The acceptance, in the wall time a planner sees: every change's 3D view and plot on screen
+        // within 100 ms, the 95th percentile and the worst, the watchdog on. Where other work loads
+        // the cores (a load average over 1.5 per core before the changes) the times measure that
+        // work, not the tab's: they are reported and the judgement is skipped, never passed.
+        Assumptions.assumeTrue(
+                load <= QUIET_LOAD_PER_CORE * cores,
+                String.format(
+                        Locale.ROOT,
+                        "not judged: load average %.2f on %d cores; %s",
+                        load,
+                        cores,
+                        sb.toString().lines().findFirst().orElse("")));
+        assertAll(
+                () -> assertTrue(percentile95(view) <= UPDATE_MS, "3D view p95\n" + sb),
+                () -> assertTrue(max(view) <= UPDATE_MS, "3D view worst\n" + sb),
+                () -> assertTrue(percentile95(plot) <= UPDATE_MS, "plot p95\n" + sb),
+                () -> assertTrue(max(plot) <= UPDATE_MS, "plot worst\n" + sb));
     }
 
     @Test
@@ -333,6 +356,13 @@ class LiveReachGuiTest extends WindowGuiTest {
         s.sort(null);
         int n = s.size();
         return n % 2 == 1 ? s.get(n / 2) : (s.get(n / 2 - 1) + s.get(n / 2)) / 2;
+    }
+
+    /** The nearest-rank 95th percentile: of 10 changes, the worst. */
+    private static double percentile95(List<Double> v) {
+        List<Double> s = new ArrayList<>(v);
+        s.sort(null);
+        return s.isEmpty() ? 0 : s.get((int) Math.ceil(0.95 * s.size()) - 1);
     }
 
     private static double max(List<Double> v) {
