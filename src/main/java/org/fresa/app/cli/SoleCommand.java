@@ -1,22 +1,16 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa sole JOB --out DIR}. */
 @Command(
         name = "sole",
         mixinStandardHelpOptions = true,
         description = "Sole mould programs: cavity, tread figures, graded sizes, both feet.")
-final class SoleCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class SoleCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "JOB", description = "sole job file")
     Path job;
@@ -29,8 +23,7 @@ final class SoleCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        java.io.PrintWriter o = spec.commandLine().getOut();
-        return CliSupport.run(o, spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             org.fresa.io.OutputFolder.of(out, "--out");
             org.fresa.job.Job j = org.fresa.job.JobXml.read(job);
             if (j.sole().isEmpty()) {
