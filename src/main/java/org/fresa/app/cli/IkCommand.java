@@ -1,10 +1,14 @@
 package org.fresa.app.cli;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
 import org.fresa.cell.RobotTools;
 import org.fresa.job.IkService;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkOptions;
+import org.fresa.model.CamInputException;
 import org.fresa.setting.SettingRanges;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -16,7 +20,7 @@ import picocli.CommandLine.Parameters;
         name = "ik",
         mixinStandardHelpOptions = true,
         description = "Inverse kinematics of any list of tool poses (x,y,z,roll,pitch,yaw[,q1..qN] per row).")
-final class IkCommand extends CliCommand {
+final class IkCommand extends FolderCommand {
 
     @Parameters(
             index = "0",
@@ -27,9 +31,6 @@ final class IkCommand extends CliCommand {
 
     @Mixin
     RobotOptions robot = new RobotOptions();
-
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
 
     @Option(
             names = "--tolerance-mm",
@@ -68,17 +69,12 @@ final class IkCommand extends CliCommand {
             description = "tool length from the spindle nose to the tip; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
-    @Option(names = "--json", description = "print a JSON summary on stdout")
-    boolean json;
-
     @Override
-    public Integer call() {
-        return run(json, progress -> {
-            double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
-            Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
-            RobotTools.Choice tool = RobotOptions.tool(spindle, toolLength);
-            IkService.Settings s = new IkService.Settings(targets, robot.robot, tool, method, tol, conf, all);
-            return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
-        });
+    TaskOutcome work(ProgressMonitor progress) throws CamInputException, IOException {
+        double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
+        Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
+        RobotTools.Choice tool = RobotOptions.tool(spindle, toolLength);
+        IkService.Settings s = new IkService.Settings(targets, robot.robot, tool, method, tol, conf, all);
+        return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
     }
 }

@@ -1,11 +1,14 @@
 package org.fresa.app.cli;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import org.fresa.cell.RobotTools;
 import org.fresa.cell.TablePlacing;
+import org.fresa.job.ProgressMonitor;
 import org.fresa.job.RobotService;
 import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
 import org.fresa.model.Placement;
 import org.fresa.setting.SettingRanges;
 import org.fresa.toolpath.PlanningChoices;
@@ -19,16 +22,13 @@ import picocli.CommandLine.Parameters;
         name = "robot",
         mixinStandardHelpOptions = true,
         description = "Toolpaths of a STEP-NC file turned into a robot joint trajectory.")
-final class RobotCommand extends CliCommand {
+final class RobotCommand extends FolderCommand {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file")
     Path file;
 
     @Mixin
     RobotOptions robot = new RobotOptions();
-
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
 
     @Option(
             names = "--robot-table",
@@ -70,37 +70,32 @@ final class RobotCommand extends CliCommand {
             description = "comma list of csv, xml, rapid, krl, png; default ${DEFAULT-VALUE}")
     String formats = String.join(",", org.fresa.job.JobSettings.RobotSettings.DEFAULTS.formats());
 
-    @Option(names = "--json", description = "print a JSON summary on stdout")
-    boolean json;
-
     @Mixin
     StepNcPlanningOptions planning = new StepNcPlanningOptions();
 
     @Override
-    public Integer call() {
-        return run(json, progress -> {
-            List<String> fmts = RobotService.parseFormats(formats);
-            Placement table = robotTable == null
-                    ? Placement.ORIGIN
-                    : SettingRanges.Robot.check("--robot-table", PlacementOptions.parseRobotTable(robotTable));
-            Placement piece = tablePiece == null
-                    ? Placement.ORIGIN
-                    : SettingRanges.Robot.check("--table-piece", PlacementOptions.parseTablePiece(tablePiece));
-            PlanningChoices choices = planning.choices();
-            RobotTools.Choice tool = RobotOptions.tool(spindle, toolLength);
-            TablePlacing placing = place == null ? TablePlacing.GIVEN : TablePlacing.parse("--place", place);
-            TaskOutcome o = CliSupport.intoFolder(
-                    out,
-                    folder -> RobotService.run(
-                            new RobotService.Settings(file, robot.robot, table, piece, fmts, choices, tool, placing),
-                            folder,
-                            progress));
-            if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
-                // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
-                TerminalProgress.clear(progress);
-                out().println(m.get("what"));
-            }
-            return o;
-        });
+    TaskOutcome work(ProgressMonitor progress) throws CamInputException, IOException {
+        List<String> fmts = RobotService.parseFormats(formats);
+        Placement table = robotTable == null
+                ? Placement.ORIGIN
+                : SettingRanges.Robot.check("--robot-table", PlacementOptions.parseRobotTable(robotTable));
+        Placement piece = tablePiece == null
+                ? Placement.ORIGIN
+                : SettingRanges.Robot.check("--table-piece", PlacementOptions.parseTablePiece(tablePiece));
+        PlanningChoices choices = planning.choices();
+        RobotTools.Choice tool = RobotOptions.tool(spindle, toolLength);
+        TablePlacing placing = place == null ? TablePlacing.GIVEN : TablePlacing.parse("--place", place);
+        TaskOutcome o = CliSupport.intoFolder(
+                out,
+                folder -> RobotService.run(
+                        new RobotService.Settings(file, robot.robot, table, piece, fmts, choices, tool, placing),
+                        folder,
+                        progress));
+        if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
+            // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
+            TerminalProgress.clear(progress);
+            out().println(m.get("what"));
+        }
+        return o;
     }
 }

@@ -1,8 +1,12 @@
 package org.fresa.app.cli;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import org.fresa.job.JobSettings.StepNcSettings;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
 import org.fresa.job.ToolpathService;
+import org.fresa.model.CamInputException;
 import org.fresa.post.MillingPost;
 import org.fresa.toolpath.PlanningChoices;
 import picocli.CommandLine.Command;
@@ -15,13 +19,10 @@ import picocli.CommandLine.Parameters;
         name = "toolpath",
         mixinStandardHelpOptions = true,
         description = "Toolpaths of every workingstep of a STEP-NC file, in workplan order, with G-code.")
-final class ToolpathCommand extends CliCommand {
+final class ToolpathCommand extends FolderCommand {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file")
     Path file;
-
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
 
     @Option(
             names = "--post",
@@ -29,17 +30,12 @@ final class ToolpathCommand extends CliCommand {
             description = "post-processor (fresa posts lists them); default ${DEFAULT-VALUE}")
     MillingPost post = StepNcSettings.DEFAULTS.post();
 
-    @Option(names = "--json", description = "print a JSON summary on stdout")
-    boolean json;
-
     @Mixin
     StepNcPlanningOptions planning = new StepNcPlanningOptions();
 
     @Override
-    public Integer call() {
-        return run(json, progress -> {
-            PlanningChoices choices = planning.choices();
-            return CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, choices, folder, progress));
-        });
+    TaskOutcome work(ProgressMonitor progress) throws CamInputException, IOException {
+        PlanningChoices choices = planning.choices();
+        return CliSupport.intoFolder(out, folder -> ToolpathService.run(file, post, choices, folder, progress));
     }
 }
