@@ -140,14 +140,7 @@ public final class RobotTools {
                 label = label + " [T" + sec.toolNumber() + "]";
             }
             tcp.put(label, tcpOfSection.get(i));
-            relabelled.add(new org.fresa.model.ToolpathSection(
-                    label,
-                    sec.toolAxis(),
-                    sec.toolDiameterMm(),
-                    sec.toolNumber(),
-                    sec.spindleRpm(),
-                    sec.start(),
-                    sec.moves()));
+            relabelled.add(sec.withLabel(label));
         }
         return new Frames(spindle, tcp, warnings, new org.fresa.model.Toolpath(relabelled));
     }

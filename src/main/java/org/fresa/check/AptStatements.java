@@ -85,22 +85,12 @@ final class AptStatements {
     }
 
     /** The machine's state as the statements run. */
-    private static final class Machine {
-        private final Limits limits;
-        private double x = Double.NaN;
-        private double y = Double.NaN;
-        private double z = Double.NaN;
-        private double feed = Double.NaN;
-        private double rpm = Double.NaN;
-        private boolean on;
-        private int tool;
+    private static final class Machine extends MachineState {
         private boolean rapidNext;
         private Circle circle;
-        private Vec3 axis = Vec3.UNIT_Z;
-        private final List<Pilot> drilled = new ArrayList<>();
 
         Machine(Limits limits) {
-            this.limits = limits;
+            super(limits);
         }
 
         private record Circle(Vec3 centre, Vec3 axis, double radiusMm) {}

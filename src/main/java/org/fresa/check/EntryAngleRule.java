@@ -17,19 +17,13 @@ import org.fresa.geom.Vec3;
  * chord, one degree of arc each. The coordinates' last written digit is not counted against a
  * block: the descent less one step over the sideways length plus one step.
  */
-public record EntryAngleRule() implements Rule {
+public final class EntryAngleRule extends Rule {
 
     /** Allowance on the chords of an arc about another axis, whose tangent turns within each chord, degrees. */
     static final double CHORD_ALLOWANCE_DEG = 0.5;
 
-    @Override
-    public String name() {
-        return "entry angle";
-    }
-
-    @Override
-    public String statement() {
-        return "no cutting move descends into the material steeper than its tool's entry angle";
+    public EntryAngleRule() {
+        super("entry angle", "no cutting move descends into the material steeper than its tool's entry angle");
     }
 
     @Override

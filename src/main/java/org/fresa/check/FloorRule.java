@@ -12,19 +12,15 @@ import org.fresa.geom.Vec3;
  * axis against the tool, the material's end on that side. Where the stock is unbounded along that
  * axis nothing is stated there and the rule has nothing to compare.
  */
-public record FloorRule() implements Rule {
+public final class FloorRule extends Rule {
 
     /** How far from +Z an axis may be and still be read as +Z (the posts' own test). */
     static final double AXIS_TOLERANCE = 1e-9;
 
-    @Override
-    public String name() {
-        return "floor";
-    }
-
-    @Override
-    public String statement() {
-        return "no move goes below the floor, measured along the tool axis, by more than the stated breakthrough";
+    public FloorRule() {
+        super(
+                "floor",
+                "no move goes below the floor, measured along the tool axis, by more than the stated breakthrough");
     }
 
     @Override

@@ -219,7 +219,8 @@ public final class ProgramCheck {
                     feed,
                     toolByWorkingstep.getOrDefault(m.workingstep(), 0),
                     false,
-                    axis);
+                    axis,
+                    List.of());
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
@@ -265,26 +266,16 @@ public final class ProgramCheck {
     }
 
     /** The control's state while the program runs. */
-    private static final class Machine {
+    private static final class Machine extends MachineState {
         private final NcDialect dialect;
-        private final Limits limits;
         private int motion = -1;
         private boolean absolute = true;
         private int plane = 17;
-        private double x = Double.NaN;
-        private double y = Double.NaN;
-        private double z = Double.NaN;
-        private double feed = Double.NaN;
-        private double rpm = Double.NaN;
-        private boolean on;
         private int selected;
-        private int tool;
-        private Vec3 axis = Vec3.UNIT_Z;
-        private final List<Pilot> drilled = new ArrayList<>();
 
         Machine(NcDialect dialect, Limits limits) {
+            super(limits);
             this.dialect = dialect;
-            this.limits = limits;
         }
 
         /**

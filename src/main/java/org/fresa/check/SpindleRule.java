@@ -9,16 +9,12 @@ import java.util.stream.Collectors;
  * sheet-cutting machine the process's on word (torch, laser, jet) takes the spindle's place. A
  * straight retract along the tool axis cuts nothing and may run with the spindle stopped.
  */
-public record SpindleRule() implements Rule {
+public final class SpindleRule extends Rule {
 
-    @Override
-    public String name() {
-        return "spindle";
-    }
-
-    @Override
-    public String statement() {
-        return "every cutting move runs with the spindle (or the cutting process) switched on at a speed in range";
+    public SpindleRule() {
+        super(
+                "spindle",
+                "every cutting move runs with the spindle (or the cutting process) switched on at a speed in range");
     }
 
     @Override

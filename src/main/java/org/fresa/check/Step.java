@@ -37,36 +37,6 @@ public record Step(
         Vec3 axis,
         List<Pilot> pilots) {
 
-    /** A step with no holes made before it. */
-    public Step(
-            Words.Block block,
-            NcDialect dialect,
-            boolean feedMove,
-            List<Vec3> path,
-            boolean arcInPlane,
-            double horizontalMm,
-            boolean cuttingOn,
-            double spindleRpm,
-            double feedMmPerMin,
-            int tool,
-            boolean dwell,
-            Vec3 axis) {
-        this(
-                block,
-                dialect,
-                feedMove,
-                path,
-                arcInPlane,
-                horizontalMm,
-                cuttingOn,
-                spindleRpm,
-                feedMmPerMin,
-                tool,
-                dwell,
-                axis,
-                List.of());
-    }
-
     public Step {
         path = List.copyOf(path);
         pilots = List.copyOf(pilots);

@@ -6,7 +6,7 @@ package org.fresa.check;
  * time of at most {@value #MAX_DWELL_S} s in a G04 block), G and M codes, tool, offset and block
  * numbers non-negative integers of the sizes controls take.
  */
-public record WordRule() implements Rule {
+public final class WordRule extends Rule {
 
     /** No machine Fresa writes for travels this far from its zero, mm. */
     public static final double MAX_COORDINATE_MM = 10_000;
@@ -15,14 +15,8 @@ public record WordRule() implements Rule {
     /** Rotary axes, degrees. */
     static final double MAX_ANGLE_DEG = 36_000;
 
-    @Override
-    public String name() {
-        return "words";
-    }
-
-    @Override
-    public String statement() {
-        return "every word is a finite number within the machine's range";
+    public WordRule() {
+        super("words", "every word is a finite number within the machine's range");
     }
 
     @Override

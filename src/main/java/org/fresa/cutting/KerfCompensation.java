@@ -1,19 +1,14 @@
 package org.fresa.cutting;
 
-import org.fresa.model.EnumWords;
+import org.fresa.model.WordedEnum;
 
 /**
  * Who allows for the kerf: {@link #SOFTWARE} (the default: the path is the contour offset by half
  * the kerf) or {@link #CONTROLLER} (the drawn contour with G41/G42, the kerf left to the controller).
  */
-public enum KerfCompensation {
+public enum KerfCompensation implements WordedEnum {
     SOFTWARE,
     CONTROLLER;
-
-    /** The name as written: {@code software}, {@code controller}. */
-    public String word() {
-        return EnumWords.of(this);
-    }
 
     @Override
     public String toString() {

@@ -16,7 +16,12 @@ public final class EnumWords {
 
     /** The constant's name in lower case, {@code _} as {@code -}. */
     public static String of(Enum<?> constant) {
-        return constant.name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
+        return ofName(constant.name());
+    }
+
+    /** A constant's name in lower case, {@code _} as {@code -}. */
+    public static String ofName(String constantName) {
+        return constantName.toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }
 
     /** The constant whose word is the text as written, or empty. */

@@ -33,4 +33,9 @@ public record ToolpathSection(
             throw new IllegalArgumentException("tool number must be >= 1: " + toolNumber);
         }
     }
+
+    /** The same section under another label (the workingstep name a trajectory row carries). */
+    public ToolpathSection withLabel(String newLabel) {
+        return new ToolpathSection(newLabel, toolAxis, toolDiameterMm, toolNumber, spindleRpm, start, moves);
+    }
 }

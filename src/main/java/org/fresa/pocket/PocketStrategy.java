@@ -1,7 +1,7 @@
 package org.fresa.pocket;
 
 import java.util.Objects;
-import org.fresa.model.EnumWords;
+import org.fresa.model.WordedEnum;
 
 /**
  * How a pocket's floor is cleared before the finishing contour: by passes parallel to the walls
@@ -29,16 +29,11 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
     public static final PocketStrategy DEFAULT = new PocketStrategy(Kind.OFFSET, 0);
 
     /** The order of the offset passes, by the names the command line and the job file use. */
-    public enum Order {
+    public enum Order implements WordedEnum {
         /** The innermost pass first, each next pass enclosing the last (the thesis's). */
         INSIDE_OUT,
         /** The outermost roughing pass first, inwards, the finishing pass last. */
         OUTSIDE_IN;
-
-        /** The name as written: {@code inside-out}, {@code outside-in}. */
-        public String word() {
-            return EnumWords.of(this);
-        }
 
         @Override
         public String toString() {
@@ -52,16 +47,11 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
     }
 
     /** The patterns, by the names the command line and the job file use. */
-    public enum Kind {
+    public enum Kind implements WordedEnum {
         /** Passes parallel to the walls, from the inside out. */
         OFFSET,
         /** Parallel lines at an angle, alternating in direction, then the contour passes. */
         ZIGZAG;
-
-        /** The name as written: {@code offset}, {@code zigzag}. */
-        public String word() {
-            return EnumWords.of(this);
-        }
 
         @Override
         public String toString() {

@@ -2,6 +2,7 @@ package org.fresa.post;
 
 import java.io.IOException;
 import java.io.Writer;
+import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 
 /**
@@ -17,22 +18,17 @@ import org.fresa.geom.Vec3;
  * {@code WAIT SEC}. The axes are the robot's joints in Fresa's
  * convention (spec/robots.md), named A1..A6.
  */
-public final class KrlWriter implements RobotProgramWriter {
+public final class KrlWriter extends RobotLanguageWriter {
 
-    private final RapidWriter.ArmGeometry arm;
+    /** The output that starts the spindle drive. */
+    public static final String SPINDLE_ON = "$OUT[1]";
+    /** The analog output of the spindle speed. */
+    public static final String SPINDLE_SPEED = "$ANOUT[1]";
+    /** The speed at full scale of {@link #SPINDLE_SPEED}, rpm. */
+    public static final double SPINDLE_FULL_SCALE_RPM = 100_000;
 
     public KrlWriter(RapidWriter.ArmGeometry arm) {
-        this.arm = arm;
-    }
-
-    @Override
-    public String format() {
-        return "krl";
-    }
-
-    @Override
-    public String fileName() {
-        return "program.src";
+        super("krl", "program.src", arm);
     }
 
     @Override
@@ -50,35 +46,63 @@ public final class KrlWriter implements RobotProgramWriter {
                         + " frame\n");
         sb.append("$BASE = {FRAME: X 0,Y 0,Z 0,A 0,B 0,C 0}\n");
         for (RobotProgram.ToolFrame t : p.tools()) {
-            Vec3 at = t.tcp().translationPart();
-            Vec3 abc = t.tcp().zyxAnglesDeg();
             sb.append("TOOL_DATA[").append(t.number()).append("] = {");
-            frame(sb, at, abc).append("}\n");
+            frame(sb, t.tcp()).append("}\n");
         }
-        int tool = -1;
         double apo = 0;
         for (RobotProgram.Motion m : p.motions()) {
             apo = Math.max(apo, m.zoneMm());
         }
         // the approximation distance of the C_DIS points: the program's path tolerance
         sb.append("$APO.CDIS = ").append(f(apo > 0 ? apo : 0.5, 3)).append('\n');
-        double vel = Double.NaN;
-        String ws = null;
-        double rpm = 0;
-        for (RobotProgram.Motion m : p.motions()) {
-            if (!m.workingstep().equals(ws)) {
-                ws = m.workingstep();
-                sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
-                int t = p.toolOf(ws).number();
-                if (t != tool) {
-                    tool = t;
-                    sb.append("$TOOL = TOOL_DATA[").append(t).append("]\n");
-                }
+        walk(new Lines(p, sb));
+        sb.append("END\n");
+        out.write(sb.toString());
+    }
+
+    /** The lines of the program's motions, with the tool and the path velocity set where they change. */
+    private final class Lines extends Steps {
+        private int tool = -1;
+        private double vel = Double.NaN;
+
+        Lines(RobotProgram p, StringBuilder sb) {
+            super(p, sb);
+        }
+
+        @Override
+        void workingstep(String ws) {
+            sb.append("; workingstep ").append(ws.replace('\n', ' ')).append('\n');
+            int t = program.toolOf(ws).number();
+            if (t != tool) {
+                tool = t;
+                sb.append("$TOOL = TOOL_DATA[").append(t).append("]\n");
             }
-            if (m.spindleRpm() != rpm) {
-                spindle(sb, m.spindleRpm());
-                rpm = m.spindleRpm();
+        }
+
+        /**
+         * Starts the spindle at the speed and waits for it to run up, or stops it: output
+         * {@value #SPINDLE_ON} starts the spindle drive, analog output {@value #SPINDLE_SPEED} gives
+         * the speed as a fraction of {@value #SPINDLE_FULL_SCALE_RPM} rpm.
+         */
+        @Override
+        void spindle(double rpm) {
+            if (rpm > 0) {
+                sb.append("; spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
+                sb.append(SPINDLE_SPEED)
+                        .append(" = ")
+                        .append(f(rpm / SPINDLE_FULL_SCALE_RPM, 6))
+                        .append('\n');
+                sb.append(SPINDLE_ON).append(" = TRUE\n");
+                sb.append("WAIT SEC ")
+                        .append(f(RapidWriter.SPINDLE_RUN_UP_S, 1))
+                        .append('\n');
+            } else {
+                sb.append(SPINDLE_ON).append(" = FALSE\n");
             }
+        }
+
+        @Override
+        void motion(RobotProgram.Motion m) {
             if (m.type() == RobotProgram.MotionType.JOINT) {
                 sb.append("PTP {AXIS: ");
                 for (int i = 0; i < m.jointValues().size(); i++) {
@@ -95,10 +119,8 @@ public final class KrlWriter implements RobotProgramWriter {
                     vel = v;
                     sb.append("$VEL.CP = ").append(f(v, 6)).append('\n');
                 }
-                Vec3 pos = m.target().translationPart();
-                Vec3 abc = m.target().zyxAnglesDeg();
                 sb.append("LIN {E6POS: ");
-                frame(sb, pos, abc)
+                frame(sb, m.target())
                         .append(",S 'B")
                         .append(bits(status(m), 3))
                         .append("',T 'B")
@@ -110,42 +132,13 @@ public final class KrlWriter implements RobotProgramWriter {
                 RobotProgramWriter.appendJoints(sb, " ;", m, m.jointValues().size());
             }
             sb.append(" ; ").append(m.index()).append('\n');
-            if (m.dwellS() > 0) {
-                sb.append("WAIT SEC ").append(f(m.dwellS(), 3)).append('\n');
-            }
         }
-        if (rpm != 0) {
-            spindle(sb, 0);
-        }
-        sb.append("END\n");
-        out.write(sb.toString());
-    }
 
-    /**
-     * Starts the spindle at the speed and waits for it to run up, or stops it: output
-     * {@value #SPINDLE_ON} starts the spindle drive, analog output {@value #SPINDLE_SPEED} gives
-     * the speed as a fraction of {@value #SPINDLE_FULL_SCALE_RPM} rpm.
-     */
-    private static void spindle(StringBuilder sb, double rpm) {
-        if (rpm > 0) {
-            sb.append("; spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
-            sb.append(SPINDLE_SPEED)
-                    .append(" = ")
-                    .append(f(rpm / SPINDLE_FULL_SCALE_RPM, 6))
-                    .append('\n');
-            sb.append(SPINDLE_ON).append(" = TRUE\n");
-            sb.append("WAIT SEC ").append(f(RapidWriter.SPINDLE_RUN_UP_S, 1)).append('\n');
-        } else {
-            sb.append(SPINDLE_ON).append(" = FALSE\n");
+        @Override
+        void dwell(double seconds) {
+            sb.append("WAIT SEC ").append(f(seconds, 3)).append('\n');
         }
     }
-
-    /** The output that starts the spindle drive. */
-    public static final String SPINDLE_ON = "$OUT[1]";
-    /** The analog output of the spindle speed. */
-    public static final String SPINDLE_SPEED = "$ANOUT[1]";
-    /** The speed at full scale of {@link #SPINDLE_SPEED}, rpm. */
-    public static final double SPINDLE_FULL_SCALE_RPM = 100_000;
 
     int status(RobotProgram.Motion m) {
         return status(m, arm);
@@ -178,19 +171,14 @@ public final class KrlWriter implements RobotProgramWriter {
     }
 
     /** A frame as KRL writes it: {@code X x,Y y,Z z,A a,B b,C c}, mm and the ZYX angles in deg. */
-    private static StringBuilder frame(StringBuilder sb, Vec3 at, Vec3 abc) {
-        return sb.append("X ")
-                .append(f(at.x(), 3))
-                .append(",Y ")
-                .append(f(at.y(), 3))
-                .append(",Z ")
-                .append(f(at.z(), 3))
-                .append(",A ")
-                .append(f(abc.x(), 6))
-                .append(",B ")
-                .append(f(abc.y(), 6))
-                .append(",C ")
-                .append(f(abc.z(), 6));
+    private static StringBuilder frame(StringBuilder sb, Transform3 frame) {
+        Vec3 at = frame.translationPart();
+        Vec3 abc = frame.zyxAnglesDeg();
+        double[] v = {at.x(), at.y(), at.z(), abc.x(), abc.y(), abc.z()};
+        for (int i = 0; i < v.length; i++) {
+            sb.append(i > 0 ? "," : "").append("XYZABC".charAt(i)).append(' ').append(f(v[i], i < 3 ? 3 : 6));
+        }
+        return sb;
     }
 
     static String bits(int value, int width) {

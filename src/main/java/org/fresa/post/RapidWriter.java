@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.util.Locale;
 import org.fresa.geom.Quaternion;
+import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 
 /**
@@ -22,15 +23,20 @@ import org.fresa.geom.Vec3;
  * behind axis 1. The joints are in Fresa's convention for the robot (spec/robots.md), which for the
  * IRB-140 is ABB's.
  */
-public final class RapidWriter implements RobotProgramWriter {
+public final class RapidWriter extends RobotLanguageWriter {
 
-    private final ArmGeometry arm;
+    /** The digital output that starts the spindle drive. */
+    public static final String SPINDLE_ON = "doFresaSpindleOn";
+    /** The analog output of the spindle speed, rpm. */
+    public static final String SPINDLE_RPM = "aoFresaSpindleRpm";
+    /** The time the spindle is given to reach its speed before the first motion, s. */
+    public static final double SPINDLE_RUN_UP_S = 2;
 
     /**
      * @param arm how to tell rear and lower-arm configurations from the joints of this robot
      */
     public RapidWriter(ArmGeometry arm) {
-        this.arm = arm;
+        super("rapid", "program.mod", arm);
     }
 
     /** What cfx needs to know of the arm, from its kinematics. */
@@ -40,16 +46,6 @@ public final class RapidWriter implements RobotProgramWriter {
 
         /** True when the elbow is below the shoulder-wrist line (ABB's "lower arm" case). */
         boolean lowerArm(RobotProgram.Motion m);
-    }
-
-    @Override
-    public String format() {
-        return "rapid";
-    }
-
-    @Override
-    public String fileName() {
-        return "program.mod";
     }
 
     @Override
@@ -63,10 +59,8 @@ public final class RapidWriter implements RobotProgramWriter {
                 .append(p.motions().size())
                 .append(" motions\n");
         for (RobotProgram.ToolFrame t : p.tools()) {
-            Vec3 at = t.tcp().translationPart();
-            Quaternion q = Quaternion.of(t.tcp());
             sb.append("  PERS tooldata ").append(toolName(t)).append(" := [TRUE,[");
-            pose(sb, at, q).append("],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
+            pose(sb, t.tcp()).append("],[1,[0,0,1],[1,0,0,0],0,0,0]];\n");
         }
         sb.append("  PERS wobjdata wFresa := [FALSE,TRUE,\"\",[[0,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];\n");
         sb.append("  ! the joints and poses are in the robot base frame (wFresa is the identity); each tooldata\n");
@@ -75,19 +69,47 @@ public final class RapidWriter implements RobotProgramWriter {
         sb.append("  PROC main()\n");
         sb.append("    ConfJ \\On;\n");
         sb.append("    ConfL \\On;\n");
-        String ws = null;
-        double rpm = 0;
-        for (RobotProgram.Motion m : p.motions()) {
-            if (!m.workingstep().equals(ws)) {
-                ws = m.workingstep();
-                sb.append("    ! workingstep ").append(ws.replace('\n', ' ')).append('\n');
+        walk(new Lines(p, sb));
+        sb.append("  ENDPROC\n");
+        sb.append("ENDMODULE\n");
+        out.write(sb.toString());
+    }
+
+    /** The lines of the program's motions inside {@code PROC main()}. */
+    private final class Lines extends Steps {
+
+        Lines(RobotProgram p, StringBuilder sb) {
+            super(p, sb);
+        }
+
+        @Override
+        void workingstep(String ws) {
+            sb.append("    ! workingstep ").append(ws.replace('\n', ' ')).append('\n');
+        }
+
+        /**
+         * Starts the spindle at the speed and waits for it to run up, or stops it: the spindle drive is
+         * wired to the controller's signals {@value #SPINDLE_ON} (start) and {@value #SPINDLE_RPM}
+         * (speed in rpm), which the cell's I/O configuration must define.
+         */
+        @Override
+        void spindle(double rpm) {
+            if (rpm > 0) {
+                sb.append("    ! spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
+                sb.append("    SetAO ")
+                        .append(SPINDLE_RPM)
+                        .append(", ")
+                        .append(f(rpm, 0))
+                        .append(";\n");
+                sb.append("    SetDO ").append(SPINDLE_ON).append(", 1;\n");
+                sb.append("    WaitTime ").append(f(SPINDLE_RUN_UP_S, 1)).append(";\n");
+            } else {
+                sb.append("    SetDO ").append(SPINDLE_ON).append(", 0;\n");
             }
-            if (m.spindleRpm() != rpm) {
-                spindle(sb, m.spindleRpm());
-                rpm = m.spindleRpm();
-            }
-            String speed = speed(m.speedMmPerS());
-            String zone = zone(m.zoneMm());
+        }
+
+        @Override
+        void motion(RobotProgram.Motion m) {
             if (m.type() == RobotProgram.MotionType.JOINT || m.jointValues().size() != 6) {
                 sb.append("    MoveAbsJ [[");
                 for (int i = 0; i < 6; i++) {
@@ -96,69 +118,30 @@ public final class RapidWriter implements RobotProgramWriter {
                     }
                     sb.append(i < m.jointValues().size() ? f(m.joint(i), 6) : "0");
                 }
-                sb.append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],")
-                        .append(speed)
-                        .append(',')
-                        .append(zone)
-                        .append(',')
-                        .append(toolName(p.toolOf(m.workingstep())))
-                        .append("\\WObj:=wFresa;");
+                sb.append(extaxSpeedZoneTool(m));
             } else {
-                Vec3 pos = m.target().translationPart();
-                Quaternion q = Quaternion.of(m.target());
                 sb.append("    MoveL [");
-                pose(sb, pos, q)
-                        .append(",[")
-                        .append(confdata(m, arm))
-                        .append("],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]],")
-                        .append(speed)
-                        .append(',')
-                        .append(zone)
-                        .append(',')
-                        .append(toolName(p.toolOf(m.workingstep())))
-                        .append("\\WObj:=wFresa;");
+                pose(sb, m.target()).append(",[").append(confdata(m, arm)).append(extaxSpeedZoneTool(m));
                 // the joints the trajectory found for this robtarget, so a reader can check them
                 RobotProgramWriter.appendJoints(sb, " !", m, 6);
             }
             sb.append(" ! ").append(m.index()).append('\n');
-            if (m.dwellS() > 0) {
-                sb.append("    WaitTime \\InPos, ").append(f(m.dwellS(), 3)).append(";\n");
-            }
         }
-        if (rpm != 0) {
-            spindle(sb, 0);
-        }
-        sb.append("  ENDPROC\n");
-        sb.append("ENDMODULE\n");
-        out.write(sb.toString());
-    }
 
-    /**
-     * Starts the spindle at the speed and waits for it to run up, or stops it: the spindle drive is
-     * wired to the controller's signals {@value #SPINDLE_ON} (start) and {@value #SPINDLE_RPM}
-     * (speed in rpm), which the cell's I/O configuration must define.
-     */
-    private static void spindle(StringBuilder sb, double rpm) {
-        if (rpm > 0) {
-            sb.append("    ! spindle on at ").append(f(rpm, 0)).append(" rpm before the tool cuts\n");
-            sb.append("    SetAO ")
-                    .append(SPINDLE_RPM)
-                    .append(", ")
-                    .append(f(rpm, 0))
-                    .append(";\n");
-            sb.append("    SetDO ").append(SPINDLE_ON).append(", 1;\n");
-            sb.append("    WaitTime ").append(f(SPINDLE_RUN_UP_S, 1)).append(";\n");
-        } else {
-            sb.append("    SetDO ").append(SPINDLE_ON).append(", 0;\n");
+        /**
+         * What follows a target's axes: no external axes, then the motion's speed and zone, and
+         * the tool of its workingstep in the work object.
+         */
+        private String extaxSpeedZoneTool(RobotProgram.Motion m) {
+            return "],[9E+09,9E+09,9E+09,9E+09,9E+09,9E+09]]," + speed(m.speedMmPerS()) + "," + zone(m.zoneMm()) + ","
+                    + toolName(program.toolOf(m.workingstep())) + "\\WObj:=wFresa;";
+        }
+
+        @Override
+        void dwell(double seconds) {
+            sb.append("    WaitTime \\InPos, ").append(f(seconds, 3)).append(";\n");
         }
     }
-
-    /** The digital output that starts the spindle drive. */
-    public static final String SPINDLE_ON = "doFresaSpindleOn";
-    /** The analog output of the spindle speed, rpm. */
-    public static final String SPINDLE_RPM = "aoFresaSpindleRpm";
-    /** The time the spindle is given to reach its speed before the first motion, s. */
-    public static final double SPINDLE_RUN_UP_S = 2;
 
     /** The tooldata's name of a tool. */
     static String toolName(RobotProgram.ToolFrame t) {
@@ -223,22 +206,23 @@ public final class RapidWriter implements RobotProgramWriter {
     }
 
     /** A pose as RAPID writes it: {@code [x,y,z],[q1,q2,q3,q4]}, mm and the unit quaternion. */
-    private static StringBuilder pose(StringBuilder sb, Vec3 at, Quaternion q) {
+    private static StringBuilder pose(StringBuilder sb, Transform3 pose) {
+        Vec3 at = pose.translationPart();
+        Quaternion q = Quaternion.of(pose);
         return sb.append('[')
-                .append(f(at.x(), 3))
-                .append(',')
-                .append(f(at.y(), 3))
-                .append(',')
-                .append(f(at.z(), 3))
+                .append(list(3, at.x(), at.y(), at.z()))
                 .append("],[")
-                .append(f(q.w(), 8))
-                .append(',')
-                .append(f(q.x(), 8))
-                .append(',')
-                .append(f(q.y(), 8))
-                .append(',')
-                .append(f(q.z(), 8))
+                .append(list(8, q.w(), q.x(), q.y(), q.z()))
                 .append(']');
+    }
+
+    /** Numbers separated by commas, each with the decimals given. */
+    private static String list(int decimals, double... values) {
+        StringBuilder sb = new StringBuilder();
+        for (double v : values) {
+            sb.append(sb.length() > 0 ? "," : "").append(f(v, decimals));
+        }
+        return sb.toString();
     }
 
     static String f(double v, int decimals) {

@@ -1,27 +1,21 @@
 package org.fresa.app.cli;
 
-import java.util.concurrent.Callable;
 import org.fresa.bench.Benchmarks;
 import org.fresa.io.Json;
 import org.fresa.job.TaskOutcome;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa bench [--json]}: short versions of the performance benchmarks. */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Run short benchmarks and print the figures.")
-final class BenchCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class BenchCommand extends CliCommand {
 
     @Option(names = "--json", description = "print the figures as one JSON object")
     boolean json;
 
     @Override
     public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), false, progress -> {
+        return run(false, progress -> {
             java.nio.file.Path jar = null;
             try {
                 java.nio.file.Path self = java.nio.file.Path.of(BenchCommand.class
@@ -35,9 +29,9 @@ final class BenchCommand implements Callable<Integer> {
             }
             java.util.Map<String, Object> figures = Benchmarks.run(jar, progress);
             if (json) {
-                spec.commandLine().getOut().println(Json.write(figures));
+                out().println(Json.write(figures));
             } else {
-                spec.commandLine().getOut().print(Benchmarks.table(figures));
+                out().print(Benchmarks.table(figures));
             }
             return new TaskOutcome(0, java.util.List.of(), java.util.Map.of(), java.util.List.of());
         });

@@ -1,7 +1,6 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 import org.fresa.cutting.CutProcess;
 import org.fresa.cutting.CutSense;
 import org.fresa.cutting.KerfCompensation;
@@ -12,10 +11,8 @@ import org.fresa.job.JobSettings.CuttingSettings;
 import org.fresa.post.CuttingPost;
 import org.fresa.setting.SettingRanges.Cutting;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa cut DRAWING.dxf --out FILE [cutting options] [--post NAME] [--json]}. */
 @Command(
@@ -23,12 +20,9 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         sortOptions = false,
         description = "Sheet cutting path (plasma, laser, waterjet) from a DXF drawing.")
-final class CutCommand implements Callable<Integer> {
+final class CutCommand extends CliCommand {
 
     private static final CuttingSettings DEFAULTS = CuttingSettings.DEFAULTS;
-
-    @Spec
-    CommandSpec spec;
 
     @Parameters(index = "0", paramLabel = "DRAWING", description = "DXF drawing (ASCII or binary)")
     Path drawing;
@@ -99,7 +93,7 @@ final class CutCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             CuttingSettings s = new CuttingSettings(
                     drawing,
                     Cutting.KERF.check(kerfMm),

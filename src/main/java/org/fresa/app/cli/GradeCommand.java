@@ -3,7 +3,6 @@ package org.fresa.app.cli;
 import java.nio.file.Path;
 import java.util.Optional;
 import java.util.OptionalDouble;
-import java.util.concurrent.Callable;
 import org.fresa.geom.Vec2;
 import org.fresa.grading.ArcMode;
 import org.fresa.grading.Coordination;
@@ -15,10 +14,8 @@ import org.fresa.model.CamInputException;
 import org.fresa.setting.SettingRange;
 import org.fresa.setting.SettingRanges.Grading;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa grade OUTLINE --out DIR [grading options] [--json]}. */
 @Command(
@@ -26,10 +23,7 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         sortOptions = false,
         description = "A sole outline graded over a range of shoe sizes.")
-final class GradeCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class GradeCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "OUTLINE", description = "outline (.dxf or Fresa contour file)")
     Path outline;
@@ -100,7 +94,7 @@ final class GradeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             GradingSettings s = new GradingSettings(
                     outline.toAbsolutePath(),
                     Grading.BASE_SIZE.check(baseSize),

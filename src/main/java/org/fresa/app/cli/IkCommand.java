@@ -1,29 +1,26 @@
 package org.fresa.app.cli;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
-import java.util.Optional;
-import java.util.OptionalDouble;
-import java.util.concurrent.Callable;
 import org.fresa.cell.RobotTools;
 import org.fresa.job.IkService;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
 import org.fresa.kin.IkOptions;
+import org.fresa.model.CamInputException;
 import org.fresa.setting.SettingRanges;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa ik TARGETS.csv --robot NAME|FILE --out DIR [ik options]}. */
 @Command(
         name = "ik",
         mixinStandardHelpOptions = true,
         description = "Inverse kinematics of any list of tool poses (x,y,z,roll,pitch,yaw[,q1..qN] per row).")
-final class IkCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class IkCommand extends FolderCommand {
 
     @Parameters(
             index = "0",
@@ -32,15 +29,8 @@ final class IkCommand implements Callable<Integer> {
                     + "R = Rz(roll)*Ry(pitch)*Rx(yaw); optional seed joints")
     Path targets;
 
-    @Option(
-            names = "--robot",
-            required = true,
-            paramLabel = "NAME|FILE",
-            description = "built-in robot (irb140, adept-one, tricept806) or a robot file")
-    String robot;
-
-    @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder")
-    Path out;
+    @Mixin
+    RobotOptions robot = new RobotOptions();
 
     @Option(
             names = "--tolerance-mm",
@@ -79,21 +69,12 @@ final class IkCommand implements Callable<Integer> {
             description = "tool length from the spindle nose to the tip; the TCP is spindle * Tz(tool length)")
     Double toolLength;
 
-    @Option(names = "--json", description = "print a JSON summary on stdout")
-    boolean json;
-
     @Override
-    public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
-            double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
-            Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
-            RobotTools.Choice tool = new RobotTools.Choice(
-                    spindle == null ? Optional.empty() : Optional.of(SettingRanges.Robot.parseSpindle(spindle)),
-                    toolLength == null
-                            ? OptionalDouble.empty()
-                            : OptionalDouble.of(SettingRanges.Robot.TOOL_LENGTH.check(toolLength)));
-            IkService.Settings s = new IkService.Settings(targets, robot, tool, method, tol, conf, all);
-            return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
-        });
+    TaskOutcome work(ProgressMonitor progress) throws CamInputException, IOException {
+        double tol = SettingRanges.Robot.IK_TOLERANCE.check(toleranceMm);
+        Map<String, Integer> conf = configuration == null ? Map.of() : IkService.parseConfiguration(configuration);
+        RobotTools.Choice tool = RobotOptions.tool(spindle, toolLength);
+        IkService.Settings s = new IkService.Settings(targets, robot.robot, tool, method, tol, conf, all);
+        return CliSupport.intoFolder(out, folder -> IkService.run(s, folder, progress));
     }
 }

@@ -2,7 +2,6 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.Optional;
-import java.util.concurrent.Callable;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.PocketService;
 import org.fresa.pocket.EntryRule;
@@ -11,10 +10,8 @@ import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.PocketPost;
 import org.fresa.setting.SettingRanges.Pocket;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /**
  * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
@@ -26,12 +23,9 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         sortOptions = false,
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
-final class PocketCommand implements Callable<Integer> {
+final class PocketCommand extends CliCommand {
 
     private static final PocketSettings DEFAULTS = PocketSettings.DEFAULTS;
-
-    @Spec
-    CommandSpec spec;
 
     @Parameters(
             index = "0",
@@ -145,7 +139,7 @@ final class PocketCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             PocketSettings settings = new PocketSettings(
                             contour,
                             Pocket.TOOL_DIAMETER.check(toolDiameterMm),

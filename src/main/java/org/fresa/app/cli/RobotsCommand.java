@@ -4,36 +4,23 @@ import java.io.PrintWriter;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.Callable;
 import org.fresa.cell.RobotFiles;
-import org.fresa.io.Json;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa robots}: the built-in robots and their parameters. */
 @Command(
         name = "robots",
         mixinStandardHelpOptions = true,
         description = "List the built-in robots and their parameters.")
-final class RobotsCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
-
-    @Option(names = "--json", description = "print as JSON")
-    boolean json;
+final class RobotsCommand extends ListingCommand {
 
     @Override
-    public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        Map<String, Object> all = RobotFiles.describeBuiltIns();
-        if (json) {
-            out.println(Json.write(all));
-            out.flush();
-            return CliSupport.EXIT_OK;
-        }
+    Map<String, Object> listing() {
+        return RobotFiles.describeBuiltIns();
+    }
+
+    @Override
+    void print(Map<String, Object> all, PrintWriter out) {
         for (Object o : (List<?>) all.get("robots")) {
             Map<?, ?> r = (Map<?, ?>) o;
             out.println(r.get("name") + ": " + r.get("description"));
@@ -66,8 +53,6 @@ final class RobotsCommand implements Callable<Integer> {
                         + num(r.get("effector_length_mm")) + " mm");
             }
         }
-        out.flush();
-        return CliSupport.EXIT_OK;
     }
 
     private static String variable(Object offset) {

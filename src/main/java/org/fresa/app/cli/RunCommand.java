@@ -1,26 +1,20 @@
 package org.fresa.app.cli;
 
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.Job;
 import org.fresa.job.JobRunner;
 import org.fresa.job.JobXml;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa run JOB --out DIR}: a saved job, headless. */
 @Command(
         name = "run",
         mixinStandardHelpOptions = true,
         description = "Run a saved job file (the same file the desktop application saves) headless.")
-final class RunCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class RunCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "JOB", description = "job file (.xml, schemas/job.xsd)")
     Path job;
@@ -33,7 +27,7 @@ final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return CliSupport.run(spec.commandLine().getOut(), spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             OutputFolder folder = OutputFolder.of(out, "--out");
             Job j = JobXml.read(job);
             return JobRunner.run(j, folder, progress);

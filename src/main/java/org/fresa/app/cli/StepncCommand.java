@@ -2,24 +2,18 @@ package org.fresa.app.cli;
 
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.Callable;
 import org.fresa.job.StepNcService;
 import org.fresa.stepnc.StepNcProgram;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fresa stepnc FILE [--json]}: describe an ISO 14649 Part 21 file. */
 @Command(
         name = "stepnc",
         mixinStandardHelpOptions = true,
         description = "Read an ISO 14649 (STEP-NC) Part 21 file and describe it.")
-final class StepncCommand implements Callable<Integer> {
-
-    @Spec
-    CommandSpec spec;
+final class StepncCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file (.stp, .p21)")
     Path file;
@@ -29,13 +23,12 @@ final class StepncCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        java.io.PrintWriter out = spec.commandLine().getOut();
-        return CliSupport.run(out, spec.commandLine().getErr(), json, progress -> {
+        return run(json, progress -> {
             StepNcProgram program = StepNcService.read(file, progress);
             List<StepNcService.NotPlanned> notPlanned = StepNcService.notPlanned(program);
             if (!json) {
-                out.print(StepNcService.prose(program));
-                out.print(StepNcService.notPlannedProse(notPlanned));
+                out().print(StepNcService.prose(program));
+                out().print(StepNcService.notPlannedProse(notPlanned));
             }
             return StepNcService.describe(program, notPlanned);
         });
