@@ -35,7 +35,7 @@ import org.fresa.setting.SettingRanges.Cutting;
  * Sheet cutting: open a DXF, set kerf, process, leads, compensation and directions, cut, see the
  * plan (parts, holes, open chains, pierces, leads, order, rapids), the totals and the program.
  */
-final class CuttingTab implements ModuleTab {
+final class CuttingTab extends PlotTab {
 
     private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
     private static final java.awt.Color PROBLEM = new java.awt.Color(180, 0, 0);
@@ -44,8 +44,6 @@ final class CuttingTab implements ModuleTab {
     private CuttingViewModel vm = new CuttingViewModel();
     // the job's cutting settings the fields show: a job that holds others is shown afresh
     private Optional<CuttingSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel warnings = new WarningsPanel("cutting-warnings", 5);
     private final JTextArea program = new JTextArea();
     private final JTextArea totals = new JTextArea("No drawing cut yet.");
@@ -95,6 +93,7 @@ final class CuttingTab implements ModuleTab {
     private final TypingPause typing = new TypingPause(this::commit);
 
     CuttingTab(AppContext ctx) {
+        super("Cutting");
         this.ctx = ctx;
         JPanel form = new JPanel(new GridBagLayout());
         form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
@@ -651,19 +650,4 @@ final class CuttingTab implements ModuleTab {
             org.fresa.chart.PlotScene scene,
             String totals,
             javax.swing.text.Document program) {}
-
-    @Override
-    public String title() {
-        return "Cutting";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
-    }
 }

@@ -35,14 +35,12 @@ import org.fresa.model.CamInputException;
  * system, base size, range, steps, shrinkage), the nested graded outlines and the grading table,
  * and Export of every size's files. The state lives in {@link GradingViewModel}.
  */
-final class GradingTab implements ModuleTab {
+final class GradingTab extends PlotTab {
 
     private final AppContext ctx;
     private GradingViewModel vm = new GradingViewModel();
     // the job's grading settings the fields show: a job that holds others is shown afresh
     private Optional<GradingSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final DefaultTableModel tableModel = new DefaultTableModel(GradingViewModel.COLUMNS.toArray(), 0) {
         private static final long serialVersionUID = 1L;
 
@@ -78,6 +76,7 @@ final class GradingTab implements ModuleTab {
     private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
 
     GradingTab(AppContext ctx) {
+        super("Grading");
         this.ctx = ctx;
         JPanel form = new JPanel(new GridBagLayout());
         form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
@@ -436,20 +435,5 @@ final class GradingTab implements ModuleTab {
 
     private void refreshPlot() {
         plot.show(vm.scene());
-    }
-
-    @Override
-    public String title() {
-        return "Grading";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }

@@ -8,7 +8,6 @@ import java.util.Map;
 import java.util.Optional;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
-import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -29,7 +28,7 @@ import org.fresa.post.PocketPost;
  * accepted them. A bad field is marked, with the reason beside Compute. A program that fails the
  * program check is shown with its failing block marked, and Save program refuses it.
  */
-final class PocketTab implements ModuleTab {
+final class PocketTab extends PlotTab {
 
     private static final Color BAD = new Color(255, 220, 220);
 
@@ -37,8 +36,6 @@ final class PocketTab implements ModuleTab {
     private PocketViewModel model = new PocketViewModel();
     // the job's pocket settings the fields show: a job that holds others is shown afresh
     private Optional<PocketSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final JTextArea report = new JTextArea(12, 40);
     private final JTextArea nc = new JTextArea(12, 40);
     private final JTextField contour = new JTextField(24);
@@ -65,6 +62,7 @@ final class PocketTab implements ModuleTab {
             new ContourEditorPanel(editor, this::contourEdited, () -> plot.show(editor.scene()), this::saveContour);
 
     PocketTab(AppContext ctx) {
+        super("Pocket");
         this.ctx = ctx;
         form.setLayout(new GridLayout(0, 2, 4, 4));
         JLabel cl = new JLabel("Contour (.dad, .contour)");
@@ -533,20 +531,5 @@ final class PocketTab implements ModuleTab {
             ctx.tasks().failed("Pocket");
             say(model.error().orElse("The pocket cannot be planned."), true);
         }
-    }
-
-    @Override
-    public String title() {
-        return "Pocket";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }

@@ -42,12 +42,10 @@ import org.fresa.sole.Foot;
  * nudged with the arrow keys (1 mm, Shift 10 mm), removed with Delete; its parameters edited in
  * a table; the job's size and foot; Generate writes the programs of the edited job.
  */
-final class SoleTab implements ModuleTab {
+final class SoleTab extends PlotTab {
 
     private final SoleViewModel vm = new SoleViewModel();
     private final AppContext ctx;
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final PlotPanel preview = new PlotPanel();
     private final WarningsPanel problems = new WarningsPanel("sole-problems", 3);
     private final JList<String> library;
@@ -63,6 +61,7 @@ final class SoleTab implements ModuleTab {
     private Vec2 dragFrom;
 
     SoleTab(AppContext ctx) {
+        super("Sole");
         this.ctx = ctx;
         library = new JList<>(vm.macros().toArray(new String[0]));
         library.setName("sole-library");
@@ -458,20 +457,5 @@ final class SoleTab implements ModuleTab {
                 edited(why);
             }
         }
-    }
-
-    @Override
-    public String title() {
-        return "Sole";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }
