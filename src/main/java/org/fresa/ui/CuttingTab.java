@@ -88,9 +88,7 @@ final class CuttingTab extends PlotTab {
     // the order the list shows was cut with: an edit waits until the list shows the job's order
     private org.fresa.cutting.CutOrderOverride listed;
     private final JLabel status = new JLabel(" ");
-    // set while the fields are filled from the job, so their listeners do not write it back
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
+    private final FieldEdits edits = new FieldEdits(this::fieldsGood, this::commit);
 
     CuttingTab(AppContext ctx) {
         super("Cutting");
@@ -112,13 +110,13 @@ final class CuttingTab extends PlotTab {
         status.setName("cutting-status");
         status.setForeground(PROBLEM);
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
-            TextChanges.onChange(f, () -> typed(f.getName()));
+            TextChanges.onChange(f, () -> edits.typed(f.getName()));
         }
         for (JComboBox<?> c : java.util.List.of(process, lead, compensation, outerDir, holeDir, post)) {
-            c.addActionListener(e -> edited(null));
+            c.addActionListener(e -> edits.chosen(null));
         }
-        avoid.addActionListener(e -> edited(null));
-        paper.addActionListener(e -> edited(null));
+        avoid.addActionListener(e -> edits.chosen(null));
+        paper.addActionListener(e -> edits.chosen(null));
         kerf.setToolTipText("full kerf width; the path runs half of it off the part");
         compensation.setName("cutting-compensation");
         compensation.setToolTipText("software: offset path; controller: the drawn contour with G41/G42");
@@ -228,7 +226,7 @@ final class CuttingTab extends PlotTab {
 
     /** The job's cutting settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
-        typing.drop();
+        edits.drop();
         if (document || ctx.model().job().cutting().isEmpty()) {
             vm = new CuttingViewModel();
         }
@@ -245,26 +243,10 @@ final class CuttingTab extends PlotTab {
         check();
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
+    /** The view model takes the fields, which are marked; true when every one is good. */
+    private boolean fieldsGood() {
         takeFields();
-        if (check().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice or a drawing: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
+        return check().isEmpty();
     }
 
     /**
@@ -336,12 +318,7 @@ final class CuttingTab extends PlotTab {
     }
 
     private void showFields() {
-        filling = true;
-        try {
-            fillFields();
-        } finally {
-            filling = false;
-        }
+        edits.fill(this::fillFields);
     }
 
     private void fillFields() {
@@ -385,7 +362,7 @@ final class CuttingTab extends PlotTab {
             program.setText("");
             totals.setText("No drawing cut yet.");
             warnings.show(WarningList.none());
-            edited(null);
+            edits.chosen(null);
         }
     }
 
@@ -394,7 +371,7 @@ final class CuttingTab extends PlotTab {
      * it); a drawing the cut refuses is said beside Cut, and the status bar says "failed".
      */
     void run() {
-        typing.flush();
+        edits.flush();
         takeFields();
         if (!check().isEmpty()) {
             return;
@@ -620,7 +597,7 @@ final class CuttingTab extends PlotTab {
 
     /** An edit of the list goes into the job (one undo step) and the drawing is cut again to show it. */
     private void orderEdited(int select) {
-        typing.flush();
+        edits.flush();
         takeFields();
         if (!check().isEmpty()) {
             return;

@@ -70,9 +70,7 @@ final class GradingTab extends PlotTab {
 
     private final JButton grade = new JButton("Grade");
     private final JLabel status = new JLabel(" ");
-    // set while the fields are filled from the job, so their listeners do not write it back
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
+    private final FieldEdits edits = new FieldEdits(this::fieldsGood, this::commit);
     private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
 
     GradingTab(AppContext ctx) {
@@ -117,11 +115,11 @@ final class GradingTab extends PlotTab {
         status.setName("grading-status");
         status.setForeground(new java.awt.Color(180, 0, 0));
         for (JTextField f : textFields()) {
-            TextChanges.onChange(f, () -> typed(f.getName()));
+            TextChanges.onChange(f, () -> edits.typed(f.getName()));
         }
-        system.addActionListener(e -> edited(null));
-        shrinkageMode.addActionListener(e -> edited(null));
-        halfSizes.addActionListener(e -> edited(null));
+        system.addActionListener(e -> edits.chosen(null));
+        shrinkageMode.addActionListener(e -> edits.chosen(null));
+        halfSizes.addActionListener(e -> edits.chosen(null));
 
         int row = 0;
         addRow(form, row++, "Outline:", 'U', open, outlineName);
@@ -190,7 +188,7 @@ final class GradingTab extends PlotTab {
 
     /** The job's grading settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
-        typing.drop();
+        edits.drop();
         if (document || ctx.model().job().grading().isEmpty()) {
             vm = new GradingViewModel();
         }
@@ -203,26 +201,10 @@ final class GradingTab extends PlotTab {
         check();
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
+    /** The view model takes the fields, which are marked; true when every one is good. */
+    private boolean fieldsGood() {
         pushFields();
-        if (check().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice, a tick or an outline: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
+        return check().isEmpty();
     }
 
     /**
@@ -312,12 +294,7 @@ final class GradingTab extends PlotTab {
     }
 
     private void showFields() {
-        filling = true;
-        try {
-            fillFields();
-        } finally {
-            filling = false;
-        }
+        edits.fill(this::fillFields);
     }
 
     private void fillFields() {
@@ -365,7 +342,7 @@ final class GradingTab extends PlotTab {
         showFields();
         tableModel.setRowCount(0);
         refreshPlot();
-        edited(null);
+        edits.chosen(null);
     }
 
     /**
@@ -373,7 +350,7 @@ final class GradingTab extends PlotTab {
      * grading the planner refuses is said beside Grade, and the status bar says "failed".
      */
     private void grade() {
-        typing.flush();
+        edits.flush();
         pushFields();
         if (!check().isEmpty()) {
             return;

@@ -55,8 +55,7 @@ final class PocketTab extends PlotTab {
     private final JLabel status = new JLabel(" ");
     private final JPanel form = new JPanel();
     private final JTabbedPane texts = new JTabbedPane();
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
+    private final FieldEdits edits = new FieldEdits(() -> fieldsChanged().isEmpty(), this::commit);
     private final PocketContourEditor editor = new PocketContourEditor();
     private final ContourEditorPanel editorPanel =
             new ContourEditorPanel(editor, this::contourEdited, () -> plot.show(editor.scene()), this::saveContour);
@@ -71,7 +70,7 @@ final class PocketTab extends PlotTab {
         contour.setName(PocketViewModel.CONTOUR);
         TextChanges.onChange(contour, () -> {
             contourFileChanged();
-            typed(contour.getName());
+            edits.typed(contour.getName());
         });
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
@@ -85,7 +84,7 @@ final class PocketTab extends PlotTab {
             tech[i] = new JTextField(8);
             tech[i].setName(PocketViewModel.NAMES.get(i));
             String name = tech[i].getName();
-            TextChanges.onChange(tech[i], () -> typed(name));
+            TextChanges.onChange(tech[i], () -> edits.typed(name));
             JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
             l.setLabelFor(tech[i]);
             form.add(l);
@@ -95,14 +94,14 @@ final class PocketTab extends PlotTab {
         pl.setLabelFor(post);
         pl.setDisplayedMnemonic('P');
         post.setName("pocket-post");
-        post.addActionListener(e -> edited(null));
+        post.addActionListener(e -> edits.chosen(null));
         form.add(pl);
         form.add(post);
         JLabel dl = new JLabel("Direction (not 7m-compat)");
         dl.setLabelFor(direction);
         dl.setDisplayedMnemonic('D');
         direction.setName("pocket-direction");
-        direction.addActionListener(e -> edited(null));
+        direction.addActionListener(e -> edits.chosen(null));
         form.add(dl);
         form.add(direction);
         JLabel el = new JLabel("Entry (not 7m-compat)");
@@ -193,12 +192,11 @@ final class PocketTab extends PlotTab {
 
     /** The job's pocket settings, or a new job's; no result. */
     private void showJob() {
-        typing.drop();
+        edits.drop();
         model = new PocketViewModel();
         model.load(ctx.model().job());
         shown = ctx.model().job().pocket();
-        filling = true;
-        try {
+        edits.fill(() -> {
             contour.setText(model.contourText());
             for (int i = 0; i < tech.length; i++) {
                 tech[i].setText(model.value(i));
@@ -212,9 +210,7 @@ final class PocketTab extends PlotTab {
             angle.setText(model.angle());
             stockToLeave.setText(model.stockToLeave());
             order.setSelectedItem(model.order());
-        } finally {
-            filling = false;
-        }
+        });
         report.setText("");
         nc.setText("");
         editor.load(model.editorContour());
@@ -232,7 +228,7 @@ final class PocketTab extends PlotTab {
      * again instead of the elements typed before.
      */
     private void contourFileChanged() {
-        if (filling) {
+        if (edits.filling()) {
             return;
         }
         model.setContourText(contour.getText());
@@ -258,7 +254,7 @@ final class PocketTab extends PlotTab {
         if (!editor.valid()) {
             return;
         }
-        typing.flush();
+        edits.flush();
         model.setElements(Optional.of(editor.contour()));
         commit(null);
     }
@@ -294,13 +290,8 @@ final class PocketTab extends PlotTab {
             say("Cannot save " + file + ": " + e.getMessage(), true);
             return;
         }
-        filling = true;
-        try {
-            contour.setText(file.toString());
-        } finally {
-            filling = false;
-        }
-        typing.flush();
+        edits.fill(() -> contour.setText(file.toString()));
+        edits.flush();
         model.setElements(Optional.of(editor.contour()));
         fieldsChanged();
         commit(null);
@@ -315,34 +306,13 @@ final class PocketTab extends PlotTab {
         }
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
-        if (fieldsChanged().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
-    }
-
     /**
      * A field changed: the view model takes it and, when every field is good, the job takes the
      * settings (one undo step per field typed into). A contour that is not yet a file keeps the
      * job's contour: the planner's check of it comes with Compute.
      */
     private void commit(String field) {
-        if (filling || !fieldsChanged().isEmpty()) {
+        if (edits.filling() || !fieldsChanged().isEmpty()) {
             return;
         }
         Optional<PocketSettings> typed = model.typedSettings();
@@ -363,7 +333,7 @@ final class PocketTab extends PlotTab {
 
     /** Takes the fields into the view model, marks the bad ones and says why beside Compute. */
     private Map<String, String> fieldsChanged() {
-        if (filling) {
+        if (edits.filling()) {
             return Map.of();
         }
         model.setContourText(contour.getText());
@@ -472,7 +442,7 @@ final class PocketTab extends PlotTab {
     }
 
     private void compute() {
-        typing.flush();
+        edits.flush();
         if (!fieldsChanged().isEmpty()) {
             return;
         }
