@@ -37,9 +37,6 @@ import org.fresa.setting.SettingRanges.Cutting;
  */
 final class CuttingTab extends PlotTab {
 
-    private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
-    private static final java.awt.Color PROBLEM = new java.awt.Color(180, 0, 0);
-
     private final AppContext ctx;
     private CuttingViewModel vm = new CuttingViewModel();
     // the job's cutting settings the fields show: a job that holds others is shown afresh
@@ -93,8 +90,7 @@ final class CuttingTab extends PlotTab {
     CuttingTab(AppContext ctx) {
         super("Cutting");
         this.ctx = ctx;
-        JPanel form = new JPanel(new GridBagLayout());
-        form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
+        FormGrid form = new FormGrid(2);
         JButton open = new JButton("Open DXF...");
         open.setMnemonic('O');
         open.setName("cutting-open");
@@ -108,7 +104,7 @@ final class CuttingTab extends PlotTab {
         overcut.setName(CuttingViewModel.OVERCUT);
         file.setName(CuttingViewModel.DRAWING);
         status.setName("cutting-status");
-        status.setForeground(PROBLEM);
+        status.setForeground(ProblemMarks.PROBLEM);
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
             TextChanges.onChange(f, () -> edits.typed(f.getName()));
         }
@@ -135,47 +131,25 @@ final class CuttingTab extends PlotTab {
         totals.setColumns(18);
 
         buildOrderControls();
-        int row = 0;
-        addRow(form, row++, "Drawing:", (char) 0, open, null);
-        addRow(form, row++, "", (char) 0, file, null);
-        addRow(form, row++, "Kerf (mm):", 'K', kerf, null);
-        addRow(form, row++, "Process:", 'P', process, null);
-        addRow(form, row++, "Lead-in (mm):", 'I', leadIn, null);
-        addRow(form, row++, "Lead-out (mm):", 'U', leadOut, null);
-        addRow(form, row++, "Lead shape:", 'L', lead, null);
-        addRow(form, row++, "Overcut (mm):", 'V', overcut, null);
-        addRow(form, row++, "Compensation:", 'N', compensation, null);
-        addRow(form, row++, "Outer sense:", 'E', outerDir, null);
-        addRow(form, row++, "Hole sense:", 'H', holeDir, null);
-        addRow(form, row++, "", (char) 0, avoid, null);
-        addRow(form, row++, "Post:", 'S', post, null);
-        addRow(form, row++, "", (char) 0, paper, null);
-        addRow(form, row++, "", (char) 0, cut, null);
-        GridBagConstraints st = new GridBagConstraints();
-        st.gridx = 0;
-        st.gridy = row++;
-        st.gridwidth = 3;
-        st.fill = GridBagConstraints.HORIZONTAL;
-        st.insets = new Insets(2, 2, 2, 2);
-        form.add(status, st);
-        GridBagConstraints t = new GridBagConstraints();
-        t.gridx = 0;
-        t.gridy = row++;
-        t.gridwidth = 3;
-        t.fill = GridBagConstraints.HORIZONTAL;
-        t.insets = new Insets(10, 2, 2, 2);
-        form.add(totals, t);
-        GridBagConstraints o = new GridBagConstraints();
-        o.gridx = 0;
-        o.gridy = row++;
-        o.gridwidth = 3;
-        o.fill = GridBagConstraints.HORIZONTAL;
-        o.insets = new Insets(10, 2, 2, 2);
-        form.add(orderPanel(), o);
-        GridBagConstraints filler = new GridBagConstraints();
-        filler.gridy = row;
-        filler.weighty = 1;
-        form.add(new JPanel(), filler);
+        form.row("Drawing:", (char) 0, open, null);
+        form.row("", (char) 0, file, null);
+        form.row("Kerf (mm):", 'K', kerf, null);
+        form.row("Process:", 'P', process, null);
+        form.row("Lead-in (mm):", 'I', leadIn, null);
+        form.row("Lead-out (mm):", 'U', leadOut, null);
+        form.row("Lead shape:", 'L', lead, null);
+        form.row("Overcut (mm):", 'V', overcut, null);
+        form.row("Compensation:", 'N', compensation, null);
+        form.row("Outer sense:", 'E', outerDir, null);
+        form.row("Hole sense:", 'H', holeDir, null);
+        form.row("", (char) 0, avoid, null);
+        form.row("Post:", 'S', post, null);
+        form.row("", (char) 0, paper, null);
+        form.row("", (char) 0, cut, null);
+        form.wide(status, 2);
+        form.wide(totals, 10);
+        form.wide(orderPanel(), 10);
+        form.end();
 
         JScrollPane text = new JScrollPane(program);
         text.setPreferredSize(new java.awt.Dimension(260, 200));
@@ -204,7 +178,7 @@ final class CuttingTab extends PlotTab {
         plotAndWarnings.setResizeWeight(0.85);
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plotAndWarnings, text);
         split.setResizeWeight(0.75);
-        panel.add(new JScrollPane(form), BorderLayout.WEST);
+        panel.add(new JScrollPane(form.panel()), BorderLayout.WEST);
         panel.add(split, BorderLayout.CENTER);
 
         ctx.model().addListener(e -> {
@@ -267,54 +241,21 @@ final class CuttingTab extends PlotTab {
     private java.util.Map<String, String> check() {
         java.util.Map<String, String> problems = vm.problems();
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
-            String p = problems.get(f.getName());
-            f.setBackground(p == null ? java.awt.Color.WHITE : BAD);
-            f.setToolTipText(p != null ? p : Tooltips.meaning("Cutting", f));
+            ProblemMarks.mark(f, problems.get(f.getName()), "Cutting");
         }
-        cut.setEnabled(problems.isEmpty());
-        cut.setToolTipText(
-                problems.isEmpty()
-                        ? "Plan the cut and show its path, totals and program"
-                        : problems.containsKey(CuttingViewModel.DRAWING) && problems.size() == 1
-                                ? "Open a DXF drawing first"
-                                : "Correct the marked field first");
-        say(
-                problems.isEmpty()
-                        ? " "
-                        : problems.values().iterator().next()
-                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        ProblemMarks.enable(
+                cut,
+                problems,
+                "Plan the cut and show its path, totals and program",
+                CuttingViewModel.DRAWING,
+                "Open a DXF drawing first");
+        say(ProblemMarks.first(problems));
         return problems;
     }
 
     /** The line under Cut; a long reason wraps within the form's width and stays whole in the tooltip. */
     private void say(String text) {
-        status.setText(
-                text.length() <= 36
-                        ? text
-                        : "<html><div style='width:170px'>"
-                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
-        status.setToolTipText(text.isBlank() ? null : text);
-    }
-
-    private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent a, JComponent b) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridy = row;
-        c.anchor = GridBagConstraints.WEST;
-        c.insets = new Insets(2, 2, 2, 2);
-        JLabel l = new JLabel(label);
-        if (mnemonic != 0) {
-            l.setDisplayedMnemonic(mnemonic);
-            l.setLabelFor(a);
-        }
-        c.gridx = 0;
-        form.add(l, c);
-        c.gridx = 1;
-        c.fill = GridBagConstraints.HORIZONTAL;
-        form.add(a, c);
-        if (b != null) {
-            c.gridx = 2;
-            form.add(b, c);
-        }
+        ProblemMarks.say(status, text, 36, 170);
     }
 
     private void showFields() {

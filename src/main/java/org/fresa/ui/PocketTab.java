@@ -30,8 +30,6 @@ import org.fresa.post.PocketPost;
  */
 final class PocketTab extends PlotTab {
 
-    private static final Color BAD = new Color(255, 220, 220);
-
     private final AppContext ctx;
     private PocketViewModel model = new PocketViewModel();
     // the job's pocket settings the fields show: a job that holds others is shown afresh
@@ -362,12 +360,7 @@ final class PocketTab extends PlotTab {
                 problems.isEmpty()
                         ? "Plan the pocket and show its passes and program"
                         : "Correct the marked field first");
-        say(
-                problems.isEmpty()
-                        ? " "
-                        : problems.values().iterator().next()
-                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""),
-                !problems.isEmpty());
+        say(ProblemMarks.first(problems), !problems.isEmpty());
         return problems;
     }
 
@@ -376,30 +369,13 @@ final class PocketTab extends PlotTab {
      * being cut off, and stays whole in the tooltip.
      */
     private void say(String text, boolean problem) {
-        status.setForeground(problem ? new Color(180, 0, 0) : Color.BLACK);
+        status.setForeground(problem ? ProblemMarks.PROBLEM : Color.BLACK);
         // Swing's HTML takes CSS pixels as points (4/3 of a screen pixel at 96 dpi)
-        int width = Math.max(180, (form.getWidth() - 12) * 3 / 4);
-        status.setText(
-                text.length() <= 40
-                        ? text
-                        : "<html><div style='width:" + width + "px'>"
-                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
-        status.setToolTipText(text.isBlank() ? null : text);
+        ProblemMarks.say(status, text, 40, Math.max(180, (form.getWidth() - 12) * 3 / 4));
     }
 
     private static void mark(JTextField f, Map<String, String> problems) {
-        String p = problems.get(f.getName());
-        f.setBackground(p == null ? Color.WHITE : BAD);
-        // a valid field shows what it means again, in place of the problem it had
-        f.setToolTipText(p != null ? p : meaning(f));
-    }
-
-    private static String meaning(JTextField f) {
-        String tip = Tooltips.of("Pocket", f.getName());
-        if (tip == null && f.getClientProperty("labeledBy") instanceof JLabel l) {
-            tip = Tooltips.of("Pocket", l.getText());
-        }
-        return tip;
+        ProblemMarks.mark(f, problems.get(f.getName()), "Pocket");
     }
 
     /** Writes the computed program to a chosen file, unless it fails the program check. */
