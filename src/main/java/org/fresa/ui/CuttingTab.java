@@ -226,15 +226,17 @@ final class CuttingTab extends PlotTab {
     /**
      * The view model takes the fields and, when every field is good, the job takes the settings
      * (one undo step per field typed into; a bad value never reaches the job).
+     *
+     * @return whether the job took them
      */
-    private void commit(String field) {
-        takeFields();
-        if (!check().isEmpty()) {
-            return;
+    private boolean commit(String field) {
+        if (!fieldsGood()) {
+            return false;
         }
         CuttingSettings s = vm.typedSettings().orElseThrow();
         shown = Optional.of(s);
         ctx.model().setJob(ctx.model().job().withCutting(s), field);
+        return true;
     }
 
     /** Marks the bad fields, says the first problem beside Cut and why Cut is disabled. */
@@ -489,26 +491,30 @@ final class CuttingTab extends PlotTab {
         return true;
     }
 
-    /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
-    private void move(int delta) {
+    /**
+     * The row of the cut selected in a list that shows the job's order; none, with the reason said,
+     * when the list waits for a cut or nothing is selected.
+     */
+    private java.util.OptionalInt selectedCut() {
         if (!listCurrent()) {
-            return;
+            return java.util.OptionalInt.empty();
         }
         int i = order.getSelectedRow();
         if (i < 0) {
             say("Select a cut in the list first.");
-            return;
+            return java.util.OptionalInt.empty();
         }
-        answered(vm.moveCut(i, delta), i + delta);
+        return java.util.OptionalInt.of(i);
+    }
+
+    /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
+    private void move(int delta) {
+        selectedCut().ifPresent(i -> answered(vm.moveCut(i, delta), i + delta));
     }
 
     private void typedStart() {
-        if (!listCurrent()) {
-            return;
-        }
-        int i = order.getSelectedRow();
-        if (i < 0) {
-            say("Select a cut in the list first.");
+        java.util.OptionalInt i = selectedCut();
+        if (i.isEmpty()) {
             return;
         }
         Optional<org.fresa.geom.Vec2> p = CuttingViewModel.parseStart(start.getText());
@@ -516,7 +522,7 @@ final class CuttingTab extends PlotTab {
             say("Start: type x, y in mm, e.g. 12.5, 30");
             return;
         }
-        answered(vm.setStart(i, p.get()), i);
+        answered(vm.setStart(i.getAsInt(), p.get()), i.getAsInt());
     }
 
     /** Shift+click in the plot: the nearest cut starts at the point of its path nearest the click. */
@@ -539,13 +545,9 @@ final class CuttingTab extends PlotTab {
     /** An edit of the list goes into the job (one undo step) and the drawing is cut again to show it. */
     private void orderEdited(int select) {
         edits.flush();
-        takeFields();
-        if (!check().isEmpty()) {
+        if (!commit(null)) {
             return;
         }
-        CuttingSettings s = vm.typedSettings().orElseThrow();
-        shown = Optional.of(s);
-        ctx.model().setJob(ctx.model().job().withCutting(s), null);
         selectAfterCut = select;
         run();
     }
