@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
+import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -83,72 +84,38 @@ final class PocketTab extends PlotTab {
             tech[i].setName(PocketViewModel.NAMES.get(i));
             String name = tech[i].getName();
             TextChanges.onChange(tech[i], () -> edits.typed(name));
-            JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
-            l.setLabelFor(tech[i]);
-            form.add(l);
-            form.add(tech[i]);
+            row(PocketViewModel.LABELS.get(i), (char) 0, tech[i]);
         }
-        JLabel pl = new JLabel("Post");
-        pl.setLabelFor(post);
-        pl.setDisplayedMnemonic('P');
         post.setName("pocket-post");
         post.addActionListener(e -> edits.chosen(null));
-        form.add(pl);
-        form.add(post);
-        JLabel dl = new JLabel("Direction (not 7m-compat)");
-        dl.setLabelFor(direction);
-        dl.setDisplayedMnemonic('D');
+        row("Post", 'P', post);
         direction.setName("pocket-direction");
         direction.addActionListener(e -> edits.chosen(null));
-        form.add(dl);
-        form.add(direction);
-        JLabel el = new JLabel("Entry (not 7m-compat)");
-        el.setLabelFor(entry);
-        el.setDisplayedMnemonic('E');
+        row("Direction (not 7m-compat)", 'D', direction);
         entry.setName(PocketViewModel.ENTRY);
         entry.addActionListener(e -> fieldsChanged());
-        form.add(el);
-        form.add(entry);
-        JLabel al = new JLabel(PocketViewModel.ENTRY_ANGLE_LABEL);
-        al.setLabelFor(entryAngle);
+        row("Entry (not 7m-compat)", 'E', entry);
         entryAngle.setName(PocketViewModel.ENTRY_ANGLE);
         TextChanges.onChange(entryAngle, this::fieldsChanged);
-        form.add(al);
-        form.add(entryAngle);
+        row(PocketViewModel.ENTRY_ANGLE_LABEL, (char) 0, entryAngle);
         centreCutting.setName(PocketViewModel.CENTRE_CUTTING);
         centreCutting.setMnemonic('u');
         centreCutting.addActionListener(e -> fieldsChanged());
         form.add(new JLabel());
         form.add(centreCutting);
         // the clearing strategy: offset or zigzag (G-code and APT posts), each label a keyboard mnemonic
-        JLabel sl = new JLabel("Strategy");
-        sl.setLabelFor(strategy);
-        sl.setDisplayedMnemonic('y');
         strategy.setName(PocketViewModel.STRATEGY);
         strategy.addActionListener(e -> fieldsChanged());
-        form.add(sl);
-        form.add(strategy);
-        JLabel gl = new JLabel(PocketViewModel.ANGLE_LABEL);
-        gl.setLabelFor(angle);
-        gl.setDisplayedMnemonic('Z');
+        row("Strategy", 'y', strategy);
         angle.setName(PocketViewModel.ANGLE);
         TextChanges.onChange(angle, this::fieldsChanged);
-        form.add(gl);
-        form.add(angle);
-        JLabel kl = new JLabel(PocketViewModel.STOCK_TO_LEAVE_LABEL);
-        kl.setLabelFor(stockToLeave);
-        kl.setDisplayedMnemonic('k');
+        row(PocketViewModel.ANGLE_LABEL, 'Z', angle);
         stockToLeave.setName(PocketViewModel.STOCK_TO_LEAVE);
         TextChanges.onChange(stockToLeave, this::fieldsChanged);
-        form.add(kl);
-        form.add(stockToLeave);
-        JLabel ol = new JLabel("Pass order (offset)");
-        ol.setLabelFor(order);
-        ol.setDisplayedMnemonic('r');
+        row(PocketViewModel.STOCK_TO_LEAVE_LABEL, 'k', stockToLeave);
         order.setName(PocketViewModel.ORDER);
         order.addActionListener(e -> fieldsChanged());
-        form.add(ol);
-        form.add(order);
+        row("Pass order (offset)", 'r', order);
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
@@ -186,6 +153,17 @@ final class PocketTab extends PlotTab {
             }
         });
         showJob();
+    }
+
+    /** A row of the form: the label, its mnemonic (0 for none), and the field it names. */
+    private void row(String label, char mnemonic, JComponent field) {
+        JLabel l = new JLabel(label);
+        l.setLabelFor(field);
+        if (mnemonic != 0) {
+            l.setDisplayedMnemonic(mnemonic);
+        }
+        form.add(l);
+        form.add(field);
     }
 
     /** The job's pocket settings, or a new job's; no result. */
