@@ -147,12 +147,11 @@ final class RobotTab implements ModuleTab {
         symbolic.setEditable(false);
         symbolic.setName("robot-fk");
         symbolic.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        JLabel symLabel = new JLabel("Symbolic forward kinematics (Symja), derived from the table above");
-        symLabel.setDisplayedMnemonic(KeyEvent.VK_S);
-        symLabel.setLabelFor(symbolic);
-        JPanel lower = new JPanel(new BorderLayout());
-        lower.add(symLabel, BorderLayout.NORTH);
-        lower.add(new JScrollPane(symbolic), BorderLayout.CENTER);
+        JPanel lower = Captions.above(
+                "Symbolic forward kinematics (Symja), derived from the table above",
+                KeyEvent.VK_S,
+                symbolic,
+                new JScrollPane(symbolic));
 
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, upper, lower);
         split.setResizeWeight(0);

@@ -93,12 +93,7 @@ final class StepNcTab extends PlotTab {
         tree.setRowHeight(tree.getFontMetrics(tree.getFont()).getHeight() + 4);
         tree.setLargeModel(true);
         tree.addTreeSelectionListener(e -> selectionChanged());
-        JLabel treeLabel = new JLabel("Workplans and workingsteps");
-        treeLabel.setDisplayedMnemonic(KeyEvent.VK_W);
-        treeLabel.setLabelFor(tree);
-        JPanel left = new JPanel(new BorderLayout());
-        left.add(treeLabel, BorderLayout.NORTH);
-        left.add(new JScrollPane(tree), BorderLayout.CENTER);
+        JPanel left = Captions.above("Workplans and workingsteps", KeyEvent.VK_W, tree, new JScrollPane(tree));
         problems.onSelect(this::showProblem);
         left.add(problems, BorderLayout.SOUTH);
 
@@ -106,14 +101,9 @@ final class StepNcTab extends PlotTab {
         details.setName("stepnc-details");
         details.setLineWrap(true);
         details.setWrapStyleWord(true);
-        JLabel detailsLabel = new JLabel("Selected workingstep");
-        detailsLabel.setDisplayedMnemonic(KeyEvent.VK_S);
-        detailsLabel.setLabelFor(details);
-        JPanel right = new JPanel(new BorderLayout());
-        right.add(detailsLabel, BorderLayout.NORTH);
         JSplitPane rightSplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(details), toolpathView());
         rightSplit.setResizeWeight(0.3);
-        right.add(rightSplit, BorderLayout.CENTER);
+        JPanel right = Captions.above("Selected workingstep", KeyEvent.VK_S, details, rightSplit);
 
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right);
         split.setResizeWeight(0.35);
