@@ -75,14 +75,19 @@ public final class StepNcService {
         Map<String, Object> m = summary(p);
         List<Object> np = new ArrayList<>();
         for (NotPlanned n : notPlanned) {
-            Map<String, Object> x = new LinkedHashMap<>();
-            x.put("id", n.id());
-            x.put("instance", n.instanceId());
-            x.put("reason", n.reason());
-            np.add(x);
+            np.add(leftOut(n.id(), n.instanceId(), n.reason()));
         }
         m.put("not_planned", np);
         return new TaskOutcome(0, List.of(), m, List.of());
+    }
+
+    /** A workingstep left out (not in any workplan, or not planned) as the summary lists it. */
+    private static Map<String, Object> leftOut(String id, long instanceId, String reason) {
+        Map<String, Object> x = new LinkedHashMap<>();
+        x.put("id", id);
+        x.put("instance", instanceId);
+        x.put("reason", reason);
+        return x;
     }
 
     /** The lines of {@link #prose} for the workingsteps the planner leaves out; empty when none. */
@@ -133,11 +138,7 @@ public final class StepNcService {
         m.put("workingsteps", ws);
         List<Object> skipped = new ArrayList<>();
         for (StepNcProgram.Skipped s : p.skipped()) {
-            Map<String, Object> x = new LinkedHashMap<>();
-            x.put("id", s.id());
-            x.put("instance", s.instanceId());
-            x.put("reason", s.reason());
-            skipped.add(x);
+            skipped.add(leftOut(s.id(), s.instanceId(), s.reason()));
         }
         m.put("skipped", skipped);
         m.put("dialect", p.dialect().name());
