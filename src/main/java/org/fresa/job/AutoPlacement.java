@@ -143,14 +143,7 @@ public final class AutoPlacement {
         Map<String, Transform3> tcps = new java.util.HashMap<>();
         for (int i = 0; i < names.size(); i++) {
             ToolpathSection sec = toolpath.sections().get(i);
-            named.add(new ToolpathSection(
-                    names.get(i),
-                    sec.toolAxis(),
-                    sec.toolDiameterMm(),
-                    sec.toolNumber(),
-                    sec.spindleRpm(),
-                    sec.start(),
-                    sec.moves()));
+            named.add(sec.withLabel(names.get(i)));
             tcps.put(names.get(i), tcpByLabel.getOrDefault(sec.label(), robot.tool()));
         }
         List<ToolTarget> inTable = RobotTrajectoryService.targets(

@@ -33,4 +33,9 @@ public record ToolpathSection(
             throw new IllegalArgumentException("tool number must be >= 1: " + toolNumber);
         }
     }
+
+    /** The same moves, tool and spindle under another label. */
+    public ToolpathSection withLabel(String other) {
+        return new ToolpathSection(other, toolAxis, toolDiameterMm, toolNumber, spindleRpm, start, moves);
+    }
 }
