@@ -90,6 +90,17 @@ public final class StepNcService {
         return x;
     }
 
+    /** A workingstep left out as the prose lists it: "  #12 'WS1': reason". */
+    private static void leftOutLine(StringBuilder sb, String id, long instanceId, String reason) {
+        sb.append("  #")
+                .append(instanceId)
+                .append(" '")
+                .append(id)
+                .append("': ")
+                .append(reason)
+                .append('\n');
+    }
+
     /** The lines of {@link #prose} for the workingsteps the planner leaves out; empty when none. */
     public static String notPlannedProse(List<NotPlanned> notPlanned) {
         if (notPlanned.isEmpty()) {
@@ -100,13 +111,7 @@ public final class StepNcService {
                 .append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
                 .append(" not planned:\n");
         for (NotPlanned n : notPlanned) {
-            sb.append("  #")
-                    .append(n.instanceId())
-                    .append(" '")
-                    .append(n.id())
-                    .append("': ")
-                    .append(n.reason())
-                    .append('\n');
+            leftOutLine(sb, n.id(), n.instanceId(), n.reason());
         }
         return sb.toString();
     }
@@ -354,13 +359,7 @@ public final class StepNcService {
         if (!p.skipped().isEmpty()) {
             sb.append(p.skipped().size()).append(" workingsteps skipped:\n");
             for (StepNcProgram.Skipped s : p.skipped()) {
-                sb.append("  #")
-                        .append(s.instanceId())
-                        .append(" '")
-                        .append(s.id())
-                        .append("': ")
-                        .append(s.reason())
-                        .append('\n');
+                leftOutLine(sb, s.id(), s.instanceId(), s.reason());
             }
         }
         if (!p.unknownEntities().isEmpty()) {
