@@ -1,6 +1,7 @@
 package org.fresa.ui;
 
 import java.awt.BorderLayout;
+import java.awt.event.KeyEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.nio.file.Path;
@@ -71,10 +72,7 @@ final class GradingTab extends PlotTab {
         super("Grading");
         this.ctx = ctx;
         FormGrid form = new FormGrid(3);
-        JButton open = new JButton("Open outline...");
-        open.setMnemonic('O');
-        open.setName("grading-open");
-        open.addActionListener(e -> openOutline());
+        JButton open = Buttons.of("Open outline...", "grading-open", KeyEvent.VK_O, this::openOutline);
         JButton heel = new JButton("Heel centre");
         heel.setMnemonic('H');
         heel.setToolTipText("Grade about the heel circle's centre (clears the origin)");
@@ -87,10 +85,7 @@ final class GradingTab extends PlotTab {
         grade.setMnemonic('G');
         grade.setName("grading-grade");
         grade.addActionListener(e -> grade());
-        JButton export = new JButton("Export files...");
-        export.setMnemonic('X');
-        export.setName("grading-export");
-        export.addActionListener(e -> export());
+        JButton export = Buttons.of("Export files...", "grading-export", KeyEvent.VK_X, this::export);
         lengthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 6.66)");
         widthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 1.66)");
         origin.setToolTipText("X,Y in mm; empty for the heel circle's centre");
