@@ -274,32 +274,25 @@ public final class GradingService {
         StringBuilder sb = new StringBuilder(
                 "size,length_mm,width_mm,alfa,beta,length_factor,width_factor,heel_size,max_deviation_mm\n");
         for (GradedSize g : r.sizes()) {
-            sb.append(g.name())
-                    .append(',')
-                    .append(ExactDecimal.of(g.lengthMm()))
-                    .append(',')
-                    .append(ExactDecimal.of(g.widthMm()))
-                    .append(',')
-                    .append(ExactDecimal.of(g.factors().alfa()))
-                    .append(',')
-                    .append(ExactDecimal.of(g.factors().beta()))
-                    .append(',')
-                    .append(ExactDecimal.of(g.factors().length()))
-                    .append(',')
-                    .append(ExactDecimal.of(g.factors().width()))
-                    .append(',')
-                    .append(
-                            g.heelSize().isPresent()
-                                    ? ExactDecimal.of(g.heelSize().getAsDouble())
-                                    : "")
-                    .append(',')
-                    .append(
-                            g.maxDeviationMm().isPresent()
-                                    ? ExactDecimal.of(g.maxDeviationMm().getAsDouble())
-                                    : "")
+            sb.append(String.join(
+                            ",",
+                            g.name(),
+                            ExactDecimal.of(g.lengthMm()),
+                            ExactDecimal.of(g.widthMm()),
+                            ExactDecimal.of(g.factors().alfa()),
+                            ExactDecimal.of(g.factors().beta()),
+                            ExactDecimal.of(g.factors().length()),
+                            ExactDecimal.of(g.factors().width()),
+                            exactOrEmpty(g.heelSize()),
+                            exactOrEmpty(g.maxDeviationMm())))
                     .append('\n');
         }
         return sb.toString();
+    }
+
+    /** A column that a size may leave empty (no heel coordination, no deviation measured). */
+    private static String exactOrEmpty(java.util.OptionalDouble v) {
+        return v.isPresent() ? ExactDecimal.of(v.getAsDouble()) : "";
     }
 
     private static Map<String, Object> summary(GradingResult r, String source, GradingPlan plan) {

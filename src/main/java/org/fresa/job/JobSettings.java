@@ -892,6 +892,36 @@ public final class JobSettings {
             figures = List.copyOf(figures);
             copies = List.copyOf(copies);
         }
+
+        /** The same design with other figures. */
+        public SoleDesign withFigures(List<SoleFigure> fs) {
+            return with(pattern, fs, copies);
+        }
+
+        /** The same figures placed by these explicit copies instead of the design's pattern. */
+        public SoleDesign withCopies(List<SoleCopy> cs) {
+            return with(PatternKind.COPIES, figures, cs);
+        }
+
+        private SoleDesign with(PatternKind p, List<SoleFigure> fs, List<SoleCopy> cs) {
+            return new SoleDesign(
+                    name,
+                    tool,
+                    rule,
+                    text,
+                    p,
+                    count,
+                    rows,
+                    dxMm,
+                    dyMm,
+                    rowShiftMm,
+                    stepDeg,
+                    centerXMm,
+                    centerYMm,
+                    lead,
+                    fs,
+                    cs);
+        }
     }
 
     /** Output formats chosen for tasks that have no format option of their own. */

@@ -75,14 +75,30 @@ public final class StepNcService {
         Map<String, Object> m = summary(p);
         List<Object> np = new ArrayList<>();
         for (NotPlanned n : notPlanned) {
-            Map<String, Object> x = new LinkedHashMap<>();
-            x.put("id", n.id());
-            x.put("instance", n.instanceId());
-            x.put("reason", n.reason());
-            np.add(x);
+            np.add(leftOut(n.id(), n.instanceId(), n.reason()));
         }
         m.put("not_planned", np);
         return new TaskOutcome(0, List.of(), m, List.of());
+    }
+
+    /** A workingstep left out (not in any workplan, or not planned) as the summary lists it. */
+    private static Map<String, Object> leftOut(String id, long instanceId, String reason) {
+        Map<String, Object> x = new LinkedHashMap<>();
+        x.put("id", id);
+        x.put("instance", instanceId);
+        x.put("reason", reason);
+        return x;
+    }
+
+    /** A workingstep left out as the prose lists it: "  #12 'WS1': reason". */
+    private static void leftOutLine(StringBuilder sb, String id, long instanceId, String reason) {
+        sb.append("  #")
+                .append(instanceId)
+                .append(" '")
+                .append(id)
+                .append("': ")
+                .append(reason)
+                .append('\n');
     }
 
     /** The lines of {@link #prose} for the workingsteps the planner leaves out; empty when none. */
@@ -95,13 +111,7 @@ public final class StepNcService {
                 .append(notPlanned.size() == 1 ? " workingstep" : " workingsteps")
                 .append(" not planned:\n");
         for (NotPlanned n : notPlanned) {
-            sb.append("  #")
-                    .append(n.instanceId())
-                    .append(" '")
-                    .append(n.id())
-                    .append("': ")
-                    .append(n.reason())
-                    .append('\n');
+            leftOutLine(sb, n.id(), n.instanceId(), n.reason());
         }
         return sb.toString();
     }
@@ -133,11 +143,7 @@ public final class StepNcService {
         m.put("workingsteps", ws);
         List<Object> skipped = new ArrayList<>();
         for (StepNcProgram.Skipped s : p.skipped()) {
-            Map<String, Object> x = new LinkedHashMap<>();
-            x.put("id", s.id());
-            x.put("instance", s.instanceId());
-            x.put("reason", s.reason());
-            skipped.add(x);
+            skipped.add(leftOut(s.id(), s.instanceId(), s.reason()));
         }
         m.put("skipped", skipped);
         m.put("dialect", p.dialect().name());
@@ -353,13 +359,7 @@ public final class StepNcService {
         if (!p.skipped().isEmpty()) {
             sb.append(p.skipped().size()).append(" workingsteps skipped:\n");
             for (StepNcProgram.Skipped s : p.skipped()) {
-                sb.append("  #")
-                        .append(s.instanceId())
-                        .append(" '")
-                        .append(s.id())
-                        .append("': ")
-                        .append(s.reason())
-                        .append('\n');
+                leftOutLine(sb, s.id(), s.instanceId(), s.reason());
             }
         }
         if (!p.unknownEntities().isEmpty()) {

@@ -194,33 +194,26 @@ public final class ContourFile {
         for (Contour c : contours) {
             sb.append("contour\n");
             Vec2 s = c.get(0).start();
-            sb.append("move ")
-                    .append(ExactDecimal.of(s.x()))
-                    .append(' ')
-                    .append(ExactDecimal.of(s.y()))
-                    .append('\n');
+            sb.append("move ").append(xy(s)).append('\n');
             for (Curve2 k : c.curves()) {
                 if (k instanceof Segment2 seg) {
-                    sb.append("line ")
-                            .append(ExactDecimal.of(seg.end().x()))
-                            .append(' ')
-                            .append(ExactDecimal.of(seg.end().y()))
-                            .append('\n');
+                    sb.append("line ").append(xy(seg.end())).append('\n');
                 } else {
                     Arc2 a = (Arc2) k;
                     sb.append("arc ")
-                            .append(ExactDecimal.of(a.center().x()))
+                            .append(xy(a.center()))
                             .append(' ')
-                            .append(ExactDecimal.of(a.center().y()))
-                            .append(' ')
-                            .append(ExactDecimal.of(a.end().x()))
-                            .append(' ')
-                            .append(ExactDecimal.of(a.end().y()))
+                            .append(xy(a.end()))
                             .append(a.ccw() ? " ccw" : " cw")
                             .append('\n');
                 }
             }
         }
         return sb.toString();
+    }
+
+    /** A point as this format writes it: exact x and y, a space apart. */
+    private static String xy(Vec2 p) {
+        return ExactDecimal.of(p.x()) + " " + ExactDecimal.of(p.y());
     }
 }

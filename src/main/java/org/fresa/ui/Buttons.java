@@ -1,8 +1,11 @@
 package org.fresa.ui;
 
+import java.awt.FlowLayout;
 import javax.swing.JButton;
+import javax.swing.JComponent;
+import javax.swing.JPanel;
 
-/** The tabs' buttons: a name for the GUI tests, a mnemonic for the keyboard, one action. */
+/** The tabs' buttons: a name for the GUI tests, a mnemonic for the keyboard, one action; and their rows. */
 final class Buttons {
     private Buttons() {}
 
@@ -20,5 +23,14 @@ final class Buttons {
         }
         b.addActionListener(e -> action.run());
         return b;
+    }
+
+    /** A left-aligned row of a tab's buttons with the labels and fields that go with them. */
+    static JPanel row(JComponent... controls) {
+        JPanel p = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        for (JComponent c : controls) {
+            p.add(c);
+        }
+        return p;
     }
 }

@@ -5,6 +5,7 @@ import java.awt.Font;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
@@ -35,17 +36,12 @@ import org.fresa.setting.SettingRanges.Cutting;
  * Sheet cutting: open a DXF, set kerf, process, leads, compensation and directions, cut, see the
  * plan (parts, holes, open chains, pierces, leads, order, rapids), the totals and the program.
  */
-final class CuttingTab implements ModuleTab {
-
-    private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
-    private static final java.awt.Color PROBLEM = new java.awt.Color(180, 0, 0);
+final class CuttingTab extends PlotTab {
 
     private final AppContext ctx;
     private CuttingViewModel vm = new CuttingViewModel();
     // the job's cutting settings the fields show: a job that holds others is shown afresh
     private Optional<CuttingSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel warnings = new WarningsPanel("cutting-warnings", 5);
     private final JTextArea program = new JTextArea();
     private final JTextArea totals = new JTextArea("No drawing cut yet.");
@@ -90,18 +86,13 @@ final class CuttingTab implements ModuleTab {
     // the order the list shows was cut with: an edit waits until the list shows the job's order
     private org.fresa.cutting.CutOrderOverride listed;
     private final JLabel status = new JLabel(" ");
-    // set while the fields are filled from the job, so their listeners do not write it back
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
+    private final FieldEdits edits = new FieldEdits(this::fieldsGood, this::commit);
 
     CuttingTab(AppContext ctx) {
+        super("Cutting");
         this.ctx = ctx;
-        JPanel form = new JPanel(new GridBagLayout());
-        form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
-        JButton open = new JButton("Open DXF...");
-        open.setMnemonic('O');
-        open.setName("cutting-open");
-        open.addActionListener(e -> choose());
+        FormGrid form = new FormGrid(2);
+        JButton open = Buttons.of("Open DXF...", "cutting-open", KeyEvent.VK_O, this::choose);
         cut.setMnemonic('C');
         cut.setName("cutting-cut");
         cut.addActionListener(e -> run());
@@ -111,15 +102,15 @@ final class CuttingTab implements ModuleTab {
         overcut.setName(CuttingViewModel.OVERCUT);
         file.setName(CuttingViewModel.DRAWING);
         status.setName("cutting-status");
-        status.setForeground(PROBLEM);
+        status.setForeground(ProblemMarks.PROBLEM);
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
-            TextChanges.onChange(f, () -> typed(f.getName()));
+            TextChanges.onChange(f, () -> edits.typed(f.getName()));
         }
         for (JComboBox<?> c : java.util.List.of(process, lead, compensation, outerDir, holeDir, post)) {
-            c.addActionListener(e -> edited(null));
+            c.addActionListener(e -> edits.chosen(null));
         }
-        avoid.addActionListener(e -> edited(null));
-        paper.addActionListener(e -> edited(null));
+        avoid.addActionListener(e -> edits.chosen(null));
+        paper.addActionListener(e -> edits.chosen(null));
         kerf.setToolTipText("full kerf width; the path runs half of it off the part");
         compensation.setName("cutting-compensation");
         compensation.setToolTipText("software: offset path; controller: the drawn contour with G41/G42");
@@ -138,47 +129,25 @@ final class CuttingTab implements ModuleTab {
         totals.setColumns(18);
 
         buildOrderControls();
-        int row = 0;
-        addRow(form, row++, "Drawing:", (char) 0, open, null);
-        addRow(form, row++, "", (char) 0, file, null);
-        addRow(form, row++, "Kerf (mm):", 'K', kerf, null);
-        addRow(form, row++, "Process:", 'P', process, null);
-        addRow(form, row++, "Lead-in (mm):", 'I', leadIn, null);
-        addRow(form, row++, "Lead-out (mm):", 'U', leadOut, null);
-        addRow(form, row++, "Lead shape:", 'L', lead, null);
-        addRow(form, row++, "Overcut (mm):", 'V', overcut, null);
-        addRow(form, row++, "Compensation:", 'N', compensation, null);
-        addRow(form, row++, "Outer sense:", 'E', outerDir, null);
-        addRow(form, row++, "Hole sense:", 'H', holeDir, null);
-        addRow(form, row++, "", (char) 0, avoid, null);
-        addRow(form, row++, "Post:", 'S', post, null);
-        addRow(form, row++, "", (char) 0, paper, null);
-        addRow(form, row++, "", (char) 0, cut, null);
-        GridBagConstraints st = new GridBagConstraints();
-        st.gridx = 0;
-        st.gridy = row++;
-        st.gridwidth = 3;
-        st.fill = GridBagConstraints.HORIZONTAL;
-        st.insets = new Insets(2, 2, 2, 2);
-        form.add(status, st);
-        GridBagConstraints t = new GridBagConstraints();
-        t.gridx = 0;
-        t.gridy = row++;
-        t.gridwidth = 3;
-        t.fill = GridBagConstraints.HORIZONTAL;
-        t.insets = new Insets(10, 2, 2, 2);
-        form.add(totals, t);
-        GridBagConstraints o = new GridBagConstraints();
-        o.gridx = 0;
-        o.gridy = row++;
-        o.gridwidth = 3;
-        o.fill = GridBagConstraints.HORIZONTAL;
-        o.insets = new Insets(10, 2, 2, 2);
-        form.add(orderPanel(), o);
-        GridBagConstraints filler = new GridBagConstraints();
-        filler.gridy = row;
-        filler.weighty = 1;
-        form.add(new JPanel(), filler);
+        form.row("Drawing:", (char) 0, open, null);
+        form.row("", (char) 0, file, null);
+        form.row("Kerf (mm):", 'K', kerf, null);
+        form.row("Process:", 'P', process, null);
+        form.row("Lead-in (mm):", 'I', leadIn, null);
+        form.row("Lead-out (mm):", 'U', leadOut, null);
+        form.row("Lead shape:", 'L', lead, null);
+        form.row("Overcut (mm):", 'V', overcut, null);
+        form.row("Compensation:", 'N', compensation, null);
+        form.row("Outer sense:", 'E', outerDir, null);
+        form.row("Hole sense:", 'H', holeDir, null);
+        form.row("", (char) 0, avoid, null);
+        form.row("Post:", 'S', post, null);
+        form.row("", (char) 0, paper, null);
+        form.row("", (char) 0, cut, null);
+        form.wide(status, 2);
+        form.wide(totals, 10);
+        form.wide(orderPanel(), 10);
+        form.end();
 
         JScrollPane text = new JScrollPane(program);
         text.setPreferredSize(new java.awt.Dimension(260, 200));
@@ -207,7 +176,7 @@ final class CuttingTab implements ModuleTab {
         plotAndWarnings.setResizeWeight(0.85);
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, plotAndWarnings, text);
         split.setResizeWeight(0.75);
-        panel.add(new JScrollPane(form), BorderLayout.WEST);
+        panel.add(new JScrollPane(form.panel()), BorderLayout.WEST);
         panel.add(split, BorderLayout.CENTER);
 
         ctx.model().addListener(e -> {
@@ -229,7 +198,7 @@ final class CuttingTab implements ModuleTab {
 
     /** The job's cutting settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
-        typing.drop();
+        edits.drop();
         if (document || ctx.model().job().cutting().isEmpty()) {
             vm = new CuttingViewModel();
         }
@@ -246,103 +215,51 @@ final class CuttingTab implements ModuleTab {
         check();
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
+    /** The view model takes the fields, which are marked; true when every one is good. */
+    private boolean fieldsGood() {
         takeFields();
-        if (check().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice or a drawing: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
+        return check().isEmpty();
     }
 
     /**
      * The view model takes the fields and, when every field is good, the job takes the settings
      * (one undo step per field typed into; a bad value never reaches the job).
+     *
+     * @return whether the job took them
      */
-    private void commit(String field) {
-        takeFields();
-        if (!check().isEmpty()) {
-            return;
+    private boolean commit(String field) {
+        if (!fieldsGood()) {
+            return false;
         }
         CuttingSettings s = vm.typedSettings().orElseThrow();
         shown = Optional.of(s);
         ctx.model().setJob(ctx.model().job().withCutting(s), field);
+        return true;
     }
 
     /** Marks the bad fields, says the first problem beside Cut and why Cut is disabled. */
     private java.util.Map<String, String> check() {
         java.util.Map<String, String> problems = vm.problems();
         for (JTextField f : new JTextField[] {kerf, leadIn, leadOut, overcut}) {
-            String p = problems.get(f.getName());
-            f.setBackground(p == null ? java.awt.Color.WHITE : BAD);
-            f.setToolTipText(p != null ? p : Tooltips.meaning("Cutting", f));
+            ProblemMarks.mark(f, problems.get(f.getName()), "Cutting");
         }
-        cut.setEnabled(problems.isEmpty());
-        cut.setToolTipText(
-                problems.isEmpty()
-                        ? "Plan the cut and show its path, totals and program"
-                        : problems.containsKey(CuttingViewModel.DRAWING) && problems.size() == 1
-                                ? "Open a DXF drawing first"
-                                : "Correct the marked field first");
-        say(
-                problems.isEmpty()
-                        ? " "
-                        : problems.values().iterator().next()
-                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        ProblemMarks.enable(
+                cut,
+                problems,
+                "Plan the cut and show its path, totals and program",
+                CuttingViewModel.DRAWING,
+                "Open a DXF drawing first");
+        say(ProblemMarks.first(problems));
         return problems;
     }
 
     /** The line under Cut; a long reason wraps within the form's width and stays whole in the tooltip. */
     private void say(String text) {
-        status.setText(
-                text.length() <= 36
-                        ? text
-                        : "<html><div style='width:170px'>"
-                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
-        status.setToolTipText(text.isBlank() ? null : text);
-    }
-
-    private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent a, JComponent b) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridy = row;
-        c.anchor = GridBagConstraints.WEST;
-        c.insets = new Insets(2, 2, 2, 2);
-        JLabel l = new JLabel(label);
-        if (mnemonic != 0) {
-            l.setDisplayedMnemonic(mnemonic);
-            l.setLabelFor(a);
-        }
-        c.gridx = 0;
-        form.add(l, c);
-        c.gridx = 1;
-        c.fill = GridBagConstraints.HORIZONTAL;
-        form.add(a, c);
-        if (b != null) {
-            c.gridx = 2;
-            form.add(b, c);
-        }
+        ProblemMarks.say(status, text, 36, 170);
     }
 
     private void showFields() {
-        filling = true;
-        try {
-            fillFields();
-        } finally {
-            filling = false;
-        }
+        edits.fill(this::fillFields);
     }
 
     private void fillFields() {
@@ -386,7 +303,7 @@ final class CuttingTab implements ModuleTab {
             program.setText("");
             totals.setText("No drawing cut yet.");
             warnings.show(WarningList.none());
-            edited(null);
+            edits.chosen(null);
         }
     }
 
@@ -395,7 +312,7 @@ final class CuttingTab implements ModuleTab {
      * it); a drawing the cut refuses is said beside Cut, and the status bar says "failed".
      */
     void run() {
-        typing.flush();
+        edits.flush();
         takeFields();
         if (!check().isEmpty()) {
             return;
@@ -572,26 +489,30 @@ final class CuttingTab implements ModuleTab {
         return true;
     }
 
-    /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
-    private void move(int delta) {
+    /**
+     * The row of the cut selected in a list that shows the job's order; none, with the reason said,
+     * when the list waits for a cut or nothing is selected.
+     */
+    private java.util.OptionalInt selectedCut() {
         if (!listCurrent()) {
-            return;
+            return java.util.OptionalInt.empty();
         }
         int i = order.getSelectedRow();
         if (i < 0) {
             say("Select a cut in the list first.");
-            return;
+            return java.util.OptionalInt.empty();
         }
-        answered(vm.moveCut(i, delta), i + delta);
+        return java.util.OptionalInt.of(i);
+    }
+
+    /** Alt+Up, Alt+Down, Up, Down: the selected cut one place earlier or later, one undo step. */
+    private void move(int delta) {
+        selectedCut().ifPresent(i -> answered(vm.moveCut(i, delta), i + delta));
     }
 
     private void typedStart() {
-        if (!listCurrent()) {
-            return;
-        }
-        int i = order.getSelectedRow();
-        if (i < 0) {
-            say("Select a cut in the list first.");
+        java.util.OptionalInt i = selectedCut();
+        if (i.isEmpty()) {
             return;
         }
         Optional<org.fresa.geom.Vec2> p = CuttingViewModel.parseStart(start.getText());
@@ -599,7 +520,7 @@ final class CuttingTab implements ModuleTab {
             say("Start: type x, y in mm, e.g. 12.5, 30");
             return;
         }
-        answered(vm.setStart(i, p.get()), i);
+        answered(vm.setStart(i.getAsInt(), p.get()), i.getAsInt());
     }
 
     /** Shift+click in the plot: the nearest cut starts at the point of its path nearest the click. */
@@ -621,14 +542,10 @@ final class CuttingTab implements ModuleTab {
 
     /** An edit of the list goes into the job (one undo step) and the drawing is cut again to show it. */
     private void orderEdited(int select) {
-        typing.flush();
-        takeFields();
-        if (!check().isEmpty()) {
+        edits.flush();
+        if (!commit(null)) {
             return;
         }
-        CuttingSettings s = vm.typedSettings().orElseThrow();
-        shown = Optional.of(s);
-        ctx.model().setJob(ctx.model().job().withCutting(s), null);
         selectAfterCut = select;
         run();
     }
@@ -651,19 +568,4 @@ final class CuttingTab implements ModuleTab {
             org.fresa.chart.PlotScene scene,
             String totals,
             javax.swing.text.Document program) {}
-
-    @Override
-    public String title() {
-        return "Cutting";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
-    }
 }

@@ -1,22 +1,18 @@
 package org.fresa.ui;
 
 import java.awt.BorderLayout;
-import java.awt.GridBagConstraints;
-import java.awt.GridBagLayout;
-import java.awt.Insets;
+import java.awt.event.KeyEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
-import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
-import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTable;
@@ -35,14 +31,12 @@ import org.fresa.model.CamInputException;
  * system, base size, range, steps, shrinkage), the nested graded outlines and the grading table,
  * and Export of every size's files. The state lives in {@link GradingViewModel}.
  */
-final class GradingTab implements ModuleTab {
+final class GradingTab extends PlotTab {
 
     private final AppContext ctx;
     private GradingViewModel vm = new GradingViewModel();
     // the job's grading settings the fields show: a job that holds others is shown afresh
     private Optional<GradingSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final DefaultTableModel tableModel = new DefaultTableModel(GradingViewModel.COLUMNS.toArray(), 0) {
         private static final long serialVersionUID = 1L;
 
@@ -72,19 +66,13 @@ final class GradingTab implements ModuleTab {
 
     private final JButton grade = new JButton("Grade");
     private final JLabel status = new JLabel(" ");
-    // set while the fields are filled from the job, so their listeners do not write it back
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
-    private static final java.awt.Color BAD = new java.awt.Color(255, 220, 220);
+    private final FieldEdits edits = new FieldEdits(this::fieldsGood, this::commit);
 
     GradingTab(AppContext ctx) {
+        super("Grading");
         this.ctx = ctx;
-        JPanel form = new JPanel(new GridBagLayout());
-        form.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
-        JButton open = new JButton("Open outline...");
-        open.setMnemonic('O');
-        open.setName("grading-open");
-        open.addActionListener(e -> openOutline());
+        FormGrid form = new FormGrid(3);
+        JButton open = Buttons.of("Open outline...", "grading-open", KeyEvent.VK_O, this::openOutline);
         JButton heel = new JButton("Heel centre");
         heel.setMnemonic('H');
         heel.setToolTipText("Grade about the heel circle's centre (clears the origin)");
@@ -97,10 +85,7 @@ final class GradingTab implements ModuleTab {
         grade.setMnemonic('G');
         grade.setName("grading-grade");
         grade.addActionListener(e -> grade());
-        JButton export = new JButton("Export files...");
-        export.setMnemonic('X');
-        export.setName("grading-export");
-        export.addActionListener(e -> export());
+        JButton export = Buttons.of("Export files...", "grading-export", KeyEvent.VK_X, this::export);
         lengthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 6.66)");
         widthStep.setToolTipText("mm per whole size; empty for the system's (Brazilian 1.66)");
         origin.setToolTipText("X,Y in mm; empty for the heel circle's centre");
@@ -116,26 +101,25 @@ final class GradingTab implements ModuleTab {
         shrinkage.setName(GradingViewModel.SHRINKAGE);
         shrinkageMode.setName(GradingViewModel.SHRINKAGE_MODE);
         status.setName("grading-status");
-        status.setForeground(new java.awt.Color(180, 0, 0));
+        status.setForeground(ProblemMarks.PROBLEM);
         for (JTextField f : textFields()) {
-            TextChanges.onChange(f, () -> typed(f.getName()));
+            TextChanges.onChange(f, () -> edits.typed(f.getName()));
         }
-        system.addActionListener(e -> edited(null));
-        shrinkageMode.addActionListener(e -> edited(null));
-        halfSizes.addActionListener(e -> edited(null));
+        system.addActionListener(e -> edits.chosen(null));
+        shrinkageMode.addActionListener(e -> edits.chosen(null));
+        halfSizes.addActionListener(e -> edits.chosen(null));
 
-        int row = 0;
-        addRow(form, row++, "Outline:", 'U', open, outlineName);
-        addRow(form, row++, "Origin X,Y:", 'I', origin, null);
-        addRow(form, row++, "", (char) 0, pick, heel);
-        addRow(form, row++, "System:", 'Y', system, null);
-        addRow(form, row++, "Base size:", 'B', baseSize, null);
-        addRow(form, row++, "Sizes A-B:", 'Z', sizes, null);
-        addRow(form, row++, "", (char) 0, halfSizes, null);
-        addRow(form, row++, "Length step (mm):", 'L', lengthStep, null);
-        addRow(form, row++, "Width step (mm):", 'W', widthStep, null);
-        addRow(form, row++, "Shrinkage:", 'S', shrinkage, null);
-        addRow(form, row++, "Shrinkage mode:", 'M', shrinkageMode, null);
+        form.row("Outline:", 'U', open, outlineName);
+        form.row("Origin X,Y:", 'I', origin, null);
+        form.row("", (char) 0, pick, heel);
+        form.row("System:", 'Y', system, null);
+        form.row("Base size:", 'B', baseSize, null);
+        form.row("Sizes A-B:", 'Z', sizes, null);
+        form.row("", (char) 0, halfSizes, null);
+        form.row("Length step (mm):", 'L', lengthStep, null);
+        form.row("Width step (mm):", 'W', widthStep, null);
+        form.row("Shrinkage:", 'S', shrinkage, null);
+        form.row("Shrinkage mode:", 'M', shrinkageMode, null);
         fitting.setName("grading-fitting");
         fitting.setToolTipText("Width fitting A-H: the table shows the last girth of each size (thesis table 3.1,"
                 + " French sizes 29-42, Brazilian 27-40)");
@@ -143,33 +127,24 @@ final class GradingTab implements ModuleTab {
             vm.setFitting((String) fitting.getSelectedItem());
             vm.result().ifPresent(this::showResult);
         });
-        addRow(form, row++, "Width fitting:", 'T', fitting, null);
+        form.row("Width fitting:", 'T', fitting, null);
         heelElements.setName("grading-heel-elements");
         heelElements.setToolTipText("Coordination: the outline's elements that form the heel (e.g. 1-4,18-20; 1 the"
                 + " first element), graded as one heel per group of sizes; empty for none");
         heelGroup.setName("grading-heel-group");
         heelGroup.setToolTipText("Sizes per heel (the thesis: 3)");
-        addRow(form, row++, "Heel elements:", 'N', heelElements, null);
-        addRow(form, row++, "Heel group:", 'R', heelGroup, null);
-        addRow(form, row++, "", (char) 0, grade, export);
-        GridBagConstraints st = new GridBagConstraints();
-        st.gridx = 0;
-        st.gridy = row++;
-        st.gridwidth = 3;
-        st.fill = GridBagConstraints.HORIZONTAL;
-        st.insets = new Insets(3, 3, 3, 3);
-        form.add(status, st);
-        GridBagConstraints filler = new GridBagConstraints();
-        filler.gridy = row;
-        filler.weighty = 1;
-        form.add(new JPanel(), filler);
+        form.row("Heel elements:", 'N', heelElements, null);
+        form.row("Heel group:", 'R', heelGroup, null);
+        form.row("", (char) 0, grade, export);
+        form.wide(status, 3);
+        form.end();
 
         JTable table = new JTable(tableModel);
         table.setName("grading-table");
         table.setFillsViewportHeight(true);
         JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, plot, new JScrollPane(table));
         right.setResizeWeight(0.75);
-        panel.add(new JScrollPane(form), BorderLayout.WEST);
+        panel.add(new JScrollPane(form.panel()), BorderLayout.WEST);
         panel.add(right, BorderLayout.CENTER);
 
         installPicking();
@@ -191,7 +166,7 @@ final class GradingTab implements ModuleTab {
 
     /** The job's grading settings, or the empty tab when it has none; a new document shows no result. */
     private void showJob(boolean document) {
-        typing.drop();
+        edits.drop();
         if (document || ctx.model().job().grading().isEmpty()) {
             vm = new GradingViewModel();
         }
@@ -204,26 +179,10 @@ final class GradingTab implements ModuleTab {
         check();
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
+    /** The view model takes the fields, which are marked; true when every one is good. */
+    private boolean fieldsGood() {
         pushFields();
-        if (check().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice, a tick or an outline: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
+        return check().isEmpty();
     }
 
     /**
@@ -245,54 +204,21 @@ final class GradingTab implements ModuleTab {
         java.util.Map<String, String> problems = vm.problems();
         for (JComponent f :
                 new JComponent[] {origin, baseSize, sizes, lengthStep, widthStep, shrinkage, system, shrinkageMode}) {
-            String p = problems.get(f.getName());
-            f.setBackground(p == null ? (f instanceof JTextField ? java.awt.Color.WHITE : null) : BAD);
-            f.setToolTipText(p != null ? p : Tooltips.meaning("Grading", f));
+            ProblemMarks.mark(f, problems.get(f.getName()), "Grading");
         }
-        grade.setEnabled(problems.isEmpty());
-        grade.setToolTipText(
-                problems.isEmpty()
-                        ? "Grade the outline into every size of the range"
-                        : problems.size() == 1 && problems.containsKey(GradingViewModel.OUTLINE)
-                                ? "Open a base outline first"
-                                : "Correct the marked field first");
-        say(
-                problems.isEmpty()
-                        ? " "
-                        : problems.values().iterator().next()
-                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        ProblemMarks.enable(
+                grade,
+                problems,
+                "Grade the outline into every size of the range",
+                GradingViewModel.OUTLINE,
+                "Open a base outline first");
+        say(ProblemMarks.first(problems));
         return problems;
     }
 
     /** The line under Grade; a long reason wraps within the form's width and stays whole in the tooltip. */
     private void say(String text) {
-        status.setText(
-                text.length() <= 36
-                        ? text
-                        : "<html><div style='width:190px'>"
-                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
-        status.setToolTipText(text.isBlank() ? null : text);
-    }
-
-    private static void addRow(JPanel form, int row, String label, char mnemonic, JComponent field, JComponent extra) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridy = row;
-        c.insets = new Insets(3, 3, 3, 3);
-        c.anchor = GridBagConstraints.WEST;
-        JLabel l = new JLabel(label);
-        if (mnemonic != 0) {
-            l.setDisplayedMnemonic(mnemonic);
-            l.setLabelFor(field);
-        }
-        c.gridx = 0;
-        form.add(l, c);
-        c.gridx = 1;
-        c.fill = GridBagConstraints.HORIZONTAL;
-        form.add(field, c);
-        if (extra != null) {
-            c.gridx = 2;
-            form.add(extra, c);
-        }
+        ProblemMarks.say(status, text, 36, 190);
     }
 
     /** Clicks on the plot set the origin while "Pick on plot" is on. */
@@ -313,12 +239,7 @@ final class GradingTab implements ModuleTab {
     }
 
     private void showFields() {
-        filling = true;
-        try {
-            fillFields();
-        } finally {
-            filling = false;
-        }
+        edits.fill(this::fillFields);
     }
 
     private void fillFields() {
@@ -366,7 +287,7 @@ final class GradingTab implements ModuleTab {
         showFields();
         tableModel.setRowCount(0);
         refreshPlot();
-        edited(null);
+        edits.chosen(null);
     }
 
     /**
@@ -374,7 +295,7 @@ final class GradingTab implements ModuleTab {
      * grading the planner refuses is said beside Grade, and the status bar says "failed".
      */
     private void grade() {
-        typing.flush();
+        edits.flush();
         pushFields();
         if (!check().isEmpty()) {
             return;
@@ -436,20 +357,5 @@ final class GradingTab implements ModuleTab {
 
     private void refreshPlot() {
         plot.show(vm.scene());
-    }
-
-    @Override
-    public String title() {
-        return "Grading";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }

@@ -189,18 +189,7 @@ public final class MainWindow extends JFrame {
         file.add(item("Save as...", 'A', KeyStroke.getKeyStroke("ctrl shift S"), this::saveAs));
         recentMenu.setMnemonic('R');
         file.add(recentMenu);
-        file.addMenuListener(new javax.swing.event.MenuListener() {
-            @Override
-            public void menuSelected(javax.swing.event.MenuEvent e) {
-                fillRecent();
-            }
-
-            @Override
-            public void menuDeselected(javax.swing.event.MenuEvent e) {}
-
-            @Override
-            public void menuCanceled(javax.swing.event.MenuEvent e) {}
-        });
+        refreshOnOpen(file, this::fillRecent);
         file.addSeparator();
         file.add(item("Export plot (PNG/SVG)...", 'E', KeyStroke.getKeyStroke("ctrl E"), this::exportPlot));
         file.addSeparator();
@@ -238,10 +227,18 @@ public final class MainWindow extends JFrame {
             runTicks.put(t, tick);
             job.add(tick);
         }
-        job.addMenuListener(new javax.swing.event.MenuListener() {
+        refreshOnOpen(job, this::updateRunTicks);
+        bar.add(job);
+        bar.add(HelpMenu.create(this));
+        return bar;
+    }
+
+    /** The menu shows what is true when it opens: the recent jobs, the tasks Run executes. */
+    private static void refreshOnOpen(JMenu menu, Runnable refresh) {
+        menu.addMenuListener(new javax.swing.event.MenuListener() {
             @Override
             public void menuSelected(javax.swing.event.MenuEvent e) {
-                updateRunTicks();
+                refresh.run();
             }
 
             @Override
@@ -250,9 +247,6 @@ public final class MainWindow extends JFrame {
             @Override
             public void menuCanceled(javax.swing.event.MenuEvent e) {}
         });
-        bar.add(job);
-        bar.add(HelpMenu.create(this));
-        return bar;
     }
 
     private static JMenuItem item(String text, char mnemonic, KeyStroke key, Runnable action) {

@@ -105,12 +105,7 @@ final class OutputTab implements ModuleTab {
         image.setHorizontalAlignment(JLabel.CENTER);
         previewCards.add(new JScrollPane(text), "text");
         previewCards.add(new JScrollPane(image), "image");
-        JLabel previewLabel = new JLabel("Preview");
-        previewLabel.setDisplayedMnemonic(KeyEvent.VK_P);
-        previewLabel.setLabelFor(text);
-        JPanel right = new JPanel(new BorderLayout());
-        right.add(previewLabel, BorderLayout.NORTH);
-        right.add(previewCards, BorderLayout.CENTER);
+        JPanel right = Captions.above("Preview", KeyEvent.VK_P, text, previewCards);
         status.setName("output-status");
 
         panel.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));

@@ -29,16 +29,12 @@ import org.fresa.post.PocketPost;
  * accepted them. A bad field is marked, with the reason beside Compute. A program that fails the
  * program check is shown with its failing block marked, and Save program refuses it.
  */
-final class PocketTab implements ModuleTab {
-
-    private static final Color BAD = new Color(255, 220, 220);
+final class PocketTab extends PlotTab {
 
     private final AppContext ctx;
     private PocketViewModel model = new PocketViewModel();
     // the job's pocket settings the fields show: a job that holds others is shown afresh
     private Optional<PocketSettings> shown = Optional.empty();
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final JTextArea report = new JTextArea(12, 40);
     private final JTextArea nc = new JTextArea(12, 40);
     private final JTextField contour = new JTextField(24);
@@ -58,13 +54,13 @@ final class PocketTab implements ModuleTab {
     private final JLabel status = new JLabel(" ");
     private final JPanel form = new JPanel();
     private final JTabbedPane texts = new JTabbedPane();
-    private boolean filling;
-    private final TypingPause typing = new TypingPause(this::commit);
+    private final FieldEdits edits = new FieldEdits(() -> fieldsChanged().isEmpty(), this::commit);
     private final PocketContourEditor editor = new PocketContourEditor();
     private final ContourEditorPanel editorPanel =
             new ContourEditorPanel(editor, this::contourEdited, () -> plot.show(editor.scene()), this::saveContour);
 
     PocketTab(AppContext ctx) {
+        super("Pocket");
         this.ctx = ctx;
         form.setLayout(new GridLayout(0, 2, 4, 4));
         JLabel cl = new JLabel("Contour (.dad, .contour)");
@@ -73,7 +69,7 @@ final class PocketTab implements ModuleTab {
         contour.setName(PocketViewModel.CONTOUR);
         TextChanges.onChange(contour, () -> {
             contourFileChanged();
-            typed(contour.getName());
+            edits.typed(contour.getName());
         });
         form.add(cl);
         JPanel file = new JPanel(new BorderLayout());
@@ -87,73 +83,39 @@ final class PocketTab implements ModuleTab {
             tech[i] = new JTextField(8);
             tech[i].setName(PocketViewModel.NAMES.get(i));
             String name = tech[i].getName();
-            TextChanges.onChange(tech[i], () -> typed(name));
-            JLabel l = new JLabel(PocketViewModel.LABELS.get(i));
-            l.setLabelFor(tech[i]);
-            form.add(l);
-            form.add(tech[i]);
+            TextChanges.onChange(tech[i], () -> edits.typed(name));
+            row(PocketViewModel.LABELS.get(i), (char) 0, tech[i]);
         }
-        JLabel pl = new JLabel("Post");
-        pl.setLabelFor(post);
-        pl.setDisplayedMnemonic('P');
         post.setName("pocket-post");
-        post.addActionListener(e -> edited(null));
-        form.add(pl);
-        form.add(post);
-        JLabel dl = new JLabel("Direction (not 7m-compat)");
-        dl.setLabelFor(direction);
-        dl.setDisplayedMnemonic('D');
+        post.addActionListener(e -> edits.chosen(null));
+        row("Post", 'P', post);
         direction.setName("pocket-direction");
-        direction.addActionListener(e -> edited(null));
-        form.add(dl);
-        form.add(direction);
-        JLabel el = new JLabel("Entry (not 7m-compat)");
-        el.setLabelFor(entry);
-        el.setDisplayedMnemonic('E');
+        direction.addActionListener(e -> edits.chosen(null));
+        row("Direction (not 7m-compat)", 'D', direction);
         entry.setName(PocketViewModel.ENTRY);
         entry.addActionListener(e -> fieldsChanged());
-        form.add(el);
-        form.add(entry);
-        JLabel al = new JLabel(PocketViewModel.ENTRY_ANGLE_LABEL);
-        al.setLabelFor(entryAngle);
+        row("Entry (not 7m-compat)", 'E', entry);
         entryAngle.setName(PocketViewModel.ENTRY_ANGLE);
         TextChanges.onChange(entryAngle, this::fieldsChanged);
-        form.add(al);
-        form.add(entryAngle);
+        row(PocketViewModel.ENTRY_ANGLE_LABEL, (char) 0, entryAngle);
         centreCutting.setName(PocketViewModel.CENTRE_CUTTING);
         centreCutting.setMnemonic('u');
         centreCutting.addActionListener(e -> fieldsChanged());
         form.add(new JLabel());
         form.add(centreCutting);
         // the clearing strategy: offset or zigzag (G-code and APT posts), each label a keyboard mnemonic
-        JLabel sl = new JLabel("Strategy");
-        sl.setLabelFor(strategy);
-        sl.setDisplayedMnemonic('y');
         strategy.setName(PocketViewModel.STRATEGY);
         strategy.addActionListener(e -> fieldsChanged());
-        form.add(sl);
-        form.add(strategy);
-        JLabel gl = new JLabel(PocketViewModel.ANGLE_LABEL);
-        gl.setLabelFor(angle);
-        gl.setDisplayedMnemonic('Z');
+        row("Strategy", 'y', strategy);
         angle.setName(PocketViewModel.ANGLE);
         TextChanges.onChange(angle, this::fieldsChanged);
-        form.add(gl);
-        form.add(angle);
-        JLabel kl = new JLabel(PocketViewModel.STOCK_TO_LEAVE_LABEL);
-        kl.setLabelFor(stockToLeave);
-        kl.setDisplayedMnemonic('k');
+        row(PocketViewModel.ANGLE_LABEL, 'Z', angle);
         stockToLeave.setName(PocketViewModel.STOCK_TO_LEAVE);
         TextChanges.onChange(stockToLeave, this::fieldsChanged);
-        form.add(kl);
-        form.add(stockToLeave);
-        JLabel ol = new JLabel("Pass order (offset)");
-        ol.setLabelFor(order);
-        ol.setDisplayedMnemonic('r');
+        row(PocketViewModel.STOCK_TO_LEAVE_LABEL, 'k', stockToLeave);
         order.setName(PocketViewModel.ORDER);
         order.addActionListener(e -> fieldsChanged());
-        form.add(ol);
-        form.add(order);
+        row("Pass order (offset)", 'r', order);
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
@@ -193,14 +155,24 @@ final class PocketTab implements ModuleTab {
         showJob();
     }
 
+    /** A row of the form: the label, its mnemonic (0 for none), and the field it names. */
+    private void row(String label, char mnemonic, JComponent field) {
+        JLabel l = new JLabel(label);
+        l.setLabelFor(field);
+        if (mnemonic != 0) {
+            l.setDisplayedMnemonic(mnemonic);
+        }
+        form.add(l);
+        form.add(field);
+    }
+
     /** The job's pocket settings, or a new job's; no result. */
     private void showJob() {
-        typing.drop();
+        edits.drop();
         model = new PocketViewModel();
         model.load(ctx.model().job());
         shown = ctx.model().job().pocket();
-        filling = true;
-        try {
+        edits.fill(() -> {
             contour.setText(model.contourText());
             for (int i = 0; i < tech.length; i++) {
                 tech[i].setText(model.value(i));
@@ -214,9 +186,7 @@ final class PocketTab implements ModuleTab {
             angle.setText(model.angle());
             stockToLeave.setText(model.stockToLeave());
             order.setSelectedItem(model.order());
-        } finally {
-            filling = false;
-        }
+        });
         report.setText("");
         nc.setText("");
         editor.load(model.editorContour());
@@ -234,7 +204,7 @@ final class PocketTab implements ModuleTab {
      * again instead of the elements typed before.
      */
     private void contourFileChanged() {
-        if (filling) {
+        if (edits.filling()) {
             return;
         }
         model.setContourText(contour.getText());
@@ -260,7 +230,7 @@ final class PocketTab implements ModuleTab {
         if (!editor.valid()) {
             return;
         }
-        typing.flush();
+        edits.flush();
         model.setElements(Optional.of(editor.contour()));
         commit(null);
     }
@@ -296,13 +266,8 @@ final class PocketTab implements ModuleTab {
             say("Cannot save " + file + ": " + e.getMessage(), true);
             return;
         }
-        filling = true;
-        try {
-            contour.setText(file.toString());
-        } finally {
-            filling = false;
-        }
-        typing.flush();
+        edits.fill(() -> contour.setText(file.toString()));
+        edits.flush();
         model.setElements(Optional.of(editor.contour()));
         fieldsChanged();
         commit(null);
@@ -317,34 +282,13 @@ final class PocketTab implements ModuleTab {
         }
     }
 
-    /** A field was typed into: marked at once, its good value into the job once the typing pauses. */
-    private void typed(String field) {
-        if (filling) {
-            return;
-        }
-        if (fieldsChanged().isEmpty()) {
-            typing.typed(field);
-        } else {
-            typing.drop();
-        }
-    }
-
-    /** A choice: what was typed goes first, then the choice, each its own undo step. */
-    private void edited(String field) {
-        if (filling) {
-            return;
-        }
-        typing.flush();
-        commit(field);
-    }
-
     /**
      * A field changed: the view model takes it and, when every field is good, the job takes the
      * settings (one undo step per field typed into). A contour that is not yet a file keeps the
      * job's contour: the planner's check of it comes with Compute.
      */
     private void commit(String field) {
-        if (filling || !fieldsChanged().isEmpty()) {
+        if (edits.filling() || !fieldsChanged().isEmpty()) {
             return;
         }
         Optional<PocketSettings> typed = model.typedSettings();
@@ -365,7 +309,7 @@ final class PocketTab implements ModuleTab {
 
     /** Takes the fields into the view model, marks the bad ones and says why beside Compute. */
     private Map<String, String> fieldsChanged() {
-        if (filling) {
+        if (edits.filling()) {
             return Map.of();
         }
         model.setContourText(contour.getText());
@@ -394,12 +338,7 @@ final class PocketTab implements ModuleTab {
                 problems.isEmpty()
                         ? "Plan the pocket and show its passes and program"
                         : "Correct the marked field first");
-        say(
-                problems.isEmpty()
-                        ? " "
-                        : problems.values().iterator().next()
-                                + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""),
-                !problems.isEmpty());
+        say(ProblemMarks.first(problems), !problems.isEmpty());
         return problems;
     }
 
@@ -408,30 +347,13 @@ final class PocketTab implements ModuleTab {
      * being cut off, and stays whole in the tooltip.
      */
     private void say(String text, boolean problem) {
-        status.setForeground(problem ? new Color(180, 0, 0) : Color.BLACK);
+        status.setForeground(problem ? ProblemMarks.PROBLEM : Color.BLACK);
         // Swing's HTML takes CSS pixels as points (4/3 of a screen pixel at 96 dpi)
-        int width = Math.max(180, (form.getWidth() - 12) * 3 / 4);
-        status.setText(
-                text.length() <= 40
-                        ? text
-                        : "<html><div style='width:" + width + "px'>"
-                                + text.replace("&", "&amp;").replace("<", "&lt;") + "</div></html>");
-        status.setToolTipText(text.isBlank() ? null : text);
+        ProblemMarks.say(status, text, 40, Math.max(180, (form.getWidth() - 12) * 3 / 4));
     }
 
     private static void mark(JTextField f, Map<String, String> problems) {
-        String p = problems.get(f.getName());
-        f.setBackground(p == null ? Color.WHITE : BAD);
-        // a valid field shows what it means again, in place of the problem it had
-        f.setToolTipText(p != null ? p : meaning(f));
-    }
-
-    private static String meaning(JTextField f) {
-        String tip = Tooltips.of("Pocket", f.getName());
-        if (tip == null && f.getClientProperty("labeledBy") instanceof JLabel l) {
-            tip = Tooltips.of("Pocket", l.getText());
-        }
-        return tip;
+        ProblemMarks.mark(f, problems.get(f.getName()), "Pocket");
     }
 
     /** Writes the computed program to a chosen file, unless it fails the program check. */
@@ -474,7 +396,7 @@ final class PocketTab implements ModuleTab {
     }
 
     private void compute() {
-        typing.flush();
+        edits.flush();
         if (!fieldsChanged().isEmpty()) {
             return;
         }
@@ -533,20 +455,5 @@ final class PocketTab implements ModuleTab {
             ctx.tasks().failed("Pocket");
             say(model.error().orElse("The pocket cannot be planned."), true);
         }
-    }
-
-    @Override
-    public String title() {
-        return "Pocket";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }

@@ -3,7 +3,6 @@ package org.fresa.ui;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Component;
-import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
@@ -96,13 +95,7 @@ final class RobotTab implements ModuleTab {
         JButton save = Buttons.of("Save robot as file...", "robot-save", KeyEvent.VK_A, () -> saveFile());
         JButton fk = Buttons.of("Symbolic FK", "robot-symbolic", KeyEvent.VK_K, () -> computeSymbolic());
         JButton export = Buttons.of("Export symbolic FK...", "robot-export", KeyEvent.VK_E, () -> exportSymbolic());
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        top.add(robotLabel);
-        top.add(robots);
-        top.add(open);
-        top.add(save);
-        top.add(fk);
-        top.add(export);
+        JPanel top = Buttons.row(robotLabel, robots, open, save, fk, export);
 
         dh.setName("robot-dh");
         dh.setFillsViewportHeight(true);
@@ -147,12 +140,11 @@ final class RobotTab implements ModuleTab {
         symbolic.setEditable(false);
         symbolic.setName("robot-fk");
         symbolic.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        JLabel symLabel = new JLabel("Symbolic forward kinematics (Symja), derived from the table above");
-        symLabel.setDisplayedMnemonic(KeyEvent.VK_S);
-        symLabel.setLabelFor(symbolic);
-        JPanel lower = new JPanel(new BorderLayout());
-        lower.add(symLabel, BorderLayout.NORTH);
-        lower.add(new JScrollPane(symbolic), BorderLayout.CENTER);
+        JPanel lower = Captions.above(
+                "Symbolic forward kinematics (Symja), derived from the table above",
+                KeyEvent.VK_S,
+                symbolic,
+                new JScrollPane(symbolic));
 
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, upper, lower);
         split.setResizeWeight(0);

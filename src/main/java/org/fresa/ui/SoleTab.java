@@ -2,7 +2,6 @@ package org.fresa.ui;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Point;
 import java.awt.datatransfer.DataFlavor;
 import java.awt.datatransfer.StringSelection;
@@ -42,12 +41,10 @@ import org.fresa.sole.Foot;
  * nudged with the arrow keys (1 mm, Shift 10 mm), removed with Delete; its parameters edited in
  * a table; the job's size and foot; Generate writes the programs of the edited job.
  */
-final class SoleTab implements ModuleTab {
+final class SoleTab extends PlotTab {
 
     private final SoleViewModel vm = new SoleViewModel();
     private final AppContext ctx;
-    private final JPanel panel = new JPanel(new BorderLayout());
-    private final PlotPanel plot = new PlotPanel();
     private final PlotPanel preview = new PlotPanel();
     private final WarningsPanel problems = new WarningsPanel("sole-problems", 3);
     private final JList<String> library;
@@ -63,6 +60,7 @@ final class SoleTab implements ModuleTab {
     private Vec2 dragFrom;
 
     SoleTab(AppContext ctx) {
+        super("Sole");
         this.ctx = ctx;
         library = new JList<>(vm.macros().toArray(new String[0]));
         library.setName("sole-library");
@@ -135,25 +133,13 @@ final class SoleTab implements ModuleTab {
         JButton show = Buttons.of("Show", null, KeyEvent.VK_S, () -> showSole());
         JButton block = Buttons.of("Mould block", "sole-block", KeyEvent.VK_B, () -> showBlock());
         block.setToolTipText("Shows the size's left and right sole where the mould block's equations place them");
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        top.add(load);
-        top.add(sizeLabel);
-        top.add(sizes);
-        top.add(footLabel);
-        top.add(feet);
-        top.add(show);
-        top.add(block);
+        JPanel top = Buttons.row(load, sizeLabel, sizes, footLabel, feet, show, block);
         JLabel outLabel = labelFor(outFolder, "sole-out", "Output folder", KeyEvent.VK_O);
         JButton choose = Buttons.of("...", null, 0, () -> chooseFolder());
         choose.setToolTipText("Choose the output folder");
         JButton generate = Buttons.of("Generate", "sole-generate", KeyEvent.VK_E, () -> generate());
-        JPanel bottom = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        bottom.add(outLabel);
-        bottom.add(outFolder);
-        bottom.add(choose);
-        bottom.add(generate);
         status.setName("sole-status");
-        bottom.add(status);
+        JPanel bottom = Buttons.row(outLabel, outFolder, choose, generate, status);
         JPanel right = new JPanel(new BorderLayout());
         right.add(top, BorderLayout.NORTH);
         right.add(plot, BorderLayout.CENTER);
@@ -458,20 +444,5 @@ final class SoleTab implements ModuleTab {
                 edited(why);
             }
         }
-    }
-
-    @Override
-    public String title() {
-        return "Sole";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 }

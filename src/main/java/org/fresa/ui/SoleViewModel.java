@@ -364,23 +364,7 @@ public final class SoleViewModel {
         } else {
             return Optional.of("'" + d.name() + "' is a " + d.pattern() + " pattern: move it by its parameters");
         }
-        JobSettings.SoleDesign moved = new JobSettings.SoleDesign(
-                d.name(),
-                d.tool(),
-                d.rule(),
-                d.text(),
-                PatternKind.COPIES,
-                d.count(),
-                d.rows(),
-                d.dxMm(),
-                d.dyMm(),
-                d.rowShiftMm(),
-                d.stepDeg(),
-                d.centerXMm(),
-                d.centerYMm(),
-                d.lead(),
-                d.figures(),
-                copies);
+        JobSettings.SoleDesign moved = d.withCopies(copies);
         List<JobSettings.SoleDesign> ds = new ArrayList<>(designs());
         ds.set(selected, moved);
         return apply(ds);
@@ -482,23 +466,7 @@ public final class SoleViewModel {
         }
         List<JobSettings.SoleFigure> figs = new ArrayList<>(d.figures());
         figs.set(0, new JobSettings.SoleFigure(f.macro(), sb.toString(), f.drawing()));
-        JobSettings.SoleDesign edited = new JobSettings.SoleDesign(
-                d.name(),
-                d.tool(),
-                d.rule(),
-                d.text(),
-                d.pattern(),
-                d.count(),
-                d.rows(),
-                d.dxMm(),
-                d.dyMm(),
-                d.rowShiftMm(),
-                d.stepDeg(),
-                d.centerXMm(),
-                d.centerYMm(),
-                d.lead(),
-                figs,
-                d.copies());
+        JobSettings.SoleDesign edited = d.withFigures(figs);
         List<JobSettings.SoleDesign> ds = new ArrayList<>(designs());
         ds.set(selected, edited);
         return apply(ds);

@@ -12,7 +12,6 @@ import javax.swing.BorderFactory;
 import javax.swing.DefaultComboBoxModel;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
-import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -38,15 +37,13 @@ import org.fresa.toolpath.ToolpathPlanner;
  * Page Up/Down, Home/End) or the Play button, and the cycle time. Reading and planning run in the
  * background; all state lives in {@link StepNcViewModel}.
  */
-final class StepNcTab implements ModuleTab {
+final class StepNcTab extends PlotTab {
 
     private final AppContext ctx;
     private StepNcViewModel vm = new StepNcViewModel();
-    private final JPanel panel = new JPanel(new BorderLayout());
     private final JLabel fileLabel = new JLabel("No file read. Open a STEP-NC file or drop one here.");
     private final JTree tree = new JTree(new DefaultTreeModel(new DefaultMutableTreeNode("No file")));
     private final JTextArea details = new JTextArea(14, 40);
-    private final PlotPanel plot = new PlotPanel();
     private final WarningsPanel problems = new WarningsPanel("stepnc-problems", 4);
     private final JComboBox<String> layers = new JComboBox<>();
     private final JComboBox<String> paths = new JComboBox<>();
@@ -68,6 +65,7 @@ final class StepNcTab implements ModuleTab {
     private List<String> preparedDetails;
 
     StepNcTab(AppContext ctx) {
+        super("STEP-NC");
         this.ctx = ctx;
         JButton open = new JButton("Open STEP-NC file...");
         open.setMnemonic(KeyEvent.VK_O);
@@ -95,12 +93,7 @@ final class StepNcTab implements ModuleTab {
         tree.setRowHeight(tree.getFontMetrics(tree.getFont()).getHeight() + 4);
         tree.setLargeModel(true);
         tree.addTreeSelectionListener(e -> selectionChanged());
-        JLabel treeLabel = new JLabel("Workplans and workingsteps");
-        treeLabel.setDisplayedMnemonic(KeyEvent.VK_W);
-        treeLabel.setLabelFor(tree);
-        JPanel left = new JPanel(new BorderLayout());
-        left.add(treeLabel, BorderLayout.NORTH);
-        left.add(new JScrollPane(tree), BorderLayout.CENTER);
+        JPanel left = Captions.above("Workplans and workingsteps", KeyEvent.VK_W, tree, new JScrollPane(tree));
         problems.onSelect(this::showProblem);
         left.add(problems, BorderLayout.SOUTH);
 
@@ -108,14 +101,9 @@ final class StepNcTab implements ModuleTab {
         details.setName("stepnc-details");
         details.setLineWrap(true);
         details.setWrapStyleWord(true);
-        JLabel detailsLabel = new JLabel("Selected workingstep");
-        detailsLabel.setDisplayedMnemonic(KeyEvent.VK_S);
-        detailsLabel.setLabelFor(details);
-        JPanel right = new JPanel(new BorderLayout());
-        right.add(detailsLabel, BorderLayout.NORTH);
         JSplitPane rightSplit = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(details), toolpathView());
         rightSplit.setResizeWeight(0.3);
-        right.add(rightSplit, BorderLayout.CENTER);
+        JPanel right = Captions.above("Selected workingstep", KeyEvent.VK_S, details, rightSplit);
 
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, left, right);
         split.setResizeWeight(0.35);
@@ -212,21 +200,6 @@ final class StepNcTab implements ModuleTab {
             return;
         }
         replay.setValue(replay.getValue() + 1);
-    }
-
-    @Override
-    public String title() {
-        return "STEP-NC";
-    }
-
-    @Override
-    public JComponent component() {
-        return panel;
-    }
-
-    @Override
-    public Optional<PlotPanel> plot() {
-        return Optional.of(plot);
     }
 
     private void choose() {
