@@ -69,27 +69,25 @@ public record Limits(
      * degrees), no material top or floor stated.
      */
     public static Limits milling() {
-        return new Limits(
-                SPINDLE_MIN_RPM,
-                SPINDLE_MAX_RPM,
-                FEED_MIN_MM_PER_MIN,
-                FEED_MAX_MM_PER_MIN,
-                Head.SPINDLE,
-                Map.of(),
-                ToolLimits.notCentreCutting(),
-                Stock.UNKNOWN,
-                Double.NaN,
-                0);
+        return withDefaultRanges(Head.SPINDLE);
     }
 
     /** A sheet-cutting machine whose jet the words switch on and off (e.g. {@code M07}, {@code M08}). */
     public static Limits sheetCutting(String process, String onWords, String offWords) {
+        return withDefaultRanges(new Head(process, Words.group(onWords), Words.group(offWords)));
+    }
+
+    /**
+     * A machine that says nothing of its ranges, cutting with this head: its tools not cutting at
+     * their centre, no material top or floor stated.
+     */
+    private static Limits withDefaultRanges(Head head) {
         return new Limits(
                 SPINDLE_MIN_RPM,
                 SPINDLE_MAX_RPM,
                 FEED_MIN_MM_PER_MIN,
                 FEED_MAX_MM_PER_MIN,
-                new Head(process, Words.group(onWords), Words.group(offWords)),
+                head,
                 Map.of(),
                 ToolLimits.notCentreCutting(),
                 Stock.UNKNOWN,
@@ -101,32 +99,12 @@ public record Limits(
     public Limits withTool(int number, ToolLimits tool) {
         Map<Integer, ToolLimits> m = new java.util.HashMap<>(tools);
         m.put(number, tool);
-        return new Limits(
-                spindleMinRpm,
-                spindleMaxRpm,
-                feedMinMmPerMin,
-                feedMaxMmPerMin,
-                head,
-                m,
-                otherTools,
-                stock,
-                floorZMm,
-                breakthroughMm);
+        return withMaterial(m, otherTools, stock, floorZMm, breakthroughMm);
     }
 
     /** These limits with every tool not listed entering as {@code tool} says. */
     public Limits withOtherTools(ToolLimits tool) {
-        return new Limits(
-                spindleMinRpm,
-                spindleMaxRpm,
-                feedMinMmPerMin,
-                feedMaxMmPerMin,
-                head,
-                tools,
-                tool,
-                stock,
-                floorZMm,
-                breakthroughMm);
+        return withMaterial(tools, tool, stock, floorZMm, breakthroughMm);
     }
 
     /**
@@ -139,38 +117,34 @@ public record Limits(
 
     /** These limits with the stock. */
     public Limits withStock(Stock stock) {
-        return new Limits(
-                spindleMinRpm,
-                spindleMaxRpm,
-                feedMinMmPerMin,
-                feedMaxMmPerMin,
-                head,
-                tools,
-                otherTools,
-                stock,
-                floorZMm,
-                breakthroughMm);
+        return withMaterial(tools, otherTools, stock, floorZMm, breakthroughMm);
     }
 
     /** These limits with the floor and the breakthrough below it. */
     public Limits withFloor(double floorZMm, double breakthroughMm) {
-        return new Limits(
-                spindleMinRpm,
-                spindleMaxRpm,
-                feedMinMmPerMin,
-                feedMaxMmPerMin,
-                head,
-                tools,
-                otherTools,
-                stock,
-                floorZMm,
-                breakthroughMm);
+        return withMaterial(tools, otherTools, stock, floorZMm, breakthroughMm);
     }
 
     /** These limits with the machine's own spindle and feed ranges. */
     public Limits withRanges(double spindleMin, double spindleMax, double feedMin, double feedMax) {
         return new Limits(
                 spindleMin, spindleMax, feedMin, feedMax, head, tools, otherTools, stock, floorZMm, breakthroughMm);
+    }
+
+    /** The same machine (ranges and head) with other tools, stock and floor. */
+    private Limits withMaterial(
+            Map<Integer, ToolLimits> ts, ToolLimits other, Stock s, double floor, double breakthrough) {
+        return new Limits(
+                spindleMinRpm,
+                spindleMaxRpm,
+                feedMinMmPerMin,
+                feedMaxMmPerMin,
+                head,
+                ts,
+                other,
+                s,
+                floor,
+                breakthrough);
     }
 
     /** How tool {@code number} may enter the material. */
