@@ -80,66 +80,24 @@ public record GradingPlan(
     }
 
     public GradingPlan withShrinkage(double s, ShrinkageMode mode) {
-        return new GradingPlan(
-                system,
-                baseSize,
-                sizes,
-                lengthStepMm,
-                widthStepMm,
-                origin,
-                lengthAxisDeg,
-                s,
-                mode,
-                arcMode,
-                arcToleranceMm,
-                coordination);
+        return with(origin, s, mode, arcMode, coordination);
     }
 
     public GradingPlan withOrigin(Vec2 o) {
-        return new GradingPlan(
-                system,
-                baseSize,
-                sizes,
-                lengthStepMm,
-                widthStepMm,
-                Optional.of(o),
-                lengthAxisDeg,
-                shrinkage,
-                shrinkageMode,
-                arcMode,
-                arcToleranceMm,
-                coordination);
+        return with(Optional.of(o), shrinkage, shrinkageMode, arcMode, coordination);
     }
 
     public GradingPlan withArcMode(ArcMode m) {
-        return new GradingPlan(
-                system,
-                baseSize,
-                sizes,
-                lengthStepMm,
-                widthStepMm,
-                origin,
-                lengthAxisDeg,
-                shrinkage,
-                shrinkageMode,
-                m,
-                arcToleranceMm,
-                coordination);
+        return with(origin, shrinkage, shrinkageMode, m, coordination);
     }
 
     public GradingPlan withCoordination(Coordination c) {
+        return with(origin, shrinkage, shrinkageMode, arcMode, Optional.of(c));
+    }
+
+    /** The same sizes and steps with another origin, shrinkage, arc mode or coordination. */
+    private GradingPlan with(Optional<Vec2> o, double s, ShrinkageMode mode, ArcMode m, Optional<Coordination> c) {
         return new GradingPlan(
-                system,
-                baseSize,
-                sizes,
-                lengthStepMm,
-                widthStepMm,
-                origin,
-                lengthAxisDeg,
-                shrinkage,
-                shrinkageMode,
-                arcMode,
-                arcToleranceMm,
-                Optional.of(c));
+                system, baseSize, sizes, lengthStepMm, widthStepMm, o, lengthAxisDeg, s, mode, m, arcToleranceMm, c);
     }
 }
