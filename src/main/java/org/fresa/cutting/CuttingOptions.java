@@ -97,113 +97,60 @@ public record CuttingOptions(
     }
 
     public CuttingOptions withGapTolerance(double mm) {
-        return new CuttingOptions(
-                kerfMm,
-                process,
-                leadInMm,
-                leadOutMm,
-                arcLeads,
-                overcutMm,
-                mm,
-                paperMode,
-                controllerCompensation,
-                outerClockwise,
-                holesClockwise,
-                feedMmPerMin,
-                pierceDwellS,
-                avoidCutParts);
+        return with(overcutMm, mm, paperMode, controllerCompensation, outerClockwise, holesClockwise, avoidCutParts);
     }
 
     public CuttingOptions withPaperMode(boolean on) {
-        return new CuttingOptions(
-                kerfMm,
-                process,
-                leadInMm,
-                leadOutMm,
-                arcLeads,
-                overcutMm,
-                gapToleranceMm,
-                on,
-                controllerCompensation,
-                outerClockwise,
-                holesClockwise,
-                feedMmPerMin,
-                pierceDwellS,
-                avoidCutParts);
+        return with(
+                overcutMm, gapToleranceMm, on, controllerCompensation, outerClockwise, holesClockwise, avoidCutParts);
     }
 
     /** Leaves the kerf to the controller: G41/G42 on the drawn contour instead of an offset path. */
     public CuttingOptions withControllerCompensation(boolean on) {
-        return new CuttingOptions(
-                kerfMm,
-                process,
-                leadInMm,
-                leadOutMm,
-                arcLeads,
-                overcutMm,
-                gapToleranceMm,
-                paperMode,
-                on,
-                outerClockwise,
-                holesClockwise,
-                feedMmPerMin,
-                pierceDwellS,
-                avoidCutParts);
+        return with(overcutMm, gapToleranceMm, paperMode, on, outerClockwise, holesClockwise, avoidCutParts);
     }
 
     public CuttingOptions withOvercut(double mm) {
-        return new CuttingOptions(
-                kerfMm,
-                process,
-                leadInMm,
-                leadOutMm,
-                arcLeads,
-                mm,
-                gapToleranceMm,
-                paperMode,
-                controllerCompensation,
-                outerClockwise,
-                holesClockwise,
-                feedMmPerMin,
-                pierceDwellS,
-                avoidCutParts);
+        return with(
+                mm, gapToleranceMm, paperMode, controllerCompensation, outerClockwise, holesClockwise, avoidCutParts);
     }
 
     /** The senses of outer contours and of holes (true: clockwise). */
     public CuttingOptions withDirections(boolean outerCw, boolean holesCw) {
-        return new CuttingOptions(
-                kerfMm,
-                process,
-                leadInMm,
-                leadOutMm,
-                arcLeads,
-                overcutMm,
-                gapToleranceMm,
-                paperMode,
-                controllerCompensation,
-                outerCw,
-                holesCw,
-                feedMmPerMin,
-                pierceDwellS,
-                avoidCutParts);
+        return with(overcutMm, gapToleranceMm, paperMode, controllerCompensation, outerCw, holesCw, avoidCutParts);
     }
 
     /** Whether rapids detour around parts already cut free. */
     public CuttingOptions withAvoidCutParts(boolean on) {
+        return with(overcutMm, gapToleranceMm, paperMode, controllerCompensation, outerClockwise, holesClockwise, on);
+    }
+
+    /**
+     * The same process, kerf, leads, feed and dwell, with other choices of how the drawing is
+     * read and cut.
+     */
+    private CuttingOptions with(
+            double overcut,
+            double gapTolerance,
+            boolean paper,
+            boolean controller,
+            boolean outerCw,
+            boolean holesCw,
+            boolean avoid) {
         return new CuttingOptions(
                 kerfMm,
                 process,
                 leadInMm,
                 leadOutMm,
                 arcLeads,
-                overcutMm,
-                gapToleranceMm,
-                paperMode,
-                controllerCompensation,
-                outerClockwise,
-                holesClockwise,
+                overcut,
+                gapTolerance,
+                paper,
+                controller,
+                outerCw,
+                holesCw,
                 feedMmPerMin,
                 pierceDwellS,
-                on);
+                avoid);
     }
 }
