@@ -241,70 +241,19 @@ public final class JobSettings {
 
         /** The same settings with other entries. */
         public PocketSettings withEntry(EntryRule.Kind kind, double angleDeg, boolean centre) {
-            return new PocketSettings(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    kind,
-                    angleDeg,
-                    centre,
-                    elements,
-                    strategy);
+            return with(contour, direction, kind, angleDeg, centre, elements, strategy);
         }
 
         /**
          * The same settings with the contour held in the job (typed in the editor); file names it.
          */
         public PocketSettings withElements(Path file, DadContour typed) {
-            return new PocketSettings(
-                    file,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    Optional.of(typed),
-                    strategy);
+            return with(file, direction, entry, entryAngleDeg, centreCutting, Optional.of(typed), strategy);
         }
 
         /** The same settings with the contour read from a file (no elements held in the job). */
         public PocketSettings withContourFile(Path file) {
-            return new PocketSettings(
-                    file,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    Optional.empty(),
-                    strategy);
+            return with(file, direction, entry, entryAngleDeg, centreCutting, Optional.empty(), strategy);
         }
 
         /** The same settings with the thesis's technology data (tool, depths, speed and feeds). */
@@ -336,8 +285,25 @@ public final class JobSettings {
 
         /** The same settings milled in the given direction. */
         public PocketSettings withDirection(MillingDirection d) {
+            return with(contour, d, entry, entryAngleDeg, centreCutting, elements, strategy);
+        }
+
+        /** The same settings with another clearing strategy. */
+        public PocketSettings withStrategy(PocketStrategy s) {
+            return with(contour, direction, entry, entryAngleDeg, centreCutting, elements, s);
+        }
+
+        /** The same technology and post with another contour, direction, entry or strategy. */
+        private PocketSettings with(
+                Path file,
+                MillingDirection d,
+                EntryRule.Kind kind,
+                double angleDeg,
+                boolean centre,
+                Optional<DadContour> typed,
+                PocketStrategy s) {
             return new PocketSettings(
-                    contour,
+                    file,
                     toolDiameterMm,
                     cutFraction,
                     finishFraction,
@@ -349,32 +315,10 @@ public final class JobSettings {
                     finishFeedMmPerMin,
                     post,
                     d,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    elements,
-                    strategy);
-        }
-
-        /** The same settings with another clearing strategy. */
-        public PocketSettings withStrategy(PocketStrategy s) {
-            return new PocketSettings(
-                    contour,
-                    toolDiameterMm,
-                    cutFraction,
-                    finishFraction,
-                    zTopMm,
-                    zBottomMm,
-                    maxDepthPerPassMm,
-                    spindleRpm,
-                    feedMmPerMin,
-                    finishFeedMmPerMin,
-                    post,
-                    direction,
-                    entry,
-                    entryAngleDeg,
-                    centreCutting,
-                    elements,
+                    kind,
+                    angleDeg,
+                    centre,
+                    typed,
                     s);
         }
     }
@@ -753,6 +697,15 @@ public final class JobSettings {
 
         /** The same job with other tread designs. */
         public SoleSettings withDesigns(List<SoleDesign> ds) {
+            return with(ds, block);
+        }
+
+        /** The same job with another mould block (empty: none). */
+        public SoleSettings withBlock(Optional<SoleBlock> b) {
+            return with(designs, b);
+        }
+
+        private SoleSettings with(List<SoleDesign> ds, Optional<SoleBlock> b) {
             return new SoleSettings(
                     outline,
                     baseSize,
@@ -768,27 +721,6 @@ public final class JobSettings {
                     marginMm,
                     tools,
                     ds,
-                    cavityTool,
-                    block);
-        }
-
-        /** The same job with another mould block (empty: none). */
-        public SoleSettings withBlock(Optional<SoleBlock> b) {
-            return new SoleSettings(
-                    outline,
-                    baseSize,
-                    sizes,
-                    cavityDepthMm,
-                    post,
-                    system,
-                    originMm,
-                    shrinkage,
-                    shrinkageMode,
-                    treadDepthMm,
-                    clearanceMm,
-                    marginMm,
-                    tools,
-                    designs,
                     cavityTool,
                     b);
         }
