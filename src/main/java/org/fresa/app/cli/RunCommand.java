@@ -10,10 +10,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa run JOB --out DIR}: a saved job, headless. */
-@Command(
-        name = "run",
-        mixinStandardHelpOptions = true,
-        description = "Run a saved job file (the same file the desktop application saves) headless.")
+@Command(name = "run", description = "Run a saved job file (the same file the desktop application saves) headless.")
 final class RunCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "JOB", description = "job file (.xml, schemas/job.xsd)")
