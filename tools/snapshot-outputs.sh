@@ -26,7 +26,7 @@ run stepnc-json stepnc samples/stepnc/example2.stp --json
 run posts posts
 run robots robots
 run help --help
-for c in gui run stepnc toolpath robot pocket cut grade sole ik robots posts; do run "help-$c" $c --help; done
+for c in gui run stepnc toolpath robot pocket cut grade sole ik robots posts bench; do run "help-$c" $c --help; done
 # bad input: one message, exit 2, nothing written
 printf 'x,y,z,roll,pitch,yaw\n500,0,500,0,180\n' >"$out/bad-targets.csv"
 run bad-ik ik "$out/bad-targets.csv" --robot irb140 --out "$out/bad-ik"

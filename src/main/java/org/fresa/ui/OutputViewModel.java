@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.fresa.io.OutputFolder;
@@ -28,27 +29,28 @@ final class OutputViewModel {
     private final Set<String> checked = new LinkedHashSet<>(List.of("csv", "xml", "png"));
     private String previewed = "rapid";
 
+    /** What a format writes: the file its preview shows, and its line in the list of formats. */
+    private record Written(String previewFile, String description) {}
+
+    private static final Map<String, Written> WRITTEN = Map.of(
+            "csv", new Written("trajectory.csv", "csv: trajectory.csv (joint values per point)"),
+            "xml", new Written("program.xml", "xml: program.xml (offline-programming XML)"),
+            "rapid", new Written("program.mod", "rapid: program.mod (ABB RAPID)"),
+            "krl", new Written("program.src", "krl: program.src (KUKA KRL)"),
+            "png", new Written("joints.png", "png: joints.png and error.png (charts)"));
+
     static String describe(String format) {
-        return switch (format) {
-            case "csv" -> "csv: trajectory.csv (joint values per point)";
-            case "xml" -> "xml: program.xml (offline-programming XML)";
-            case "rapid" -> "rapid: program.mod (ABB RAPID)";
-            case "krl" -> "krl: program.src (KUKA KRL)";
-            case "png" -> "png: joints.png and error.png (charts)";
-            default -> format;
-        };
+        Written w = WRITTEN.get(format);
+        return w == null ? format : w.description();
     }
 
     /** The file a format's preview shows. */
     static String fileOf(String format) {
-        return switch (format) {
-            case "csv" -> "trajectory.csv";
-            case "xml" -> "program.xml";
-            case "rapid" -> "program.mod";
-            case "krl" -> "program.src";
-            case "png" -> "joints.png";
-            default -> throw new IllegalArgumentException(format);
-        };
+        Written w = WRITTEN.get(format);
+        if (w == null) {
+            throw new IllegalArgumentException(format);
+        }
+        return w.previewFile();
     }
 
     boolean isChecked(String f) {

@@ -7,6 +7,7 @@ import java.awt.GridLayout;
 import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.Optional;
 import javax.swing.BorderFactory;
 import javax.swing.Box;
 import javax.swing.BoxLayout;
@@ -605,20 +606,31 @@ final class PositionTab implements ModuleTab {
         }
     }
 
-    /** Starts the computation in the background (also used by the GUI test). */
-    void compute() {
+    /**
+     * The job's STEP-NC settings, for a computation of the cell ({@code title}) once the placement
+     * fields are in the job; empty when a field is wrong (marked) or no STEP-NC file is open (said).
+     * The cell is only previewed: the fields change the job's placements, never what the job runs.
+     */
+    private Optional<JobSettings.StepNcSettings> stepNcPlacedByFields(String title) {
         if (!validateFields()) {
-            return;
+            return Optional.empty();
         }
         var stepnc = ctx.model().job().stepnc();
         if (stepnc.isEmpty()) {
-            Dialogs.error(ctx.owner(), "Compute", "No STEP-NC file: open one in the STEP-NC tab first.");
+            Dialogs.error(ctx.owner(), title, "No STEP-NC file: open one in the STEP-NC tab first.");
+            return Optional.empty();
+        }
+        ctx.model().setJob(vm.applyTo(ctx.model().job()));
+        return stepnc;
+    }
+
+    /** Starts the computation in the background (also used by the GUI test). */
+    void compute() {
+        var stepnc = stepNcPlacedByFields("Compute");
+        if (stepnc.isEmpty()) {
             return;
         }
         Path file = stepnc.get().file();
-        org.fresa.toolpath.PlanningChoices choices = stepnc.get().choices();
-        // Compute previews the cell: it changes the job's placements only, never what the job runs
-        ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
         java.util.List<String> formats = r.formats();
@@ -670,16 +682,11 @@ final class PositionTab implements ModuleTab {
      * the job's placement fields; says which workingsteps are out of reach when there is none.
      */
     void placeAutomatically() {
-        if (!validateFields()) {
-            return;
-        }
-        var stepnc = ctx.model().job().stepnc();
+        var stepnc = stepNcPlacedByFields("Place automatically");
         if (stepnc.isEmpty()) {
-            Dialogs.error(ctx.owner(), "Place automatically", "No STEP-NC file: open one in the STEP-NC tab first.");
             return;
         }
         Path file = stepnc.get().file();
-        ctx.model().setJob(vm.applyTo(ctx.model().job()));
         JobSettings.RobotSettings r = ctx.model().job().robot().orElseThrow();
         int generation = ctx.model().generation();
         ctx.tasks()

@@ -11,6 +11,7 @@ import java.awt.event.KeyEvent;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.ExecutionException;
 import javax.swing.BorderFactory;
 import javax.swing.DefaultCellEditor;
@@ -350,19 +351,29 @@ final class RobotTab implements ModuleTab {
     }
 
     private void saveFile() {
+        chosenFileForRobot("Save robot", FileChoosers.Kind.ROBOT, ".xml")
+                .ifPresent(f -> saveAs(
+                        f.getFileName().toString().contains(".") ? f : f.resolveSibling(f.getFileName() + ".xml")));
+    }
+
+    /**
+     * The file the planner chooses to write the edited robot into, offered under the robot's name
+     * with {@code suffix}; empty when the table has an error (said under {@code title}: nothing is
+     * written from a wrong table) or when the planner cancels.
+     */
+    private Optional<Path> chosenFileForRobot(String title, FileChoosers.Kind kind, String suffix) {
         if (vm.edited().isEmpty()) {
             Dialogs.error(
                     ctx.owner(),
-                    "Save robot",
+                    title,
                     "Correct the table first: " + vm.messages().get(0));
-            return;
+            return Optional.empty();
         }
-        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.ROBOT);
-        fc.setSelectedFile(new java.io.File(vm.parameter(0) + ".xml"));
-        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            Path f = FileChoosers.chosen(fc);
-            saveAs(f.getFileName().toString().contains(".") ? f : f.resolveSibling(f.getFileName() + ".xml"));
-        }
+        JFileChooser fc = FileChoosers.chooser(kind);
+        fc.setSelectedFile(new java.io.File(vm.parameter(0) + suffix));
+        return fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION
+                ? Optional.of(FileChoosers.chosen(fc))
+                : Optional.empty();
     }
 
     /** Writes the edited robot into a file and makes the job name it (also used by the GUI test). */
@@ -378,18 +389,8 @@ final class RobotTab implements ModuleTab {
     }
 
     private void exportSymbolic() {
-        if (vm.edited().isEmpty()) {
-            Dialogs.error(
-                    ctx.owner(),
-                    "Export symbolic FK",
-                    "Correct the table first: " + vm.messages().get(0));
-            return;
-        }
-        JFileChooser fc = FileChoosers.chooser(FileChoosers.Kind.TEXT);
-        fc.setSelectedFile(new java.io.File(vm.parameter(0) + "-fk.txt"));
-        if (fc.showSaveDialog(ctx.owner()) == JFileChooser.APPROVE_OPTION) {
-            exportSymbolicTo(FileChoosers.chosen(fc));
-        }
+        chosenFileForRobot("Export symbolic FK", FileChoosers.Kind.TEXT, "-fk.txt")
+                .ifPresent(this::exportSymbolicTo);
     }
 
     /** Writes the symbolic FK and Jacobian of the table's robot into a text file, in the background. */

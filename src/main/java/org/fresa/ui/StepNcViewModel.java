@@ -824,11 +824,7 @@ final class StepNcViewModel {
                     .times(c.distanceMm().orElse(0));
             List<Vec3> corners = List.of(p0, p0.plus(a), p0.plus(a).plus(b), p0.plus(b), p0);
             for (int i = 0; i + 1 < corners.size(); i++) {
-                Vec2 u = drop.project(frame.applyToPoint(corners.get(i)));
-                Vec2 w = drop.project(frame.applyToPoint(corners.get(i + 1)));
-                if (u.distance(w) > 0) {
-                    out.add(Segment2.of(u, w));
-                }
+                addSeen(out, corners.get(i), corners.get(i + 1), frame, drop);
             }
             return out;
         }
@@ -854,22 +850,26 @@ final class StepNcViewModel {
             }
         } else if (p instanceof Profile.General g) {
             for (Profile.Segment s : g.segments()) {
-                Vec2 a = drop.project(t.applyToPoint(s.start()));
-                Vec2 b = drop.project(t.applyToPoint(s.end()));
-                if (a.distance(b) > 0) {
-                    out.add(Segment2.of(a, b));
-                }
+                addSeen(out, s.start(), s.end(), t, drop);
             }
             return out;
         }
         for (int i = 0; i + 1 < local.size(); i++) {
-            Vec2 a = drop.project(t.applyToPoint(local.get(i)));
-            Vec2 b = drop.project(t.applyToPoint(local.get(i + 1)));
-            if (a.distance(b) > 0) {
-                out.add(Segment2.of(a, b));
-            }
+            addSeen(out, local.get(i), local.get(i + 1), t, drop);
         }
         return out;
+    }
+
+    /**
+     * The straight edge from {@code a} to {@code b}, placed by {@code t} and seen along the dropped
+     * axis; an edge that runs along that axis is seen as a point and drawn as nothing.
+     */
+    private static void addSeen(List<Curve2> out, Vec3 a, Vec3 b, Transform3 t, ViewPlane drop) {
+        Vec2 u = drop.project(t.applyToPoint(a));
+        Vec2 w = drop.project(t.applyToPoint(b));
+        if (u.distance(w) > 0) {
+            out.add(Segment2.of(u, w));
+        }
     }
 
     /**

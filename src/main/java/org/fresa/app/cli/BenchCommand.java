@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /** {@code fresa bench [--json]}: short versions of the performance benchmarks. */
-@Command(name = "bench", mixinStandardHelpOptions = true, description = "Run short benchmarks and print the figures.")
+@Command(name = "bench", description = "Run short benchmarks and print the figures.")
 final class BenchCommand extends CliCommand {
 
     @Option(names = "--json", description = "print the figures as one JSON object")

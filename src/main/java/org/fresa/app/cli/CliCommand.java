@@ -2,13 +2,17 @@ package org.fresa.app.cli;
 
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
  * A command of the {@code fresa} command line: it writes to the streams picocli was given (the
  * shell's, or a test's) and runs its work with the rules every command shares ({@link CliSupport#run}).
+ * Every command answers {@code --help} and {@code --version}: picocli gives a command the attributes
+ * of its superclass's {@code @Command}.
  */
+@Command(mixinStandardHelpOptions = true)
 abstract class CliCommand implements Callable<Integer> {
 
     @Spec

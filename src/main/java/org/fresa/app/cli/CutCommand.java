@@ -17,7 +17,6 @@ import picocli.CommandLine.Parameters;
 /** {@code fresa cut DRAWING.dxf --out FILE [cutting options] [--post NAME] [--json]}. */
 @Command(
         name = "cut",
-        mixinStandardHelpOptions = true,
         sortOptions = false,
         description = "Sheet cutting path (plasma, laser, waterjet) from a DXF drawing.")
 final class CutCommand extends CliCommand {

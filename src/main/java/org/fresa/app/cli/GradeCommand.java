@@ -18,11 +18,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa grade OUTLINE --out DIR [grading options] [--json]}. */
-@Command(
-        name = "grade",
-        mixinStandardHelpOptions = true,
-        sortOptions = false,
-        description = "A sole outline graded over a range of shoe sizes.")
+@Command(name = "grade", sortOptions = false, description = "A sole outline graded over a range of shoe sizes.")
 final class GradeCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "OUTLINE", description = "outline (.dxf or Fresa contour file)")

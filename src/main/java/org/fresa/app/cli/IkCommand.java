@@ -18,7 +18,6 @@ import picocli.CommandLine.Parameters;
 /** {@code fresa ik TARGETS.csv --robot NAME|FILE --out DIR [ik options]}. */
 @Command(
         name = "ik",
-        mixinStandardHelpOptions = true,
         description = "Inverse kinematics of any list of tool poses (x,y,z,roll,pitch,yaw[,q1..qN] per row).")
 final class IkCommand extends FolderCommand {
 

@@ -20,7 +20,6 @@ import picocli.CommandLine.Parameters;
  */
 @Command(
         name = "pocket",
-        mixinStandardHelpOptions = true,
         sortOptions = false,
         description = "Pocket milling of one closed contour of lines and arcs, from the inside out.")
 final class PocketCommand extends CliCommand {

@@ -10,7 +10,7 @@ import org.fresa.post.NcPosts;
 import picocli.CommandLine.Command;
 
 /** {@code fresa posts}: the post-processors. */
-@Command(name = "posts", mixinStandardHelpOptions = true, description = "List the post-processors.")
+@Command(name = "posts", description = "List the post-processors.")
 final class PostsCommand extends ListingCommand {
 
     @Override

@@ -18,10 +18,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa robot FILE --robot NAME|FILE --out DIR [placement] [--formats LIST]}. */
-@Command(
-        name = "robot",
-        mixinStandardHelpOptions = true,
-        description = "Toolpaths of a STEP-NC file turned into a robot joint trajectory.")
+@Command(name = "robot", description = "Toolpaths of a STEP-NC file turned into a robot joint trajectory.")
 final class RobotCommand extends FolderCommand {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file")

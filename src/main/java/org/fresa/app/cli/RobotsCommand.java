@@ -8,10 +8,7 @@ import org.fresa.cell.RobotFiles;
 import picocli.CommandLine.Command;
 
 /** {@code fresa robots}: the built-in robots and their parameters. */
-@Command(
-        name = "robots",
-        mixinStandardHelpOptions = true,
-        description = "List the built-in robots and their parameters.")
+@Command(name = "robots", description = "List the built-in robots and their parameters.")
 final class RobotsCommand extends ListingCommand {
 
     @Override

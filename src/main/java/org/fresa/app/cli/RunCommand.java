@@ -1,20 +1,21 @@
 package org.fresa.app.cli;
 
+import java.io.IOException;
 import java.nio.file.Path;
 import org.fresa.io.OutputFolder;
 import org.fresa.job.Job;
 import org.fresa.job.JobRunner;
 import org.fresa.job.JobXml;
+import org.fresa.job.ProgressMonitor;
+import org.fresa.job.TaskOutcome;
+import org.fresa.model.CamInputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa run JOB --out DIR}: a saved job, headless. */
-@Command(
-        name = "run",
-        mixinStandardHelpOptions = true,
-        description = "Run a saved job file (the same file the desktop application saves) headless.")
-final class RunCommand extends CliCommand {
+@Command(name = "run", description = "Run a saved job file (the same file the desktop application saves) headless.")
+final class RunCommand extends SummaryCommand {
 
     @Parameters(index = "0", paramLabel = "JOB", description = "job file (.xml, schemas/job.xsd)")
     Path job;
@@ -22,15 +23,10 @@ final class RunCommand extends CliCommand {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "output folder (created if needed)")
     Path out;
 
-    @Option(names = "--json", description = "print a JSON summary on stdout")
-    boolean json;
-
     @Override
-    public Integer call() {
-        return run(json, progress -> {
-            OutputFolder folder = OutputFolder.of(out, "--out");
-            Job j = JobXml.read(job);
-            return JobRunner.run(j, folder, progress);
-        });
+    TaskOutcome work(ProgressMonitor progress) throws CamInputException, IOException {
+        OutputFolder folder = OutputFolder.of(out, "--out");
+        Job j = JobXml.read(job);
+        return JobRunner.run(j, folder, progress);
     }
 }

@@ -9,10 +9,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa sole JOB --out DIR}. */
-@Command(
-        name = "sole",
-        mixinStandardHelpOptions = true,
-        description = "Sole mould programs: cavity, tread figures, graded sizes, both feet.")
+@Command(name = "sole", description = "Sole mould programs: cavity, tread figures, graded sizes, both feet.")
 final class SoleCommand extends FolderCommand {
 
     @Parameters(index = "0", paramLabel = "JOB", description = "sole job file")

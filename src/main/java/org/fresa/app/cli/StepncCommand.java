@@ -9,10 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code fresa stepnc FILE [--json]}: describe an ISO 14649 Part 21 file. */
-@Command(
-        name = "stepnc",
-        mixinStandardHelpOptions = true,
-        description = "Read an ISO 14649 (STEP-NC) Part 21 file and describe it.")
+@Command(name = "stepnc", description = "Read an ISO 14649 (STEP-NC) Part 21 file and describe it.")
 final class StepncCommand extends CliCommand {
 
     @Parameters(index = "0", paramLabel = "FILE", description = "Part 21 file (.stp, .p21)")

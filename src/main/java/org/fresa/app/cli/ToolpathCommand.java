@@ -17,7 +17,6 @@ import picocli.CommandLine.Parameters;
 /** {@code fresa toolpath FILE --out DIR [--post NAME]}. */
 @Command(
         name = "toolpath",
-        mixinStandardHelpOptions = true,
         description = "Toolpaths of every workingstep of a STEP-NC file, in workplan order, with G-code.")
 final class ToolpathCommand extends FolderCommand {
 
