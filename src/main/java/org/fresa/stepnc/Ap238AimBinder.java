@@ -1005,6 +1005,8 @@ final class Ap238AimBinder {
                 bottom,
                 planar,
                 orthogonal,
+                List.of(),
+                List.of(),
                 List.of());
         features.put(id, out);
         return out;

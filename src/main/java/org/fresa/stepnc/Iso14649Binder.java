@@ -701,6 +701,8 @@ final class Iso14649Binder {
                     Optional.empty(),
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
+                    List.of(),
+                    List.of(),
                     List.of());
         } else {
             E f = k.get();
@@ -1049,7 +1051,8 @@ final class Iso14649Binder {
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
-                    Optional.empty());
+                    Optional.empty(),
+                    List.of());
         }
         E o = k.get();
         if (!o.def.isA("MACHINING_OPERATION")) {
@@ -1097,7 +1100,8 @@ final class Iso14649Binder {
                 num(o, "allowance_bottom"),
                 num(o, "cutting_depth"),
                 num(o, "overcut_length"),
-                o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty());
+                o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty(),
+                List.of());
     }
 
     // ISO 14649-11 drilling_type_operation, multistep_drilling, boring_operation
