@@ -150,23 +150,8 @@ public final class RobotFiles {
     }
 
     private static TriceptRobot tricept(String name, String description, TriceptType t) {
-        List<JointLimit> legs = new ArrayList<>();
-        List<JointLimit> wrist = new ArrayList<>();
-        int i = 1;
-        for (LimitType l : t.getLeg()) {
-            legs.add(new JointLimit(
-                    "q" + i++,
-                    org.fresa.kin.JointType.PRISMATIC,
-                    RobotFile.limit("min", false).require(l.getMin()),
-                    RobotFile.limit("max", false).require(l.getMax())));
-        }
-        for (LimitType l : t.getWrist()) {
-            wrist.add(new JointLimit(
-                    "q" + i++,
-                    org.fresa.kin.JointType.REVOLUTE,
-                    RobotFile.limit("min", true).require(l.getMin()),
-                    RobotFile.limit("max", true).require(l.getMax())));
-        }
+        List<JointLimit> legs = joints(t.getLeg(), 1, org.fresa.kin.JointType.PRISMATIC);
+        List<JointLimit> wrist = joints(t.getWrist(), 1 + legs.size(), org.fresa.kin.JointType.REVOLUTE);
         return new TriceptRobot(
                 name,
                 description,
@@ -176,6 +161,20 @@ public final class RobotFiles {
                 RobotFile.EFFECTOR_LENGTH.require(t.getEffectorLength()),
                 legs,
                 wrist);
+    }
+
+    /** Joints of one type named q{@code first}, q{@code first + 1}, ... with the limits the file gives them. */
+    private static List<JointLimit> joints(List<LimitType> limits, int first, org.fresa.kin.JointType type) {
+        boolean revolute = type == org.fresa.kin.JointType.REVOLUTE;
+        List<JointLimit> joints = new ArrayList<>();
+        for (LimitType l : limits) {
+            joints.add(new JointLimit(
+                    "q" + (first + joints.size()),
+                    type,
+                    RobotFile.limit("min", revolute).require(l.getMin()),
+                    RobotFile.limit("max", revolute).require(l.getMax())));
+        }
+        return joints;
     }
 
     /**

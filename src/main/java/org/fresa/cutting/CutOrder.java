@@ -3,6 +3,7 @@ package org.fresa.cutting;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import org.fresa.geom.Box2;
 import org.fresa.geom.Vec2;
 
 /**
@@ -320,24 +321,12 @@ final class CutOrder {
 
         PointGrid(Vec2[] pts) {
             this.pts = pts;
-            double x0 = Double.POSITIVE_INFINITY;
-            double y0 = Double.POSITIVE_INFINITY;
-            double x1 = Double.NEGATIVE_INFINITY;
-            double y1 = Double.NEGATIVE_INFINITY;
-            for (Vec2 p : pts) {
-                x0 = Math.min(x0, p.x());
-                y0 = Math.min(y0, p.y());
-                x1 = Math.max(x1, p.x());
-                y1 = Math.max(y1, p.y());
-            }
-            if (pts.length == 0) {
-                x0 = y0 = x1 = y1 = 0;
-            }
-            double w = Math.max(x1 - x0, 1e-6);
-            double h = Math.max(y1 - y0, 1e-6);
+            Box2 box = pts.length == 0 ? new Box2(0, 0, 0, 0) : Box2.around(Arrays.asList(pts));
+            double w = Math.max(box.maxX() - box.minX(), 1e-6);
+            double h = Math.max(box.maxY() - box.minY(), 1e-6);
             this.cell = Math.max(Math.sqrt(w * h / Math.max(1, pts.length)) * 1.5, Math.max(w, h) / 4096);
-            this.minX = x0;
-            this.minY = y0;
+            this.minX = box.minX();
+            this.minY = box.minY();
             this.cols = (int) Math.min(1 << 20, Math.floor(w / cell) + 1);
             this.rows = (int) Math.min(1 << 20, Math.floor(h / cell) + 1);
             this.cells = new int[Math.toIntExact((long) cols * rows)][];

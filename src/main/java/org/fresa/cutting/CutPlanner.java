@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
@@ -250,7 +251,8 @@ public final class CutPlanner {
                                 half,
                                 grid,
                                 warnings,
-                                scrapLeft ? 41 : 42);
+                                scrapLeft ? 41 : 42,
+                                Optional.empty());
                 if (cp != null && (!cp.leadIn().isEmpty() || half == 0)) {
                     n.cuts.add(cp);
                     continue;
@@ -285,7 +287,8 @@ public final class CutPlanner {
             }
             for (int k = 0; k < same.size(); k++) {
                 String l = same.size() > 1 ? label + "." + (k + 1) : label;
-                n.cuts.add(withLeads(l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0));
+                n.cuts.add(withLeads(
+                        l, outer, n.contour, same.get(k), scrapLeft, o, half, grid, warnings, 0, Optional.empty()));
             }
         }
         List<Asked> asked = resolve(override, nodes, warnings);
@@ -548,20 +551,6 @@ public final class CutPlanner {
         return false;
     }
 
-    private static CutPath withLeads(
-            String label,
-            boolean outer,
-            Contour part,
-            Contour path,
-            boolean scrapLeft,
-            CuttingOptions o,
-            double half,
-            CurveGrid grid,
-            List<String> warnings,
-            int comp) {
-        return withLeads(label, outer, part, path, scrapLeft, o, half, grid, warnings, comp, null);
-    }
-
     /**
      * The cut with its leads at the first candidate (curve index, fraction) where they fit; with
      * {@code forced} candidates, null when no lead fits at any of them.
@@ -577,11 +566,11 @@ public final class CutPlanner {
             CurveGrid grid,
             List<String> warnings,
             int comp,
-            List<double[]> forced) {
+            Optional<List<double[]>> forced) {
         double leadIn = comp != 0 ? Math.max(o.leadInMm(), half * 1.5 + 0.1) : o.leadInMm();
         boolean arcs = o.arcLeads() && comp == 0;
         double clearance = Math.max(0, half - 1e-6);
-        List<double[]> candidates = forced != null ? forced : candidates(path);
+        List<double[]> candidates = forced.orElseGet(() -> candidates(path));
         for (double[] cand : candidates) {
             for (double scale : new double[] {1, 0.5, 0.25}) {
                 double len = leadIn * scale;
@@ -609,7 +598,7 @@ public final class CutPlanner {
                 return SharedPoints.of(new CutPath(label, outer, part, started, in, tail, comp));
             }
         }
-        if (forced != null && (leadIn > 0 || comp != 0)) {
+        if (forced.isPresent() && (leadIn > 0 || comp != 0)) {
             return null;
         }
         Contour started = startAt(path, (int) candidates.get(0)[0], candidates.get(0)[1]);
@@ -1153,7 +1142,7 @@ public final class CutPlanner {
                 grid,
                 warnings,
                 c.compensation(),
-                List.<double[]>of(cand));
+                Optional.of(List.<double[]>of(cand)));
     }
 
     /**

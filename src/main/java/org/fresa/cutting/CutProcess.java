@@ -2,6 +2,7 @@ package org.fresa.cutting;
 
 import java.util.Locale;
 import java.util.Optional;
+import org.fresa.model.EnumWords;
 
 /**
  * A thermal or abrasive jet process with its defaults: cutting feed (mm/min), pierce dwell (s)
@@ -53,11 +54,6 @@ public enum CutProcess {
     }
 
     public static Optional<CutProcess> ofId(String id) {
-        for (CutProcess p : values()) {
-            if (p.id().equalsIgnoreCase(id)) {
-                return Optional.of(p);
-            }
-        }
-        return Optional.empty();
+        return EnumWords.parseIgnoringCase(CutProcess.class, CutProcess::id, id);
     }
 }

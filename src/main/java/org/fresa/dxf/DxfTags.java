@@ -354,7 +354,8 @@ final class DxfTags {
                     }
                 }
                 String value;
-                switch (type(code)) {
+                char type = type(code);
+                switch (type) {
                     case 's' -> {
                         int z = pos;
                         while (z < data.length && data[z] != 0) {
@@ -367,30 +368,25 @@ final class DxfTags {
                         value = new String(data, pos, z - pos, StandardCharsets.UTF_8);
                         pos = z + 1;
                     }
-                    case 'd' -> {
-                        value = Double.toString(b.getDouble(pos));
-                        pos += 8;
-                    }
-                    case 'h' -> {
-                        value = Integer.toString(b.getShort(pos));
-                        pos += 2;
-                    }
-                    case 'i' -> {
-                        value = Integer.toString(b.getInt(pos));
-                        pos += 4;
-                    }
-                    case 'l' -> {
-                        value = Long.toString(b.getLong(pos));
-                        pos += 8;
-                    }
-                    case 'b' -> {
-                        value = Integer.toString(data[pos] & 0xFF);
-                        pos += 1;
-                    }
-                    default -> { // binary chunk: a length byte and the bytes
+                    case 'x' -> { // binary chunk: a length byte and the bytes
                         int len = data[pos] & 0xFF;
                         pos += 1 + len;
                         value = "";
+                    }
+                    default -> { // a number of the type's fixed width, little-endian
+                        value = switch (type) {
+                            case 'd' -> Double.toString(b.getDouble(pos));
+                            case 'h' -> Integer.toString(b.getShort(pos));
+                            case 'i' -> Integer.toString(b.getInt(pos));
+                            case 'l' -> Long.toString(b.getLong(pos));
+                            default -> Integer.toString(data[pos] & 0xFF);
+                        };
+                        pos += switch (type) {
+                            case 'd', 'l' -> 8;
+                            case 'i' -> 4;
+                            case 'h' -> 2;
+                            default -> 1;
+                        };
                     }
                 }
                 t.add(code, value, at);
@@ -405,88 +401,39 @@ final class DxfTags {
         return t;
     }
 
+    /**
+     * The group codes whose binary value is not a string, as the DXF reference lists them: the
+     * first code, the last code and the type (d double, h int16, i int32, l int64, b byte, x
+     * chunk). Every other code holds a string.
+     */
+    private static final int[][] NON_STRING_CODES = {
+        {10, 59, 'd'},
+        {60, 79, 'h'},
+        {90, 99, 'i'},
+        {110, 149, 'd'},
+        {160, 169, 'l'},
+        {170, 179, 'h'},
+        {210, 239, 'd'},
+        {270, 289, 'h'},
+        {290, 299, 'b'},
+        {310, 319, 'x'},
+        {370, 389, 'h'},
+        {400, 409, 'h'},
+        {420, 429, 'i'},
+        {440, 459, 'i'},
+        {460, 469, 'd'},
+        {1004, 1004, 'x'},
+        {1010, 1059, 'd'},
+        {1060, 1070, 'h'},
+        {1071, 1071, 'i'},
+    };
+
     /** The binary value type of a group code: s string, d double, h int16, i int32, l int64, b byte, x chunk. */
     private static char type(int c) {
-        if (c <= 9) {
-            return 's';
-        }
-        if (c <= 59) {
-            return 'd';
-        }
-        if (c <= 79) {
-            return 'h';
-        }
-        if (c >= 90 && c <= 99) {
-            return 'i';
-        }
-        if (c >= 100 && c <= 109) {
-            return 's';
-        }
-        if (c >= 110 && c <= 149) {
-            return 'd';
-        }
-        if (c >= 160 && c <= 169) {
-            return 'l';
-        }
-        if (c >= 170 && c <= 179) {
-            return 'h';
-        }
-        if (c >= 210 && c <= 239) {
-            return 'd';
-        }
-        if (c >= 270 && c <= 289) {
-            return 'h';
-        }
-        if (c >= 290 && c <= 299) {
-            return 'b';
-        }
-        if (c >= 300 && c <= 309) {
-            return 's';
-        }
-        if (c >= 310 && c <= 319) {
-            return 'x';
-        }
-        if (c >= 320 && c <= 369) {
-            return 's';
-        }
-        if (c >= 370 && c <= 389) {
-            return 'h';
-        }
-        if (c >= 390 && c <= 399) {
-            return 's';
-        }
-        if (c >= 400 && c <= 409) {
-            return 'h';
-        }
-        if (c >= 410 && c <= 419) {
-            return 's';
-        }
-        if (c >= 420 && c <= 429) {
-            return 'i';
-        }
-        if (c >= 430 && c <= 439) {
-            return 's';
-        }
-        if (c >= 440 && c <= 459) {
-            return 'i';
-        }
-        if (c >= 460 && c <= 469) {
-            return 'd';
-        }
-        if (c >= 470 && c <= 481) {
-            return 's';
-        }
-        if (c == 1004) {
-            return 'x';
-        }
-        if (c >= 1010 && c <= 1059) {
-            return 'd';
-        }
-        if (c >= 1060 && c <= 1070) {
-            return 'h';
-        }
-        if (c == 1071) {
-            return 'i';
+        for (int[] range : NON_STRING_CODES) {
+            if (c >= range[0] && c <= range[1]) {
+                return (char) range[2];
+            }
         }
         return 's';
     }

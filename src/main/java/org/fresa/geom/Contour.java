@@ -3,6 +3,7 @@ package org.fresa.geom;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.function.ToDoubleFunction;
 
 /**
  * A closed chain of lines and arcs: each curve ends where the next starts, and the last ends
@@ -62,11 +63,7 @@ public record Contour(List<Curve2> curves) {
 
     /** The enclosed area in mm^2, positive for a counter-clockwise contour. */
     public double signedArea() {
-        double a = 0;
-        for (Curve2 c : curves) {
-            a += c.areaContribution();
-        }
-        return a;
+        return sumOverCurves(Curve2::areaContribution);
     }
 
     public double area() {
@@ -92,11 +89,16 @@ public record Contour(List<Curve2> curves) {
     }
 
     public double length() {
-        double l = 0;
+        return sumOverCurves(Curve2::length);
+    }
+
+    /** A quantity summed over the curves in the order of travel. */
+    private double sumOverCurves(ToDoubleFunction<Curve2> quantity) {
+        double sum = 0;
         for (Curve2 c : curves) {
-            l += c.length();
+            sum += quantity.applyAsDouble(c);
         }
-        return l;
+        return sum;
     }
 
     public Box2 bounds() {

@@ -34,6 +34,17 @@ public final class EnumWords {
         return Optional.empty();
     }
 
+    /** The constant whose word is the text in any case ({@link String#equalsIgnoreCase}), or empty. */
+    public static <E extends Enum<E>> Optional<E> parseIgnoringCase(
+            Class<E> type, Function<E, String> word, String text) {
+        for (E e : type.getEnumConstants()) {
+            if (word.apply(e).equalsIgnoreCase(text)) {
+                return Optional.of(e);
+            }
+        }
+        return Optional.empty();
+    }
+
     /** The words of every constant, in the order declared (the default first). */
     public static <E extends Enum<E>> List<String> all(Class<E> type, Function<E, String> word) {
         return Arrays.stream(type.getEnumConstants()).map(word).toList();

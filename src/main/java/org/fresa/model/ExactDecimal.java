@@ -56,13 +56,16 @@ public final class ExactDecimal {
     record Shortest(long digits, int exponent) {}
 
     private static final long HIDDEN = 0x0010_0000_0000_0000L;
-    private static final long[] POW10 = new long[19];
+    private static final long[] POW10 = powers(10, 19);
 
-    static {
-        POW10[0] = 1;
-        for (int i = 1; i < POW10.length; i++) {
-            POW10[i] = POW10[i - 1] * 10;
+    /** base^0 .. base^(count - 1), each exact in a long. */
+    private static long[] powers(long base, int count) {
+        long[] p = new long[count];
+        p[0] = 1;
+        for (int i = 1; i < count; i++) {
+            p[i] = p[i - 1] * base;
         }
+        return p;
     }
 
     /** The fewest digits that read back as mag (finite, > 0). */
@@ -222,14 +225,7 @@ public final class ExactDecimal {
     /** 5^13, the largest power of five below 2^31. */
     private static final long POW5_13 = 1_220_703_125L;
 
-    private static final long[] POW5 = new long[14];
-
-    static {
-        POW5[0] = 1;
-        for (int i = 1; i < POW5.length; i++) {
-            POW5[i] = POW5[i - 1] * 5;
-        }
-    }
+    private static final long[] POW5 = powers(5, 14);
 
     static int[] of(long v) {
         int lo = (int) v;

@@ -1,6 +1,7 @@
 package org.fresa.post;
 
 import java.util.Optional;
+import org.fresa.model.EnumWords;
 
 /**
  * The sheet-cutting posts of {@link SheetCuttingPost} as a setting: the {@link Dialect}s a cutting
@@ -36,11 +37,6 @@ public enum CuttingPost {
 
     /** The post of a name, ignoring case. */
     public static Optional<CuttingPost> byName(String name) {
-        for (CuttingPost p : values()) {
-            if (p.id().equalsIgnoreCase(name)) {
-                return Optional.of(p);
-            }
-        }
-        return Optional.empty();
+        return EnumWords.parseIgnoringCase(CuttingPost.class, CuttingPost::id, name);
     }
 }

@@ -2,6 +2,7 @@ package org.fresa.post;
 
 import java.util.Locale;
 import java.util.Optional;
+import org.fresa.model.EnumWords;
 
 /**
  * The NC dialects Fresa writes, with the words each control reads the same whatever the process
@@ -64,13 +65,7 @@ public enum Dialect {
 
     /** The dialect of a name, ignoring case and surrounding blanks. */
     public static Optional<Dialect> byName(String name) {
-        String n = name.trim().toLowerCase(Locale.ROOT);
-        for (Dialect d : values()) {
-            if (d.id.equals(n)) {
-                return Optional.of(d);
-            }
-        }
-        return Optional.empty();
+        return EnumWords.parse(Dialect.class, Dialect::id, name.trim().toLowerCase(Locale.ROOT));
     }
 
     /** Whether blocks carry N numbers. */

@@ -28,7 +28,7 @@ public final class KrlWriter extends RobotLanguageWriter {
     public static final double SPINDLE_FULL_SCALE_RPM = 100_000;
 
     public KrlWriter(RapidWriter.ArmGeometry arm) {
-        super("krl", "program.src", arm);
+        super("krl", "src", arm);
     }
 
     @Override

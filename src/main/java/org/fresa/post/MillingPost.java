@@ -1,12 +1,14 @@
 package org.fresa.post;
 
 import java.util.Locale;
+import org.fresa.model.EnumWords;
+import org.fresa.model.WordedEnum;
 
 /**
  * The machine-tool posts of {@link NcPosts} as a setting: {@code linuxcnc} (the default),
  * {@code iso}, {@code fanuc}, {@code 840d}, and the APT / CL-data post {@code apt}.
  */
-public enum MillingPost {
+public enum MillingPost implements WordedEnum {
     LINUXCNC("linuxcnc"),
     ISO("iso"),
     FANUC("fanuc"),
@@ -19,7 +21,8 @@ public enum MillingPost {
         this.word = word;
     }
 
-    /** The name as the command line and job files write it. */
+    /** The name as the command line and job files write it: the post's own, not the constant's. */
+    @Override
     public String word() {
         return word;
     }
@@ -31,13 +34,7 @@ public enum MillingPost {
 
     /** The post of a registered name (ignoring case), for callers that hold a name. */
     public static java.util.Optional<MillingPost> of(String name) {
-        String n = name.trim().toLowerCase(Locale.ROOT);
-        for (MillingPost p : values()) {
-            if (p.word.equals(n)) {
-                return java.util.Optional.of(p);
-            }
-        }
-        return java.util.Optional.empty();
+        return EnumWords.parse(MillingPost.class, MillingPost::word, name.trim().toLowerCase(Locale.ROOT));
     }
 
     @Override

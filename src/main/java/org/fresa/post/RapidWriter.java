@@ -36,7 +36,7 @@ public final class RapidWriter extends RobotLanguageWriter {
      * @param arm how to tell rear and lower-arm configurations from the joints of this robot
      */
     public RapidWriter(ArmGeometry arm) {
-        super("rapid", "program.mod", arm);
+        super("rapid", "mod", arm);
     }
 
     /** What cfx needs to know of the arm, from its kinematics. */

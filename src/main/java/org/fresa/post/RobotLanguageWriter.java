@@ -9,14 +9,18 @@ package org.fresa.post;
 abstract class RobotLanguageWriter implements RobotProgramWriter {
 
     private final String format;
-    private final String fileName;
+    private final String extension;
 
     /** How to tell the arm's configurations (rear, lower arm) from the joints of this robot. */
     final RapidWriter.ArmGeometry arm;
 
-    RobotLanguageWriter(String format, String fileName, RapidWriter.ArmGeometry arm) {
+    /**
+     * @param format the language's name for {@code --formats}
+     * @param extension the extension its controller reads a program under ({@code mod}, {@code src})
+     */
+    RobotLanguageWriter(String format, String extension, RapidWriter.ArmGeometry arm) {
         this.format = format;
-        this.fileName = fileName;
+        this.extension = extension;
         this.arm = arm;
     }
 
@@ -25,9 +29,10 @@ abstract class RobotLanguageWriter implements RobotProgramWriter {
         return format;
     }
 
+    /** Every language's program goes to {@code program.}<i>extension</i>, beside {@code program.xml}. */
     @Override
     public final String fileName() {
-        return fileName;
+        return "program." + extension;
     }
 
     /**

@@ -22,17 +22,22 @@ public record RobotProgram(
         Objects.requireNonNull(programName, "programName");
         Objects.requireNonNull(robotName, "robotName");
         joints = List.copyOf(joints);
-        motions = List.copyOf(motions);
         tools = List.copyOf(tools);
         if (tools.isEmpty()) {
             throw new IllegalArgumentException("a robot program needs a tool frame");
         }
+        motions = oneValuePerJoint(List.copyOf(motions), joints.size());
+    }
+
+    /** The motions, once each is seen to give a value for every joint of the robot. */
+    private static List<Motion> oneValuePerJoint(List<Motion> motions, int joints) {
         for (Motion m : motions) {
-            if (m.jointValues().size() != joints.size()) {
+            if (m.jointValues().size() != joints) {
                 throw new IllegalArgumentException("motion " + m.index() + " has "
-                        + m.jointValues().size() + " joint values for " + joints.size() + " joints");
+                        + m.jointValues().size() + " joint values for " + joints + " joints");
             }
         }
+        return motions;
     }
 
     /** A program whose every motion uses the flange as its TCP (tool 1, the identity). */
@@ -70,17 +75,15 @@ public record RobotProgram(
 
     /** Revolute joints move in degrees, prismatic ones in millimetres. */
     public enum JointType {
-        REVOLUTE("deg"),
-        PRISMATIC("mm");
+        REVOLUTE,
+        PRISMATIC;
 
-        private final String unit;
-
-        JointType(String unit) {
-            this.unit = unit;
-        }
-
+        /** The unit of the joint's values and limits. */
         public String unit() {
-            return unit;
+            return switch (this) {
+                case REVOLUTE -> "deg";
+                case PRISMATIC -> "mm";
+            };
         }
     }
 

@@ -72,13 +72,7 @@ public final class RobotPrograms {
             List<Double> dwellAfterTarget) {
         List<RobotProgram.Joint> joints = new ArrayList<>();
         for (JointLimit j : robot.joints()) {
-            joints.add(new RobotProgram.Joint(
-                    j.name(),
-                    j.type() == JointType.PRISMATIC
-                            ? RobotProgram.JointType.PRISMATIC
-                            : RobotProgram.JointType.REVOLUTE,
-                    j.min(),
-                    j.max()));
+            joints.add(new RobotProgram.Joint(j.name(), typeInProgram(j.type()), j.min(), j.max()));
         }
         Map<String, Double> feed = feedsByWorkingstep(path);
         Map<String, Double> spindle = new HashMap<>();
@@ -261,5 +255,10 @@ public final class RobotPrograms {
             q[i] = m.joint(i);
         }
         return q;
+    }
+
+    /** A joint's type as the program names it: a prismatic joint moves in mm, any other turns in degrees. */
+    private static RobotProgram.JointType typeInProgram(JointType type) {
+        return type == JointType.PRISMATIC ? RobotProgram.JointType.PRISMATIC : RobotProgram.JointType.REVOLUTE;
     }
 }

@@ -1005,6 +1005,8 @@ final class Ap238AimBinder {
                 bottom,
                 planar,
                 orthogonal,
+                List.of(),
+                List.of(),
                 List.of());
         features.put(id, out);
         return out;
@@ -1428,19 +1430,8 @@ final class Ap238AimBinder {
                     ratios[2],
                     ratios[3],
                     measure(property(props, "depth of end")));
-            return new Strategy(
-                    id,
-                    Strategy.StrategyType.DRILLING_TYPE_STRATEGY,
-                    entity,
-                    OptionalDouble.empty(),
-                    OptionalDouble.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.of(d));
+            return Iso14649Binder.withoutMillingParameters(
+                    id, Strategy.StrategyType.DRILLING_TYPE_STRATEGY, entity, Optional.of(d));
         }
         String arm = kind.toUpperCase(Locale.ROOT).replace(' ', '_');
         Strategy.StrategyType type = switch (arm) {

@@ -73,41 +73,6 @@ public record Feature(
         bosses = List.copyOf(bosses);
     }
 
-    /** A feature without slot ends. */
-    public Feature(
-            long instanceId,
-            FeatureType type,
-            String entity,
-            String id,
-            Transform3 placement,
-            OptionalDouble depthMm,
-            Optional<Transform3> depthPlane,
-            Optional<Profile> profile,
-            Optional<TravelPath> courseOfTravel,
-            OptionalDouble diameterMm,
-            Optional<String> bottomCondition,
-            OptionalDouble planarRadiusMm,
-            OptionalDouble orthogonalRadiusMm,
-            List<Long> operationIds) {
-        this(
-                instanceId,
-                type,
-                entity,
-                id,
-                placement,
-                depthMm,
-                depthPlane,
-                profile,
-                courseOfTravel,
-                diameterMm,
-                bottomCondition,
-                planarRadiusMm,
-                orthogonalRadiusMm,
-                operationIds,
-                List.of(),
-                List.of());
-    }
-
     /**
      * One end of a slot (ISO 14649-10 slot_end_type).
      *

@@ -15,6 +15,7 @@ import java.util.OptionalDouble;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.function.Function;
 import org.fresa.geom.Transform3;
 import org.fresa.geom.Vec3;
 import org.fresa.stepnc.Iso14649Schema.EntityDef;
@@ -176,15 +177,24 @@ final class Iso14649Binder {
 
     // ---- attribute accessors ----
 
-    private Optional<Long> refId(E e, String attr) throws StepParseException {
+    /**
+     * An optional attribute of one kind of value: empty when it is left without a value, else an
+     * error saying what it should be.
+     */
+    private <V extends StepValue, T> Optional<T> optional(
+            E e, String attr, Class<V> kind, Function<V, T> value, String expected) throws StepParseException {
         StepValue v = e.v(attr);
-        if (v instanceof StepValue.Ref r) {
-            return Optional.of(r.id());
+        if (kind.isInstance(v)) {
+            return Optional.of(value.apply(kind.cast(v)));
         }
-        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+        if (v.absent()) {
             return Optional.empty();
         }
-        throw error(e, e.name() + "." + attr + " should be a reference (#n), found " + v);
+        throw error(e, e.name() + "." + attr + " should be " + expected + ", found " + v);
+    }
+
+    private Optional<Long> refId(E e, String attr) throws StepParseException {
+        return optional(e, attr, StepValue.Ref.class, StepValue.Ref::id, "a reference (#n)");
     }
 
     /** A reference to a known entity that is one of the given supertypes. */
@@ -229,14 +239,8 @@ final class Iso14649Binder {
     }
 
     private String text(E e, String attr) throws StepParseException {
-        StepValue v = e.v(attr);
-        if (v instanceof StepValue.Text t) {
-            return t.value();
-        }
-        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
-            return "";
-        }
-        throw error(e, e.name() + "." + attr + " should be a string, found " + v);
+        return optional(e, attr, StepValue.Text.class, StepValue.Text::value, "a string")
+                .orElse("");
     }
 
     private OptionalDouble num(E e, String attr) throws StepParseException {
@@ -250,7 +254,7 @@ final class Iso14649Binder {
         if (v instanceof StepValue.Int i) {
             return OptionalDouble.of(i.value());
         }
-        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+        if (v.absent()) {
             return OptionalDouble.empty();
         }
         if (v instanceof StepValue.Typed t && depth < 8) {
@@ -288,21 +292,14 @@ final class Iso14649Binder {
         if (v instanceof StepValue.Real r && r.value() == Math.rint(r.value()) && Math.abs(r.value()) < 1e9) {
             return OptionalInt.of((int) r.value());
         }
-        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
+        if (v.absent()) {
             return OptionalInt.empty();
         }
         throw error(e, e.name() + "." + attr + " should be an integer, found " + v);
     }
 
     private Optional<String> enumeration(E e, String attr) throws StepParseException {
-        StepValue v = e.v(attr);
-        if (v instanceof StepValue.Enumeration en) {
-            return Optional.of(en.name());
-        }
-        if (v instanceof StepValue.Unset || v instanceof StepValue.Derived) {
-            return Optional.empty();
-        }
-        throw error(e, e.name() + "." + attr + " should be an enumeration (.X.), found " + v);
+        return optional(e, attr, StepValue.Enumeration.class, StepValue.Enumeration::name, "an enumeration (.X.)");
     }
 
     private Optional<Boolean> bool(E e, String attr) throws StepParseException {
@@ -317,16 +314,47 @@ final class Iso14649Binder {
         };
     }
 
+    /** Checks that a referenced entity is of the supertype its attribute asks for. */
+    private void expectKind(E owner, E target, String supertype, String should) throws StepParseException {
+        if (!target.def.isA(supertype)) {
+            throw error(owner, should + ", found #" + target.id() + " " + target.name());
+        }
+    }
+
+    /** The kind an entity is named as, or the catch-all for an entity Fresa does not model. */
+    private static <T extends Enum<T>> T kindOf(Class<T> kinds, String entity, T other) {
+        try {
+            return Enum.valueOf(kinds, entity);
+        } catch (IllegalArgumentException ex) {
+            return other;
+        }
+    }
+
+    /**
+     * A strategy that sets none of the milling parameters (overlap, passes, directions, cut mode):
+     * a drilling strategy with its own, or one Fresa does not model.
+     */
+    static Strategy withoutMillingParameters(
+            long id, Strategy.StrategyType type, String entity, Optional<DrillingStrategy> drilling) {
+        return new Strategy(
+                id,
+                type,
+                entity,
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                Optional.empty(),
+                drilling);
+    }
+
     // ---- geometry ----
 
     private Vec3 point(E p) throws StepParseException {
-        if (!p.def.isA("CARTESIAN_POINT")) {
-            throw error(p, "expected a CARTESIAN_POINT, found " + p.name());
-        }
-        double[] c = coordinates(p, "coordinates");
-        if (c.length < 1 || c.length > 3) {
-            throw error(p, "a point has 1 to 3 coordinates, found " + c.length);
-        }
+        double[] c = coordinatesOf(p, "CARTESIAN_POINT", "coordinates", 1, "a point has 1 to 3 coordinates");
         for (double x : c) {
             if (!(Math.abs(x) <= MAX_COORDINATE_MM)) {
                 throw error(
@@ -338,13 +366,7 @@ final class Iso14649Binder {
     }
 
     private Vec3 direction(E d) throws StepParseException {
-        if (!d.def.isA("DIRECTION")) {
-            throw error(d, "expected a DIRECTION, found " + d.name());
-        }
-        double[] c = coordinates(d, "direction_ratios");
-        if (c.length < 2 || c.length > 3) {
-            throw error(d, "a direction has 2 or 3 ratios, found " + c.length);
-        }
+        double[] c = coordinatesOf(d, "DIRECTION", "direction_ratios", 2, "a direction has 2 or 3 ratios");
         Vec3 v = new Vec3(c[0], c[1], c.length > 2 ? c[2] : 0);
         if (v.norm() == 0 || !Double.isFinite(v.norm())) {
             throw error(
@@ -353,6 +375,22 @@ final class Iso14649Binder {
                             + " (zero, too small or too large to normalise)");
         }
         return v.normalized();
+    }
+
+    /**
+     * The numbers of a point's or a direction's list, from {@code fewest} to 3 of them.
+     *
+     * @param count how the message says the count allowed
+     */
+    private double[] coordinatesOf(E e, String kind, String attr, int fewest, String count) throws StepParseException {
+        if (!e.def.isA(kind)) {
+            throw error(e, "expected a " + kind + ", found " + e.name());
+        }
+        double[] c = coordinates(e, attr);
+        if (c.length < fewest || c.length > 3) {
+            throw error(e, count + ", found " + c.length);
+        }
+        return c;
     }
 
     private double[] coordinates(E e, String attr) throws StepParseException {
@@ -701,18 +739,13 @@ final class Iso14649Binder {
                     Optional.empty(),
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
+                    List.of(),
+                    List.of(),
                     List.of());
         } else {
             E f = k.get();
-            if (!f.def.isA("MANUFACTURING_FEATURE")) {
-                throw error(owner, "its_feature should be a manufacturing feature, found #" + id + " " + f.name());
-            }
-            Feature.FeatureType type;
-            try {
-                type = Feature.FeatureType.valueOf(f.name());
-            } catch (IllegalArgumentException ex) {
-                type = Feature.FeatureType.OTHER;
-            }
+            expectKind(owner, f, "MANUFACTURING_FEATURE", "its_feature should be a manufacturing feature");
+            Feature.FeatureType type = kindOf(Feature.FeatureType.class, f.name(), Feature.FeatureType.OTHER);
             Transform3 placement = placementAttr(f, "feature_placement").orElse(Transform3.IDENTITY);
             Optional<Transform3> depthPlane = planeAttr(f, "depth");
             OptionalDouble depth = depthPlane.isPresent()
@@ -1049,18 +1082,12 @@ final class Iso14649Binder {
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
                     OptionalDouble.empty(),
-                    Optional.empty());
+                    Optional.empty(),
+                    List.of());
         }
         E o = k.get();
-        if (!o.def.isA("MACHINING_OPERATION")) {
-            throw error(owner, "its_operation should be a machining operation, found #" + id + " " + o.name());
-        }
-        Operation.OperationType type;
-        try {
-            type = Operation.OperationType.valueOf(o.name());
-        } catch (IllegalArgumentException ex) {
-            type = Operation.OperationType.OTHER;
-        }
+        expectKind(owner, o, "MACHINING_OPERATION", "its_operation should be a machining operation");
+        Operation.OperationType type = kindOf(Operation.OperationType.class, o.name(), Operation.OperationType.OTHER);
         Optional<Tool> tool = Optional.empty();
         Optional<Long> toolId = refId(o, "its_tool");
         if (toolId.isPresent()) {
@@ -1097,7 +1124,8 @@ final class Iso14649Binder {
                 num(o, "allowance_bottom"),
                 num(o, "cutting_depth"),
                 num(o, "overcut_length"),
-                o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty());
+                o.def.isA("DRILLING_TYPE_OPERATION") ? Optional.of(drillingParameters(o)) : Optional.empty(),
+                List.of());
     }
 
     // ISO 14649-11 drilling_type_operation, multistep_drilling, boring_operation
@@ -1136,12 +1164,7 @@ final class Iso14649Binder {
                     OptionalDouble.empty()));
         }
         E a = k.get();
-        ApproachRetract.Kind kind;
-        try {
-            kind = ApproachRetract.Kind.valueOf(a.name());
-        } catch (IllegalArgumentException ex) {
-            kind = ApproachRetract.Kind.OTHER;
-        }
+        ApproachRetract.Kind kind = kindOf(ApproachRetract.Kind.class, a.name(), ApproachRetract.Kind.OTHER);
         return Optional.of(new ApproachRetract(
                 a.id(),
                 kind,
@@ -1155,19 +1178,7 @@ final class Iso14649Binder {
     private Strategy strategy(E owner, long id, OptionalDouble toolDiameter) throws StepParseException {
         Optional<E> k = known(id);
         if (k.isEmpty()) {
-            return new Strategy(
-                    id,
-                    Strategy.StrategyType.OTHER,
-                    typeOf(id),
-                    OptionalDouble.empty(),
-                    OptionalDouble.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty());
+            return withoutMillingParameters(id, Strategy.StrategyType.OTHER, typeOf(id), Optional.empty());
         }
         E s = k.get();
         Strategy.StrategyType type = switch (s.name()) {
@@ -1199,19 +1210,7 @@ final class Iso14649Binder {
             }
             DrillingStrategy d = new DrillingStrategy(
                     ratios[0], ratios[1], num(s, "depth_of_start"), ratios[2], ratios[3], num(s, "depth_of_end"));
-            return new Strategy(
-                    id,
-                    type,
-                    spelling,
-                    OptionalDouble.empty(),
-                    OptionalDouble.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.empty(),
-                    Optional.of(d));
+            return withoutMillingParameters(id, type, spelling, Optional.of(d));
         }
         OptionalDouble overlap = num(s, "overlap");
         OptionalDouble fraction = OptionalDouble.empty();
@@ -1267,9 +1266,7 @@ final class Iso14649Binder {
             return Optional.empty();
         }
         E t = k.get();
-        if (!t.def.isA("MACHINING_TOOL")) {
-            throw error(owner, "its_tool should be a cutting tool, found #" + id + " " + t.name());
-        }
+        expectKind(owner, t, "MACHINING_TOOL", "its_tool should be a cutting tool");
         String body = "";
         String dimEntity = "";
         OptionalDouble[] dims = new OptionalDouble[7];

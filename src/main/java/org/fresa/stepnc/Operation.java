@@ -50,48 +50,6 @@ public record Operation(
         Optional<DrillingParameters> drilling,
         List<ExplicitToolpath> toolpaths) {
 
-    /** An operation without explicit toolpaths. */
-    public Operation(
-            long instanceId,
-            OperationType type,
-            String entity,
-            String id,
-            OptionalDouble retractPlaneMm,
-            Optional<Vec3> startPoint,
-            Optional<Tool> tool,
-            Technology technology,
-            Optional<Strategy> strategy,
-            Optional<ApproachRetract> approach,
-            Optional<ApproachRetract> retract,
-            OptionalDouble axialCuttingDepthMm,
-            OptionalDouble radialCuttingDepthMm,
-            OptionalDouble allowanceSideMm,
-            OptionalDouble allowanceBottomMm,
-            OptionalDouble cuttingDepthMm,
-            OptionalDouble overcutLengthMm,
-            Optional<DrillingParameters> drilling) {
-        this(
-                instanceId,
-                type,
-                entity,
-                id,
-                retractPlaneMm,
-                startPoint,
-                tool,
-                technology,
-                strategy,
-                approach,
-                retract,
-                axialCuttingDepthMm,
-                radialCuttingDepthMm,
-                allowanceSideMm,
-                allowanceBottomMm,
-                cuttingDepthMm,
-                overcutLengthMm,
-                drilling,
-                List.of());
-    }
-
     public Operation {
         Objects.requireNonNull(type);
         Objects.requireNonNull(entity);

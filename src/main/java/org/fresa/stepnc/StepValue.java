@@ -9,6 +9,11 @@ import java.util.Objects;
  */
 public sealed interface StepValue {
 
+    /** Whether the attribute is left without a value of its own: unset ({@code $}) or derived ({@code *}). */
+    default boolean absent() {
+        return this instanceof Unset || this instanceof Derived;
+    }
+
     /** {@code $}: the attribute has no value. */
     record Unset() implements StepValue {
         @Override

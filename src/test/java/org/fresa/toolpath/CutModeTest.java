@@ -2,6 +2,7 @@ package org.fresa.toolpath;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import org.fresa.stepnc.Operation;
@@ -48,7 +49,8 @@ class CutModeTest {
                 OptionalDouble.empty(),
                 OptionalDouble.empty(),
                 OptionalDouble.empty(),
-                Optional.empty());
+                Optional.empty(),
+                List.of());
     }
 
     @Test

@@ -170,7 +170,8 @@ class CuttingDataTest {
                 base.allowanceBottomMm(),
                 base.cuttingDepthMm(),
                 base.overcutLengthMm(),
-                base.drilling());
+                base.drilling(),
+                List.of());
         CuttingData c = CuttingData.of(op, 10, false);
         double n = 1000 * 110 / (Math.PI * 10);
         assertAll(

@@ -105,7 +105,8 @@ class DrillCycleTest {
                 OptionalDouble.empty(),
                 OptionalDouble.empty(),
                 OptionalDouble.empty(),
-                Optional.of(p));
+                Optional.of(p),
+                List.of());
     }
 
     static DrillingStrategy reductions(double feedStart, double depthStart, double feedEnd, double depthEnd) {
