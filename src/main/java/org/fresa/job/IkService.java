@@ -292,7 +292,7 @@ public final class IkService {
             values.add(v);
         }
         RobotProgram.Motion m = new RobotProgram.Motion(
-                0, "", RobotProgram.MotionType.LINEAR, RobotProgram.PointRole.PART, values, pose, 1, 0);
+                0, "", RobotProgram.MotionType.LINEAR, RobotProgram.PointRole.PART, values, pose, 1, 0, 0, 0);
         RapidWriter.Confdata cf = RapidWriter.confdata(m, arm);
         Map<String, Integer> has = Map.of(
                 "cf1",

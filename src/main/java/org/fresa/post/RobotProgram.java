@@ -134,19 +134,6 @@ public record RobotProgram(
             double dwellS,
             double spindleRpm) {
 
-        /** A motion without a dwell, with the spindle stopped. */
-        public Motion(
-                int index,
-                String workingstep,
-                MotionType type,
-                PointRole role,
-                List<Double> jointValues,
-                Transform3 target,
-                double speedMmPerS,
-                double zoneMm) {
-            this(index, workingstep, type, role, jointValues, target, speedMmPerS, zoneMm, 0, 0);
-        }
-
         public Motion {
             if (!(dwellS >= 0) || !Double.isFinite(dwellS)) {
                 throw new IllegalArgumentException("dwell must be >= 0 s: " + dwellS);

@@ -183,6 +183,8 @@ class IkServiceTest {
                                 v,
                                 Transform3.IDENTITY,
                                 1,
+                                0,
+                                0,
                                 0),
                         arm)
                 .cfx();

@@ -80,7 +80,7 @@ public final class RobotProgramsForTest {
             Transform3 target,
             double speed,
             double zone) {
-        return new RobotProgram.Motion(i, ws, type, role, q, target, speed, zone);
+        return new RobotProgram.Motion(i, ws, type, role, q, target, speed, zone, 0, 0);
     }
 
     static Transform3 at(Transform3 r, double x, double y, double z) {

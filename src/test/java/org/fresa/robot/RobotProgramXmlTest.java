@@ -144,7 +144,9 @@ class RobotProgramXmlTest {
                         joints,
                         m.target(),
                         m.speedMmPerS(),
-                        m.zoneMm()));
+                        m.zoneMm(),
+                        0,
+                        0));
         RobotProgram bad = new RobotProgram(p.programName(), p.robotName(), p.joints(), motions);
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
         java.io.IOException e = assertThrows(

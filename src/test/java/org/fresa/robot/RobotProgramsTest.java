@@ -23,6 +23,8 @@ class RobotProgramsTest {
                 java.util.Arrays.stream(q).boxed().toList(),
                 Transform3.IDENTITY,
                 1,
+                0,
+                0,
                 0);
     }
 
