@@ -507,17 +507,26 @@ public final class Recognition {
         return true;
     }
 
+    /**
+     * The two junctions a division of concave element a against element b leaves at offset tt: the
+     * first along b's travel ends b where a takes over ({@code b → a}), the second starts b again
+     * after a ({@code a → b}). Both fall on p when the carriers only touch.
+     */
+    private List<Vec2> divisionJunctions(PocketElement a, PocketElement b, Vec2 p, double tt) {
+        List<Vec2> c = ElementGeometry.candidates(b, a, tt, compar);
+        if (c.size() != 2) {
+            return List.of(p, p);
+        }
+        Vec2 tb = b.tangentAt(p);
+        boolean firstBefore = c.get(0).minus(p).dot(tb) <= c.get(1).minus(p).dot(tb);
+        return firstBefore ? List.of(c.get(0), c.get(1)) : List.of(c.get(1), c.get(0));
+    }
+
     private List<LoopState> splitLoop(LoopState l, int ia, int ib, Vec2 p, double tt) {
         int n = l.size();
         PocketElement a = l.get(ia), b = l.get(ib);
-        List<Vec2> c = ElementGeometry.candidates(b, a, tt, compar);
-        Vec2 j1 = p, j2 = p;
-        if (c.size() == 2) {
-            Vec2 tb = b.tangentAt(p);
-            boolean firstBefore = c.get(0).minus(p).dot(tb) <= c.get(1).minus(p).dot(tb);
-            j1 = firstBefore ? c.get(0) : c.get(1);
-            j2 = firstBefore ? c.get(1) : c.get(0);
-        }
+        List<Vec2> js = divisionJunctions(a, b, p, tt);
+        Vec2 j1 = js.get(0), j2 = js.get(1);
         List<PocketElement> l1 = new ArrayList<>();
         for (int i = ia; ; i = (i + 1) % n) {
             PocketElement e = l.get(i);
