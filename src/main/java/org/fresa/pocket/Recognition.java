@@ -121,6 +121,7 @@ public final class Recognition {
         states.add(s0);
         LoopState s = s0;
         double t = s0.tFrom();
+        Vec2 lastPoint = null;
         for (int guard = 0; guard < 1000; guard++) {
             int n = s.size();
             if (n <= 2) {
@@ -137,6 +138,12 @@ public final class Recognition {
             List<Division> divisions = divisions(s, t);
             double tdm = divisions.stream().mapToDouble(Division::t).min().orElse(Double.POSITIVE_INFINITY);
             double te = Math.min(ttm, tdm);
+            if (Double.isInfinite(te) && lastPoint != null && vanished(states)) {
+                // the last event left a subcontour turned inside out: the area vanished there
+                states.remove(states.size() - 1);
+                return new RecognitionNode(
+                        id, states, withLeaf(events, t), List.of(), Double.NaN, t, Optional.of(lastPoint));
+            }
             if (Double.isInfinite(te)) {
                 String els = s.elements().toString();
                 throw new CamInputException(
@@ -161,6 +168,7 @@ public final class Recognition {
                 }
                 numbers.sort(null);
                 events.add(new RecognitionNode.Event(te, "cancel", numbers));
+                lastPoint = cancels[gone.iterator().next()].point();
                 if (n - gone.size() <= 1) {
                     Vec2 p = cancels[gone.iterator().next()].point();
                     return new RecognitionNode(
@@ -192,7 +200,7 @@ public final class Recognition {
                     }
                     kept.add(e);
                 }
-                s = s.with(te, kept, newPtr);
+                s = rejoined(s.with(te, kept, newPtr), divisions, te);
                 states.add(s);
                 if (kept.size() == 2) {
                     return leaf(id, states, events, s, te);
@@ -214,6 +222,7 @@ public final class Recognition {
                     .toList();
             if (!now.isEmpty()) {
                 List<LoopState> loops = divide(s, now, te);
+                lastPoint = now.get(0).point();
                 List<Integer> numbers = new ArrayList<>();
                 for (Division d : now) {
                     numbers.add(d.na());
@@ -245,6 +254,70 @@ public final class Recognition {
             t = te;
         }
         throw new CamInputException("contour", "recognition did not converge");
+    }
+
+    /**
+     * A division coincident with a cancellation whose element lay between the division's pair
+     * leaves that pair adjacent. Their junction nearest the vanished element's point may, at a
+     * near-tangent meeting, be the far one, which keeps a lens of ground the division's concave
+     * element has already passed. The division's own junction (the first meeting along the
+     * divided element) is taken instead when it leaves a smaller area: every point of the offset
+     * area lies beyond both elements, so of the two closings the smaller one is the offset.
+     */
+    private LoopState rejoined(LoopState s, List<Division> divisions, double te) {
+        double tt = te + 10 * compar;
+        LoopState out = s;
+        for (Division d : divisions) {
+            int n = out.size();
+            int ia = indexOf(out, d.na()), ib = indexOf(out, d.nb());
+            if (d.t() > te + compar || ia < 0 || ib < 0 || n < 3) {
+                continue;
+            }
+            PocketElement a = out.get(ia), b = out.get(ib);
+            List<Vec2> js = divisionJunctions(a, b, d.point(), tt);
+            List<PocketElement> els = new ArrayList<>(out.elements());
+            if ((ib + 1) % n == ia) {
+                els.set(ia, a.withSelector(ElementGeometry.selectorNear(b, a, tt, js.get(0), compar)));
+            } else if ((ia + 1) % n == ib) {
+                els.set(ib, b.withSelector(ElementGeometry.selectorNear(a, b, tt, js.get(1), compar)));
+            } else {
+                continue;
+            }
+            LoopState alt = out.with(out.tFrom(), els, out.pointer());
+            Optional<Double> now = out.signedArea(tt);
+            Optional<Double> then = alt.signedArea(tt);
+            boolean nowValid = now.isPresent() && now.get() < 0;
+            if (then.isPresent() && then.get() < 0 && (!nowValid || then.get() > now.get())) {
+                out = alt;
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Whether the newest subcontour of a node is no area at all: offsetting only shrinks an area,
+     * so a subcontour that has none just after its event, is traversed the wrong way round, or
+     * encloses more than an earlier one of the same node did is what is left of an area that
+     * vanished at that event (several elements meeting at one point, met one by one within the
+     * tolerance).
+     */
+    private boolean vanished(List<LoopState> states) {
+        if (states.size() < 2) {
+            return false;
+        }
+        double delta = 10 * compar;
+        LoopState last = states.get(states.size() - 1);
+        Optional<Double> area = last.signedArea(last.tFrom() + delta);
+        if (area.isEmpty() || area.get() >= -compar * compar) {
+            return true;
+        }
+        for (LoopState earlier : states.subList(0, states.size() - 1)) {
+            Optional<Double> a = earlier.signedArea(earlier.tFrom() + delta);
+            if (a.isPresent() && a.get() < 0 && -area.get() > -a.get()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static List<RecognitionNode.Event> withLeaf(List<RecognitionNode.Event> events, double t) {
@@ -374,7 +447,9 @@ public final class Recognition {
                         p = a.center().plus(a.center().minus(b.center()).times((ra + rel) / dist));
                     }
                 }
-                if (!(rel > 10 * compar)) {
+                // a division within the tolerance of now went with the event just taken (events up
+                // to te + compar are applied together); any later one is an event still to come
+                if (!(rel > compar)) {
                     continue;
                 }
                 double tt = t + rel;
@@ -507,17 +582,26 @@ public final class Recognition {
         return true;
     }
 
+    /**
+     * The two junctions a division of concave element a against element b leaves at offset tt: the
+     * first along b's travel ends b where a takes over ({@code b → a}), the second starts b again
+     * after a ({@code a → b}). Both fall on p when the carriers only touch.
+     */
+    private List<Vec2> divisionJunctions(PocketElement a, PocketElement b, Vec2 p, double tt) {
+        List<Vec2> c = ElementGeometry.candidates(b, a, tt, compar);
+        if (c.size() != 2) {
+            return List.of(p, p);
+        }
+        Vec2 tb = b.tangentAt(p);
+        boolean firstBefore = c.get(0).minus(p).dot(tb) <= c.get(1).minus(p).dot(tb);
+        return firstBefore ? List.of(c.get(0), c.get(1)) : List.of(c.get(1), c.get(0));
+    }
+
     private List<LoopState> splitLoop(LoopState l, int ia, int ib, Vec2 p, double tt) {
         int n = l.size();
         PocketElement a = l.get(ia), b = l.get(ib);
-        List<Vec2> c = ElementGeometry.candidates(b, a, tt, compar);
-        Vec2 j1 = p, j2 = p;
-        if (c.size() == 2) {
-            Vec2 tb = b.tangentAt(p);
-            boolean firstBefore = c.get(0).minus(p).dot(tb) <= c.get(1).minus(p).dot(tb);
-            j1 = firstBefore ? c.get(0) : c.get(1);
-            j2 = firstBefore ? c.get(1) : c.get(0);
-        }
+        List<Vec2> js = divisionJunctions(a, b, p, tt);
+        Vec2 j1 = js.get(0), j2 = js.get(1);
         List<PocketElement> l1 = new ArrayList<>();
         for (int i = ia; ; i = (i + 1) % n) {
             PocketElement e = l.get(i);
