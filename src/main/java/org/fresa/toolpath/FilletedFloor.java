@@ -163,8 +163,7 @@ final class FilletedFloor {
         filletLevels(b, boundary, rhoMm, wall, floor, h, t, climb, tol);
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), top.start(), b.moves());
+        return t.section(label, top.start(), b.moves());
     }
 
     private static Vec3 atRetract(Vec3 p, double engineSafe, Heights h) {

@@ -127,14 +127,7 @@ final class OpenSideMilling {
             }
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                new Vec3(xa, outY, h.clearanceZ()),
-                b.moves());
+        return t.section(label, new Vec3(xa, outY, h.clearanceZ()), b.moves());
     }
 
     /**
@@ -207,14 +200,7 @@ final class OpenSideMilling {
             b.rapid(Vec3.of(bestOut, h.retractZ()));
         }
         b.rapid(Vec3.of(bestOut, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(bestOut, h.clearanceZ()),
-                b.moves());
+        return t.section(label, Vec3.of(bestOut, h.clearanceZ()), b.moves());
     }
 
     /**
@@ -346,14 +332,7 @@ final class OpenSideMilling {
             b.rapid(Vec3.of(out, h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(in, h.clearanceZ()),
-                b.moves());
+        return t.section(label, Vec3.of(in, h.clearanceZ()), b.moves());
     }
 
     private static double distance(List<Curve2> cs, Vec2 p) {
@@ -506,14 +485,7 @@ final class OpenSideMilling {
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()),
-                b.moves());
+        return t.section(label, Vec3.of(first, h.clearanceZ()), b.moves());
     }
 
     /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */

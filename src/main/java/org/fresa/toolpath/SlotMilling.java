@@ -915,14 +915,7 @@ final class SlotMilling {
         b.feed(new Vec3(outside, 0, z), t.feedMmPerMin());
         b.rapid(new Vec3(outside, 0, h.retractZ()));
         b.rapid(new Vec3(outside, 0, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                new Vec3(outside, 0, h.clearanceZ()),
-                b.moves());
+        return t.section(label, new Vec3(outside, 0, h.clearanceZ()), b.moves());
     }
 
     /** A T-slot mill fits the cross bar: no wider than the bar, no narrower than the stem, its edge as deep as the bar. */
@@ -1002,7 +995,7 @@ final class SlotMilling {
         b.feed(Vec3.of(outside, z), t.feedMmPerMin());
         b.rapid(Vec3.of(outside, h.retractZ()));
         b.rapid(o3);
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), o3, b.moves());
+        return t.section(label, o3, b.moves());
     }
 
     private static String mm(double v) {

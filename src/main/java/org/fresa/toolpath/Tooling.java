@@ -1,5 +1,10 @@
 package org.fresa.toolpath;
 
+import java.util.List;
+import org.fresa.geom.Vec3;
+import org.fresa.model.Move;
+import org.fresa.model.ToolpathSection;
+
 /**
  * The cutter and its technology for one operation.
  *
@@ -21,5 +26,10 @@ public record Tooling(
 
     public double radiusMm() {
         return diameterMm / 2;
+    }
+
+    /** A section cut with this tool along the feature frame's +Z, the tool first standing at {@code start}. */
+    ToolpathSection section(String label, Vec3 start, List<Move> moves) {
+        return new ToolpathSection(label, Vec3.UNIT_Z, diameterMm, toolNumber, spindleRpm, start, moves);
     }
 }
