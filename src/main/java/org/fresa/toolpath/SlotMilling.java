@@ -538,17 +538,8 @@ final class SlotMilling {
         if (!(depth > 0)) {
             throw new IllegalArgumentException("the loop slot's layer has no depth");
         }
-        double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
-        org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(
-                t.diameterMm(),
-                fraction,
-                0,
-                h.topZ(),
-                h.bottomZ(),
-                axialMm > 0 ? axialMm : depth,
-                Math.max(t.spindleRpm(), 1),
-                t.feedMmPerMin(),
-                t.feedMmPerMin());
+        org.fresa.pocket.PocketTechnology tech =
+                t.regionTechnology(stepoverMm, h.topZ(), h.bottomZ(), axialMm > 0 ? axialMm : depth);
         org.fresa.model.Toolpath path;
         try {
             path = org.fresa.pocket.RegionPocket.plan(outer, islands, tech, climb, entry)
