@@ -33,47 +33,14 @@ final class OpenSideMilling {
      * layer's depth. An end of the step where the stock ends lets the tool run past it; a closed
      * end keeps the tool's edge within the path's length.
      *
-     * @param climb with M3: passes run along -x (the step's material on the tool's right)
-     * @throws UnsupportedOperationException when the tool does not fit between closed ends
-     */
-    static ToolpathSection step(
-            String label,
-            double lengthMm,
-            double widthMm,
-            boolean openStart,
-            boolean openEnd,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
-        return step(
-                label,
-                lengthMm,
-                widthMm,
-                openStart,
-                openEnd,
-                0,
-                h,
-                t,
-                stepoverMm,
-                axialMm,
-                sideAllowanceMm,
-                bottomAllowanceMm,
-                climb,
-                tol);
-    }
-
-    /**
-     * A step whose wall slopes back from its foot: each layer's passes go in to the wall where it
+     * <p>A wall that slopes back from its foot: each layer's passes go in to the wall where it
      * stands at the layer's bottom, so the tool stays within the step and leaves a step on the
      * wall as high as the layer.
      *
      * @param footPerMm how far (mm) the wall lies farther out (towards -y) for each mm below the
      *     step's top: 0 for a vertical wall, -1 / tan(profile_angle) for a sloped one
+     * @param climb with M3: passes run along -x (the step's material on the tool's right)
+     * @throws UnsupportedOperationException when the tool does not fit between closed ends
      */
     static ToolpathSection step(
             String label,

@@ -486,22 +486,7 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : st.sloped()
-                                ? slopedStep(label, st, h, tooling, op, axial, tol, problems)
-                                : OpenSideMilling.step(
-                                        label,
-                                        st.lengthMm(),
-                                        st.widthMm(),
-                                        st.openStart(),
-                                        st.openEnd(),
-                                        h,
-                                        tooling,
-                                        stepover(op, tooling),
-                                        axial,
-                                        sideAllowanceMm(op),
-                                        bottomAllowanceMm(op),
-                                        climb(op),
-                                        tol);
+                        : step(label, st, h, tooling, op, axial, tol, problems);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -994,11 +979,12 @@ public final class ToolpathPlanner {
     }
 
     /**
-     * A step whose wall slopes back: layers no thicker than the vee slots' (docs/slots.md), each
-     * cut in to where the wall stands at its bottom; the steps this leaves on the wall are reported
-     * with their height and width.
+     * A step without bosses, cut from the air beyond its open side. A wall that slopes back is cut
+     * in layers no thicker than the vee slots' (docs/slots.md), each cut in to where the wall
+     * stands at its bottom; the steps this leaves on the wall are reported with their height and
+     * width.
      */
-    private static ToolpathSection slopedStep(
+    private static ToolpathSection step(
             String label,
             StepShape st,
             Heights h,
@@ -1007,11 +993,15 @@ public final class ToolpathPlanner {
             double axial,
             Tolerance tol,
             List<String> problems) {
-        double layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
-        double footPerMm = st.footMm(1);
-        problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg()) + " deg is cut in "
-                + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and " + mm(layer * footPerMm)
-                + " mm wide are left on it");
+        double layer = axial;
+        double footPerMm = 0;
+        if (st.sloped()) {
+            layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
+            footPerMm = st.footMm(1);
+            problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg())
+                    + " deg is cut in " + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and "
+                    + mm(layer * footPerMm) + " mm wide are left on it");
+        }
         return OpenSideMilling.step(
                 label,
                 st.lengthMm(),
