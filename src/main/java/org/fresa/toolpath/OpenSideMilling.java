@@ -16,13 +16,26 @@ import org.fresa.model.ToolpathSection;
  * depth rather than ramping into the material: steps (ISO 14649-10 step) and general outside
  * profiles. With the spindle turning clockwise (M3), climb milling keeps the material being cut
  * on the right of the tool's travel.
+ *
+ * @param h the feature's heights in its frame
+ * @param t the cutter and its feeds
+ * @param axialMm depth of each layer; 0 or less for one layer
+ * @param sideAllowanceMm material left on the walls, >= 0
+ * @param bottomAllowanceMm material left on the floor, >= 0
+ * @param climb climb milling (the material on the tool's right with M3), else conventional
+ * @param tol the tolerance of the geometry
  */
-final class OpenSideMilling {
+record OpenSideMilling(
+        Heights h,
+        Tooling t,
+        double axialMm,
+        double sideAllowanceMm,
+        double bottomAllowanceMm,
+        boolean climb,
+        Tolerance tol) {
 
     /** How far outside the stock the tool goes down and comes back up, beyond its radius (mm). */
     static final double OUTSIDE_MM = 2.0;
-
-    private OpenSideMilling() {}
 
     /**
      * A step in its frame: x along the open boundary from its start (0 to length), the wall at
@@ -39,24 +52,18 @@ final class OpenSideMilling {
      *
      * @param footPerMm how far (mm) the wall lies farther out (towards -y) for each mm below the
      *     step's top: 0 for a vertical wall, -1 / tan(profile_angle) for a sloped one
-     * @param climb with M3: passes run along -x (the step's material on the tool's right)
+     * <p>Climbing with M3, passes run along -x (the step's material on the tool's right).
+     *
      * @throws UnsupportedOperationException when the tool does not fit between closed ends
      */
-    static ToolpathSection step(
+    ToolpathSection step(
             String label,
             double lengthMm,
             double widthMm,
             boolean openStart,
             boolean openEnd,
             double footPerMm,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
+            double stepoverMm) {
         double r = t.radiusMm();
         double x0 = openStart ? -(r + OUTSIDE_MM) : r;
         double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
@@ -104,20 +111,11 @@ final class OpenSideMilling {
      *
      * @param part the part's outline (the material kept), counter-clockwise, in the feature frame
      * @param stock the stock's outline in the same frame, counter-clockwise
-     * @param climb with M3: the loop runs clockwise (the part on the tool's right)
+     * <p>Climbing with M3, the loop runs clockwise (the part on the tool's right).
+     *
      * @throws UnsupportedOperationException when no straight lead-in from outside the stock clears the part
      */
-    static ToolpathSection outsideProfile(
-            String label,
-            Contour part,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
+    ToolpathSection outsideProfile(String label, Contour part, Contour stock) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         List<Contour> loops = org.fresa.pocket.LineArcOffsetter.offset(part, off, tol);
@@ -180,22 +178,12 @@ final class OpenSideMilling {
      *
      * @param chain the profile, start to end, in the feature frame
      * @param stock the stock's outline in the same frame, counter-clockwise
-     * @param climb with M3: the pass runs against the chain (the material on the tool's right)
+     * <p>Climbing with M3, the pass runs against the chain (the material on the tool's right).
+     *
      * @throws UnsupportedOperationException when an end is not on the block's edge, the chain
      *     leaves the block, or an end meets the edge too obliquely to lead out along it
      */
-    static ToolpathSection openOutsideProfile(
-            String label,
-            List<Curve2> chain,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol,
-            List<String> problems) {
+    ToolpathSection openOutsideProfile(String label, List<Curve2> chain, Contour stock, List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         Vec2 s = chain.get(0).start();
@@ -377,24 +365,14 @@ final class OpenSideMilling {
      *
      * @param walls the wall chain, start to end
      * @param stock the stock's outline in the feature frame, counter-clockwise
-     * @param climb with M3: passes in order with the material on the tool's right, the loop
-     *     counter-clockwise
+     * <p>Climbing with M3, passes run in order with the material on the tool's right, the loop
+     * counter-clockwise.
+     *
      * @throws UnsupportedOperationException when the open side is not on the stock's edge or the
      *     tool does not fit
      */
-    static ToolpathSection openPocket(
-            String label,
-            List<Curve2> walls,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol,
-            List<String> problems) {
+    ToolpathSection openPocket(
+            String label, List<Curve2> walls, Contour stock, double stepoverMm, List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         Profile region = new Profile.General(carriedPastOpenSide(walls, stock, off, t, tol), ContourOffsetter.EXACT);

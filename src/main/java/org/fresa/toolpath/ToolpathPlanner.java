@@ -522,17 +522,7 @@ public final class ToolpathPlanner {
                     problems.add("workingstep '" + label + "': the stock reaches " + mm(reach) + " mm beyond the"
                             + " outside profile; the contour cuts the " + mm(tooling.diameterMm()) + " mm next to it");
                 }
-                local = OpenSideMilling.outsideProfile(
-                        label,
-                        outline,
-                        stock,
-                        h,
-                        tooling,
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol);
+                local = openSide(op, h, tooling, axial, tol).outsideProfile(label, outline, stock);
             }
             case OPEN_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -620,19 +610,8 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : OpenSideMilling.openPocket(
-                                label,
-                                walls,
-                                stock,
-                                oh,
-                                tooling,
-                                stepover(op, tooling),
-                                axial,
-                                sideAllowanceMm(op),
-                                bottomAllowanceMm(op),
-                                climb(op),
-                                tol,
-                                problems);
+                        : openSide(op, oh, tooling, axial, tol)
+                                .openPocket(label, walls, stock, stepover(op, tooling), problems);
             }
             default ->
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
@@ -964,18 +943,7 @@ public final class ToolpathPlanner {
             throw new IllegalArgumentException("the open outside profile has no elements");
         }
         Contour stock = stockOutline(holes.program(), f, place, "outside profile");
-        return OpenSideMilling.openOutsideProfile(
-                label,
-                chain,
-                stock,
-                h,
-                tooling,
-                axial,
-                sideAllowanceMm(op),
-                bottomAllowanceMm(op),
-                climb(op),
-                tol,
-                problems);
+        return openSide(op, h, tooling, axial, tol).openOutsideProfile(label, chain, stock, problems);
     }
 
     /**
@@ -1002,21 +970,23 @@ public final class ToolpathPlanner {
                     + " deg is cut in " + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and "
                     + mm(layer * footPerMm) + " mm wide are left on it");
         }
-        return OpenSideMilling.step(
-                label,
-                st.lengthMm(),
-                st.widthMm(),
-                st.openStart(),
-                st.openEnd(),
-                footPerMm,
-                h,
-                tooling,
-                stepover(op, tooling),
-                layer,
-                sideAllowanceMm(op),
-                bottomAllowanceMm(op),
-                climb(op),
-                tol);
+        return openSide(op, h, tooling, layer, tol)
+                .step(
+                        label,
+                        st.lengthMm(),
+                        st.widthMm(),
+                        st.openStart(),
+                        st.openEnd(),
+                        footPerMm,
+                        stepover(op, tooling));
+    }
+
+    /**
+     * How the operation mills a feature open to the outside in these heights and layers: the
+     * allowances a roughing leaves, climb milling unless its cutmode says conventional.
+     */
+    private static OpenSideMilling openSide(Operation op, Heights h, Tooling tooling, double axial, Tolerance tol) {
+        return new OpenSideMilling(h, tooling, axial, sideAllowanceMm(op), bottomAllowanceMm(op), climb(op), tol);
     }
 
     /**
