@@ -74,13 +74,11 @@ record OpenSideMilling(
         x1 = Math.max(x1, x0);
         double outY = -(widthMm + r + OUTSIDE_MM);
         ToolpathPlanner.bounded("the step's width", widthMm, "the stepover", stepoverMm);
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         double xa = climb ? x1 : x0;
         double xb = climb ? x0 : x1;
         MoveBuilder b = new MoveBuilder(new Vec3(xa, outY, h.clearanceZ()));
         b.rapid(new Vec3(xa, outY, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             double wallY = -(r + sideAllowanceMm) - footPerMm * (h.topZ() - z);
             // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
             List<Double> ys = new ArrayList<>();
@@ -151,21 +149,7 @@ record OpenSideMilling(
         if (climb) {
             ring = reversed(ring);
         }
-        Vec2 p = ring.get(0).start();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
-        MoveBuilder b = new MoveBuilder(Vec3.of(bestOut, h.clearanceZ()));
-        b.rapid(Vec3.of(bestOut, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
-            b.rapid(Vec3.of(bestOut, h.retractZ()));
-            b.feed(Vec3.of(bestOut, z), t.plungeFeedMmPerMin());
-            b.feed(Vec3.of(p, z), t.feedMmPerMin());
-            b.curves(ring, z, t.feedMmPerMin());
-            b.feed(Vec3.of(bestOut, z), t.feedMmPerMin());
-            b.rapid(Vec3.of(bestOut, h.retractZ()));
-        }
-        b.rapid(Vec3.of(bestOut, h.clearanceZ()));
-        return t.section(label, Vec3.of(bestOut, h.clearanceZ()), b.moves());
+        return passesFromTheAir(label, bestOut, ring, bestOut);
     }
 
     /**
@@ -270,24 +254,34 @@ record OpenSideMilling(
                             + " open outside profile; the pass cuts the " + ToolpathPlanner.mm(t.diameterMm())
                             + " mm next to it");
         }
-        Vec2 p0 = path.get(0).start();
-        Vec2 p1 = path.get(path.size() - 1).end();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        return passesFromTheAir(label, in, path, out);
+    }
+
+    /**
+     * One pass a layer from the air: down beyond the stock at {@code in}, in at depth to the
+     * path's start, along the path, out to {@code out} beyond the stock and up to the retract
+     * height; from the clearance height and back to it.
+     */
+    private ToolpathSection passesFromTheAir(String label, Vec2 in, List<Curve2> path, Vec2 out) {
         MoveBuilder b = new MoveBuilder(Vec3.of(in, h.clearanceZ()));
         b.rapid(Vec3.of(in, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
             b.rapid(Vec3.of(in, h.retractZ()));
-            // down in the air beyond the block, in along the chain's tangent
             b.feed(Vec3.of(in, z), t.plungeFeedMmPerMin());
-            b.feed(Vec3.of(p0, z), t.feedMmPerMin());
+            b.feed(Vec3.of(path.get(0).start(), z), t.feedMmPerMin());
             b.curves(path, z, t.feedMmPerMin());
             b.feed(Vec3.of(out, z), t.feedMmPerMin());
             b.rapid(Vec3.of(out, h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
         return t.section(label, Vec3.of(in, h.clearanceZ()), b.moves());
+    }
+
+    /** The layers' heights down to the floor, the bottom allowance left on it (never above the top). */
+    private double[] layerZs() {
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        return new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor)).layers(axialMm);
     }
 
     private static double distance(List<Curve2> cs, Vec2 p) {
@@ -412,10 +406,8 @@ record OpenSideMilling(
         }
         Vec2 loopStart = loop.get(0).start();
         Vec2 first = passes.isEmpty() ? loopStart : passes.get(0).start();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             for (Pass p : passes) {
                 b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
                 b.rapid(Vec3.of(p.start(), h.retractZ()));
