@@ -38,5 +38,14 @@ run bad-run run samples/pocket/cavity01.dad --out "$out/bad-run"
 run bad-stepnc stepnc samples/pocket/cavity01.dad
 run bad-option cut samples/cutting/plate.dxf --out "$out/bad-opt.ngc" --kerf abc
 run bad-missing toolpath /nonexistent.stp --out "$out/bad-missing"
+# the STEP-NC toolpaths of every sample and of the reference corpus (FRESA_STEPNC_CORPUS, when present)
+corpus=${FRESA_STEPNC_CORPUS:-/work/shared/corpus/stepnc}
+for p in samples/stepnc/*.stp "$corpus"/*/*; do
+  [ -f "$p" ] || continue
+  n=toolpath-$(basename "$(dirname "$p")")-$(basename "$p" | tr -c 'A-Za-z0-9.\n-' '_')
+  run "$n" toolpath "$p" --out "$out/$n"
+  # files whose spindle speed and cutting speed disagree are refused above: planned here from the cutting speed
+  run "$n-trust" toolpath "$p" --out "$out/$n-trust" --trust-cutting-speed
+done
 # the temporary dir name appears in messages: make it neutral
 grep -rl --exclude='*.png' "$out" "$out" 2>/dev/null | xargs -r sed -i "s#$out#OUT#g"

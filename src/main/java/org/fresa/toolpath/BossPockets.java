@@ -190,17 +190,7 @@ final class BossPockets {
             problems.add("workingstep '" + label + "': the " + what + " with bosses is cut to size: its allowances are"
                     + " not left");
         }
-        double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
-        PocketTechnology tech = new PocketTechnology(
-                t.diameterMm(),
-                fraction,
-                0,
-                h.topZ(),
-                h.bottomZ(),
-                axialMm > 0 ? axialMm : depth,
-                Math.max(t.spindleRpm(), 1),
-                t.feedMmPerMin(),
-                t.feedMmPerMin());
+        PocketTechnology tech = t.regionTechnology(stepoverMm, h.topZ(), h.bottomZ(), axialMm > 0 ? axialMm : depth);
         Toolpath path;
         try {
             path = RegionPocket.plan(outer, islands, tech, climb, entry).toolpath();

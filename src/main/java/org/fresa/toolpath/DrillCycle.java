@@ -109,63 +109,37 @@ public record DrillCycle(
 
     /** The same cycle leaving at the given fraction of the feed. */
     public DrillCycle withRetractFeed(double factor) {
-        return new DrillCycle(
-                tipLength,
-                startDepth,
-                startFeedFactor,
-                endDepth,
-                endFeedFactor,
-                firstPeck,
-                peck,
-                retractDistance,
-                factor,
-                dwellBottomS,
-                dwellStepS,
-                spindleStopAtBottom,
-                startSpeedFactor,
-                endSpeedFactor);
+        return withBottomAndExit(
+                factor, dwellBottomS, dwellStepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
     }
 
     /** The same cycle with these dwells (s) at the bottom and at each step. */
     public DrillCycle withDwells(double bottomS, double stepS) {
-        return new DrillCycle(
-                tipLength,
-                startDepth,
-                startFeedFactor,
-                endDepth,
-                endFeedFactor,
-                firstPeck,
-                peck,
-                retractDistance,
-                retractFeedFactor,
-                bottomS,
-                stepS,
-                spindleStopAtBottom,
-                startSpeedFactor,
-                endSpeedFactor);
+        return withBottomAndExit(
+                retractFeedFactor, bottomS, stepS, spindleStopAtBottom, startSpeedFactor, endSpeedFactor);
     }
 
     /** The same cycle stopping the spindle at the bottom, or not. */
     public DrillCycle withSpindleStopAtBottom(boolean stop) {
-        return new DrillCycle(
-                tipLength,
-                startDepth,
-                startFeedFactor,
-                endDepth,
-                endFeedFactor,
-                firstPeck,
-                peck,
-                retractDistance,
-                retractFeedFactor,
-                dwellBottomS,
-                dwellStepS,
-                stop,
-                startSpeedFactor,
-                endSpeedFactor);
+        return withBottomAndExit(retractFeedFactor, dwellBottomS, dwellStepS, stop, startSpeedFactor, endSpeedFactor);
     }
 
     /** The same cycle with these spindle speed fractions over the start and end zones. */
     public DrillCycle withSpeedFactors(double start, double end) {
+        return withBottomAndExit(retractFeedFactor, dwellBottomS, dwellStepS, spindleStopAtBottom, start, end);
+    }
+
+    /**
+     * The same feed zones and steps, with these ways of turning the spindle, waiting at the
+     * bottom and leaving: what the withers above change one at a time.
+     */
+    private DrillCycle withBottomAndExit(
+            double retractFeed,
+            double dwellBottom,
+            double dwellStep,
+            boolean stop,
+            double startSpeed,
+            double endSpeed) {
         return new DrillCycle(
                 tipLength,
                 startDepth,
@@ -175,12 +149,12 @@ public record DrillCycle(
                 firstPeck,
                 peck,
                 retractDistance,
-                retractFeedFactor,
-                dwellBottomS,
-                dwellStepS,
-                spindleStopAtBottom,
-                start,
-                end);
+                retractFeed,
+                dwellBottom,
+                dwellStep,
+                stop,
+                startSpeed,
+                endSpeed);
     }
 
     boolean pecks() {

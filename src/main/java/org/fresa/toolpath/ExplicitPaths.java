@@ -76,8 +76,7 @@ final class ExplicitPaths {
                 }
             }
         }
-        return new ToolpathSection(
-                label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), start, mb.moves());
+        return t.section(label, start, mb.moves());
     }
 
     private static String n(double d) {

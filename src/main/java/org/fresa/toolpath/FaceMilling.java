@@ -82,13 +82,6 @@ public final class FaceMilling {
             mb.rapid(new Vec3(mb.at().x(), mb.at().y(), h.retractZ()));
         }
         mb.rapid(new Vec3(mb.at().x(), mb.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                tool.diameterMm(),
-                tool.toolNumber(),
-                tool.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()),
-                mb.moves());
+        return tool.section(label, Vec3.of(first, h.clearanceZ()), mb.moves());
     }
 }

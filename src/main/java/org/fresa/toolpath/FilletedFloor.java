@@ -125,17 +125,7 @@ final class FilletedFloor {
             throw new UnsupportedOperationException(
                     "the pocket is narrower than its floor's fillets: no floor is left" + " between them");
         }
-        double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
-        PocketTechnology tech = new PocketTechnology(
-                t.diameterMm(),
-                fraction,
-                0,
-                filletTop,
-                floor,
-                axialMm > 0 ? axialMm : rhoMm,
-                Math.max(t.spindleRpm(), 1),
-                t.feedMmPerMin(),
-                t.feedMmPerMin());
+        PocketTechnology tech = t.regionTechnology(stepoverMm, filletTop, floor, axialMm > 0 ? axialMm : rhoMm);
         ToolpathSection floorPass;
         try {
             floorPass = RegionPocket.plan(band, tech, climb, entry, true, false)
@@ -163,8 +153,7 @@ final class FilletedFloor {
         filletLevels(b, boundary, rhoMm, wall, floor, h, t, climb, tol);
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), top.start(), b.moves());
+        return t.section(label, top.start(), b.moves());
     }
 
     private static Vec3 atRetract(Vec3 p, double engineSafe, Heights h) {

@@ -100,14 +100,7 @@ public final class HoleMaking {
             b.spindleStart(tool.spindleRpm(), true);
         }
         b.rapid(Vec3.of(center, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                tool.diameterMm(),
-                tool.toolNumber(),
-                tool.spindleRpm(),
-                Vec3.of(center, h.clearanceZ()),
-                b.moves());
+        return tool.section(label, Vec3.of(center, h.clearanceZ()), b.moves());
     }
 
     /**
@@ -271,13 +264,6 @@ public final class HoleMaking {
         b.feed(Vec3.of(center, h.bottomZ()), tool.feedMmPerMin());
         b.rapid(Vec3.of(center, h.retractZ()));
         b.rapid(Vec3.of(center, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                tool.diameterMm(),
-                tool.toolNumber(),
-                tool.spindleRpm(),
-                Vec3.of(p0, h.clearanceZ()),
-                List.copyOf(b.moves()));
+        return tool.section(label, Vec3.of(p0, h.clearanceZ()), List.copyOf(b.moves()));
     }
 }

@@ -75,17 +75,7 @@ public record MillingPlan(
     }
 
     public MillingPlan withApproach(Approach a) {
-        return new MillingPlan(
-                strategy,
-                stepoverMm,
-                axialDepthMm,
-                sideAllowanceMm,
-                bottomAllowanceMm,
-                feedDirection,
-                clockwise,
-                a,
-                finishPass,
-                entry);
+        return withEntering(feedDirection, clockwise, a, entry);
     }
 
     public MillingPlan withAllowances(double side, double bottom, boolean finish) {
@@ -94,31 +84,17 @@ public record MillingPlan(
     }
 
     public MillingPlan withDirection(Vec2 feed, boolean cw) {
-        return new MillingPlan(
-                strategy,
-                stepoverMm,
-                axialDepthMm,
-                sideAllowanceMm,
-                bottomAllowanceMm,
-                feed,
-                cw,
-                approach,
-                finishPass,
-                entry);
+        return withEntering(feed, cw, approach, entry);
     }
 
     /** The same plan entered as the user asks ({@link PlanningChoices#entry()}). */
     public MillingPlan withEntry(org.fresa.pocket.EntryRule e) {
+        return withEntering(feedDirection, clockwise, approach, e);
+    }
+
+    /** The same pattern, depths and allowances, run in this direction and sense and entered so. */
+    private MillingPlan withEntering(Vec2 feed, boolean cw, Approach a, org.fresa.pocket.EntryRule e) {
         return new MillingPlan(
-                strategy,
-                stepoverMm,
-                axialDepthMm,
-                sideAllowanceMm,
-                bottomAllowanceMm,
-                feedDirection,
-                clockwise,
-                approach,
-                finishPass,
-                e);
+                strategy, stepoverMm, axialDepthMm, sideAllowanceMm, bottomAllowanceMm, feed, cw, a, finishPass, e);
     }
 }

@@ -16,13 +16,26 @@ import org.fresa.model.ToolpathSection;
  * depth rather than ramping into the material: steps (ISO 14649-10 step) and general outside
  * profiles. With the spindle turning clockwise (M3), climb milling keeps the material being cut
  * on the right of the tool's travel.
+ *
+ * @param h the feature's heights in its frame
+ * @param t the cutter and its feeds
+ * @param axialMm depth of each layer; 0 or less for one layer
+ * @param sideAllowanceMm material left on the walls, >= 0
+ * @param bottomAllowanceMm material left on the floor, >= 0
+ * @param climb climb milling (the material on the tool's right with M3), else conventional
+ * @param tol the tolerance of the geometry
  */
-final class OpenSideMilling {
+record OpenSideMilling(
+        Heights h,
+        Tooling t,
+        double axialMm,
+        double sideAllowanceMm,
+        double bottomAllowanceMm,
+        boolean climb,
+        Tolerance tol) {
 
     /** How far outside the stock the tool goes down and comes back up, beyond its radius (mm). */
     static final double OUTSIDE_MM = 2.0;
-
-    private OpenSideMilling() {}
 
     /**
      * A step in its frame: x along the open boundary from its start (0 to length), the wall at
@@ -33,63 +46,24 @@ final class OpenSideMilling {
      * layer's depth. An end of the step where the stock ends lets the tool run past it; a closed
      * end keeps the tool's edge within the path's length.
      *
-     * @param climb with M3: passes run along -x (the step's material on the tool's right)
-     * @throws UnsupportedOperationException when the tool does not fit between closed ends
-     */
-    static ToolpathSection step(
-            String label,
-            double lengthMm,
-            double widthMm,
-            boolean openStart,
-            boolean openEnd,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
-        return step(
-                label,
-                lengthMm,
-                widthMm,
-                openStart,
-                openEnd,
-                0,
-                h,
-                t,
-                stepoverMm,
-                axialMm,
-                sideAllowanceMm,
-                bottomAllowanceMm,
-                climb,
-                tol);
-    }
-
-    /**
-     * A step whose wall slopes back from its foot: each layer's passes go in to the wall where it
+     * <p>A wall that slopes back from its foot: each layer's passes go in to the wall where it
      * stands at the layer's bottom, so the tool stays within the step and leaves a step on the
      * wall as high as the layer.
      *
      * @param footPerMm how far (mm) the wall lies farther out (towards -y) for each mm below the
      *     step's top: 0 for a vertical wall, -1 / tan(profile_angle) for a sloped one
+     * <p>Climbing with M3, passes run along -x (the step's material on the tool's right).
+     *
+     * @throws UnsupportedOperationException when the tool does not fit between closed ends
      */
-    static ToolpathSection step(
+    ToolpathSection step(
             String label,
             double lengthMm,
             double widthMm,
             boolean openStart,
             boolean openEnd,
             double footPerMm,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
+            double stepoverMm) {
         double r = t.radiusMm();
         double x0 = openStart ? -(r + OUTSIDE_MM) : r;
         double x1 = openEnd ? lengthMm + r + OUTSIDE_MM : lengthMm - r;
@@ -100,13 +74,11 @@ final class OpenSideMilling {
         x1 = Math.max(x1, x0);
         double outY = -(widthMm + r + OUTSIDE_MM);
         ToolpathPlanner.bounded("the step's width", widthMm, "the stepover", stepoverMm);
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         double xa = climb ? x1 : x0;
         double xb = climb ? x0 : x1;
         MoveBuilder b = new MoveBuilder(new Vec3(xa, outY, h.clearanceZ()));
         b.rapid(new Vec3(xa, outY, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             double wallY = -(r + sideAllowanceMm) - footPerMm * (h.topZ() - z);
             // the first pass takes one stepover off the open edge, each next one a stepover nearer the wall
             List<Double> ys = new ArrayList<>();
@@ -127,14 +99,7 @@ final class OpenSideMilling {
             }
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                new Vec3(xa, outY, h.clearanceZ()),
-                b.moves());
+        return t.section(label, new Vec3(xa, outY, h.clearanceZ()), b.moves());
     }
 
     /**
@@ -144,20 +109,11 @@ final class OpenSideMilling {
      *
      * @param part the part's outline (the material kept), counter-clockwise, in the feature frame
      * @param stock the stock's outline in the same frame, counter-clockwise
-     * @param climb with M3: the loop runs clockwise (the part on the tool's right)
+     * <p>Climbing with M3, the loop runs clockwise (the part on the tool's right).
+     *
      * @throws UnsupportedOperationException when no straight lead-in from outside the stock clears the part
      */
-    static ToolpathSection outsideProfile(
-            String label,
-            Contour part,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol) {
+    ToolpathSection outsideProfile(String label, Contour part, Contour stock) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         List<Contour> loops = org.fresa.pocket.LineArcOffsetter.offset(part, off, tol);
@@ -193,28 +149,7 @@ final class OpenSideMilling {
         if (climb) {
             ring = reversed(ring);
         }
-        Vec2 p = ring.get(0).start();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
-        MoveBuilder b = new MoveBuilder(Vec3.of(bestOut, h.clearanceZ()));
-        b.rapid(Vec3.of(bestOut, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
-            b.rapid(Vec3.of(bestOut, h.retractZ()));
-            b.feed(Vec3.of(bestOut, z), t.plungeFeedMmPerMin());
-            b.feed(Vec3.of(p, z), t.feedMmPerMin());
-            b.curves(ring, z, t.feedMmPerMin());
-            b.feed(Vec3.of(bestOut, z), t.feedMmPerMin());
-            b.rapid(Vec3.of(bestOut, h.retractZ()));
-        }
-        b.rapid(Vec3.of(bestOut, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(bestOut, h.clearanceZ()),
-                b.moves());
+        return passesFromTheAir(label, bestOut, ring, bestOut);
     }
 
     /**
@@ -227,22 +162,12 @@ final class OpenSideMilling {
      *
      * @param chain the profile, start to end, in the feature frame
      * @param stock the stock's outline in the same frame, counter-clockwise
-     * @param climb with M3: the pass runs against the chain (the material on the tool's right)
+     * <p>Climbing with M3, the pass runs against the chain (the material on the tool's right).
+     *
      * @throws UnsupportedOperationException when an end is not on the block's edge, the chain
      *     leaves the block, or an end meets the edge too obliquely to lead out along it
      */
-    static ToolpathSection openOutsideProfile(
-            String label,
-            List<Curve2> chain,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol,
-            List<String> problems) {
+    ToolpathSection openOutsideProfile(String label, List<Curve2> chain, Contour stock, List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         Vec2 s = chain.get(0).start();
@@ -329,31 +254,34 @@ final class OpenSideMilling {
                             + " open outside profile; the pass cuts the " + ToolpathPlanner.mm(t.diameterMm())
                             + " mm next to it");
         }
-        Vec2 p0 = path.get(0).start();
-        Vec2 p1 = path.get(path.size() - 1).end();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
+        return passesFromTheAir(label, in, path, out);
+    }
+
+    /**
+     * One pass a layer from the air: down beyond the stock at {@code in}, in at depth to the
+     * path's start, along the path, out to {@code out} beyond the stock and up to the retract
+     * height; from the clearance height and back to it.
+     */
+    private ToolpathSection passesFromTheAir(String label, Vec2 in, List<Curve2> path, Vec2 out) {
         MoveBuilder b = new MoveBuilder(Vec3.of(in, h.clearanceZ()));
         b.rapid(Vec3.of(in, h.retractZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
             b.rapid(Vec3.of(in, h.retractZ()));
-            // down in the air beyond the block, in along the chain's tangent
             b.feed(Vec3.of(in, z), t.plungeFeedMmPerMin());
-            b.feed(Vec3.of(p0, z), t.feedMmPerMin());
+            b.feed(Vec3.of(path.get(0).start(), z), t.feedMmPerMin());
             b.curves(path, z, t.feedMmPerMin());
             b.feed(Vec3.of(out, z), t.feedMmPerMin());
             b.rapid(Vec3.of(out, h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(in, h.clearanceZ()),
-                b.moves());
+        return t.section(label, Vec3.of(in, h.clearanceZ()), b.moves());
+    }
+
+    /** The layers' heights down to the floor, the bottom allowance left on it (never above the top). */
+    private double[] layerZs() {
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        return new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor)).layers(axialMm);
     }
 
     private static double distance(List<Curve2> cs, Vec2 p) {
@@ -431,24 +359,14 @@ final class OpenSideMilling {
      *
      * @param walls the wall chain, start to end
      * @param stock the stock's outline in the feature frame, counter-clockwise
-     * @param climb with M3: passes in order with the material on the tool's right, the loop
-     *     counter-clockwise
+     * <p>Climbing with M3, passes run in order with the material on the tool's right, the loop
+     * counter-clockwise.
+     *
      * @throws UnsupportedOperationException when the open side is not on the stock's edge or the
      *     tool does not fit
      */
-    static ToolpathSection openPocket(
-            String label,
-            List<Curve2> walls,
-            Contour stock,
-            Heights h,
-            Tooling t,
-            double stepoverMm,
-            double axialMm,
-            double sideAllowanceMm,
-            double bottomAllowanceMm,
-            boolean climb,
-            Tolerance tol,
-            List<String> problems) {
+    ToolpathSection openPocket(
+            String label, List<Curve2> walls, Contour stock, double stepoverMm, List<String> problems) {
         double r = t.radiusMm();
         double off = r + sideAllowanceMm;
         Profile region = new Profile.General(carriedPastOpenSide(walls, stock, off, t, tol), ContourOffsetter.EXACT);
@@ -488,10 +406,8 @@ final class OpenSideMilling {
         }
         Vec2 loopStart = loop.get(0).start();
         Vec2 first = passes.isEmpty() ? loopStart : passes.get(0).start();
-        double floor = h.bottomZ() + bottomAllowanceMm;
-        Heights layers = new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), Math.min(h.topZ(), floor));
         MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
-        for (double z : layers.layers(axialMm)) {
+        for (double z : layerZs()) {
             for (Pass p : passes) {
                 b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
                 b.rapid(Vec3.of(p.start(), h.retractZ()));
@@ -506,14 +422,7 @@ final class OpenSideMilling {
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()),
-                b.moves());
+        return t.section(label, Vec3.of(first, h.clearanceZ()), b.moves());
     }
 
     /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */

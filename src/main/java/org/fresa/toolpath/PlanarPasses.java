@@ -117,14 +117,9 @@ public final class PlanarPasses {
         Vec2 n = u.leftNormal();
         org.fresa.geom.Contour c = new org.fresa.geom.Contour(region.curves());
         org.fresa.geom.Box2 box = c.bounds();
-        double lo = Double.POSITIVE_INFINITY;
-        double hi = Double.NEGATIVE_INFINITY;
-        for (Curve2 cu : region.curves()) {
-            for (Vec2 p : extremes(cu, n)) {
-                lo = Math.min(lo, p.dot(n));
-                hi = Math.max(hi, p.dot(n));
-            }
-        }
+        Band band = Band.across(region, n);
+        double lo = band.lo();
+        double hi = band.hi();
         double reach =
                 4 * (Math.abs(box.minX()) + Math.abs(box.maxX()) + Math.abs(box.minY()) + Math.abs(box.maxY()) + 1);
         int m = (int) Math.ceil((hi - lo) / stepoverMm - 1e-9);
@@ -262,14 +257,9 @@ public final class PlanarPasses {
         if (region.curves().isEmpty()) {
             return List.of(new Pass(region.start(), List.of(), false));
         }
-        double lo = Double.POSITIVE_INFINITY;
-        double hi = Double.NEGATIVE_INFINITY;
-        for (Curve2 c : region.curves()) {
-            for (Vec2 p : extremes(c, n)) {
-                lo = Math.min(lo, p.dot(n));
-                hi = Math.max(hi, p.dot(n));
-            }
-        }
+        Band band = Band.across(region, n);
+        double lo = band.lo();
+        double hi = band.hi();
         double span = hi - lo;
         double reach = 0;
         for (Curve2 c : region.curves()) {
@@ -309,6 +299,24 @@ public final class PlanarPasses {
             out.add(new Pass(from, cs, zigzag && !out.isEmpty()));
         }
         return out;
+    }
+
+    /**
+     * The band of lines square to {@code n} that the ring lies within: the least and the greatest
+     * {@code p . n} over its curves, arcs' bulges included.
+     */
+    private record Band(double lo, double hi) {
+        static Band across(Ring region, Vec2 n) {
+            double lo = Double.POSITIVE_INFINITY;
+            double hi = Double.NEGATIVE_INFINITY;
+            for (Curve2 c : region.curves()) {
+                for (Vec2 p : extremes(c, n)) {
+                    lo = Math.min(lo, p.dot(n));
+                    hi = Math.max(hi, p.dot(n));
+                }
+            }
+            return new Band(lo, hi);
+        }
     }
 
     private static List<Vec2> extremes(Curve2 c, Vec2 n) {

@@ -71,14 +71,7 @@ public final class PocketMilling {
         }
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                tool.diameterMm(),
-                tool.toolNumber(),
-                tool.spindleRpm(),
-                Vec3.of(first, h.clearanceZ()),
-                b.moves());
+        return tool.section(label, Vec3.of(first, h.clearanceZ()), b.moves());
     }
 
     static void layer(

@@ -538,17 +538,8 @@ final class SlotMilling {
         if (!(depth > 0)) {
             throw new IllegalArgumentException("the loop slot's layer has no depth");
         }
-        double fraction = Math.min(1, Math.max(stepoverMm / t.diameterMm(), 1e-3));
-        org.fresa.pocket.PocketTechnology tech = new org.fresa.pocket.PocketTechnology(
-                t.diameterMm(),
-                fraction,
-                0,
-                h.topZ(),
-                h.bottomZ(),
-                axialMm > 0 ? axialMm : depth,
-                Math.max(t.spindleRpm(), 1),
-                t.feedMmPerMin(),
-                t.feedMmPerMin());
+        org.fresa.pocket.PocketTechnology tech =
+                t.regionTechnology(stepoverMm, h.topZ(), h.bottomZ(), axialMm > 0 ? axialMm : depth);
         org.fresa.model.Toolpath path;
         try {
             path = org.fresa.pocket.RegionPocket.plan(outer, islands, tech, climb, entry)
@@ -915,14 +906,7 @@ final class SlotMilling {
         b.feed(new Vec3(outside, 0, z), t.feedMmPerMin());
         b.rapid(new Vec3(outside, 0, h.retractZ()));
         b.rapid(new Vec3(outside, 0, h.clearanceZ()));
-        return new ToolpathSection(
-                label,
-                Vec3.UNIT_Z,
-                t.diameterMm(),
-                t.toolNumber(),
-                t.spindleRpm(),
-                new Vec3(outside, 0, h.clearanceZ()),
-                b.moves());
+        return t.section(label, new Vec3(outside, 0, h.clearanceZ()), b.moves());
     }
 
     /** A T-slot mill fits the cross bar: no wider than the bar, no narrower than the stem, its edge as deep as the bar. */
@@ -1002,7 +986,7 @@ final class SlotMilling {
         b.feed(Vec3.of(outside, z), t.feedMmPerMin());
         b.rapid(Vec3.of(outside, h.retractZ()));
         b.rapid(o3);
-        return new ToolpathSection(label, Vec3.UNIT_Z, t.diameterMm(), t.toolNumber(), t.spindleRpm(), o3, b.moves());
+        return t.section(label, o3, b.moves());
     }
 
     private static String mm(double v) {

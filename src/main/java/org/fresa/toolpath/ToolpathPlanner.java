@@ -486,22 +486,7 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : st.sloped()
-                                ? slopedStep(label, st, h, tooling, op, axial, tol, problems)
-                                : OpenSideMilling.step(
-                                        label,
-                                        st.lengthMm(),
-                                        st.widthMm(),
-                                        st.openStart(),
-                                        st.openEnd(),
-                                        h,
-                                        tooling,
-                                        stepover(op, tooling),
-                                        axial,
-                                        sideAllowanceMm(op),
-                                        bottomAllowanceMm(op),
-                                        climb(op),
-                                        tol);
+                        : step(label, st, h, tooling, op, axial, tol, problems);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -537,17 +522,7 @@ public final class ToolpathPlanner {
                     problems.add("workingstep '" + label + "': the stock reaches " + mm(reach) + " mm beyond the"
                             + " outside profile; the contour cuts the " + mm(tooling.diameterMm()) + " mm next to it");
                 }
-                local = OpenSideMilling.outsideProfile(
-                        label,
-                        outline,
-                        stock,
-                        h,
-                        tooling,
-                        axial,
-                        sideAllowanceMm(op),
-                        bottomAllowanceMm(op),
-                        climb(op),
-                        tol);
+                local = openSide(op, h, tooling, axial, tol).outsideProfile(label, outline, stock);
             }
             case OPEN_POCKET -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -635,19 +610,8 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : OpenSideMilling.openPocket(
-                                label,
-                                walls,
-                                stock,
-                                oh,
-                                tooling,
-                                stepover(op, tooling),
-                                axial,
-                                sideAllowanceMm(op),
-                                bottomAllowanceMm(op),
-                                climb(op),
-                                tol,
-                                problems);
+                        : openSide(op, oh, tooling, axial, tol)
+                                .openPocket(label, walls, stock, stepover(op, tooling), problems);
             }
             default ->
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
@@ -979,26 +943,16 @@ public final class ToolpathPlanner {
             throw new IllegalArgumentException("the open outside profile has no elements");
         }
         Contour stock = stockOutline(holes.program(), f, place, "outside profile");
-        return OpenSideMilling.openOutsideProfile(
-                label,
-                chain,
-                stock,
-                h,
-                tooling,
-                axial,
-                sideAllowanceMm(op),
-                bottomAllowanceMm(op),
-                climb(op),
-                tol,
-                problems);
+        return openSide(op, h, tooling, axial, tol).openOutsideProfile(label, chain, stock, problems);
     }
 
     /**
-     * A step whose wall slopes back: layers no thicker than the vee slots' (docs/slots.md), each
-     * cut in to where the wall stands at its bottom; the steps this leaves on the wall are reported
-     * with their height and width.
+     * A step without bosses, cut from the air beyond its open side. A wall that slopes back is cut
+     * in layers no thicker than the vee slots' (docs/slots.md), each cut in to where the wall
+     * stands at its bottom; the steps this leaves on the wall are reported with their height and
+     * width.
      */
-    private static ToolpathSection slopedStep(
+    private static ToolpathSection step(
             String label,
             StepShape st,
             Heights h,
@@ -1007,26 +961,32 @@ public final class ToolpathPlanner {
             double axial,
             Tolerance tol,
             List<String> problems) {
-        double layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
-        double footPerMm = st.footMm(1);
-        problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg()) + " deg is cut in "
-                + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and " + mm(layer * footPerMm)
-                + " mm wide are left on it");
-        return OpenSideMilling.step(
-                label,
-                st.lengthMm(),
-                st.widthMm(),
-                st.openStart(),
-                st.openEnd(),
-                footPerMm,
-                h,
-                tooling,
-                stepover(op, tooling),
-                layer,
-                sideAllowanceMm(op),
-                bottomAllowanceMm(op),
-                climb(op),
-                tol);
+        double layer = axial;
+        double footPerMm = 0;
+        if (st.sloped()) {
+            layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
+            footPerMm = st.footMm(1);
+            problems.add("workingstep '" + label + "': the wall sloped at " + mm(st.wallAngleDeg())
+                    + " deg is cut in " + mm(layer) + " mm layers: steps up to " + mm(layer) + " mm high and "
+                    + mm(layer * footPerMm) + " mm wide are left on it");
+        }
+        return openSide(op, h, tooling, layer, tol)
+                .step(
+                        label,
+                        st.lengthMm(),
+                        st.widthMm(),
+                        st.openStart(),
+                        st.openEnd(),
+                        footPerMm,
+                        stepover(op, tooling));
+    }
+
+    /**
+     * How the operation mills a feature open to the outside in these heights and layers: the
+     * allowances a roughing leaves, climb milling unless its cutmode says conventional.
+     */
+    private static OpenSideMilling openSide(Operation op, Heights h, Tooling tooling, double axial, Tolerance tol) {
+        return new OpenSideMilling(h, tooling, axial, sideAllowanceMm(op), bottomAllowanceMm(op), climb(op), tol);
     }
 
     /**
