@@ -248,6 +248,14 @@ final class EventThreadWatchdog extends EventQueue implements AutoCloseable {
                 + (out.isEmpty() ? "none over 50 ms" : String.join(", ", out));
     }
 
+    /** The CPU time the JIT's compiler threads have used so far, in ms. */
+    static long compilerCpuMs() {
+        return tasks().stream()
+                .filter(t -> t.name().startsWith("C1 Compiler") || t.name().startsWith("C2 Compiler"))
+                .mapToLong(Task::cpuMs)
+                .sum();
+    }
+
     /** Forgets what was recorded and records from now on. */
     void record() {
         atRecord = tasks().stream().collect(Collectors.toMap(Task::tid, t -> t, (a, b) -> a));
