@@ -109,12 +109,7 @@ final class FilletedFloor {
             Tolerance tol,
             Above above) {
         double floor = h.bottomZ() + bottomAllowanceMm;
-        double filletTop = floor + rhoMm;
-        if (!(filletTop < h.topZ() - tol.linear())) {
-            throw new UnsupportedOperationException("the floor's " + ToolpathPlanner.mm(rhoMm)
-                    + " mm fillet (less the cutter's corner) is as high as the pocket: only fillets lower than the"
-                    + " pocket's walls are milled");
-        }
+        double filletTop = filletTopZ(floor, rhoMm, h, tol);
         double r = t.radiusMm();
         double wall = r + sideAllowanceMm;
         ToolpathSection top =
@@ -154,6 +149,38 @@ final class FilletedFloor {
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
         return t.section(label, top.start(), b.moves());
+    }
+
+    /**
+     * The height of the fillet's top (rho above the floor, which is the floor's height with its
+     * allowance).
+     *
+     * @throws UnsupportedOperationException when the fillet reaches the feature's top
+     */
+    static double filletTopZ(double floorZ, double rhoMm, Heights h, Tolerance tol) {
+        double filletTop = floorZ + rhoMm;
+        if (!(filletTop < h.topZ() - tol.linear())) {
+            throw new UnsupportedOperationException("the floor's " + ToolpathPlanner.mm(rhoMm)
+                    + " mm fillet (less the cutter's corner) is as high as the pocket: only fillets lower than the"
+                    + " pocket's walls are milled");
+        }
+        return filletTop;
+    }
+
+    /**
+     * The offsets from the walls of a level's passes, inside out: the slab between the wall's
+     * offset there (the wall's own offset plus what the fillet takes) and the floor pass's (the
+     * wall's plus rho), passes 0.9 of the cutter's radius apart.
+     */
+    static List<Double> slab(Level level, double wallMm, double rhoMm, double toolRadiusMm) {
+        List<Double> offsets = new ArrayList<>();
+        double d0 = wallMm + level.offsetMm();
+        double deep = wallMm + rhoMm;
+        int extra = (int) Math.ceil((rhoMm - level.offsetMm() - toolRadiusMm) / (0.9 * toolRadiusMm) - 1e-9);
+        for (int k = Math.max(extra, 0); k >= 0; k--) {
+            offsets.add(Math.min(d0 + k * 0.9 * toolRadiusMm, deep));
+        }
+        return offsets;
     }
 
     private static Vec3 atRetract(Vec3 p, double engineSafe, Heights h) {
@@ -198,14 +225,7 @@ final class FilletedFloor {
         List<Pass> passes = new ArrayList<>();
         for (Level level : levels(rhoMm, SCALLOP_MM)) {
             double z = floor + level.heightMm();
-            // the slab between the wall's offset here and the floor pass's, inside out
-            List<Double> offsets = new ArrayList<>();
-            double d0 = wallMm + level.offsetMm();
-            int extra = (int) Math.ceil((rhoMm - level.offsetMm() - t.radiusMm()) / (0.9 * t.radiusMm()) - 1e-9);
-            for (int k = Math.max(extra, 0); k >= 0; k--) {
-                offsets.add(Math.min(d0 + k * 0.9 * t.radiusMm(), deep));
-            }
-            for (double d : offsets) {
+            for (double d : slab(level, wallMm, rhoMm, t.radiusMm())) {
                 for (Contour loop : RegionOffsetter.inward(boundary, d, tol)) {
                     passes.add(ledIn(loop, anchors, d, z, climb));
                 }

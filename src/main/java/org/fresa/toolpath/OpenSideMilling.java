@@ -367,8 +367,27 @@ record OpenSideMilling(
      */
     ToolpathSection openPocket(
             String label, List<Curve2> walls, Contour stock, double stepoverMm, List<String> problems) {
+        Layout layout = layout(label, walls, stock, t.radiusMm() + sideAllowanceMm, stepoverMm, problems);
+        MoveBuilder b = new MoveBuilder(Vec3.of(layout.first(), h.clearanceZ()));
+        cut(b, layout, layerZs());
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return t.section(label, Vec3.of(layout.first(), h.clearanceZ()), b.moves());
+    }
+
+    /** An open pocket's passes from the open side and its loop along the walls, at one offset from them. */
+    private record Layout(List<Pass> passes, List<Curve2> loop) {
+        Vec2 first() {
+            return passes.isEmpty() ? loop.get(0).start() : passes.get(0).start();
+        }
+    }
+
+    /**
+     * The passes square to the open side that start in the air beyond it, and the loop along the
+     * walls started at its point farthest out, with the tool's axis {@code off} from the walls.
+     */
+    private Layout layout(
+            String label, List<Curve2> walls, Contour stock, double off, double stepoverMm, List<String> problems) {
         double r = t.radiusMm();
-        double off = r + sideAllowanceMm;
         Profile region = new Profile.General(carriedPastOpenSide(walls, stock, off, t, tol), ContourOffsetter.EXACT);
         Vec2 s = walls.get(0).start();
         Vec2 out = outOfOpenSide(walls);
@@ -404,11 +423,14 @@ record OpenSideMilling(
         if (!climb) {
             loop = reversed(loop);
         }
-        Vec2 loopStart = loop.get(0).start();
-        Vec2 first = passes.isEmpty() ? loopStart : passes.get(0).start();
-        MoveBuilder b = new MoveBuilder(Vec3.of(first, h.clearanceZ()));
-        for (double z : layerZs()) {
-            for (Pass p : passes) {
+        return new Layout(passes, loop);
+    }
+
+    /** Each layer: the passes from the open side, then the loop along the walls, each entered from the air. */
+    private void cut(MoveBuilder b, Layout layout, double[] zs) {
+        Vec2 loopStart = layout.loop().get(0).start();
+        for (double z : zs) {
+            for (Pass p : layout.passes()) {
                 b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
                 b.rapid(Vec3.of(p.start(), h.retractZ()));
                 b.feed(Vec3.of(p.start(), z), t.plungeFeedMmPerMin());
@@ -418,11 +440,9 @@ record OpenSideMilling(
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
             b.rapid(Vec3.of(loopStart, h.retractZ()));
             b.feed(Vec3.of(loopStart, z), t.plungeFeedMmPerMin());
-            b.curves(loop, z, t.feedMmPerMin());
+            b.curves(layout.loop(), z, t.feedMmPerMin());
             b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
         }
-        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
-        return t.section(label, Vec3.of(first, h.clearanceZ()), b.moves());
     }
 
     /** The closed chain started at its vertex farthest along out (with straight segments split at their middles). */
