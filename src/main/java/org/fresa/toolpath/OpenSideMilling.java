@@ -374,6 +374,68 @@ record OpenSideMilling(
         return t.section(label, Vec3.of(layout.first(), h.clearanceZ()), b.moves());
     }
 
+    /**
+     * An open pocket whose floor meets its walls in a fillet that the cutter's corner cannot
+     * follow (rho, the planar radius less the corner's radius), milled as {@link FilletedFloor}
+     * mills a closed pocket's: the pocket as drawn down to the fillet's top; the floor from there
+     * down with the walls offset by rho, so that the cutter's flat bottom reaches the fillet's
+     * foot; then the fillet by Z-levels at FilletedFloor's heights and wall offsets. The fillet
+     * runs along the walls only: the open side has no wall to meet. Every pass and every level's
+     * loop along the walls is entered from the air beyond the open side, at depth.
+     *
+     * @param rhoMm the planar radius less the cutter's corner radius, > 0
+     * @throws UnsupportedOperationException as {@link #openPocket(String, List, Contour, double,
+     *     List)}, when the fillet is as high as the pocket, or when the open side is too narrow for
+     *     the tool between its fillets
+     */
+    ToolpathSection filletedOpenPocket(
+            String label, List<Curve2> walls, Contour stock, double stepoverMm, double rhoMm, List<String> problems) {
+        double wall = t.radiusMm() + sideAllowanceMm;
+        double floor = h.bottomZ() + bottomAllowanceMm;
+        double filletTop = FilletedFloor.filletTopZ(floor, rhoMm, h, tol);
+        Layout above = layout(label, walls, stock, wall, stepoverMm, problems);
+        // the floor and the levels: the region carried past the open side far enough for the floor pass's offset
+        List<String> floorProblems = new ArrayList<>();
+        Layout floorPass = layout(label, walls, stock, wall + rhoMm, stepoverMm, floorProblems);
+        floorProblems.stream().filter(x -> !problems.contains(x)).forEach(problems::add);
+        MoveBuilder b = new MoveBuilder(Vec3.of(above.first(), h.clearanceZ()));
+        cut(b, above, new Heights(h.clearanceZ(), h.retractZ(), h.topZ(), filletTop).layers(axialMm));
+        cut(b, floorPass, new Heights(h.clearanceZ(), h.retractZ(), filletTop, floor).layers(axialMm));
+        Profile region =
+                new Profile.General(carriedPastOpenSide(walls, stock, wall + rhoMm, t, tol), ContourOffsetter.EXACT);
+        Vec2 out = outOfOpenSide(walls);
+        double edge = walls.get(0).start().dot(out);
+        int left = 0;
+        for (FilletedFloor.Level level : FilletedFloor.levels(rhoMm, FilletedFloor.SCALLOP_MM)) {
+            double z = floor + level.heightMm();
+            for (double d : FilletedFloor.slab(level, wall, rhoMm, t.radiusMm())) {
+                for (Ring ring : region.insetAll(d, tol)) {
+                    List<Curve2> loop = startFarthestOut(ring.curves(), out);
+                    if (!climb) {
+                        loop = reversed(loop);
+                    }
+                    Vec2 in = loop.get(0).start();
+                    if (in.dot(out) < edge + t.radiusMm() + OUTSIDE_MM / 2) {
+                        // a part of the fillet the loop cannot reach from the open side
+                        left++;
+                        continue;
+                    }
+                    b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+                    b.rapid(Vec3.of(in, h.retractZ()));
+                    b.feed(Vec3.of(in, z), t.plungeFeedMmPerMin());
+                    b.curves(loop, z, t.feedMmPerMin());
+                }
+            }
+        }
+        if (left > 0) {
+            problems.add("workingstep '" + label + "': " + left + " Z-level loop(s) round the floor's fillet that the"
+                    + " tool cannot reach from the open side are left");
+        }
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.retractZ()));
+        b.rapid(new Vec3(b.at().x(), b.at().y(), h.clearanceZ()));
+        return t.section(label, Vec3.of(above.first(), h.clearanceZ()), b.moves());
+    }
+
     /** An open pocket's passes from the open side and its loop along the walls, at one offset from them. */
     private record Layout(List<Pass> passes, List<Curve2> loop) {
         Vec2 first() {

@@ -565,10 +565,13 @@ public final class ToolpathPlanner {
                 }
                 double rho = f.planarRadiusMm().orElse(0);
                 double edge = tool.edgeRadiusMm().orElse(0);
-                if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
+                boolean zLevels = !isThrough(f) && f.bosses().isEmpty();
+                if (!zLevels && rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
                     throw new UnsupportedOperationException("the open pocket's floor meets its walls in a " + mm(rho)
                             + " mm radius, which a cutter with a " + mm(edge) + " mm corner would not leave");
                 }
+                // the fillet the cutter's corner cannot follow is milled by Z-levels
+                double beyond = zLevels ? filletBeyondCorner(f, tool, "open pocket", tol) : 0;
                 if (f.orthogonalRadiusMm().orElse(0) > tooling.radiusMm() + tol.linear()) {
                     throw new UnsupportedOperationException("the open pocket's corner radius "
                             + mm(f.orthogonalRadiusMm().getAsDouble()) + " mm is larger than the tool's radius: the"
@@ -610,8 +613,12 @@ public final class ToolpathPlanner {
                                 tol,
                                 holes,
                                 problems)
-                        : openSide(op, oh, tooling, axial, tol)
-                                .openPocket(label, walls, stock, stepover(op, tooling), problems);
+                        : beyond > 0
+                                ? openSide(op, oh, tooling, axial, tol)
+                                        .filletedOpenPocket(
+                                                label, walls, stock, stepover(op, tooling), beyond, problems)
+                                : openSide(op, oh, tooling, axial, tol)
+                                        .openPocket(label, walls, stock, stepover(op, tooling), problems);
             }
             default ->
                 throw new UnsupportedOperationException((f.type() == Feature.FeatureType.OTHER ? f.entity() : f.type())
