@@ -66,8 +66,8 @@ class Part21LexerTest {
             Map.entry("example2.stp", "5c87b08d50cd8e150649d8c49a444baa73ebee221e309d2badeb64ad876a98af"),
             Map.entry(
                     "iso14649-11-example1-explicit-toolpaths.stp",
-                    "e64a4f16ef499a960fbb6b912a3a058b8ff294823aabd776747dd442c77d1bac"),
-            Map.entry("iso14649-11-example1.stp", "8af92083cce54ce1e0c2da217deb9d827c2ab9d55ce8bd493c6bffaa49b0a78b"),
+                    "3d5129911484e20a38c98dd89e7bc0bfb87b18a6abb6ea0225e048ed2a0e4e0b"),
+            Map.entry("iso14649-11-example1.stp", "aa05fe2b9544d8b1f32d97101688b99cbda72d4e9e9d314710bc512fe716a508"),
             Map.entry(
                     "iso14649-11-fdis-example1.p21",
                     "80366f50512c0a38a27b5d99427c3af927d1e67aa5d53858be538da5eaf2e22e"),
