@@ -48,7 +48,8 @@ import org.fresa.stepnc.Tool;
  * <li>Spindle speed and feed: the file's, checked ({@link CuttingData}): a spindle speed from
  * the cutting speed when the spindle is unset, said so; a workingstep with neither, with no
  * feed, or whose spindle and cutting speed disagree tenfold is refused (unless the cutting speed
- * is trusted, {@link PlanningChoices}).
+ * is trusted, {@link PlanningChoices}). A workingstep that cuts deeper below the feature's top
+ * than its tool's cutting_edge_length is refused ({@link #edgeReaches}).
  * <li>Plunges, ramps and drilling feed at half the cutting feed for milling cutters and at the
  * cutting feed for drills. A feed without a unit (STEP Modeler) is a chip load: mm/tooth for
  * milling, mm/rev for drilling, times the spindle speed ({@link FeedRate}). Each such reading is
@@ -317,8 +318,9 @@ public final class ToolpathPlanner {
         }
         if (!op.toolpaths().isEmpty()) {
             // the file gives the path itself (AP238 CC1): followed as written, in the feature frame
-            return Optional.of(viaSecurityPlane(
-                    Placing.place(ExplicitPaths.section(label, op, tooling, problems), place), ws.securityPlane()));
+            ToolpathSection given = ExplicitPaths.section(label, op, tooling, problems);
+            edgeReaches(given, tool, op, h.topZ(), tol);
+            return Optional.of(viaSecurityPlane(Placing.place(given, place), ws.securityPlane()));
         }
         if (!f.bosses().isEmpty() && !BossPockets.LEAVES_BOSSES.contains(f.type())) {
             // cutting it as if it had none would mill its bosses away
@@ -498,11 +500,10 @@ public final class ToolpathPlanner {
                 place = place.times(pp);
                 Profile part;
                 if (sp instanceof org.fresa.stepnc.Profile.General g && !g.closed()) {
-                    return Optional.of(viaSecurityPlane(
-                            Placing.place(
-                                    openOutsideProfile(label, g, f, place, op, h, tooling, axial, tol, holes, problems),
-                                    place),
-                            ws.securityPlane()));
+                    ToolpathSection open =
+                            openOutsideProfile(label, g, f, place, op, h, tooling, axial, tol, holes, problems);
+                    edgeReaches(open, tool, op, h.topZ(), tol);
+                    return Optional.of(viaSecurityPlane(Placing.place(open, place), ws.securityPlane()));
                 }
                 try {
                     part = profile(sp, 0, tol);
@@ -627,6 +628,7 @@ public final class ToolpathPlanner {
         if (!f.bosses().isEmpty()) {
             traversesOverBosses(local, h.topZ(), BossPockets.tallestTopZ(f, place, h), tol);
         }
+        edgeReaches(local, tool, op, sideTopZ(f, tool, h), tol);
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
     }
@@ -826,6 +828,53 @@ public final class ToolpathPlanner {
             }
             at = to;
         }
+    }
+
+    /**
+     * A tool cuts no deeper than its cutting edge (cutting_edge_length) reaches: below it an end
+     * mill's shank, as wide as its flutes, would rub the wall just cut, and a drill's chips could
+     * not leave the hole. The depth is from the feature's top, where the tool's side first meets
+     * material (the stock's top where the feature is open to it), down to the lowest cutting move
+     * of the section, in the feature frame: a hole's tip and breakthrough as planned, a through
+     * pocket's allowance past the block. A tool without an edge length is not checked.
+     *
+     * @throws IllegalArgumentException naming both lengths and the edge that would cut it
+     */
+    /**
+     * The highest material the tool's side meets: the feature's top, except for a T-slot mill
+     * under a tee's stem, whose neck passes the stem already milled and whose disc meets only the
+     * cross bar.
+     */
+    static double sideTopZ(Feature f, Tool tool, Heights h) {
+        if (f.type() == Feature.FeatureType.SLOT
+                && tool.body().equals("T_SLOT_MILL")
+                && f.profile().orElse(null) instanceof org.fresa.stepnc.Profile.Tee tee) {
+            return Math.min(h.topZ(), h.bottomZ() + tee.crossBarDepthMm());
+        }
+        return h.topZ();
+    }
+
+    static void edgeReaches(ToolpathSection local, Tool tool, Operation op, double topZ, Tolerance tol) {
+        if (tool.cuttingEdgeLengthMm().isEmpty()) {
+            return;
+        }
+        double edge = tool.cuttingEdgeLengthMm().getAsDouble();
+        double lowest = Double.POSITIVE_INFINITY;
+        for (Move m : local.moves()) {
+            if (m instanceof Move.Linear || m instanceof Move.Circular) {
+                lowest = Math.min(lowest, m.end().z());
+            }
+        }
+        double depth = topZ - lowest;
+        if (!(depth > edge + tol.linear())) {
+            return;
+        }
+        String why = op.type().isDrillingType()
+                ? "its chips could not clear the hole"
+                : "its shank would rub the wall it has just cut";
+        throw new IllegalArgumentException("the tool cuts " + mm(depth) + " mm below the feature's top but its"
+                + " cutting edge is " + mm(edge) + " mm long: " + why + "; a tool with at least " + mm(depth)
+                + " mm of cutting edge cuts it");
     }
 
     /**

@@ -144,7 +144,11 @@ class HoleDepthsTest {
                         .replace(
                                 "#110= CARTESIAN_POINT('HOLE A',(20.000,20.000,40.000));",
                                 "#110= CARTESIAN_POINT('HOLE A',(0.000,20.000,20.000));\n#130= DIRECTION('AXIS',(-1.000,0.000,0.000));\n"
-                                        + "#131= DIRECTION('REF_DIRECTION',(0.000,0.000,1.000));"));
+                                        + "#131= DIRECTION('REF_DIRECTION',(0.000,0.000,1.000));")
+                        // 100 mm of block along the axis: a drill with flutes for it
+                        .replace(
+                                "#32= MILLING_TOOL_DIMENSION(6.000,31.000,$,50.000,$,$,$);",
+                                "#32= MILLING_TOOL_DIMENSION(6.000,31.000,$,110.000,$,$,$);"));
         ToolpathPlanner.Plan p = plan(file, PlanningChoices.DEFAULT);
         ToolpathSection s = p.toolpath().sections().get(0);
         double deepest = s.moves().stream()

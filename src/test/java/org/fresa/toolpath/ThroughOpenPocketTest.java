@@ -16,7 +16,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A through open pocket: the open pocket of src/test/resources/stepnc/steps-outside-profiles.stp
  * (open to the x 0 side, a round end) with a THROUGH_POCKET_BOTTOM_CONDITION, milled through the
- * 30 mm block and 1 mm past its bottom (the breakthrough; the 10 mm cutter has no corner radius).
+ * 30 mm block and 1 mm past its bottom (the breakthrough; the 10 mm cutter has no corner radius, and
+ * its cutting edge is lengthened from the file's 25 mm to 35 mm for the 31 mm cut).
  * The checks of {@link StepsAndOutsideProfilesTest}: within the pocket at every 0.5 mm of height,
  * its outline cleared at the lowest layer, descents only outside the block, a cutter 0.05 mm wider
  * seen leaving, the program check (whose floor allows the through allowance) and rs274.
@@ -32,7 +33,11 @@ class ThroughOpenPocketTest {
                 .replace(
                         "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#257,$,$,#235,$);",
                         "#19= OPEN_POCKET('OPEN POCKET',#4,(#34),#85,#88,(),$,#259,$,$,#235,$);\n"
-                                + "#259= THROUGH_POCKET_BOTTOM_CONDITION();");
+                                + "#259= THROUGH_POCKET_BOTTOM_CONDITION();")
+                // a 31 mm cut needs more than the file's 25 mm of cutting edge
+                .replace(
+                        "#48= MILLING_TOOL_DIMENSION(10.000,$,$,25.0,0.0,$,$);",
+                        "#48= MILLING_TOOL_DIMENSION(10.000,$,$,35.0,0.0,$,$);");
         plan = ToolpathPlanner.plan(StepNcReader.read(new StringReader(part), "through.stp"), Tolerance.DEFAULT);
     }
 
