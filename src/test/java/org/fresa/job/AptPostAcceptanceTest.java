@@ -173,8 +173,9 @@ class AptPostAcceptanceTest {
     @Test
     void example1ReadsBackToLinuxCncsMotions(@TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        Path ex1 = Path.of("../shared/samples/stepnc/iso14649-11-example1.stp");
-        assumeTrue(Files.exists(ex1), ex1 + " is not beside the checkout");
+        // the project's copy: NIST's edit gives the end mill 29 mm of edge for the 30 mm pocket, short
+        // of the depth it cuts, which the planner refuses
+        Path ex1 = Path.of("samples/stepnc/iso14649-11-example1.stp");
         Path a = dir.resolve("apt");
         Path g = dir.resolve("ngc");
         TaskOutcome oa = ToolpathService.run(ex1, MillingPost.APT, new OutputFolder(a), ProgressMonitor.NONE);
