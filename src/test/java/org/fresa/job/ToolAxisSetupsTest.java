@@ -174,17 +174,25 @@ class ToolAxisSetupsTest {
         assertEquals(1, o.exitStatus());
         assertTrue(Files.isRegularFile(dir.resolve("program.ngc")), o.problems().toString());
         assertFalse(o.summary().containsKey("program_refused"), o.summary().toString());
-        assertEquals(9, o.summary().get("planned"));
+        // 9 workingsteps on +Z, less the 50 mm pocket whose end mill has 38 mm of cutting edge
+        assertEquals(8, o.summary().get("planned"));
+        assertTrue(
+                o.problems().stream()
+                        .anyMatch(p -> p.startsWith("workingstep 'Pocket_RGH' (#67): the tool cuts 50 mm below the"
+                                + " feature's top but its cutting edge is 38 mm long")),
+                o.problems().toString());
+        // the sides' counts leave out the workingsteps refused for their tools' cutting edges
         for (String p : List.of(
-                "tool axis (1, 0, 0): a 3-axis program machines along +Z only; 10 workingsteps need another setup",
+                "tool axis (1, 0, 0): a 3-axis program machines along +Z only; 9 workingsteps need another setup",
                 "tool axis (0, -1, 0): a 3-axis program machines along +Z only; 13 workingsteps need another setup",
-                "tool axis (-1, 0, 0): a 3-axis program machines along +Z only; 10 workingsteps need another setup",
-                "tool axis (0, 1, 0): a 3-axis program machines along +Z only; 10 workingsteps need another setup")) {
+                "tool axis (-1, 0, 0): a 3-axis program machines along +Z only; 9 workingsteps need another setup",
+                "tool axis (0, 1, 0): a 3-axis program machines along +Z only; 9 workingsteps need another setup")) {
             assertTrue(o.problems().contains(p), p + " in " + o.problems());
         }
-        // the underside setup's five: a link from the security plane above would cross the part
+        // the underside setup's four holes (its 50 mm pocket is refused first, for its tool's edge): a
+        // link from the security plane above would cross the part
         assertEquals(
-                5,
+                4,
                 o.problems().stream()
                         .filter(p -> p.contains("tool axis (0, 0, -1) works from the far side of the part"))
                         .count(),
@@ -194,7 +202,7 @@ class ToolAxisSetupsTest {
         Rs274.Result r = Rs274.run(dir.resolve("program.ngc"), 20);
         assertEquals(0, r.exitStatus(), r.stderr());
         double lowest = r.motions().stream().mapToDouble(c -> c.end().z()).min().orElseThrow();
-        assertTrue(lowest >= 50 - 1e-9, "the top setup's deepest cut is the 50 mm pocket's floor: " + lowest);
+        assertTrue(lowest >= 50 - 1e-9, "nothing below the 50 mm pocket's floor: " + lowest);
     }
 
     /**
@@ -207,7 +215,9 @@ class ToolAxisSetupsTest {
         assumeTrue(Files.isRegularFile(BOXY), TestInputs.sharedCorpusAbsent(BOXY.getParent()));
         StepNcProgram program = StepNcReader.read(BOXY);
         ToolpathPlanner.Plan plan = ToolpathService.plan(program, PlanningChoices.DEFAULT, ProgressMonitor.NONE);
-        assertEquals(52, plan.planned(), plan.problems().toString());
+        // 52 workingsteps on the five sides it reaches, less the two 50 mm pockets (38 mm of edge) and
+        // two of the three 6.5 mm holes (6 mm of flutes) the sides planned hold
+        assertEquals(48, plan.planned(), plan.problems().toString());
         assertEquals(
                 5,
                 plan.toolpath().sections().stream()
