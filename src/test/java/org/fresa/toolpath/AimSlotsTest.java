@@ -19,17 +19,20 @@ import org.fresa.stepnc.MachiningWorkingstep;
 import org.fresa.stepnc.StepNcProgram;
 import org.fresa.stepnc.StepNcReader;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
- * The slots of slots-profiles.stp written in AP238's integrated form (aim-slots.stp, its features
- * and workingsteps as annex J.6 writes them): the AIM binder gives the ARM binder's slots (ends,
- * profiles, paths) and the planner the same toolpath; an end or a profile parameter the binder
- * does not read is refused, never read as square.
+ * The slots of slots-profiles.stp and slots-general.stp written in AP238's integrated form
+ * (aim-slots.stp, aim-slots-general.stp, their features and workingsteps as annex J.6 writes
+ * them): the AIM binder gives the ARM binder's slots (ends, profiles, paths) and the planner the
+ * same toolpath; an end or a profile parameter the binder does not read is refused, never read as
+ * square.
  */
 class AimSlotsTest {
 
     static final Path AIM = Path.of("src/test/resources/stepnc/aim-slots.stp");
-    static final Path ARM = Path.of("src/test/resources/stepnc/slots-profiles.stp");
+    static final Path PARTS = Path.of("src/test/resources/stepnc");
     private static final Pattern NUMBER = Pattern.compile("-?\\d+\\.\\d+(E-?\\d+)?");
 
     /** A record's text with every decimal number to 1e-9 (degrees come through a conversion factor). */
@@ -44,14 +47,15 @@ class AimSlotsTest {
         return out.toString();
     }
 
-    @Test
-    void theAimSlotsAreTheArmsSlots() throws Exception {
-        StepNcProgram aim = StepNcReader.read(AIM);
-        StepNcProgram arm = StepNcReader.read(ARM);
+    @ParameterizedTest
+    @CsvSource({"aim-slots.stp, slots-profiles.stp, 6", "aim-slots-general.stp, slots-general.stp, 9"})
+    void theAimSlotsAreTheArmsSlots(String aimPart, String armPart, int workingsteps) throws Exception {
+        StepNcProgram aim = StepNcReader.read(PARTS.resolve(aimPart));
+        StepNcProgram arm = StepNcReader.read(PARTS.resolve(armPart));
         assertEquals(
                 arm.workingsteps().stream().map(MachiningWorkingstep::id).toList(),
                 aim.workingsteps().stream().map(MachiningWorkingstep::id).toList());
-        assertEquals(6, aim.workingsteps().size());
+        assertEquals(workingsteps, aim.workingsteps().size());
         for (int i = 0; i < arm.workingsteps().size(); i++) {
             Feature a = aim.workingsteps().get(i).feature();
             Feature r = arm.workingsteps().get(i).feature();
@@ -64,8 +68,12 @@ class AimSlotsTest {
             assertEquals(rounded(r.courseOfTravel()), rounded(a.courseOfTravel()), at);
             assertEquals(r.slotEnds(), a.slotEnds(), at);
         }
-        // every end kind and the flat ends' corner radii, start then end
-        Feature squareU = aim.workingsteps().get(5).feature();
+    }
+
+    /** What the comparisons hold: every end kind, start then end, and each kind of path. */
+    @Test
+    void thePartsHoldEveryEndAndPath() throws Exception {
+        StepNcProgram profiles = StepNcReader.read(AIM);
         assertEquals(
                 List.of(
                         new Feature.SlotEnd(
@@ -75,22 +83,47 @@ class AimSlotsTest {
                                 "RADIUSED_SLOT_END_TYPE",
                                 OptionalDouble.empty(),
                                 OptionalDouble.empty())),
-                squareU.slotEnds());
+                profiles.workingsteps().get(5).feature().slotEnds());
         assertEquals(
                 EndType.OPEN,
-                aim.workingsteps().get(0).feature().slotEnds().get(1).type());
+                profiles.workingsteps().get(0).feature().slotEnds().get(1).type());
+        List<Feature> f = StepNcReader.read(PARTS.resolve("aim-slots-general.stp")).workingsteps().stream()
+                .map(MachiningWorkingstep::feature)
+                .toList();
+        // a loop's one end condition stands for both ends of its closed course
+        assertEquals(
+                List.of(EndType.LOOP, EndType.LOOP),
+                f.get(2).slotEnds().stream().map(Feature.SlotEnd::type).toList());
+        assertEquals(EndType.WOODRUFF, f.get(4).slotEnds().get(1).type());
+        assertEquals(OptionalDouble.of(15), f.get(4).slotEnds().get(1).firstRadiusMm());
+        assertEquals("GENERAL_PATH", f.get(0).courseOfTravel().orElseThrow().entity());
+        assertEquals(3, f.get(0).courseOfTravel().orElseThrow().curve().size());
+        assertEquals(
+                2 * Math.PI,
+                f.get(2).courseOfTravel().orElseThrow().sweepAngle().getAsDouble());
+        // the AIM's sweep angle in degrees, the model's in radians as the ARM writes it
+        assertEquals(
+                Math.toRadians(-100),
+                f.get(6).courseOfTravel().orElseThrow().sweepAngle().getAsDouble(),
+                1e-12);
     }
 
     /** As the J.6-against-FDIS comparison: the same workingsteps planned, point for point within 1e-6 mm. */
-    @Test
-    void theAimSlotsAreMachinedAsTheArmFilesSlots() throws Exception {
-        ToolpathPlanner.Plan aim = ToolpathPlanner.plan(StepNcReader.read(AIM), Tolerance.DEFAULT);
-        ToolpathPlanner.Plan arm = ToolpathPlanner.plan(StepNcReader.read(ARM), Tolerance.DEFAULT);
-        assertEquals(6, aim.planned(), aim.problems().toString());
+    @ParameterizedTest
+    @CsvSource({"aim-slots.stp, slots-profiles.stp, 6", "aim-slots-general.stp, slots-general.stp, 9"})
+    void theAimSlotsAreMachinedAsTheArmFilesSlots(String aimPart, String armPart, int workingsteps) throws Exception {
+        ToolpathPlanner.Plan aim = ToolpathPlanner.plan(StepNcReader.read(PARTS.resolve(aimPart)), Tolerance.DEFAULT);
+        ToolpathPlanner.Plan arm = ToolpathPlanner.plan(StepNcReader.read(PARTS.resolve(armPart)), Tolerance.DEFAULT);
+        assertEquals(workingsteps, aim.planned(), aim.problems().toString());
         assertEquals(
                 arm.steps().stream().map(ToolpathPlanner.PlannedStep::label).toList(),
                 aim.steps().stream().map(ToolpathPlanner.PlannedStep::label).toList());
-        assertEquals(arm.problems(), aim.problems());
+        // the same reports, but for the tool's kind: the AIM names no tapered end mill ('endmill')
+        assertEquals(
+                arm.problems().stream()
+                        .map(x -> x.replace("TAPERED_ENDMILL", "ENDMILL"))
+                        .toList(),
+                aim.problems());
         List<ToolpathCsv.Row> a = ToolpathCsv.rows(aim.toolpath(), NcPosts.CHORD_TOLERANCE_MM);
         List<ToolpathCsv.Row> r = ToolpathCsv.rows(arm.toolpath(), NcPosts.CHORD_TOLERANCE_MM);
         assertEquals(r.size(), a.size());
