@@ -966,6 +966,21 @@ final class Ap238AimBinder {
             case "OUTSIDE_PROFILE", "GENERAL_OUTSIDE_PROFILE" -> Feature.FeatureType.GENERAL_OUTSIDE_PROFILE;
             default -> Feature.FeatureType.OTHER;
         };
+        List<Long> uncut = pds.isPresent() ? uncutVolumes(pds.get()) : List.of();
+        if (!uncut.isEmpty() && profile.isPresent()) {
+            // ISO 10303-113 pocket WR16: the material a pocket leaves standing is its 'uncut volume',
+            // a BOSS; the binder does not read a boss's shape yet, and the outline milled without it
+            // would cut the boss away: the feature's outline is left unread, so that it is refused
+            profile = Optional.of(new Profile.Other(
+                    profile.get().entity() + " around an 'uncut volume' (BOSS "
+                            + uncut.stream()
+                                    .map(b -> "#" + b)
+                                    .reduce((a, b) -> a + ", " + b)
+                                    .orElse("")
+                            + ") the AIM binder does not read yet: milled without it, the boss would be cut away",
+                    profile.get().placement(),
+                    boundary.orElse(id)));
+        }
         if (securityPlane.isPresent()
                 && type != Feature.FeatureType.OTHER
                 && placement.zAxis().dot(securityPlane.get().zAxis()) < -0.999) {
@@ -1042,6 +1057,30 @@ final class Ap238AimBinder {
                 ends,
                 List.of());
         features.put(id, out);
+        return out;
+    }
+
+    /**
+     * The features related to a feature's 'uncut volume' aspect (a COMPOSITE_SHAPE_ASPECT, or a
+     * SHAPE_ASPECT, of that name) by a FEATURE_COMPONENT_RELATIONSHIP or another
+     * SHAPE_ASPECT_RELATIONSHIP: its bosses (ISO 10303-113 pocket WR16).
+     */
+    private List<Long> uncutVolumes(long pds) {
+        List<Long> out = new ArrayList<>();
+        for (String aspectType : List.of("COMPOSITE_SHAPE_ASPECT", "SHAPE_ASPECT")) {
+            for (long a : usersOf(pds, aspectType, 2)) {
+                if (!text(rec(a, aspectType).orElseThrow().param(0)).trim().equalsIgnoreCase("uncut volume")) {
+                    continue;
+                }
+                for (String relType : List.of("FEATURE_COMPONENT_RELATIONSHIP", "SHAPE_ASPECT_RELATIONSHIP")) {
+                    for (long rel : usersOf(a, relType, 2)) {
+                        ref(rec(rel, relType).orElseThrow().param(3))
+                                .filter(b -> !out.contains(b))
+                                .ifPresent(out::add);
+                    }
+                }
+            }
+        }
         return out;
     }
 
