@@ -52,6 +52,9 @@ final class Ap238AimBinder {
     /** Feeds below this (mm/min) are reported as doubtful: no cutting feed is that slow. */
     static final double SLOWEST_PLAUSIBLE_FEED = 10;
 
+    /** A slot profile's 'depth' and the slot's maximum feature limit agree within this (mm). */
+    static final double SAME_DEPTH_MM = 1e-6;
+
     private static final Set<String> FEATURE_NOISE = Set.of(
             "CHARACTERIZED_OBJECT",
             "FEATURE_DEFINITION",
@@ -898,6 +901,7 @@ final class Ap238AimBinder {
         Optional<Transform3> depthPlane = Optional.empty();
         List<Long> measures = new ArrayList<>();
         Map<String, Long> components = new LinkedHashMap<>();
+        List<EndUse> endUses = new ArrayList<>();
         if (pds.isPresent()) {
             for (long r : representationsOf(pds.get())) {
                 String repName = inst(r) == null ? "" : text(inst(r).record().param(0));
@@ -921,8 +925,17 @@ final class Ap238AimBinder {
                         .trim();
                 for (String relType : List.of("SHAPE_DEFINING_RELATIONSHIP", "FEATURE_COMPONENT_RELATIONSHIP")) {
                     for (long rel : usersOf(aspect, relType, 3)) {
-                        ref(rec(rel, relType).orElseThrow().param(2))
-                                .ifPresent(c -> components.putIfAbsent(occurrence, c));
+                        StepRecord r = rec(rel, relType).orElseThrow();
+                        Optional<Long> c = ref(r.param(2));
+                        if (c.isEmpty()) {
+                            continue;
+                        }
+                        components.putIfAbsent(occurrence, c.get());
+                        if (occurrence.equals("end condition")) {
+                            // a slot has two end condition occurrences (one for a loop): each is told
+                            // apart by its relationship's name, not by the aspect
+                            endUses.add(new EndUse(text(r.param(0)), c.get(), rel));
+                        }
                     }
                 }
             }
@@ -953,6 +966,21 @@ final class Ap238AimBinder {
             case "OUTSIDE_PROFILE", "GENERAL_OUTSIDE_PROFILE" -> Feature.FeatureType.GENERAL_OUTSIDE_PROFILE;
             default -> Feature.FeatureType.OTHER;
         };
+        List<Long> uncut = pds.isPresent() ? uncutVolumes(pds.get()) : List.of();
+        if (!uncut.isEmpty() && profile.isPresent()) {
+            // ISO 10303-113 pocket WR16: the material a pocket leaves standing is its 'uncut volume',
+            // a BOSS; the binder does not read a boss's shape yet, and the outline milled without it
+            // would cut the boss away: the feature's outline is left unread, so that it is refused
+            profile = Optional.of(new Profile.Other(
+                    profile.get().entity() + " around an 'uncut volume' (BOSS "
+                            + uncut.stream()
+                                    .map(b -> "#" + b)
+                                    .reduce((a, b) -> a + ", " + b)
+                                    .orElse("")
+                            + ") the AIM binder does not read yet: milled without it, the boss would be cut away",
+                    profile.get().placement(),
+                    boundary.orElse(id)));
+        }
         if (securityPlane.isPresent()
                 && type != Feature.FeatureType.OTHER
                 && placement.zAxis().dot(securityPlane.get().zAxis()) < -0.999) {
@@ -965,8 +993,9 @@ final class Ap238AimBinder {
             warnings.add("#" + id + " " + entity + " '" + featureId + "': its placement's axis points away from its"
                     + " workingstep's security plane (into the material); read reversed");
         }
+        Optional<Long> placementOfFeature = placementId;
         Optional<TravelPath> travel =
-                first(components, "course of travel", "path").map(this::travel);
+                first(components, "course of travel", "path").map(c -> travel(c, placementOfFeature));
         OptionalDouble diameter = OptionalDouble.empty();
         Optional<Long> dia = first(components, "diameter");
         if (dia.isPresent()) {
@@ -986,7 +1015,26 @@ final class Ap238AimBinder {
             // a depth given as the feature's path (hole depth, pocket depth) when there is no depth plane
             Optional<Long> path = first(components, "hole depth", "pocket depth", "depth");
             if (path.isPresent()) {
-                depth = travel(path.get()).distanceMm();
+                depth = travel(path.get(), placementId).distanceMm();
+            }
+        }
+        List<Feature.SlotEnd> ends = List.of();
+        if (type == Feature.FeatureType.SLOT) {
+            ends = slotEnds(endUses);
+            if (boundary.isPresent() && profile.isPresent()) {
+                // AP238 5.2.2.3.5: the depth of the open profile gives the slot's depth (square-U,
+                // rounded-U and tee profiles carry it as 'depth'); the ARM's is the depth plane's
+                OptionalDouble profileDepth = lengthOf(namedMeasure(shapeItems(boundary.get()), "depth"));
+                if (profileDepth.isPresent() && depth.isEmpty()) {
+                    depth = profileDepth;
+                } else if (profileDepth.isPresent()
+                        && Math.abs(profileDepth.getAsDouble() - depth.getAsDouble()) > SAME_DEPTH_MM) {
+                    profile = Optional.of(new Profile.Other(
+                            profile.get().entity() + " " + num(profileDepth.getAsDouble()) + " mm deep in a slot "
+                                    + num(depth.getAsDouble()) + " mm deep (its maximum feature limit)",
+                            profile.get().placement(),
+                            boundary.get()));
+                }
             }
         }
         OptionalDouble planar = lengthOf(namedMeasure(measures, "fillet radius", "planar radius", "base radius"));
@@ -1006,10 +1054,176 @@ final class Ap238AimBinder {
                 planar,
                 orthogonal,
                 List.of(),
-                List.of(),
+                ends,
                 List.of());
         features.put(id, out);
         return out;
+    }
+
+    /**
+     * The features related to a feature's 'uncut volume' aspect (a COMPOSITE_SHAPE_ASPECT, or a
+     * SHAPE_ASPECT, of that name) by a FEATURE_COMPONENT_RELATIONSHIP or another
+     * SHAPE_ASPECT_RELATIONSHIP: its bosses (ISO 10303-113 pocket WR16).
+     */
+    private List<Long> uncutVolumes(long pds) {
+        List<Long> out = new ArrayList<>();
+        for (String aspectType : List.of("COMPOSITE_SHAPE_ASPECT", "SHAPE_ASPECT")) {
+            for (long a : usersOf(pds, aspectType, 2)) {
+                if (!text(rec(a, aspectType).orElseThrow().param(0)).trim().equalsIgnoreCase("uncut volume")) {
+                    continue;
+                }
+                for (String relType : List.of("FEATURE_COMPONENT_RELATIONSHIP", "SHAPE_ASPECT_RELATIONSHIP")) {
+                    for (long rel : usersOf(a, relType, 2)) {
+                        ref(rec(rel, relType).orElseThrow().param(3))
+                                .filter(b -> !out.contains(b))
+                                .ifPresent(out::add);
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    /** A SLOT_END as its slot relates it: the relationship's name, the end, the relationship. */
+    private record EndUse(String name, long end, long relationship) {}
+
+    /**
+     * A slot's ends, the course of travel's start then its end, as the ARM's end_conditions: the
+     * slot's 'end condition occurrence' aspects, each related to a SLOT_END by a
+     * FEATURE_COMPONENT_RELATIONSHIP ('slot end usage') named 'course of travel start' or 'course
+     * of travel end' (ISO 10303-113 slot WR4, slot_end WR10); a loop has one, standing for both
+     * ends of the closed course. Whatever cannot be placed at one end or read is an end of kind
+     * OTHER naming why, which the planner refuses: an end read as square that is not would cut the
+     * corners the part keeps.
+     */
+    private List<Feature.SlotEnd> slotEnds(List<EndUse> uses) {
+        if (uses.size() == 1 && slotEndKind(uses.get(0).end()).equals("loop")) {
+            Feature.SlotEnd loop = slotEnd(uses.get(0).end());
+            return List.of(loop, loop);
+        }
+        Feature.SlotEnd[] at = new Feature.SlotEnd[2];
+        String[] names = {"course of travel start", "course of travel end"};
+        for (EndUse u : uses) {
+            String name = u.name().trim().toLowerCase(Locale.ROOT);
+            int k = name.equals(names[0]) ? 0 : name.equals(names[1]) ? 1 : -1;
+            if (k < 0) {
+                Feature.SlotEnd unplaced = unreadEnd("#" + u.end() + " " + typeOf(u.end()) + " related by #"
+                        + u.relationship() + " as '" + u.name() + "', neither '" + names[0] + "' nor '" + names[1]
+                        + "': which end it is is not known");
+                return List.of(unplaced, unplaced);
+            }
+            if (at[k] != null) {
+                Feature.SlotEnd twice = unreadEnd("two SLOT_ENDs related as '" + names[k] + "' (#" + u.end() + ")");
+                return List.of(twice, twice);
+            }
+            at[k] = slotEnd(u.end());
+        }
+        List<Feature.SlotEnd> out = new ArrayList<>();
+        for (int k = 0; k < 2; k++) {
+            out.add(
+                    at[k] != null
+                            ? at[k]
+                            : unreadEnd("none given: the slot relates no SLOT_END as '" + names[k] + "'"));
+        }
+        return out;
+    }
+
+    private String slotEndKind(long id) {
+        return rec(id, "SLOT_END")
+                .map(r -> text(r.param(1)).trim().toLowerCase(Locale.ROOT))
+                .orElse("");
+    }
+
+    private static Feature.SlotEnd unreadEnd(String why) {
+        return new Feature.SlotEnd(Feature.SlotEnd.EndType.OTHER, why, OptionalDouble.empty(), OptionalDouble.empty());
+    }
+
+    /**
+     * One SLOT_END as the ARM's slot_end_type: its description says which (ISO 10303-113 slot_end
+     * WR2), a flat end's corner radii are its 'first radius' and 'second radius' (corner_radius1
+     * and corner_radius2, WR5-WR7, both optional in the ARM), a woodruff end's radius its 'radius'
+     * (WR8, WR9); open, radiused and loop ends have no parameters (WR3). A measure of another name,
+     * a woodruff end without its radius, or another description is not read: the end is OTHER.
+     */
+    private Feature.SlotEnd slotEnd(long id) {
+        if (!isA(id, "SLOT_END")) {
+            return unreadEnd("#" + id + " " + typeOf(id) + " (a slot's end condition should be a SLOT_END)");
+        }
+        String kind = slotEndKind(id);
+        Feature.SlotEnd.EndType type;
+        String entity;
+        List<String> allowed;
+        switch (kind) {
+            case "open" -> {
+                type = Feature.SlotEnd.EndType.OPEN;
+                entity = "OPEN_SLOT_END_TYPE";
+                allowed = List.of();
+            }
+            case "radiused" -> {
+                type = Feature.SlotEnd.EndType.RADIUSED;
+                entity = "RADIUSED_SLOT_END_TYPE";
+                allowed = List.of();
+            }
+            case "loop" -> {
+                type = Feature.SlotEnd.EndType.LOOP;
+                entity = "LOOP_SLOT_END_TYPE";
+                allowed = List.of();
+            }
+            case "flat" -> {
+                type = Feature.SlotEnd.EndType.FLAT;
+                entity = "FLAT_SLOT_END_TYPE";
+                allowed = List.of("first radius", "second radius");
+            }
+            case "woodruff" -> {
+                type = Feature.SlotEnd.EndType.WOODRUFF;
+                entity = "WOODRUFF_SLOT_END_TYPE";
+                allowed = List.of("radius");
+            }
+            default -> {
+                return unreadEnd(
+                        "#" + id + " SLOT_END '" + kind + "' (open, radiused, flat, woodruff and loop are known)");
+            }
+        }
+        List<Long> items = shapeItems(id);
+        List<String> foreign = foreignItems(items, allowed);
+        if (!foreign.isEmpty()) {
+            return unreadEnd("#" + id + " SLOT_END '" + kind + "' with " + String.join(", ", foreign)
+                    + ", not read ("
+                    + (allowed.isEmpty() ? "it has no parameters" : "its parameters are " + quoted(allowed))
+                    + ")");
+        }
+        OptionalDouble first = OptionalDouble.empty();
+        OptionalDouble second = OptionalDouble.empty();
+        if (type == Feature.SlotEnd.EndType.FLAT) {
+            first = lengthOf(namedMeasure(items, "first radius"));
+            second = lengthOf(namedMeasure(items, "second radius"));
+        } else if (type == Feature.SlotEnd.EndType.WOODRUFF) {
+            first = lengthOf(namedMeasure(items, "radius"));
+            if (first.isEmpty()) {
+                return unreadEnd("#" + id + " SLOT_END 'woodruff' without its 'radius'");
+            }
+        }
+        return new Feature.SlotEnd(type, entity, first, second);
+    }
+
+    /** The items that are not a measure of one of the allowed names, each as "'name'" or its type. */
+    private List<String> foreignItems(List<Long> items, List<String> allowed) {
+        List<String> out = new ArrayList<>();
+        for (long i : items) {
+            Item it = item(i);
+            String name = it.name().trim().toLowerCase(Locale.ROOT);
+            if (!(it.kind().equals("measure") && allowed.contains(name))) {
+                out.add(it.kind().equals("measure") || !name.isEmpty() ? "'" + it.name() + "'" : typeOf(i));
+            }
+        }
+        return out;
+    }
+
+    private static String quoted(List<String> names) {
+        return names.stream()
+                .map(n -> "'" + n + "'")
+                .reduce((a, b) -> a + ", " + b)
+                .orElse("");
     }
 
     private static boolean isOpen(Profile p) {
@@ -1043,33 +1257,91 @@ final class Ap238AimBinder {
         };
     }
 
-    /** A PATH_FEATURE_COMPONENT as a course of travel in the feature frame. */
-    private TravelPath travel(long id) {
+    /**
+     * A PATH_FEATURE_COMPONENT as a course of travel in the feature frame, by its description (ISO
+     * 10303-113 path_feature_component WR2): 'linear' is a LINEAR_PATH ('distance', and its
+     * direction in a DIRECTION_SHAPE_REPRESENTATION), 'partial circular' a CIRCULAR_PATH ('radius',
+     * 'sweep angle'), 'complete circular' a CIRCULAR_PATH of a full turn ('radius'), 'complex' a
+     * GENERAL_PATH (its curve the 'profile shape' of its 'sweep path' PATH_SHAPE_REPRESENTATION).
+     * Its placement is the PLACEMENT named 'orientation' among its parameters; the writer gives the
+     * feature's own placement instance there for the feature frame. Another description keeps its
+     * name, which the planner refuses.
+     */
+    private TravelPath travel(long id, Optional<Long> featurePlacement) {
         String kind = rec(id, "PATH_FEATURE_COMPONENT")
-                .map(r -> text(r.param(1)).toLowerCase(Locale.ROOT))
+                .map(r -> text(r.param(1)).trim().toLowerCase(Locale.ROOT))
                 .orElse("");
         List<Long> items = shapeItems(id);
         Optional<Vec3> dir = Optional.empty();
+        Transform3 pl = Transform3.IDENTITY;
+        Optional<Long> curve = Optional.empty();
         for (long i : items) {
-            if (isA(i, "DIRECTION")) {
-                try {
+            try {
+                if (isA(i, "DIRECTION")) {
                     dir = Optional.of(geometry.directionOf(i));
-                } catch (StepParseException e) {
-                    warnings.add(e.problem());
+                } else if (isA(i, "AXIS2_PLACEMENT_3D")
+                        && !(featurePlacement.isPresent() && featurePlacement.get() == i)) {
+                    pl = placement(i);
+                } else if ((isA(i, "POLYLINE") || isA(i, "COMPOSITE_CURVE") || isA(i, "TRIMMED_CURVE"))
+                        && (curve.isEmpty() || item(i).name().equalsIgnoreCase("profile shape"))) {
+                    curve = Optional.of(i);
                 }
+            } catch (StepParseException e) {
+                warnings.add(e.problem());
             }
         }
-        // the writer places the path in the feature's own placement (the same instance): read as the feature frame
-        String entity = kind.equals("linear")
-                ? "LINEAR_PATH"
-                : kind.equals("circular") ? "CIRCULAR_PATH" : "PATH_FEATURE_COMPONENT '" + kind + "'";
-        return new TravelPath(
-                entity,
-                Transform3.IDENTITY,
-                lengthOf(namedMeasure(items, "distance")),
-                dir,
-                lengthOf(namedMeasure(items, "radius")),
-                lengthOf(namedMeasure(items, "sweep angle")));
+        OptionalDouble radius = lengthOf(namedMeasure(items, "radius"));
+        switch (kind) {
+            case "linear" -> {
+                return new TravelPath(
+                        "LINEAR_PATH",
+                        pl,
+                        lengthOf(namedMeasure(items, "distance")),
+                        dir,
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty());
+            }
+            case "partial circular", "complete circular" -> {
+                // the model's sweep is the ARM's, in radians; the AIM's measure came in degrees
+                OptionalDouble sweep = kind.equals("complete circular")
+                        ? OptionalDouble.of(2 * Math.PI)
+                        : lengthOf(namedMeasure(items, "sweep angle"));
+                if (sweep.isPresent() && kind.equals("partial circular")) {
+                    sweep = OptionalDouble.of(Math.toRadians(sweep.getAsDouble()));
+                }
+                return new TravelPath("CIRCULAR_PATH", pl, OptionalDouble.empty(), Optional.empty(), radius, sweep);
+            }
+            case "complex" -> {
+                List<Profile.Segment> segments = List.of();
+                if (curve.isPresent()) {
+                    try {
+                        Profile c = mm(geometry.curveProfile("GENERAL_PATH", id, Transform3.IDENTITY, curve));
+                        if (c instanceof Profile.General g) {
+                            segments = g.segments();
+                        }
+                    } catch (StepParseException e) {
+                        warnings.add(e.problem());
+                    }
+                }
+                return new TravelPath(
+                        "GENERAL_PATH",
+                        pl,
+                        OptionalDouble.empty(),
+                        Optional.empty(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        segments);
+            }
+            default -> {
+                return new TravelPath(
+                        "PATH_FEATURE_COMPONENT '" + kind + "'",
+                        pl,
+                        lengthOf(namedMeasure(items, "distance")),
+                        dir,
+                        radius,
+                        OptionalDouble.empty());
+            }
+        }
     }
 
     /** A profile component (LINEAR_PROFILE, CIRCULAR_CLOSED_PROFILE, CLOSED_PATH_PROFILE, ...). */
@@ -1103,15 +1375,8 @@ final class Ap238AimBinder {
                         lengthOf(namedMeasure(items, "profile width", "width")).orElse(0),
                         lengthOf(namedMeasure(items, "profile length", "length"))
                                 .orElse(0));
-            case "SQUARE_U_PROFILE" ->
-                new Profile.U(
-                        entity,
-                        pl,
-                        lengthOf(namedMeasure(items, "width")).orElse(0),
-                        lengthOf(namedMeasure(items, "first radius")),
-                        lengthOf(namedMeasure(items, "first angle")),
-                        lengthOf(namedMeasure(items, "second radius")),
-                        lengthOf(namedMeasure(items, "second angle")));
+            case "SQUARE_U_PROFILE", "ROUNDED_U_PROFILE", "VEE_PROFILE", "TEE_PROFILE", "PARTIAL_CIRCULAR_PROFILE" ->
+                slotProfile(entity, id, pl, items);
             case "CLOSED_PATH_PROFILE", "OPEN_PATH_PROFILE" -> {
                 Profile p = mm(geometry.curveProfile(
                         entity.equals("CLOSED_PATH_PROFILE") ? "GENERAL_CLOSED_PROFILE" : "GENERAL_PROFILE",
@@ -1121,6 +1386,106 @@ final class Ap238AimBinder {
                 yield p;
             }
             default -> new Profile.Other(entity, pl, id);
+        };
+    }
+
+    /**
+     * The parameters of each slot profile the binding reads, by the names ISO 10303-113 gives them
+     * (square_u_profile WR6-WR10, WR12; rounded_u_profile WR5, WR7; vee_profile WR7, WR8 and its
+     * 'profile radius'; tee_profile WR6-WR9, WR12-WR14; partial_circular_profile WR5, WR6), each
+     * an ARM attribute of ISO 14649-10's profile of the same name. 'depth' is checked against the
+     * slot's depth by the feature.
+     */
+    private static final Map<String, List<String>> SLOT_PROFILE_PARAMETERS = Map.of(
+            "SQUARE_U_PROFILE",
+                    List.of("width", "first radius", "first angle", "second radius", "second angle", "depth"),
+            "ROUNDED_U_PROFILE", List.of("width", "depth"),
+            "VEE_PROFILE", List.of("profile radius", "profile angle", "tilt angle"),
+            "TEE_PROFILE",
+                    List.of(
+                            "width",
+                            "cross bar width",
+                            "cross bar depth",
+                            "radius",
+                            "first angle",
+                            "second angle",
+                            "depth"),
+            "PARTIAL_CIRCULAR_PROFILE", List.of("radius", "sweep angle"));
+
+    /**
+     * A slot's swept shape as the ARM binder makes it, angles in degrees as the measures' units
+     * give them. A parameter the binding does not read (a vee's 'first length', a tee's 'first
+     * offset', which ISO 14649-10's profiles do not have), or a required one missing, leaves the
+     * profile unread ({@link Profile.Other}, named with why), which the planner refuses.
+     */
+    private Profile slotProfile(String entity, long id, Transform3 pl, List<Long> items) {
+        List<String> allowed = SLOT_PROFILE_PARAMETERS.get(entity);
+        // the profile's placement ('orientation') is read apart
+        List<String> foreign = foreignItems(
+                items.stream().filter(i -> !isA(i, "AXIS2_PLACEMENT_3D")).toList(), allowed);
+        if (!foreign.isEmpty()) {
+            return new Profile.Other(
+                    entity + " with " + String.join(", ", foreign) + ", not read (its parameters are " + quoted(allowed)
+                            + ")",
+                    pl,
+                    id);
+        }
+        Map<String, OptionalDouble> v = new HashMap<>();
+        for (String n : allowed) {
+            v.put(n, lengthOf(namedMeasure(items, n)));
+        }
+        List<String> required = switch (entity) {
+            case "SQUARE_U_PROFILE", "ROUNDED_U_PROFILE" -> List.of("width");
+            case "VEE_PROFILE" -> List.of("profile angle", "tilt angle");
+            case "TEE_PROFILE" -> List.of("width", "cross bar width", "cross bar depth", "first angle", "second angle");
+            default -> List.of("radius", "sweep angle");
+        };
+        List<String> missing = required.stream().filter(n -> v.get(n).isEmpty()).toList();
+        if (!missing.isEmpty()) {
+            return new Profile.Other(entity + " without its " + quoted(missing), pl, id);
+        }
+        return switch (entity) {
+            case "SQUARE_U_PROFILE" ->
+                new Profile.U(
+                        entity,
+                        pl,
+                        v.get("width").getAsDouble(),
+                        v.get("first radius"),
+                        v.get("first angle"),
+                        v.get("second radius"),
+                        v.get("second angle"));
+            case "ROUNDED_U_PROFILE" ->
+                new Profile.U(
+                        entity,
+                        pl,
+                        v.get("width").getAsDouble(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty(),
+                        OptionalDouble.empty());
+            case "VEE_PROFILE" ->
+                new Profile.Vee(
+                        entity,
+                        pl,
+                        v.get("profile radius"),
+                        v.get("profile angle").getAsDouble(),
+                        v.get("tilt angle").getAsDouble());
+            case "TEE_PROFILE" ->
+                new Profile.Tee(
+                        entity,
+                        pl,
+                        v.get("width").getAsDouble(),
+                        v.get("cross bar width").getAsDouble(),
+                        v.get("cross bar depth").getAsDouble(),
+                        v.get("radius"),
+                        v.get("first angle").getAsDouble(),
+                        v.get("second angle").getAsDouble());
+            default ->
+                new Profile.PartialCircular(
+                        entity,
+                        pl,
+                        v.get("radius").getAsDouble(),
+                        v.get("sweep angle").getAsDouble());
         };
     }
 
@@ -1533,7 +1898,7 @@ final class Ap238AimBinder {
             return done;
         }
         StepRecord t = rec(id, "MACHINING_TOOL").orElseThrow();
-        String body = text(t.param(1)).toUpperCase(Locale.ROOT).replace(' ', '_');
+        String body = toolBody(text(t.param(1)));
         List<Long> bodyItems = new ArrayList<>();
         for (long rp : usersOf(id, "RESOURCE_PROPERTY", 2)) {
             StepRecord r = rec(rp, "RESOURCE_PROPERTY").orElseThrow();
@@ -1548,7 +1913,7 @@ final class Ap238AimBinder {
                     bodyItems.addAll(items(rep.get()));
                     String name = text(inst(rep.get()).record().param(0));
                     if (!name.isEmpty()) {
-                        body = name.toUpperCase(Locale.ROOT).replace(' ', '_');
+                        body = toolBody(name);
                     }
                 }
             }
@@ -1606,6 +1971,22 @@ final class Ap238AimBinder {
                 "deg");
         tools.put(id, out);
         return out;
+    }
+
+    /**
+     * The ARM tool body a milling tool's AIM description stands for (ISO 10303-238
+     * machining_tool WR6: 'ballnose endmill', 'tee slot mill' ...); the planner knows a ball end
+     * mill and a T-slot mill by these names. Other kinds keep their description, upper case.
+     */
+    static String toolBody(String description) {
+        String d = description.trim().toLowerCase(Locale.ROOT);
+        return switch (d) {
+            case "ballnose endmill" -> "BALL_ENDMILL";
+            case "bullnose endmill" -> "BULLNOSE_ENDMILL";
+            case "tee slot mill" -> "T_SLOT_MILL";
+            case "dovetail mill" -> "DOVETAIL_MILL";
+            default -> d.toUpperCase(Locale.ROOT).replace(' ', '_');
+        };
     }
 
     private Technology technology(long id) {

@@ -107,7 +107,9 @@ final class SlotMilling {
                                 + f.courseOfTravel().map(p -> p.entity()).orElse("none"));
                     }
                 }
-                case OTHER -> throw new UnsupportedOperationException("slot end " + e.entity() + " is not known");
+                case OTHER ->
+                    throw new UnsupportedOperationException("slot end not read: " + e.entity()
+                            + "; an end cut square that is not would cut corners the part keeps");
                 default -> {}
             }
         }

@@ -318,6 +318,30 @@ class Ap238ToolpathTest {
         assertFalse(Files.exists(dir.resolve("out/program.ngc")));
     }
 
+    /**
+     * A pocket's boss in the AIM is its 'uncut volume' (ISO 10303-113 pocket WR16), which the
+     * binder does not read yet: the pocket is refused, not milled through the boss.
+     */
+    @Test
+    void aPocketAroundAnUncutVolumeIsRefusedNotMilledThroughIt() throws Exception {
+        String text = Files.readString(INCH)
+                .replace(
+                        "ENDSEC;\nEND-ISO-10303-21;",
+                        "#580=COMPOSITE_SHAPE_ASPECT('uncut volume','',#541,.F.);\n"
+                                + "#581=FEATURE_COMPONENT_RELATIONSHIP('','boss usage',#580,#582);\n"
+                                + "#582=(BOSS() CHARACTERIZED_OBJECT('','') FEATURE_DEFINITION() INSTANCED_FEATURE()"
+                                + " SHAPE_ASPECT('BOSS1','',#113,.T.));\n"
+                                + "ENDSEC;\nEND-ISO-10303-21;");
+        assertTrue(text.contains("#582="));
+        StepNcProgram p = StepNcReader.read(new java.io.StringReader(text), "boss.stp");
+        ToolpathPlanner.Plan plan = ToolpathPlanner.plan(p, Tolerance.DEFAULT);
+        assertEquals(1, plan.planned(), plan.problems().toString());
+        String why = plan.refusals().get(p.workingsteps().get(1).instanceId());
+        assertTrue(
+                why != null && why.contains("'uncut volume' (BOSS #582)") && why.contains("cut away"),
+                String.valueOf(why));
+    }
+
     @Test
     void anInchFileIsDescribedWithItsOwnUnitsNeverAsIso14649Units() throws Exception {
         StepNcProgram p = StepNcReader.read(INCH);
