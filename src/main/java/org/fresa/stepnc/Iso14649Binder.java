@@ -885,9 +885,9 @@ final class Iso14649Binder {
                         pl,
                         required(p, "width"),
                         num(p, "first_radius"),
-                        num(p, "first_angle"),
+                        degrees(num(p, "first_angle")),
                         num(p, "second_radius"),
-                        num(p, "second_angle"));
+                        degrees(num(p, "second_angle")));
             case "ROUNDED_U_PROFILE" ->
                 new Profile.U(
                         p.name(),
@@ -926,6 +926,10 @@ final class Iso14649Binder {
     /** A plane angle as the file writes it, in degrees (STEP Modeler writes radians). */
     private double degrees(double written) {
         return dialect == Dialect.STEP_MODELER ? Math.toDegrees(written) : written;
+    }
+
+    private OptionalDouble degrees(OptionalDouble written) {
+        return written.isPresent() ? OptionalDouble.of(degrees(written.getAsDouble())) : written;
     }
 
     /** A slot's end_conditions, in file order. */

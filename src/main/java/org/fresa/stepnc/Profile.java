@@ -77,16 +77,18 @@ public sealed interface Profile {
 
     /**
      * SQUARE_U_PROFILE and ROUNDED_U_PROFILE (radii and angles empty for the rounded form, whose
-     * bottom is a half circle of the width).
+     * bottom is a half circle of the width). A square U's radii blend its bottom into each side, and
+     * its angles are each side's to the bottom in degrees (90 for a side square to it): the first
+     * side is the one that meets the profile's x axis at a positive value.
      */
     record U(
             String entity,
             Transform3 placement,
             double widthMm,
             OptionalDouble firstRadiusMm,
-            OptionalDouble firstAngleRad,
+            OptionalDouble firstAngleDeg,
             OptionalDouble secondRadiusMm,
-            OptionalDouble secondAngleRad)
+            OptionalDouble secondAngleDeg)
             implements Profile {
         public U {
             Objects.requireNonNull(entity);

@@ -128,6 +128,24 @@ final class SlotMilling {
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
             double w = checkedWidth(u.widthMm(), d, tol);
+            squareSides(u, "slot's square U", label, problems);
+            double fillet = bottomFillet(u, w, label, problems, tol);
+            if (fillet > tol.linear()) {
+                double e = cornerRadius(tool, r);
+                if (e > fillet + tol.linear()) {
+                    throw new UnsupportedOperationException("the cutter's corner radius " + mm(e)
+                            + " mm is larger than the square U's " + mm(fillet) + " mm bottom fillets: it would"
+                            + " leave them larger than drawn; a cutter with a corner of at most " + mm(fillet)
+                            + " mm mills them");
+                }
+                if (ends.stream().anyMatch(x -> x.type() == EndType.WOODRUFF)) {
+                    throw new UnsupportedOperationException("woodruff ends on a square U with bottom fillets are"
+                            + " not machined: the fillets would have to follow the end's arc up to the top");
+                }
+                if (fillet - e > tol.linear()) {
+                    return filleted(label, course, w / 2, fillet, e, r, ends, h, t, axialMm, tol, problems, pocket);
+                }
+            }
             if (ends.stream().anyMatch(e -> e.type() == EndType.WOODRUFF)) {
                 return woodruff(
                         label,
@@ -304,6 +322,100 @@ final class SlotMilling {
                             ? " mm; a ball end mill no wider than the circle (" + mm(2 * big)
                                     + " mm) reaches the bottom"
                             : " mm; a ball end mill as wide as the slot reaches the bottom"));
+        }
+        return shaped(label, course, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
+    }
+
+    /**
+     * Refuses a square U whose sides do not stand square to its bottom: a cutter along the
+     * feature axis mills upright walls only. An angle written 0 (a side lying along the bottom,
+     * which is no side: GRIMA's writers put 0 for an angle they leave unset) is read as square and
+     * reported.
+     */
+    static void squareSides(org.fresa.stepnc.Profile.U u, String what, String label, List<String> problems) {
+        java.util.OptionalDouble[] angles = {u.firstAngleDeg(), u.secondAngleDeg()};
+        String[] names = {"first_angle", "second_angle"};
+        for (int i = 0; i < 2; i++) {
+            if (angles[i].isEmpty()) {
+                continue;
+            }
+            double a = angles[i].getAsDouble();
+            if (Math.abs(a) < 1e-9) {
+                problems.add("workingstep '" + label + "': the " + what + "'s " + names[i] + " is written 0 deg (a"
+                        + " side along its bottom): read as a side square to the bottom");
+            } else if (Math.abs(a - 90) > SQUARE_TOLERANCE_DEG) {
+                throw new UnsupportedOperationException("the " + what + " has a side at " + mm(a)
+                        + " deg to its bottom (" + names[i] + "): only sides square to it are milled"
+                        + (Math.abs(a - Math.PI / 2) < 1e-4
+                                ? "; the file writes pi / 2, a right angle in radians where ISO 14649 writes 90"
+                                : ""));
+            }
+        }
+    }
+
+    /**
+     * The radius of the fillets between a square U's bottom and its sides (0 for sharp corners):
+     * the larger of the two when they differ, so that the cutter stays out of both (reported).
+     */
+    private static double bottomFillet(
+            org.fresa.stepnc.Profile.U u, double widthMm, String label, List<String> problems, Tolerance tol) {
+        double r1 = u.firstRadiusMm().orElse(0);
+        double r2 = u.secondRadiusMm().orElse(0);
+        if (r1 < 0 || r2 < 0) {
+            throw new IllegalArgumentException(
+                    "the square U's radii " + r1 + " and " + r2 + " mm must not be negative");
+        }
+        double fillet = Math.max(r1, r2);
+        if (fillet > widthMm / 2 + tol.linear()) {
+            throw new IllegalArgumentException("the square U's bottom fillet of " + mm(fillet) + " mm does not fit its "
+                    + mm(widthMm) + " mm width");
+        }
+        if (Math.abs(r1 - r2) > tol.linear()) {
+            problems.add("workingstep '" + label + "': the square U's bottom fillets of " + mm(r1) + " and " + mm(r2)
+                    + " mm are both milled with the larger");
+        }
+        return Math.min(fillet, widthMm / 2);
+    }
+
+    /**
+     * A square U whose bottom fillets are larger than the cutter's corner: upright walls down to
+     * the fillets' top, then layers each as wide as the cutter's corner may go there without
+     * entering a fillet (steps are left on the fillets, never cut into them), down to the floor or
+     * as far as the flat of the cutter's end fits between the fillets.
+     */
+    private static ToolpathSection filleted(
+            String label,
+            Course course,
+            double halfWidth,
+            double fillet,
+            double e,
+            double r,
+            List<SlotEnd> ends,
+            Heights h,
+            Tooling t,
+            double axialMm,
+            Tolerance tol,
+            List<String> problems,
+            PocketCutter pocket) {
+        double bottom = h.bottomZ();
+        double zc = bottom + fillet;
+        double re = fillet - e;
+        double ce = Math.max(r - e, 0);
+        double flat = halfWidth - fillet;
+        // the corner's centre, (ce + reach) from the middle and e above the tip, keeps within
+        // re of the fillet's centre, (flat) from the middle at zc
+        DoubleUnaryOperator reach = z ->
+                z + e >= zc ? halfWidth - r : flat + Math.sqrt(Math.max(re * re - (z + e - zc) * (z + e - zc), 0)) - ce;
+        double q = ce - flat;
+        double floor = q <= 0 ? bottom : q >= re ? zc - e : zc - e - Math.sqrt(re * re - q * q);
+        double layer = axialMm > 0 ? Math.min(axialMm, SHAPED_LAYER_MM) : SHAPED_LAYER_MM;
+        problems.add("workingstep '" + label + "': the square U's " + mm(fillet) + " mm bottom fillets are milled by"
+                + " the cutter's " + mm(e) + " mm corner in layers of at most " + mm(layer)
+                + " mm, leaving steps on them");
+        if (floor > bottom + tol.linear()) {
+            problems.add("workingstep '" + label + "': the " + mm(2 * r) + " mm cutter reaches " + mm(-floor)
+                    + " mm of the square U's " + mm(-bottom) + " mm: its flat end is wider than the floor between"
+                    + " the fillets; a cutter whose corner is the fillets' radius reaches the bottom");
         }
         return shaped(label, course, Math.min(0, zc), floor, reach, r, ends, h, t, axialMm, tol, pocket);
     }

@@ -678,14 +678,7 @@ public final class ToolpathPlanner {
                 ? w / 2
                 : Math.max(u.firstRadiusMm().orElse(0), u.secondRadiusMm().orElse(0));
         if (!rounded) {
-            for (java.util.OptionalDouble a : List.of(u.firstAngleRad(), u.secondAngleRad())) {
-                if (a.isPresent()
-                        && Math.abs(Math.toDegrees(a.getAsDouble()) - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
-                    throw new UnsupportedOperationException("the open pocket's U has a side at "
-                            + mm(Math.toDegrees(a.getAsDouble())) + " deg to its bottom: only sides square to it"
-                            + " are milled");
-                }
-            }
+            SlotMilling.squareSides(u, "open pocket's U", label, problems);
             if (Math.abs(u.firstRadiusMm().orElse(0) - u.secondRadiusMm().orElse(0)) > tol.linear()) {
                 problems.add("workingstep '" + label + "': the U's corners of "
                         + mm(u.firstRadiusMm().orElse(0)) + " and "

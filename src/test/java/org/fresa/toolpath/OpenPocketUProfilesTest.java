@@ -35,7 +35,7 @@ class OpenPocketUProfilesTest {
                                 + "#402= CARTESIAN_POINT('U BOTTOM',(45.000,80.000,0.000));");
     }
 
-    static final String SQUARE = "SQUARE_U_PROFILE(#401,40.000,8.000,1.570796,8.000,1.570796)";
+    static final String SQUARE = "SQUARE_U_PROFILE(#401,40.000,8.000,90.000,8.000,90.000)";
     static final String ROUNDED = "ROUNDED_U_PROFILE(#401,40.000)";
 
     // x from beyond the block's side to 45, y 60 to 100, the corners at x 45 rounded by 8 mm
@@ -71,13 +71,14 @@ class OpenPocketUProfilesTest {
 
     @Test
     void sidesNotSquareToTheBottomAreRefused() throws Exception {
-        String text = part("SQUARE_U_PROFILE(#401,40.000,8.000,1.400000,8.000,1.570796)");
+        String text = part("SQUARE_U_PROFILE(#401,40.000,8.000,80.000,8.000,90.000)");
         ToolpathPlanner.Plan p =
                 ToolpathPlanner.plan(StepNcReader.read(new StringReader(text), "u.stp"), Tolerance.DEFAULT);
         assertTrue(
                 p.problems().stream()
                         .anyMatch(x -> x.startsWith("workingstep 'WS OPEN POCKET' (#")
-                                && x.endsWith("deg to its bottom: only sides square to it are milled")),
+                                && x.endsWith("at 80 deg to its bottom (first_angle): only sides square to it are"
+                                        + " milled")),
                 p.problems().toString());
     }
 
