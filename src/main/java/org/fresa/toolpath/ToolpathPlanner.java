@@ -629,8 +629,65 @@ public final class ToolpathPlanner {
             traversesOverBosses(local, h.topZ(), BossPockets.tallestTopZ(f, place, h), tol);
         }
         edgeReaches(local, tool, op, sideTopZ(f, tool, h), tol);
+        floorRidges(label, f, op, tool, tooling, problems);
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /** A ridge on a finished floor up to this high (mm) is within the program's tolerance and not reported. */
+    static final double FLOOR_RIDGE_MM = 0.01;
+
+    /**
+     * Reports the ridges a cutter with a rounded corner (a bull-nose's edge_radius, a ball end
+     * mill's radius) leaves standing on a floor between passes farther apart than its flat end is
+     * wide: the passes clear the floor only under the flat, and the corners of two neighbouring
+     * passes meet above it. Left on the part, a ridge is material the drawing does not have.
+     */
+    static void floorRidges(String label, Feature f, Operation op, Tool tool, Tooling t, List<String> problems) {
+        boolean floors = switch (op.type()) {
+            case PLANE_ROUGH_MILLING,
+                    PLANE_FINISH_MILLING,
+                    BOTTOM_AND_SIDE_ROUGH_MILLING,
+                    BOTTOM_AND_SIDE_FINISH_MILLING -> true;
+            default -> false;
+        };
+        boolean flatFloor = switch (f.type()) {
+            case CLOSED_POCKET, OPEN_POCKET, PLANAR_FACE, STEP -> true;
+            default -> false;
+        };
+        if (!floors || !flatFloor) {
+            return;
+        }
+        double r = t.radiusMm();
+        double corner = tool.body().equals("BALL_ENDMILL")
+                ? r
+                : Math.min(Math.max(tool.edgeRadiusMm().orElse(0), 0), r);
+        double s = stepover(op, t);
+        double ridge = floorRidgeMm(r, corner, s);
+        if (ridge > FLOOR_RIDGE_MM && ridge > bottomAllowanceMm(op) + FLOOR_RIDGE_MM) {
+            double flat = r - corner;
+            double most =
+                    2 * (flat + Math.sqrt(corner * corner - (corner - FLOOR_RIDGE_MM) * (corner - FLOOR_RIDGE_MM)));
+            problems.add("workingstep '" + label + "': passes up to " + mm(s) + " mm apart leave ridges up to "
+                    + mm(ridge) + " mm high on the floor between them: the cutter's " + mm(corner)
+                    + " mm corner leaves a flat end " + mm(2 * flat) + " mm across; passes at most " + mm(most)
+                    + " mm apart (radial_cutting_depth) leave " + mm(FLOOR_RIDGE_MM) + " mm");
+        }
+    }
+
+    /**
+     * The highest ridge (mm) a cutter of the radius with a corner of the given radius leaves
+     * between two straight passes the stepover apart on a flat floor.
+     */
+    static double floorRidgeMm(double radiusMm, double cornerMm, double stepoverMm) {
+        double beyondFlat = stepoverMm / 2 - Math.max(radiusMm - cornerMm, 0);
+        if (!(beyondFlat > 0)) {
+            return 0;
+        }
+        if (beyondFlat >= cornerMm) {
+            return cornerMm;
+        }
+        return cornerMm - Math.sqrt(cornerMm * cornerMm - beyondFlat * beyondFlat);
     }
 
     /**
