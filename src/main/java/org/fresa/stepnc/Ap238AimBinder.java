@@ -966,20 +966,34 @@ final class Ap238AimBinder {
             case "OUTSIDE_PROFILE", "GENERAL_OUTSIDE_PROFILE" -> Feature.FeatureType.GENERAL_OUTSIDE_PROFILE;
             default -> Feature.FeatureType.OTHER;
         };
-        List<Long> uncut = pds.isPresent() ? uncutVolumes(pds.get()) : List.of();
-        if (!uncut.isEmpty() && profile.isPresent()) {
-            // ISO 10303-113 pocket WR16: the material a pocket leaves standing is its 'uncut volume',
-            // a BOSS; the binder does not read a boss's shape yet, and the outline milled without it
-            // would cut the boss away: the feature's outline is left unread, so that it is refused
-            profile = Optional.of(new Profile.Other(
-                    profile.get().entity() + " around an 'uncut volume' (BOSS "
-                            + uncut.stream()
-                                    .map(b -> "#" + b)
-                                    .reduce((a, b) -> a + ", " + b)
-                                    .orElse("")
-                            + ") the AIM binder does not read yet: milled without it, the boss would be cut away",
-                    profile.get().placement(),
-                    boundary.orElse(id)));
+        // ISO 10303-113 pocket WR16, step WR5, flat_face WR6: the material the feature leaves
+        // standing is its 'uncut volume', each BOSS related to it; the bosses are read as the ARM's
+        // its_boss. A boss that cannot be read leaves the feature refused: milled without it, the
+        // boss would be cut away
+        List<Feature> bosses = new ArrayList<>();
+        List<String> unread = new ArrayList<>();
+        for (long b : pds.isPresent() ? uncutVolumes(pds.get()) : List.<Long>of()) {
+            List<String> why = new ArrayList<>();
+            Optional<Feature> boss = boss(b, why);
+            if (boss.isPresent()) {
+                bosses.add(boss.get());
+            } else {
+                String kind = isA(b, "BOSS") ? "BOSS" : isA(b, "PROTRUSION") ? "PROTRUSION" : typeOf(b);
+                unread.add(kind + " #" + b + " (" + String.join("; ", why) + ")");
+            }
+        }
+        if (!unread.isEmpty()) {
+            String reason = " around an 'uncut volume' the AIM binder cannot read: " + String.join(", ", unread)
+                    + ": milled without it, the boss would be cut away";
+            bosses.clear();
+            if (profile.isPresent()) {
+                profile = Optional.of(new Profile.Other(
+                        profile.get().entity() + reason, profile.get().placement(), boundary.orElse(id)));
+            } else {
+                // a feature without an outline (a hole) is refused by its kind
+                entity = entity + reason;
+                type = Feature.FeatureType.OTHER;
+            }
         }
         if (securityPlane.isPresent()
                 && type != Feature.FeatureType.OTHER
@@ -1055,15 +1069,17 @@ final class Ap238AimBinder {
                 orthogonal,
                 List.of(),
                 ends,
-                List.of());
+                bosses);
         features.put(id, out);
         return out;
     }
 
     /**
-     * The features related to a feature's 'uncut volume' aspect (a COMPOSITE_SHAPE_ASPECT, or a
+     * The shape aspects related to a feature's 'uncut volume' (a COMPOSITE_SHAPE_ASPECT, or a
      * SHAPE_ASPECT, of that name) by a FEATURE_COMPONENT_RELATIONSHIP or another
-     * SHAPE_ASPECT_RELATIONSHIP: its bosses (ISO 10303-113 pocket WR16).
+     * SHAPE_ASPECT_RELATIONSHIP, the uncut volume relating, each a BOSS or a PROTRUSION (pocket
+     * WR16, step WR5, flat_face WR6). An 'uncut volume' that relates nothing is given as itself,
+     * which is no boss: material stands there whose shape the file does not give.
      */
     private List<Long> uncutVolumes(long pds) {
         List<Long> out = new ArrayList<>();
@@ -1072,6 +1088,7 @@ final class Ap238AimBinder {
                 if (!text(rec(a, aspectType).orElseThrow().param(0)).trim().equalsIgnoreCase("uncut volume")) {
                     continue;
                 }
+                int before = out.size();
                 for (String relType : List.of("FEATURE_COMPONENT_RELATIONSHIP", "SHAPE_ASPECT_RELATIONSHIP")) {
                     for (long rel : usersOf(a, relType, 2)) {
                         ref(rec(rel, relType).orElseThrow().param(3))
@@ -1079,9 +1096,310 @@ final class Ap238AimBinder {
                                 .ifPresent(out::add);
                     }
                 }
+                if (out.size() == before && !out.contains(a)) {
+                    out.add(a);
+                }
             }
         }
         return out;
+    }
+
+    /** What a boss's profile occurrence is named and the profiles it may relate, by the boss's description. */
+    private static final Map<String, List<String>> BOSS_PROFILES = Map.of(
+            "circular", List.of("circular profile", "CIRCULAR_CLOSED_PROFILE"),
+            "rectangular", List.of("rectangular profile", "RECTANGULAR_CLOSED_PROFILE"),
+            "complex", List.of("enclosed boundary", "CLOSED_PATH_PROFILE", "NGON_CLOSED_PROFILE"));
+
+    /** A boss's top lies at its placement, and its height and top along its axis, within this (mm, and cosine). */
+    static final double BOSS_TOP_MM = 1e-6;
+
+    /**
+     * A BOSS of an 'uncut volume' as the ARM binder gives an its_boss: placed by its
+     * 'orientation' (at its top, as the ARM's feature_placement), as deep as its 'boss height', its
+     * boundary the closed profile its description names, or empty with why it cannot be read in
+     * {@code why}. ISO 10303-113 boss: WR1 (description 'circular', 'rectangular' or 'complex'),
+     * WR2 ('boss height occurrence', a 'linear' PATH_FEATURE_COMPONENT related as 'boss height'),
+     * WR4, WR5 (its parameters: 'orientation' and an optional 'fillet radius'), WR6, WR9, WR11 (the
+     * profile: 'circular profile occurrence' a CIRCULAR_CLOSED_PROFILE, 'enclosed boundary
+     * occurrence' a CLOSED_PATH_PROFILE or NGON_CLOSED_PROFILE, 'rectangular profile occurrence' a
+     * RECTANGULAR_CLOSED_PROFILE, each 'profile usage'), WR7 ('top condition occurrence' related to
+     * a BOSS_TOP as 'boss top usage'; boss_top WR2-WR4, WR6, WR9: 'planar', its location and
+     * direction, named 'boss height start' or 'boss height end', an optional 'top radius'), WR8,
+     * WR10 (a taper), WR12 (an optional maximum feature limit). What ISO 14649-10's BOSS cannot
+     * hold (a fillet at its foot, a rounded top, a taper, corner radii, a top away from its
+     * placement or not square to its axis) is not read: milled as a plain upright boss it would
+     * not be the boss drawn.
+     */
+    private Optional<Feature> boss(long id, List<String> why) throws StepParseException {
+        if (!isA(id, "BOSS")) {
+            why.add(
+                    isA(id, "PROTRUSION")
+                            ? "a PROTRUSION, whose shape the binder does not read"
+                            : isA(id, "COMPOSITE_SHAPE_ASPECT")
+                                            || isA(id, "SHAPE_ASPECT") && !isA(id, "FEATURE_DEFINITION")
+                                    ? "an 'uncut volume' relating no BOSS"
+                                    : "not a BOSS nor a PROTRUSION");
+            return Optional.empty();
+        }
+        String bossId = rec(id, "SHAPE_ASPECT").map(r -> text(r.param(0))).orElse("");
+        String kind = rec(id, "CHARACTERIZED_OBJECT")
+                .map(r -> text(r.param(1)).trim().toLowerCase(Locale.ROOT))
+                .orElse("");
+        List<String> profileKinds = BOSS_PROFILES.get(kind);
+        if (profileKinds == null) {
+            why.add("'" + bossId + "' described '" + kind
+                    + "', not 'circular', 'rectangular' nor 'complex' (boss WR1)");
+            return Optional.empty();
+        }
+        Optional<Long> pds = firstUser(id, "PRODUCT_DEFINITION_SHAPE", 2);
+        if (pds.isEmpty()) {
+            why.add("'" + bossId + "' has no shape (PRODUCT_DEFINITION_SHAPE)");
+            return Optional.empty();
+        }
+        Optional<Long> placementId = Optional.empty();
+        Optional<Transform3> limit = Optional.empty();
+        for (long r : representationsOf(pds.get())) {
+            String repName = inst(r) == null ? "" : text(inst(r).record().param(0));
+            for (long i : items(r)) {
+                if (repName.equalsIgnoreCase("maximum feature limit") && isA(i, "PLANE")) {
+                    limit = plane(i);
+                } else if (isA(i, "AXIS2_PLACEMENT_3D") && placementId.isEmpty()) {
+                    placementId = Optional.of(i);
+                } else if (item(i).name().trim().equalsIgnoreCase("fillet radius")
+                        && item(i).kind().equals("measure")
+                        && item(i).value().orElse(-1) == 0) {
+                    continue;
+                } else {
+                    why.add("'" + bossId + "' has "
+                            + (item(i).name().isBlank()
+                                    ? "a " + typeOf(i)
+                                    : "'" + item(i).name() + "' "
+                                            + item(i).value().stream()
+                                                    .mapToObj(v -> num(v) + " mm")
+                                                    .findFirst()
+                                                    .orElse(""))
+                            + " among its parameters ('orientation' and a 'fillet radius' at its foot, boss WR4),"
+                            + " which ISO 14649-10's boss has not");
+                }
+            }
+        }
+        if (placementId.isEmpty()) {
+            why.add("'" + bossId + "' has no placement ('orientation')");
+        }
+        // the aspects of the boss by occurrence, each with the relationships that relate a component to it
+        Map<String, List<Long>> aspects = new LinkedHashMap<>();
+        for (long aspect : usersOf(pds.get(), "SHAPE_ASPECT", 2)) {
+            String occurrence = text(rec(aspect, "SHAPE_ASPECT").orElseThrow().param(1))
+                    .toLowerCase(Locale.ROOT)
+                    .replace(" occurrence", "")
+                    .trim();
+            List<Long> rels = aspects.computeIfAbsent(occurrence, k -> new ArrayList<>());
+            for (String relType : List.of("SHAPE_DEFINING_RELATIONSHIP", "FEATURE_COMPONENT_RELATIONSHIP")) {
+                rels.addAll(usersOf(aspect, relType, 3));
+            }
+        }
+        for (String occurrence : aspects.keySet()) {
+            if (!List.of("boss height", profileKinds.get(0), "top condition").contains(occurrence)) {
+                why.add("'" + bossId + "' has a '" + occurrence + " occurrence'"
+                        + (occurrence.startsWith("change in") ? " (a taper, boss WR8, WR10)" : "")
+                        + ", which ISO 14649-10's boss has not");
+            }
+        }
+        Transform3 placement = Transform3.IDENTITY;
+        if (placementId.isPresent()) {
+            placement = placement(placementId.get());
+        }
+        // boss WR2: its height, a 'linear' path along its axis
+        List<Long> heights = related(aspects, "boss height", "boss height", "PATH_FEATURE_COMPONENT");
+        OptionalDouble height = OptionalDouble.empty();
+        if (heights.size() != 1) {
+            why.add("'" + bossId + "' has " + heights.size() + " 'boss height's, not one (a 'linear'"
+                    + " PATH_FEATURE_COMPONENT related to its 'boss height occurrence', boss WR2)");
+        } else {
+            TravelPath h = travel(heights.get(0), placementId);
+            if (!h.entity().equals("LINEAR_PATH")) {
+                why.add("'" + bossId + "' has a 'boss height' " + h.entity() + ", not a 'linear' path (boss WR2)");
+            } else if (h.distanceMm().isEmpty() || !(h.distanceMm().getAsDouble() > 0)) {
+                why.add("'" + bossId + "' has a 'boss height' without a positive 'distance'");
+            } else if (h.direction().isPresent()
+                    && Math.abs(h.placement()
+                                    .applyToDirection(h.direction().get())
+                                    .normalized()
+                                    .z())
+                            < 1 - BOSS_TOP_MM) {
+                why.add("'" + bossId + "' has a 'boss height' at an angle to its axis");
+            } else {
+                height = h.distanceMm();
+            }
+        }
+        Optional<Transform3> depthPlane = Optional.empty();
+        if (limit.isPresent() && height.isPresent()) {
+            double limitDepth = -limit.get().translationPart().z() + 0.0;
+            if (Math.abs(limitDepth - height.getAsDouble()) > SAME_DEPTH_MM) {
+                why.add("'" + bossId + "' is " + num(height.getAsDouble()) + " mm high and its maximum feature limit "
+                        + num(limitDepth) + " mm below its top");
+            } else {
+                depthPlane = limit;
+            }
+        }
+        // boss WR6, WR9, WR11: the closed profile its description names
+        List<Long> profiles = related(
+                aspects,
+                profileKinds.get(0),
+                null,
+                profileKinds.subList(1, profileKinds.size()).toArray(String[]::new));
+        Optional<Profile> boundary = Optional.empty();
+        if (profiles.size() != 1) {
+            why.add("'" + bossId + "' (" + kind + ") has " + profiles.size() + " "
+                    + String.join(" or ", profileKinds.subList(1, profileKinds.size())) + "s related to a '"
+                    + profileKinds.get(0)
+                    + " occurrence', not one");
+        } else {
+            boundary = bossProfile(profiles.get(0), placementId, bossId, why);
+        }
+        // boss WR7, boss_top: its planar top, at its placement and square to its axis
+        List<Long> tops = related(aspects, "top condition", null, "BOSS_TOP");
+        if (tops.size() != 1) {
+            why.add("'" + bossId + "' has " + tops.size() + " BOSS_TOPs related to a 'top condition occurrence',"
+                    + " not one (boss WR7)");
+        } else {
+            bossTop(tops.get(0), aspects.get("top condition"), placement, bossId, why);
+        }
+        if (!why.isEmpty()) {
+            return Optional.empty();
+        }
+        return Optional.of(new Feature(
+                id,
+                Feature.FeatureType.BOSS,
+                "BOSS",
+                bossId,
+                placement,
+                height,
+                depthPlane,
+                boundary,
+                Optional.empty(),
+                OptionalDouble.empty(),
+                Optional.empty(),
+                OptionalDouble.empty(),
+                OptionalDouble.empty(),
+                List.of(),
+                List.of(),
+                List.of()));
+    }
+
+    /**
+     * The components of the given entities that relationships of the occurrence relate to it
+     * (their relating aspect), those of the name when one is given.
+     */
+    private List<Long> related(Map<String, List<Long>> aspects, String occurrence, String name, String... types) {
+        List<Long> out = new ArrayList<>();
+        for (long rel : aspects.getOrDefault(occurrence, List.of())) {
+            StepRecord r = inst(rel).record();
+            if (name != null && !text(r.param(0)).trim().equalsIgnoreCase(name)) {
+                continue;
+            }
+            Optional<Long> c = ref(r.param(2));
+            if (c.isPresent() && List.of(types).stream().anyMatch(t -> isA(c.get(), t)) && !out.contains(c.get())) {
+                out.add(c.get());
+            }
+        }
+        return out;
+    }
+
+    /**
+     * A boss's boundary as ISO 14649-10 has it: a circle of its 'diameter', a rectangle of its
+     * 'width' and 'length' (without a 'corner radius'), a closed curve; an NGON_CLOSED_PROFILE is
+     * not read.
+     */
+    private Optional<Profile> bossProfile(long id, Optional<Long> bossPlacement, String bossId, List<String> why)
+            throws StepParseException {
+        String entity = typeOf(id);
+        List<String> allowed = switch (entity) {
+            case "CIRCULAR_CLOSED_PROFILE" -> List.of("diameter");
+            case "RECTANGULAR_CLOSED_PROFILE" -> List.of("width", "length");
+            case "CLOSED_PATH_PROFILE" -> List.of();
+            default -> null;
+        };
+        if (allowed == null) {
+            why.add("'" + bossId + "' is bounded by a " + entity + ", which the AIM binder does not read");
+            return Optional.empty();
+        }
+        List<Long> items = shapeItems(id);
+        List<String> foreign = foreignItems(
+                items.stream()
+                        .filter(i -> !isA(i, "AXIS2_PLACEMENT_3D")
+                                && !isA(i, "POLYLINE")
+                                && !isA(i, "COMPOSITE_CURVE")
+                                && !isA(i, "TRIMMED_CURVE"))
+                        .toList(),
+                allowed);
+        if (!foreign.isEmpty()) {
+            why.add("'" + bossId + "' is bounded by a " + entity + " with " + String.join(", ", foreign)
+                    + ", which ISO 14649-10's profile has not");
+            return Optional.empty();
+        }
+        for (String n : allowed) {
+            OptionalDouble v = lengthOf(namedMeasure(items, n));
+            if (v.isEmpty() || !(v.getAsDouble() > 0)) {
+                why.add("'" + bossId + "' is bounded by a " + entity + " without a positive '" + n + "'");
+                return Optional.empty();
+            }
+        }
+        Profile p = profile(id, bossPlacement);
+        if (p instanceof Profile.General g && (!g.closed() || g.segments().isEmpty())) {
+            why.add("'" + bossId + "' is bounded by a " + entity + " without a closed curve ('profile shape')");
+            return Optional.empty();
+        }
+        return Optional.of(p);
+    }
+
+    /**
+     * Checks a boss's BOSS_TOP: 'planar', related as 'boss height start' or 'boss height end'
+     * (boss_top WR6), its location on the plane through the boss's placement square to its axis,
+     * its direction along that axis, no 'top radius' but 0. The top is where the ARM's
+     * feature_placement puts it; a boss placed elsewhere is not read.
+     */
+    private void bossTop(long top, List<Long> relationships, Transform3 placement, String bossId, List<String> why)
+            throws StepParseException {
+        String kind = text(inst(top).record().param(1)).trim().toLowerCase(Locale.ROOT);
+        if (!kind.equals("planar")) {
+            why.add("'" + bossId + "' has a '" + kind + "' top, which the binder does not read: only a 'planar' one");
+            return;
+        }
+        for (long rel : relationships) {
+            StepRecord r = inst(rel).record();
+            String name = text(r.param(0)).trim().toLowerCase(Locale.ROOT);
+            if (ref(r.param(2)).orElse(-1L) == top
+                    && !(name.equals("boss height start") || name.equals("boss height end"))) {
+                why.add("'" + bossId + "' relates its top as '" + name
+                        + "', not 'boss height start' nor 'boss height end' (boss_top WR6)");
+            }
+        }
+        Optional<Vec3> location = Optional.empty();
+        Optional<Vec3> direction = Optional.empty();
+        for (long i : shapeItems(top)) {
+            if (isA(i, "CARTESIAN_POINT")) {
+                location = Optional.of(mm(geometry.pointOf(i)));
+            } else if (isA(i, "DIRECTION")) {
+                direction = Optional.of(geometry.directionOf(i));
+            } else if (item(i).name().trim().equalsIgnoreCase("top radius")
+                    && item(i).value().orElse(-1) != 0) {
+                why.add("'" + bossId + "' has a 'top radius', which ISO 14649-10's boss has not");
+            }
+        }
+        if (location.isEmpty() || direction.isEmpty()) {
+            why.add("'" + bossId + "''s planar top has no " + (location.isEmpty() ? "location" : "direction")
+                    + " (boss_top WR3, WR4)");
+            return;
+        }
+        double above = location.get().minus(placement.translationPart()).dot(placement.zAxis());
+        if (Math.abs(above) > BOSS_TOP_MM) {
+            why.add("'" + bossId + "''s top is " + num(above) + " mm from its placement along its axis: the binder"
+                    + " reads a boss placed at its top, as ISO 14649-10's");
+        }
+        if (Math.abs(direction.get().normalized().dot(placement.zAxis())) < 1 - BOSS_TOP_MM) {
+            why.add("'" + bossId + "''s top is not square to its axis");
+        }
     }
 
     /** A SLOT_END as its slot relates it: the relationship's name, the end, the relationship. */

@@ -319,8 +319,9 @@ class Ap238ToolpathTest {
     }
 
     /**
-     * A pocket's boss in the AIM is its 'uncut volume' (ISO 10303-113 pocket WR16), which the
-     * binder does not read yet: the pocket is refused, not milled through the boss.
+     * A pocket's boss in the AIM is its 'uncut volume' (ISO 10303-113 pocket WR16); one the binder
+     * cannot read (here without a description, boss WR1, nor a profile) leaves the pocket refused,
+     * not milled through the boss.
      */
     @Test
     void aPocketAroundAnUncutVolumeIsRefusedNotMilledThroughIt() throws Exception {
@@ -338,7 +339,10 @@ class Ap238ToolpathTest {
         assertEquals(1, plan.planned(), plan.problems().toString());
         String why = plan.refusals().get(p.workingsteps().get(1).instanceId());
         assertTrue(
-                why != null && why.contains("'uncut volume' (BOSS #582)") && why.contains("cut away"),
+                why != null
+                        && why.contains("around an 'uncut volume' the AIM binder cannot read")
+                        && why.contains("BOSS #582 ('BOSS1' described ''")
+                        && why.contains("cut away"),
                 String.valueOf(why));
     }
 
