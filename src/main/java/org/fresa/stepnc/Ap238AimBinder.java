@@ -1676,23 +1676,51 @@ final class Ap238AimBinder {
                 curve = Optional.of(it);
             }
         }
+        // a dimension the profile does not give is not taken as 0, and a rectangle's corner radius
+        // (which the ARM's rectangular_closed_profile has not: its pocket's orthogonal_radius rounds
+        // the corners) is not dropped: a pocket milled to sharp corners would cut into them
+        OptionalDouble length = lengthOf(namedMeasure(items, "profile length", "length"));
+        OptionalDouble width = lengthOf(namedMeasure(items, "profile width", "width"));
+        OptionalDouble diameter = lengthOf(namedMeasure(items, "diameter"));
+        OptionalDouble corner = lengthOf(namedMeasure(items, "corner radius"));
+        List<String> missing = new ArrayList<>();
+        switch (entity) {
+            case "LINEAR_PROFILE" -> {
+                if (length.isEmpty()) {
+                    missing.add("'length'");
+                }
+            }
+            case "CIRCULAR_CLOSED_PROFILE" -> {
+                if (diameter.isEmpty()) {
+                    missing.add("'diameter'");
+                }
+            }
+            case "RECTANGULAR_CLOSED_PROFILE" -> {
+                if (width.isEmpty()) {
+                    missing.add("'width'");
+                }
+                if (length.isEmpty()) {
+                    missing.add("'length'");
+                }
+            }
+            default -> {}
+        }
+        if (!missing.isEmpty()) {
+            return new Profile.Other(entity + " without its " + String.join(" and ", missing), pl, id);
+        }
+        if (entity.equals("RECTANGULAR_CLOSED_PROFILE") && corner.isPresent() && corner.getAsDouble() > 0) {
+            return new Profile.Other(
+                    entity + " with a 'corner radius' of " + corner.getAsDouble()
+                            + " mm, which the AIM binder does not read (milled square, its corners would be cut"
+                            + " into)",
+                    pl,
+                    id);
+        }
         return switch (entity) {
-            case "LINEAR_PROFILE" ->
-                new Profile.Linear(
-                        entity,
-                        pl,
-                        lengthOf(namedMeasure(items, "profile length", "length"))
-                                .orElse(0));
-            case "CIRCULAR_CLOSED_PROFILE" ->
-                new Profile.Circular(
-                        entity, pl, lengthOf(namedMeasure(items, "diameter")).orElse(0));
+            case "LINEAR_PROFILE" -> new Profile.Linear(entity, pl, length.getAsDouble());
+            case "CIRCULAR_CLOSED_PROFILE" -> new Profile.Circular(entity, pl, diameter.getAsDouble());
             case "RECTANGULAR_CLOSED_PROFILE" ->
-                new Profile.Rectangular(
-                        entity,
-                        pl,
-                        lengthOf(namedMeasure(items, "profile width", "width")).orElse(0),
-                        lengthOf(namedMeasure(items, "profile length", "length"))
-                                .orElse(0));
+                new Profile.Rectangular(entity, pl, width.getAsDouble(), length.getAsDouble());
             case "SQUARE_U_PROFILE", "ROUNDED_U_PROFILE", "VEE_PROFILE", "TEE_PROFILE", "PARTIAL_CIRCULAR_PROFILE" ->
                 slotProfile(entity, id, pl, items);
             case "CLOSED_PATH_PROFILE", "OPEN_PATH_PROFILE" -> {

@@ -795,7 +795,42 @@ final class Iso14649Binder {
         }
         List<Feature> out = new ArrayList<>();
         for (long id : refList(f, "its_boss")) {
-            out.add(feature(f, id));
+            Feature boss = feature(f, id);
+            Optional<E> b = known(id);
+            OptionalDouble slope =
+                    b.isPresent() && b.get().has("slope") ? num(b.get(), "slope") : OptionalDouble.empty();
+            if (slope.isPresent()
+                    && Math.abs(slope.getAsDouble()) > 1e-9
+                    && boss.profile().isPresent()) {
+                // the planner leaves a boss standing upright: one whose flanks lean would have
+                // them cut away, so its outline is bound as one the planner refuses, with why
+                Profile outline = boss.profile().get();
+                boss = new Feature(
+                        boss.instanceId(),
+                        boss.type(),
+                        boss.entity(),
+                        boss.id(),
+                        boss.placement(),
+                        boss.depthMm(),
+                        boss.depthPlane(),
+                        Optional.of(new Profile.Other(
+                                outline.entity() + " with flanks leaning "
+                                        + java.math.BigDecimal.valueOf(degrees(slope.getAsDouble()))
+                                                .stripTrailingZeros()
+                                                .toPlainString()
+                                        + " deg from upright (slope)",
+                                outline.placement(),
+                                id)),
+                        boss.courseOfTravel(),
+                        boss.diameterMm(),
+                        boss.bottomCondition(),
+                        boss.planarRadiusMm(),
+                        boss.orthogonalRadiusMm(),
+                        boss.operationIds(),
+                        boss.slotEnds(),
+                        boss.bosses());
+            }
+            out.add(boss);
         }
         return out;
     }
