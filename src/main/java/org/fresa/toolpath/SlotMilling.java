@@ -117,6 +117,16 @@ final class SlotMilling {
             throw new UnsupportedOperationException("the slot's course of travel is closed and its ends are not"
                     + " LOOP_SLOT_END_TYPE: a closed course has no ends");
         }
+        boolean closed = course instanceof Course.General g && g.closed();
+        if (!closed && ends.isEmpty()) {
+            // ISO 14649-10 allows the list empty and says nothing of such ends: square keeps the
+            // tool within the course of travel, which any other end would leave too
+            problems.add("workingstep '" + label + "': the slot gives no end_conditions: both its ends are cut"
+                    + " square, the tool kept within its course of travel");
+        } else if (!closed && ends.size() == 1) {
+            problems.add("workingstep '" + label + "': the slot gives one end condition ("
+                    + ends.get(0).entity() + "): taken for both its ends");
+        }
         double depth = -h.bottomZ();
         double r = t.radiusMm();
         double d = t.diameterMm();
