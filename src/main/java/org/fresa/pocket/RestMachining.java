@@ -274,7 +274,11 @@ public final class RestMachining {
                 // the whole loop from its own start, as the plan cuts it
                 out.add(loop.curves());
             } else {
-                out.add(stretch(loop, r[0], r[1]));
+                List<Curve2> piece = stretch(loop, r[0], r[1]);
+                // a run shorter than the program's resolution has no move: the check after finds what it left
+                if (!piece.isEmpty()) {
+                    out.add(piece);
+                }
             }
         }
         return out;
