@@ -468,7 +468,7 @@ public final class PocketService {
      * {@link #strategyToolpath} with the rest tool's plan, when there is a rest tool.
      *
      * @throws CamInputException as {@link #strategyToolpath}, or for a rest tool not smaller than
-     *     the first by {@link PocketStrategy#REST_TOOL_MARGIN_MM}
+     *     the first as {@link #restToolRange} asks
      */
     public static StrategyPocket.Planned strategyPlan(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
@@ -500,17 +500,18 @@ public final class PocketService {
     }
 
     /**
-     * The rest tool's diameters with a first tool of this diameter: above 0 and below the first's
-     * less {@link PocketStrategy#REST_TOOL_MARGIN_MM} (mm), as {@code --rest-tool} and the job's
-     * {@code restToolDiameterMm} take them.
+     * The rest tool's diameters with a first tool of this diameter: from
+     * {@link PocketStrategy#MIN_REST_TOOL_MM} (the smallest tool, as {@code --tool-diameter}) to
+     * below the first's less {@link PocketStrategy#REST_TOOL_MARGIN_MM} (mm), as
+     * {@code --rest-tool} and the job's {@code restToolDiameterMm} take them.
      */
     public static org.fresa.setting.SettingRange restToolRange(double firstToolDiameterMm) {
         return new org.fresa.setting.SettingRange(
                 "--rest-tool",
                 "restToolDiameterMm",
-                0,
-                false,
-                Math.max(1e-6, firstToolDiameterMm - PocketStrategy.REST_TOOL_MARGIN_MM),
+                PocketStrategy.MIN_REST_TOOL_MM,
+                true,
+                Math.max(2 * PocketStrategy.MIN_REST_TOOL_MM, firstToolDiameterMm - PocketStrategy.REST_TOOL_MARGIN_MM),
                 false,
                 "mm",
                 false);

@@ -17,14 +17,19 @@ import org.fresa.model.WordedEnum;
  * @param order the offset passes' order: from the inside out (the thesis's, the default) or from
  *     the outside in (the finishing pass still last); unused by zigzag
  * @param restToolDiameterMm the diameter of a second, smaller tool that cuts only what the first
- *     left and it can reach ({@link RestMachining}), 0 for none (mm); smaller than the first tool
- *     by at least {@link #REST_TOOL_MARGIN_MM}, checked where the first tool's diameter is known
+ *     left and it can reach ({@link RestMachining}), 0 for none (mm); at least
+ *     {@link #MIN_REST_TOOL_MM} and smaller than the first tool by more than
+ *     {@link #REST_TOOL_MARGIN_MM} ({@link #restToolFits}), checked where the first tool's
+ *     diameter is known
  */
 public record PocketStrategy(
         Kind kind, double angleDeg, double stockToLeaveMm, Order order, double restToolDiameterMm) {
 
     /** How much smaller than the first tool a rest tool must be at least (mm): less would find no rest. */
     public static final double REST_TOOL_MARGIN_MM = 0.01;
+
+    /** The smallest rest tool (mm): the smallest tool a pocket may have. */
+    public static final double MIN_REST_TOOL_MM = 0.01;
 
     /** The lines' direction bounds (deg). */
     public static final double MAX_ANGLE_DEG = 180;
@@ -69,11 +74,11 @@ public record PocketStrategy(
     }
 
     /**
-     * Whether a rest tool of this diameter may follow a first tool of that one: more than 0 and
-     * smaller by at least {@link #REST_TOOL_MARGIN_MM}.
+     * Whether a rest tool of this diameter may follow a first tool of that one: at least
+     * {@link #MIN_REST_TOOL_MM} and smaller by more than {@link #REST_TOOL_MARGIN_MM}.
      */
     public static boolean restToolFits(double restMm, double firstMm) {
-        return restMm > 0 && restMm < firstMm - REST_TOOL_MARGIN_MM;
+        return restMm >= MIN_REST_TOOL_MM && restMm < firstMm - REST_TOOL_MARGIN_MM;
     }
 
     /** The patterns, by the names the command line and the job file use. */

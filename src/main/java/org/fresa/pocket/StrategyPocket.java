@@ -53,7 +53,7 @@ public final class StrategyPocket {
      * Plans the pocket as {@link #toolpath}, the rest tool too.
      *
      * @throws IllegalArgumentException as {@link #toolpath}, or for a rest tool not smaller than the
-     *     first by {@link PocketStrategy#REST_TOOL_MARGIN_MM}
+     *     first as {@link PocketStrategy#restToolFits} asks
      * @throws ToolTooLargeException as {@link #toolpath}, or where the rest tool cannot go down or
      *     both tools leave material it could reach
      */
@@ -67,8 +67,8 @@ public final class StrategyPocket {
             throws ToolTooLargeException {
         if (strategy.restTool() && !PocketStrategy.restToolFits(strategy.restToolDiameterMm(), tech.toolDiameterMm())) {
             throw new IllegalArgumentException("the rest tool (" + strategy.restToolDiameterMm()
-                    + " mm) must be smaller than the first (" + tech.toolDiameterMm() + " mm) by at least "
-                    + PocketStrategy.REST_TOOL_MARGIN_MM + " mm");
+                    + " mm) must be at least " + PocketStrategy.MIN_REST_TOOL_MM + " mm and smaller than the first ("
+                    + tech.toolDiameterMm() + " mm) by more than " + PocketStrategy.REST_TOOL_MARGIN_MM + " mm");
         }
         double stock = strategy.stockToLeaveMm();
         List<Contour> boundary = RegionOffsetter.oriented(outer, islands);

@@ -94,7 +94,8 @@ class PocketStrategyJobTest {
             "order=\"sideways\"",
             "restToolDiameterMm=\"6\"",
             "restToolDiameterMm=\"5.995\"",
-            "restToolDiameterMm=\"0\""
+            "restToolDiameterMm=\"0\"",
+            "restToolDiameterMm=\"0.001\""
         }) {
             Path file = dir.resolve("bad.xml");
             Files.writeString(

@@ -195,6 +195,8 @@ class RestMachiningTest {
         assertTrue(PocketStrategy.restToolFits(9.98, 10));
         assertFalse(PocketStrategy.restToolFits(9.99, 10));
         assertFalse(PocketStrategy.restToolFits(0, 10));
+        assertFalse(PocketStrategy.restToolFits(0.005, 10));
+        assertTrue(PocketStrategy.restToolFits(0.01, 10));
     }
 
     private static PocketStrategy strategy(double restMm) {

@@ -305,7 +305,7 @@ class PocketViewModelTest {
         assertTrue(m.problems().isEmpty(), m.problems().toString());
         m.setRestTool("6");
         assertEquals(
-                "Rest tool (mm): expected a number above 0 mm and below 5.99 mm, found 6.",
+                "Rest tool (mm): expected a number of at least 0.01 mm and below 5.99 mm, found 6.",
                 m.problems().get(PocketViewModel.REST_TOOL));
         m.setRestTool("2,5");
         assertTrue(m.problems().get(PocketViewModel.REST_TOOL).contains("decimals take a point: 2.5"));

@@ -123,8 +123,9 @@ final class PocketCommand extends CliCommand {
     @Option(
             names = "--rest-tool",
             paramLabel = "D",
-            description = "a second, smaller tool (T2, diameter in mm, above 0 and below --tool-diameter less 0.01)"
-                    + " that cuts only what the first left and it can reach (G-code and APT posts); default none")
+            description =
+                    "a second, smaller tool (T2, diameter in mm, at least 0.01 and below --tool-diameter less 0.01)"
+                            + " that cuts only what the first left and it can reach (G-code and APT posts); default none")
     Double restToolDiameterMm;
 
     @Option(

@@ -100,11 +100,12 @@ class BoundedOptionsTest {
             --angle,       NaN,    from -180 to 180 deg
             --stock-to-leave, 11,  from 0 to 10 mm
             --stock-to-leave, -1,  from 0 to 10 mm
-            --rest-tool,   6,      above 0 mm and below 5.99 mm
-            --rest-tool,   5.995,  above 0 mm and below 5.99 mm
-            --rest-tool,   0,      above 0 mm and below 5.99 mm
-            --rest-tool,   -2,     above 0 mm and below 5.99 mm
-            --rest-tool,   NaN,    above 0 mm and below 5.99 mm
+            --rest-tool,   6,      at least 0.01 mm and below 5.99 mm
+            --rest-tool,   5.995,  at least 0.01 mm and below 5.99 mm
+            --rest-tool,   0,      at least 0.01 mm and below 5.99 mm
+            --rest-tool,   1e-9,   at least 0.01 mm and below 5.99 mm
+            --rest-tool,   -2,     at least 0.01 mm and below 5.99 mm
+            --rest-tool,   NaN,    at least 0.01 mm and below 5.99 mm
             """)
     void pocketOptionsOutOfTheirRangeAreRefused(String option, String value, String range) throws Exception {
         refused(run(pocket(option, value)), option, range, "found");
