@@ -367,7 +367,11 @@ public final class JobXml {
                             Pocket.STRATEGY.require(p.getStrategy()),
                             Pocket.ANGLE.require(p.getAngleDeg()),
                             Pocket.STOCK_TO_LEAVE.require(p.getStockToLeaveMm()),
-                            Pocket.ORDER.require(p.getOrder()))));
+                            Pocket.ORDER.require(p.getOrder()),
+                            p.getRestToolDiameterMm() == null
+                                    ? 0
+                                    : PocketService.restToolRange(p.getToolDiameterMm())
+                                            .require(p.getRestToolDiameterMm()))));
         }
         CuttingType c = x.getCutting();
         if (c != null) {
@@ -694,6 +698,9 @@ public final class JobXml {
             }
             if (st.stockToLeaveMm() != org.fresa.pocket.PocketStrategy.DEFAULT.stockToLeaveMm()) {
                 t.setStockToLeaveMm(st.stockToLeaveMm());
+            }
+            if (st.restTool()) {
+                t.setRestToolDiameterMm(st.restToolDiameterMm());
             }
             if (st.order() != org.fresa.pocket.PocketStrategy.DEFAULT.order()) {
                 t.setOrder(st.order().word());

@@ -461,22 +461,60 @@ public final class PocketService {
      */
     public static Toolpath strategyToolpath(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
+        return strategyPlan(s).toolpath();
+    }
+
+    /**
+     * {@link #strategyToolpath} with the rest tool's plan, when there is a rest tool.
+     *
+     * @throws CamInputException as {@link #strategyToolpath}, or for a rest tool not smaller than
+     *     the first as {@link #restToolRange} asks
+     */
+    public static StrategyPocket.Planned strategyPlan(PocketSettings s)
+            throws CamInputException, IOException, ToolTooLargeException {
         PocketStrategy st = s.strategy();
         if (s.post().sevenM()) {
-            String option = st.zigzag() ? "--strategy" : st.stockToLeaveMm() > 0 ? "--stock-to-leave" : "--order";
-            String what = st.zigzag() ? "zigzag" : st.stockToLeaveMm() > 0 ? "stock to leave" : "passes outside in";
+            String option = st.zigzag()
+                    ? "--strategy"
+                    : st.stockToLeaveMm() > 0 ? "--stock-to-leave" : st.restTool() ? "--rest-tool" : "--order";
+            String what = st.zigzag()
+                    ? "zigzag"
+                    : st.stockToLeaveMm() > 0
+                            ? "stock to leave"
+                            : st.restTool() ? "a rest tool (a second tool, T2)" : "passes outside in";
             throw new CamInputException(
                     option,
                     "the thesis's 7M posts write its own offset passes only: " + what + " needs one of "
                             + String.join(", ", NcPosts.names()));
         }
+        if (st.restTool()) {
+            restToolRange(s.toolDiameterMm()).check(st.restToolDiameterMm());
+        }
         List<Contour> contours = strategyContours(s);
         try {
-            return StrategyPocket.toolpath(
+            return StrategyPocket.plan(
                     contours.get(0), contours.subList(1, contours.size()), technology(s), st, s.climb(), entryRule(s));
         } catch (IllegalArgumentException e) {
             throw new CamInputException("--stock-to-leave", e.getMessage());
         }
+    }
+
+    /**
+     * The rest tool's diameters with a first tool of this diameter: from
+     * {@link PocketStrategy#MIN_REST_TOOL_MM} (the smallest tool, as {@code --tool-diameter}) to
+     * below the first's less {@link PocketStrategy#REST_TOOL_MARGIN_MM} (mm), as
+     * {@code --rest-tool} and the job's {@code restToolDiameterMm} take them.
+     */
+    public static org.fresa.setting.SettingRange restToolRange(double firstToolDiameterMm) {
+        return new org.fresa.setting.SettingRange(
+                "--rest-tool",
+                "restToolDiameterMm",
+                PocketStrategy.MIN_REST_TOOL_MM,
+                true,
+                Math.max(2 * PocketStrategy.MIN_REST_TOOL_MM, firstToolDiameterMm - PocketStrategy.REST_TOOL_MARGIN_MM),
+                false,
+                "mm",
+                false);
     }
 
     private static PocketTechnology technology(PocketSettings s, double floorMm) throws CamInputException {
@@ -521,12 +559,13 @@ public final class PocketService {
 
     /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
     static TaskOutcome runStrategy(PocketSettings s, Path outFile) throws CamInputException, IOException {
-        Toolpath path;
+        StrategyPocket.Planned planned;
         try {
-            path = strategyToolpath(s);
+            planned = strategyPlan(s);
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
+        Toolpath path = planned.toolpath();
         String nc = toolpathProgram(path, s.post(), s.contour().getFileName().toString());
         Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
         if (refused.isPresent()) {
@@ -548,9 +587,26 @@ public final class PocketService {
                 "depth_passes",
                 technology(s, s.zBottomMm() + st.stockToLeaveMm()).depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
+        List<String> problems = new ArrayList<>();
+        if (planned.rest().isPresent()) {
+            org.fresa.pocket.RestMachining.Plan rest = planned.rest().get();
+            summary.put("rest_tool_diameter_mm", st.restToolDiameterMm());
+            summary.put("rest_tool_rpm", rest.technology().spindleRpm());
+            summary.put("rest_area_mm2", rest.restAreaMm2());
+            summary.put("rest_pieces", rest.pieces().size());
+            summary.put("rest_pieces_length_mm", rest.piecesLengthMm());
+            if (!rest.cuts()) {
+                problems.add(REST_TOOL_IDLE);
+            }
+        }
         summary.put("out", outFile.toString());
-        return new TaskOutcome(0, List.of(), summary, List.of(outFile));
+        return new TaskOutcome(0, problems, summary, List.of(outFile));
     }
+
+    /** The warning when the first tool leaves nothing the rest tool can reach: no T2 is written. */
+    public static final String REST_TOOL_IDLE =
+            "warning: the rest tool has nothing to cut: the first tool reaches everything it could; no second tool"
+                    + " is written";
 
     /**
      * Checks the program (the program check of the settings' post and pocket) and writes it to

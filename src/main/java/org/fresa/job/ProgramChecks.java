@@ -90,7 +90,7 @@ public final class ProgramChecks {
      * depth pass ({@code G01 G91 Z-}): it is checked with the thesis's cutter declared
      * centre-cutting and asked to plunge (a slot drill, the only tool those programs can have been
      * run with), in the 7M's frame whose zero is the pocket's top ({@code G54 Z} = the top), as
-     * {@code 7m} is.
+     * {@code 7m} is. A rest tool (T2) is the same kind of cutter with its own radius.
      */
     public static Limits pocket(PocketSettings s) {
         double r = s.toolDiameterMm() / 2;
@@ -116,7 +116,14 @@ public final class ProgramChecks {
                     s.centreCutting() ? "a centre-cutting cutter asked to ramp" : "a cutter not cutting at its centre",
                     0);
         }
-        return l.withOtherTools(tool.withRadiusMm(r));
+        l = l.withOtherTools(tool.withRadiusMm(r));
+        if (s.strategy().restTool()) {
+            // the rest tool (T2) enters as the first does, and the check judges it into stock
+            l = l.withTool(
+                    org.fresa.pocket.RestMachining.TOOL_NUMBER,
+                    tool.withRadiusMm(s.strategy().restToolDiameterMm() / 2));
+        }
+        return l;
     }
 
     /**

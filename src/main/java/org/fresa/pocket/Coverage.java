@@ -39,7 +39,13 @@ public final class Coverage {
     private final List<Vec2[]> faceChords;
     private final double radiusMm;
 
-    private Coverage(Box2 box, double cellMm, List<Contour> faces, List<List<Curve2>> passes, double radiusMm) {
+    private Coverage(
+            Box2 box,
+            double cellMm,
+            List<Contour> faces,
+            List<List<Curve2>> passes,
+            double passesRadiusMm,
+            double radiusMm) {
         this.cellMm = cellMm;
         this.x0 = box.minX();
         this.y0 = box.minY();
@@ -60,9 +66,22 @@ public final class Coverage {
         reach.or(inside);
         for (List<Curve2> pass : passes) {
             for (Vec2[] s : chords(pass)) {
-                capsule(cut, s[0], s[1], radiusMm);
+                capsule(cut, s[0], s[1], passesRadiusMm);
             }
         }
+    }
+
+    private Coverage(Coverage c) {
+        this.x0 = c.x0;
+        this.y0 = c.y0;
+        this.cellMm = c.cellMm;
+        this.nx = c.nx;
+        this.ny = c.ny;
+        this.inside = c.inside;
+        this.reach = c.reach;
+        this.cut = (BitSet) c.cut.clone();
+        this.faceChords = c.faceChords;
+        this.radiusMm = c.radiusMm;
     }
 
     /**
@@ -75,6 +94,28 @@ public final class Coverage {
      * @param cellMm the grid's cell (coarser when the pocket would need more than {@link #MAX_CELLS})
      */
     public static Coverage of(List<Contour> faces, List<List<Curve2>> passes, double radiusMm, double cellMm) {
+        return of(faces, passes, radiusMm, radiusMm, cellMm);
+    }
+
+    /**
+     * What a smaller second tool can reach and a first tool's passes leave: the rest material.
+     * The reachable cells are the second tool's (within its radius of its own finishing offset),
+     * the cut ones those within the first tool's radius of its passes at the floor; what is cut
+     * later ({@link #cutAlong}) and the links ({@link #clearedAlong}) are the second tool's.
+     *
+     * @param faces the second tool's finishing offset (faces counter-clockwise, holes clockwise)
+     * @param firstPasses the curves the first tool's centre follows at the floor
+     * @param firstRadiusMm the first tool's radius
+     * @param radiusMm the second tool's radius
+     * @param cellMm the grid's cell, as {@link #of}
+     */
+    public static Coverage rest(
+            List<Contour> faces, List<List<Curve2>> firstPasses, double firstRadiusMm, double radiusMm, double cellMm) {
+        return of(faces, firstPasses, firstRadiusMm, radiusMm, cellMm);
+    }
+
+    private static Coverage of(
+            List<Contour> faces, List<List<Curve2>> passes, double passesRadiusMm, double radiusMm, double cellMm) {
         Box2 box = null;
         for (Contour c : faces) {
             box = box == null ? c.bounds() : box.union(c.bounds());
@@ -84,7 +125,41 @@ public final class Coverage {
         }
         box = new Box2(box.minX() - radiusMm, box.minY() - radiusMm, box.maxX() + radiusMm, box.maxY() + radiusMm);
         double h = Math.max(cellMm, Math.sqrt(box.width() * box.height() / MAX_CELLS));
-        return new Coverage(box, h, faces, passes, radiusMm);
+        return new Coverage(box, h, faces, passes, passesRadiusMm, radiusMm);
+    }
+
+    /** A copy whose cut cells may grow apart from this one's (the grid and the faces shared). */
+    Coverage copy() {
+        return new Coverage(this);
+    }
+
+    /** Whether the tool's disc along the segment ab meets a cell it can reach that is not cut. */
+    boolean meetsUncut(Vec2 a, Vec2 b) {
+        boolean[] met = {false};
+        runs(a, b, radiusMm, (from, to) -> {
+            for (int k = reach.nextSetBit(from); k >= 0 && k < to && !met[0]; k = reach.nextSetBit(k + 1)) {
+                met[0] = !cut.get(k);
+            }
+        });
+        return met[0];
+    }
+
+    /** The reachable cells no pass has cut, as a set of cell indices. */
+    BitSet uncutCells() {
+        BitSet u = (BitSet) reach.clone();
+        u.andNot(cut);
+        return u;
+    }
+
+    /** The centre of a cell by its index. */
+    Vec2 cellCentre(int index) {
+        return centre(index % nx, index / nx);
+    }
+
+    /** The cells [from, to) of one row. */
+    @FunctionalInterface
+    private interface Run {
+        void cells(int from, int to);
     }
 
     /** The side of a cell (mm). */
@@ -232,6 +307,11 @@ public final class Coverage {
 
     /** Marks the cells whose centre lies within r of the segment ab. */
     private void capsule(BitSet bits, Vec2 a, Vec2 b, double r) {
+        runs(a, b, r, bits::set);
+    }
+
+    /** The runs of cells, row by row, whose centre lies within r of the segment ab. */
+    private void runs(Vec2 a, Vec2 b, double r, Run out) {
         if (!(r > 0)) {
             return;
         }
@@ -280,7 +360,11 @@ public final class Coverage {
                 hi = Math.max(hi, Math.max(a.x(), b.x()));
             }
             if (lo <= hi) {
-                setRun(bits, j, lo, hi);
+                int i0 = Math.max(0, (int) Math.ceil((lo - x0) / cellMm - 0.5));
+                int i1 = Math.min(nx - 1, (int) Math.floor((hi - x0) / cellMm - 0.5));
+                if (i0 <= i1) {
+                    out.cells(j * nx + i0, j * nx + i1 + 1);
+                }
             }
         }
     }

@@ -16,8 +16,20 @@ import org.fresa.model.WordedEnum;
  *     and a floor that much higher
  * @param order the offset passes' order: from the inside out (the thesis's, the default) or from
  *     the outside in (the finishing pass still last); unused by zigzag
+ * @param restToolDiameterMm the diameter of a second, smaller tool that cuts only what the first
+ *     left and it can reach ({@link RestMachining}), 0 for none (mm); at least
+ *     {@link #MIN_REST_TOOL_MM} and smaller than the first tool by more than
+ *     {@link #REST_TOOL_MARGIN_MM} ({@link #restToolFits}), checked where the first tool's
+ *     diameter is known
  */
-public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, Order order) {
+public record PocketStrategy(
+        Kind kind, double angleDeg, double stockToLeaveMm, Order order, double restToolDiameterMm) {
+
+    /** How much smaller than the first tool a rest tool must be at least (mm): less would find no rest. */
+    public static final double REST_TOOL_MARGIN_MM = 0.01;
+
+    /** The smallest rest tool (mm): the smallest tool a pocket may have. */
+    public static final double MIN_REST_TOOL_MM = 0.01;
 
     /** The lines' direction bounds (deg). */
     public static final double MAX_ANGLE_DEG = 180;
@@ -46,6 +58,29 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
         this(kind, angleDeg, 0, Order.INSIDE_OUT);
     }
 
+    /** A pattern, stock and order with no rest tool. */
+    public PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, Order order) {
+        this(kind, angleDeg, stockToLeaveMm, order, 0);
+    }
+
+    /** The same strategy with a rest tool of this diameter (mm), 0 for none. */
+    public PocketStrategy withRestTool(double diameterMm) {
+        return new PocketStrategy(kind, angleDeg, stockToLeaveMm, order, diameterMm);
+    }
+
+    /** Whether a rest tool follows the first. */
+    public boolean restTool() {
+        return restToolDiameterMm > 0;
+    }
+
+    /**
+     * Whether a rest tool of this diameter may follow a first tool of that one: at least
+     * {@link #MIN_REST_TOOL_MM} and smaller by more than {@link #REST_TOOL_MARGIN_MM}.
+     */
+    public static boolean restToolFits(double restMm, double firstMm) {
+        return restMm >= MIN_REST_TOOL_MM && restMm < firstMm - REST_TOOL_MARGIN_MM;
+    }
+
     /** The patterns, by the names the command line and the job file use. */
     public enum Kind implements WordedEnum {
         /** Passes parallel to the walls, from the inside out. */
@@ -69,11 +104,17 @@ public record PocketStrategy(Kind kind, double angleDeg, double stockToLeaveMm, 
                     "stock to leave must be in [0, " + MAX_STOCK_TO_LEAVE_MM + "] mm: " + stockToLeaveMm);
         }
         Objects.requireNonNull(order, "order");
+        if (!(restToolDiameterMm >= 0) || Double.isInfinite(restToolDiameterMm)) {
+            throw new IllegalArgumentException("rest tool diameter must be >= 0 mm: " + restToolDiameterMm);
+        }
     }
 
-    /** Whether nothing is left and offset passes run inside out, as the thesis's engine plans them. */
+    /**
+     * Whether nothing is left, offset passes run inside out and one tool cuts, as the thesis's
+     * engine plans them.
+     */
     public boolean asThesis() {
-        return stockToLeaveMm == 0 && order == Order.INSIDE_OUT;
+        return stockToLeaveMm == 0 && order == Order.INSIDE_OUT && !restTool();
     }
 
     /** Whether the floor is cleared by zigzag lines. */

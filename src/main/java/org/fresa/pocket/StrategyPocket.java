@@ -10,7 +10,8 @@ import org.fresa.model.Toolpath;
  * ({@link ZigzagPocket}), or offset passes ({@link RegionPocket}) with stock left or cut from the
  * outside in. Stock to leave: the region is offset inwards by it (walls and islands that much
  * nearer) and the floor raised by it, so that every pass keeps it from what it finishes later.
- * Units mm.
+ * A rest tool: a second section, T2, that cuts only what the first tool left and it can reach
+ * ({@link RestMachining}), in the same region with the same stock. Units mm.
  */
 public final class StrategyPocket {
 
@@ -37,6 +38,38 @@ public final class StrategyPocket {
             boolean climb,
             EntryRule entry)
             throws ToolTooLargeException {
+        return plan(outer, islands, tech, strategy, climb, entry).toolpath();
+    }
+
+    /**
+     * The toolpath and, with a rest tool, its plan.
+     *
+     * @param toolpath the first tool's section, then the rest tool's when it has something to cut
+     * @param rest the rest tool's plan, empty without a rest tool
+     */
+    public record Planned(Toolpath toolpath, java.util.Optional<RestMachining.Plan> rest) {}
+
+    /**
+     * Plans the pocket as {@link #toolpath}, the rest tool too.
+     *
+     * @throws IllegalArgumentException as {@link #toolpath}, or for a rest tool not smaller than the
+     *     first as {@link PocketStrategy#restToolFits} asks
+     * @throws ToolTooLargeException as {@link #toolpath}, or where the rest tool cannot go down or
+     *     both tools leave material it could reach
+     */
+    public static Planned plan(
+            Contour outer,
+            List<Contour> islands,
+            PocketTechnology tech,
+            PocketStrategy strategy,
+            boolean climb,
+            EntryRule entry)
+            throws ToolTooLargeException {
+        if (strategy.restTool() && !PocketStrategy.restToolFits(strategy.restToolDiameterMm(), tech.toolDiameterMm())) {
+            throw new IllegalArgumentException("the rest tool (" + strategy.restToolDiameterMm()
+                    + " mm) must be at least " + PocketStrategy.MIN_REST_TOOL_MM + " mm and smaller than the first ("
+                    + tech.toolDiameterMm() + " mm) by more than " + PocketStrategy.REST_TOOL_MARGIN_MM + " mm");
+        }
         double stock = strategy.stockToLeaveMm();
         List<Contour> boundary = RegionOffsetter.oriented(outer, islands);
         PocketTechnology t = tech;
@@ -61,11 +94,27 @@ public final class StrategyPocket {
                         "the walls less " + stock + " mm of stock leave no room for the pocket: leave less stock");
             }
         }
-        if (strategy.zigzag()) {
-            return ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry)
-                    .toolpath();
+        Toolpath first = strategy.zigzag()
+                ? ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry)
+                        .toolpath()
+                : RegionPocket.plan(
+                                boundary, t, climb, entry, true, strategy.order() == PocketStrategy.Order.OUTSIDE_IN)
+                        .toolpath();
+        if (!strategy.restTool()) {
+            return new Planned(first, java.util.Optional.empty());
         }
-        return RegionPocket.plan(boundary, t, climb, entry, true, strategy.order() == PocketStrategy.Order.OUTSIDE_IN)
-                .toolpath();
+        RestMachining.Plan rest = RestMachining.plan(
+                boundary,
+                first,
+                t.radiusMm(),
+                RestMachining.technology(t, strategy.restToolDiameterMm()),
+                climb,
+                entry);
+        if (rest.section().isEmpty()) {
+            return new Planned(first, java.util.Optional.of(rest));
+        }
+        List<org.fresa.model.ToolpathSection> sections = new java.util.ArrayList<>(first.sections());
+        sections.add(rest.section().get());
+        return new Planned(new Toolpath(sections), java.util.Optional.of(rest));
     }
 }

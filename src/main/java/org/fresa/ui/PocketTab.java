@@ -48,6 +48,7 @@ final class PocketTab extends PlotTab {
     private final JComboBox<String> strategy = new JComboBox<>(PocketViewModel.STRATEGIES.toArray(new String[0]));
     private final JTextField angle = new JTextField(8);
     private final JTextField stockToLeave = new JTextField(8);
+    private final JTextField restTool = new JTextField(8);
     private final JComboBox<String> order = new JComboBox<>(PocketViewModel.ORDERS.toArray(new String[0]));
     private final JButton run = new JButton("Compute");
     private final JButton saveProgram = new JButton("Save program...");
@@ -116,6 +117,11 @@ final class PocketTab extends PlotTab {
         order.setName(PocketViewModel.ORDER);
         order.addActionListener(e -> fieldsChanged());
         row("Pass order (offset)", 'r', order);
+        // empty: one tool; a diameter: a second, smaller tool (T2) for what the first left
+        restTool.setName(PocketViewModel.REST_TOOL);
+        restTool.setToolTipText("Empty for none; a smaller tool that cuts only what the first could not reach");
+        TextChanges.onChange(restTool, this::fieldsChanged);
+        row(PocketViewModel.REST_TOOL_LABEL, 'T', restTool);
         run.setMnemonic('C');
         run.setName("pocket-compute");
         run.addActionListener(e -> compute());
@@ -186,6 +192,7 @@ final class PocketTab extends PlotTab {
             angle.setText(model.angle());
             stockToLeave.setText(model.stockToLeave());
             order.setSelectedItem(model.order());
+            restTool.setText(model.restTool());
         });
         report.setText("");
         nc.setText("");
@@ -325,6 +332,7 @@ final class PocketTab extends PlotTab {
         model.setAngle(angle.getText());
         model.setStockToLeave(stockToLeave.getText());
         model.setOrder((String) order.getSelectedItem());
+        model.setRestTool(restTool.getText());
         Map<String, String> problems = model.problems();
         mark(contour, problems);
         for (JTextField f : tech) {
@@ -333,6 +341,7 @@ final class PocketTab extends PlotTab {
         mark(entryAngle, problems);
         mark(angle, problems);
         mark(stockToLeave, problems);
+        mark(restTool, problems);
         run.setEnabled(problems.isEmpty());
         run.setToolTipText(
                 problems.isEmpty()

@@ -122,6 +122,10 @@ public final class PocketViewModel {
     public static final String ANGLE_LABEL = "Zigzag angle (deg)";
 
     public static final String STOCK_TO_LEAVE_LABEL = "Stock to leave (mm)";
+    /** The rest tool's field (a key of {@link #problems()}): empty for none. */
+    public static final String REST_TOOL = "pocket-rest-tool";
+    /** The rest tool's label. */
+    public static final String REST_TOOL_LABEL = "Rest tool (mm)";
     /** The strategies and orders the tab offers, as the job and the command line name them. */
     public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
             org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word);
@@ -145,6 +149,8 @@ public final class PocketViewModel {
     private String stockToLeave =
             ExactDecimal.of(PocketSettings.DEFAULTS.strategy().stockToLeaveMm());
     private String order = PocketSettings.DEFAULTS.strategy().order().word();
+    // empty: no rest tool
+    private String restTool = "";
     // the contour typed in the editor, held in the job; empty: the contour file is read
     private Optional<org.fresa.pocket.DadContour> elements = Optional.empty();
 
@@ -190,6 +196,7 @@ public final class PocketViewModel {
         angle = ExactDecimal.of(p.strategy().angleDeg());
         stockToLeave = ExactDecimal.of(p.strategy().stockToLeaveMm());
         order = p.strategy().order().word();
+        restTool = p.strategy().restTool() ? ExactDecimal.of(p.strategy().restToolDiameterMm()) : "";
     }
 
     public String contourText() {
@@ -329,6 +336,20 @@ public final class PocketViewModel {
         order = w;
     }
 
+    /** The rest tool's diameter as typed (mm), empty for none. */
+    public String restTool() {
+        return restTool;
+    }
+
+    public void setRestTool(String t) {
+        restTool = t.trim();
+    }
+
+    /** The rest tool's diameter (mm), 0 when the field is empty. */
+    private double restToolMm() {
+        return restTool.isEmpty() ? 0 : Double.parseDouble(restTool);
+    }
+
     /** A typed number's problem against its range, as the other fields word it. */
     private static Optional<String> numberProblem(String label, String text, org.fresa.setting.SettingRange range) {
         try {
@@ -381,6 +402,20 @@ public final class PocketViewModel {
         numberProblem(ANGLE_LABEL, angle, Pocket.ANGLE).ifPresent(m -> out.put(ANGLE, m));
         numberProblem(STOCK_TO_LEAVE_LABEL, stockToLeave, Pocket.STOCK_TO_LEAVE)
                 .ifPresent(m -> out.put(STOCK_TO_LEAVE, m));
+        if (!restTool.isEmpty()) {
+            // bounded by the first tool's diameter as typed, as --rest-tool is by --tool-diameter
+            double first;
+            try {
+                first = Double.parseDouble(values[0]);
+            } catch (NumberFormatException e) {
+                first = Pocket.TOOL_DIAMETER.max();
+            }
+            if (!Pocket.TOOL_DIAMETER.contains(first)) {
+                first = Pocket.TOOL_DIAMETER.max();
+            }
+            numberProblem(REST_TOOL_LABEL, restTool, PocketService.restToolRange(first))
+                    .ifPresent(m -> out.put(REST_TOOL, m));
+        }
         return out;
     }
 
@@ -419,7 +454,8 @@ public final class PocketViewModel {
                         Pocket.STRATEGY.require(strategy),
                         Double.parseDouble(angle),
                         Double.parseDouble(stockToLeave),
-                        Pocket.ORDER.require(order)));
+                        Pocket.ORDER.require(order),
+                        restToolMm()));
         return Optional.of(elements.isPresent() ? s.withElements(s.contour(), elements.get()) : s);
     }
 
@@ -482,7 +518,8 @@ public final class PocketViewModel {
             String name = settings.contour().getFileName().toString();
             if (settings.strategy().zigzag() || !settings.strategy().asThesis()) {
                 // the program fresa pocket and Job > Run write for these settings
-                Toolpath path = PocketService.strategyToolpath(settings);
+                org.fresa.pocket.StrategyPocket.Planned planned = PocketService.strategyPlan(settings);
+                Toolpath path = planned.toolpath();
                 List<Contour> contours = PocketService.strategyContours(settings);
                 List<Curve2> walls = new ArrayList<>();
                 for (Contour c : contours) {
@@ -499,6 +536,19 @@ public final class PocketViewModel {
                         contours.size() - 1,
                         ExactDecimal.of(st.stockToLeaveMm()),
                         String.format(Locale.ROOT, ", path %.1f mm", PocketToolpath.lengthMm(path)));
+                if (planned.rest().isPresent()) {
+                    org.fresa.pocket.RestMachining.Plan rest = planned.rest().get();
+                    report += rest.cuts()
+                            ? String.format(
+                                    Locale.ROOT,
+                                    "rest tool T2 D%s at %.0f rpm: %.2f mm2 of rest in %d piece(s), %.1f mm a layer%n",
+                                    ExactDecimal.of(st.restToolDiameterMm()),
+                                    rest.technology().spindleRpm(),
+                                    rest.restAreaMm2(),
+                                    rest.pieces().size(),
+                                    rest.piecesLengthMm())
+                            : PocketService.REST_TOOL_IDLE + "\n";
+                }
                 return new Outcome(
                         Optional.of(Result.checked(
                                 scene, report, PocketService.toolpathProgram(path, settings.post(), name), checked)),

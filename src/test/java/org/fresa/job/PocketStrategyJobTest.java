@@ -56,7 +56,8 @@ class PocketStrategyJobTest {
         for (PocketStrategy st : new PocketStrategy[] {
             new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 37.5, 0.25, PocketStrategy.Order.INSIDE_OUT),
             new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0.5, PocketStrategy.Order.OUTSIDE_IN),
-            new PocketStrategy(PocketStrategy.Kind.ZIGZAG, -180, 0, PocketStrategy.Order.INSIDE_OUT)
+            new PocketStrategy(PocketStrategy.Kind.ZIGZAG, -180, 0, PocketStrategy.Order.INSIDE_OUT),
+            new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0, PocketStrategy.Order.INSIDE_OUT, 2.5)
         }) {
             Job job = Job.empty(JobTask.POCKET).withPocket(settings(contour, st));
             Path file = dir.resolve("job.xml");
@@ -78,7 +79,8 @@ class PocketStrategyJobTest {
                 xml.contains("strategy=")
                         || xml.contains("angleDeg=")
                         || xml.contains("stockToLeaveMm=")
-                        || xml.contains("order="),
+                        || xml.contains("order=")
+                        || xml.contains("restToolDiameterMm="),
                 xml);
         assertEquals(
                 PocketStrategy.DEFAULT, JobXml.read(file).pocket().orElseThrow().strategy());
@@ -86,7 +88,15 @@ class PocketStrategyJobTest {
 
     @Test
     void anAngleOrAStockOutOfRangeIsRefusedAtTheJobFile() throws Exception {
-        for (String attribute : new String[] {"angleDeg=\"200\"", "stockToLeaveMm=\"11\"", "order=\"sideways\""}) {
+        for (String attribute : new String[] {
+            "angleDeg=\"200\"",
+            "stockToLeaveMm=\"11\"",
+            "order=\"sideways\"",
+            "restToolDiameterMm=\"6\"",
+            "restToolDiameterMm=\"5.995\"",
+            "restToolDiameterMm=\"0\"",
+            "restToolDiameterMm=\"0.001\""
+        }) {
             Path file = dir.resolve("bad.xml");
             Files.writeString(
                     file,
@@ -112,5 +122,41 @@ class PocketStrategyJobTest {
         assertEquals(0, o.exitStatus(), o.problems().toString());
         assertTrue(Files.exists(out.resolve("pocket.ngc")));
         assertEquals(Files.readString(direct), Files.readString(out.resolve("pocket.ngc")));
+    }
+
+    @Test
+    void runningTheSavedJobWithARestToolWritesThePocketCommandsProgram() throws Exception {
+        PocketSettings s = settings(
+                Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0, PocketStrategy.Order.INSIDE_OUT, 2));
+        Path direct = dir.resolve("direct.ngc");
+        TaskOutcome d = PocketService.run(s, direct, ProgressMonitor.NONE);
+        assertEquals(0, d.exitStatus(), d.problems().toString());
+        String nc = Files.readString(direct);
+        assertTrue(nc.contains("T2 M6") && nc.contains("S9000 M3"), "a tool change to the 2 mm tool at 9000 rpm");
+        assertEquals(2.0, d.summary().get("rest_tool_diameter_mm"));
+        Path file = dir.resolve("job.xml");
+        JobXml.write(Job.empty(JobTask.POCKET).withPocket(s), file);
+        assertTrue(Files.readString(file).contains("restToolDiameterMm=\"2.0\""), Files.readString(file));
+        Path out = dir.resolve("out");
+        Files.createDirectories(out);
+        TaskOutcome o = JobRunner.run(JobXml.read(file), new OutputFolder(out), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(nc, Files.readString(out.resolve("pocket.ngc")));
+    }
+
+    @Test
+    void aRestToolWithNothingToCutWritesNoSecondToolAndSaysSo() throws Exception {
+        // a round pocket: the 6 mm tool reaches all of it
+        Path contour = dir.resolve("round.contour");
+        Files.writeString(contour, "contour\nmove 30 0\narc 0 0 30 0 ccw\n");
+        PocketSettings s = settings(
+                contour, new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0, PocketStrategy.Order.INSIDE_OUT, 2));
+        Path out = dir.resolve("round.ngc");
+        TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(java.util.List.of(PocketService.REST_TOOL_IDLE), o.problems());
+        assertTrue(o.problems().get(0).contains("the rest tool has nothing to cut"));
+        assertFalse(Files.readString(out).contains("T2"));
     }
 }

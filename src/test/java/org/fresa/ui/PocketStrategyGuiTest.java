@@ -66,7 +66,11 @@ class PocketStrategyGuiTest extends WindowGuiTest {
         window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
         // every strategy field has a label that names it and takes the keyboard there
         for (String name : new String[] {
-            PocketViewModel.STRATEGY, PocketViewModel.ANGLE, PocketViewModel.STOCK_TO_LEAVE, PocketViewModel.ORDER
+            PocketViewModel.STRATEGY,
+            PocketViewModel.ANGLE,
+            PocketViewModel.STOCK_TO_LEAVE,
+            PocketViewModel.ORDER,
+            PocketViewModel.REST_TOOL
         }) {
             assertTrue(
                     GuiActionRunner.execute(() -> {
@@ -117,5 +121,64 @@ class PocketStrategyGuiTest extends WindowGuiTest {
                 .findByName(window.target(), "pocket-nc", javax.swing.text.JTextComponent.class, false)
                 .getText());
         assertEquals(Files.readString(out), shown);
+    }
+
+    @Test
+    void aRestToolTypedInTheTabIsCheckedAsTypedAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                        6,
+                        0.6,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))));
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.textBox(PocketViewModel.REST_TOOL).requireText("");
+        window.textBox(PocketViewModel.REST_TOOL).enterText("6");
+        Pause.pause(
+                new Condition("the rest tool as large as the first is explained") {
+                    @Override
+                    public boolean test() {
+                        return status().contains("Rest tool (mm)");
+                    }
+                },
+                Timeout.timeout(30_000));
+        window.button("pocket-compute").requireDisabled();
+        window.textBox(PocketViewModel.REST_TOOL).deleteText().enterText("2");
+        window.button("pocket-compute").requireEnabled();
+        window.button("pocket-compute").click();
+        Pause.pause(
+                new Condition("the program is computed") {
+                    @Override
+                    public boolean test() {
+                        return status().equals("done") || status().contains("refused");
+                    }
+                },
+                Timeout.timeout(60_000));
+        assertEquals("done", status());
+        PocketSettings s = GuiActionRunner.execute(() -> model.job().pocket().orElseThrow());
+        assertEquals(2, s.strategy().restToolDiameterMm());
+        Path out = dir.resolve("p.ngc");
+        assertEquals(0, PocketService.run(s, out, ProgressMonitor.NONE).exitStatus());
+        String shown = GuiActionRunner.execute(() -> window.robot()
+                .finder()
+                .findByName(window.target(), "pocket-nc", javax.swing.text.JTextComponent.class, false)
+                .getText());
+        assertEquals(Files.readString(out), shown);
+        assertTrue(shown.contains("T2 M6"));
     }
 }

@@ -277,4 +277,60 @@ class PocketViewModelTest {
         assertEquals("0.3", again.stockToLeave());
         assertEquals("outside-in", again.order());
     }
+
+    @Test
+    void theRestToolIsCheckedAsTypedAndTheProgramIsFresaRunsOfTheSavedJob(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        PocketViewModel m = new PocketViewModel();
+        assertEquals("", m.restTool());
+        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                        6,
+                        0.6,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT)));
+        assertTrue(m.problems().isEmpty(), m.problems().toString());
+        m.setRestTool("6");
+        assertEquals(
+                "Rest tool (mm): expected a number of at least 0.01 mm and below 5.99 mm, found 6.",
+                m.problems().get(PocketViewModel.REST_TOOL));
+        m.setRestTool("2,5");
+        assertTrue(m.problems().get(PocketViewModel.REST_TOOL).contains("decimals take a point: 2.5"));
+        m.setRestTool("2.5");
+        assertTrue(m.problems().isEmpty(), m.problems().toString());
+        PocketSettings s = m.typedSettings().orElseThrow();
+        assertEquals(2.5, s.strategy().restToolDiameterMm());
+        m.setSettings(s);
+        m.compute();
+        String tab = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
+        assertTrue(tab.contains("T2 M6"), tab);
+        assertTrue(m.result().orElseThrow().report().contains("rest tool T2 D2.5"));
+        Path file = dir.resolve("job.xml");
+        org.fresa.job.JobXml.write(
+                org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET).withPocket(s), file);
+        Path out = dir.resolve("out");
+        java.nio.file.Files.createDirectories(out);
+        org.fresa.job.TaskOutcome o = org.fresa.job.JobRunner.run(
+                org.fresa.job.JobXml.read(file),
+                new org.fresa.io.OutputFolder(out),
+                org.fresa.job.ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        assertEquals(java.nio.file.Files.readString(out.resolve("pocket.ngc")), tab);
+        PocketViewModel again = new PocketViewModel();
+        again.load(org.fresa.job.JobXml.read(file));
+        assertEquals("2.5", again.restTool());
+    }
 }

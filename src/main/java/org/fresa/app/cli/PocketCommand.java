@@ -16,7 +16,7 @@ import picocli.CommandLine.Parameters;
 /**
  * {@code fresa pocket CONTOUR --out FILE [technology options] [--post NAME] [--direction D] [--report FILE]
  * [--strategy offset|zigzag] [--angle DEG] [--stock-to-leave MM] [--order inside-out|outside-in]
- * [--thesis-name NAME] [--json]}.
+ * [--rest-tool D] [--thesis-name NAME] [--json]}.
  */
 @Command(
         name = "pocket",
@@ -121,6 +121,14 @@ final class PocketCommand extends CliCommand {
     PocketStrategy.Order order = DEFAULTS.strategy().order();
 
     @Option(
+            names = "--rest-tool",
+            paramLabel = "D",
+            description =
+                    "a second, smaller tool (T2, diameter in mm, at least 0.01 and below --tool-diameter less 0.01)"
+                            + " that cuts only what the first left and it can reach (G-code and APT posts); default none")
+    Double restToolDiameterMm;
+
+    @Option(
             names = "--report",
             paramLabel = "FILE",
             description = "also write the thesis's technology printout (GOTA.BAS's LPRINT block) to FILE")
@@ -161,7 +169,11 @@ final class PocketCommand extends CliCommand {
                             strategy,
                             Pocket.ANGLE.check(angleDeg),
                             Pocket.STOCK_TO_LEAVE.check(stockToLeaveMm),
-                            order));
+                            order,
+                            restToolDiameterMm == null
+                                    ? 0
+                                    : PocketService.restToolRange(toolDiameterMm)
+                                            .check(restToolDiameterMm)));
             java.nio.file.Path file = CliSupport.outFile(out);
             String thesisFile = null;
             if (thesisName != null) {

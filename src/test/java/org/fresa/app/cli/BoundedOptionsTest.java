@@ -100,6 +100,12 @@ class BoundedOptionsTest {
             --angle,       NaN,    from -180 to 180 deg
             --stock-to-leave, 11,  from 0 to 10 mm
             --stock-to-leave, -1,  from 0 to 10 mm
+            --rest-tool,   6,      at least 0.01 mm and below 5.99 mm
+            --rest-tool,   5.995,  at least 0.01 mm and below 5.99 mm
+            --rest-tool,   0,      at least 0.01 mm and below 5.99 mm
+            --rest-tool,   1e-9,   at least 0.01 mm and below 5.99 mm
+            --rest-tool,   -2,     at least 0.01 mm and below 5.99 mm
+            --rest-tool,   NaN,    at least 0.01 mm and below 5.99 mm
             """)
     void pocketOptionsOutOfTheirRangeAreRefused(String option, String value, String range) throws Exception {
         refused(run(pocket(option, value)), option, range, "found");
@@ -110,6 +116,7 @@ class BoundedOptionsTest {
     void zigzagOnTheThesisPostsIsRefused(String post) throws Exception {
         refused(run(pocket("--strategy", "zigzag", "--post", post)), "--strategy", "zigzag needs one of linuxcnc");
         refused(run(pocket("--order", "outside-in", "--post", post)), "--order", "needs one of linuxcnc");
+        refused(run(pocket("--rest-tool", "2", "--post", post)), "--rest-tool", "needs one of linuxcnc");
     }
 
     @ParameterizedTest(name = "cut {0} 1e308")
