@@ -49,7 +49,7 @@ class RestMachiningTest {
 
     private static final int POCKETS = 30;
     private static final double[][] TOOLS = {{10, 4}, {6, 2}};
-    private static final List<String> POSTS = List.of("linuxcnc", "iso", "fanuc", "840d");
+    private static final List<String> POSTS = List.of("linuxcnc", "iso", "fanuc", "840d", "apt");
 
     /** What the measures found for one pocket. */
     record Measure(double uncutMm2, double gougeMm, double meetsFraction, double feedLengthMm, double floorLengthMm) {}
