@@ -582,7 +582,21 @@ public final class PocketService {
             summary.put("order", st.order().word());
         }
         summary.put("stock_to_leave_mm", st.stockToLeaveMm());
+        if (!mayHaveIslands(s) || readContours(s.contour()).size() == 1) {
+            // the thesis's measures of the contour (FURO MAXIMO, DIAMETRO MAXIMO, DIAMETRO p/
+            // SUPERF) belong to the pocket, whatever strategy clears it: the command line's
+            // contract gives them for every single-contour pocket
+            // (a contour the thesis's recognition cannot read, e.g. one circle, has none of them)
+            Optional<Recognition.Result> rec = recognition(s);
+            if (rec.isPresent()) {
+                summary.put("leaf_offsets", rec.get().leafOffsets());
+                summary.put("max_hole_diameter", rec.get().maxHoleDiameterMm());
+                summary.put("max_tool_diameter", rec.get().maxToolDiameterMm());
+                summary.put("wall_tool_diameter", rec.get().wallToolDiameterMm());
+            }
+        }
         summary.put("direction", s.direction().word());
+        summary.put("passes", planned.passes());
         summary.put(
                 "depth_passes",
                 technology(s, s.zBottomMm() + st.stockToLeaveMm()).depthPasses());
@@ -601,6 +615,15 @@ public final class PocketService {
         }
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, problems, summary, List.of(outFile));
+    }
+
+    /** The thesis's recognition of a single contour, or none where it cannot read the contour. */
+    private static Optional<Recognition.Result> recognition(PocketSettings s) throws IOException {
+        try {
+            return Optional.of(Recognition.of(readContour(s).withUnitNormals().withBridgedJunctions()));
+        } catch (CamInputException e) {
+            return Optional.empty();
+        }
     }
 
     /** The warning when the first tool leaves nothing the rest tool can reach: no T2 is written. */

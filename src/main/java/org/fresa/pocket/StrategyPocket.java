@@ -47,7 +47,13 @@ public final class StrategyPocket {
      * @param toolpath the first tool's section, then the rest tool's when it has something to cut
      * @param rest the rest tool's plan, empty without a rest tool
      */
-    public record Planned(Toolpath toolpath, java.util.Optional<RestMachining.Plan> rest) {}
+    /**
+     * A planned pocket.
+     *
+     * @param passes the first tool's cuts at one depth: the offset loops, or the zigzag's chains of
+     *     lines and its contour passes
+     */
+    public record Planned(Toolpath toolpath, java.util.Optional<RestMachining.Plan> rest, int passes) {}
 
     /**
      * Plans the pocket as {@link #toolpath}, the rest tool too.
@@ -94,14 +100,20 @@ public final class StrategyPocket {
                         "the walls less " + stock + " mm of stock leave no room for the pocket: leave less stock");
             }
         }
-        Toolpath first = strategy.zigzag()
-                ? ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry)
-                        .toolpath()
-                : RegionPocket.plan(
-                                boundary, t, climb, entry, true, strategy.order() == PocketStrategy.Order.OUTSIDE_IN)
-                        .toolpath();
+        Toolpath first;
+        int passes;
+        if (strategy.zigzag()) {
+            ZigzagPocket.Plan z = ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry);
+            first = z.toolpath();
+            passes = z.order().size();
+        } else {
+            RegionPocket.Plan r = RegionPocket.plan(
+                    boundary, t, climb, entry, true, strategy.order() == PocketStrategy.Order.OUTSIDE_IN);
+            first = r.toolpath();
+            passes = r.order().size();
+        }
         if (!strategy.restTool()) {
-            return new Planned(first, java.util.Optional.empty());
+            return new Planned(first, java.util.Optional.empty(), passes);
         }
         RestMachining.Plan rest = RestMachining.plan(
                 boundary,
@@ -111,10 +123,10 @@ public final class StrategyPocket {
                 climb,
                 entry);
         if (rest.section().isEmpty()) {
-            return new Planned(first, java.util.Optional.of(rest));
+            return new Planned(first, java.util.Optional.of(rest), passes);
         }
         List<org.fresa.model.ToolpathSection> sections = new java.util.ArrayList<>(first.sections());
         sections.add(rest.section().get());
-        return new Planned(new Toolpath(sections), java.util.Optional.of(rest));
+        return new Planned(new Toolpath(sections), java.util.Optional.of(rest), passes);
     }
 }

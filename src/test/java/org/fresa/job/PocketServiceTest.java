@@ -86,6 +86,34 @@ class PocketServiceTest {
     }
 
     @Test
+    void everyStrategysSummaryCarriesTheThesisSizesTheCommandLinePromises(@TempDir Path dir) throws Exception {
+        // spec/cli.md: fresa pocket --json prints at least leaf_offsets, max_hole_diameter,
+        // max_tool_diameter, wall_tool_diameter, passes and path_length_mm, whatever the strategy
+        for (org.fresa.pocket.PocketStrategy st : new org.fresa.pocket.PocketStrategy[] {
+            new org.fresa.pocket.PocketStrategy(
+                    org.fresa.pocket.PocketStrategy.Kind.ZIGZAG,
+                    30,
+                    0,
+                    org.fresa.pocket.PocketStrategy.Order.INSIDE_OUT),
+            new org.fresa.pocket.PocketStrategy(
+                    org.fresa.pocket.PocketStrategy.Kind.OFFSET,
+                    0,
+                    0.5,
+                    org.fresa.pocket.PocketStrategy.Order.OUTSIDE_IN)
+        }) {
+            TaskOutcome o = PocketService.run(
+                    settings("cavity06", "linuxcnc").withStrategy(st), dir.resolve("c6.ngc"), ProgressMonitor.NONE);
+            assertEquals(0, o.exitStatus(), o.problems().toString());
+            assertEquals(2, ((List<?>) o.summary().get("leaf_offsets")).size(), st.toString());
+            assertEquals(60.0, (double) o.summary().get("max_hole_diameter"), 1e-6);
+            assertEquals(30.0, (double) o.summary().get("max_tool_diameter"), 1e-6);
+            assertEquals(14.17, (double) o.summary().get("wall_tool_diameter"), 0.01);
+            assertTrue((int) o.summary().get("passes") > 0, st.toString());
+            assertTrue((double) o.summary().get("path_length_mm") > 0, st.toString());
+        }
+    }
+
+    @Test
     void theThesisProgramOfCavity02WarnsOfItsCutIntoTheWall(@TempDir Path dir) throws Exception {
         // circles 5 and 6 miss each other by 0.755 mm, line 1 and circle 2 by 0.368 mm: the
         // thesis's pass joins them at the snapped point and cuts past circle 6 by that much
