@@ -1069,7 +1069,8 @@ final class Ap238AimBinder {
                 orthogonal,
                 List.of(),
                 ends,
-                bosses);
+                bosses,
+                taper(components));
         features.put(id, out);
         return out;
     }
@@ -1284,7 +1285,21 @@ final class Ap238AimBinder {
                 OptionalDouble.empty(),
                 List.of(),
                 List.of(),
-                List.of()));
+                List.of(),
+                Optional.empty()));
+    }
+
+    /**
+     * A round hole's change in diameter: the AIM binder does not read its shape, so a hole that
+     * has one is bound with a taper of unknown size, which the planner refuses (drilled straight,
+     * a hole narrowing to its bottom would have its wall cut away).
+     */
+    private static Optional<Feature.HoleTaper> taper(Map<String, Long> components) {
+        return components.keySet().stream()
+                .filter(k -> k.contains("taper") || k.contains("change in diameter"))
+                .findFirst()
+                .map(k -> new Feature.HoleTaper(
+                        "'" + k + "' (not read by the AIM binder)", OptionalDouble.empty(), OptionalDouble.empty()));
     }
 
     /**

@@ -36,6 +36,7 @@ import org.fresa.geom.Vec3;
  *                 for other features and for a slot whose file gives none
  * @param bosses its_boss (pockets, planar faces, steps) in file order: the material the feature
  *               must leave standing, each a BOSS in the workpiece frame
+ * @param taper a round hole's change_in_diameter; empty for a straight hole
  */
 public record Feature(
         long instanceId,
@@ -53,7 +54,8 @@ public record Feature(
         OptionalDouble orthogonalRadiusMm,
         List<Long> operationIds,
         List<SlotEnd> slotEnds,
-        List<Feature> bosses) {
+        List<Feature> bosses,
+        Optional<HoleTaper> taper) {
 
     public Feature {
         Objects.requireNonNull(type);
@@ -71,6 +73,20 @@ public record Feature(
         operationIds = List.copyOf(operationIds);
         slotEnds = List.copyOf(slotEnds);
         bosses = List.copyOf(bosses);
+        Objects.requireNonNull(taper);
+    }
+
+    /**
+     * A round hole's change_in_diameter (ISO 14649-10 taper_select): its diameter at the bottom
+     * (DIAMETER_TAPER's final_diameter), or the angle its wall leans in from the axis
+     * (ANGLE_TAPER), or neither when the binding could not read it (the entity says what it was).
+     */
+    public record HoleTaper(String entity, OptionalDouble finalDiameterMm, OptionalDouble angleDeg) {
+        public HoleTaper {
+            Objects.requireNonNull(entity);
+            Objects.requireNonNull(finalDiameterMm);
+            Objects.requireNonNull(angleDeg);
+        }
     }
 
     /**

@@ -741,7 +741,8 @@ final class Iso14649Binder {
                     OptionalDouble.empty(),
                     List.of(),
                     List.of(),
-                    List.of());
+                    List.of(),
+                    Optional.empty());
         } else {
             E f = k.get();
             expectKind(owner, f, "MANUFACTURING_FEATURE", "its_feature should be a manufacturing feature");
@@ -782,10 +783,30 @@ final class Iso14649Binder {
                     f.has("orthogonal_radius") ? num(f, "orthogonal_radius") : OptionalDouble.empty(),
                     refList(f, "its_operations"),
                     f.name().equals("SLOT") && f.has("end_conditions") ? slotEnds(f) : List.of(),
-                    bosses(f));
+                    bosses(f),
+                    f.has("change_in_diameter") ? taper(f) : Optional.empty());
         }
         features.put(id, out);
         return out;
+    }
+
+    /** A round hole's change_in_diameter (taper_select), when it gives one. */
+    private Optional<Feature.HoleTaper> taper(E f) throws StepParseException {
+        Optional<Long> id = refId(f, "change_in_diameter");
+        if (id.isEmpty()) {
+            return Optional.empty();
+        }
+        Optional<E> k = known(id.get());
+        String name = k.map(E::name).orElse(typeOf(id.get()));
+        if (k.isPresent() && name.equals("DIAMETER_TAPER") && k.get().has("final_diameter")) {
+            return Optional.of(new Feature.HoleTaper(name, num(k.get(), "final_diameter"), OptionalDouble.empty()));
+        }
+        if (k.isPresent() && name.equals("ANGLE_TAPER") && k.get().has("angle")) {
+            OptionalDouble a = num(k.get(), "angle");
+            return Optional.of(new Feature.HoleTaper(
+                    name, OptionalDouble.empty(), a.isPresent() ? OptionalDouble.of(degrees(a.getAsDouble())) : a));
+        }
+        return Optional.of(new Feature.HoleTaper(name, OptionalDouble.empty(), OptionalDouble.empty()));
     }
 
     /** A feature's its_boss, each bound as a feature of its own. */
@@ -828,7 +849,8 @@ final class Iso14649Binder {
                         boss.orthogonalRadiusMm(),
                         boss.operationIds(),
                         boss.slotEnds(),
-                        boss.bosses());
+                        boss.bosses(),
+                        boss.taper());
             }
             out.add(boss);
         }

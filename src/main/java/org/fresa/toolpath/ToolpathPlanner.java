@@ -425,6 +425,9 @@ public final class ToolpathPlanner {
                 }
             }
             case ROUND_HOLE -> {
+                if (f.taper().isPresent()) {
+                    taperedHoleFits(f, f.taper().get(), tool, tooling, h.topZ() - h.bottomZ(), tol);
+                }
                 local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
                 List<String> unmoved = notInTheMoves(op, tooling.spindleRpm());
                 if (!unmoved.isEmpty()) {
@@ -632,6 +635,45 @@ public final class ToolpathPlanner {
         floorRidges(label, f, op, tool, tooling, problems);
         ToolpathSection placed = Placing.place(local, place);
         return Optional.of(viaSecurityPlane(placed, ws.securityPlane()));
+    }
+
+    /**
+     * Refuses a tool that would cut a tapered hole's wall (change_in_diameter): going straight
+     * down the axis, the tool must be no wider than the hole at any height. A straight tool must
+     * fit the narrower end; a tapered one (tool_circumference_angle, its flanks leaning out from
+     * its tip) is as wide at each height as its tip plus its lean. A hole that widens towards its
+     * bottom cannot be made from its top at all.
+     *
+     * @param depthMm how deep the hole is along its axis
+     */
+    static void taperedHoleFits(
+            Feature f, Feature.HoleTaper taper, Tool tool, Tooling t, double depthMm, Tolerance tol) {
+        double top = f.diameterMm().orElse(0);
+        double bottom;
+        if (taper.finalDiameterMm().isPresent()) {
+            bottom = taper.finalDiameterMm().getAsDouble();
+        } else if (taper.angleDeg().isPresent()) {
+            bottom =
+                    top - 2 * depthMm * Math.tan(Math.toRadians(taper.angleDeg().getAsDouble()));
+        } else {
+            throw new UnsupportedOperationException("the hole's change_in_diameter (" + taper.entity()
+                    + ") is not read: drilled straight, a hole that narrows would have its wall cut away");
+        }
+        if (bottom > top + tol.linear()) {
+            throw new UnsupportedOperationException("the hole widens from " + mm(top) + " mm at its top to "
+                    + mm(bottom) + " mm at its bottom (change_in_diameter): no tool from its top makes it");
+        }
+        double lean = tool.circumferenceAngle().orElse(0);
+        double leanDeg = "rad".equals(tool.angleUnit()) ? Math.toDegrees(lean) : lean;
+        double tip = t.diameterMm();
+        // the tool's width where the hole's top is, its tip at the bottom
+        double atTop = tip + (leanDeg > 0 && leanDeg < 90 ? 2 * depthMm * Math.tan(Math.toRadians(leanDeg)) : 0);
+        if (tip > bottom + tol.linear() || atTop > top + tol.linear()) {
+            throw new UnsupportedOperationException("the hole narrows from " + mm(top) + " mm at its top to "
+                    + mm(bottom) + " mm at its bottom (change_in_diameter): the " + mm(tip) + " mm tool"
+                    + (atTop > tip + tol.linear() ? ", " + mm(atTop) + " mm wide at the hole's top," : "")
+                    + " would cut its wall; a tool no wider than the hole at every height makes it");
+        }
     }
 
     /** A ridge on a finished floor up to this high (mm) is within the program's tolerance and not reported. */
