@@ -119,7 +119,6 @@ final class PocketTab extends PlotTab {
         row("Pass order (offset)", 'r', order);
         // empty: one tool; a diameter: a second, smaller tool (T2) for what the first left
         restTool.setName(PocketViewModel.REST_TOOL);
-        restTool.setToolTipText("Empty for none; a smaller tool that cuts only what the first could not reach");
         TextChanges.onChange(restTool, this::fieldsChanged);
         row(PocketViewModel.REST_TOOL_LABEL, 'T', restTool);
         run.setMnemonic('C');

@@ -135,6 +135,11 @@ final class Tooltips {
                 PocketViewModel.ORDER,
                 "Order of the offset passes: from the pocket's middle out to the walls (inside-out) or from"
                         + " the walls in (outside-in); the finishing pass is last either way");
+        tip(
+                "Pocket",
+                PocketViewModel.REST_TOOL,
+                "A second, smaller tool (mm; empty for none) that cuts only what the first could not reach:"
+                        + " tight corners and narrow necks");
         tip("Cutting", "Kerf (mm):", "Full width of the cut (mm): the path runs half of it off the part");
         tip("Cutting", "Process:", "The cutting process: sets the default speeds, pierce and cut senses");
         tip("Cutting", "Lead-in (mm):", "Length of the approach from the pierce point to the contour (mm)");
