@@ -59,10 +59,21 @@ class TaperedHoleTest {
     }
 
     @Test
-    void aTaperItCannotReadIsRefusedNotDrilledStraight() throws Exception {
-        ToolpathPlanner.Plan p = plan("#900= ANGLE_TAPER(5.000);");
+    void anAngleTaperNarrowsTheHoleByItsLeanOverTheDepth() throws Exception {
+        // 22 mm at the top, its wall leaning 1 deg in: the 20 mm drill fits at the bottom, the 22 mm
+        // reamer does not
+        ToolpathPlanner.Plan p = plan("#900= ANGLE_TAPER(1.000);");
+        assertTrue(planned(p, "WS DRILL HOLE1"), p.problems().toString());
         assertTrue(
-                refusal(p, "WS DRILL HOLE1").contains("the hole's change_in_diameter (ANGLE_TAPER) is not read"),
+                refusal(p, "WS REAM HOLE1").contains("the hole narrows from 22 mm at its top to "),
+                p.problems().toString());
+    }
+
+    @Test
+    void aTaperItCannotReadIsRefusedNotDrilledStraight() throws Exception {
+        ToolpathPlanner.Plan p = plan("#900= DIAMETER_TAPER($);");
+        assertTrue(
+                refusal(p, "WS DRILL HOLE1").contains("the hole's change_in_diameter (DIAMETER_TAPER) is not read"),
                 p.problems().toString());
     }
 
