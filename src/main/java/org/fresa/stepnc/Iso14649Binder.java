@@ -761,6 +761,21 @@ final class Iso14649Binder {
                 default -> null;
             };
             Optional<Profile> profile = profileAttr == null ? Optional.empty() : profile(f, profileAttr, placement);
+            if (profile.isPresent() && f.def.isA("POCKET") && f.has("slope")) {
+                OptionalDouble slope = num(f, "slope");
+                if (slope.isPresent() && Math.abs(slope.getAsDouble()) > 1e-9) {
+                    // the planner mills a pocket's walls upright: walls that slope (a mould's draft)
+                    // would be cut away below the top, so the outline is bound as one it refuses
+                    profile = Optional.of(new Profile.Other(
+                            profile.get().entity() + " with walls sloping "
+                                    + java.math.BigDecimal.valueOf(degrees(slope.getAsDouble()))
+                                            .stripTrailingZeros()
+                                            .toPlainString()
+                                    + " deg from upright (slope)",
+                            profile.get().placement(),
+                            id));
+                }
+            }
             String travelAttr = f.name().equals("STEP") ? "open_boundary" : "course_of_travel";
             Optional<TravelPath> travel = f.has(travelAttr) ? travel(f, travelAttr) : Optional.empty();
             Optional<String> bottom = Optional.empty();
