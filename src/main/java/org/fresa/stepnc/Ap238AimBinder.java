@@ -1053,6 +1053,17 @@ final class Ap238AimBinder {
         }
         OptionalDouble planar = lengthOf(namedMeasure(measures, "fillet radius", "planar radius", "base radius"));
         OptionalDouble orthogonal = lengthOf(namedMeasure(measures, "orthogonal fillet radius", "orthogonal radius"));
+        OptionalDouble slope = lengthOf(namedMeasure(measures, "slope"));
+        if (slope.isPresent() && Math.abs(slope.getAsDouble()) > 1e-9 && profile.isPresent()) {
+            // walls milled upright would cut a drafted pocket's away below its top (as in the ARM)
+            profile = Optional.of(new Profile.Other(
+                    profile.get().entity() + " with walls sloping "
+                            + String.format(java.util.Locale.ROOT, "%.6g", slope.getAsDouble())
+                                    .replaceAll("\\.?0+$", "")
+                            + " deg from upright (slope)",
+                    profile.get().placement(),
+                    id));
+        }
         Feature out = new Feature(
                 id,
                 type,

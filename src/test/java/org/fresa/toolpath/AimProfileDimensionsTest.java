@@ -51,4 +51,18 @@ class AimProfileDimensionsTest {
         String why = refusal(text);
         assertTrue(why.contains("RECTANGULAR_CLOSED_PROFILE without its 'width'"), why);
     }
+
+    @Test
+    void aPocketWhoseWallsSlopeIsRefusedNotMilledUpright() throws Exception {
+        String pocket = "#75=SHAPE_REPRESENTATION_WITH_PARAMETERS('',(#73,#74),#7);";
+        String text = Files.readString(AIM);
+        assertTrue(text.contains(pocket));
+        text = text.replace(
+                pocket,
+                "#75=SHAPE_REPRESENTATION_WITH_PARAMETERS('',(#73,#74,#9001),#7);\n"
+                        + "#9001=(MEASURE_REPRESENTATION_ITEM() MEASURE_WITH_UNIT(PLANE_ANGLE_MEASURE(5.0),#5)"
+                        + " PLANE_ANGLE_MEASURE_WITH_UNIT() REPRESENTATION_ITEM('slope'));");
+        String why = refusal(text);
+        assertTrue(why.contains("with walls sloping 5 deg from upright (slope)"), why);
+    }
 }
