@@ -429,6 +429,18 @@ public final class ToolpathPlanner {
                     taperedHoleFits(f, f.taper().get(), tool, tooling, h.topZ() - h.bottomZ(), tol);
                 }
                 local = hole(label, f, op, h, tooling, tol, holes.choices(), problems);
+                if (f.diameterMm().isPresent()) {
+                    HoleWalls.within(
+                            local,
+                            f.diameterMm().getAsDouble(),
+                            h.topZ() - h.bottomZ(),
+                            HoleWalls.toolReach(
+                                    tooling.radiusMm(),
+                                    tool.body().equals("BALL_ENDMILL"),
+                                    tool.edgeRadiusMm().orElse(0),
+                                    tipLength(op, tooling)),
+                            tol);
+                }
                 List<String> unmoved = notInTheMoves(op, tooling.spindleRpm());
                 if (!unmoved.isEmpty()) {
                     problems.add(
