@@ -761,6 +761,21 @@ final class Iso14649Binder {
                 default -> null;
             };
             Optional<Profile> profile = profileAttr == null ? Optional.empty() : profile(f, profileAttr, placement);
+            String unread = f.name().equals("PLANAR_FACE")
+                    ? "face_boundary"
+                    : f.name().equals("OPEN_POCKET") ? "wall_boundary" : null;
+            if (profile.isPresent()
+                    && unread != null
+                    && f.has(unread)
+                    && refId(f, unread).isPresent()) {
+                // a face bounded inside its removal rectangle, or an open pocket whose walls have
+                // a shape of their own, would be milled past what the file keeps
+                profile = Optional.of(new Profile.Other(
+                        profile.get().entity() + (unread.equals("face_boundary") ? " within a " : " with a ") + unread
+                                + " (" + typeOf(refId(f, unread).get()) + ")",
+                        profile.get().placement(),
+                        id));
+            }
             if (profile.isPresent() && f.def.isA("POCKET") && f.has("slope")) {
                 OptionalDouble slope = num(f, "slope");
                 if (slope.isPresent() && Math.abs(slope.getAsDouble()) > 1e-9) {
