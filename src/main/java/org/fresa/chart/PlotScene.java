@@ -137,20 +137,50 @@ public record PlotScene(String title, List<Layer> layers, List<Label> labels, Ax
         List<Curve2> feed = new ArrayList<>();
         List<Curve2> rapid = new ArrayList<>();
         for (ToolpathSection s : path.sections()) {
-            Vec3 at = s.start();
-            for (Move m : s.moves()) {
-                Vec2 a = at.xy();
-                Vec2 b = m.end().xy();
-                if (m instanceof Move.Circular c && Math.abs(Math.abs(c.normal().z()) - 1) < 1e-12) {
-                    boolean ccw = c.ccw() == (c.normal().z() > 0);
-                    feed.add(new Arc2(c.center().xy(), a, b, ccw));
-                } else if (!a.equals(b)) {
-                    (m instanceof Move.Rapid ? rapid : feed).add(new Segment2(a, b));
-                }
-                at = m.end();
-            }
+            project(s, feed, rapid);
         }
         return with(new Layer("rapid", Style.RAPID, rapid)).with(new Layer("feed", Style.FEED, feed));
+    }
+
+    /**
+     * {@link #withToolpath} with the feeds of every tool after the first in a layer of their own
+     * ("feed T2"), in the finishing style: a rest tool's pieces seen apart from the first tool's
+     * passes.
+     */
+    public PlotScene withToolpathByTool(Toolpath path) {
+        if (path.sections().isEmpty()) {
+            return withToolpath(path);
+        }
+        int first = path.sections().get(0).toolNumber();
+        List<Curve2> feed = new ArrayList<>();
+        List<Curve2> rapid = new ArrayList<>();
+        java.util.Map<Integer, List<Curve2>> others = new java.util.TreeMap<>();
+        for (ToolpathSection s : path.sections()) {
+            project(
+                    s,
+                    s.toolNumber() == first ? feed : others.computeIfAbsent(s.toolNumber(), k -> new ArrayList<>()),
+                    rapid);
+        }
+        PlotScene scene = with(new Layer("rapid", Style.RAPID, rapid)).with(new Layer("feed", Style.FEED, feed));
+        for (var e : others.entrySet()) {
+            scene = scene.with(new Layer("feed T" + e.getKey(), Style.FINISH, e.getValue()));
+        }
+        return scene;
+    }
+
+    private static void project(ToolpathSection s, List<Curve2> feed, List<Curve2> rapid) {
+        Vec3 at = s.start();
+        for (Move m : s.moves()) {
+            Vec2 a = at.xy();
+            Vec2 b = m.end().xy();
+            if (m instanceof Move.Circular c && Math.abs(Math.abs(c.normal().z()) - 1) < 1e-12) {
+                boolean ccw = c.ccw() == (c.normal().z() > 0);
+                feed.add(new Arc2(c.center().xy(), a, b, ccw));
+            } else if (!a.equals(b)) {
+                (m instanceof Move.Rapid ? rapid : feed).add(new Segment2(a, b));
+            }
+            at = m.end();
+        }
     }
 
     /** The box holding every curve and label, or empty when there is nothing. */

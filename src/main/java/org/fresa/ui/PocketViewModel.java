@@ -527,7 +527,7 @@ public final class PocketViewModel {
                 }
                 PlotScene scene = PlotScene.empty("pocket")
                         .with(new PlotScene.Layer("contour and islands", PlotScene.Style.OUTLINE, walls))
-                        .withToolpath(path);
+                        .withToolpathByTool(path);
                 org.fresa.pocket.PocketStrategy st = settings.strategy();
                 String report = String.format(
                         Locale.ROOT,

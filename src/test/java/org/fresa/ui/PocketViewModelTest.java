@@ -318,6 +318,13 @@ class PocketViewModelTest {
         String tab = m.result().orElseThrow(() -> new AssertionError(m.error())).nc();
         assertTrue(tab.contains("T2 M6"), tab);
         assertTrue(m.result().orElseThrow().report().contains("rest tool T2 D2.5"));
+        // the rest tool's pieces are drawn apart from the first tool's passes
+        assertTrue(
+                m.result().orElseThrow().scene().layers().stream()
+                        .anyMatch(l -> l.name().equals("feed T2")
+                                && l.style() == org.fresa.chart.PlotScene.Style.FINISH
+                                && !l.curves().isEmpty()),
+                m.result().orElseThrow().scene().layers().toString());
         Path file = dir.resolve("job.xml");
         org.fresa.job.JobXml.write(
                 org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET).withPocket(s), file);
