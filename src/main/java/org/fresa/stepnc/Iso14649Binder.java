@@ -776,13 +776,15 @@ final class Iso14649Binder {
                         profile.get().placement(),
                         id));
             }
-            if (profile.isPresent() && f.def.isA("POCKET") && f.has("slope")) {
+            boolean boss = f.name().equals("BOSS");
+            if (profile.isPresent() && (f.def.isA("POCKET") || boss) && f.has("slope")) {
                 OptionalDouble slope = num(f, "slope");
                 if (slope.isPresent() && Math.abs(slope.getAsDouble()) > 1e-9) {
-                    // the planner mills a pocket's walls upright: walls that slope (a mould's draft)
-                    // would be cut away below the top, so the outline is bound as one it refuses
+                    // the planner mills a pocket's walls and a boss's flanks upright: walls that
+                    // slope (a mould's draft) would be cut away below the top, flanks that lean
+                    // would be cut away, so the outline is bound as one it refuses, with why
                     profile = Optional.of(new Profile.Other(
-                            profile.get().entity() + " with walls sloping "
+                            profile.get().entity() + (boss ? " with flanks leaning " : " with walls sloping ")
                                     + java.math.BigDecimal.valueOf(degrees(slope.getAsDouble()))
                                             .stripTrailingZeros()
                                             .toPlainString()
@@ -846,43 +848,7 @@ final class Iso14649Binder {
         }
         List<Feature> out = new ArrayList<>();
         for (long id : refList(f, "its_boss")) {
-            Feature boss = feature(f, id);
-            Optional<E> b = known(id);
-            OptionalDouble slope =
-                    b.isPresent() && b.get().has("slope") ? num(b.get(), "slope") : OptionalDouble.empty();
-            if (slope.isPresent()
-                    && Math.abs(slope.getAsDouble()) > 1e-9
-                    && boss.profile().isPresent()) {
-                // the planner leaves a boss standing upright: one whose flanks lean would have
-                // them cut away, so its outline is bound as one the planner refuses, with why
-                Profile outline = boss.profile().get();
-                boss = new Feature(
-                        boss.instanceId(),
-                        boss.type(),
-                        boss.entity(),
-                        boss.id(),
-                        boss.placement(),
-                        boss.depthMm(),
-                        boss.depthPlane(),
-                        Optional.of(new Profile.Other(
-                                outline.entity() + " with flanks leaning "
-                                        + java.math.BigDecimal.valueOf(degrees(slope.getAsDouble()))
-                                                .stripTrailingZeros()
-                                                .toPlainString()
-                                        + " deg from upright (slope)",
-                                outline.placement(),
-                                id)),
-                        boss.courseOfTravel(),
-                        boss.diameterMm(),
-                        boss.bottomCondition(),
-                        boss.planarRadiusMm(),
-                        boss.orthogonalRadiusMm(),
-                        boss.operationIds(),
-                        boss.slotEnds(),
-                        boss.bosses(),
-                        boss.taper());
-            }
-            out.add(boss);
+            out.add(feature(f, id));
         }
         return out;
     }
