@@ -242,8 +242,22 @@ class UndoEveryTabGuiTest extends WindowGuiTest {
     }
 
     private void select(String tab) {
-        window.tabbedPane("tabs").selectTab(tab);
-        window.robot().waitForIdle();
+        // a loaded run once found the Position tab in front after opening the robot job and
+        // selecting STEP-NC: the tab is selected, once no task runs, until it is the one shown
+        waitUntilNoTaskRuns();
+        for (int attempt = 0; attempt < 50; attempt++) {
+            window.tabbedPane("tabs").selectTab(tab);
+            window.robot().waitForIdle();
+            String shown = GuiActionRunner.execute(() -> {
+                javax.swing.JTabbedPane tabs = ((MainWindow) window.target()).tabs();
+                return tabs.getTitleAt(tabs.getSelectedIndex());
+            });
+            if (tab.equals(shown)) {
+                return;
+            }
+            org.assertj.swing.timing.Pause.pause(200);
+        }
+        throw new AssertionError("the " + tab + " tab did not stay in front");
     }
 
     private boolean showing(String name) {
