@@ -49,6 +49,7 @@ final class AptStatements {
                             Optional.of(new Failure(b.line(), "line " + b.line(), b.text(), r, why)), lines.length);
                 }
             }
+            step.material().cut(step, limits);
             if (step.block().problem().isPresent()) {
                 break;
             }
@@ -183,7 +184,8 @@ final class AptStatements {
                             tool,
                             false,
                             axis,
-                            drilled);
+                            drilled,
+                            material);
                     ProgramCheck.madeHole(s, limits, drilled);
                     return s;
                 }
@@ -230,7 +232,8 @@ final class AptStatements {
         }
 
         private Step idle(Words.Block b, boolean dwell) {
-            return new Step(b, NcDialect.APT, false, List.of(), false, 0, on, rpm, feed, tool, dwell, axis, drilled);
+            return new Step(
+                    b, NcDialect.APT, false, List.of(), false, 0, on, rpm, feed, tool, dwell, axis, drilled, material);
         }
 
         /** What makes the statement unreadable, or null; its words added to {@code words}. */

@@ -8,7 +8,8 @@ import org.fresa.geom.Vec3;
  * What the check knows of the machine as it reads a program, block by block or statement by
  * statement: where the tool tip is (NaN until a move states it), the feed and spindle speed in
  * effect (NaN until given), whether the spindle or the jet runs, the tool in the spindle, the
- * section's tool axis and the holes the program has gone straight down so far.
+ * section's tool axis, the holes the program has gone straight down so far and what is left of
+ * the stock.
  */
 abstract class MachineState {
     final Limits limits;
@@ -21,8 +22,10 @@ abstract class MachineState {
     int tool;
     Vec3 axis = Vec3.UNIT_Z;
     final List<Pilot> drilled = new ArrayList<>();
+    final Material material;
 
     MachineState(Limits limits) {
         this.limits = limits;
+        this.material = Material.of(limits.stock());
     }
 }

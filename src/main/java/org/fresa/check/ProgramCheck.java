@@ -14,7 +14,8 @@ import org.fresa.geom.Vec3;
  * <p>The rules, in the order they are asked of each block: {@link WordRule} (every word finite
  * and in range), {@link SpindleRule} (cutting only with the spindle or the process on),
  * {@link EntryAngleRule} (no entry steeper than the tool allows), {@link FloorRule} (nothing
- * below the floor beyond the breakthrough).
+ * below the floor beyond the breakthrough), {@link RapidRule} (no rapid into material the program
+ * has not removed).
  *
  * <p>What the reading assumes, as Fresa's posts write: M03/M04/M05 take effect before the block's
  * motion (RS274's order of execution); M06 and the program's end (M02, M30) stop the spindle; a
@@ -26,7 +27,7 @@ public final class ProgramCheck {
 
     /** The rules, in the order each block is asked them. */
     public static final List<Rule> RULES =
-            List.of(new WordRule(), new SpindleRule(), new EntryAngleRule(), new FloorRule());
+            List.of(new WordRule(), new SpindleRule(), new EntryAngleRule(), new FloorRule(), new RapidRule());
 
     private static final java.util.regex.Pattern AXIS_COMMENT = java.util.regex.Pattern.compile(
             "(?i)tool axis (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) (-?\\d+(?:\\.\\d+)?) is not \\+Z");
@@ -88,6 +89,7 @@ public final class ProgramCheck {
                     return new Verdict(Optional.of(new Failure(b.line(), b.label(), b.text(), r, why)), count);
                 }
             }
+            step.material().cut(step, limits);
             if (b.problem().isPresent()) {
                 break;
             }
@@ -220,7 +222,8 @@ public final class ProgramCheck {
                     toolByWorkingstep.getOrDefault(m.workingstep(), 0),
                     false,
                     axis,
-                    List.of());
+                    List.of(),
+                    null);
             for (Rule r : RULES) {
                 String why = r.broken(step, limits);
                 if (why != null) {
@@ -360,7 +363,20 @@ public final class ProgramCheck {
                 z = nz;
             }
             Step step = new Step(
-                    b, dialect, feedMove, path, arcInPlane, horizontal, on, rpm, feed, tool, dwell, axis, drilled);
+                    b,
+                    dialect,
+                    feedMove,
+                    path,
+                    arcInPlane,
+                    horizontal,
+                    on,
+                    rpm,
+                    feed,
+                    tool,
+                    dwell,
+                    axis,
+                    drilled,
+                    material);
             madeHole(step, limits, drilled);
             // a tool change and the program's end stop the spindle after the block
             if (b.has("M", 6)) {

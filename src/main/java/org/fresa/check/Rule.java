@@ -2,17 +2,17 @@ package org.fresa.check;
 
 /**
  * The rules a program must keep, in the words a planner reads in the refusal. Each rule is one
- * small type ({@link SpindleRule}, {@link WordRule}, {@link EntryAngleRule}, {@link FloorRule})
+ * small type ({@link SpindleRule}, {@link WordRule}, {@link EntryAngleRule}, {@link FloorRule}, {@link RapidRule})
  * that looks at one interpreted block at a time. A rule has no state: two rules of one type are
  * equal.
  */
-public abstract sealed class Rule permits SpindleRule, WordRule, EntryAngleRule, FloorRule {
+public abstract sealed class Rule permits SpindleRule, WordRule, EntryAngleRule, FloorRule, RapidRule {
 
     private final String name;
     private final String statement;
 
     /**
-     * @param name a short name ({@code spindle}, {@code words}, {@code entry angle}, {@code floor})
+     * @param name a short name ({@code spindle}, {@code words}, {@code entry angle}, {@code floor}, {@code rapid})
      * @param statement the rule as one sentence
      */
     Rule(String name, String statement) {
@@ -20,7 +20,7 @@ public abstract sealed class Rule permits SpindleRule, WordRule, EntryAngleRule,
         this.statement = statement;
     }
 
-    /** A short name ({@code spindle}, {@code words}, {@code entry angle}, {@code floor}). */
+    /** A short name ({@code spindle}, {@code words}, {@code entry angle}, {@code floor}, {@code rapid}). */
     public final String name() {
         return name;
     }

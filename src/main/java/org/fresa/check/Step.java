@@ -21,6 +21,8 @@ import org.fresa.geom.Vec3;
  * @param dwell a G04 block: its address words are a time
  * @param axis the tool axis, from the tip towards the spindle (+Z unless the post states another)
  * @param pilots the holes the program went straight down before this block ({@link Pilot})
+ * @param material what is left of the stock before this block's motion ({@link Material}), null
+ *     where the reading keeps none (a robot program, judged on its toolpath)
  */
 public record Step(
         Words.Block block,
@@ -35,7 +37,8 @@ public record Step(
         int tool,
         boolean dwell,
         Vec3 axis,
-        List<Pilot> pilots) {
+        List<Pilot> pilots,
+        Material material) {
 
     public Step {
         path = List.copyOf(path);
