@@ -255,6 +255,7 @@ public final class ToolpathPlanner {
         }
         feedNotes.forEach(
                 (note, count) -> problems.add(count + (count == 1 ? " workingstep: " : " workingsteps: ") + note));
+        problems.addAll(FeatureChecks.of(program, tol));
         return new Outcome(problems, program.workingsteps().size(), planned, refusals);
     }
 
