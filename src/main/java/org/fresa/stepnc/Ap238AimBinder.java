@@ -37,7 +37,8 @@ import org.fresa.stepnc.StepNcProgram.Dialect;
  * whose placement and depth are shape representations of their PRODUCT_DEFINITION_SHAPE, and
  * whose profiles, paths and bottoms are SHAPE_ASPECTs ("... occurrence") related to components;
  * <li>the project, setup and workpieces are PRODUCT_DEFINITIONs of a MACHINING_PROJECT or
- * MACHINING_SETUP product.
+ * MACHINING_SETUP product; a workpiece's bounding block is the BLOCK_SHAPE_REPRESENTATION of what
+ * it is made from (MAKE_FROM_USAGE_OPTION).
  * </ul>
  * The descriptions of generic entities carry the ARM kind (PLANE_MILLING_OPERATION 'finishing'
  * is plane_finish_milling, BORING_OPERATION 'reaming' is reaming). Every measure is converted by
@@ -677,7 +678,161 @@ final class Ap238AimBinder {
                 }
             }
         }
-        return new Workpiece(pd, id, material, tolerance, Optional.empty());
+        return new Workpiece(pd, id, material, tolerance, boundingBlock(pd, id));
+    }
+
+    /**
+     * The workpiece's its_bounding_geometry when it is a block (AP238 5.1.4.1.4 #1): the
+     * BLOCK_SHAPE_REPRESENTATION of a PRODUCT_DEFINITION the workpiece is made from
+     * (MAKE_FROM_USAGE_OPTION relating the workpiece), through that definition's
+     * PRODUCT_DEFINITION_SHAPE and SHAPE_DEFINITION_REPRESENTATION, as annex J.6 writes it. A
+     * bounding geometry of another kind, several, or a block that cannot be read exactly is
+     * reported and left unread: without a block the stock is what the file states otherwise
+     * (program check), never a guessed box. The block of a rawpiece (a workpiece the workpiece is
+     * made from, which is made from a block in turn, as J.6's 'STOCK') is not this workpiece's
+     * bounding geometry: it is reported and not read, since nothing states where the rawpiece
+     * lies in the workpiece's frame (the ARM binder does not read its_rawpiece either).
+     */
+    private Optional<Workpiece.Block> boundingBlock(long pd, String id) {
+        String who = "workpiece #" + pd + " '" + id + "'";
+        List<Long> shapes = new ArrayList<>();
+        for (long made : madeFrom(pd)) {
+            shapes.addAll(madeShapes(made));
+            for (long further : madeFrom(made)) {
+                if (further == pd) {
+                    continue;
+                }
+                for (long r : madeShapes(further)) {
+                    if (isA(r, "BLOCK_SHAPE_REPRESENTATION")) {
+                        String rawpiece = rec(made, "PRODUCT_DEFINITION")
+                                .map(x -> text(x.param(0)))
+                                .orElse("");
+                        warnings.add(who + ": the workpiece it is made from, #" + made + " '" + rawpiece
+                                + "' (its rawpiece), has a block of its own (#" + r
+                                + " BLOCK_SHAPE_REPRESENTATION): not taken as this workpiece's stock, since the"
+                                + " file does not state where the rawpiece lies in this workpiece's frame");
+                    }
+                }
+            }
+        }
+        if (shapes.isEmpty()) {
+            return Optional.empty();
+        }
+        if (shapes.size() > 1) {
+            warnings.add(who + " has several bounding geometries ("
+                    + String.join(
+                            ", ",
+                            shapes.stream().map(r -> "#" + r + " " + typeOf(r)).toList())
+                    + "): none read, the stock is not known");
+            return Optional.empty();
+        }
+        long r = shapes.get(0);
+        if (!isA(r, "BLOCK_SHAPE_REPRESENTATION")) {
+            warnings.add(who + ": its bounding geometry #" + r + " is a " + typeOf(r)
+                    + ", not a BLOCK_SHAPE_REPRESENTATION: not read, the stock is not known");
+            return Optional.empty();
+        }
+        return block(r, who + ": its bounding geometry #" + r + " BLOCK_SHAPE_REPRESENTATION");
+    }
+
+    /** The PRODUCT_DEFINITIONs a product definition is made from (MAKE_FROM_USAGE_OPTION's related). */
+    private List<Long> madeFrom(long pd) {
+        List<Long> out = new ArrayList<>();
+        for (long mfu : usersOf(pd, "MAKE_FROM_USAGE_OPTION", 3)) {
+            Optional<Long> made =
+                    ref(rec(mfu, "MAKE_FROM_USAGE_OPTION").orElseThrow().param(4));
+            if (made.isPresent() && made.get() != pd && isA(made.get(), "PRODUCT_DEFINITION")) {
+                out.add(made.get());
+            }
+        }
+        return out;
+    }
+
+    /** The shape representations of a product definition (its PRODUCT_DEFINITION_SHAPE's). */
+    private List<Long> madeShapes(long pd) {
+        List<Long> out = new ArrayList<>();
+        for (long pds : usersOf(pd, "PRODUCT_DEFINITION_SHAPE", 2)) {
+            out.addAll(representationsOf(pds));
+        }
+        return out;
+    }
+
+    /**
+     * A BLOCK_SHAPE_REPRESENTATION as ISO 14649's BLOCK. Its four items (WR1-WR5): the 'orientation'
+     * placement and the 'length', 'width' and 'height' length measures, each once. The placement is
+     * at the centre of the block's rectangle in its x-y plane, the width along its x axis, the
+     * height along y and the length along z (IP1); the rectangle is swept over the length from the
+     * placement along +z, as the cylindrical_shape_representation, which stands for ISO 10303-42's
+     * right_circular_cylinder (one base at its position, the height along +z), sweeps its circle.
+     * The BLOCK's corner is therefore half the width and half the height back from the placement,
+     * in its plane. Lengths are in their own units; the placement in the file's length unit.
+     */
+    private Optional<Workpiece.Block> block(long r, String what) {
+        Map<String, List<Long>> named = new LinkedHashMap<>();
+        for (String n : List.of("orientation", "length", "width", "height")) {
+            named.put(n, new ArrayList<>());
+        }
+        List<String> why = new ArrayList<>();
+        for (long i : items(r)) {
+            String n = item(i).name().toLowerCase(Locale.ROOT);
+            if (named.containsKey(n)) {
+                named.get(n).add(i);
+            } else {
+                why.add("an item #" + i + " " + typeOf(i) + " '" + n + "' that a block has not");
+            }
+        }
+        for (Map.Entry<String, List<Long>> e : named.entrySet()) {
+            if (e.getValue().isEmpty()) {
+                why.add("no '" + e.getKey() + "'");
+            } else if (e.getValue().size() > 1) {
+                why.add(e.getValue().size() + " items named '" + e.getKey() + "'");
+            }
+        }
+        double[] lengths = new double[3];
+        List<String> dims = List.of("width", "height", "length");
+        for (int k = 0; k < 3; k++) {
+            List<Long> l = named.get(dims.get(k));
+            if (l.size() != 1) {
+                continue;
+            }
+            long i = l.get(0);
+            Item it = item(i);
+            Optional<Long> u = rec(i, "MEASURE_WITH_UNIT").flatMap(x -> ref(x.param(1)));
+            if (!isA(i, "LENGTH_MEASURE_WITH_UNIT")
+                    || !isA(i, "MEASURE_REPRESENTATION_ITEM")
+                    || it.value().isEmpty()) {
+                why.add("its '" + dims.get(k) + "' #" + i + " is not a length measure with its unit");
+            } else if (u.isEmpty() || !isA(u.get(), "LENGTH_UNIT")) {
+                why.add("its '" + dims.get(k) + "' #" + i + " is not in a length unit");
+            } else if (!(it.value().getAsDouble() > 0)) {
+                // ISO 10303-42's block has positive_length_measures: a block of no or negative size is no stock
+                why.add("its '" + dims.get(k) + "' is " + num(it.value().getAsDouble()) + " mm, not positive");
+            } else {
+                lengths[k] = it.value().getAsDouble();
+            }
+        }
+        Transform3 orientation = Transform3.IDENTITY;
+        List<Long> o = named.get("orientation");
+        if (o.size() == 1) {
+            if (!isA(o.get(0), "AXIS2_PLACEMENT_3D")) {
+                why.add("its 'orientation' #" + o.get(0) + " is a " + typeOf(o.get(0)) + ", not an AXIS2_PLACEMENT_3D");
+            } else {
+                try {
+                    orientation = placement(o.get(0));
+                } catch (StepParseException ex) {
+                    why.add("its 'orientation' cannot be read: " + ex.problem());
+                }
+            }
+        }
+        if (!why.isEmpty()) {
+            warnings.add(what + " has " + String.join("; ", why) + ": not read, the stock is not known");
+            return Optional.empty();
+        }
+        spellings.add("the workpiece's block: a BLOCK_SHAPE_REPRESENTATION placed at the centre of its x-y"
+                + " rectangle, width along x, height along y, length along z (AP238 IP1), read as"
+                + " ISO 14649's BLOCK from its corner");
+        Transform3 corner = orientation.times(Transform3.translation(-lengths[0] / 2, -lengths[1] / 2, 0));
+        return Optional.of(new Workpiece.Block(corner, lengths[0], lengths[1], lengths[2]));
     }
 
     private Optional<Setup> setupOf(long workplan) throws StepParseException {

@@ -602,14 +602,27 @@ final class Iso14649Binder {
             Optional<E> b = known(bg.get());
             if (b.isPresent() && b.get().def.isA("BLOCK")) {
                 E blk = b.get();
-                block = Optional.of(new Workpiece.Block(
-                        placementAttr(blk, "position").orElse(Transform3.IDENTITY),
-                        required(blk, "x"),
-                        required(blk, "y"),
-                        required(blk, "z")));
+                double x = required(blk, "x");
+                double y = required(blk, "y");
+                double z = required(blk, "z");
+                if (x > 0 && y > 0 && z > 0) {
+                    block = Optional.of(
+                            new Workpiece.Block(placementAttr(blk, "position").orElse(Transform3.IDENTITY), x, y, z));
+                } else {
+                    // ISO 10303-42's block has positive_length_measures: one of no or negative size is no
+                    // stock, and the box of its corners would put material where the file does not
+                    warnings.add("#" + blk.id() + " BLOCK, the bounding geometry of workpiece '" + text(w, "its_id")
+                            + "', is " + num(x) + " x " + num(y) + " x " + num(z)
+                            + " mm, its lengths not all positive: not read, the stock is not known");
+                }
             }
         }
         return new Workpiece(w.id(), text(w, "its_id"), material, num(w, "global_tolerance"), block);
+    }
+
+    /** A length as written, without a trailing ".0". */
+    private static String num(double d) {
+        return d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString((long) d) : Double.toString(d);
     }
 
     private Setup setup(E s) throws StepParseException {

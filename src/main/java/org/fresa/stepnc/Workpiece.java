@@ -10,7 +10,8 @@ import org.fresa.geom.Transform3;
  *
  * @param material material_identifier, when given
  * @param globalTolerance as written (mm in ISO 14649-10)
- * @param block its_bounding_geometry when it is a BLOCK
+ * @param block its_bounding_geometry when it is a BLOCK (in the AIM a BLOCK_SHAPE_REPRESENTATION,
+ *     read from its corner as the BLOCK)
  */
 public record Workpiece(
         long instanceId, String id, Optional<String> material, OptionalDouble globalTolerance, Optional<Block> block) {

@@ -24,6 +24,9 @@ import org.fresa.toolpath.ToolpathCsv;
 import org.fresa.toolpath.ToolpathPlanner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /** AP238 files in their integrated form (AIM) machined: toolpaths, programs, the interpreter. */
 class Ap238ToolpathTest {
@@ -354,5 +357,133 @@ class Ap238ToolpathTest {
         assertTrue(prose.contains("AP238 AIM"), prose);
         assertTrue(prose.contains("lengths in INCH (25.4 mm), converted to mm"), prose);
         assertEquals("AIM", StepNcService.summary(p).get("form"));
+    }
+
+    // ---- the AIM parts with their ARM twins' block ----
+
+    static final Path PARTS = Path.of("src/test/resources/stepnc");
+
+    /** The toolpath task's program (it must write one) and its toolpath.csv rows. */
+    private static List<String> program(Path input, Path dir) throws Exception {
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir), ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus(), o.problems().toString());
+        return Files.readAllLines(dir.resolve("program.ngc"));
+    }
+
+    /**
+     * The AIM slot parts carry their ARM twins' block as annex J.6 writes a bounding geometry (a
+     * BLOCK_SHAPE_REPRESENTATION placed at its centre): the descents beyond the open ends are in
+     * the air as in the ARM parts, and both forms give the same program, line for line but for its
+     * name (the part's file name), and the same toolpath.csv within 1e-6 mm.
+     */
+    @ParameterizedTest
+    @CsvSource({"aim-slots.stp, slots-profiles.stp", "aim-slots-general.stp, slots-general.stp"})
+    void theAimSlotPartsGetTheirArmTwinsProgram(String aimPart, String armPart, @TempDir Path dir) throws Exception {
+        List<String> aim = program(PARTS.resolve(aimPart), dir.resolve("aim"));
+        List<String> arm = program(PARTS.resolve(armPart), dir.resolve("arm"));
+        assertEquals("(" + aimPart.replace(".stp", "") + ")", aim.get(1));
+        assertEquals("(" + armPart.replace(".stp", "") + ")", arm.get(1));
+        assertTrue(aim.size() > 300, "lines " + aim.size());
+        assertEquals(arm.subList(2, arm.size()), aim.subList(2, aim.size()));
+        List<String[]> a = rows(dir.resolve("aim/toolpath.csv"));
+        List<String[]> r = rows(dir.resolve("arm/toolpath.csv"));
+        assertEquals(r.size(), a.size());
+        assertEquals(String.join(",", r.get(0)), String.join(",", a.get(0)));
+        for (int i = 1; i < r.size(); i++) {
+            String[] x = r.get(i);
+            String[] y = a.get(i);
+            assertEquals(x.length, y.length, "row " + i);
+            assertEquals(List.of(x[0], x[1], x[2]), List.of(y[0], y[1], y[2]), "row " + i);
+            for (int k = 3; k < x.length; k++) {
+                assertEquals(
+                        Double.parseDouble(x[k]),
+                        Double.parseDouble(y[k]),
+                        1e-6,
+                        "row " + i + ": " + String.join(",", x) + " vs " + String.join(",", y));
+            }
+        }
+    }
+
+    /**
+     * aim-bosses.stp is the ARM part's pocket with bosses alone: its program is the ARM program's
+     * section of that pocket, the last, but for the tool's number (the first tool of the AIM
+     * part, the second of the ARM part).
+     */
+    @Test
+    void theAimPocketWithBossesGetsTheArmProgramsSectionOfIt(@TempDir Path dir) throws Exception {
+        List<String> aim = program(PARTS.resolve("aim-bosses.stp"), dir.resolve("aim"));
+        List<String> arm = program(PARTS.resolve("steps-outside-profiles.stp"), dir.resolve("arm"));
+        String head = "(WS POCKET WITH BOSSES tool ";
+        int from = 0;
+        while (!arm.get(from).startsWith(head)) {
+            from++;
+        }
+        List<String> section = arm.subList(from, arm.size()).stream()
+                .map(x -> switch (x) {
+                    case "(WS POCKET WITH BOSSES tool 2 D6.000)" -> "(WS POCKET WITH BOSSES tool 1 D6.000)";
+                    case "T2 M6" -> "T1 M6";
+                    case "G43 H2" -> "G43 H1";
+                    default -> x;
+                })
+                .toList();
+        assertEquals("(WS POCKET WITH BOSSES tool 1 D6.000)", aim.get(3));
+        assertEquals(arm.get(2), aim.get(2));
+        assertTrue(section.size() > 100, "lines " + section.size());
+        assertEquals(section, aim.subList(3, aim.size()));
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"aim-slots.stp", "aim-slots-general.stp", "aim-bosses.stp"})
+    @InterpreterCheck
+    void theAimPartsWithTheirBlockAreAcceptedByLinuxCnc(String part, @TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), Rs274.whyNot());
+        interpreted(PARTS.resolve(part), dir);
+    }
+
+    /**
+     * Without the block (no bounding geometry, or the block behind a rawpiece as in annex J.6) no
+     * stock is guessed: the T-slot mill's descent past the open end counts as into material and
+     * the program is refused, the toolpath written.
+     */
+    @ParameterizedTest
+    @ValueSource(
+            strings = {
+                "",
+                "#468=MAKE_FROM_USAGE_OPTION('','','',#9000,#469,0,'',$);\n"
+                        + "#9000=PRODUCT_DEFINITION('STOCK','',$,#25);\n"
+                        + "#9001=MAKE_FROM_USAGE_OPTION('','','',#28,#9000,0,'',$);\n"
+            })
+    void anAimSlotPartWithoutItsOwnBlockGetsNoProgram(String instead, @TempDir Path dir) throws Exception {
+        String from = "#468=MAKE_FROM_USAGE_OPTION('','','',#28,#469,0,'',$);\n";
+        String text = Files.readString(PARTS.resolve("aim-slots.stp"));
+        assertTrue(text.contains(from));
+        Path input = dir.resolve("no-block.stp");
+        Files.writeString(input, text.replace(from, instead));
+        assertTrue(StepNcReader.read(input).workpieces().get(0).block().isEmpty());
+        TaskOutcome o = ToolpathService.run(
+                input, org.fresa.post.MillingPost.LINUXCNC, new OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
+        assertEquals(1, o.exitStatus(), o.problems().toString());
+        assertTrue(
+                o.problems().stream()
+                        .anyMatch(x -> x.startsWith("program.ngc not written")
+                                && x.contains("entry angle")
+                                && x.contains("(a plunge)")),
+                o.problems().toString());
+        assertFalse(Files.exists(dir.resolve("out/program.ngc")));
+        assertTrue(Files.exists(dir.resolve("out/toolpath.csv")));
+    }
+
+    @Test
+    void anAimPartsBlockIsShownAsAnArmPartsIs() throws Exception {
+        StepNcProgram aim = StepNcReader.read(PARTS.resolve("aim-slots.stp"));
+        StepNcProgram arm = StepNcReader.read(PARTS.resolve("slots-profiles.stp"));
+        String line = "workpiece 'BLOCK 120 X 150 X 30', block 120 x 150 x 30 mm at (0, 0, -30)\n";
+        assertTrue(StepNcService.prose(arm).contains(line), StepNcService.prose(arm));
+        assertTrue(StepNcService.prose(aim).contains(line), StepNcService.prose(aim));
+        // --json: the same workpiece, block and corner
+        String json = org.fresa.io.Json.write(StepNcService.summary(aim).get("workpieces"));
+        assertEquals("[{\"id\":\"BLOCK 120 X 150 X 30\",\"block\":[120,150,30],\"block_placement\":[0,0,-30]}]", json);
+        assertEquals(org.fresa.io.Json.write(StepNcService.summary(arm).get("workpieces")), json);
     }
 }

@@ -327,6 +327,26 @@ class StepNcReaderTest {
     }
 
     @Test
+    void aWorkpieceBlockOfNoOrNegativeSizeIsReportedAndNotRead() throws Exception {
+        Path part = Path.of("src/test/resources/stepnc/slots-profiles.stp");
+        String text = Files.readString(part);
+        String from = "#5= BLOCK('STOCK',#6,120.000,150.000,30.000);";
+        assertTrue(text.contains(from));
+        assertTrue(StepNcReader.read(part).workpieces().get(0).block().isPresent());
+        for (String to : List.of(
+                "#5= BLOCK('STOCK',#6,-120.000,150.000,30.000);", "#5= BLOCK('STOCK',#6,120.000,150.000,0.000);")) {
+            StepNcProgram p = StepNcReader.read(new StringReader(text.replace(from, to)), "t.stp");
+            assertTrue(p.workpieces().get(0).block().isEmpty(), to);
+            assertTrue(
+                    p.warnings().stream()
+                            .anyMatch(w -> w.startsWith(
+                                            "#5 BLOCK, the bounding geometry of workpiece 'BLOCK 120 X 150 X 30',")
+                                    && w.endsWith("its lengths not all positive: not read, the stock is not known")),
+                    p.warnings().toString());
+        }
+    }
+
+    @Test
     void anUnknownEntityIsKeptAndCountedNotFatal() throws Exception {
         StepNcProgram p = bind("#1=PROJECT('p',#2,(),$,$,$);#2=WORKPLAN('w',(#3,#4),$,$,$);"
                 + "#3=SELECTIVE('s',());#4=FANCY_WORKINGSTEP('x');");
