@@ -26,6 +26,9 @@ final class Material {
     /** The grid's cell side (mm): the sideways resolution of the rapid rule. */
     static final double CELL_MM = 0.2;
 
+    /** How far off a merged chord the skipped points of a level run may lie (mm). */
+    static final double MERGE_MM = 0.02;
+
     /** The most a feed move descends in one piece of the removal (mm). */
     static final double DESCENT_PIECE_MM = 0.05;
 
@@ -39,6 +42,8 @@ final class Material {
 
     private final Limits.Stock stock;
     private final Map<Long, float[]> tiles = new HashMap<>();
+    private long lastKey;
+    private float[] lastTile;
 
     private Material(Limits.Stock stock) {
         this.stock = stock;
@@ -67,24 +72,52 @@ final class Material {
         ToolLimits t = limits.tool(s.tool());
         double slope = slope(t);
         List<Vec3> p = s.path();
-        for (int i = 1; i < p.size(); i++) {
+        double r = t.radiusMm();
+        int i = 1;
+        while (i < p.size()) {
             Vec3 a = p.get(i - 1);
             Vec3 b = p.get(i);
             if (!Double.isFinite(a.x() + a.y() + a.z() + b.x() + b.y() + b.z())) {
+                i++;
+                continue;
+            }
+            if (a.z() == b.z()) {
+                // a level run of an arc's chords is swept as fewer chords, each with the radius
+                // less how far the points it skips lie off it, so that nothing more is removed
+                int end = i;
+                while (end + 1 < p.size() && p.get(end + 1).z() == a.z() && offChord(p, i - 1, end + 1) <= MERGE_MM) {
+                    end++;
+                }
+                Vec3 e = p.get(end);
+                lower(a, e, end == i ? r : Math.max(0, r - offChord(p, i - 1, end)), slope);
+                i = end + 1;
                 continue;
             }
             int pieces = (int) Math.min(10_000, Math.ceil(Math.abs(b.z() - a.z()) / DESCENT_PIECE_MM));
             pieces = Math.max(1, pieces);
             Vec3 from = a;
-            lower(a, a, t.radiusMm(), slope);
+            lower(a, a, r, slope);
             for (int k = 1; k <= pieces; k++) {
                 Vec3 to = k == pieces ? b : a.plus(b.minus(a).times((double) k / pieces));
-                lower(from, to, t.radiusMm(), slope);
+                lower(from, to, r, slope);
                 // where the tool stood, its disc is cut down to its own height exactly
-                lower(to, to, t.radiusMm(), slope);
+                lower(to, to, r, slope);
                 from = to;
             }
+            i++;
         }
+    }
+
+    /** The farthest the points strictly between two of the path lie from the chord joining them (mm). */
+    private static double offChord(List<Vec3> p, int from, int to) {
+        Vec3 a = p.get(from);
+        Vec3 b = p.get(to);
+        double worst = 0;
+        for (int k = from + 1; k < to; k++) {
+            worst = Math.max(
+                    worst, distanceToSegment(a, b, p.get(k).x(), p.get(k).y()));
+        }
+        return worst;
     }
 
     /**
@@ -196,15 +229,18 @@ final class Material {
         if ((long) (j1 - j0 + 1) * (i1 - i0 + 1) > 50_000_000L) {
             return; // a move of absurd size removes nothing: the rapids after it are judged as into stock
         }
+        // a tool narrower than a cell still marks the cell its axis passes through
+        double reach = Math.max(r, CELL_MM / 2);
         for (int j = j0; j <= j1; j++) {
             double y = centre(j);
-            for (int i = i0; i <= i1; i++) {
-                double x = centre(i);
-                double d = distanceToSegment(a, b, x, y);
-                if (d > r && !(r < CELL_MM / 2 && d <= CELL_MM / 2)) {
-                    continue;
-                }
-                double h = (float) (z + slope * d);
+            double[] span = rowSpan(a, b, reach, y);
+            if (span == null) {
+                continue;
+            }
+            int from = Math.max(i0, (int) Math.ceil(span[0] / CELL_MM - 0.5));
+            int to = Math.min(i1, (int) Math.floor(span[1] / CELL_MM - 0.5));
+            for (int i = from; i <= to; i++) {
+                double h = slope == 0 ? z : z + slope * distanceToSegment(a, b, centre(i), y);
                 float[] tile = tile(i, j, true);
                 int k = cellInTile(i, j);
                 if (Float.isNaN(tile[k]) || h < tile[k]) {
@@ -212,6 +248,52 @@ final class Material {
                 }
             }
         }
+    }
+
+    /**
+     * The x interval of the row at y within r of the segment a b (a capsule is convex, so its
+     * trace on a row is one interval), or null when the row misses it.
+     */
+    static double[] rowSpan(Vec3 a, Vec3 b, double r, double y) {
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (Vec3 e : new Vec3[] {a, b}) {
+            double dy = y - e.y();
+            if (Math.abs(dy) <= r) {
+                double w = Math.sqrt(r * r - dy * dy);
+                lo = Math.min(lo, e.x() - w);
+                hi = Math.max(hi, e.x() + w);
+            }
+        }
+        double dx = b.x() - a.x();
+        double dy = b.y() - a.y();
+        double len = Math.sqrt(dx * dx + dy * dy);
+        if (len > 1e-12) {
+            // the band beside the segment: 0 <= along <= len and |across| <= r, both linear in x
+            double ux = dx / len;
+            double uy = dy / len;
+            double[] along = slab(ux, uy * (y - a.y()) - ux * a.x(), 0, len);
+            double[] across = slab(-uy, ux * (y - a.y()) + uy * a.x(), -r, r);
+            if (along != null && across != null) {
+                double l = Math.max(along[0], across[0]);
+                double h = Math.min(along[1], across[1]);
+                if (l <= h) {
+                    lo = Math.min(lo, l);
+                    hi = Math.max(hi, h);
+                }
+            }
+        }
+        return lo <= hi ? new double[] {lo, hi} : null;
+    }
+
+    /** The x where lo <= c x + k <= hi: an interval, the whole row, or null. */
+    private static double[] slab(double c, double k, double lo, double hi) {
+        if (Math.abs(c) < 1e-12) {
+            return k >= lo && k <= hi ? new double[] {Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY} : null;
+        }
+        double x0 = (lo - k) / c;
+        double x1 = (hi - k) / c;
+        return new double[] {Math.min(x0, x1), Math.max(x0, x1)};
     }
 
     /** The material's top over a cell: the stock's top where no cut has reached, none outside the box. */
@@ -228,7 +310,15 @@ final class Material {
 
     private float[] tile(int i, int j, boolean make) {
         long key = ((long) Math.floorDiv(i, TILE) << 32) ^ (Math.floorDiv(j, TILE) & 0xffffffffL);
+        // consecutive cells are mostly in one tile: the last one found is asked first
+        if (lastTile != null && key == lastKey) {
+            return lastTile;
+        }
         float[] t = tiles.get(key);
+        if (t != null) {
+            lastKey = key;
+            lastTile = t;
+        }
         if (t == null && make) {
             t = new float[TILE * TILE];
             java.util.Arrays.fill(t, Float.NaN);
@@ -263,6 +353,8 @@ final class Material {
         double dy = b.y() - a.y();
         double q = dx * dx + dy * dy;
         double t = q < 1e-18 ? 0 : Math.max(0, Math.min(1, ((x - a.x()) * dx + (y - a.y()) * dy) / q));
-        return Math.hypot(a.x() + t * dx - x, a.y() + t * dy - y);
+        double ex = a.x() + t * dx - x;
+        double ey = a.y() + t * dy - y;
+        return Math.sqrt(ex * ex + ey * ey);
     }
 }

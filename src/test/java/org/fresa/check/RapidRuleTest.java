@@ -158,4 +158,35 @@ class RapidRuleTest {
         String p = "T1 M6\nS1000 M3\nG0 X0 Y0 Z-50\nG0 X100 Y0 Z-50\nM5\nM30\n";
         assertTrue(ProgramCheck.of(p, NcDialect.LINUXCNC, Limits.milling()).ok());
     }
+
+    @Test
+    void aCapsulesTraceOnARowIsExactlyThePointsWithinItsRadius() {
+        java.util.Random rnd = new java.util.Random(7);
+        int checked = 0;
+        for (int n = 0; n < 400; n++) {
+            org.fresa.geom.Vec3 a = new org.fresa.geom.Vec3(rnd.nextDouble() * 20 - 10, rnd.nextDouble() * 20 - 10, 0);
+            org.fresa.geom.Vec3 b =
+                    n % 5 == 0 ? a : new org.fresa.geom.Vec3(rnd.nextDouble() * 20 - 10, rnd.nextDouble() * 20 - 10, 0);
+            double r = 0.1 + rnd.nextDouble() * 6;
+            double y = rnd.nextDouble() * 34 - 17;
+            double[] span = Material.rowSpan(a, b, r, y);
+            for (double x = -17; x <= 17; x += 0.02) {
+                double d = distance(a, b, x, y);
+                boolean in = span != null && x >= span[0] - 1e-9 && x <= span[1] + 1e-9;
+                if (Math.abs(d - r) > 1e-6) {
+                    assertEquals(d < r, in, "row " + y + " x " + x + " r " + r + " " + a + " " + b);
+                    checked++;
+                }
+            }
+        }
+        assertTrue(checked > 600_000, "points checked: " + checked);
+    }
+
+    private static double distance(org.fresa.geom.Vec3 a, org.fresa.geom.Vec3 b, double x, double y) {
+        double dx = b.x() - a.x();
+        double dy = b.y() - a.y();
+        double q = dx * dx + dy * dy;
+        double t = q == 0 ? 0 : Math.max(0, Math.min(1, ((x - a.x()) * dx + (y - a.y()) * dy) / q));
+        return Math.hypot(a.x() + t * dx - x, a.y() + t * dy - y);
+    }
 }
