@@ -171,6 +171,16 @@ public final class RobotTrajectoryService {
     }
 
     /**
+     * The robot program of a solved trajectory, as every writer and the program check take it:
+     * each workingstep's tool frame (TCP), the dwells after their targets.
+     */
+    public static RobotProgram program(Solved solved, String programName) {
+        Request req = solved.request();
+        return RobotPrograms.of(
+                programName, req.robot(), req.toolpath(), solved.result().points(), req::tcp, dwellsAfterTargets(req));
+    }
+
+    /**
      * Writes the formats the request names: trajectory.csv (csv), joints.png and error.png (png),
      * program.xml (xml), program.mod (rapid), program.src (krl), and always summary.json.
      *
@@ -211,8 +221,7 @@ public final class RobotTrajectoryService {
         if (fmts.contains("csv")) {
             out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
-        RobotProgram program = RobotPrograms.of(
-                programName, req.robot(), req.toolpath(), r.points(), req::tcp, dwellsAfterTargets(req));
+        RobotProgram program = program(solved, programName);
         java.util.Optional<org.fresa.check.Failure> refused = ProgramChecks.robot(program, req.toolpath(), limits);
         if (refused.isEmpty()) {
             RobotPrograms.write(program, req.robot(), fmts, out);

@@ -150,14 +150,9 @@ final class OutputViewModel {
         return f;
     }
 
-    /** The robot program of a run, as the writers take it. */
+    /** The robot program of a run, as the writers and Save take it (tool frames, dwells). */
     static org.fresa.post.RobotProgram program(RobotRunModel.Run run) {
-        RobotTrajectoryService.Request r = run.solved().request();
-        return org.fresa.robot.RobotPrograms.of(
-                run.programName(),
-                r.robot(),
-                r.toolpath(),
-                run.solved().result().points());
+        return RobotTrajectoryService.program(run.solved(), run.programName());
     }
 
     /** The program check's first failure of a run's robot program (as Save would check it), or empty. */

@@ -74,4 +74,34 @@ class OutputViewModelTest {
         assertTrue(text.contains("MODULE") && text.contains("MoveL"), text.substring(0, Math.min(400, text.length())));
         assertTrue(!OutputViewModel.keywordSpans(text).isEmpty());
     }
+
+    @Test
+    void theProgramTheTabChecksAndShowsIsTheOneSaveWrites() throws Exception {
+        RobotTrajectoryService.Solved s = PositionViewModel.compute(
+                Path.of("samples/stepnc/iso14649-11-example1.stp"),
+                "irb140",
+                new Placement(400, -200, 500, 0, 0, 0),
+                new Placement(0, 10, 0, 0, 0, 0),
+                List.of("csv"),
+                ProgressMonitor.NONE);
+        RobotRunModel.Run run = new RobotRunModel.Run(s, "example1");
+        OutputViewModel.write(run, List.of("rapid", "krl", "xml"), new OutputFolder(dir.resolve("saved")));
+        org.fresa.robot.RobotPrograms.write(
+                OutputViewModel.program(run),
+                s.request().robot(),
+                List.of("rapid", "krl", "xml"),
+                new OutputFolder(dir.resolve("shown")));
+        for (String f : List.of("program.mod", "program.src", "program.xml")) {
+            assertEquals(
+                    Files.readString(dir.resolve("saved").resolve(f)),
+                    Files.readString(dir.resolve("shown").resolve(f)),
+                    f);
+        }
+        assertEquals(
+                OutputViewModel.refusal(run),
+                org.fresa.job.ProgramChecks.robot(
+                        RobotTrajectoryService.program(s, "example1"),
+                        s.request().toolpath(),
+                        s.request().checkLimits()));
+    }
 }
