@@ -186,6 +186,95 @@ public final class ProgramChecks {
         return ProgramCheck.of(program, onRobot, tools).failure();
     }
 
+    /** Most samples of one joint motion: a degree (or millimetre) of its largest joint travel each. */
+    static final int MAX_JOINT_SAMPLES = 3600;
+
+    /** How far below its lower end a joint motion's tool tip may pass over the stock (mm). */
+    static final double JOINT_DIP_MM = 0.01;
+
+    /**
+     * The robot's joint motions (MoveAbsJ, PTP) against the stock. The controller interpolates
+     * the joints, not the tool tip, so between two points the tip leaves the straight line the
+     * toolpath's check judged; on a six-axis arm it can swing down by tens of millimetres. Each
+     * joint motion is sampled every degree (or millimetre) of the joint that travels most, the tip
+     * taken to the workpiece's frame. A sample where the tool (its radius included) is inside the
+     * stock's box, below its top, is refused by the {@code rapid} rule with the place, when both
+     * ends are over the stock's top (the straight link was in the air), or when the sample is
+     * below both ends by more than {@link #JOINT_DIP_MM} (an end in a cleared pocket: below its
+     * ends, the material is not what an earlier cut removed for the ends' straight link; a swing
+     * sideways at the ends' height there is not judged). Nothing is stated where the stock has no
+     * top.
+     *
+     * @param robotOf the robot with each workingstep's tool frame, by the workingstep's label
+     * @param robotToPiece the workpiece's frame in the robot's base frame
+     * @param tools each workingstep's tool number (its section's)
+     * @return the first joint motion that dips into the stock, or empty
+     */
+    public static Optional<Failure> jointMotions(
+            org.fresa.post.RobotProgram program,
+            java.util.function.Function<String, org.fresa.kin.Robot> robotOf,
+            Transform3 robotToPiece,
+            Limits limits,
+            Map<String, Integer> tools) {
+        Limits.Stock stock = limits.stock();
+        if (!Double.isFinite(stock.maxZMm())) {
+            return Optional.empty();
+        }
+        Transform3 toPiece = robotToPiece.inverse();
+        List<org.fresa.post.RobotProgram.Motion> ms = program.motions();
+        for (int i = 1; i < ms.size(); i++) {
+            org.fresa.post.RobotProgram.Motion m = ms.get(i);
+            org.fresa.post.RobotProgram.Motion before = ms.get(i - 1);
+            if (m.type() != org.fresa.post.RobotProgram.MotionType.JOINT
+                    || m.jointValues().size() != before.jointValues().size()) {
+                continue;
+            }
+            org.fresa.kin.Robot robot = robotOf.apply(m.workingstep());
+            double[] q0 = before.jointValues().stream()
+                    .mapToDouble(Double::doubleValue)
+                    .toArray();
+            double[] q1 =
+                    m.jointValues().stream().mapToDouble(Double::doubleValue).toArray();
+            double travel = 0;
+            for (int j = 0; j < q0.length; j++) {
+                travel = Math.max(travel, Math.abs(q1[j] - q0[j]));
+            }
+            int n = (int) Math.min(MAX_JOINT_SAMPLES, Math.max(1, Math.ceil(travel)));
+            Vec3 a = toPiece.applyToPoint(robot.forward(q0).translationPart());
+            Vec3 b = toPiece.applyToPoint(robot.forward(q1).translationPart());
+            double low = Math.min(a.z(), b.z()) - JOINT_DIP_MM;
+            // ends over the stock's top: the straight link was in the air, and so must the tip be
+            boolean above = low + JOINT_DIP_MM >= stock.maxZMm();
+            double radius = limits.tool(tools.getOrDefault(m.workingstep(), 0)).radiusMm();
+            double[] q = new double[q0.length];
+            for (int k = 1; k < n; k++) {
+                double t = (double) k / n;
+                for (int j = 0; j < q.length; j++) {
+                    q[j] = q0[j] + t * (q1[j] - q0[j]);
+                }
+                Vec3 tip = toPiece.applyToPoint(robot.forward(q).translationPart());
+                if ((above || tip.z() < low) && stock.touches(tip, radius, 0)) {
+                    return Optional.of(new Failure(
+                            m.index(),
+                            "motion " + m.index(),
+                            "joint motion in workingstep " + m.workingstep(),
+                            new org.fresa.check.RapidRule(),
+                            "the joints' interpolation swings the tool tip down to Z " + mm(tip.z())
+                                    + " mm at X " + mm(tip.x()) + " Y " + mm(tip.y()) + " (in the workpiece's frame), "
+                                    + mm(Math.min(a.z(), b.z()) - tip.z()) + " mm below the motion's ends and "
+                                    + mm(stock.maxZMm() - tip.z()) + " mm below the stock's top Z "
+                                    + mm(stock.maxZMm()) + " mm: the straight link between its ends is not what the"
+                                    + " robot does"));
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    private static String mm(double v) {
+        return org.fresa.model.ExactDecimal.of(Math.round(v * 1e3) / 1e3 + 0.0);
+    }
+
     /**
      * A STEP-NC milling cutter as the user's entry choices say: straight down only for a cutter
      * said to cut at its centre and asked to plunge (or left to, with {@code auto}), as the pocket

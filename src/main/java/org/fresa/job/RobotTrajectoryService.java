@@ -171,6 +171,30 @@ public final class RobotTrajectoryService {
     }
 
     /**
+     * The program check of a robot program: its toolpath and motions ({@link ProgramChecks#robot}),
+     * then its joint motions against the stock ({@link ProgramChecks#jointMotions}).
+     */
+    public static java.util.Optional<org.fresa.check.Failure> check(
+            Solved solved, RobotProgram program, org.fresa.check.Limits limits) {
+        Request req = solved.request();
+        java.util.Optional<org.fresa.check.Failure> f = ProgramChecks.robot(program, req.toolpath(), limits);
+        if (f.isPresent()) {
+            return f;
+        }
+        Map<String, Integer> tools = new java.util.HashMap<>();
+        for (ToolpathSection s : req.toolpath().sections()) {
+            tools.putIfAbsent(s.label(), s.toolNumber());
+        }
+        java.util.Map<Transform3, Robot> byTcp = new java.util.HashMap<>();
+        return ProgramChecks.jointMotions(
+                program,
+                label -> byTcp.computeIfAbsent(req.tcp(label), t -> req.robot().withTool(t)),
+                req.robotTable().toTransform().times(req.tablePiece().toTransform()),
+                limits,
+                tools);
+    }
+
+    /**
      * The robot program of a solved trajectory, as every writer and the program check take it:
      * each workingstep's tool frame (TCP), the dwells after their targets.
      */
@@ -222,7 +246,7 @@ public final class RobotTrajectoryService {
             out.write("trajectory.csv", os -> os.write(trajectoryCsv(req, r).getBytes(StandardCharsets.UTF_8)));
         }
         RobotProgram program = program(solved, programName);
-        java.util.Optional<org.fresa.check.Failure> refused = ProgramChecks.robot(program, req.toolpath(), limits);
+        java.util.Optional<org.fresa.check.Failure> refused = check(solved, program, limits);
         if (refused.isEmpty()) {
             RobotPrograms.write(program, req.robot(), fmts, out);
         }

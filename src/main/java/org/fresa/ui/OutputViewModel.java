@@ -157,10 +157,8 @@ final class OutputViewModel {
 
     /** The program check's first failure of a run's robot program (as Save would check it), or empty. */
     static java.util.Optional<org.fresa.check.Failure> refusal(RobotRunModel.Run run) {
-        return org.fresa.job.ProgramChecks.robot(
-                program(run),
-                run.solved().request().toolpath(),
-                run.solved().request().checkLimits());
+        return RobotTrajectoryService.check(
+                run.solved(), program(run), run.solved().request().checkLimits());
     }
 
     /**
