@@ -26,6 +26,12 @@ final class Material {
     /** The grid's cell side (mm): the sideways resolution of the rapid rule. */
     static final double CELL_MM = 0.2;
 
+    /**
+     * How far from its axis a tool narrower than this is taken to cut and to meet material (mm):
+     * three quarters of a cell, so that the axis always has a cell centre within it.
+     */
+    static final double AXIS_REACH_MM = 0.75 * CELL_MM;
+
     /** How far off a merged chord the skipped points of a level run may lie (mm). */
     static final double MERGE_MM = 0.02;
 
@@ -131,7 +137,8 @@ final class Material {
         if (!known() || Math.min(a.z(), b.z()) >= stock.maxZMm()) {
             return java.util.Optional.empty();
         }
-        double r = Math.max(0, radiusMm - CELL_MM);
+        // a tool of no stated radius is seen at its axis, over the cells its own cuts mark
+        double r = Math.max(radiusMm - CELL_MM, AXIS_REACH_MM);
         Hit worst = null;
         double minX = Math.min(a.x(), b.x()) - r;
         double maxX = Math.max(a.x(), b.x()) + r;
@@ -221,16 +228,15 @@ final class Material {
         if (z >= stock.maxZMm()) {
             return;
         }
-        double r = radiusMm;
-        int j0 = index(Math.min(a.y(), b.y()) - r);
-        int j1 = index(Math.max(a.y(), b.y()) + r);
-        int i0 = index(Math.min(a.x(), b.x()) - r);
-        int i1 = index(Math.max(a.x(), b.x()) + r);
+        // a tool narrower than a cell still marks the cells about its axis
+        double reach = Math.max(radiusMm, AXIS_REACH_MM);
+        int j0 = index(Math.min(a.y(), b.y()) - reach);
+        int j1 = index(Math.max(a.y(), b.y()) + reach);
+        int i0 = index(Math.min(a.x(), b.x()) - reach);
+        int i1 = index(Math.max(a.x(), b.x()) + reach);
         if ((long) (j1 - j0 + 1) * (i1 - i0 + 1) > 50_000_000L) {
             return; // a move of absurd size removes nothing: the rapids after it are judged as into stock
         }
-        // a tool narrower than a cell still marks the cell its axis passes through
-        double reach = Math.max(r, CELL_MM / 2);
         for (int j = j0; j <= j1; j++) {
             double y = centre(j);
             double[] span = rowSpan(a, b, reach, y);

@@ -189,4 +189,19 @@ class RapidRuleTest {
         double t = q == 0 ? 0 : Math.max(0, Math.min(1, ((x - a.x()) * dx + (y - a.y()) * dy) / q));
         return Math.hypot(a.x() + t * dx - x, a.y() + t * dy - y);
     }
+
+    @Test
+    void aFeedStraightDownWhereTheProgramClearedIsNoEntryButBesideItIsAPlunge() {
+        // after the first layer, straight down at feed from Z-3.8 to Z-4 inside the cleared floor
+        String p = TWO_LAYERS.replace(
+                "G0 X10.000 Y10.000 Z-3.800\n", "G0 X10.000 Y10.000 Z-3.000\nG1 X10.000 Y10.000 Z-4.000\n");
+        ProgramCheck.Verdict v = ProgramCheck.of(p, NcDialect.LINUXCNC, POCKET);
+        assertTrue(v.ok(), () -> v.failure().get().message());
+        // on below the cleared floor it is a plunge into the material
+        String deeper = TWO_LAYERS.replace(
+                "G0 X10.000 Y10.000 Z-3.800\n", "G0 X10.000 Y10.000 Z-3.800\nG1 X10.000 Y10.000 Z-4.500\n");
+        Failure f = fails(deeper, NcDialect.LINUXCNC, POCKET);
+        assertEquals("entry angle", f.rule().name());
+        assertEquals("G1 X10.000 Y10.000 Z-4.500", f.text());
+    }
 }
