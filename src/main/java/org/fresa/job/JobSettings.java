@@ -175,7 +175,8 @@ public final class JobSettings {
      * @param elements the contour typed in the Pocket tab's editor, held in the job itself: when
      *     present it is the contour planned, and {@code contour} only names it (the {@code .dad}
      *     file it was opened from or is saved as); empty: the contour is read from the file
-     * @param strategy how the floor is cleared: offset passes (the default) or zigzag lines at an angle
+     * @param strategy how the floor is cleared: offset passes (the default), zigzag lines at an angle or
+     *     adaptive walks
      */
     public record PocketSettings(
             Path contour,

@@ -283,7 +283,7 @@ public final class PocketService {
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
-        if (s.strategy().zigzag() || !s.strategy().asThesis()) {
+        if (!s.strategy().offset() || !s.strategy().asThesis()) {
             return runStrategy(s, outFile);
         }
         if (mayHaveIslands(s)) {
@@ -450,6 +450,17 @@ public final class PocketService {
     }
 
     /**
+     * Why {@code --strategy adaptive} is refused: the walks of {@link org.fresa.pocket.AdaptivePocket}
+     * clear the floor without leaving material or cutting a wall, and hold the engagement in open
+     * floor, but along the walls and in corners they still meet more than the stepover allows
+     * (docs/pocket-strategies.md, "Adaptive"): a program that claims a constant engagement it does
+     * not hold is not written.
+     */
+    public static final String ADAPTIVE_NOT_READY = "adaptive clearing is not available yet: its walks hold the"
+            + " engagement at the stepover in open floor but not yet along the walls, in corners and in the"
+            + " pre-finish pass (measured up to 2.3 times the angle allowed); use --strategy offset or zigzag";
+
+    /**
      * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines
      * ({@link ZigzagPocket}), or offset passes with stock left or from the outside in
      * ({@link RegionPocket}). The contour: the outer one and its islands from a drawing or
@@ -473,12 +484,15 @@ public final class PocketService {
     public static StrategyPocket.Planned strategyPlan(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
         PocketStrategy st = s.strategy();
+        if (st.adaptive()) {
+            throw new CamInputException("--strategy", ADAPTIVE_NOT_READY);
+        }
         if (s.post().sevenM()) {
-            String option = st.zigzag()
+            String option = !st.offset()
                     ? "--strategy"
                     : st.stockToLeaveMm() > 0 ? "--stock-to-leave" : st.restTool() ? "--rest-tool" : "--order";
-            String what = st.zigzag()
-                    ? "zigzag"
+            String what = !st.offset()
+                    ? st.kind().word()
                     : st.stockToLeaveMm() > 0
                             ? "stock to leave"
                             : st.restTool() ? "a rest tool (a second tool, T2)" : "passes outside in";
@@ -578,7 +592,7 @@ public final class PocketService {
         summary.put("strategy", st.kind().word());
         if (st.zigzag()) {
             summary.put("angle_deg", st.angleDeg());
-        } else {
+        } else if (st.offset()) {
             summary.put("order", st.order().word());
         }
         summary.put("stock_to_leave_mm", st.stockToLeaveMm());

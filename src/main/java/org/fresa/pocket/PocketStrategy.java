@@ -6,16 +6,18 @@ import org.fresa.model.WordedEnum;
 /**
  * How a pocket's floor is cleared before the finishing contour: by passes parallel to the walls
  * ({@link Kind#OFFSET}, the thesis's and the default) or by parallel straight lines at an angle
- * ({@link Kind#ZIGZAG}), linked along the pre-finish offset of the walls; how much stock is left
+ * ({@link Kind#ZIGZAG}), linked along the pre-finish offset of the walls, or by walks at a constant
+ * engagement ({@link Kind#ADAPTIVE}); how much stock is left
  * for a later finish; in which order the offset passes are cut.
  *
  * @param kind the pattern
- * @param angleDeg the zigzag lines' direction, counter-clockwise from +X (deg, -180 to 180); unused by offset
+ * @param angleDeg the zigzag lines' direction, counter-clockwise from +X (deg, -180 to 180); unused by
+ *     offset and adaptive
  * @param stockToLeaveMm material left on the walls, the islands and the floor for a later finish
  *     (mm, 0 to {@link #MAX_STOCK_TO_LEAVE_MM}): the passes are planned for walls that much nearer
  *     and a floor that much higher
  * @param order the offset passes' order: from the inside out (the thesis's, the default) or from
- *     the outside in (the finishing pass still last); unused by zigzag
+ *     the outside in (the finishing pass still last); unused by zigzag and adaptive
  * @param restToolDiameterMm the diameter of a second, smaller tool that cuts only what the first
  *     left and it can reach ({@link RestMachining}), 0 for none (mm); at least
  *     {@link #MIN_REST_TOOL_MM} and smaller than the first tool by more than
@@ -86,7 +88,12 @@ public record PocketStrategy(
         /** Passes parallel to the walls, from the inside out. */
         OFFSET,
         /** Parallel lines at an angle, alternating in direction, then the contour passes. */
-        ZIGZAG;
+        ZIGZAG,
+        /**
+         * Walks that hold the tool's engagement at the stepover's (constant-engagement clearing,
+         * {@link AdaptivePocket}), then the contour passes.
+         */
+        ADAPTIVE;
 
         @Override
         public String toString() {
@@ -115,6 +122,16 @@ public record PocketStrategy(
      */
     public boolean asThesis() {
         return stockToLeaveMm == 0 && order == Order.INSIDE_OUT && !restTool();
+    }
+
+    /** Whether the floor is cleared by walks at a constant engagement ({@link AdaptivePocket}). */
+    public boolean adaptive() {
+        return kind == Kind.ADAPTIVE;
+    }
+
+    /** Whether the floor is cleared by offset passes, the thesis's pattern. */
+    public boolean offset() {
+        return kind == Kind.OFFSET;
     }
 
     /** Whether the floor is cleared by zigzag lines. */

@@ -7,7 +7,7 @@ import org.fresa.model.Toolpath;
 
 /**
  * A pocket planned by a {@link PocketStrategy} other than the thesis's own passes: zigzag lines
- * ({@link ZigzagPocket}), or offset passes ({@link RegionPocket}) with stock left or cut from the
+ * ({@link ZigzagPocket}), walks at a constant engagement ({@link AdaptivePocket}), or offset passes ({@link RegionPocket}) with stock left or cut from the
  * outside in. Stock to leave: the region is offset inwards by it (walls and islands that much
  * nearer) and the floor raised by it, so that every pass keeps it from what it finishes later.
  * A rest tool: a second section, T2, that cuts only what the first tool left and it can reach
@@ -102,7 +102,11 @@ public final class StrategyPocket {
         }
         Toolpath first;
         int passes;
-        if (strategy.zigzag()) {
+        if (strategy.adaptive()) {
+            AdaptivePocket.Plan a = AdaptivePocket.plan(boundary, t, climb, entry);
+            first = a.toolpath();
+            passes = a.order().size();
+        } else if (strategy.zigzag()) {
             ZigzagPocket.Plan z = ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry);
             first = z.toolpath();
             passes = z.order().size();

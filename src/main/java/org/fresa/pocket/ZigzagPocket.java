@@ -409,7 +409,7 @@ public final class ZigzagPocket {
     }
 
     /** Adds the loops as closed cuts, nearest first, each started near the tool; returns where the tool ends. */
-    private static Vec2 loops(List<Contour> loops, boolean finishing, boolean climb, Vec2 cursor, List<Cut> order) {
+    static Vec2 loops(List<Contour> loops, boolean finishing, boolean climb, Vec2 cursor, List<Cut> order) {
         List<Contour> pending = new ArrayList<>(loops);
         Vec2 at = cursor;
         while (!pending.isEmpty()) {

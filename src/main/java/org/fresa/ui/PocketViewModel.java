@@ -127,8 +127,12 @@ public final class PocketViewModel {
     /** The rest tool's label. */
     public static final String REST_TOOL_LABEL = "Rest tool (mm)";
     /** The strategies and orders the tab offers, as the job and the command line name them. */
+    /** The strategies the tab offers: adaptive is left out while it is refused ({@link PocketService#ADAPTIVE_NOT_READY}). */
     public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
-            org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word);
+                    org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word)
+            .stream()
+            .filter(w -> !w.equals(org.fresa.pocket.PocketStrategy.Kind.ADAPTIVE.word()))
+            .toList();
 
     public static final List<String> ORDERS = org.fresa.model.EnumWords.all(
             org.fresa.pocket.PocketStrategy.Order.class, org.fresa.pocket.PocketStrategy.Order::word);
@@ -516,7 +520,7 @@ public final class PocketViewModel {
                 : checked;
         try {
             String name = settings.contour().getFileName().toString();
-            if (settings.strategy().zigzag() || !settings.strategy().asThesis()) {
+            if (!settings.strategy().offset() || !settings.strategy().asThesis()) {
                 // the program fresa pocket and Job > Run write for these settings
                 org.fresa.pocket.StrategyPocket.Planned planned = PocketService.strategyPlan(settings);
                 Toolpath path = planned.toolpath();
@@ -532,7 +536,9 @@ public final class PocketViewModel {
                 String report = String.format(
                         Locale.ROOT,
                         "%s, %d island(s), stock to leave %s mm%s%n",
-                        st.zigzag() ? "zigzag at " + ExactDecimal.of(st.angleDeg()) + " deg" : "offset " + st.order(),
+                        st.zigzag()
+                                ? "zigzag at " + ExactDecimal.of(st.angleDeg()) + " deg"
+                                : st.adaptive() ? "adaptive" : "offset " + st.order(),
                         contours.size() - 1,
                         ExactDecimal.of(st.stockToLeaveMm()),
                         String.format(Locale.ROOT, ", path %.1f mm", PocketToolpath.lengthMm(path)));

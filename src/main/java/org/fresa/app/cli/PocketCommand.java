@@ -96,7 +96,8 @@ final class PocketCommand extends CliCommand {
             names = "--strategy",
             paramLabel = "offset|zigzag",
             description = "how the floor is cleared: passes parallel to the walls (offset), or parallel lines at"
-                    + " --angle then the contour passes (zigzag, G-code and APT posts only); default ${DEFAULT-VALUE}")
+                    + " --angle then the contour passes (zigzag, G-code and APT posts only); adaptive is refused"
+                    + " (exit 2) until it holds its engagement everywhere; default ${DEFAULT-VALUE}")
     PocketStrategy.Kind strategy = DEFAULTS.strategy().kind();
 
     @Option(
