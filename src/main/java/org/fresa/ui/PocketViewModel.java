@@ -126,8 +126,10 @@ public final class PocketViewModel {
     public static final String REST_TOOL = "pocket-rest-tool";
     /** The rest tool's label. */
     public static final String REST_TOOL_LABEL = "Rest tool (mm)";
-    /** The strategies and orders the tab offers, as the job and the command line name them. */
-    /** The strategies the tab offers: adaptive is left out while it is refused ({@link PocketService#ADAPTIVE_NOT_READY}). */
+    /**
+     * The strategies the tab offers, as the job and the command line name them: adaptive is left
+     * out while it is refused ({@link PocketService#ADAPTIVE_NOT_READY}).
+     */
     public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
                     org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word)
             .stream()
