@@ -278,8 +278,28 @@ public final class PocketService {
         return new TaskOutcome(o.exitStatus(), o.problems(), summary, files);
     }
 
-    /** Runs the pocket job and writes the NC program to outFile. */
+    /**
+     * Runs the pocket job and writes the NC program to outFile. A stepover asked below half the
+     * tool's diameter is planned at half (the least the planners step, {@link
+     * org.fresa.pocket.PocketTechnology#effectiveCut}), and the outcome says so.
+     */
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        TaskOutcome o = planAndWrite(s, outFile, progress);
+        if (s.cutFraction() >= org.fresa.pocket.PocketTechnology.LEAST_CUT
+                || s.strategy().adaptive()) {
+            return o;
+        }
+        List<String> problems = new ArrayList<>();
+        problems.add("--cut " + org.fresa.model.ExactDecimal.of(s.cutFraction()) + " is planned as "
+                + org.fresa.model.ExactDecimal.of(org.fresa.pocket.PocketTechnology.LEAST_CUT)
+                + ": the passes step at least half the tool's diameter (the thesis's least stepover, which the"
+                + " planners keep)");
+        problems.addAll(o.problems());
+        return new TaskOutcome(o.exitStatus(), problems, o.summary(), o.files());
+    }
+
+    private static TaskOutcome planAndWrite(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);

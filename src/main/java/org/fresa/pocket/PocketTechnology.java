@@ -93,9 +93,12 @@ public record PocketTechnology(
         return toolDiameterMm / 2;
     }
 
-    /** The stepover fraction actually used: at least 0.5 (the thesis forces it). */
+    /** The least stepover fraction the offset and zigzag planners take (the thesis forces it). */
+    public static final double LEAST_CUT = 0.5;
+
+    /** The stepover fraction actually used: at least {@link #LEAST_CUT} (the thesis forces it). */
     public double effectiveCut() {
-        return Math.max(0.5, cutFraction);
+        return Math.max(LEAST_CUT, cutFraction);
     }
 
     /** Number of depth passes: the ceiling of depth / max depth, at least 1 (thesis). */

@@ -81,7 +81,10 @@ final class Tooltips {
                         + " a line by A, B, D (A x + B y = D), an arc by its centre, radius and sense; Insert adds, Delete"
                         + " removes, Alt+Up/Down moves the selected element");
         tip("Pocket", "Tool diameter (mm)", "Diameter of the milling cutter (mm)");
-        tip("Pocket", "Cut fraction", "Step-over between passes as a fraction of the tool diameter (0 to 1)");
+        tip(
+                "Pocket",
+                "Cut fraction",
+                "Step-over between passes as a fraction of the tool diameter (0 to 1; the passes step at least 0.5)");
         tip(
                 "Pocket",
                 "Finish fraction",
