@@ -119,7 +119,21 @@ class OneDocumentGuiTest extends WindowGuiTest {
     @Test
     void newEmptiesEveryTabAndAsksBeforeDiscardingChanges() {
         open(CAVITY01);
-        window.tabbedPane("tabs").selectTab("Position");
+        // a loaded run once left another tab in front after opening the job: the tab is selected,
+        // once no task runs, until it is the one shown
+        waitUntilNoTaskRuns();
+        for (int attempt = 0; attempt < 50; attempt++) {
+            window.tabbedPane("tabs").selectTab("Position");
+            window.robot().waitForIdle();
+            String shown = GuiActionRunner.execute(() -> {
+                javax.swing.JTabbedPane tabs = ((MainWindow) window.target()).tabs();
+                return tabs.getTitleAt(tabs.getSelectedIndex());
+            });
+            if ("Position".equals(shown)) {
+                break;
+            }
+            Pause.pause(200);
+        }
         waitFor(
                 "the Position tab's fields are shown",
                 () -> window.robot()
