@@ -211,6 +211,15 @@ public final class Coverage {
         return need.isEmpty() && staysInside(a, b);
     }
 
+    /** Whether every cell the tool can reach within r of c is cut. */
+    boolean clearedDisc(Vec2 c, double r) {
+        BitSet need = new BitSet();
+        capsule(need, c, c, r);
+        need.and(reach);
+        need.andNot(cut);
+        return need.isEmpty();
+    }
+
     /** Whether the point lies inside the region the centre may go (by the chords of its faces). */
     boolean insideFaces(Vec2 p) {
         int w = 0;

@@ -143,17 +143,37 @@ public final class RestMachining {
         if (restArea == 0) {
             return new Plan(java.util.Optional.empty(), List.of(), 0, fullLength, tech);
         }
+        // Where the rest tool may go straight down: every cell it can reach within its radius less
+        // the program check's grid (which judges the tool's disc less 0.2 mm) plus half a diagonal
+        // of this grid is cut by the first tool, taken with its radius less that half diagonal and
+        // 0.03 mm (the check's chords of arcs), so that what is clear here is clear to the check.
+        double halfDiagonal = rest.cellMm() / Math.sqrt(2);
+        Coverage firstCleared = Coverage.rest(
+                faces,
+                firstPasses,
+                firstRadiusMm - halfDiagonal - 0.03,
+                tech.radiusMm(),
+                RegionPocket.COVERAGE_CELL_MM);
+        double downDiscMm = tech.radiusMm() - CHECK_CELL_MM + halfDiagonal;
         List<List<Curve2>> pieces = new ArrayList<>();
+        List<List<Curve2>> leadIns = new ArrayList<>();
         List<Boolean> finishing = new ArrayList<>();
         for (RegionPocket.Cut cut : own.order()) {
-            for (List<Curve2> p : pieces(cut.loop(), rest, overlapMm(tech), joinMm(tech))) {
-                pieces.add(p);
+            for (Piece p : cut(
+                    cut.loop(),
+                    rest,
+                    overlapMm(tech),
+                    joinMm(tech),
+                    leadInMm(tech),
+                    e -> downDiscMm > 0 && firstCleared.clearedDisc(e, downDiscMm))) {
+                pieces.add(p.curves());
+                leadIns.add(p.leadIn());
                 finishing.add(cut.level() == 0);
             }
         }
         requireNothingLeft(faces, firstPasses, firstRadiusMm, pieces, tech.radiusMm());
         tech.checkMoves(pieces.stream().mapToLong(p -> 3L * p.size() + 8).sum());
-        ToolpathSection section = section(pieces, finishing, faces, rest, tech, climb, entry);
+        ToolpathSection section = section(pieces, leadIns, finishing, faces, rest, tech, climb, entry);
         return new Plan(java.util.Optional.of(section), pieces, restArea, fullLength, tech);
     }
 
@@ -172,6 +192,20 @@ public final class RestMachining {
      */
     static double joinMm(PocketTechnology tech) {
         return tech.toolDiameterMm();
+    }
+
+    /** The program check's grid of the material (mm): it judges a tool's disc less one cell. */
+    static final double CHECK_CELL_MM = 0.2;
+
+    /** How far beyond the rest tool's radius a lead-in starts from the rest it leads into (mm). */
+    static final double ENTRY_MARGIN_MM = 0.3;
+
+    /**
+     * The shortest lead-in before a piece (mm): the rest tool's radius, the entry margin and the
+     * overlap, so that where it goes down its disc is clear of the rest the piece starts into.
+     */
+    static double leadInMm(PocketTechnology tech) {
+        return tech.radiusMm() + ENTRY_MARGIN_MM + overlapMm(tech);
     }
 
     /** What the section's moves at the floor follow: lines and arcs with both ends at floorZ. */
@@ -220,6 +254,30 @@ public final class RestMachining {
      * kept runs cover it.
      */
     static List<List<Curve2>> pieces(Contour loop, Coverage rest, double overlapMm, double joinMm) {
+        return cut(loop, rest, overlapMm, joinMm, 0, p -> false).stream()
+                .map(Piece::curves)
+                .toList();
+    }
+
+    /**
+     * A piece of a loop, and the stretch of the loop just before it (lead-in, empty when there is
+     * none): the rest tool may go down in the cleared floor at the lead-in's start and feed along it
+     * into the piece, instead of ramping into the piece.
+     */
+    record Piece(List<Curve2> curves, List<Curve2> leadIn) {}
+
+    /**
+     * {@link #pieces}, each with the shortest lead-in along the loop before it of leadInMm once or
+     * twice that starts where the tool may go straight down ({@code clear}) and whose disc
+     * along it meets no rest; none when there is no such one.
+     */
+    static List<Piece> cut(
+            Contour loop,
+            Coverage rest,
+            double overlapMm,
+            double joinMm,
+            double leadInMm,
+            java.util.function.Predicate<Vec2> clear) {
         double len = loop.length();
         List<double[]> kept = new ArrayList<>();
         double at = 0;
@@ -268,20 +326,43 @@ public final class RestMachining {
                 runs.remove(runs.size() - 1);
             }
         }
-        List<List<Curve2>> out = new ArrayList<>();
+        List<Piece> out = new ArrayList<>();
         for (double[] r : runs) {
             if (r[1] - r[0] >= len - 1e-9) {
                 // the whole loop from its own start, as the plan cuts it
-                out.add(loop.curves());
+                out.add(new Piece(loop.curves(), List.of()));
             } else {
                 List<Curve2> piece = stretch(loop, r[0], r[1]);
                 // a run shorter than the program's resolution has no move: the check after finds what it left
                 if (!piece.isEmpty()) {
-                    out.add(piece);
+                    out.add(new Piece(piece, leadIn(loop, rest, r, leadInMm, clear)));
                 }
             }
         }
         return out;
+    }
+
+    private static List<Curve2> leadIn(
+            Contour loop, Coverage rest, double[] run, double leadInMm, java.util.function.Predicate<Vec2> clear) {
+        double len = loop.length();
+        for (int k = 1; k <= 2 && leadInMm > 0; k *= 2) {
+            double l = k * leadInMm;
+            if (!(run[1] - run[0] + l < len - 1e-9 && run[0] - l > -len)) {
+                break;
+            }
+            List<Curve2> lead = stretch(loop, run[0] - l, run[0]);
+            if (lead.isEmpty() || !clear.test(lead.get(0).start())) {
+                continue;
+            }
+            boolean meets = false;
+            for (Vec2[] c : Coverage.chords(lead)) {
+                meets = meets || rest.meetsUncut(c[0], c[1]);
+            }
+            if (!meets) {
+                return lead;
+            }
+        }
+        return List.of();
     }
 
     private static void add(List<double[]> kept, double s0, double s1) {
@@ -377,6 +458,7 @@ public final class RestMachining {
 
     private static ToolpathSection section(
             List<List<Curve2>> pieces,
+            List<List<Curve2>> leadIns,
             List<Boolean> finishing,
             List<Contour> faces,
             Coverage rest,
@@ -402,6 +484,16 @@ public final class RestMachining {
                         && cursor.distance(s) <= RegionPocket.linkLimitMm(t, entry, above - z)
                         && cleared.clearedAlong(cursor, s, piece)) {
                     moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                } else if (!leadIns.get(k).isEmpty()) {
+                    // down through what the first tool cleared beside the piece, then along into it
+                    Vec2 e = leadIns.get(k).get(0).start();
+                    moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
+                    moves.add(new Move.Rapid(at(e, safe)));
+                    moves.add(new Move.Rapid(at(e, above)));
+                    moves.add(new Move.Linear(at(e, z), t.feedMmPerMin()));
+                    for (Curve2 c : leadIns.get(k)) {
+                        RegionPocket.emit(moves, c, z, z, t.feedMmPerMin());
+                    }
                 } else {
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));

@@ -38,12 +38,15 @@ import org.locationtech.jts.operation.buffer.BufferParameters;
  * Rest machining ({@link RestMachining}): a 10 mm tool then a 4 mm one (and 6 then 2), on the
  * thesis's eight contours and on 30 seeded random pockets with 0 to 3 islands, checked from
  * LinuxCNC's interpreter's moves with JTS: the floor the small tool can reach is cut but for less
- * than 0.05 mm2, neither tool comes within the wall by 0.01 mm, the small tool's feed (ramps and
- * links included) meets material the first left over a quarter of its length at least where
- * there is 1 mm2 of it (the figure is printed: 64 % over the random pockets), the program passes
- * the program check in the linuxcnc, iso, fanuc and 840d posts, and the small tool feeds at the
- * floor less than half its own whole plan (a second pass over the whole pocket would feed all
- * of it).
+ * than 0.05 mm2, neither tool comes within the wall by 0.01 mm, the small tool feeds through air
+ * (feed, ramps, lead-ins and links included, whose disc meets no material the first tool left)
+ * less than a third of the length of its own whole plan where there is 1 mm2 of rest (the
+ * totals are printed: 3314 mm against 29773 mm of whole plans over the random pockets, worst
+ * 26 %; going down on a ramp over the rest itself it was 8023 mm, worst 62 %), the program passes the program check in the linuxcnc, iso, fanuc and 840d
+ * posts, and the small tool feeds at the floor its pieces and less than a quarter of its own whole
+ * plan beside them (a second pass over the whole pocket would feed all of it). Air, not the share of the feed that meets rest: a
+ * ramp on legs over a corner's rest meets it at every leg, and reads better than going down
+ * beside it in floor already cleared.
  */
 class RestMachiningTest {
 
@@ -94,8 +97,8 @@ class RestMachiningTest {
         int done = 0;
         double worstUncut = 0;
         double worstGouge = 0;
-        double meetsLength = 0;
-        double feedLength = 0;
+        double airLength = 0;
+        double planLength = 0;
         List<String> bad = new ArrayList<>();
         for (int attempt = 0; done < POCKETS && attempt < 3 * POCKETS; attempt++) {
             List<Contour> p = PocketCleanUpTest.pocket(rnd);
@@ -114,8 +117,8 @@ class RestMachiningTest {
             report(name, tools, rest, m);
             worstUncut = Math.max(worstUncut, m.uncutMm2());
             worstGouge = Math.max(worstGouge, m.gougeMm());
-            meetsLength += m.meetsFraction() * m.feedLengthMm();
-            feedLength += m.feedLengthMm();
+            airLength += (1 - m.meetsFraction()) * m.feedLengthMm();
+            planLength += rest.fullPlanLengthMm();
             try {
                 check(name, plan.toolpath(), t, tools[1], rest, m);
             } catch (AssertionError e) {
@@ -125,12 +128,13 @@ class RestMachiningTest {
         }
         System.out.printf(
                 Locale.ROOT,
-                "rest machining: %d pockets, worst uncut %.4f mm2, worst gouge %.4f mm, the rest tool's path meets"
-                        + " rest material over %.1f %% of its length%n",
+                "rest machining: %d pockets, worst uncut %.4f mm2, worst gouge %.4f mm, the rest tool feeds %.1f mm"
+                        + " through air against %.1f mm of its whole plans%n",
                 done,
                 worstUncut,
                 worstGouge,
-                feedLength > 0 ? 100 * meetsLength / feedLength : 0);
+                airLength,
+                planLength);
         assertEquals(POCKETS, done);
         assertTrue(bad.isEmpty(), bad.size() + " pockets fail: " + bad);
     }
@@ -241,15 +245,19 @@ class RestMachiningTest {
         assertTrue(m.uncutMm2() < PocketCleanUpTest.UNCUT_MM2, name + " leaves " + m.uncutMm2() + " mm2");
         assertTrue(m.gougeMm() < PocketCleanUpTest.GOUGE_MM, name + " cuts the wall by " + m.gougeMm() + " mm");
         if (rest.cuts()) {
-            // the rest tool does not go round the pocket again: far less than its own plan at the floor
+            // the rest tool does not go round the pocket again: at the floor, its pieces and no more
+            // than a quarter of its own plan beside them (lead-ins and links through cleared floor)
             assertTrue(
-                    m.floorLengthMm() < 0.5 * rest.fullPlanLengthMm(),
-                    name + ": the rest tool feeds " + m.floorLengthMm() + " mm at the floor of its "
-                            + rest.fullPlanLengthMm() + " mm plan");
+                    m.floorLengthMm() < rest.piecesLengthMm() + 0.25 * rest.fullPlanLengthMm(),
+                    name + ": the rest tool feeds " + m.floorLengthMm() + " mm at the floor for "
+                            + rest.piecesLengthMm() + " mm of pieces, of its " + rest.fullPlanLengthMm()
+                            + " mm plan");
             // of at least 1 mm2 of rest: a sliver thinner than the measure's 0.04 mm meets no disc in JTS
+            double airMm = (1 - m.meetsFraction()) * m.feedLengthMm();
             assertTrue(
-                    rest.restAreaMm2() < 1 || m.meetsFraction() > 0.25,
-                    name + ": the rest tool's feed meets rest material over " + m.meetsFraction() + " only");
+                    rest.restAreaMm2() < 1 || airMm < rest.fullPlanLengthMm() / 3,
+                    name + ": the rest tool feeds " + airMm + " mm through air, of its " + rest.fullPlanLengthMm()
+                            + " mm plan");
         }
         for (String post : POSTS) {
             StringWriter w = new StringWriter();
