@@ -286,17 +286,48 @@ public final class PocketService {
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
         TaskOutcome o = planAndWrite(s, outFile, progress);
-        if (s.cutFraction() >= org.fresa.pocket.PocketTechnology.LEAST_CUT
-                || s.strategy().adaptive()) {
+        Optional<String> raised = cutRaised(s);
+        if (raised.isEmpty()) {
             return o;
         }
         List<String> problems = new ArrayList<>();
-        problems.add("--cut " + org.fresa.model.ExactDecimal.of(s.cutFraction()) + " is planned as "
+        problems.add(raised.get());
+        problems.addAll(o.problems());
+        return new TaskOutcome(o.exitStatus(), problems, o.summary(), o.files());
+    }
+
+    /**
+     * The warning for a stepover asked below the least the planners step, which they raise to it;
+     * empty when the asked one is planned.
+     */
+    public static Optional<String> cutRaised(PocketSettings s) {
+        if (s.cutFraction() >= org.fresa.pocket.PocketTechnology.LEAST_CUT
+                || s.strategy().adaptive()) {
+            return Optional.empty();
+        }
+        return Optional.of("warning: --cut " + org.fresa.model.ExactDecimal.of(s.cutFraction()) + " is planned as "
                 + org.fresa.model.ExactDecimal.of(org.fresa.pocket.PocketTechnology.LEAST_CUT)
                 + ": the passes step at least half the tool's diameter (the thesis's least stepover, which the"
                 + " planners keep)");
-        problems.addAll(o.problems());
-        return new TaskOutcome(o.exitStatus(), problems, o.summary(), o.files());
+    }
+
+    /**
+     * The warnings of the thesis's own plan of a pocket without islands: a tool that does not
+     * pass every bottleneck, and the wall the printed program cuts where the thesis snaps a
+     * junction ({@link #thesisGouge}).
+     */
+    public static List<String> planWarnings(PocketSettings s, PocketPlan plan) throws CamInputException, IOException {
+        List<String> problems = new ArrayList<>();
+        Recognition.Result rec = plan.recognition();
+        double a = s.finishFraction() * s.toolDiameterMm();
+        if (rec.maxToolDiameterMm() < s.toolDiameterMm() + a + 0.1) {
+            problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
+                    + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
+        }
+        if (s.post().thesis()) {
+            thesisGouge(readContour(s)).ifPresent(problems::add);
+        }
+        return problems;
     }
 
     private static TaskOutcome planAndWrite(PocketSettings s, Path outFile, ProgressMonitor progress)
@@ -325,14 +356,7 @@ public final class PocketService {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }
         Recognition.Result rec = plan.recognition();
-        double a = s.finishFraction() * s.toolDiameterMm();
-        if (rec.maxToolDiameterMm() < s.toolDiameterMm() + a + 0.1) {
-            problems.add("warning: the tool does not pass every bottleneck (DIAMETRO MAXIMO "
-                    + String.format(Locale.ROOT, "%.3f", rec.maxToolDiameterMm()) + " mm)");
-        }
-        if (thesis) {
-            thesisGouge(readContour(s)).ifPresent(problems::add);
-        }
+        problems.addAll(planWarnings(s, plan));
         Optional<TaskOutcome> refused = checkAndWrite(s, outFile, nc);
         if (refused.isPresent()) {
             return refused.get();

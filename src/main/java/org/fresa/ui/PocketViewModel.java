@@ -517,6 +517,17 @@ public final class PocketViewModel {
      * planner sees the block the program check refuses (Job > Run refuses such settings outright).
      */
     public static Outcome outcome(PocketSettings checked) {
+        Outcome o = planned(checked);
+        Optional<String> raised = PocketService.cutRaised(checked);
+        if (o.result().isEmpty() || raised.isEmpty()) {
+            return o;
+        }
+        Result r = o.result().get();
+        return new Outcome(
+                Optional.of(new Result(r.scene(), raised.get() + "\n" + r.report(), r.nc(), r.refusal())), o.error());
+    }
+
+    private static Outcome planned(PocketSettings checked) {
         PocketSettings settings = checked.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE && !checked.centreCutting()
                 ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true)
                 : checked;
@@ -582,8 +593,14 @@ public final class PocketViewModel {
                     settings.contour().getFileName().toString(),
                     settings.climb(),
                     settings.entryRule());
+            // the warnings fresa pocket and Job > Run give for this plan, above its sizes
+            StringBuilder told = new StringBuilder();
+            for (String w : PocketService.planWarnings(settings, plan)) {
+                told.append(w).append('\n');
+            }
             return new Outcome(
-                    Optional.of(Result.checked(scene(plan, settings), report(plan), nc, checked)), Optional.empty());
+                    Optional.of(Result.checked(scene(plan, settings), told + report(plan), nc, checked)),
+                    Optional.empty());
         } catch (CamInputException e) {
             return new Outcome(Optional.empty(), Optional.of(plannerWords(e)));
         } catch (java.nio.file.NoSuchFileException e) {

@@ -340,4 +340,59 @@ class PocketViewModelTest {
         again.load(org.fresa.job.JobXml.read(file));
         assertEquals("2.5", again.restTool());
     }
+    /**
+     * The tab's report says what fresa pocket and Job > Run say of the same settings: a stepover
+     * raised to half the tool, a tool that does not pass every bottleneck, the wall the thesis's
+     * printed program cuts.
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource({
+        "cavity01.dad, 10, 0.3, LINUXCNC, OFFSET",
+        "cavity01.dad, 10, 0.3, LINUXCNC, ZIGZAG",
+        "cavity02.dad, 10, 0.6, SINUMERIK_7M_COMPAT, OFFSET",
+        "cavity03.dad, 14, 0.6, SINUMERIK_7M, OFFSET"
+    })
+    void theReportSaysTheWarningsTheProgramIsWrittenWith(
+            String contour,
+            double toolMm,
+            double cut,
+            org.fresa.post.PocketPost post,
+            PocketStrategy.Kind kind,
+            @org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        PocketStrategy strategy = kind == PocketStrategy.Kind.OFFSET
+                ? PocketStrategy.DEFAULT
+                : new PocketStrategy(kind, 0, 0, PocketStrategy.Order.INSIDE_OUT, 0);
+        PocketSettings s = new PocketSettings(
+                Path.of("samples/pocket/" + contour),
+                toolMm,
+                cut,
+                0.1,
+                30,
+                27,
+                5,
+                2750,
+                280,
+                90,
+                post,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                strategy);
+        org.fresa.job.TaskOutcome run =
+                org.fresa.job.PocketService.run(s, dir.resolve("p.nc"), org.fresa.job.ProgressMonitor.NONE);
+        assertEquals(0, run.exitStatus(), run.problems().toString());
+        assertTrue(
+                run.problems().stream().anyMatch(w -> w.startsWith("warning: ")),
+                "these settings are written with a warning: " + run.problems());
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(s);
+        m.compute();
+        String report = m.result().orElseThrow().report();
+        for (String w : run.problems()) {
+            assertTrue(report.contains(w), "the tab does not say: " + w + "\n" + report);
+        }
+    }
 }
