@@ -1033,7 +1033,7 @@ final class SlotMilling {
         return t.section(label, new Vec3(outside, 0, h.clearanceZ()), b.moves());
     }
 
-    /** A T-slot mill fits the cross bar: no wider than the bar, no narrower than the stem, its edge as deep as the bar. */
+    /** A T-slot mill fits the cross bar: as wide as the bar, its edge as deep as the bar. */
     private static void checkTSlotMill(org.fresa.stepnc.Profile.Tee tee, Tool tool, Tooling t, Tolerance tol) {
         if (t.diameterMm() > tee.crossBarWidthMm() + tol.linear()) {
             throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is wider than the"
@@ -1042,6 +1042,15 @@ final class SlotMilling {
         if (t.diameterMm() < tee.widthMm() - tol.linear()) {
             throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
                     + " the stem (" + mm(tee.widthMm()) + " mm) it must pass");
+        }
+        // one pass along the middle: a narrower cutter would have to move aside in the stem, as far
+        // as its neck lets it, and ISO 14649-111 gives a T-slot mill no neck
+        if (t.diameterMm() < tee.crossBarWidthMm() - tol.linear()) {
+            throw new UnsupportedOperationException("the T-slot mill (" + mm(t.diameterMm()) + " mm) is narrower than"
+                    + " the cross bar (" + mm(tee.crossBarWidthMm()) + " mm): along the middle it leaves "
+                    + mm((tee.crossBarWidthMm() - t.diameterMm()) / 2) + " mm of the bar on each side, and the file"
+                    + " gives no neck to say how far it may move aside in the " + mm(tee.widthMm()) + " mm stem; a"
+                    + " T-slot mill as wide as the bar mills it");
         }
         double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
         if (edge < tee.crossBarDepthMm() - tol.linear()) {

@@ -359,6 +359,16 @@ class SlotProfilesTest {
         // the stem is still milled (its flat ends keep the cutter within the slot)
         assertEquals(1, p.planned(), p.problems().toString());
 
+        // a T-slot mill narrower than the cross bar would leave the bar's sides
+        ToolpathPlanner.Plan narrow = planText(part.replace(
+                "#52= MILLING_TOOL_DIMENSION(20.000,$,$,6.0,0.0,$,$);",
+                "#52= MILLING_TOOL_DIMENSION(16.000,$,$,6.0,0.0,$,$);"));
+        assertTrue(
+                problemOf(narrow, "WS TEE CROSS BAR")
+                        .contains("the T-slot mill (16 mm) is narrower than the cross bar (20 mm): along the middle it"
+                                + " leaves 2 mm of the bar on each side"),
+                narrow.problems().toString());
+
         // a cutter wider than the slot
         ToolpathPlanner.Plan wide = planText(
                 part.replace("#36= SQUARE_U_PROFILE($,20.000,$,$,$,$);", "#36= SQUARE_U_PROFILE($,8.000,$,$,$,$);"));
