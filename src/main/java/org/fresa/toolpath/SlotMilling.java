@@ -33,7 +33,9 @@ import org.fresa.stepnc.Tool;
  * <li>tee: with an end mill, the stem (a square-U of the stem width, to the full depth); with a
  * T_SLOT_MILL, the cross bar in one pass along the middle at the floor, the cutter entering and
  * leaving past an open end, where it cuts air;
- * <li>dovetail, and profiles or ends the planner cannot follow: refused with the reason.
+ * <li>dovetail (a square-U whose sides lean in towards the top at one angle): with an end mill,
+ * the neck; with a DOVETAIL_MILL, the undercut sides ({@link DovetailSlot});
+ * <li>profiles or ends the planner cannot follow: refused with the reason.
  * </ul>
  * Ends, read as the profile turned about the vertical through the path's end: radiused ends are
  * half circles of each layer's width about the path's ends; flat ends are square to the path,
@@ -131,10 +133,25 @@ final class SlotMilling {
         double r = t.radiusMm();
         double d = t.diameterMm();
         if (shape.entity().contains("DOVETAIL")) {
-            throw new UnsupportedOperationException(
-                    tool.body().contains("DOVETAIL")
-                            ? "dovetail slots are not machined: ISO 14649-10 gives the dovetail no profile the planner can read"
-                            : "a dovetail slot needs a DOVETAIL_MILL; the tool is a " + tool.body());
+            throw new UnsupportedOperationException("a " + shape.entity() + " is no ISO 14649-10 profile: a dovetail"
+                    + " is a SQUARE_U_PROFILE whose sides meet its base at one angle under 90 deg");
+        }
+        if (shape instanceof org.fresa.stepnc.Profile.U u
+                && shape.entity().equals("SQUARE_U_PROFILE")
+                && DovetailSlot.is(u)) {
+            DovetailSlot.Shape dovetail = DovetailSlot.shape(u, depth);
+            if (tool.body().equals("DOVETAIL_MILL")) {
+                if (!(course instanceof Course.Straight straightCourse)) {
+                    throw new UnsupportedOperationException("a DOVETAIL_MILL's sides are milled along a LINEAR_PATH"
+                            + " only: it enters from an open end and goes along each side");
+                }
+                return DovetailSlot.sides(label, straightCourse.lengthMm(), dovetail, ends, tool, h, t, tol);
+            }
+            if (ends.stream().anyMatch(e -> e.type() == EndType.WOODRUFF)) {
+                throw new UnsupportedOperationException("woodruff ends on a dovetail are not machined");
+            }
+            double neck = DovetailSlot.neckHalfWidth(dovetail, tool.body(), label, d, problems);
+            return straight(label, course, neck, ends, h, t, tol, pocket);
         }
         if (shape instanceof org.fresa.stepnc.Profile.U u && shape.entity().equals("SQUARE_U_PROFILE")) {
             double w = checkedWidth(u.widthMm(), d, tol);

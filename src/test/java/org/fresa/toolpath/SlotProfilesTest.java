@@ -309,11 +309,11 @@ class SlotProfilesTest {
         assertEquals(0, r.exitStatus(), () -> "rs274 rejected the program: " + Rs274.log(r));
     }
 
-    private static ToolpathPlanner.Plan planText(String text) throws Exception {
+    static ToolpathPlanner.Plan planText(String text) throws Exception {
         return ToolpathPlanner.plan(StepNcReader.read(new StringReader(text), "slots.stp"), Tolerance.DEFAULT);
     }
 
-    private static String problemOf(ToolpathPlanner.Plan p, String workingstep) {
+    static String problemOf(ToolpathPlanner.Plan p, String workingstep) {
         return p.problems().stream()
                 .filter(x -> x.startsWith("workingstep '" + workingstep + "' (#"))
                 .findFirst()
@@ -338,7 +338,8 @@ class SlotProfilesTest {
         ToolpathPlanner.Plan p = planText(text);
         assertTrue(
                 problemOf(p, "WS ROUND U BALL")
-                        .endsWith("a dovetail slot needs a DOVETAIL_MILL; the tool is a BALL_ENDMILL"),
+                        .endsWith("a DOVETAIL_PROFILE is no ISO 14649-10 profile: a dovetail is a SQUARE_U_PROFILE"
+                                + " whose sides meet its base at one angle under 90 deg"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS ROUND U FLAT")
