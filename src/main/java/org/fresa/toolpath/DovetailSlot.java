@@ -33,8 +33,10 @@ final class DovetailSlot {
     static boolean is(Profile.U u) {
         OptionalDouble a = u.firstAngleDeg();
         OptionalDouble b = u.secondAngleDeg();
+        // pi / 2 is a right angle a writer put in radians: refused as such, never taken for a dovetail
         return a.isPresent()
                 && b.isPresent()
+                && Math.abs(a.getAsDouble() - Math.PI / 2) > 1e-4
                 && a.getAsDouble() > 0
                 && a.getAsDouble() < 90 - SlotMilling.SQUARE_TOLERANCE_DEG
                 && Math.abs(a.getAsDouble() - b.getAsDouble()) <= SlotMilling.SQUARE_TOLERANCE_DEG;

@@ -323,6 +323,9 @@ public final class ToolpathPlanner {
             edgeReaches(given, tool, op, h.topZ(), tol);
             return Optional.of(viaSecurityPlane(Placing.place(given, place), ws.securityPlane()));
         }
+        if (op.type().isMilling()) {
+            MillingBodies.check(tool, f);
+        }
         if (!f.bosses().isEmpty() && !BossPockets.LEAVES_BOSSES.contains(f.type())) {
             // cutting it as if it had none would mill its bosses away
             throw new UnsupportedOperationException(
