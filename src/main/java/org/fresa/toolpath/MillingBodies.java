@@ -67,6 +67,22 @@ final class MillingBodies {
                 + "; an ENDMILL, FACEMILL, BALL_ENDMILL or BULLNOSE_ENDMILL mills it");
     }
 
+    /** Bodies that cut on their side only, or are narrower above their cutting part: they cannot go down a hole. */
+    static final Set<String> SIDE_CUTTERS =
+            Set.of("SIDE_MILL", "T_SLOT_MILL", "DOVETAIL_MILL", "THREAD_MILL", "FACEMILL");
+
+    /**
+     * Refuses, for a drilling-type operation, a body that cannot go down its axis into a hole.
+     *
+     * @throws UnsupportedOperationException naming the body
+     */
+    static void checkDrilling(Tool tool, String operation) {
+        if (SIDE_CUTTERS.contains(tool.body())) {
+            throw new UnsupportedOperationException("a " + tool.body() + " does not go down a hole along its axis: a "
+                    + operation + " takes a drill, reamer, boring tool, tap, countersink or counterbore");
+        }
+    }
+
     private static String what(Feature f) {
         return f.type().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
     }

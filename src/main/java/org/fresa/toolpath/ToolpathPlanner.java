@@ -325,6 +325,8 @@ public final class ToolpathPlanner {
         }
         if (op.type().isMilling()) {
             MillingBodies.check(tool, f);
+        } else if (op.type().isDrillingType()) {
+            MillingBodies.checkDrilling(tool, op.entity());
         }
         if (!f.bosses().isEmpty() && !BossPockets.LEAVES_BOSSES.contains(f.type())) {
             // cutting it as if it had none would mill its bosses away

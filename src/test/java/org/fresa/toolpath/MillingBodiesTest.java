@@ -66,4 +66,23 @@ class MillingBodiesTest {
                     p.problems().toString());
         }
     }
+
+    @ParameterizedTest
+    @CsvSource({"SIDE_MILL", "T_SLOT_MILL", "DOVETAIL_MILL", "THREAD_MILL", "FACEMILL"})
+    void aDrillingOperationWithABodyThatCannotGoDownAHoleIsRefused(String body) throws Exception {
+        java.nio.file.Path holes = java.nio.file.Path.of("src/test/resources/org/fresa/toolpath/holes.stp");
+        String drill = "#31= TWIST_DRILL(#32,2,.RIGHT.,.F.,$);";
+        String part = Files.readString(holes);
+        assertTrue(part.contains(drill));
+        ToolpathPlanner.Plan p =
+                SlotProfilesTest.planText(part.replace(drill, "#31= " + body + "(#32,2,.RIGHT.,.F.,$);"));
+        for (String ws : new String[] {"WS THROUGH NO DEPTH", "WS BLIND"}) {
+            assertTrue(
+                    SlotProfilesTest.problemOf(p, ws)
+                            .contains("a " + body + " does not go down a hole along its axis: a DRILLING takes a"
+                                    + " drill, reamer, boring tool, tap, countersink or counterbore"),
+                    ws + ": " + p.problems());
+        }
+        assertEquals(2, p.planned(), p.problems().toString());
+    }
 }
