@@ -148,31 +148,42 @@ final class DovetailSlot {
      * lean, and its cutting edge, tapering in, still cutting at the top.
      */
     static void check(Shape s, Tool tool, Tooling t, Tolerance tol) {
-        double r = t.radiusMm();
         if (t.diameterMm() > s.widthMm() + tol.linear()) {
             throw new UnsupportedOperationException("the dovetail mill (" + mm(t.diameterMm()) + " mm) is wider than"
                     + " the dovetail's base (" + mm(s.widthMm()) + " mm)");
         }
+        checkFlank(s, "dovetail", "dovetail's sides", tool, t, tol);
+    }
+
+    /**
+     * A dovetail mill's flank leans as a wall at this angle to its floor leans, and its cutting
+     * edge, tapering in, still cuts at the top: the wall is cut as drawn in one pass.
+     *
+     * @param feature the feature in the messages ("dovetail", "step")
+     * @param wall what leans in the messages ("dovetail's sides", "step's wall")
+     */
+    static void checkFlank(Shape s, String feature, String wall, Tool tool, Tooling t, Tolerance tol) {
+        double r = t.radiusMm();
         double side = 90 - s.angleDeg();
         double flank = Math.abs(tool.circumferenceAngle()
                 .orElseThrow(() -> new UnsupportedOperationException("the DOVETAIL_MILL gives no"
-                        + " tool_circumference_angle: its flank must lean as the dovetail's sides, " + mm(side)
+                        + " tool_circumference_angle: its flank must lean as the " + wall + ", " + mm(side)
                         + " deg from the axis")));
         double off = s.depthMm() * Math.abs(Math.tan(Math.toRadians(flank)) - Math.tan(Math.toRadians(side)));
         if (off > tol.linear()) {
             throw new UnsupportedOperationException("the dovetail mill's flank leans " + mm(flank) + " deg from its"
-                    + " axis, the dovetail's sides " + mm(side) + " deg (" + mm(s.angleDeg()) + " deg to the base):"
-                    + " over the " + mm(s.depthMm()) + " mm depth it would leave or cut " + mm(off) + " mm of side");
+                    + " axis, the " + wall + " " + mm(side) + " deg (" + mm(s.angleDeg()) + " deg to the base):"
+                    + " over the " + mm(s.depthMm()) + " mm depth it would leave or cut " + mm(off) + " mm of it");
         }
         double atTop = r - s.undercutMm();
         if (!(atTop > tol.linear())) {
             throw new UnsupportedOperationException("the dovetail mill (" + mm(t.diameterMm()) + " mm) tapers to"
-                    + " nothing below the dovetail's top: it would leave the sides' upper part");
+                    + " nothing below the " + feature + "'s top: it would leave the upper part of the " + wall);
         }
         double edge = tool.cuttingEdgeLengthMm().orElse(Double.POSITIVE_INFINITY);
         if (edge < s.depthMm() - tol.linear()) {
             throw new UnsupportedOperationException("the dovetail mill's cutting edge (" + mm(edge) + " mm) is"
-                    + " shorter than the dovetail (" + mm(s.depthMm()) + " mm deep)");
+                    + " shorter than the " + feature + " (" + mm(s.depthMm()) + " mm deep)");
         }
     }
 

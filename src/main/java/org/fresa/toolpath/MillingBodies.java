@@ -58,6 +58,14 @@ final class MillingBodies {
                 && DovetailSlot.is(u)) {
             return;
         }
+        if (body.equals("DOVETAIL_MILL")
+                && f.type() == Feature.FeatureType.STEP
+                && f.profile().orElse(null) instanceof org.fresa.stepnc.Profile.Vee v
+                && v.profileAngleDeg() > 0
+                && v.profileAngleDeg() < 90 - SlotMilling.SQUARE_TOLERANCE_DEG
+                && Math.abs(v.profileAngleDeg() - Math.PI / 2) > 1e-6) {
+            return;
+        }
         String only = switch (body) {
             case "T_SLOT_MILL" -> ": it mills a tee slot's cross bar only, its neck being narrower than its disc";
             case "DOVETAIL_MILL" -> ": it mills a dovetail's undercut sides only, being widest at its tip";

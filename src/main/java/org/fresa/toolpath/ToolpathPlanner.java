@@ -490,26 +490,28 @@ public final class ToolpathPlanner {
             case STEP -> {
                 StepShape st = stepShape(f, holes.program(), tool, tol);
                 place = place.times(st.frame());
-                if (!f.bosses().isEmpty() && st.sloped()) {
-                    throw new UnsupportedOperationException(
-                            "steps with a sloped wall and bosses are not supported yet: the region round the"
-                                    + " bosses would need to follow the wall in each layer");
+                if (!f.bosses().isEmpty() && (st.sloped() || st.overhangs())) {
+                    throw new UnsupportedOperationException("steps with a " + (st.sloped() ? "sloped" : "overhanging")
+                            + " wall and bosses are not supported yet: the region round the bosses would need to"
+                            + " follow the wall in each layer");
                 }
-                local = !f.bosses().isEmpty()
-                        ? withBosses(
-                                label,
-                                "step",
-                                BossPockets.stepRegion(st, tooling),
-                                f,
-                                place,
-                                op,
-                                h,
-                                tooling,
-                                axial,
-                                tol,
-                                holes,
-                                problems)
-                        : step(label, st, h, tooling, op, axial, tol, problems);
+                local = tool.body().equals("DOVETAIL_MILL")
+                        ? DovetailStep.underWall(label, st, tool, h, tooling, tol)
+                        : !f.bosses().isEmpty()
+                                ? withBosses(
+                                        label,
+                                        "step",
+                                        BossPockets.stepRegion(st, tooling),
+                                        f,
+                                        place,
+                                        op,
+                                        h,
+                                        tooling,
+                                        axial,
+                                        tol,
+                                        holes,
+                                        problems)
+                                : step(label, st, h, tooling, op, axial, tol, problems);
             }
             case GENERAL_OUTSIDE_PROFILE -> {
                 org.fresa.stepnc.Profile sp = f.profile()
@@ -1129,6 +1131,12 @@ public final class ToolpathPlanner {
             List<String> problems) {
         double layer = axial;
         double footPerMm = 0;
+        if (st.overhangs()) {
+            double depth = h.topZ() - h.bottomZ();
+            problems.add("workingstep '" + label + "': the wall overhangs the floor at " + mm(st.wallAngleDeg())
+                    + " deg: the step is milled to the wall's top edge, and the " + mm(st.undercutMm(depth))
+                    + " mm undercut under it needs a DOVETAIL_MILL");
+        }
         if (st.sloped()) {
             layer = axial > 0 ? Math.min(axial, SlotMilling.SHAPED_LAYER_MM) : SlotMilling.SHAPED_LAYER_MM;
             footPerMm = st.footMm(1);
@@ -1234,6 +1242,16 @@ public final class ToolpathPlanner {
             return wallAngleDeg > 90;
         }
 
+        /** Whether the wall overhangs its floor (profile_angle under 90 deg): a half dovetail. */
+        boolean overhangs() {
+            return wallAngleDeg < 90;
+        }
+
+        /** How far (mm, towards +y, under the material) the overhanging wall's foot lies from its top edge. */
+        double undercutMm(double depthMm) {
+            return overhangs() ? depthMm / Math.tan(Math.toRadians(wallAngleDeg)) : 0;
+        }
+
         /**
          * How far (mm, towards -y) the wall's foot lies from the open boundary at the step's top
          * for a step this deep: 0 for a vertical wall.
@@ -1269,10 +1287,9 @@ public final class ToolpathPlanner {
             // theirs: a wall 1.57 deg from its floor is no step
             boolean radiansRight = Math.abs(v.profileAngleDeg() - Math.PI / 2) < 1e-6;
             if (!radiansRight && Math.abs(v.profileAngleDeg() - 90) > SlotMilling.SQUARE_TOLERANCE_DEG) {
-                if (!(v.profileAngleDeg() > 90 && v.profileAngleDeg() < 180)) {
+                if (!(v.profileAngleDeg() > 0 && v.profileAngleDeg() < 180)) {
                     throw new UnsupportedOperationException("the step's wall stands at " + mm(v.profileAngleDeg())
-                            + " deg to its floor: it overhangs the floor, which a cutter along the feature's axis"
-                            + " cannot reach under; only walls at 90 deg or sloping back (up to 180 deg) are milled");
+                            + " deg to its floor: only walls between 0 and 180 deg to it are milled");
                 }
                 wallAngle = v.profileAngleDeg();
             }
@@ -1280,8 +1297,9 @@ public final class ToolpathPlanner {
             double rho = v.profileRadiusMm().orElse(0);
             double edge = tool.edgeRadiusMm().orElse(0);
             if (rho > tol.linear() && wallAngle != 90) {
-                throw new UnsupportedOperationException("the step's sloped wall meets its floor in a " + mm(rho)
-                        + " mm radius: only a sloped wall with a sharp foot is milled");
+                throw new UnsupportedOperationException(
+                        "the step's wall at " + mm(wallAngle) + " deg meets its floor in a " + mm(rho)
+                                + " mm radius: only a sloped or overhanging wall with a sharp foot is milled");
             }
             if (rho > tol.linear() && Math.abs(rho - edge) > tol.linear()) {
                 throw new UnsupportedOperationException("the step's wall meets its floor in a " + mm(rho)

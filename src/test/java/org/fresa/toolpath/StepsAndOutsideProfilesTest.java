@@ -253,8 +253,8 @@ class StepsAndOutsideProfilesTest {
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS STEP ROUGH")
-                        .endsWith("it overhangs the floor, which a cutter along the feature's axis cannot reach"
-                                + " under; only walls at 90 deg or sloping back (up to 180 deg) are milled"),
+                        .contains("the step's wall_boundary gives profile_angle 60 and tilt_angle 90: a wall at 60 deg"
+                                + " to its floor meets the block's top at 60 or 120 deg"),
                 p.problems().toString());
         assertTrue(
                 problemOf(p, "WS STEP CLOSED START")
