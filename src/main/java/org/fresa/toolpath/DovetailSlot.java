@@ -105,27 +105,20 @@ final class DovetailSlot {
             Tolerance tol) {
         double r = t.radiusMm();
         check(s, tool, t, tol);
-        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
-        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
-        boolean startOpen = start != null && start.type() == EndType.OPEN;
-        boolean endOpen = end != null && end.type() == EndType.OPEN;
-        if (!startOpen && !endOpen) {
-            throw new UnsupportedOperationException("a DOVETAIL_MILL enters the dovetail from an open end, being"
-                    + " wider at its tip than the neck above it; the slot has none");
-        }
-        double sign = startOpen ? -1 : 1;
-        SlotEnd far = startOpen ? end : start;
-        double half = lengthMm / 2;
-        double outside = sign * (half + r + SlotMilling.OPEN_END_CLEARANCE_MM);
-        double reach;
-        if (far != null && far.type() == EndType.OPEN) {
-            reach = -outside;
-        } else if (far == null || far.type() == EndType.FLAT && noCorners(far)) {
-            reach = -sign * (half - r);
-        } else {
+        SlotMilling.FromAnOpenEnd run = SlotMilling.FromAnOpenEnd.of(
+                lengthMm,
+                ends,
+                r,
+                "a DOVETAIL_MILL enters the dovetail from an open end, being wider at its tip than the neck above"
+                        + " it; the slot has none");
+        SlotEnd far = run.far();
+        boolean farFlat = far == null || far.type() == EndType.FLAT && noCorners(far);
+        if (!(far != null && far.type() == EndType.OPEN) && !farFlat) {
             throw new UnsupportedOperationException("a dovetail's far end is milled open or flat without corner"
                     + " radii; this one is " + far.entity());
         }
+        double outside = run.outsideX();
+        double reach = run.reachX();
         double side = s.widthMm() / 2 - r;
         double z = h.bottomZ();
         MoveBuilder b = new MoveBuilder(new Vec3(outside, side, h.clearanceZ()));

@@ -1004,6 +1004,40 @@ final class SlotMilling {
     }
 
     /**
+     * Where a cutter wider than the slot above it runs along a straight slot (x from its middle):
+     * down past an open end, where it cuts air (outsideX), to the far end (reachX: past it when
+     * open, the cutter's radius short of a flat end, a radiused end's centre), and back.
+     */
+    record FromAnOpenEnd(double outsideX, double reachX, SlotEnd far) {
+
+        /**
+         * @throws UnsupportedOperationException with noOpenEnd when neither end is open
+         */
+        static FromAnOpenEnd of(double lengthMm, List<SlotEnd> ends, double radiusMm, String noOpenEnd) {
+            SlotEnd start = ends.isEmpty() ? null : ends.get(0);
+            SlotEnd end = ends.size() < 2 ? start : ends.get(1);
+            boolean startOpen = start != null && start.type() == EndType.OPEN;
+            boolean endOpen = end != null && end.type() == EndType.OPEN;
+            if (!startOpen && !endOpen) {
+                throw new UnsupportedOperationException(noOpenEnd);
+            }
+            double sign = startOpen ? -1 : 1; // the side the cutter enters from
+            SlotEnd far = startOpen ? end : start;
+            double half = lengthMm / 2;
+            double outside = sign * (half + radiusMm + OPEN_END_CLEARANCE_MM);
+            double reach;
+            if (far != null && far.type() == EndType.OPEN) {
+                reach = -outside;
+            } else if (far != null && far.type() == EndType.RADIUSED) {
+                reach = -sign * half;
+            } else {
+                reach = -sign * (half - radiusMm);
+            }
+            return new FromAnOpenEnd(outside, reach, far);
+        }
+    }
+
+    /**
      * The tee's cross bar with a T-slot mill: down past an open end where the cutter cuts air,
      * along the middle at the floor to the other end (past it when open, the cutter's radius short
      * of a flat end, to a radiused end's centre), and back out the same way.
@@ -1017,28 +1051,11 @@ final class SlotMilling {
             Heights h,
             Tooling t,
             Tolerance tol) {
-        double r = t.radiusMm();
         checkTSlotMill(tee, tool, t, tol);
-        SlotEnd start = ends.isEmpty() ? null : ends.get(0);
-        SlotEnd end = ends.size() < 2 ? start : ends.get(1);
-        boolean startOpen = start != null && start.type() == EndType.OPEN;
-        boolean endOpen = end != null && end.type() == EndType.OPEN;
-        if (!startOpen && !endOpen) {
-            throw new UnsupportedOperationException(
-                    "a T_SLOT_MILL enters the cross bar from an open end; the slot has" + " none");
-        }
-        double sign = startOpen ? -1 : 1; // the side the cutter enters from
-        SlotEnd far = startOpen ? end : start;
-        double half = length / 2;
-        double outside = sign * (half + r + OPEN_END_CLEARANCE_MM);
-        double reach;
-        if (far != null && far.type() == EndType.OPEN) {
-            reach = -outside;
-        } else if (far != null && far.type() == EndType.RADIUSED) {
-            reach = -sign * half;
-        } else {
-            reach = -sign * (half - r);
-        }
+        FromAnOpenEnd run = FromAnOpenEnd.of(
+                length, ends, t.radiusMm(), "a T_SLOT_MILL enters the cross bar from an open end; the slot has none");
+        double outside = run.outsideX();
+        double reach = run.reachX();
         double z = h.bottomZ();
         MoveBuilder b = new MoveBuilder(new Vec3(outside, 0, h.clearanceZ()));
         b.rapid(new Vec3(outside, 0, h.retractZ()));
