@@ -50,7 +50,38 @@ final class FeatureChecks {
             belowSecurityPlane(f, steps, tol).ifPresent(out::add);
             shortHole(f, steps, tol).ifPresent(out::add);
         }
+        leftHandTools(program).ifPresent(out::add);
         return out;
+    }
+
+    /**
+     * The tools written left-hand cutting (ISO 14649-111 hand_of_cut LEFT), told in one line:
+     * every program turns the spindle clockwise (M3), as a right-hand cutter cuts, and a left-hand
+     * cutter turned so rubs and breaks. Some writers (STEP Modeler) put LEFT on every tool, so the
+     * direction is not taken from the file: the shop checks the tools it loads.
+     */
+    static Optional<String> leftHandTools(StepNcProgram program) {
+        // writers repeat one physical tool as an instance per operation: same name, body and size
+        Map<String, String> left = new LinkedHashMap<>();
+        for (MachiningWorkingstep w : program.workingsteps()) {
+            w.operation().tool().ifPresent(t -> {
+                if (t.handOfCut().filter(h -> h.equalsIgnoreCase("LEFT")).isPresent()) {
+                    String size = t.diameterMm().isPresent()
+                            ? " " + ToolpathPlanner.mm(t.diameterMm().getAsDouble()) + " mm"
+                            : "";
+                    left.putIfAbsent(
+                            t.id() + "|" + t.body() + "|" + size,
+                            "'" + t.id() + "' (" + (t.body().isEmpty() ? "no body" : t.body()) + size + ")");
+                }
+            });
+        }
+        if (left.isEmpty()) {
+            return Optional.empty();
+        }
+        return Optional.of((left.size() == 1 ? "1 tool is" : left.size() + " tools are")
+                + " written left-hand cutting (hand_of_cut LEFT): " + String.join(", ", left.values())
+                + "; the program turns every tool clockwise (M3), for a right-hand cutter, which is what writers that"
+                + " put LEFT on every tool mean: a left-hand cutter loaded would rub and break");
     }
 
     /** A feature along +Z whose bottom is at or above the block's top. */
