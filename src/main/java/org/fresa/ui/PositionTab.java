@@ -52,6 +52,7 @@ final class PositionTab implements ModuleTab {
     private final JSlider replay = new JSlider(0, 0, 0);
     private final JLabel pointLabel = new JLabel(" ");
     private final JTextArea summary = new JTextArea(8, 26);
+    private final WarningsPanel said = new WarningsPanel("position-warnings", 5);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
     private final javax.swing.table.DefaultTableModel errorAxesModel =
@@ -158,7 +159,11 @@ final class PositionTab implements ModuleTab {
         summaryLabel.setLabelFor(summary);
         JPanel summaryPanel = new JPanel(new BorderLayout());
         summaryPanel.add(summaryLabel, BorderLayout.NORTH);
-        summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
+        // the figures, and under them what fresa run says of the trajectory computed
+        JPanel summaryAndSaid = new JPanel(new BorderLayout(0, 4));
+        summaryAndSaid.add(new JScrollPane(summary), BorderLayout.CENTER);
+        summaryAndSaid.add(said, BorderLayout.SOUTH);
+        summaryPanel.add(summaryAndSaid, BorderLayout.CENTER);
         errorAxes.setName("position-error-axes");
         JScrollPane axesScroll = new JScrollPane(errorAxes);
         axesScroll.setPreferredSize(new java.awt.Dimension(300, 7 * errorAxes.getRowHeight() + 28));
@@ -654,7 +659,8 @@ final class PositionTab implements ModuleTab {
                                     solved,
                                     TrajectoryCharts.of(solved),
                                     PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
-                                    planned.spindle());
+                                    planned.spindle(),
+                                    planned.planning());
                         },
                         charted -> {
                             if (generation != ctx.model().generation()) {
@@ -664,13 +670,19 @@ final class PositionTab implements ModuleTab {
                             String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
                             if (!live.lastAsked().equals(asked)) {
                                 // the fields changed while it ran: the live view of the new ones stays
-                                runs.set(new RobotRunModel.Run(solved, name));
+                                runs.set(new RobotRunModel.Run(solved, name, charted.planning()));
                                 return;
                             }
                             vm.setResult(solved, charted.scene(), charted.spindle());
+                            vm.setSaid(org.fresa.job.RobotService.said(charted.planning(), solved));
                             reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
-                            reach.setText(vm.reachLine());
-                            runs.set(new RobotRunModel.Run(solved, name));
+                            // the Summary, not in view after Compute, lists what the run says
+                            int n = vm.said().size();
+                            reach.setText(vm.reachLine()
+                                    + (n == 0
+                                            ? ""
+                                            : " " + n + (n == 1 ? " warning" : " warnings") + " under Summary."));
+                            runs.set(new RobotRunModel.Run(solved, name, charted.planning()));
                             showCharts(charted.charts());
                             showResult();
                         });
@@ -721,7 +733,8 @@ final class PositionTab implements ModuleTab {
             RobotTrajectoryService.Solved solved,
             TrajectoryCharts charts,
             CellScene scene,
-            org.fresa.geom.Transform3 spindle) {}
+            org.fresa.geom.Transform3 spindle,
+            org.fresa.job.RobotService.Planning planning) {}
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
         OffThreadChartPanel p = new OffThreadChartPanel(null, picture);
@@ -800,6 +813,7 @@ final class PositionTab implements ModuleTab {
 
     private void showResult() {
         summary.setText(String.join("\n", vm.summary()));
+        said.show(vm.said());
         errorAxesModel.setRowCount(0);
         for (String[] row : vm.errorRows()) {
             errorAxesModel.addRow(row);
