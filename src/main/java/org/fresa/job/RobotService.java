@@ -180,8 +180,7 @@ public final class RobotService {
             Timing.mark("placement searched");
             if (!a.found()) {
                 // never a partial placement: the planner learns which workingsteps are out of reach
-                List<String> problems = new ArrayList<>(Planning.of(tools, plan).warnings());
-                problems.add(a.sentence());
+                List<String> problems = placementRefused(Planning.of(tools, plan), a);
                 Map<String, Object> summary = new LinkedHashMap<>();
                 summary.put("workingsteps", plan.workingsteps());
                 summary.put("planned_workingsteps", plan.planned());
@@ -250,6 +249,17 @@ public final class RobotService {
             w.addAll(plan.problems());
             return new Planning(w, plan.workingsteps(), plan.planned());
         }
+    }
+
+    /**
+     * What a run says when the placement search ({@code --place auto}, a job's {@code place="auto"})
+     * finds no placement reaching every target, which writes no trajectory: the planning's
+     * warnings, then which workingsteps are out of reach.
+     */
+    public static List<String> placementRefused(Planning p, AutoPlacement.Outcome a) {
+        List<String> out = new ArrayList<>(p.warnings());
+        out.add(a.sentence());
+        return out;
     }
 
     /**

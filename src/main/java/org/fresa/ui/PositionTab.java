@@ -652,18 +652,48 @@ final class PositionTab implements ModuleTab {
                                     new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
                                     stepnc.get().choices(),
                                     progress);
+                            org.fresa.model.Placement robotTable = r.robotTable();
+                            String placed = "";
+                            if (r.placing() == org.fresa.cell.TablePlacing.AUTO) {
+                                // a job that searches its placement is solved where fresa run solves it
+                                org.fresa.job.AutoPlacement.Outcome a = org.fresa.job.AutoPlacement.search(
+                                        file,
+                                        stepnc.get().choices(),
+                                        r.robot(),
+                                        r.tablePiece(),
+                                        new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                        progress);
+                                if (!a.found()) {
+                                    return Charted.refused(
+                                            a.sentence(),
+                                            org.fresa.job.RobotService.placementRefused(planned.planning(), a));
+                                }
+                                robotTable = a.robotTable();
+                                placed = a.sentence();
+                            }
                             RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
-                                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
+                                    planned.request(robotTable, r.tablePiece(), formats), progress);
                             progress.progress(-1, "preparing the plots");
                             return new Charted(
                                     solved,
                                     TrajectoryCharts.of(solved),
                                     PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
                                     planned.spindle(),
-                                    planned.planning());
+                                    planned.planning(),
+                                    placed,
+                                    java.util.List.of());
                         },
                         charted -> {
                             if (generation != ctx.model().generation()) {
+                                return;
+                            }
+                            if (charted.solved() == null) {
+                                // no placement reaches every target: fresa run writes no trajectory either
+                                vm.clearResult();
+                                vm.setSaid(charted.refusal());
+                                reach.setForeground(CellView.UNREACHABLE);
+                                reach.setText(charted.placed());
+                                showResult();
                                 return;
                             }
                             RobotTrajectoryService.Solved solved = charted.solved();
@@ -678,7 +708,8 @@ final class PositionTab implements ModuleTab {
                             reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
                             // the Summary, not in view after Compute, lists what the run says
                             int n = vm.said().size();
-                            reach.setText(vm.reachLine()
+                            reach.setText((charted.placed().isEmpty() ? "" : charted.placed() + ". ")
+                                    + vm.reachLine()
                                     + (n == 0
                                             ? ""
                                             : " " + n + (n == 1 ? " warning" : " warnings") + " under Summary."));
@@ -734,7 +765,15 @@ final class PositionTab implements ModuleTab {
             TrajectoryCharts charts,
             CellScene scene,
             org.fresa.geom.Transform3 spindle,
-            org.fresa.job.RobotService.Planning planning) {}
+            org.fresa.job.RobotService.Planning planning,
+            String placed,
+            java.util.List<String> refusal) {
+
+        /** No trajectory: the placement search (the job's place auto) found no placement reaching every target. */
+        static Charted refused(String why, java.util.List<String> said) {
+            return new Charted(null, null, null, null, null, why, said);
+        }
+    }
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
         OffThreadChartPanel p = new OffThreadChartPanel(null, picture);

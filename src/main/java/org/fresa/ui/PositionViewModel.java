@@ -442,7 +442,10 @@ final class PositionViewModel {
     /** The summary figures, one line each (as in summary.json). */
     List<String> summary() {
         if (solved.isEmpty()) {
-            return List.of("Not computed yet: set the placements and press Compute.");
+            return said.isEmpty()
+                    ? List.of("Not computed yet: set the placements and press Compute.")
+                    : List.of("No trajectory: the placement search found no table placement reaching every target,"
+                            + " as fresa run says below.");
         }
         TrajectorySolver.Result r = solved.get().result();
         double maxPos = 0;
