@@ -691,6 +691,8 @@ final class PositionTab implements ModuleTab {
                                 // no placement reaches every target: fresa run writes no trajectory either
                                 vm.clearResult();
                                 vm.setSaid(charted.refusal());
+                                // and no programs: the Output tab shows none of an earlier Compute
+                                runs.clear();
                                 reach.setForeground(CellView.UNREACHABLE);
                                 reach.setText(charted.placed());
                                 showResult();
@@ -852,6 +854,7 @@ final class PositionTab implements ModuleTab {
 
     private void showResult() {
         summary.setText(String.join("\n", vm.summary()));
+        summary.setCaretPosition(0);
         said.show(vm.said());
         errorAxesModel.setRowCount(0);
         for (String[] row : vm.errorRows()) {

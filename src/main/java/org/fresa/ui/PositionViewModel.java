@@ -444,8 +444,11 @@ final class PositionViewModel {
         if (solved.isEmpty()) {
             return said.isEmpty()
                     ? List.of("Not computed yet: set the placements and press Compute.")
-                    : List.of("No trajectory: the placement search found no table placement reaching every target,"
-                            + " as fresa run says below.");
+                    : List.of(
+                            "No trajectory: no table placement",
+                            "reaches every target (the job's",
+                            "placement is searched); fresa run",
+                            "says why below.");
         }
         TrajectorySolver.Result r = solved.get().result();
         double maxPos = 0;

@@ -84,7 +84,7 @@ final class RobotRunModel {
         fire();
     }
 
-    /** Drops the programs: another document was opened. */
+    /** Drops the programs: another document was opened, or the job's run writes none (no placement found). */
     void clear() {
         last = null;
         written = null;
