@@ -156,7 +156,7 @@ public final class CuttingService {
             throws CamInputException, IOException {
         Result r = compute(s, progress);
         out.create();
-        String file = r.dialect() == CuttingPost.SIEMENS_840D ? "program.mpf" : "program.ngc";
+        String file = programFile(r);
         progress.progress(0.9, "writing and checking the program");
         Path p;
         try {
@@ -167,6 +167,40 @@ public final class CuttingService {
         }
         Path j = out.writeString("summary.json", Json.write(summary(r)));
         return outcome(r, List.of(p, j));
+    }
+
+    /** The name of the program a job's run writes into its folder: {@code program.mpf} for the 840D, else {@code program.ngc}. */
+    public static String programFile(Result r) {
+        return r.dialect() == CuttingPost.SIEMENS_840D ? "program.mpf" : "program.ngc";
+    }
+
+    /**
+     * What a run says of a plan besides the program check, in its words and order: the drawing's
+     * warnings, the plan's (each contour not cut, each open chain), and that there is nothing to
+     * cut when no contour closes.
+     */
+    public static List<String> problems(Result r) {
+        List<String> all = new ArrayList<>(r.drawing().warnings());
+        // every one: a contour not cut that the planner is not told of is a part missing from the sheet
+        all.addAll(r.plan().warnings());
+        if (r.plan().cuts().isEmpty()) {
+            all.add("nothing to cut: the drawing has no closed contour");
+        }
+        return all;
+    }
+
+    /**
+     * Why the program check refuses the result's program under this file name, in the words a
+     * run says it ("program.ngc not written: it fails the program check at line ..."); empty
+     * when the program passes and is written.
+     */
+    public static java.util.Optional<String> refusal(Result r, String file) {
+        try {
+            check(r, file);
+            return java.util.Optional.empty();
+        } catch (ProgramChecks.RefusedProgram e) {
+            return java.util.Optional.of(e.getMessage());
+        }
     }
 
     /**
@@ -281,15 +315,8 @@ public final class CuttingService {
 
     private static TaskOutcome outcome(Result r, List<Path> files) {
         CutPlan p = r.plan();
-        List<String> all = new ArrayList<>(r.drawing().warnings());
-        all.addAll(p.warnings());
-        // every one: a contour not cut that the planner is not told of is a part missing from the sheet
-        List<String> problems = new ArrayList<>(all);
         int status = p.cuts().isEmpty() || !p.uncut().isEmpty() ? 1 : 0;
-        if (p.cuts().isEmpty()) {
-            problems.add("nothing to cut: the drawing has no closed contour");
-        }
-        return new TaskOutcome(status, problems, summary(r), files);
+        return new TaskOutcome(status, problems(r), summary(r), files);
     }
 
     /** A Writer into a StringBuilder without synchronisation. */

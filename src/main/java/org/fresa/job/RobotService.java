@@ -180,9 +180,7 @@ public final class RobotService {
             Timing.mark("placement searched");
             if (!a.found()) {
                 // never a partial placement: the planner learns which workingsteps are out of reach
-                List<String> problems = new ArrayList<>(tools.warnings());
-                problems.addAll(plan.problems());
-                problems.add(a.sentence());
+                List<String> problems = placementRefused(Planning.of(tools, plan), a);
                 Map<String, Object> summary = new LinkedHashMap<>();
                 summary.put("workingsteps", plan.workingsteps());
                 summary.put("planned_workingsteps", plan.planned());
@@ -232,14 +230,62 @@ public final class RobotService {
         } finally {
             out.abandonParallel();
         }
-        List<String> problems = new ArrayList<>(tools.warnings());
-        problems.addAll(plan.problems());
-        problems.addAll(o.problems());
-        Map<String, Object> summary = new LinkedHashMap<>(o.summary());
-        summary.put("workingsteps", plan.workingsteps());
-        summary.put("planned_workingsteps", plan.planned());
-        int status = o.exitStatus() == 0 && plan.planned() == plan.workingsteps() ? 0 : 1;
-        return new TaskOutcome(status, problems, summary, out.written());
+        return outcome(Planning.of(tools, plan), o, out.written());
+    }
+
+    /**
+     * What the planning of a robot job says before a point is solved: the tool frames' warnings
+     * (a spindle not given, a tool length taken from the file) and the planner's problems, in that
+     * order, and how many workingsteps are planned of how many (a run that leaves one out exits 1).
+     */
+    public record Planning(List<String> warnings, int workingsteps, int planned) {
+        public Planning {
+            warnings = List.copyOf(warnings);
+        }
+
+        /** The planning of these tool frames and this plan. */
+        public static Planning of(RobotTools.Frames tools, ToolpathPlanner.Plan plan) {
+            List<String> w = new ArrayList<>(tools.warnings());
+            w.addAll(plan.problems());
+            return new Planning(w, plan.workingsteps(), plan.planned());
+        }
+    }
+
+    /**
+     * What a run says when the placement search ({@code --place auto}, a job's {@code place="auto"})
+     * finds no placement reaching every target, which writes no trajectory: the planning's
+     * warnings, then which workingsteps are out of reach.
+     */
+    public static List<String> placementRefused(Planning p, AutoPlacement.Outcome a) {
+        List<String> out = new ArrayList<>(p.warnings());
+        out.add(a.sentence());
+        return out;
+    }
+
+    /**
+     * A run's outcome from what its planning said and what writing the solved trajectory said
+     * ({@link RobotTrajectoryService#write}): the planning's warnings first, exit 1 when either
+     * fails or a workingstep is not planned. {@link #run} and the Output tab's Save both end here.
+     */
+    public static TaskOutcome outcome(Planning p, TaskOutcome written, List<Path> files) {
+        List<String> problems = new ArrayList<>(p.warnings());
+        problems.addAll(written.problems());
+        Map<String, Object> summary = new LinkedHashMap<>(written.summary());
+        summary.put("workingsteps", p.workingsteps());
+        summary.put("planned_workingsteps", p.planned());
+        int status = written.exitStatus() == 0 && p.planned() == p.workingsteps() ? 0 : 1;
+        return new TaskOutcome(status, problems, summary, files);
+    }
+
+    /**
+     * What a run says of a trajectory solved at the job's placements before its programs are
+     * checked: the planning's warnings, then the unreachable points and the solver's notes
+     * ({@link RobotTrajectoryService#problems}). The Position tab shows them after Compute.
+     */
+    public static List<String> said(Planning p, RobotTrajectoryService.Solved solved) {
+        List<String> out = new ArrayList<>(p.warnings());
+        out.addAll(RobotTrajectoryService.problems(solved, java.util.Optional.empty()));
+        return out;
     }
 
     /**

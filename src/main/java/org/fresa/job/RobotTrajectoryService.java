@@ -254,10 +254,30 @@ public final class RobotTrajectoryService {
         refused.ifPresent(f -> summary.put("program_refused", f.message()));
         summary.putAll(moreSummary);
         out.writeString("summary.json", Json.writePretty(summary));
-        List<String> problems = new ArrayList<>(r.notes());
-        int exit = 0;
+        boolean programsRefused = refused.isPresent() && fmts.stream().anyMatch(RobotPrograms.FORMATS::contains);
+        int exit = programsRefused || r.unreachable() > 0 ? 1 : 0;
+        return new TaskOutcome(exit, problems(solved, refused), summary, out.written());
+    }
+
+    /**
+     * What a run says of a solved trajectory, in its words and order: the points unreachable in
+     * this placement, the solver's notes (each relink, each joint limit or singularity it met),
+     * then the program check's refusal of the robot programs the request's formats name.
+     *
+     * @param refused the program check's first failure ({@link #check}), or empty when it passes
+     *     or was not made
+     */
+    public static List<String> problems(Solved solved, java.util.Optional<org.fresa.check.Failure> refused) {
+        Request req = solved.request();
+        TrajectorySolver.Result r = solved.result();
+        List<String> fmts = req.formats();
+        List<String> problems = new ArrayList<>();
+        if (r.unreachable() > 0) {
+            problems.add(r.unreachable() + " of " + r.points().size() + " points are unreachable for "
+                    + req.robot().name() + " in this placement (status unreachable in trajectory.csv)");
+        }
+        problems.addAll(r.notes());
         if (refused.isPresent() && fmts.stream().anyMatch(RobotPrograms.FORMATS::contains)) {
-            exit = 1;
             problems.add("robot programs ("
                     + String.join(
                             ", ",
@@ -266,14 +286,7 @@ public final class RobotTrajectoryService {
                                     .toList()) + ") not written: the program fails the program check at "
                     + refused.get().message());
         }
-        if (r.unreachable() > 0) {
-            exit = 1;
-            problems.add(
-                    0,
-                    r.unreachable() + " of " + r.points().size() + " points are unreachable for "
-                            + req.robot().name() + " in this placement (status unreachable in trajectory.csv)");
-        }
-        return new TaskOutcome(exit, problems, summary, out.written());
+        return problems;
     }
 
     /** The toolpath as robot targets: positions in the robot base frame, z_e into the material. */

@@ -116,8 +116,7 @@ public final class ToolpathService {
                         lines.add(section, step, rows);
                     });
             problems.addAll(planned.problems());
-            perAxis.forEach((axis, n) -> problems.add(axis + ": " + THREE_AXIS + "; " + n
-                    + (n == 1 ? " workingstep needs" : " workingsteps need") + " another setup"));
+            problems.addAll(anotherSetup(perAxis));
             refusals = new LinkedHashMap<>(planned.refusals());
             workingsteps = planned.workingsteps();
             refusals.putAll(axisRefusals);
@@ -185,10 +184,53 @@ public final class ToolpathService {
             return plan;
         }
         List<String> problems = new ArrayList<>(plan.problems());
-        perAxis.forEach((axis, n) -> problems.add(axis + ": " + THREE_AXIS + "; " + n
-                + (n == 1 ? " workingstep needs" : " workingsteps need") + " another setup"));
+        problems.addAll(anotherSetup(perAxis));
         return new ToolpathPlanner.Plan(
                 new Toolpath(kept), problems, plan.workingsteps(), kept.size(), keptSteps, refusals);
+    }
+
+    /** The problem line of each tool axis a 3-axis program leaves out, with its count of workingsteps. */
+    private static List<String> anotherSetup(Map<String, Integer> perAxis) {
+        List<String> out = new ArrayList<>();
+        perAxis.forEach((axis, n) -> out.add(axis + ": " + THREE_AXIS + "; " + n
+                + (n == 1 ? " workingstep needs" : " workingsteps need") + " another setup"));
+        return out;
+    }
+
+    /**
+     * What {@link #run} says of a program planned whole (the STEP-NC tab's plan), in its words and
+     * order: why there is nothing to machine, or the planner's problems, the workingsteps a 3-axis
+     * program leaves for another setup ({@link #alongMachineZ}), then the program check's refusal
+     * of the program the post writes of the rest; empty when the run says nothing.
+     *
+     * @param file the STEP-NC file, whose name the program carries
+     */
+    public static List<String> problems(Path file, Planned planned, MillingPost postName, PlanningChoices choices)
+            throws IOException {
+        StepNcProgram program = planned.program();
+        java.util.Optional<String> nothing = program.whyNothingToMachine();
+        if (nothing.isPresent()) {
+            return List.of(nothing.get());
+        }
+        ToolpathPlanner.Plan kept = alongMachineZ(planned.plan());
+        List<String> out = new ArrayList<>(kept.problems());
+        if (kept.planned() == 0) {
+            return out;
+        }
+        NcPost post = postName.ncPost();
+        String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        java.io.StringWriter text = new java.io.StringWriter();
+        post.write(kept.toolpath(), name, text);
+        try {
+            ProgramChecks.require(
+                    "program." + post.fileExtension(),
+                    text.toString(),
+                    ProgramChecks.dialect(post.name()),
+                    ProgramChecks.stepnc(program, kept, choices));
+        } catch (ProgramChecks.RefusedProgram e) {
+            out.add(e.getMessage());
+        }
+        return out;
     }
 
     /** Why a 3-axis program leaves a workingstep out. */

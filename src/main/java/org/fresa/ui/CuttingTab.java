@@ -329,14 +329,16 @@ final class CuttingTab extends PlotTab {
                             try {
                                 r = CuttingService.compute(s, progress);
                             } catch (CamInputException | java.io.IOException e) {
-                                return new Shown(null, null, e.getMessage(), null);
+                                return new Shown(null, null, e.getMessage(), null, null);
                             }
                             progress.progress(-1, "preparing the plot and the program text");
+                            CuttingViewModel.Said said = CuttingViewModel.saidOf(r);
                             return new Shown(
                                     r,
                                     CuttingViewModel.sceneOf(r),
-                                    CuttingViewModel.totalsOf(r),
-                                    TextDocuments.of(r.program()));
+                                    CuttingViewModel.totalsOf(r, said),
+                                    TextDocuments.of(r.program()),
+                                    said);
                         },
                         shown -> {
                             if (cutting != vm || generation != ctx.model().generation()) {
@@ -347,9 +349,10 @@ final class CuttingTab extends PlotTab {
                                 say(shown.totals());
                                 return;
                             }
-                            say(" ");
                             listed = s.cutOrder();
-                            vm.setResult(shown.result());
+                            vm.setResult(shown.result(), shown.said());
+                            // a program the check refuses is not written by a run: said beside Cut, as a refusal
+                            say(vm.refusal().orElse(" "));
                             plot.show(shown.scene());
                             program.setDocument(shown.program());
                             program.setCaretPosition(0);
@@ -567,5 +570,6 @@ final class CuttingTab extends PlotTab {
             CuttingService.Result result,
             org.fresa.chart.PlotScene scene,
             String totals,
-            javax.swing.text.Document program) {}
+            javax.swing.text.Document program,
+            CuttingViewModel.Said said) {}
 }

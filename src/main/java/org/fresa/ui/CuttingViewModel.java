@@ -62,12 +62,15 @@ public final class CuttingViewModel {
     // the planner's own order and start points over the automatic ones
     private org.fresa.cutting.CutOrderOverride cutOrder = DEFAULTS.cutOrder();
     private CuttingService.Result result;
+    // what the run says of the result; null until asked
+    private Said said;
 
     /** Takes the job's cutting settings, if it has any (the drawing, kerf, process, leads, ...). */
     public void load(Job job) {
         job.cutting().ifPresent(c -> {
             if (!c.drawing().equals(drawing)) {
                 result = null;
+                said = null;
             }
             drawing = c.drawing();
             kerfMm = ExactDecimal.of(c.kerfMm());
@@ -169,6 +172,7 @@ public final class CuttingViewModel {
     public void setDrawing(Path p) {
         drawing = p;
         result = null;
+        said = null;
         cutOrder = org.fresa.cutting.CutOrderOverride.NONE;
     }
 
@@ -258,6 +262,7 @@ public final class CuttingViewModel {
 
     public void setResult(CuttingService.Result r) {
         result = r;
+        said = null;
     }
 
     public Optional<CuttingService.Result> result() {
@@ -358,29 +363,72 @@ public final class CuttingViewModel {
         return s;
     }
 
-    /** Every warning of a result: the drawing's, then the cut plan's (those of the summary, in order). */
-    static WarningList warningsOf(CuttingService.Result result) {
-        List<String> all = new ArrayList<>();
-        for (Object w : (List<?>) CuttingService.summary(result).get("warnings")) {
-            all.add(String.valueOf(w));
+    /**
+     * What fresa cut and Job > Run say of a result, from {@link CuttingService}: the drawing's
+     * warnings, the cut plan's and "nothing to cut" when no contour closes ({@link
+     * CuttingService#problems}), and the program check's refusal of the program the job writes.
+     */
+    record Said(List<String> problems, Optional<String> refusal) {
+        Said {
+            problems = List.copyOf(problems);
         }
-        return WarningList.of(all);
+
+        /** All of it, the refusal last, as the run says it. */
+        WarningList list() {
+            List<String> all = new ArrayList<>(problems);
+            refusal.ifPresent(all::add);
+            return WarningList.of(all);
+        }
     }
 
-    /** The warnings of the last result shown, all of them. */
+    /** What the run says of a result: posts and checks the whole program, so off the event thread. */
+    static Said saidOf(CuttingService.Result result) {
+        return new Said(
+                CuttingService.problems(result), CuttingService.refusal(result, CuttingService.programFile(result)));
+    }
+
+    /** The result and what the run says of it ({@link #saidOf}), made together off the event thread. */
+    void setResult(CuttingService.Result r, Said s) {
+        result = r;
+        said = s;
+    }
+
+    /** What the run says of the last result shown, all of it. */
     WarningList warnings() {
-        return result == null ? WarningList.none() : warningsOf(result);
+        return result == null ? WarningList.none() : said().list();
+    }
+
+    /**
+     * Why a run of the last result fails (the tab says it beside Cut): the program check's refusal
+     * of its program, or that there is nothing to cut; empty when the program is written.
+     */
+    Optional<String> refusal() {
+        if (result == null) {
+            return Optional.empty();
+        }
+        if (said().refusal().isPresent() || !result.plan().cuts().isEmpty()) {
+            return said().refusal();
+        }
+        return Optional.of(said().problems().get(said().problems().size() - 1));
+    }
+
+    private Said said() {
+        if (said == null) {
+            said = saidOf(result);
+        }
+        return said;
     }
 
     /** Contours, pierces, cut and rapid lengths, the estimated time and the number of warnings. */
     public String totals() {
-        return result == null ? "No drawing cut yet." : totalsOf(result);
+        return result == null ? "No drawing cut yet." : totalsOf(result, said());
     }
 
-    /** The totals of a result (any thread). */
-    public static String totalsOf(CuttingService.Result result) {
+    /** The totals of a result (any thread), counting every line the run says of it, as the list under the plot does. */
+    static String totalsOf(CuttingService.Result result, Said said) {
         var m = CuttingService.summary(result);
-        List<?> warnings = (List<?>) m.get("warnings");
+        List<String> warnings =
+                said.list().all().stream().map(WarningList.Warning::text).toList();
         StringBuilder b = new StringBuilder(String.format(
                 Locale.ROOT,
                 "%d contours (%d outer, %d holes, %d open), %d pierces, cut %.1f mm, rapid %.1f mm (%d detours),"

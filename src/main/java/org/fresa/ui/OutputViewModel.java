@@ -123,11 +123,13 @@ final class OutputViewModel {
                 r.options(),
                 r.tcpByLabel(),
                 r.checkLimits());
-        return RobotTrajectoryService.write(
+        TaskOutcome written = RobotTrajectoryService.write(
                 new RobotTrajectoryService.Solved(
                         req, run.solved().targets(), run.solved().result()),
                 run.programName(),
                 out);
+        // what fresa run says: the planning's warnings with what writing says, in one place
+        return org.fresa.job.RobotService.outcome(run.planning(), written, written.files());
     }
 
     /**

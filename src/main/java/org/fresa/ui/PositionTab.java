@@ -52,6 +52,7 @@ final class PositionTab implements ModuleTab {
     private final JSlider replay = new JSlider(0, 0, 0);
     private final JLabel pointLabel = new JLabel(" ");
     private final JTextArea summary = new JTextArea(8, 26);
+    private final WarningsPanel said = new WarningsPanel("position-warnings", 5);
     private final CellView cell = new CellView(vm);
     private final JTabbedPane results = new JTabbedPane();
     private final javax.swing.table.DefaultTableModel errorAxesModel =
@@ -158,7 +159,11 @@ final class PositionTab implements ModuleTab {
         summaryLabel.setLabelFor(summary);
         JPanel summaryPanel = new JPanel(new BorderLayout());
         summaryPanel.add(summaryLabel, BorderLayout.NORTH);
-        summaryPanel.add(new JScrollPane(summary), BorderLayout.CENTER);
+        // the figures, and under them what fresa run says of the trajectory computed
+        JPanel summaryAndSaid = new JPanel(new BorderLayout(0, 4));
+        summaryAndSaid.add(new JScrollPane(summary), BorderLayout.CENTER);
+        summaryAndSaid.add(said, BorderLayout.SOUTH);
+        summaryPanel.add(summaryAndSaid, BorderLayout.CENTER);
         errorAxes.setName("position-error-axes");
         JScrollPane axesScroll = new JScrollPane(errorAxes);
         axesScroll.setPreferredSize(new java.awt.Dimension(300, 7 * errorAxes.getRowHeight() + 28));
@@ -647,30 +652,70 @@ final class PositionTab implements ModuleTab {
                                     new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
                                     stepnc.get().choices(),
                                     progress);
+                            org.fresa.model.Placement robotTable = r.robotTable();
+                            String placed = "";
+                            if (r.placing() == org.fresa.cell.TablePlacing.AUTO) {
+                                // a job that searches its placement is solved where fresa run solves it
+                                org.fresa.job.AutoPlacement.Outcome a = org.fresa.job.AutoPlacement.search(
+                                        file,
+                                        stepnc.get().choices(),
+                                        r.robot(),
+                                        r.tablePiece(),
+                                        new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                        progress);
+                                if (!a.found()) {
+                                    return Charted.refused(
+                                            a.sentence(),
+                                            org.fresa.job.RobotService.placementRefused(planned.planning(), a));
+                                }
+                                robotTable = a.robotTable();
+                                placed = a.sentence();
+                            }
                             RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
-                                    planned.request(r.robotTable(), r.tablePiece(), formats), progress);
+                                    planned.request(robotTable, r.tablePiece(), formats), progress);
                             progress.progress(-1, "preparing the plots");
                             return new Charted(
                                     solved,
                                     TrajectoryCharts.of(solved),
                                     PositionViewModel.sceneOf(solved, 0, java.util.Optional.of(planned.spindle())),
-                                    planned.spindle());
+                                    planned.spindle(),
+                                    planned.planning(),
+                                    placed,
+                                    java.util.List.of());
                         },
                         charted -> {
                             if (generation != ctx.model().generation()) {
+                                return;
+                            }
+                            if (charted.solved() == null) {
+                                // no placement reaches every target: fresa run writes no trajectory either
+                                vm.clearResult();
+                                vm.setSaid(charted.refusal());
+                                // and no programs: the Output tab shows none of an earlier Compute
+                                runs.clear();
+                                reach.setForeground(CellView.UNREACHABLE);
+                                reach.setText(charted.placed());
+                                showResult();
                                 return;
                             }
                             RobotTrajectoryService.Solved solved = charted.solved();
                             String name = file.getFileName().toString().replaceFirst("\\.[^.]*$", "");
                             if (!live.lastAsked().equals(asked)) {
                                 // the fields changed while it ran: the live view of the new ones stays
-                                runs.set(new RobotRunModel.Run(solved, name));
+                                runs.set(new RobotRunModel.Run(solved, name, charted.planning()));
                                 return;
                             }
                             vm.setResult(solved, charted.scene(), charted.spindle());
+                            vm.setSaid(org.fresa.job.RobotService.said(charted.planning(), solved));
                             reach.setForeground(solved.result().unreachable() > 0 ? CellView.UNREACHABLE : CellView.OK);
-                            reach.setText(vm.reachLine());
-                            runs.set(new RobotRunModel.Run(solved, name));
+                            // the Summary, not in view after Compute, lists what the run says
+                            int n = vm.said().size();
+                            reach.setText((charted.placed().isEmpty() ? "" : charted.placed() + ". ")
+                                    + vm.reachLine()
+                                    + (n == 0
+                                            ? ""
+                                            : " " + n + (n == 1 ? " warning" : " warnings") + " under Summary."));
+                            runs.set(new RobotRunModel.Run(solved, name, charted.planning()));
                             showCharts(charted.charts());
                             showResult();
                         });
@@ -721,7 +766,16 @@ final class PositionTab implements ModuleTab {
             RobotTrajectoryService.Solved solved,
             TrajectoryCharts charts,
             CellScene scene,
-            org.fresa.geom.Transform3 spindle) {}
+            org.fresa.geom.Transform3 spindle,
+            org.fresa.job.RobotService.Planning planning,
+            String placed,
+            java.util.List<String> refusal) {
+
+        /** No trajectory: the placement search (the job's place auto) found no placement reaching every target. */
+        static Charted refused(String why, java.util.List<String> said) {
+            return new Charted(null, null, null, null, null, why, said);
+        }
+    }
 
     private static OffThreadChartPanel chartPanel(java.util.function.Supplier<OffThreadChartPanel.Picture> picture) {
         OffThreadChartPanel p = new OffThreadChartPanel(null, picture);
@@ -800,6 +854,8 @@ final class PositionTab implements ModuleTab {
 
     private void showResult() {
         summary.setText(String.join("\n", vm.summary()));
+        summary.setCaretPosition(0);
+        said.show(vm.said());
         errorAxesModel.setRowCount(0);
         for (String[] row : vm.errorRows()) {
             errorAxesModel.addRow(row);

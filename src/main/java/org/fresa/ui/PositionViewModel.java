@@ -218,6 +218,7 @@ final class PositionViewModel {
      *
      * @param spindle the spindle nose in the flange frame (drawn with the tool)
      * @param robots the robot carrying each workingstep's TCP, one instance per TCP
+     * @param planning what a run says of the planning (the tool frames' warnings, the planner's problems)
      */
     record Planned(
             Robot robot,
@@ -225,7 +226,8 @@ final class PositionViewModel {
             Map<String, Transform3> tcpByLabel,
             org.fresa.check.Limits checkLimits,
             Transform3 spindle,
-            java.util.function.Function<String, Robot> robots) {
+            java.util.function.Function<String, Robot> robots,
+            org.fresa.job.RobotService.Planning planning) {
 
         /** The request {@code fresa robot} makes of this plan at these placements. */
         RobotTrajectoryService.Request request(Placement robotTable, Placement tablePiece, List<String> formats) {
@@ -271,7 +273,14 @@ final class PositionViewModel {
                 TrajectorySolver.Options.DEFAULT,
                 tools.tcpByLabel(),
                 limits);
-        return new Planned(robot, tools.toolpath(), tools.tcpByLabel(), limits, tools.spindle(), any.robotOfLabel());
+        return new Planned(
+                robot,
+                tools.toolpath(),
+                tools.tcpByLabel(),
+                limits,
+                tools.spindle(),
+                any.robotOfLabel(),
+                org.fresa.job.RobotService.Planning.of(tools, plan));
     }
 
     /**
@@ -300,6 +309,20 @@ final class PositionViewModel {
         selected = 0;
         live = false;
         spindle = null;
+        said = List.of();
+    }
+
+    /**
+     * What a run of the job says of the computed trajectory ({@code RobotService.said}: the
+     * planning's warnings, the unreachable points, the solver's notes), set after {@link #setResult}.
+     */
+    void setSaid(List<String> s) {
+        said = List.copyOf(s);
+    }
+
+    /** What the run says of the trajectory shown; none for a live answer, which is no run's. */
+    WarningList said() {
+        return isLive() ? WarningList.none() : WarningList.of(said);
     }
 
     /**
@@ -381,6 +404,7 @@ final class PositionViewModel {
 
     private boolean live;
     private Transform3 spindle;
+    private List<String> said = List.of();
 
     /** A result with its scene at the first point, made by {@link #sceneOf} in the background. */
     void setResult(RobotTrajectoryService.Solved s, CellScene atFirstPoint) {
@@ -392,6 +416,7 @@ final class PositionViewModel {
     /** Forgets the computed trajectory (another document was opened). */
     void clearResult() {
         solved = Optional.empty();
+        said = List.of();
         live = false;
         selected = 0;
         sceneCache = null;
@@ -417,7 +442,13 @@ final class PositionViewModel {
     /** The summary figures, one line each (as in summary.json). */
     List<String> summary() {
         if (solved.isEmpty()) {
-            return List.of("Not computed yet: set the placements and press Compute.");
+            return said.isEmpty()
+                    ? List.of("Not computed yet: set the placements and press Compute.")
+                    : List.of(
+                            "No trajectory: no table placement",
+                            "reaches every target (the job's",
+                            "placement is searched); fresa run",
+                            "says why below.");
         }
         TrajectorySolver.Result r = solved.get().result();
         double maxPos = 0;
@@ -444,6 +475,9 @@ final class PositionViewModel {
         out.add(String.format(Locale.ROOT, "Max position error: %.3g mm", maxPos));
         out.add(String.format(Locale.ROOT, "Max orientation error: %.3g rad", maxRot));
         out.add(String.format(Locale.ROOT, "ik_ms: %.1f", r.ikNanos() / 1e6));
+        if (!said.isEmpty()) {
+            out.add("Warnings: " + said.size() + " (listed below, as fresa run says them)");
+        }
         return out;
     }
 

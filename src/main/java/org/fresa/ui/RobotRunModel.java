@@ -14,8 +14,25 @@ import org.fresa.job.RobotTrajectoryService;
  */
 final class RobotRunModel {
 
-    /** A solved trajectory and the name robot programs get (the STEP-NC file's name). */
-    record Run(RobotTrajectoryService.Solved solved, String programName) {}
+    /**
+     * A solved trajectory, the name robot programs get (the STEP-NC file's name), and what the
+     * run says of its planning, which Save says with what writing says.
+     */
+    record Run(RobotTrajectoryService.Solved solved, String programName, org.fresa.job.RobotService.Planning planning) {
+        Run {
+            Objects.requireNonNull(planning, "planning");
+        }
+
+        /** A trajectory solved from a toolpath without a STEP-NC planning (nothing said of one). */
+        Run(RobotTrajectoryService.Solved solved, String programName) {
+            this(solved, programName, new org.fresa.job.RobotService.Planning(List.of(), 0, 0));
+        }
+
+        /** What the run says of this trajectory before its programs are checked ({@code RobotService.said}). */
+        List<String> said() {
+            return org.fresa.job.RobotService.said(planning, solved);
+        }
+    }
 
     /**
      * The files a run of the job wrote into a folder.
@@ -67,7 +84,7 @@ final class RobotRunModel {
         fire();
     }
 
-    /** Drops the programs: another document was opened. */
+    /** Drops the programs: another document was opened, or the job's run writes none (no placement found). */
     void clear() {
         last = null;
         written = null;

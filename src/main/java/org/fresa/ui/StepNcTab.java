@@ -279,6 +279,7 @@ final class StepNcTab extends PlotTab {
             StepNcProgram program,
             ToolpathPlanner.Plan plan,
             org.fresa.model.CycleTime time,
+            List<String> said,
             DefaultTreeModel tree,
             org.fresa.chart.PlotScene firstPlot,
             List<String> firstDetails) {}
@@ -288,6 +289,7 @@ final class StepNcTab extends PlotTab {
         int generation = ctx.model().generation();
         JobSettings.StepNcSettings settings =
                 StepNcViewModel.settingsFor(ctx.model().job(), file, chosenPaths());
+        org.fresa.job.Job job = ctx.model().job();
         ctx.tasks()
                 .start(
                         "Reading and planning " + file.getFileName(),
@@ -299,14 +301,17 @@ final class StepNcTab extends PlotTab {
                             ToolpathPlanner.Plan plan = planned.plan();
                             // a tree model no tree shows yet belongs to no thread: a big file's tree is built here
                             org.fresa.model.CycleTime time = StepNcViewModel.programTimeOf(plan);
+                            // what the job's run says of it, as the service that runs it says it
+                            List<String> said = StepNcViewModel.problemsOf(job, file, planned, settings);
                             // the first workingstep's plot, from a view model of this thread in the tab's first state
                             StepNcViewModel first = new StepNcViewModel();
                             first.load(p);
-                            first.planned(plan, time);
+                            first.planned(plan, time, said);
                             return new Loaded(
                                     p,
                                     plan,
                                     time,
+                                    said,
                                     new DefaultTreeModel(toSwing(StepNcViewModel.treeOf(p))),
                                     first.plot(),
                                     first.details());
@@ -318,7 +323,7 @@ final class StepNcTab extends PlotTab {
                             }
                             StepNcProgram program = loaded.program();
                             vm.load(program);
-                            vm.planned(loaded.plan(), loaded.time());
+                            vm.planned(loaded.plan(), loaded.time(), loaded.said());
                             problems.show(vm.problems());
                             preparedPlot = loaded.firstPlot();
                             preparedDetails = loaded.firstDetails();

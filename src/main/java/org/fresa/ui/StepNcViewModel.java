@@ -106,6 +106,8 @@ final class StepNcViewModel {
     private Optional<StepNcProgram> program = Optional.empty();
     private Optional<MachiningWorkingstep> selected = Optional.empty();
     private Optional<ToolpathPlanner.Plan> plan = Optional.empty();
+    // what the job's run says of the plan, in its words
+    private List<String> told = List.of();
     /** 0 all layers, else the layer number (1-based) */
     private int layer;
 
@@ -127,14 +129,45 @@ final class StepNcViewModel {
 
     /** The program's toolpaths, planned in the background after {@link #load}. */
     void planned(ToolpathPlanner.Plan p) {
+        planned(p, p.problems());
+    }
+
+    /**
+     * The program's toolpaths with what the job's run says of them ({@link #problemsOf}), both
+     * made in the background after {@link #load}.
+     */
+    void planned(ToolpathPlanner.Plan p, List<String> said) {
         plan = Optional.of(Objects.requireNonNull(p));
+        told = List.copyOf(said);
         layer = 0;
         replay = REPLAY_STEPS;
     }
 
-    /** Every problem of the toolpath planning (workingsteps not planned, parts of them not milled). */
+    /**
+     * Every problem the job's run says of the program: the planner's (workingsteps not planned,
+     * parts of them not milled), and for a toolpath job what {@code fresa toolpath} adds.
+     */
     WarningList problems() {
-        return WarningList.of(plan.map(ToolpathPlanner.Plan::problems).orElse(List.of()));
+        return plan.isEmpty() ? WarningList.of(List.of()) : WarningList.of(told);
+    }
+
+    /**
+     * What a run of the job says of the planned program, from the service that runs it: a job
+     * that writes the 3-axis program ({@code toolpath}) says what {@link
+     * ToolpathService#problems} says (the workingsteps it leaves for another setup, the program
+     * check's refusal); any other (a description, a robot, which keeps every tool axis) the
+     * planner's problems.
+     */
+    static List<String> problemsOf(
+            org.fresa.job.Job job,
+            java.nio.file.Path file,
+            ToolpathService.Planned planned,
+            org.fresa.job.JobSettings.StepNcSettings settings)
+            throws java.io.IOException {
+        if (job.runs().contains(org.fresa.job.JobTask.TOOLPATH)) {
+            return ToolpathService.problems(file, planned, settings.post(), settings.choices());
+        }
+        return planned.plan().problems();
     }
 
     /**
@@ -352,8 +385,8 @@ final class StepNcViewModel {
     }
 
     /** The plan with its cycle time computed off the event thread. */
-    void planned(ToolpathPlanner.Plan p, CycleTime total) {
-        planned(p);
+    void planned(ToolpathPlanner.Plan p, CycleTime total, List<String> said) {
+        planned(p, said);
         programTimeOf = p;
         programTime = Optional.of(total);
     }

@@ -80,6 +80,31 @@ class CuttingTabGuiTest extends WindowGuiTest {
         window.textBox("cutting-totals").requireText(java.util.regex.Pattern.compile("(?s)10 contours.*"));
     }
 
+    /**
+     * A part 20 m from the zero: Job > Run refuses its program (a coordinate word out of range),
+     * and the tab says so beside Cut and in its list, in the run's words.
+     */
+    @Test
+    void aProgramTheRunRefusesIsSaidRefused(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path far = Files.writeString(
+                dir.resolve("far.dxf"),
+                "0\nSECTION\n2\nENTITIES\n"
+                        + "0\nLINE\n8\n0\n10\n20000\n20\n0\n30\n0\n11\n20100\n21\n0\n31\n0\n"
+                        + "0\nLINE\n8\n0\n10\n20100\n20\n0\n30\n0\n11\n20100\n21\n100\n31\n0\n"
+                        + "0\nLINE\n8\n0\n10\n20100\n20\n100\n30\n0\n11\n20000\n21\n100\n31\n0\n"
+                        + "0\nLINE\n8\n0\n10\n20000\n20\n100\n30\n0\n11\n20000\n21\n0\n31\n0\n"
+                        + "0\nENDSEC\n0\nEOF\n");
+        cut(far, "cutting-refused.png");
+        String said = GuiActionRunner.execute(
+                () -> window.label("cutting-status").target().getToolTipText() + " "
+                        + window.label("cutting-status").target().getText());
+        assertTrue(said.contains("program.ngc not written: it fails the program check"), said);
+        assertTrue(
+                java.util.Arrays.stream(window.list("cutting-warnings").contents())
+                        .anyMatch(r -> r.contains("word X19996 out of range")),
+                java.util.Arrays.toString(window.list("cutting-warnings").contents()));
+    }
+
     @Test
     @CorpusCheck
     void aCorpusDrawingIsCutAndShown() {

@@ -240,4 +240,52 @@ class CuttingViewModelTest {
         vm.load(job.withCutting(odd));
         assertEquals(odd, vm.typedSettings().orElseThrow());
     }
+
+    /** A drawing of four lines, a square {@code sideMm} wide at (x, 0), or its first two sides only. */
+    private static String squareDxf(double x, double sideMm, boolean closed) {
+        double[][] p = {{x, 0}, {x + sideMm, 0}, {x + sideMm, sideMm}, {x, sideMm}};
+        StringBuilder b = new StringBuilder("0\nSECTION\n2\nENTITIES\n");
+        for (int i = 0; i < (closed ? 4 : 2); i++) {
+            double[] a = p[i];
+            double[] z = p[(i + 1) % 4];
+            b.append("0\nLINE\n8\n0\n10\n" + a[0] + "\n20\n" + a[1] + "\n30\n0\n11\n" + z[0] + "\n21\n" + z[1]
+                    + "\n31\n0\n");
+        }
+        return b.append("0\nENDSEC\n0\nEOF\n").toString();
+    }
+
+    /**
+     * The tab's warnings say what Job > Run says of the same job: the drawing's and the plan's
+     * warnings, "nothing to cut" for a drawing without a closed contour, and the program check's
+     * refusal of a part 20 m from the zero (a coordinate word out of range).
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"plate", "open", "far"})
+    void theWarningsAreWhatTheRunSays(String drawing, @org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path dxf = drawing.equals("plate")
+                ? Path.of("samples/cutting/plate.dxf").toAbsolutePath()
+                : java.nio.file.Files.writeString(
+                        dir.resolve(drawing + ".dxf"),
+                        squareDxf(drawing.equals("far") ? 20_000 : 0, 100, drawing.equals("far")));
+        // the sample job with this drawing
+        Path file = java.nio.file.Files.writeString(
+                dir.resolve("cut.xml"),
+                java.nio.file.Files.readString(Path.of("samples/jobs/cut-plate.xml"))
+                        .replace("../cutting/plate.dxf", dxf.toString()));
+        org.fresa.job.Job job = org.fresa.job.JobXml.read(file);
+        org.fresa.job.TaskOutcome run = org.fresa.job.CuttingService.run(
+                job.cutting().orElseThrow(), new org.fresa.io.OutputFolder(dir.resolve("out")), ProgressMonitor.NONE);
+        assertTrue(!run.problems().isEmpty(), "the run says something of " + drawing);
+        CuttingViewModel vm = new CuttingViewModel();
+        vm.load(job);
+        vm.setResult(CuttingService.compute(vm.settings(), ProgressMonitor.NONE));
+        java.util.List<String> shown =
+                vm.warnings().all().stream().map(WarningList.Warning::text).toList();
+        for (String p : run.problems()) {
+            assertTrue(shown.contains(p), "the tab does not say: " + p + "\n" + shown);
+        }
+        // the open drawing's nothing to cut and the far part's refused program are said beside Cut
+        assertEquals(
+                !drawing.equals("plate"), vm.refusal().isPresent(), vm.refusal().toString());
+    }
 }

@@ -68,6 +68,121 @@ class PlaceAutomaticallyGuiTest extends WindowGuiTest {
         shoot("position-place-auto.png");
     }
 
+    /**
+     * A job that searches its table placement (place="auto") is computed where fresa run solves it,
+     * at the placement the search finds, not at the fields' (the origin, where the part is in the
+     * robot's base), and the Summary says what the run says.
+     */
+    @Test
+    void aJobThatSearchesItsPlacementIsComputedWhereTheRunSolvesIt(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
+        org.fresa.job.Job job = model.job()
+                .withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))
+                .withRobot(new JobSettings.RobotSettings(
+                        "irb140",
+                        Placement.ORIGIN,
+                        Placement.ORIGIN,
+                        java.util.List.of("csv"),
+                        java.util.Optional.empty(),
+                        java.util.OptionalDouble.empty(),
+                        org.fresa.cell.TablePlacing.AUTO));
+        org.fresa.job.TaskOutcome run = org.fresa.job.RobotService.run(
+                job, new org.fresa.io.OutputFolder(dir), org.fresa.job.ProgressMonitor.NONE);
+        String what = String.valueOf(((java.util.Map<?, ?>) run.summary().get("placement_search")).get("what"));
+        // the placement, without the search's own timing
+        String found = what.substring(0, what.indexOf(" reaches all"));
+        GuiActionRunner.execute(() -> model.setJob(job));
+        waitUntilNoTaskRuns();
+        window.tabbedPane("tabs").selectTab("Position");
+        window.button("position-compute").click();
+        window.tabbedPane("position-results").selectTab("Summary");
+        Pause.pause(
+                new Condition("the trajectory is computed") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(() ->
+                                window.textBox("position-summary").target().getText());
+                        return s.contains("Unreachable: ");
+                    }
+                },
+                Timeout.timeout(120_000));
+        waitUntilNoTaskRuns();
+        String reach = GuiActionRunner.execute(
+                () -> window.label("position-reach").target().getText());
+        org.junit.jupiter.api.Assertions.assertTrue(
+                reach.startsWith(found + " reaches all"), reach + "\nfresa run: " + what);
+        window.textBox("position-summary").requireText(java.util.regex.Pattern.compile("(?s).*Unreachable: 0\n.*"));
+        java.util.List<String> rows =
+                java.util.Arrays.asList(window.list("position-warnings").contents());
+        org.junit.jupiter.api.Assertions.assertEquals(run.problems().size(), rows.size(), rows.toString());
+        for (String p : run.problems()) {
+            org.junit.jupiter.api.Assertions.assertTrue(
+                    rows.stream().anyMatch(r -> r.endsWith(p)), "the Summary does not say: " + p + "\n" + rows);
+        }
+        shoot("position-place-auto-job.png");
+    }
+
+    /**
+     * With a 3 m tool no placement reaches a target: fresa run refuses the job, and Compute shows
+     * no trajectory and says what the run says.
+     */
+    @Test
+    void aJobWhosePlacementSearchFailsIsRefusedAsTheRunRefusesIt(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Path stp = Path.of("samples/stepnc/iso14649-11-example1.stp").toAbsolutePath();
+        org.fresa.job.Job job = model.job()
+                .withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))
+                .withRobot(new JobSettings.RobotSettings(
+                        "irb140",
+                        Placement.ORIGIN,
+                        Placement.ORIGIN,
+                        java.util.List.of("csv"),
+                        java.util.Optional.empty(),
+                        java.util.OptionalDouble.of(3000),
+                        org.fresa.cell.TablePlacing.AUTO));
+        org.fresa.job.TaskOutcome run = org.fresa.job.RobotService.run(
+                job, new org.fresa.io.OutputFolder(dir), org.fresa.job.ProgressMonitor.NONE);
+        org.junit.jupiter.api.Assertions.assertEquals(
+                1, run.exitStatus(), run.problems().toString());
+        GuiActionRunner.execute(() -> model.setJob(job));
+        waitUntilNoTaskRuns();
+        window.tabbedPane("tabs").selectTab("Position");
+        window.button("position-compute").click();
+        window.tabbedPane("position-results").selectTab("Summary");
+        Pause.pause(
+                new Condition("the refusal is shown") {
+                    @Override
+                    public boolean test() {
+                        String s = GuiActionRunner.execute(() ->
+                                window.textBox("position-summary").target().getText());
+                        return s.startsWith("No trajectory");
+                    }
+                },
+                Timeout.timeout(120_000));
+        waitUntilNoTaskRuns();
+        // the same words but the search's own timing
+        java.util.function.UnaryOperator<String> untimed =
+                t -> t.replaceAll(" tried in [0-9.]+ s, [0-9.]+ s of CPU", " tried");
+        java.util.List<String> rows = java.util.Arrays.stream(
+                        window.list("position-warnings").contents())
+                .map(untimed)
+                .toList();
+        org.junit.jupiter.api.Assertions.assertEquals(run.problems().size(), rows.size(), rows.toString());
+        for (String p : run.problems()) {
+            org.junit.jupiter.api.Assertions.assertTrue(
+                    rows.stream().anyMatch(r -> r.endsWith(untimed.apply(p))),
+                    "the Summary does not say: " + p + "\n" + rows);
+        }
+        String reach = GuiActionRunner.execute(
+                () -> window.label("position-reach").target().getText());
+        org.junit.jupiter.api.Assertions.assertEquals(
+                untimed.apply(run.problems().get(run.problems().size() - 1)), untimed.apply(reach));
+        shoot("position-place-auto-refused.png");
+    }
+
     /** For looking at after the build: target/screenshots/position-place-auto.png. */
     private void shoot(String name) {
         java.awt.image.BufferedImage img =

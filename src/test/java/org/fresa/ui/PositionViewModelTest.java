@@ -91,4 +91,50 @@ class PositionViewModelTest {
         assertEquals(vm.pointCount(), vm.cellPoints().size());
         assertTrue(vm.selectedText().startsWith("Point " + (last + 1) + " of "), vm.selectedText());
     }
+
+    /**
+     * After Compute the Summary lists what fresa run says of the same job (the spindle not given,
+     * the feeds read from the file, the relink, the points out of reach), and the Output tab's Save
+     * says all of it as the run does, with its exit status: example 2 on the IRB-140 as table 5.1
+     * places it, and moved 500 mm further out, where points are out of reach.
+     */
+    @ParameterizedTest
+    @CsvSource({"450, 0, 350", "950, 0, 350"})
+    void theSummaryAndSaveSayWhatTheRunSays(double x, double y, double z, @org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        Job sample = org.fresa.job.JobXml.read(Path.of("samples/jobs/example2-irb140.xml"));
+        Job job = PositionViewModel.withRobotTable(sample, new org.fresa.model.Placement(x, y, z, 0, 0, 0));
+        org.fresa.job.TaskOutcome run = org.fresa.job.RobotService.run(
+                job, new org.fresa.io.OutputFolder(dir.resolve("run")), ProgressMonitor.NONE);
+        assertTrue(run.problems().size() > 3, run.problems().toString());
+        assertEquals(x > 900 ? 1 : 0, run.exitStatus(), "points out of reach: " + run.problems());
+        org.fresa.job.JobSettings.RobotSettings r = job.robot().orElseThrow();
+        org.fresa.job.JobSettings.StepNcSettings st = job.stepnc().orElseThrow();
+        // as the Position tab's Compute does
+        PositionViewModel.Planned planned = PositionViewModel.plan(
+                st.file(),
+                r.robot(),
+                new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                st.choices(),
+                ProgressMonitor.NONE);
+        RobotTrajectoryService.Solved solved = RobotTrajectoryService.solve(
+                planned.request(r.robotTable(), r.tablePiece(), r.formats()), ProgressMonitor.NONE);
+        PositionViewModel vm = new PositionViewModel();
+        vm.setResult(solved);
+        vm.setSaid(org.fresa.job.RobotService.said(planned.planning(), solved));
+        List<String> shown =
+                vm.said().all().stream().map(WarningList.Warning::text).toList();
+        for (String p : run.problems()) {
+            // the program check is the Output tab's, which checks the programs it previews and saves
+            if (!p.startsWith("robot programs (")) {
+                assertTrue(shown.contains(p), "the Summary does not say: " + p + "\n" + shown);
+            }
+        }
+        org.fresa.job.TaskOutcome saved = OutputViewModel.write(
+                new RobotRunModel.Run(solved, "example2", planned.planning()),
+                r.formats(),
+                new org.fresa.io.OutputFolder(dir.resolve("save")));
+        assertEquals(run.problems(), saved.problems());
+        assertEquals(run.exitStatus(), saved.exitStatus());
+    }
 }

@@ -49,6 +49,11 @@ class RobotTabsGuiTest extends WindowGuiTest {
                 .slideTo(GuiActionRunner.execute(
                         () -> window.slider("position-replay").target().getMaximum() / 2));
         shoot("robot-position.png");
+        // what fresa run says of the job is listed under the figures, as it says it
+        String[] said = window.list("position-warnings").contents();
+        assertTrue(
+                java.util.Arrays.stream(said).anyMatch(w -> w.startsWith("no spindle given")),
+                java.util.Arrays.toString(said));
         assertTrue(window.label("position-point").target().getText().startsWith("Point "));
         JobSettings.RobotSettings r =
                 GuiActionRunner.execute(() -> model.job().robot().orElseThrow());

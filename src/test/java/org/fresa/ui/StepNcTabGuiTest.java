@@ -139,6 +139,28 @@ class StepNcTabGuiTest extends WindowGuiTest {
         shoot("stepnc-thesis-paths.png");
     }
 
+    /**
+     * A toolpath job's problem list says what fresa run of it says: example 2's workingsteps on its
+     * side faces, which the 3-axis program leaves for another setup.
+     */
+    @Test
+    void aToolpathJobListsTheWorkingstepsItsProgramLeavesOut() {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        Path stp = Path.of("samples/stepnc/example2.stp").toAbsolutePath();
+        window.tabbedPane("tabs").selectTab("STEP-NC");
+        GuiActionRunner.execute(() -> model.setJob(model.job()
+                .withTask(org.fresa.job.JobTask.TOOLPATH)
+                .withStepnc(new JobSettings.StepNcSettings(stp, org.fresa.post.MillingPost.LINUXCNC))));
+        waitForThePlan();
+        String[] rows = window.list("stepnc-problems").contents();
+        org.junit.jupiter.api.Assertions.assertTrue(
+                java.util.Arrays.stream(rows)
+                        .anyMatch(r -> r.endsWith("tool axis (0, -1, 0): a 3-axis program machines along +Z only;"
+                                + " 11 workingsteps need another setup")),
+                java.util.Arrays.toString(rows));
+        shoot("stepnc-toolpath-job.png");
+    }
+
     private void waitForThePlan() {
         Pause.pause(
                 new Condition("the program is read and planned") {

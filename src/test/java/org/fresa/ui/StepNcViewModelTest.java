@@ -446,4 +446,38 @@ class StepNcViewModelTest {
                 List.of("Fresa's paths", "the 2016 robot thesis's points"),
                 StepNcViewModel.PATHS.stream().map(StepNcViewModel::pathsLabel).toList());
     }
+
+    /**
+     * The tab's problem list says what {@code fresa run} of a toolpath job says of the same file:
+     * the planner's problems and the workingsteps the 3-axis program leaves for another setup.
+     */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(
+            strings = {
+                "samples/stepnc/example2.stp",
+                "samples/stepnc/iso14649-11-example1-explicit-toolpaths.stp",
+                "../shared/corpus/stepnc/grima/testBoxy.p21"
+            })
+    void theProblemsAreWhatTheToolpathRunSays(String name, @org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        Path file = Path.of(name);
+        org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.Files.isRegularFile(file), "no " + file);
+        org.fresa.job.JobSettings.StepNcSettings s =
+                new org.fresa.job.JobSettings.StepNcSettings(file, org.fresa.post.MillingPost.LINUXCNC);
+        org.fresa.job.Job job =
+                org.fresa.job.Job.empty(org.fresa.job.JobTask.TOOLPATH).withStepnc(s);
+        org.fresa.job.TaskOutcome run = org.fresa.job.ToolpathService.run(
+                job, new org.fresa.io.OutputFolder(dir), org.fresa.job.ProgressMonitor.NONE);
+        assertEquals(1, run.exitStatus(), "the run refuses workingsteps of " + file);
+        org.fresa.job.ToolpathService.Planned planned =
+                org.fresa.job.ToolpathService.compute(file, s.choices(), org.fresa.job.ProgressMonitor.NONE);
+        StepNcViewModel vm = new StepNcViewModel();
+        vm.load(planned.program());
+        vm.planned(planned.plan(), StepNcViewModel.problemsOf(job, file, planned, s));
+        List<String> shown =
+                vm.problems().all().stream().map(WarningList.Warning::text).toList();
+        for (String p : run.problems()) {
+            assertTrue(shown.contains(p), "the tab does not say: " + p + "\n" + shown);
+        }
+    }
 }
