@@ -88,8 +88,11 @@ final class RobotCommand extends FolderCommand {
                         new RobotService.Settings(file, robot.robot, table, piece, fmts, choices, tool, placing),
                         folder,
                         progress));
-        if (!json && o.exitStatus() == 0 && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m) {
-            // the placement chosen on stdout, where the planner reads it back (none: the reason is on stderr)
+        if (!json
+                && o.summary().get("placement_search") instanceof java.util.Map<?, ?> m
+                && String.valueOf(m.get("what")).startsWith("placement found")) {
+            // the placement chosen on stdout, where the planner reads it back, also when a workingstep
+            // is left out (exit 1); none found: the reason is on stderr
             TerminalProgress.clear(progress);
             out().println(m.get("what"));
         }

@@ -65,6 +65,31 @@ class RobotPlaceAutoCommandTest {
         assertTrue(Files.readString(dir.resolve("b/summary.json")).contains("\"unreachable\": 0"));
     }
 
+    /**
+     * GRIMA's testBoxy: a placement reaches every target, and the run exits 1 (a workingstep is not
+     * planned, the robot program is refused): the placement is printed all the same.
+     */
+    @Test
+    void thePlacementFoundIsPrintedAlsoWhenTheRunExitsWith1() {
+        Path boxy = Path.of("../shared/corpus/stepnc/grima/testBoxy.p21");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(boxy), "the corpus is not beside the checkout");
+        assertEquals(
+                1,
+                run(
+                        "robot",
+                        boxy.toString(),
+                        "--robot",
+                        "irb140",
+                        "--out",
+                        dir.resolve("boxy").toString(),
+                        "--place",
+                        "auto",
+                        "--formats",
+                        "csv"),
+                err::toString);
+        assertTrue(out.toString().contains("placement found: --robot-table "), out + "\n" + err);
+    }
+
     @Test
     void anotherWordThanAutoIsRefusedWithNothingWritten() {
         assertEquals(
