@@ -288,42 +288,6 @@ public final class RobotService {
         return out;
     }
 
-    /**
-     * Reads the STEP-NC file, plans its toolpaths with the settings' choices and solves the robot's
-     * trajectory, as {@link #run} does before it writes: what the Position tab shows. The
-     * solved request carries the part's limits, so the programs written from it later pass the
-     * same program check as {@code fresa run}'s.
-     *
-     * @throws CamInputException when the file has nothing to machine or no workingstep could be planned
-     */
-    public static RobotTrajectoryService.Solved compute(Settings s, ProgressMonitor progress)
-            throws CamInputException, IOException {
-        Robot robot = RobotFiles.load(s.robot());
-        StepNcProgram program = StepNcService.read(s.stepnc(), progress);
-        java.util.Optional<String> nothing = program.whyNothingToMachine();
-        if (nothing.isPresent()) {
-            throw new CamInputException(s.stepnc().toString(), nothing.get());
-        }
-        ToolpathPlanner.Plan plan = ToolpathService.plan(program, s.choices(), progress);
-        if (plan.planned() == 0) {
-            throw new CamInputException(
-                    s.stepnc().toString(), "no workingstep could be planned: " + String.join("; ", plan.problems()));
-        }
-        RobotTools.Frames tools =
-                RobotTools.of(robot, s.tool(), program, plan, s.stepnc().toString());
-        RobotTrajectoryService.Request req = new RobotTrajectoryService.Request(
-                tools.toolpath(),
-                robot,
-                s.robotTable(),
-                s.tablePiece(),
-                NcPosts.CHORD_TOLERANCE_MM * 10,
-                s.formats(),
-                org.fresa.kin.TrajectorySolver.Options.DEFAULT,
-                tools.tcpByLabel(),
-                ProgramChecks.stepnc(program, plan, s.choices()));
-        return RobotTrajectoryService.solve(req, progress);
-    }
-
     /** The job task. */
     public static TaskOutcome run(Job job, OutputFolder out, ProgressMonitor progress)
             throws CamInputException, IOException {
