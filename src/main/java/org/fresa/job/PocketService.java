@@ -472,14 +472,14 @@ public final class PocketService {
     /**
      * Why {@code --strategy adaptive} is refused: the walks of {@link org.fresa.pocket.AdaptivePocket}
      * clear the floor without leaving material or cutting a wall, and hold the engagement on the
-     * thesis cavities, but on random pockets with islands they still meet more than the stepover
-     * allows along the walls, and the planner refuses a third of them (docs/pocket-strategies.md,
+     * thesis contours, but on random pockets with islands they still meet more than the stepover
+     * allows along the walls, and the planner refuses 12 of 30 (docs/pocket-strategies.md,
      * "Adaptive"): a program that claims a constant engagement it does not hold is not written.
      */
     public static final String ADAPTIVE_NOT_READY = "adaptive clearing is not available yet: its walks hold the"
-            + " engagement on the thesis cavities but not yet on every pocket with islands (measured up to 1.5"
-            + " times the angle allowed along the walls, and a third of such pockets refused for channels"
-            + " narrower than the tool); use --strategy offset or zigzag";
+            + " engagement on the thesis contours but not yet on every pocket with islands (measured up to 7"
+            + " degrees over the angle allowed along the walls, and 12 of 30 such pockets refused for channels"
+            + " too narrow to enter); use --strategy offset or zigzag";
 
     /**
      * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines

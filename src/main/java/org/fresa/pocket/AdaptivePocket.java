@@ -712,8 +712,11 @@ public final class AdaptivePocket {
             Vec2 circleC = null;
             double circleR = 0;
             double reachCells = r / h;
-            double clearedSq = (reachCells - 1) * (reachCells - 1);
-            double frontierSq = (reachCells + 0.5 * stepMm / h) * (reachCells + 0.5 * stepMm / h);
+            // a link feeds only where the tool's disc stays a cell clear of uncut floor: its moves are
+            // not judged, and one ending within a cell of the floor took that cell's sliver across the
+            // tool's front (the first planner's links, up to 38 degrees over the bound)
+            double clearedSq = (reachCells + 1) * (reachCells + 1);
+            double frontierSq = (reachCells + 1 + 0.5 * stepMm / h) * (reachCells + 1 + 0.5 * stepMm / h);
             while (true) {
                 float[] du = toUncut();
                 int start = -1;

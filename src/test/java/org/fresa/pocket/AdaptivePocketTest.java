@@ -23,9 +23,9 @@ import org.locationtech.jts.geom.Geometry;
  * engagement on the random pockets too: from LinuxCNC's interpreter's moves, measured with JTS as
  * the other strategies are, it leaves less than 0.05 mm2 of the floor the tool can reach and cuts
  * no wall by 0.01 mm; measured by {@link Engagement}, the walks and the pre-finish pass stay within
- * the angle of a cut of 1.1 times the stepover plus {@link #MARGIN_DEG} on thesis cavities whose
- * sharp corners and walls the first planner exceeded it at (cavity 05 by 22 degrees, cavity 06 by
- * 28), where the offset passes slot their first loop (180 degrees).
+ * the angle of a cut of 1.1 times the stepover plus {@link #MARGIN_DEG} on thesis contours whose
+ * sharp corners, walls and links the first planner exceeded it at (cavity 05 by 22 degrees,
+ * cavity 06 by 28, examplepart by 7), where the offset passes slot their first loop (180 degrees).
  */
 class AdaptivePocketTest {
 
@@ -46,7 +46,7 @@ class AdaptivePocketTest {
 
     @Test
     void theWalksAndThePreFinishPassHoldTheEngagementAlongTheWallsAndInCorners() throws Exception {
-        for (String name : new String[] {"cavity05", "cavity06", "cavity07"}) {
+        for (String name : new String[] {"examplepart", "cavity05", "cavity06", "cavity07"}) {
             List<Contour> p = List.of(RecognitionTest.sample(name + ".dad").outline());
             PocketTechnology t = PocketCoverageTest.tech(name);
             AdaptivePocket.Plan plan = AdaptivePocket.plan(p.get(0), List.of(), t, true, EntryRule.DEFAULT);
