@@ -495,14 +495,15 @@ public final class PocketService {
 
     /**
      * Why {@code --strategy adaptive} is refused: the walks of {@link org.fresa.pocket.AdaptivePocket}
-     * clear the floor without leaving material or cutting a wall, and hold the engagement in open
-     * floor, but along the walls and in corners they still meet more than the stepover allows
-     * (docs/pocket-strategies.md, "Adaptive"): a program that claims a constant engagement it does
-     * not hold is not written.
+     * clear the floor without leaving material or cutting a wall, and hold the engagement on the
+     * thesis contours, but on random pockets with islands they still meet more than the stepover
+     * allows along the walls, and the planner refuses 12 of 30 (docs/pocket-strategies.md,
+     * "Adaptive"): a program that claims a constant engagement it does not hold is not written.
      */
     public static final String ADAPTIVE_NOT_READY = "adaptive clearing is not available yet: its walks hold the"
-            + " engagement at the stepover in open floor but not yet along the walls, in corners and in the"
-            + " pre-finish pass (measured up to 2.3 times the angle allowed); use --strategy offset or zigzag";
+            + " engagement on the thesis contours but not yet on every pocket with islands (measured up to 7"
+            + " degrees over the angle allowed along the walls, and 12 of 30 such pockets refused for channels"
+            + " too narrow to enter); use --strategy offset or zigzag";
 
     /**
      * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines

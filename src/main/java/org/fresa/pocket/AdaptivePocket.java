@@ -19,7 +19,8 @@ import org.fresa.model.ToolpathSection;
 
 /**
  * Adaptive (constant-engagement) clearing of a region with islands: the tool's centre walks the
- * pre-finish offset's faces (R + a, islands included) in short steps, each in the direction whose
+ * pre-finish offset's faces (R + a, islands included, their sharp corners rounded to
+ * {@link #CORNER_OF_RADIUS} R) in short steps, each in the direction whose
  * newly cut area is the stepover's, so that the tool never takes a full-width cut at its first
  * cut, in corners or in necks; then the contour passes of {@link RegionPocket} (pre-finish at
  * R + a, finishing at R, arcs as arcs) clean the walls, as the other strategies do. Units mm.
@@ -31,7 +32,10 @@ import org.fresa.model.ToolpathSection;
  * material) and one that cuts less (towards the cleared floor), starting from the last direction
  * so that the material stays on one side: on the right for climb milling (a right-hand cutter
  * turning clockwise cuts down into it), on the left for conventional. A position outside the
- * pre-finish faces counts as cutting too much: the walk turns away from the walls.
+ * pre-finish faces counts as cutting too much: the walk turns away from the walls. The engagement
+ * is judged at the step's start (in its new direction), halfway and at its end, on the leading
+ * half of the circumference against the distance to the cut interpolated between cells, as
+ * {@link Engagement} judges the program.
  *
  * <p>Entry: at the point of the faces farthest from their boundary, a helix (of the largest radius
  * {@link Entries} allows there, up to R) and a full circle at depth clear a disc; the walk starts on
@@ -41,7 +45,10 @@ import org.fresa.model.ToolpathSection;
  * is cut (staying down), else retracts and enters again where such a place is (the entry judged as
  * into stock), else enters by a helix into the uncut floor farthest from the boundary. Material no
  * walk reached and the pre-finish pass cannot reach is refused, naming the place: a plan that
- * leaves material is never written.
+ * leaves material is never written. The pre-finish pass is followed over what the walks left, and
+ * where it would engage more than the bound (floor in a face too small for an entry, or in a narrow
+ * end), the plan is refused naming the place, as it is where a face of the offset is too narrow to
+ * round: there only a full-width cut reaches the floor.
  */
 public final class AdaptivePocket {
 
@@ -74,6 +81,20 @@ public final class AdaptivePocket {
 
     /** How far below the bound (deg) the walk holds the engagement on its own raster. */
     static final double ANGLE_MARGIN_DEG = 4;
+
+    /**
+     * The radius (a fraction of the tool radius) to which the corners of the faces the tool's
+     * centre keeps to are rounded. At a sharp corner of angle phi the centre cannot come without
+     * engaging 180 - phi degrees of the tool, however little it cuts (every direction away from the
+     * corner's faces is uncut floor), so a walk or the pre-finish pass reaching a 40 degree corner
+     * engages 140 degrees, far beyond the stepover's angle; round the corner, it engages what the
+     * walks left. The corner's floor, up to 1 / sin(phi / 2) - 1 times the radius beyond the
+     * allowance, goes to the finishing pass, which meets two walls' allowance there anyway.
+     */
+    static final double CORNER_OF_RADIUS = 0.25;
+
+    /** Where along a step (fractions of it) the engagement is judged: its start, halfway, its end. */
+    private static final double[] ALONG_STEP = {0.1, 0.5, 1};
 
     /**
      * The plan.
@@ -133,12 +154,39 @@ public final class AdaptivePocket {
             throw new ToolTooLargeException("the tool (" + tech.toolDiameterMm()
                     + " mm) does not fit anywhere in the pocket: use a smaller tool");
         }
-        boolean preFinish = a > 1e-9;
-        List<Contour> inner = preFinish ? RegionOffsetter.inward(boundary, r + a, TOL) : finishing;
+        // the faces the walks and the pre-finish pass keep the tool's centre in: the region offset by
+        // R + a with its corners rounded (see CORNER_OF_RADIUS)
+        double rho = CORNER_OF_RADIUS * r;
+        List<Contour> inner = opened(boundary, r + a, rho);
+        for (Contour face : RegionOffsetter.inward(boundary, r + a, TOL)) {
+            // a face narrower than the rounding throughout would be left whole to the finishing pass: a slot
+            // (a point half the rounding inside each rounded face: their edges lie on the faces' edges)
+            if (face.isCcw()
+                    && inner.stream()
+                            .filter(Contour::isCcw)
+                            .noneMatch(c -> face.windingNumber(c.get(0)
+                                            .start()
+                                            .plus(c.get(0)
+                                                    .startTangent()
+                                                    .leftNormal()
+                                                    .times(0.5 * rho)))
+                                    != 0)) {
+                Vec2 at = face.get(0).start();
+                throw new ToolTooLargeException(String.format(
+                        Locale.ROOT,
+                        "adaptive cannot hold the engagement at X%.3f Y%.3f: the tool's centre has less than"
+                                + " %.3f mm of room there, where only a full-width cut reaches the floor; use"
+                                + " the offset or zigzag strategy, or a smaller tool",
+                        at.x(),
+                        at.y(),
+                        2 * rho));
+            }
+        }
         List<ZigzagPocket.Cut> order = new ArrayList<>();
         int walks = 0;
         int entries = 0;
         double cell = 0;
+        Walker walker = null;
         if (!inner.isEmpty()) {
             double stepover = Math.min(1, tech.cutFraction()) * tech.toolDiameterMm();
             // the planner holds the angle a little below the bound, for its coarser raster
@@ -146,6 +194,7 @@ public final class AdaptivePocket {
                     Engagement.angleDeg(stepover, r), Engagement.angleDeg(1.1 * stepover, r) - ANGLE_MARGIN_DEG);
             Walker w = new Walker(inner, r, stepover, limit, climb);
             w.run();
+            walker = w;
             walks = w.walks;
             entries = w.chains.size();
             cell = w.h;
@@ -154,14 +203,56 @@ public final class AdaptivePocket {
             }
         }
         Vec2 cursor = order.isEmpty() ? null : order.get(order.size() - 1).end();
-        if (preFinish && !inner.isEmpty()) {
+        if (!inner.isEmpty()) {
+            int first = order.size();
             cursor = ZigzagPocket.loops(inner, false, climb, cursor, order);
+            if (walker != null) {
+                for (ZigzagPocket.Cut c : order.subList(first, order.size())) {
+                    walker.pass(c.curves());
+                }
+            }
         }
         ZigzagPocket.loops(finishing, true, climb, cursor, order);
         tech.checkMoves(
                 order.stream().mapToLong(c -> 3L * c.curves().size() + 4).sum());
         Toolpath path = toolpath(order, finishing, inner.isEmpty() ? finishing : inner, tech, entry, climb);
         return new Plan(finishing, walks, entries, cell, order, path);
+    }
+
+    /**
+     * The region offset inwards by d with its convex corners rounded to radius rho (and any part of
+     * it narrower than 2 rho dropped): the region offset by d + rho, grown again by rho. The
+     * growing is the inward offset of the complement, the offset loops reversed inside a frame.
+     */
+    static List<Contour> opened(List<Contour> boundary, double d, double rho) {
+        List<Contour> shrunk = RegionOffsetter.inward(boundary, d + rho, TOL);
+        if (shrunk.isEmpty() || rho <= 0) {
+            return shrunk;
+        }
+        Box2 box = shrunk.get(0).bounds();
+        for (Contour c : shrunk) {
+            box = box.union(c.bounds());
+        }
+        double m = 4 * rho + 10;
+        List<Contour> complement = new ArrayList<>();
+        complement.add(Contour.polygon(List.of(
+                new Vec2(box.minX() - m, box.minY() - m),
+                new Vec2(box.maxX() + m, box.minY() - m),
+                new Vec2(box.maxX() + m, box.maxY() + m),
+                new Vec2(box.minX() - m, box.maxY() + m))));
+        for (Contour c : shrunk) {
+            complement.add(c.reversed());
+        }
+        List<Contour> out = new ArrayList<>();
+        for (Contour c : RegionOffsetter.inward(complement, rho, TOL)) {
+            Box2 b = c.bounds();
+            if (b.minX() < box.minX() - m / 2 || b.maxX() > box.maxX() + m / 2) {
+                continue;
+            }
+            out.add(c.reversed());
+        }
+        out.sort((p, q) -> Double.compare(q.area(), p.area()));
+        return out;
     }
 
     /** One chain of walks from an entry: the circle the entry clears (if any) and the polyline. */
@@ -205,6 +296,9 @@ public final class AdaptivePocket {
         final long[] cut;
         final boolean[] dead;
         final float[] clear;
+        /** For cells about the cut's edge, the distance to the nearest disc's centre less its excess over R (mm). */
+        final float[] toCut;
+
         final List<Chain> chains = new ArrayList<>();
         int walks;
         long steps;
@@ -262,12 +356,41 @@ public final class AdaptivePocket {
             this.toInside = edt(nx, ny, i -> inside[i]);
             double reach = r / h;
             this.material = new long[strict.length];
+            // the floor within R of the faces, exactly about the disc's edge: cell centres inside the
+            // faces stop up to several cells short of an acute corner of theirs, and the material about
+            // that corner is what a walk or the pre-finish pass takes there
+            boolean[] touched = new boolean[n];
+            for (Contour c : faces) {
+                for (Vec2[] ch : Coverage.chords(c.curves())) {
+                    int k = Math.max(1, (int) Math.ceil(ch[0].distance(ch[1]) / (0.5 * h)));
+                    for (int t = 0; t <= k; t++) {
+                        int ci = cellOf(ch[0].interpolate(ch[1], (double) t / k));
+                        if (ci >= 0) {
+                            touched[ci] = true;
+                        }
+                    }
+                }
+            }
+            float[] toFaces = edt(nx, ny, i -> inside[i] || touched[i]);
+            double lo = Math.max(0, reach - 2);
+            double hi = reach + 2;
             for (int i = 0; i < n; i++) {
-                if (toInside[i] <= reach * reach) {
+                boolean m;
+                if (toFaces[i] <= lo * lo) {
+                    m = true;
+                } else if (toFaces[i] > hi * hi) {
+                    m = false;
+                } else {
+                    Vec2 c = centre(i);
+                    m = room(c) > 0 || distanceToFaces(c) <= r;
+                }
+                if (m) {
                     material[i >>> 6] |= 1L << i;
                 }
             }
             this.cut = new long[strict.length];
+            this.toCut = new float[n];
+            Arrays.fill(toCut, Float.POSITIVE_INFINITY);
             this.dead = new boolean[n];
             // each step cuts a cell or ends its walk; every walk either cuts or marks its start dead
             this.maxSteps = 4L * n + 1000;
@@ -391,28 +514,89 @@ public final class AdaptivePocket {
         }
 
         /**
-         * The cells a step to p in direction u would cut, or infinity where p is outside the faces
-         * or the tool's circumference would meet uncut floor over more than the angle allowed.
+         * The cells a step from at in direction u would cut, or infinity where its end is outside
+         * the faces or the tool's circumference would meet uncut floor over more than the angle
+         * allowed anywhere along it: at its start (a turn towards the material swings the leading
+         * half of the circumference into it before the tool has moved), halfway and at its end.
          */
-        private double load(Vec2 p, Vec2 u) {
+        private double load(Vec2 at, Vec2 u) {
+            Vec2 p = at.plus(u.times(stepMm));
             if (!valid(p)) {
                 return Double.POSITIVE_INFINITY;
             }
             int cells = disc(p, r, false);
-            if (cells > 0 && engagedDeg(p, u) > angleLimitDeg) {
-                return Double.POSITIVE_INFINITY;
+            if (cells > 0) {
+                for (double f : ALONG_STEP) {
+                    if (engagedDeg(at.plus(u.times(f * stepMm)), u) > angleLimitDeg) {
+                        return Double.POSITIVE_INFINITY;
+                    }
+                }
             }
             return cells;
         }
 
-        /** The leading half of the circumference, one cell outside it, over uncut floor (deg). */
+        /**
+         * Marks the disc of R + extra about c cut, and about its edge the distance to it, so that
+         * the circumference is judged within a fraction of a cell ({@link #uncutAt}).
+         */
+        void cutDisc(Vec2 c, double extra) {
+            disc(c, r + extra, true);
+            double outer = r + extra + 2 * h;
+            int j0 = Math.max(0, (int) Math.ceil((c.y() - outer - y0) / h - 0.5));
+            int j1 = Math.min(ny - 1, (int) Math.floor((c.y() + outer - y0) / h - 0.5));
+            for (int j = j0; j <= j1; j++) {
+                double dy = y0 + (j + 0.5) * h - c.y();
+                double half = Math.sqrt(Math.max(0, outer * outer - dy * dy));
+                int i0 = Math.max(0, (int) Math.ceil((c.x() - half - x0) / h - 0.5));
+                int i1 = Math.min(nx - 1, (int) Math.floor((c.x() + half - x0) / h - 0.5));
+                for (int i = i0; i <= i1; i++) {
+                    double dx = x0 + (i + 0.5) * h - c.x();
+                    float d = (float) Math.max(0, Math.sqrt(dx * dx + dy * dy) - extra);
+                    int k = j * nx + i;
+                    if (d < toCut[k]) {
+                        toCut[k] = d;
+                    }
+                }
+            }
+        }
+
+        /**
+         * Whether the floor at q is uncut: a material cell, and farther than R from every disc
+         * cut, by the distance interpolated between the four cell centres about q (the cell alone
+         * would misjudge a sliver thinner than it, which the program's moves do cut or leave).
+         */
+        boolean uncutAt(Vec2 q) {
+            int c = cellOf(q);
+            if (c < 0 || (material[c >>> 6] & (1L << c)) == 0) {
+                return false;
+            }
+            double fx = (q.x() - x0) / h - 0.5;
+            double fy = (q.y() - y0) / h - 0.5;
+            int ci = (int) Math.floor(fx);
+            int cj = (int) Math.floor(fy);
+            if (ci < 0 || cj < 0 || ci + 1 >= nx || cj + 1 >= ny) {
+                return (cut[c >>> 6] & (1L << c)) == 0;
+            }
+            double tx = fx - ci;
+            double ty = fy - cj;
+            double v = 0;
+            for (int k = 0; k < 4; k++) {
+                float d = toCut[(cj + (k >> 1)) * nx + ci + (k & 1)];
+                if (d == Float.POSITIVE_INFINITY) {
+                    return true;
+                }
+                v += d * ((k & 1) == 1 ? tx : 1 - tx) * ((k >> 1) == 1 ? ty : 1 - ty);
+            }
+            return v > r;
+        }
+
+        /** The leading half of the circumference over uncut floor (deg). */
         double engagedDeg(Vec2 p, Vec2 u) {
             int n = 90;
             int engaged = 0;
             for (int k = 0; k < n; k++) {
                 double b = Math.toRadians(-90 + (k + 0.5) * 180.0 / n);
-                int c = cellOf(p.plus(u.rotated(b).times(r + h)));
-                if (c >= 0 && (material[c >>> 6] & ~cut[c >>> 6] & (1L << c)) != 0) {
+                if (uncutAt(p.plus(u.rotated(b).times(r * (1 + 1e-6))))) {
                     engaged++;
                 }
             }
@@ -420,8 +604,7 @@ public final class AdaptivePocket {
         }
 
         private double load(Vec2 at, Vec2 dir, double angleRad) {
-            Vec2 u = direction(dir, angleRad);
-            return load(at.plus(u.times(stepMm)), u);
+            return load(at, direction(dir, angleRad));
         }
 
         private Vec2 direction(Vec2 d, double angleRad) {
@@ -489,7 +672,7 @@ public final class AdaptivePocket {
                 }
                 Vec2 nd = direction(dir, hi).normalized();
                 Vec2 next = at.plus(nd.times(stepMm));
-                double g = load(next, nd);
+                double g = load(at, nd);
                 if (g == Double.POSITIVE_INFINITY) {
                     break;
                 }
@@ -502,7 +685,7 @@ public final class AdaptivePocket {
                     lowRun = 0;
                 }
                 total += g;
-                disc(next, r, true);
+                cutDisc(next, 0);
                 pts.add(next);
                 at = next;
                 dir = nd;
@@ -529,8 +712,11 @@ public final class AdaptivePocket {
             Vec2 circleC = null;
             double circleR = 0;
             double reachCells = r / h;
-            double clearedSq = (reachCells - 1) * (reachCells - 1);
-            double frontierSq = (reachCells + 0.5 * stepMm / h) * (reachCells + 0.5 * stepMm / h);
+            // a link feeds only where the tool's disc stays a cell clear of uncut floor: its moves are
+            // not judged, and one ending within a cell of the floor took that cell's sliver across the
+            // tool's front (the first planner's links, up to 38 degrees over the bound)
+            double clearedSq = (reachCells + 1) * (reachCells + 1);
+            double frontierSq = (reachCells + 1 + 0.5 * stepMm / h) * (reachCells + 1 + 0.5 * stepMm / h);
             while (true) {
                 float[] du = toUncut();
                 int start = -1;
@@ -559,7 +745,7 @@ public final class AdaptivePocket {
                         circleC = e.centre;
                         circleR = climbSense() * e.radius;
                         Vec2 s = e.centre.plus(new Vec2(e.radius, 0));
-                        disc(e.centre, e.radius + r, true);
+                        cutDisc(e.centre, e.radius);
                         pts = new ArrayList<>(List.of(s));
                         dir = climbSense() > 0 ? Vec2.UNIT_Y : Vec2.UNIT_Y.negated();
                         at = s;
@@ -622,7 +808,11 @@ public final class AdaptivePocket {
                 int c = Float.compare(clear[q], clear[p]);
                 return c != 0 ? c : Integer.compare(p, q);
             });
-            for (int k = 0; k < Math.min(order.length, 50); k++) {
+            for (int k = 0; k < order.length; k++) {
+                if (Math.sqrt(clear[order[k]]) * h < 0.5 * r + h) {
+                    // by the raster, no place further down the list leaves room for the least helix
+                    break;
+                }
                 Vec2 c = centre(order[k]);
                 double room = room(c);
                 for (double f : new double[] {1, 0.75, 0.5}) {
@@ -640,6 +830,15 @@ public final class AdaptivePocket {
         private boolean enterable(int i) {
             double need = (0.5 * r + 2 * h) / h;
             return clear[i] >= need * need && room(centre(i)) >= 0.5 * r + 1e-3;
+        }
+
+        /** Distance from p to the faces' boundary, inside or out. */
+        double distanceToFaces(Vec2 p) {
+            double d = Double.POSITIVE_INFINITY;
+            for (Contour c : faces) {
+                d = Math.min(d, c.distanceTo(p));
+            }
+            return d;
         }
 
         /** Distance from p to the faces' boundary, 0 outside. */
@@ -746,6 +945,42 @@ public final class AdaptivePocket {
                 }
             }
             return best;
+        }
+
+        /**
+         * Follows the pre-finish pass over what the walks left, marking it cut, and refuses the
+         * plan where its leading circumference meets more uncut floor than the walks may: what a
+         * walk could not take at the stepover (a face too small for an entry, the narrow end of a
+         * face, a corner the walks turned away from) the pass would take in a wider cut, up to a
+         * slot.
+         */
+        void pass(List<Curve2> curves) throws ToolTooLargeException {
+            for (Vec2[] ch : Coverage.chords(curves)) {
+                double len = ch[0].distance(ch[1]);
+                if (len < 1e-9) {
+                    continue;
+                }
+                Vec2 u = ch[1].minus(ch[0]).times(1 / len);
+                int n = Math.max(1, (int) Math.ceil(len / h));
+                for (int k = 1; k <= n; k++) {
+                    Vec2 q = ch[0].interpolate(ch[1], (double) k / n);
+                    double deg = engagedDeg(q, u);
+                    if (deg > angleLimitDeg + ANGLE_MARGIN_DEG) {
+                        throw new ToolTooLargeException(String.format(
+                                Locale.ROOT,
+                                "adaptive cannot hold the engagement at X%.3f Y%.3f: the pre-finish pass would"
+                                        + " engage %.0f degrees of the tool (the stepover's cut %.0f) on floor no"
+                                        + " walk could reach at the stepover (a narrow end or corner of the"
+                                        + " region the tool's centre may take, or one too small for an entry);"
+                                        + " use the offset or zigzag strategy, or a smaller tool",
+                                q.x(),
+                                q.y(),
+                                deg,
+                                angleLimitDeg));
+                    }
+                    cutDisc(q, 0);
+                }
+            }
         }
 
         /** Refuses a plan that leaves material neither a walk nor the pre-finish pass reaches. */
