@@ -58,12 +58,8 @@ final class MillingBodies {
                 && DovetailSlot.is(u)) {
             return;
         }
-        if (body.equals("DOVETAIL_MILL")
-                && f.type() == Feature.FeatureType.STEP
-                && f.profile().orElse(null) instanceof org.fresa.stepnc.Profile.Vee v
-                && v.profileAngleDeg() > 0
-                && v.profileAngleDeg() < 90 - SlotMilling.SQUARE_TOLERANCE_DEG
-                && Math.abs(v.profileAngleDeg() - Math.PI / 2) > 1e-6) {
+        if (body.equals("DOVETAIL_MILL") && f.type() == Feature.FeatureType.STEP) {
+            // the step's planner reads its wall and takes the mill only under one that overhangs
             return;
         }
         String only = switch (body) {

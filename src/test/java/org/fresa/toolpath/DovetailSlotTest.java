@@ -47,10 +47,7 @@ class DovetailSlotTest {
     }
 
     static ToolpathSection section(String label) {
-        return plan.toolpath().sections().stream()
-                .filter(x -> x.label().equals(label))
-                .findFirst()
-                .orElseThrow(() -> new AssertionError(label + " not planned: " + plan.problems()));
+        return FeatureVolumeCheck.section(plan, label);
     }
 
     @Test

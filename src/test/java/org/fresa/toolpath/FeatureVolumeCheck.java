@@ -142,4 +142,12 @@ final class FeatureVolumeCheck {
         Files.writeString(file, part);
         assertProgramAccepted(file, dir);
     }
+
+    /** The planned section of this workingstep, or a failure naming what the planner said. */
+    static ToolpathSection section(ToolpathPlanner.Plan plan, String label) {
+        return plan.toolpath().sections().stream()
+                .filter(x -> x.label().equals(label))
+                .findFirst()
+                .orElseThrow(() -> new AssertionError(label + " not planned: " + plan.problems()));
+    }
 }

@@ -49,10 +49,7 @@ class OverhangingStepTest {
     }
 
     static ToolpathSection section(String label) {
-        return plan.toolpath().sections().stream()
-                .filter(x -> x.label().equals(label))
-                .findFirst()
-                .orElseThrow(() -> new AssertionError(label + " not planned: " + plan.problems()));
+        return FeatureVolumeCheck.section(plan, label);
     }
 
     /** The wall at height z: at its top edge x 105, at its foot (z -8) 4.62 mm under the material. */
@@ -125,6 +122,20 @@ class OverhangingStepTest {
                         .anyMatch(x -> x.startsWith("workingstep 'WS STEP UNDERCUT' (#")
                                 && x.contains("the dovetail mill's flank leans 20 deg from its axis, the step's wall"
                                         + " 30 deg (60 deg to the base)")),
+                p.problems().toString());
+    }
+
+    @Test
+    void aDovetailMillOnAnUprightWallIsRefused() throws Exception {
+        String text =
+                part.replace("#29= VEE_PROFILE($,0.000,60.000,60.000);", "#29= VEE_PROFILE($,0.000,90.000,90.000);");
+        ToolpathPlanner.Plan p =
+                ToolpathPlanner.plan(StepNcReader.read(new StringReader(text), "upright.stp"), Tolerance.DEFAULT);
+        assertTrue(
+                p.problems().stream()
+                        .anyMatch(x -> x.startsWith("workingstep 'WS STEP UNDERCUT' (#")
+                                && x.contains("a DOVETAIL_MILL mills a step only under a wall that overhangs its"
+                                        + " floor; this wall stands at 90 deg to it")),
                 p.problems().toString());
     }
 
