@@ -449,7 +449,7 @@ final class PocketTab extends PlotTab {
             nc.setDocument(result.nc());
             nc.setCaretPosition(0);
             plot.show(r.get().scene());
-            say("done", false);
+            say(PocketViewModel.doneLine(r.get()), false);
             nc.getHighlighter().removeAllHighlights();
             if (r.get().refusal().isPresent()) {
                 org.fresa.check.Failure f = r.get().refusal().get();

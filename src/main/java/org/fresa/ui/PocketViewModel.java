@@ -502,6 +502,21 @@ public final class PocketViewModel {
      * Why the computed program cannot be saved, or empty when it may: there is none yet, or it
      * fails the program check (it is never written, as Job > Run would not write it).
      */
+    /**
+     * The status line after a computation: "done", or the warnings the program is written with
+     * (they head the report, which is not in front), so that they are seen before Save.
+     */
+    public static String doneLine(Result r) {
+        List<String> warnings =
+                r.report().lines().filter(l -> l.startsWith("warning: ")).toList();
+        if (warnings.isEmpty()) {
+            return "done";
+        }
+        return warnings.size() == 1
+                ? "done, with a " + warnings.get(0)
+                : "done, with " + warnings.size() + " warnings (Recognition tree): " + warnings.get(0);
+    }
+
     public Optional<String> saveProblem() {
         if (result.isEmpty()) {
             return Optional.of("There is no program to save: press Compute first.");

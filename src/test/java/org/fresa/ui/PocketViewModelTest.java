@@ -38,6 +38,7 @@ class PocketViewModelTest {
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow();
         assertTrue(r.report().contains("divides at t = 6.135716"), r.report());
+        assertEquals("done", PocketViewModel.doneLine(r));
         assertTrue(r.report().contains("DIAMETRO MAXIMO (largest tool)    12.271 mm"), r.report());
         assertTrue(r.nc().startsWith("N05 %\n"));
         assertEquals(5, r.scene().labels().size());
@@ -394,5 +395,8 @@ class PocketViewModelTest {
         for (String w : run.problems()) {
             assertTrue(report.contains(w), "the tab does not say: " + w + "\n" + report);
         }
+        // and its status line says it, the report not being in front
+        String done = PocketViewModel.doneLine(m.result().orElseThrow());
+        assertTrue(done.startsWith("done, with") && done.contains("warning: "), done);
     }
 }
