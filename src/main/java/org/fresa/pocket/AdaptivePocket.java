@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
@@ -45,10 +46,12 @@ import org.fresa.model.ToolpathSection;
  * is cut (staying down), else retracts and enters again where such a place is (the entry judged as
  * into stock), else enters by a helix into the uncut floor farthest from the boundary. Material no
  * walk reached and the pre-finish pass cannot reach is refused, naming the place: a plan that
- * leaves material is never written. The pre-finish pass is followed over what the walks left, and
- * where it would engage more than the bound (floor in a face too small for an entry, or in a narrow
- * end), the plan is refused naming the place, as it is where a face of the offset is too narrow to
- * round: there only a full-width cut reaches the floor.
+ * leaves material is never written. What the walks cannot take at the stepover (floor in a face
+ * too small for an entry, a narrow end, a face of the offset too narrow to round, where only a
+ * full-width cut reaches the floor) the contour passes take in a wider cut; the program's moves
+ * are then measured and each move that engages more than the bound is fed slower in proportion
+ * ({@link EngagementFeed}), so that no move removes more material per minute than a cut of the
+ * bound's width at the programmed feed.
  */
 public final class AdaptivePocket {
 
@@ -107,6 +110,8 @@ public final class AdaptivePocket {
      * @param order the cuts in machining order at each depth: chains of walks (each from an
      *     entry), then the contour passes
      * @param toolpath the moves
+     * @param slowed the moves whose feed drops where the geometry forces a wider cut than the
+     *     stepover's
      */
     public record Plan(
             List<Contour> finishing,
@@ -114,7 +119,8 @@ public final class AdaptivePocket {
             int entries,
             double cellMm,
             List<ZigzagPocket.Cut> order,
-            Toolpath toolpath) {
+            Toolpath toolpath,
+            EngagementFeed.Slowed slowed) {
         public Plan {
             finishing = List.copyOf(finishing);
             order = List.copyOf(order);
@@ -158,30 +164,6 @@ public final class AdaptivePocket {
         // R + a with its corners rounded (see CORNER_OF_RADIUS)
         double rho = CORNER_OF_RADIUS * r;
         List<Contour> inner = opened(boundary, r + a, rho);
-        for (Contour face : RegionOffsetter.inward(boundary, r + a, TOL)) {
-            // a face narrower than the rounding throughout would be left whole to the finishing pass: a slot
-            // (a point half the rounding inside each rounded face: their edges lie on the faces' edges)
-            if (face.isCcw()
-                    && inner.stream()
-                            .filter(Contour::isCcw)
-                            .noneMatch(c -> face.windingNumber(c.get(0)
-                                            .start()
-                                            .plus(c.get(0)
-                                                    .startTangent()
-                                                    .leftNormal()
-                                                    .times(0.5 * rho)))
-                                    != 0)) {
-                Vec2 at = face.get(0).start();
-                throw new ToolTooLargeException(String.format(
-                        Locale.ROOT,
-                        "adaptive cannot hold the engagement at X%.3f Y%.3f: the tool's centre has less than"
-                                + " %.3f mm of room there, where only a full-width cut reaches the floor; use"
-                                + " the offset or zigzag strategy, or a smaller tool",
-                        at.x(),
-                        at.y(),
-                        2 * rho));
-            }
-        }
         List<ZigzagPocket.Cut> order = new ArrayList<>();
         int walks = 0;
         int entries = 0;
@@ -215,8 +197,16 @@ public final class AdaptivePocket {
         ZigzagPocket.loops(finishing, true, climb, cursor, order);
         tech.checkMoves(
                 order.stream().mapToLong(c -> 3L * c.curves().size() + 4).sum());
-        Toolpath path = toolpath(order, finishing, inner.isEmpty() ? finishing : inner, tech, entry, climb);
-        return new Plan(finishing, walks, entries, cell, order, path);
+        List<Contour> room = inner.isEmpty() ? finishing : inner;
+        List<Object> owners = new ArrayList<>();
+        Toolpath path = toolpath(order, finishing, room, tech, entry, climb, Map.of(), owners);
+        double stepover = Math.min(1, tech.cutFraction()) * tech.toolDiameterMm();
+        EngagementFeed feed =
+                EngagementFeed.of(boundary, tech, stepover, path.sections().get(0), owners);
+        if (!feed.factors().isEmpty()) {
+            path = toolpath(order, finishing, room, tech, entry, climb, feed.factors(), null);
+        }
+        return new Plan(finishing, walks, entries, cell, order, path, feed.slowed());
     }
 
     /**
@@ -948,13 +938,12 @@ public final class AdaptivePocket {
         }
 
         /**
-         * Follows the pre-finish pass over what the walks left, marking it cut, and refuses the
-         * plan where its leading circumference meets more uncut floor than the walks may: what a
-         * walk could not take at the stepover (a face too small for an entry, the narrow end of a
-         * face, a corner the walks turned away from) the pass would take in a wider cut, up to a
-         * slot.
+         * Follows the pre-finish pass over what the walks left, marking it cut: what a walk could
+         * not take at the stepover (a face too small for an entry, the narrow end of a face, a
+         * corner the walks turned away from) the pass takes in a wider cut, up to a slot, which
+         * the program's measure slows ({@link EngagementFeed}).
          */
-        void pass(List<Curve2> curves) throws ToolTooLargeException {
+        void pass(List<Curve2> curves) {
             for (Vec2[] ch : Coverage.chords(curves)) {
                 double len = ch[0].distance(ch[1]);
                 if (len < 1e-9) {
@@ -964,20 +953,6 @@ public final class AdaptivePocket {
                 int n = Math.max(1, (int) Math.ceil(len / h));
                 for (int k = 1; k <= n; k++) {
                     Vec2 q = ch[0].interpolate(ch[1], (double) k / n);
-                    double deg = engagedDeg(q, u);
-                    if (deg > angleLimitDeg + ANGLE_MARGIN_DEG) {
-                        throw new ToolTooLargeException(String.format(
-                                Locale.ROOT,
-                                "adaptive cannot hold the engagement at X%.3f Y%.3f: the pre-finish pass would"
-                                        + " engage %.0f degrees of the tool (the stepover's cut %.0f) on floor no"
-                                        + " walk could reach at the stepover (a narrow end or corner of the"
-                                        + " region the tool's centre may take, or one too small for an entry);"
-                                        + " use the offset or zigzag strategy, or a smaller tool",
-                                q.x(),
-                                q.y(),
-                                deg,
-                                angleLimitDeg));
-                    }
                     cutDisc(q, 0);
                 }
             }
@@ -1129,11 +1104,24 @@ public final class AdaptivePocket {
             List<Contour> inner,
             PocketTechnology t,
             EntryRule rule,
-            boolean climb)
+            boolean climb,
+            Map<Object, Double> slow,
+            List<Object> owners)
             throws ToolTooLargeException {
         double safe = t.zTopMm() + CLEARANCE_MM;
         Vec2 s0 = order.get(0).start();
         PocketMoves moves = new PocketMoves(new Vec3(s0.x(), s0.y(), safe));
+        // a finishing loop in a face of the offset too narrow for the walks goes down inside the
+        // finishing faces: anywhere there the tool's centre cuts no wall
+        Entries.Room legRoom = (centre, radius) -> {
+            int w = 0;
+            double d = Double.POSITIVE_INFINITY;
+            for (Contour c : finishing) {
+                w += c.windingNumber(centre);
+                d = Math.min(d, c.distanceTo(centre));
+            }
+            return w != 0 && d >= radius + 1e-6;
+        };
         Entries.Room room = (centre, radius) -> {
             int w = 0;
             double d = Double.POSITIVE_INFINITY;
@@ -1152,24 +1140,28 @@ public final class AdaptivePocket {
             for (ZigzagPocket.Cut cut : order) {
                 Vec2 s = cut.start();
                 double feed = cut.finishing() ? t.finishFeedMmPerMin() : t.feedMmPerMin();
+                own(owners, j, moves, null);
                 if (cursor != null && cursor.distance(s) < MIN_MOVE_MM) {
                     // the cut goes on from where the last ended
                 } else if (cursor != null && cleared.clearedAlong(cursor, s, List.of())) {
                     if (cursor.distance(s) >= MIN_MOVE_MM) {
-                        moves.add(new Move.Linear(at(s, z), t.feedMmPerMin()));
+                        moves.add(new Move.Linear(at(s, z), EngagementFeed.feed(t.feedMmPerMin(), slow.get(cut))));
+                        own(owners, j, moves, cut);
                     }
                 } else {
                     moves.add(new Move.Rapid(new Vec3(moves.at().x(), moves.at().y(), safe)));
                     moves.add(new Move.Rapid(at(s, safe)));
                     moves.add(new Move.Rapid(at(s, above)));
                     org.fresa.pocket.Entry entry = Entries.choose(
-                                    rule, s, cut.curves(), List.of(), climb, room, room, t.radiusMm(), above - z)
+                                    rule, s, cut.curves(), List.of(), climb, room, legRoom, t.radiusMm(), above - z)
                             .orElseThrow(() -> Entries.tooSmallToGoDown(s));
                     moves.addAll(entry.moves(above, z, t.feedMmPerMin()));
                 }
+                own(owners, j, moves, null);
                 for (Curve2 c : cut.curves()) {
                     if (c.length() >= MIN_MOVE_MM) {
-                        RegionPocket.emit(moves, c, z, z, feed);
+                        RegionPocket.emit(moves, c, z, z, EngagementFeed.feed(feed, slow.get(c)));
+                        own(owners, j, moves, c);
                     }
                 }
                 if (moves.size() > PocketTechnology.MAX_MOVES) {
@@ -1184,6 +1176,16 @@ public final class AdaptivePocket {
         ToolpathSection section = new ToolpathSection(
                 "pocket", Z, t.toolDiameterMm(), 1, t.spindleRpm(), new Vec3(s0.x(), s0.y(), safe), moves.list());
         return new Toolpath(List.of(section));
+    }
+
+    /** Records, at the first depth layer, what the moves from {@code from} on were made for. */
+    private static void own(List<Object> owners, int layer, PocketMoves moves, Object owner) {
+        if (owners == null || layer != 1) {
+            return;
+        }
+        for (int i = owners.size(); i < moves.size(); i++) {
+            owners.add(owner);
+        }
     }
 
     private static Vec3 at(Vec2 p, double z) {

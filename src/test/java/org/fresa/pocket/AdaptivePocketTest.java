@@ -1,7 +1,6 @@
 package org.fresa.pocket;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -19,13 +18,14 @@ import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Geometry;
 
 /**
- * The adaptive planner ({@link AdaptivePocket}), refused by the command line until it holds its
- * engagement on the random pockets too: from LinuxCNC's interpreter's moves, measured with JTS as
- * the other strategies are, it leaves less than 0.05 mm2 of the floor the tool can reach and cuts
- * no wall by 0.01 mm; measured by {@link Engagement}, the walks and the pre-finish pass stay within
- * the angle of a cut of 1.1 times the stepover plus {@link #MARGIN_DEG} on thesis contours whose
- * sharp corners, walls and links the first planner exceeded it at (cavity 05 by 22 degrees,
- * cavity 06 by 28, examplepart by 7), where the offset passes slot their first loop (180 degrees).
+ * The adaptive planner ({@link AdaptivePocket}): from LinuxCNC's interpreter's moves, measured
+ * with JTS as the other strategies are, it leaves less than 0.05 mm2 of the floor the tool can
+ * reach and cuts no wall by 0.01 mm; measured by {@link Engagement}, every move at the programmed
+ * feed stays within the angle of a cut of 1.1 times the stepover plus {@link #MARGIN_DEG} (on
+ * thesis contours whose sharp corners, walls and links the first planner exceeded it at: cavity 05
+ * by 22 degrees, cavity 06 by 28, examplepart by 7, where the offset passes slot their first loop
+ * at 180), and every move the geometry makes wider is fed so much slower that it removes no more
+ * per minute ({@link EngagementFeed}).
  */
 class AdaptivePocketTest {
 
@@ -50,11 +50,7 @@ class AdaptivePocketTest {
             List<Contour> p = List.of(RecognitionTest.sample(name + ".dad").outline());
             PocketTechnology t = PocketCoverageTest.tech(name);
             AdaptivePocket.Plan plan = AdaptivePocket.plan(p.get(0), List.of(), t, true, EntryRule.DEFAULT);
-            Engagement e = engagement(p, t, plan);
-            double bound = bound(t);
-            assertTrue(
-                    e.maxDeg() <= bound + MARGIN_DEG,
-                    name + ": " + e.maxDeg() + " deg at " + e.worstAt() + ", bound " + bound);
+            holds(name, p, t, plan);
         }
     }
 
@@ -66,19 +62,32 @@ class AdaptivePocketTest {
                 List.of(new Vec2(0, 0), new Vec2(60, 0), new Vec2(60, 60 * Math.tan(Math.toRadians(30)))));
         PocketTechnology t = new PocketTechnology(6, 0.45, 0.1, 0, -3, 3, 3000, 300, 100);
         AdaptivePocket.Plan plan = AdaptivePocket.plan(outer, List.of(), t, true, EntryRule.DEFAULT);
-        Engagement e = engagement(List.of(outer), t, plan);
-        assertTrue(e.maxDeg() <= bound(t) + MARGIN_DEG, e.maxDeg() + " deg at " + e.worstAt() + ", bound " + bound(t));
+        Load load = holds("triangle", List.of(outer), t, plan);
+        // the finishing pass meets the corner's rounded-off floor: the only move slowed
+        assertTrue(load.fullFeedMaxDeg() <= bound(t) + MARGIN_DEG, load.toString());
     }
 
     @Test
-    void aChannelTheToolsCentreHasNoRoomInIsRefusedWithItsPlace() {
-        // a 60 mm slot 9 mm wide for a 6 mm tool leaving 0.6 mm: the centre has 0.3 mm either side
-        // of the middle, where only a full-width cut reaches the floor
+    @InterpreterCheck
+    void aChannelTheToolsCentreHasNoRoomInIsCutAtASlowerFeed(@TempDir Path dir) throws Exception {
+        // a 60 mm slot 9 mm wide for a 6 mm tool leaving 0.6 mm: the centre has 0.9 mm either side
+        // of the middle, where only a full-width cut reaches the floor; the slot is cut, slowed to
+        // 1.1 times the stepover over the tool's diameter
+        assumeTrue(Rs274.available(), Rs274.whyNot());
         Contour outer = Contour.polygon(List.of(new Vec2(0, 0), new Vec2(60, 0), new Vec2(60, 9), new Vec2(0, 9)));
         PocketTechnology t = new PocketTechnology(6, 0.4, 0.1, 0, -3, 3, 3000, 300, 100);
-        ToolTooLargeException ex = assertThrows(
-                ToolTooLargeException.class, () -> AdaptivePocket.plan(outer, List.of(), t, true, EntryRule.DEFAULT));
-        assertTrue(ex.getMessage().startsWith("adaptive cannot hold the engagement at X"), ex.getMessage());
+        AdaptivePocket.Plan plan = AdaptivePocket.plan(outer, List.of(), t, true, EntryRule.DEFAULT);
+        assertTrue(plan.slowed().any(), plan.slowed().toString());
+        assertTrue(plan.slowed().worstDeg() > 170, plan.slowed().toString());
+        assertEquals(
+                1.1 * 0.4, plan.slowed().lowestFactor(), 0.02, plan.slowed().toString());
+        // the pre-finish pass slots the channel at 1.1 x 0.4 of the feed: 132 mm/min for 300
+        assertTrue(
+                plan.toolpath().sections().get(0).moves().stream()
+                        .anyMatch(m -> feed(m) == Math.floor(300 * 1.1 * 0.4)),
+                "no move at 132 mm/min");
+        holds("channel", List.of(outer), t, plan);
+        check("channel", List.of(outer), t, plan, dir);
     }
 
     @Test
@@ -104,18 +113,66 @@ class AdaptivePocketTest {
         assertEquals(plainArea - (4 - Math.PI), area, 1e-3);
     }
 
-    static double bound(PocketTechnology t) {
-        return Engagement.angleDeg(1.1 * t.cutFraction() * t.toolDiameterMm(), t.radiusMm());
-    }
-
     static Engagement engagement(List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan) {
         List<Contour> boundary = RegionOffsetter.oriented(p.get(0), p.subList(1, p.size()));
         ToolpathSection a = plan.toolpath().sections().get(0);
         return Engagement.of(boundary, t.radiusMm(), a.start(), a.moves(), t.finishFeedMmPerMin());
     }
 
+    /**
+     * The load of a program, from its moves: the largest engagement of the moves at the
+     * programmed feed (roughing or finishing), where it is, and the largest ratio of what a move
+     * removes per minute (its feed times the width of a straight cut of its engagement, less the
+     * measure's margin) to what a cut of 1.1 times the stepover removes at the programmed feed.
+     */
+    record Load(double fullFeedMaxDeg, Vec2 at, double removalRatio) {}
+
+    static Load load(List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan) {
+        List<Contour> boundary = RegionOffsetter.oriented(p.get(0), p.subList(1, p.size()));
+        ToolpathSection a = plan.toolpath().sections().get(0);
+        double boundWidth = 1.1 * Math.min(1, t.cutFraction()) * t.toolDiameterMm();
+        double[] max = {0, 0};
+        Vec2[] at = {null};
+        Engagement.of(boundary, t.radiusMm(), a.start(), a.moves(), t.finishFeedMmPerMin(), (mi, q, deg) -> {
+            double f = feed(a.moves().get(mi));
+            boolean programmed = f == t.feedMmPerMin() || f == t.finishFeedMmPerMin();
+            double base = f < t.finishFeedMmPerMin() ? t.finishFeedMmPerMin() : t.feedMmPerMin();
+            if (programmed && deg > max[0]) {
+                max[0] = deg;
+                at[0] = q;
+            }
+            max[1] = Math.max(
+                    max[1], f * Engagement.widthMm(Math.max(0, deg - MARGIN_DEG), t.radiusMm()) / (base * boundWidth));
+        });
+        return new Load(max[0], at[0], max[1]);
+    }
+
+    /** Asserts the load: the programmed feed within the bound, the slowed moves removing no more. */
+    static Load holds(String name, List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan) {
+        Load load = load(p, t, plan);
+        assertTrue(
+                load.fullFeedMaxDeg() <= bound(t) + MARGIN_DEG,
+                name + ": " + load.fullFeedMaxDeg() + " deg at " + load.at() + ", bound " + bound(t));
+        assertTrue(load.removalRatio() <= 1, name + ": " + load);
+        return load;
+    }
+
+    static double feed(org.fresa.model.Move m) {
+        return m instanceof org.fresa.model.Move.Linear l
+                ? l.feedMmPerMin()
+                : m instanceof org.fresa.model.Move.Circular c ? c.feedMmPerMin() : 0;
+    }
+
+    static double bound(PocketTechnology t) {
+        return Engagement.angleDeg(1.1 * t.cutFraction() * t.toolDiameterMm(), t.radiusMm());
+    }
+
     private static void check(String name, List<Contour> p, PocketTechnology t, Path dir) throws Exception {
-        AdaptivePocket.Plan plan = AdaptivePocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT);
+        check(name, p, t, AdaptivePocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT), dir);
+    }
+
+    static void check(String name, List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan, Path dir)
+            throws Exception {
         Geometry wall = RegionPocketTest.region(p);
         Geometry reachable = wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32);
         PocketCleanUpTest.Verdict v = PocketCleanUpTest.verdict(
@@ -125,40 +182,30 @@ class AdaptivePocketTest {
                 t.radiusMm(),
                 wall,
                 reachable);
-        List<Contour> boundary = RegionOffsetter.oriented(p.get(0), p.subList(1, p.size()));
         Engagement adaptive = engagement(p, t, plan);
-        ToolpathSection o = RegionPocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT)
-                .toolpath()
-                .sections()
-                .get(0);
-        Engagement offset = Engagement.of(boundary, t.radiusMm(), o.start(), o.moves(), t.finishFeedMmPerMin());
-        double stepover = t.cutFraction() * t.toolDiameterMm();
-        double bound = bound(t);
+        Load load = load(p, t, plan);
         System.out.printf(
                 Locale.ROOT,
-                "%s D%.0f cut %.2f: %d walks, uncut %.4f mm2, gouge %.4f mm; engagement (bound %.1f deg) adaptive max"
-                        + " %.1f mean %.1f, offset max %.1f mean %.1f; finishing pass max %.1f / %.1f%n",
+                "%s D%.0f cut %.2f: %d walks, uncut %.4f mm2, gouge %.4f mm; engagement (bound %.1f deg) at the"
+                        + " programmed feed max %.1f, mean %.1f; %d moves slowed (%.1f mm, down to %.2f of the feed),"
+                        + " removal ratio %.3f%n",
                 name,
                 t.toolDiameterMm(),
                 t.cutFraction(),
                 plan.walks(),
                 v.uncutMm2(),
                 v.gougeMm(),
-                bound,
-                adaptive.maxDeg(),
+                bound(t),
+                load.fullFeedMaxDeg(),
                 adaptive.meanDeg(),
-                offset.maxDeg(),
-                offset.meanDeg(),
-                adaptive.finishingMaxDeg(),
-                offset.finishingMaxDeg());
+                plan.slowed().moves(),
+                plan.slowed().lengthMm(),
+                plan.slowed().lowestFactor(),
+                load.removalRatio());
         assertTrue(v.uncutMm2() < PocketCleanUpTest.UNCUT_MM2, name + " leaves " + v.uncutMm2() + " mm2");
         assertTrue(v.gougeMm() < PocketCleanUpTest.GOUGE_MM, name + " cuts the wall by " + v.gougeMm() + " mm");
-        // the offset passes slot their first loop: the measure sees it
-        assertTrue(offset.maxDeg() > 170, name + ": offset " + offset.maxDeg());
-        // the walks and the pre-finish pass hold the bound, and in the mean the stepover's angle
-        assertTrue(
-                adaptive.maxDeg() <= bound + MARGIN_DEG,
-                name + ": adaptive " + adaptive.maxDeg() + " deg at " + adaptive.worstAt());
+        holds(name, p, t, plan);
+        double stepover = t.cutFraction() * t.toolDiameterMm();
         assertTrue(
                 adaptive.meanDeg() < Engagement.angleDeg(stepover, t.radiusMm()),
                 name + ": adaptive mean " + adaptive.meanDeg());
