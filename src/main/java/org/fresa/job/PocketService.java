@@ -494,16 +494,31 @@ public final class PocketService {
     }
 
     /**
-     * Why {@code --strategy adaptive} is refused: the walks of {@link org.fresa.pocket.AdaptivePocket}
-     * clear the floor without leaving material or cutting a wall, and hold the engagement on the
-     * thesis contours, but on random pockets with islands they still meet more than the stepover
-     * allows along the walls, and the planner refuses 12 of 30 (docs/pocket-strategies.md,
-     * "Adaptive"): a program that claims a constant engagement it does not hold is not written.
+     * The warnings of a strategy's plan, as {@code fresa pocket}, Job > Run and the Pocket tab give
+     * them: a rest tool with nothing to cut, and the moves of adaptive clearing fed slower where the
+     * walks cannot hold the stepover.
      */
-    public static final String ADAPTIVE_NOT_READY = "adaptive clearing is not available yet: its walks hold the"
-            + " engagement on the thesis contours but not yet on every pocket with islands (measured up to 7"
-            + " degrees over the angle allowed along the walls, and 12 of 30 such pockets refused for channels"
-            + " too narrow to enter); use --strategy offset or zigzag";
+    public static List<String> strategyWarnings(StrategyPocket.Planned planned) {
+        List<String> out = new ArrayList<>();
+        planned.slowed()
+                .filter(org.fresa.pocket.EngagementFeed.Slowed::any)
+                .ifPresent(w -> out.add(String.format(
+                        Locale.ROOT,
+                        "warning: adaptive: %d cut(s) of the contour passes, %.1f mm a layer, take what the walks cannot"
+                                + " reach at the stepover (a channel or corner narrower than the tool's centre turns in, or"
+                                + " a face too small for an entry), up to %.0f deg of the tool at X%.3f Y%.3f against %.0f;"
+                                + " their feed drops there to as little as %.2f of the programmed feed, so that they remove"
+                                + " no more per minute than the stepover's cut",
+                        w.moves(),
+                        w.lengthMm(),
+                        w.worstDeg(),
+                        w.worstAt().x(),
+                        w.worstAt().y(),
+                        w.boundDeg(),
+                        w.lowestFactor())));
+        planned.rest().filter(r -> !r.cuts()).ifPresent(r -> out.add(REST_TOOL_IDLE));
+        return out;
+    }
 
     /**
      * The toolpath of the settings' strategy when it is not the thesis's engine's: zigzag lines
@@ -529,9 +544,6 @@ public final class PocketService {
     public static StrategyPocket.Planned strategyPlan(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
         PocketStrategy st = s.strategy();
-        if (st.adaptive()) {
-            throw new CamInputException("--strategy", ADAPTIVE_NOT_READY);
-        }
         if (s.post().sevenM()) {
             String option = !st.offset()
                     ? "--strategy"
@@ -660,7 +672,7 @@ public final class PocketService {
                 "depth_passes",
                 technology(s, s.zBottomMm() + st.stockToLeaveMm()).depthPasses());
         summary.put("path_length_mm", PocketToolpath.lengthMm(path));
-        List<String> problems = new ArrayList<>();
+        List<String> problems = strategyWarnings(planned);
         if (planned.rest().isPresent()) {
             org.fresa.pocket.RestMachining.Plan rest = planned.rest().get();
             summary.put("rest_tool_diameter_mm", st.restToolDiameterMm());
@@ -668,10 +680,12 @@ public final class PocketService {
             summary.put("rest_area_mm2", rest.restAreaMm2());
             summary.put("rest_pieces", rest.pieces().size());
             summary.put("rest_pieces_length_mm", rest.piecesLengthMm());
-            if (!rest.cuts()) {
-                problems.add(REST_TOOL_IDLE);
-            }
         }
+        planned.slowed().ifPresent(w -> {
+            summary.put("slowed_cuts", w.moves());
+            summary.put("slowed_length_mm", w.lengthMm());
+            summary.put("lowest_feed_factor", w.lowestFactor());
+        });
         summary.put("out", outFile.toString());
         return new TaskOutcome(0, problems, summary, List.of(outFile));
     }

@@ -690,6 +690,95 @@ public final class AdaptivePocket {
             return dir;
         }
 
+        /** The breadth-first search's parents, -2 where not reached (reset after each search). */
+        private int[] parent;
+
+        private float[] memo;
+        private int[] memoStamp;
+        private int stamp;
+
+        /**
+         * The squared distance (cells) from a cell to the nearest uncut material cell, as far as the
+         * frontier's reach (beyond it, infinity: the walks only ask whether a cell is within it). A
+         * link's search asks about the cells near the tool: they are found in the raster's rows
+         * about the cell. A search that asks about more than an eighth of the raster, and the scans
+         * of every cell for a new entry, take the whole distance transform instead.
+         */
+        private final class UncutDistance {
+            private final int reach;
+            private float[] full;
+            private long asked;
+
+            UncutDistance(double frontierSq) {
+                this.reach = (int) Math.ceil(Math.sqrt(frontierSq));
+                if (memo == null) {
+                    memo = new float[nx * ny];
+                    memoStamp = new int[nx * ny];
+                }
+                stamp++;
+            }
+
+            float sq(int i) {
+                if (full != null) {
+                    return full[i];
+                }
+                if (memoStamp[i] == stamp) {
+                    return memo[i];
+                }
+                if (++asked > (long) nx * ny / 8) {
+                    full = toUncut();
+                    return full[i];
+                }
+                float d = near(i);
+                memo[i] = d;
+                memoStamp[i] = stamp;
+                return d;
+            }
+
+            /** The whole transform, for scans of every cell. */
+            float[] all() {
+                if (full == null) {
+                    full = toUncut();
+                }
+                return full;
+            }
+
+            private float near(int idx) {
+                int ci = idx % nx;
+                int cj = idx / nx;
+                long best = Long.MAX_VALUE;
+                for (int dj = -reach; dj <= reach; dj++) {
+                    int j = cj + dj;
+                    if (j < 0 || j >= ny) {
+                        continue;
+                    }
+                    long dj2 = (long) dj * dj;
+                    if (dj2 >= best) {
+                        continue;
+                    }
+                    int from = j * nx + Math.max(0, ci - reach);
+                    int to = j * nx + Math.min(nx - 1, ci + reach) + 1;
+                    int centre = j * nx + ci;
+                    for (int wi = from >>> 6; wi <= (to - 1) >>> 6; wi++) {
+                        long m = material[wi] & ~cut[wi];
+                        if (wi == from >>> 6) {
+                            m &= -1L << (from & 63);
+                        }
+                        if (wi == (to - 1) >>> 6 && (to & 63) != 0) {
+                            m &= (1L << (to & 63)) - 1;
+                        }
+                        while (m != 0) {
+                            int bit = (wi << 6) + Long.numberOfTrailingZeros(m);
+                            m &= m - 1;
+                            long di = bit - centre;
+                            best = Math.min(best, di * di + dj2);
+                        }
+                    }
+                }
+                return best <= (long) reach * reach ? best : Float.POSITIVE_INFINITY;
+            }
+        }
+
         /** The squared distance (cells) from each cell to the nearest uncut material cell. */
         private float[] toUncut() {
             return edt(nx, ny, i -> (material[i >>> 6] & ~cut[i >>> 6] & (1L << i)) != 0);
@@ -708,7 +797,7 @@ public final class AdaptivePocket {
             double clearedSq = (reachCells + 1) * (reachCells + 1);
             double frontierSq = (reachCells + 1 + 0.5 * stepMm / h) * (reachCells + 1 + 0.5 * stepMm / h);
             while (true) {
-                float[] du = toUncut();
+                UncutDistance du = new UncutDistance(frontierSq);
                 int start = -1;
                 List<Vec2> link = null;
                 if (at != null) {
@@ -784,12 +873,13 @@ public final class AdaptivePocket {
         private record Entry(Vec2 centre, double radius) {}
 
         /** A helix into uncut floor: where the faces leave most room, among places with uncut floor within reach. */
-        private Entry newEntry(float[] du, double clearedSq) {
+        private Entry newEntry(UncutDistance du, double clearedSq) {
+            du.all();
             int n = nx * ny;
             Integer[] order = new Integer[0];
             List<Integer> cand = new ArrayList<>();
             for (int i = 0; i < n; i++) {
-                if (isStrict(i) && !dead[i] && du[i] < clearedSq) {
+                if (isStrict(i) && !dead[i] && du.sq(i) < clearedSq) {
                     cand.add(i);
                 }
             }
@@ -842,25 +932,28 @@ public final class AdaptivePocket {
             return wn != 0 ? d : 0;
         }
 
-        private boolean cleared(float[] du, int i, double clearedSq) {
-            return toInside[i] == 0 && du[i] >= clearedSq;
+        private boolean cleared(UncutDistance du, int i, double clearedSq) {
+            return toInside[i] == 0 && du.sq(i) >= clearedSq;
         }
 
-        private boolean frontier(float[] du, int i, double clearedSq, double frontierSq) {
-            return cleared(du, i, clearedSq) && !dead[i] && du[i] <= frontierSq;
+        private boolean frontier(UncutDistance du, int i, double clearedSq, double frontierSq) {
+            return cleared(du, i, clearedSq) && !dead[i] && du.sq(i) <= frontierSq;
         }
 
         /** The positions from at to the nearest frontier along cleared cells (string-pulled), or null. */
-        private List<Vec2> linkTo(Vec2 at, float[] du, double clearedSq, double frontierSq) {
+        private List<Vec2> linkTo(Vec2 at, UncutDistance du, double clearedSq, double frontierSq) {
             int s = cellOf(at);
             if (s < 0) {
                 return null;
             }
-            int n = nx * ny;
-            int[] parent = new int[n];
-            Arrays.fill(parent, -2);
+            if (parent == null) {
+                parent = new int[nx * ny];
+                Arrays.fill(parent, -2);
+            }
             ArrayDeque<Integer> q = new ArrayDeque<>();
+            List<Integer> seen = new ArrayList<>();
             parent[s] = -1;
+            seen.add(s);
             q.add(s);
             int found = -1;
             while (!q.isEmpty()) {
@@ -881,17 +974,21 @@ public final class AdaptivePocket {
                         int k = j * nx + i;
                         if (parent[k] == -2 && cleared(du, k, clearedSq)) {
                             parent[k] = c;
+                            seen.add(k);
                             q.add(k);
                         }
                     }
                 }
             }
+            List<Vec2> path = new ArrayList<>();
+            for (int c = found; found >= 0 && c != s && c >= 0; c = parent[c]) {
+                path.add(centre(c));
+            }
+            for (int c : seen) {
+                parent[c] = -2;
+            }
             if (found < 0) {
                 return null;
-            }
-            List<Vec2> path = new ArrayList<>();
-            for (int c = found; c != s && c >= 0; c = parent[c]) {
-                path.add(centre(c));
             }
             path.add(at);
             java.util.Collections.reverse(path);
@@ -910,7 +1007,7 @@ public final class AdaptivePocket {
             return out;
         }
 
-        private boolean straightCleared(Vec2 a, Vec2 b, float[] du, double clearedSq) {
+        private boolean straightCleared(Vec2 a, Vec2 b, UncutDistance du, double clearedSq) {
             int k = Math.max(1, (int) Math.ceil(a.distance(b) / (h / 3)));
             for (int t = 1; t < k; t++) {
                 int c = cellOf(a.interpolate(b, (double) t / k));
@@ -922,7 +1019,8 @@ public final class AdaptivePocket {
         }
 
         /** The frontier cell nearest p anywhere (or the first when p is null), or -1. */
-        private int nearestFrontier(Vec2 p, float[] du, double clearedSq, double frontierSq) {
+        private int nearestFrontier(Vec2 p, UncutDistance du, double clearedSq, double frontierSq) {
+            du.all();
             int best = -1;
             double bestD = Double.POSITIVE_INFINITY;
             for (int i = 0; i < nx * ny; i++) {

@@ -22,7 +22,7 @@ import org.fresa.model.ToolpathSection;
  *     more than the bound, the fraction of its feed it is written with
  * @param slowed what the factors amount to
  */
-record EngagementFeed(Map<Object, Double> factors, Slowed slowed) {
+public record EngagementFeed(Map<Object, Double> factors, Slowed slowed) {
 
     /** The slowest a move is fed, as a fraction of its feed: a slot of the least stepover. */
     static final double LEAST_FACTOR = 0.05;
@@ -96,7 +96,7 @@ record EngagementFeed(Map<Object, Double> factors, Slowed slowed) {
         return new EngagementFeed(factors, new Slowed(factors.size(), length, worst[0], worstAt[0], boundDeg, lowest));
     }
 
-    EngagementFeed {
+    public EngagementFeed {
         // by identity: two cuts may hold equal curves, each judged where it is cut
         factors = java.util.Collections.unmodifiableMap(new IdentityHashMap<>(factors));
     }

@@ -42,18 +42,20 @@ public final class StrategyPocket {
     }
 
     /**
-     * The toolpath and, with a rest tool, its plan.
+     * A planned pocket.
      *
      * @param toolpath the first tool's section, then the rest tool's when it has something to cut
      * @param rest the rest tool's plan, empty without a rest tool
-     */
-    /**
-     * A planned pocket.
-     *
      * @param passes the first tool's cuts at one depth: the offset loops, or the zigzag's chains of
-     *     lines and its contour passes
+     *     lines and its contour passes, or the adaptive walks' chains and the contour passes
+     * @param slowed for adaptive clearing, the moves fed slower where the geometry forces a wider
+     *     cut; empty for the other strategies
      */
-    public record Planned(Toolpath toolpath, java.util.Optional<RestMachining.Plan> rest, int passes) {}
+    public record Planned(
+            Toolpath toolpath,
+            java.util.Optional<RestMachining.Plan> rest,
+            int passes,
+            java.util.Optional<EngagementFeed.Slowed> slowed) {}
 
     /**
      * Plans the pocket as {@link #toolpath}, the rest tool too.
@@ -102,10 +104,12 @@ public final class StrategyPocket {
         }
         Toolpath first;
         int passes;
+        java.util.Optional<EngagementFeed.Slowed> slowed = java.util.Optional.empty();
         if (strategy.adaptive()) {
             AdaptivePocket.Plan a = AdaptivePocket.plan(boundary, t, climb, entry);
             first = a.toolpath();
             passes = a.order().size();
+            slowed = java.util.Optional.of(a.slowed());
         } else if (strategy.zigzag()) {
             ZigzagPocket.Plan z = ZigzagPocket.plan(boundary, t, strategy.angleDeg(), climb, entry);
             first = z.toolpath();
@@ -117,7 +121,7 @@ public final class StrategyPocket {
             passes = r.order().size();
         }
         if (!strategy.restTool()) {
-            return new Planned(first, java.util.Optional.empty(), passes);
+            return new Planned(first, java.util.Optional.empty(), passes, slowed);
         }
         RestMachining.Plan rest = RestMachining.plan(
                 boundary,
@@ -127,10 +131,10 @@ public final class StrategyPocket {
                 climb,
                 entry);
         if (rest.section().isEmpty()) {
-            return new Planned(first, java.util.Optional.of(rest), passes);
+            return new Planned(first, java.util.Optional.of(rest), passes, slowed);
         }
         List<org.fresa.model.ToolpathSection> sections = new java.util.ArrayList<>(first.sections());
         sections.add(rest.section().get());
-        return new Planned(new Toolpath(sections), java.util.Optional.of(rest), passes);
+        return new Planned(new Toolpath(sections), java.util.Optional.of(rest), passes, slowed);
     }
 }

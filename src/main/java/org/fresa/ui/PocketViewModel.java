@@ -126,15 +126,9 @@ public final class PocketViewModel {
     public static final String REST_TOOL = "pocket-rest-tool";
     /** The rest tool's label. */
     public static final String REST_TOOL_LABEL = "Rest tool (mm)";
-    /**
-     * The strategies the tab offers, as the job and the command line name them: adaptive is left
-     * out while it is refused ({@link PocketService#ADAPTIVE_NOT_READY}).
-     */
+    /** The strategies the tab offers, as the job and the command line name them. */
     public static final List<String> STRATEGIES = org.fresa.model.EnumWords.all(
-                    org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word)
-            .stream()
-            .filter(w -> !w.equals(org.fresa.pocket.PocketStrategy.Kind.ADAPTIVE.word()))
-            .toList();
+            org.fresa.pocket.PocketStrategy.Kind.class, org.fresa.pocket.PocketStrategy.Kind::word);
 
     public static final List<String> ORDERS = org.fresa.model.EnumWords.all(
             org.fresa.pocket.PocketStrategy.Order.class, org.fresa.pocket.PocketStrategy.Order::word);
@@ -570,19 +564,23 @@ public final class PocketViewModel {
                         contours.size() - 1,
                         ExactDecimal.of(st.stockToLeaveMm()),
                         String.format(Locale.ROOT, ", path %.1f mm", PocketToolpath.lengthMm(path)));
-                if (planned.rest().isPresent()) {
+                if (planned.rest().isPresent() && planned.rest().get().cuts()) {
                     org.fresa.pocket.RestMachining.Plan rest = planned.rest().get();
-                    report += rest.cuts()
-                            ? String.format(
-                                    Locale.ROOT,
-                                    "rest tool T2 D%s at %.0f rpm: %.2f mm2 of rest in %d piece(s), %.1f mm a layer%n",
-                                    ExactDecimal.of(st.restToolDiameterMm()),
-                                    rest.technology().spindleRpm(),
-                                    rest.restAreaMm2(),
-                                    rest.pieces().size(),
-                                    rest.piecesLengthMm())
-                            : PocketService.REST_TOOL_IDLE + "\n";
+                    report += String.format(
+                            Locale.ROOT,
+                            "rest tool T2 D%s at %.0f rpm: %.2f mm2 of rest in %d piece(s), %.1f mm a layer%n",
+                            ExactDecimal.of(st.restToolDiameterMm()),
+                            rest.technology().spindleRpm(),
+                            rest.restAreaMm2(),
+                            rest.pieces().size(),
+                            rest.piecesLengthMm());
                 }
+                // the warnings fresa pocket and Job > Run give for this plan, above its sizes
+                StringBuilder told = new StringBuilder();
+                for (String w : PocketService.strategyWarnings(planned)) {
+                    told.append(w).append('\n');
+                }
+                report = told + report;
                 return new Outcome(
                         Optional.of(Result.checked(
                                 scene, report, PocketService.toolpathProgram(path, settings.post(), name), checked)),

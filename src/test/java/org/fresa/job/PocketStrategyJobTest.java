@@ -57,7 +57,8 @@ class PocketStrategyJobTest {
             new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 37.5, 0.25, PocketStrategy.Order.INSIDE_OUT),
             new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0.5, PocketStrategy.Order.OUTSIDE_IN),
             new PocketStrategy(PocketStrategy.Kind.ZIGZAG, -180, 0, PocketStrategy.Order.INSIDE_OUT),
-            new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0, PocketStrategy.Order.INSIDE_OUT, 2.5)
+            new PocketStrategy(PocketStrategy.Kind.OFFSET, 0, 0, PocketStrategy.Order.INSIDE_OUT, 2.5),
+            new PocketStrategy(PocketStrategy.Kind.ADAPTIVE, 0, 0.3, PocketStrategy.Order.INSIDE_OUT)
         }) {
             Job job = Job.empty(JobTask.POCKET).withPocket(settings(contour, st));
             Path file = dir.resolve("job.xml");
@@ -107,11 +108,14 @@ class PocketStrategyJobTest {
         }
     }
 
-    @Test
-    void runningTheSavedJobWritesThePocketCommandsProgram() throws Exception {
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.EnumSource(
+            value = PocketStrategy.Kind.class,
+            names = {"ZIGZAG", "ADAPTIVE"})
+    void runningTheSavedJobWritesThePocketCommandsProgram(PocketStrategy.Kind kind) throws Exception {
         PocketSettings s = settings(
                 Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
-                new PocketStrategy(PocketStrategy.Kind.ZIGZAG, 30, 0.2, PocketStrategy.Order.INSIDE_OUT));
+                new PocketStrategy(kind, 30, 0.2, PocketStrategy.Order.INSIDE_OUT));
         Path direct = dir.resolve("direct.ngc");
         assertEquals(0, PocketService.run(s, direct, ProgressMonitor.NONE).exitStatus());
         Path file = dir.resolve("job.xml");

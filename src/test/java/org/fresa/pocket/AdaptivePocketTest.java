@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Random;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Tolerance;
 import org.fresa.geom.Vec2;
@@ -15,6 +16,8 @@ import org.fresa.post.Rs274;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.locationtech.jts.geom.Geometry;
 
 /**
@@ -35,23 +38,54 @@ class AdaptivePocketTest {
      */
     static final double MARGIN_DEG = 3;
 
-    @Test
+    /** How many random pockets the random test plans (the system property fresa.adaptive.pockets, 20 unless set). */
+    static final int RANDOM_POCKETS = Integer.getInteger("fresa.adaptive.pockets", 20);
+
+    @ParameterizedTest
+    @ValueSource(
+            strings = {"examplepart", "cavity01", "cavity02", "cavity03", "cavity04", "cavity05", "cavity06", "cavity07"
+            })
     @InterpreterCheck
-    void theWalksLeaveNoFloorCutNoWallAndTakeNoFullWidthCut(@TempDir Path dir) throws Exception {
+    void theThesisContoursLeaveNoFloorCutNoWallAndHoldTheLoad(String name, @TempDir Path dir) throws Exception {
         assumeTrue(Rs274.available(), Rs274.whyNot());
-        for (String name : new String[] {"cavity01", "cavity05"}) {
-            check(name, List.of(RecognitionTest.sample(name + ".dad").outline()), PocketCoverageTest.tech(name), dir);
-        }
+        check(name, List.of(RecognitionTest.sample(name + ".dad").outline()), PocketCoverageTest.tech(name), dir);
     }
 
     @Test
-    void theWalksAndThePreFinishPassHoldTheEngagementAlongTheWallsAndInCorners() throws Exception {
-        for (String name : new String[] {"examplepart", "cavity05", "cavity06", "cavity07"}) {
-            List<Contour> p = List.of(RecognitionTest.sample(name + ".dad").outline());
-            PocketTechnology t = PocketCoverageTest.tech(name);
-            AdaptivePocket.Plan plan = AdaptivePocket.plan(p.get(0), List.of(), t, true, EntryRule.DEFAULT);
-            holds(name, p, t, plan);
+    @InterpreterCheck
+    void randomPocketsWithIslandsLeaveNoSliverNeverCutAWallAndHoldTheLoad(@TempDir Path dir) throws Exception {
+        assumeTrue(Rs274.available(), Rs274.whyNot());
+        // the random pockets of the zigzag and offset tests, in the same order
+        Random rnd = new Random(21);
+        int done = 0;
+        int[] byIslands = new int[4];
+        int slowed = 0;
+        for (int attempt = 0; done < RANDOM_POCKETS && attempt < 3 * RANDOM_POCKETS; attempt++) {
+            List<Contour> p = PocketCleanUpTest.pocket(rnd);
+            PocketTechnology t = PocketCleanUpTest.tech(rnd);
+            try {
+                RegionPocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT, true);
+            } catch (ToolTooLargeException | IllegalArgumentException e) {
+                continue;
+            }
+            // every pocket the offset passes plan, adaptive plans too
+            AdaptivePocket.Plan plan =
+                    AdaptivePocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT);
+            check(String.format(Locale.ROOT, "r%03d-i%d", done, p.size() - 1), p, t, plan, dir);
+            slowed += plan.slowed().any() ? 1 : 0;
+            byIslands[p.size() - 1]++;
+            done++;
         }
+        System.out.printf(
+                Locale.ROOT,
+                "adaptive random pockets %d (islands 0..3: %d %d %d %d), %d with slowed cuts%n",
+                done,
+                byIslands[0],
+                byIslands[1],
+                byIslands[2],
+                byIslands[3],
+                slowed);
+        assertEquals(RANDOM_POCKETS, done);
     }
 
     @Test

@@ -42,6 +42,8 @@ class PocketCleanUpTest {
     static final double UNCUT_MM2 = 0.05;
     static final double GOUGE_MM = 0.01;
     static final int POCKETS = 100;
+    /** The most floor moves buffered at once by {@link #verdict}. */
+    static final int SWEPT_RUN = 100;
 
     /** A random pocket: a star-shaped outer contour some of whose edges bulge in or out as arcs, and islands. */
     static List<Contour> pocket(Random rnd) {
@@ -150,8 +152,22 @@ class PocketCleanUpTest {
             }
             cur = e;
         }
-        // one buffer of all the floor's moves together: far cheaper than a union of their buffers
-        Geometry swept = BufferOp.bufferOp(PocketCoverageTest.GF.buildGeometry(discs), r, bp);
+        // one buffer of all the floor's moves together: far cheaper than a union of their buffers;
+        // an adaptive program's thousands of short moves with a large tool are buffered in runs of
+        // consecutive moves and the runs' buffers united (one buffer of them all needs over 2 GB)
+        Geometry swept;
+        if (discs.size() <= SWEPT_RUN) {
+            swept = BufferOp.bufferOp(PocketCoverageTest.GF.buildGeometry(discs), r, bp);
+        } else {
+            List<Geometry> runs = new ArrayList<>();
+            for (int i = 0; i < discs.size(); i += SWEPT_RUN) {
+                runs.add(BufferOp.bufferOp(
+                        PocketCoverageTest.GF.buildGeometry(discs.subList(i, Math.min(discs.size(), i + SWEPT_RUN))),
+                        r,
+                        bp));
+            }
+            swept = org.locationtech.jts.operation.union.UnaryUnionOp.union(runs);
+        }
         return new Verdict(reachable.buffer(-GOUGE_MM, 32).difference(swept).getArea(), gouge);
     }
 

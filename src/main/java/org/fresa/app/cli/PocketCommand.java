@@ -94,10 +94,12 @@ final class PocketCommand extends CliCommand {
 
     @Option(
             names = "--strategy",
-            paramLabel = "offset|zigzag",
-            description = "how the floor is cleared: passes parallel to the walls (offset), or parallel lines at"
-                    + " --angle then the contour passes (zigzag, G-code and APT posts only); adaptive is refused"
-                    + " (exit 2) until it holds its engagement everywhere; default ${DEFAULT-VALUE}")
+            paramLabel = "offset|zigzag|adaptive",
+            description = "how the floor is cleared: passes parallel to the walls (offset), parallel lines at"
+                    + " --angle then the contour passes (zigzag), or walks that hold the tool's engagement at the"
+                    + " stepover then the contour passes (adaptive; where the geometry forces a wider cut the feed"
+                    + " drops in proportion); zigzag and adaptive: G-code and APT posts only; default"
+                    + " ${DEFAULT-VALUE}")
     PocketStrategy.Kind strategy = DEFAULTS.strategy().kind();
 
     @Option(
