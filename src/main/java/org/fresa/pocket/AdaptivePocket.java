@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import org.fresa.geom.Arc2;
 import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
@@ -199,12 +198,12 @@ public final class AdaptivePocket {
                 order.stream().mapToLong(c -> 3L * c.curves().size() + 4).sum());
         List<Contour> room = inner.isEmpty() ? finishing : inner;
         List<Object> owners = new ArrayList<>();
-        Toolpath path = toolpath(order, finishing, room, tech, entry, climb, Map.of(), owners);
+        Toolpath path = toolpath(order, finishing, room, tech, entry, climb, EngagementFeed.NONE, owners);
         double stepover = Math.min(1, tech.cutFraction()) * tech.toolDiameterMm();
         EngagementFeed feed =
                 EngagementFeed.of(boundary, tech, stepover, path.sections().get(0), owners);
-        if (!feed.factors().isEmpty()) {
-            path = toolpath(order, finishing, room, tech, entry, climb, feed.factors(), null);
+        if (feed.slowed().any()) {
+            path = toolpath(order, finishing, room, tech, entry, climb, feed, null);
         }
         return new Plan(finishing, walks, entries, cell, order, path, feed.slowed());
     }
@@ -797,6 +796,10 @@ public final class AdaptivePocket {
             double clearedSq = (reachCells + 1) * (reachCells + 1);
             double frontierSq = (reachCells + 1 + 0.5 * stepMm / h) * (reachCells + 1 + 0.5 * stepMm / h);
             while (true) {
+                if (Thread.currentThread().isInterrupted()) {
+                    // the window's Cancel: the walks stop at their next start
+                    throw new java.util.concurrent.CancellationException("adaptive clearing cancelled");
+                }
                 UncutDistance du = new UncutDistance(frontierSq);
                 int start = -1;
                 List<Vec2> link = null;
@@ -1203,7 +1206,7 @@ public final class AdaptivePocket {
             PocketTechnology t,
             EntryRule rule,
             boolean climb,
-            Map<Object, Double> slow,
+            EngagementFeed slow,
             List<Object> owners)
             throws ToolTooLargeException {
         double safe = t.zTopMm() + CLEARANCE_MM;
@@ -1243,7 +1246,8 @@ public final class AdaptivePocket {
                     // the cut goes on from where the last ended
                 } else if (cursor != null && cleared.clearedAlong(cursor, s, List.of())) {
                     if (cursor.distance(s) >= MIN_MOVE_MM) {
-                        moves.add(new Move.Linear(at(s, z), EngagementFeed.feed(t.feedMmPerMin(), slow.get(cut))));
+                        moves.add(
+                                new Move.Linear(at(s, z), EngagementFeed.feed(t.feedMmPerMin(), slow.linkFactor(cut))));
                         own(owners, j, moves, cut);
                     }
                 } else {
@@ -1258,7 +1262,9 @@ public final class AdaptivePocket {
                 own(owners, j, moves, null);
                 for (Curve2 c : cut.curves()) {
                     if (c.length() >= MIN_MOVE_MM) {
-                        RegionPocket.emit(moves, c, z, z, EngagementFeed.feed(feed, slow.get(c)));
+                        for (EngagementFeed.Piece piece : slow.pieces(c)) {
+                            RegionPocket.emit(moves, piece.curve(), z, z, EngagementFeed.feed(feed, piece.factor()));
+                        }
                         own(owners, j, moves, c);
                     }
                 }

@@ -104,7 +104,7 @@ final class PocketTab extends PlotTab {
         centreCutting.addActionListener(e -> fieldsChanged());
         form.add(new JLabel());
         form.add(centreCutting);
-        // the clearing strategy: offset or zigzag (G-code and APT posts), each label a keyboard mnemonic
+        // the clearing strategy: offset, zigzag or adaptive (G-code and APT posts), each label a keyboard mnemonic
         strategy.setName(PocketViewModel.STRATEGY);
         strategy.addActionListener(e -> fieldsChanged());
         row("Strategy", 'y', strategy);

@@ -121,7 +121,8 @@ class AdaptivePocketTest {
                         .anyMatch(m -> feed(m) == Math.floor(300 * 1.1 * 0.4)),
                 "no move at 132 mm/min");
         holds("channel", List.of(outer), t, plan);
-        check("channel", List.of(outer), t, plan, dir);
+        // a slot throughout: its mean engagement is a slot's, not the stepover's
+        verdict("channel", List.of(outer), t, plan, dir);
     }
 
     @Test
@@ -205,7 +206,18 @@ class AdaptivePocketTest {
         check(name, p, t, AdaptivePocket.plan(p.get(0), p.subList(1, p.size()), t, true, EntryRule.DEFAULT), dir);
     }
 
+    /** The verdict and the load, and the mean engagement under the stepover's angle. */
     static void check(String name, List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan, Path dir)
+            throws Exception {
+        Engagement adaptive = verdict(name, p, t, plan, dir);
+        double stepover = t.cutFraction() * t.toolDiameterMm();
+        assertTrue(
+                adaptive.meanDeg() < Engagement.angleDeg(stepover, t.radiusMm()),
+                name + ": adaptive mean " + adaptive.meanDeg());
+    }
+
+    /** No floor left, no wall cut, the load held; the engagement measured. */
+    static Engagement verdict(String name, List<Contour> p, PocketTechnology t, AdaptivePocket.Plan plan, Path dir)
             throws Exception {
         Geometry wall = RegionPocketTest.region(p);
         Geometry reachable = wall.buffer(-t.radiusMm(), 32).buffer(t.radiusMm(), 32);
@@ -239,9 +251,6 @@ class AdaptivePocketTest {
         assertTrue(v.uncutMm2() < PocketCleanUpTest.UNCUT_MM2, name + " leaves " + v.uncutMm2() + " mm2");
         assertTrue(v.gougeMm() < PocketCleanUpTest.GOUGE_MM, name + " cuts the wall by " + v.gougeMm() + " mm");
         holds(name, p, t, plan);
-        double stepover = t.cutFraction() * t.toolDiameterMm();
-        assertTrue(
-                adaptive.meanDeg() < Engagement.angleDeg(stepover, t.radiusMm()),
-                name + ": adaptive mean " + adaptive.meanDeg());
+        return adaptive;
     }
 }
