@@ -554,6 +554,15 @@ public final class PocketViewModel {
                 PlotScene scene = PlotScene.empty("pocket")
                         .with(new PlotScene.Layer("contour and islands", PlotScene.Style.OUTLINE, walls))
                         .withToolpathByTool(path);
+                if (planned.slowed()
+                        .filter(org.fresa.pocket.EngagementFeed.Slowed::any)
+                        .isPresent()) {
+                    // where adaptive clearing drops its feed: the planner looks there first
+                    scene = scene.with(new PlotScene.Layer(
+                            "slowed feed",
+                            PlotScene.Style.WARNING,
+                            slowed(path.sections().get(0), settings.feedMmPerMin(), settings.finishFeedMmPerMin())));
+                }
                 org.fresa.pocket.PocketStrategy st = settings.strategy();
                 String report = String.format(
                         Locale.ROOT,
@@ -623,6 +632,32 @@ public final class PocketViewModel {
         } catch (ToolTooLargeException | IllegalArgumentException e) {
             return new Outcome(Optional.empty(), Optional.of(sentence(e.getMessage())));
         }
+    }
+
+    /** The level feed moves of a section at neither of its programmed feeds, as lines and arcs in the plane. */
+    static List<Curve2> slowed(org.fresa.model.ToolpathSection s, double feedMmPerMin, double finishFeedMmPerMin) {
+        List<Curve2> out = new ArrayList<>();
+        org.fresa.geom.Vec3 at = s.start();
+        for (org.fresa.model.Move m : s.moves()) {
+            double f = m instanceof org.fresa.model.Move.Linear l
+                    ? l.feedMmPerMin()
+                    : m instanceof org.fresa.model.Move.Circular c ? c.feedMmPerMin() : Double.NaN;
+            boolean level = Math.abs(m.end().z() - at.z()) < 1e-9;
+            if (level && !Double.isNaN(f) && f != feedMmPerMin && f != finishFeedMmPerMin) {
+                org.fresa.geom.Vec2 a = at.xy();
+                org.fresa.geom.Vec2 b = m.end().xy();
+                if (m instanceof org.fresa.model.Move.Circular c
+                        && c.turns() == 0
+                        && c.normal().z() != 0) {
+                    out.add(new org.fresa.geom.Arc2(
+                            c.center().xy(), a, b, c.ccw() == (c.normal().z() > 0)));
+                } else if (!a.equals(b)) {
+                    out.add(new org.fresa.geom.Segment2(a, b));
+                }
+            }
+            at = m.end();
+        }
+        return out;
     }
 
     /** A refusal as the planner reads it: the problem, with the file it is in, never an option name. */

@@ -181,4 +181,59 @@ class PocketStrategyGuiTest extends WindowGuiTest {
         assertEquals(Files.readString(out), shown);
         assertTrue(shown.contains("T2 M6"));
     }
+
+    @Test
+    void adaptiveChosenInTheTabSaysWhatItSlowsAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
+        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
+                .withPocket(new PocketSettings(
+                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
+                        6,
+                        0.4,
+                        0.1,
+                        0,
+                        -4,
+                        2,
+                        3000,
+                        300,
+                        100,
+                        org.fresa.post.PocketPost.LINUXCNC,
+                        MillingDirection.CLIMB,
+                        EntryRule.Kind.AUTO,
+                        EntryRule.DEFAULT_ANGLE_DEG,
+                        false,
+                        Optional.empty(),
+                        PocketStrategy.DEFAULT))));
+        window.tabbedPane("tabs").selectTab("Pocket");
+        window.comboBox(PocketViewModel.STRATEGY).selectItem("adaptive");
+        window.button("pocket-compute").click();
+        Pause.pause(
+                new Condition("the program is computed") {
+                    @Override
+                    public boolean test() {
+                        return status().startsWith("done") || status().contains("refused");
+                    }
+                },
+                Timeout.timeout(120_000));
+        // the rooms' narrow doors are slotted at a lower feed, and the status line says so before Save
+        assertTrue(status().startsWith("done, with a warning: adaptive: "), status());
+        PocketSettings s = GuiActionRunner.execute(() -> model.job().pocket().orElseThrow());
+        assertEquals(PocketStrategy.Kind.ADAPTIVE, s.strategy().kind());
+        Path out = dir.resolve("p.ngc");
+        org.fresa.job.TaskOutcome o = PocketService.run(s, out, ProgressMonitor.NONE);
+        assertEquals(0, o.exitStatus());
+        assertTrue(status().endsWith(o.problems().get(0).substring("warning: ".length())), status());
+        String shown = GuiActionRunner.execute(() -> window.robot()
+                .finder()
+                .findByName(window.target(), "pocket-nc", javax.swing.text.JTextComponent.class, false)
+                .getText());
+        assertEquals(Files.readString(out), shown);
+        java.nio.file.Path shots = Path.of("target/screenshots");
+        Files.createDirectories(shots);
+        javax.imageio.ImageIO.write(
+                GuiActionRunner.execute(() -> TabScreenshotsTest.paint((javax.swing.JFrame) window.target())),
+                "png",
+                shots.resolve("pocket-adaptive.png").toFile());
+    }
 }

@@ -73,6 +73,40 @@ class PocketViewModelTest {
     }
 
     @Test
+    void adaptiveClearingShowsWhereItSlowsItsFeedInThePlotAndTheReport() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(new PocketSettings(
+                Path.of("samples/pocket/rooms-islands.contour"),
+                6,
+                0.4,
+                0.1,
+                0,
+                -4,
+                2,
+                3000,
+                300,
+                100,
+                org.fresa.post.PocketPost.LINUXCNC,
+                MillingDirection.CLIMB,
+                EntryRule.Kind.AUTO,
+                EntryRule.DEFAULT_ANGLE_DEG,
+                false,
+                Optional.empty(),
+                new PocketStrategy(PocketStrategy.Kind.ADAPTIVE, 0)));
+        m.compute();
+        PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
+        assertTrue(r.report().startsWith("warning: adaptive: "), r.report());
+        PlotScene.Layer slowed = r.scene().layers().stream()
+                .filter(l -> l.name().equals("slowed feed"))
+                .findFirst()
+                .orElseThrow();
+        assertEquals(PlotScene.Style.WARNING, slowed.style());
+        assertTrue(!slowed.curves().isEmpty());
+        // each slowed curve is a move of the program at a feed below the programmed 300 and 100 mm/min
+        assertTrue(r.nc().lines().anyMatch(l -> l.matches(".*F(?!300\\b|100\\b)\\d+.*")), "a slowed F word");
+    }
+
+    @Test
     void aContourWithIslandsShowsItsOffsetsAndTheLinuxCncProgram() {
         PocketViewModel m = new PocketViewModel();
         m.setSettings(new PocketSettings(
