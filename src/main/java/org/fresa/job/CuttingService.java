@@ -141,6 +141,10 @@ public final class CuttingService {
             CuttingSettings s, Path outFile, boolean toleranceInDrawingUnits, ProgressMonitor progress)
             throws CamInputException, IOException {
         Result r = compute(s, toleranceInDrawingUnits, progress);
+        if (r.plan().cuts().isEmpty()) {
+            // a program that cuts nothing is no partial result: nothing is written
+            return outcome(r, List.of());
+        }
         progress.progress(0.9, "writing and checking the program");
         String file = outFile.getFileName().toString();
         try {
@@ -156,6 +160,10 @@ public final class CuttingService {
             throws CamInputException, IOException {
         Result r = compute(s, progress);
         out.create();
+        if (r.plan().cuts().isEmpty()) {
+            // a program that cuts nothing is no partial result: the summary says why
+            return outcome(r, List.of(out.writeString("summary.json", Json.write(summary(r)))));
+        }
         String file = programFile(r);
         progress.progress(0.9, "writing and checking the program");
         Path p;

@@ -51,6 +51,16 @@ class CutCommandTest {
         assertEquals(0, r.status(), r.err());
     }
 
+    @Test
+    void aDrawingWithNoClosedContourWritesNoProgram() throws IOException {
+        // the square with its third line 5 mm short: one open chain
+        Run r = cut(square("5"));
+        assertAll(
+                () -> assertEquals(1, r.status(), r.err()),
+                () -> assertTrue(r.err().contains("nothing to cut: the drawing has no closed contour"), r.err()),
+                () -> assertFalse(Files.exists(dir.resolve("d.ngc"))));
+    }
+
     // the third LINE is named on line 34, its group 11 value is on line 44
     @ParameterizedTest(name = "end x ''{0}''")
     @CsvSource(textBlock = """
