@@ -355,7 +355,11 @@ final class SoleTab extends PlotTab {
         }
         vm.selectSize((String) sizes.getSelectedItem());
         vm.selectFoot((Foot) feet.getSelectedItem());
-        ctx.tasks().start("Tread of size " + vm.size(), pm -> vm.scene(), plot::show);
+        ctx.tasks().start("Tread of size " + vm.size(), pm -> new Shown(vm.scene(), vm.sizeProblem()), shown -> {
+            plot.show(shown.scene());
+            // what Generate would refuse of this size, before Generate
+            shown.problem().ifPresent(status::setText);
+        });
     }
 
     private void showBlock() {
@@ -445,4 +449,7 @@ final class SoleTab extends PlotTab {
             }
         }
     }
+
+    /** A size's plot and what Generate would refuse of it, found off the event thread. */
+    private record Shown(org.fresa.chart.PlotScene scene, Optional<String> problem) {}
 }

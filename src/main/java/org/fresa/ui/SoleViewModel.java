@@ -180,6 +180,25 @@ public final class SoleViewModel {
     }
 
     /**
+     * What Generate would refuse of the selected size, said as the size is shown: the job's cavity
+     * tool not smaller than an arc of the size's outline (its centre cannot follow that arc), as
+     * the run says it; empty when the size's cavity is milled or the job names no cavity tool.
+     */
+    public Optional<String> sizeProblem() {
+        if (plan.isEmpty() || plan.get().settings().cavityTool().isEmpty()) {
+            return Optional.empty();
+        }
+        SoleService.SolePlan p = plan.get();
+        org.fresa.sole.TreadTool t = p.tools().get(p.settings().cavityTool());
+        if (t == null) {
+            return Optional.empty();
+        }
+        GradedSize g = SoleService.graded(p, Double.parseDouble(size));
+        return org.fresa.sole.CavityToolRule.check(g.output().get(0), t.diameterMm())
+                .map(v -> "size " + g.name() + ": " + v.sentence() + " (Generate refuses this size)");
+    }
+
+    /**
      * The selected size's pair in the mould block, as the programs place it (machine frame): the
      * block's edges, the mirror line, both feet's outlines, treads and cavities; or an empty
      * scene saying why there is none.

@@ -69,6 +69,29 @@ class SoleViewModelTest {
     }
 
     @Test
+    void aCavityToolTooLargeForASizeIsSaidWhenTheSizeIsShown(@TempDir Path dir) throws Exception {
+        SoleViewModel vm = new SoleViewModel();
+        vm.load(JobXml.read(Path.of("samples/jobs/sole-men40.xml")));
+        assertTrue(vm.sizeProblem().isEmpty(), vm.sizeProblem().toString());
+        // a 55 mm cavity tool: the toe arc of size 40 (54.7 mm across at the base size, graded
+        // with the shrinkage) is too tight for its centre, as Generate says
+        String xml = java.nio.file.Files.readString(Path.of("samples/jobs/sole-men40.xml"))
+                .replace("../", Path.of("samples").toAbsolutePath() + "/")
+                .replace("cavityTool=\"em25\"", "cavityTool=\"em56\"")
+                .replace(
+                        "<tool id=\"em25\"",
+                        "<tool id=\"em56\" number=\"9\" diameterMm=\"56\" spindleRpm=\"1000\""
+                                + " feedMmPerMin=\"200\" plungeFeedMmPerMin=\"80\"/>\n    <tool id=\"em25\"");
+        Path job = java.nio.file.Files.writeString(dir.resolve("sole.xml"), xml);
+        vm.load(JobXml.read(job));
+        assertEquals("", vm.problem());
+        vm.selectSize("40");
+        String said = vm.sizeProblem().orElseThrow();
+        assertTrue(said.startsWith("size 40: the 56.000 mm cavity tool is not smaller than the outline's arc 8"), said);
+        assertTrue(said.endsWith("(Generate refuses this size)"), said);
+    }
+
+    @Test
     void aJobWithoutSoleSettingsSaysSo() {
         SoleViewModel vm = new SoleViewModel();
         vm.load(Job.empty(JobTask.SOLE));
