@@ -207,7 +207,7 @@ public final class AutoPlacement {
     }
 
     /** Each planned workingstep's id with its entity ({@code Pocket_RGH (#1234)}): ids repeat in a file. */
-    static List<String> names(ToolpathPlanner.Plan plan) {
+    public static List<String> names(ToolpathPlanner.Plan plan) {
         List<String> out = new ArrayList<>();
         for (ToolpathPlanner.PlannedStep s : plan.steps()) {
             out.add(s.label() + " (#" + s.workingstepInstanceId() + ")");

@@ -655,13 +655,18 @@ final class PositionTab implements ModuleTab {
                             org.fresa.model.Placement robotTable = r.robotTable();
                             String placed = "";
                             if (r.placing() == org.fresa.cell.TablePlacing.AUTO) {
-                                // a job that searches its placement is solved where fresa run solves it
+                                // a job that searches its placement is solved where fresa run solves it,
+                                // on the toolpath just planned (as fresa run's search plans it)
+                                if (planned.planning().planned() == 0) {
+                                    throw new org.fresa.model.CamInputException(
+                                            file.toString(), "no workingstep could be planned: nothing to place");
+                                }
                                 org.fresa.job.AutoPlacement.Outcome a = org.fresa.job.AutoPlacement.search(
-                                        file,
-                                        stepnc.get().choices(),
-                                        r.robot(),
+                                        planned.toolpath(),
+                                        planned.robot(),
                                         r.tablePiece(),
-                                        new org.fresa.cell.RobotTools.Choice(r.spindle(), r.toolLengthMm()),
+                                        planned.tcpByLabel(),
+                                        planned.names(),
                                         progress);
                                 if (!a.found()) {
                                     return Charted.refused(

@@ -219,6 +219,7 @@ final class PositionViewModel {
      * @param spindle the spindle nose in the flange frame (drawn with the tool)
      * @param robots the robot carrying each workingstep's TCP, one instance per TCP
      * @param planning what a run says of the planning (the tool frames' warnings, the planner's problems)
+     * @param names each section's name in a placement search (a workingstep's id with its entity)
      */
     record Planned(
             Robot robot,
@@ -227,7 +228,8 @@ final class PositionViewModel {
             org.fresa.check.Limits checkLimits,
             Transform3 spindle,
             java.util.function.Function<String, Robot> robots,
-            org.fresa.job.RobotService.Planning planning) {
+            org.fresa.job.RobotService.Planning planning,
+            List<String> names) {
 
         /** The request {@code fresa robot} makes of this plan at these placements. */
         RobotTrajectoryService.Request request(Placement robotTable, Placement tablePiece, List<String> formats) {
@@ -280,7 +282,8 @@ final class PositionViewModel {
                 limits,
                 tools.spindle(),
                 any.robotOfLabel(),
-                org.fresa.job.RobotService.Planning.of(tools, plan));
+                org.fresa.job.RobotService.Planning.of(tools, plan),
+                org.fresa.job.AutoPlacement.names(plan));
     }
 
     /**
