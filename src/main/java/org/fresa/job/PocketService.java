@@ -335,7 +335,7 @@ public final class PocketService {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
         if (!s.strategy().offset() || !s.strategy().asThesis()) {
-            return runStrategy(s, outFile);
+            return runStrategy(s, outFile, progress);
         }
         if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
@@ -543,6 +543,15 @@ public final class PocketService {
      */
     public static StrategyPocket.Planned strategyPlan(PocketSettings s)
             throws CamInputException, IOException, ToolTooLargeException {
+        return strategyPlan(s, ProgressMonitor.NONE);
+    }
+
+    /**
+     * {@link #strategyPlan(PocketSettings)}, telling how far adaptive clearing's walks are (the
+     * fraction of the floor they have cleared) and stopping when the user asks.
+     */
+    public static StrategyPocket.Planned strategyPlan(PocketSettings s, ProgressMonitor progress)
+            throws CamInputException, IOException, ToolTooLargeException {
         PocketStrategy st = s.strategy();
         if (s.post().sevenM()) {
             String option = !st.offset()
@@ -564,7 +573,17 @@ public final class PocketService {
         List<Contour> contours = strategyContours(s);
         try {
             return StrategyPocket.plan(
-                    contours.get(0), contours.subList(1, contours.size()), technology(s), st, s.climb(), entryRule(s));
+                    contours.get(0),
+                    contours.subList(1, contours.size()),
+                    technology(s),
+                    st,
+                    s.climb(),
+                    entryRule(s),
+                    f -> {
+                        progress.checkCancelled();
+                        progress.progress(
+                                f, String.format(Locale.ROOT, "adaptive walks: %.0f %% of the floor", 100 * f));
+                    });
         } catch (IllegalArgumentException e) {
             throw new CamInputException("--stock-to-leave", e.getMessage());
         }
@@ -629,10 +648,11 @@ public final class PocketService {
     }
 
     /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
-    static TaskOutcome runStrategy(PocketSettings s, Path outFile) throws CamInputException, IOException {
+    static TaskOutcome runStrategy(PocketSettings s, Path outFile, ProgressMonitor progress)
+            throws CamInputException, IOException {
         StrategyPocket.Planned planned;
         try {
-            planned = strategyPlan(s);
+            planned = strategyPlan(s, progress);
         } catch (ToolTooLargeException e) {
             return new TaskOutcome(1, List.of(e.getMessage()), Map.of(), List.of());
         }

@@ -152,6 +152,22 @@ public final class AdaptivePocket {
      */
     public static Plan plan(List<Contour> boundary, PocketTechnology tech, boolean climb, EntryRule entry)
             throws ToolTooLargeException {
+        return plan(boundary, tech, climb, entry, f -> {});
+    }
+
+    /**
+     * Plans the pocket, telling how far the walks are.
+     *
+     * @param progress told the fraction (0 to 1) of the floor the walks have cleared, now and then
+     * @throws ToolTooLargeException as {@link #plan(Contour, List, PocketTechnology, boolean, EntryRule)}
+     */
+    public static Plan plan(
+            List<Contour> boundary,
+            PocketTechnology tech,
+            boolean climb,
+            EntryRule entry,
+            java.util.function.DoubleConsumer progress)
+            throws ToolTooLargeException {
         double r = tech.radiusMm();
         double a = tech.finishFraction() * tech.toolDiameterMm();
         List<Contour> finishing = RegionOffsetter.inward(boundary, r, TOL);
@@ -174,7 +190,7 @@ public final class AdaptivePocket {
             double limit = Math.min(
                     Engagement.angleDeg(stepover, r), Engagement.angleDeg(1.1 * stepover, r) - ANGLE_MARGIN_DEG);
             Walker w = new Walker(inner, r, stepover, limit, climb);
-            w.run();
+            w.run(progress);
             walker = w;
             walks = w.walks;
             entries = w.chains.size();
@@ -783,7 +799,12 @@ public final class AdaptivePocket {
             return edt(nx, ny, i -> (material[i >>> 6] & ~cut[i >>> 6] & (1L << i)) != 0);
         }
 
-        void run() throws ToolTooLargeException {
+        void run(java.util.function.DoubleConsumer progress) throws ToolTooLargeException {
+            long floor = 0;
+            for (long m : material) {
+                floor += Long.bitCount(m);
+            }
+            long told = System.nanoTime();
             Vec2 at = null;
             Vec2 dir = Vec2.UNIT_X;
             List<Vec2> pts = null;
@@ -799,6 +820,14 @@ public final class AdaptivePocket {
                 if (Thread.currentThread().isInterrupted()) {
                     // the window's Cancel: the walks stop at their next start
                     throw new java.util.concurrent.CancellationException("adaptive clearing cancelled");
+                }
+                if (floor > 0 && System.nanoTime() - told > 200_000_000L) {
+                    long done = 0;
+                    for (int k = 0; k < material.length; k++) {
+                        done += Long.bitCount(material[k] & cut[k]);
+                    }
+                    progress.accept((double) done / floor);
+                    told = System.nanoTime();
                 }
                 UncutDistance du = new UncutDistance(frontierSq);
                 int start = -1;

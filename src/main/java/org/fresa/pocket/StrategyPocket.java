@@ -73,6 +73,25 @@ public final class StrategyPocket {
             boolean climb,
             EntryRule entry)
             throws ToolTooLargeException {
+        return plan(outer, islands, tech, strategy, climb, entry, f -> {});
+    }
+
+    /**
+     * As {@link #plan(Contour, List, PocketTechnology, PocketStrategy, boolean, EntryRule)}, telling
+     * how far adaptive clearing's walks are.
+     *
+     * @param progress told the fraction (0 to 1) of the floor adaptive clearing's walks have
+     *     cleared; the other strategies plan in a moment and tell nothing
+     */
+    public static Planned plan(
+            Contour outer,
+            List<Contour> islands,
+            PocketTechnology tech,
+            PocketStrategy strategy,
+            boolean climb,
+            EntryRule entry,
+            java.util.function.DoubleConsumer progress)
+            throws ToolTooLargeException {
         if (strategy.restTool() && !PocketStrategy.restToolFits(strategy.restToolDiameterMm(), tech.toolDiameterMm())) {
             throw new IllegalArgumentException("the rest tool (" + strategy.restToolDiameterMm()
                     + " mm) must be at least " + PocketStrategy.MIN_REST_TOOL_MM + " mm and smaller than the first ("
@@ -106,7 +125,7 @@ public final class StrategyPocket {
         int passes;
         java.util.Optional<EngagementFeed.Slowed> slowed = java.util.Optional.empty();
         if (strategy.adaptive()) {
-            AdaptivePocket.Plan a = AdaptivePocket.plan(boundary, t, climb, entry);
+            AdaptivePocket.Plan a = AdaptivePocket.plan(boundary, t, climb, entry, progress);
             first = a.toolpath();
             passes = a.order().size();
             slowed = java.util.Optional.of(a.slowed());

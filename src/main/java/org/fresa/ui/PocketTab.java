@@ -417,7 +417,7 @@ final class PocketTab extends PlotTab {
                 .start(
                         "Pocket",
                         progress -> {
-                            PocketViewModel.Outcome o = PocketViewModel.outcome(settings);
+                            PocketViewModel.Outcome o = PocketViewModel.outcome(settings, progress);
                             return new Shown(
                                     o,
                                     o.result()

@@ -526,7 +526,12 @@ public final class PocketViewModel {
      * planner sees the block the program check refuses (Job > Run refuses such settings outright).
      */
     public static Outcome outcome(PocketSettings checked) {
-        Outcome o = planned(checked);
+        return outcome(checked, org.fresa.job.ProgressMonitor.NONE);
+    }
+
+    /** {@link #outcome(PocketSettings)}, telling how far adaptive clearing is and stopping at Cancel. */
+    public static Outcome outcome(PocketSettings checked, org.fresa.job.ProgressMonitor progress) {
+        Outcome o = planned(checked, progress);
         Optional<String> raised = PocketService.cutRaised(checked);
         if (o.result().isEmpty() || raised.isEmpty()) {
             return o;
@@ -536,7 +541,7 @@ public final class PocketViewModel {
                 Optional.of(new Result(r.scene(), raised.get() + "\n" + r.report(), r.nc(), r.refusal())), o.error());
     }
 
-    private static Outcome planned(PocketSettings checked) {
+    private static Outcome planned(PocketSettings checked, org.fresa.job.ProgressMonitor progress) {
         PocketSettings settings = checked.entry() == org.fresa.pocket.EntryRule.Kind.PLUNGE && !checked.centreCutting()
                 ? checked.withEntry(org.fresa.pocket.EntryRule.Kind.PLUNGE, checked.entryAngleDeg(), true)
                 : checked;
@@ -544,7 +549,7 @@ public final class PocketViewModel {
             String name = settings.contour().getFileName().toString();
             if (!settings.strategy().offset() || !settings.strategy().asThesis()) {
                 // the program fresa pocket and Job > Run write for these settings
-                org.fresa.pocket.StrategyPocket.Planned planned = PocketService.strategyPlan(settings);
+                org.fresa.pocket.StrategyPocket.Planned planned = PocketService.strategyPlan(settings, progress);
                 Toolpath path = planned.toolpath();
                 List<Contour> contours = PocketService.strategyContours(settings);
                 List<Curve2> walls = new ArrayList<>();

@@ -104,4 +104,39 @@ class AdaptiveServiceTest {
         assertTrue(e.getMessage().contains("adaptive needs one of linuxcnc"), e.getMessage());
         assertFalse(Files.exists(dir.resolve("a.nc")));
     }
+
+    @org.junit.jupiter.api.Test
+    void theWalksTellHowFarTheyAreAndStopWhenCancelled() throws Exception {
+        PocketSettings s = adaptive("cavity05.dad", "linuxcnc");
+        java.util.List<Double> told = new java.util.ArrayList<>();
+        PocketService.strategyPlan(s, new ProgressMonitor() {
+            @Override
+            public void progress(double fraction, String what) {
+                assertTrue(what.startsWith("adaptive walks: "), what);
+                told.add(fraction);
+            }
+
+            @Override
+            public boolean isCancelled() {
+                return false;
+            }
+        });
+        assertFalse(told.isEmpty());
+        for (int i = 0; i < told.size(); i++) {
+            assertTrue(told.get(i) >= 0 && told.get(i) <= 1, told.toString());
+            assertTrue(i == 0 || told.get(i) >= told.get(i - 1), told.toString());
+        }
+        // the user's Cancel: the walks stop at the next word of progress
+        assertThrows(
+                java.util.concurrent.CancellationException.class,
+                () -> PocketService.strategyPlan(s, new ProgressMonitor() {
+                    @Override
+                    public void progress(double fraction, String what) {}
+
+                    @Override
+                    public boolean isCancelled() {
+                        return true;
+                    }
+                }));
+    }
 }
