@@ -717,7 +717,9 @@ public final class AdaptivePocket {
          * frontier's reach (beyond it, infinity: the walks only ask whether a cell is within it). A
          * link's search asks about the cells near the tool: they are found in the raster's rows
          * about the cell. A search that asks about more than an eighth of the raster, and the scans
-         * of every cell for a new entry, take the whole distance transform instead.
+         * of every cell for a new entry, take the whole distance transform instead. What it buys:
+         * the transform of the whole raster at every walk's end took cavity 02 with a 6 mm tool
+         * (4 million cells) 415 s to plan, this 53 s, for the same program.
          */
         private final class UncutDistance {
             private final int reach;
