@@ -9,16 +9,13 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
-import java.util.Optional;
 import org.fresa.geom.Transform3;
 import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.model.CamInputException;
 import org.fresa.pocket.EntryRule;
-import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
 import org.fresa.post.NcPostsTest;
 import org.fresa.post.Rs274;
-import org.fresa.setting.SettingRanges;
 import org.fresa.testing.InterpreterCheck;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -34,26 +31,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 class AdaptiveServiceTest {
 
     private static PocketSettings adaptive(String file, String post) throws Exception {
-        PocketSettings s = file.endsWith(".dad")
-                ? PocketServiceTest.settings(file.substring(0, file.length() - 4), post)
-                : new PocketSettings(
-                        Path.of("samples/pocket", file),
-                        6,
-                        0.4,
-                        0.1,
-                        0,
-                        -4,
-                        2,
-                        3000,
-                        300,
-                        100,
-                        SettingRanges.Pocket.POST.require(post),
-                        MillingDirection.CLIMB,
-                        EntryRule.Kind.AUTO,
-                        EntryRule.DEFAULT_ANGLE_DEG,
-                        false,
-                        Optional.empty(),
-                        PocketStrategy.DEFAULT);
+        PocketSettings s = ZigzagServiceTest.settings(file, post, 0.4);
         return s.withStrategy(new PocketStrategy(PocketStrategy.Kind.ADAPTIVE, 0));
     }
 

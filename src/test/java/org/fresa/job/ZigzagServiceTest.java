@@ -35,13 +35,17 @@ class ZigzagServiceTest {
 
     private static final List<String> POSTS = List.of("linuxcnc", "iso", "fanuc", "840d", "apt");
 
-    private static PocketSettings zigzag(String file, String post, double angleDeg) throws Exception {
-        PocketSettings s = file.endsWith(".dad")
+    /**
+     * A thesis contour's own technology from jobs.csv ({@code .dad}), else a 6 mm tool at this cut
+     * 4 mm deep in two layers, with this post, climb, the default entry and strategy.
+     */
+    static PocketSettings settings(String file, String post, double cut) throws Exception {
+        return file.endsWith(".dad")
                 ? PocketServiceTest.settings(file.substring(0, file.length() - 4), post)
                 : new PocketSettings(
                         Path.of("samples/pocket", file),
                         6,
-                        0.6,
+                        cut,
                         0.1,
                         0,
                         -4,
@@ -56,6 +60,10 @@ class ZigzagServiceTest {
                         false,
                         Optional.empty(),
                         PocketStrategy.DEFAULT);
+    }
+
+    private static PocketSettings zigzag(String file, String post, double angleDeg) throws Exception {
+        PocketSettings s = settings(file, post, 0.6);
         return s.withStrategy(new PocketStrategy(PocketStrategy.Kind.ZIGZAG, angleDeg));
     }
 

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Optional;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.assertj.swing.timing.Condition;
 import org.assertj.swing.timing.Pause;
@@ -15,8 +14,6 @@ import org.fresa.job.JobSettings.PocketSettings;
 import org.fresa.job.JobTask;
 import org.fresa.job.PocketService;
 import org.fresa.job.ProgressMonitor;
-import org.fresa.pocket.EntryRule;
-import org.fresa.pocket.MillingDirection;
 import org.fresa.pocket.PocketStrategy;
 import org.junit.jupiter.api.Test;
 
@@ -43,25 +40,8 @@ class PocketStrategyGuiTest extends WindowGuiTest {
     void zigzagTypedInTheTabIsTheJobsAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
             throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
-                .withPocket(new PocketSettings(
-                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
-                        6,
-                        0.6,
-                        0.1,
-                        0,
-                        -4,
-                        2,
-                        3000,
-                        300,
-                        100,
-                        org.fresa.post.PocketPost.LINUXCNC,
-                        MillingDirection.CLIMB,
-                        EntryRule.Kind.AUTO,
-                        EntryRule.DEFAULT_ANGLE_DEG,
-                        false,
-                        Optional.empty(),
-                        PocketStrategy.DEFAULT))));
+        GuiActionRunner.execute(() -> model.setJob(
+                Job.empty(JobTask.POCKET).withPocket(PocketViewModelTest.roomsIslands(0.6, PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
         // every strategy field has a label that names it and takes the keyboard there
@@ -127,25 +107,8 @@ class PocketStrategyGuiTest extends WindowGuiTest {
     void aRestToolTypedInTheTabIsCheckedAsTypedAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
             throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
-                .withPocket(new PocketSettings(
-                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
-                        6,
-                        0.6,
-                        0.1,
-                        0,
-                        -4,
-                        2,
-                        3000,
-                        300,
-                        100,
-                        org.fresa.post.PocketPost.LINUXCNC,
-                        MillingDirection.CLIMB,
-                        EntryRule.Kind.AUTO,
-                        EntryRule.DEFAULT_ANGLE_DEG,
-                        false,
-                        Optional.empty(),
-                        PocketStrategy.DEFAULT))));
+        GuiActionRunner.execute(() -> model.setJob(
+                Job.empty(JobTask.POCKET).withPocket(PocketViewModelTest.roomsIslands(0.6, PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.textBox(PocketViewModel.REST_TOOL).requireText("");
         window.textBox(PocketViewModel.REST_TOOL).enterText("6");
@@ -186,25 +149,8 @@ class PocketStrategyGuiTest extends WindowGuiTest {
     void adaptiveChosenInTheTabSaysWhatItSlowsAndItsProgramIsFresaPockets(@org.junit.jupiter.api.io.TempDir Path dir)
             throws Exception {
         MainViewModel model = GuiActionRunner.execute(() -> ((MainWindow) window.target()).model());
-        GuiActionRunner.execute(() -> model.setJob(Job.empty(JobTask.POCKET)
-                .withPocket(new PocketSettings(
-                        Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
-                        6,
-                        0.4,
-                        0.1,
-                        0,
-                        -4,
-                        2,
-                        3000,
-                        300,
-                        100,
-                        org.fresa.post.PocketPost.LINUXCNC,
-                        MillingDirection.CLIMB,
-                        EntryRule.Kind.AUTO,
-                        EntryRule.DEFAULT_ANGLE_DEG,
-                        false,
-                        Optional.empty(),
-                        PocketStrategy.DEFAULT))));
+        GuiActionRunner.execute(() -> model.setJob(
+                Job.empty(JobTask.POCKET).withPocket(PocketViewModelTest.roomsIslands(0.4, PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.STRATEGY).selectItem("adaptive");
         window.button("pocket-compute").click();

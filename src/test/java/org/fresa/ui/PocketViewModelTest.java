@@ -72,13 +72,12 @@ class PocketViewModelTest {
         assertTrue(m.error().isPresent());
     }
 
-    @Test
-    void adaptiveClearingShowsWhereItSlowsItsFeedInThePlotAndTheReport() {
-        PocketViewModel m = new PocketViewModel();
-        m.setSettings(new PocketSettings(
-                Path.of("samples/pocket/rooms-islands.contour"),
+    /** The rooms with islands, a 6 mm tool at this cut, 4 mm deep in two layers, linuxcnc, climb. */
+    static PocketSettings roomsIslands(double cut, PocketStrategy strategy) {
+        return new PocketSettings(
+                Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
                 6,
-                0.4,
+                cut,
                 0.1,
                 0,
                 -4,
@@ -92,7 +91,13 @@ class PocketViewModelTest {
                 EntryRule.DEFAULT_ANGLE_DEG,
                 false,
                 Optional.empty(),
-                new PocketStrategy(PocketStrategy.Kind.ADAPTIVE, 0)));
+                strategy);
+    }
+
+    @Test
+    void adaptiveClearingShowsWhereItSlowsItsFeedInThePlotAndTheReport() {
+        PocketViewModel m = new PocketViewModel();
+        m.setSettings(roomsIslands(0.4, new PocketStrategy(PocketStrategy.Kind.ADAPTIVE, 0)));
         m.compute();
         PocketViewModel.Result r = m.result().orElseThrow(() -> new AssertionError(m.error()));
         assertTrue(r.report().startsWith("warning: adaptive: "), r.report());
