@@ -157,10 +157,11 @@ final class ContourEditorPanel {
     }
 
     private void showStatus() {
-        Optional<String> r = editor.refusal();
+        Optional<String> note = editor.note();
+        Optional<String> r = note.isPresent() ? Optional.empty() : editor.refusal();
         status.setForeground(r.isPresent() ? new Color(180, 0, 0) : Color.BLACK);
-        status.setText(r.orElse(editor.rows() + " elements, closed"));
-        status.setToolTipText(r.orElse(null));
+        status.setText(r.orElse(note.orElse(editor.rows() + " elements, closed")));
+        status.setToolTipText(r.orElse(note.orElse(null)));
         table.repaint();
     }
 

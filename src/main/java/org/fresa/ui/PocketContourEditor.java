@@ -66,6 +66,9 @@ public final class PocketContourEditor {
     // asks for them for every row it paints
     private Optional<DadContour.Refusal> refusal;
     private Optional<List<Curve2>> curves;
+    // rows added, deleted or moved since the contour was shown: an empty table nobody has touched
+    // is no contour refused, the job reads its contour file
+    private boolean rowsEdited;
 
     /** Shows a contour (a new one, read from its file or from the job); no cell is bad, nothing is selected. */
     public void load(DadContour contour) {
@@ -75,6 +78,7 @@ public final class PocketContourEditor {
         badText.clear();
         problems.clear();
         selected = elements.isEmpty() ? -1 : 0;
+        rowsEdited = false;
     }
 
     /** The contour of the valid values (a bad cell keeps the last valid one). */
@@ -305,6 +309,19 @@ public final class PocketContourEditor {
     private void structural() {
         badText.clear();
         problems.clear();
+        rowsEdited = true;
+    }
+
+    /**
+     * What the editor says of itself when it refuses nothing yet: nothing typed since it was
+     * shown empty means the contour file is pocketed, which is no error of that file.
+     */
+    public Optional<String> note() {
+        if (elements.isEmpty() && !rowsEdited) {
+            return Optional.of("No elements typed: Compute pockets the contour file."
+                    + " Add (Insert) starts a typed contour instead.");
+        }
+        return Optional.empty();
     }
 
     /** Whether every cell holds a value and the contour closes without crossing itself. */

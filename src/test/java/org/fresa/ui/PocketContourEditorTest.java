@@ -253,4 +253,22 @@ class PocketContourEditorTest {
         assertFalse(full.insert());
         assertEquals(org.fresa.pocket.DadContour.MAX_ELEMENTS, full.rows());
     }
+
+    @Test
+    void anEmptyTableShownForAContourFileIsNoRefusalUntilRowsAreEdited() {
+        PocketContourEditor editor = new PocketContourEditor();
+        // a .contour file (or none) loads no records: its contour is read at Compute
+        editor.load(new DadContour(List.of()));
+        assertTrue(editor.note().orElseThrow().startsWith("No elements typed: Compute pockets the contour file."));
+        assertFalse(editor.valid());
+        // once the planner starts typing, too few elements is the contour's refusal again
+        assertTrue(editor.add());
+        assertTrue(editor.note().isEmpty());
+        assertEquals("A contour needs at least 2 elements.", editor.refusal().orElseThrow());
+        assertTrue(editor.delete());
+        assertTrue(editor.note().isEmpty());
+        // a contour with elements says nothing of a file
+        editor.load(rectangleWithArc());
+        assertTrue(editor.note().isEmpty());
+    }
 }

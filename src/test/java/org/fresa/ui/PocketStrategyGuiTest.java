@@ -44,6 +44,13 @@ class PocketStrategyGuiTest extends WindowGuiTest {
                 Job.empty(JobTask.POCKET).withPocket(PocketViewModelTest.roomsIslands(0.6, PocketStrategy.DEFAULT))));
         window.tabbedPane("tabs").selectTab("Pocket");
         window.comboBox(PocketViewModel.STRATEGY).requireSelection("offset");
+        // a .contour file loads no rows into the .dad editor: that is said as a note, not in red
+        javax.swing.JLabel editorStatus = GuiActionRunner.execute(() -> (javax.swing.JLabel)
+                window.robot().finder().findByName(window.target(), "pocket-contour-status", false));
+        assertTrue(
+                GuiActionRunner.execute(() -> editorStatus.getText().startsWith("No elements typed")
+                        && java.awt.Color.BLACK.equals(editorStatus.getForeground())),
+                () -> GuiActionRunner.execute(editorStatus::getText));
         // every strategy field has a label that names it and takes the keyboard there
         for (String name : new String[] {
             PocketViewModel.STRATEGY,
