@@ -49,6 +49,13 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
     /** Fastest feed planned (mm/min). */
     public static final double MAX_FEED_MM_PER_MIN = 100_000;
 
+    /**
+     * Handbook feeds per revolution run from about 0.005 D (finishing, small drills) up: a feed a
+     * fifth of that rubs instead of cutting, and in a file it is most often a unit mistaken by a
+     * factor of 60 or 1000 (mm/s for m/s, mm/min for mm/rev).
+     */
+    public static final double SLOWEST_FEED_PER_REV_PER_DIAMETER = 0.001;
+
     public CuttingData {
         Objects.requireNonNull(feed, "feed");
         notes = List.copyOf(notes);
@@ -117,6 +124,13 @@ public record CuttingData(double spindleRpm, boolean fromCuttingSpeed, FeedRate 
             throw new IllegalArgumentException("feed " + n(feed.feedMmPerMin()) + " mm/min ("
                     + (feed.inferred() ? feed.note() : "as written") + ") is outside " + n(MIN_FEED_MM_PER_MIN)
                     + " to " + n(MAX_FEED_MM_PER_MIN) + " mm/min");
+        }
+        double perRevMm = feed.feedMmPerMin() / rpm;
+        if (perRevMm < SLOWEST_FEED_PER_REV_PER_DIAMETER * toolDiameterMm) {
+            notes.add(feed.note() + (feed.spindleRpm().isPresent() ? "" : " at " + n(rpm) + " rpm") + ": "
+                    + n(perRevMm) + " mm per revolution, less than a " + n(toolDiameterMm)
+                    + " mm cutter forms a chip with (" + n(SLOWEST_FEED_PER_REV_PER_DIAMETER * toolDiameterMm)
+                    + "); planned as written: check the file's feed and its unit");
         }
         return new CuttingData(rpm, fromCuttingSpeed, feed, notes);
     }

@@ -147,31 +147,7 @@ class CuttingDataTest {
                 OptionalDouble.empty(),
                 OptionalDouble.empty(),
                 false);
-        Operation base = DrillCycleTest.op(
-                Operation.OperationType.DRILLING,
-                DrillCycleTest.drill(0.54, "rad"),
-                DrillingStrategy.NONE,
-                DrillingParameters.NONE);
-        Operation op = new Operation(
-                base.instanceId(),
-                base.type(),
-                base.entity(),
-                base.id(),
-                base.retractPlaneMm(),
-                base.startPoint(),
-                base.tool(),
-                stepModeler,
-                base.strategy(),
-                base.approach(),
-                base.retract(),
-                base.axialCuttingDepthMm(),
-                base.radialCuttingDepthMm(),
-                base.allowanceSideMm(),
-                base.allowanceBottomMm(),
-                base.cuttingDepthMm(),
-                base.overcutLengthMm(),
-                base.drilling(),
-                List.of());
+        Operation op = drillingWith(stepModeler);
         CuttingData c = CuttingData.of(op, 10, false);
         double n = 1000 * 110 / (Math.PI * 10);
         assertAll(
@@ -183,6 +159,80 @@ class CuttingDataTest {
                         List.of("no spindle speed in the file: 3501.4087 rpm from the cutting speed 110 m/min"
                                 + " for the 10 mm tool (n = 1000 v / (pi D))"),
                         c.notes()));
+    }
+
+    /**
+     * STEP Tools' AIM rendering of ISO 14649-11's example (annex J.6) declares its feeds in mm/s
+     * and keeps the example's figures: a Ø20 drill at 960 rpm fed 0.03 mm/s, 1.8 mm/min, is
+     * 0.0019 mm a revolution. It is planned as written, and the planner is told.
+     */
+    @Test
+    void aFeedTooSlowForTheCutterToFormAChipIsSaidWithItsFigures() {
+        Technology aim = new Technology(
+                3500,
+                OptionalDouble.of(0.03),
+                "millimetre/second",
+                Optional.empty(),
+                OptionalDouble.empty(),
+                "unstated",
+                OptionalDouble.of(960),
+                "rpm",
+                OptionalDouble.empty(),
+                OptionalDouble.of(1.8),
+                OptionalDouble.of(960),
+                false);
+        CuttingData c = CuttingData.of(drillingWith(aim), 20, false);
+        assertAll(
+                () -> assertEquals(1.8, c.feed().feedMmPerMin(), EPS),
+                () -> assertEquals(
+                        List.of("feed 0.03 millimetre/second = 1.8 mm/min at 960 rpm: 0.0019 mm per revolution,"
+                                + " less than a 20 mm cutter forms a chip with (0.02); planned as written: check the"
+                                + " file's feed and its unit"),
+                        c.notes()));
+        // the same drill fed 0.2 mm a revolution (192 mm/min) is a handbook feed: nothing to say
+        Technology handbook = new Technology(
+                3500,
+                OptionalDouble.of(3.2),
+                "millimetre/second",
+                Optional.empty(),
+                OptionalDouble.empty(),
+                "unstated",
+                OptionalDouble.of(960),
+                "rpm",
+                OptionalDouble.empty(),
+                OptionalDouble.of(192),
+                OptionalDouble.of(960),
+                false);
+        assertEquals(
+                List.of(), CuttingData.of(drillingWith(handbook), 20, false).notes());
+    }
+
+    private static Operation drillingWith(Technology t) {
+        Operation base = DrillCycleTest.op(
+                Operation.OperationType.DRILLING,
+                DrillCycleTest.drill(0.54, "rad"),
+                DrillingStrategy.NONE,
+                DrillingParameters.NONE);
+        return new Operation(
+                base.instanceId(),
+                base.type(),
+                base.entity(),
+                base.id(),
+                base.retractPlaneMm(),
+                base.startPoint(),
+                base.tool(),
+                t,
+                base.strategy(),
+                base.approach(),
+                base.retract(),
+                base.axialCuttingDepthMm(),
+                base.radialCuttingDepthMm(),
+                base.allowanceSideMm(),
+                base.allowanceBottomMm(),
+                base.cuttingDepthMm(),
+                base.overcutLengthMm(),
+                base.drilling(),
+                List.of());
     }
 
     @Test
