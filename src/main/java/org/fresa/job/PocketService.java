@@ -55,7 +55,6 @@ public final class PocketService {
 
     private PocketService() {}
 
-    /** Reads a contour file by its extension (the outer contour's elements; islands kept as contours). */
     /**
      * The contour of the settings: the elements the job holds (typed in the Pocket tab), else the
      * contour file's.
@@ -88,6 +87,7 @@ public final class PocketService {
                         .endsWith(".dad");
     }
 
+    /** Reads a contour file by its extension (the outer contour's elements; islands kept as contours). */
     public static PocketProfile readContour(Path file) throws CamInputException, IOException {
         String lower = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (lower.endsWith(".dad")) {

@@ -197,11 +197,7 @@ final class PocketTab extends PlotTab {
         nc.setText("");
         editor.load(model.editorContour());
         editorPanel.rowsChanged();
-        plot.show(
-                editor.rows() > 0
-                        ? editor.scene()
-                        : PlotScene.empty(
-                                shown.isPresent() ? "Press Compute" : "Choose a contour or type its elements"));
+        plot.show(contourScene());
         fieldsChanged();
     }
 
@@ -224,7 +220,12 @@ final class PocketTab extends PlotTab {
         model.setElements(Optional.empty());
         editor.load(model.editorContour());
         editorPanel.rowsChanged();
-        plot.show(editor.scene());
+        plot.show(contourScene());
+    }
+
+    /** The contour Compute will pocket: the elements as typed, else the contour file as read. */
+    private PlotScene contourScene() {
+        return editor.rows() > 0 ? editor.scene() : model.fileScene();
     }
 
     /**

@@ -665,6 +665,47 @@ public final class PocketViewModel {
         return out;
     }
 
+    /** The plot's title when there is no contour to draw. */
+    static final String NO_CONTOUR = "Choose a contour or type its elements";
+
+    /**
+     * The contour file drawn as read, before any Compute: the contours Compute will pocket (the
+     * outer one and its islands), or, when the file cannot be read, the reader's message as the
+     * plot's title, so that a wrong file is seen as it is chosen.
+     */
+    public PlotScene fileScene() {
+        Path file;
+        try {
+            file = Path.of(contourText.trim());
+        } catch (java.nio.file.InvalidPathException e) {
+            return PlotScene.empty(NO_CONTOUR);
+        }
+        if (contourText.isBlank() || !java.nio.file.Files.isRegularFile(file)) {
+            return PlotScene.empty(NO_CONTOUR);
+        }
+        try {
+            if (file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dad")) {
+                // read for its message only: a readable .dad file is shown by the editor's records
+                PocketService.readContour(file);
+                return PlotScene.empty("Press Compute");
+            }
+            List<Curve2> walls = new ArrayList<>();
+            List<Contour> contours = PocketService.readContours(file);
+            for (Contour c : contours) {
+                walls.addAll(c.curves());
+            }
+            String islands = contours.size() == 2
+                    ? ", 1 island"
+                    : contours.size() > 2 ? ", " + (contours.size() - 1) + " islands" : "";
+            return PlotScene.empty(file.getFileName() + " as read" + islands + ": press Compute")
+                    .with(new PlotScene.Layer("contour", PlotScene.Style.OUTLINE, walls));
+        } catch (CamInputException e) {
+            return PlotScene.empty(plannerWords(e));
+        } catch (IOException e) {
+            return PlotScene.empty("Cannot read " + file.getFileName() + ".");
+        }
+    }
+
     /** A refusal as the planner reads it: the problem, with the file it is in, never an option name. */
     static String plannerWords(CamInputException e) {
         String source = e.source();

@@ -51,6 +51,24 @@ class PocketStrategyGuiTest extends WindowGuiTest {
                 GuiActionRunner.execute(() -> editorStatus.getText().startsWith("No elements typed")
                         && java.awt.Color.BLACK.equals(editorStatus.getForeground())),
                 () -> GuiActionRunner.execute(editorStatus::getText));
+        // and the plot shows the file's contours before any Compute
+        String plotted = GuiActionRunner.execute(() -> window
+                .robot()
+                .finder()
+                .findAll(
+                        window.target(),
+                        new org.assertj.swing.core.GenericTypeMatcher<PlotPanel>(PlotPanel.class, true) {
+                            @Override
+                            protected boolean isMatching(PlotPanel p) {
+                                return true;
+                            }
+                        })
+                .stream()
+                .max(java.util.Comparator.comparingInt(PlotPanel::getWidth))
+                .orElseThrow()
+                .scene()
+                .title());
+        assertEquals("rooms-islands.contour as read, 2 islands: press Compute", plotted);
         // every strategy field has a label that names it and takes the keyboard there
         for (String name : new String[] {
             PocketViewModel.STRATEGY,

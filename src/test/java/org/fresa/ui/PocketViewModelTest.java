@@ -72,6 +72,30 @@ class PocketViewModelTest {
         assertTrue(m.error().isPresent());
     }
 
+    @Test
+    void theContourFileIsDrawnAsReadBeforeComputeAndAWrongOneSaysWhy(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        PocketViewModel m = new PocketViewModel();
+        m.load(org.fresa.job.Job.empty(org.fresa.job.JobTask.POCKET)
+                .withPocket(roomsIslands(0.6, PocketStrategy.DEFAULT)));
+        PlotScene s = m.fileScene();
+        assertEquals("rooms-islands.contour as read, 2 islands: press Compute", s.title());
+        int elements =
+                org.fresa.job.PocketService.readContours(Path.of("samples/pocket/rooms-islands.contour")).stream()
+                        .mapToInt(org.fresa.geom.Contour::size)
+                        .sum();
+        assertEquals(1, s.layers().size());
+        assertEquals(elements, s.layers().get(0).curves().size());
+        java.nio.file.Path bad = dir.resolve("bad.contour");
+        java.nio.file.Files.writeString(bad, "this is no contour\n");
+        m.setContourText(bad.toString());
+        PlotScene refused = m.fileScene();
+        assertTrue(refused.layers().isEmpty());
+        assertTrue(refused.title().startsWith("bad.contour, line 1: Expected contour"), refused.title());
+        m.setContourText(dir.resolve("none.contour").toString());
+        assertEquals(PocketViewModel.NO_CONTOUR, m.fileScene().title());
+    }
+
     /** The rooms with islands, a 6 mm tool at this cut, 4 mm deep in two layers, linuxcnc, climb. */
     static PocketSettings roomsIslands(double cut, PocketStrategy strategy) {
         return new PocketSettings(
