@@ -34,6 +34,7 @@ import org.fresa.pocket.PocketToolpath;
 import org.fresa.pocket.Recognition;
 import org.fresa.pocket.RegionOffsetter;
 import org.fresa.pocket.RegionPocket;
+import org.fresa.pocket.SlowedMove;
 import org.fresa.pocket.StrategyPocket;
 import org.fresa.pocket.ToolTooLargeException;
 import org.fresa.pocket.ZigzagPocket;
@@ -259,6 +260,34 @@ public final class PocketService {
     public static TaskOutcome run(
             PocketSettings s, Path outFile, java.util.Optional<Path> report, ProgressMonitor progress)
             throws CamInputException, IOException {
+        return run(s, outFile, report, Optional.empty(), progress);
+    }
+
+    /**
+     * Runs the pocket job as {@link #run(PocketSettings, Path, Optional, ProgressMonitor)} does and,
+     * for adaptive clearing, writes the moves it slowed to {@code slowed} as CSV ({@link
+     * #slowedCsv}), one row a move in program order (a header only when none is slowed); the
+     * summary names it ({@code slowed_csv}).
+     *
+     * @throws CamInputException when a list of slowed moves is asked of another strategy
+     */
+    public static TaskOutcome run(
+            PocketSettings s, Path outFile, Optional<Path> report, Optional<Path> slowed, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        if (slowed.isPresent() && s.strategy().kind() != PocketStrategy.Kind.ADAPTIVE) {
+            throw new CamInputException(
+                    "--slowed",
+                    "only adaptive clearing slows its feed (--strategy adaptive); "
+                            + s.strategy().kind().word() + " cuts every move at the programmed feeds");
+        }
+        if (slowed.isPresent()) {
+            Path o = slowed.get().toAbsolutePath().normalize();
+            if (o.equals(outFile.toAbsolutePath().normalize())
+                    || (report.isPresent()
+                            && o.equals(report.get().toAbsolutePath().normalize()))) {
+                throw new CamInputException("--slowed", slowed.get() + " is the program's or the report's own file");
+            }
+        }
         if (report.isPresent()
                 && report.get()
                         .toAbsolutePath()
@@ -266,7 +295,7 @@ public final class PocketService {
                         .equals(outFile.toAbsolutePath().normalize())) {
             throw new CamInputException("--report", report.get() + " is the program's own file (--out)");
         }
-        TaskOutcome o = run(s, outFile, progress);
+        TaskOutcome o = runPlanned(s, outFile, slowed, progress);
         if (report.isEmpty() || o.exitStatus() != 0) {
             return o;
         }
@@ -285,7 +314,13 @@ public final class PocketService {
      */
     public static TaskOutcome run(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
-        TaskOutcome o = planAndWrite(s, outFile, progress);
+        return runPlanned(s, outFile, Optional.empty(), progress);
+    }
+
+    private static TaskOutcome runPlanned(
+            PocketSettings s, Path outFile, Optional<Path> slowed, ProgressMonitor progress)
+            throws CamInputException, IOException {
+        TaskOutcome o = planAndWrite(s, outFile, slowed, progress);
         Optional<String> raised = cutRaised(s);
         if (raised.isEmpty()) {
             return o;
@@ -330,12 +365,13 @@ public final class PocketService {
         return problems;
     }
 
-    private static TaskOutcome planAndWrite(PocketSettings s, Path outFile, ProgressMonitor progress)
+    private static TaskOutcome planAndWrite(
+            PocketSettings s, Path outFile, Optional<Path> slowed, ProgressMonitor progress)
             throws CamInputException, IOException {
         List<String> problems = new ArrayList<>();
         EntryRule entry = entryRule(s);
         if (!s.strategy().offset() || !s.strategy().asThesis()) {
-            return runStrategy(s, outFile, progress);
+            return runStrategy(s, outFile, slowed, progress);
         }
         if (mayHaveIslands(s)) {
             List<Contour> contours = readContours(s.contour());
@@ -650,6 +686,12 @@ public final class PocketService {
     /** A pocket planned by its strategy ({@link #strategyToolpath}): G-code and APT posts only. */
     static TaskOutcome runStrategy(PocketSettings s, Path outFile, ProgressMonitor progress)
             throws CamInputException, IOException {
+        return runStrategy(s, outFile, Optional.empty(), progress);
+    }
+
+    private static TaskOutcome runStrategy(
+            PocketSettings s, Path outFile, Optional<Path> slowed, ProgressMonitor progress)
+            throws CamInputException, IOException {
         StrategyPocket.Planned planned;
         try {
             planned = strategyPlan(s, progress);
@@ -707,7 +749,45 @@ public final class PocketService {
             summary.put("lowest_feed_factor", w.lowestFactor());
         });
         summary.put("out", outFile.toString());
-        return new TaskOutcome(0, problems, summary, List.of(outFile));
+        List<Path> files = new ArrayList<>(List.of(outFile));
+        if (slowed.isPresent()) {
+            AtomicFiles.writeString(
+                    slowed.get(),
+                    slowedCsv(
+                            SlowedMove.of(path.sections().get(0), s.feedMmPerMin(), s.finishFeedMmPerMin()),
+                            s.feedMmPerMin()));
+            summary.put("slowed_csv", slowed.get().toString());
+            files.add(slowed.get());
+        }
+        return new TaskOutcome(0, problems, summary, files);
+    }
+
+    /**
+     * The slowed moves as a planner reviews them, one row a move in program order: its layer, line
+     * or arc (and which way), where it starts and ends, its length, its feed and the fraction of
+     * the programmed feed that is.
+     */
+    public static String slowedCsv(List<SlowedMove> moves, double feedMmPerMin) {
+        StringBuilder b = new StringBuilder(
+                "layer_z_mm,move,x_start_mm,y_start_mm,x_end_mm,y_end_mm,length_mm,feed_mm_per_min,feed_factor\n");
+        for (SlowedMove m : moves) {
+            String kind = m.curve() instanceof org.fresa.geom.Arc2 arc ? (arc.ccw() ? "arc_ccw" : "arc_cw") : "line";
+            org.fresa.geom.Vec2 a = m.curve().start();
+            org.fresa.geom.Vec2 e = m.curve().end();
+            b.append(String.format(
+                    Locale.ROOT,
+                    "%.3f,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%s,%.3f\n",
+                    m.zMm(),
+                    kind,
+                    a.x(),
+                    a.y(),
+                    e.x(),
+                    e.y(),
+                    m.curve().length(),
+                    org.fresa.model.ExactDecimal.of(m.feedMmPerMin()),
+                    m.factor(feedMmPerMin)));
+        }
+        return b.toString();
     }
 
     /** The thesis's recognition of a single contour, or none where it cannot read the contour. */

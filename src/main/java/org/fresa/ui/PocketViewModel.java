@@ -641,28 +641,9 @@ public final class PocketViewModel {
 
     /** The level feed moves of a section at neither of its programmed feeds, as lines and arcs in the plane. */
     static List<Curve2> slowed(org.fresa.model.ToolpathSection s, double feedMmPerMin, double finishFeedMmPerMin) {
-        List<Curve2> out = new ArrayList<>();
-        org.fresa.geom.Vec3 at = s.start();
-        for (org.fresa.model.Move m : s.moves()) {
-            double f = m instanceof org.fresa.model.Move.Linear l
-                    ? l.feedMmPerMin()
-                    : m instanceof org.fresa.model.Move.Circular c ? c.feedMmPerMin() : Double.NaN;
-            boolean level = Math.abs(m.end().z() - at.z()) < 1e-9;
-            if (level && !Double.isNaN(f) && f != feedMmPerMin && f != finishFeedMmPerMin) {
-                org.fresa.geom.Vec2 a = at.xy();
-                org.fresa.geom.Vec2 b = m.end().xy();
-                if (m instanceof org.fresa.model.Move.Circular c
-                        && c.turns() == 0
-                        && c.normal().z() != 0) {
-                    out.add(new org.fresa.geom.Arc2(
-                            c.center().xy(), a, b, c.ccw() == (c.normal().z() > 0)));
-                } else if (!a.equals(b)) {
-                    out.add(new org.fresa.geom.Segment2(a, b));
-                }
-            }
-            at = m.end();
-        }
-        return out;
+        return org.fresa.pocket.SlowedMove.of(s, feedMmPerMin, finishFeedMmPerMin).stream()
+                .map(org.fresa.pocket.SlowedMove::curve)
+                .toList();
     }
 
     /** The plot's title when there is no contour to draw. */

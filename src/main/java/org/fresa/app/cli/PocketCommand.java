@@ -138,6 +138,13 @@ final class PocketCommand extends CliCommand {
     java.nio.file.Path report;
 
     @Option(
+            names = "--slowed",
+            paramLabel = "FILE",
+            description = "adaptive only: also write the moves whose feed dropped as CSV to FILE, one row a move"
+                    + " (layer, line or arc, start, end, length, feed, fraction of --feed)")
+    java.nio.file.Path slowed;
+
+    @Option(
             names = "--thesis-name",
             paramLabel = "NAME",
             description = "write the program beside --out as N01NAME.DAD, the thesis's output name (NAME: 1 to 5"
@@ -188,7 +195,11 @@ final class PocketCommand extends CliCommand {
             if (printout.isPresent()) {
                 org.fresa.io.AtomicFiles.requireWritable(printout.get(), "--report");
             }
-            org.fresa.job.TaskOutcome o = PocketService.run(settings, file, printout, progress);
+            java.util.Optional<java.nio.file.Path> slowedCsv = java.util.Optional.ofNullable(slowed);
+            if (slowedCsv.isPresent()) {
+                org.fresa.io.AtomicFiles.requireWritable(slowedCsv.get(), "--slowed");
+            }
+            org.fresa.job.TaskOutcome o = PocketService.run(settings, file, printout, slowedCsv, progress);
             if (thesisFile == null || o.exitStatus() != 0) {
                 return o;
             }
