@@ -67,7 +67,15 @@ public final class JobRunner {
             case POCKET: {
                 JobSettings.PocketSettings s = require(job.pocket(), "pocket", job);
                 out.create();
-                return PocketService.run(s, out.resolve("pocket." + s.post().fileExtension()), progress);
+                // adaptive clearing's slowed moves are a result to review as much as its program
+                return PocketService.run(
+                        s,
+                        out.resolve("pocket." + s.post().fileExtension()),
+                        java.util.Optional.empty(),
+                        s.strategy().kind() == org.fresa.pocket.PocketStrategy.Kind.ADAPTIVE
+                                ? java.util.Optional.of(out.resolve("slowed.csv"))
+                                : java.util.Optional.empty(),
+                        progress);
             }
             case CUT:
                 return CuttingService.run(require(job.cutting(), "cutting", job), out, progress);

@@ -117,7 +117,13 @@ class PocketStrategyJobTest {
                 Path.of("samples/pocket/rooms-islands.contour").toAbsolutePath(),
                 new PocketStrategy(kind, 30, 0.2, PocketStrategy.Order.INSIDE_OUT));
         Path direct = dir.resolve("direct.ngc");
-        assertEquals(0, PocketService.run(s, direct, ProgressMonitor.NONE).exitStatus());
+        Path directSlowed = dir.resolve("direct-slowed.csv");
+        java.util.Optional<Path> slowed =
+                kind == PocketStrategy.Kind.ADAPTIVE ? java.util.Optional.of(directSlowed) : java.util.Optional.empty();
+        assertEquals(
+                0,
+                PocketService.run(s, direct, java.util.Optional.empty(), slowed, ProgressMonitor.NONE)
+                        .exitStatus());
         Path file = dir.resolve("job.xml");
         JobXml.write(Job.empty(JobTask.POCKET).withPocket(s), file);
         Path out = dir.resolve("out");
@@ -126,6 +132,11 @@ class PocketStrategyJobTest {
         assertEquals(0, o.exitStatus(), o.problems().toString());
         assertTrue(Files.exists(out.resolve("pocket.ngc")));
         assertEquals(Files.readString(direct), Files.readString(out.resolve("pocket.ngc")));
+        // an adaptive run also writes the moves it slowed, as fresa pocket --slowed does
+        assertEquals(kind == PocketStrategy.Kind.ADAPTIVE, Files.exists(out.resolve("slowed.csv")));
+        if (kind == PocketStrategy.Kind.ADAPTIVE) {
+            assertEquals(Files.readString(directSlowed), Files.readString(out.resolve("slowed.csv")));
+        }
     }
 
     @Test
