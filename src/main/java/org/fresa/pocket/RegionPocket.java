@@ -3,6 +3,7 @@ package org.fresa.pocket;
 import java.util.ArrayList;
 import java.util.List;
 import org.fresa.geom.Arc2;
+import org.fresa.geom.Box2;
 import org.fresa.geom.Contour;
 import org.fresa.geom.Curve2;
 import org.fresa.geom.Intersections;
@@ -800,6 +801,11 @@ public final class RegionPocket {
                 }
             }
         }
+        // every pair of nodes may be tried: the walls' boxes once, not once a pair
+        List<List<Box2>> boxes = new ArrayList<>();
+        for (Contour c : finishing.loops()) {
+            boxes.add(c.curves().stream().map(Curve2::bounds).toList());
+        }
         // A*: the straight distance to q never overestimates what is left
         int n = nodes.size();
         double[] way = new double[n];
@@ -832,7 +838,7 @@ public final class RegionPocket {
                 double via = way[u] + nodes.get(u).distance(nodes.get(v)) + (v == 1 ? 0 : CORNER_MM);
                 if (via < way[v]
                         && via + nodes.get(v).distance(q) <= limitMm
-                        && feedLink(nodes.get(u), nodes.get(v), finishing, limitMm)) {
+                        && feedLink(nodes.get(u), nodes.get(v), finishing, limitMm, boxes)) {
                     way[v] = via;
                     from[v] = u;
                 }
@@ -850,6 +856,16 @@ public final class RegionPocket {
      * region: the tool's disc along it touches no wall and no island.
      */
     static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm) {
+        return feedLink(p, q, finishing, limitMm, null);
+    }
+
+    /**
+     * {@link #feedLink(Vec2, Vec2, Level, double)} with the boxes of the finishing loops' curves
+     * (null: none): a crossing lies in both curves' boxes, so an element whose box the link's
+     * misses is not asked. On dxf2gcode's FLH-001 (3 mm tool, its loops of short arcs) the
+     * detours' searches took most of 87 s asking every element for every pair of nodes.
+     */
+    private static boolean feedLink(Vec2 p, Vec2 q, Level finishing, double limitMm, List<List<Box2>> boxes) {
         if (p.distance(q) > limitMm) {
             return false;
         }
@@ -858,10 +874,17 @@ public final class RegionPocket {
         }
         Segment2 link = new Segment2(p, q);
         Tolerance tol = new Tolerance(1e-9, 1e-12);
+        Box2 reach = link.bounds();
+        Box2 near = new Box2(reach.minX() - 1e-6, reach.minY() - 1e-6, reach.maxX() + 1e-6, reach.maxY() + 1e-6);
         int w = 0;
         Vec2 mid = p.interpolate(q, 0.5);
-        for (Contour c : finishing.loops()) {
-            for (Curve2 k : c.curves()) {
+        for (int ci = 0; ci < finishing.loops().size(); ci++) {
+            Contour c = finishing.loops().get(ci);
+            for (int ki = 0; ki < c.curves().size(); ki++) {
+                Curve2 k = c.curves().get(ki);
+                if (boxes != null && !near.intersects(boxes.get(ci).get(ki))) {
+                    continue;
+                }
                 for (Vec2 x : Intersections.of(link, k, tol)) {
                     if (x.distance(p) > 1e-6 && x.distance(q) > 1e-6) {
                         return false;
